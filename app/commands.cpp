@@ -1,0 +1,115 @@
+#include "app/commands.hpp"
+
+#include "grader/report.hpp"
+#include "solver/derivation/render.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/solve_set.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+#include <vector>
+
+namespace frustum::app {
+
+namespace {
+
+// A problem-set path, or every *.yaml directly inside a directory (answer files live in
+// subdirectories), in name order.
+std::vector<std::string> set_files(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(path, ec)) return {path};
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(path, ec))
+    if (entry.is_regular_file() && entry.path().extension() == ".yaml")
+      files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+bool failed(const SetResult& r) {
+  return !r.errors.empty() || std::any_of(r.problems.begin(), r.problems.end(),
+                                          [](const ProblemResult& p) { return p.error.has_value(); });
+}
+
+}  // namespace
+
+int run_solve(const std::string& path, const std::optional<std::string>& id, Format format,
+              const Output& o) {
+  const std::vector<std::string> files = set_files(path);
+  if (files.empty()) {
+    o.err << path << ": no problem sets (*.yaml) here\n";
+    return 1;
+  }
+  bool any_failed = false;
+  nlohmann::ordered_json sets = nlohmann::ordered_json::array();
+  for (const std::string& file : files) {
+    const SetResult result = solve_set(load_problem_set(file), true, id);
+    any_failed = any_failed || failed(result);
+    switch (format) {
+      case Format::Json: sets.push_back(render_json(result)); break;
+      case Format::Markdown: o.out << render_markdown(result); break;
+      case Format::Text: o.out << render_text(result, TextStyle{o.color}); break;
+    }
+    if (format != Format::Text)
+      for (const ProblemResult& p : result.problems)
+        if (p.error) o.err << p.error->format() << "\n";
+  }
+  // One set prints the object of problem-format.md §3; a directory prints {"sets": [...]}.
+  if (format == Format::Json)
+    o.out << (sets.size() == 1 ? sets[0] : nlohmann::ordered_json{{"sets", sets}}).dump(2) << "\n";
+  return any_failed ? 1 : 0;
+}
+
+int run_check(const std::string& path, const Output& o) {
+  int errors = 0;
+  for (const std::string& file : set_files(path)) {
+    const ProblemSet set = load_problem_set(file);
+    // `solve` can also fail on well-formed input (collinear points): check solves too.
+    const SetResult result = solve_set(set, false);
+    int here = 0;
+    for (const Diagnostic& d : result.errors) {
+      o.out << d.format() << "\n";
+      ++here;
+    }
+    for (const ProblemResult& p : result.problems)
+      if (p.error) {
+        o.out << p.error->format() << "\n";
+        ++here;
+      }
+    if (here == 0)
+      o.err << file << ": " << set.problems.size() << " problem"
+            << (set.problems.size() == 1 ? "" : "s") << ", no errors\n";
+    errors += here;
+  }
+  if (errors) o.err << errors << " error" << (errors == 1 ? "" : "s") << "\n";
+  return errors == 0 ? 0 : 1;
+}
+
+int run_grade(const std::string& set_file, const std::string& answers_file, Format format,
+              const Output& o) {
+  const ProblemSet set = load_problem_set(set_file);
+  const Submission submission = load_submission(answers_file);
+  const GradeReport report = grade(set, submission);
+  if (format == Format::Json)
+    o.out << render_grade_json(report).dump(2) << "\n";
+  else
+    o.out << render_grade_text(report, TextStyle{o.color});
+  bool failed = !report.errors.empty();
+  for (const ProblemGrade& p : report.problems) failed = failed || p.error.has_value();
+  return failed ? 1 : 0;
+}
+
+int run_kinds(const Output& o) {
+  for (const KindInfo& k : builtin_kinds().all()) {
+    o.out << k.name << " — " << k.summary << "\n    given:";
+    for (const std::string& f : k.given_fields) o.out << " " << f;
+    o.out << "\n    answers:";
+    for (const AnswerSpec& a : k.answers) o.out << " " << a.name;
+    o.out << "\n";
+  }
+  return 0;
+}
+
+}  // namespace frustum::app

@@ -1,0 +1,279 @@
+#include "grader/answer_parser.hpp"
+
+#include "solver/util/expression.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace frustum {
+
+namespace {
+
+// Words a student may write for each category and boolean, with Japanese equivalents.
+const std::vector<std::pair<std::string, std::string>> kWordSynonyms = {
+    {"front", "front"}, {"表", "front"},  {"おもて", "front"}, {"front-facing", "front"},
+    {"back", "back"},   {"裏", "back"},   {"うら", "back"},    {"back-facing", "back"},
+    {"edge_on", "edge_on"}, {"edge-on", "edge_on"}, {"edge on", "edge_on"}, {"真横", "edge_on"},
+    {"visible", "visible"}, {"可視", "visible"}, {"silhouette", "silhouette"},
+    {"輪郭線", "silhouette"}, {"輪郭", "silhouette"}, {"hidden", "hidden"}, {"不可視", "hidden"}};
+
+const std::vector<std::pair<std::string, bool>> kBoolWords = {
+    {"true", true},  {"yes", true},  {"y", true},  {"t", true},  {"1", true},  {"はい", true},
+    {"○", true},     {"〇", true},   {"false", false}, {"no", false}, {"n", false}, {"f", false},
+    {"0", false},    {"いいえ", false}, {"×", false}, {"✕", false}};
+
+std::string trim_lower(std::string s) {
+  const auto not_space = [](unsigned char c) { return !std::isspace(c); };
+  s.erase(s.begin(), std::find_if(s.begin(), s.end(), not_space));
+  s.erase(std::find_if(s.rbegin(), s.rend(), not_space).base(), s.end());
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) {
+    return c < 128 ? static_cast<char>(std::tolower(c)) : static_cast<char>(c);
+  });
+  return s;
+}
+
+struct Numbers {
+  std::vector<Exact> values;
+  std::string error;
+};
+
+Exact parse_one(const std::string& text, std::string& error, const ExpressionOptions& opts = {}) {
+  const ExpressionResult r = parse_expression(text, opts);
+  if (!r) {
+    error = "cannot read '" + text + "': " + r.error;
+    return 0;
+  }
+  if (!is_real_constant(*r.value)) {
+    error = "'" + text + "' is not a real number";
+    return 0;
+  }
+  return canonical(*r.value);
+}
+
+// Splits "(a, b, c)" or "a, b, c" at top-level commas.
+std::vector<std::string> split_list(std::string s) {
+  s.erase(0, s.find_first_not_of(" \t"));
+  s.erase(s.find_last_not_of(" \t") + 1);
+  if (s.size() >= 2 && ((s.front() == '(' && s.back() == ')') || (s.front() == '[' && s.back() == ']')))
+    s = s.substr(1, s.size() - 2);
+  std::vector<std::string> out;
+  int depth = 0;
+  std::string cur;
+  for (char c : s) {
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+    if (c == ',' && depth == 0) {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+Numbers read_numbers(const YAML::Node& n) {
+  Numbers out;
+  std::vector<std::string> items;
+  if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) {
+      if (!n[i].IsScalar()) {
+        out.error = "item " + std::to_string(i + 1) + " is not a number";
+        return out;
+      }
+      items.push_back(n[i].Scalar());
+    }
+  } else if (n.IsScalar()) {
+    items = split_list(n.Scalar());
+  } else {
+    out.error = "expected a list of numbers";
+    return out;
+  }
+  for (const std::string& item : items) {
+    out.values.push_back(parse_one(item, out.error));
+    if (!out.error.empty()) return out;
+  }
+  return out;
+}
+
+// "x + y − z = −6" → [a, b, c, d] of ax + by + cz = d.
+Numbers read_plane_equation(const std::string& text) {
+  Numbers out;
+  ExpressionOptions opts;
+  for (const char* name : {"x", "y", "z"}) opts.symbols.emplace(name, GiNaC::symbol(name));
+  opts.allow_equation = true;
+  const ExpressionResult r = parse_expression(text, opts);
+  if (!r) {
+    out.error = "cannot read the plane '" + text + "': " + r.error;
+    return out;
+  }
+  if (!r.equation) {
+    out.error = "a plane is an equation like 'x + y - z = -6' or a list [a, b, c, d]";
+    return out;
+  }
+  const GiNaC::ex e = r.value->expand();
+  GiNaC::exmap zero;
+  GiNaC::ex linear = 0;
+  for (const char* name : {"x", "y", "z"}) {
+    const GiNaC::symbol& s = opts.symbols.at(name);
+    if (e.degree(s) > 1) {
+      out.error = std::string("the plane is not linear in ") + name;
+      return out;
+    }
+    const GiNaC::ex c = e.coeff(s, 1);
+    out.values.push_back(c);
+    linear += c * s;
+    zero[s] = 0;
+  }
+  const GiNaC::ex constant = e.subs(zero);
+  if (!(e - linear - constant).expand().is_zero()) {
+    out.error = "the plane is not linear in x, y, z";
+    return out;
+  }
+  for (const Exact& c : out.values)
+    if (!is_real_constant(c)) {
+      out.error = "the plane's coefficients must be numbers";
+      return out;
+    }
+  out.values.push_back(-constant);
+  for (Exact& c : out.values) c = canonical(c);
+  return out;
+}
+
+}  // namespace
+
+std::string raw_text(const YAML::Node& node) {
+  if (node.IsScalar()) return node.Scalar();
+  if (node.IsSequence()) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < node.size(); ++i) s += (i ? ", " : "") + raw_text(node[i]);
+    return s + "]";
+  }
+  if (node.IsMap()) {
+    std::string s = "{";
+    bool first = true;
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      s += (first ? "" : ", ") + raw_text(it->first) + ": " + raw_text(it->second);
+      first = false;
+    }
+    return s + "}";
+  }
+  return "";
+}
+
+ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
+  ParsedAnswer p;
+  p.raw = raw_text(node);
+  if (p.raw.size() > kMaxExpressionLength * 4) {
+    p.error = "the answer is too long";
+    return p;
+  }
+  if (!node.IsDefined() || node.IsNull()) {
+    p.error = "empty answer";
+    return p;
+  }
+  switch (spec.kind) {
+    case AnswerKind::Scalar: {
+      if (!node.IsScalar()) {
+        p.error = "expected one number";
+        return p;
+      }
+      std::string error;
+      const Exact v = parse_one(node.Scalar(), error);
+      if (!error.empty()) {
+        p.error = error;
+        return p;
+      }
+      p.value = Value::scalar(v);
+      break;
+    }
+    case AnswerKind::Vector:
+    case AnswerKind::Direction:
+    case AnswerKind::UnitVector:
+    case AnswerKind::Point: {
+      const Numbers n = read_numbers(node);
+      if (!n.error.empty()) {
+        p.error = n.error;
+        return p;
+      }
+      p.value = Value::vector(n.values);
+      break;
+    }
+    case AnswerKind::Plane: {
+      const Numbers n = node.IsScalar() && node.Scalar().find('=') != std::string::npos
+                            ? read_plane_equation(node.Scalar())
+                            : read_numbers(node);
+      if (!n.error.empty()) {
+        p.error = n.error;
+        return p;
+      }
+      if (n.values.size() != 4) {
+        p.error = "a plane has 4 coefficients [a, b, c, d] of ax + by + cz = d";
+        return p;
+      }
+      p.value = Value::vector(n.values);
+      break;
+    }
+    case AnswerKind::Matrix: {
+      if (!node.IsSequence() || node.size() == 0) {
+        p.error = "expected a matrix as a list of rows";
+        return p;
+      }
+      std::vector<std::vector<Exact>> rows;
+      for (std::size_t r = 0; r < node.size(); ++r) {
+        const Numbers n = read_numbers(node[r]);
+        if (!n.error.empty()) {
+          p.error = "row " + std::to_string(r + 1) + ": " + n.error;
+          return p;
+        }
+        if (!rows.empty() && n.values.size() != rows[0].size()) {
+          p.error = "the rows have different lengths";
+          return p;
+        }
+        rows.push_back(n.values);
+      }
+      p.value = Value::matrix(rows);
+      break;
+    }
+    case AnswerKind::Bool: {
+      if (!node.IsScalar()) {
+        p.error = "expected true or false";
+        return p;
+      }
+      const std::string w = trim_lower(node.Scalar());
+      const auto it = std::find_if(kBoolWords.begin(), kBoolWords.end(),
+                                   [&](const auto& b) { return b.first == w; });
+      if (it == kBoolWords.end()) {
+        p.error = "'" + node.Scalar() + "' is not true or false";
+        return p;
+      }
+      p.value = Value::boolean(it->second);
+      break;
+    }
+    case AnswerKind::Category: {
+      if (!node.IsScalar()) {
+        p.error = "expected one word";
+        return p;
+      }
+      std::string w = trim_lower(node.Scalar());
+      for (const auto& [syn, canon] : kWordSynonyms)
+        if (syn == w) w = canon;
+      if (std::find(spec.words.begin(), spec.words.end(), w) == spec.words.end()) {
+        std::string list;
+        for (const auto& a : spec.words) list += (list.empty() ? "" : ", ") + a;
+        p.error = "'" + node.Scalar() + "' is not one of " + list;
+        return p;
+      }
+      p.value = Value::category(w);
+      break;
+    }
+    default:
+      p.error = "answers of this kind cannot be graded yet";
+      return p;
+  }
+  p.ok = true;
+  return p;
+}
+
+}  // namespace frustum

@@ -1,0 +1,26 @@
+// Parsing a student's answer (untrusted) into a Value of the answer's kind. A format error is
+// recorded with its reason, so an unparseable answer is never graded as wrong.
+#pragma once
+
+#include "solver/derivation/value.hpp"
+#include "solver/kinds/kind.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+namespace frustum {
+
+struct ParsedAnswer {
+  bool ok = false;
+  std::string error;  // why it could not be read
+  std::string raw;    // the answer as the student wrote it (for reports)
+  Value value;
+};
+
+ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec);
+
+// The text of a student's answer as written (scalars as is, lists as [a, b, c]).
+std::string raw_text(const YAML::Node& node);
+
+}  // namespace frustum

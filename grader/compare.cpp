@@ -1,0 +1,140 @@
+#include "grader/compare.hpp"
+
+#include "solver/util/exact_format.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace frustum {
+
+std::string_view to_string(Verdict v) {
+  switch (v) {
+    case Verdict::Correct: return "correct";
+    case Verdict::Incorrect: return "incorrect";
+    case Verdict::Partial: return "partial";
+    case Verdict::Unparseable: return "unparseable";
+    case Verdict::Missing: return "missing";
+  }
+  return "incorrect";
+}
+
+bool close(double expected, double got, const Tolerance& tol, double scale) {
+  if (!std::isfinite(got)) return false;
+  return std::abs(got - expected) <= std::max(tol.abs, tol.rel * std::abs(scale));
+}
+
+namespace {
+
+Comparison correct(std::string why) { return {Verdict::Correct, 1.0, std::move(why)}; }
+Comparison incorrect(std::string why) { return {Verdict::Incorrect, 0.0, std::move(why)}; }
+
+bool exactly_equal(const Value& a, const Value& b) {
+  if (a.exact.empty() || b.exact.empty() || a.exact.size() != b.exact.size()) return false;
+  for (std::size_t i = 0; i < a.exact.size(); ++i)
+    if (!canonical(a.exact[i] - b.exact[i]).is_zero()) return false;
+  return true;
+}
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+// Componentwise within tolerance, relative to the largest component of the expected value.
+bool close_all(const std::vector<double>& e, const std::vector<double>& g, const Tolerance& tol) {
+  if (e.size() != g.size()) return false;
+  const double scale = max_abs(e);
+  for (std::size_t i = 0; i < e.size(); ++i)
+    if (!close(e[i], g[i], tol, scale)) return false;
+  return true;
+}
+
+std::vector<double> scaled(const std::vector<double>& v, double k) {
+  std::vector<double> out(v);
+  for (double& x : out) x *= k;
+  return out;
+}
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+  return s;
+}
+
+// The scale λ minimising ‖g − λe‖ (least squares), when g is a multiple of e.
+double best_scale(const std::vector<double>& e, const std::vector<double>& g) {
+  const double ee = dot(e, e);
+  return ee == 0 ? 0 : dot(g, e) / ee;
+}
+
+Comparison compare_numbers(const Value& expected, const Value& got, const Tolerance& tol) {
+  if (exactly_equal(expected, got)) return correct("exactly equal");
+  if (close_all(expected.numbers, got.numbers, tol))
+    return correct(fmt::format("within tolerance (relative {}, absolute {})", tol.rel, tol.abs));
+  return incorrect("");
+}
+
+}  // namespace
+
+Comparison compare(const Value& expected, const Value& got, const AnswerSpec& spec,
+                   const Tolerance& tol) {
+  if (expected.shape == Value::Shape::Null) {
+    return got.shape == Value::Shape::Null ? correct("there is no such value")
+                                           : incorrect("there is no such value here");
+  }
+  switch (spec.kind) {
+    case AnswerKind::Scalar: return compare_numbers(expected, got, tol);
+    case AnswerKind::Vector:
+    case AnswerKind::Point:
+    case AnswerKind::Matrix:
+    case AnswerKind::UnitVector: {
+      if (got.numbers.size() != expected.numbers.size())
+        return incorrect(fmt::format("expected {} components, got {}", expected.numbers.size(),
+                                     got.numbers.size()));
+      Comparison c = compare_numbers(expected, got, tol);
+      if (c.verdict == Verdict::Correct) return c;
+      if (spec.kind == AnswerKind::UnitVector) {
+        const double k = best_scale(expected.numbers, got.numbers);
+        if (k > 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
+          return incorrect(fmt::format(
+              "the direction is right but the length is {} — a unit vector has length 1 "
+              "(divide by the length)",
+              format_approx(std::sqrt(dot(got.numbers, got.numbers)))));
+        if (k < 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
+          return incorrect("it points the opposite way: check the order of the cross product");
+      }
+      return c;
+    }
+    case AnswerKind::Direction: {
+      if (got.numbers.size() != expected.numbers.size())
+        return incorrect(fmt::format("expected {} components, got {}", expected.numbers.size(),
+                                     got.numbers.size()));
+      const double k = best_scale(expected.numbers, got.numbers);
+      if (k > 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
+        return correct(k == 1 || exactly_equal(expected, got)
+                           ? "equal"
+                           : "the same direction (a normal is right up to a positive factor)");
+      if (k < 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
+        return incorrect("it points the opposite way: check the order of the cross product");
+      return incorrect("");
+    }
+    case AnswerKind::Plane: {
+      if (got.numbers.size() != 4) return incorrect("a plane has 4 coefficients");
+      const double k = best_scale(expected.numbers, got.numbers);
+      if (k != 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
+        return correct("the same plane (equations agree up to a non-zero factor)");
+      return incorrect("");
+    }
+    case AnswerKind::Bool:
+      return got.flag == expected.flag ? correct("") : incorrect("");
+    case AnswerKind::Category:
+      return got.word == expected.word ? correct("") : incorrect("");
+    default:
+      return incorrect("answers of this kind cannot be graded yet");
+  }
+}
+
+}  // namespace frustum

@@ -1,0 +1,149 @@
+#include "grader/grade.hpp"
+
+#include "grader/answer_parser.hpp"
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/solve_set.hpp"
+#include "solver/kinds/yaml_document.hpp"
+#include "solver/util/suggest.hpp"
+
+
+namespace frustum {
+
+namespace {
+
+Submission load_submission_from(const YamlDocument& doc, const std::string& name) {
+  Submission s;
+  s.file = name;
+  if (doc.error) {
+    s.errors.push_back(*doc.error);
+    return s;
+  }
+  const YAML::Node& root = doc.root;
+  auto err = [&](const YAML::Node& n, const std::string& field, const std::string& message) {
+    s.errors.push_back(Diagnostic{location_of(n, name), field, message});
+  };
+  if (!root.IsMap()) {
+    err(root, "", "expected a mapping with 'student' and 'answers'");
+    return s;
+  }
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    if (k != "student" && k != "answers")
+      err(it->first, k, "unknown field" + did_you_mean(k, {"student", "answers"}));
+  }
+  if (root["student"].IsDefined()) {
+    if (root["student"].IsScalar()) s.student = root["student"].Scalar();
+    else err(root["student"], "student", "expected the student's id");
+  }
+  const YAML::Node answers = root["answers"];
+  if (!answers.IsDefined()) err(root, "answers", "missing required field");
+  else if (!answers.IsMap()) err(answers, "answers", "expected a mapping of problem id → answers");
+  else s.answers = answers;
+  return s;
+}
+
+}  // namespace
+
+Submission load_submission_from_string(const std::string& yaml, const std::string& name) {
+  return load_submission_from(parse_yaml(yaml, name), name);
+}
+
+Submission load_submission(const std::string& path) {
+  return load_submission_from(load_yaml_file(path), path);
+}
+
+namespace {
+
+ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemSet& set,
+                           const YAML::Node& student, const std::string& answers_file,
+                           std::vector<Diagnostic>& errors) {
+  ProblemGrade pg;
+  pg.id = spec.id;
+  pg.kind = spec.kind;
+  pg.max_score = spec.max_score();
+  const ProblemResult solved = solve_problem(spec, set.file, true);
+  if (solved.error) {
+    pg.error = solved.error;
+    return pg;
+  }
+  const double each = spec.ask.empty() ? 0 : pg.max_score / static_cast<double>(spec.ask.size());
+  if (student.IsDefined() && !student.IsNull() && !student.IsMap()) {
+    errors.push_back(Diagnostic{location_of(student, answers_file), "answers." + spec.id,
+                                "expected a mapping of answer name → value"});
+  }
+  for (const std::string& name : spec.ask) {
+    AnswerGrade ag;
+    ag.name = name;
+    ag.max_score = each;
+    ag.expected = *solved.answers.find(name);
+    const AnswerSpec& aspec = *spec.info->answer(name);
+    const YAML::Node given = student.IsMap() ? student[name] : YAML::Node();
+    if (!given.IsDefined() || given.IsNull()) {
+      ag.verdict = Verdict::Missing;
+      ag.feedback = "no answer given";
+    } else {
+      const ParsedAnswer parsed = parse_answer(given, aspec);
+      ag.got_text = parsed.raw;
+      if (!parsed.ok) {
+        ag.verdict = Verdict::Unparseable;
+        ag.feedback = parsed.error;
+      } else {
+        ag.got = parsed.value;
+        const Comparison c = compare(ag.expected, parsed.value, aspec, spec.tolerance);
+        ag.verdict = c.verdict;
+        ag.score = c.credit * each;
+        ag.feedback = c.feedback;
+      }
+    }
+    if (ag.verdict != Verdict::Correct) ag.derivation = solved.derivation.steps_for(name);
+    pg.score += ag.score;
+    pg.answers.push_back(std::move(ag));
+  }
+  if (student.IsMap()) {
+    for (auto it = student.begin(); it != student.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      if (std::find(spec.ask.begin(), spec.ask.end(), k) == spec.ask.end())
+        errors.push_back(Diagnostic{location_of(it->first, answers_file), "answers." + spec.id + "." + k,
+                                    "not asked in this problem" + did_you_mean(k, spec.ask)});
+    }
+  }
+  return pg;
+}
+
+}  // namespace
+
+GradeReport grade(const ProblemSet& set, const Submission& submission) {
+  GradeReport r;
+  r.set_file = set.file;
+  r.answers_file = submission.file;
+  r.student = submission.student;
+  r.errors = set.errors;
+  r.errors.insert(r.errors.end(), submission.errors.begin(), submission.errors.end());
+  for (const ProblemSpec& spec : set.problems) {
+    const YAML::Node student = submission.answers.IsMap() ? submission.answers[spec.id] : YAML::Node();
+    ProblemGrade pg;
+    try {
+      pg = grade_problem(spec, set, student, submission.file, r.errors);
+    } catch (const std::exception& e) {
+      pg.id = spec.id;
+      pg.max_score = spec.max_score();
+      pg.error = Diagnostic{spec.where, spec.field, std::string("cannot grade: ") + e.what()};
+    }
+    r.score += pg.score;
+    r.max_score += pg.max_score;
+    r.problems.push_back(std::move(pg));
+  }
+  if (submission.answers.IsMap()) {
+    std::vector<std::string> ids;
+    for (const ProblemSpec& p : set.problems) ids.push_back(p.id);
+    for (auto it = submission.answers.begin(); it != submission.answers.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      if (!set.find(k))
+        r.errors.push_back(Diagnostic{location_of(it->first, submission.file), "answers." + k,
+                                      "no problem with this id in " + set.file + did_you_mean(k, ids)});
+    }
+  }
+  return r;
+}
+
+}  // namespace frustum

@@ -1,0 +1,61 @@
+// Grading a student's answer file against a problem set: parse → compare → verdict, per
+// answer, with the derivation kept for every wrong answer. A broken answer or problem is
+// reported and never stops the rest.
+#pragma once
+
+#include "grader/compare.hpp"
+#include "solver/derivation/problem_result.hpp"
+#include "solver/kinds/problem_set.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frustum {
+
+struct Submission {
+  std::string file;
+  std::string student;
+  YAML::Node answers;  // id → {answer name → value}
+  std::vector<Diagnostic> errors;
+};
+
+Submission load_submission(const std::string& path);
+Submission load_submission_from_string(const std::string& yaml, const std::string& name);
+
+struct AnswerGrade {
+  std::string name;
+  Verdict verdict = Verdict::Missing;
+  double score = 0;
+  double max_score = 0;
+  Value expected;
+  std::optional<Value> got;  // parsed
+  std::string got_text;      // as written
+  std::string feedback;
+  std::vector<Step> derivation;  // the steps that lead to this answer, for wrong answers
+};
+
+struct ProblemGrade {
+  std::string id;
+  std::string kind;
+  double score = 0;
+  double max_score = 0;
+  std::vector<AnswerGrade> answers;
+  std::optional<Diagnostic> error;  // the problem itself could not be solved
+};
+
+struct GradeReport {
+  std::string set_file;
+  std::string answers_file;
+  std::string student;
+  double score = 0;
+  double max_score = 0;
+  std::vector<ProblemGrade> problems;
+  std::vector<Diagnostic> errors;  // of the set or the answer file, and unknown ids
+};
+
+GradeReport grade(const ProblemSet& set, const Submission& submission);
+
+}  // namespace frustum

@@ -1,0 +1,91 @@
+#include "grader/report.hpp"
+
+#include "solver/util/exact_format.hpp"
+
+#include <fmt/format.h>
+
+namespace frustum {
+
+using json = nlohmann::ordered_json;
+
+namespace {
+
+std::string score_text(double v) { return format_approx(v, 6); }
+
+std::string mark(Verdict v, bool color) {
+  const char* on = "";
+  const char* symbol = "?";
+  switch (v) {
+    case Verdict::Correct: on = "\033[32m"; symbol = "✓"; break;
+    case Verdict::Partial: on = "\033[33m"; symbol = "½"; break;
+    case Verdict::Incorrect: on = "\033[31m"; symbol = "✗"; break;
+    case Verdict::Unparseable: on = "\033[35m"; symbol = "?"; break;
+    case Verdict::Missing: on = "\033[2m"; symbol = "–"; break;
+  }
+  return color ? std::string(on) + symbol + "\033[0m" : symbol;
+}
+
+}  // namespace
+
+std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
+  std::string out = fmt::format("Student {}: {} / {}\n", r.student.empty() ? "(unnamed)" : r.student,
+                                score_text(r.score), score_text(r.max_score));
+  for (const Diagnostic& d : r.errors) out += "  warning: " + d.format() + "\n";
+  for (const ProblemGrade& p : r.problems) {
+    out += fmt::format("\n{} ({}): {} / {}\n", p.id, p.kind, score_text(p.score), score_text(p.max_score));
+    if (p.error) {
+      out += "  error: " + p.error->format() + "\n";
+      continue;
+    }
+    for (const AnswerGrade& a : p.answers) {
+      out += fmt::format("  {} {}: {}", mark(a.verdict, style.color), a.name, to_string(a.verdict));
+      if (a.verdict != Verdict::Missing) out += fmt::format(" — you wrote {}", a.got_text);
+      if (a.verdict != Verdict::Correct)
+        out += fmt::format("; expected {}", a.expected.shown().unicode);
+      out += "\n";
+      if (!a.feedback.empty() && a.verdict != Verdict::Correct) out += "      " + a.feedback + "\n";
+      if (a.verdict != Verdict::Correct && !a.derivation.empty()) {
+        out += "      How to get it:\n";
+        out += render_steps_text(a.derivation, style, "      ");
+      }
+    }
+  }
+  return out;
+}
+
+json render_grade_json(const GradeReport& r) {
+  json j;
+  j["student"] = r.student;
+  j["score"] = number_json(r.score);
+  j["max_score"] = number_json(r.max_score);
+  json problems = json::array();
+  for (const ProblemGrade& p : r.problems) {
+    json pj = {{"id", p.id}, {"score", number_json(p.score)}, {"max_score", number_json(p.max_score)}};
+    if (p.error) pj["error"] = p.error->format();
+    json answers = json::object();
+    for (const AnswerGrade& a : p.answers) {
+      json aj = {{"verdict", std::string(to_string(a.verdict))},
+                 {"score", number_json(a.score)},
+                 {"max_score", number_json(a.max_score)},
+                 {"expected", value_json(a.expected)}};
+      const json exact = exact_json(a.expected);
+      if (!exact.is_null()) aj["expected_exact"] = exact;
+      aj["got"] = a.got ? value_json(*a.got) : (a.got_text.empty() ? json(nullptr) : json(a.got_text));
+      if (a.verdict != Verdict::Missing) aj["got_text"] = a.got_text;
+      aj["feedback"] = a.feedback;
+      if (!a.derivation.empty()) aj["derivation"] = steps_json(a.derivation);
+      answers[a.name] = aj;
+    }
+    pj["answers"] = answers;
+    problems.push_back(pj);
+  }
+  j["problems"] = problems;
+  if (!r.errors.empty()) {
+    json errs = json::array();
+    for (const Diagnostic& d : r.errors) errs.push_back(d.format());
+    j["errors"] = errs;
+  }
+  return j;
+}
+
+}  // namespace frustum

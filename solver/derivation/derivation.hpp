@@ -1,0 +1,45 @@
+// A derivation recorded as data: a list of steps a student can follow, each with its title,
+// the formula, the formula with the numbers substituted, and the result. Renderers
+// (render_text, render_markdown, render_json) decide how it looks.
+#pragma once
+
+#include "solver/derivation/math_text.hpp"
+
+#include <string>
+#include <vector>
+
+namespace frustum {
+
+struct Step {
+  enum class Level { Info, Note, Warning };
+
+  std::string title;          // "Plane through A"
+  MathText formula;           // n·(p − A) = 0
+  MathText substitution;      // (1/√3, 1/√3, −1/√3)·(x, y, z − 6) = 0
+  MathText result;            // x + y − z = −6
+  std::string note;           // prose: a convention, a seed's slip, a warning
+  Level level = Level::Info;
+  std::vector<std::string> answers;  // the answers this step produces ("plane")
+};
+
+class Derivation {
+ public:
+  Step& add(std::string title, MathText formula = {}, MathText substitution = {},
+            MathText result = {});
+  Step& note(std::string title, std::string text);
+  Step& warn(std::string title, std::string text);
+  // Marks the most recent step as producing the named answer.
+  void yields(const std::string& answer);
+
+  const std::vector<Step>& steps() const { return steps_; }
+  bool empty() const { return steps_.empty(); }
+  // Steps up to and including the one that yields `answer` (all steps if none does), so a
+  // wrong answer can be shown with the derivation that leads to it.
+  std::vector<Step> steps_for(const std::string& answer) const;
+  bool has_warnings() const;
+
+ private:
+  std::vector<Step> steps_;
+};
+
+}  // namespace frustum

@@ -1,0 +1,119 @@
+#include "solver/derivation/math_text.hpp"
+
+#include "solver/util/exact_format.hpp"
+
+namespace frustum {
+
+MathText& MathText::operator+=(const MathText& other) {
+  unicode += other.unicode;
+  latex += other.latex;
+  return *this;
+}
+
+MathText operator+(MathText a, const MathText& b) { return a += b; }
+
+MathText math(std::string_view both) { return {std::string(both), std::string(both)}; }
+
+MathText math(std::string_view unicode, std::string_view latex) {
+  return {std::string(unicode), std::string(latex)};
+}
+
+bool needs_approx(const Exact& e) {
+  return !GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_integer();
+}
+
+namespace {
+
+// Unicode text uses the minus sign U+2212, never an ASCII hyphen.
+std::string unicode_minus(std::string s) {
+  std::string out;
+  for (char c : s) out += c == '-' ? std::string("−") : std::string(1, c);
+  return out;
+}
+
+}  // namespace
+
+MathText exact(const Exact& e, bool with_approx) {
+  const Exact c = canonical(e);
+  MathText m{format_exact(c, MathStyle::Unicode), format_exact(c, MathStyle::Latex)};
+  if (with_approx && needs_approx(c)) {
+    const std::string d = format_approx(to_double(c));
+    m.unicode += " ≈ " + unicode_minus(d);
+    m.latex += " \\approx " + d;
+  }
+  return m;
+}
+
+MathText number(double v) { return math(unicode_minus(format_double(v)), format_double(v)); }
+
+MathText vec(const std::vector<Exact>& v, bool with_approx) {
+  MathText m = math("(", "\\left(");
+  bool any_approx = false;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i) m += math(", ");
+    m += exact(v[i]);
+    any_approx = any_approx || needs_approx(canonical(v[i]));
+  }
+  m += math(")", "\\right)");
+  if (with_approx && any_approx) {
+    std::string d = "(";
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (i) d += ", ";
+      d += format_approx(to_double(v[i]));
+    }
+    d += ")";
+    m += math(" ≈ " + unicode_minus(d), " \\approx " + d);
+  }
+  return m;
+}
+
+MathText matrix(const std::vector<std::vector<Exact>>& rows) {
+  MathText m = math("[", "\\begin{bmatrix}");
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (r) m += math("; ", " \\\\ ");
+    for (std::size_t c = 0; c < rows[r].size(); ++c) {
+      if (c) m += math(", ", " & ");
+      m += exact(rows[r][c]);
+    }
+  }
+  m += math("]", "\\end{bmatrix}");
+  return m;
+}
+
+MathText linear_expression(const std::vector<std::pair<Exact, std::string>>& terms) {
+  MathText m;
+  bool first = true;
+  for (const auto& [raw, name] : terms) {
+    const Exact coef = canonical(raw);
+    if (coef.is_zero()) continue;
+    const bool negative = exact_sign(coef) < 0;
+    const Exact mag = negative ? Exact(-coef) : coef;
+    if (first) {
+      if (negative) m += math("−", "-");
+    } else {
+      m += negative ? math(" − ", " - ") : math(" + ");
+    }
+    if (name.empty() || mag != 1) {
+      const bool sum = GiNaC::is_a<GiNaC::add>(mag) && !name.empty();
+      if (sum) m += math("(", "\\left(");
+      m += exact(mag);
+      if (sum) m += math(")", "\\right)");
+      if (!name.empty() && !sum && !GiNaC::is_a<GiNaC::numeric>(mag)) m += math("·", " ");
+    }
+    m += math(name);
+    first = false;
+  }
+  if (first) m += math("0");
+  return m;
+}
+
+MathText linear_equation(const std::vector<std::pair<Exact, std::string>>& terms,
+                         const Exact& rhs) {
+  return linear_expression(terms) + math(" = ") + exact(rhs);
+}
+
+MathText plane_equation(const Exact& a, const Exact& b, const Exact& c, const Exact& d) {
+  return linear_equation({{a, "x"}, {b, "y"}, {c, "z"}}, d);
+}
+
+}  // namespace frustum

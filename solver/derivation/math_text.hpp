@@ -1,0 +1,54 @@
+// A piece of mathematics kept in the two notations the renderers need: Unicode for the
+// terminal and JSON ("√3/3", "x + y − z = −6") and LaTeX for Markdown ("\frac{\sqrt{3}}{3}").
+#pragma once
+
+#include "solver/geometry/vec.hpp"
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace frustum {
+
+struct MathText {
+  std::string unicode;
+  std::string latex;
+
+  bool empty() const { return unicode.empty() && latex.empty(); }
+  MathText& operator+=(const MathText& other);
+};
+
+MathText operator+(MathText a, const MathText& b);
+
+// Literal text, the same in both notations or given in each.
+MathText math(std::string_view both);
+MathText math(std::string_view unicode, std::string_view latex);
+
+// An exact value in paper form ("9√3"); with_approx adds the decimal ("9√3 ≈ 15.59") when
+// the value is not an integer.
+MathText exact(const Exact& e, bool with_approx = false);
+MathText number(double v);
+
+// (a, b, c) of exact values.
+MathText vec(const std::vector<Exact>& v, bool with_approx = false);
+template <int N>
+MathText vec(const Eigen::Matrix<Exact, N, 1>& v, bool with_approx = false) {
+  return vec(std::vector<Exact>(v.data(), v.data() + N), with_approx);
+}
+// A matrix as on paper (rows), bracketed.
+MathText matrix(const std::vector<std::vector<Exact>>& rows);
+
+// Σ coefᵢ·nameᵢ = rhs written as on paper: unit coefficients dropped, signs as " − ", zero
+// terms left out; an empty name is a constant term ("1 + 1 − z = −6").
+MathText linear_expression(const std::vector<std::pair<Exact, std::string>>& terms);
+MathText linear_equation(const std::vector<std::pair<Exact, std::string>>& terms,
+                         const Exact& rhs);
+
+// a x + b y + c z = d, with unit coefficients and signs written as on paper.
+MathText plane_equation(const Exact& a, const Exact& b, const Exact& c, const Exact& d);
+
+// Whether an exact value is worth a decimal beside it (not an integer).
+bool needs_approx(const Exact& e);
+
+}  // namespace frustum

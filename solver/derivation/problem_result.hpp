@@ -1,0 +1,33 @@
+// What solving a problem set produces: per problem its answers and derivation, or its error.
+#pragma once
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/derivation/value.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "solver/viewing/conventions.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frustum {
+
+struct ProblemResult {
+  std::string id;
+  std::string kind;
+  std::string text;
+  Conventions conventions;
+  std::vector<std::string> ask;  // answers to report, in order
+  Answers answers;
+  Derivation derivation;
+  std::optional<Diagnostic> error;  // set instead of answers when the problem failed
+};
+
+struct SetResult {
+  std::string file;
+  std::string title;
+  std::vector<ProblemResult> problems;
+  std::vector<Diagnostic> errors;  // errors of the set itself (bad YAML, no problems list)
+};
+
+}  // namespace frustum

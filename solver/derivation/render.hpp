@@ -1,0 +1,35 @@
+// Renderers of derivations and solved sets: text for the terminal, Markdown with LaTeX math,
+// and JSON in the shape of problem-format.md §3.
+#pragma once
+
+#include "solver/derivation/problem_result.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace frustum {
+
+struct TextStyle {
+  bool color = false;  // ANSI colour: only when writing to a terminal
+};
+
+std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& style,
+                              const std::string& indent = "  ");
+std::string render_problem_text(const ProblemResult& p, const TextStyle& style);
+std::string render_text(const SetResult& set, const TextStyle& style);
+
+std::string render_steps_markdown(const std::vector<Step>& steps);
+std::string render_problem_markdown(const ProblemResult& p);
+std::string render_markdown(const SetResult& set);
+
+// A number that round-trips: integral doubles become JSON integers (8, not 8.0).
+nlohmann::ordered_json number_json(double v);
+nlohmann::ordered_json value_json(const Value& v);   // "value"
+nlohmann::ordered_json exact_json(const Value& v);   // "exact" (null when not exact)
+nlohmann::ordered_json steps_json(const std::vector<Step>& steps);
+nlohmann::ordered_json problem_json(const ProblemResult& p);
+nlohmann::ordered_json render_json(const SetResult& set);
+
+}  // namespace frustum

@@ -1,0 +1,119 @@
+#include "solver/derivation/render.hpp"
+
+#include "solver/util/exact_format.hpp"
+
+#include <cmath>
+
+namespace frustum {
+
+using json = nlohmann::ordered_json;
+
+json number_json(double v) {
+  if (std::isfinite(v) && v == std::trunc(v) && std::abs(v) < 9007199254740992.0)
+    return static_cast<long long>(v);
+  if (!std::isfinite(v)) return nullptr;
+  return v;
+}
+
+namespace {
+
+template <typename T, typename F>
+json shaped(const Value& v, const std::vector<T>& items, F convert) {
+  if (v.shape == Value::Shape::Scalar) return convert(items.at(0));
+  json out = json::array();
+  if (v.shape == Value::Shape::Matrix) {
+    for (int r = 0; r < v.rows; ++r) {
+      json row = json::array();
+      for (int c = 0; c < v.cols; ++c) row.push_back(convert(items.at(r * v.cols + c)));
+      out.push_back(row);
+    }
+    return out;
+  }
+  for (const T& x : items) out.push_back(convert(x));
+  return out;
+}
+
+}  // namespace
+
+json value_json(const Value& v) {
+  switch (v.shape) {
+    case Value::Shape::Scalar:
+    case Value::Shape::Vector:
+    case Value::Shape::Matrix: return shaped(v, v.numbers, number_json);
+    case Value::Shape::Bool: return v.flag;
+    case Value::Shape::Word: return v.word;
+    case Value::Shape::WordMap: {
+      json m = json::object();
+      for (const auto& [k, w] : v.entries) m[k] = w;
+      return m;
+    }
+    case Value::Shape::WordList: return v.words;
+    case Value::Shape::Null: return nullptr;
+  }
+  return nullptr;
+}
+
+json exact_json(const Value& v) {
+  if (v.exact.empty()) return nullptr;
+  return shaped(v, v.exact, [](const Exact& e) { return format_exact(e, MathStyle::Plain); });
+}
+
+json steps_json(const std::vector<Step>& steps) {
+  json out = json::array();
+  for (const Step& s : steps) {
+    std::string text;
+    for (const MathText* m : {&s.formula, &s.substitution, &s.result})
+      if (!m->empty()) text += (text.empty() ? "" : "\n") + m->unicode;
+    if (!s.note.empty()) text += (text.empty() ? "" : "\n") + s.note;
+    json j = {{"title", s.title}, {"text", text}};
+    if (!s.formula.empty()) j["formula"] = {{"text", s.formula.unicode}, {"latex", s.formula.latex}};
+    if (!s.substitution.empty())
+      j["substitution"] = {{"text", s.substitution.unicode}, {"latex", s.substitution.latex}};
+    if (!s.result.empty()) j["result"] = {{"text", s.result.unicode}, {"latex", s.result.latex}};
+    if (s.level != Step::Level::Info)
+      j["level"] = s.level == Step::Level::Warning ? "warning" : "note";
+    if (!s.answers.empty()) j["answers"] = s.answers;
+    out.push_back(j);
+  }
+  return out;
+}
+
+json problem_json(const ProblemResult& p) {
+  json j = {{"id", p.id}, {"kind", p.kind}};
+  if (p.error) {
+    j["error"] = p.error->format();
+    return j;
+  }
+  j["conventions"] = {{"api", std::string(to_string(p.conventions.api))},
+                      {"angles", std::string(to_string(p.conventions.angles))}};
+  json answers = json::object();
+  for (const std::string& name : p.ask) {
+    const Value* v = p.answers.find(name);
+    if (!v) continue;
+    json a = {{"value", value_json(*v)}};
+    json e = exact_json(*v);
+    if (!e.is_null()) a["exact"] = e;
+    a["text"] = v->shown().unicode;
+    answers[name] = a;
+  }
+  j["answers"] = answers;
+  j["steps"] = steps_json(p.derivation.steps());
+  return j;
+}
+
+json render_json(const SetResult& set) {
+  json j = json::object();
+  j["file"] = set.file;
+  if (!set.title.empty()) j["title"] = set.title;
+  if (!set.errors.empty()) {
+    json errs = json::array();
+    for (const Diagnostic& d : set.errors) errs.push_back(d.format());
+    j["errors"] = errs;
+  }
+  json problems = json::array();
+  for (const ProblemResult& p : set.problems) problems.push_back(problem_json(p));
+  j["problems"] = problems;
+  return j;
+}
+
+}  // namespace frustum

@@ -1,0 +1,72 @@
+#include "solver/derivation/render.hpp"
+
+#include "solver/derivation/problem_result.hpp"
+
+#include <fmt/format.h>
+
+namespace frustum {
+
+namespace {
+
+struct Ansi {
+  bool on;
+  std::string bold() const { return on ? "\033[1m" : ""; }
+  std::string dim() const { return on ? "\033[2m" : ""; }
+  std::string yellow() const { return on ? "\033[33m" : ""; }
+  std::string red() const { return on ? "\033[31m" : ""; }
+  std::string cyan() const { return on ? "\033[36m" : ""; }
+  std::string reset() const { return on ? "\033[0m" : ""; }
+};
+
+}  // namespace
+
+std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& style,
+                              const std::string& indent) {
+  const Ansi a{style.color};
+  std::string out;
+  int number = 0;
+  for (const Step& s : steps) {
+    const std::string body = indent + "    ";
+    if (s.level == Step::Level::Warning) {
+      out += fmt::format("{}{}⚠ {}{}\n", indent, a.yellow(), s.title, a.reset());
+    } else if (s.level == Step::Level::Note) {
+      out += fmt::format("{}{}• {}{}\n", indent, a.cyan(), s.title, a.reset());
+    } else {
+      out += fmt::format("{}{}{:>2}. {}{}\n", indent, a.bold(), ++number, s.title, a.reset());
+    }
+    if (!s.formula.empty()) out += body + s.formula.unicode + "\n";
+    if (!s.substitution.empty()) out += body + s.substitution.unicode + "\n";
+    if (!s.result.empty()) out += indent + "  ⇒ " + a.bold() + s.result.unicode + a.reset() + "\n";
+    if (!s.note.empty()) out += body + a.dim() + s.note + a.reset() + "\n";
+  }
+  return out;
+}
+
+std::string render_problem_text(const ProblemResult& p, const TextStyle& style) {
+  const Ansi a{style.color};
+  std::string out = fmt::format("{}━━ {} · {} ━━{}\n", a.bold(), p.id, p.kind, a.reset());
+  if (!p.text.empty()) out += p.text + "\n";
+  if (p.error) {
+    out += fmt::format("  {}error:{} {}\n", a.red(), a.reset(), p.error->format());
+    return out;
+  }
+  out += render_steps_text(p.derivation.steps(), style);
+  out += fmt::format("  {}Answers{}\n", a.bold(), a.reset());
+  for (const std::string& name : p.ask) {
+    if (const Value* v = p.answers.find(name))
+      out += fmt::format("    {} = {}\n", name, v->shown().unicode);
+  }
+  return out;
+}
+
+std::string render_text(const SetResult& set, const TextStyle& style) {
+  const Ansi a{style.color};
+  std::string out;
+  if (!set.title.empty()) out += fmt::format("{}{}{}\n\n", a.bold(), set.title, a.reset());
+  for (const Diagnostic& d : set.errors)
+    out += fmt::format("{}error:{} {}\n", a.red(), a.reset(), d.format());
+  for (const ProblemResult& p : set.problems) out += render_problem_text(p, style) + "\n";
+  return out;
+}
+
+}  // namespace frustum

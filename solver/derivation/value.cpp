@@ -1,0 +1,132 @@
+#include "solver/derivation/value.hpp"
+
+namespace frustum {
+
+Value Value::scalar(const Exact& e) {
+  Value v;
+  v.shape = Shape::Scalar;
+  v.exact = {canonical(e)};
+  v.numbers = {to_double(v.exact[0])};
+  return v;
+}
+
+Value Value::scalar(double d) {
+  Value v;
+  v.shape = Shape::Scalar;
+  v.numbers = {d};
+  return v;
+}
+
+Value Value::vector(const std::vector<Exact>& e) {
+  Value v;
+  v.shape = Shape::Vector;
+  for (const Exact& x : e) {
+    v.exact.push_back(canonical(x));
+    v.numbers.push_back(to_double(v.exact.back()));
+  }
+  return v;
+}
+
+Value Value::vector(const std::vector<double>& d) {
+  Value v;
+  v.shape = Shape::Vector;
+  v.numbers = d;
+  return v;
+}
+
+Value Value::matrix(const std::vector<std::vector<Exact>>& rows) {
+  Value v;
+  v.shape = Shape::Matrix;
+  v.rows = static_cast<int>(rows.size());
+  v.cols = rows.empty() ? 0 : static_cast<int>(rows[0].size());
+  for (const auto& row : rows)
+    for (const Exact& x : row) {
+      v.exact.push_back(canonical(x));
+      v.numbers.push_back(to_double(v.exact.back()));
+    }
+  return v;
+}
+
+Value Value::boolean(bool b) {
+  Value v;
+  v.shape = Shape::Bool;
+  v.flag = b;
+  return v;
+}
+
+Value Value::category(std::string w) {
+  Value v;
+  v.shape = Shape::Word;
+  v.word = std::move(w);
+  return v;
+}
+
+Value Value::word_map(std::vector<std::pair<std::string, std::string>> entries) {
+  Value v;
+  v.shape = Shape::WordMap;
+  v.entries = std::move(entries);
+  return v;
+}
+
+Value Value::word_list(std::vector<std::string> words) {
+  Value v;
+  v.shape = Shape::WordList;
+  v.words = std::move(words);
+  return v;
+}
+
+Value Value::null() { return Value{}; }
+
+MathText Value::shown() const {
+  if (!display.empty()) return display;
+  switch (shape) {
+    case Shape::Scalar:
+      return exact.empty() ? number(numbers[0]) : frustum::exact(exact[0], true);
+    case Shape::Vector: {
+      if (!exact.empty()) return vec(exact, true);
+      MathText m = math("(");
+      for (std::size_t i = 0; i < numbers.size(); ++i) m += (i ? math(", ") : math("")) + number(numbers[i]);
+      return m + math(")");
+    }
+    case Shape::Matrix: {
+      std::vector<std::vector<Exact>> r(rows);
+      for (int i = 0; i < rows; ++i)
+        for (int j = 0; j < cols; ++j) {
+          const std::size_t k = static_cast<std::size_t>(i * cols + j);
+          r[i].push_back(exact.empty() ? exact_from_double(numbers[k]) : exact[k]);
+        }
+      return frustum::matrix(r);
+    }
+    case Shape::Bool: return math(flag ? "true" : "false", flag ? "\\text{true}" : "\\text{false}");
+    case Shape::Word: return math(word, "\\text{" + word + "}");
+    case Shape::WordMap: {
+      std::string s;
+      for (const auto& [k, v] : entries) s += (s.empty() ? "" : ", ") + k + ": " + v;
+      return math(s, "\\text{" + s + "}");
+    }
+    case Shape::WordList: {
+      std::string s;
+      for (const auto& w : words) s += (s.empty() ? "" : ", ") + w;
+      return math(s.empty() ? "(none)" : s, "\\text{" + (s.empty() ? std::string("(none)") : s) + "}");
+    }
+    case Shape::Null: return math("none", "\\text{none}");
+  }
+  return {};
+}
+
+void Answers::set(const std::string& name, Value v) {
+  for (auto& [n, existing] : items_)
+    if (n == name) {
+      existing = std::move(v);
+      return;
+    }
+  items_.emplace_back(name, std::move(v));
+}
+
+const Value* Answers::find(const std::string& name) const {
+  for (const auto& [n, v] : items_)
+    if (n == name) return &v;
+  return nullptr;
+}
+
+}  // namespace frustum

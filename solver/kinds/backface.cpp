@@ -1,0 +1,76 @@
+// seed 003: back-face test. D_f = (p_eye − p_i)·n; D_f > 0 front, D_f < 0 back, 0 edge-on.
+// p0 = (1,0,0), p1 = (1,1,1), p2 = (0,1,2), eye = (0,1,0) → n = (1, −1, 1), v = (−1, 1, 0),
+// D_f = −2: back. The sign is decided exactly, never against a float epsilon.
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct Backface {
+  static constexpr const char* kName = "backface";
+  static constexpr const char* kSummary = "is a polygon front- or back-facing from the eye";
+  struct Given {
+    Polygon3<Exact> points;
+    Vec3<Exact> eye;
+    Api api;
+  };
+  static std::vector<std::string> given_fields() { return {"points", "eye"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"normal", AnswerKind::Direction, {}, {}},
+            {"view", AnswerKind::Vector, {}, {}},
+            {"df", AnswerKind::Scalar, {"normal", "view"}, {}},
+            {"facing", AnswerKind::Category, {"df"}, {"front", "back", "edge_on"}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions& c) {
+    return {r.points("points", 3), r.vector<3>("eye"), c.api};
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    if (steps && g.api == Api::DirectX)
+      steps->note("Winding in a left-handed frame",
+                  "In DirectX's left-handed coordinates the same formula n = e₀ × e₁ points to "
+                  "the side from which the vertices appear clockwise — Direct3D's default front "
+                  "face (FrontCounterClockwise = false).");
+    const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", steps);
+    if (steps) steps->yields("normal");
+    Answers out;
+    out.set("normal", Value::vector(n));
+    const Vec3<Exact> v = g.eye - g.points[0];
+    out.set("view", Value::vector(v));
+    if (steps) {
+      steps->add("View vector from p₀ to the eye", math("v = p_eye − p₀", "\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0"),
+                 math("v = ", "\\mathbf{v} = ") + vec(g.eye) + math(" − ", " - ") + vec(g.points[0]),
+                 math("v = ", "\\mathbf{v} = ") + vec(v));
+      steps->yields("view");
+    }
+    const Exact df = canonical(v.dot(n));
+    out.set("df", Value::scalar(df));
+    if (steps) {
+      steps->add("Discriminant", math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
+                 math("D_f = ") + vec(v) + math("·", "\\cdot") + vec(n), math("D_f = ") + exact(df, true));
+      steps->yields("df");
+    }
+    const int sign = exact_sign(df);
+    const std::string facing = sign > 0 ? "front" : sign < 0 ? "back" : "edge_on";
+    out.set("facing", Value::category(facing));
+    if (steps) {
+      const std::string why = sign > 0   ? "D_f > 0: v and n make an acute angle, so the eye sees the front."
+                              : sign < 0 ? "D_f < 0: v and n make an obtuse angle, so the eye sees the back."
+                                         : "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.";
+      steps->add("Front or back", {}, {}, math(facing)).note = why;
+      steps->yields("facing");
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo backface_kind() { return make_kind<Backface>(); }
+
+}  // namespace frustum

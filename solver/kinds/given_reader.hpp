@@ -1,0 +1,71 @@
+// Reads a problem's `given` mapping into typed exact values. Every error names the file,
+// line, column and field; unknown or misspelled fields are errors with a suggestion.
+#pragma once
+
+#include "solver/geometry/vec.hpp"
+#include "solver/util/diagnostic.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace frustum {
+
+SourceLocation location_of(const YAML::Node& node, const std::string& file);
+
+class GivenReader {
+ public:
+  // `field` is the path of `node` for messages ("problems[2].given").
+  GivenReader(YAML::Node node, std::string file, std::string field,
+              std::vector<std::string> known_fields);
+
+  bool has(std::string_view key) const;
+
+  Exact number(std::string_view key);
+  std::vector<Exact> numbers(std::string_view key, std::size_t count);
+  template <int N>
+  Eigen::Matrix<Exact, N, 1> vector(std::string_view key) {
+    const std::vector<Exact> v = numbers(key, N);
+    return Eigen::Matrix<Exact, N, 1>(Eigen::Map<const Eigen::Matrix<Exact, N, 1>>(v.data()));
+  }
+  // A list of 3D points with at least min_count of them.
+  std::vector<Vec3<Exact>> points(std::string_view key, std::size_t min_count,
+                                  std::size_t max_count = 100000);
+  std::string word(std::string_view key, const std::vector<std::string>& allowed);
+  std::vector<std::string> words(std::string_view key, std::size_t count);
+  // A nested mapping, read with its own known fields.
+  GivenReader child(std::string_view key, std::vector<std::string> known_fields);
+
+  // Errors for every field that no read asked for (misspellings, leftovers).
+  void finish();
+
+  // Throws InputError located at `key` (or at the mapping when the key is absent).
+  [[noreturn]] void fail(std::string_view key, const std::string& message) const;
+  // Location of a field path relative to this mapping ("triangle[1]"), for domain errors.
+  Diagnostic locate(const std::string& path, const std::string& message) const;
+
+  const YAML::Node& node() const { return node_; }
+  const std::string& file() const { return file_; }
+
+ private:
+  YAML::Node require(std::string_view key);
+  Exact number_at(const YAML::Node& n, const std::string& field) const;
+  [[noreturn]] void fail_at(const YAML::Node& n, const std::string& field,
+                            const std::string& message) const;
+  std::string path(std::string_view key) const;
+
+  YAML::Node node_;
+  std::string file_;
+  std::string field_;
+  std::vector<std::string> known_;
+  std::set<std::string, std::less<>> used_;
+};
+
+// Reads one number of a YAML scalar node: integers and decimals exactly, strings as exact
+// expressions ("100*sqrt(3)", "pi/3"). Throws InputError for NaN, Inf and non-numbers.
+Exact read_number(const YAML::Node& n, const std::string& file, const std::string& field);
+
+}  // namespace frustum

@@ -1,0 +1,72 @@
+// A problem kind, the unit of extension: it turns `given` into answers plus derivation
+// steps. Each kind is one file with `parse` and `solve` and its answer metadata; the
+// registry (registry.hpp) lists them all.
+#pragma once
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/derivation/value.hpp"
+#include "solver/viewing/conventions.hpp"
+
+#include <any>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace frustum {
+
+class GivenReader;
+
+// How an answer is compared: the equivalences the grader applies.
+enum class AnswerKind {
+  Scalar,      // a number
+  Vector,      // componentwise
+  Direction,   // a vector up to positive scale (a normal; "unnormalised" is accepted)
+  UnitVector,  // a vector of length 1, componentwise
+  Plane,       // a, b, c, d of ax + by + cz = d, up to any non-zero scale
+  Matrix,      // componentwise, row by row
+  Point,       // a point; homogeneous points up to w
+  Bool,
+  Category,    // one word of a fixed list (front/back/edge_on; 表/裏)
+  WordMap,     // "i-j" → word
+  WordList,    // an unordered set of words (edge lists)
+  Sequence,    // an ordered list of words (a drawing order)
+  Polygon,     // vertex list up to cyclic rotation
+  BitString    // outcodes
+};
+
+struct AnswerSpec {
+  std::string name;
+  AnswerKind kind;
+  std::vector<std::string> depends_on;  // earlier answers it is computed from
+  std::vector<std::string> words;       // Category: the allowed words
+};
+
+struct KindInfo {
+  std::string name;
+  std::string summary;
+  std::vector<std::string> given_fields;  // for messages and suggestions
+  std::vector<AnswerSpec> answers;
+  // Reads and validates `given`; throws InputError with the location of the bad field.
+  std::function<std::any(GivenReader&, const Conventions&)> parse;
+  // Solves; records steps when `steps` is not null. Throws DomainError naming the field.
+  std::function<Answers(const std::any& given, Derivation* steps)> solve;
+
+  const AnswerSpec* answer(const std::string& name) const;
+};
+
+// Adapts a kind struct (see STYLE.md) to the type-erased KindInfo.
+template <typename K>
+KindInfo make_kind() {
+  KindInfo k;
+  k.name = K::kName;
+  k.summary = K::kSummary;
+  k.given_fields = K::given_fields();
+  k.answers = K::answers();
+  k.parse = [](GivenReader& r, const Conventions& c) -> std::any { return K::parse(r, c); };
+  k.solve = [](const std::any& g, Derivation* steps) {
+    return K::solve(std::any_cast<const typename K::Given&>(g), steps);
+  };
+  return k;
+}
+
+}  // namespace frustum

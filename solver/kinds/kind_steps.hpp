@@ -1,0 +1,55 @@
+// Derivation pieces several kinds share: a polygon's normal with its warnings, and a plane
+// scaled to the form written on paper.
+#pragma once
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/geometry/vec.hpp"
+
+#include <array>
+#include <string>
+
+namespace frustum {
+
+// Normal of a polygon, counter-clockwise = front: e_0 × e_1 for a triangle (seed 003),
+// Newell's method for more vertices. Records the steps and warnings (degenerate, nearly
+// parallel or zero edges, non-planar) when `steps` is set. Throws DomainError on a
+// degenerate polygon, naming `field`.
+Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::string& field,
+                                      Derivation* steps);
+
+// The plane n·p = d scaled the way a teacher writes it: integer coefficients without a common
+// factor when possible (x + y − z = −6), the orientation of n kept.
+std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d);
+
+// Unit vector n/|n| (exact, canonical).
+Vec3<Exact> unit(const Vec3<Exact>& n);
+
+// n̂ = n / ‖n‖ with its step (‖n‖ shown exactly, 9√3 ≈ 15.59), yielding "unit_normal".
+Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps);
+
+// "p0, p1, p2" style names.
+std::string point_name(const std::string& stem, std::size_t i);
+
+}  // namespace frustum
+
+namespace frustum {
+
+class GivenReader;
+
+// Which edge vectors a normal is the cross product of, as in seed 001's AC × AB.
+struct CrossOrder {
+  std::string first = "AB";
+  std::string second = "AC";
+};
+
+// Reads `cross: [AC, AB]` (each an ordered pair of distinct vertex names A, B, C).
+CrossOrder read_cross(GivenReader& r, const std::string& key, CrossOrder fallback);
+
+// The edge vector XY = Y − X of triangle ABC.
+Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>& abc);
+
+// n = first × second with its steps ("AC = C − A = (0, 3, 3)" ...).
+Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const CrossOrder& order,
+                                    const std::string& field, Derivation* steps);
+
+}  // namespace frustum

@@ -1,0 +1,59 @@
+// The normal of a polygon (counter-clockwise = front, seed 003) or of a triangle ABC with an
+// explicit cross-product order (seed 001: AC × AB in left-handed projection coordinates).
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct Normal {
+  static constexpr const char* kName = "normal";
+  static constexpr const char* kSummary = "the normal and unit normal of a polygon";
+  struct Given {
+    Polygon3<Exact> points;              // when given as a polygon
+    std::optional<CrossOrder> order;     // when given as A, B, C
+  };
+  static std::vector<std::string> given_fields() { return {"points", "A", "B", "C", "cross"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"normal", AnswerKind::Direction, {}, {}},
+            {"unit_normal", AnswerKind::UnitVector, {"normal"}, {}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions&) {
+    Given g;
+    if (r.has("points")) {
+      if (r.has("A") || r.has("cross"))
+        r.fail("points", "give either points or A, B, C (with cross), not both");
+      g.points = r.points("points", 3);
+      return g;
+    }
+    if (!r.has("A") && !r.has("B") && !r.has("C"))
+      r.fail("points", "missing required field: give points (a polygon) or A, B, C");
+    g.points = {r.vector<3>("A"), r.vector<3>("B"), r.vector<3>("C")};
+    g.order = read_cross(r, "cross", CrossOrder{});
+    return g;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    Vec3<Exact> n;
+    if (g.order) {
+      n = cross_normal_with_steps({g.points[0], g.points[1], g.points[2]}, *g.order, "A", steps);
+    } else {
+      n = polygon_normal_with_steps(g.points, "points", steps);
+    }
+    if (steps) steps->yields("normal");
+    Answers out;
+    out.set("normal", Value::vector(n));
+    out.set("unit_normal", Value::vector(unit_normal_with_steps(n, steps)));
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo normal_kind() { return make_kind<Normal>(); }
+
+}  // namespace frustum

@@ -1,0 +1,84 @@
+// The plane through three or more points, or through a point with a normal (seed 001:
+// n·(r − r₀) = 0 → ax + by + cz = d; the distance from the origin is |d| / ‖n‖).
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct Plane {
+  static constexpr const char* kName = "plane";
+  static constexpr const char* kSummary = "the plane through points, or through a point with a normal";
+  struct Given {
+    Polygon3<Exact> points;  // empty when point + normal
+    Vec3<Exact> point;
+    Vec3<Exact> normal;
+  };
+  static std::vector<std::string> given_fields() { return {"points", "point", "normal"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"normal", AnswerKind::Direction, {}, {}},
+            {"unit_normal", AnswerKind::UnitVector, {"normal"}, {}},
+            {"plane", AnswerKind::Plane, {"normal"}, {}},
+            {"distance", AnswerKind::Scalar, {"plane"}, {}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions&) {
+    Given g;
+    if (r.has("points")) {
+      if (r.has("point") || r.has("normal"))
+        r.fail("points", "give either points or point + normal, not both");
+      g.points = r.points("points", 3);
+      return g;
+    }
+    if (!r.has("point") && !r.has("normal"))
+      r.fail("points", "missing required field: give points, or point and normal");
+    g.point = r.vector<3>("point");
+    g.normal = r.vector<3>("normal");
+    if (canonical(g.normal.dot(g.normal)).is_zero())
+      r.fail("normal", "the zero vector is not a normal");
+    return g;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    Vec3<Exact> n = g.normal;
+    Vec3<Exact> p0 = g.point;
+    if (!g.points.empty()) {
+      n = polygon_normal_with_steps(g.points, "points", steps);
+      p0 = g.points[0];
+    }
+    if (steps) steps->yields("normal");
+    Answers out;
+    out.set("normal", Value::vector(n));
+    out.set("unit_normal", Value::vector(unit_normal_with_steps(n, steps)));
+    const Exact len = canonical(norm(n));
+    const Exact d = canonical(n.dot(p0));
+    const std::array<Exact, 4> plane = paper_plane(n, d);
+    Value pv = Value::vector(std::vector<Exact>(plane.begin(), plane.end()));
+    pv.display = plane_equation(plane[0], plane[1], plane[2], plane[3]);
+    out.set("plane", pv);
+    if (steps) {
+      steps->add("Plane through p₀ with normal n",
+                 math("n·(p − p₀) = 0  ⇔  n·p = n·p₀", "\\mathbf{n}\\cdot(\\mathbf{p} - \\mathbf{p}_0) = 0 \\iff \\mathbf{n}\\cdot\\mathbf{p} = \\mathbf{n}\\cdot\\mathbf{p}_0"),
+                 plane_equation(n(0), n(1), n(2), d), pv.display);
+      steps->yields("plane");
+    }
+    const Exact dist = canonical((exact_sign(d) < 0 ? Exact(-d) : d) / len);
+    out.set("distance", Value::scalar(dist));
+    if (steps) {
+      steps->add("Distance from the origin", math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
+                 math("dist = |") + exact(d) + math("| / ", "| / ") + exact(len),
+                 math("dist = ", "\\text{dist} = ") + exact(dist, true));
+      steps->yields("distance");
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo plane_kind() { return make_kind<Plane>(); }
+
+}  // namespace frustum

@@ -1,0 +1,209 @@
+#include "solver/kinds/problem_set.hpp"
+
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/yaml_document.hpp"
+#include "solver/util/suggest.hpp"
+
+#include <set>
+
+namespace frustum {
+
+namespace {
+
+const std::vector<std::string> kSetFields = {"title", "conventions", "tolerance", "problems",
+                                             "description"};
+const std::vector<std::string> kProblemFields = {"id",     "kind",        "text",
+                                                 "given",  "ask",         "points",
+                                                 "vary",   "conventions", "tolerance",
+                                                 "nice",   "difficulty"};
+
+[[noreturn]] void fail_at(const YAML::Node& n, const std::string& file, const std::string& field,
+                          const std::string& message) {
+  throw InputError(Diagnostic{location_of(n, file), field, message});
+}
+
+void check_keys(const YAML::Node& map, const std::vector<std::string>& known,
+                const std::string& file, const std::string& prefix) {
+  for (auto it = map.begin(); it != map.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    if (std::find(known.begin(), known.end(), k) == known.end())
+      fail_at(it->first, file, prefix.empty() ? k : prefix + "." + k,
+              "unknown field" + did_you_mean(k, known));
+  }
+}
+
+std::string read_string(const YAML::Node& n, const std::string& file, const std::string& field) {
+  if (!n.IsScalar()) fail_at(n, file, field, "expected text");
+  return n.Scalar();
+}
+
+double read_nonnegative(const YAML::Node& n, const std::string& file, const std::string& field) {
+  const double v = to_double(read_number(n, file, field));
+  if (!(v >= 0)) fail_at(n, file, field, "must be a non-negative number");
+  return v;
+}
+
+void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
+                  std::set<std::string>& ids) {
+  const std::string& file = set.file;
+  if (!p.IsMap()) fail_at(p, file, spec.field, "expected a problem (a mapping with id, kind, given)");
+  check_keys(p, kProblemFields, file, spec.field);
+  if (!p["id"].IsDefined()) fail_at(p, file, spec.field + ".id", "missing required field");
+  spec.id = read_string(p["id"], file, spec.field + ".id");
+  if (spec.id.empty()) fail_at(p["id"], file, spec.field + ".id", "must not be empty");
+  if (!ids.insert(spec.id).second)
+    fail_at(p["id"], file, spec.field + ".id", "duplicate id '" + spec.id + "'");
+  if (!p["kind"].IsDefined()) fail_at(p, file, spec.field + ".kind", "missing required field");
+  spec.kind = read_string(p["kind"], file, spec.field + ".kind");
+  spec.info = builtin_kinds().find(spec.kind);
+  if (!spec.info)
+    fail_at(p["kind"], file, spec.field + ".kind",
+            "unknown kind '" + spec.kind + "'" + did_you_mean(spec.kind, builtin_kinds().names()));
+  if (p["text"].IsDefined()) spec.text = read_string(p["text"], file, spec.field + ".text");
+  spec.conventions = read_conventions(p["conventions"], file, spec.field + ".conventions",
+                                      set.conventions);
+  spec.tolerance = read_tolerance(p["tolerance"], file, spec.field + ".tolerance", set.tolerance);
+
+  // ask: a list of the kind's answer names (default: all of them).
+  std::vector<std::string> answer_names;
+  for (const AnswerSpec& a : spec.info->answers) answer_names.push_back(a.name);
+  const YAML::Node ask = p["ask"];
+  if (ask.IsDefined() && !ask.IsNull()) {
+    const std::string f = spec.field + ".ask";
+    if (ask.IsScalar()) {
+      spec.ask.push_back(ask.Scalar());
+    } else if (ask.IsSequence()) {
+      for (std::size_t i = 0; i < ask.size(); ++i)
+        spec.ask.push_back(read_string(ask[i], file, f + "[" + std::to_string(i) + "]"));
+    } else {
+      fail_at(ask, file, f, "expected a list of answer names");
+    }
+    for (std::size_t i = 0; i < spec.ask.size(); ++i)
+      if (!spec.info->answer(spec.ask[i]))
+        fail_at(ask.IsSequence() ? ask[i] : ask, file, f,
+                "'" + spec.ask[i] + "' is not an answer of " + spec.kind +
+                    did_you_mean(spec.ask[i], answer_names));
+    if (spec.ask.empty()) fail_at(ask, file, f, "asks for nothing");
+  } else {
+    spec.ask = answer_names;
+  }
+  if (p["points"].IsDefined()) {
+    spec.points = read_nonnegative(p["points"], file, spec.field + ".points");
+  }
+  spec.given_node = p["given"];
+  GivenReader reader(p["given"], file, spec.field + ".given", spec.info->given_fields);
+  spec.given = spec.info->parse(reader, spec.conventions);
+  reader.finish();
+}
+
+}  // namespace
+
+Conventions read_conventions(const YAML::Node& n, const std::string& file,
+                             const std::string& field, Conventions base) {
+  if (!n.IsDefined() || n.IsNull()) return base;
+  if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {api: opengl, angles: degrees}");
+  check_keys(n, {"api", "angles"}, file, field);
+  if (n["api"].IsDefined()) {
+    const std::string v = read_string(n["api"], file, field + ".api");
+    const auto api = parse_api(v);
+    if (!api)
+      fail_at(n["api"], file, field + ".api",
+              "'" + v + "' is not one of opengl, processing, directx" +
+                  did_you_mean(v, {"opengl", "processing", "directx"}));
+    base.api = *api;
+  }
+  if (n["angles"].IsDefined()) {
+    const std::string v = read_string(n["angles"], file, field + ".angles");
+    const auto unit = parse_angle_unit(v);
+    if (!unit)
+      fail_at(n["angles"], file, field + ".angles",
+              "'" + v + "' is not one of degrees, radians" +
+                  did_you_mean(v, {"degrees", "radians"}));
+    base.angles = *unit;
+  }
+  return base;
+}
+
+Tolerance read_tolerance(const YAML::Node& n, const std::string& file, const std::string& field,
+                         Tolerance base) {
+  if (!n.IsDefined() || n.IsNull()) return base;
+  if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {rel: 1.0e-3, abs: 1.0e-6}");
+  check_keys(n, {"rel", "abs"}, file, field);
+  if (n["rel"].IsDefined()) base.rel = read_nonnegative(n["rel"], file, field + ".rel");
+  if (n["abs"].IsDefined()) base.abs = read_nonnegative(n["abs"], file, field + ".abs");
+  return base;
+}
+
+const ProblemSpec* ProblemSet::find(const std::string& id) const {
+  for (const ProblemSpec& p : problems)
+    if (p.id == id) return &p;
+  return nullptr;
+}
+
+std::vector<Diagnostic> ProblemSet::all_errors() const {
+  std::vector<Diagnostic> out = errors;
+  for (const ProblemSpec& p : problems)
+    if (p.error) out.push_back(*p.error);
+  return out;
+}
+
+namespace {
+
+ProblemSet load_problem_set_from(const YamlDocument& doc, const std::string& name) {
+  ProblemSet set;
+  set.file = name;
+  if (doc.error) {
+    set.errors.push_back(*doc.error);
+    return set;
+  }
+  const YAML::Node& root = doc.root;
+  try {
+    if (!root.IsMap())
+      fail_at(root, name, "", "expected a problem set: a mapping with a 'problems' list");
+    check_keys(root, kSetFields, name, "");
+    if (root["title"].IsDefined()) set.title = read_string(root["title"], name, "title");
+    set.conventions = read_conventions(root["conventions"], name, "conventions", {});
+    set.tolerance = read_tolerance(root["tolerance"], name, "tolerance", {});
+    if (!root["problems"].IsDefined()) fail_at(root, name, "problems", "missing required field");
+    if (!root["problems"].IsSequence())
+      fail_at(root["problems"], name, "problems", "expected a list of problems");
+  } catch (const InputError& e) {
+    set.errors.push_back(e.diagnostic());
+    return set;
+  }
+  const YAML::Node problems = root["problems"];
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < problems.size(); ++i) {
+    ProblemSpec spec;
+    spec.field = "problems[" + std::to_string(i) + "]";
+    spec.where = location_of(problems[i], name);
+    try {
+      load_problem(problems[i], spec, set, ids);
+    } catch (const InputError& e) {
+      spec.error = e.diagnostic();
+    } catch (const DomainError& e) {
+      GivenReader reader(spec.given_node, name, spec.field + ".given", {});
+      spec.error = reader.locate(e.field(), e.what());
+    } catch (const std::exception& e) {
+      spec.error = Diagnostic{spec.where, spec.field, std::string("internal error: ") + e.what()};
+    }
+    if (spec.id.empty()) spec.id = spec.field;
+    set.problems.push_back(std::move(spec));
+  }
+  if (problems.size() == 0)
+    set.errors.push_back(Diagnostic{location_of(problems, name), "problems", "the list is empty"});
+  return set;
+}
+
+}  // namespace
+
+ProblemSet load_problem_set_from_string(const std::string& yaml, const std::string& name) {
+  return load_problem_set_from(parse_yaml(yaml, name), name);
+}
+
+ProblemSet load_problem_set(const std::string& path) {
+  return load_problem_set_from(load_yaml_file(path), path);
+}
+
+}  // namespace frustum

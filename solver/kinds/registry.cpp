@@ -1,0 +1,43 @@
+#include "solver/kinds/registry.hpp"
+
+#include <stdexcept>
+
+namespace frustum {
+
+const AnswerSpec* KindInfo::answer(const std::string& n) const {
+  for (const AnswerSpec& a : answers)
+    if (a.name == n) return &a;
+  return nullptr;
+}
+
+void Registry::add(KindInfo kind) {
+  if (find(kind.name)) throw std::logic_error("kind registered twice: " + kind.name);
+  kinds_.push_back(std::move(kind));
+}
+
+const KindInfo* Registry::find(const std::string& name) const {
+  for (const KindInfo& k : kinds_)
+    if (k.name == name) return &k;
+  return nullptr;
+}
+
+std::vector<std::string> Registry::names() const {
+  std::vector<std::string> out;
+  for (const KindInfo& k : kinds_) out.push_back(k.name);
+  return out;
+}
+
+const Registry& builtin_kinds() {
+  static const Registry registry = [] {
+    Registry r;
+    r.add(vectors_kind());
+    r.add(normal_kind());
+    r.add(plane_kind());
+    r.add(depth_at_pixel_kind());
+    r.add(backface_kind());
+    return r;
+  }();
+  return registry;
+}
+
+}  // namespace frustum

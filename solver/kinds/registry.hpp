@@ -1,0 +1,33 @@
+// The registry of problem kinds: one place that lists every kind, built explicitly (no
+// static-initialisation tricks that a linker may drop).
+#pragma once
+
+#include "solver/kinds/kind.hpp"
+
+#include <string>
+#include <vector>
+
+namespace frustum {
+
+class Registry {
+ public:
+  void add(KindInfo kind);
+  const KindInfo* find(const std::string& name) const;
+  std::vector<std::string> names() const;
+  const std::vector<KindInfo>& all() const { return kinds_; }
+
+ private:
+  std::vector<KindInfo> kinds_;
+};
+
+// Every built-in kind.
+const Registry& builtin_kinds();
+
+// One function per kind file, called by builtin_kinds().
+KindInfo vectors_kind();
+KindInfo normal_kind();
+KindInfo plane_kind();
+KindInfo depth_at_pixel_kind();
+KindInfo backface_kind();
+
+}  // namespace frustum

@@ -1,0 +1,48 @@
+#include "solver/kinds/solve_set.hpp"
+
+#include "solver/kinds/given_reader.hpp"
+
+namespace frustum {
+
+ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps) {
+  ProblemResult r;
+  r.id = spec.id;
+  r.kind = spec.kind;
+  r.text = spec.text;
+  r.conventions = spec.conventions;
+  r.ask = spec.ask;
+  if (spec.error) {
+    r.error = spec.error;
+    return r;
+  }
+  try {
+    if (with_steps) r.derivation.note("Conventions", describe(spec.conventions));
+    r.answers = spec.info->solve(spec.given, with_steps ? &r.derivation : nullptr);
+  } catch (const DomainError& e) {
+    GivenReader reader(spec.given_node, file, spec.field + ".given", {});
+    r.error = reader.locate(e.field(), e.what());
+  } catch (const InputError& e) {
+    r.error = e.diagnostic();
+  } catch (const std::exception& e) {
+    r.error = Diagnostic{spec.where, spec.field, std::string("cannot solve: ") + e.what()};
+  }
+  return r;
+}
+
+SetResult solve_set(const ProblemSet& set, bool with_steps,
+                    const std::optional<std::string>& only_id) {
+  SetResult out;
+  out.file = set.file;
+  out.title = set.title;
+  out.errors = set.errors;
+  for (const ProblemSpec& p : set.problems) {
+    if (only_id && p.id != *only_id) continue;
+    out.problems.push_back(solve_problem(p, set.file, with_steps));
+  }
+  if (only_id && out.problems.empty())
+    out.errors.push_back(Diagnostic{SourceLocation{set.file, 0, 0}, "id",
+                                    "no problem with id '" + *only_id + "'"});
+  return out;
+}
+
+}  // namespace frustum

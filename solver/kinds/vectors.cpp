@@ -1,0 +1,118 @@
+// seed 003 (review of dot and cross products): a = (2,0,1), b = (1,2,0) →
+// a × b = (−2, 1, 4), S = √21, sin θ = √21/5, n = (−2, 1, 4)/√21.
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct Vectors {
+  static constexpr const char* kName = "vectors";
+  static constexpr const char* kSummary =
+      "dot and cross products of two vectors, the parallelogram's area, sin, cos and the angle";
+  struct Given {
+    Vec3<Exact> a, b;
+    AngleUnit angles;
+  };
+  static std::vector<std::string> given_fields() { return {"a", "b"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"dot", AnswerKind::Scalar, {}, {}},
+            {"cross", AnswerKind::Vector, {}, {}},
+            {"area", AnswerKind::Scalar, {"cross"}, {}},
+            {"sin", AnswerKind::Scalar, {"area"}, {}},
+            {"cos", AnswerKind::Scalar, {"dot"}, {}},
+            {"angle", AnswerKind::Scalar, {"cos"}, {}},
+            {"unit_normal", AnswerKind::UnitVector, {"cross"}, {}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions& c) {
+    return {r.vector<3>("a"), r.vector<3>("b"), c.angles};
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    const Vec3<Exact>& a = g.a;
+    const Vec3<Exact>& b = g.b;
+    const Exact len_a = canonical(norm(a)), len_b = canonical(norm(b));
+    if (len_a.is_zero()) throw DomainError("a", "a is the zero vector: no angle or normal");
+    if (len_b.is_zero()) throw DomainError("b", "b is the zero vector: no angle or normal");
+    Answers out;
+    // Dot product: a·b = a_x b_x + a_y b_y + a_z b_z.
+    const Exact dot = canonical(a.dot(b));
+    out.set("dot", Value::scalar(dot));
+    if (steps) {
+      steps->add("Dot product", math("a·b = aₓbₓ + a_yb_y + a_zb_z", "\\mathbf{a}\\cdot\\mathbf{b} = a_x b_x + a_y b_y + a_z b_z"),
+                 math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + math("·", "\\cdot") + vec(b),
+                 math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + exact(dot));
+      steps->yields("dot");
+    }
+    // Cross product by the determinant rule.
+    Vec3<Exact> cross = a.cross(b);
+    for (int i = 0; i < 3; ++i) cross(i) = canonical(cross(i));
+    out.set("cross", Value::vector(cross));
+    if (steps) {
+      steps->add("Cross product",
+                 math("a × b = (a_yb_z − a_zb_y, a_zbₓ − aₓb_z, aₓb_y − a_ybₓ)",
+                      "\\mathbf{a}\\times\\mathbf{b} = (a_y b_z - a_z b_y,\\; a_z b_x - a_x b_z,\\; a_x b_y - a_y b_x)"),
+                 math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) + math(" × ", " \\times ") + vec(b),
+                 math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(cross));
+      steps->yields("cross");
+    }
+    const Exact area = canonical(norm(cross));
+    out.set("area", Value::scalar(area));
+    if (steps) {
+      steps->add("Area of the parallelogram", math("S = ‖a × b‖", "S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"),
+                 {}, math("S = ") + exact(area, true));
+      steps->yields("area");
+    }
+    const Exact sin = canonical(area / (len_a * len_b));
+    out.set("sin", Value::scalar(sin));
+    if (steps) {
+      steps->add("Sine of the angle", math("sin θ = ‖a × b‖ / (‖a‖ ‖b‖)", "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
+                 math("sin θ = ", "\\sin\\theta = ") + exact(area) + math(" / (", " / (") + exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")"),
+                 math("sin θ = ", "\\sin\\theta = ") + exact(sin, true));
+      steps->yields("sin");
+    }
+    const Exact cos = canonical(dot / (len_a * len_b));
+    out.set("cos", Value::scalar(cos));
+    if (steps) {
+      steps->add("Cosine of the angle", math("cos θ = a·b / (‖a‖ ‖b‖)", "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
+                 math("cos θ = ", "\\cos\\theta = ") + exact(dot) + math(" / (", " / (") + exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")"),
+                 math("cos θ = ", "\\cos\\theta = ") + exact(cos, true));
+      steps->yields("cos");
+    }
+    const Exact radians = canonical(exact_acos(cos));
+    const Exact angle = g.angles == AngleUnit::Degrees ? canonical(radians * 180 / GiNaC::Pi) : radians;
+    out.set("angle", Value::scalar(angle));
+    if (steps) {
+      steps->add("Angle", math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
+                 math("θ = ", "\\theta = ") + exact(angle, true) +
+                     math(g.angles == AngleUnit::Degrees ? "°" : " rad", g.angles == AngleUnit::Degrees ? "^\\circ" : "\\,\\text{rad}"));
+      steps->yields("angle");
+    }
+    if (area.is_zero()) {
+      out.set("unit_normal", Value::null());
+      if (steps)
+        steps->warn("No plane", "a and b are parallel (a × b = 0): the points 0, a, b are "
+                                "collinear and span no plane, so there is no unit normal.");
+    } else {
+      const Vec3<Exact> n = unit(cross);
+      out.set("unit_normal", Value::vector(n));
+      if (steps) {
+        steps->add("Unit normal of the plane through 0, a, b", math("n = (a × b) / ‖a × b‖", "\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert}"),
+                   math("n = ", "\\mathbf{n} = ") + vec(cross) + math(" / ") + exact(area),
+                   math("n = ", "\\mathbf{n} = ") + vec(n, true));
+        steps->yields("unit_normal");
+      }
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo vectors_kind() { return make_kind<Vectors>(); }
+
+}  // namespace frustum

@@ -1,0 +1,365 @@
+// Exact values: canonical form with simplified radicals, sign, and conversions.
+#include "solver/util/exact.hpp"
+
+#include <cln/integer.h>
+#include <cln/rational.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace frustum {
+namespace {
+
+using GiNaC::ex;
+using GiNaC::ex_to;
+using GiNaC::is_a;
+using GiNaC::numeric;
+
+// Radicands are factored by trial division only below this bound; with divisors up to
+// kTrialLimit the cofactor then has at most two prime factors, so one square test finishes.
+constexpr std::uint64_t kFactorLimit = 1'000'000'000'000'000;  // 10^15
+constexpr std::uint64_t kTrialLimit = 100'000;
+// Radicals beyond these sizes are left as GiNaC holds them (bounded work on hostile input).
+constexpr unsigned kMaxRootIndex = 64;
+constexpr std::uintptr_t kMaxRadicandBits = 4096;
+// canonical() repeats its pass until nothing changes; two passes suffice in practice.
+constexpr int kMaxCanonicalPasses = 4;
+// exact_sign() refines at these precisions (decimal digits) before trying exact zero.
+constexpr long kSignDigits[] = {30, 60, 120, 240};
+constexpr long kGuardDigits = 10;
+
+// m = coeff^index * radicand.
+struct RootSplit {
+  cln::cl_I coeff;
+  cln::cl_I radicand;
+};
+
+cln::cl_I to_cl_i(const numeric& n) { return cln::the<cln::cl_I>(n.to_cl_N()); }
+
+// cln::expt_pos requires a positive exponent.
+cln::cl_I int_power(const cln::cl_I& base, unsigned exponent) {
+  return exponent == 0 ? cln::cl_I(1) : cln::expt_pos(base, exponent);
+}
+
+// Splits the largest index-th power out of m >= 1, or leaves m whole when it is too big to
+// factor quickly.
+RootSplit split_root(const cln::cl_I& m, unsigned index) {
+  if (m >= cln::cl_I(kFactorLimit)) return {1, m};
+  std::uint64_t n = cln::cl_I_to_UQ(m);
+  cln::cl_I coeff = 1;
+  cln::cl_I radicand = 1;
+  std::uint64_t p = 2;
+  for (; p <= kTrialLimit && p * p <= n; p += (p == 2 ? 1 : 2)) {
+    unsigned count = 0;
+    while (n % p == 0) {
+      n /= p;
+      ++count;
+    }
+    if (count == 0) continue;
+    coeff *= int_power(cln::cl_I(p), count / index);
+    radicand *= int_power(cln::cl_I(p), count % index);
+  }
+  if (n > 1) {
+    // Either n is prime (p^2 > n) or n < 10^15 has only prime factors > 10^5, so it is
+    // q, q*r or q^2: only a square can still be taken out.
+    cln::cl_I rest(n);
+    cln::cl_I root;
+    if (p * p <= n && index == 2 && cln::sqrtp(rest, &root)) {
+      coeff *= root;
+    } else {
+      radicand *= rest;
+    }
+  }
+  return {coeff, radicand};
+}
+
+// Lowers the root index when the radicand is itself a power: 4^(1/6) = 2^(1/3).
+void reduce_index(cln::cl_I& radicand, unsigned& index) {
+  for (unsigned k = 2; k <= index; ++k) {
+    cln::cl_I root;
+    if (index % k == 0 && cln::rootp(radicand, k, &root)) {
+      radicand = root;
+      index /= k;
+      k = 1;
+    }
+  }
+}
+
+// coeff * radicand^(1/index) as a GiNaC value (radicand >= 1).
+ex make_radical(const numeric& coeff, cln::cl_I radicand, unsigned index) {
+  reduce_index(radicand, index);
+  if (radicand == 1 || index == 1) return coeff * numeric(cln::cl_N(radicand));
+  return coeff * GiNaC::pow(ex(numeric(cln::cl_N(radicand))), ex(numeric(1, long(index))));
+}
+
+bool is_positive_rational(const ex& e) {
+  if (!is_a<numeric>(e)) return false;
+  const numeric& n = ex_to<numeric>(e);
+  return n.is_rational() && n.is_positive();
+}
+
+bool is_proper_fraction_exponent(const ex& e) {
+  if (!is_a<numeric>(e)) return false;
+  const numeric& n = ex_to<numeric>(e);
+  return n.is_rational() && !n.is_integer() && n.denom() <= numeric(long(kMaxRootIndex));
+}
+
+// (a/b)^(p/r) = (a/b)^k * c * d^(1/r) / b with d r-th-power free, where p = k*r + s,
+// 0 < s < r and a^s * b^(r-s) = c^r * d. The denominator is rationalised on the way.
+ex simplify_power(const ex& e) {
+  const ex& base = e.op(0);
+  const ex& exponent = e.op(1);
+  if (!is_positive_rational(base) || !is_proper_fraction_exponent(exponent)) return e;
+  const numeric& q = ex_to<numeric>(base);
+  const numeric& x = ex_to<numeric>(exponent);
+  const cln::cl_I a = to_cl_i(q.numer());
+  const cln::cl_I b = to_cl_i(q.denom());
+  const cln::cl_I p = to_cl_i(x.numer());
+  const unsigned r = unsigned(cln::cl_I_to_UQ(to_cl_i(x.denom())));
+  const cln::cl_I k = cln::floor1(p, cln::cl_I(r));
+  const unsigned s = unsigned(cln::cl_I_to_UQ(p - k * cln::cl_I(r)));
+
+  const std::uintptr_t bits_a = cln::integer_length(a);
+  const std::uintptr_t bits_b = cln::integer_length(b);
+  if (s * bits_a + (r - s) * bits_b > kMaxRadicandBits) return e;
+  if (k != 0 && cln::abs(k) * cln::cl_I(bits_a + bits_b) > cln::cl_I(kMaxRadicandBits)) return e;
+
+  const cln::cl_I m = int_power(a, s) * int_power(b, r - s);
+  const RootSplit split = split_root(m, r);
+  const numeric whole = q.power(numeric(cln::cl_N(k))) * numeric(cln::cl_N(split.coeff)) /
+                        numeric(cln::cl_N(b));
+  return make_radical(whole, split.radicand, r);
+}
+
+// The integer radicand and index of d^(1/r) as canonical() leaves it, if e is one.
+bool as_simple_radical(const ex& e, cln::cl_I& radicand, unsigned& index) {
+  if (!is_a<GiNaC::power>(e)) return false;
+  const ex& base = e.op(0);
+  const ex& exponent = e.op(1);
+  if (!is_a<numeric>(base) || !ex_to<numeric>(base).is_pos_integer()) return false;
+  if (!is_proper_fraction_exponent(exponent) || !ex_to<numeric>(exponent).numer().is_equal(1))
+    return false;
+  radicand = to_cl_i(ex_to<numeric>(base));
+  index = unsigned(cln::cl_I_to_UQ(to_cl_i(ex_to<numeric>(exponent).denom())));
+  return true;
+}
+
+// Merges radicals of equal index in a product: sqrt(2)*sqrt(6) = 2*sqrt(3).
+ex combine_radicals(const ex& e) {
+  std::map<unsigned, std::vector<cln::cl_I>> groups;
+  ex rest = 1;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    cln::cl_I radicand;
+    unsigned index = 0;
+    if (as_simple_radical(e.op(i), radicand, index)) {
+      groups[index].push_back(radicand);
+    } else {
+      rest *= e.op(i);
+    }
+  }
+  bool changed = false;
+  ex radicals = 1;
+  for (const auto& [index, radicands] : groups) {
+    const auto keep = [&, index = index] {
+      for (const cln::cl_I& d : radicands)
+        radicals *= GiNaC::pow(ex(numeric(cln::cl_N(d))), ex(numeric(1, long(index))));
+    };
+    if (radicands.size() < 2) {
+      keep();
+      continue;
+    }
+    std::uintptr_t bits = 0;
+    for (const cln::cl_I& d : radicands) bits += cln::integer_length(d);
+    if (bits > kMaxRadicandBits) {
+      keep();
+      continue;
+    }
+    cln::cl_I coeff = 1;
+    cln::cl_I product = 1;
+    if (index == 2) {
+      // Square-free inputs stay square-free without factoring: ab = g^2 (a/g)(b/g).
+      for (const cln::cl_I& d : radicands) {
+        const cln::cl_I g = cln::gcd(product, d);
+        coeff *= g;
+        product = cln::exquo(product, g) * cln::exquo(d, g);
+      }
+    } else {
+      for (const cln::cl_I& d : radicands) product *= d;
+    }
+    if (index != 2 && product >= cln::cl_I(kFactorLimit)) {
+      keep();
+      continue;
+    }
+    const RootSplit split = split_root(product, index);
+    radicals *= make_radical(numeric(cln::cl_N(coeff * split.coeff)), split.radicand, index);
+    changed = true;
+  }
+  return changed ? rest * radicals : e;
+}
+
+// Bottom-up pass that rewrites radicals of rationals (children first, so sin(sqrt(12))
+// and sums of products are reached).
+struct SimplifyRadicals : GiNaC::map_function {
+  ex operator()(const ex& e) override {
+    const ex mapped = e.map(*this);
+    if (is_a<GiNaC::power>(mapped)) return simplify_power(mapped);
+    if (is_a<GiNaC::mul>(mapped)) return combine_radicals(mapped);
+    return mapped;
+  }
+};
+
+bool has_symbol(const ex& e) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it) || is_a<GiNaC::wildcard>(*it)) return true;
+  }
+  return false;
+}
+
+// GiNaC's working precision is a process-wide setting; restore it whatever happens.
+class DigitsGuard {
+ public:
+  explicit DigitsGuard(long digits) : saved_(GiNaC::Digits) { GiNaC::Digits = digits; }
+  ~DigitsGuard() { GiNaC::Digits = saved_; }
+  DigitsGuard(const DigitsGuard&) = delete;
+  DigitsGuard& operator=(const DigitsGuard&) = delete;
+
+ private:
+  long saved_;
+};
+
+// A real numeric approximation of e at the current precision, if there is one.
+bool evaluate_real(const ex& e, numeric& value) {
+  const ex v = e.evalf();
+  if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return false;
+  value = ex_to<numeric>(v);
+  return true;
+}
+
+// Nearest double of a rational, subnormals included (CLN's conversion flushes them to zero):
+// below 2^-1022 the doubles are the multiples of 2^-1074, so round q·2^1074 to an integer,
+// ties to even.
+double rational_to_double(const numeric& q) {
+  static const numeric kMinNormal = numeric(2).power(-1022);
+  if (GiNaC::abs(q) >= kMinNormal) return q.to_double();
+  const numeric scaled = GiNaC::abs(q) * numeric(2).power(1074);
+  const numeric num = scaled.numer(), den = scaled.denom();
+  numeric whole = GiNaC::iquo(num, den);
+  const numeric twice_rem = 2 * (num - whole * den);
+  if (twice_rem > den || (twice_rem == den && !whole.is_even())) whole += 1;
+  const double magnitude = std::ldexp(whole.to_double(), -1074);
+  return q.is_negative() ? -magnitude : magnitude;
+}
+
+}  // namespace
+
+Exact canonical(const Exact& e) {
+  ex current = e.expand().normal();
+  for (int pass = 0; pass < kMaxCanonicalPasses; ++pass) {
+    SimplifyRadicals simplify;
+    // normal() cancels sqrt(3)*sqrt(3) and collects fractions; expand() flattens the result
+    // into a sum of terms.
+    const ex next = simplify(current).normal().expand();
+    if (next.is_equal(current)) break;
+    current = next;
+  }
+  return current;
+}
+
+bool is_real_constant(const Exact& e) {
+  if (has_symbol(e)) return false;
+  if (is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e) || is_a<GiNaC::matrix>(e)) return false;
+  try {
+    numeric value;
+    return evaluate_real(e, value);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+double to_double(const Exact& e) {
+  // Rationals convert exactly rounded; anything else is evaluated with digits to spare so
+  // the double is the nearest one.
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_real() && ex_to<numeric>(e).is_rational())
+    return rational_to_double(ex_to<numeric>(e));
+  if (!is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
+  try {
+    const DigitsGuard guard(40);
+    numeric value;
+    if (!evaluate_real(e, value)) return std::numeric_limits<double>::quiet_NaN();
+    return value.to_double();
+  } catch (const std::exception&) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+int exact_sign(const Exact& e) {
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_real()) {
+    const numeric& n = ex_to<numeric>(e);
+    return n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
+  }
+  if (!is_real_constant(e)) throw std::domain_error("exact_sign: not a real constant");
+
+  // Cancellation between the terms of a sum costs precision in proportion to their size.
+  const ex expanded = e.expand();
+  numeric last;
+  for (const long digits : kSignDigits) {
+    const DigitsGuard guard(digits);
+    numeric value;
+    if (!evaluate_real(expanded, value)) throw std::domain_error("exact_sign: not real");
+    numeric scale = 1;
+    if (is_a<GiNaC::add>(expanded)) {
+      numeric sum = 0;
+      for (std::size_t i = 0; i < expanded.nops(); ++i) {
+        numeric term;
+        if (evaluate_real(expanded.op(i), term)) sum += GiNaC::abs(term);
+      }
+      if (sum > scale) scale = sum;
+    }
+    const numeric bound = numeric(1) / numeric(10).power(digits - kGuardDigits) * scale;
+    if (GiNaC::abs(value) > bound) return value.is_positive() ? 1 : -1;
+    last = value;
+  }
+  if (canonical(e).is_zero()) return 0;
+  return last.is_zero() ? 0 : (last.is_positive() ? 1 : -1);
+}
+
+Exact exact_from_double(double v) {
+  if (!std::isfinite(v)) throw std::domain_error("exact_from_double: not a finite number");
+  int exponent = 0;
+  const double fraction = std::frexp(v, &exponent);  // v = fraction * 2^exponent
+  constexpr int kMantissaBits = std::numeric_limits<double>::digits;
+  // fraction * 2^53 is an integer (subnormals too: frexp normalises them).
+  const auto mantissa = static_cast<long long>(std::ldexp(fraction, kMantissaBits));
+  return numeric(mantissa) * numeric(2).power(exponent - kMantissaBits);
+}
+
+}  // namespace frustum
+
+namespace frustum {
+
+Exact exact_acos(const Exact& c) {
+  // The angles of the unit circle a course uses; GiNaC leaves acos(sqrt(2)/2) unevaluated.
+  using GiNaC::numeric;
+  const Exact r2 = GiNaC::sqrt(Exact(2)) / 2, r3 = GiNaC::sqrt(Exact(3)) / 2;
+  const std::pair<Exact, Exact> table[] = {
+      {1, 0},
+      {r3, GiNaC::Pi / 6},
+      {r2, GiNaC::Pi / 4},
+      {numeric(1, 2), GiNaC::Pi / 3},
+      {0, GiNaC::Pi / 2},
+      {numeric(-1, 2), 2 * GiNaC::Pi / 3},
+      {-r2, 3 * GiNaC::Pi / 4},
+      {-r3, 5 * GiNaC::Pi / 6},
+      {-1, GiNaC::Pi}};
+  const Exact cc = canonical(c);
+  for (const auto& [value, angle] : table)
+    if (canonical(cc - value).is_zero()) return angle;
+  return GiNaC::acos(cc);
+}
+
+}  // namespace frustum

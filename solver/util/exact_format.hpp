@@ -1,0 +1,25 @@
+// Printing exact values the way they are written on paper, in three styles.
+#pragma once
+
+#include "solver/util/exact.hpp"
+
+#include <string>
+
+namespace frustum {
+
+enum class MathStyle {
+  Plain,    // ASCII, machine-readable, re-parsable: "sqrt(3)/3", "-9*sqrt(3)", "100*sqrt(3)", "pi/6"
+  Unicode,  // for the terminal: "√3/3", "−9√3", "100√3", "π/6", "−1/2"
+  Latex     // for Markdown: "\frac{\sqrt{3}}{3}", "-9\sqrt{3}", "\frac{\pi}{6}"
+};
+
+// Formats an exact value (call canonical() first for the paper form).
+std::string format_exact(const Exact& e, MathStyle style);
+
+// Shortest decimal text that round-trips to the same double ("0.5773502691896258", "8", "-6").
+std::string format_double(double v);
+
+// A short decimal for showing beside an exact value: 4 significant digits ("≈ 0.5774").
+std::string format_approx(double v, int significant = 4);
+
+}  // namespace frustum

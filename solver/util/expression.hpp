@@ -1,0 +1,48 @@
+// A bounded parser for the exact expressions that instructors write in `given` and students
+// write in answers: "100*sqrt(3)", "100√3", "1/√3", "pi/6", "−2/3", "1.0e2", "x + y − z = −6".
+// Student answers are hostile input, so length, nesting depth and exponent size are bounded
+// before GiNaC evaluates anything (GiNaC's own parser recurses without limit and evaluates
+// exact powers without bound).
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace frustum {
+
+// Named defaults; every limit can be overridden per call.
+inline constexpr std::size_t kMaxExpressionLength = 4096;   // bytes of input
+inline constexpr int kMaxExpressionDepth = 64;              // nested (), function calls, unary ops
+inline constexpr long kMaxExponent = 1024;                  // |integer exponent|
+inline constexpr std::size_t kMaxExactBits = 16384;         // bits of an exact power's result
+
+struct ExpressionOptions {
+  std::size_t max_length = kMaxExpressionLength;
+  int max_depth = kMaxExpressionDepth;
+  long max_exponent = kMaxExponent;
+  std::size_t max_exact_bits = kMaxExactBits;
+  // Free variables the expression may use (e.g. x, y, z in a plane equation); any other
+  // identifier is an error.
+  std::map<std::string, GiNaC::symbol> symbols;
+  // Accept one top-level "lhs = rhs"; the result is then lhs - rhs.
+  bool allow_equation = false;
+};
+
+struct ExpressionResult {
+  std::optional<GiNaC::ex> value;  // set on success
+  std::string error;               // set on failure: a sentence for a person
+  std::size_t offset = 0;          // byte offset of the error in the input
+  bool equation = false;           // the input was "lhs = rhs"
+  explicit operator bool() const { return value.has_value(); }
+};
+
+// Parses text into an exact GiNaC expression. Never throws, never recurses deeper than
+// options.max_depth, never builds a power whose exact result exceeds options.max_exact_bits.
+ExpressionResult parse_expression(std::string_view text, const ExpressionOptions& options = {});
+
+}  // namespace frustum

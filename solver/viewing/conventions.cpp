@@ -1,0 +1,51 @@
+#include "solver/viewing/conventions.hpp"
+
+namespace frustum {
+
+std::string_view to_string(Api api) {
+  switch (api) {
+    case Api::OpenGL: return "opengl";
+    case Api::Processing: return "processing";
+    case Api::DirectX: return "directx";
+  }
+  return "opengl";
+}
+
+std::string_view to_string(AngleUnit unit) {
+  return unit == AngleUnit::Degrees ? "degrees" : "radians";
+}
+
+std::optional<Api> parse_api(std::string_view text) {
+  if (text == "opengl") return Api::OpenGL;
+  if (text == "processing") return Api::Processing;
+  if (text == "directx") return Api::DirectX;
+  return std::nullopt;
+}
+
+std::optional<AngleUnit> parse_angle_unit(std::string_view text) {
+  if (text == "degrees") return AngleUnit::Degrees;
+  if (text == "radians") return AngleUnit::Radians;
+  return std::nullopt;
+}
+
+std::string describe(const Conventions& c) {
+  std::string s;
+  switch (c.api) {
+    case Api::OpenGL:
+      s = "OpenGL: right-handed eye space looking down −z, column vectors (p′ = M·p), "
+          "NDC cube [−1, 1]³ with near → −1, window origin bottom-left";
+      break;
+    case Api::Processing:
+      s = "Processing: OpenGL's matrices and NDC cube [−1, 1]³, column vectors, "
+          "window origin top-left with y pointing down";
+      break;
+    case Api::DirectX:
+      s = "DirectX: left-handed eye space looking down +z, row vectors (p′ = p·M), "
+          "NDC z in [0, 1], window origin top-left with y pointing down";
+      break;
+  }
+  s += c.angles == AngleUnit::Degrees ? "; angles in degrees" : "; angles in radians";
+  return s;
+}
+
+}  // namespace frustum

@@ -1,0 +1,32 @@
+// The conventions a problem is solved in. Every one is a value in the data, stated in every
+// derivation; none is a hidden global.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace frustum {
+
+enum class Api {
+  OpenGL,      // right-handed eye space looking down −z, NDC [−1,1]³, near → −1, window origin bottom-left
+  Processing,  // OpenGL math, window origin top-left with y down, Processing's default camera
+  DirectX      // left-handed, looking down +z, NDC z in [0,1], row vectors, window y down
+};
+
+enum class AngleUnit { Degrees, Radians };
+
+struct Conventions {
+  Api api = Api::OpenGL;
+  AngleUnit angles = AngleUnit::Degrees;
+};
+
+std::string_view to_string(Api api);
+std::string_view to_string(AngleUnit unit);
+std::optional<Api> parse_api(std::string_view text);
+std::optional<AngleUnit> parse_angle_unit(std::string_view text);
+
+// One sentence naming the conventions, for the first step of every derivation.
+std::string describe(const Conventions& c);
+
+}  // namespace frustum

@@ -1,0 +1,90 @@
+// The `frustum` command line, run as a user would.
+#include "test_util.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sys/wait.h>
+
+namespace frustum {
+namespace {
+
+struct CliRun {
+  int status;
+  std::string out;
+};
+
+CliRun run(const std::string& args) {
+  const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string seed(const std::string& name) { return test::source_path("problems/seeds/" + name); }
+
+TEST(Cli, SolveJsonGivesTheSeedAnswersExactly) {
+  const CliRun r = run("solve " + seed("001_zbuffer_plane_method.yaml") + " --id seed001-pixel-z --format json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["problems"].size(), 1u);
+  const auto& a = j["problems"][0]["answers"];
+  EXPECT_EQ(a["z"]["value"], 8);
+  EXPECT_EQ(a["z"]["exact"], "8");
+  EXPECT_EQ(a["unit_normal"]["exact"], nlohmann::json({"sqrt(3)/3", "sqrt(3)/3", "-sqrt(3)/3"}));
+  EXPECT_EQ(a["plane"]["value"], nlohmann::json({1, 1, -1, -6}));
+}
+
+TEST(Cli, SolveDirectorySolvesEverySeedSet) {
+  const CliRun r = run("solve " + test::source_path("problems/seeds"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("seed001-pixel-z"), std::string::npos);
+  EXPECT_NE(r.out.find("seed003-backface"), std::string::npos);
+  EXPECT_NE(r.out.find("D_f = −2"), std::string::npos);
+}
+
+TEST(Cli, CheckReportsLocatedErrorsAndExitsNonZero) {
+  const std::string path = ::testing::TempDir() + "/broken_set.yaml";
+  std::ofstream(path) << "problems:\n  - id: a\n    kind: vectors\n    given: {a: [1, .nan, 0], b: [0,1,0]}\n"
+                         "  - id: b\n    kind: nope\n    given: {}\n";
+  const CliRun r = run("check " + path);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find(path + ":4:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("problems[0].given.a[1]: '.nan' is not a finite number"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("problems[1].kind: unknown kind 'nope'"), std::string::npos) << r.out;
+  const CliRun clean = run("check " + seed("003_polygons_backface.yaml"));
+  EXPECT_EQ(clean.status, 0) << clean.out;
+  EXPECT_EQ(clean.out.find("seed003"), std::string::npos) << "check prints no solutions";
+}
+
+TEST(Cli, GradeJsonScoresThePublishedAnswersFully) {
+  const CliRun r = run("grade " + seed("003_polygons_backface.yaml") + " " +
+                    seed("answers/003_polygons_backface.yaml") + " --format json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["student"], "seed003-published");
+  EXPECT_EQ(j["score"], j["max_score"]);
+}
+
+TEST(Cli, GradeTextShowsTheDerivationUnderAWrongAnswer) {
+  const std::string path = ::testing::TempDir() + "/wrong_answers.yaml";
+  std::ofstream(path) << "student: s1\nanswers:\n  seed001-pixel-z: {z: 9}\n";
+  const CliRun r = run("grade " + seed("001_zbuffer_plane_method.yaml") + " " + path);
+  EXPECT_NE(r.out.find("z: incorrect"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("How to get it"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Depth at the pixel"), std::string::npos) << r.out;
+}
+
+TEST(Cli, BadUsageIsAnErrorNotACrash) {
+  EXPECT_NE(run("solve /nonexistent.yaml").status, 0);
+  EXPECT_NE(run("frobnicate").status, 0);
+  EXPECT_NE(run("solve " + seed("001_zbuffer_plane_method.yaml") + " --format pdf").status, 0);
+}
+
+}  // namespace
+}  // namespace frustum

@@ -1,0 +1,239 @@
+#include "solver/util/exact.hpp"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace frustum {
+namespace {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+ex root(long radicand, long index) { return GiNaC::pow(ex(radicand), ex(numeric(1, index))); }
+ex sqrt_of(long radicand) { return GiNaC::sqrt(ex(radicand)); }
+ex sqrt_of(long p, long q) { return GiNaC::sqrt(ex(numeric(p, q))); }
+
+void expect_canonical(const ex& input, const ex& expected) {
+  const ex got = canonical(input);
+  EXPECT_TRUE(got.is_equal(expected)) << input << " -> " << got << ", expected " << expected;
+}
+
+// Removes every square from n by trial division (test oracle, small n only).
+bool is_square_free(long n) {
+  for (long p = 2; p * p <= n; ++p) {
+    if (n % (p * p) == 0) return false;
+  }
+  return true;
+}
+
+TEST(Exact, CanonicalExtractsSquares) {
+  expect_canonical(sqrt_of(243), 9 * sqrt_of(3));
+  expect_canonical(sqrt_of(12), 2 * sqrt_of(3));
+  expect_canonical(sqrt_of(4), 2);
+  expect_canonical(GiNaC::pow(ex(2), ex(numeric(3, 2))), 2 * sqrt_of(2));
+  expect_canonical(ex(100) * sqrt_of(3), 100 * sqrt_of(3));
+}
+
+TEST(Exact, CanonicalRationalisesDenominators) {
+  expect_canonical(1 / sqrt_of(3), sqrt_of(3) / 3);
+  expect_canonical(GiNaC::pow(ex(3), ex(numeric(-1, 2))), sqrt_of(3) / 3);
+  expect_canonical(9 / sqrt_of(243), sqrt_of(3) / 3);
+  expect_canonical(-2 / sqrt_of(21), -2 * sqrt_of(21) / 21);
+  expect_canonical(sqrt_of(8, 3), 2 * sqrt_of(6) / 3);
+  expect_canonical(ex(numeric(1, 27)) * sqrt_of(243), sqrt_of(3) / 3);
+}
+
+TEST(Exact, CanonicalHandlesHigherRoots) {
+  expect_canonical(root(16, 3), 2 * root(2, 3));
+  expect_canonical(root(4, 6), root(2, 3));
+  expect_canonical(GiNaC::pow(ex(numeric(1, 2)), ex(numeric(1, 3))), root(4, 3) / 2);
+  expect_canonical(GiNaC::pow(ex(2), ex(numeric(2, 3))) * root(4, 3), 2 * root(2, 3));
+}
+
+TEST(Exact, CanonicalMergesRadicalsInProducts) {
+  expect_canonical(sqrt_of(2) * sqrt_of(6), 2 * sqrt_of(3));
+  expect_canonical(sqrt_of(2) * sqrt_of(3), sqrt_of(6));
+  expect_canonical(sqrt_of(1, 7) * sqrt_of(14), sqrt_of(2));
+  expect_canonical(sqrt_of(2) * sqrt_of(3) * sqrt_of(6), 6);
+  expect_canonical(sqrt_of(3) * sqrt_of(3), 3);
+}
+
+TEST(Exact, CanonicalFindsLargePrimeSquares) {
+  // 100003 is prime and beyond the trial-division bound: the square test catches it.
+  expect_canonical(GiNaC::sqrt(ex(numeric(100003L * 100003L * 2))), ex(100003) * sqrt_of(2));
+  expect_canonical(sqrt_of(100003L * 100019L), sqrt_of(100003L * 100019L));
+}
+
+TEST(Exact, CanonicalLeavesOtherValuesAlone) {
+  expect_canonical(1 + sqrt_of(3), 1 + sqrt_of(3));
+  expect_canonical(GiNaC::Pi / 6, GiNaC::Pi / 6);
+  expect_canonical(GiNaC::cos(ex(1)), GiNaC::cos(ex(1)));
+  // Principal complex root: GiNaC's convention, not ours to change.
+  const ex cube_root_of_minus_8 = GiNaC::pow(ex(-8), ex(numeric(1, 3)));
+  expect_canonical(cube_root_of_minus_8, cube_root_of_minus_8);
+  // Too big to factor quickly: left as it is.
+  const ex big = GiNaC::sqrt(GiNaC::pow(ex(10), 40) + 1);
+  expect_canonical(big, big);
+  const ex high_index = GiNaC::pow(ex(numeric(2, 3)), ex(numeric(1, 1001)));
+  expect_canonical(high_index, high_index);
+}
+
+TEST(Exact, CanonicalRecursesIntoSumsAndFunctions) {
+  expect_canonical(GiNaC::sin(sqrt_of(12)), GiNaC::sin(2 * sqrt_of(3)));
+  expect_canonical(sqrt_of(8) + sqrt_of(2), 3 * sqrt_of(2));
+  expect_canonical((1 + sqrt_of(3)) * (1 + sqrt_of(3)), 4 + 2 * sqrt_of(3));
+  expect_canonical((sqrt_of(3) - 1) / 2, numeric(-1, 2) + sqrt_of(3) / 2);
+}
+
+TEST(Exact, CanonicalIsIdempotent) {
+  const std::vector<ex> values = {
+      sqrt_of(243), 1 / sqrt_of(3), -2 / sqrt_of(21), sqrt_of(8, 3), root(16, 3),
+      GiNaC::pow(ex(2), ex(numeric(5, 6))), 1 / (1 + sqrt_of(3)), GiNaC::Pi * sqrt_of(12) / 4,
+      GiNaC::sin(GiNaC::Pi / 7) * sqrt_of(2), (1 + sqrt_of(2)) * (sqrt_of(3) - sqrt_of(6)),
+      GiNaC::pow(ex(-8), ex(numeric(1, 3))), ex(numeric(-7, 9))};
+  for (const ex& v : values) {
+    const ex once = canonical(v);
+    EXPECT_TRUE(canonical(once).is_equal(once)) << v << " -> " << once;
+  }
+}
+
+TEST(Exact, CanonicalSquareRootsOfRationalsSquareBack) {
+  std::mt19937 rng(20240601);  // fixed seed: reproducible property loop
+  std::uniform_int_distribution<long> pick(1, 5000);
+  for (int i = 0; i < 2000; ++i) {
+    const numeric q(pick(rng), pick(rng));
+    const ex c = canonical(GiNaC::sqrt(ex(q)));
+    EXPECT_TRUE(GiNaC::pow(c, 2).expand().is_equal(q)) << q << " -> " << c;
+    EXPECT_NEAR(to_double(c), std::sqrt(q.to_double()), 1e-12 * std::sqrt(q.to_double()));
+    EXPECT_TRUE(canonical(c).is_equal(c)) << c;
+    // What is left under the root is a square-free integer.
+    for (auto it = c.preorder_begin(); it != c.preorder_end(); ++it) {
+      if (!GiNaC::is_a<GiNaC::power>(*it)) continue;
+      ASSERT_TRUE(GiNaC::is_a<numeric>(it->op(0))) << c;
+      const numeric& d = GiNaC::ex_to<numeric>(it->op(0));
+      ASSERT_TRUE(d.is_pos_integer()) << c;
+      EXPECT_TRUE(is_square_free(d.to_long())) << c;
+    }
+  }
+}
+
+TEST(Exact, CanonicalCubeRootsOfRationalsCubeBack) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<long> pick(1, 3000);
+  for (int i = 0; i < 500; ++i) {
+    const numeric q(pick(rng), pick(rng));
+    const ex c = canonical(GiNaC::pow(ex(q), ex(numeric(1, 3))));
+    EXPECT_TRUE(GiNaC::pow(c, 3).expand().is_equal(q)) << q << " -> " << c;
+  }
+}
+
+TEST(Exact, IsRealConstant) {
+  const GiNaC::symbol x("x");
+  EXPECT_TRUE(is_real_constant(sqrt_of(2)));
+  EXPECT_TRUE(is_real_constant(GiNaC::Pi / 6));
+  EXPECT_TRUE(is_real_constant(GiNaC::sin(ex(1)) + sqrt_of(3)));
+  EXPECT_TRUE(is_real_constant(ex(numeric(-1, 3))));
+  EXPECT_FALSE(is_real_constant(x));
+  EXPECT_FALSE(is_real_constant(GiNaC::sin(x) + 1));
+  EXPECT_FALSE(is_real_constant(GiNaC::I));
+  EXPECT_FALSE(is_real_constant(sqrt_of(-3)));
+  EXPECT_FALSE(is_real_constant(GiNaC::pow(ex(-8), ex(numeric(1, 3)))));
+}
+
+TEST(Exact, ToDouble) {
+  EXPECT_EQ(to_double(sqrt_of(2)), std::sqrt(2.0));
+  EXPECT_EQ(to_double(ex(numeric(1, 3))), 1.0 / 3.0);
+  EXPECT_NEAR(to_double(9 * sqrt_of(3)), 9 * std::sqrt(3.0), 4e-15);
+  EXPECT_EQ(to_double(GiNaC::Pi), M_PI);
+  EXPECT_TRUE(std::isnan(to_double(GiNaC::symbol("x"))));
+  EXPECT_TRUE(std::isnan(to_double(ex(GiNaC::I))));  // ex: GiNaC::to_double(numeric) would win by ADL
+}
+
+TEST(Exact, ExactSignOfRationals) {
+  EXPECT_EQ(exact_sign(ex(numeric(-1, 3))), -1);
+  EXPECT_EQ(exact_sign(ex(0)), 0);
+  EXPECT_EQ(exact_sign(ex(1) / GiNaC::pow(ex(10), 200)), 1);
+  EXPECT_EQ(exact_sign(ex(-1) / GiNaC::pow(ex(10), 200)), -1);
+}
+
+TEST(Exact, ExactSignSeparatesCloseValues) {
+  const ex ten_to_16 = GiNaC::pow(ex(10), 16);
+  // sqrt(2) = 1.41421356237309504880..., so it lies between these two 17-digit decimals.
+  EXPECT_EQ(exact_sign(sqrt_of(2) - ex(14142135623730951) / ten_to_16), -1);
+  EXPECT_EQ(exact_sign(sqrt_of(2) - ex(14142135623730950) / ten_to_16), 1);
+  // pi = 3.14159265..., 355/113 = 3.14159292..., 22/7 = 3.142857...
+  EXPECT_EQ(exact_sign(GiNaC::Pi - ex(355) / 113), -1);
+  EXPECT_EQ(exact_sign(GiNaC::Pi - ex(22) / 7), -1);
+  EXPECT_EQ(exact_sign(GiNaC::Pi - ex(333) / 106), 1);
+  // Far below every working precision, but not zero.
+  EXPECT_EQ(exact_sign(sqrt_of(2) / GiNaC::pow(ex(10), 300)), 1);
+  EXPECT_EQ(exact_sign(-sqrt_of(2) / GiNaC::pow(ex(10), 300)), -1);
+}
+
+TEST(Exact, ExactSignFindsExactZeros) {
+  EXPECT_EQ(exact_sign(sqrt_of(2) * sqrt_of(2) - 2), 0);
+  EXPECT_EQ(exact_sign(sqrt_of(8) - 2 * sqrt_of(2)), 0);
+  EXPECT_EQ(exact_sign(sqrt_of(243) / 9 - 1 / sqrt_of(3) * 3), 0);
+  EXPECT_EQ(exact_sign(sqrt_of(6) - sqrt_of(2) * sqrt_of(3)), 0);
+}
+
+TEST(Exact, ExactSignRestoresDigitsAndRejectsNonReal) {
+  const long digits_before = GiNaC::Digits;
+  EXPECT_EQ(exact_sign(sqrt_of(8) - 2 * sqrt_of(2)), 0);
+  EXPECT_EQ(long(GiNaC::Digits), digits_before);
+  EXPECT_THROW(exact_sign(GiNaC::symbol("x")), std::domain_error);
+  EXPECT_THROW(exact_sign(GiNaC::I), std::domain_error);
+  EXPECT_THROW(exact_sign(sqrt_of(-2)), std::domain_error);
+  EXPECT_EQ(long(GiNaC::Digits), digits_before);
+}
+
+TEST(Exact, ExactFromDoubleIsExact) {
+  EXPECT_TRUE(exact_from_double(0.1).is_equal(numeric("3602879701896397/36028797018963968")));
+  EXPECT_TRUE(exact_from_double(0.5).is_equal(numeric(1, 2)));
+  EXPECT_TRUE(exact_from_double(-6.0).is_equal(ex(-6)));
+  EXPECT_TRUE(exact_from_double(0.0).is_equal(ex(0)));
+  EXPECT_TRUE(exact_from_double(-0.0).is_equal(ex(0)));
+  // 4.9e-324 is the smallest subnormal, 2^-1074.
+  EXPECT_TRUE(exact_from_double(4.9e-324).is_equal(GiNaC::pow(ex(2), -1074)));
+  const ex big = exact_from_double(1e308);
+  EXPECT_TRUE(GiNaC::ex_to<numeric>(big).is_integer());
+  EXPECT_EQ(to_double(big), 1e308);
+  EXPECT_THROW(exact_from_double(std::numeric_limits<double>::quiet_NaN()), std::domain_error);
+  EXPECT_THROW(exact_from_double(std::numeric_limits<double>::infinity()), std::domain_error);
+  EXPECT_THROW(exact_from_double(-std::numeric_limits<double>::infinity()), std::domain_error);
+}
+
+TEST(Exact, ExactFromDoubleRoundTripsEveryBitPattern) {
+  std::mt19937_64 rng(42);
+  int checked = 0;
+  while (checked < 2000) {
+    const double v = std::bit_cast<double>(rng());
+    if (!std::isfinite(v)) continue;
+    const double back = to_double(exact_from_double(v));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(back), std::bit_cast<std::uint64_t>(v == 0 ? 0.0 : v))
+        << v;
+    ++checked;
+  }
+}
+
+TEST(Exact, EigenCrossProductOfExactVectors) {
+  const Eigen::Matrix<ex, 3, 1> a(0, 3, 3);
+  const Eigen::Matrix<ex, 3, 1> b(3, 0, 3);
+  const Eigen::Matrix<ex, 3, 1> n = a.cross(b);
+  EXPECT_TRUE(n(0).is_equal(9));
+  EXPECT_TRUE(n(1).is_equal(9));
+  EXPECT_TRUE(n(2).is_equal(-9));
+  EXPECT_TRUE(canonical(n.dot(n)).is_equal(243));
+  EXPECT_TRUE(canonical(GiNaC::sqrt(n.dot(n))).is_equal(9 * sqrt_of(3)));
+}
+
+}  // namespace
+}  // namespace frustum

@@ -1,0 +1,43 @@
+// Helpers shared by the tests.
+#pragma once
+
+#include "solver/derivation/problem_result.hpp"
+#include "solver/kinds/problem_set.hpp"
+#include "solver/kinds/solve_set.hpp"
+#include "solver/util/exact_format.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace frustum::test {
+
+inline std::string source_path(const std::string& relative) {
+  return std::string(FRUSTUM_SOURCE_DIR) + "/" + relative;
+}
+
+// Solves one problem of a YAML text and returns its result.
+inline ProblemResult solve_yaml(const std::string& yaml, bool with_steps = true) {
+  const ProblemSet set = load_problem_set_from_string(yaml, "test.yaml");
+  EXPECT_TRUE(set.errors.empty()) << (set.errors.empty() ? "" : set.errors[0].format());
+  EXPECT_EQ(set.problems.size(), 1u);
+  if (set.problems.empty()) return {};
+  return solve_problem(set.problems[0], set.file, with_steps);
+}
+
+// The exact answer as plain text ("sqrt(3)/3"), components joined by ", ".
+inline std::string exact_text(const ProblemResult& r, const std::string& answer) {
+  const Value* v = r.answers.find(answer);
+  if (!v) return "<missing " + answer + ">";
+  std::string s;
+  for (std::size_t i = 0; i < v->exact.size(); ++i)
+    s += (i ? ", " : "") + format_exact(v->exact[i], MathStyle::Plain);
+  return s;
+}
+
+inline std::string error_text(const ProblemResult& r) {
+  return r.error ? r.error->format() : std::string();
+}
+
+}  // namespace frustum::test
