@@ -43,12 +43,15 @@ double max_abs(const std::vector<double>& v) {
   return m;
 }
 
-// Componentwise within tolerance, relative to the largest component of the expected value.
-bool close_all(const std::vector<double>& e, const std::vector<double>& g, const Tolerance& tol) {
+// Componentwise within tolerance, relative to the largest component of the expected value
+// (a vector's small components need not be more precise than its large ones), or, for
+// matrices, relative to each entry (a translation column must not excuse the rotation).
+bool close_all(const std::vector<double>& e, const std::vector<double>& g, const Tolerance& tol,
+               bool per_entry = false) {
   if (e.size() != g.size()) return false;
   const double scale = max_abs(e);
   for (std::size_t i = 0; i < e.size(); ++i)
-    if (!close(e[i], g[i], tol, scale)) return false;
+    if (!close(e[i], g[i], tol, per_entry ? e[i] : scale)) return false;
   return true;
 }
 
@@ -72,7 +75,7 @@ double best_scale(const std::vector<double>& e, const std::vector<double>& g) {
 
 Comparison compare_numbers(const Value& expected, const Value& got, const Tolerance& tol) {
   if (exactly_equal(expected, got)) return correct("exactly equal");
-  if (close_all(expected.numbers, got.numbers, tol))
+  if (close_all(expected.numbers, got.numbers, tol, expected.shape == Value::Shape::Matrix))
     return correct(fmt::format("within tolerance (relative {}, absolute {})", tol.rel, tol.abs));
   return incorrect("");
 }

@@ -1,12 +1,13 @@
 #include "solver/util/exact.hpp"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -94,11 +95,18 @@ TEST(Exact, CanonicalRecursesIntoSumsAndFunctions) {
 }
 
 TEST(Exact, CanonicalIsIdempotent) {
-  const std::vector<ex> values = {
-      sqrt_of(243), 1 / sqrt_of(3), -2 / sqrt_of(21), sqrt_of(8, 3), root(16, 3),
-      GiNaC::pow(ex(2), ex(numeric(5, 6))), 1 / (1 + sqrt_of(3)), GiNaC::Pi * sqrt_of(12) / 4,
-      GiNaC::sin(GiNaC::Pi / 7) * sqrt_of(2), (1 + sqrt_of(2)) * (sqrt_of(3) - sqrt_of(6)),
-      GiNaC::pow(ex(-8), ex(numeric(1, 3))), ex(numeric(-7, 9))};
+  const std::vector<ex> values = {sqrt_of(243),
+                                  1 / sqrt_of(3),
+                                  -2 / sqrt_of(21),
+                                  sqrt_of(8, 3),
+                                  root(16, 3),
+                                  GiNaC::pow(ex(2), ex(numeric(5, 6))),
+                                  1 / (1 + sqrt_of(3)),
+                                  GiNaC::Pi * sqrt_of(12) / 4,
+                                  GiNaC::sin(GiNaC::Pi / 7) * sqrt_of(2),
+                                  (1 + sqrt_of(2)) * (sqrt_of(3) - sqrt_of(6)),
+                                  GiNaC::pow(ex(-8), ex(numeric(1, 3))),
+                                  ex(numeric(-7, 9))};
   for (const ex& v : values) {
     const ex once = canonical(v);
     EXPECT_TRUE(canonical(once).is_equal(once)) << v << " -> " << once;
@@ -152,9 +160,10 @@ TEST(Exact, ToDouble) {
   EXPECT_EQ(to_double(sqrt_of(2)), std::sqrt(2.0));
   EXPECT_EQ(to_double(ex(numeric(1, 3))), 1.0 / 3.0);
   EXPECT_NEAR(to_double(9 * sqrt_of(3)), 9 * std::sqrt(3.0), 4e-15);
-  EXPECT_EQ(to_double(GiNaC::Pi), M_PI);
+  EXPECT_EQ(to_double(GiNaC::Pi), std::numbers::pi);
   EXPECT_TRUE(std::isnan(to_double(GiNaC::symbol("x"))));
-  EXPECT_TRUE(std::isnan(to_double(ex(GiNaC::I))));  // ex: GiNaC::to_double(numeric) would win by ADL
+  EXPECT_TRUE(
+      std::isnan(to_double(ex(GiNaC::I))));  // ex: GiNaC::to_double(numeric) would win by ADL
 }
 
 TEST(Exact, ExactSignOfRationals) {

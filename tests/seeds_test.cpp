@@ -70,8 +70,47 @@ TEST(Seed003, BackfaceDiscriminantIsMinusTwoSoBack) {
   EXPECT_EQ(p.answers.find("facing")->word, "back");
 }
 
+const char* const kSeedSets[] = {
+    "000_projection_and_hidden_surfaces.yaml", "001_zbuffer_plane_method.yaml",
+    "002_transforms_and_view_volume.yaml", "003_polygons_backface.yaml",
+    "004_placing_and_projecting.yaml"};
+
+TEST(Seed000, ProjectionPlaneIsMinus100Root3AndPPrime) {
+  const SetResult r = solve_seed("000_projection_and_hidden_surfaces.yaml");
+  const ProblemResult& p = problem(r, "seed000-projection-plane");
+  EXPECT_EQ(exact_text(p, "plane_z"), "-100*sqrt(3)");
+  EXPECT_EQ(exact_text(p, "projected"), "0, 100*sqrt(3)/3, -100*sqrt(3)");
+  EXPECT_NEAR(p.answers.find("plane_z")->numbers[0], -173.2, 0.05);
+}
+
+TEST(Seed000, NearPlaneMapsToMinusOneDespiteTheProse) {
+  const SetResult r = solve_seed("000_projection_and_hidden_surfaces.yaml");
+  const ProblemResult& p = problem(r, "seed000-near-far-map");
+  EXPECT_EQ(exact_text(p, "ndc"), "0, 0, -1");
+  bool noted = false;
+  for (const Step& s : p.derivation.steps()) noted = noted || s.note.find("seed 000's prose") != std::string::npos;
+  EXPECT_TRUE(noted) << "the derivation notes the seed's slip";
+}
+
+TEST(Seed002, NormalizedViewVolumeMapsTheBackCornerToOne) {
+  const SetResult r = solve_seed("002_transforms_and_view_volume.yaml");
+  const ProblemResult& p = problem(r, "seed002-view-volume");
+  EXPECT_EQ(exact_text(p, "point"), "1/2, 1/2, 1");
+  EXPECT_EQ(exact_text(p, "perspective_matrix"), "1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 100/99, -1/99, 0, 0, 1, 0");
+}
+
+TEST(Seed004, RotationAboutOneOneOneCyclesTheAxes) {
+  const SetResult r = solve_seed("004_placing_and_projecting.yaml");
+  const ProblemResult& p = problem(r, "seed004-axis-rotation");
+  EXPECT_EQ(exact_text(p, "points"), "0, 1, 0");
+  bool noted = false;
+  for (const ProblemResult& q : r.problems)
+    for (const Step& s : q.derivation.steps()) noted = noted || s.note.find("Seed 004 writes") != std::string::npos;
+  EXPECT_TRUE(noted) << "the perspective derivation notes seed 004's aspect slip";
+}
+
 TEST(Seeds, PublishedAnswersScoreFullMarks) {
-  for (const std::string name : {"001_zbuffer_plane_method.yaml", "003_polygons_backface.yaml"}) {
+  for (const std::string name : kSeedSets) {
     const ProblemSet set = load_problem_set(source_path("problems/seeds/" + name));
     const Submission s = load_submission(source_path("problems/seeds/answers/" + name));
     const GradeReport g = grade(set, s);
@@ -85,7 +124,7 @@ TEST(Seeds, PublishedAnswersScoreFullMarks) {
 }
 
 TEST(Seeds, EverySeedSetChecksClean) {
-  for (const std::string name : {"001_zbuffer_plane_method.yaml", "003_polygons_backface.yaml"}) {
+  for (const std::string name : kSeedSets) {
     const ProblemSet set = load_problem_set(source_path("problems/seeds/" + name));
     EXPECT_TRUE(set.all_errors().empty()) << name;
     const SetResult r = solve_set(set, false);

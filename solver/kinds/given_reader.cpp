@@ -132,6 +132,17 @@ std::vector<Exact> GivenReader::numbers(std::string_view key, std::size_t count)
   return out;
 }
 
+std::vector<Exact> GivenReader::numbers_at(std::string_view key, std::size_t i, std::size_t count) {
+  const YAML::Node list = require(key);
+  const std::string f = path(key) + "[" + std::to_string(i) + "]";
+  const YAML::Node n = list[i];
+  if (!n.IsSequence() || n.size() != count)
+    fail_at(n, f, "expected a list of " + std::to_string(count) + " numbers, got " + describe_node(n));
+  std::vector<Exact> out;
+  for (std::size_t k = 0; k < count; ++k) out.push_back(number_at(n[k], f + "[" + std::to_string(k) + "]"));
+  return out;
+}
+
 std::vector<Vec3<Exact>> GivenReader::points(std::string_view key, std::size_t min_count,
                                              std::size_t max_count) {
   const YAML::Node n = require(key);
@@ -183,6 +194,33 @@ std::vector<std::string> GivenReader::words(std::string_view key, std::size_t co
 
 GivenReader GivenReader::child(std::string_view key, std::vector<std::string> known_fields) {
   return GivenReader(require(key), file_, path(key), std::move(known_fields));
+}
+
+std::size_t GivenReader::list_size(std::string_view key, std::size_t min_count) {
+  const YAML::Node n = require(key);
+  if (!n.IsSequence()) fail_at(n, path(key), "expected a list, got " + describe_node(n));
+  if (n.size() < min_count)
+    fail_at(n, path(key), "expected at least " + std::to_string(min_count) + " items, got " +
+                              std::to_string(n.size()));
+  return n.size();
+}
+
+GivenReader GivenReader::item(std::string_view key, std::size_t i,
+                              std::vector<std::string> known_fields) {
+  const YAML::Node n = require(key);
+  return GivenReader(n[i], file_, path(key) + "[" + std::to_string(i) + "]",
+                     std::move(known_fields));
+}
+
+bool GivenReader::is_list(std::string_view key) const {
+  const YAML::Node& n = node_;
+  return n[std::string(key)].IsSequence();
+}
+
+std::vector<std::string> GivenReader::keys() const {
+  std::vector<std::string> out;
+  for (auto it = node_.begin(); it != node_.end(); ++it) out.push_back(it->first.as<std::string>());
+  return out;
 }
 
 void GivenReader::finish() {

@@ -26,6 +26,8 @@ class GivenReader {
 
   Exact number(std::string_view key);
   std::vector<Exact> numbers(std::string_view key, std::size_t count);
+  // Item i of a list of number lists (points of a transform), count numbers long.
+  std::vector<Exact> numbers_at(std::string_view key, std::size_t i, std::size_t count);
   template <int N>
   Eigen::Matrix<Exact, N, 1> vector(std::string_view key) {
     const std::vector<Exact> v = numbers(key, N);
@@ -38,6 +40,13 @@ class GivenReader {
   std::vector<std::string> words(std::string_view key, std::size_t count);
   // A nested mapping, read with its own known fields.
   GivenReader child(std::string_view key, std::vector<std::string> known_fields);
+  // A list of mappings (transform steps): its length, and a reader for item i.
+  std::size_t list_size(std::string_view key, std::size_t min_count = 1);
+  GivenReader item(std::string_view key, std::size_t i, std::vector<std::string> known_fields);
+  // Whether the field is a list (scale: 2 or scale: [2, 3]).
+  bool is_list(std::string_view key) const;
+  // Names of the fields present, in file order.
+  std::vector<std::string> keys() const;
 
   // Errors for every field that no read asked for (misspellings, leftovers).
   void finish();

@@ -35,6 +35,13 @@ const Registry& builtin_kinds() {
     r.add(plane_kind());
     r.add(depth_at_pixel_kind());
     r.add(backface_kind());
+    r.add(transform_kind());
+    r.add(look_at_kind());
+    r.add(projection_matrix_kind());
+    r.add(project_point_kind());
+    r.add(projection_plane_kind());
+    r.add(view_volume_kind());
+    r.add(viewport_kind());
     return r;
   }();
   return registry;

@@ -29,5 +29,12 @@ KindInfo normal_kind();
 KindInfo plane_kind();
 KindInfo depth_at_pixel_kind();
 KindInfo backface_kind();
+KindInfo transform_kind();
+KindInfo look_at_kind();
+KindInfo projection_matrix_kind();
+KindInfo project_point_kind();
+KindInfo projection_plane_kind();
+KindInfo view_volume_kind();
+KindInfo viewport_kind();
 
 }  // namespace frustum

@@ -131,8 +131,8 @@ ex simplify_power(const ex& e) {
 
   const cln::cl_I m = int_power(a, s) * int_power(b, r - s);
   const RootSplit split = split_root(m, r);
-  const numeric whole = q.power(numeric(cln::cl_N(k))) * numeric(cln::cl_N(split.coeff)) /
-                        numeric(cln::cl_N(b));
+  const numeric whole =
+      q.power(numeric(cln::cl_N(k))) * numeric(cln::cl_N(split.coeff)) / numeric(cln::cl_N(b));
   return make_radical(whole, split.radicand, r);
 }
 
@@ -164,8 +164,10 @@ ex combine_radicals(const ex& e) {
   }
   bool changed = false;
   ex radicals = 1;
-  for (const auto& [index, radicands] : groups) {
-    const auto keep = [&, index = index] {
+  for (const auto& group : groups) {
+    const unsigned index = group.first;
+    const std::vector<cln::cl_I>& radicands = group.second;
+    const auto keep = [&] {
       for (const cln::cl_I& d : radicands)
         radicals *= GiNaC::pow(ex(numeric(cln::cl_N(d))), ex(numeric(1, long(index))));
     };
@@ -346,16 +348,15 @@ Exact exact_acos(const Exact& c) {
   // The angles of the unit circle a course uses; GiNaC leaves acos(sqrt(2)/2) unevaluated.
   using GiNaC::numeric;
   const Exact r2 = GiNaC::sqrt(Exact(2)) / 2, r3 = GiNaC::sqrt(Exact(3)) / 2;
-  const std::pair<Exact, Exact> table[] = {
-      {1, 0},
-      {r3, GiNaC::Pi / 6},
-      {r2, GiNaC::Pi / 4},
-      {numeric(1, 2), GiNaC::Pi / 3},
-      {0, GiNaC::Pi / 2},
-      {numeric(-1, 2), 2 * GiNaC::Pi / 3},
-      {-r2, 3 * GiNaC::Pi / 4},
-      {-r3, 5 * GiNaC::Pi / 6},
-      {-1, GiNaC::Pi}};
+  const std::pair<Exact, Exact> table[] = {{1, 0},
+                                           {r3, GiNaC::Pi / 6},
+                                           {r2, GiNaC::Pi / 4},
+                                           {numeric(1, 2), GiNaC::Pi / 3},
+                                           {0, GiNaC::Pi / 2},
+                                           {numeric(-1, 2), 2 * GiNaC::Pi / 3},
+                                           {-r2, 3 * GiNaC::Pi / 4},
+                                           {-r3, 5 * GiNaC::Pi / 6},
+                                           {-1, GiNaC::Pi}};
   const Exact cc = canonical(c);
   for (const auto& [value, angle] : table)
     if (canonical(cc - value).is_zero()) return angle;

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <sstream>
 #include <string_view>
-#include <tuple>
 #include <vector>
 
 namespace frustum {
@@ -22,8 +21,7 @@ using GiNaC::numeric;
 constexpr long kMaxRadicalIndex = 64;
 
 std::string superscript(long n) {
-  static constexpr std::string_view kDigits[] = {"⁰", "¹", "²", "³", "⁴",
-                                                 "⁵", "⁶", "⁷", "⁸", "⁹"};
+  static constexpr std::string_view kDigits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
   std::string out = n < 0 ? "⁻" : "";
   for (const char c : std::to_string(n < 0 ? -n : n)) out += kDigits[c - '0'];
   return out;
@@ -66,16 +64,17 @@ bool has_negative_exponent(const ex& e) {
   return is_a<GiNaC::power>(e) && is_negative_numeric(e.op(1));
 }
 
-// Sums list the rational constant first, then radicals by index and radicand, then pi,
-// then anything else.
+// Sums list the rational constant first, then radicals by index and radicand, then powers
+// of pi by degree, then anything else.
 struct TermKey {
   int rank;
+  numeric degree;  // of pi
   long index;
   numeric radicand;
 };
 
 TermKey term_key(const ex& term) {
-  if (is_a<numeric>(term)) return {0, 0, 0};
+  if (is_a<numeric>(term)) return {0, 0, 0, 0};
   std::vector<ex> factors;
   if (is_a<GiNaC::mul>(term)) {
     for (std::size_t i = 0; i < term.nops(); ++i) factors.push_back(term.op(i));
@@ -84,7 +83,7 @@ TermKey term_key(const ex& term) {
   }
   bool only_radicals = true;
   bool only_pi = true;
-  TermKey key{1, 0, 0};
+  TermKey key{1, 0, 0, 0};
   for (const ex& f : factors) {
     if (is_a<numeric>(f)) continue;
     if (is_numeric_radical(f)) {
@@ -96,8 +95,14 @@ TermKey term_key(const ex& term) {
       continue;
     }
     only_radicals = false;
-    const ex base = is_a<GiNaC::power>(f) ? f.op(0) : f;
-    if (!base.is_equal(GiNaC::Pi)) only_pi = false;
+    const bool is_power = is_a<GiNaC::power>(f);
+    const ex base = is_power ? f.op(0) : f;
+    const ex degree = is_power ? f.op(1) : ex(1);
+    if (base.is_equal(GiNaC::Pi) && is_a<numeric>(degree)) {
+      key.degree += ex_to<numeric>(degree);
+    } else {
+      only_pi = false;
+    }
   }
   key.rank = only_radicals ? 1 : (only_pi ? 2 : 3);
   return key;
@@ -149,22 +154,25 @@ class Formatter {
   std::string sum(const ex& e) const {
     std::vector<ex> terms;
     for (std::size_t i = 0; i < e.nops(); ++i) terms.push_back(e.op(i));
-    std::vector<std::tuple<int, long, numeric, std::string, ex>> keyed;
-    for (const ex& t : terms) {
-      const TermKey key = term_key(t);
-      keyed.emplace_back(key.rank, key.index, key.radicand, text(t), t);
-    }
-    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
-      if (std::get<0>(a) != std::get<0>(b)) return std::get<0>(a) < std::get<0>(b);
-      if (std::get<1>(a) != std::get<1>(b)) return std::get<1>(a) < std::get<1>(b);
-      if (!std::get<2>(a).is_equal(std::get<2>(b))) return std::get<2>(a) < std::get<2>(b);
-      return std::get<3>(a) < std::get<3>(b);
+    struct Keyed {
+      TermKey key;
+      std::string text;
+      ex term;
+    };
+    std::vector<Keyed> keyed;
+    for (const ex& t : terms) keyed.push_back({term_key(t), text(t), t});
+    std::stable_sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+      if (a.key.rank != b.key.rank) return a.key.rank < b.key.rank;
+      if (!a.key.degree.is_equal(b.key.degree)) return a.key.degree < b.key.degree;
+      if (a.key.index != b.key.index) return a.key.index < b.key.index;
+      if (!a.key.radicand.is_equal(b.key.radicand)) return a.key.radicand < b.key.radicand;
+      return a.text < b.text;
     });
     terms.clear();
-    for (const auto& k : keyed) terms.push_back(std::get<4>(k));
+    for (const Keyed& k : keyed) terms.push_back(k.term);
     // A teacher writes "√3 − 1", not "−1 + √3": lead with a positive term when there is one.
-    const auto positive = std::find_if(terms.begin(), terms.end(),
-                                       [](const ex& t) { return !has_negative_sign(t); });
+    const auto positive =
+        std::find_if(terms.begin(), terms.end(), [](const ex& t) { return !has_negative_sign(t); });
     if (positive != terms.end()) std::rotate(terms.begin(), positive, positive + 1);
 
     std::string out;
@@ -188,7 +196,8 @@ class Formatter {
   }
 
   // Juxtaposition on paper ("2√3", "π√3"), "*" in Plain, and "·" where digits would run
-  // together ("√2·∛3"). The first item is the coefficient when has_coeff is set.
+  // together ("√2·∛3") or before a function name ("2·sin(1)"). The first item is the coefficient
+  // when has_coeff is set.
   std::string join(const std::vector<std::string>& items, bool has_coeff) const {
     std::string out;
     for (std::size_t i = 0; i < items.size(); ++i) {
@@ -200,7 +209,9 @@ class Formatter {
         if (style_ == MathStyle::Plain) {
           out += "*";
         } else if (style_ == MathStyle::Unicode) {
-          if (digits_meet) out += "·";
+          // A function name run into what precedes it ("πcos(1)") reads as one word.
+          const bool word = item.size() > 1 && is_ascii_letter(item[0]) && is_ascii_letter(item[1]);
+          if (digits_meet || word) out += "·";
         } else if (digits_meet) {
           out += " \\cdot ";
         } else if (is_ascii_letter(out.back()) && is_ascii_letter(item.front())) {
@@ -340,10 +351,9 @@ class Formatter {
     }
     if (style_ == MathStyle::Unicode) return name + "(" + args + ")";
     static constexpr std::string_view kLatexNames[][2] = {
-        {"sin", "\\sin"},       {"cos", "\\cos"},       {"tan", "\\tan"},
-        {"asin", "\\arcsin"},   {"acos", "\\arccos"},   {"atan", "\\arctan"},
-        {"sinh", "\\sinh"},     {"cosh", "\\cosh"},     {"tanh", "\\tanh"},
-        {"exp", "\\exp"},       {"log", "\\ln"}};
+        {"sin", "\\sin"},     {"cos", "\\cos"},     {"tan", "\\tan"},   {"asin", "\\arcsin"},
+        {"acos", "\\arccos"}, {"atan", "\\arctan"}, {"sinh", "\\sinh"}, {"cosh", "\\cosh"},
+        {"tanh", "\\tanh"},   {"exp", "\\exp"},     {"log", "\\ln"}};
     for (const auto& [plain, latex] : kLatexNames) {
       if (name == plain) return std::string(latex) + "(" + args + ")";
     }

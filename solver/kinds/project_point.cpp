@@ -1,0 +1,128 @@
+// A point through the pipeline (seed 004: v′ = P·V·M·v, then divide by w, then the
+// viewport): clip coordinates, NDC, window coordinates with depth in [0, 1], and whether it
+// lies inside the view volume. A point at or behind the eye (w ≤ 0) is reported as such and
+// never divided.
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/viewing_steps.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct ProjectPoint {
+  static constexpr const char* kName = "project_point";
+  static constexpr const char* kSummary = "a point's clip, NDC and window coordinates";
+  struct Given {
+    Vec3<Exact> point;
+    std::optional<std::array<Vec3<Exact>, 3>> camera;  // eye, center, up
+    ProjectionSpec projection;
+    Exact width, height;
+    Api api;
+  };
+  static std::vector<std::string> given_fields() {
+    return {"point", "camera", "perspective", "frustum", "ortho", "viewport"};
+  }
+  static std::vector<AnswerSpec> answers() {
+    return {{"clip", AnswerKind::Point, {}, {}},
+            {"ndc", AnswerKind::Vector, {"clip"}, {}},
+            {"window", AnswerKind::Vector, {"ndc"}, {}},
+            {"inside", AnswerKind::Bool, {"clip"}, {}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions& c) {
+    Given g;
+    g.point = r.vector<3>("point");
+    if (r.has("camera")) {
+      GivenReader cam = r.child("camera", {"eye", "center", "up"});
+      g.camera = {cam.vector<3>("eye"), cam.vector<3>("center"), cam.vector<3>("up")};
+      cam.finish();
+    }
+    g.projection = read_projection(r, c);
+    GivenReader vp = r.child("viewport", {"width", "height"});
+    g.width = vp.number("width");
+    g.height = vp.number("height");
+    if (exact_sign(g.width) <= 0) vp.fail("width", "must be positive");
+    if (exact_sign(g.height) <= 0) vp.fail("height", "must be positive");
+    vp.finish();
+    g.api = c.api;
+    return g;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    Vec3<Exact> p = g.point;
+    if (g.camera) {
+      const auto& [eye, center, up] = *g.camera;
+      const MatX<Exact> view = look_at_with_steps(eye, center, up, g.api, "camera.", steps);
+      const std::vector<Exact> v = transform_point(view, std::vector<Exact>{p(0), p(1), p(2)});
+      p = Vec3<Exact>(canonical(v[0]), canonical(v[1]), canonical(v[2]));
+      if (steps) steps->add("World to view coordinates", math("p_view = V·p_world"), {}, math("p_view = ") + vec(p, true));
+    }
+    const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps);
+    Eigen::Matrix<Exact, Eigen::Dynamic, 1> h(4);
+    h << p(0), p(1), p(2), Exact(1);
+    Eigen::Matrix<Exact, Eigen::Dynamic, 1> clip = m * h;
+    for (int i = 0; i < 4; ++i) clip(i) = canonical(clip(i));
+    Answers out;
+    const std::vector<Exact> clip_v(clip.data(), clip.data() + 4);
+    out.set("clip", Value::vector(clip_v));
+    if (steps) {
+      steps->add("Clip coordinates", math(g.api == Api::DirectX ? "clip = p·M" : "clip = M·p"),
+                 math("p = ") + vec(std::vector<Exact>{p(0), p(1), p(2), 1}),
+                 math("(x_c, y_c, z_c, w_c) = ") + vec(clip_v, true));
+      steps->yields("clip");
+    }
+    const Exact& w = clip(3);
+    const int w_sign = exact_sign(w);
+    // Inside the view volume: −w ≤ x, y ≤ w and −w ≤ z ≤ w (DirectX: 0 ≤ z ≤ w).
+    bool inside = w_sign > 0;
+    for (int i = 0; i < 3 && inside; ++i) {
+      const Exact low = (i == 2 && g.api == Api::DirectX) ? Exact(0) : Exact(-w);
+      inside = exact_sign(clip(i) - low) >= 0 && exact_sign(w - clip(i)) >= 0;
+    }
+    if (w_sign <= 0) {
+      out.set("ndc", Value::null());
+      out.set("window", Value::null());
+      if (steps)
+        steps->warn(w_sign == 0 ? "The point is in the eye's plane" : "The point is behind the eye",
+                    "w_c " + std::string(w_sign == 0 ? "= 0" : "< 0") +
+                        ": dividing by w would send the point to infinity or mirror it in front "
+                        "of the eye, so it has no NDC or window position; clipping removes it "
+                        "before the divide.");
+    } else {
+      const Vec3<Exact> ndc(canonical(clip(0) / w), canonical(clip(1) / w), canonical(clip(2) / w));
+      out.set("ndc", Value::vector(ndc));
+      const Vec3<Exact> win = viewport(ndc, g.width, g.height, g.api);
+      const Vec3<Exact> window(canonical(win(0)), canonical(win(1)), canonical(win(2)));
+      out.set("window", Value::vector(window));
+      if (steps) {
+        steps->add("Perspective divide", math("ndc = (x_c, y_c, z_c) / w_c"), {}, math("ndc = ") + vec(ndc, true));
+        steps->yields("ndc");
+        const std::string y_rule = g.api == Api::DirectX ? "y_w = (1 − y)/2·height (window y down)"
+                                   : g.api == Api::Processing
+                                       ? "y_w = (y + 1)/2·height (window y down; the projection already negated y)"
+                                       : "y_w = (y + 1)/2·height (window origin bottom-left)";
+        const std::string z_rule = g.api == Api::DirectX ? "depth = z" : "depth = (z + 1)/2";
+        steps->add("Viewport", math("x_w = (x + 1)/2·width,  " + y_rule + ",  " + z_rule),
+                   math("width = ") + exact(g.width) + math(", height = ") + exact(g.height),
+                   math("(x_w, y_w, depth) = ") + vec(window, true));
+        steps->yields("window");
+      }
+    }
+    out.set("inside", Value::boolean(inside));
+    if (steps) {
+      steps->add("Inside the view volume?")
+          .note = std::string(g.api == Api::DirectX ? "−w ≤ x, y ≤ w and 0 ≤ z ≤ w" : "−w ≤ x, y, z ≤ w") +
+                  " with w > 0: " + (inside ? "yes, the point is visible." : "no, clipping removes it.");
+      steps->yields("inside");
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo project_point_kind() { return make_kind<ProjectPoint>(); }
+
+}  // namespace frustum

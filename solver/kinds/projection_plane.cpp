@@ -1,0 +1,85 @@
+// seed 000 exercise 2: the projection plane of a window of width × height pixels seen with a
+// vertical field of view fov lies at distance (height/2) / tan(fov/2) from the eye
+// (Processing's default camera z); a point P in view coordinates projects to
+// P′ = P · (s / z_P) on it. Window 200×200, fov 60°: s = −100√3, and P(0, 100, −300) ↦
+// P′ = (0, 100√3/3, −100√3).
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/viewing_steps.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct ProjectionPlane {
+  static constexpr const char* kName = "projection_plane";
+  static constexpr const char* kSummary = "where the projection plane lies and where a point lands on it";
+  struct Given {
+    Exact width, height, fov;
+    Vec3<Exact> point;
+    Conventions conventions;
+  };
+  static std::vector<std::string> given_fields() { return {"window", "fov", "point"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"plane_z", AnswerKind::Scalar, {}, {}}, {"projected", AnswerKind::Vector, {"plane_z"}, {}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions& c) {
+    Given g;
+    const std::vector<Exact> window = r.numbers("window", 2);
+    g.width = window[0];
+    g.height = window[1];
+    if (exact_sign(g.width) <= 0 || exact_sign(g.height) <= 0) r.fail("window", "width and height must be positive");
+    g.fov = read_angle(r, "fov", c.angles);
+    if (exact_sign(g.fov) <= 0 || exact_sign(g.fov - GiNaC::Pi) >= 0)
+      r.fail("fov", "must be between 0° and 180° (exclusive)");
+    g.point = r.vector<3>("point");
+    g.conventions = c;
+    return g;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    // OpenGL and Processing eye space looks down −z; DirectX looks down +z.
+    const int toward = g.conventions.api == Api::DirectX ? 1 : -1;
+    const Exact half = g.fov / 2;
+    const Exact s = canonical(toward * (g.height / 2) * GiNaC::cos(half) / GiNaC::sin(half));
+    Answers out;
+    out.set("plane_z", Value::scalar(s));
+    if (steps) {
+      steps->add("Distance of the projection plane",
+                 math(std::string(toward < 0 ? "s = −" : "s = ") + "(height/2) / tan(fov/2)",
+                      std::string(toward < 0 ? "s = -" : "s = ") + "\\frac{\\text{height}/2}{\\tan(\\text{fov}/2)}"),
+                 math("height = ") + exact(g.height) + math(",  fov = ", ",\\; \\text{fov} = ") +
+                     angle_text(g.fov, g.conventions.angles),
+                 math("s = ") + exact(s, true))
+          .note = "The plane on which the window's height exactly fills the vertical field of view; "
+                  "Processing puts its default camera at this distance. " +
+                  std::string(toward < 0 ? "Eye space looks down −z, so the plane is at negative z."
+                                         : "DirectX's eye space looks down +z.");
+      steps->yields("plane_z");
+    }
+    const int z_sign = exact_sign(g.point(2));
+    if (z_sign != toward)
+      throw DomainError("point", z_sign == 0 ? "the point is in the eye's plane (z = 0): it has no projection"
+                                             : "the point is behind the eye: it has no projection");
+    // Similar triangles: x′ : s = x : z (seed 000: x_n = x · n / (−z)).
+    const Exact k = canonical(s / g.point(2));
+    const Vec3<Exact> p(canonical(g.point(0) * k), canonical(g.point(1) * k), s);
+    out.set("projected", Value::vector(p));
+    if (steps) {
+      steps->add("Similar triangles", math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
+                 math("P′ = ", "P' = ") + vec(g.point) + math(" · (") + exact(s) + math(") / (") +
+                     exact(g.point(2)) + math(")"),
+                 math("P′ = ", "P' = ") + vec(p, true));
+      steps->yields("projected");
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo projection_plane_kind() { return make_kind<ProjectionPlane>(); }
+
+}  // namespace frustum

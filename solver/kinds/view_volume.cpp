@@ -1,0 +1,78 @@
+// seed 002 (Foley et al.'s normalized view volume): the eye looks down +z at a projection
+// plane at distance d with half-extents a, b; clipping planes z_min, z_max. First
+// S(d/(a·z_max), d/(b·z_max), 1/z_max) puts the back plane at z = 1 with x, y ∈ [−1, 1]; then
+// P(z̃_min), z̃_min = z_min/z_max, maps z̃_min → 0 and 1 → 1 after the divide by W′ = z.
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/viewing_steps.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct ViewVolume {
+  static constexpr const char* kName = "view_volume";
+  static constexpr const char* kSummary = "the normalized perspective view volume of Foley et al. (seed 002)";
+  struct Given {
+    Exact d, a, b, z_min, z_max;
+    Vec3<Exact> point;
+  };
+  static std::vector<std::string> given_fields() { return {"d", "a", "b", "z_min", "z_max", "point"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"scale_matrix", AnswerKind::Matrix, {}, {}},
+            {"perspective_matrix", AnswerKind::Matrix, {}, {}},
+            {"point", AnswerKind::Vector, {"scale_matrix", "perspective_matrix"}, {}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions&) {
+    Given g{r.number("d"), r.number("a"), r.number("b"), r.number("z_min"), r.number("z_max"), {}};
+    for (const char* k : {"d", "a", "b"})
+      if (exact_sign(r.number(k)) <= 0) r.fail(k, "must be positive");
+    if (exact_sign(g.z_min) <= 0) r.fail("z_min", "must be positive: the front clipping plane is in front of the eye");
+    if (exact_sign(g.z_max - g.z_min) <= 0) r.fail("z_max", "must be greater than z_min");
+    if (r.has("point")) g.point = r.vector<3>("point");
+    else g.point = Vec3<Exact>(0, 0, g.z_max);
+    return g;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    const MatX<Exact> s = canonical(scale(std::vector<Exact>{g.d / (g.a * g.z_max), g.d / (g.b * g.z_max), 1 / g.z_max}));
+    const Exact zt = canonical(g.z_min / g.z_max);
+    MatX<Exact> p = MatX<Exact>::Identity(4, 4);
+    p(2, 2) = canonical(1 / (1 - zt));
+    p(2, 3) = canonical(-zt / (1 - zt));
+    p(3, 2) = 1;
+    p(3, 3) = 0;
+    Answers out;
+    out.set("scale_matrix", matrix_value(s));
+    out.set("perspective_matrix", matrix_value(p));
+    if (steps) {
+      steps->add("① Normalize the view volume", math("S(d/(a·z_max), d/(b·z_max), 1/z_max)",
+                                                     "S\\left(\\frac{d}{a z_{max}}, \\frac{d}{b z_{max}}, \\frac{1}{z_{max}}\\right)"),
+                 {}, math("S = ") + matrix_text(s))
+          .note = "The back clipping plane moves to z = 1, where x and y span [−1, 1].";
+      steps->yields("scale_matrix");
+      steps->add("② Perspective of the normalized volume",
+                 math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) −z̃/(1−z̃); 0 0 1 0]"),
+                 math("z̃_min = ") + exact(zt), math("P = ") + matrix_text(p))
+          .note = "X′ and Y′ are unchanged and W′ = z: the matrix is projective, not affine.";
+      steps->yields("perspective_matrix");
+    }
+    const std::vector<Exact> h = transform_point(MatX<Exact>(p * s), std::vector<Exact>{g.point(0), g.point(1), g.point(2)});
+    const std::vector<Exact> q = {canonical(h[0]), canonical(h[1]), canonical(h[2])};
+    out.set("point", Value::vector(q));
+    if (steps) {
+      steps->add("A point through both, then the divide by W′", math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′"),
+                 math("p = ") + vec(g.point), math("p′ = ") + vec(q, true));
+      steps->yields("point");
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo view_volume_kind() { return make_kind<ViewVolume>(); }
+
+}  // namespace frustum

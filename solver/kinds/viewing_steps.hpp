@@ -1,0 +1,57 @@
+// Reading and deriving the pieces of the viewing pipeline that several kinds share: angles
+// in the set's unit, a projection (perspective, frustum or ortho) with its checks and steps,
+// and matrices shown as on paper.
+#pragma once
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/derivation/value.hpp"
+#include "solver/viewing/projection.hpp"
+
+#include <optional>
+#include <string>
+
+namespace frustum {
+
+class GivenReader;
+
+// An angle in the conventions' unit, returned in radians (exact: 60 → π/3).
+Exact read_angle(GivenReader& r, const std::string& key, AngleUnit unit);
+MathText angle_text(const Exact& radians, AngleUnit unit);
+
+struct ProjectionSpec {
+  enum class Type { Perspective, Frustum, Ortho } type = Type::Perspective;
+  Volume<Exact> volume;
+  std::optional<Exact> fovy;    // radians, perspective only
+  std::optional<Exact> aspect;  // perspective only
+  AngleUnit unit = AngleUnit::Degrees;
+};
+
+// Reads whichever of perspective / frustum / ortho is given (exactly one), checking the
+// domain: near > 0 for a perspective, near ≠ far, fovy in (0°, 180°), aspect > 0, l ≠ r, b ≠ t.
+ProjectionSpec read_projection(GivenReader& r, const Conventions& c);
+bool has_projection(const GivenReader& r);
+
+// The projection matrix (column form) with its derivation steps in the conventions.
+MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps);
+
+// The view matrix of a camera (column form) with its steps; throws DomainError naming
+// field + "center" or field + "up" on a degenerate camera.
+MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center,
+                               const Vec3<Exact>& up, Api api, const std::string& field,
+                               Derivation* steps);
+
+// Every point through M (with the divide by w), one step each, yielding "points"; the
+// answer value is the list of moved points (null when there are none).
+Value transform_points_with_steps(const MatX<Exact>& m, const std::vector<std::vector<Exact>>& points,
+                                  const std::string& title, const std::string& name,
+                                  Derivation* steps);
+
+MatX<Exact> canonical(const MatX<Exact>& m);
+std::vector<std::vector<Exact>> rows_of(const MatX<Exact>& m);
+Value matrix_value(const MatX<Exact>& m);
+MathText matrix_text(const MatX<Exact>& m);
+
+// "M = " in the conventions: DirectX prints the row-vector matrix (p′ = p·M).
+std::string multiply_note(Api api);
+
+}  // namespace frustum
