@@ -268,9 +268,80 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       p.value = Value::category(w);
       break;
     }
-    default:
-      p.error = "answers of this kind cannot be graded yet";
-      return p;
+    case AnswerKind::Polygon: {
+      if (!node.IsSequence() || node.size() == 0) {
+        p.error = "expected a list of vertices";
+        return p;
+      }
+      std::vector<std::vector<Exact>> rows;
+      for (std::size_t r = 0; r < node.size(); ++r) {
+        const Numbers n = read_numbers(node[r]);
+        if (!n.error.empty() || (!rows.empty() && n.values.size() != rows[0].size())) {
+          p.error = "vertex " + std::to_string(r + 1) + ": " + (n.error.empty() ? "wrong number of coordinates" : n.error);
+          return p;
+        }
+        rows.push_back(n.values);
+      }
+      p.value = Value::matrix(rows);
+      break;
+    }
+    case AnswerKind::BitString: {
+      if (!node.IsScalar()) {
+        p.error = "expected a bit string like 0101";
+        return p;
+      }
+      std::string bits;
+      for (char c : node.Scalar())
+        if (c == '0' || c == '1') bits += c;
+        else if (c != ' ' && c != '_') {
+          p.error = "'" + node.Scalar() + "' is not a bit string of 0 and 1";
+          return p;
+        }
+      p.value = Value::category(bits);
+      break;
+    }
+    case AnswerKind::WordList:
+    case AnswerKind::Sequence: {
+      std::vector<std::string> words;
+      if (node.IsSequence()) {
+        for (std::size_t i = 0; i < node.size(); ++i) {
+          if (!node[i].IsScalar()) {
+            p.error = "item " + std::to_string(i + 1) + " is not a word";
+            return p;
+          }
+          words.push_back(trim_lower(node[i].Scalar()));
+        }
+      } else if (node.IsScalar()) {
+        for (std::string w : split_list(node.Scalar())) {
+          w = trim_lower(w);
+          if (!w.empty()) words.push_back(w);
+        }
+      } else {
+        p.error = "expected a list";
+        return p;
+      }
+      p.value = Value::word_list(words);
+      break;
+    }
+    case AnswerKind::WordMap: {
+      if (!node.IsMap()) {
+        p.error = "expected a mapping like {\"0-1\": visible}";
+        return p;
+      }
+      std::vector<std::pair<std::string, std::string>> entries;
+      for (auto it = node.begin(); it != node.end(); ++it) {
+        if (!it->second.IsScalar()) {
+          p.error = "the value of '" + it->first.as<std::string>() + "' is not a word";
+          return p;
+        }
+        std::string w = trim_lower(it->second.Scalar());
+        for (const auto& [syn, canon] : kWordSynonyms)
+          if (syn == w) w = canon;
+        entries.emplace_back(it->first.as<std::string>(), w);
+      }
+      p.value = Value::word_map(entries);
+      break;
+    }
   }
   p.ok = true;
   return p;

@@ -21,10 +21,13 @@ struct Comparison {
   std::string feedback;  // why, for the student
 };
 
-// |got − expected| ≤ max(abs, rel·scale).
+// The accepted window around `expected` (see Tolerance); `scale` is what `rel` is relative to.
+double window(double expected, const Tolerance& tol, double scale);
+// |got − expected| ≤ window.
 bool close(double expected, double got, const Tolerance& tol, double scale);
 
+// partial: vectors and matrices with some components right get that fraction (Partial).
 Comparison compare(const Value& expected, const Value& got, const AnswerSpec& spec,
-                   const Tolerance& tol);
+                   const Tolerance& tol, bool partial = true);
 
 }  // namespace frustum

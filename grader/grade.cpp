@@ -4,6 +4,7 @@
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/solve_set.hpp"
 #include "solver/kinds/yaml_document.hpp"
+#include "solver/util/exact_format.hpp"
 #include "solver/util/suggest.hpp"
 
 
@@ -54,6 +55,19 @@ Submission load_submission(const std::string& path) {
 
 namespace {
 
+// Names the common mistake a wrong answer matches, with the step where it goes wrong.
+std::optional<Misconception> diagnose(const ProblemSpec& spec, const std::vector<Misconception>& mistakes,
+                                      const std::string& name, const Value& got) {
+  const AnswerSpec& aspec = *spec.info->answer(name);
+  for (const Misconception& m : mistakes) {
+    const Value* v = m.answers.find(name);
+    if (v && v->shape != Value::Shape::Null &&
+        compare(*v, got, aspec, spec.tolerance_for(name), false).verdict == Verdict::Correct)
+      return m;
+  }
+  return std::nullopt;
+}
+
 ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemSet& set,
                            const YAML::Node& student, const std::string& answers_file,
                            std::vector<Diagnostic>& errors) {
@@ -66,33 +80,69 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemSet& set,
     pg.error = solved.error;
     return pg;
   }
-  const double each = spec.ask.empty() ? 0 : pg.max_score / static_cast<double>(spec.ask.size());
   if (student.IsDefined() && !student.IsNull() && !student.IsMap()) {
     errors.push_back(Diagnostic{location_of(student, answers_file), "answers." + spec.id,
                                 "expected a mapping of answer name → value"});
   }
-  for (const std::string& name : spec.ask) {
+  // Parse every answer first: later answers are judged against the student's earlier ones.
+  Answers parsed_answers;
+  std::vector<ParsedAnswer> parsed(spec.ask.size());
+  for (std::size_t i = 0; i < spec.ask.size(); ++i) {
+    const YAML::Node given = student.IsMap() ? student[spec.ask[i]] : YAML::Node();
+    if (!given.IsDefined() || given.IsNull()) continue;
+    parsed[i] = parse_answer(given, *spec.info->answer(spec.ask[i]));
+    if (parsed[i].ok) parsed_answers.set(spec.ask[i], parsed[i].value);
+  }
+  std::optional<Answers> carried;
+  std::optional<std::vector<Misconception>> mistakes;
+  for (std::size_t i = 0; i < spec.ask.size(); ++i) {
+    const std::string& name = spec.ask[i];
+    const AnswerSpec& aspec = *spec.info->answer(name);
     AnswerGrade ag;
     ag.name = name;
-    ag.max_score = each;
+    ag.max_score = spec.answer_points(name);
     ag.expected = *solved.answers.find(name);
-    const AnswerSpec& aspec = *spec.info->answer(name);
     const YAML::Node given = student.IsMap() ? student[name] : YAML::Node();
     if (!given.IsDefined() || given.IsNull()) {
       ag.verdict = Verdict::Missing;
       ag.feedback = "no answer given";
+    } else if (!parsed[i].ok) {
+      ag.got_text = parsed[i].raw;
+      ag.verdict = Verdict::Unparseable;
+      ag.feedback = parsed[i].error;
     } else {
-      const ParsedAnswer parsed = parse_answer(given, aspec);
-      ag.got_text = parsed.raw;
-      if (!parsed.ok) {
-        ag.verdict = Verdict::Unparseable;
-        ag.feedback = parsed.error;
-      } else {
-        ag.got = parsed.value;
-        const Comparison c = compare(ag.expected, parsed.value, aspec, spec.tolerance);
-        ag.verdict = c.verdict;
-        ag.score = c.credit * each;
-        ag.feedback = c.feedback;
+      ag.got_text = parsed[i].raw;
+      ag.got = parsed[i].value;
+      const Comparison c = compare(ag.expected, parsed[i].value, aspec, spec.tolerance_for(name), spec.grading.partial);
+      ag.verdict = c.verdict;
+      ag.score = c.credit * ag.max_score;
+      ag.feedback = c.feedback;
+      if (ag.verdict != Verdict::Correct && spec.info->misconceptions) {
+        if (!mistakes) mistakes = spec.info->misconceptions(spec.given);
+        if (const auto m = diagnose(spec, *mistakes, name, parsed[i].value)) {
+          ag.misconception = m->name;
+          ag.feedback = m->feedback + (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
+          ag.wrong_step = m->step;
+        }
+      }
+      // Error carried forward: right from the student's own wrong earlier answer.
+      if (ag.verdict != Verdict::Correct && !aspec.depends_on.empty() && spec.info->carry_forward &&
+          spec.grading.ecf > 0) {
+        if (!carried) carried = spec.info->carry_forward(spec.given, parsed_answers);
+        const Value* follow = carried->find(name);
+        if (follow && compare(*follow, parsed[i].value, aspec, spec.tolerance_for(name), false).verdict ==
+                          Verdict::Correct) {
+          const double credit = spec.grading.ecf * ag.max_score;
+          if (credit > ag.score) {
+            ag.verdict = Verdict::Partial;
+            ag.score = credit;
+            ag.carried_forward = true;
+            std::string from;
+            for (const std::string& d : aspec.depends_on) from += (from.empty() ? "" : ", ") + d;
+            ag.feedback = "wrong, but it follows correctly from your own " + from +
+                          " (error carried forward: " + format_approx(spec.grading.ecf * 100, 3) + "% of the points)";
+          }
+        }
       }
     }
     if (ag.verdict != Verdict::Correct) ag.derivation = solved.derivation.steps_for(name);

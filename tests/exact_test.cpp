@@ -27,7 +27,7 @@ void expect_canonical(const ex& input, const ex& expected) {
   EXPECT_TRUE(got.is_equal(expected)) << input << " -> " << got << ", expected " << expected;
 }
 
-// Removes every square from n by trial division (test oracle, small n only).
+// True when no square above 1 divides n (test oracle, small n only).
 bool is_square_free(long n) {
   for (long p = 2; p * p <= n; ++p) {
     if (n % (p * p) == 0) return false;

@@ -15,7 +15,7 @@ using test::exact_text;
 using test::solve_yaml;
 
 std::string one(const std::string& kind, const std::string& given, const std::string& extra = "") {
-  return fmt::format("problems:\n  - id: p\n    kind: {}\n{}    given: {}\n", kind, extra, given);
+  return test::one(kind, given, "", extra);
 }
 
 TEST(Kinds, RegistryHasTheFoundationKindsWithTheirAnswers) {

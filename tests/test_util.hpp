@@ -4,6 +4,7 @@
 #include "solver/derivation/problem_result.hpp"
 #include "solver/kinds/problem_set.hpp"
 #include "solver/kinds/solve_set.hpp"
+#include "solver/util/exact.hpp"
 #include "solver/util/exact_format.hpp"
 
 #include <gtest/gtest.h>
@@ -35,6 +36,17 @@ inline std::string exact_text(const ProblemResult& r, const std::string& answer)
     s += (i ? ", " : "") + format_exact(v->exact[i], MathStyle::Plain);
   return s;
 }
+
+// A one-problem set: `extra` is inserted among the problem's fields (indented four spaces,
+// newline-terminated), `conventions` becomes the set's conventions mapping when not empty.
+inline std::string one(const std::string& kind, const std::string& given, const std::string& conventions = "",
+                       const std::string& extra = "") {
+  const std::string head = conventions.empty() ? "" : "conventions: " + conventions + "\n";
+  return head + "problems:\n  - id: p\n    kind: " + kind + "\n" + extra + "    given: " + given + "\n";
+}
+
+// Exact equality after canonical simplification.
+inline bool same(const Exact& a, const Exact& b) { return canonical(a - b).is_zero(); }
 
 inline std::string error_text(const ProblemResult& r) {
   return r.error ? r.error->format() : std::string();

@@ -30,6 +30,47 @@ struct Backface {
     return {r.points("points", 3), r.vector<3>("eye"), c.api};
   }
 
+  static std::string facing_of(const Exact& df) {
+    const int sign = exact_sign(df);
+    return sign > 0 ? "front" : sign < 0 ? "back" : "edge_on";
+  }
+
+  // Error carried forward: D_f from the student's normal and view vector, facing from D_f.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", nullptr);
+    Vec3<Exact> v = g.eye - g.points[0];
+    const auto sn = carried(student, "normal", 3);
+    const auto sv = carried(student, "view", 3);
+    if (sn) n = Vec3<Exact>((*sn)[0], (*sn)[1], (*sn)[2]);
+    if (sv) v = Vec3<Exact>((*sv)[0], (*sv)[1], (*sv)[2]);
+    Exact df = canonical(v.dot(n));
+    if (sn || sv) out.set("df", Value::scalar(df));
+    if (const Value* d = student.find("df"); d && d->exact.size() == 1) df = d->exact[0];
+    out.set("facing", Value::category(facing_of(df)));
+    return out;
+  }
+
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", nullptr);
+    const Vec3<Exact> v = g.eye - g.points[0];
+    const Exact df = canonical(v.dot(n));
+    Answers reversed_n;
+    reversed_n.set("normal", Value::vector(Vec3<Exact>(-n)));
+    Answers reversed_v;
+    reversed_v.set("view", Value::vector(Vec3<Exact>(-v)));
+    reversed_v.set("df", Value::scalar(-df));
+    reversed_v.set("facing", Value::category(facing_of(-df)));
+    return {{"reversed cross product",
+             "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the front "
+             "normal is n = e₀ × e₁ (seed 003).",
+             "Normal (seed 003: n = e₀ × e₁, counter-clockwise = front)", reversed_n},
+            {"view vector reversed",
+             "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the "
+             "polygon to the eye, and that flips the sign of D_f.",
+             "View vector from p₀ to the eye", reversed_v}};
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     if (steps && g.api == Api::DirectX)
       steps->note("Winding in a left-handed frame",

@@ -48,6 +48,65 @@ struct DepthAtPixel {
     return m + math(")", "\\right)");
   }
 
+  // The plane through A with normal n, as written on paper, and z at the pixel (nullopt when
+  // the plane is edge-on).
+  static std::array<Exact, 4> plane_through_a(const Given& g, const Vec3<Exact>& n) {
+    return paper_plane(n, canonical(n.dot(g.triangle[0])));
+  }
+  static std::optional<Exact> z_on(const Given& g, const std::vector<Exact>& plane) {
+    if (canonical(plane[2]).is_zero()) return std::nullopt;
+    return canonical((plane[3] - plane[0] * g.pixel(0) - plane[1] * g.pixel(1)) / plane[2]);
+  }
+  static Value plane_value(const std::array<Exact, 4>& plane) {
+    Value v = Value::vector(std::vector<Exact>(plane.begin(), plane.end()));
+    v.display = plane_equation(plane[0], plane[1], plane[2], plane[3]);
+    return v;
+  }
+
+  // Error carried forward: normal → unit normal → plane → z, from the student's own values.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    std::optional<Vec3<Exact>> n;
+    if (const auto v = carried(student, "normal", 3)) n = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
+    if (n) out.set("unit_normal", Value::vector(unit(*n)));
+    if (const auto v = carried(student, "unit_normal", 3)) n = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
+    std::optional<std::vector<Exact>> plane;
+    if (n) {
+      const std::array<Exact, 4> p = plane_through_a(g, *n);
+      out.set("plane", plane_value(p));
+      plane = std::vector<Exact>(p.begin(), p.end());
+    }
+    if (const auto v = carried(student, "plane", 4)) plane = v;
+    if (plane)
+      if (const auto z = z_on(g, *plane)) out.set("z", Value::scalar(*z));
+    return out;
+  }
+
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    std::vector<Misconception> out;
+    const Vec3<Exact> n = named_edge(g.order.first, g.triangle).cross(named_edge(g.order.second, g.triangle));
+    Answers reversed;
+    reversed.set("normal", Value::vector(Vec3<Exact>(-n)));
+    reversed.set("unit_normal", Value::vector(unit(Vec3<Exact>(-n))));
+    out.push_back({"reversed cross product",
+                   "You took " + g.order.second + " × " + g.order.first + ": the projection coordinates are "
+                   "left-handed (seed 001), so the front normal here is " + g.order.first + " × " + g.order.second + ".",
+                   "Normal", reversed});
+    Answers unnormalized;
+    unnormalized.set("unit_normal", Value::vector(n));
+    out.push_back({"unnormalised normal", "That is n itself: a unit normal is n divided by its length ‖n‖.",
+                   "Unit normal", unnormalized});
+    const Vec3<Exact> u = unit(n);
+    Answers origin;
+    const std::array<Exact, 4> p0 = paper_plane(u, 0);
+    origin.set("plane", plane_value(p0));
+    if (const auto z = z_on(g, std::vector<Exact>(p0.begin(), p0.end()))) origin.set("z", Value::scalar(*z));
+    out.push_back({"plane through the origin",
+                   "Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
+                   "Plane through A with normal n̂", origin});
+    return out;
+  }
+
   static int orient2d(const Vec3<Exact>& a, const Vec3<Exact>& b, const Vec2<Exact>& p) {
     return exact_sign((b(0) - a(0)) * (p(1) - a(1)) - (b(1) - a(1)) * (p(0) - a(0)));
   }
@@ -68,10 +127,8 @@ struct DepthAtPixel {
     out.set("unit_normal", Value::vector(u));
     // Plane through A: n̂·(p − A) = 0, then cleared of its common factor.
     const Vec3<Exact>& A = g.triangle[0];
-    const Exact d = canonical(u.dot(A));
-    const std::array<Exact, 4> plane = paper_plane(u, d);
-    Value pv = Value::vector(std::vector<Exact>(plane.begin(), plane.end()));
-    pv.display = plane_equation(plane[0], plane[1], plane[2], plane[3]);
+    const std::array<Exact, 4> plane = plane_through_a(g, u);
+    const Value pv = plane_value(plane);
     out.set("plane", pv);
     if (steps) {
       steps->add("Plane through A with normal n̂",

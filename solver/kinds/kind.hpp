@@ -41,6 +41,15 @@ struct AnswerSpec {
   std::vector<std::string> words;       // Category: the allowed words
 };
 
+// A common mistake, as the answers it produces: the grader names it when a student's wrong
+// answer matches one of these.
+struct Misconception {
+  std::string name;       // "reversed cross product"
+  std::string feedback;   // what went wrong, for the student
+  std::string step;       // title of the derivation step where it goes wrong
+  Answers answers;        // the answers the mistake leads to
+};
+
 struct KindInfo {
   std::string name;
   std::string summary;
@@ -50,6 +59,12 @@ struct KindInfo {
   std::function<std::any(GivenReader&, const Conventions&)> parse;
   // Solves; records steps when `steps` is not null. Throws DomainError naming the field.
   std::function<Answers(const std::any& given, Derivation* steps)> solve;
+  // Optional. Error carried forward: the later answers recomputed from the student's own
+  // earlier answers (only those it can recompute; a trivial earlier answer such as a zero
+  // normal yields nothing).
+  std::function<Answers(const std::any& given, const Answers& student)> carry_forward;
+  // Optional. The answers that common mistakes produce.
+  std::function<std::vector<Misconception>(const std::any& given)> misconceptions;
 
   const AnswerSpec* answer(const std::string& name) const;
 };
@@ -66,6 +81,13 @@ KindInfo make_kind() {
   k.solve = [](const std::any& g, Derivation* steps) {
     return K::solve(std::any_cast<const typename K::Given&>(g), steps);
   };
+  using G = typename K::Given;
+  if constexpr (requires(const G& g, const Answers& a) { K::carry_forward(g, a); })
+    k.carry_forward = [](const std::any& g, const Answers& a) {
+      return K::carry_forward(std::any_cast<const G&>(g), a);
+    };
+  if constexpr (requires(const G& g) { K::misconceptions(g); })
+    k.misconceptions = [](const std::any& g) { return K::misconceptions(std::any_cast<const G&>(g)); };
   return k;
 }
 

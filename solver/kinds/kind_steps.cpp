@@ -10,6 +10,16 @@
 
 namespace frustum {
 
+std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
+                                          std::size_t size) {
+  const Value* v = student.find(name);
+  if (!v || v->exact.size() != size) return std::nullopt;
+  bool all_zero = true;
+  for (const Exact& e : v->exact) all_zero = all_zero && canonical(e).is_zero();
+  if (all_zero) return std::nullopt;
+  return v->exact;
+}
+
 std::string point_name(const std::string& stem, std::size_t i) {
   return stem + std::to_string(i);
 }

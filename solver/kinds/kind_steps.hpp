@@ -6,6 +6,8 @@
 #include "solver/geometry/vec.hpp"
 
 #include <array>
+#include <optional>
+#include "solver/derivation/value.hpp"
 #include <string>
 
 namespace frustum {
@@ -26,6 +28,11 @@ Vec3<Exact> unit(const Vec3<Exact>& n);
 
 // n̂ = n / ‖n‖ with its step (‖n‖ shown exactly, 9√3 ≈ 15.59), yielding "unit_normal".
 Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps);
+
+// A student's earlier answer usable for error carried forward: present, exact, of the given
+// number of components, and not all zero (a zero normal makes later parts trivial).
+std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
+                                          std::size_t size);
 
 // "p0, p1, p2" style names.
 std::string point_name(const std::string& stem, std::size_t i);

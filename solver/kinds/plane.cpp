@@ -42,6 +42,27 @@ struct Plane {
     return g;
   }
 
+  // Error carried forward: the plane and distance from the student's own normal.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    const Vec3<Exact> p0 = g.points.empty() ? g.point : g.points[0];
+    std::optional<std::vector<Exact>> plane;
+    if (const auto n = carried(student, "normal", 3)) {
+      const Vec3<Exact> v((*n)[0], (*n)[1], (*n)[2]);
+      out.set("unit_normal", Value::vector(unit(v)));
+      const std::array<Exact, 4> p = paper_plane(v, canonical(v.dot(p0)));
+      out.set("plane", Value::vector(std::vector<Exact>(p.begin(), p.end())));
+      plane = std::vector<Exact>(p.begin(), p.end());
+    }
+    if (const auto p = carried(student, "plane", 4)) plane = p;
+    if (plane) {
+      const Exact len = canonical(norm(Vec3<Exact>((*plane)[0], (*plane)[1], (*plane)[2])));
+      if (!len.is_zero())
+        out.set("distance", Value::scalar(canonical((exact_sign((*plane)[3]) < 0 ? Exact(-(*plane)[3]) : (*plane)[3]) / len)));
+    }
+    return out;
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     Vec3<Exact> n = g.normal;
     Vec3<Exact> p0 = g.point;

@@ -5,6 +5,7 @@
 #include "solver/kinds/yaml_document.hpp"
 #include "solver/util/suggest.hpp"
 
+#include <cmath>
 #include <set>
 
 namespace frustum {
@@ -12,11 +13,11 @@ namespace frustum {
 namespace {
 
 const std::vector<std::string> kSetFields = {"title", "conventions", "tolerance", "problems",
-                                             "description"};
+                                             "description", "grading"};
 const std::vector<std::string> kProblemFields = {"id",     "kind",        "text",
                                                  "given",  "ask",         "points",
                                                  "vary",   "conventions", "tolerance",
-                                                 "nice",   "difficulty"};
+                                                 "nice",   "difficulty",  "grading"};
 
 [[noreturn]] void fail_at(const YAML::Node& n, const std::string& file, const std::string& field,
                           const std::string& message) {
@@ -64,6 +65,7 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   spec.conventions = read_conventions(p["conventions"], file, spec.field + ".conventions",
                                       set.conventions);
   spec.tolerance = read_tolerance(p["tolerance"], file, spec.field + ".tolerance", set.tolerance);
+  spec.grading = read_grading(p["grading"], file, spec.field + ".grading", set.grading);
 
   // ask: a list of the kind's answer names (default: all of them).
   std::vector<std::string> answer_names;
@@ -88,9 +90,28 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   } else {
     spec.ask = answer_names;
   }
-  if (p["points"].IsDefined()) {
-    spec.points = read_nonnegative(p["points"], file, spec.field + ".points");
+  const YAML::Node points = p["points"];
+  if (points.IsDefined() && points.IsMap()) {
+    for (auto it = points.begin(); it != points.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      const std::string f = spec.field + ".points." + k;
+      if (std::find(spec.ask.begin(), spec.ask.end(), k) == spec.ask.end())
+        fail_at(it->first, file, f, "not an asked answer" + did_you_mean(k, spec.ask));
+      spec.weights[k] = read_nonnegative(it->second, file, f);
+    }
+  } else if (points.IsDefined()) {
+    spec.points = read_nonnegative(points, file, spec.field + ".points");
   }
+  // Per-answer tolerances: tolerance: {answers: {z: {decimals: 1}}}.
+  const YAML::Node tol = p["tolerance"];
+  const YAML::Node per = tol.IsDefined() && tol.IsMap() ? tol["answers"] : YAML::Node();
+  if (per.IsDefined() && per.IsMap())
+    for (auto it = per.begin(); it != per.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      const std::string f = spec.field + ".tolerance.answers." + k;
+      if (!spec.info->answer(k)) fail_at(it->first, file, f, "not an answer of " + spec.kind + did_you_mean(k, answer_names));
+      spec.answer_tolerance[k] = read_tolerance(it->second, file, f, spec.tolerance);
+    }
   spec.given_node = p["given"];
   GivenReader reader(p["given"], file, spec.field + ".given", spec.info->given_fields);
   spec.given = spec.info->parse(reader, spec.conventions);
@@ -129,10 +150,59 @@ Tolerance read_tolerance(const YAML::Node& n, const std::string& file, const std
                          Tolerance base) {
   if (!n.IsDefined() || n.IsNull()) return base;
   if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {rel: 1.0e-3, abs: 1.0e-6}");
-  check_keys(n, {"rel", "abs"}, file, field);
+  check_keys(n, {"rel", "abs", "sigfigs", "decimals", "answers"}, file, field);
   if (n["rel"].IsDefined()) base.rel = read_nonnegative(n["rel"], file, field + ".rel");
   if (n["abs"].IsDefined()) base.abs = read_nonnegative(n["abs"], file, field + ".abs");
+  auto count = [&](const char* key) -> std::optional<int> {
+    if (!n[key].IsDefined()) return std::nullopt;
+    const double v = read_nonnegative(n[key], file, field + "." + key);
+    if (v != std::floor(v) || v > 17 || (std::string(key) == "sigfigs" && v < 1))
+      fail_at(n[key], file, field + "." + key, std::string("must be a whole number ") +
+                                                   (std::string(key) == "sigfigs" ? "from 1 to 17" : "from 0 to 17"));
+    return static_cast<int>(v);
+  };
+  if (auto s = count("sigfigs")) base.sigfigs = s;
+  if (auto d = count("decimals")) base.decimals = d;
+  if (base.sigfigs && base.decimals)
+    fail_at(n, file, field, "give either sigfigs or decimals, not both");
   return base;
+}
+
+Grading read_grading(const YAML::Node& n, const std::string& file, const std::string& field,
+                     Grading base) {
+  if (!n.IsDefined() || n.IsNull()) return base;
+  if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {ecf: 0.5, partial: true}");
+  check_keys(n, {"ecf", "partial"}, file, field);
+  if (n["ecf"].IsDefined()) {
+    base.ecf = read_nonnegative(n["ecf"], file, field + ".ecf");
+    if (base.ecf > 1) fail_at(n["ecf"], file, field + ".ecf", "is a fraction of the points, from 0 to 1");
+  }
+  if (n["partial"].IsDefined()) {
+    const std::string v = read_string(n["partial"], file, field + ".partial");
+    if (v != "true" && v != "false") fail_at(n["partial"], file, field + ".partial", "must be true or false");
+    base.partial = v == "true";
+  }
+  return base;
+}
+
+double ProblemSpec::answer_points(const std::string& name) const {
+  if (!weights.empty()) {
+    const auto it = weights.find(name);
+    return it == weights.end() ? 0.0 : it->second;
+  }
+  if (points) return ask.empty() ? 0.0 : *points / static_cast<double>(ask.size());
+  return 1.0;
+}
+
+double ProblemSpec::max_score() const {
+  double total = 0;
+  for (const std::string& a : ask) total += answer_points(a);
+  return total;
+}
+
+const Tolerance& ProblemSpec::tolerance_for(const std::string& name) const {
+  const auto it = answer_tolerance.find(name);
+  return it == answer_tolerance.end() ? tolerance : it->second;
 }
 
 const ProblemSpec* ProblemSet::find(const std::string& id) const {
@@ -165,6 +235,7 @@ ProblemSet load_problem_set_from(const YamlDocument& doc, const std::string& nam
     if (root["title"].IsDefined()) set.title = read_string(root["title"], name, "title");
     set.conventions = read_conventions(root["conventions"], name, "conventions", {});
     set.tolerance = read_tolerance(root["tolerance"], name, "tolerance", {});
+    set.grading = read_grading(root["grading"], name, "grading", {});
     if (!root["problems"].IsDefined()) fail_at(root, name, "problems", "missing required field");
     if (!root["problems"].IsSequence())
       fail_at(root["problems"], name, "problems", "expected a list of problems");

@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <any>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,9 +20,24 @@ namespace frustum {
 inline constexpr double kRelTolDefault = 1e-3;
 inline constexpr double kAbsTolDefault = 1e-6;
 
+// Error carried forward: the fraction of an answer's points given when it follows correctly
+// from the student's own wrong earlier answer.
+inline constexpr double kEcfCreditDefault = 0.5;
+
+// Accepted window for a number e (the student's g is right when |g − e| ≤ window):
+//   rel:       max(abs, rel·|e|)            (vectors: rel·max|eᵢ|, matrices: per entry)
+//   sigfigs:   max(abs, ½·10^(⌊log₁₀|e|⌋ − sigfigs + 1))   half a unit in the last digit
+//   decimals:  max(abs, ½·10^(−decimals))
 struct Tolerance {
   double rel = kRelTolDefault;
   double abs = kAbsTolDefault;
+  std::optional<int> sigfigs;
+  std::optional<int> decimals;
+};
+
+struct Grading {
+  double ecf = kEcfCreditDefault;  // 0 turns error carried forward off
+  bool partial = true;             // per-component partial credit for vectors and matrices
 };
 
 struct ProblemSpec {
@@ -30,8 +46,11 @@ struct ProblemSpec {
   std::string text;
   Conventions conventions;
   Tolerance tolerance;
+  std::map<std::string, Tolerance> answer_tolerance;  // tolerance: {answers: {z: {...}}}
+  Grading grading;
   std::vector<std::string> ask;   // every answer of the kind when the file has no `ask`
   std::optional<double> points;   // total weight; default 1 per asked answer
+  std::map<std::string, double> weights;  // points: {normal: 1, z: 2}
   SourceLocation where;           // the problem's mapping
   std::string field;              // "problems[2]"
   const KindInfo* info = nullptr;
@@ -39,7 +58,10 @@ struct ProblemSpec {
   YAML::Node given_node;
   std::optional<Diagnostic> error;
 
-  double max_score() const { return points ? *points : static_cast<double>(ask.size()); }
+  double max_score() const;
+  // Points of one asked answer: its weight, or an equal share of `points`, or 1.
+  double answer_points(const std::string& name) const;
+  const Tolerance& tolerance_for(const std::string& name) const;
 };
 
 struct ProblemSet {
@@ -47,6 +69,7 @@ struct ProblemSet {
   std::string title;
   Conventions conventions;
   Tolerance tolerance;
+  Grading grading;
   std::vector<ProblemSpec> problems;
   std::vector<Diagnostic> errors;  // of the file as a whole
 
@@ -64,5 +87,7 @@ Conventions read_conventions(const YAML::Node& n, const std::string& file,
                              const std::string& field, Conventions base);
 Tolerance read_tolerance(const YAML::Node& n, const std::string& file, const std::string& field,
                          Tolerance base);
+Grading read_grading(const YAML::Node& n, const std::string& file, const std::string& field,
+                     Grading base);
 
 }  // namespace frustum

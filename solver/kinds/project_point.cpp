@@ -3,6 +3,7 @@
 // lies inside the view volume. A point at or behind the eye (w ≤ 0) is reported as such and
 // never divided.
 #include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/kind_steps.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/kinds/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -48,6 +49,69 @@ struct ProjectPoint {
     vp.finish();
     g.api = c.api;
     return g;
+  }
+
+  // Error carried forward: NDC by dividing the student's clip coordinates, the window from
+  // their NDC.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    std::optional<Vec3<Exact>> ndc;
+    if (const auto c = carried(student, "clip", 4); c && exact_sign((*c)[3]) > 0) {
+      ndc = Vec3<Exact>(canonical((*c)[0] / (*c)[3]), canonical((*c)[1] / (*c)[3]), canonical((*c)[2] / (*c)[3]));
+      out.set("ndc", Value::vector(*ndc));
+    }
+    if (const Value* n = student.find("ndc"); n && n->exact.size() == 3) ndc = Vec3<Exact>(n->exact[0], n->exact[1], n->exact[2]);
+    if (ndc) {
+      const Vec3<Exact> w = viewport(*ndc, g.width, g.height, g.api);
+      out.set("window", Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
+    }
+    return out;
+  }
+
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    std::vector<Misconception> out;
+    auto variant = [&](const std::string& name, const std::string& feedback, const std::string& step, Given changed) {
+      try {
+        out.push_back({name, feedback, step, solve(changed, nullptr)});
+      } catch (const std::exception&) {
+        // A mistake that leads nowhere (a degenerate volume) cannot be matched.
+      }
+    };
+    // Missing perspective divide: the clip coordinates taken as NDC.
+    try {
+      const Answers right = solve(g, nullptr);
+      const Value* clip = right.find("clip");
+      if (clip && clip->exact.size() == 4) {
+        Answers nodiv;
+        const Vec3<Exact> c(clip->exact[0], clip->exact[1], clip->exact[2]);
+        nodiv.set("ndc", Value::vector(c));
+        const Vec3<Exact> w = viewport(c, g.width, g.height, g.api);
+        nodiv.set("window", Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
+        out.push_back({"missing perspective divide", "You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
+                       "Perspective divide", nodiv});
+      }
+    } catch (const std::exception&) {
+    }
+    if (g.projection.fovy && g.projection.aspect) {
+      Given radians = g;
+      const Exact as_degrees = canonical(*g.projection.fovy * 180 / GiNaC::Pi);
+      if (!canonical(GiNaC::cos(as_degrees / 2)).is_zero()) {
+        radians.projection.fovy = as_degrees;
+        radians.projection.volume = perspective_volume(as_degrees, *g.projection.aspect, g.projection.volume.near, g.projection.volume.far);
+        variant("degrees taken as radians", "Your numbers come from using the angle in degrees as if it were radians.",
+                "The frustum of perspective(fovy, aspect, near, far)", radians);
+      }
+      // fovx: the angle spans the width, so r = n·tan(θ/2) and t = r / aspect.
+      Given fovx = g;
+      const Exact t = g.projection.volume.top;
+      fovx.projection.volume.right = t;
+      fovx.projection.volume.left = canonical(-t);
+      fovx.projection.volume.top = canonical(t / *g.projection.aspect);
+      fovx.projection.volume.bottom = canonical(-t / *g.projection.aspect);
+      variant("fovx for fovy", "You used the angle as the horizontal field of view; perspective() takes the vertical one (fovy).",
+              "The frustum of perspective(fovy, aspect, near, far)", fovx);
+    }
+    return out;
   }
 
   static Answers solve(const Given& g, Derivation* steps) {

@@ -42,6 +42,12 @@ const Registry& builtin_kinds() {
     r.add(projection_plane_kind());
     r.add(view_volume_kind());
     r.add(viewport_kind());
+    r.add(clip_line_kind());
+    r.add(clip_polygon_kind());
+    r.add(scan_convert_kind());
+    r.add(zbuffer_kind());
+    r.add(edge_visibility_kind());
+    r.add(depth_sort_kind());
     return r;
   }();
   return registry;

@@ -36,5 +36,11 @@ KindInfo project_point_kind();
 KindInfo projection_plane_kind();
 KindInfo view_volume_kind();
 KindInfo viewport_kind();
+KindInfo clip_line_kind();
+KindInfo clip_polygon_kind();
+KindInfo scan_convert_kind();
+KindInfo zbuffer_kind();
+KindInfo edge_visibility_kind();
+KindInfo depth_sort_kind();
 
 }  // namespace frustum

@@ -116,6 +116,20 @@ struct Transform {
     return g;
   }
 
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    if (g.steps.size() < 2) return {};
+    const int size = g.dim + 1;
+    MatX<Exact> m = MatX<Exact>::Identity(size, size);
+    for (const TransformStep& s : g.steps) m = canonical(MatX<Exact>(m * s.matrix));
+    Answers reversed;
+    reversed.set("matrix", matrix_value(m));
+    if (!g.points.empty()) reversed.set("points", transform_points_with_steps(m, g.points, "", "P", nullptr));
+    return {{"composition in the wrong order",
+             "You multiplied the steps in the order they are applied (A₁·A₂·…): with column vectors the "
+             "step applied first stands rightmost, M = …·A₂·A₁ (seed 002: P′ = A₃A₂A₁P).",
+             "Composite (first step applied first)", reversed}};
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     const int size = g.dim + 1;
     MatX<Exact> m = MatX<Exact>::Identity(size, size);

@@ -32,6 +32,46 @@ struct Vectors {
     return {r.vector<3>("a"), r.vector<3>("b"), c.angles};
   }
 
+  // Error carried forward: area, sin and the unit normal from the student's cross product;
+  // cos from their dot product.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    const Exact la = canonical(norm(g.a)), lb = canonical(norm(g.b));
+    Exact area = canonical(norm(Vec3<Exact>(g.a.cross(g.b))));
+    if (const auto c = carried(student, "cross", 3)) {
+      const Vec3<Exact> v((*c)[0], (*c)[1], (*c)[2]);
+      area = canonical(norm(v));
+      out.set("area", Value::scalar(area));
+      out.set("unit_normal", Value::vector(unit(v)));
+    }
+    if (const Value* a = student.find("area"); a && a->exact.size() == 1) area = a->exact[0];
+    out.set("sin", Value::scalar(canonical(area / (la * lb))));
+    if (const Value* d = student.find("dot"); d && d->exact.size() == 1)
+      out.set("cos", Value::scalar(canonical(d->exact[0] / (la * lb))));
+    return out;
+  }
+
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    const Vec3<Exact> ba = g.b.cross(g.a);
+    Answers reversed;
+    reversed.set("cross", Value::vector(ba));
+    if (!canonical(ba.dot(ba)).is_zero()) reversed.set("unit_normal", Value::vector(unit(ba)));
+    const Exact area = canonical(norm(Vec3<Exact>(g.a.cross(g.b))));
+    Answers triangle;
+    triangle.set("area", Value::scalar(canonical(area / 2)));
+    const Exact cos = canonical(g.a.dot(g.b) / (norm(g.a) * norm(g.b)));
+    Answers radians;
+    radians.set("angle", Value::scalar(canonical(exact_acos(cos))));
+    Answers swapped;
+    swapped.set("sin", Value::scalar(cos));
+    return {{"reversed cross product", "You computed b × a = −(a × b): the cross product is anti-commutative.",
+             "Cross product", reversed},
+            {"triangle instead of parallelogram", "That is half the area: ‖a × b‖ is the parallelogram's area, "
+             "the triangle's is half of it.", "Area of the parallelogram", triangle},
+            {"radians instead of degrees", "Your angle is in radians; the problem asks for degrees.", "Angle", radians},
+            {"cos for sin", "That is cos θ = a·b/(‖a‖‖b‖); sin θ uses ‖a × b‖.", "Sine of the angle", swapped}};
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     const Vec3<Exact>& a = g.a;
     const Vec3<Exact>& b = g.b;

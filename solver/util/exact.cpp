@@ -2,14 +2,12 @@
 #include "solver/util/exact.hpp"
 
 #include <cln/integer.h>
-#include <cln/rational.h>
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
 namespace frustum {

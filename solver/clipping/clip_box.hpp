@@ -1,0 +1,35 @@
+// The axis-aligned region that clipping keeps: a 2D window {xmin, xmax, ymin, ymax} or a 3D
+// box {xmin, …, zmax} (the NDC cube [−1, 1]³ by default), and the two scalar operations the
+// clippers need beyond + − × ÷, so double and Exact share one implementation.
+#pragma once
+
+#include "solver/geometry/vec.hpp"
+
+#include <string>
+
+namespace frustum {
+
+// Sign (−1, 0, +1): exact for Exact values (never an epsilon), plain comparison for doubles.
+inline int scalar_sign(double v) { return (v > 0) - (v < 0); }
+inline int scalar_sign(const Exact& v) { return exact_sign(v); }
+
+// Keeps exact intermediate values small (canonical form); the identity for doubles.
+inline double tidy(double v) { return v; }
+inline Exact tidy(const Exact& v) { return canonical(v); }
+
+// lo ≤ p ≤ hi componentwise; N = 2 (window) or 3 (volume).
+template <typename T, int N>
+struct ClipBox {
+  Eigen::Matrix<T, N, 1> lo, hi;
+};
+
+// The NDC cube [−1, 1]³ of OpenGL, the default `volume` of clip_line and clip_polygon.
+template <typename T>
+ClipBox<T, 3> ndc_cube() {
+  return {Vec3<T>(T(-1), T(-1), T(-1)), Vec3<T>(T(1), T(1), T(1))};
+}
+
+// Axis names for messages and steps: "x", "y", "z".
+inline std::string axis_name(int axis) { return std::string(1, static_cast<char>('x' + axis)); }
+
+}  // namespace frustum

@@ -1,0 +1,128 @@
+// Cohen–Sutherland line clipping (seed 000: コーエン・サザランド法, 6-bit codes in 3D) of the
+// segment pq against a 2D `window` or a 3D `volume` (default: the NDC cube [−1, 1]³).
+// Outcodes are written most significant bit first: 2D 1000 top (y > ymax), 0100 bottom
+// (y < ymin), 0010 right (x > xmax), 0001 left (x < xmin); 3D adds 100000 (z > zmax) and
+// 010000 (z < zmin) in front. A point on a boundary is inside.
+#include "solver/clipping/line_clip.hpp"
+#include "solver/kinds/clip_given.hpp"
+#include "solver/kinds/registry.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct ClipLine {
+  static constexpr const char* kName = "clip_line";
+  static constexpr const char* kSummary = "Cohen–Sutherland outcodes and clipping of a segment (2D or 3D)";
+  struct Given {
+    std::vector<Exact> p, q;
+    clip_given::Region region;
+  };
+  static std::vector<std::string> given_fields() { return {"p", "q", "window", "volume"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"outcode_p", AnswerKind::BitString, {}, {}},
+            {"outcode_q", AnswerKind::BitString, {}, {}},
+            {"accept", AnswerKind::Bool, {"outcode_p", "outcode_q"}, {}},
+            {"reject", AnswerKind::Bool, {"outcode_p", "outcode_q"}, {}},
+            {"clipped", AnswerKind::Matrix, {"outcode_p", "outcode_q"}, {}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions&) {
+    Given g;
+    const int dims = clip_given::point_dims(r, "p");
+    g.p = r.numbers("p", static_cast<std::size_t>(dims));
+    if (clip_given::point_dims(r, "q") != dims)
+      r.fail("q", "expected " + std::to_string(dims) + " numbers like p");
+    g.q = r.numbers("q", static_cast<std::size_t>(dims));
+    g.region = clip_given::read_region(r, dims, "points p and q");
+    return g;
+  }
+
+  static std::string bits_legend(int dims) {
+    std::string s = dims == 3 ? "6-bit codes (seed 000: z座標を加えた6ビットコード), most significant first: "
+                                "100000 z > zmax, 010000 z < zmin, 001000 top (y > ymax), 000100 bottom "
+                                "(y < ymin), 000010 right (x > xmax), 000001 left (x < xmin)."
+                              : "4-bit codes, most significant first: 1000 top (y > ymax), 0100 bottom "
+                                "(y < ymin), 0010 right (x > xmax), 0001 left (x < xmin).";
+    return s + " A point on a boundary is inside (bit 0).";
+  }
+
+  template <int N>
+  static Answers solve_in(const Given& g, const ClipBox<Exact, N>& box, Derivation* steps) {
+    using V = Eigen::Matrix<Exact, N, 1>;
+    const V p = Eigen::Map<const V>(g.p.data());
+    const V q = Eigen::Map<const V>(g.q.data());
+    const LineClipResult<Exact, N> r = cohen_sutherland(p, q, box);
+    Answers out;
+    const std::string cp = outcode_string(r.code_p, N), cq = outcode_string(r.code_q, N);
+    out.set("outcode_p", Value::category(cp));
+    out.set("outcode_q", Value::category(cq));
+    out.set("accept", Value::boolean(r.trivial_accept));
+    out.set("reject", Value::boolean(r.trivial_reject));
+    if (steps) {
+      steps->add(N == 2 ? "Clip window" : g.region.default_volume ? "Clip volume (default: the NDC cube)" : "Clip volume",
+                 {}, {}, clip_given::box_text(box))
+          .note = bits_legend(N);
+      steps->add("Outcode of p", {}, math("p = ") + vec(g.p), math("outcode(p) = " + cp))
+          .note = outcode_meaning(r.code_p);
+      steps->yields("outcode_p");
+      steps->add("Outcode of q", {}, math("q = ") + vec(g.q), math("outcode(q) = " + cq))
+          .note = outcode_meaning(r.code_q);
+      steps->yields("outcode_q");
+      steps->add("Trivial accept? (both codes 0)", math("outcode(p) OR outcode(q) = 0"),
+                 math(cp + " OR " + cq + " = " + outcode_string(r.code_p | r.code_q, N)),
+                 math(r.trivial_accept ? "accept: the whole segment is inside" : "no"));
+      steps->yields("accept");
+      steps->add("Trivial reject? (a common outside bit)", math("outcode(p) AND outcode(q) ≠ 0"),
+                 math(cp + " AND " + cq + " = " + outcode_string(r.code_p & r.code_q, N)),
+                 math(r.trivial_reject ? "reject: both endpoints are outside the same boundary" : "no"));
+      steps->yields("reject");
+      int n = 0;
+      for (const auto& it : r.iterations) {
+        int axis = 0;
+        while (outcode_bit(axis, false) != it.bit && outcode_bit(axis, true) != it.bit) ++axis;
+        const bool high = it.bit == outcode_bit(axis, true);
+        const std::string x = axis_name(axis);
+        const std::string bound_name = x + (high ? "max" : "min");
+        const std::string who = it.endpoint == 0 ? "p" : "q";
+        steps->add("Iteration " + std::to_string(++n) + ": " + who + " (" + outcode_string(it.code_before, N) +
+                       ") is outside " + bound_name + " (bit " + outcode_string(it.bit, N) + "): move it to " + x +
+                       " = " + bound_name,
+                   math(who + "′ = a + t·(b − a),  t = (" + bound_name + " − a_" + x + ") / (b_" + x + " − a_" + x +
+                        "),  a = " + who + ", b = the other endpoint"),
+                   math("a = ") + vec(it.before) + math(",  " + bound_name + " = ") +
+                       exact(high ? box.hi(axis) : box.lo(axis)),
+                   math(who + "′ = ") + vec(it.after, true) + math(",  outcode " + outcode_string(it.code_after, N)));
+      }
+    }
+    if (r.clipped) {
+      std::vector<std::vector<Exact>> rows;
+      for (const V& e : *r.clipped) rows.emplace_back(e.data(), e.data() + N);
+      out.set("clipped", Value::matrix(rows));
+      if (steps) {
+        steps->add("Clipped segment", {}, {}, math("p′ = ") + vec((*r.clipped)[0], true) + math(",  q′ = ") + vec((*r.clipped)[1], true))
+            .note = r.trivial_accept ? std::string("Trivially accepted: the segment is unchanged.") : "Both codes are now " + outcode_string(0, N) + ": accept.";
+        steps->yields("clipped");
+      }
+    } else {
+      out.set("clipped", Value::null());
+      if (steps) {
+        steps->add("Nothing is visible")
+            .note = r.trivial_reject ? "Trivially rejected: the segment lies outside one boundary."
+                                     : "After clipping, both endpoints share an outside bit: the segment misses the region.";
+        steps->yields("clipped");
+      }
+    }
+    return out;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    return g.region.dims == 2 ? solve_in<2>(g, g.region.window, steps) : solve_in<3>(g, g.region.volume, steps);
+  }
+};
+
+}  // namespace
+
+KindInfo clip_line_kind() { return make_kind<ClipLine>(); }
+
+}  // namespace frustum

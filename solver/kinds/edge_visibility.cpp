@@ -1,0 +1,310 @@
+// seed 003: hidden lines of a polyhedron. Each face is front or back by the exact sign of
+// D_f = (p_eye − p_i)·n; each edge is visible (front–front), silhouette (front–back, 輪郭線)
+// or hidden (back–back). Back-face culling alone removes every hidden surface only for a
+// single closed convex polyhedron (the seed's (a)–(d) question).
+#include "solver/geometry/polygon_normal.hpp"
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/viewing_steps.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "solver/viewing/transforms.hpp"
+#include "solver/visibility/edge_classes.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
+namespace frustum {
+
+namespace {
+
+// More faces than this and the derivation lists only the counts, not the D_f table.
+constexpr std::size_t kMaxTableFaces = 60;
+
+struct EdgeVisibility {
+  static constexpr const char* kName = "edge_visibility";
+  static constexpr const char* kSummary =
+      "front/back faces and visible, silhouette and hidden edges of a polyhedron";
+  struct Given {
+    Mesh mesh;
+    std::string solid;  // empty for a given mesh
+    std::string field;  // "solid" or "mesh.faces": where a bad mesh is reported
+    std::vector<std::pair<std::string, MatX<Exact>>> transform;
+    Vec3<Exact> eye;
+  };
+  static std::vector<std::string> given_fields() { return {"mesh", "solid", "transform", "eye"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"faces", AnswerKind::WordMap, {}, {"front", "back", "edge_on"}},
+            {"edges", AnswerKind::WordMap, {"faces"}, {"visible", "silhouette", "hidden"}},
+            {"silhouette", AnswerKind::WordList, {"edges"}, {}},
+            {"hidden", AnswerKind::WordList, {"edges"}, {}},
+            {"convex", AnswerKind::Bool, {}, {}},
+            {"backface_sufficient", AnswerKind::Bool, {"convex"}, {}}};
+  }
+
+  static Mesh read_mesh(GivenReader& r) {
+    GivenReader m = r.child("mesh", {"vertices", "faces"});
+    Mesh mesh;
+    mesh.vertices = m.points("vertices", 4);
+    const std::size_t count = m.list_size("faces", 4);
+    const YAML::Node faces = m.node()["faces"];
+    const auto n = static_cast<long>(mesh.vertices.size());
+    for (std::size_t f = 0; f < count; ++f) {
+      const std::string at = fmt::format("faces[{}]", f);
+      const YAML::Node face = faces[f];
+      if (!face.IsSequence() || face.size() < 3)
+        throw InputError(m.locate(at, "expected a list of at least 3 vertex indices"));
+      std::vector<int> idx;
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        const std::string field = fmt::format("{}[{}]", at, k);
+        const Exact v = read_number(face[k], m.file(), "mesh." + field);
+        if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_integer() ||
+            GiNaC::ex_to<GiNaC::numeric>(v).to_long() < 0 || GiNaC::ex_to<GiNaC::numeric>(v).to_long() >= n)
+          throw InputError(m.locate(field, fmt::format("expected a vertex index from 0 to {}", n - 1)));
+        const int i = static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(v).to_long());
+        if (std::find(idx.begin(), idx.end(), i) != idx.end())
+          throw InputError(m.locate(field, fmt::format("vertex {} appears twice in this face", i)));
+        idx.push_back(i);
+      }
+      mesh.faces.push_back(idx);
+    }
+    m.finish();
+    return mesh;
+  }
+
+  // One step of the `transform` kind's format (3D): translate, scale, rotate_x/y/z, rotate.
+  static std::pair<std::string, MatX<Exact>> read_step(GivenReader& s, const Conventions& c) {
+    const std::vector<std::string> keys = s.keys();
+    if (keys.size() != 1)
+      s.fail(keys.empty() ? "translate" : keys[1],
+             "each step is one of translate, scale, rotate_x, rotate_y, rotate_z, rotate");
+    const std::string& k = keys[0];
+    std::pair<std::string, MatX<Exact>> t;
+    if (k == "translate") {
+      const std::vector<Exact> v = s.numbers(k, 3);
+      t = {"translate " + vec(v).unicode, translate(v)};
+    } else if (k == "scale") {
+      const std::vector<Exact> v = s.is_list(k) ? s.numbers(k, 3) : std::vector<Exact>(3, s.number(k));
+      t = {"scale " + vec(v).unicode, scale(v)};
+    } else if (k == "rotate_x" || k == "rotate_y" || k == "rotate_z") {
+      const Exact a = read_angle(s, k, c.angles);
+      t = {k + " " + angle_text(a, c.angles).unicode, rotate_axis_index(k[7] - 'x', a)};
+    } else if (k == "rotate") {
+      GivenReader r = s.child(k, {"axis", "angle"});
+      const Vec3<Exact> axis = r.vector<3>("axis");
+      if (canonical(axis.dot(axis)).is_zero()) r.fail("axis", "the zero vector is not an axis");
+      const Exact a = read_angle(r, "angle", c.angles);
+      r.finish();
+      t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
+           rotate_about(unit(axis), a)};
+    } else {
+      s.fail(k, "unknown step: use translate, scale, rotate_x, rotate_y, rotate_z or rotate");
+    }
+    s.finish();
+    t.second = canonical(t.second);
+    return t;
+  }
+
+  static Given parse(GivenReader& r, const Conventions& c) {
+    Given g;
+    if (r.has("mesh") == r.has("solid"))
+      r.fail(r.has("mesh") ? "solid" : "mesh", "give exactly one of mesh and solid");
+    if (r.has("solid")) {
+      g.solid = r.word("solid", solid_names());
+      g.mesh = named_solid(g.solid);
+      g.field = "solid";
+    } else {
+      g.mesh = read_mesh(r);
+      g.field = "mesh.faces";
+    }
+    if (r.has("transform")) {
+      const std::size_t n = r.list_size("transform");
+      for (std::size_t i = 0; i < n; ++i) {
+        GivenReader s = r.item("transform", i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate"});
+        g.transform.push_back(read_step(s, c));
+      }
+    }
+    g.eye = r.vector<3>("eye");
+    return g;
+  }
+
+  static std::string face_text(const std::vector<int>& face) {
+    std::string s;
+    for (int v : face) s += (s.empty() ? "" : " ") + std::to_string(v);
+    return s;
+  }
+
+  static std::string join(const std::vector<std::string>& words) {
+    std::string s;
+    for (const std::string& w : words) s += (s.empty() ? "" : ", ") + w;
+    return s.empty() ? "none" : s;
+  }
+
+  // Applies the composite transform to the vertices; a mirror (det < 0) reverses every
+  // face so that counter-clockwise from outside still means front.
+  static Mesh transformed(const Given& g, Derivation* steps) {
+    Mesh mesh = g.mesh;
+    if (g.transform.empty()) return mesh;
+    MatX<Exact> m = MatX<Exact>::Identity(4, 4);
+    for (const auto& [title, a] : g.transform) m = canonical(MatX<Exact>(a * m));
+    const int det = filtered_sign(canonical(m.topLeftCorner(3, 3).determinant()));
+    if (det == 0) throw DomainError("transform", "the transform flattens space (det = 0): the solid has no volume");
+    for (Vec3<Exact>& v : mesh.vertices) {
+      const std::vector<Exact> p = transform_point(m, std::vector<Exact>{v(0), v(1), v(2)});
+      v = Vec3<Exact>(canonical(p[0]), canonical(p[1]), canonical(p[2]));
+    }
+    if (det < 0)
+      for (std::vector<int>& f : mesh.faces) std::reverse(f.begin(), f.end());
+    if (steps) {
+      std::string order;
+      for (std::size_t i = 0; i < g.transform.size(); ++i)
+        order += fmt::format("{}A{}: {}", i ? "; " : "", i + 1, g.transform[i].first);
+      Step& s = steps->add("Transform the solid (first step applied first)", math(order), {},
+                           math("M = ") + matrix_text(m));
+      s.note = "Every vertex moves by P′ = M·P; faces keep their vertex lists.";
+      if (det < 0)
+        s.note += " det M < 0 mirrors the solid, so every face's vertex order is reversed to stay "
+                  "counter-clockwise seen from outside.";
+    }
+    return mesh;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    if (steps && !g.solid.empty()) {
+      std::string text = fmt::format("{}: {} vertices, {} faces (counter-clockwise from outside).",
+                                     g.solid, g.mesh.vertices.size(), g.mesh.faces.size());
+      if (g.solid == "icosahedron" || g.solid == "dodecahedron")
+        text += " φ = (1 + √5)/2 is kept exact.";
+      steps->note("The solid", text);
+    }
+    const Mesh mesh = transformed(g, steps);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+      if (g.solid.empty() && analyse_polygon_degenerate(mesh, f))
+        throw DomainError(fmt::format("mesh.faces[{}]", f),
+                          "the face is degenerate: its vertices are collinear, so it has no normal");
+    const MeshCheck check = check_mesh(mesh);
+    if (!check.closed || !check.oriented)
+      throw DomainError(g.field, check.problem + " — front/back faces of a closed, consistently "
+                                                 "oriented polyhedron are needed to classify its edges");
+    if (steps)
+      steps->add("Closed and consistently oriented", math("V − E + F"), {},
+                 math(fmt::format("{} − {} + {} = {}", mesh.vertices.size(), check.edges.size(),
+                                  mesh.faces.size(),
+                                  static_cast<long>(mesh.vertices.size()) - static_cast<long>(check.edges.size()) +
+                                      static_cast<long>(mesh.faces.size()))))
+          .note = "Every edge joins exactly two faces, which walk it in opposite directions.";
+
+    // Front or back per face (seed 003).
+    const std::vector<Vec3<Exact>> normals = face_normals(mesh);
+    const std::vector<FaceTest> tests = face_tests(mesh, normals, g.eye);
+    Answers out;
+    std::vector<std::pair<std::string, std::string>> faces;
+    std::string table;
+    std::vector<std::string> edge_on;
+    for (std::size_t f = 0; f < tests.size(); ++f) {
+      faces.emplace_back(std::to_string(f), facing_word(tests[f].facing));
+      if (tests[f].facing == Facing::EdgeOn) edge_on.push_back(std::to_string(f));
+      if (f < kMaxTableFaces)
+        table += fmt::format("\nface {} [{}]: n = {}, D_f = {} → {}", f, face_text(mesh.faces[f]),
+                             vec(normals[f]).unicode, exact(tests[f].df, true).unicode,
+                             facing_word(tests[f].facing));
+    }
+    out.set("faces", Value::word_map(faces));
+    if (steps) {
+      Step& s = steps->add("Front or back per face",
+                           math("D_f = (p_eye − p_i)·n", "D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
+                           math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
+                           math(fmt::format("{} front, {} back, {} edge-on",
+                                            std::count_if(tests.begin(), tests.end(), [](const FaceTest& t) { return t.facing == Facing::Front; }),
+                                            std::count_if(tests.begin(), tests.end(), [](const FaceTest& t) { return t.facing == Facing::Back; }),
+                                            edge_on.size())));
+      s.note = "D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
+               "counter-clockwise = front)." + table;
+      steps->yields("faces");
+      if (!edge_on.empty())
+        steps->note("Edge-on faces",
+                    "Face(s) " + join(edge_on) + " have D_f = 0 exactly: the eye lies in their plane, "
+                    "so they cover no area on screen. They count as back for the edge classes, as "
+                    "back-face culling treats them.");
+    }
+
+    // Edge classes A), B), C).
+    const std::vector<EdgeClass> classes = classify_edges(check.edges, tests);
+    std::vector<std::pair<std::string, std::string>> edges;
+    std::vector<std::string> silhouette, hidden, visible;
+    for (std::size_t k = 0; k < classes.size(); ++k) {
+      const std::string name = check.edges[k].name();
+      edges.emplace_back(name, edge_class_word(classes[k]));
+      (classes[k] == EdgeClass::Silhouette ? silhouette : classes[k] == EdgeClass::Hidden ? hidden : visible).push_back(name);
+    }
+    out.set("edges", Value::word_map(edges));
+    out.set("silhouette", Value::word_list(silhouette));
+    out.set("hidden", Value::word_list(hidden));
+    if (steps) {
+      steps->add("Edge classes", math("front–front: visible;  front–back: silhouette;  back–back: hidden"), {},
+                 math(fmt::format("{} visible, {} silhouette, {} hidden", visible.size(), silhouette.size(), hidden.size())))
+          .note = "seed 003: an edge is classified by the two faces that share it. Hidden-line "
+                  "drawing = the edges of the front faces (visible + silhouette): " + join(visible) +
+                  (visible.empty() ? "" : ", ") + join(silhouette) + ".";
+      steps->yields("edges");
+    }
+
+    // Convexity: every vertex on the inner side of every face plane.
+    std::string witness;
+    const bool convex = is_convex(mesh, normals, &witness);
+    out.set("convex", Value::boolean(convex));
+
+    if (steps) {
+      const SilhouetteLoops loops = silhouette_loops(check.edges, classes);
+      std::string loop_text;
+      for (const std::vector<int>& loop : loops.loops) {
+        std::string s;
+        for (int v : loop) s += (s.empty() ? "" : " → ") + std::to_string(v);
+        loop_text += (loop_text.empty() ? "" : ";  ") + s;
+      }
+      Step& s = steps->add("Silhouette (輪郭線): the front–back edges", {}, {},
+                           math(silhouette.empty() ? "none" : join(silhouette)));
+      if (loops.ok && !loops.loops.empty())
+        s.note = fmt::format("Chained by shared vertices: {} ({} loop{}).", loop_text, loops.loops.size(),
+                             loops.loops.size() == 1 ? "" : "s") +
+                 (convex ? " A convex polyhedron's silhouette is one closed loop, a convex polygon on screen." : "");
+      else if (!loops.ok)
+        s.note = "The silhouette edges do not chain into simple loops (the solid is not convex).";
+      steps->yields("silhouette");
+      steps->add("Hidden edges: the back–back edges", {}, {}, math(join(hidden)))
+          .note = "Drawing only these shows the lines that should be hidden.";
+      steps->yields("hidden");
+      steps->add("Convex?", math("n_f·(v − p_f) ≤ 0 for every vertex v and face f",
+                                 "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0"),
+                 {}, math(convex ? "convex" : "not convex"))
+          .note = convex ? "Every vertex lies on the inner side of (or on) every face plane."
+                         : "Not convex: " + witness + ".";
+      steps->yields("convex");
+    }
+    out.set("backface_sufficient", Value::boolean(convex));
+    if (steps) {
+      steps->add("Back-face culling alone?", {}, {}, math(convex ? "yes" : "no"))
+          .note = convex ? "A single closed convex polyhedron: no front face can hide another, so "
+                           "culling the back faces removes every hidden surface (seed 003)."
+                         : "Not convex: a front face can be hidden by another front face, so back-face "
+                           "culling alone is not enough (seed 003's (b) and (d)); a depth test is "
+                           "still needed.";
+      steps->yields("backface_sufficient");
+    }
+    return out;
+  }
+
+  static bool analyse_polygon_degenerate(const Mesh& m, std::size_t f) {
+    Polygon3<Exact> p;
+    for (int k : m.faces[f]) p.push_back(m.vertices[static_cast<std::size_t>(k)]);
+    return analyse_polygon(p).degenerate;
+  }
+};
+
+}  // namespace
+
+KindInfo edge_visibility_kind() { return make_kind<EdgeVisibility>(); }
+
+}  // namespace frustum

@@ -1,0 +1,188 @@
+// The Z-buffer algorithm on a small grid (seed 001, p.133, the ①②③ walk-through): the
+// polygons (window coordinates x, y and depth z) are drawn in the listed order; Z(i, j) starts
+// at +∞ and F(i, j) at "."; a covered pixel takes the polygon's label when its z is smaller
+// than Z(i, j) (seed 001: "ポリゴンのZ値が Z(i,j) より小さいならば"). Convex polygons are split
+// into a fan of triangles from their first vertex; coverage follows the top-left rule with
+// pixel centres at (i + ½, j + ½), y up. Grids are reported top row (j = h − 1) first, as
+// drawn on paper; +∞ is written 1e30 in numbers and "inf" in the derivation.
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/raster/zbuffer.hpp"
+#include "solver/util/diagnostic.hpp"
+
+#include <cctype>
+
+namespace frustum {
+
+namespace {
+
+struct ZBuffer {
+  static constexpr const char* kName = "zbuffer";
+  static constexpr const char* kSummary = "frame and depth buffers of the Z-buffer algorithm on a small grid";
+  static constexpr int kMaxSize = 256;         // the largest grid: 256 × 256 pixels
+  static constexpr int kMaxShownSize = 32;     // larger grids are not written into the derivation
+  static constexpr double kInfinity = 1e30;    // +∞ in the numbers of `depth`
+  static constexpr std::size_t kMaxPolygons = 1000;
+  struct Polygon {
+    std::string label;
+    Polygon3<Exact> points;
+  };
+  struct Given {
+    int width = 0, height = 0;
+    std::vector<Polygon> polygons;
+  };
+  static std::vector<std::string> given_fields() { return {"size", "polygons"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"frame", AnswerKind::Sequence, {}, {}},
+            {"depth", AnswerKind::Matrix, {}, {}},
+            {"steps", AnswerKind::Sequence, {}, {}}};
+  }
+
+  static int read_dimension(GivenReader& r, const Exact& e, const std::string& name) {
+    if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_integer() || exact_sign(e) <= 0)
+      r.fail("size", "the " + name + " must be a positive integer");
+    if (exact_sign(e - kMaxSize) > 0)
+      r.fail("size", "the grid may be at most " + std::to_string(kMaxSize) + " × " + std::to_string(kMaxSize) +
+                         " pixels (the zbuffer kind's limit); got " + name + " " + exact(e).unicode);
+    return GiNaC::ex_to<GiNaC::numeric>(e).to_int();
+  }
+
+  // One UTF-8 code point ("1", "A", "①"), not the background ".".
+  static bool one_character(const std::string& s) {
+    if (s.empty()) return false;
+    const unsigned char c = static_cast<unsigned char>(s[0]);
+    const std::size_t len = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+    return len == s.size() && !(len == 1 && std::isspace(c));
+  }
+
+  static Given parse(GivenReader& r, const Conventions&) {
+    Given g;
+    const std::vector<Exact> size = r.numbers("size", 2);
+    g.width = read_dimension(r, size[0], "width");
+    g.height = read_dimension(r, size[1], "height");
+    const std::size_t n = r.list_size("polygons", 1);
+    if (n > kMaxPolygons) r.fail("polygons", "at most " + std::to_string(kMaxPolygons) + " polygons");
+    for (std::size_t i = 0; i < n; ++i) {
+      GivenReader it = r.item("polygons", i, {"label", "points"});
+      Polygon p;
+      const YAML::Node& node = it.node();
+      const YAML::Node label = node["label"];
+      if (!label.IsDefined() || label.IsNull()) it.fail("label", "missing required field");
+      if (!label.IsScalar()) it.fail("label", "expected one character such as \"1\"");
+      p.label = label.Scalar();
+      if (!one_character(p.label) || p.label == kBackground)
+        it.fail("label", "a label is one character other than \".\" (the background), got '" + p.label + "'");
+      p.points = it.points("points", 3);
+      it.finish();
+      g.polygons.push_back(std::move(p));
+    }
+    return g;
+  }
+
+  static std::string depth_text(const std::optional<Exact>& z) { return z ? exact(*z).unicode : "inf"; }
+
+  // The frame and depth grids as text, top row first, columns aligned.
+  static std::string grids(const FrameBuffer& frame, const DepthBuffer<Exact>& depth) {
+    std::size_t wide = 1;
+    for (const auto& z : depth.data) wide = std::max(wide, depth_text(z).size());
+    // Continuation lines are indented to line up under the note in the text renderer.
+    std::string s = "frame:";
+    for (const std::string& row : frame_rows(frame)) s += "\n        " + row;
+    s += "\n      depth:";
+    for (int j = depth.height - 1; j >= 0; --j) {
+      s += "\n       ";
+      for (int i = 0; i < depth.width; ++i) {
+        const std::string cell = depth_text(depth.at(i, j));
+        s += " " + std::string(wide - cell.size(), ' ') + cell;
+      }
+    }
+    return s;
+  }
+
+  static std::string joined(const std::vector<std::string>& rows) {
+    std::string s;
+    for (const std::string& r : rows) s += (s.empty() ? "" : "/") + r;
+    return s;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    FrameBuffer frame(g.width, g.height, kBackground);
+    DepthBuffer<Exact> depth(g.width, g.height, std::nullopt);
+    const bool show = g.width <= kMaxShownSize && g.height <= kMaxShownSize;
+    if (steps) {
+      steps->note("Pixels, orientation and the depth test",
+                  "Pixel (i, j) has its centre at (i + ½, j + ½), window y up; grids are written top row first. "
+                  "Coverage uses the top-left fill rule; convex polygons are split into a fan of triangles from "
+                  "their first vertex; z is interpolated linearly in x and y (the plane through the vertices). "
+                  "A pixel is overwritten when the polygon's z is smaller than Z(i, j) (seed 001); equal z keeps "
+                  "the earlier polygon.");
+      steps->add("Initialise", {}, {}, math("F(i, j) = “.”,  Z(i, j) = ∞"))
+          .note = show ? grids(frame, depth) : "(grids larger than 32 × 32 are not written out)";
+    }
+    std::vector<std::string> after;
+    for (std::size_t k = 0; k < g.polygons.size(); ++k) {
+      const Polygon& p = g.polygons[k];
+      DrawCount total;
+      int degenerate = 0;
+      for (std::size_t v = 1; v + 1 < p.points.size(); ++v) {
+        const std::array<const Vec3<Exact>*, 3> tri{&p.points[0], &p.points[v], &p.points[v + 1]};
+        std::array<Vec2<double>, 3> xy;
+        std::array<Exact, 3> z;
+        for (int c = 0; c < 3; ++c) {
+          xy[c] = Vec2<double>(to_double((*tri[c])(0)), to_double((*tri[c])(1)));
+          z[c] = (*tri[c])(2);
+        }
+        TriangleSetup t;
+        try {
+          t = setup_triangle(xy);
+        } catch (const DomainError& e) {
+          throw DomainError("polygons[" + std::to_string(k) + "].points", e.what());
+        }
+        if (t.degenerate) ++degenerate;
+        const DrawCount n = draw_triangle<Exact>(
+            t, z, p.label, depth, frame, [](const Exact& a, const Exact& b) { return exact_sign(a - b) < 0; });
+        total.covered += n.covered;
+        total.written += n.written;
+      }
+      for (auto& cell : depth.data)
+        if (cell) *cell = canonical(*cell);
+      after.push_back(joined(frame_rows(frame)));
+      if (steps) {
+        Step& s = steps->add("Polygon " + std::to_string(k + 1) + " (label " + p.label + ")", {}, {},
+                             math(std::to_string(total.covered) + " pixel(s) covered, " + std::to_string(total.written) +
+                                  " nearer than Z(i, j) and written"));
+        s.note = show ? grids(frame, depth) : "";
+        if (degenerate > 0)
+          steps->warn("Degenerate polygon " + std::to_string(k + 1),
+                      std::to_string(degenerate) + " of its fan triangles have zero area in x, y and cover no pixels.");
+      }
+    }
+    Answers out;
+    out.set("frame", Value::word_list(frame_rows(frame)));
+    Value d;
+    d.shape = Value::Shape::Matrix;
+    d.rows = g.height;
+    d.cols = g.width;
+    for (int j = g.height - 1; j >= 0; --j)
+      for (int i = 0; i < g.width; ++i) {
+        const std::optional<Exact>& z = depth.at(i, j);
+        d.exact.push_back(z ? *z : Exact(GiNaC::pow(GiNaC::numeric(10), 30)));
+        d.numbers.push_back(z ? to_double(*z) : kInfinity);
+      }
+    out.set("depth", d);
+    out.set("steps", Value::word_list(after));
+    if (steps) {
+      steps->add("Final frame buffer", {}, {}, math(joined(frame_rows(frame)))).note = "Rows top first, joined by “/”.";
+      steps->yields("frame");
+      steps->yields("depth");
+      steps->yields("steps");
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo zbuffer_kind() { return make_kind<ZBuffer>(); }
+
+}  // namespace frustum

@@ -1,0 +1,109 @@
+#include "solver/raster/rasterizer.hpp"
+
+#include "solver/util/diagnostic.hpp"
+
+#include <cmath>
+
+namespace frustum {
+
+namespace {
+
+// ⌊a / b⌋ and ⌈a / b⌉ for b > 0 (C++ division truncates towards zero).
+std::int64_t floor_div(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && (a < 0)); }
+std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); }
+
+EdgeFunction make_edge(const FixedPoint2& from, const FixedPoint2& to) {
+  EdgeFunction e;
+  e.from = from;
+  e.to = to;
+  // E(p) = (to − from) × (p − from) = a·x + b·y + c
+  e.a = -(to.y - from.y);
+  e.b = to.x - from.x;
+  e.c = -(e.a * from.x + e.b * from.y);
+  const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
+  e.top = dy == 0 && dx < 0;
+  e.left = dy < 0;
+  return e;
+}
+
+}  // namespace
+
+std::int64_t to_fixed(double v) { return std::llround(v * static_cast<double>(kSubpixelScale)); }
+
+FixedPoint2 pixel_centre(int i, int j) {
+  const std::int64_t half = kSubpixelScale / 2;
+  return {std::int64_t{i} * kSubpixelScale + half, std::int64_t{j} * kSubpixelScale + half};
+}
+
+TriangleSetup setup_triangle(const std::array<Vec2<double>, 3>& window) {
+  TriangleSetup t;
+  std::array<FixedPoint2, 3> in;
+  for (int k = 0; k < 3; ++k) {
+    for (int c = 0; c < 2; ++c)
+      if (!std::isfinite(window[k](c)) || std::abs(window[k](c)) > kMaxWindowCoordinate)
+        throw DomainError("triangle", "window coordinates must be finite and at most 2^20 in size");
+    in[k] = {to_fixed(window[k](0)), to_fixed(window[k](1))};
+    const double scale = static_cast<double>(kSubpixelScale);
+    if (static_cast<double>(in[k].x) != window[k](0) * scale ||
+        static_cast<double>(in[k].y) != window[k](1) * scale)
+      t.snapped = true;
+  }
+  // Twice the signed area: (v1 − v0) × (v2 − v0); counter-clockwise > 0.
+  const std::int64_t area2 =
+      (in[1].x - in[0].x) * (in[2].y - in[0].y) - (in[1].y - in[0].y) * (in[2].x - in[0].x);
+  t.order = {0, 1, 2};
+  if (area2 < 0) {
+    t.order = {0, 2, 1};
+    t.reordered = true;
+  }
+  for (int k = 0; k < 3; ++k) t.v[k] = in[t.order[k]];
+  t.area2 = area2 < 0 ? -area2 : area2;
+  t.degenerate = t.area2 == 0;
+  for (int k = 0; k < 3; ++k) t.edge[k] = make_edge(t.v[(k + 1) % 3], t.v[(k + 2) % 3]);
+  if (t.degenerate) return t;
+  std::int64_t x0 = t.v[0].x, x1 = x0, y0 = t.v[0].y, y1 = y0;
+  for (const FixedPoint2& p : t.v) {
+    x0 = std::min(x0, p.x);
+    x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y);
+    y1 = std::max(y1, p.y);
+  }
+  // Pixels whose centre (i + ½)·2⁸ lies in [x0, x1].
+  const std::int64_t half = kSubpixelScale / 2;
+  t.i_min = static_cast<int>(ceil_div(x0 - half, kSubpixelScale));
+  t.i_max = static_cast<int>(floor_div(x1 - half, kSubpixelScale));
+  t.j_min = static_cast<int>(ceil_div(y0 - half, kSubpixelScale));
+  t.j_max = static_cast<int>(floor_div(y1 - half, kSubpixelScale));
+  return t;
+}
+
+bool covers(const TriangleSetup& t, int i, int j) {
+  if (t.degenerate) return false;
+  const FixedPoint2 p = pixel_centre(i, j);
+  for (const EdgeFunction& e : t.edge) {
+    const std::int64_t v = e.at(p.x, p.y);
+    if (v < 0 || (v == 0 && !e.top_left())) return false;
+  }
+  return true;
+}
+
+std::vector<Fragment> rasterize(const TriangleSetup& t, int width, int height) {
+  std::vector<Fragment> out;
+  if (t.degenerate) return out;
+  int i0 = t.i_min, i1 = t.i_max, j0 = t.j_min, j1 = t.j_max;
+  if (width > 0 && height > 0) {
+    i0 = std::max(i0, 0);
+    j0 = std::max(j0, 0);
+    i1 = std::min(i1, width - 1);
+    j1 = std::min(j1, height - 1);
+  }
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      if (!covers(t, i, j)) continue;
+      const FixedPoint2 p = pixel_centre(i, j);
+      out.push_back({i, j, {t.edge[0].at(p.x, p.y), t.edge[1].at(p.x, p.y), t.edge[2].at(p.x, p.y)}});
+    }
+  return out;
+}
+
+}  // namespace frustum

@@ -1,0 +1,237 @@
+// Rasterization and the Z-buffer: the top-left rule on hand-made ties, watertight meshes
+// (every pixel exactly once), depth against the plane method, and the scan_convert and
+// zbuffer kinds.
+#include "solver/raster/zbuffer.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "test_util.hpp"
+
+#include <fmt/format.h>
+
+#include <random>
+
+namespace frustum {
+namespace {
+
+using test::error_text;
+using test::exact_text;
+using test::one;
+using test::same;
+using test::solve_yaml;
+
+
+TriangleSetup tri(double ax, double ay, double bx, double by, double cx, double cy) {
+  return setup_triangle({Vec2<double>(ax, ay), Vec2<double>(bx, by), Vec2<double>(cx, cy)});
+}
+
+std::vector<std::pair<int, int>> pixels(const TriangleSetup& t) {
+  std::vector<std::pair<int, int>> out;
+  for (const Fragment& f : rasterize(t)) out.emplace_back(f.i, f.j);
+  return out;
+}
+
+using PixelList = std::vector<std::pair<int, int>>;
+
+TEST(TopLeftRule, CentresOnLeftEdgesAreCoveredOnBottomAndRightEdgesNot) {
+  // Left edge x = ½, bottom edge y = ½, hypotenuse x + y = 5 (a right edge): all through centres.
+  const TriangleSetup lower = tri(0.5, 0.5, 4.5, 0.5, 0.5, 4.5);
+  EXPECT_TRUE(lower.edge[1].left) << "C → A runs down";
+  EXPECT_FALSE(lower.edge[2].top_left()) << "A → B is the bottom edge";
+  EXPECT_FALSE(covers(lower, 0, 0)) << "(½, ½) is a vertex on the bottom edge";
+  EXPECT_TRUE(covers(lower, 0, 2)) << "(½, 2½) is on the left edge";
+  EXPECT_FALSE(covers(lower, 1, 0)) << "(1½, ½) is on the bottom edge";
+  EXPECT_FALSE(covers(lower, 1, 3)) << "(1½, 3½) is on the hypotenuse, a right edge";
+  EXPECT_EQ(pixels(lower), (PixelList{{0, 1}, {1, 1}, {2, 1}, {0, 2}, {1, 2}, {0, 3}}));
+  // The other half of the square: the hypotenuse is its left edge, y = 4½ its top edge.
+  const TriangleSetup upper = tri(4.5, 0.5, 4.5, 4.5, 0.5, 4.5);
+  EXPECT_TRUE(covers(upper, 1, 3));
+  EXPECT_TRUE(covers(upper, 2, 4)) << "on the top edge";
+  EXPECT_FALSE(covers(upper, 4, 2)) << "on the right edge";
+  // Together: the square's pixels i = 0..3, j = 1..4, each once.
+  std::map<std::pair<int, int>, int> count;
+  for (const auto& p : pixels(lower)) ++count[p];
+  for (const auto& p : pixels(upper)) ++count[p];
+  EXPECT_EQ(count.size(), 16u);
+  for (const auto& [p, n] : count) {
+    EXPECT_EQ(n, 1);
+    EXPECT_TRUE(p.first >= 0 && p.first <= 3 && p.second >= 1 && p.second <= 4);
+  }
+}
+
+TEST(TopLeftRule, ClockwiseInputCoversTheSamePixels) {
+  EXPECT_EQ(pixels(tri(0.5, 0.5, 0.5, 4.5, 4.5, 0.5)), pixels(tri(0.5, 0.5, 4.5, 0.5, 0.5, 4.5)));
+  EXPECT_TRUE(tri(0.5, 0.5, 0.5, 4.5, 4.5, 0.5).reordered);
+}
+
+TEST(Rasterizer, DegenerateTriangleCoversNothing) {
+  const TriangleSetup t = tri(0, 0, 2, 2, 5, 5);
+  EXPECT_TRUE(t.degenerate);
+  EXPECT_TRUE(rasterize(t).empty());
+  EXPECT_THROW(tri(0, 0, 1e9, 0, 0, 1), DomainError);
+}
+
+// A rectangle [x0, x1] × [y0, y1] split into a jittered grid of quads, each cut into two
+// triangles along a random diagonal. Under the top-left rule the rectangle covers the centres
+// with x0 ≤ cx < x1 and y0 < cy ≤ y1, and every one of them exactly once.
+void check_watertight(unsigned seed, double step) {
+  std::mt19937 rng(seed);
+  const int n = 5;
+  const double cell = 4, x0 = 2.5, y0 = 1.5;  // corners on pixel centres: ties everywhere
+  std::uniform_int_distribution<int> jitter(-static_cast<int>(0.75 / step), static_cast<int>(0.75 / step));
+  std::uniform_int_distribution<int> coin(0, 1);
+  std::vector<std::vector<Vec2<double>>> v(n + 1, std::vector<Vec2<double>>(n + 1));
+  for (int a = 0; a <= n; ++a)
+    for (int b = 0; b <= n; ++b) {
+      const double jx = (a == 0 || a == n) ? 0 : jitter(rng) * step;
+      const double jy = (b == 0 || b == n) ? 0 : jitter(rng) * step;
+      v[a][b] = Vec2<double>(x0 + a * cell + jx, y0 + b * cell + jy);
+    }
+  std::map<std::pair<int, int>, int> count;
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      const Vec2<double> p00 = v[a][b], p10 = v[a + 1][b], p11 = v[a + 1][b + 1], p01 = v[a][b + 1];
+      const std::array<std::array<Vec2<double>, 3>, 2> halves =
+          coin(rng) ? std::array<std::array<Vec2<double>, 3>, 2>{{{p00, p10, p11}, {p00, p11, p01}}}
+                    : std::array<std::array<Vec2<double>, 3>, 2>{{{p00, p10, p01}, {p10, p11, p01}}};
+      for (const auto& h : halves)
+        for (const Fragment& f : rasterize(setup_triangle(h))) ++count[{f.i, f.j}];
+    }
+  const double x1 = x0 + n * cell, y1 = y0 + n * cell;
+  int expected = 0;
+  for (int j = -2; j < 30; ++j)
+    for (int i = -2; i < 30; ++i) {
+      const double cx = i + 0.5, cy = j + 0.5;
+      const bool inside = x0 <= cx && cx < x1 && y0 < cy && cy <= y1;
+      expected += inside;
+      const auto it = count.find({i, j});
+      ASSERT_EQ(it == count.end() ? 0 : it->second, inside ? 1 : 0) << "pixel " << i << ", " << j << " seed " << seed;
+    }
+  EXPECT_EQ(static_cast<int>(count.size()), expected);
+}
+
+TEST(Rasterizer, SharedEdgesCoverEveryPixelExactlyOnceFineJitter) {
+  for (unsigned s = 0; s < 100; ++s) check_watertight(s, 1.0 / 256);
+}
+
+TEST(Rasterizer, SharedEdgesCoverEveryPixelExactlyOnceWithTiesAtCentres) {
+  for (unsigned s = 0; s < 100; ++s) check_watertight(1000 + s, 0.5);
+}
+
+TEST(Rasterizer, FanAroundAVertexOnAPixelCentreCoversItOnce) {
+  // Eight triangles around (3½, 3½): the centre pixel belongs to exactly one of them.
+  const Vec2<double> c(3.5, 3.5);
+  const std::array<Vec2<double>, 8> ring{Vec2<double>(6.5, 3.5), Vec2<double>(6.5, 6.5), Vec2<double>(3.5, 6.5),
+                                         Vec2<double>(0.5, 6.5), Vec2<double>(0.5, 3.5), Vec2<double>(0.5, 0.5),
+                                         Vec2<double>(3.5, 0.5), Vec2<double>(6.5, 0.5)};
+  int hits = 0;
+  for (int k = 0; k < 8; ++k) hits += covers(setup_triangle({c, ring[k], ring[(k + 1) % 8]}), 3, 3);
+  EXPECT_EQ(hits, 1);
+}
+
+TEST(Rasterizer, DepthEqualsThePlaneMethod) {
+  std::mt19937 rng(9);
+  std::uniform_int_distribution<int> coord(0, 20 * 256);
+  std::uniform_real_distribution<double> depth(-5, 5);
+  int checked = 0;
+  for (int c = 0; c < 300; ++c) {
+    std::array<Vec3<double>, 3> p;
+    for (auto& v : p) v = Vec3<double>(coord(rng) / 256.0, coord(rng) / 256.0, depth(rng));
+    const TriangleSetup t = setup_triangle({p[0].head<2>(), p[1].head<2>(), p[2].head<2>()});
+    if (t.degenerate) continue;
+    // Plane a x + b y + c z = d through the vertices (window coordinates).
+    const Vec3<double> nrm = (p[1] - p[0]).cross(p[2] - p[0]);
+    const double d = nrm.dot(p[0]);
+    const std::array<double, 3> z{p[0](2), p[1](2), p[2](2)};
+    for (const Fragment& f : rasterize(t)) {
+      const double x = f.i + 0.5, y = f.j + 0.5;
+      const double plane_z = (d - nrm(0) * x - nrm(1) * y) / nrm(2);
+      ASSERT_NEAR(interpolate(t, f, z), plane_z, 1e-6) << "case " << c;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST(ZBufferStage, SmallerZWinsAndTiesKeepTheFirst) {
+  DepthBuffer<double> depth(2, 1, std::nullopt);
+  FrameBuffer frame(2, 1, kBackground);
+  const TriangleSetup t = tri(0, 0, 2, 0, 0, 2);  // (1½, ½) lies on its right edge: covers (0, 0) only
+  const TriangleSetup full = setup_triangle({Vec2<double>(0, 0), Vec2<double>(4, 0), Vec2<double>(0, 4)});
+  draw_triangle<double>(full, {5, 5, 5}, "1", depth, frame);
+  EXPECT_EQ(frame_rows(frame), (std::vector<std::string>{"11"}));
+  EXPECT_EQ(draw_triangle<double>(full, {5, 5, 5}, "2", depth, frame).written, 0) << "equal z keeps the first";
+  EXPECT_EQ(draw_triangle<double>(t, {1, 1, 1}, "3", depth, frame).written, 1);
+  EXPECT_EQ(frame_rows(frame), (std::vector<std::string>{"31"}));
+  EXPECT_EQ(*depth.at(0, 0), 1);
+}
+
+TEST(ScanConvertKind, ListsPixelsRowByRow) {
+  const ProblemResult r = solve_yaml(one("scan_convert", "{triangle: [[0.5, 0.5], [4.5, 0.5], [0.5, 4.5]]}"));
+  ASSERT_FALSE(r.error) << error_text(r);
+  EXPECT_EQ(exact_text(r, "pixels"), "0, 1, 1, 1, 2, 1, 0, 2, 1, 2, 0, 3");
+  EXPECT_EQ(r.answers.find("pixels")->rows, 6);
+  EXPECT_EQ(r.answers.find("pixels")->cols, 2);
+}
+
+TEST(ScanConvertKind, DegenerateTriangleCoversNoPixelsAndSaysSo) {
+  const ProblemResult r = solve_yaml(one("scan_convert", "{triangle: [[0, 0, 1], [2, 2, 1], [4, 4, 1]]}"));
+  ASSERT_FALSE(r.error) << error_text(r);
+  EXPECT_EQ(r.answers.find("pixels")->rows, 0);
+  EXPECT_TRUE(r.derivation.has_warnings());
+}
+
+TEST(ScanConvertKind, HugeTriangleIsRefused) {
+  const ProblemResult r = solve_yaml(one("scan_convert", "{triangle: [[0, 0], [1000, 0], [0, 1000]]}"));
+  ASSERT_TRUE(r.error);
+  EXPECT_EQ(r.error->field, "problems[0].given.triangle");
+}
+
+const char* kThreePolygons = R"({size: [4, 3], polygons: [
+    {label: "1", points: [[0, 0, 5], [3, 0, 5], [3, 3, 5], [0, 3, 5]]},
+    {label: "2", points: [[1, 0, 3], [4, 0, 3], [4, 2, 3], [1, 2, 3]]},
+    {label: "3", points: [[2, 1, 4], [4, 1, 4], [4, 3, 4], [2, 3, 4]]}]})";
+
+TEST(ZBufferKind, ThreeOverlappingPolygonsLikeSeed001) {
+  const ProblemResult r = solve_yaml(one("zbuffer", kThreePolygons));
+  ASSERT_FALSE(r.error) << error_text(r);
+  EXPECT_EQ(r.answers.find("frame")->words, (std::vector<std::string>{"1133", "1222", "1222"}));
+  EXPECT_EQ(r.answers.find("steps")->words, (std::vector<std::string>{"111./111./111.", "111./1222/1222", "1133/1222/1222"}));
+  EXPECT_EQ(exact_text(r, "depth"), "5, 5, 4, 4, 5, 3, 3, 3, 5, 3, 3, 3");
+  int polygons = 0;
+  for (const Step& s : r.derivation.steps()) polygons += s.title.rfind("Polygon", 0) == 0;
+  EXPECT_EQ(polygons, 3);
+}
+
+TEST(ZBufferKind, SlopedTriangleTakesThePlaneDepthAndBackgroundIsInfinite) {
+  const ProblemResult r = solve_yaml(one("zbuffer", "{size: [3, 3], polygons: [{label: A, points: [[0, 0, 6], [3, 0, 9], [0, 3, 9]]}]}"));
+  ASSERT_FALSE(r.error) << error_text(r);
+  EXPECT_EQ(r.answers.find("frame")->words, (std::vector<std::string>{"...", "A..", "AA."}));
+  const Value& d = *r.answers.find("depth");
+  EXPECT_EQ(d.numbers[6], 7);   // pixel (0, 0): z = x + y + 6 at (½, ½)
+  EXPECT_EQ(d.numbers[7], 8);   // pixel (1, 0)
+  EXPECT_EQ(d.numbers[0], 1e30);
+}
+
+TEST(ZBufferKind, BadInput) {
+  const ProblemResult big = solve_yaml(one("zbuffer", "{size: [300, 10], polygons: [{label: \"1\", points: [[0,0,0],[1,0,0],[0,1,0]]}]}"));
+  ASSERT_TRUE(big.error);
+  EXPECT_EQ(big.error->field, "problems[0].given.size");
+  EXPECT_NE(big.error->message.find("256"), std::string::npos);
+  const ProblemResult dot = solve_yaml(one("zbuffer", "{size: [3, 3], polygons: [{label: \".\", points: [[0,0,0],[1,0,0],[0,1,0]]}]}"));
+  ASSERT_TRUE(dot.error);
+  EXPECT_EQ(dot.error->field, "problems[0].given.polygons[0].label");
+  const ProblemResult flat = solve_yaml(one("zbuffer", "{size: [3, 3], polygons: [{label: \"1\", points: [[0,0,0],[1,1,0],[2,2,0]]}]}"));
+  ASSERT_FALSE(flat.error) << error_text(flat);
+  EXPECT_TRUE(flat.derivation.has_warnings());
+  EXPECT_EQ(flat.answers.find("frame")->words, (std::vector<std::string>{"...", "...", "..."}));
+}
+
+TEST(PipelineExamples, EveryProblemSolves) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/examples/pipeline.yaml"));
+  ASSERT_TRUE(set.errors.empty());
+  const SetResult r = solve_set(set, true);
+  ASSERT_EQ(r.problems.size(), 4u);
+  for (const ProblemResult& p : r.problems) EXPECT_FALSE(p.error) << p.id << ": " << error_text(p);
+}
+
+}  // namespace
+}  // namespace frustum
