@@ -3,6 +3,7 @@
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/kinds/registry.hpp"
+#include "solver/kinds/solve_precision.hpp"
 #include "solver/kinds/solve_set.hpp"
 
 #include <algorithm>
@@ -36,7 +37,7 @@ bool failed(const SetResult& r) {
 }  // namespace
 
 int run_solve(const std::string& path, const std::optional<std::string>& id, Format format,
-              const Output& o) {
+              const Output& o, std::optional<Precision> precision, Lang lang) {
   const std::vector<std::string> files = set_files(path);
   if (files.empty()) {
     o.err << path << ": no problem sets (*.yaml) here\n";
@@ -45,12 +46,13 @@ int run_solve(const std::string& path, const std::optional<std::string>& id, For
   bool any_failed = false;
   nlohmann::ordered_json sets = nlohmann::ordered_json::array();
   for (const std::string& file : files) {
-    const SetResult result = solve_set(load_problem_set(file), true, id);
+    const SetResult result = precision ? solve_set(load_problem_set(file), true, id, *precision)
+                                       : solve_set(load_problem_set(file), true, id);
     any_failed = any_failed || failed(result);
     switch (format) {
       case Format::Json: sets.push_back(render_json(result)); break;
-      case Format::Markdown: o.out << render_markdown(result); break;
-      case Format::Text: o.out << render_text(result, TextStyle{o.color}); break;
+      case Format::Markdown: o.out << render_markdown(result, lang); break;
+      case Format::Text: o.out << render_text(result, TextStyle{o.color, lang}); break;
     }
     if (format != Format::Text)
       for (const ProblemResult& p : result.problems)
@@ -85,20 +87,6 @@ int run_check(const std::string& path, const Output& o) {
   }
   if (errors) o.err << errors << " error" << (errors == 1 ? "" : "s") << "\n";
   return errors == 0 ? 0 : 1;
-}
-
-int run_grade(const std::string& set_file, const std::string& answers_file, Format format,
-              const Output& o) {
-  const ProblemSet set = load_problem_set(set_file);
-  const Submission submission = load_submission(answers_file);
-  const GradeReport report = grade(set, submission);
-  if (format == Format::Json)
-    o.out << render_grade_json(report).dump(2) << "\n";
-  else
-    o.out << render_grade_text(report, TextStyle{o.color});
-  bool failed = !report.errors.empty();
-  for (const ProblemGrade& p : report.problems) failed = failed || p.error.has_value();
-  return failed ? 1 : 0;
 }
 
 int run_kinds(const Output& o) {

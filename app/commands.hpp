@@ -1,9 +1,14 @@
 // The subcommands of `frustum`: each maps its options to library calls and prints.
 #pragma once
 
+#include "solver/derivation/i18n.hpp"
+#include "solver/numeric/precision.hpp"
+
+#include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace frustum::app {
 
@@ -12,14 +17,57 @@ enum class Format { Text, Markdown, Json };
 struct Output {
   std::ostream& out;
   std::ostream& err;
-  bool color;  // stdout is a terminal
+  bool color;            // stdout is a terminal
+  bool progress = false;  // stderr is a terminal: progress bars
 };
 
 // Exit status: 0 all good, 1 some problem or answer had an error (the rest is still printed).
 int run_solve(const std::string& set, const std::optional<std::string>& id, Format format,
-              const Output& o);
+              const Output& o, std::optional<Precision> precision = std::nullopt, Lang lang = Lang::En);
 int run_check(const std::string& set, const Output& o);
-int run_grade(const std::string& set, const std::string& answers, Format format, const Output& o);
+// frustum grade (app/grade_command.cpp): `answers` is one answers file, a directory of them, or
+// a CSV roster (a batch, written under out_dir).
+struct GradeOptions {
+  std::string set;
+  std::string answers;
+  Format format = Format::Text;
+  Lang lang = Lang::En;
+  std::optional<std::string> out_dir;     // batch outputs (default "grades")
+  double timeout = 10;                    // seconds per submission in a batch
+  std::optional<std::string> gradescope;  // single: results.json
+  std::optional<std::string> html;        // single: feedback page
+  std::optional<std::string> markdown;    // single: feedback Markdown
+};
+int run_grade(const GradeOptions& options, const Output& o);
 int run_kinds(const Output& o);
+// frustum generate (app/generate_command.cpp): variants for `students`, or `count` variants
+// from `seed`, written with their answer keys under out_dir.
+struct GenerateCommand {
+  std::string set;
+  std::vector<std::string> students;
+  std::optional<std::uint64_t> seed;
+  int count = 1;
+  std::string out_dir = ".";
+};
+int run_generate(const GenerateCommand& options, const Output& o);
+
+// frustum render (app/render_command.cpp).
+struct RenderOptions {
+  std::string file;                            // scene file or problem set
+  std::string output;                          // PNG
+  std::optional<std::string> depth;            // depth PNG
+  std::optional<std::pair<int, int>> size;     // --size WxH
+  std::optional<std::string> id;               // the render problem of a set
+  std::optional<std::string> method;           // zbuffer | scanline
+};
+int run_render(const RenderOptions& options, const Output& o);
+// `frustum bench accuracy`: speed against error of every numeric path and backend, on generated
+// and hard cases (every *.yaml in hard_dir); writes accuracy_results.md and the plots into out_dir
+// (bench_command.cpp).
+int run_bench_accuracy(const std::string& out_dir, const std::string& hard_dir, int cases, const Output& o);
+// `frustum draw`: an SVG picture of one problem (hidden lines, painter vs z-buffer); written
+// to `output`, or to o.out when it is empty or "-". `raster` is the painter/z-buffer size.
+int run_draw(const std::string& set, const std::string& id, const std::string& output, int raster,
+             const Output& o);
 
 }  // namespace frustum::app

@@ -3,6 +3,7 @@
 #include "solver/util/expression.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <cctype>
 
 namespace frustum {
@@ -37,14 +38,53 @@ struct Numbers {
   std::string error;
 };
 
+// A plain decimal literal ("-12", "0.57735", "1.5e-3") as the exact rational it denotes,
+// without the expression parser: most numeric answers are these, and a class is thousands.
+// Anything else (or an exponent beyond ±400) is left to the parser.
+std::optional<Exact> plain_decimal(const std::string& text) {
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  while (i < n && text[i] == ' ') ++i;
+  bool negative = false;
+  if (i < n && (text[i] == '-' || text[i] == '+')) negative = text[i++] == '-';
+  std::string digits;
+  long scale = 0;
+  bool any = false;
+  for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true) digits += text[i];
+  if (i < n && text[i] == '.') {
+    for (++i; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true) {
+      digits += text[i];
+      --scale;
+    }
+  }
+  if (!any || digits.size() > 40) return std::nullopt;
+  if (i < n && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    bool exp_negative = false;
+    if (i < n && (text[i] == '-' || text[i] == '+')) exp_negative = text[i++] == '-';
+    long e = 0;
+    bool exp_digits = false;
+    for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])) && e < 1000; ++i, exp_digits = true)
+      e = e * 10 + (text[i] - '0');
+    if (!exp_digits || e > 400) return std::nullopt;
+    scale += exp_negative ? -e : e;
+  }
+  while (i < n && text[i] == ' ') ++i;
+  if (i != n) return std::nullopt;
+  const GiNaC::numeric mantissa(digits.c_str());
+  const GiNaC::numeric value = mantissa * GiNaC::numeric(10).power(GiNaC::numeric(scale));
+  return Exact(negative ? -value : value);
+}
+
 Exact parse_one(const std::string& text, std::string& error, const ExpressionOptions& opts = {}) {
+  if (const std::optional<Exact> d = plain_decimal(text)) return *d;
   const ExpressionResult r = parse_expression(text, opts);
   if (!r) {
-    error = "cannot read '" + text + "': " + r.error;
+    error = "cannot read " + quote_excerpt(text) + ": " + r.error;
     return 0;
   }
   if (!is_real_constant(*r.value)) {
-    error = "'" + text + "' is not a real number";
+    error = quote_excerpt(text) + " is not a real number";
     return 0;
   }
   return canonical(*r.value);
@@ -105,7 +145,7 @@ Numbers read_plane_equation(const std::string& text) {
   opts.allow_equation = true;
   const ExpressionResult r = parse_expression(text, opts);
   if (!r) {
-    out.error = "cannot read the plane '" + text + "': " + r.error;
+    out.error = "cannot read the plane " + quote_excerpt(text) + ": " + r.error;
     return out;
   }
   if (!r.equation) {
@@ -143,34 +183,63 @@ Numbers read_plane_equation(const std::string& text) {
 
 }  // namespace
 
-std::string raw_text(const YAML::Node& node) {
-  if (node.IsScalar()) return node.Scalar();
-  if (node.IsSequence()) {
-    std::string s = "[";
-    for (std::size_t i = 0; i < node.size(); ++i) s += (i ? ", " : "") + raw_text(node[i]);
-    return s + "]";
-  }
-  if (node.IsMap()) {
-    std::string s = "{";
+namespace {
+
+// Appends the node's text until `out` is longer than `limit` (aliases can make a small file
+// expand to a huge tree, so the walk stops early instead of visiting it all).
+void append_raw(const YAML::Node& node, std::string& out, std::size_t limit) {
+  if (out.size() > limit) return;
+  if (node.IsScalar()) {
+    out += node.Scalar();
+  } else if (node.IsSequence()) {
+    out += "[";
+    for (std::size_t i = 0; i < node.size() && out.size() <= limit; ++i) {
+      if (i) out += ", ";
+      append_raw(node[i], out, limit);
+    }
+    out += "]";
+  } else if (node.IsMap()) {
+    out += "{";
     bool first = true;
-    for (auto it = node.begin(); it != node.end(); ++it) {
-      s += (first ? "" : ", ") + raw_text(it->first) + ": " + raw_text(it->second);
+    for (auto it = node.begin(); it != node.end() && out.size() <= limit; ++it) {
+      if (!first) out += ", ";
+      append_raw(it->first, out, limit);
+      out += ": ";
+      append_raw(it->second, out, limit);
       first = false;
     }
-    return s + "}";
+    out += "}";
   }
-  return "";
+}
+
+}  // namespace
+
+std::string raw_text(const YAML::Node& node) {
+  std::string s;
+  append_raw(node, s, kMaxExpressionLength * 4);
+  return s;
 }
 
 ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
   ParsedAnswer p;
   p.raw = raw_text(node);
   if (p.raw.size() > kMaxExpressionLength * 4) {
-    p.error = "the answer is too long";
+    p.error = "the answer is too long (more than " + std::to_string(kMaxExpressionLength * 4) +
+              " bytes)";
+    // Reports show the start only.
+    std::size_t cut = 64;
+    while (cut > 0 && (static_cast<unsigned char>(p.raw[cut]) & 0xC0) == 0x80) --cut;
+    p.raw = p.raw.substr(0, cut) + "...";
     return p;
   }
   if (!node.IsDefined() || node.IsNull()) {
     p.error = "empty answer";
+    return p;
+  }
+  // "none": the answer has no value (a segment clipped away, no unit normal of parallel vectors).
+  if (node.IsScalar() && (trim_lower(node.Scalar()) == "none" || node.Scalar() == "なし")) {
+    p.value = Value::null();
+    p.ok = true;
     return p;
   }
   switch (spec.kind) {
@@ -245,7 +314,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       const auto it = std::find_if(kBoolWords.begin(), kBoolWords.end(),
                                    [&](const auto& b) { return b.first == w; });
       if (it == kBoolWords.end()) {
-        p.error = "'" + node.Scalar() + "' is not true or false";
+        p.error = quote_excerpt(node.Scalar()) + " is not true or false";
         return p;
       }
       p.value = Value::boolean(it->second);
@@ -262,7 +331,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       if (std::find(spec.words.begin(), spec.words.end(), w) == spec.words.end()) {
         std::string list;
         for (const auto& a : spec.words) list += (list.empty() ? "" : ", ") + a;
-        p.error = "'" + node.Scalar() + "' is not one of " + list;
+        p.error = quote_excerpt(node.Scalar()) + " is not one of " + list;
         return p;
       }
       p.value = Value::category(w);
@@ -294,7 +363,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       for (char c : node.Scalar())
         if (c == '0' || c == '1') bits += c;
         else if (c != ' ' && c != '_') {
-          p.error = "'" + node.Scalar() + "' is not a bit string of 0 and 1";
+          p.error = quote_excerpt(node.Scalar()) + " is not a bit string of 0 and 1";
           return p;
         }
       p.value = Value::category(bits);

@@ -118,6 +118,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerSpec& sp
     return got.shape == Value::Shape::Null ? correct("there is no such value")
                                            : incorrect("there is no such value here");
   }
+  if (got.shape == Value::Shape::Null) return incorrect("there is a value here");
   switch (spec.kind) {
     case AnswerKind::Scalar: return compare_numbers(expected, got, tol);
     case AnswerKind::Vector:

@@ -19,10 +19,16 @@ Submission load_submission_from(const YamlDocument& doc, const std::string& name
     s.errors.push_back(*doc.error);
     return s;
   }
+  if (doc.invalid_utf8) s.errors.push_back(*doc.invalid_utf8);
   const YAML::Node& root = doc.root;
   auto err = [&](const YAML::Node& n, const std::string& field, const std::string& message) {
     s.errors.push_back(Diagnostic{location_of(n, name), field, message});
   };
+  if (root.IsNull() && root.Mark().line < 0) {
+    s.errors.push_back(Diagnostic{SourceLocation{name, 1, 1}, "",
+                                  "the file is empty: expected a mapping with 'student' and 'answers'"});
+    return s;
+  }
   if (!root.IsMap()) {
     err(root, "", "expected a mapping with 'student' and 'answers'");
     return s;
@@ -68,14 +74,13 @@ std::optional<Misconception> diagnose(const ProblemSpec& spec, const std::vector
   return std::nullopt;
 }
 
-ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemSet& set,
-                           const YAML::Node& student, const std::string& answers_file,
-                           std::vector<Diagnostic>& errors) {
+ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
+                           const std::vector<Misconception>* known_mistakes, const YAML::Node& student,
+                           const std::string& answers_file, std::vector<Diagnostic>& errors) {
   ProblemGrade pg;
   pg.id = spec.id;
   pg.kind = spec.kind;
   pg.max_score = spec.max_score();
-  const ProblemResult solved = solve_problem(spec, set.file, true);
   if (solved.error) {
     pg.error = solved.error;
     return pg;
@@ -95,6 +100,7 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemSet& set,
   }
   std::optional<Answers> carried;
   std::optional<std::vector<Misconception>> mistakes;
+  if (known_mistakes) mistakes = *known_mistakes;
   for (std::size_t i = 0; i < spec.ask.size(); ++i) {
     const std::string& name = spec.ask[i];
     const AnswerSpec& aspec = *spec.info->answer(name);
@@ -137,9 +143,15 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemSet& set,
             ag.verdict = Verdict::Partial;
             ag.score = credit;
             ag.carried_forward = true;
+            // Name the student's own wrong earlier answers it follows from (the kind's direct
+            // dependency may be one the student was not asked: unit_normal behind normal).
             std::string from;
-            for (const std::string& d : aspec.depends_on) from += (from.empty() ? "" : ", ") + d;
-            ag.feedback = "wrong, but it follows correctly from your own " + from +
+            for (const AnswerGrade& earlier : pg.answers)
+              if (earlier.got && earlier.verdict != Verdict::Correct)
+                from += (from.empty() ? "" : ", ") + earlier.name;
+            if (from.empty())
+              for (const std::string& d : aspec.depends_on) from += (from.empty() ? "" : ", ") + d;
+            ag.feedback = "wrong, but it follows correctly from your own earlier " + from +
                           " (error carried forward: " + format_approx(spec.grading.ecf * 100, 3) + "% of the points)";
           }
         }
@@ -162,7 +174,23 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemSet& set,
 
 }  // namespace
 
-GradeReport grade(const ProblemSet& set, const Submission& submission) {
+SolvedSet solve_for_grading(const ProblemSet& set) {
+  SolvedSet s;
+  for (const ProblemSpec& spec : set.problems) {
+    s.results.push_back(solve_problem(spec, set.file, true));
+    std::vector<Misconception> m;
+    if (!s.results.back().error && spec.info && spec.info->misconceptions) {
+      try {
+        m = spec.info->misconceptions(spec.given);
+      } catch (const std::exception&) {
+      }
+    }
+    s.mistakes.push_back(std::move(m));
+  }
+  return s;
+}
+
+GradeReport grade(const ProblemSet& set, const Submission& submission, const SolvedSet* solved) {
   GradeReport r;
   r.set_file = set.file;
   r.answers_file = submission.file;
@@ -170,10 +198,17 @@ GradeReport grade(const ProblemSet& set, const Submission& submission) {
   r.errors = set.errors;
   r.errors.insert(r.errors.end(), submission.errors.begin(), submission.errors.end());
   for (const ProblemSpec& spec : set.problems) {
-    const YAML::Node student = submission.answers.IsMap() ? submission.answers[spec.id] : YAML::Node();
+    // A const lookup of a missing key gives an invalid node: every answer is then missing.
+    const YAML::Node found = submission.answers.IsMap() ? submission.answers[spec.id] : YAML::Node();
+    const YAML::Node student = found.IsDefined() ? found : YAML::Node();
     ProblemGrade pg;
     try {
-      pg = grade_problem(spec, set, student, submission.file, r.errors);
+      const std::size_t index = static_cast<std::size_t>(&spec - set.problems.data());
+      if (solved && index < solved->results.size()) {
+        pg = grade_problem(spec, solved->results[index], &solved->mistakes[index], student, submission.file, r.errors);
+      } else {
+        pg = grade_problem(spec, solve_problem(spec, set.file, true), nullptr, student, submission.file, r.errors);
+      }
     } catch (const std::exception& e) {
       pg.id = spec.id;
       pg.max_score = spec.max_score();

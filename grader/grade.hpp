@@ -53,12 +53,23 @@ struct GradeReport {
   std::string set_file;
   std::string answers_file;
   std::string student;
+  std::string variant;  // which generated variant was graded, when the set varies per student
   double score = 0;
   double max_score = 0;
   std::vector<ProblemGrade> problems;
   std::vector<Diagnostic> errors;  // of the set or the answer file, and unknown ids
 };
 
-GradeReport grade(const ProblemSet& set, const Submission& submission);
+// The set solved once (with derivations), to grade many submissions against: results[i] is
+// set.problems[i]'s.
+struct SolvedSet {
+  std::vector<ProblemResult> results;
+  std::vector<std::vector<Misconception>> mistakes;  // what common mistakes give, per problem
+};
+SolvedSet solve_for_grading(const ProblemSet& set);
+
+// Grades one submission; `solved` (from solve_for_grading on the same set) saves solving the
+// set again for every student of a class.
+GradeReport grade(const ProblemSet& set, const Submission& submission, const SolvedSet* solved = nullptr);
 
 }  // namespace frustum

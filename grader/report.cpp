@@ -28,24 +28,29 @@ std::string mark(Verdict v, bool color) {
 }  // namespace
 
 std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
-  std::string out = fmt::format("Student {}: {} / {}\n", r.student.empty() ? "(unnamed)" : r.student,
+  const Lang lang = style.lang;
+  std::string out = fmt::format("{} {}: {} / {}\n", tr("Student", lang), r.student.empty() ? "(unnamed)" : r.student,
                                 score_text(r.score), score_text(r.max_score));
-  for (const Diagnostic& d : r.errors) out += "  warning: " + d.format() + "\n";
+  if (!r.variant.empty()) out += "  " + r.variant + "\n";
+  for (const Diagnostic& d : r.errors) out += "  " + tr("warning", lang) + ": " + d.format() + "\n";
   for (const ProblemGrade& p : r.problems) {
     out += fmt::format("\n{} ({}): {} / {}\n", p.id, p.kind, score_text(p.score), score_text(p.max_score));
     if (p.error) {
-      out += "  error: " + p.error->format() + "\n";
+      out += "  " + tr("error", lang) + ": " + p.error->format() + "\n";
       continue;
     }
     for (const AnswerGrade& a : p.answers) {
-      out += fmt::format("  {} {}: {}", mark(a.verdict, style.color), a.name, to_string(a.verdict));
-      if (a.verdict != Verdict::Missing) out += fmt::format(" — you wrote {}", a.got_text);
+      out += fmt::format("  {} {}: {}", mark(a.verdict, style.color), a.name, tr(to_string(a.verdict), lang));
+      if (a.verdict != Verdict::Missing) out += fmt::format(" — {} {}", lang == Lang::En ? "you wrote" : tr("You wrote", lang) + ":", a.got_text);
       if (a.verdict != Verdict::Correct)
-        out += fmt::format("; expected {}", a.expected.shown().unicode);
+        out += fmt::format("; {} {}", lang == Lang::En ? "expected" : tr("Expected", lang) + ":", a.expected.shown().unicode);
       out += "\n";
+      if (!a.misconception.empty())
+        out += fmt::format("      {}: {}{}\n", tr("Common mistake", lang), a.misconception,
+                           a.wrong_step.empty() ? "" : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
       if (!a.feedback.empty() && a.verdict != Verdict::Correct) out += "      " + a.feedback + "\n";
       if (a.verdict != Verdict::Correct && !a.derivation.empty()) {
-        out += "      How to get it:\n";
+        out += "      " + tr("How to get it", lang) + ":\n";
         out += render_steps_text(a.derivation, style, "      ");
       }
     }
@@ -56,6 +61,7 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
 json render_grade_json(const GradeReport& r) {
   json j;
   j["student"] = r.student;
+  if (!r.variant.empty()) j["variant"] = r.variant;
   j["score"] = number_json(r.score);
   j["max_score"] = number_json(r.max_score);
   json problems = json::array();
@@ -73,6 +79,11 @@ json render_grade_json(const GradeReport& r) {
       aj["got"] = a.got ? value_json(*a.got) : (a.got_text.empty() ? json(nullptr) : json(a.got_text));
       if (a.verdict != Verdict::Missing) aj["got_text"] = a.got_text;
       aj["feedback"] = a.feedback;
+      if (!a.misconception.empty()) {
+        aj["misconception"] = a.misconception;
+        aj["wrong_step"] = a.wrong_step;
+      }
+      if (a.carried_forward) aj["carried_forward"] = true;
       if (!a.derivation.empty()) aj["derivation"] = steps_json(a.derivation);
       answers[a.name] = aj;
     }

@@ -52,6 +52,20 @@ TEST(Exact, CanonicalRationalisesDenominators) {
   expect_canonical(ex(numeric(1, 27)) * sqrt_of(243), sqrt_of(3) / 3);
 }
 
+TEST(Exact, CanonicalRationalisesSumsOfRadicalsInDenominators) {
+  expect_canonical(1 / (1 + 2 * sqrt_of(3)), (2 * sqrt_of(3) - 1) / 11);
+  expect_canonical(ex(37) / (5 * GiNaC::pow(1 + 2 * sqrt_of(3), 2)) +
+                       6 * sqrt_of(3) / GiNaC::pow(1 + 2 * sqrt_of(3), 2),
+                   ex(1) / 5 + 2 * sqrt_of(3) / 5);
+  // Two different roots: one conjugate per root.
+  const ex two = 1 / (sqrt_of(2) + sqrt_of(3));
+  expect_canonical(two, sqrt_of(3) - sqrt_of(2));
+  const ex v = canonical(1 / (1 + sqrt_of(2) + sqrt_of(3)));
+  EXPECT_FALSE(GiNaC::is_a<GiNaC::add>(v.denom())) << v;
+  EXPECT_NEAR(to_double(v), 1 / (1 + std::sqrt(2.0) + std::sqrt(3.0)), 1e-15);
+  EXPECT_TRUE(canonical(two * (sqrt_of(2) + sqrt_of(3)) - 1).is_zero());
+}
+
 TEST(Exact, CanonicalHandlesHigherRoots) {
   expect_canonical(root(16, 3), 2 * root(2, 3));
   expect_canonical(root(4, 6), root(2, 3));

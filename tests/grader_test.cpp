@@ -117,6 +117,11 @@ TEST(Grader, JsonFollowsTheFormat) {
   EXPECT_EQ(z["got"], 8);
   EXPECT_TRUE(z.contains("feedback"));
   EXPECT_EQ(j["problems"][0]["answers"]["normal"]["verdict"], "missing");
+  // A problem the file does not mention at all: every answer missing, no error.
+  ASSERT_EQ(j["problems"].size(), 2u);
+  EXPECT_FALSE(j["problems"][1].contains("error")) << j["problems"][1].dump();
+  for (const auto& [name, a] : j["problems"][1]["answers"].items()) EXPECT_EQ(a["verdict"], "missing") << name;
+  EXPECT_FALSE(j["problems"][1]["answers"].empty());
 }
 
 TEST(Grader, BrokenAnswerFileIsReportedNotFatal) {

@@ -307,9 +307,6 @@ TEST(ViewingTransform, TemplateRotationsAboutSeveralAxesAreOrthogonal) {
 }
 
 TEST(ViewingTransform, InverseOfARotationPrintsAsItsTranspose) {
-  GTEST_SKIP() << "BUG: solver/util/exact.cpp canonical() leaves sums of radicals in denominators: the "
-                  "transform kind's inverse of rotate {axis: [1, 2, 0], angle: 30} prints element (1,1) as "
-                  "37/(5*(1 + 2*sqrt(3))^2) + 6*sqrt(3)/(1 + 2*sqrt(3))^2 instead of 1/5 + 2*sqrt(3)/5";
   const ProblemResult r = solve_yaml(one("transform", "{dim: 3, steps: [{rotate: {axis: [1, 2, 0], angle: 30}}]}"), false);
   ASSERT_FALSE(r.error) << error_text(r);
   const MatX<Exact> m = exact_matrix(*r.answers.find("matrix"));
@@ -321,9 +318,6 @@ TEST(ViewingTransform, InverseOfARotationPrintsAsItsTranspose) {
 }
 
 TEST(ViewingTransform, InverseOfTwoGeneralRotationsIsTheTranspose) {
-  GTEST_SKIP() << "BUG: solver/kinds/transform.cpp Transform::solve: canonical(m.inverse()) does not finish "
-                  "(> 8 minutes) for steps [{rotate: {axis: [1, 2, 0], angle: 30}}, {rotate: {axis: [1, 1, 2], "
-                  "angle: 30}}], even with ask: [matrix]";
   const ProblemResult r = solve_yaml(
       one("transform", "{dim: 3, steps: [{rotate: {axis: [1, 2, 0], angle: 30}}, {rotate: {axis: [1, 1, 2], angle: 30}}]}"),
       false);
@@ -727,9 +721,6 @@ TEST(ViewingProcessing, DirectXAndOpenGLViewportsPutNdcYOneAtOppositeEdges) {
 }
 
 TEST(ViewingProcessing, DefaultCameraMapsWorldPixelsToTheSameWindowPixels) {
-  GTEST_SKIP() << "BUG: solver/viewing/projection.hpp viewport(): with Api::Processing the window y is "
-                  "(y_ndc + 1)/2·h, but Processing's projection negates y for a y-down world and its "
-                  "screenY is h − (1 + y_ndc)/2·h, so a point above the center lands below it";
   // Processing's default camera: eye (w/2, h/2, (h/2)/tan(30°)) looking at (w/2, h/2, 0), up
   // (0, 1, 0), perspective(60°, w/h, …): a point (x, y, 0) appears at pixel (x, y), y down.
   const std::string camera = "camera: {eye: [320, 240, \"240*sqrt(3)\"], center: [320, 240, 0], up: [0, 1, 0]}";

@@ -42,6 +42,12 @@ const char* kLPrism =
 
 const char* kCubeVertices = "[[-1,1,1],[1,1,1],[1,1,-1],[-1,1,-1],[-1,-1,1],[1,-1,1],[1,-1,-1],[-1,-1,-1]]";
 
+// The cube's vertices with the given faces, seen from (3, 4, 5).
+ProblemResult cube_mesh(const std::string& faces) {
+  return solve_yaml(one("edge_visibility",
+                        fmt::format("{{mesh: {{vertices: {}, faces: {}}}, eye: [3, 4, 5]}}", kCubeVertices, faces)));
+}
+
 // ---- Solids and mesh checks -------------------------------------------------------------
 
 TEST(Solids, EachNamedSolidIsClosedOrientedConvexWithPlanarOutwardFaces) {
@@ -92,8 +98,7 @@ TEST(Solids, IcosahedronKeepsTheGoldenRatioExact) {
 
 TEST(Mesh, OpenMeshIsRejectedNamingAnEdge) {
   // The cube without its back face (3 2 6 7).
-  const ProblemResult r = solve_yaml(one("edge_visibility",
-      fmt::format("{{mesh: {{vertices: {}, faces: [[0,1,2,3],[4,7,6,5],[1,5,6,2],[0,3,7,4],[0,4,5,1]]}}, eye: [3, 4, 5]}}", kCubeVertices)));
+  const ProblemResult r = cube_mesh("[[0,1,2,3],[4,7,6,5],[1,5,6,2],[0,3,7,4],[0,4,5,1]]");
   ASSERT_TRUE(r.error);
   EXPECT_EQ(r.error->field, "problems[0].given.mesh.faces");
   EXPECT_NE(r.error->message.find("edge 2-3"), std::string::npos) << r.error->message;
@@ -103,17 +108,23 @@ TEST(Mesh, OpenMeshIsRejectedNamingAnEdge) {
 
 TEST(Mesh, InconsistentlyOrientedFaceIsRejectedNamingAnEdge) {
   // The top face listed clockwise from outside.
-  const ProblemResult r = solve_yaml(one("edge_visibility",
-      fmt::format("{{mesh: {{vertices: {}, faces: [[3,2,1,0],[4,7,6,5],[1,5,6,2],[0,3,7,4],[0,4,5,1],[3,2,6,7]]}}, eye: [3, 4, 5]}}", kCubeVertices)));
+  const ProblemResult r = cube_mesh("[[3,2,1,0],[4,7,6,5],[1,5,6,2],[0,3,7,4],[0,4,5,1],[3,2,6,7]]");
   ASSERT_TRUE(r.error);
   EXPECT_EQ(r.error->field, "problems[0].given.mesh.faces");
   EXPECT_NE(r.error->message.find("edge 0-1"), std::string::npos) << r.error->message;
   EXPECT_NE(r.error->message.find("same direction"), std::string::npos) << r.error->message;
 }
 
+TEST(Mesh, EdgeSharedByThreeFacesIsRejectedNamingIt) {
+  // The cube plus a triangle through edge 0-1: three faces meet there.
+  const ProblemResult r = cube_mesh("[[0,1,2,3],[4,7,6,5],[1,5,6,2],[0,3,7,4],[0,4,5,1],[3,2,6,7],[1,0,6]]");
+  ASSERT_TRUE(r.error);
+  EXPECT_EQ(r.error->field, "problems[0].given.mesh.faces");
+  EXPECT_NE(r.error->message.find("edge 0-1 is shared by 3 faces"), std::string::npos) << r.error->message;
+}
+
 TEST(Mesh, BadFaceIndexIsAnInputErrorAtTheIndex) {
-  const ProblemResult r = solve_yaml(one("edge_visibility",
-      fmt::format("{{mesh: {{vertices: {}, faces: [[0,1,2,9],[4,7,6,5],[1,5,6,2],[0,3,7,4],[0,4,5,1],[3,2,6,7]]}}, eye: [3, 4, 5]}}", kCubeVertices)));
+  const ProblemResult r = cube_mesh("[[0,1,2,9],[4,7,6,5],[1,5,6,2],[0,3,7,4],[0,4,5,1],[3,2,6,7]]");
   ASSERT_TRUE(r.error);
   EXPECT_EQ(r.error->field, "problems[0].given.mesh.faces[0][3]");
 }
@@ -172,6 +183,40 @@ TEST(EdgeVisibility, Seed003IcosahedronSilhouetteLoopHiddenLinesAndHiddenEdges) 
     EXPECT_TRUE(r.answers.find("convex")->flag);
     EXPECT_TRUE(r.answers.find("backface_sufficient")->flag);
   }
+}
+
+// Seed 003's three icosahedron questions as the seed set asks them (eye (3, 5, 7)): the
+// silhouette of question 1, the drawing of question 2 and the hidden edges of question 3 are
+// the front–back, front-bearing and back–back edges of one classification.
+TEST(Seed003, IcosahedronQuestionsAgreeWithOneClassification) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));
+  ASSERT_TRUE(set.errors.empty());
+  std::map<std::string, ProblemResult> r;
+  for (const char* id : {"seed003-ico-silhouette", "seed003-ico-hidden-lines", "seed003-ico-hidden-edges"}) {
+    const ProblemSpec* spec = set.find(id);
+    ASSERT_NE(spec, nullptr) << id;
+    r[id] = solve_problem(*spec, set.file, true);
+    ASSERT_FALSE(r[id].error) << error_text(r[id]);
+  }
+  const auto edges = map_of(r["seed003-ico-hidden-lines"], "edges");
+  const auto faces = map_of(r["seed003-ico-silhouette"], "faces");
+  ASSERT_EQ(edges.size(), 30u);
+  std::set<std::string> silhouette, hidden, drawn;
+  for (const auto& [e, c] : edges) (c == "silhouette" ? silhouette : c == "hidden" ? hidden : drawn).insert(e);
+  EXPECT_EQ(words_of(r["seed003-ico-silhouette"], "silhouette"), silhouette);
+  EXPECT_EQ(words_of(r["seed003-ico-hidden-edges"], "hidden"), hidden);
+  // From (3, 5, 7): 8 front faces, an octagon of silhouette edges, 14 hidden edges (the
+  // published answers file grades these; tests/draw_test.cpp casts rays from this eye).
+  EXPECT_EQ(std::count_if(faces.begin(), faces.end(), [](const auto& f) { return f.second == "front"; }), 8);
+  EXPECT_EQ(silhouette.size(), 8u);
+  EXPECT_EQ(hidden.size(), 14u);
+  // Every front face contributes 3 edges: 3·front = 2·visible + silhouette.
+  EXPECT_EQ(3 * 8u, 2 * drawn.size() + silhouette.size());
+  bool one_loop = false;
+  for (const Step& s : r["seed003-ico-silhouette"].derivation.steps()) one_loop |= s.note.find("(1 loop)") != std::string::npos;
+  EXPECT_TRUE(one_loop);
+  EXPECT_EQ(silhouette.size() + hidden.size() + drawn.size(), 30u);
+  EXPECT_TRUE(r["seed003-ico-hidden-lines"].answers.find("backface_sufficient")->flag);
 }
 
 // Brute force: an edge is hidden when rays from points on it toward the eye pass through

@@ -6,7 +6,10 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config
           libeigen3-dev libyaml-cpp-dev libfmt-dev libginac-dev libcln-dev
-          libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev)
+          libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
+          libstb-dev libbenchmark-dev libosmesa6-dev
+          clang libclang-rt-14-dev
+          chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

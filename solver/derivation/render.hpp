@@ -2,6 +2,7 @@
 // and JSON in the shape of problem-format.md §3.
 #pragma once
 
+#include "solver/derivation/i18n.hpp"
 #include "solver/derivation/problem_result.hpp"
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@ namespace frustum {
 
 struct TextStyle {
   bool color = false;  // ANSI colour: only when writing to a terminal
+  Lang lang = Lang::En;  // step titles and fixed phrases (i18n.hpp)
 };
 
 std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& style,
@@ -20,9 +22,9 @@ std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& s
 std::string render_problem_text(const ProblemResult& p, const TextStyle& style);
 std::string render_text(const SetResult& set, const TextStyle& style);
 
-std::string render_steps_markdown(const std::vector<Step>& steps);
-std::string render_problem_markdown(const ProblemResult& p);
-std::string render_markdown(const SetResult& set);
+std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang = Lang::En);
+std::string render_problem_markdown(const ProblemResult& p, Lang lang = Lang::En);
+std::string render_markdown(const SetResult& set, Lang lang = Lang::En);
 
 // A number that round-trips: integral doubles become JSON integers (8, not 8.0).
 nlohmann::ordered_json number_json(double v);

@@ -4,29 +4,30 @@
 
 namespace frustum {
 
-std::string render_steps_markdown(const std::vector<Step>& steps) {
+std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang) {
   std::string out;
   int number = 0;
   for (const Step& s : steps) {
+    const std::string title = tr(s.title, lang), note = tr(s.note, lang);
     if (s.level == Step::Level::Warning)
-      out += fmt::format("> **Warning — {}.** {}\n\n", s.title, s.note);
+      out += fmt::format("> **{} — {}.** {}\n\n", tr("Warning", lang), title, note);
     else if (s.level == Step::Level::Note)
-      out += fmt::format("> **{}.** {}\n\n", s.title, s.note);
+      out += fmt::format("> **{}.** {}\n\n", title, note);
     else
-      out += fmt::format("{}. **{}**\n\n", ++number, s.title);
+      out += fmt::format("{}. **{}**\n\n", ++number, title);
     if (!s.formula.empty()) out += "   $$" + s.formula.latex + "$$\n\n";
     if (!s.substitution.empty()) out += "   $$" + s.substitution.latex + "$$\n\n";
     if (!s.result.empty()) out += "   $$\\Rightarrow\\; " + s.result.latex + "$$\n\n";
-    if (!s.note.empty() && s.level == Step::Level::Info) out += "   " + s.note + "\n\n";
+    if (!s.note.empty() && s.level == Step::Level::Info) out += "   " + note + "\n\n";
   }
   return out;
 }
 
-std::string render_problem_markdown(const ProblemResult& p) {
+std::string render_problem_markdown(const ProblemResult& p, Lang lang) {
   std::string out = fmt::format("## {} (`{}`)\n\n", p.id, p.kind);
   if (!p.text.empty()) out += p.text + "\n\n";
   if (p.error) return out + fmt::format("**Error:** `{}`\n\n", p.error->format());
-  out += render_steps_markdown(p.derivation.steps());
+  out += render_steps_markdown(p.derivation.steps(), lang);
   out += "**Answers**\n\n| answer | value |\n| --- | --- |\n";
   for (const std::string& name : p.ask)
     if (const Value* v = p.answers.find(name))
@@ -34,10 +35,10 @@ std::string render_problem_markdown(const ProblemResult& p) {
   return out + "\n";
 }
 
-std::string render_markdown(const SetResult& set) {
+std::string render_markdown(const SetResult& set, Lang lang) {
   std::string out = fmt::format("# {}\n\n", set.title.empty() ? set.file : set.title);
   for (const Diagnostic& d : set.errors) out += fmt::format("**Error:** `{}`\n\n", d.format());
-  for (const ProblemResult& p : set.problems) out += render_problem_markdown(p);
+  for (const ProblemResult& p : set.problems) out += render_problem_markdown(p, lang);
   return out;
 }
 

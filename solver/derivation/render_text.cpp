@@ -27,17 +27,18 @@ std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& s
   int number = 0;
   for (const Step& s : steps) {
     const std::string body = indent + "    ";
+    const std::string title = tr(s.title, style.lang), note = tr(s.note, style.lang);
     if (s.level == Step::Level::Warning) {
-      out += fmt::format("{}{}⚠ {}{}\n", indent, a.yellow(), s.title, a.reset());
+      out += fmt::format("{}{}⚠ {}{}\n", indent, a.yellow(), title, a.reset());
     } else if (s.level == Step::Level::Note) {
-      out += fmt::format("{}{}• {}{}\n", indent, a.cyan(), s.title, a.reset());
+      out += fmt::format("{}{}• {}{}\n", indent, a.cyan(), title, a.reset());
     } else {
-      out += fmt::format("{}{}{:>2}. {}{}\n", indent, a.bold(), ++number, s.title, a.reset());
+      out += fmt::format("{}{}{:>2}. {}{}\n", indent, a.bold(), ++number, title, a.reset());
     }
     if (!s.formula.empty()) out += body + s.formula.unicode + "\n";
     if (!s.substitution.empty()) out += body + s.substitution.unicode + "\n";
     if (!s.result.empty()) out += indent + "  ⇒ " + a.bold() + s.result.unicode + a.reset() + "\n";
-    if (!s.note.empty()) out += body + a.dim() + s.note + a.reset() + "\n";
+    if (!s.note.empty()) out += body + a.dim() + note + a.reset() + "\n";
   }
   return out;
 }
@@ -47,11 +48,11 @@ std::string render_problem_text(const ProblemResult& p, const TextStyle& style) 
   std::string out = fmt::format("{}━━ {} · {} ━━{}\n", a.bold(), p.id, p.kind, a.reset());
   if (!p.text.empty()) out += p.text + "\n";
   if (p.error) {
-    out += fmt::format("  {}error:{} {}\n", a.red(), a.reset(), p.error->format());
+    out += fmt::format("  {}{}:{} {}\n", a.red(), tr("error", style.lang), a.reset(), p.error->format());
     return out;
   }
   out += render_steps_text(p.derivation.steps(), style);
-  out += fmt::format("  {}Answers{}\n", a.bold(), a.reset());
+  out += fmt::format("  {}{}{}\n", a.bold(), tr("Answers", style.lang), a.reset());
   for (const std::string& name : p.ask) {
     if (const Value* v = p.answers.find(name))
       out += fmt::format("    {} = {}\n", name, v->shown().unicode);

@@ -34,6 +34,32 @@ Vec3<T> newell_normal(const Polygon3<T>& p) {
   return n;
 }
 
+// The edge pair whose cross product is computed most accurately: the smallest estimated
+// relative error (S·(‖e‖ + ‖f‖) + ‖e‖‖f‖) / ‖e × f‖, S the largest coordinate (rounding of the
+// vertices and of the products, both relative to the product's size). A near-zero edge or a
+// nearly parallel pair scores badly; for a triangle, where every pair has the same exact
+// product, it picks the two shortest edges (the largest angle). Floating-point scalars only
+// (the exact backend has no rounding to avoid).
+template <typename T>
+Vec3<T> best_edge_pair_normal(const Polygon3<T>& p) {
+  T scale = T(0);
+  for (const Vec3<T>& v : p) scale = std::max(scale, v.cwiseAbs().maxCoeff());
+  Vec3<T> best = Vec3<T>::Zero();
+  T best_error = T(-1);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3<T> e = edge(p, i), f = edge(p, i + 1);
+    const Vec3<T> n = e.cross(f);
+    const T size = n.norm();
+    if (!(size > T(0))) continue;
+    const T error = (scale * (e.norm() + f.norm()) + e.norm() * f.norm()) / size;
+    if (best_error < T(0) || error < best_error) {
+      best_error = error;
+      best = n;
+    }
+  }
+  return best;
+}
+
 // What can go wrong with a polygon's normal, found on the exact input.
 struct PolygonAnalysis {
   bool degenerate = false;             // zero normal: all vertices collinear or coincident

@@ -1,9 +1,12 @@
 // seed 003: back-face test. D_f = (p_eye − p_i)·n; D_f > 0 front, D_f < 0 back, 0 edge-on.
 // p0 = (1,0,0), p1 = (1,1,1), p2 = (0,1,2), eye = (0,1,0) → n = (1, −1, 1), v = (−1, 1, 0),
 // D_f = −2: back. The sign is decided exactly, never against a float epsilon.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
+#include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -71,6 +74,10 @@ struct Backface {
              "View vector from p₀ to the eye", reversed_v}};
   }
 
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return backface_numeric(g.points, g.eye, p);
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     if (steps && g.api == Api::DirectX)
       steps->note("Winding in a left-handed frame",
@@ -95,6 +102,12 @@ struct Backface {
       steps->add("Discriminant", math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
                  math("D_f = ") + vec(v) + math("·", "\\cdot") + vec(n), math("D_f = ") + exact(df, true));
       steps->yields("df");
+      std::vector<Eigen::Vector3d> pts;
+      for (const Vec3<Exact>& q : g.points) pts.push_back(to_double(q));
+      if (!df.is_zero())
+        warn_condition(steps, facing_condition(pts, to_double(g.eye)), "Eye nearly in the polygon's plane",
+                       "D_f (its sign, front or back, is decided exactly here; a floating-point sign "
+                       "needs an error-bounded filter with an exact fallback)");
     }
     const int sign = exact_sign(df);
     const std::string facing = sign > 0 ? "front" : sign < 0 ? "back" : "edge_on";
@@ -107,6 +120,30 @@ struct Backface {
       steps->yields("facing");
     }
     return out;
+  }
+  // Default generator: an integer triangle and an eye in [−8, 8]³ well off its plane; hard:
+  // the eye exactly in the plane (edge-on, D_f = 0). D_f is an integer for integer input.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const std::array<IVec3, 3> t = gen_triangle(rng, GenerateOptions{o.nice, false, o.conventions}, -5, 5);
+    const IVec3 eye = o.hard ? iadd(t[0], iadd(iscale(rng.integer(-2, 2), isub(t[1], t[0])),
+                                               iscale(rng.integer(-2, 2), isub(t[2], t[0]))))
+                             : gen_ivec3(rng, -8, 8);
+    YAML::Node g;
+    g["points"] = gen_points({t[0], t[1], t[2]});
+    g["eye"] = gen_list(to_list(eye));
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers& a) {
+    if (triangle_shape(doubles(g.points)) < kMinTriangleShape) return "the polygon is nearly degenerate";
+    const Value* n = a.find("normal");
+    const Value* v = a.find("view");
+    if (n && v) {
+      const double s = sine_between(n->numbers, v->numbers);
+      // |cos| < kMinSine, or a zero vector (sine_between gives 0): the eye grazes the plane.
+      if (s == 0 || 1 - s * s < kMinSine * kMinSine) return "the eye is nearly in the polygon's plane";
+    }
+    return "";
   }
 };
 

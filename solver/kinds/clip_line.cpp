@@ -4,6 +4,7 @@
 // (y < ymin), 0010 right (x > xmax), 0001 left (x < xmin); 3D adds 100000 (z > zmax) and
 // 010000 (z < zmin) in front. A point on a boundary is inside.
 #include "solver/clipping/line_clip.hpp"
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/clip_given.hpp"
 #include "solver/kinds/registry.hpp"
 
@@ -118,6 +119,46 @@ struct ClipLine {
 
   static Answers solve(const Given& g, Derivation* steps) {
     return g.region.dims == 2 ? solve_in<2>(g, g.region.window, steps) : solve_in<3>(g, g.region.volume, steps);
+  }
+  // Default generator: three times in four a 2D segment with integer ends around an integer
+  // window, else a 3D segment (halves) against the NDC cube; hard: a segment along the
+  // window's edge or through its corner.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    YAML::Node g;
+    if (!o.hard && rng.chance(1, 4)) {
+      std::vector<Exact> p, q;
+      for (int i = 0; i < 3; ++i) {
+        p.push_back(Exact(GiNaC::numeric(rng.integer(-4, 4), 2)));
+        q.push_back(Exact(GiNaC::numeric(rng.integer(-4, 4), 2)));
+      }
+      g["p"] = gen_list(p);
+      g["q"] = gen_list(q);
+      return g;
+    }
+    const std::int64_t xmin = rng.integer(0, 2), xmax = xmin + rng.integer(3, 6);
+    const std::int64_t ymin = rng.integer(0, 2), ymax = ymin + rng.integer(3, 6);
+    std::vector<std::int64_t> p, q;
+    if (o.hard && rng.chance(1, 2)) {  // along the left edge, sticking out
+      p = {xmin, ymin - rng.integer(0, 2)};
+      q = {xmin, ymax + rng.integer(1, 2)};
+    } else if (o.hard) {  // through the top-right corner
+      const std::int64_t k = rng.integer(1, 2);
+      p = {xmax - k, ymax - k};
+      q = {xmax + k, ymax + k};
+    } else {
+      p = {rng.integer(xmin - 4, xmax + 4), rng.integer(ymin - 4, ymax + 4)};
+      q = {rng.integer(xmin - 4, xmax + 4), rng.integer(ymin - 4, ymax + 4)};
+    }
+    g["p"] = gen_list(p);
+    g["q"] = gen_list(q);
+    g["window"] = gen_window(xmin, xmax, ymin, ymax);
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers&) {
+    for (std::size_t i = 0; i < g.p.size(); ++i)
+      if (!canonical(g.p[i] - g.q[i]).is_zero()) return "";
+    return "p and q coincide";
   }
 };
 

@@ -4,6 +4,7 @@
 // plane is inside. The answer is the vertex list after the last stage, or null when fewer
 // than three vertices are left.
 #include "solver/clipping/polygon_clip.hpp"
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/clip_given.hpp"
 #include "solver/kinds/registry.hpp"
 
@@ -74,6 +75,41 @@ struct ClipPolygon {
 
   static Answers solve(const Given& g, Derivation* steps) {
     return g.region.dims == 2 ? solve_in<2>(g, g.region.window, steps) : solve_in<3>(g, g.region.volume, steps);
+  }
+  // Default generator: an integer triangle or rectangle overlapping an integer window (drawn
+  // again when wholly outside); hard: vertices on the window's edges.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const std::int64_t xmin = rng.integer(0, 2), xmax = xmin + rng.integer(3, 6);
+    const std::int64_t ymin = rng.integer(0, 2), ymax = ymin + rng.integer(3, 6);
+    std::vector<std::vector<std::int64_t>> pts;
+    if (o.hard) {
+      pts = {{xmin, rng.integer(ymin - 2, ymax + 2)}, {rng.integer(xmin + 1, xmax + 3), ymin},
+             {xmax, rng.integer(ymin + 1, ymax + 3)}};
+    } else if (rng.chance(1, 3)) {
+      const std::int64_t x0 = rng.integer(xmin - 3, xmax), y0 = rng.integer(ymin - 3, ymax);
+      const std::int64_t x1 = x0 + rng.integer(2, 6), y1 = y0 + rng.integer(2, 6);
+      pts = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    } else {
+      for (;;) {
+        pts.clear();
+        for (int i = 0; i < 3; ++i) pts.push_back({rng.integer(xmin - 4, xmax + 4), rng.integer(ymin - 4, ymax + 4)});
+        const std::int64_t area2 = (pts[1][0] - pts[0][0]) * (pts[2][1] - pts[0][1]) -
+                                   (pts[1][1] - pts[0][1]) * (pts[2][0] - pts[0][0]);
+        if (area2 != 0) break;
+      }
+    }
+    YAML::Node g;
+    g["points"] = gen_rows(pts);
+    g["window"] = gen_window(xmin, xmax, ymin, ymax);
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers& a) {
+    const Value* c = a.find("clipped");
+    if (c && c->shape == Value::Shape::Null) return "the polygon is wholly outside";
+    std::vector<std::vector<double>> pts;
+    for (const auto& p : g.points) pts.push_back(doubles(p));
+    return triangle_shape(pts) < kMinTriangleShape ? "the polygon is nearly degenerate" : "";
   }
 };
 

@@ -2,9 +2,13 @@
 // coordinates, which are left-handed (seed 001's warning), so its front normal is AC × AB:
 // A(0,0,6), B(3,0,9), C(0,3,9) → n = (9, 9, −9), n̂ = (1/√3, 1/√3, −1/√3), x + y − z = −6,
 // and the pixel (1, 1) has z = 8.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
+#include "solver/numeric/condition.hpp"
+#include "solver/util/exact_format.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -111,6 +115,10 @@ struct DepthAtPixel {
     return exact_sign((b(0) - a(0)) * (p(1) - a(1)) - (b(1) - a(1)) * (p(0) - a(0)));
   }
 
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return depth_at_pixel_numeric(g.triangle, g.pixel, g.order, p);
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     if (steps)
       steps->note("Projection coordinates are left-handed",
@@ -150,6 +158,14 @@ struct DepthAtPixel {
                  linear_equation({{a * g.pixel(0), ""}, {b * g.pixel(1), ""}, {c, "z"}}, plane[3]),
                  math("z = ", "z_S = ") + exact(z, true));
       steps->yields("z");
+      const DepthCondition cond = depth_condition(to_double(g.triangle[0]), to_double(g.triangle[1]),
+                                                  to_double(g.triangle[2]), to_double(g.pixel));
+      if (cond.kappa_z > kIllConditioned)
+        steps->warn("Nearly edge-on triangle",
+                    "c is small beside the terms it is computed from (κ_c ≈ " + format_approx(cond.kappa_c) +
+                        "), so z = (d − a·xₛ − b·yₛ)/c is ill-conditioned (" + digits_sentence(cond.kappa_z) +
+                        "). A numeric backend (--precision) that would keep fewer than half its digits "
+                        "falls back to barycentric interpolation z = Σ λᵢ zᵢ.");
     }
     // Inside the closed triangle: the three edge orientations agree (zero = on an edge).
     const int s0 = orient2d(g.triangle[0], g.triangle[1], g.pixel);
@@ -167,6 +183,48 @@ struct DepthAtPixel {
       steps->yields("inside");
     }
     return out;
+  }
+  // Default generator: a triangle with x, y in [0, 8] and z in [1, 12] and a lattice pixel
+  // strictly inside it (hard: on an edge); nice: an integer z, (n·A − nₓxₛ − n_y yₛ)/n_z.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    YAML::Node g;
+    for (int attempt = 0; attempt < 2000; ++attempt) {
+      std::array<IVec3, 3> t{};
+      for (IVec3& v : t) v = {rng.integer(0, 8), rng.integer(0, 8), rng.integer(1, 12)};
+      std::vector<std::vector<double>> xy;
+      for (const IVec3& v : t) xy.push_back({double(v[0]), double(v[1])});
+      const double shape = triangle_shape(xy);
+      if (shape == 0 || (!o.hard && shape < kMinTriangleShape)) continue;
+      auto orient = [](const IVec3& a, const IVec3& b, std::int64_t x, std::int64_t y) {
+        const std::int64_t v = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]);
+        return v > 0 ? 1 : v < 0 ? -1 : 0;
+      };
+      std::vector<std::pair<std::int64_t, std::int64_t>> pixels;
+      for (std::int64_t x = 0; x <= 8; ++x)
+        for (std::int64_t y = 0; y <= 8; ++y) {
+          const int s0 = orient(t[0], t[1], x, y), s1 = orient(t[1], t[2], x, y), s2 = orient(t[2], t[0], x, y);
+          const bool strict = (s0 > 0 && s1 > 0 && s2 > 0) || (s0 < 0 && s1 < 0 && s2 < 0);
+          const bool edge = !strict && (s0 * s1 >= 0 && s1 * s2 >= 0 && s0 * s2 >= 0) && (s0 || s1 || s2);
+          if (o.hard ? edge : strict) pixels.emplace_back(x, y);
+        }
+      if (pixels.empty()) continue;
+      const auto [px, py] = rng.pick(pixels);
+      const IVec3 n = icross(isub(t[2], t[0]), isub(t[1], t[0]));  // seed 001: AC × AB
+      if (o.nice && (idot(n, t[0]) - n[0] * px - n[1] * py) % n[2] != 0) continue;
+      g["triangle"] = gen_points({t[0], t[1], t[2]});
+      g["pixel"] = gen_list({px, py});
+      return g;
+    }
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers&) {
+    std::vector<std::vector<double>> xy;
+    for (const Vec3<Exact>& v : g.triangle) xy.push_back({to_double(v(0)), to_double(v(1))});
+    if (triangle_shape(xy) < kMinTriangleShape) return "the triangle is nearly edge-on";
+    for (int i = 0; i < 3; ++i)
+      if (orient2d(g.triangle[i], g.triangle[(i + 1) % 3], g.pixel) == 0) return "the pixel is on an edge";
+    return "";
   }
 };
 

@@ -1,10 +1,12 @@
 // seeds 001, 003: the depth-sort (painter's) algorithm — centroids, depths, the back-to-front
 // order — and the pairs where it fails: cyclic overlap (三すくみ), interpenetration (貫通) and
 // concave polygons, decided exactly from the geometry over each pair's overlap on screen.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/depth_order.hpp"
+#include "solver/visibility/drawable.hpp"
 
 #include <fmt/format.h>
 
@@ -52,6 +54,15 @@ struct DepthSort {
     if (r.has("eye")) g.viewer.eye = r.vector<3>("eye");
     else g.viewer.view_direction = r.vector<3>("view_direction");
     return g;
+  }
+
+  // `frustum draw`: the painter's result next to the z-buffer's.
+  static Drawable drawable(const Given& g) {
+    Drawable d;
+    d.picture = Drawable::Picture::PainterVsZBuffer;
+    d.polygons = g.polygons;
+    d.viewer = g.viewer;
+    return d;
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
@@ -128,6 +139,46 @@ struct DepthSort {
     }
     steps->yields("conflicts");
     return out;
+  }
+  // Default generator: two or three rectangles facing the viewer at distinct integer depths
+  // (some sloped), seen along −z or from the origin; hard: two sloped polygons crossing in depth
+  // over the same area (interpenetrating: the centroid order cannot be right everywhere).
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    YAML::Node polygons(YAML::NodeType::Sequence);
+    auto quad = [&](std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1, std::int64_t z0, std::int64_t z1) {
+      polygons.push_back(gen_rows({{x0, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z0}}));
+    };
+    if (o.hard) {
+      const std::int64_t near = -rng.integer(2, 4), far = near - rng.integer(4, 8);
+      quad(-3, -2, 3, 2, near, far);
+      quad(-2, -3, 2, 3, far, near + rng.integer(-1, 0));
+    } else {
+      std::vector<std::int64_t> depths = {-2, -3, -4, -5, -6, -7, -8, -9, -10, -11, -12};
+      const auto count = rng.integer(2, 3);
+      for (std::int64_t i = 0; i < count; ++i) {
+        const std::size_t k = static_cast<std::size_t>(rng.below(depths.size()));
+        const std::int64_t z = depths[k];
+        depths.erase(depths.begin() + static_cast<std::ptrdiff_t>(k));
+        const std::int64_t x0 = rng.integer(-4, 1), y0 = rng.integer(-4, 1);
+        const std::int64_t slope = o.nice || rng.chance(2, 3) ? 0 : rng.nonzero(-1, 1);
+        quad(x0, y0, x0 + rng.integer(2, 5), y0 + rng.integer(2, 5), z, z + slope);
+      }
+    }
+    polygons.SetStyle(YAML::EmitterStyle::Flow);
+    YAML::Node g;
+    g["polygons"] = polygons;
+    if (rng.chance(1, 3)) g["eye"] = gen_list({0, 0, 0});
+    else g["view_direction"] = gen_list({0, 0, -1});
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given&, const Answers& a) {
+    const Value* d = a.find("depths");
+    if (!d) return "";
+    for (std::size_t i = 0; i < d->numbers.size(); ++i)
+      for (std::size_t j = i + 1; j < d->numbers.size(); ++j)
+        if (d->numbers[i] == d->numbers[j]) return "two centroids at the same depth (the order is ambiguous)";
+    return "";
   }
 };
 

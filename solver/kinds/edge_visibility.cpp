@@ -3,12 +3,15 @@
 // or hidden (back–back). Back-face culling alone removes every hidden surface only for a
 // single closed convex polyhedron (the seed's (a)–(d) question).
 #include "solver/geometry/polygon_normal.hpp"
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
 #include "solver/kinds/registry.hpp"
+#include "solver/kinds/scene_reader.hpp"
 #include "solver/kinds/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/viewing/transforms.hpp"
+#include "solver/visibility/drawable.hpp"
 #include "solver/visibility/edge_classes.hpp"
 
 #include <fmt/format.h>
@@ -46,32 +49,7 @@ struct EdgeVisibility {
 
   static Mesh read_mesh(GivenReader& r) {
     GivenReader m = r.child("mesh", {"vertices", "faces"});
-    Mesh mesh;
-    mesh.vertices = m.points("vertices", 4);
-    const std::size_t count = m.list_size("faces", 4);
-    const YAML::Node faces = m.node()["faces"];
-    const auto n = static_cast<long>(mesh.vertices.size());
-    for (std::size_t f = 0; f < count; ++f) {
-      const std::string at = fmt::format("faces[{}]", f);
-      const YAML::Node face = faces[f];
-      if (!face.IsSequence() || face.size() < 3)
-        throw InputError(m.locate(at, "expected a list of at least 3 vertex indices"));
-      std::vector<int> idx;
-      for (std::size_t k = 0; k < face.size(); ++k) {
-        const std::string field = fmt::format("{}[{}]", at, k);
-        const Exact v = read_number(face[k], m.file(), "mesh." + field);
-        if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_integer() ||
-            GiNaC::ex_to<GiNaC::numeric>(v).to_long() < 0 || GiNaC::ex_to<GiNaC::numeric>(v).to_long() >= n)
-          throw InputError(m.locate(field, fmt::format("expected a vertex index from 0 to {}", n - 1)));
-        const int i = static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(v).to_long());
-        if (std::find(idx.begin(), idx.end(), i) != idx.end())
-          throw InputError(m.locate(field, fmt::format("vertex {} appears twice in this face", i)));
-        idx.push_back(i);
-      }
-      mesh.faces.push_back(idx);
-    }
-    m.finish();
-    return mesh;
+    return frustum::read_mesh(m, 4, 4);
   }
 
   // One step of the `transform` kind's format (3D): translate, scale, rotate_x/y/z, rotate.
@@ -296,10 +274,54 @@ struct EdgeVisibility {
     return out;
   }
 
+  // `frustum draw`: the transformed mesh seen from the eye, hidden lines removed per segment.
+  static Drawable drawable(const Given& g) {
+    Drawable d;
+    d.picture = Drawable::Picture::HiddenLines;
+    d.mesh = transformed(g, nullptr);
+    const MeshCheck check = check_mesh(d.mesh);
+    if (!check.closed || !check.oriented)
+      throw DomainError(g.field, check.problem + " — the hidden-line picture needs a closed, consistently "
+                                                 "oriented polyhedron");
+    d.viewer.eye = g.eye;
+    return d;
+  }
+
   static bool analyse_polygon_degenerate(const Mesh& m, std::size_t f) {
     Polygon3<Exact> p;
     for (int k : m.faces[f]) p.push_back(m.vertices[static_cast<std::size_t>(k)]);
     return analyse_polygon(p).degenerate;
+  }
+  // Default generator: one of the five solids seen from an integer eye at distance ≥ 5 (outside
+  // every solid); hard: the eye in a face's plane (cube face x = ±1 or octahedron face
+  // x + y + z = 1), so that face is edge-on.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    YAML::Node g;
+    IVec3 eye{};
+    if (o.hard && rng.chance(1, 2)) {
+      g["solid"] = gen_word("cube");
+      const IVec3 e = {rng.pick(std::vector<std::int64_t>{-1, 1}), rng.nonzero(-5, 5) * 2, rng.integer(-5, 5)};
+      const auto shift = rng.below(3);
+      for (std::size_t i = 0; i < 3; ++i) eye[(i + shift) % 3] = e[i];
+    } else if (o.hard) {
+      g["solid"] = gen_word("octahedron");
+      const std::int64_t a = rng.integer(2, 5), b = rng.integer(-5, 5);
+      eye = {a, b, 1 - a - b};
+    } else {
+      g["solid"] = gen_word(rng.pick(solid_names()));
+      do {
+        eye = gen_ivec3(rng, -9, 9);
+      } while (idot(eye, eye) < 25);
+    }
+    g["eye"] = gen_list(to_list(eye));
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given&, const Answers& a) {
+    if (const Value* f = a.find("faces"))
+      for (const auto& [face, word] : f->entries)
+        if (word == "edge_on") return "the eye is in the plane of face " + face;
+    return "";
   }
 };
 

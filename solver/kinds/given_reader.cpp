@@ -41,7 +41,7 @@ std::string describe_node(const YAML::Node& n) {
     case YAML::NodeType::Sequence: return "a list of " + std::to_string(n.size());
     case YAML::NodeType::Map: return "a mapping";
     case YAML::NodeType::Null: return "nothing";
-    case YAML::NodeType::Scalar: return "'" + n.Scalar() + "'";
+    case YAML::NodeType::Scalar: return quote_excerpt(n.Scalar());
     default: return "nothing";
   }
 }
@@ -55,14 +55,14 @@ Exact read_number(const YAML::Node& n, const std::string& file, const std::strin
   if (!n.IsDefined() || n.IsNull()) return fail("expected a number, got nothing");
   if (!n.IsScalar()) return fail("expected a number, got " + describe_node(n));
   const std::string& text = n.Scalar();
-  if (names_non_finite(text)) return fail("'" + text + "' is not a finite number");
+  if (names_non_finite(text)) return fail(quote_excerpt(text) + " is not a finite number");
   const std::string l = lower(text);
   if (l == "true" || l == "false" || l == "yes" || l == "no")
-    return fail("expected a number, got '" + text + "'");
+    return fail("expected a number, got " + quote_excerpt(text));
   const ExpressionResult r = parse_expression(text);
-  if (!r) return fail("cannot read '" + text + "' as a number: " + r.error);
+  if (!r) return fail("cannot read " + quote_excerpt(text) + " as a number: " + r.error);
   const Exact e = canonical(*r.value);
-  if (!is_real_constant(e)) return fail("'" + text + "' is not a real number");
+  if (!is_real_constant(e)) return fail(quote_excerpt(text) + " is not a real number");
   return e;
 }
 

@@ -5,7 +5,10 @@
 
 #include "solver/derivation/derivation.hpp"
 #include "solver/derivation/value.hpp"
+#include "solver/numeric/numeric_result.hpp"
 #include "solver/viewing/conventions.hpp"
+
+#include <yaml-cpp/yaml.h>
 
 #include <any>
 #include <functional>
@@ -15,6 +18,9 @@
 namespace frustum {
 
 class GivenReader;
+class Rng;
+struct GenerateOptions;  // generate.hpp
+struct Drawable;         // solver/visibility/drawable.hpp
 
 // How an answer is compared: the equivalences the grader applies.
 enum class AnswerKind {
@@ -65,6 +71,17 @@ struct KindInfo {
   std::function<Answers(const std::any& given, const Answers& student)> carry_forward;
   // Optional. The answers that common mistakes produce.
   std::function<std::vector<Misconception>(const std::any& given)> misconceptions;
+  // Optional. The numeric path in a backend (values only, no steps; `frustum solve
+  // --precision`, `frustum bench accuracy`): inputs converted once, run() only computes.
+  std::function<std::unique_ptr<NumericSolver>(const std::any& given, Precision)> solve_numeric;
+  // Optional. The kind's default generator (generate.hpp): a fresh `given`, as YAML that then
+  // goes through `parse` like a hand-written one; used when a varied problem has no `vary`.
+  std::function<YAML::Node(Rng&, const GenerateOptions&)> generate;
+  // Optional. Why a solved variant is ill-conditioned ("" when it is fine): a near-degenerate
+  // triangle, the eye in a face's plane, a point behind the eye. Such draws are redrawn.
+  std::function<std::string(const std::any& given, const Answers& answers)> ill_conditioned;
+  // Optional. The geometry `frustum draw` pictures (hidden lines, painter vs z-buffer).
+  std::function<Drawable(const std::any& given)> drawable;
 
   const AnswerSpec* answer(const std::string& name) const;
 };
@@ -88,6 +105,18 @@ KindInfo make_kind() {
     };
   if constexpr (requires(const G& g) { K::misconceptions(g); })
     k.misconceptions = [](const std::any& g) { return K::misconceptions(std::any_cast<const G&>(g)); };
+  if constexpr (requires(const G& g) { K::solve_numeric(g, Precision::Double); })
+    k.solve_numeric = [](const std::any& g, Precision p) {
+      return K::solve_numeric(std::any_cast<const G&>(g), p);
+    };
+  if constexpr (requires(Rng& r, const GenerateOptions& o) { K::generate(r, o); })
+    k.generate = [](Rng& r, const GenerateOptions& o) { return K::generate(r, o); };
+  if constexpr (requires(const G& g, const Answers& a) { K::ill_conditioned(g, a); })
+    k.ill_conditioned = [](const std::any& g, const Answers& a) {
+      return K::ill_conditioned(std::any_cast<const G&>(g), a);
+    };
+  if constexpr (requires(const G& g) { K::drawable(g); })
+    k.drawable = [](const std::any& g) { return K::drawable(std::any_cast<const G&>(g)); };
   return k;
 }
 

@@ -1,6 +1,7 @@
 #include "solver/kinds/kind_steps.hpp"
 
 #include "solver/geometry/polygon_normal.hpp"
+#include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 
@@ -19,6 +20,21 @@ std::optional<std::vector<Exact>> carried(const Answers& student, const std::str
   if (all_zero) return std::nullopt;
   return v->exact;
 }
+
+void warn_condition(Derivation* steps, double kappa, const std::string& title, const std::string& what) {
+  if (!steps || !(kappa > kIllConditioned)) return;
+  steps->warn(title, what + " is ill-conditioned (" + digits_sentence(kappa) + ").");
+}
+
+namespace {
+
+std::vector<Eigen::Vector3d> to_doubles(const Polygon3<Exact>& p) {
+  std::vector<Eigen::Vector3d> out;
+  for (const Vec3<Exact>& v : p) out.push_back(to_double(v));
+  return out;
+}
+
+}  // namespace
 
 std::string point_name(const std::string& stem, std::size_t i) {
   return stem + std::to_string(i);
@@ -89,6 +105,8 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
                               "computed exactly.",
                               a.worst_pair, (a.worst_pair + 1) % p.size(),
                               format_approx(a.min_sine), std::log10(a.condition)));
+    warn_condition(steps, normal_condition(to_doubles(p)), "Ill-conditioned normal",
+                   "The normal's direction");
     if (!a.planar)
       steps->warn("Non-planar polygon",
                   fmt::format("vertex p{} is not in the plane of the others; the normal is the "
@@ -175,6 +193,8 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
                         order.second + "}"),
                math("n = ", "\\mathbf{n} = ") + vec(u) + math(" × ", " \\times ") + vec(v),
                math("n = ", "\\mathbf{n} = ") + vec(n));
+    warn_condition(steps, normal_condition(to_doubles({abc[0], abc[1], abc[2]})),
+                   "Ill-conditioned normal", "The normal's direction");
   }
   return n;
 }

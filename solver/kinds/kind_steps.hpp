@@ -34,6 +34,10 @@ Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps);
 std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
                                           std::size_t size);
 
+// A warning that an answer is ill-conditioned (κ above kIllConditioned in condition.hpp):
+// the condition estimate and the digits float, double and long double would keep.
+void warn_condition(Derivation* steps, double kappa, const std::string& title, const std::string& what);
+
 // "p0, p1, p2" style names.
 std::string point_name(const std::string& stem, std::size_t i);
 

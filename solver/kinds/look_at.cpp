@@ -1,6 +1,7 @@
 // The view matrix of gluLookAt / Processing's camera() (seed 000: camera(eye, center, up)),
 // or DirectX's LookAtLH: rows are the camera's axes, the last column moves the eye to the
 // origin.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
 #include "solver/kinds/registry.hpp"
@@ -39,6 +40,39 @@ struct LookAt {
     for (const Vec3<Exact>& p : g.points) points.push_back({p(0), p(1), p(2)});
     out.set("points", transform_points_with_steps(m, points, "A point in view coordinates", "p", steps));
     return out;
+  }
+  // Default generator: center in [−2, 2]³, eye a few units away, up (0, 1, 0), and points near
+  // the center (in front of the camera); nice: the view direction in the xz-plane with an
+  // integer length, so every entry is rational; hard: up nearly along the view direction.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const IVec3 center = gen_ivec3(rng, -2, 2);
+    IVec3 d{};
+    if (o.hard) {
+      d = {rng.integer(-1, 1), 12, rng.nonzero(-1, 1)};
+    } else if (o.nice) {
+      const std::vector<IVec3> dirs = {{0, 0, 5}, {5, 0, 0}, {3, 0, 4}, {4, 0, 3}, {-3, 0, 4}, {0, 0, -5}, {-4, 0, -3}};
+      d = rng.pick(dirs);
+    } else {
+      do {
+        d = gen_ivec3(rng, -6, 6);
+      } while (idot(d, d) < 9 ||
+               sine_between({double(d[0]), double(d[1]), double(d[2])}, {0, 1, 0}) < 0.3);
+    }
+    std::vector<IVec3> points;
+    const auto n = rng.integer(1, 2);
+    for (std::int64_t i = 0; i < n; ++i) points.push_back(iadd(center, gen_ivec3(rng, -1, 1)));
+    YAML::Node g;
+    g["eye"] = gen_list(to_list(iadd(center, d)));
+    g["center"] = gen_list(to_list(center));
+    g["up"] = gen_list({0, 1, 0});
+    g["points"] = gen_points(points);
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers&) {
+    return sine_between(doubles(Vec3<Exact>(g.center - g.eye)), doubles(g.up)) < kMinSine
+               ? "up is nearly parallel to the view direction"
+               : "";
   }
 };
 

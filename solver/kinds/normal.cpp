@@ -1,7 +1,9 @@
 // The normal of a polygon (counter-clockwise = front, seed 003) or of a triangle ABC with an
 // explicit cross-product order (seed 001: AC × AB in left-handed projection coordinates).
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -37,6 +39,10 @@ struct Normal {
     return g;
   }
 
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return normal_numeric(g.points, g.order, p);
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     Vec3<Exact> n;
     if (g.order) {
@@ -49,6 +55,18 @@ struct Normal {
     out.set("normal", Value::vector(n));
     out.set("unit_normal", Value::vector(unit_normal_with_steps(n, steps)));
     return out;
+  }
+  // Default generator: an integer triangle (gen_triangle: nice gives an integer ‖n‖, hard a
+  // nearly collinear one).
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const std::array<IVec3, 3> t = gen_triangle(rng, o, -5, 5);
+    YAML::Node g;
+    g["points"] = gen_points({t[0], t[1], t[2]});
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers&) {
+    return triangle_shape(doubles(g.points)) < kMinTriangleShape ? "the polygon is nearly degenerate" : "";
   }
 };
 

@@ -1,7 +1,9 @@
 // The plane through three or more points, or through a point with a normal (seed 001:
 // n·(r − r₀) = 0 → ax + by + cz = d; the distance from the origin is |d| / ‖n‖).
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -63,6 +65,10 @@ struct Plane {
     return out;
   }
 
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return plane_numeric(g.points, g.point, g.normal, p);
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     Vec3<Exact> n = g.normal;
     Vec3<Exact> p0 = g.point;
@@ -95,6 +101,30 @@ struct Plane {
       steps->yields("distance");
     }
     return out;
+  }
+  // Default generator: three integer points (three times in four) or a point and an integer
+  // normal; nice: an integer ‖n‖, so the unit normal and the distance are rational.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    YAML::Node g;
+    if (o.hard || rng.chance(3, 4)) {
+      const std::array<IVec3, 3> t = gen_triangle(rng, o, -5, 5);
+      g["points"] = gen_points({t[0], t[1], t[2]});
+      return g;
+    }
+    IVec3 n{};
+    for (int attempt = 0; attempt < 2000; ++attempt) {
+      n = gen_ivec3(rng, -4, 4);
+      if (idot(n, n) != 0 && (!o.nice || is_square(idot(n, n)))) break;
+    }
+    g["point"] = gen_list(to_list(gen_ivec3(rng, -5, 5)));
+    g["normal"] = gen_list(to_list(n));
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers&) {
+    return !g.points.empty() && triangle_shape(doubles(g.points)) < kMinTriangleShape
+               ? "the points are nearly collinear"
+               : "";
   }
 };
 

@@ -13,7 +13,7 @@ namespace frustum {
 namespace {
 
 const std::vector<std::string> kSetFields = {"title", "conventions", "tolerance", "problems",
-                                             "description", "grading"};
+                                             "description", "grading", "variants"};
 const std::vector<std::string> kProblemFields = {"id",     "kind",        "text",
                                                  "given",  "ask",         "points",
                                                  "vary",   "conventions", "tolerance",
@@ -112,6 +112,20 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
       if (!spec.info->answer(k)) fail_at(it->first, file, f, "not an answer of " + spec.kind + did_you_mean(k, answer_names));
       spec.answer_tolerance[k] = read_tolerance(it->second, file, f, spec.tolerance);
     }
+  // Variation (generate.hpp): `vary`, `nice: true`, `difficulty: normal|hard`.
+  if (p["vary"].IsDefined() && !p["vary"].IsNull()) spec.vary = p["vary"];
+  if (p["nice"].IsDefined()) {
+    const std::string v = read_string(p["nice"], file, spec.field + ".nice");
+    if (v != "true" && v != "false") fail_at(p["nice"], file, spec.field + ".nice", "must be true or false");
+    spec.nice = v == "true";
+  }
+  if (p["difficulty"].IsDefined()) {
+    const std::string v = read_string(p["difficulty"], file, spec.field + ".difficulty");
+    if (v != "normal" && v != "hard")
+      fail_at(p["difficulty"], file, spec.field + ".difficulty",
+              "'" + v + "' is not one of normal, hard" + did_you_mean(v, {"normal", "hard"}));
+    spec.hard = v == "hard";
+  }
   spec.given_node = p["given"];
   GivenReader reader(p["given"], file, spec.field + ".given", spec.info->given_fields);
   spec.given = spec.info->parse(reader, spec.conventions);
@@ -227,12 +241,23 @@ ProblemSet load_problem_set_from(const YamlDocument& doc, const std::string& nam
     set.errors.push_back(*doc.error);
     return set;
   }
+  if (doc.invalid_utf8) set.errors.push_back(*doc.invalid_utf8);
   const YAML::Node& root = doc.root;
   try {
+    if (root.IsNull() && root.Mark().line < 0)
+      throw InputError(Diagnostic{SourceLocation{name, 1, 1}, "",
+                                  "the file is empty: expected a mapping with a 'problems' list"});
     if (!root.IsMap())
       fail_at(root, name, "", "expected a problem set: a mapping with a 'problems' list");
     check_keys(root, kSetFields, name, "");
     if (root["title"].IsDefined()) set.title = read_string(root["title"], name, "title");
+    if (root["variants"].IsDefined()) {
+      const std::string v = read_string(root["variants"], name, "variants");
+      if (v != "per_student" && v != "fixed")
+        fail_at(root["variants"], name, "variants",
+                "'" + v + "' is not one of per_student, fixed" + did_you_mean(v, {"per_student", "fixed"}));
+      set.per_student = v == "per_student";
+    }
     set.conventions = read_conventions(root["conventions"], name, "conventions", {});
     set.tolerance = read_tolerance(root["tolerance"], name, "tolerance", {});
     set.grading = read_grading(root["grading"], name, "grading", {});

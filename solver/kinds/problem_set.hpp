@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <any>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -56,6 +57,9 @@ struct ProblemSpec {
   const KindInfo* info = nullptr;
   std::any given;                 // the kind's parsed Given
   YAML::Node given_node;
+  YAML::Node vary;            // the `vary:` block (generate.hpp); undefined when absent
+  bool nice = false;          // nice: true — integer or simple exact answers
+  bool hard = false;          // difficulty: hard — near-degenerate cases on purpose
   std::optional<Diagnostic> error;
 
   double max_score() const;
@@ -64,9 +68,17 @@ struct ProblemSpec {
   const Tolerance& tolerance_for(const std::string& name) const;
 };
 
+// Which per-student variant a set is (variants.hpp): the student and the variant's seed.
+struct VariantInfo {
+  std::string student;
+  std::uint64_t seed = 0;
+};
+
 struct ProblemSet {
   std::string file;
   std::string title;
+  bool per_student = false;            // variants: per_student
+  std::optional<VariantInfo> variant;  // set when this is a generated variant
   Conventions conventions;
   Tolerance tolerance;
   Grading grading;

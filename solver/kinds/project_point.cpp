@@ -2,11 +2,17 @@
 // viewport): clip coordinates, NDC, window coordinates with depth in [0, 1], and whether it
 // lies inside the view volume. A point at or behind the eye (w ≤ 0) is reported as such and
 // never divided.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
+#include "solver/numeric/condition.hpp"
+#include "solver/util/exact_format.hpp"
 #include "solver/kinds/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
+
+#include <fmt/format.h>
 
 namespace frustum {
 
@@ -111,7 +117,18 @@ struct ProjectPoint {
       variant("fovx for fovy", "You used the angle as the horizontal field of view; perspective() takes the vertical one (fovy).",
               "The frustum of perspective(fovy, aspect, near, far)", fovx);
     }
+    // near/far sign: the planes' z coordinates (−n, −f) put into the matrix instead of the
+    // distances n, f.
+    Given signs = g;
+    signs.projection.volume.near = canonical(-g.projection.volume.near);
+    signs.projection.volume.far = canonical(-g.projection.volume.far);
+    variant("near/far sign", "near and far are distances in front of the eye (positive); you used the planes' z coordinates −n and −f.",
+            "Clip coordinates", signs);
     return out;
+  }
+
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return project_point_numeric(g.point, g.camera, g.projection, g.width, g.height, g.api, p);
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
@@ -139,6 +156,21 @@ struct ProjectPoint {
     }
     const Exact& w = clip(3);
     const int w_sign = exact_sign(w);
+    if (steps && w_sign > 0) {
+      // How far the point is from the eye's plane, relative to the terms of w.
+      Eigen::Vector4d row, ph;
+      for (int j = 0; j < 4; ++j) row(j) = to_double(m(3, j));
+      ph << to_double(p(0)), to_double(p(1)), to_double(p(2)), 1.0;
+      warn_condition(steps, w_condition(row, ph), "Point close to the eye's plane",
+                     "w_c, and the NDC divided by it,");
+      const double n = to_double(g.projection.volume.near), f = to_double(g.projection.volume.far);
+      if (g.projection.type != ProjectionSpec::Type::Ortho && f / n >= kDepthRatioNote)
+        steps->note("Depth precision",
+                    fmt::format("far/near = {:.0e}: a float depth buffer in [0, 1] separates surfaces at "
+                                "this distance only when they are more than Δz ≈ {} apart (Δz ≈ 2⁻²⁴(f − n)z²/(f·n); "
+                                "reversed-Z keeps far more, see docs/accuracy.md).",
+                                f / n, format_approx(float_depth_resolution(n, f, to_double(w)))));
+    }
     // Inside the view volume: −w ≤ x, y ≤ w and −w ≤ z ≤ w (DirectX: 0 ≤ z ≤ w).
     bool inside = w_sign > 0;
     for (int i = 0; i < 3 && inside; ++i) {
@@ -165,7 +197,7 @@ struct ProjectPoint {
         steps->yields("ndc");
         const std::string y_rule = g.api == Api::DirectX ? "y_w = (1 − y)/2·height (window y down)"
                                    : g.api == Api::Processing
-                                       ? "y_w = (y + 1)/2·height (window y down; the projection already negated y)"
+                                       ? "y_w = (1 − y)/2·height (window y down, Processing's screenY; its projection negated y for its y-down world)"
                                        : "y_w = (y + 1)/2·height (window origin bottom-left)";
         const std::string z_rule = g.api == Api::DirectX ? "depth = z" : "depth = (z + 1)/2";
         steps->add("Viewport", math("x_w = (x + 1)/2·width,  " + y_rule + ",  " + z_rule),
@@ -182,6 +214,53 @@ struct ProjectPoint {
       steps->yields("inside");
     }
     return out;
+  }
+  // Default generator: perspective (fovy 45°/60°/90°, aspect of the viewport) or a symmetric
+  // frustum, and a point in front of the eye between near and far (hard: between the eye and
+  // the near plane), in view coordinates or, one time in three, in world coordinates seen by
+  // camera {eye: (0, 0, k), center: 0, up: y}; nice: fovy 90°.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{{200, 200}, {400, 300}, {640, 480}, {800, 600}});
+    const std::int64_t near = rng.integer(1, 3);
+    const std::int64_t far = near + rng.integer(20, 100);
+    YAML::Node g, p, vp;
+    const bool frustum = !o.nice && rng.chance(1, 4);
+    if (frustum) {
+      const std::int64_t half = rng.integer(1, 2);
+      p["left"] = gen_number(-half);
+      p["right"] = gen_number(half);
+      p["bottom"] = gen_number(-half);
+      p["top"] = gen_number(half);
+    } else {
+      p["fovy"] = gen_angle(o.nice ? 90 : rng.pick(std::vector<std::int64_t>{45, 60, 90}), o.conventions);
+      p["aspect"] = gen_fraction(w, h);
+    }
+    p["near"] = gen_number(near);
+    p["far"] = gen_number(far);
+    const Exact depth = o.hard ? Exact(GiNaC::numeric(near, rng.integer(2, 10))) : Exact(rng.integer(near + 1, far - 1));
+    const Exact x = depth * GiNaC::numeric(rng.integer(-2, 2), 4), y = depth * GiNaC::numeric(rng.integer(-2, 2), 4);
+    const int toward = o.conventions.api == Api::DirectX ? 1 : -1;
+    if (!o.hard && rng.chance(1, 3)) {
+      const std::int64_t k = rng.integer(2, 10);
+      YAML::Node cam;
+      cam["eye"] = gen_list({0, 0, k});
+      cam["center"] = gen_list({0, 0, 0});
+      cam["up"] = gen_list({0, 1, 0});
+      g["point"] = gen_list(std::vector<Exact>{x, y, Exact(k) - depth});
+      g["camera"] = cam;
+    } else {
+      g["point"] = gen_list(std::vector<Exact>{x, y, toward * depth});
+    }
+    g[frustum ? "frustum" : "perspective"] = p;
+    vp["width"] = gen_number(w);
+    vp["height"] = gen_number(h);
+    g["viewport"] = vp;
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given&, const Answers& a) {
+    const Value* clip = a.find("clip");
+    return clip && clip->numbers.size() == 4 && clip->numbers[3] <= 0 ? "the point is behind the eye" : "";
   }
 };
 

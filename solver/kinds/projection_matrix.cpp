@@ -1,4 +1,5 @@
 // The matrix of perspective(), frustum() or ortho() in the set's conventions (seeds 000, 004).
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/kinds/viewing_steps.hpp"
@@ -21,6 +22,33 @@ struct ProjectionMatrix {
     Answers out;
     out.set("matrix", matrix_value(paper_form(projection_with_steps(g.projection, g.api, steps), g.api)));
     return out;
+  }
+  // Default generator: perspective (fovy, aspect, near, far), frustum or ortho with integer
+  // bounds; nice: fovy 90° or 60°; hard: a tiny near plane (1/100) against a far one of 1000.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    YAML::Node g, p;
+    const auto which = rng.below(3);
+    const std::int64_t near = rng.integer(1, 4);
+    const YAML::Node n = o.hard ? gen_fraction(1, 100) : gen_number(near);
+    const YAML::Node f = o.hard ? gen_number(1000) : gen_number(near + rng.integer(2, 60));
+    if (which == 0) {
+      p["fovy"] = gen_angle(rng.pick(o.nice ? std::vector<std::int64_t>{60, 90} : std::vector<std::int64_t>{30, 45, 60, 90, 120}),
+                            o.conventions);
+      p["aspect"] = rng.pick(std::vector<YAML::Node>{gen_number(1), gen_fraction(4, 3), gen_fraction(16, 9), gen_number(2)});
+      p["near"] = n;
+      p["far"] = f;
+      g["perspective"] = p;
+      return g;
+    }
+    const std::int64_t half = rng.integer(1, 4);
+    p["left"] = gen_number(rng.chance(1, 2) ? -half : -rng.integer(1, 4));
+    p["right"] = gen_number(half);
+    p["bottom"] = gen_number(-rng.integer(1, 3));
+    p["top"] = gen_number(rng.integer(1, 3));
+    p["near"] = n;
+    p["far"] = f;
+    g[which == 1 ? "frustum" : "ortho"] = p;
+    return g;
   }
 };
 

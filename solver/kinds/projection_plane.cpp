@@ -3,6 +3,7 @@
 // (Processing's default camera z); a point P in view coordinates projects to
 // P′ = P · (s / z_P) on it. Window 200×200, fov 60°: s = −100√3, and P(0, 100, −300) ↦
 // P′ = (0, 100√3/3, −100√3).
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/kinds/viewing_steps.hpp"
@@ -75,6 +76,18 @@ struct ProjectionPlane {
       steps->yields("projected");
     }
     return out;
+  }
+  // Default generator: a window of 200×200, 400×300 or 640×480 pixels, fov 30°…90° (nice: 60°
+  // or 90°; hard: 150°), and a point 100…400 in front of the eye.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{{200, 200}, {400, 300}, {640, 480}});
+    const std::int64_t fov = o.hard ? 150 : rng.pick(o.nice ? std::vector<std::int64_t>{60, 90} : std::vector<std::int64_t>{30, 45, 60, 90});
+    const int toward = o.conventions.api == Api::DirectX ? 1 : -1;
+    YAML::Node g;
+    g["window"] = gen_list({w, h});
+    g["fov"] = gen_angle(fov, o.conventions);
+    g["point"] = gen_list({10 * rng.integer(-10, 10), 10 * rng.integer(-10, 10), toward * 10 * rng.integer(10, 40)});
+    return g;
   }
 };
 

@@ -48,6 +48,7 @@ const Registry& builtin_kinds() {
     r.add(zbuffer_kind());
     r.add(edge_visibility_kind());
     r.add(depth_sort_kind());
+    r.add(render_kind());
     return r;
   }();
   return registry;

@@ -42,5 +42,6 @@ KindInfo scan_convert_kind();
 KindInfo zbuffer_kind();
 KindInfo edge_visibility_kind();
 KindInfo depth_sort_kind();
+KindInfo render_kind();
 
 }  // namespace frustum

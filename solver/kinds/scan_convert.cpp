@@ -2,6 +2,7 @@
 // the top-left fill rule (rasterizer.hpp). Pixel (i, j) has its centre at (i + ½, j + ½),
 // window y up; vertices are snapped to 1/256 pixel and the edge functions evaluated exactly.
 // `pixels` lists [i, j] sorted by j, then i.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/raster/rasterizer.hpp"
@@ -106,6 +107,33 @@ struct ScanConvert {
     Answers out;
     out.set("pixels", Value::matrix(px));
     return out;
+  }
+  // Default generator: a triangle with integer vertices in [0, 8]² (hard: at pixel centres,
+  // so that edges pass through centres and the top-left rule decides).
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    std::vector<Exact> t[3];
+    for (int attempt = 0; attempt < 1000; ++attempt) {
+      std::vector<std::vector<double>> d;
+      for (auto& v : t) {
+        v = {Exact(rng.integer(0, 8)), Exact(rng.integer(0, 8))};
+        if (o.hard) v = {v[0] + GiNaC::numeric(1, 2), v[1] + GiNaC::numeric(1, 2)};
+        d.push_back(doubles(v));
+      }
+      if (triangle_shape(d) >= kMinTriangleShape) break;
+    }
+    YAML::Node g, tri(YAML::NodeType::Sequence);
+    for (const auto& v : t) tri.push_back(gen_list(v));
+    tri.SetStyle(YAML::EmitterStyle::Flow);
+    g["triangle"] = tri;
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers& a) {
+    std::vector<std::vector<double>> d;
+    for (const auto& v : g.triangle) d.push_back(doubles(v));
+    if (triangle_shape(d) < kMinTriangleShape) return "the triangle is nearly degenerate";
+    const Value* p = a.find("pixels");
+    return p && p->rows == 0 ? "the triangle covers no pixel centre" : "";
   }
 };
 

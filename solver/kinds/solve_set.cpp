@@ -2,6 +2,9 @@
 
 #include "solver/kinds/given_reader.hpp"
 
+#include <cmath>
+#include <utility>
+
 namespace frustum {
 
 ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps) {
@@ -17,7 +20,19 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
   }
   try {
     if (with_steps) r.derivation.note("Conventions", describe(spec.conventions));
-    r.answers = spec.info->solve(spec.given, with_steps ? &r.derivation : nullptr);
+    Answers answers = spec.info->solve(spec.given, with_steps ? &r.derivation : nullptr);
+    // Exact inputs near 1e308 can give answers beyond double's range (1e308 · 1e308): their
+    // decimals would be inf or NaN (null in JSON), so the problem is refused instead.
+    for (const auto& [name, value] : answers.items())
+      for (const double x : value.numbers)
+        if (!std::isfinite(x)) {
+          r.error = Diagnostic{location_of(spec.given_node, file), spec.field + ".given",
+                               "the answer '" + name +
+                                   "' is beyond the range of a double (about ±1.8e308): scale "
+                                   "the given numbers down"};
+          return r;
+        }
+    r.answers = std::move(answers);
   } catch (const DomainError& e) {
     GivenReader reader(spec.given_node, file, spec.field + ".given", {});
     r.error = reader.locate(e.field(), e.what());

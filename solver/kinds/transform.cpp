@@ -1,8 +1,11 @@
 // Composite transforms in 2D and 3D homogeneous coordinates (seeds 002, 004): steps applied
 // in the listed order, so the composite of A₁, A₂, A₃ is M = A₃·A₂·A₁ and P′ = M·P.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
+#include "solver/kinds/transform_steps.hpp"
 #include "solver/kinds/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -11,12 +14,6 @@
 namespace frustum {
 
 namespace {
-
-struct TransformStep {
-  std::string title;  // "translate (2, 3)"
-  MatX<Exact> matrix;
-  std::string note;
-};
 
 struct Transform {
   static constexpr const char* kName = "transform";
@@ -33,68 +30,8 @@ struct Transform {
             {"inverse", AnswerKind::Matrix, {"matrix"}, {}}};
   }
 
-  static std::string list_text(const std::vector<Exact>& v) {
-    return vec(v).unicode;
-  }
-
   static TransformStep read_step(GivenReader& s, int dim, const Conventions& c) {
-    const std::vector<std::string> keys = s.keys();
-    if (keys.size() != 1)
-      s.fail(keys.empty() ? "translate" : keys[1],
-             "each step is one of translate, scale, rotate_x, rotate_y, rotate_z, rotate, shear");
-    const std::string& k = keys[0];
-    TransformStep t;
-    const std::size_t n = static_cast<std::size_t>(dim);
-    if (k == "translate") {
-      const std::vector<Exact> v = s.numbers(k, n);
-      t = {"translate " + list_text(v), translate(v), ""};
-    } else if (k == "scale") {
-      std::vector<Exact> v = s.is_list(k) ? s.numbers(k, n) : std::vector<Exact>(n, s.number(k));
-      t = {"scale " + list_text(v), scale(v), ""};
-      for (const Exact& x : v)
-        if (x.is_zero()) t.note = "a zero scale factor flattens space: the composite has no inverse";
-    } else if (k == "rotate_x" || k == "rotate_y" || k == "rotate_z") {
-      if (dim != 3) s.fail(k, "rotations about x, y, z are 3D; in 2D use rotate");
-      const Exact a = read_angle(s, k, c.angles);
-      t = {k + " " + angle_text(a, c.angles).unicode, rotate_axis_index(k[7] - 'x', a), ""};
-    } else if (k == "rotate") {
-      if (dim == 2) {
-        const Exact a = read_angle(s, k, c.angles);
-        t = {"rotate " + angle_text(a, c.angles).unicode, rotate_2d(a), ""};
-      } else {
-        GivenReader r = s.child(k, {"axis", "angle"});
-        const Vec3<Exact> axis = r.vector<3>("axis");
-        if (canonical(axis.dot(axis)).is_zero()) r.fail("axis", "the zero vector is not an axis");
-        const Exact a = read_angle(r, "angle", c.angles);
-        r.finish();
-        const Vec3<Exact> u = unit(axis);
-        t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
-             rotate_about(u, a), ""};
-        if (!canonical(axis.dot(axis) - 1).is_zero())
-          t.note = "the axis is normalised first: (x, y, z) = " + vec(u).unicode;
-      }
-    } else if (k == "shear") {
-      MatX<Exact> h = MatX<Exact>::Zero(dim, dim);
-      if (dim == 2) {
-        const std::vector<Exact> v = s.numbers(k, 2);
-        h(0, 1) = v[0];
-        h(1, 0) = v[1];
-        t.title = "shear x′ = x + " + exact(v[0]).unicode + "·y, y′ = y + " + exact(v[1]).unicode + "·x";
-      } else {
-        GivenReader r = s.child(k, {"xy", "xz", "yx", "yz", "zx", "zy"});
-        const std::string names = "xyz";
-        for (const std::string f : {"xy", "xz", "yx", "yz", "zx", "zy"})
-          if (r.has(f)) h(static_cast<int>(names.find(f[0])), static_cast<int>(names.find(f[1]))) = r.number(f);
-        r.finish();
-        t.title = "shear (h_ij adds coordinate j to coordinate i)";
-      }
-      t.matrix = shear(h);
-    } else {
-      s.fail(k, "unknown step: use translate, scale, rotate_x, rotate_y, rotate_z, rotate or shear");
-    }
-    s.finish();
-    t.matrix = canonical(t.matrix);
-    return t;
+    return read_transform_step(s, dim, c);
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
@@ -130,6 +67,18 @@ struct Transform {
              "Composite (first step applied first)", reversed}};
   }
 
+  // The numeric path: the steps' matrices rounded to the backend, composed and inverted there.
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    std::vector<MatX<Exact>> matrices, inverses;
+    bool singular = false;
+    for (const TransformStep& s : g.steps) {
+      matrices.push_back(s.matrix);
+      inverses.push_back(s.inverse);
+      singular = singular || s.inverse.size() == 0;
+    }
+    return transform_numeric(g.dim, matrices, inverses, !singular, g.points, p);
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     const int size = g.dim + 1;
     MatX<Exact> m = MatX<Exact>::Identity(size, size);
@@ -153,20 +102,93 @@ struct Transform {
       steps->yields("matrix");
     }
     out.set("points", transform_points_with_steps(m, g.points, "Transform a point", "P", steps));
-    const Exact det = canonical(m.determinant());
+    // det M is the product of the steps' determinants (rotations and translations have 1).
+    Exact det = 1;
+    for (const TransformStep& s : g.steps) det *= s.det;
+    det = canonical(det);
     if (det.is_zero()) {
       out.set("inverse", Value::null());
       if (steps) steps->warn("No inverse", "det M = 0: the transform flattens space and cannot be undone.");
     } else {
-      const MatX<Exact> inv = canonical(MatX<Exact>(m.inverse()));
+      // M⁻¹ = A₁⁻¹·A₂⁻¹·…·Aₙ⁻¹.
+      MatX<Exact> inv = MatX<Exact>::Identity(size, size);
+      for (const TransformStep& s : g.steps) inv = canonical(MatX<Exact>(inv * s.inverse));
       out.set("inverse", matrix_value(inv));
       if (steps) {
-        steps->add("Inverse", math("M⁻¹ (M·M⁻¹ = I)", "M^{-1}\\;(M M^{-1} = I)"), {},
-                   math("M⁻¹ = ", "M^{-1} = ") + matrix_text(inv));
+        std::string order, order_latex;
+        for (std::size_t i = 1; i <= g.steps.size(); ++i) {
+          order += fmt::format("{}A{}⁻¹", i == 1 ? "" : "·", i);
+          order_latex += fmt::format("A_{{{}}}^{{-1}}", i);
+        }
+        steps->add("Inverse", math("M⁻¹ = " + order + " (M·M⁻¹ = I)",
+                                   "M^{-1} = " + order_latex + "\\;(M M^{-1} = I)"), {},
+                   math("M⁻¹ = ", "M^{-1} = ") + matrix_text(inv))
+            .note = "Each step is undone on its own (a translation by its negative, a scaling by its "
+                    "reciprocal, a rotation by its transpose), in reverse order.";
         steps->yields("inverse");
       }
     }
     return out;
+  }
+  // Default generator: 2 or 3 steps in 2D or 3D (translate, scale, rotate, now and then a
+  // shear) and one or two integer points; nice: right angles and integer factors only; hard:
+  // a 3D rotation about an oblique axis and a fractional scale.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const int dim = rng.chance(1, 2) ? 2 : 3;
+    const std::vector<std::int64_t> angles = o.nice ? std::vector<std::int64_t>{90, 180, -90}
+                                                    : std::vector<std::int64_t>{30, 45, 60, 90, 120, 135, 150, -30, -45, -60};
+    YAML::Node steps(YAML::NodeType::Sequence);
+    const auto count = rng.integer(2, 3);
+    for (std::int64_t i = 0; i < count; ++i) {
+      YAML::Node s;
+      const auto which = rng.below(o.hard ? 5 : 4);
+      std::vector<std::int64_t> v(static_cast<std::size_t>(dim));
+      if (which == 0) {
+        do {
+          for (auto& x : v) x = rng.integer(-5, 5);
+        } while (std::all_of(v.begin(), v.end(), [](std::int64_t x) { return x == 0; }));
+        s["translate"] = gen_list(v);
+      } else if (which == 1) {
+        if (o.hard) {
+          s["scale"] = gen_fraction(1, rng.integer(2, 3));
+        } else {
+          for (auto& x : v) x = rng.pick(std::vector<std::int64_t>{-1, 2, 2, 3});
+          s["scale"] = gen_list(v);
+        }
+      } else if (which == 2 || which == 4) {
+        const std::int64_t a = rng.pick(angles);
+        if (dim == 2) {
+          s["rotate"] = gen_angle(a, o.conventions);
+        } else if (which == 4) {
+          YAML::Node r;
+          r["axis"] = gen_list(rng.pick(std::vector<std::vector<std::int64_t>>{{1, 1, 1}, {1, 2, 2}, {0, 1, 1}}));
+          r["angle"] = gen_angle(a, o.conventions);
+          s["rotate"] = r;
+        } else {
+          s[rng.pick(std::vector<std::string>{"rotate_x", "rotate_y", "rotate_z"})] = gen_angle(a, o.conventions);
+        }
+      } else if (dim == 2) {
+        s["shear"] = gen_list({rng.nonzero(-2, 2), 0});
+      } else {
+        YAML::Node h;
+        h[rng.pick(std::vector<std::string>{"xy", "xz", "yz"})] = gen_number(rng.nonzero(-2, 2));
+        s["shear"] = h;
+      }
+      steps.push_back(s);
+    }
+    YAML::Node points(YAML::NodeType::Sequence);
+    const auto n = rng.integer(1, 2);
+    for (std::int64_t i = 0; i < n; ++i) {
+      std::vector<std::int64_t> p(static_cast<std::size_t>(dim));
+      for (auto& x : p) x = rng.integer(-3, 3);
+      points.push_back(gen_list(p));
+    }
+    points.SetStyle(YAML::EmitterStyle::Flow);
+    YAML::Node g;
+    g["dim"] = gen_number(dim);
+    g["steps"] = steps;
+    g["points"] = points;
+    return g;
   }
 };
 

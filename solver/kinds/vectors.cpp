@@ -1,7 +1,9 @@
 // seed 003 (review of dot and cross products): a = (2,0,1), b = (1,2,0) →
 // a × b = (−2, 1, 4), S = √21, sin θ = √21/5, n = (−2, 1, 4)/√21.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -70,6 +72,10 @@ struct Vectors {
              "the triangle's is half of it.", "Area of the parallelogram", triangle},
             {"radians instead of degrees", "Your angle is in radians; the problem asks for degrees.", "Angle", radians},
             {"cos for sin", "That is cos θ = a·b/(‖a‖‖b‖); sin θ uses ‖a × b‖.", "Sine of the angle", swapped}};
+  }
+
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return vectors_numeric(g.a, g.b, g.angles, p);
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
@@ -148,6 +154,31 @@ struct Vectors {
       }
     }
     return out;
+  }
+  // Default generator: integer vectors in [−4, 4]³; nice: an angle of 0°, 30°, 45°, 60°, 90°,
+  // 120°, 135°, 150° or 180° (4(a·b)² = k‖a‖²‖b‖², k = 0…4); hard: nearly parallel.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    IVec3 a{}, b{};
+    for (int attempt = 0; attempt < 2000; ++attempt) {
+      a = gen_ivec3(rng, -4, 4);
+      b = o.hard ? iadd(iscale(rng.nonzero(-2, 2), a), gen_ivec3(rng, -1, 1)) : gen_ivec3(rng, -4, 4);
+      const std::int64_t aa = idot(a, a), bb = idot(b, b), ab = idot(a, b);
+      if (aa == 0 || bb == 0) continue;
+      if (!o.hard && sine_between({double(a[0]), double(a[1]), double(a[2])},
+                                  {double(b[0]), double(b[1]), double(b[2])}) < kMinSine)
+        continue;
+      if (!o.nice) break;
+      const std::int64_t k4 = 4 * ab * ab;
+      if (k4 == 0 || k4 == aa * bb || k4 == 2 * aa * bb || k4 == 3 * aa * bb) break;
+    }
+    YAML::Node g;
+    g["a"] = gen_list(to_list(a));
+    g["b"] = gen_list(to_list(b));
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers&) {
+    return sine_between(doubles(g.a), doubles(g.b)) < kMinSine ? "a and b are nearly parallel" : "";
   }
 };
 

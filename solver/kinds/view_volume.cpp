@@ -2,6 +2,7 @@
 // plane at distance d with half-extents a, b; clipping planes z_min, z_max. First
 // S(d/(a·z_max), d/(b·z_max), 1/z_max) puts the back plane at z = 1 with x, y ∈ [−1, 1]; then
 // P(z̃_min), z̃_min = z_min/z_max, maps z̃_min → 0 and 1 → 1 after the divide by W′ = z.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/kinds/viewing_steps.hpp"
@@ -68,6 +69,28 @@ struct ViewVolume {
       steps->yields("point");
     }
     return out;
+  }
+  // Default generator: d, a, b in 1…3, 1 ≤ z_min < z_max ≤ 105, and a point inside the view
+  // volume (hard: on its corner edge z = z_max, x = a·z/d).
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const std::int64_t d = rng.integer(1, 3), a = rng.integer(1, 3), b = rng.integer(1, 3);
+    const std::int64_t z_min = rng.integer(1, 5), z_max = z_min + rng.integer(5, 100);
+    const std::int64_t z = o.hard ? z_max : rng.integer(z_min, z_max);
+    const Exact xmax = Exact(GiNaC::numeric(a * z, d)), ymax = Exact(GiNaC::numeric(b * z, d));
+    YAML::Node g;
+    g["d"] = gen_number(d);
+    g["a"] = gen_number(a);
+    g["b"] = gen_number(b);
+    g["z_min"] = gen_number(z_min);
+    g["z_max"] = gen_number(z_max);
+    g["point"] = o.hard ? gen_list(std::vector<Exact>{xmax, ymax, Exact(z)})
+                        : gen_list(std::vector<Exact>{xmax * GiNaC::numeric(rng.integer(-4, 4), 4),
+                                                      ymax * GiNaC::numeric(rng.integer(-4, 4), 4), Exact(z)});
+    return g;
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers&) {
+    return exact_sign(g.point(2)) <= 0 ? "the point is behind the eye" : "";
   }
 };
 

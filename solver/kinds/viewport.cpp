@@ -1,5 +1,7 @@
 // The viewport transform: NDC to window coordinates and depth in [0, 1] (seed 000 9.6).
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/kinds/viewing_steps.hpp"
 
@@ -25,23 +27,43 @@ struct Viewport {
     return g;
   }
 
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return viewport_numeric(g.ndc, g.width, g.height, g.api, p);
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     const Vec3<Exact> w = viewport(g.ndc, g.width, g.height, g.api);
     const Vec3<Exact> window(canonical(w(0)), canonical(w(1)), canonical(w(2)));
     Answers out;
     out.set("window", Value::vector(window));
     if (steps) {
-      const std::string y_rule = g.api == Api::DirectX ? "y_w = (1 − y)/2·height" : "y_w = (y + 1)/2·height";
+      const std::string y_rule = g.api == Api::OpenGL ? "y_w = (y + 1)/2·height" : "y_w = (1 − y)/2·height";
       steps->add("Viewport", math("x_w = (x + 1)/2·width,  " + y_rule + (g.api == Api::DirectX ? ",  depth = z" : ",  depth = (z + 1)/2")),
                  math("ndc = ") + vec(g.ndc) + math(", width = ") + exact(g.width) + math(", height = ") + exact(g.height),
                  math("(x_w, y_w, depth) = ") + vec(window, true))
           .note = g.api == Api::OpenGL ? "OpenGL's window origin is bottom-left."
                   : g.api == Api::DirectX ? "DirectX's window origin is top-left, y down; NDC z is already in [0, 1]."
-                                          : "Processing's window origin is top-left with y down; its projection matrix "
-                                            "already negated y, so the viewport does not flip it again.";
+                                          : "Processing's window origin is top-left with y down (its screenY is "
+                                            "height − (1 + y)/2·height); its projection negated y for its y-down "
+                                            "world, so world y and window y both point down.";
       steps->yields("window");
     }
     return out;
+  }
+  // Default generator: NDC in quarters of [−1, 1] (nice: halves; hard: on the cube's faces or
+  // just outside, ±5/4) and a common screen size.
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{{200, 200}, {400, 300}, {640, 480}, {800, 600}});
+    std::vector<Exact> ndc;
+    for (int i = 0; i < 3; ++i)
+      ndc.push_back(o.hard ? Exact(GiNaC::numeric(rng.pick(std::vector<std::int64_t>{-5, -4, 4, 5}), 4))
+                           : o.nice ? Exact(GiNaC::numeric(rng.integer(-2, 2), 2))
+                                    : Exact(GiNaC::numeric(rng.integer(-4, 4), 4)));
+    YAML::Node g;
+    g["ndc"] = gen_list(ndc);
+    g["width"] = gen_number(w);
+    g["height"] = gen_number(h);
+    return g;
   }
 };
 

@@ -5,10 +5,13 @@
 // into a fan of triangles from their first vertex; coverage follows the top-left rule with
 // pixel centres at (i + ½, j + ½), y up. Grids are reported top row (j = h − 1) first, as
 // drawn on paper; +∞ is written 1e30 in numbers and "inf" in the derivation.
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/registry.hpp"
 #include "solver/raster/zbuffer.hpp"
 #include "solver/util/diagnostic.hpp"
+
+#include <fmt/format.h>
 
 #include <cctype>
 
@@ -23,6 +26,10 @@ struct ZBuffer {
   static constexpr int kMaxShownSize = 32;     // larger grids are not written into the derivation
   static constexpr double kInfinity = 1e30;    // +∞ in the numbers of `depth`
   static constexpr std::size_t kMaxPolygons = 1000;
+  // Every polygon tests every pixel with exact depths, so the work is width × height ×
+  // polygons; this bound keeps one problem to about a second (256 × 256 with one polygon,
+  // 64 × 64 with 16).
+  static constexpr double kMaxPixelTests = 65536;
   struct Polygon {
     std::string label;
     Polygon3<Exact> points;
@@ -62,6 +69,11 @@ struct ZBuffer {
     g.height = read_dimension(r, size[1], "height");
     const std::size_t n = r.list_size("polygons", 1);
     if (n > kMaxPolygons) r.fail("polygons", "at most " + std::to_string(kMaxPolygons) + " polygons");
+    if (static_cast<double>(g.width) * g.height * static_cast<double>(n) > kMaxPixelTests)
+      r.fail("polygons", fmt::format("{} × {} pixels × {} polygons is more than the zbuffer kind's "
+                                     "limit of {} pixel tests (256 × 256 with one polygon, 64 × 64 "
+                                     "with 16)",
+                                     g.width, g.height, n, kMaxPixelTests));
     for (std::size_t i = 0; i < n; ++i) {
       GivenReader it = r.item("polygons", i, {"label", "points"});
       Polygon p;
@@ -178,6 +190,30 @@ struct ZBuffer {
       steps->yields("steps");
     }
     return out;
+  }
+  // Default generator: a 3–6 × 3–5 grid and two or three labelled rectangles ("1", "2", "3")
+  // at integer depths 1…9, now and then sloped in x (nice: flat; hard: all at one depth, so the
+  // strict "smaller than" test and the draw order decide).
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const std::int64_t w = rng.integer(3, 6), h = rng.integer(3, 5);
+    const std::int64_t shared = rng.integer(2, 8);
+    YAML::Node polygons(YAML::NodeType::Sequence);
+    const auto count = rng.integer(2, 3);
+    for (std::int64_t i = 0; i < count; ++i) {
+      const std::int64_t x0 = rng.integer(0, w - 2), x1 = rng.integer(x0 + 1, w);
+      const std::int64_t y0 = rng.integer(0, h - 2), y1 = rng.integer(y0 + 1, h);
+      const std::int64_t z = o.hard ? shared : rng.integer(2, 8);
+      const std::int64_t slope = o.nice || o.hard || rng.chance(1, 2) ? 0 : rng.nonzero(-1, 1);
+      YAML::Node p;
+      p["label"] = gen_word(std::to_string(i + 1));
+      p["points"] = gen_rows({{x0, y0, z}, {x1, y0, z + slope}, {x1, y1, z + slope}, {x0, y1, z}});
+      p.SetStyle(YAML::EmitterStyle::Flow);
+      polygons.push_back(p);
+    }
+    YAML::Node g;
+    g["size"] = gen_list({w, h});
+    g["polygons"] = polygons;
+    return g;
   }
 };
 

@@ -8,10 +8,6 @@ namespace frustum {
 
 namespace {
 
-// ⌊a / b⌋ and ⌈a / b⌉ for b > 0 (C++ division truncates towards zero).
-std::int64_t floor_div(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && (a < 0)); }
-std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); }
-
 EdgeFunction make_edge(const FixedPoint2& from, const FixedPoint2& to) {
   EdgeFunction e;
   e.from = from;

@@ -33,6 +33,10 @@ constexpr std::int64_t kSubpixelScale = std::int64_t{1} << kSubpixelBits;
 // Largest |coordinate| in pixels that setup accepts: keeps every product within int64.
 constexpr double kMaxWindowCoordinate = 1 << 20;
 
+// ⌊a / b⌋ and ⌈a / b⌉ for b > 0 (C++ division truncates towards zero).
+inline std::int64_t floor_div(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && (a < 0)); }
+inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); }
+
 // v rounded to the nearest 1/2⁸ pixel, in units of 1/2⁸ pixel.
 std::int64_t to_fixed(double v);
 

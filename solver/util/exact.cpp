@@ -27,6 +27,8 @@ constexpr unsigned kMaxRootIndex = 64;
 constexpr std::uintptr_t kMaxRadicandBits = 4096;
 // canonical() repeats its pass until nothing changes; two passes suffice in practice.
 constexpr int kMaxCanonicalPasses = 4;
+// A denominator a + b·√k loses one square root per conjugate multiplication; at most this many.
+constexpr int kMaxRationalizeRounds = 4;
 // exact_sign() refines at these precisions (decimal digits) before trying exact zero.
 constexpr long kSignDigits[] = {30, 60, 120, 240};
 constexpr long kGuardDigits = 10;
@@ -255,6 +257,40 @@ double rational_to_double(const numeric& q) {
   return q.is_negative() ? -magnitude : magnitude;
 }
 
+// A square root √k (k a positive integer) inside e, if there is one.
+bool find_square_root(const ex& e, ex& root) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    cln::cl_I radicand;
+    unsigned index = 0;
+    if (as_simple_radical(*it, radicand, index) && index == 2) {
+      root = *it;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Rationalises a denominator that is a sum with square roots, one root per round:
+// n / (a + b·√k) = n·(a − b·√k) / (a² − b²·k), so 1/(1 + 2√3) becomes (2√3 − 1)/11.
+ex rationalize_denominator(const ex& e) {
+  const ex parts = e.numer_denom();
+  ex num = parts.op(0), den = parts.op(1).expand();
+  bool changed = false;
+  for (int round = 0; round < kMaxRationalizeRounds && is_a<GiNaC::add>(den); ++round) {
+    ex root;
+    if (!find_square_root(den, root)) break;
+    const GiNaC::symbol s;
+    const ex d = den.subs(root == s).expand();
+    if (d.degree(s) != 1 || d.ldegree(s) < 0) break;
+    const ex a = d.coeff(s, 0), b = d.coeff(s, 1);
+    const ex conjugate = a - b * root;
+    num = (num * conjugate).expand();
+    den = (a * a - b * b * root * root).expand();
+    changed = true;
+  }
+  return changed ? num / den : e;
+}
+
 }  // namespace
 
 Exact canonical(const Exact& e) {
@@ -266,6 +302,13 @@ Exact canonical(const Exact& e) {
     const ex next = simplify(current).normal().expand();
     if (next.is_equal(current)) break;
     current = next;
+  }
+  if (!has_symbol(current)) {
+    const ex rationalized = rationalize_denominator(current);
+    if (!rationalized.is_equal(current)) {
+      SimplifyRadicals simplify;
+      current = simplify(rationalized.expand()).normal().expand();
+    }
   }
   return current;
 }

@@ -140,6 +140,8 @@ std::vector<Glyph> decode_utf8(std::string_view text) {
       if (b < lo || b > hi) valid = false;
       code = (code << 6) | (b & 0x3F);
     }
+    // parse_yaml replaces invalid bytes with U+FFFD; name the cause, not the placeholder.
+    if (valid && code == 0xFFFD) fail("invalid UTF-8: a byte that is not text (shown as \uFFFD)", i);
     if (!valid) {
       std::ostringstream out;
       out << "invalid UTF-8: byte 0x" << std::uppercase << std::hex << std::setw(2)
@@ -1034,6 +1036,8 @@ ExpressionResult failure(std::string message, std::size_t offset) {
 }
 
 }  // namespace
+
+std::string quote_excerpt(std::string_view text) { return quoted(text, 0, text.size()); }
 
 ExpressionResult parse_expression(std::string_view text, const ExpressionOptions& options) {
   // Length first: nothing else runs on oversized input.

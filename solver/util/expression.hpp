@@ -41,6 +41,10 @@ struct ExpressionResult {
   explicit operator bool() const { return value.has_value(); }
 };
 
+// Untrusted text quoted for a message: at most 32 bytes, cut at a character boundary, with
+// "..." when shortened ('1+1+1+1+1+1+1+1+1+1+1+1+1+1+1+1...').
+std::string quote_excerpt(std::string_view text);
+
 // Parses text into an exact GiNaC expression. Never throws, never recurses deeper than
 // options.max_depth, never builds a power whose exact result exceeds options.max_exact_bits.
 ExpressionResult parse_expression(std::string_view text, const ExpressionOptions& options = {});

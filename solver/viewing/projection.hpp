@@ -106,13 +106,15 @@ MatX<T> paper_form(const MatX<T>& column_form, Api api) {
 }
 
 // Viewport: NDC to window coordinates and depth in [0, 1]. OpenGL's window origin is
-// bottom-left; DirectX's is top-left (y flipped here); Processing's is top-left too, but
-// its projection has already negated y, so the viewport does not flip again.
+// bottom-left; DirectX's and Processing's are top-left with y down, so y_w = (1 − y)/2·h.
+// Processing: its projection negated y because its world y points down (world y = 0, the
+// top, ends at y_ndc = +1), and its screenY() then takes h − (1 + y_ndc)/2·h, so world y
+// and window y both point down.
 template <typename T>
 Vec3<T> viewport(const Vec3<T>& ndc, const T& width, const T& height, Api api) {
   Vec3<T> w;
   w(0) = (ndc(0) + T(1)) / T(2) * width;
-  w(1) = api == Api::DirectX ? (T(1) - ndc(1)) / T(2) * height : (ndc(1) + T(1)) / T(2) * height;
+  w(1) = api == Api::OpenGL ? (ndc(1) + T(1)) / T(2) * height : (T(1) - ndc(1)) / T(2) * height;
   w(2) = api == Api::DirectX ? ndc(2) : (ndc(2) + T(1)) / T(2);
   return w;
 }

@@ -10,6 +10,10 @@ namespace frustum {
 
 inline double scalar_cos(double v) { return std::cos(v); }
 inline double scalar_sin(double v) { return std::sin(v); }
+inline float scalar_cos(float v) { return std::cos(v); }
+inline float scalar_sin(float v) { return std::sin(v); }
+inline long double scalar_cos(long double v) { return std::cos(v); }
+inline long double scalar_sin(long double v) { return std::sin(v); }
 inline Exact scalar_cos(const Exact& v) { return GiNaC::cos(v); }
 inline Exact scalar_sin(const Exact& v) { return GiNaC::sin(v); }
 

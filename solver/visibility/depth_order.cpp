@@ -1,6 +1,7 @@
 #include "solver/visibility/depth_order.hpp"
 
 #include "solver/geometry/polygon_normal.hpp"
+#include "solver/geometry/triangulate.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/mesh.hpp"
 
@@ -31,37 +32,11 @@ Exact area2(const Poly2& p) {
 // Orientation of c relative to the directed line a → b: > 0 left.
 int orient(const Pt& a, const Pt& b, const Pt& c) { return sign(cross2(b - a, c - a)); }
 
-// A simple polygon (counter-clockwise) into triangles by ear clipping; a convex polygon
-// becomes a fan. Exact orientation tests throughout.
-std::vector<std::array<Pt, 3>> triangulate(Poly2 p) {
+// A simple polygon (counter-clockwise) into triangles by ear clipping (exact orientation).
+std::vector<std::array<Pt, 3>> triangulate(const Poly2& p) {
   std::vector<std::array<Pt, 3>> out;
-  while (p.size() > 3) {
-    bool clipped = false;
-    for (std::size_t k = 0; k < p.size() && !clipped; ++k) {
-      const Pt& a = p[(k + p.size() - 1) % p.size()];
-      const Pt& b = p[k];
-      const Pt& c = p[(k + 1) % p.size()];
-      const int turn = orient(a, b, c);
-      if (turn < 0) continue;
-      if (turn == 0) {  // a straight corner adds nothing: drop the vertex
-        p.erase(p.begin() + static_cast<long>(k));
-        clipped = true;
-        continue;
-      }
-      bool empty = true;
-      for (std::size_t m = 0; m < p.size() && empty; ++m) {
-        if (m == k || m == (k + 1) % p.size() || m == (k + p.size() - 1) % p.size()) continue;
-        if (orient(a, b, p[m]) >= 0 && orient(b, c, p[m]) >= 0 && orient(c, a, p[m]) >= 0) empty = false;
-      }
-      if (!empty) continue;
-      out.push_back({a, b, c});
-      p.erase(p.begin() + static_cast<long>(k));
-      clipped = true;
-    }
-    if (!clipped) break;  // not simple: keep what remains as a fan (documented limitation)
-  }
-  for (std::size_t k = 1; k + 1 < p.size(); ++k)
-    if (orient(p[0], p[k], p[k + 1]) > 0) out.push_back({p[0], p[k], p[k + 1]});
+  for (const std::array<int, 3>& t : ear_clip(p, orient))
+    out.push_back({p[static_cast<std::size_t>(t[0])], p[static_cast<std::size_t>(t[1])], p[static_cast<std::size_t>(t[2])]});
   return out;
 }
 

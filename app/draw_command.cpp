@@ -1,0 +1,76 @@
+// `frustum draw SET.yaml --id ID [-o FILE.svg] [--raster N]`: the picture of one problem.
+#include "app/commands.hpp"
+
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/solve_set.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "solver/visibility/pictures.hpp"
+
+#include <fstream>
+#include <ostream>
+
+namespace frustum::app {
+
+namespace {
+
+std::string drawable_kinds() {
+  std::string s;
+  for (const KindInfo& k : builtin_kinds().all())
+    if (k.drawable) s += (s.empty() ? "" : ", ") + k.name;
+  return s;
+}
+
+}  // namespace
+
+int run_draw(const std::string& set_file, const std::string& id, const std::string& output, int raster,
+             const Output& o) {
+  const ProblemSet set = load_problem_set(set_file);
+  for (const Diagnostic& d : set.errors) o.err << d.format() << "\n";
+  const ProblemSpec* spec = set.find(id);
+  if (!spec) {
+    o.err << set_file << ": no problem with id '" << id << "'\n";
+    return 1;
+  }
+  if (spec->error) {
+    o.err << spec->error->format() << "\n";
+    return 1;
+  }
+  if (!spec->info->drawable) {
+    o.err << set_file << ": problem '" << id << "' is of kind " << spec->kind
+          << ", which cannot be drawn (kinds that can: " << drawable_kinds() << ")\n";
+    return 1;
+  }
+  // Solve first: a problem that cannot be solved (an open mesh) is reported as `solve` would.
+  const ProblemResult solved = solve_problem(*spec, set.file, false);
+  if (solved.error) {
+    o.err << solved.error->format() << "\n";
+    return 1;
+  }
+  Picture picture;
+  try {
+    PictureOptions options;
+    options.api = spec->conventions.api;
+    options.title = spec->id + " (" + spec->kind + ")";
+    options.raster = raster;
+    picture = draw_picture(spec->info->drawable(spec->given), options);
+  } catch (const DomainError& e) {
+    o.err << GivenReader(spec->given_node, set.file, spec->field + ".given", {}).locate(e.field(), e.what()).format()
+          << "\n";
+    return 1;
+  }
+  if (output.empty() || output == "-") {
+    o.out << picture.svg;
+  } else {
+    std::ofstream file(output, std::ios::binary);
+    file << picture.svg;
+    if (!file) {
+      o.err << output << ": cannot write the picture\n";
+      return 1;
+    }
+    o.out << output << ": " << picture.summary << "\n";
+  }
+  return 0;
+}
+
+}  // namespace frustum::app

@@ -1,0 +1,100 @@
+// `frustum generate SET.yaml --student ID... | --seed N --count K [-o DIR]`: per-student or
+// seeded variants of a problem set, each written as a complete problem set with its answer key
+// (DIR/STEM-NAME.yaml and DIR/answers/STEM-NAME.yaml).
+#include "app/commands.hpp"
+
+#include "grader/atomic_file.hpp"
+#include "solver/kinds/variants.hpp"
+#include "solver/kinds/yaml_document.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <map>
+#include <ostream>
+
+namespace frustum::app {
+
+namespace {
+
+// A student id as part of a file name: letters, digits, '-', '_' and '.' kept, the rest '_'.
+std::string file_part(const std::string& id) {
+  std::string s;
+  for (const char c : id) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
+                    c == '_' || c == '.';
+    s += ok ? c : '_';
+  }
+  return s.empty() ? "_" : s;
+}
+
+struct Named {
+  std::string name;     // file name part
+  std::string student;  // the answer key's student:
+  ProblemSet variant;
+};
+
+}  // namespace
+
+int run_generate(const GenerateCommand& g, const Output& o) {
+  namespace fs = std::filesystem;
+  const YamlDocument doc = load_yaml_file(g.set);
+  const ProblemSet set = load_problem_set(g.set);
+  if (!set.all_errors().empty()) {
+    for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
+    return 1;
+  }
+  const bool vary_all = !set_varies(set);
+  if (vary_all)
+    o.err << g.set << ": no problem has `vary` and the set does not say `variants: per_student`, so every "
+          << "problem is drawn by its kind's default generator; grade against the generated files (or add "
+          << "`variants: per_student` to grade against " << g.set << " itself)\n";
+  const std::string stem = fs::path(g.set).stem().string();
+  const std::string source = fs::path(g.set).filename().string();
+  std::vector<Named> variants;
+  if (g.seed) {
+    const std::vector<ProblemSet> drawn = variants_from_seed(set, *g.seed, g.count, vary_all);
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      const std::string name = fmt::format("seed{}-{}", *g.seed, i);
+      variants.push_back({name, name, drawn[i]});
+    }
+  }
+  for (const std::string& s : g.students) variants.push_back({file_part(s), s, variant_for_student(set, s, vary_all)});
+
+  int status = 0;
+  std::map<std::string, std::string> seen;  // the set's text → the first student who has it
+  for (const Named& v : variants) {
+    if (!v.variant.all_errors().empty()) {
+      for (const Diagnostic& d : v.variant.all_errors()) o.err << v.name << ": " << d.format() << "\n";
+      status = 1;
+      continue;
+    }
+    const std::string who = g.seed ? fmt::format("variant {} of seed {}", v.name, *g.seed) : "student " + v.student;
+    const std::string set_file = stem + "-" + v.name + ".yaml";
+    const std::string body = emit_variant_set(doc.root, v.variant, "");
+    if (const auto [it, fresh] = seen.emplace(body, v.name); !fresh)
+      o.err << "warning: " << v.name << " has the same variant as " << it->second
+            << " (the ranges leave few choices)\n";
+    const std::string seed = fmt::format("{:016x}", v.variant.variant ? v.variant.variant->seed : 0);
+    const std::string set_text = emit_variant_set(
+        doc.root, v.variant,
+        fmt::format("Variant of {} for {} (seed {}), drawn by `frustum generate`.\nAnswer key: answers/{}", source,
+                    who, seed, set_file));
+    const std::string key_text = emit_answer_key(
+        v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed));
+    try {
+      fs::create_directories(fs::path(g.out_dir) / "answers");
+      const std::string set_path = (fs::path(g.out_dir) / set_file).string();
+      const std::string key_path = (fs::path(g.out_dir) / "answers" / set_file).string();
+      write_file_atomically(set_path, set_text);
+      write_file_atomically(key_path, key_text);
+      o.out << set_path << "  " << key_path << "\n";
+    } catch (const std::exception& e) {
+      o.err << "error: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  return status;
+}
+
+}  // namespace frustum::app

@@ -1,0 +1,105 @@
+// `frustum grade SET ANSWERS`: one answers file (text or JSON report, optional feedback files),
+// or a class — a directory of answer files or a CSV roster — graded into a directory of
+// outputs with a progress bar on a terminal.
+#include "app/commands.hpp"
+#include "grader/atomic_file.hpp"
+#include "grader/batch.hpp"
+#include "grader/feedback.hpp"
+#include "grader/gradescope.hpp"
+#include "grader/report.hpp"
+#include "solver/kinds/variants.hpp"
+#include "solver/util/diagnostic.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <ostream>
+
+namespace frustum::app {
+
+namespace {
+
+// The set a student is graded against: their own variant when the set varies.
+ProblemSet set_for_student(const ProblemSet& set, const std::string& student, std::string& variant) {
+  if (!set_varies(set)) return set;
+  ProblemSet v = variant_for(set, student);
+  if (v.variant)
+    variant = fmt::format("graded against the variant of student {} (seed {:016x})", v.variant->student, v.variant->seed);
+  return v;
+}
+
+std::string progress_bar(std::size_t done, std::size_t total, const std::string& who) {
+  constexpr int kWidth = 30;
+  const int filled = total ? static_cast<int>(kWidth * done / total) : kWidth;
+  return fmt::format("\r[{}{}] {}/{} {:<24.24}", std::string(static_cast<std::size_t>(filled), '#'),
+                     std::string(static_cast<std::size_t>(kWidth - filled), '.'), done, total, who);
+}
+
+int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
+  std::vector<BatchEntry> entries;
+  try {
+    entries = collect_submissions(g.answers);
+  } catch (const InputError& e) {
+    o.err << "error: " << e.diagnostic().format() << "\n";
+    return 1;
+  }
+  BatchOptions options;
+  options.out_dir = g.out_dir.value_or("grades");
+  options.timeout_seconds = g.timeout;
+  options.lang = g.lang;
+  if (set_varies(set)) options.set_for = set_for_student;
+  if (o.progress)
+    options.on_progress = [&](std::size_t done, std::size_t total, const std::string& who) {
+      o.err << progress_bar(done, total, who) << std::flush;
+      if (done == total) o.err << "\n";
+    };
+  const BatchResult r = grade_batch(set, entries, options);
+  std::size_t graded = 0;
+  double sum = 0;
+  for (const BatchRow& row : r.rows) {
+    if (row.status == "graded") {
+      ++graded;
+      sum += row.max_score > 0 ? row.score / row.max_score : 0;
+    } else {
+      o.err << fmt::format("{}: {} ({}): {}\n", row.source, row.status, row.student, row.message);
+    }
+  }
+  o.out << fmt::format("Graded {} of {} submissions{}; wrote {}/gradebook.csv, feedback/ and gradescope/\n", graded,
+                       r.rows.size(), graded ? fmt::format(" (mean {:.1f}%)", 100.0 * sum / double(graded)) : "",
+                       options.out_dir);
+  for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
+  return graded == r.rows.size() && set.all_errors().empty() ? 0 : 1;
+}
+
+}  // namespace
+
+int run_grade(const GradeOptions& g, const Output& o) {
+  const ProblemSet set = load_problem_set(g.set);
+  std::error_code ec;
+  const bool batch = std::filesystem::is_directory(g.answers, ec) ||
+                     std::filesystem::path(g.answers).extension() == ".csv";
+  if (batch) return run_batch(set, g, o);
+
+  const Submission submission = load_submission(g.answers);
+  std::string variant;
+  const ProblemSet graded = set_for_student(set, submission.student, variant);
+  GradeReport report = grade(graded, submission);
+  report.variant = variant;
+  if (g.format == Format::Json)
+    o.out << render_grade_json(report).dump(2) << "\n";
+  else
+    o.out << render_grade_text(report, TextStyle{o.color, g.lang});
+  try {
+    if (g.gradescope) write_file_atomically(*g.gradescope, gradescope_results(report, g.lang).dump(2) + "\n");
+    if (g.html) write_file_atomically(*g.html, render_feedback_html(report, g.lang));
+    if (g.markdown) write_file_atomically(*g.markdown, render_feedback_markdown(report, g.lang));
+  } catch (const std::exception& e) {
+    o.err << "error: " << e.what() << "\n";
+    return 1;
+  }
+  bool failed = !report.errors.empty();
+  for (const ProblemGrade& p : report.problems) failed = failed || p.error.has_value();
+  return failed ? 1 : 0;
+}
+
+}  // namespace frustum::app

@@ -1,0 +1,142 @@
+// frustum render FILE.yaml -o image.png [--depth depth.png] [--size WxH] [--id ID]
+//                [--method zbuffer|scanline]
+// FILE is a scene file (top-level `scene:` and optional `conventions:`) or a problem set, whose
+// render problem is the one named by --id (default: the first of kind render).
+#include "app/commands.hpp"
+
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/problem_set.hpp"
+#include "solver/kinds/render.hpp"
+#include "solver/kinds/yaml_document.hpp"
+#include "solver/raster/fill.hpp"
+#include "solver/raster/scanline.hpp"
+
+#include <fmt/format.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <chrono>
+#include <ostream>
+
+namespace frustum::app {
+
+namespace {
+
+// The scene of a scene file or of a problem set's render problem; nullopt after printing why.
+std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
+  const YamlDocument doc = load_yaml_file(opt.file);
+  if (doc.error) {
+    o.err << doc.error->format() << "\n";
+    return std::nullopt;
+  }
+  if (doc.root.IsMap() && doc.root["problems"].IsDefined()) {
+    const ProblemSet set = load_problem_set(opt.file);
+    for (const Diagnostic& d : set.errors) o.err << d.format() << "\n";
+    for (const ProblemSpec& p : set.problems) {
+      if (opt.id ? p.id != *opt.id : p.kind != "render") continue;
+      if (p.error) {
+        o.err << p.error->format() << "\n";
+        return std::nullopt;
+      }
+      if (p.kind != "render") {
+        o.err << opt.file << ": problem '" << p.id << "' is of kind " << p.kind << ", not render\n";
+        return std::nullopt;
+      }
+      return std::any_cast<const RenderGiven&>(p.given).spec.scene;
+    }
+    o.err << opt.file << ": " << (opt.id ? "no problem with id '" + *opt.id + "'" : "no problem of kind render") << "\n";
+    return std::nullopt;
+  }
+  try {
+    GivenReader root(doc.root, opt.file, "", {"title", "conventions", "scene"});
+    const Conventions c = read_conventions(doc.root["conventions"], opt.file, "conventions", {});
+    GivenReader s = root.child("scene", scene_fields());
+    Scene scene = read_scene(s, c).scene;
+    root.finish();
+    return scene;
+  } catch (const InputError& e) {
+    o.err << e.diagnostic().format() << "\n";
+    return std::nullopt;
+  }
+}
+
+// Raster rows (y up) to PNG rows (top first).
+bool write_color_png(const std::string& path, const Image<std::uint32_t>& img) {
+  std::vector<std::uint32_t> rows(img.data.size());
+  for (int r = 0; r < img.height; ++r)
+    std::copy_n(&img.at(0, img.height - 1 - r), img.width, rows.begin() + static_cast<long>(r) * img.width);
+  return stbi_write_png(path.c_str(), img.width, img.height, 4, rows.data(), img.width * 4) != 0;
+}
+
+// Depth as grey: the covered depths' range [min, max] stretched to white (near) … dark grey
+// (far); the background (depth 1, nothing drawn) black.
+bool write_depth_png(const std::string& path, const Image<float>& depth) {
+  float lo = kDepthClear, hi = 0;
+  for (float z : depth.data)
+    if (z < kDepthClear) {
+      lo = std::min(lo, z);
+      hi = std::max(hi, z);
+    }
+  std::vector<std::uint8_t> grey(depth.data.size(), 0);
+  for (int r = 0; r < depth.height; ++r)
+    for (int i = 0; i < depth.width; ++i) {
+      const float z = depth.at(i, depth.height - 1 - r);
+      if (z >= kDepthClear) continue;
+      const double t = hi > lo ? (z - lo) / (hi - lo) : 0.0;
+      grey[static_cast<std::size_t>(r) * depth.width + i] = static_cast<std::uint8_t>(255 - std::lround(t * 215));
+    }
+  return stbi_write_png(path.c_str(), depth.width, depth.height, 1, grey.data(), depth.width) != 0;
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& opt, const Output& o) {
+  std::optional<Scene> loaded = load_scene(opt, o);
+  if (!loaded) return 1;
+  Scene& scene = *loaded;
+  if (opt.method) scene.scanline = *opt.method == "scanline";
+  if (opt.size) {
+    const auto [w, h] = *opt.size;
+    // A perspective whose aspect was width/height follows the new size (x scale ∝ 1/aspect).
+    const bool perspective = scene.clip_from_eye(3, 2) != 0 && scene.clip_from_eye(0, 2) == 0;
+    if (perspective) scene.clip_from_eye(0, 0) *= static_cast<double>(scene.width) * h / (static_cast<double>(scene.height) * w);
+    scene.width = w;
+    scene.height = h;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const FlatScene flat = flatten(scene);
+  GeometryStats gs;
+  const std::vector<WindowTriangle> tris = geometry(scene, flat, &gs);
+  Image<std::uint32_t> color;
+  Image<float> depth;
+  std::string method;
+  if (scene.scanline) {
+    ScanlineStats st;
+    color = render_scanline(tris, scene.width, scene.height, scene.background, &st, opt.depth ? &depth : nullptr);
+    method = fmt::format("scan-line: one row of depth ({} bytes) instead of the z-buffer's {} bytes; at most {} "
+                         "triangles active on a row, {} spans",
+                         st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
+  } else {
+    FillStats fs;
+    Frame frame = render_zbuffer(tris, scene.width, scene.height, scene.background, &fs);
+    color = std::move(frame.color);
+    depth = std::move(frame.depth);
+    method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written", depth.data.size() * sizeof(float),
+                         fs.fragments, fs.written);
+  }
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (!write_color_png(opt.output, color)) {
+    o.err << opt.output << ": cannot write the image\n";
+    return 1;
+  }
+  if (opt.depth && !write_depth_png(*opt.depth, depth)) {
+    o.err << *opt.depth << ": cannot write the depth image\n";
+    return 1;
+  }
+  o.out << fmt::format("{}: {} × {}, {} triangles ({} outside, {} clipped, {} culled, {} drawn) in {:.1f} ms\n{}\n",
+                       opt.output, scene.width, scene.height, gs.triangles, gs.outside, gs.clipped, gs.culled,
+                       gs.window, ms, method);
+  return 0;
+}
+
+}  // namespace frustum::app

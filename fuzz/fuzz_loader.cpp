@@ -1,0 +1,20 @@
+// libFuzzer target: a problem set from arbitrary bytes is loaded, solved with derivations and
+// rendered in every format. The library promises never to throw, crash or hang on any input.
+#include "solver/derivation/render.hpp"
+#include "solver/kinds/problem_set.hpp"
+#include "solver/kinds/solve_set.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  const frustum::ProblemSet set = frustum::load_problem_set_from_string(text, "fuzz.yaml");
+  for (const frustum::Diagnostic& d : set.all_errors()) (void)d.format();
+  const frustum::SetResult result = frustum::solve_set(set, true);
+  (void)frustum::render_text(result, frustum::TextStyle{});
+  (void)frustum::render_markdown(result);
+  (void)frustum::render_json(result).dump(2);
+  return 0;
+}

@@ -1,0 +1,178 @@
+#include "grader/feedback.hpp"
+
+#include "solver/derivation/render.hpp"
+#include "solver/derivation/svg.hpp"
+#include "solver/util/exact_format.hpp"
+
+#include <fmt/format.h>
+
+namespace frustum {
+
+namespace {
+
+std::string score_text(double v) { return format_approx(v, 6); }
+
+// Markdown table cells: a pipe would end the cell.
+std::string cell(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '|') out += "\\|";
+    else if (c == '\n') out += ' ';
+    else out += c;
+  }
+  return out;
+}
+
+// HTML text and attribute values: the SVG writer's escaping (&, <, >, ", ') serves both.
+std::string html_escape(std::string_view s) { return svg_escape(s); }
+
+std::string verdict_word(Verdict v, Lang lang) { return tr(to_string(v), lang); }
+
+std::string got_shown(const AnswerGrade& a) {
+  if (a.verdict == Verdict::Missing) return "—";
+  if (a.got && a.verdict != Verdict::Unparseable) return a.got->shown().unicode;
+  return a.got_text;
+}
+
+const char* kStyle = R"CSS(
+body { font-family: system-ui, "Noto Sans CJK JP", sans-serif; max-width: 60rem; margin: 2rem auto; padding: 0 1rem; color: #1d232a; }
+h1 { font-size: 1.5rem; } h2 { font-size: 1.2rem; margin-top: 2rem; border-bottom: 1px solid #ccd; }
+.total { font-size: 1.2rem; font-weight: bold; }
+table { border-collapse: collapse; width: 100%; margin: .5rem 0; }
+th, td { border: 1px solid #ccd; padding: .3rem .5rem; text-align: left; vertical-align: top; }
+.math { font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math", serif; font-size: 1.05em; }
+.verdict { font-weight: bold; }
+tr.correct .verdict { color: #18794e; } tr.partial .verdict { color: #a35200; }
+tr.incorrect .verdict, tr.unparseable .verdict { color: #c4262e; } tr.missing .verdict { color: #6b7280; }
+.mistake { background: #fff4e5; border-left: 4px solid #a35200; padding: .3rem .6rem; margin: .3rem 0; }
+.feedback { margin: .3rem 0; }
+ol.steps li { margin: .4rem 0; } .note { color: #555; font-size: .95em; } .warning { color: #a35200; }
+.error { color: #c4262e; font-family: monospace; }
+)CSS";
+
+// Counts the verdicts shown and writes the summary line: the page works without it, and a
+// browser test sees that the page was rendered and its script ran.
+const char* kScript = R"JS(
+(function () {
+  var rows = document.querySelectorAll('tr[data-verdict]');
+  var counts = {};
+  rows.forEach(function (r) { var v = r.getAttribute('data-verdict'); counts[v] = (counts[v] || 0) + 1; });
+  var parts = Object.keys(counts).sort().map(function (k) { return k + ': ' + counts[k]; });
+  document.getElementById('summary').textContent = parts.join(', ');
+  document.body.setAttribute('data-rendered', 'yes');
+})();
+)JS";
+
+std::string steps_html(const std::vector<Step>& steps, Lang lang) {
+  std::string out = "<ol class=\"steps\">\n";
+  for (const Step& s : steps) {
+    const char* cls = s.level == Step::Level::Warning ? " class=\"warning\"" : "";
+    out += fmt::format("<li{}><b>{}</b>", cls, html_escape(tr(s.title, lang)));
+    for (const MathText* m : {&s.formula, &s.substitution})
+      if (!m->empty()) out += fmt::format("<div class=\"math\">{}</div>", html_escape(m->unicode));
+    if (!s.result.empty()) out += fmt::format("<div class=\"math\">⇒ {}</div>", html_escape(s.result.unicode));
+    if (!s.note.empty()) out += fmt::format("<div class=\"note\">{}</div>", html_escape(tr(s.note, lang)));
+    out += "</li>\n";
+  }
+  return out + "</ol>\n";
+}
+
+}  // namespace
+
+std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
+  std::string out;
+  if (p.error) return out + fmt::format("**{}:** `{}`\n\n", tr("error", lang), p.error->format());
+  out += fmt::format("| {} | {} | {} | {} | {} |\n| --- | --- | --- | --- | --- |\n", tr("Answer", lang),
+                     tr("Verdict", lang), tr("Score", lang), tr("You wrote", lang), tr("Expected", lang));
+  for (const AnswerGrade& a : p.answers)
+    out += fmt::format("| `{}` | {} | {} / {} | {} | {} |\n", a.name, verdict_word(a.verdict, lang),
+                       score_text(a.score), score_text(a.max_score), cell(got_shown(a)),
+                       cell(a.expected.shown().unicode));
+  out += "\n";
+  for (const AnswerGrade& a : p.answers) {
+    if (a.verdict == Verdict::Correct) continue;
+    if (a.misconception.empty() && a.feedback.empty() && a.derivation.empty()) continue;
+    out += fmt::format("**`{}`**", a.name);
+    if (a.carried_forward) out += " — " + tr("credit carried forward from your earlier answer", lang);
+    out += "\n\n";
+    if (!a.misconception.empty())
+      out += fmt::format("> **{}:** {}{}\n\n", tr("Common mistake", lang), a.misconception,
+                         a.wrong_step.empty() ? "" : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
+    if (!a.feedback.empty()) out += a.feedback + "\n\n";
+    if (!a.derivation.empty()) out += fmt::format("*{}:*\n\n", tr("How to get it", lang)) + render_steps_markdown(a.derivation, lang);
+  }
+  return out;
+}
+
+std::string render_feedback_markdown(const GradeReport& r, Lang lang) {
+  std::string out = fmt::format("# {} {}\n\n**{}: {} / {}**\n\n", tr("Student", lang),
+                                r.student.empty() ? "(unnamed)" : r.student, tr("Score", lang),
+                                score_text(r.score), score_text(r.max_score));
+  if (!r.variant.empty()) out += r.variant + "\n\n";
+  for (const Diagnostic& d : r.errors) out += fmt::format("- {}: `{}`\n", tr("warning", lang), d.format());
+  if (!r.errors.empty()) out += "\n";
+  for (const ProblemGrade& p : r.problems) {
+    out += fmt::format("## {} — {} / {}\n\n", p.id, score_text(p.score), score_text(p.max_score));
+    out += render_problem_feedback_markdown(p, lang);
+  }
+  return out;
+}
+
+std::string render_feedback_html(const GradeReport& r, Lang lang) {
+  const std::string student = r.student.empty() ? "(unnamed)" : r.student;
+  std::string out = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<title>Frustum — {}</title>\n<style>{}</style>\n</head>\n<body data-rendered=\"no\">\n",
+      to_string(lang), html_escape(student), kStyle);
+  out += fmt::format("<h1>{} {}</h1>\n<p class=\"total\" id=\"total\">{}: {} / {}</p>\n<p id=\"summary\"></p>\n",
+                     html_escape(tr("Student", lang)), html_escape(student), html_escape(tr("Score", lang)),
+                     score_text(r.score), score_text(r.max_score));
+  if (!r.variant.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_escape(r.variant));
+  for (const Diagnostic& d : r.errors)
+    out += fmt::format("<p class=\"error\">{}: {}</p>\n", html_escape(tr("warning", lang)), html_escape(d.format()));
+  for (const ProblemGrade& p : r.problems) {
+    out += fmt::format("<section class=\"problem\" id=\"problem-{}\">\n<h2>{} <small>({})</small> — {} / {}</h2>\n",
+                       html_escape(p.id), html_escape(p.id), html_escape(p.kind), score_text(p.score),
+                       score_text(p.max_score));
+    if (p.error) {
+      out += fmt::format("<p class=\"error\">{}</p>\n</section>\n", html_escape(p.error->format()));
+      continue;
+    }
+    out += fmt::format("<table>\n<tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th></tr>\n",
+                       html_escape(tr("Answer", lang)), html_escape(tr("Verdict", lang)),
+                       html_escape(tr("Score", lang)), html_escape(tr("You wrote", lang)),
+                       html_escape(tr("Expected", lang)));
+    for (const AnswerGrade& a : p.answers) {
+      const std::string_view v = to_string(a.verdict);
+      out += fmt::format(
+          "<tr class=\"{}\" data-verdict=\"{}\"><td><code>{}</code></td><td class=\"verdict\">{}</td>"
+          "<td>{} / {}</td><td class=\"math\">{}</td><td class=\"math\">{}</td></tr>\n",
+          v, v, html_escape(a.name), html_escape(verdict_word(a.verdict, lang)), score_text(a.score),
+          score_text(a.max_score), html_escape(got_shown(a)), html_escape(a.expected.shown().unicode));
+    }
+    out += "</table>\n";
+    for (const AnswerGrade& a : p.answers) {
+      if (a.verdict == Verdict::Correct) continue;
+      if (a.misconception.empty() && a.feedback.empty() && a.derivation.empty()) continue;
+      out += fmt::format("<div class=\"answer-feedback\" id=\"feedback-{}-{}\">\n<h3><code>{}</code>{}</h3>\n",
+                         html_escape(p.id), html_escape(a.name), html_escape(a.name),
+                         a.carried_forward ? " — " + html_escape(tr("credit carried forward from your earlier answer", lang)) : "");
+      if (!a.misconception.empty())
+        out += fmt::format("<p class=\"mistake\"><b>{}:</b> {}{}</p>\n", html_escape(tr("Common mistake", lang)),
+                           html_escape(a.misconception),
+                           a.wrong_step.empty() ? "" : " (" + html_escape(tr("Where it goes wrong", lang)) + ": " +
+                                                           html_escape(tr(a.wrong_step, lang)) + ")");
+      if (!a.feedback.empty()) out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(a.feedback));
+      if (!a.derivation.empty())
+        out += fmt::format("<details open><summary>{}</summary>\n{}</details>\n", html_escape(tr("How to get it", lang)),
+                           steps_html(a.derivation, lang));
+      out += "</div>\n";
+    }
+    out += "</section>\n";
+  }
+  out += fmt::format("<script>{}</script>\n</body>\n</html>\n", kScript);
+  return out;
+}
+
+}  // namespace frustum

@@ -1,0 +1,46 @@
+#include "grader/gradescope.hpp"
+
+#include "grader/feedback.hpp"
+#include "solver/derivation/render.hpp"
+
+#include <fmt/format.h>
+
+namespace frustum {
+
+using json = nlohmann::ordered_json;
+
+json gradescope_results(const GradeReport& r, Lang lang) {
+  json j;
+  j["score"] = number_json(r.score);
+  std::string summary = fmt::format("{} / {}", r.score, r.max_score);
+  if (!r.variant.empty()) summary += "\n\n" + r.variant;
+  for (const Diagnostic& d : r.errors) summary += "\n\n- `" + d.format() + "`";
+  j["output"] = summary;
+  j["output_format"] = "md";
+  j["visibility"] = "visible";
+  j["stdout_visibility"] = "hidden";
+  json tests = json::array();
+  for (const ProblemGrade& p : r.problems) {
+    json t;
+    t["name"] = p.id;
+    t["score"] = number_json(p.score);
+    t["max_score"] = number_json(p.max_score);
+    t["status"] = !p.error && p.score >= p.max_score ? "passed" : "failed";
+    t["output"] = render_problem_feedback_markdown(p, lang);
+    t["output_format"] = "md";
+    t["visibility"] = "visible";
+    tests.push_back(t);
+  }
+  j["tests"] = tests;
+  return j;
+}
+
+json gradescope_failure(const std::string& reason) {
+  return json{{"score", 0},
+              {"output", "The submission could not be graded: " + reason},
+              {"output_format", "md"},
+              {"visibility", "visible"},
+              {"tests", json::array()}};
+}
+
+}  // namespace frustum

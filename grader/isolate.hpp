@@ -1,0 +1,35 @@
+// Running one piece of work in a child process with a time limit, so that a submission that is
+// slow, or that crashes the grader, costs only its own result. The work returns a string (the
+// child's whole output), which is handed back through a pipe.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace frustum {
+
+struct IsolatedResult {
+  enum class Status { Ok, Timeout, Crashed, Failed };
+  Status status = Status::Failed;
+  std::string output;  // what the work returned (Ok only)
+  std::string error;   // why there is no output: "time limit of 10 s exceeded", "killed by signal 11"
+};
+
+// Forks; the child runs `work` and writes its result to the parent, which waits at most
+// `seconds` (then kills the child). Without fork (a failure to create the process), runs `work`
+// in this process instead. `max_output` bounds what the parent accepts.
+IsolatedResult run_isolated(const std::function<std::string()>& work, double seconds,
+                            std::size_t max_output = 64u << 20);
+
+// Runs work(0) … work(count − 1) in child processes, each item under its own time limit, and
+// returns one result per item in order. One child works through the items and streams each
+// result back as it finishes (so a class costs one fork, not one per student); when an item
+// times out or crashes the child, that item alone is marked and a fresh child carries on with
+// the next. `on_result` (optional) is called in this process after each item.
+std::vector<IsolatedResult> run_isolated_each(
+    std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
+    const std::function<void(std::size_t index, const IsolatedResult&)>& on_result = {},
+    std::size_t max_output = 64u << 20);
+
+}  // namespace frustum

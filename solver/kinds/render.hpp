@@ -1,0 +1,18 @@
+// The render kind's parsed input, shared with `frustum render` (app/render_command.cpp),
+// which draws the whole image of the same scene.
+#pragma once
+
+#include "solver/kinds/scene_reader.hpp"
+
+#include <array>
+#include <vector>
+
+namespace frustum {
+
+struct RenderGiven {
+  SceneSpec spec;
+  Conventions conventions;
+  std::vector<std::array<int, 2>> pixels;  // [i, j] in the API's window (y-down APIs: j from the top)
+};
+
+}  // namespace frustum

@@ -1,0 +1,107 @@
+#include "solver/kinds/transform_steps.hpp"
+
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/kind_steps.hpp"
+#include "solver/kinds/viewing_steps.hpp"
+
+namespace frustum {
+
+namespace {
+
+// The inverse of one step from its kind: translations negate, scalings take reciprocals,
+// rotations transpose; only a shear (rational entries) is inverted by elimination. The
+// composite's inverse is then the product in reverse order, which never asks GiNaC to
+// invert a matrix of nested radicals.
+void invert_step(TransformStep& t, const std::string& kind) {
+  const int size = static_cast<int>(t.matrix.rows());
+  const int n = size - 1;
+  if (kind == "translate") {
+    t.inverse = t.matrix;
+    for (int i = 0; i < n; ++i) t.inverse(i, n) = -t.matrix(i, n);
+  } else if (kind == "scale") {
+    t.inverse = MatX<Exact>::Identity(size, size);
+    for (int i = 0; i < n; ++i) {
+      t.det *= t.matrix(i, i);
+      if (t.matrix(i, i).is_zero()) {
+        t.inverse.resize(0, 0);
+        return;
+      }
+      t.inverse(i, i) = 1 / t.matrix(i, i);
+    }
+  } else if (kind == "shear") {
+    t.det = canonical(t.matrix.determinant());
+    if (t.det.is_zero()) {
+      t.inverse.resize(0, 0);
+      return;
+    }
+    t.inverse = t.matrix.inverse();
+  } else {  // rotations are orthogonal
+    t.inverse = t.matrix.transpose();
+  }
+  t.inverse = canonical(t.inverse);
+}
+
+}  // namespace
+
+TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c) {
+  const std::vector<std::string> keys = s.keys();
+  if (keys.size() != 1)
+    s.fail(keys.empty() ? "translate" : keys[1],
+           "each step is one of translate, scale, rotate_x, rotate_y, rotate_z, rotate, shear");
+  const std::string& k = keys[0];
+  TransformStep t;
+  const std::size_t n = static_cast<std::size_t>(dim);
+  if (k == "translate") {
+    const std::vector<Exact> v = s.numbers(k, n);
+    t = {"translate " + vec(v).unicode, translate(v), ""};
+  } else if (k == "scale") {
+    std::vector<Exact> v = s.is_list(k) ? s.numbers(k, n) : std::vector<Exact>(n, s.number(k));
+    t = {"scale " + vec(v).unicode, scale(v), ""};
+    for (const Exact& x : v)
+      if (x.is_zero()) t.note = "a zero scale factor flattens space: the composite has no inverse";
+  } else if (k == "rotate_x" || k == "rotate_y" || k == "rotate_z") {
+    if (dim != 3) s.fail(k, "rotations about x, y, z are 3D; in 2D use rotate");
+    const Exact a = read_angle(s, k, c.angles);
+    t = {k + " " + angle_text(a, c.angles).unicode, rotate_axis_index(k[7] - 'x', a), ""};
+  } else if (k == "rotate") {
+    if (dim == 2) {
+      const Exact a = read_angle(s, k, c.angles);
+      t = {"rotate " + angle_text(a, c.angles).unicode, rotate_2d(a), ""};
+    } else {
+      GivenReader r = s.child(k, {"axis", "angle"});
+      const Vec3<Exact> axis = r.vector<3>("axis");
+      if (canonical(axis.dot(axis)).is_zero()) r.fail("axis", "the zero vector is not an axis");
+      const Exact a = read_angle(r, "angle", c.angles);
+      r.finish();
+      const Vec3<Exact> u = unit(axis);
+      t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
+           rotate_about(u, a), ""};
+      if (!canonical(axis.dot(axis) - 1).is_zero())
+        t.note = "the axis is normalised first: (x, y, z) = " + vec(u).unicode;
+    }
+  } else if (k == "shear") {
+    MatX<Exact> h = MatX<Exact>::Zero(dim, dim);
+    if (dim == 2) {
+      const std::vector<Exact> v = s.numbers(k, 2);
+      h(0, 1) = v[0];
+      h(1, 0) = v[1];
+      t.title = "shear x′ = x + " + exact(v[0]).unicode + "·y, y′ = y + " + exact(v[1]).unicode + "·x";
+    } else {
+      GivenReader r = s.child(k, {"xy", "xz", "yx", "yz", "zx", "zy"});
+      const std::string names = "xyz";
+      for (const std::string f : {"xy", "xz", "yx", "yz", "zx", "zy"})
+        if (r.has(f)) h(static_cast<int>(names.find(f[0])), static_cast<int>(names.find(f[1]))) = r.number(f);
+      r.finish();
+      t.title = "shear (h_ij adds coordinate j to coordinate i)";
+    }
+    t.matrix = shear(h);
+  } else {
+    s.fail(k, "unknown step: use translate, scale, rotate_x, rotate_y, rotate_z, rotate or shear");
+  }
+  s.finish();
+  t.matrix = canonical(t.matrix);
+  invert_step(t, k);
+  return t;
+}
+
+}  // namespace frustum

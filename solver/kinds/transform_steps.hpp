@@ -1,0 +1,27 @@
+// One step of the `transform` kind's format (translate, scale, rotate_x/y/z, rotate, shear),
+// read into its matrix, title and inverse. Shared by every kind that takes transform steps
+// (transform, render's scene objects).
+#pragma once
+
+#include "solver/viewing/conventions.hpp"
+#include "solver/viewing/transforms.hpp"
+
+#include <string>
+
+namespace frustum {
+
+class GivenReader;
+
+struct TransformStep {
+  std::string title;  // "translate (2, 3)"
+  MatX<Exact> matrix;
+  std::string note;
+  MatX<Exact> inverse = {};  // empty when the step is singular (a zero scale factor)
+  Exact det = 1;
+};
+
+// Reads the one-key mapping `s` ({translate: [2, 3]}) of dimension dim (2 or 3); angles in
+// the conventions' unit. Throws InputError located at the bad field.
+TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c);
+
+}  // namespace frustum

@@ -1,0 +1,332 @@
+#include "solver/kinds/variants.hpp"
+
+#include "solver/kinds/generate.hpp"
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/solve_set.hpp"
+#include "solver/kinds/vary_spec.hpp"
+#include "solver/kinds/yaml_emit.hpp"
+#include "solver/util/exact_format.hpp"
+
+#include <filesystem>
+
+namespace frustum {
+
+namespace {
+
+constexpr char kUnitSeparator = '\x1f';
+constexpr const char* kSeedPrefix = "frustum-variant/1";
+
+// Simple exact numbers (see not_nice).
+constexpr long kNiceDenominator = 100;
+constexpr long kNiceSquareDenominator = 10000;
+constexpr long kNicePiDenominator = 12;
+
+bool small_rational(const Exact& e, long max_denominator) {
+  if (!GiNaC::is_a<GiNaC::numeric>(e)) return false;
+  const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e);
+  return n.is_rational() && n.denom() <= GiNaC::numeric(max_denominator);
+}
+
+bool simple_number(const Exact& e) {
+  if (small_rational(e, kNiceDenominator)) return true;
+  if (small_rational(canonical(e * e), kNiceSquareDenominator)) return true;
+  return small_rational(canonical(e / GiNaC::Pi), kNicePiDenominator);
+}
+
+}  // namespace
+
+namespace {
+
+// A default-constructed YAML::Node is defined (and null): `vary` is present when it is neither.
+bool has_vary(const ProblemSpec& p) { return p.vary.IsDefined() && !p.vary.IsNull(); }
+
+}  // namespace
+
+bool problem_varies(const ProblemSet& set, const ProblemSpec& p) { return has_vary(p) || set.per_student; }
+
+bool set_varies(const ProblemSet& set) {
+  for (const ProblemSpec& p : set.problems)
+    if (problem_varies(set, p)) return true;
+  return false;
+}
+
+std::string set_key(const ProblemSet& set) {
+  if (!set.title.empty()) return set.title;
+  return std::filesystem::path(set.file).stem().string();
+}
+
+std::uint64_t variant_seed(const std::string& key, const std::string& who) {
+  std::uint64_t h = fnv1a64(kSeedPrefix);
+  h = fnv1a64(std::string(1, kUnitSeparator) + key, h);
+  return fnv1a64(std::string(1, kUnitSeparator) + who, h);
+}
+
+std::uint64_t problem_seed(std::uint64_t seed, const std::string& problem_id) {
+  return fnv1a64(std::string(1, kUnitSeparator) + problem_id, seed);
+}
+
+std::string not_nice(const Answers& answers, const std::vector<std::string>& ask) {
+  for (const std::string& name : ask) {
+    const Value* v = answers.find(name);
+    if (!v) continue;
+    if (!v->numbers.empty() && v->exact.empty()) continue;  // a floating-point answer (render)
+    for (const Exact& e : v->exact)
+      if (!simple_number(e)) return name + " has " + format_exact(e, MathStyle::Plain) + ", not a simple number";
+  }
+  return "";
+}
+
+ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::uint64_t seed,
+                         const std::set<std::string>& avoid, std::string* given_text) {
+  // yaml-cpp's Node::operator= writes through to every copy of a node (the base set's too):
+  // nodes of a copied ProblemSpec are rebound with reset(), and specs are never assigned.
+  ProblemSpec spec = base;
+  spec.vary.reset();
+  if (base.error || !base.info) return spec;
+  const KindInfo& kind = *base.info;
+  const bool use_default = !has_vary(base) || vary_is_default(base.vary);
+  const std::string vary_field = base.field + ".vary";
+  try {
+    if (!use_default) check_vary(base.vary, kind, file, vary_field);
+  } catch (const InputError& e) {
+    spec.error = e.diagnostic();
+    return spec;
+  }
+  if (use_default && !kind.generate) {
+    spec.error = Diagnostic{base.where, vary_field, kind.name + " has no default generator: give `vary`"};
+    return spec;
+  }
+  const GenerateOptions options{base.nice, base.hard, base.conventions};
+  Rng rng(seed);
+  std::string last;
+  for (int attempt = 0; attempt < kMaxDrawAttempts; ++attempt) {
+    try {
+      YAML::Node given = use_default ? kind.generate(rng, options)
+                                     : apply_vary(base.vary, base.given_node, rng, file, vary_field);
+      const std::string text = emit_flow(given);
+      if (avoid.count(text)) {
+        last = "the same as another variant";
+        continue;
+      }
+      GivenReader reader(given, file, base.field + ".given", kind.given_fields);
+      std::any parsed = kind.parse(reader, base.conventions);
+      reader.finish();
+      const Answers answers = kind.solve(parsed, nullptr);
+      // An empty list (no pixel covered) cannot be written as an answer: redrawn even when hard.
+      last.clear();
+      for (const std::string& name : base.ask)
+        if (const Value* v = answers.find(name); v && v->shape == Value::Shape::Matrix && v->rows == 0)
+          last = name + " is empty";
+      if (!last.empty()) continue;
+      if (!base.hard && kind.ill_conditioned) {
+        last = kind.ill_conditioned(parsed, answers);
+        if (!last.empty()) continue;
+      }
+      if (base.nice && !base.hard) {  // hard cases are rarely nice: hard wins
+        last = not_nice(answers, base.ask);
+        if (!last.empty()) continue;
+      }
+      spec.given = std::move(parsed);
+      spec.given_node.reset(given);
+      if (given_text) *given_text = text;
+      return spec;
+    } catch (const InputError& e) {
+      last = e.diagnostic().field + ": " + e.diagnostic().message;
+    } catch (const DomainError& e) {
+      last = e.field() + ": " + e.what();
+    } catch (const std::exception& e) {
+      last = e.what();
+    }
+  }
+  const YAML::Node at = has_vary(base) ? base.vary : base.given_node;
+  spec.error = Diagnostic{location_of(at, file), vary_field,
+                          "no acceptable variant in " + std::to_string(kMaxDrawAttempts) +
+                              " draws (the last: " + last + "); widen the ranges or drop nice/difficulty"};
+  return spec;
+}
+
+ProblemSpec default_problem(const KindInfo& kind, bool nice, bool hard) {
+  ProblemSpec s;
+  s.id = "p";
+  s.kind = kind.name;
+  s.info = &kind;
+  s.field = "problems[0]";
+  for (const AnswerSpec& a : kind.answers) s.ask.push_back(a.name);
+  s.nice = nice;
+  s.hard = hard;
+  return s;
+}
+
+namespace {
+
+ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std::string& student,
+                        bool vary_all, const std::vector<ProblemSet>& previous) {
+  ProblemSet out = set;
+  out.per_student = false;
+  const std::uint64_t seed = variant_seed(set_key(set), who);
+  out.variant = VariantInfo{student, seed};
+  out.problems.clear();
+  for (std::size_t i = 0; i < set.problems.size(); ++i) {
+    const ProblemSpec& base = set.problems[i];
+    if (!vary_all && !problem_varies(set, base)) {
+      out.problems.push_back(base);
+      continue;
+    }
+    std::set<std::string> avoid;
+    for (const ProblemSet& other : previous)
+      if (i < other.problems.size() && !other.problems[i].error)
+        avoid.insert(emit_flow(other.problems[i].given_node));
+    out.problems.push_back(draw_problem(base, set.file, problem_seed(seed, base.id), avoid));
+  }
+  return out;
+}
+
+}  // namespace
+
+ProblemSet variant_for_student(const ProblemSet& set, const std::string& student, bool vary_all) {
+  return make_variant(set, "student:" + student, student, vary_all, {});
+}
+
+ProblemSet variant_for(const ProblemSet& set, const std::string& student) {
+  if (!set_varies(set)) return set;
+  if (student.empty()) {
+    ProblemSet out = set;
+    out.errors.push_back(Diagnostic{SourceLocation{set.file, 0, 0}, "student",
+                                    "this set gives every student their own variant: the answers "
+                                    "need `student:` to say whose variant to grade"});
+    return out;
+  }
+  return variant_for_student(set, student, false);
+}
+
+std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t seed, int count,
+                                           bool vary_all) {
+  std::vector<ProblemSet> out;
+  for (int i = 0; i < count; ++i) {
+    const std::string who = "seed:" + std::to_string(seed) + ":" + std::to_string(i);
+    out.push_back(make_variant(set, who, "", vary_all, out));
+  }
+  return out;
+}
+
+YAML::Node answer_node(const Value& v) {
+  auto number = [&](std::size_t i) {
+    return YAML::Node(i < v.exact.size() ? format_exact(canonical(v.exact[i]), MathStyle::Plain)
+                                         : format_double(v.numbers[i]));
+  };
+  YAML::Node n;
+  switch (v.shape) {
+    case Value::Shape::Null: return YAML::Node("none");
+    case Value::Shape::Scalar: return number(0);
+    case Value::Shape::Vector:
+      n = YAML::Node(YAML::NodeType::Sequence);
+      for (std::size_t i = 0; i < v.numbers.size(); ++i) n.push_back(number(i));
+      return n;
+    case Value::Shape::Matrix:
+      n = YAML::Node(YAML::NodeType::Sequence);
+      for (int r = 0; r < v.rows; ++r) {
+        YAML::Node row(YAML::NodeType::Sequence);
+        for (int c = 0; c < v.cols; ++c) row.push_back(number(static_cast<std::size_t>(r * v.cols + c)));
+        n.push_back(row);
+      }
+      return n;
+    case Value::Shape::Bool: return YAML::Node(v.flag ? "true" : "false");
+    case Value::Shape::Word: return YAML::Node(v.word);
+    case Value::Shape::WordMap:
+      n = YAML::Node(YAML::NodeType::Map);
+      for (const auto& [k, w] : v.entries) n[k] = w;
+      return n;
+    case Value::Shape::WordList:
+      n = YAML::Node(YAML::NodeType::Sequence);
+      for (const std::string& w : v.words) n.push_back(w);
+      return n;
+  }
+  return n;
+}
+
+namespace {
+
+void comment_lines(std::string& out, const std::string& header) {
+  std::size_t start = 0;
+  while (start < header.size()) {
+    const std::size_t end = header.find('\n', start);
+    const std::string line = header.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    out += line.empty() ? "#\n" : "# " + line + "\n";
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+}
+
+// `{field}` in a problem's text becomes that given field's value.
+std::string fill_text(const std::string& text, const YAML::Node& given) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t open = text.find('{', i);
+    if (open == std::string::npos) break;
+    const std::size_t close = text.find('}', open);
+    if (close == std::string::npos) break;
+    const std::string name = text.substr(open + 1, close - open - 1);
+    out += text.substr(i, open - i);
+    if (given.IsMap() && !name.empty() && given[name].IsDefined()) out += emit_flow(given[name]);
+    else out += text.substr(open, close - open + 1);
+    i = close + 1;
+  }
+  return out + text.substr(std::min(i, text.size()));
+}
+
+}  // namespace
+
+std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant, const std::string& header) {
+  std::string out;
+  comment_lines(out, header);
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    const std::string key = it->first.as<std::string>();
+    if (key == "variants") continue;
+    if (key != "problems") {
+      out += emit_scalar(key) + ": " + emit_flow(it->second) + "\n";
+      continue;
+    }
+    out += "problems:\n";
+    const YAML::Node problems = it->second;
+    for (std::size_t i = 0; i < problems.size(); ++i) {
+      const YAML::Node p = problems[i];
+      const ProblemSpec* spec = i < variant.problems.size() ? &variant.problems[i] : nullptr;
+      const YAML::Node given = spec ? spec->given_node : p["given"];
+      bool first = true;
+      for (auto f = p.begin(); f != p.end(); ++f) {
+        const std::string name = f->first.as<std::string>();
+        if (name == "vary" || name == "nice" || name == "difficulty") continue;
+        out += first ? "  - " : "    ";
+        first = false;
+        if (name == "given" && given.IsMap()) {
+          out += "given:\n";
+          for (auto g = given.begin(); g != given.end(); ++g)
+            out += "      " + emit_flow(g->first) + ": " + emit_flow(g->second) + "\n";
+        } else if (name == "text" && f->second.IsScalar()) {
+          out += "text: " + emit_scalar(fill_text(f->second.Scalar(), given), true) + "\n";
+        } else {
+          out += emit_scalar(name) + ": " + emit_flow(f->second) + "\n";
+        }
+      }
+    }
+  }
+  return out;
+}
+
+std::string emit_answer_key(const ProblemSet& variant, const std::string& student, const std::string& header) {
+  std::string out;
+  comment_lines(out, header);
+  out += "student: " + emit_scalar(student) + "\nanswers:\n";
+  for (const ProblemSpec& p : variant.problems) {
+    const ProblemResult r = solve_problem(p, variant.file, false);
+    if (r.error) continue;
+    out += "  " + emit_scalar(p.id) + ":\n";
+    for (const std::string& name : p.ask)
+      if (const Value* v = r.answers.find(name))
+        out += "    " + emit_scalar(name) + ": " + emit_flow(answer_node(*v)) + "\n";
+  }
+  return out;
+}
+
+}  // namespace frustum

@@ -1,0 +1,117 @@
+#include "solver/numeric/condition.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace frustum {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// |a| ⊗ |b|: the cross product's terms with absolute values, componentwise.
+Eigen::Vector3d abs_cross(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d x = a.cwiseAbs(), y = b.cwiseAbs();
+  return {x.y() * y.z() + x.z() * y.y(), x.z() * y.x() + x.x() * y.z(),
+          x.x() * y.y() + x.y() * y.x()};
+}
+
+double ratio(double num, double den) {
+  if (num == 0) return 1.0;
+  if (den == 0) return kInfinity;
+  return std::max(1.0, num / den);
+}
+
+}  // namespace
+
+double trusted_digits(double kappa, Precision p) {
+  if (p == Precision::Exact) return kInfinity;
+  return std::clamp(decimal_digits(p) - std::log10(std::max(1.0, kappa)), 0.0, decimal_digits(p));
+}
+
+std::string digits_sentence(double kappa, Precision p) {
+  const double d = trusted_digits(kappa, p);
+  if (p == Precision::Exact) return "the exact backend keeps every digit";
+  if (d < 0.5) return fmt::format("{} keeps no correct digit", to_string(p));
+  return fmt::format("{} keeps about {:.1f} of its {:.1f} digits", to_string(p), d, decimal_digits(p));
+}
+
+std::string digits_sentence(double kappa) {
+  const std::string k = std::isfinite(kappa) ? fmt::format("κ ≈ {:.1e}", kappa) : "κ = ∞";
+  return fmt::format("{}: {}, {}, {}; the exact value shown is unaffected", k,
+                     digits_sentence(kappa, Precision::Float), digits_sentence(kappa, Precision::Double),
+                     digits_sentence(kappa, Precision::LongDouble));
+}
+
+double normal_condition(const std::vector<Eigen::Vector3d>& p) {
+  if (p.size() < 3) return kInfinity;
+  Eigen::Vector3d n = Eigen::Vector3d::Zero(), terms = Eigen::Vector3d::Zero();
+  double scale = 0, sum_d = 0;
+  for (const Eigen::Vector3d& q : p) scale = std::max(scale, q.cwiseAbs().maxCoeff());
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    const Eigen::Vector3d d0 = p[i] - p[0], d1 = p[i + 1] - p[0];
+    n += d0.cross(d1);
+    terms += abs_cross(d0, d1);
+    sum_d += d0.cwiseAbs().maxCoeff() + d1.cwiseAbs().maxCoeff();
+  }
+  const double len = n.cwiseAbs().maxCoeff();
+  // Input rounding: each dᵢ is off by up to 2u·max‖p‖ and meets the other edges' lengths.
+  return ratio(2 * scale * sum_d + terms.maxCoeff(), len);
+}
+
+double facing_condition(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& eye) {
+  if (p.size() < 3) return kInfinity;
+  Eigen::Vector3d n = Eigen::Vector3d::Zero(), terms = Eigen::Vector3d::Zero();
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    n += (p[i] - p[0]).cross(p[i + 1] - p[0]);
+    terms += abs_cross(p[i] - p[0], p[i + 1] - p[0]);
+  }
+  const Eigen::Vector3d v = eye - p[0];
+  // Input rounding: eye and p₀ move by u·S (S the largest coordinate), which moves D_f by
+  // about 2S‖n‖₁; the polygon's vertices move n by about 2S·Σ‖dᵢ‖, seen through v.
+  double scale = eye.cwiseAbs().maxCoeff(), edges = 0;
+  for (const Eigen::Vector3d& q : p) {
+    scale = std::max(scale, q.cwiseAbs().maxCoeff());
+    edges += (q - p[0]).cwiseAbs().maxCoeff();
+  }
+  const double input = 2 * scale * (n.cwiseAbs().sum() + v.cwiseAbs().maxCoeff() * edges);
+  return ratio(v.cwiseAbs().dot(terms) + input, std::abs(v.dot(n)));
+}
+
+DepthCondition depth_condition(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c, const Eigen::Vector2d& pixel) {
+  DepthCondition out;
+  const Eigen::Vector3d u = b - a, v = c - a;
+  const Eigen::Vector3d n = u.cross(v), terms = abs_cross(u, v);
+  // Input rounding in the projected edges, as for a normal.
+  const double scale = std::max({a.head<2>().cwiseAbs().maxCoeff(), b.head<2>().cwiseAbs().maxCoeff(),
+                                 c.head<2>().cwiseAbs().maxCoeff()});
+  const double edges = u.head<2>().cwiseAbs().maxCoeff() + v.head<2>().cwiseAbs().maxCoeff();
+  out.kappa_c = ratio(terms.z() + 2 * scale * edges, std::abs(n.z()));
+  if (!std::isfinite(out.kappa_c)) {
+    out.kappa_z = kInfinity;
+    return out;
+  }
+  const double dx = pixel.x() - a.x(), dy = pixel.y() - a.y();
+  const double correction = (std::abs(n.x() * dx) + std::abs(n.y() * dy)) / std::abs(n.z());
+  const double z = a.z() - (n.x() * dx + n.y() * dy) / n.z();
+  // Relative to the triangle's depths (what a z-buffer compares), not to z alone, which may be 0.
+  const double depth_scale = std::max({std::abs(z), std::abs(a.z()), std::abs(b.z()), std::abs(c.z())});
+  out.kappa_z = ratio(std::abs(a.z()) + correction * (1 + out.kappa_c), depth_scale);
+  return out;
+}
+
+double w_condition(const Eigen::Vector4d& row3, const Eigen::Vector4d& p) {
+  return ratio(row3.cwiseAbs().dot(p.cwiseAbs()), std::abs(row3.dot(p)));
+}
+
+double float_depth_resolution(double near, double far, double z) {
+  return std::ldexp(1.0, -24) * (far - near) * z * z / (far * near);
+}
+
+}  // namespace frustum

@@ -1,0 +1,144 @@
+// What the numeric path of a kind produces: answers (values only, no derivation steps), every
+// number at the backend's own precision for measuring its error, and the warnings about
+// ill-conditioning it found. Kinds build these from their templated cores with NumericOut.
+#pragma once
+
+#include "solver/derivation/value.hpp"
+#include "solver/numeric/precision.hpp"
+#include "solver/viewing/transforms.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace frustum {
+
+struct NumericWarning {
+  std::string title;
+  std::string text;
+};
+
+struct NumericResult {
+  Precision precision = Precision::Exact;
+  // As solve reports them: doubles, plus exact values for the exact backend.
+  Answers answers;
+  // Each numeric answer's components at the backend's precision (long double holds float,
+  // double and long double exactly; exact values with ~30 digits). A null answer is absent.
+  std::vector<std::pair<std::string, std::vector<long double>>> raw;
+  std::vector<NumericWarning> warnings;
+  // Which formulation the numeric path used where it had a choice ("plane method", "barycentric").
+  std::vector<std::string> notes;
+
+  const std::vector<long double>* find_raw(const std::string& name) const {
+    for (const auto& [n, v] : raw)
+      if (n == name) return &v;
+    return nullptr;
+  }
+};
+
+// A numeric solve prepared for one backend: the inputs already converted from exact, so run()
+// is only the arithmetic (what `frustum bench accuracy` times) and result() packages the last run.
+class NumericSolver {
+ public:
+  virtual ~NumericSolver() = default;
+  virtual void run() = 0;
+  virtual NumericResult result() const = 0;
+};
+
+// The usual adapter: In<T> holds the converted inputs, Core(In) → Out is the templated core,
+// Report(In, Out) → NumericResult packages it.
+template <typename In, typename Out, typename Core, typename Report>
+class PreparedSolver final : public NumericSolver {
+ public:
+  PreparedSolver(In in, Core core, Report report)
+      : in_(std::move(in)), core_(core), report_(report) {}
+  void run() override { out_ = core_(in_); }
+  NumericResult result() const override { return report_(in_, out_); }
+
+ private:
+  In in_;
+  Core core_;
+  Report report_;
+  Out out_{};
+};
+
+template <typename In, typename Core, typename Report>
+std::unique_ptr<NumericSolver> prepare(In in, Core core, Report report) {
+  using Out = decltype(core(in));
+  return std::make_unique<PreparedSolver<In, Out, Core, Report>>(std::move(in), core, report);
+}
+
+// Builds a NumericResult from values in scalar T.
+template <typename T>
+class NumericOut {
+ public:
+  explicit NumericOut(Precision p) { r_.precision = p; }
+
+  void scalar(const std::string& name, const T& v) { put(name, Value::Shape::Scalar, 0, 0, {v}); }
+  template <int N>
+  void vector(const std::string& name, const Eigen::Matrix<T, N, 1>& v) {
+    put(name, Value::Shape::Vector, 0, 0, std::vector<T>(v.data(), v.data() + N));
+  }
+  void vector(const std::string& name, const std::vector<T>& v) {
+    put(name, Value::Shape::Vector, 0, 0, v);
+  }
+  void matrix(const std::string& name, const MatX<T>& m) {
+    std::vector<T> row_major;
+    for (int i = 0; i < m.rows(); ++i)
+      for (int j = 0; j < m.cols(); ++j) row_major.push_back(m(i, j));
+    put(name, Value::Shape::Matrix, static_cast<int>(m.rows()), static_cast<int>(m.cols()), row_major);
+  }
+  void rows(const std::string& name, const std::vector<std::vector<T>>& rows) {
+    std::vector<T> flat;
+    for (const auto& row : rows) flat.insert(flat.end(), row.begin(), row.end());
+    put(name, Value::Shape::Matrix, static_cast<int>(rows.size()),
+        rows.empty() ? 0 : static_cast<int>(rows[0].size()), flat);
+  }
+  void null(const std::string& name) { r_.answers.set(name, Value::null()); }
+  void boolean(const std::string& name, bool b) { r_.answers.set(name, Value::boolean(b)); }
+  void word(const std::string& name, const std::string& w) { r_.answers.set(name, Value::category(w)); }
+  void warn(std::string title, std::string text) {
+    r_.warnings.push_back({std::move(title), std::move(text)});
+  }
+  void note(std::string text) { r_.notes.push_back(std::move(text)); }
+
+  NumericResult take() {
+    if (overflow_)
+      warn("Overflow", "some values exceed the range of " + std::string(to_string(r_.precision)) +
+                           " and are infinite or not a number; the exact backend has no limit.");
+    if (underflow_)
+      warn("Underflow", "some values are below the normal range of " +
+                            std::string(to_string(r_.precision)) + " (subnormal): they keep fewer digits.");
+    return std::move(r_);
+  }
+
+ private:
+  void put(const std::string& name, Value::Shape shape, int rows, int cols, const std::vector<T>& v) {
+    Value value;
+    value.shape = shape;
+    value.rows = rows;
+    value.cols = cols;
+    std::vector<long double> raw;
+    for (const T& x : v) {
+      raw.push_back(to_long_double(x));
+      if constexpr (std::is_same_v<T, Exact>) {
+        value.exact.push_back(canonical(x));
+        value.numbers.push_back(to_double(value.exact.back()));
+      } else {
+        value.numbers.push_back(static_cast<double>(x));
+        overflow_ = overflow_ || !std::isfinite(x);
+        underflow_ = underflow_ || (x != T(0) && std::abs(x) < std::numeric_limits<T>::min());
+      }
+    }
+    r_.answers.set(name, value);
+    r_.raw.emplace_back(name, std::move(raw));
+  }
+
+  NumericResult r_;
+  bool overflow_ = false, underflow_ = false;
+};
+
+}  // namespace frustum

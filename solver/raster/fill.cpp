@@ -1,0 +1,184 @@
+#include "solver/raster/fill.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace frustum {
+
+namespace {
+
+// Boxes at most this wide are filled pixel by pixel with incremental edge functions; wider
+// ones row by row from spans (three divisions per row instead of a test per pixel).
+constexpr int kSmallBox = 16;
+
+// Edge k covers a centre when E ≥ bias: E > 0, or E = 0 on a top or left edge.
+std::int64_t bias(const EdgeFunction& e) { return e.top_left() ? 0 : 1; }
+
+struct Clamped {
+  int i0, i1, j0, j1;
+  bool empty() const { return i0 > i1 || j0 > j1; }
+};
+
+Clamped clamp_box(const TriangleSetup& s, int width, int height) {
+  return {std::max(s.i_min, 0), std::min(s.i_max, width - 1), std::max(s.j_min, 0), std::min(s.j_max, height - 1)};
+}
+
+}  // namespace
+
+RasterTriangle setup_raster(const WindowTriangle& w, int source) {
+  RasterTriangle t;
+  t.setup = setup_triangle({Vec2<double>(w.v[0](0), w.v[0](1)), Vec2<double>(w.v[1](0), w.v[1](1)),
+                            Vec2<double>(w.v[2](0), w.v[2](1))});
+  t.color = pack(w.color);
+  t.source = source;
+  const TriangleSetup& s = t.setup;
+  const double z[3] = {w.v[s.order[0]](2), w.v[s.order[1]](2), w.v[s.order[2]](2)};
+  t.z0 = z[0];
+  if (s.degenerate) return t;
+  // The plane through the snapped vertices: A·dx + B·dy = dz at v1 and v2.
+  const double dx1 = static_cast<double>(s.v[1].x - s.v[0].x), dy1 = static_cast<double>(s.v[1].y - s.v[0].y);
+  const double dx2 = static_cast<double>(s.v[2].x - s.v[0].x), dy2 = static_cast<double>(s.v[2].y - s.v[0].y);
+  const double dz1 = z[1] - z[0], dz2 = z[2] - z[0];
+  const double area2 = static_cast<double>(s.area2);
+  t.a = (dz1 * dy2 - dz2 * dy1) / area2;
+  t.b = (dx1 * dz2 - dx2 * dz1) / area2;
+  return t;
+}
+
+Span span_on_row(const TriangleSetup& t, int j) {
+  if (t.degenerate || j < t.j_min || j > t.j_max) return {};
+  const std::int64_t yc = pixel_centre(0, j).y, half = kSubpixelScale / 2;
+  std::int64_t lo = t.i_min, hi = t.i_max;
+  for (const EdgeFunction& e : t.edge) {
+    // a·xc + R ≥ bias with R = b·yc + c.
+    const std::int64_t need = bias(e) - (e.b * yc + e.c);
+    if (e.a > 0) {
+      lo = std::max(lo, ceil_div(ceil_div(need, e.a) - half, kSubpixelScale));
+    } else if (e.a < 0) {
+      hi = std::min(hi, floor_div(floor_div(-need, -e.a) - half, kSubpixelScale));
+    } else if (need > 0) {
+      return {};
+    }
+  }
+  return {static_cast<int>(lo), static_cast<int>(hi)};
+}
+
+void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
+  const TriangleSetup& s = t.setup;
+  if (stats) ++stats->triangles;
+  if (s.degenerate) return;
+  const int width = frame.color.width;
+  const Clamped box = clamp_box(s, width, frame.color.height);
+  if (box.empty()) return;
+  const std::int64_t x0 = s.v[0].x, y0 = s.v[0].y;
+  long fragments = 0, written = 0;
+  float* depth = frame.depth.data.data();
+  std::uint32_t* color = frame.color.data.data();
+  const std::uint32_t c = t.color;
+  if (box.i1 - box.i0 < kSmallBox) {
+    // Incremental edge functions: E(i + 1, j) = E(i, j) + a·256, E(i, j + 1) = E(i, j) + b·256.
+    const FixedPoint2 p = pixel_centre(box.i0, box.j0);
+    std::int64_t row[3], step_x[3], step_y[3];
+    for (int k = 0; k < 3; ++k) {
+      const EdgeFunction& e = s.edge[k];
+      row[k] = e.at(p.x, p.y) - bias(e);
+      step_x[k] = e.a * kSubpixelScale;
+      step_y[k] = e.b * kSubpixelScale;
+    }
+    for (int j = box.j0; j <= box.j1; ++j) {
+      std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
+      const std::size_t base = static_cast<std::size_t>(j) * static_cast<std::size_t>(width);
+      const double row_z = t.z0 + t.b * static_cast<double>(pixel_centre(0, j).y - y0);
+      double dx = static_cast<double>(p.x - x0);
+      bool inside = false;
+      for (int i = box.i0; i <= box.i1; ++i, dx += kSubpixelScale) {
+        if ((e0 | e1 | e2) >= 0) {
+          inside = true;
+          ++fragments;
+          const float z = static_cast<float>(row_z + t.a * dx);
+          if (z < depth[base + i]) {
+            depth[base + i] = z;
+            color[base + i] = c;
+            ++written;
+          }
+        } else if (inside) {
+          break;  // a triangle's covered centres on a row are contiguous
+        }
+        e0 += step_x[0];
+        e1 += step_x[1];
+        e2 += step_x[2];
+      }
+      for (int k = 0; k < 3; ++k) row[k] += step_y[k];
+    }
+  } else {
+    for (int j = box.j0; j <= box.j1; ++j) {
+      const Span sp = span_on_row(s, j);
+      const int i0 = std::max(sp.i0, box.i0), i1 = std::min(sp.i1, box.i1);
+      if (i0 > i1) continue;
+      const std::size_t base = static_cast<std::size_t>(j) * static_cast<std::size_t>(width);
+      const double row_z = t.z0 + t.b * static_cast<double>(pixel_centre(0, j).y - y0);
+      const double dx0 = static_cast<double>(pixel_centre(i0, 0).x - x0);
+      float* d = depth + base;
+      std::uint32_t* col = color + base;
+      fragments += i1 - i0 + 1;
+      if (stats) {
+        for (int i = i0; i <= i1; ++i) {
+          const float z = static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(i - i0) * kSubpixelScale));
+          written += z < d[i];
+        }
+      }
+      // Branch-free select so the compiler can vectorise the row.
+      for (int i = i0; i <= i1; ++i) {
+        const float z = static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(i - i0) * kSubpixelScale));
+        const bool nearer = z < d[i];
+        d[i] = nearer ? z : d[i];
+        col[i] = nearer ? c : col[i];
+      }
+    }
+  }
+  if (stats) {
+    stats->fragments += fragments;
+    stats->written += written;
+  }
+}
+
+Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height, Rgb background,
+                     FillStats* stats) {
+  Frame frame(width, height, background);
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+    draw_triangle(setup_raster(triangles[k], static_cast<int>(k)), frame, stats);
+  return frame;
+}
+
+PixelTrace trace_pixel(const std::vector<WindowTriangle>& triangles, int i, int j, Rgb background) {
+  PixelTrace p;
+  p.i = i;
+  p.j = j;
+  p.color = background;
+  const double xc = i + 0.5, yc = j + 0.5;
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    const WindowTriangle& w = triangles[k];
+    // Screen bounds (a pixel of margin covers the snapping) before any setup.
+    double x0 = w.v[0](0), x1 = x0, y0 = w.v[0](1), y1 = y0;
+    for (const Vec3d& v : w.v) {
+      x0 = std::min(x0, v(0));
+      x1 = std::max(x1, v(0));
+      y0 = std::min(y0, v(1));
+      y1 = std::max(y1, v(1));
+    }
+    if (xc < x0 - 1 || xc > x1 + 1 || yc < y0 - 1 || yc > y1 + 1) continue;
+    const RasterTriangle t = setup_raster(w, static_cast<int>(k));
+    if (!covers(t.setup, i, j)) continue;
+    Competitor c{static_cast<int>(k), depth_at(t, i, j), false};
+    c.passed = c.depth < p.depth;
+    if (c.passed) {
+      p.depth = c.depth;
+      p.winner = c.triangle;
+      p.color = w.color;
+    }
+    p.competitors.push_back(c);
+  }
+  return p;
+}
+
+}  // namespace frustum

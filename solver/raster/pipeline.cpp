@@ -1,0 +1,168 @@
+#include "solver/raster/pipeline.hpp"
+
+#include "solver/clipping/polygon_clip.hpp"
+#include "solver/viewing/projection.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frustum {
+
+namespace {
+
+Mat4d to_mat4(const MatX<double>& m) { return Mat4d(m); }
+
+Mat4d translation(const Vec3d& t) {
+  Mat4d m = Mat4d::Identity();
+  m.block<3, 1>(0, 3) = t;
+  return m;
+}
+
+std::string copy_name(const std::string& name, const SceneObject::Repeat& r, const std::array<int, 3>& at) {
+  std::string s;
+  for (int a = 0; a < 3; ++a)
+    if (r.from[a] != r.to[a]) s += (s.empty() ? "" : ",") + std::to_string(at[a]);
+  return name + "[" + s + "]";
+}
+
+void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill, Cull cull,
+                  const std::string& name, FlatScene& out) {
+  const Rgb f = o.fill.value_or(fill);
+  const Cull c = o.cull.value_or(cull);
+  const Mat4d world_from_object = world_from_parent * o.transform;
+  const int index = static_cast<int>(out.objects.size());
+  out.objects.push_back(name);
+  for (std::size_t k = 0; k < o.triangles.size(); ++k) {
+    WorldTriangle t;
+    for (int v = 0; v < 3; ++v) {
+      const Vec3d& p = o.vertices[static_cast<std::size_t>(o.triangles[k][v])];
+      t.v[v] = (world_from_object * Vec4d(p(0), p(1), p(2), 1.0)).head<3>();
+    }
+    t.fill = f;
+    t.cull = c;
+    t.object = index;
+    t.face = static_cast<int>(k);
+    out.triangles.push_back(t);
+  }
+  for (std::size_t k = 0; k < o.children.size(); ++k) {
+    const SceneObject& child = o.children[k];
+    const std::string child_name = child.name.empty() ? name + ".children[" + std::to_string(k) + "]" : child.name;
+    if (!child.repeat) {
+      flatten_into(child, world_from_object, f, c, child_name, out);
+      continue;
+    }
+    // Copies: world_from_object · T(index · step) · M_child.
+    const SceneObject::Repeat& r = *child.repeat;
+    SceneObject single = child;
+    single.repeat.reset();
+    for (int i = r.from[0]; i <= r.to[0]; ++i)
+      for (int j = r.from[1]; j <= r.to[1]; ++j)
+        for (int l = r.from[2]; l <= r.to[2]; ++l) {
+          const Vec3d offset(i * r.step(0), j * r.step(1), l * r.step(2));
+          flatten_into(single, world_from_object * translation(offset), f, c, copy_name(child_name, r, {i, j, l}), out);
+        }
+  }
+}
+
+}  // namespace
+
+FlatScene flatten(const Scene& scene) {
+  FlatScene out;
+  SceneObject root;  // the scene's objects are the children of the world
+  root.children = scene.objects;
+  for (std::size_t k = 0; k < root.children.size(); ++k)
+    if (root.children[k].name.empty()) root.children[k].name = "objects[" + std::to_string(k) + "]";
+  flatten_into(root, Mat4d::Identity(), scene.default_fill, Cull::None, "world", out);
+  return out;
+}
+
+Mat4d eye_from_world(const Scene& scene) {
+  return to_mat4(look_at<double>(scene.camera.eye, scene.camera.center, scene.camera.up, scene.api));
+}
+
+Mat4d clip_from_world(const Scene& scene) { return scene.clip_from_eye * eye_from_world(scene); }
+
+std::vector<Vec4d> clip_to_volume(const std::array<Vec4d, 3>& clip, Api api) {
+  // Trivially inside: all three vertices within every plane (the common case, no copying).
+  const double eps = kClipEpsilon;
+  const bool zero = api == Api::DirectX;
+  bool inside = true;
+  for (const Vec4d& c : clip) {
+    const double w = c(3);
+    inside = inside && w >= eps && std::abs(c(0)) <= w && std::abs(c(1)) <= w && c(2) <= w &&
+             (zero ? c(2) >= 0 : c(2) >= -w);
+  }
+  if (inside) return {clip[0], clip[1], clip[2]};
+  return clip_polygon_homogeneous<double>({clip[0], clip[1], clip[2]}, eps, zero).clipped;
+}
+
+Vec3d to_raster(const Vec3d& ndc, int width, int height, Api api) {
+  Vec3d w = viewport<double>(ndc, width, height, api);
+  if (window_y_down(api)) w(1) = height - w(1);
+  return w;
+}
+
+double raster_area2(const std::vector<Vec3d>& p) {
+  double s = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3d& a = p[i];
+    const Vec3d& b = p[(i + 1) % p.size()];
+    s += a(0) * b(1) - a(1) * b(0);
+  }
+  return s;
+}
+
+bool front_facing(double area2, Api api) { return api == Api::OpenGL ? area2 > 0 : area2 < 0; }
+
+Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLight>& light) {
+  if (!light) return t.fill;
+  Vec3d n = (t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]);
+  const double len = n.norm();
+  double ndotl = 0;
+  if (len > 0 && light->direction.norm() > 0) {
+    n /= len;
+    if (!front) n = -n;  // two-sided: the side the viewer sees
+    ndotl = std::max(0.0, n.dot(-light->direction.normalized()));
+  }
+  const double k = (light->ambient + light->diffuse * ndotl) / 255.0;
+  auto channel = [&](std::uint8_t c) {
+    return static_cast<std::uint8_t>(std::clamp(std::lround(c * k), 0L, 255L));
+  };
+  return {channel(t.fill.r), channel(t.fill.g), channel(t.fill.b)};
+}
+
+std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat, GeometryStats* stats) {
+  GeometryStats s;
+  std::vector<WindowTriangle> out;
+  out.reserve(flat.triangles.size());
+  const Mat4d m = clip_from_world(scene);
+  std::vector<Vec3d> raster;
+  for (std::size_t k = 0; k < flat.triangles.size(); ++k) {
+    const WorldTriangle& t = flat.triangles[k];
+    ++s.triangles;
+    const std::array<Vec4d, 3> clip{to_clip(m, t.v[0]), to_clip(m, t.v[1]), to_clip(m, t.v[2])};
+    const std::vector<Vec4d> polygon = clip_to_volume(clip, scene.api);
+    if (polygon.size() < 3) {
+      ++s.outside;
+      continue;
+    }
+    if (polygon.size() != 3 || polygon[0] != clip[0] || polygon[1] != clip[1] || polygon[2] != clip[2]) ++s.clipped;
+    raster.clear();
+    for (const Vec4d& c : polygon) raster.push_back(to_raster(perspective_divide(c), scene.width, scene.height, scene.api));
+    const bool front = front_facing(raster_area2(raster), scene.api);
+    if (!front && t.cull == Cull::Back) {
+      ++s.culled;
+      continue;
+    }
+    const Rgb color = shade(t, front, scene.light);
+    // A clipped polygon is convex: a fan from its first vertex.
+    for (std::size_t v = 1; v + 1 < raster.size(); ++v) {
+      out.push_back({{raster[0], raster[v], raster[v + 1]}, color, static_cast<int>(k), front});
+      ++s.window;
+    }
+  }
+  if (stats) *stats = s;
+  return out;
+}
+
+}  // namespace frustum

@@ -1,0 +1,97 @@
+// The geometry half of the pipeline (issue 4, seed 004), each stage a plain function:
+// model → world (the object hierarchy) → view → clip (double precision), Sutherland–Hodgman
+// in homogeneous clip space (so w ≤ 0 never reaches the divide), the perspective divide, the
+// viewport, face orientation (culling) and flat shading. Its output, window triangles in
+// drawing order, feeds the raster half (fill.hpp, scanline.hpp).
+//
+// Raster coordinates: x right, y UP, pixel (i, j) centred at (i + ½, j + ½), as in
+// rasterizer.hpp, whatever the API. OpenGL's window is already y-up; Processing's and
+// DirectX's windows are y-down (top-left origin), so y_raster = height − y_window and window
+// pixel row j is raster row height − 1 − j.
+#pragma once
+
+#include "solver/raster/scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace frustum {
+
+// A triangle in world coordinates, in drawing order, with what it inherited.
+struct WorldTriangle {
+  std::array<Vec3d, 3> v;
+  Rgb fill;
+  Cull cull = Cull::None;
+  int object = 0;  // index into FlatScene::objects
+  int face = 0;    // triangle index within its object
+};
+
+struct FlatScene {
+  std::vector<WorldTriangle> triangles;
+  std::vector<std::string> objects;  // names, "boxes[3]" for a repeated copy
+};
+
+// The hierarchy walked depth first (objects in file order, children after their parent,
+// copies of a repeat in index order): world_from_object = world_from_parent · M_object.
+FlatScene flatten(const Scene& scene);
+
+Mat4d eye_from_world(const Scene& scene);   // the camera (look_at in the API)
+Mat4d clip_from_world(const Scene& scene);  // projection · camera
+
+// Stage: a world point to clip coordinates.
+inline Vec4d to_clip(const Mat4d& clip_from_world, const Vec3d& p) {
+  return clip_from_world * Vec4d(p(0), p(1), p(2), 1.0);
+}
+
+// Stage: Sutherland–Hodgman against w ≥ ε and the six planes −w ≤ x, y ≤ w, −w ≤ z ≤ w
+// (DirectX 0 ≤ z ≤ w). Fewer than 3 vertices: nothing is visible.
+constexpr double kClipEpsilon = 1e-9;
+std::vector<Vec4d> clip_to_volume(const std::array<Vec4d, 3>& clip, Api api);
+
+// Stage: (x, y, z, w) → (x/w, y/w, z/w); w > 0 after clipping.
+inline Vec3d perspective_divide(const Vec4d& c) { return Vec3d(c(0) / c(3), c(1) / c(3), c(2) / c(3)); }
+
+// Whether the API's window has its origin top-left with y down.
+inline bool window_y_down(Api api) { return api != Api::OpenGL; }
+
+// Stage: NDC → raster (x, y-up, window depth in [0, 1]) through viewport() of the API.
+Vec3d to_raster(const Vec3d& ndc, int width, int height, Api api);
+
+// Twice the signed area of a raster-space polygon (counter-clockwise positive).
+double raster_area2(const std::vector<Vec3d>& polygon);
+
+// Stage: orientation. Counter-clockwise in raster (y-up) space is the front in OpenGL;
+// Processing (y-down world seen through a y-negating projection) and DirectX (left-handed)
+// show a face whose n = (v1 − v0) × (v2 − v0) points at the viewer clockwise. In all three
+// the front is the side n points to, n computed in world coordinates.
+bool front_facing(double raster_area2, Api api);
+
+// Stage: flat two-sided shading (scene.hpp's DirectionalLight). Without a light, the fill.
+Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLight>& light);
+
+// A raster-space triangle ready to rasterize.
+struct WindowTriangle {
+  std::array<Vec3d, 3> v;  // raster x, y (y up), window depth z
+  Rgb color;
+  int source = 0;          // index into FlatScene::triangles
+  bool front = true;
+};
+
+struct GeometryStats {
+  long triangles = 0;     // world triangles in
+  long outside = 0;       // clipped away entirely
+  long clipped = 0;       // cut by some plane of the view volume
+  long culled = 0;        // back faces removed
+  long window = 0;        // window triangles out (clipped polygons are fans)
+};
+
+// Every stage above for every triangle, in drawing order.
+std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat,
+                                     GeometryStats* stats = nullptr);
+
+// Raster row j ↔ the API's window row (y-down APIs count rows from the top).
+inline int raster_row(int window_row, int height, Api api) {
+  return window_y_down(api) ? height - 1 - window_row : window_row;
+}
+
+}  // namespace frustum

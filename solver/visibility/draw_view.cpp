@@ -1,0 +1,82 @@
+#include "solver/visibility/draw_view.hpp"
+
+#include "solver/util/diagnostic.hpp"
+#include "solver/viewing/projection.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace frustum {
+
+namespace {
+
+// Looking within about 8° of the y axis, +y cannot be the up vector.
+constexpr double kUpParallel = 0.99;
+
+std::string point_text(const Eigen::Vector3d& p) {
+  return fmt::format("({:g}, {:g}, {:g})", p.x(), p.y(), p.z());
+}
+
+}  // namespace
+
+double DrawView::depth(const Eigen::Vector3d& world) const {
+  const Eigen::Vector4d v = view_from_world * world.homogeneous();
+  return api == Api::DirectX ? v.z() : -v.z();  // DirectX looks down +z, the others down −z
+}
+
+Eigen::Vector2d DrawView::project(const Eigen::Vector3d& world) const {
+  const Eigen::Vector4d v = view_from_world * world.homogeneous();
+  Eigen::Vector2d s(v.x(), v.y());
+  if (perspective) s /= depth(world);
+  if (api == Api::Processing) s.y() = -s.y();
+  return s;
+}
+
+DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api api) {
+  DrawView d;
+  d.api = api;
+  d.perspective = viewer.eye.has_value();
+  Eigen::Vector3d eye, forward;
+  if (d.perspective) {
+    eye = to_double(*viewer.eye);
+    forward = center - eye;
+    if (forward.norm() == 0)
+      throw DomainError("eye", "the eye is at the centre of the scene: there is no direction to look in");
+  } else {
+    forward = to_double(*viewer.view_direction);
+    if (forward.norm() == 0) throw DomainError("view_direction", "the zero vector is not a direction");
+    eye = center - forward;
+  }
+  Eigen::Vector3d up(0, 1, 0);
+  const double along_y = forward.normalized().y();
+  if (std::abs(along_y) > kUpParallel) up = Eigen::Vector3d(0, 0, along_y < 0 ? -1 : 1);
+  const MatX<double> m = look_at<double>(eye, center, up, api);
+  d.view_from_world = m;
+  d.description = d.perspective
+                      ? fmt::format("perspective from the eye {} toward {}, up {}", point_text(eye),
+                                    point_text(center), point_text(up))
+                      : fmt::format("orthographic along {}, up {}", point_text(forward), point_text(up));
+  d.description += fmt::format(" ({}{})", to_string(api), api == Api::Processing ? ", window y down" : "");
+  return d;
+}
+
+ScreenFit fit_screen(const std::vector<Eigen::Vector2d>& points, double x0, double y0, double w, double h,
+                     double margin) {
+  ScreenFit f;
+  if (points.empty()) return f;
+  Eigen::Vector2d lo = points[0], hi = points[0];
+  for (const Eigen::Vector2d& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Eigen::Vector2d size = (hi - lo).cwiseMax(Eigen::Vector2d(1e-12, 1e-12));
+  f.scale = std::min((w - 2 * margin) / size.x(), (h - 2 * margin) / size.y());
+  const Eigen::Vector2d mid = (lo + hi) / 2;
+  f.ox = x0 + w / 2 - f.scale * mid.x();
+  f.oy = y0 + h / 2 + f.scale * mid.y();
+  return f;
+}
+
+}  // namespace frustum

@@ -1,0 +1,183 @@
+#include "solver/visibility/pictures.hpp"
+
+#include "solver/derivation/svg.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "solver/visibility/hidden_lines.hpp"
+#include "solver/visibility/painter_vs_zbuffer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+
+namespace frustum {
+
+namespace {
+
+// Canvas of the hidden-line picture and the height of its caption.
+constexpr double kCanvas = 520, kMargin = 24, kCaptionLine = 16;
+// Painter vs z-buffer: pixels per raster pixel (at most), panel gap.
+constexpr double kPanel = 360, kGap = 24, kDiffInset = 0.3;
+
+constexpr const char* kLineCss =
+    "    line { stroke: #000; stroke-linecap: round; }\n"
+    "    .visible { stroke-width: 1.5; }\n"
+    "    .silhouette { stroke-width: 3.5; }\n"
+    "    .hidden { stroke: #777; stroke-width: 1; stroke-dasharray: 5 4; }\n"
+    "    text { font-family: sans-serif; font-size: 11px; fill: #222; }\n"
+    "    .vertex { font-size: 10px; fill: #1a5fb4; }\n"
+    "    .vertex-back { font-size: 10px; fill: #aaa; }\n";
+
+constexpr const char* kRasterCss =
+    "    text { font-family: sans-serif; font-size: 12px; fill: #222; }\n"
+    "    .pixel { stroke: none; shape-rendering: crispEdges; }\n"
+    "    .grid { fill: none; stroke: #ccc; stroke-width: 0.5; }\n"
+    "    .outline { fill: none; stroke: #000; stroke-width: 1; }\n"
+    "    .label { font-size: 14px; font-weight: bold; }\n"
+    "    .diff { fill: none; stroke: #e01b24; stroke-width: 1.2; }\n";
+
+// Fill colours of polygons 0, 1, 2, … (cycled); the background is white.
+constexpr std::array<const char*, 8> kPalette = {"#f6d32d", "#62a0ea", "#8ff0a4", "#f66151",
+                                                 "#dc8add", "#ffa348", "#99c1f1", "#cdab8f"};
+
+void caption(Svg& svg, double y, const std::vector<std::string>& lines) {
+  for (const std::string& l : lines) {
+    svg.text({kMargin / 2, y}, l, "");
+    y += kCaptionLine;
+  }
+}
+
+Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
+  const Mesh& m = d.mesh;
+  const Vec3<Exact>& eye = *d.viewer.eye;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  for (const Vec3<Exact>& v : m.vertices) center += to_double(v);
+  center /= static_cast<double>(std::max<std::size_t>(1, m.vertices.size()));
+  const DrawView view = draw_view(d.viewer, center, o.api);
+
+  std::vector<Eigen::Vector3d> world;
+  std::vector<Eigen::Vector2d> screen;
+  for (std::size_t k = 0; k < m.vertices.size(); ++k) {
+    world.push_back(to_double(m.vertices[k]));
+    if (view.depth(world.back()) <= 0)
+      throw DomainError("eye", fmt::format("vertex {} is not in front of the eye (looking toward the "
+                                           "centroid): the picture needs the eye outside the solid", k));
+    screen.push_back(view.project(world.back()));
+  }
+  const HiddenLines h = hidden_lines(m, eye);
+  const ScreenFit fit = fit_screen(screen, 0, 0, kCanvas, kCanvas, kMargin);
+
+  int counts[3] = {0, 0, 0};
+  for (const EdgeLines& e : h.edges) ++counts[static_cast<int>(e.cls)];
+  const std::string summary = fmt::format("{} edges: {} visible, {} silhouette, {} hidden; {} split",
+                                          h.edges.size(), counts[0], counts[1], counts[2], h.split_edges);
+
+  const std::vector<std::string> lines = {o.title, view.description,
+                                          "solid: visible · bold: silhouette · dashed: hidden or covered",
+                                          summary + " where other faces cover them"};
+  Svg svg(kCanvas, kCanvas + kCaptionLine * (static_cast<double>(lines.size()) + 1));
+  svg.title(o.title.empty() ? "hidden lines" : o.title);
+  svg.style(kLineCss);
+  // Covered spans first, so solid lines lie on top of dashed ones where they meet.
+  for (bool visible : {false, true}) {
+    svg.begin_group(visible ? "drawn" : "covered");
+    for (const EdgeLines& e : h.edges) {
+      const Eigen::Vector3d a = world[static_cast<std::size_t>(e.edge.i)], b = world[static_cast<std::size_t>(e.edge.j)];
+      for (const EdgeSpan& s : e.spans) {
+        if (s.visible != visible) continue;
+        const char* cls = !s.visible ? "hidden" : e.cls == EdgeClass::Silhouette ? "silhouette" : "visible";
+        // The span's end points in 3D, then projected (perspective keeps lines straight).
+        svg.line(fit(view.project(a + s.t0 * (b - a))), fit(view.project(a + s.t1 * (b - a))), cls,
+                 fmt::format("data-edge=\"{}\"", e.edge.name()));
+      }
+    }
+    svg.end_group();
+  }
+  // Vertex numbers: on a front face in blue, else grey.
+  std::vector<bool> on_front(m.vertices.size(), false);
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    if (counts_as_front(h.faces[f].facing))
+      for (int k : m.faces[f]) on_front[static_cast<std::size_t>(k)] = true;
+  svg.begin_group("vertices");
+  for (std::size_t k = 0; k < screen.size(); ++k)
+    svg.text(fit(screen[k]) + Eigen::Vector2d(4, -4), std::to_string(k), on_front[k] ? "vertex" : "vertex-back");
+  svg.end_group();
+  caption(svg, kCanvas + kCaptionLine / 2, lines);
+  return {svg.str(), summary};
+}
+
+// One frame as rows of merged same-label runs, window row j at the top when j = size − 1.
+void frame_panel(Svg& svg, const FrameBuffer& f, double x0, double y0, double cell) {
+  for (int j = 0; j < f.height; ++j) {
+    const double y = y0 + (f.height - 1 - j) * cell;
+    for (int i = 0; i < f.width;) {
+      int end = i + 1;
+      while (end < f.width && f.at(end, j) == f.at(i, j)) ++end;
+      if (f.at(i, j) != kBackground) {
+        const std::size_t k = static_cast<std::size_t>(std::stoi(f.at(i, j)));
+        svg.rect(x0 + i * cell, y, (end - i) * cell, cell, "pixel",
+                 fmt::format("fill=\"{}\"", kPalette[k % kPalette.size()]));
+      }
+      i = end;
+    }
+  }
+  svg.rect(x0, y0, f.width * cell, f.height * cell, "grid");
+}
+
+Picture painter_picture(const Drawable& d, const PictureOptions& o) {
+  const PainterVsZBuffer r = painter_vs_zbuffer(d.polygons, d.viewer, o.api, o.raster);
+  const int n = r.painter.width;
+  const double cell = kPanel / n;
+  std::string order;
+  for (int k : r.sort.order) order += (order.empty() ? "" : " → ") + std::to_string(k);
+  std::string conflicts;
+  for (const std::string& c : r.sort.conflicts) conflicts += (conflicts.empty() ? "" : ", ") + c;
+  const std::string summary =
+      fmt::format("painter (order {}) vs z-buffer at {}×{}: {} pixel{} differ; conflicts: {}", order, n, n,
+                  r.differing.size(), r.differing.size() == 1 ? "" : "s", conflicts.empty() ? "none" : conflicts);
+  const std::vector<std::string> lines = {
+      o.title, r.view.description,
+      fmt::format("painter: whole polygons back to front by centroid ({}); z-buffer: nearest per pixel", order),
+      fmt::format("{} of {} pixels differ (marked in red); conflicts: {}", r.differing.size(), n * n,
+                  conflicts.empty() ? "none" : conflicts)};
+  const double top = 2 * kCaptionLine;
+  const double width = 2 * kPanel + 3 * kGap, height = top + kPanel + kCaptionLine * (static_cast<double>(lines.size()) + 1.5);
+  Svg svg(width, height);
+  svg.title(o.title.empty() ? "painter vs z-buffer" : o.title);
+  svg.style(kRasterCss);
+  const std::array<double, 2> x0 = {kGap, 2 * kGap + kPanel};
+  const std::array<const FrameBuffer*, 2> frames = {&r.painter, &r.zbuffer};
+  const std::array<const char*, 2> names = {"painter's algorithm (depth sort)", "z-buffer"};
+  for (std::size_t p = 0; p < 2; ++p) {
+    svg.begin_group(p == 0 ? "painter" : "zbuffer");
+    svg.text({x0[p], top - kCaptionLine / 2}, names[p], "");
+    frame_panel(svg, *frames[p], x0[p], top, cell);
+    // Polygon outlines and numbers over the pixels (window y up → SVG y down).
+    for (std::size_t k = 0; k < r.window.size(); ++k) {
+      std::vector<Eigen::Vector2d> pts;
+      Eigen::Vector2d mid = Eigen::Vector2d::Zero();
+      for (const Eigen::Vector2d& w : r.window[k]) {
+        pts.emplace_back(x0[p] + w.x() * cell, top + (n - w.y()) * cell);
+        mid += pts.back();
+      }
+      svg.polygon(pts, "outline");
+      svg.text(mid / static_cast<double>(pts.size()), std::to_string(k), "label");
+    }
+    // A small square inside each differing pixel, so its colour stays visible.
+    for (const auto& [i, j] : r.differing)
+      svg.rect(x0[p] + (i + kDiffInset) * cell, top + (n - 1 - j + kDiffInset) * cell, (1 - 2 * kDiffInset) * cell,
+               (1 - 2 * kDiffInset) * cell, "diff");
+    svg.end_group();
+  }
+  caption(svg, top + kPanel + 1.5 * kCaptionLine, lines);
+  return {svg.str(), summary};
+}
+
+}  // namespace
+
+Picture draw_picture(const Drawable& d, const PictureOptions& o) {
+  if (d.picture == Drawable::Picture::HiddenLines) return hidden_line_picture(d, o);
+  return painter_picture(d, o);
+}
+
+}  // namespace frustum

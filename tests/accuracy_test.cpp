@@ -1,0 +1,367 @@
+// The numeric paths against the exact backend (generated well-conditioned problems), and the
+// hard-case suite problems/hard: exact answers, robust numeric answers, the studies' findings.
+#include "bench/accuracy.hpp"
+#include "bench/hard_cases.hpp"
+#include "grader/grade.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/solve_precision.hpp"
+#include "solver/numeric/condition.hpp"
+#include "test_util.hpp"
+
+#include <cmath>
+
+namespace frustum {
+namespace {
+
+using test::exact_text;
+using test::source_path;
+
+constexpr std::uint64_t kSeed = 7;
+
+NumericResult numeric(const ProblemSpec& spec, Precision p) {
+  auto s = spec.info->solve_numeric(spec.given, p);
+  s->run();
+  return s->result();
+}
+
+const ProblemSpec& problem(const ProblemSet& set, const std::string& id) {
+  const ProblemSpec* p = set.find(id);
+  EXPECT_NE(p, nullptr) << id;
+  return *p;
+}
+
+ProblemSet hard(const std::string& name) { return load_problem_set(source_path("problems/hard/" + name)); }
+
+bool has_warning(const NumericResult& r, const std::string& title_part) {
+  for (const NumericWarning& w : r.warnings)
+    if (w.title.find(title_part) != std::string::npos) return true;
+  return false;
+}
+
+std::vector<long double> raw(const NumericResult& r, const std::string& name) {
+  const std::vector<long double>* v = r.find_raw(name);
+  EXPECT_NE(v, nullptr) << name;
+  return v ? *v : std::vector<long double>{};
+}
+
+TEST(Precision, NamesRoundTripAndUnitRoundoff) {
+  for (Precision p : kAllPrecisions) EXPECT_EQ(parse_precision(to_string(p)), p);
+  EXPECT_EQ(parse_precision("quad"), std::nullopt);
+  EXPECT_EQ(unit_roundoff(Precision::Double), std::ldexp(1.0, -53));
+  EXPECT_EQ(unit_roundoff(Precision::Float), std::ldexp(1.0, -24));
+  EXPECT_EQ(unit_roundoff(Precision::Exact), 0.0);
+  EXPECT_NEAR(decimal_digits(Precision::Double), 15.95, 0.01);
+}
+
+TEST(Precision, ExactConversionsAreExactAndNearest) {
+  const long double third = from_exact<long double>(Exact(1) / 3);
+  EXPECT_NEAR(static_cast<double>(std::abs(third * 3 - 1)), 0.0, 2e-19);
+  EXPECT_EQ(from_exact<float>(Exact(1) / 3), 1.0f / 3.0f);
+  for (long double v : {0.1L, -3.0e-300L, 1.0e300L, 12345.678901234567L, 1.0e4000L})
+    if (std::abs(v) < 1e308L) {
+      EXPECT_EQ(from_exact<long double>(exact_of(v)), v);
+    }
+  EXPECT_TRUE(test::same(exact_of(1.0e4000L) / exact_of(0.5e4000L), 2));
+  EXPECT_TRUE(test::same(exact_of(0.5f), Exact(1) / 2));
+}
+
+TEST(Condition, EstimatesGrowAsProblemsDegenerate) {
+  const std::vector<Eigen::Vector3d> good = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_LT(normal_condition(good), 10);
+  const std::vector<Eigen::Vector3d> thin = {{0, 0, 0}, {1, 0, 0}, {2, 1e-9, 0}};
+  EXPECT_GT(normal_condition(thin), 1e8);
+  EXPECT_LT(facing_condition(good, {0, 0, 1}), 10);
+  EXPECT_GT(facing_condition(good, {0.3, 0.3, 1e-12}), 1e11);
+  EXPECT_EQ(trusted_digits(1e10, Precision::Float), 0.0);
+  EXPECT_NEAR(trusted_digits(1e10, Precision::Double), 5.95, 0.01);
+}
+
+// Every kind with a numeric path, on generated well-conditioned problems: each backend within
+// a few units of its roundoff times the condition bound (50) of the exact backend, and the
+// same decisions (inside, facing, nulls).
+TEST(NumericPaths, AgreeWithExactOnGeneratedProblems) {
+  for (const std::string& kind : bench::generated_kinds()) {
+    const ProblemSet set = bench::generated_problems(kind, 12, kSeed);
+    ASSERT_TRUE(set.all_errors().empty()) << kind << ": " << set.all_errors()[0].format();
+    ASSERT_EQ(set.problems.size(), 12u);
+    for (const ProblemSpec& spec : set.problems) {
+      ASSERT_TRUE(spec.info->solve_numeric) << kind;
+      const NumericResult exact = numeric(spec, Precision::Exact);
+      for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble}) {
+        const bench::CaseError e = bench::compare(numeric(spec, p), exact);
+        EXPECT_FALSE(e.wrong) << kind << " " << spec.id << " " << to_string(p);
+        EXPECT_LT(e.error, 1e4 * unit_roundoff(p)) << kind << " " << spec.id << " " << to_string(p);
+      }
+    }
+  }
+}
+
+// The exact backend of the numeric path and the kind's own exact solve give the same values
+// (the plane is compared up to scale: the solve writes it with integer coefficients).
+TEST(NumericPaths, ExactBackendMatchesTheDerivation) {
+  for (const std::string& kind : bench::generated_kinds()) {
+    const ProblemSet set = bench::generated_problems(kind, 4, kSeed + 1);
+    for (const ProblemSpec& spec : set.problems) {
+      const ProblemResult solved = solve_problem(spec, set.file, false);
+      ASSERT_FALSE(solved.error) << kind << ": " << solved.error->format();
+      const NumericResult exact = numeric(spec, Precision::Exact);
+      for (const auto& [name, v] : solved.answers.items()) {
+        const Value* n = exact.answers.find(name);
+        ASSERT_NE(n, nullptr) << kind << " " << name;
+        ASSERT_EQ(n->numbers.size(), v.numbers.size()) << kind << " " << name;
+        if (name == "plane") {
+          const double scale = n->numbers[0] / v.numbers[0];
+          for (std::size_t i = 0; i < v.numbers.size(); ++i)
+            EXPECT_NEAR(n->numbers[i], scale * v.numbers[i], 1e-9 * std::abs(scale * v.numbers[i]) + 1e-12);
+          continue;
+        }
+        for (std::size_t i = 0; i < v.numbers.size(); ++i)
+          EXPECT_NEAR(n->numbers[i], v.numbers[i], 1e-12 * std::abs(v.numbers[i]) + 1e-12)
+              << kind << " " << spec.id << " " << name << "[" << i << "]";
+        EXPECT_EQ(n->flag, v.flag) << kind << " " << name;
+        EXPECT_EQ(n->word, v.word) << kind << " " << name;
+      }
+    }
+  }
+}
+
+// M·M⁻¹ = I for the numeric composite and its inverse, in every floating backend.
+TEST(NumericPaths, TransformTimesInverseIsIdentity) {
+  const ProblemSet set = bench::generated_problems("transform", 20, kSeed);
+  for (const ProblemSpec& spec : set.problems)
+    for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble}) {
+      const NumericResult r = numeric(spec, p);
+      const std::vector<long double> m = raw(r, "matrix"), inv = raw(r, "inverse");
+      ASSERT_EQ(m.size(), 16u);
+      ASSERT_EQ(inv.size(), 16u);
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+          long double s = 0;
+          for (int k = 0; k < 4; ++k) s += m[static_cast<std::size_t>(4 * i + k)] * inv[static_cast<std::size_t>(4 * k + j)];
+          EXPECT_NEAR(static_cast<double>(s), i == j ? 1.0 : 0.0, 1e3 * unit_roundoff(p)) << to_string(p);
+        }
+    }
+}
+
+TEST(SolvePrecision, DerivationNamesTheBackendAndKeepsOtherKindsExact) {
+  const ProblemSet set = load_problem_set(source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const SetResult r = solve_set(set, true, std::nullopt, Precision::Float);
+  ASSERT_FALSE(r.problems.empty());
+  for (const ProblemResult& p : r.problems) {
+    ASSERT_FALSE(p.error) << p.error->format();
+    bool backend = false;
+    for (const Step& s : p.derivation.steps())
+      backend = backend || (s.title == "Backend" && s.note.find(p.kind == "depth_at_pixel" ? "float (IEEE 754 binary32" : "") != std::string::npos);
+    EXPECT_TRUE(backend) << p.id;
+  }
+  // seed 001's pixel: z = 8 in float too.
+  const ProblemResult z = solve_problem(problem(set, "seed001-pixel-z"), set.file, true, Precision::Float);
+  ASSERT_FALSE(z.error);
+  EXPECT_FLOAT_EQ(static_cast<float>(z.answers.find("z")->numbers[0]), 8.0f);
+  EXPECT_TRUE(z.answers.find("z")->exact.empty());
+}
+
+// ---- The hard-case suite ----
+
+// `frustum solve problems/hard` succeeds (warnings only), and every exact answer in
+// problems/hard/answers grades full marks.
+TEST(HardCases, SolveCleanlyAndMatchTheirExactAnswers) {
+  for (const char* name : {"normals", "planes", "backface", "eye_plane", "magnitudes"}) {
+    const ProblemSet set = hard(std::string(name) + ".yaml");
+    ASSERT_TRUE(set.all_errors().empty()) << name << ": " << set.all_errors()[0].format();
+    const SetResult solved = solve_set(set, true);
+    for (const ProblemResult& p : solved.problems) EXPECT_FALSE(p.error) << name << " " << p.id;
+    const GradeReport g = grade(set, load_submission(source_path(std::string("problems/hard/answers/") + name + ".yaml")));
+    EXPECT_TRUE(g.errors.empty()) << name;
+    EXPECT_GT(g.max_score, 0) << name;
+    EXPECT_DOUBLE_EQ(g.score, g.max_score) << name;
+    for (const ProblemGrade& p : g.problems)
+      for (const AnswerGrade& a : p.answers)
+        EXPECT_EQ(a.verdict, Verdict::Correct) << name << " " << p.id << " " << a.name << ": " << a.feedback;
+  }
+}
+
+TEST(HardCases, ExactNormalsOfDegeneratePolygonsAreExact) {
+  const ProblemSet set = hard("normals.yaml");
+  for (const ProblemSpec& spec : set.problems) {
+    const ProblemResult r = solve_problem(spec, set.file, true);
+    ASSERT_FALSE(r.error) << spec.id;
+    // Radicands beyond 10^15 are not factored, so some print as sqrt(3·k²)/(3k): compare values.
+    for (const Exact& x : r.answers.find("unit_normal")->exact)
+      EXPECT_NEAR(to_double(x), 1 / std::sqrt(3.0), 2e-16) << spec.id;
+  }
+  // The derivation warns about the ill-conditioned ones, with digits.
+  for (const char* id : {"offset-1e8-features-1e-8", "offset-1e8-unit-square", "subnormal-triangle"})
+    EXPECT_EQ(exact_text(solve_problem(problem(set, id), set.file, false), "unit_normal"),
+              "sqrt(3)/3, sqrt(3)/3, sqrt(3)/3") << id;
+  const ProblemResult thin = solve_problem(problem(set, "near-parallel-edges"), set.file, true);
+  EXPECT_TRUE(thin.derivation.has_warnings());
+}
+
+TEST(HardCases, NewellAndBestPairBeatTheNaiveCrossProduct) {
+  const std::vector<bench::NormalMethods> m = bench::normal_methods(hard("normals.yaml"));
+  auto find = [&](const std::string& id, Precision p) {
+    for (const bench::NormalMethods& x : m)
+      if (x.id == id && x.precision == p) return x;
+    ADD_FAILURE() << id;
+    return bench::NormalMethods{};
+  };
+  const double zero = 1.5707;  // π/2 stands for a zero vector
+  const auto parallel = find("near-parallel-edges", Precision::Double);
+  EXPECT_GT(parallel.naive, 1e-9);
+  EXPECT_LT(parallel.newell, 1e-14);
+  EXPECT_LT(parallel.best_pair, 1e-14);
+  const auto short_edge = find("near-zero-edge", Precision::Double);
+  EXPECT_GT(short_edge.naive, 1e-6);
+  EXPECT_LT(short_edge.newell, 1e-14);
+  EXPECT_LT(short_edge.best_pair, 1e-14);
+  // 1e8 with features of 1e-8: the vertices coincide in float, double rounds the edges to
+  // whole units of 1.49e-8 (a wrong direction); long double keeps about three digits.
+  EXPECT_GE(find("offset-1e8-features-1e-8", Precision::Float).newell, zero);
+  EXPECT_GT(find("offset-1e8-features-1e-8", Precision::Double).newell, 0.1);
+  EXPECT_LT(find("offset-1e8-features-1e-8", Precision::LongDouble).newell, 1e-2);
+  // The unit square at 1e8: exact in double, lost in float.
+  EXPECT_LT(find("offset-1e8-unit-square", Precision::Double).newell, 1e-15);
+  EXPECT_GE(find("offset-1e8-unit-square", Precision::Float).naive, zero);
+  // Subnormal coordinates: every product underflows.
+  EXPECT_GE(find("subnormal-triangle", Precision::Double).naive, zero);
+}
+
+// The numeric path scales by powers of two, so subnormal and huge polygons keep their normal.
+TEST(HardCases, NumericNormalSurvivesSubnormalAndHugeCoordinates) {
+  const ProblemSet set = hard("normals.yaml");
+  const double third = 1 / std::sqrt(3.0);
+  for (const char* id : {"subnormal-triangle", "huge-triangle", "near-parallel-edges", "near-zero-edge"}) {
+    const NumericResult r = numeric(problem(set, id), Precision::Double);
+    const std::vector<long double> u = raw(r, "unit_normal");
+    ASSERT_EQ(u.size(), 3u) << id;
+    for (long double x : u) EXPECT_NEAR(static_cast<double>(x), third, 1e-12) << id;
+  }
+}
+
+TEST(HardCases, BackfaceNearThePlaneExactAndAdaptive) {
+  const ProblemSet set = hard("backface.yaml");
+  const ProblemResult front = solve_problem(problem(set, "eye-1e-18-in-front"), set.file, true);
+  EXPECT_EQ(front.answers.find("facing")->word, "front");
+  EXPECT_EQ(exact_text(front, "df"), "63/50000000000000000000");
+  EXPECT_TRUE(front.derivation.has_warnings());
+  const ProblemResult on = solve_problem(problem(set, "eye-in-plane"), set.file, true);
+  EXPECT_EQ(on.answers.find("facing")->word, "edge_on");
+  EXPECT_EQ(solve_problem(problem(set, "far-face-eye-in-plane"), set.file, false).answers.find("facing")->word,
+            "edge_on");
+  // In double the inputs are rounded; the numeric path warns that D_f is ill-conditioned.
+  EXPECT_TRUE(has_warning(numeric(problem(set, "eye-1e-18-in-front"), Precision::Double), "nearly in"));
+}
+
+TEST(HardCases, NaiveSignsFailNearThePlaneAdaptiveNever) {
+  for (Precision p : {Precision::Float, Precision::Double}) {
+    const bench::FacingStudy s = bench::facing_study(p, 400, kSeed);
+    EXPECT_EQ(s.cases, 400);
+    EXPECT_GT(s.naive_wrong, 10) << to_string(p);
+    EXPECT_EQ(s.adaptive_wrong, 0) << to_string(p);
+    EXPECT_GE(s.exact_fallbacks, s.naive_wrong) << to_string(p);
+  }
+}
+
+TEST(HardCases, EdgeOnPlaneMethodWarnsAndFallsBack) {
+  const ProblemSet set = hard("planes.yaml");
+  const ProblemSpec& spec = problem(set, "edge-on-depth");
+  const ProblemResult r = solve_problem(spec, set.file, true);
+  ASSERT_FALSE(r.error);
+  EXPECT_EQ(exact_text(r, "z"), "5");
+  EXPECT_EQ(exact_text(r, "plane"), "1, 5000, -1, 500100");
+  bool warned = false;
+  for (const Step& s : r.derivation.steps())
+    warned = warned || (s.level == Step::Level::Warning && s.title == "Nearly edge-on triangle" &&
+                        s.note.find("κ") != std::string::npos);
+  EXPECT_TRUE(warned);
+  // float: the plane method would keep no digit, so z comes from barycentric interpolation and
+  // stays within the vertices' depths [0, 10]; double and long double land near 5.
+  const NumericResult f = numeric(spec, Precision::Float);
+  EXPECT_TRUE(has_warning(f, "barycentric"));
+  const long double zf = raw(f, "z")[0];
+  EXPECT_GE(zf, 0);
+  EXPECT_LE(zf, 10);
+  EXPECT_NEAR(static_cast<double>(raw(numeric(spec, Precision::Double), "z")[0]), 5.0, 1e-4);
+  EXPECT_NEAR(static_cast<double>(raw(numeric(spec, Precision::LongDouble), "z")[0]), 5.0, 1e-7);
+}
+
+TEST(HardCases, PointsAtNearAndBehindTheEyePlane) {
+  const ProblemSet set = hard("eye_plane.yaml");
+  for (const char* id : {"w-zero", "w-negative"}) {
+    const ProblemResult r = solve_problem(problem(set, id), set.file, true);
+    EXPECT_EQ(r.answers.find("ndc")->shape, Value::Shape::Null) << id;
+    EXPECT_FALSE(r.answers.find("inside")->flag) << id;
+    EXPECT_TRUE(r.derivation.has_warnings()) << id;
+    for (Precision p : {Precision::Float, Precision::Double}) {
+      const NumericResult n = numeric(problem(set, id), p);
+      EXPECT_EQ(n.answers.find("ndc")->shape, Value::Shape::Null) << id;
+      EXPECT_FALSE(n.answers.find("inside")->flag) << id;
+    }
+  }
+  const ProblemResult tiny = solve_problem(problem(set, "w-tiny"), set.file, true);
+  EXPECT_EQ(exact_text(tiny, "clip").substr(0, 6), "1, 1, ");
+  EXPECT_TRUE(test::same(tiny.answers.find("ndc")->exact[0], GiNaC::pow(10, 12)));
+  EXPECT_FALSE(tiny.answers.find("inside")->flag);
+  const NumericResult d = numeric(problem(set, "w-tiny"), Precision::Double);
+  EXPECT_NEAR(static_cast<double>(raw(d, "ndc")[0]) / 1e12, 1.0, 1e-9);
+  const ProblemResult dx = solve_problem(problem(set, "directx-w-tiny"), set.file, false);
+  EXPECT_TRUE(test::same(dx.answers.find("ndc")->exact[0], GiNaC::pow(10, 12)));
+}
+
+TEST(HardCases, FarNearOneMillionFloatCannotSeparateWhatExactDoes) {
+  const ProblemSet set = hard("eye_plane.yaml");
+  const ProblemSpec& a = problem(set, "deep-far-near-1e6");
+  const ProblemSpec& b = problem(set, "deep-far-near-1e6-behind-by-1e-3");
+  const ProblemResult ea = solve_problem(a, set.file, true), eb = solve_problem(b, set.file, false);
+  EXPECT_EQ(exact_sign(eb.answers.find("window")->exact[2] - ea.answers.find("window")->exact[2]), 1);
+  bool noted = false;
+  for (const Step& s : ea.derivation.steps()) noted = noted || s.title == "Depth precision";
+  EXPECT_TRUE(noted);
+  EXPECT_EQ(raw(numeric(a, Precision::Float), "window")[2], raw(numeric(b, Precision::Float), "window")[2]);
+  EXPECT_LT(raw(numeric(a, Precision::Double), "window")[2], raw(numeric(b, Precision::Double), "window")[2]);
+}
+
+TEST(HardCases, DepthBufferReversedZSeparatesWhatStandardCannot) {
+  using bench::DepthMapping;
+  for (double ratio : {1e3, 1e4, 1e5, 1e6}) {
+    EXPECT_EQ(bench::depth_flips(DepthMapping::ReversedZ, ratio, 1e-4), 0) << ratio;
+    if (ratio >= 1e4) {
+      EXPECT_GT(bench::depth_flips(DepthMapping::OpenGL, ratio, 1e-4), 0) << ratio;
+      EXPECT_GT(bench::depth_flips(DepthMapping::DirectX, ratio, 1e-4), 0) << ratio;
+    }
+    EXPECT_LT(bench::smallest_separable_gap(DepthMapping::ReversedZ, ratio) * 100,
+              bench::smallest_separable_gap(DepthMapping::OpenGL, ratio)) << ratio;
+  }
+  // Standard mappings get worse as far/near grows.
+  EXPECT_GT(bench::smallest_separable_gap(DepthMapping::OpenGL, 1e6),
+            bench::smallest_separable_gap(DepthMapping::OpenGL, 1e3));
+}
+
+TEST(HardCases, HugeTinyAndSubnormalVectors) {
+  const ProblemSet set = hard("magnitudes.yaml");
+  const ProblemResult huge = solve_problem(problem(set, "huge-vectors"), set.file, true);
+  EXPECT_EQ(exact_text(huge, "dot"), "1");
+  EXPECT_EQ(exact_text(huge, "cross"), "1, -1, -1");
+  EXPECT_EQ(exact_text(huge, "angle"), "60");
+  const ProblemResult sub = solve_problem(problem(set, "subnormal-vectors"), set.file, true);
+  EXPECT_NEAR(to_double(sub.answers.find("cos")->exact[0]), 1 / std::sqrt(5.0), 1e-16);
+  for (const char* id : {"huge-vectors", "tiny-vectors", "subnormal-vectors", "mixed-vectors"}) {
+    const ProblemSpec& spec = problem(set, id);
+    const NumericResult exact = numeric(spec, Precision::Exact);
+    const NumericResult d = numeric(spec, Precision::Double);
+    // Scale-free answers survive in double thanks to the power-of-two scaling.
+    for (const char* name : {"sin", "cos", "angle", "unit_normal"}) {
+      const std::vector<long double> x = raw(d, name), r = raw(exact, name);
+      ASSERT_EQ(x.size(), r.size()) << id << " " << name;
+      for (std::size_t i = 0; i < x.size(); ++i)
+        EXPECT_NEAR(static_cast<double>(x[i]), static_cast<double>(r[i]), 1e-12) << id << " " << name;
+    }
+  }
+  EXPECT_TRUE(has_warning(numeric(problem(set, "tiny-vectors"), Precision::Double), "Underflow") ||
+              raw(numeric(problem(set, "tiny-vectors"), Precision::Double), "cross")[2] == 0);
+  EXPECT_TRUE(has_warning(numeric(problem(set, "ill-conditioned-transform"), Precision::Double), "Ill-conditioned"));
+}
+
+}  // namespace
+}  // namespace frustum

@@ -1,0 +1,287 @@
+// Grading a class: CSV reading, atomic writes, isolation of slow and crashing work, the batch's
+// gradebook, feedback pages, Gradescope results, reproducible outputs, and Japanese feedback.
+#include "grader/atomic_file.hpp"
+#include "grader/batch.hpp"
+#include "grader/csv.hpp"
+#include "grader/feedback.hpp"
+#include "grader/gradescope.hpp"
+#include "grader/isolate.hpp"
+#include "grader/report.hpp"
+#include "test_util.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdlib>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+namespace frustum {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kSet = R"Y(title: Batch test
+problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    given:
+      triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]]
+      pixel: [1, 1]
+    ask: [normal, plane, z]
+  - id: bf
+    kind: backface
+    given: {points: [[1,0,0],[1,1,1],[0,1,2]], eye: [0,1,0]}
+    ask: [df, facing]
+)Y";
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A fresh scratch directory per test.
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("frustum-batch-" + name + "-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+}
+
+// Every file under a directory, relative path → content.
+std::map<std::string, std::string> tree(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read(e.path());
+  return files;
+}
+
+TEST(Csv, ReadsQuotesDoubledQuotesLineBreaksAndCrlf) {
+  const CsvTable t = parse_csv("\xEF\xBB\xBFstudent,zbuf.plane\r\ns1,\"x + y - z = -6\"\r\n"
+                               "\"s,2\",\"say \"\"hi\"\"\nthere\"\n\n");
+  ASSERT_FALSE(t.error);
+  ASSERT_EQ(t.rows.size(), 3u);
+  EXPECT_EQ(t.rows[0].fields, (std::vector<std::string>{"student", "zbuf.plane"}));
+  EXPECT_EQ(t.rows[1].fields, (std::vector<std::string>{"s1", "x + y - z = -6"}));
+  EXPECT_EQ(t.rows[2].fields, (std::vector<std::string>{"s,2", "say \"hi\"\nthere"}));
+  EXPECT_EQ(t.rows[2].line, 3);
+  EXPECT_EQ(parse_csv("a,\"b\nc").error.value_or(""), "line 1: unterminated quoted field");
+}
+
+TEST(Csv, WritingAndReadingRoundTrips) {
+  const std::vector<std::string> fields = {"plain", "with,comma", "with \"quote\"", "two\nlines", ""};
+  const CsvTable t = parse_csv(csv_row(fields) + csv_row({"x"}));
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0].fields, fields);
+}
+
+TEST(AtomicFile, WritesTheWholeFileAndLeavesNoTemporaryBehind) {
+  const fs::path dir = scratch("atomic");
+  const fs::path target = dir / "sub" / "out.txt";
+  write_file_atomically(target.string(), "first");
+  write_file_atomically(target.string(), std::string(1 << 20, 'x'));
+  EXPECT_EQ(read(target), std::string(1 << 20, 'x'));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir / "sub"), fs::directory_iterator()), 1);
+  EXPECT_THROW(write_file_atomically((dir / "sub" / "out.txt" / "below").string(), "x"), std::exception);
+  fs::remove_all(dir);
+}
+
+TEST(Isolate, SlowAndCrashingItemsCostOnlyTheirOwnResult) {
+  std::vector<std::size_t> seen;
+  const auto results = run_isolated_each(
+      5,
+      [](std::size_t i) -> std::string {
+        if (i == 1) std::this_thread::sleep_for(std::chrono::seconds(30));
+        if (i == 2) std::raise(SIGSEGV);
+        if (i == 3) throw std::runtime_error("bad answers");
+        return "item " + std::to_string(i);
+      },
+      0.5, [&](std::size_t i, const IsolatedResult&) { seen.push_back(i); });
+  ASSERT_EQ(results.size(), 5u);
+  EXPECT_EQ(results[0].status, IsolatedResult::Status::Ok);
+  EXPECT_EQ(results[0].output, "item 0");
+  EXPECT_EQ(results[1].status, IsolatedResult::Status::Timeout);
+  EXPECT_NE(results[1].error.find("time limit"), std::string::npos);
+  EXPECT_EQ(results[2].status, IsolatedResult::Status::Crashed);
+  EXPECT_NE(results[2].error.find("signal 11"), std::string::npos) << results[2].error;
+  EXPECT_EQ(results[3].status, IsolatedResult::Status::Failed);
+  EXPECT_EQ(results[3].error, "bad answers");
+  EXPECT_EQ(results[4].output, "item 4");
+  EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+}
+
+// A class of five: right, wrong, broken YAML, empty, and too big.
+fs::path make_class(const fs::path& dir) {
+  const fs::path in = dir / "in";
+  fs::create_directories(in);
+  write(in / "a_right.yaml",
+        "student: s001\nanswers:\n  zbuf: {normal: [1, 1, -1], plane: \"x + y - z = -6\", z: 8}\n"
+        "  bf: {df: -2, facing: back}\n");
+  write(in / "b_wrong.yaml", "student: s002\nanswers:\n  zbuf: {normal: [-1, -1, 1], plane: [1, 1, -1, -6], z: 9}\n");
+  write(in / "c_broken.yaml", "answers: [1, 2\n");
+  write(in / "d_empty.yaml", "");
+  write(in / "e_huge.yaml", "student: s005\n#" + std::string(kMaxSubmissionBytes + 10, 'x') + "\n");
+  write(in / "notes.txt", "not an answers file");
+  return in;
+}
+
+TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
+  const fs::path dir = scratch("class");
+  const fs::path in = make_class(dir);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  BatchOptions options;
+  options.out_dir = (dir / "out").string();
+  std::vector<std::size_t> progress;
+  options.on_progress = [&](std::size_t done, std::size_t total, const std::string&) {
+    progress.push_back(done);
+    EXPECT_EQ(total, 5u);
+  };
+  const BatchResult r = grade_batch(set, collect_submissions(in.string()), options);
+  ASSERT_EQ(r.rows.size(), 5u);
+  EXPECT_EQ(progress, (std::vector<std::size_t>{1, 2, 3, 4, 5}));
+  EXPECT_EQ(r.rows[0].student, "s001");
+  EXPECT_EQ(r.rows[0].status, "graded");
+  EXPECT_DOUBLE_EQ(r.rows[0].score, 5);
+  EXPECT_DOUBLE_EQ(r.rows[0].max_score, 5);
+  EXPECT_EQ(r.rows[1].student, "s002");
+  EXPECT_EQ(r.rows[1].status, "graded");
+  EXPECT_LT(r.rows[1].score, 2);
+  EXPECT_EQ(r.rows[2].student, "c_broken");
+  EXPECT_EQ(r.rows[2].status, "error");
+  EXPECT_NE(r.rows[2].message.find("c_broken.yaml:2:"), std::string::npos) << r.rows[2].message;
+  EXPECT_EQ(r.rows[3].status, "error");
+  EXPECT_EQ(r.rows[4].student, "e_huge");
+  EXPECT_EQ(r.rows[4].status, "error");
+  EXPECT_NE(r.rows[4].message.find("larger than the limit"), std::string::npos);
+
+  const std::string book = read(dir / "out" / "gradebook.csv");
+  const CsvTable t = parse_csv(book);
+  ASSERT_EQ(t.rows.size(), 6u) << book;
+  EXPECT_EQ(t.rows[0].fields[0], "student");
+  EXPECT_EQ(t.rows[0].fields[5], "zbuf");
+  EXPECT_EQ(t.rows[1].fields[1], "5");
+  EXPECT_EQ(t.rows[1].fields[3], "100.0");
+  for (const char* stem : {"s001", "s002", "c_broken", "d_empty", "e_huge"}) {
+    EXPECT_TRUE(fs::exists(dir / "out" / "feedback" / (std::string(stem) + ".md"))) << stem;
+    EXPECT_TRUE(fs::exists(dir / "out" / "gradescope" / (std::string(stem) + ".json"))) << stem;
+  }
+  const auto gs = nlohmann::json::parse(read(dir / "out" / "gradescope" / "s002.json"));
+  ASSERT_EQ(gs["tests"].size(), 2u);
+  EXPECT_EQ(gs["tests"][0]["name"], "zbuf");
+  EXPECT_EQ(gs["tests"][0]["status"], "failed");
+  EXPECT_EQ(gs["tests"][0]["max_score"], 3);
+  EXPECT_EQ(gs["tests"][0]["output_format"], "md");
+  EXPECT_EQ(gs["tests"][0]["visibility"], "visible");
+  EXPECT_NE(gs["tests"][0]["output"].get<std::string>().find("x + y − z = −6"), std::string::npos);
+  const std::string html = read(dir / "out" / "feedback" / "s002.html");
+  EXPECT_NE(html.find("data-verdict=\"incorrect\""), std::string::npos);
+  EXPECT_EQ(html.find("http"), std::string::npos) << "the page must not load anything";
+  fs::remove_all(dir);
+}
+
+TEST(Batch, ASecondRunGivesByteIdenticalOutputs) {
+  const fs::path dir = scratch("twice");
+  const fs::path in = make_class(dir);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  BatchOptions options;
+  options.out_dir = (dir / "one").string();
+  grade_batch(set, collect_submissions(in.string()), options);
+  options.out_dir = (dir / "two").string();
+  grade_batch(set, collect_submissions(in.string()), options);
+  const auto one = tree(dir / "one"), two = tree(dir / "two");
+  // gradebook, 5 Gradescope files, 5 Markdown pages, 4 HTML pages (not for the file never read)
+  EXPECT_EQ(one.size(), 15u);
+  EXPECT_TRUE(one == two);
+  fs::remove_all(dir);
+}
+
+TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
+  const fs::path dir = scratch("csv");
+  write(dir / "roster.csv",
+        "student,zbuf.normal,zbuf.plane,zbuf.z,bf.df,bf.facing\n"
+        "s001,\"[1, 1, -1]\",x + y - z = -6,8,-2,back\n"
+        "s002,\"[2, 2, -2]\",\"[1, 1, -1, -6]\",9,,\n"
+        ",,,,,\n");
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  const std::vector<BatchEntry> entries = collect_submissions((dir / "roster.csv").string());
+  ASSERT_EQ(entries.size(), 3u);
+  EXPECT_EQ(entries[2].student, "row-4");
+  BatchOptions options;
+  options.out_dir = (dir / "out").string();
+  const BatchResult r = grade_batch(set, entries, options);
+  ASSERT_EQ(r.rows.size(), 3u);
+  EXPECT_DOUBLE_EQ(r.rows[0].score, 5);
+  EXPECT_DOUBLE_EQ(r.rows[1].score, 2);  // normal and plane right, z wrong, bf missing
+  EXPECT_DOUBLE_EQ(r.rows[2].score, 0);
+  EXPECT_EQ(r.rows[0].source, (dir / "roster.csv").string() + " row 2");
+  write(dir / "bad.csv", "name,zbuf.z\nx,1\n");
+  EXPECT_THROW(collect_submissions((dir / "bad.csv").string()), InputError);
+  fs::remove_all(dir);
+}
+
+TEST(Feedback, JapaneseFeedbackTranslatesVerdictsAndStepTitles) {
+  const GradeReport r = grade(load_problem_set_from_string(kSet, "set.yaml"),
+                              load_submission_from_string("student: s1\nanswers:\n  zbuf: {z: 9}\n", "a.yaml"));
+  const std::string ja = render_grade_text(r, TextStyle{false, Lang::Ja});
+  EXPECT_NE(ja.find("不正解"), std::string::npos) << ja;
+  EXPECT_NE(ja.find("求め方"), std::string::npos);
+  EXPECT_NE(ja.find("法線"), std::string::npos);
+  EXPECT_NE(ja.find("未解答"), std::string::npos);
+  const std::string en = render_grade_text(r, TextStyle{false, Lang::En});
+  EXPECT_NE(en.find("incorrect"), std::string::npos);
+  EXPECT_EQ(en.find("不正解"), std::string::npos);
+  EXPECT_EQ(tr("Normalize the view volume", Lang::Ja), "視野錐台の正規化");
+  EXPECT_EQ(tr("Clip against x ≤ 1", Lang::Ja), "クリップ: x ≤ 1");
+  EXPECT_EQ(tr("Something new", Lang::Ja), "Something new");
+  const std::string md = render_feedback_markdown(r, Lang::Ja);
+  EXPECT_NE(md.find("| 解答 | 判定 |"), std::string::npos) << md;
+}
+
+}  // namespace
+}  // namespace frustum
+
+namespace frustum {
+namespace {
+
+// tools/gradescope/run_autograder in a stand-in for Gradescope's /autograder tree.
+TEST(Gradescope, AutograderScriptWritesResultsJson) {
+  const fs::path ag = scratch("autograder");
+  fs::create_directories(ag / "source" / "build");
+  fs::create_directories(ag / "submission");
+  fs::create_symlink(FRUSTUM_BINARY, ag / "source" / "build" / "frustum");
+  fs::create_symlink(test::source_path("problems"), ag / "source" / "problems");
+  write(ag / "autograder.conf", "SET=problems/seeds/001_zbuffer_plane_method.yaml\nLANG_FEEDBACK=ja\n");
+  const std::string run = "AUTOGRADER_ROOT=" + ag.string() + " AUTOGRADER_CONF=" + (ag / "autograder.conf").string() +
+                          " bash " + test::source_path("tools/gradescope/run_autograder") + " >/dev/null 2>&1";
+  // No answers file: a zero score that says why.
+  ASSERT_EQ(std::system(run.c_str()), 0);
+  auto results = nlohmann::json::parse(read(ag / "results" / "results.json"));
+  EXPECT_EQ(results["score"], 0);
+  EXPECT_NE(results["output"].get<std::string>().find("No answers file"), std::string::npos);
+  // The published answers: full marks, one test per problem, feedback in Japanese.
+  fs::copy_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml"), ag / "submission" / "answers.yaml");
+  ASSERT_EQ(std::system(run.c_str()), 0);
+  results = nlohmann::json::parse(read(ag / "results" / "results.json"));
+  EXPECT_EQ(results["score"], 8);
+  ASSERT_EQ(results["tests"].size(), 3u);
+  for (const auto& t : results["tests"]) {
+    EXPECT_EQ(t["status"], "passed");
+    EXPECT_EQ(t["score"], t["max_score"]);
+  }
+  EXPECT_NE(results["tests"][0]["output"].get<std::string>().find("判定"), std::string::npos);
+  fs::remove_all(ag);
+}
+
+}  // namespace
+}  // namespace frustum

@@ -1,0 +1,83 @@
+// The HTML feedback page in a real browser: headless Chromium (installed by tools/setup.sh)
+// loads the self-contained page from disk and dumps the DOM after its script ran; the test
+// reads the verdicts, the score and the math from what the browser rendered.
+#include "grader/feedback.hpp"
+#include "test_util.hpp"
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include <unistd.h>
+
+namespace frustum {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kChromium = "/usr/bin/chromium";
+
+const char* kSet = R"Y(problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    given:
+      triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]]
+      pixel: [1, 1]
+    ask: [unit_normal, plane, z]
+  - id: bf
+    kind: backface
+    given: {points: [[1,0,0],[1,1,1],[0,1,2]], eye: [0,1,0]}
+    ask: [df, facing]
+)Y";
+
+// Runs Chromium on the page and returns the DOM it dumped.
+std::string dump_dom(const fs::path& page) {
+  const fs::path profile = fs::temp_directory_path() / ("frustum-chromium-" + std::to_string(getpid()));
+  fs::create_directories(profile);
+  const std::string command =
+      std::string("timeout 120 ") + kChromium +
+      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking"
+      " --disable-component-update --disable-sync --disable-dev-shm-usage --user-data-dir=" + profile.string() +
+      " --dump-dom 'file://" + page.string() + "' 2>/dev/null";
+  std::string out;
+  if (FILE* p = popen(command.c_str(), "r")) {
+    std::array<char, 4096> buf;
+    std::size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+    pclose(p);
+  }
+  fs::remove_all(profile);
+  return out;
+}
+
+TEST(FeedbackBrowser, ChromiumRendersTheVerdictsScoreAndMath) {
+  ASSERT_TRUE(fs::exists(kChromium)) << kChromium << " is missing: tools/setup.sh installs Debian's chromium";
+  const GradeReport r = grade(
+      load_problem_set_from_string(kSet, "set.yaml"),
+      load_submission_from_string("student: s42\nanswers:\n  zbuf: {unit_normal: [\"1/sqrt(3)\", \"1/sqrt(3)\", \"-1/sqrt(3)\"], "
+                                  "z: 9}\n  bf: {df: -2, facing: front}\n",
+                                  "a.yaml"));
+  const fs::path page = fs::temp_directory_path() / ("frustum-feedback-" + std::to_string(getpid()) + ".html");
+  {
+    std::ofstream out(page);
+    out << render_feedback_html(r);
+  }
+  const std::string dom = dump_dom(page);
+  fs::remove(page);
+  ASSERT_FALSE(dom.empty()) << "Chromium printed nothing";
+  // The page's script ran in the browser: it marks the body and counts the verdicts shown.
+  EXPECT_NE(dom.find("data-rendered=\"yes\""), std::string::npos) << dom.substr(0, 2000);
+  EXPECT_NE(dom.find("<p id=\"summary\">correct: 2, incorrect: 2, missing: 1</p>"), std::string::npos)
+      << dom.substr(0, 4000);
+  EXPECT_NE(dom.find("Score: 2 / 5"), std::string::npos);
+  // The math shows as written on paper: the exact unit normal and the plane's equation.
+  EXPECT_NE(dom.find("(√3/3, √3/3, −√3/3)"), std::string::npos);
+  EXPECT_NE(dom.find("x + y − z = −6"), std::string::npos);
+  // The derivation under the wrong z, with the plane-method step.
+  EXPECT_TRUE(std::regex_search(dom, std::regex("id=\"feedback-zbuf-z\"[\\s\\S]*Depth at the pixel")));
+}
+
+}  // namespace
+}  // namespace frustum

@@ -1,0 +1,547 @@
+// Generated variants (issue 6): the random numbers, `vary`, reproducibility pinned byte for
+// byte, per-student grading, and the self-test of every kind — generated variants graded against
+// their own key (full marks), a key perturbed by ten times the tolerance (not correct) and
+// malformed answers (unparseable, never a crash). FRUSTUM_SELFTEST_COUNT=N runs N per kind.
+#include "grader/compare.hpp"
+#include "grader/grade.hpp"
+#include "solver/kinds/generate.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/variants.hpp"
+#include "solver/kinds/yaml_emit.hpp"
+#include "test_util.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <set>
+
+namespace frustum {
+namespace {
+
+// ---------------------------------------------------------------- random numbers
+
+TEST(Rng, Fnv1a64KnownValues) {
+  EXPECT_EQ(fnv1a64(""), 0xcbf29ce484222325ULL);
+  EXPECT_EQ(fnv1a64("a"), 0xaf63dc4c8601ec8cULL);
+  EXPECT_EQ(fnv1a64("foobar"), 0x85944171f73967e8ULL);
+  // Streaming: hashing in two parts is hashing the whole.
+  EXPECT_EQ(fnv1a64("bar", fnv1a64("foo")), fnv1a64("foobar"));
+}
+
+TEST(Rng, SplitMix64ReferenceSequence) {
+  // Vigna's splitmix64.c from state 1234567.
+  Rng rng(1234567);
+  EXPECT_EQ(rng.next(), 6457827717110365317ULL);
+  EXPECT_EQ(rng.next(), 3203168211198807973ULL);
+  EXPECT_EQ(rng.next(), 9817491932198370423ULL);
+  EXPECT_EQ(rng.next(), 4593380528125082431ULL);
+  EXPECT_EQ(rng.next(), 16408922859458223821ULL);
+}
+
+TEST(Rng, IntegersCoverTheirRangeEvenly) {
+  Rng rng(42);
+  std::map<std::int64_t, int> counts;
+  constexpr int kDraws = 70000;
+  for (int i = 0; i < kDraws; ++i) {
+    const std::int64_t v = rng.integer(-3, 3);
+    ASSERT_GE(v, -3);
+    ASSERT_LE(v, 3);
+    ++counts[v];
+  }
+  ASSERT_EQ(counts.size(), 7u);
+  for (const auto& [v, c] : counts) EXPECT_NEAR(c, kDraws / 7, 500) << v;  // ~5 standard deviations
+  // A range that is not a power of two: rejection keeps 0..2 uniform.
+  int zeros = 0;
+  for (int i = 0; i < 30000; ++i) zeros += rng.below(3) == 0;
+  EXPECT_NEAR(zeros, 10000, 400);
+  for (int i = 0; i < 1000; ++i) EXPECT_NE(rng.nonzero(-1, 1), 0);
+}
+
+// ---------------------------------------------------------------- vary
+
+// Variants per kind in the self-test (FRUSTUM_SELFTEST_COUNT overrides).
+constexpr int kSelfTestCount = 20;
+
+// Pinned output: these must never change across machines, compilers or library versions.
+const char* kGoldenSetS1234567 = R"(# student s1234567
+title: "Z-buffer drill"
+problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    text: "Find z at pixel [1, 1]."
+    given:
+      triangle: [[0, 0, 2], [2, 3, 2], [0, 3, 9]]
+      pixel: [1, 1]
+    ask: [z]
+  - id: df
+    kind: backface
+    given:
+      points: [[1, 0, 0], [1, 1, 1], [0, 1, 2]]
+      eye: [0, 1, 0]
+  - id: fixed
+    kind: vectors
+    given:
+      a: [2, 0, 1]
+      b: [1, 2, 0]
+    ask: [dot]
+)";
+const char* kGoldenKeyS1234567 = R"(student: s1234567
+answers:
+  zbuf:
+    z: 5/6
+  df:
+    normal: [1, -1, 1]
+    view: [-1, 1, 0]
+    df: -2
+    facing: back
+  fixed:
+    dot: 2
+)";
+const char* kGoldenSetS7654321 = R"(title: "Z-buffer drill"
+problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    text: "Find z at pixel [1, 1]."
+    given:
+      triangle: [[0, 0, 8], [1, 2, 3], [0, 3, 9]]
+      pixel: [1, 1]
+    ask: [z]
+  - id: df
+    kind: backface
+    given:
+      points: [[1, 0, 0], [1, 1, 1], [0, 1, 2]]
+      eye: [0, 1, 0]
+  - id: fixed
+    kind: vectors
+    given:
+      a: [2, 0, 1]
+      b: [1, 2, 0]
+    ask: [dot]
+)";
+
+const char* kVariedSet = R"(title: "Z-buffer drill"
+problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    text: "Find z at pixel {pixel}."
+    given:
+      triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]]
+      pixel: [1, 1]
+    vary:
+      triangle: [[0, 0, {range: [2, 8], step: 2}], {each: {range: [1, 3]}}, [0, 3, 9]]
+    ask: [z]
+  - id: df
+    kind: backface
+    given:
+      points: [[1, 0, 0], [1, 1, 1], [0, 1, 2]]
+      eye: [0, 1, 0]
+    vary:
+      eye: {choices: [[0, 1, 0], [5, 5, 5], [-4, 2, 7]]}
+  - id: fixed
+    kind: vectors
+    given: {a: [2, 0, 1], b: [1, 2, 0]}
+    ask: [dot]
+)";
+
+TEST(Vary, GeneratedVariantsArePinnedByteForByte) {
+  const ProblemSet set = load_problem_set_from_string(kVariedSet, "drill.yaml");
+  ASSERT_TRUE(set.all_errors().empty());
+  ASSERT_TRUE(set_varies(set));
+  const ProblemSet a = variant_for(set, "s1234567");
+  ASSERT_TRUE(a.all_errors().empty()) << a.all_errors()[0].format();
+  ASSERT_TRUE(a.variant);
+  const YAML::Node root = YAML::Load(kVariedSet);
+  EXPECT_EQ(emit_variant_set(root, a, "student s1234567"), kGoldenSetS1234567);
+  EXPECT_EQ(emit_answer_key(a, "s1234567", ""), kGoldenKeyS1234567);
+  const ProblemSet b = variant_for(set, "s7654321");
+  EXPECT_EQ(emit_variant_set(root, b, ""), kGoldenSetS7654321);
+}
+
+const char* kDefaultsSet = R"(title: "Defaults"
+variants: per_student
+problems:
+  - {id: v, kind: vectors, nice: true, given: {a: [2, 0, 1], b: [1, 2, 0]}}
+  - {id: z, kind: depth_at_pixel, nice: true, given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1]}}
+  - {id: m, kind: transform, given: {dim: 2, steps: [{rotate: 90}], points: [[1, 0]]}}
+  - {id: p, kind: project_point, given: {point: [0, 0, -5], perspective: {fovy: 90, aspect: 1, near: 1, far: 10}, viewport: {width: 200, height: 200}}}
+)";
+const char* kGoldenDefaults0 = R"(title: "Defaults"
+problems:
+  - id: v
+    kind: vectors
+    given:
+      a: [1, -1, -2]
+      b: [1, -3, 2]
+  - id: z
+    kind: depth_at_pixel
+    given:
+      triangle: [[4, 0, 4], [6, 6, 4], [1, 1, 8]]
+      pixel: [3, 2]
+  - id: m
+    kind: transform
+    given:
+      dim: 3
+      steps: [{translate: [-5, 3, -3]}, {rotate_z: -60}]
+      points: [[0, 2, -1]]
+  - id: p
+    kind: project_point
+    given:
+      point: [9/2, 9/2, -9]
+      perspective: {fovy: 60, aspect: 4/3, near: 2, far: 57}
+      viewport: {width: 640, height: 480}
+)";
+const char* kGoldenDefaults1 = R"(title: "Defaults"
+problems:
+  - id: v
+    kind: vectors
+    given:
+      a: [2, 0, -2]
+      b: [-3, -1, -3]
+  - id: z
+    kind: depth_at_pixel
+    given:
+      triangle: [[3, 8, 10], [2, 1, 8], [1, 2, 6]]
+      pixel: [2, 4]
+  - id: m
+    kind: transform
+    given:
+      dim: 3
+      steps: [{translate: [-4, -1, -5]}, {shear: {xy: 1}}]
+      points: [[-1, 2, 0]]
+  - id: p
+    kind: project_point
+    given:
+      point: [-49/4, 0, -49]
+      perspective: {fovy: 60, aspect: 4/3, near: 2, far: 91}
+      viewport: {width: 640, height: 480}
+)";
+
+TEST(Vary, DefaultGeneratorsArePinnedByteForByte) {
+  const ProblemSet set = load_problem_set_from_string(kDefaultsSet, "defaults.yaml");
+  ASSERT_TRUE(set.all_errors().empty());
+  const std::vector<ProblemSet> v = variants_from_seed(set, 2024, 2);
+  const YAML::Node root = YAML::Load(kDefaultsSet);
+  EXPECT_EQ(emit_variant_set(root, v[0], ""), kGoldenDefaults0);
+  EXPECT_EQ(emit_variant_set(root, v[1], ""), kGoldenDefaults1);
+}
+
+TEST(Vary, SeedsAreTheDocumentedHash) {
+  const ProblemSet set = load_problem_set_from_string(kVariedSet, "drill.yaml");
+  const ProblemSet v = variant_for(set, "s1");
+  ASSERT_TRUE(v.variant);
+  EXPECT_EQ(v.variant->student, "s1");
+  const std::string text = std::string("frustum-variant/1") + '\x1f' + "Z-buffer drill" + '\x1f' + "student:s1";
+  EXPECT_EQ(v.variant->seed, fnv1a64(text));
+  EXPECT_EQ(problem_seed(v.variant->seed, "zbuf"), fnv1a64(text + '\x1f' + "zbuf"));
+  // Without a title the key is the file name's stem.
+  ProblemSet untitled = set;
+  untitled.title.clear();
+  EXPECT_EQ(set_key(untitled), "drill");
+}
+
+TEST(Vary, OnlyTheVariedFieldsChangeAndFixedProblemsStay) {
+  const ProblemSet set = load_problem_set_from_string(kVariedSet, "drill.yaml");
+  for (const std::string student : {"a", "b", "c", "d"}) {
+    const ProblemSet v = variant_for(set, student);
+    ASSERT_TRUE(v.all_errors().empty());
+    const YAML::Node t = v.problems[0].given_node["triangle"];
+    EXPECT_EQ(emit_flow(t[0][0]), "0");
+    EXPECT_EQ(emit_flow(t[2]), "[0, 3, 9]");
+    const int z0 = t[0][2].as<int>();
+    EXPECT_TRUE(z0 == 2 || z0 == 4 || z0 == 6 || z0 == 8) << z0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const int c = t[1][i].as<int>();
+      EXPECT_TRUE(c >= 1 && c <= 3) << c;
+    }
+    EXPECT_EQ(emit_flow(v.problems[2].given_node), "{a: [2, 0, 1], b: [1, 2, 0]}");
+  }
+}
+
+TEST(Vary, SeededVariantsArePairwiseDistinct) {
+  const std::string yaml = R"(problems:
+  - id: v
+    kind: vectors
+    given: {a: [1, 0, 0], b: [0, 1, 0]}
+    vary: {a: [{range: [1, 3]}, 0, 0]}
+)";
+  const ProblemSet set = load_problem_set_from_string(yaml, "few.yaml");
+  const std::vector<ProblemSet> three = variants_from_seed(set, 7, 3);
+  std::set<std::string> seen;
+  for (const ProblemSet& v : three) {
+    ASSERT_TRUE(v.all_errors().empty());
+    seen.insert(emit_flow(v.problems[0].given_node));
+  }
+  EXPECT_EQ(seen.size(), 3u);
+  // Only three values exist: a fourth distinct variant is a clear error, not a hang.
+  const std::vector<ProblemSet> four = variants_from_seed(set, 7, 4);
+  ASSERT_TRUE(four[3].problems[0].error);
+  EXPECT_NE(four[3].problems[0].error->message.find("the same as another variant"), std::string::npos);
+}
+
+TEST(Vary, MistakesAreLocatedErrors) {
+  const std::string yaml = R"(variants: per_student
+problems:
+  - id: v
+    kind: vectors
+    given: {a: [1, 0, 0], b: [0, 1, 0]}
+    vary:
+      c: {range: [1, 3]}
+  - id: w
+    kind: vectors
+    given: {a: [1, 0, 0], b: [0, 1, 0]}
+    vary:
+      a: {range: [3, 1]}
+  - id: x
+    kind: vectors
+    given: {a: [1, 0, 0], b: [0, 1, 0]}
+    vary:
+      a: {choices: [[0, 0, 0]]}
+)";
+  const ProblemSet v = variant_for(load_problem_set_from_string(yaml, "bad.yaml"), "s");
+  ASSERT_TRUE(v.problems[0].error);
+  EXPECT_EQ(v.problems[0].error->format(), "bad.yaml:7:7: problems[0].vary.c: not a given field of vectors (did you mean 'a'?)");
+  ASSERT_TRUE(v.problems[1].error);
+  EXPECT_EQ(v.problems[1].error->format(), "bad.yaml:12:18: problems[1].vary.a.range: lo must not exceed hi");
+  // Every draw fails (a zero vector): a bounded number of attempts, then the reason.
+  ASSERT_TRUE(v.problems[2].error);
+  EXPECT_NE(v.problems[2].error->message.find("no acceptable variant in 100 draws"), std::string::npos);
+  EXPECT_NE(v.problems[2].error->message.find("zero vector"), std::string::npos);
+  // A student id is needed to pick the variant.
+  const ProblemSet none = variant_for(load_problem_set_from_string(kVariedSet, "drill.yaml"), "");
+  ASSERT_FALSE(none.errors.empty());
+  EXPECT_EQ(none.errors[0].field, "student");
+}
+
+TEST(Vary, NiceAndHardShapeTheDefaultGenerators) {
+  const std::string yaml = R"(variants: per_student
+problems:
+  - {id: z, kind: depth_at_pixel, nice: true, given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1]}}
+  - {id: edge, kind: backface, difficulty: hard, given: {points: [[1, 0, 0], [1, 1, 1], [0, 1, 2]], eye: [0, 1, 0]}}
+  - {id: fov, kind: projection_plane, nice: true, given: {window: [200, 200], fov: 60, point: [0, 100, -300]}}
+  - {id: flat, kind: normal, difficulty: hard, given: {points: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}
+)";
+  const ProblemSet set = load_problem_set_from_string(yaml, "opts.yaml");
+  ASSERT_TRUE(set.all_errors().empty());
+  for (int s = 0; s < 20; ++s) {
+    const ProblemSet v = variant_for(set, "student" + std::to_string(s));
+    ASSERT_TRUE(v.all_errors().empty()) << v.all_errors()[0].format();
+    const SetResult r = solve_set(v, false);
+    const GiNaC::ex z = r.problems[0].answers.find("z")->exact[0];
+    EXPECT_TRUE(GiNaC::is_a<GiNaC::numeric>(z) && GiNaC::ex_to<GiNaC::numeric>(z).is_integer()) << z;
+    EXPECT_EQ(r.problems[1].answers.find("facing")->word, "edge_on");
+    const int fov = v.problems[2].given_node["fov"].as<int>();
+    EXPECT_TRUE(fov == 60 || fov == 90) << fov;
+    EXPECT_TRUE(not_nice(r.problems[2].answers, v.problems[2].ask).empty());
+    EXPECT_LT(triangle_shape(doubles(std::vector<Vec3<Exact>>{
+                  Vec3<Exact>(v.problems[3].given_node["points"][0][0].as<int>(), v.problems[3].given_node["points"][0][1].as<int>(), v.problems[3].given_node["points"][0][2].as<int>()),
+                  Vec3<Exact>(v.problems[3].given_node["points"][1][0].as<int>(), v.problems[3].given_node["points"][1][1].as<int>(), v.problems[3].given_node["points"][1][2].as<int>()),
+                  Vec3<Exact>(v.problems[3].given_node["points"][2][0].as<int>(), v.problems[3].given_node["points"][2][1].as<int>(), v.problems[3].given_node["points"][2][2].as<int>())})),
+              kMinTriangleShape);
+  }
+}
+
+TEST(Vary, GradingRegeneratesTheStudentsVariant) {
+  const ProblemSet set = load_problem_set_from_string(kVariedSet, "drill.yaml");
+  const ProblemSet mine = variant_for(set, "s42");
+  const Submission key = load_submission_from_string(emit_answer_key(mine, "s42", ""), "key.yaml");
+  ASSERT_EQ(key.student, "s42");
+  const GradeReport r = grade(variant_for(set, key.student), key);
+  EXPECT_TRUE(r.errors.empty());
+  EXPECT_GT(r.max_score, 0);
+  EXPECT_DOUBLE_EQ(r.score, r.max_score);
+  // Someone else's key against this student's variant loses marks (the z answers differ).
+  Submission other = key;
+  other.student = "s43";
+  const GradeReport wrong = grade(variant_for(set, other.student), other);
+  EXPECT_LT(wrong.score, wrong.max_score);
+}
+
+// ---------------------------------------------------------------- the command line
+
+std::string run_cli(const std::string& args, int& status) {
+  const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+  status = p ? pclose(p) : -1;
+  return out;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+TEST(GenerateCli, WritesReproducibleSetsWhoseKeysGradeFullMarks) {
+  const std::string dir = ::testing::TempDir() + "frustum_generate_cli";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string set = dir + "/drill.yaml";
+  std::ofstream(set) << kVariedSet;
+  int status = 0;
+  run_cli("generate " + set + " --student s1 --student s2 -o " + dir + "/a", status);
+  ASSERT_EQ(status, 0);
+  run_cli("generate " + set + " --student s1 -o " + dir + "/b", status);
+  ASSERT_EQ(status, 0);
+  const std::string first = read_text(dir + "/a/drill-s1.yaml");
+  EXPECT_NE(first.find("seed "), std::string::npos);
+  EXPECT_EQ(first, read_text(dir + "/b/drill-s1.yaml"));
+  EXPECT_EQ(read_text(dir + "/a/answers/drill-s1.yaml"), read_text(dir + "/b/answers/drill-s1.yaml"));
+  // The key grades full marks against the master set, which regenerates s1's variant.
+  const std::string out = run_cli("grade " + set + " " + dir + "/a/answers/drill-s1.yaml --format json", status);
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("variant of student s1"), std::string::npos) << out;
+  const nlohmann::json j = nlohmann::json::parse(out.substr(out.find('{')));
+  EXPECT_EQ(j["score"], j["max_score"]);
+  // Each student is graded against their own variant.
+  const std::string cross = run_cli("grade " + set + " " + dir + "/a/answers/drill-s2.yaml", status);
+  EXPECT_NE(cross.find("Student s2"), std::string::npos) << cross;
+  // Seeded variants grade against their own generated files.
+  run_cli("generate " + set + " --seed 5 --count 2 -o " + dir + "/c", status);
+  ASSERT_EQ(status, 0);
+  const std::string own = run_cli("grade " + dir + "/c/drill-seed5-1.yaml " + dir + "/c/answers/drill-seed5-1.yaml", status);
+  EXPECT_EQ(status, 0) << own;
+  EXPECT_NE(own.find(": 6 / 6"), std::string::npos) << own;
+  // Usage errors.
+  run_cli("generate " + set, status);
+  EXPECT_NE(status, 0);
+}
+
+// ---------------------------------------------------------------- self-test of every kind
+
+int selftest_count() {
+  if (const char* env = std::getenv("FRUSTUM_SELFTEST_COUNT")) return std::max(1, std::atoi(env));
+  return kSelfTestCount;
+}
+
+// Every number moved by ten times its tolerance window (alternating signs); for answers
+// compared up to scale, one component.
+YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const Tolerance& tol) {
+  switch (v.shape) {
+    case Value::Shape::Null: return YAML::Node("1");
+    case Value::Shape::Bool: return YAML::Node(v.flag ? "false" : "true");
+    case Value::Shape::Word: {
+      if (spec.kind == AnswerKind::BitString) return YAML::Node((v.word[0] == '0' ? "1" : "0") + v.word.substr(1));
+      for (const std::string& w : spec.words)
+        if (w != v.word) return YAML::Node(w);
+      return YAML::Node("front");
+    }
+    case Value::Shape::WordMap: {
+      YAML::Node n = answer_node(v);
+      const std::string first = v.entries[0].second;
+      n[v.entries[0].first] = first == "front" ? "back" : first == "visible" ? "hidden" : "visible";
+      return n;
+    }
+    case Value::Shape::WordList: {
+      YAML::Node n = answer_node(v);
+      if (spec.kind == AnswerKind::Sequence && v.words.size() >= 2 && v.words.front() != v.words.back()) {
+        YAML::Node r(YAML::NodeType::Sequence);
+        for (std::size_t i = v.words.size(); i-- > 0;) r.push_back(v.words[i]);
+        return r;
+      }
+      n.push_back("nonsense");
+      return n;
+    }
+    default: break;
+  }
+  const bool per_entry = v.shape == Value::Shape::Matrix;
+  double scale = 0;
+  for (const double x : v.numbers) scale = std::max(scale, std::abs(x));
+  Value p = v;
+  p.exact.clear();
+  if (spec.kind == AnswerKind::Direction || spec.kind == AnswerKind::Plane || spec.kind == AnswerKind::Point) {
+    // Compared up to scale: move only the smallest component, which no rescaling undoes (the
+    // residual is at least 10·window·√(1 − 1/n)).
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < p.numbers.size(); ++i)
+      if (std::abs(v.numbers[i]) < std::abs(v.numbers[k])) k = i;
+    p.numbers[k] += 10 * window(v.numbers[k], tol, scale);
+    return answer_node(p);
+  }
+  for (std::size_t i = 0; i < p.numbers.size(); ++i) {
+    const double w = window(v.numbers[i], tol, per_entry ? v.numbers[i] : scale);
+    p.numbers[i] += (i % 2 ? -10 : 10) * w;
+  }
+  return answer_node(p);
+}
+
+// Not an answer of its kind in any reading.
+YAML::Node malformed(const AnswerSpec& spec) {
+  switch (spec.kind) {
+    case AnswerKind::Bool: return YAML::Node("maybe");
+    case AnswerKind::Category: return YAML::Node("sideways");
+    case AnswerKind::BitString: return YAML::Node("01x");
+    case AnswerKind::WordList:
+    case AnswerKind::Sequence: return YAML::Load("{a: 1}");
+    case AnswerKind::WordMap: return YAML::Node("x");
+    default: return YAML::Node("1 +* ");
+  }
+}
+
+std::string submission_text(const ProblemSpec& spec, const std::function<YAML::Node(const AnswerSpec&)>& make) {
+  std::string s = "student: s\nanswers:\n  p:\n";
+  for (const std::string& name : spec.ask) s += "    " + name + ": " + emit_flow(make(*spec.info->answer(name))) + "\n";
+  return s;
+}
+
+class SelfTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SelfTest, KeysGradeFullPerturbedKeysDoNotMalformedAnswersAreUnparseable) {
+  const KindInfo& kind = *builtin_kinds().find(GetParam());
+  ASSERT_TRUE(kind.generate) << kind.name << " has no default generator";
+  const int count = selftest_count();
+  for (int i = 0; i < count; ++i) {
+    // Every fourth variant nice, every fifth hard: all three kinds of draws are checked.
+    const ProblemSpec base = default_problem(kind, i % 4 == 1, i % 5 == 2);
+    ProblemSet set;
+    set.file = "selftest.yaml";
+    set.problems.push_back(draw_problem(base, set.file, fnv1a64(kind.name + "/" + std::to_string(i))));
+    const ProblemSpec& spec = set.problems[0];
+    ASSERT_FALSE(spec.error) << kind.name << " #" << i << ": " << spec.error->format();
+    const std::string given = emit_flow(spec.given_node);
+    const ProblemResult solved = solve_problem(spec, set.file, false);
+    ASSERT_FALSE(solved.error) << given;
+
+    // (a) its own key: full marks.
+    const GradeReport full = grade(set, load_submission_from_string(emit_answer_key(set, "s", ""), "key.yaml"));
+    ASSERT_TRUE(full.errors.empty()) << given << "\n" << full.errors[0].format();
+    ASSERT_FALSE(full.problems[0].error) << given;
+    for (const AnswerGrade& a : full.problems[0].answers)
+      EXPECT_EQ(a.verdict, Verdict::Correct) << kind.name << " " << a.name << " of " << given << ": got " << a.got_text
+                                             << ", " << a.feedback;
+    EXPECT_DOUBLE_EQ(full.score, full.max_score) << given;
+
+    // (b) perturbed by ten times the tolerance: no answer is correct.
+    const std::string off = submission_text(spec, [&](const AnswerSpec& a) {
+      return perturbed(*solved.answers.find(a.name), a, spec.tolerance_for(a.name));
+    });
+    const GradeReport wrong = grade(set, load_submission_from_string(off, "off.yaml"));
+    for (const AnswerGrade& a : wrong.problems[0].answers)
+      EXPECT_NE(a.verdict, Verdict::Correct) << kind.name << " " << a.name << " of " << given << ": " << a.got_text;
+    EXPECT_LT(wrong.score, wrong.max_score);
+
+    // (c) malformed: unparseable, and graded without a crash.
+    const GradeReport bad = grade(set, load_submission_from_string(submission_text(spec, malformed), "bad.yaml"));
+    for (const AnswerGrade& a : bad.problems[0].answers)
+      EXPECT_EQ(a.verdict, Verdict::Unparseable) << kind.name << " " << a.name << ": " << a.got_text;
+    EXPECT_EQ(bad.score, 0);
+  }
+}
+
+std::vector<std::string> kind_names() { return builtin_kinds().names(); }
+
+INSTANTIATE_TEST_SUITE_P(EveryKind, SelfTest, ::testing::ValuesIn(kind_names()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+}  // namespace
+}  // namespace frustum

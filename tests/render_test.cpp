@@ -1,0 +1,401 @@
+// The scene pipeline, the z-buffer and scan-line renderers, the render kind and
+// `frustum render`: cross-checks against the plane method, coverage properties over random
+// meshes, and the paper-plane seed.
+#include "test_util.hpp"
+
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/render.hpp"
+#include "solver/raster/fill.hpp"
+#include "solver/raster/scanline.hpp"
+#include "solver/visibility/mesh.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <set>
+#include <sys/wait.h>
+
+namespace frustum {
+namespace {
+
+// Uniform on the 1/256 grid in [lo, hi].
+double grid_value(std::mt19937& rng, double lo, double hi) {
+  std::uniform_int_distribution<long> d(static_cast<long>(lo * 256), static_cast<long>(hi * 256));
+  return static_cast<double>(d(rng)) / 256.0;
+}
+
+WindowTriangle random_triangle(std::mt19937& rng, double size, int width, int height) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const double cx = grid_value(rng, -size / 2, width + size / 2), cy = grid_value(rng, -size / 2, height + size / 2);
+  WindowTriangle t;
+  for (Vec3d& v : t.v) v = Vec3d(cx + grid_value(rng, -size, size), cy + grid_value(rng, -size, size), u(rng));
+  t.color = {static_cast<std::uint8_t>(rng() % 256), static_cast<std::uint8_t>(rng() % 256), 7};
+  return t;
+}
+
+// The z-buffer written naively: every pixel of the box through covers() and depth_at().
+Frame reference_frame(const std::vector<WindowTriangle>& tris, int w, int h, Rgb bg) {
+  Frame f(w, h, bg);
+  for (std::size_t k = 0; k < tris.size(); ++k) {
+    const RasterTriangle t = setup_raster(tris[k], static_cast<int>(k));
+    for (int j = std::max(t.setup.j_min, 0); j <= std::min(t.setup.j_max, h - 1); ++j)
+      for (int i = std::max(t.setup.i_min, 0); i <= std::min(t.setup.i_max, w - 1); ++i) {
+        if (!covers(t.setup, i, j)) continue;
+        const float z = depth_at(t, i, j);
+        if (z < f.depth.at(i, j)) {
+          f.depth.at(i, j) = z;
+          f.color.at(i, j) = t.color;
+        }
+      }
+  }
+  return f;
+}
+
+std::string scene_yaml(const std::string& api, const std::string& objects, const std::string& pixels,
+                       const std::string& extra = "") {
+  return "conventions: {api: " + api + "}\nproblems:\n  - id: p\n    kind: render\n    given:\n      scene:\n"
+         "        viewport: {width: 64, height: 48}\n"
+         "        camera: {eye: [0, 0, 10], center: [0, 0, 0], up: [0, 1, 0]}\n"
+         "        perspective: {fovy: 60, aspect: 4/3, near: 1, far: 100}\n" +
+         extra + "        objects:\n" + objects + "      pixels: " + pixels + "\n";
+}
+
+// ---------------------------------------------------------------- raster stages
+
+TEST(Pipeline, DepthAtPixelCentreEqualsThePlaneMethod) {
+  // The depth_at_pixel kind (seed 001's plane method, exact) on the same window-space
+  // triangle, at every covered pixel centre of a few random triangles.
+  std::mt19937 rng(4);
+  int checked = 0;
+  for (int n = 0; n < 12; ++n) {
+    const WindowTriangle w = random_triangle(rng, 6, 20, 20);
+    const RasterTriangle t = setup_raster(w);
+    if (t.setup.degenerate) continue;
+    const std::vector<Fragment> frags = rasterize(t.setup);
+    for (std::size_t f = 0; f < frags.size(); f += 3) {
+      const int i = frags[f].i, j = frags[f].j;
+      const std::string given = fmt::format("{{triangle: [[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]], pixel: [{}, {}]}}",
+                                            w.v[0](0), w.v[0](1), w.v[0](2), w.v[1](0), w.v[1](1), w.v[1](2), w.v[2](0),
+                                            w.v[2](1), w.v[2](2), i + 0.5, j + 0.5);
+      const ProblemResult r = test::solve_yaml(test::one("depth_at_pixel", given), false);
+      ASSERT_FALSE(r.error) << test::error_text(r);
+      const double plane_z = r.answers.find("z")->numbers[0];
+      EXPECT_NEAR(depth_at(t, i, j), plane_z, 1e-6 * std::max(1.0, std::abs(plane_z))) << given;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 40);
+}
+
+TEST(Pipeline, SpansEqualPerPixelCoverage) {
+  std::mt19937 rng(11);
+  for (int n = 0; n < 2000; ++n) {
+    const WindowTriangle w = random_triangle(rng, n % 2 ? 3 : 40, 50, 50);
+    const TriangleSetup t = setup_raster(w).setup;
+    for (int j = t.j_min - 1; j <= t.j_max + 1; ++j) {
+      const Span s = span_on_row(t, j);
+      for (int i = t.i_min - 1; i <= t.i_max + 1; ++i)
+        ASSERT_EQ(covers(t, i, j), i >= s.i0 && i <= s.i1) << "triangle " << n << " pixel " << i << "," << j;
+    }
+  }
+}
+
+TEST(Pipeline, SharedEdgesCoverEachPixelExactlyOnce) {
+  // Random triangulated grids (jittered interior vertices, random diagonals): every pixel
+  // centre inside the outer rectangle is covered by exactly one triangle.
+  std::mt19937 rng(7);
+  for (int mesh = 0; mesh < 40; ++mesh) {
+    const int cells = 3 + mesh % 6;
+    const double cell = 2.0 + (mesh % 5) * 1.7, x0 = 0.25 + (mesh % 3), y0 = 0.75;
+    std::vector<std::vector<Vec3d>> p(cells + 1, std::vector<Vec3d>(cells + 1));
+    for (int a = 0; a <= cells; ++a)
+      for (int b = 0; b <= cells; ++b) {
+        const bool inner = a > 0 && b > 0 && a < cells && b < cells;
+        const double jx = inner ? grid_value(rng, -0.3 * cell, 0.3 * cell) : 0;
+        const double jy = inner ? grid_value(rng, -0.3 * cell, 0.3 * cell) : 0;
+        p[a][b] = Vec3d(x0 + a * cell + jx, y0 + b * cell + jy, 0.5);
+      }
+    const int size = static_cast<int>(x0 + cells * cell) + 3;
+    std::vector<int> count(static_cast<std::size_t>(size * size), 0);
+    auto add = [&](const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+      const TriangleSetup t = setup_raster(WindowTriangle{{a, b, c}, {}, 0, true}).setup;
+      for (int j = t.j_min; j <= t.j_max; ++j) {
+        const Span s = span_on_row(t, j);
+        for (int i = s.i0; i <= s.i1; ++i) ++count[static_cast<std::size_t>(j * size + i)];
+      }
+    };
+    for (int a = 0; a < cells; ++a)
+      for (int b = 0; b < cells; ++b) {
+        if (rng() % 2) {
+          add(p[a][b], p[a + 1][b], p[a + 1][b + 1]);
+          add(p[a][b], p[a + 1][b + 1], p[a][b + 1]);
+        } else {
+          add(p[a][b], p[a + 1][b], p[a][b + 1]);
+          add(p[a + 1][b], p[a + 1][b + 1], p[a][b + 1]);
+        }
+      }
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) {
+        const double xc = i + 0.5, yc = j + 0.5;
+        const bool inside = xc > x0 && xc < x0 + cells * cell && yc > y0 && yc < y0 + cells * cell;
+        ASSERT_EQ(count[static_cast<std::size_t>(j * size + i)], inside ? 1 : 0) << "mesh " << mesh << " pixel " << i << "," << j;
+      }
+  }
+}
+
+TEST(Pipeline, ZBufferEqualsTheNaiveReferenceAndScanline) {
+  std::mt19937 rng(5);
+  std::vector<WindowTriangle> tris;
+  for (int n = 0; n < 300; ++n) tris.push_back(random_triangle(rng, n % 3 ? 4 : 30, 90, 70));
+  const Rgb bg{1, 2, 3};
+  const Frame ref = reference_frame(tris, 90, 70, bg);
+  FillStats fs;
+  const Frame z = render_zbuffer(tris, 90, 70, bg, &fs);
+  EXPECT_EQ(z.color.data, ref.color.data);
+  EXPECT_EQ(z.depth.data, ref.depth.data);
+  EXPECT_GT(fs.written, 1000);
+  ScanlineStats st;
+  Image<float> depth;
+  const Image<std::uint32_t> s = render_scanline(tris, 90, 70, bg, &st, &depth);
+  EXPECT_EQ(s.data, ref.color.data);
+  EXPECT_EQ(depth.data, ref.depth.data);
+  EXPECT_EQ(st.row_depth_bytes, 90 * sizeof(float));
+  EXPECT_EQ(st.zbuffer_depth_bytes, 90 * 70 * sizeof(float));
+  // The query path agrees with the frame at every pixel it is asked about.
+  for (int k = 0; k < 200; ++k) {
+    const int i = static_cast<int>(rng() % 90), j = static_cast<int>(rng() % 70);
+    const PixelTrace t = trace_pixel(tris, i, j, bg);
+    EXPECT_EQ(pack(t.color), ref.color.at(i, j));
+    EXPECT_EQ(t.depth, ref.depth.at(i, j));
+  }
+}
+
+TEST(Pipeline, ClippingKeepsEveryVertexInFrontOfTheEye) {
+  // Triangles with vertices behind the eye (w < 0) come out inside the NDC cube, w > 0.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-3, 3);
+  Scene s;
+  s.api = Api::OpenGL;
+  s.camera = {Vec3d(0, 0, 0), Vec3d(0, 0, -1), Vec3d(0, 1, 0)};
+  s.clip_from_eye << 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.02, -0.202, 0, 0, -1, 0;  // near 0.1, far 10
+  const Mat4d m = clip_from_world(s);
+  int crossing = 0;
+  for (int n = 0; n < 500; ++n) {
+    std::array<Vec4d, 3> c;
+    bool behind = false;
+    for (Vec4d& v : c) {
+      v = to_clip(m, Vec3d(u(rng), u(rng), u(rng)));
+      behind = behind || v(3) <= 0;
+    }
+    crossing += behind;
+    for (const Vec4d& v : clip_to_volume(c, Api::OpenGL)) {
+      ASSERT_GT(v(3), 0);
+      const Vec3d ndc = perspective_divide(v);
+      for (int a = 0; a < 3; ++a) ASSERT_LE(std::abs(ndc(a)), 1 + 1e-9);
+    }
+  }
+  EXPECT_GT(crossing, 100);
+}
+
+// ---------------------------------------------------------------- scenes
+
+TEST(Scene, FrontFacesPointAtTheEyeInEveryApi) {
+  // A cube seen from many eyes: the pipeline's front flag (window winding) agrees with
+  // n·(eye − v₀) > 0 in world coordinates, and culling keeps exactly those faces.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-6, 6);
+  for (Api api : {Api::OpenGL, Api::Processing, Api::DirectX}) {
+    for (int n = 0; n < 30; ++n) {
+      Scene s;
+      s.api = api;
+      s.width = 80;
+      s.height = 60;
+      Vec3d eye(u(rng), u(rng), u(rng));
+      if (eye.norm() < 6) eye = eye.normalized() * 6;  // the whole cube in view
+      s.camera = {eye, Vec3d(0, 0, 0), Vec3d(0.1, 1, 0.2)};
+      const Volume<double> v = perspective_volume(1.0, 4.0 / 3.0, 0.5, 50.0);
+      s.clip_from_eye = Mat4d(frustum_matrix(v, api));
+      SceneObject cube = box_object(2, 2, 2);
+      cube.cull = Cull::Back;
+      s.objects.push_back(cube);
+      const FlatScene flat = flatten(s);
+      const std::vector<WindowTriangle> tris = geometry(s, flat);
+      int expected = 0;
+      for (const WorldTriangle& t : flat.triangles)
+        expected += (t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]).dot(eye - t.v[0]) > 0;
+      std::set<int> drawn;
+      for (const WindowTriangle& w : tris) drawn.insert(w.source);  // a clipped triangle is a fan
+      ASSERT_EQ(static_cast<int>(drawn.size()), expected) << to_string(api);
+      for (const WindowTriangle& w : tris) {
+        const WorldTriangle& t = flat.triangles[static_cast<std::size_t>(w.source)];
+        ASSERT_TRUE(w.front);
+        ASSERT_GT((t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]).dot(eye - t.v[0]), 0) << to_string(api);
+      }
+    }
+  }
+}
+
+TEST(Scene, HierarchyComposesParentThenChild) {
+  Scene s;
+  SceneObject parent, child;
+  parent.transform.block<3, 1>(0, 3) = Vec3d(10, 0, 0);
+  parent.transform.block<3, 3>(0, 0) << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // rotate_z 90°
+  child.transform.block<3, 1>(0, 3) = Vec3d(1, 0, 0);
+  child.vertices = {Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(0, 1, 0)};
+  child.triangles = {{0, 1, 2}};
+  child.fill = Rgb{9, 9, 9};
+  child.repeat = SceneObject::Repeat{{0, 0, 0}, {0, 0, 2}, Vec3d(0, 0, 5)};
+  parent.children.push_back(child);
+  s.objects.push_back(parent);
+  const FlatScene flat = flatten(s);
+  ASSERT_EQ(flat.triangles.size(), 3u);
+  // M = T(10,0,0)·R_z(90°)·T(0,0,5k)·T(1,0,0): the child's origin lands at (10, 1, 5k).
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_TRUE(flat.triangles[k].v[0].isApprox(Vec3d(10, 1, 5.0 * k))) << flat.triangles[k].v[0].transpose();
+    EXPECT_TRUE(flat.triangles[k].v[1].isApprox(Vec3d(10, 2, 5.0 * k)));
+    EXPECT_EQ(flat.triangles[k].fill, (Rgb{9, 9, 9}));
+  }
+  EXPECT_EQ(flat.objects[static_cast<std::size_t>(flat.triangles[2].object)], "objects[0].children[0][2]");
+}
+
+TEST(Scene, ProcessingLightsFromAboveShadeBoxTopsFully) {
+  // seed 000: rotateX(PI/2); lights() sends the light along +y (down in Processing).
+  WorldTriangle top;
+  top.v = {Vec3d(-1, -5, 1), Vec3d(1, -5, -1), Vec3d(1, -5, 1)};  // n = (0, −4, 0): up
+  top.fill = {0, 50, 0};
+  DirectionalLight light;
+  light.direction = Vec3d(0, 1, 0);
+  EXPECT_EQ(shade(top, true, light), (Rgb{0, 50, 0}));   // (128 + 128)/255 ≈ 1.004
+  WorldTriangle side = top;
+  side.v = {Vec3d(1, -5, 1), Vec3d(1, 5, 1), Vec3d(1, 5, -1)};
+  EXPECT_EQ(shade(side, true, light), (Rgb{0, 25, 0}));  // ambient only: 50·128/255
+  EXPECT_EQ(shade(top, false, light), (Rgb{0, 25, 0}));  // seen from below: lit side away
+  EXPECT_EQ(shade(top, true, std::nullopt), (Rgb{0, 50, 0}));
+}
+
+// ---------------------------------------------------------------- the render kind
+
+TEST(RenderKind, ProcessingWindowYPointsDown) {
+  // A triangle below the centre in Processing's y-down world shows in the lower half.
+  const std::string objects =
+      "          - {triangle: [[-2, 1, 0], [2, 1, 0], [0, 3, 0]], fill: '#ff0000'}\n";
+  const ProblemResult r = test::solve_yaml(scene_yaml("processing", objects, "[[32, 34], [32, 13]]"));
+  ASSERT_FALSE(r.error) << test::error_text(r);
+  EXPECT_EQ(test::exact_text(r, "color"), "255, 0, 0, 0, 0, 0");
+  const Value* obj = r.answers.find("object");
+  EXPECT_EQ(obj->words, (std::vector<std::string>{"objects[0]", "background"}));
+  const Value* d = r.answers.find("depth");
+  // Window depth of a point 10 in front of the eye: (n+f)/(f−n)... → z_w = (1/n − 1/z)/(1/n − 1/f).
+  EXPECT_NEAR(d->numbers[0], (1.0 - 1.0 / 10) / (1.0 - 1.0 / 100), 1e-6);
+  EXPECT_EQ(d->numbers[1], 1.0);
+}
+
+TEST(RenderKind, NearerTriangleWinsWhateverTheOrder) {
+  const std::string objects =
+      "          - {name: far, triangle: [[-3, -3, -5], [3, -3, -5], [0, 3, -5]], fill: [0, 0, 255]}\n"
+      "          - {name: near, triangle: [[-3, -3, 0], [3, -3, 0], [0, 3, 0]], fill: [0, 255, 0]}\n"
+      "          - {name: hidden, triangle: [[-3, -3, -2], [3, -3, -2], [0, 3, -2]], fill: [255, 0, 0]}\n";
+  const ProblemResult r = test::solve_yaml(scene_yaml("opengl", objects, "[[32, 24]]"));
+  ASSERT_FALSE(r.error) << test::error_text(r);
+  EXPECT_EQ(test::exact_text(r, "color"), "0, 255, 0");
+  EXPECT_EQ(r.answers.find("object")->words[0], "near");
+  // The trace lists all three in drawing order: written, written, hidden.
+  std::string trace;
+  for (const Step& s : r.derivation.steps())
+    if (s.title == "Pixel (32, 24)") trace = s.note;
+  EXPECT_NE(trace.find("1. triangle 0 (far"), std::string::npos) << trace;
+  EXPECT_NE(trace.find("2. triangle 1 (near"), std::string::npos) << trace;
+  EXPECT_NE(trace.find("3. triangle 2 (hidden"), std::string::npos) << trace;
+  EXPECT_NE(trace.find("→ hidden"), std::string::npos) << trace;
+}
+
+TEST(RenderKind, BadInputIsLocated) {
+  const std::string good = "          - {triangle: [[-2, 1, 0], [2, 1, 0], [0, 3, 0]]}\n";
+  struct Case {
+    std::string yaml, where;
+  };
+  const std::vector<Case> cases = {
+      {scene_yaml("opengl", "          - {triangle: [[-2, 1, 0], [2, 1, 0], [0, 3, 0]], fill: '#12345'}\n", "[[1, 1]]"),
+       "objects[0].fill: expected a colour"},
+      {scene_yaml("opengl", good, "[[64, 1]]"), "pixels[0][0]: expected a pixel index from 0 to 63"},
+      {scene_yaml("opengl", "          - {box: [1, 2], fill: [0, 0, 0]}\n", "[[1, 1]]"), "objects[0].box"},
+      {scene_yaml("opengl", "          - {solid: cub}\n", "[[1, 1]]"), "objects[0].solid"},
+      {scene_yaml("opengl", "          - {triangle: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], fill: [0, 300, 0]}\n", "[[1, 1]]"),
+       "objects[0].fill[1]: expected an integer from 0 to 255"},
+      {scene_yaml("opengl", "          - {mesh: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces: [[0, 1, 3]]}}\n", "[[1, 1]]"),
+       "faces[0][2]: expected a vertex index from 0 to 2"},
+      {scene_yaml("opengl", good, "[[1, 1]]", "        light: {direction: [0, 0, 0]}\n"),
+       "light.direction: the zero vector is not a direction"},
+      {scene_yaml("opengl", good, "[[1, 1]]", "        method: scanlines\n"), "method"},
+  };
+  for (const Case& c : cases) {
+    const ProblemSet set = load_problem_set_from_string(c.yaml, "scene.yaml");
+    std::string message = set.errors.empty() ? "" : set.errors[0].format();
+    if (!set.problems.empty() && set.problems[0].error) message = set.problems[0].error->format();
+    EXPECT_NE(message.find(c.where), std::string::npos) << c.where << " | " << message;
+    EXPECT_EQ(message.rfind("scene.yaml:", 0), 0u) << message;
+  }
+}
+
+TEST(RenderKind, PaperplaneSeedSolves) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/paperplane.yaml"));
+  ASSERT_TRUE(set.errors.empty());
+  const SetResult r = solve_set(set, true);
+  ASSERT_EQ(r.problems.size(), 1u);
+  ASSERT_FALSE(r.problems[0].error) << r.problems[0].error->format();
+  const Value* obj = r.problems[0].answers.find("object");
+  EXPECT_EQ(obj->words, (std::vector<std::string>{"plane", "ground[0,0]", "background"}));
+  // Box tops face the light from above: 50·(128 + 128)/255 rounds to 50; the plane is
+  // tilted a little away from it.
+  EXPECT_EQ(test::exact_text(r.problems[0], "color"), "253, 253, 253, 0, 50, 0, 50, 50, 100");
+  const Value* depth = r.problems[0].answers.find("depth");
+  EXPECT_LT(depth->numbers[0], depth->numbers[1]);  // the plane is nearer than the ground
+  EXPECT_EQ(depth->numbers[2], 1.0);
+}
+
+TEST(RenderKind, ScanlineImageOfThePaperplaneEqualsTheZBuffer) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/paperplane.yaml"));
+  ASSERT_FALSE(set.problems.empty());
+  const Scene& scene = std::any_cast<const RenderGiven&>(set.problems[0].given).spec.scene;
+  const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene));
+  const Frame z = render_zbuffer(tris, scene.width, scene.height, scene.background);
+  const Image<std::uint32_t> s = render_scanline(tris, scene.width, scene.height, scene.background);
+  EXPECT_EQ(s.data, z.color.data);
+  long plane = 0;
+  for (std::uint32_t c : z.color.data) plane += unpack(c).r > 200;
+  EXPECT_GT(plane, 200);  // the white plane is drawn, lit from above
+}
+
+// ---------------------------------------------------------------- frustum render
+
+int run_cli(const std::string& args) {
+  const int status = std::system((std::string(FRUSTUM_BINARY) + " " + args + " > /dev/null 2>&1").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(RenderCli, WritesPngAndScanlineGivesTheSameImage) {
+  const std::string seed = test::source_path("problems/seeds/paperplane.yaml");
+  const std::string dir = ::testing::TempDir();
+  ASSERT_EQ(run_cli("render " + seed + " -o " + dir + "z.png --depth " + dir + "d.png --size 160x120"), 0);
+  ASSERT_EQ(run_cli("render " + seed + " -o " + dir + "s.png --size 160x120 --method scanline"), 0);
+  const std::string z = file_bytes(dir + "z.png");
+  ASSERT_GT(z.size(), 100u);
+  EXPECT_EQ(z.substr(1, 3), "PNG");
+  EXPECT_EQ(z, file_bytes(dir + "s.png"));
+  EXPECT_EQ(file_bytes(dir + "d.png").substr(1, 3), "PNG");
+  EXPECT_EQ(run_cli("render " + seed + " -o " + dir + "x.png --id nope"), 1);
+  EXPECT_EQ(run_cli("render " + seed + " -o " + dir + "x.png --size 0x5"), 2);
+}
+
+}  // namespace
+}  // namespace frustum
