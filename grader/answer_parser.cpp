@@ -77,6 +77,13 @@ std::optional<Exact> plain_decimal(const std::string& text) {
 }
 
 Exact parse_one(const std::string& text, std::string& error, const ExpressionOptions& opts = {}) {
+  // YAML's spellings of NaN and infinity (the expression parser knows nan, inf and ∞).
+  const std::string t = trim_lower(text);
+  const std::string body = !t.empty() && (t[0] == '+' || t[0] == '-') ? t.substr(1) : t;
+  if (body == ".nan" || body == ".inf") {
+    error = quote_excerpt(text) + " is not a finite number";
+    return 0;
+  }
   if (const std::optional<Exact> d = plain_decimal(text)) return *d;
   const ExpressionResult r = parse_expression(text, opts);
   if (!r) {

@@ -89,13 +89,11 @@ TEST_F(BatchFaults, EveryStudentHasARowWithAReasonAndASecondRunIsByteIdentical) 
   EXPECT_EQ(by.at("seed001-published").status, "graded");
   EXPECT_DOUBLE_EQ(by.at("seed001-published").score, by.at("seed001-published").max_score);
 
-  // Malformed and empty files are graded as all-missing, with the file's error as the reason.
-  EXPECT_EQ(by.at("b_malformed").status, "graded");
-  EXPECT_DOUBLE_EQ(by.at("b_malformed").score, 0);
+  // Malformed and empty files get an error row naming the file's mistake.
+  EXPECT_EQ(by.at("b_malformed").status, "error");
   EXPECT_NE(by.at("b_malformed").message.find("invalid YAML"), std::string::npos) << by.at("b_malformed").message;
-  EXPECT_EQ(by.at("c_empty").status, "graded");
-  EXPECT_DOUBLE_EQ(by.at("c_empty").score, 0);
-  EXPECT_FALSE(by.at("c_empty").message.empty());
+  EXPECT_EQ(by.at("c_empty").status, "error");
+  EXPECT_NE(by.at("c_empty").message.find("empty"), std::string::npos) << by.at("c_empty").message;
 
   EXPECT_EQ(by.at("d_huge").status, "error");
   EXPECT_NE(by.at("d_huge").message.find("larger than the limit"), std::string::npos);
@@ -107,8 +105,14 @@ TEST_F(BatchFaults, EveryStudentHasARowWithAReasonAndASecondRunIsByteIdentical) 
   EXPECT_EQ(by.at("hostile").status, "graded") << by.at("hostile").message;
   EXPECT_GT(by.at("hostile").score, 0);
 
-  EXPECT_EQ(by.at("g_yaml_bomb").status, "graded") << by.at("g_yaml_bomb").message;
-  EXPECT_DOUBLE_EQ(by.at("g_yaml_bomb").score, 0);
+  EXPECT_EQ(by.at("g_yaml_bomb").status, "error");
+  EXPECT_NE(by.at("g_yaml_bomb").message.find("nested too deeply"), std::string::npos)
+      << by.at("g_yaml_bomb").message;
+  for (const BatchRow& row : r.rows) {
+    if (row.status != "graded") {
+      EXPECT_DOUBLE_EQ(row.score, 0) << row.student;
+    }
+  }
 
   // The gradebook lists every student; every output was renamed into place.
   const std::string book = read_all(root_ / "out" / "gradebook.csv");

@@ -471,13 +471,24 @@ TEST(ViewingProjectPoint, AgreesWithTheTemplatesInDouble) {
     const MatX<double> proj = t == 2 ? ortho_matrix(vol, api) : frustum_matrix(vol, api);
     const int px = coord(rng), py = coord(rng), pz = coord(rng);
     Eigen::Vector4d p(px, py, pz, 1);
+    // Every fourth point (in view space, no camera) on the volume's centre line, halfway in
+    // depth: inside.
+    const double depth = (vol.near + vol.far) / 2, k = t == 2 ? 1.0 : depth / vol.near;
+    const Eigen::Vector4d centre((vol.left + vol.right) / 2 * k, (vol.bottom + vol.top) / 2 * k,
+                                 api == Api::DirectX ? depth : -depth, 1);
+    if (i % 4 == 0) p = centre;
     std::string camera;
     if (i % 2 == 1) {  // a camera in world space
       Eigen::Vector3d eye, center, up;
+      // Drawn one by one: the order of a call's arguments differs between compilers.
+      const auto draw = [&] {
+        const double x = small(rng), y = small(rng), z = small(rng);
+        return Eigen::Vector3d(x, y, z);
+      };
       do {
-        eye = Eigen::Vector3d(small(rng), small(rng), small(rng));
-        center = Eigen::Vector3d(small(rng), small(rng), small(rng));
-        up = Eigen::Vector3d(small(rng), small(rng), small(rng));
+        eye = draw();
+        center = draw();
+        up = draw();
       } while ((center - eye).squaredNorm() == 0 || (center - eye).cross(up).squaredNorm() == 0);
       camera = fmt::format(", camera: {{eye: [{}, {}, {}], center: [{}, {}, {}], up: [{}, {}, {}]}}", eye(0), eye(1),
                            eye(2), center(0), center(1), center(2), up(0), up(1), up(2));
@@ -485,8 +496,9 @@ TEST(ViewingProjectPoint, AgreesWithTheTemplatesInDouble) {
       p = Eigen::Vector4d(view * p);
     }
     const int width = 100 + 20 * pos(rng), height = 80 + 10 * pos(rng);
-    const std::string given = fmt::format("{{point: [{}, {}, {}]{}, {}, viewport: {{width: {}, height: {}}}}}", px, py,
-                                          pz, camera, projection, width, height);
+    const Eigen::Vector4d written = i % 4 == 0 ? centre : Eigen::Vector4d(px, py, pz, 1);
+    const std::string given = fmt::format("{{point: [{:.17g}, {:.17g}, {:.17g}]{}, {}, viewport: {{width: {}, height: {}}}}}",
+                                          written(0), written(1), written(2), camera, projection, width, height);
     const ProblemResult r = solve_yaml(one("project_point", given, api_conventions(api)), false);
     ASSERT_FALSE(r.error) << given << ": " << error_text(r);
     const Eigen::Vector4d clip = proj * p;

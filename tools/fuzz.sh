@@ -27,7 +27,6 @@ for f in problems/seeds/answers/00[0-4]_*.yaml; do
 done
 
 mkdir -p build-fuzz/artifacts
-export LSAN_OPTIONS="suppressions=$PWD/tools/lsan-suppressions.txt"
 status=0
 for t in "${targets[@]}"; do
   extra=()
