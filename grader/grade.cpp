@@ -7,6 +7,7 @@
 #include "solver/util/exact_format.hpp"
 #include "solver/util/suggest.hpp"
 
+#include <algorithm>
 
 namespace frustum {
 
@@ -74,6 +75,28 @@ std::optional<Misconception> diagnose(const ProblemSpec& spec, const std::vector
   return std::nullopt;
 }
 
+// The student's answers that `name` is recomputed from in error carried forward: along its
+// dependencies, the nearest ones the student gave (a given plane supersedes the normal behind
+// it for z). Carrying only these spares the kind recomputing what the answer does not need
+// (a unit normal from a typed decimal normal is a square root of a large rational).
+Answers carry_inputs(const KindInfo& kind, const std::string& name, const Answers& given) {
+  Answers out;
+  std::vector<std::string> todo = kind.answer(name)->depends_on;
+  std::vector<std::string> seen;
+  while (!todo.empty()) {
+    const std::string d = todo.back();
+    todo.pop_back();
+    if (std::find(seen.begin(), seen.end(), d) != seen.end()) continue;
+    seen.push_back(d);
+    if (const Value* v = given.find(d)) {
+      out.set(d, *v);
+    } else if (const AnswerSpec* spec = kind.answer(d)) {
+      todo.insert(todo.end(), spec->depends_on.begin(), spec->depends_on.end());
+    }
+  }
+  return out;
+}
+
 ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
                            const std::vector<Misconception>* known_mistakes, const YAML::Node& student,
                            const std::string& answers_file, std::vector<Diagnostic>& errors) {
@@ -98,9 +121,7 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
     parsed[i] = parse_answer(given, *spec.info->answer(spec.ask[i]));
     if (parsed[i].ok) parsed_answers.set(spec.ask[i], parsed[i].value);
   }
-  std::optional<Answers> carried;
-  std::optional<std::vector<Misconception>> mistakes;
-  if (known_mistakes) mistakes = *known_mistakes;
+  std::optional<std::vector<Misconception>> own_mistakes;  // when the set was not solved once for all
   for (std::size_t i = 0; i < spec.ask.size(); ++i) {
     const std::string& name = spec.ask[i];
     const AnswerSpec& aspec = *spec.info->answer(name);
@@ -124,8 +145,8 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
       ag.score = c.credit * ag.max_score;
       ag.feedback = c.feedback;
       if (ag.verdict != Verdict::Correct && spec.info->misconceptions) {
-        if (!mistakes) mistakes = spec.info->misconceptions(spec.given);
-        if (const auto m = diagnose(spec, *mistakes, name, parsed[i].value)) {
+        if (!known_mistakes && !own_mistakes) own_mistakes = spec.info->misconceptions(spec.given);
+        if (const auto m = diagnose(spec, known_mistakes ? *known_mistakes : *own_mistakes, name, parsed[i].value)) {
           ag.misconception = m->name;
           ag.feedback = m->feedback + (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
           ag.wrong_step = m->step;
@@ -134,8 +155,9 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
       // Error carried forward: right from the student's own wrong earlier answer.
       if (ag.verdict != Verdict::Correct && !aspec.depends_on.empty() && spec.info->carry_forward &&
           spec.grading.ecf > 0) {
-        if (!carried) carried = spec.info->carry_forward(spec.given, parsed_answers);
-        const Value* follow = carried->find(name);
+        const Answers inputs = carry_inputs(*spec.info, name, parsed_answers);
+        const Answers carried = inputs.items().empty() ? Answers{} : spec.info->carry_forward(spec.given, inputs);
+        const Value* follow = carried.find(name);
         if (follow && compare(*follow, parsed[i].value, aspec, spec.tolerance_for(name), false).verdict ==
                           Verdict::Correct) {
           const double credit = spec.grading.ecf * ag.max_score;

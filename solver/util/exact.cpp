@@ -294,6 +294,8 @@ ex rationalize_denominator(const ex& e) {
 }  // namespace
 
 Exact canonical(const Exact& e) {
+  // A rational is already canonical (most typed answers and most inputs are).
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_rational()) return e;
   ex current = e.expand().normal();
   for (int pass = 0; pass < kMaxCanonicalPasses; ++pass) {
     SimplifyRadicals simplify;
