@@ -38,44 +38,6 @@ struct Numbers {
   std::string error;
 };
 
-// A plain decimal literal ("-12", "0.57735", "1.5e-3") as the exact rational it denotes,
-// without the expression parser: most numeric answers are these, and a class is thousands.
-// Anything else (or an exponent beyond ±400) is left to the parser.
-std::optional<Exact> plain_decimal(const std::string& text) {
-  std::size_t i = 0;
-  const std::size_t n = text.size();
-  while (i < n && text[i] == ' ') ++i;
-  bool negative = false;
-  if (i < n && (text[i] == '-' || text[i] == '+')) negative = text[i++] == '-';
-  std::string digits;
-  long scale = 0;
-  bool any = false;
-  for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true) digits += text[i];
-  if (i < n && text[i] == '.') {
-    for (++i; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true) {
-      digits += text[i];
-      --scale;
-    }
-  }
-  if (!any || digits.size() > 40) return std::nullopt;
-  if (i < n && (text[i] == 'e' || text[i] == 'E')) {
-    ++i;
-    bool exp_negative = false;
-    if (i < n && (text[i] == '-' || text[i] == '+')) exp_negative = text[i++] == '-';
-    long e = 0;
-    bool exp_digits = false;
-    for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])) && e < 1000; ++i, exp_digits = true)
-      e = e * 10 + (text[i] - '0');
-    if (!exp_digits || e > 400) return std::nullopt;
-    scale += exp_negative ? -e : e;
-  }
-  while (i < n && text[i] == ' ') ++i;
-  if (i != n) return std::nullopt;
-  const GiNaC::numeric mantissa(digits.c_str());
-  const GiNaC::numeric value = mantissa * GiNaC::numeric(10).power(GiNaC::numeric(scale));
-  return Exact(negative ? -value : value);
-}
-
 Exact parse_one(const std::string& text, std::string& error, const ExpressionOptions& opts = {}) {
   // YAML's spellings of NaN and infinity (the expression parser knows nan, inf and ∞).
   const std::string t = trim_lower(text);
@@ -84,7 +46,6 @@ Exact parse_one(const std::string& text, std::string& error, const ExpressionOpt
     error = quote_excerpt(text) + " is not a finite number";
     return 0;
   }
-  if (const std::optional<Exact> d = plain_decimal(text)) return *d;
   const ExpressionResult r = parse_expression(text, opts);
   if (!r) {
     error = "cannot read " + quote_excerpt(text) + ": " + r.error;

@@ -86,7 +86,18 @@ TEST(Expression, DecimalsMatchTheirFractions) {
     const ExpressionResult r = parse_expression(text);
     ASSERT_TRUE(r.value) << text << ": " << r.error;
     EXPECT_EQ(GiNaC::ex_to<numeric>(*r.value), numeric(n) / numeric(10).power(s)) << text;
+    // A bare literal takes a shortcut past the lexer; in parentheses it goes through the
+    // grammar. Both must agree, signs and exponents included.
+    const std::string signed_text = (i % 2 ? "-" : "") + text + (i % 3 ? "e-" + std::to_string(i % 7) : "");
+    const ExpressionResult direct = parse_expression(signed_text);
+    const ExpressionResult grammar = parse_expression("(" + signed_text + ")");
+    ASSERT_TRUE(direct.value && grammar.value) << signed_text;
+    EXPECT_TRUE(same(*direct.value, *grammar.value)) << signed_text;
   }
+  // Around the 18-digit boundary of the shortcut's integer mantissa.
+  expect_value("999999999999999999", numeric("999999999999999999"));
+  expect_value("9999999999999999999", numeric("9999999999999999999"));
+  expect_value("-1234567890.12345678", numeric("-123456789012345678") / numeric(10).power(8));
 }
 
 TEST(Expression, FractionsAreExact) {

@@ -246,6 +246,7 @@ bool evaluate_real(const ex& e, numeric& value) {
 // below 2^-1022 the doubles are the multiples of 2^-1074, so round q·2^1074 to an integer,
 // ties to even.
 double rational_to_double(const numeric& q) {
+  if (q.is_integer()) return q.to_double();  // correctly rounded by CLN
   static const numeric kMinNormal = numeric(2).power(-1022);
   if (GiNaC::abs(q) >= kMinNormal) return q.to_double();
   const numeric scaled = GiNaC::abs(q) * numeric(2).power(1074);
@@ -316,6 +317,7 @@ Exact canonical(const Exact& e) {
 }
 
 bool is_real_constant(const Exact& e) {
+  if (is_a<numeric>(e)) return ex_to<numeric>(e).is_real();
   if (has_symbol(e)) return false;
   if (is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e) || is_a<GiNaC::matrix>(e)) return false;
   try {

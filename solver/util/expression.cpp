@@ -14,12 +14,15 @@
 #include "solver/util/expression.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
 #include <limits>
 #include <new>
+#include <optional>
 #include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -1039,12 +1042,63 @@ ExpressionResult failure(std::string message, std::size_t offset) {
 
 std::string quote_excerpt(std::string_view text) { return quoted(text, 0, text.size()); }
 
+namespace {
+
+// A plain decimal literal ("-12", "0.57735", "1.5e-3") as the exact rational it denotes,
+// without the lexer and parser: most numbers in problem sets and answers are these.
+// Anything else (or an exponent beyond ±400) is left to the parser.
+std::optional<GiNaC::ex> plain_decimal(std::string_view text) {
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  while (i < n && text[i] == ' ') ++i;
+  bool negative = false;
+  if (i < n && (text[i] == '-' || text[i] == '+')) negative = text[i++] == '-';
+  std::string digits;
+  long scale = 0;
+  bool any = false;
+  for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true) digits += text[i];
+  if (i < n && text[i] == '.') {
+    for (++i; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true) {
+      digits += text[i];
+      --scale;
+    }
+  }
+  if (!any || digits.size() > 40) return std::nullopt;
+  if (i < n && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    bool exp_negative = false;
+    if (i < n && (text[i] == '-' || text[i] == '+')) exp_negative = text[i++] == '-';
+    long e = 0;
+    bool exp_digits = false;
+    for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])) && e < 1000; ++i, exp_digits = true)
+      e = e * 10 + (text[i] - '0');
+    if (!exp_digits || e > 400) return std::nullopt;
+    scale += exp_negative ? -e : e;
+  }
+  while (i < n && text[i] == ' ') ++i;
+  if (i != n) return std::nullopt;
+  // Up to 18 digits fit a long exactly; longer mantissas go through CLN's reader.
+  long small = 0;
+  if (digits.size() <= 18)
+    for (const char c : digits) small = small * 10 + (c - '0');
+  const GiNaC::numeric mantissa = digits.size() <= 18 ? GiNaC::numeric(small) : GiNaC::numeric(digits.c_str());
+  const GiNaC::numeric value = scale == 0 ? mantissa : mantissa * GiNaC::numeric(10).power(GiNaC::numeric(scale));
+  return GiNaC::ex(negative ? -value : value);
+}
+
+}  // namespace
+
 ExpressionResult parse_expression(std::string_view text, const ExpressionOptions& options) {
   // Length first: nothing else runs on oversized input.
   if (text.size() > options.max_length) {
     return failure("the expression is too long (" + std::to_string(text.size()) +
                        " bytes; the limit is " + std::to_string(options.max_length) + ")",
                    options.max_length);
+  }
+  if (const std::optional<GiNaC::ex> d = plain_decimal(text)) {
+    ExpressionResult r;
+    r.value = *d;
+    return r;
   }
   try {
     Lexer lexer(text, decode_utf8(text));
