@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <random>
 
 namespace frustum {
@@ -60,6 +61,21 @@ TEST(TopLeftRule, CentresOnLeftEdgesAreCoveredOnBottomAndRightEdgesNot) {
 TEST(TopLeftRule, ClockwiseInputCoversTheSamePixels) {
   EXPECT_EQ(pixels(tri(0.5, 0.5, 0.5, 4.5, 4.5, 0.5)), pixels(tri(0.5, 0.5, 4.5, 0.5, 0.5, 4.5)));
   EXPECT_TRUE(tri(0.5, 0.5, 0.5, 4.5, 4.5, 0.5).reordered);
+}
+
+TEST(Rasterizer, SnappingRoundsLikeLlround) {
+  // to_fixed avoids the library call; it must round exactly as llround(v·2⁸) does, halves
+  // away from zero included, over the whole accepted range.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> any(-kMaxWindowCoordinate, kMaxWindowCoordinate);
+  std::uniform_int_distribution<std::int64_t> grid(-(std::int64_t{1} << 28), std::int64_t{1} << 28);
+  for (int n = 0; n < 200000; ++n) {
+    const double v = n % 2 ? any(rng) : (static_cast<double>(grid(rng)) + 0.5) / 256.0;  // even n: exact halves
+    ASSERT_EQ(to_fixed(v), std::llround(v * 256.0)) << fmt::format("{:.17g}", v);
+  }
+  for (const double v : {0.0, -0.0, 1.0 / 512, -1.0 / 512, 3.0 / 512, -3.0 / 512, kMaxWindowCoordinate,
+                         -kMaxWindowCoordinate, std::nextafter(1.0 / 512, 0.0), std::nextafter(-1.0 / 512, 0.0)})
+    EXPECT_EQ(to_fixed(v), std::llround(v * 256.0)) << fmt::format("{:.17g}", v);
 }
 
 TEST(Rasterizer, DegenerateTriangleCoversNothing) {

@@ -8,8 +8,7 @@ namespace frustum {
 
 namespace {
 
-EdgeFunction make_edge(const FixedPoint2& from, const FixedPoint2& to) {
-  EdgeFunction e;
+void make_edge(EdgeFunction& e, const FixedPoint2& from, const FixedPoint2& to) {
   e.from = from;
   e.to = to;
   // E(p) = (to − from) × (p − from) = a·x + b·y + c
@@ -19,12 +18,19 @@ EdgeFunction make_edge(const FixedPoint2& from, const FixedPoint2& to) {
   const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
   e.top = dy == 0 && dx < 0;
   e.left = dy < 0;
-  return e;
 }
 
 }  // namespace
 
-std::int64_t to_fixed(double v) { return std::llround(v * static_cast<double>(kSubpixelScale)); }
+std::int64_t to_fixed(double v) {
+  // llround without the library call: |v·2⁸| ≤ 2²⁸, so the truncation and the fraction
+  // s − trunc(s) are exact; halves round away from zero, as llround does.
+  const double s = v * static_cast<double>(kSubpixelScale);
+  auto t = static_cast<std::int64_t>(s);
+  const double f = s - static_cast<double>(t);
+  t += (f >= 0.5) - (f <= -0.5);
+  return t;
+}
 
 FixedPoint2 pixel_centre(int i, int j) {
   const std::int64_t half = kSubpixelScale / 2;
@@ -33,6 +39,18 @@ FixedPoint2 pixel_centre(int i, int j) {
 
 TriangleSetup setup_triangle(const std::array<Vec2<double>, 3>& window) {
   TriangleSetup t;
+  setup_triangle(window, t);
+  return t;
+}
+
+void setup_triangle(const std::array<Vec2<double>, 3>& window, TriangleSetup& t) {
+  // Every field is assigned here, none read: t may hold an earlier triangle.
+  t.snapped = false;
+  t.reordered = false;
+  t.i_min = 0;
+  t.i_max = -1;
+  t.j_min = 0;
+  t.j_max = -1;
   std::array<FixedPoint2, 3> in;
   for (int k = 0; k < 3; ++k) {
     for (int c = 0; c < 2; ++c)
@@ -55,8 +73,8 @@ TriangleSetup setup_triangle(const std::array<Vec2<double>, 3>& window) {
   for (int k = 0; k < 3; ++k) t.v[k] = in[t.order[k]];
   t.area2 = area2 < 0 ? -area2 : area2;
   t.degenerate = t.area2 == 0;
-  for (int k = 0; k < 3; ++k) t.edge[k] = make_edge(t.v[(k + 1) % 3], t.v[(k + 2) % 3]);
-  if (t.degenerate) return t;
+  for (int k = 0; k < 3; ++k) make_edge(t.edge[k], t.v[(k + 1) % 3], t.v[(k + 2) % 3]);
+  if (t.degenerate) return;
   std::int64_t x0 = t.v[0].x, x1 = x0, y0 = t.v[0].y, y1 = y0;
   for (const FixedPoint2& p : t.v) {
     x0 = std::min(x0, p.x);
@@ -70,7 +88,6 @@ TriangleSetup setup_triangle(const std::array<Vec2<double>, 3>& window) {
   t.i_max = static_cast<int>(floor_div(x1 - half, kSubpixelScale));
   t.j_min = static_cast<int>(ceil_div(y0 - half, kSubpixelScale));
   t.j_max = static_cast<int>(floor_div(y1 - half, kSubpixelScale));
-  return t;
 }
 
 bool covers(const TriangleSetup& t, int i, int j) {

@@ -67,6 +67,8 @@ struct TriangleSetup {
 // Setup of a triangle in window coordinates (x, y). Throws DomainError("triangle") when a
 // coordinate is not finite or exceeds kMaxWindowCoordinate.
 TriangleSetup setup_triangle(const std::array<Vec2<double>, 3>& window);
+// The same into t, overwriting every field (no temporary: the z-buffer's hot path).
+void setup_triangle(const std::array<Vec2<double>, 3>& window, TriangleSetup& t);
 
 // Fixed-point centre of pixel (i, j): ((i + ½)·2⁸, (j + ½)·2⁸).
 FixedPoint2 pixel_centre(int i, int j);
