@@ -37,6 +37,7 @@ struct GradeOptions {
   std::optional<std::string> gradescope;  // single: results.json
   std::optional<std::string> html;        // single: feedback page
   std::optional<std::string> markdown;    // single: feedback Markdown
+  std::optional<std::string> variants;    // --variants DIR: the sets `frustum generate` wrote
 };
 int run_grade(const GradeOptions& options, const Output& o);
 int run_kinds(const Output& o);
@@ -45,6 +46,7 @@ int run_kinds(const Output& o);
 struct GenerateCommand {
   std::string set;
   std::vector<std::string> students;
+  std::optional<std::string> roster;  // --roster: a CSV with a student column, or one id per line
   std::optional<std::uint64_t> seed;
   int count = 1;
   std::string out_dir = ".";

@@ -3,6 +3,7 @@
 // (DIR/STEM-NAME.yaml and DIR/answers/STEM-NAME.yaml).
 #include "app/commands.hpp"
 
+#include "app/variant_files.hpp"
 #include "grader/atomic_file.hpp"
 #include "solver/kinds/variants.hpp"
 #include "solver/kinds/yaml_document.hpp"
@@ -16,17 +17,6 @@
 namespace frustum::app {
 
 namespace {
-
-// A student id as part of a file name: letters, digits, '-', '_' and '.' kept, the rest '_'.
-std::string file_part(const std::string& id) {
-  std::string s;
-  for (const char c : id) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-                    c == '_' || c == '.';
-    s += ok ? c : '_';
-  }
-  return s.empty() ? "_" : s;
-}
 
 struct Named {
   std::string name;     // file name part
@@ -59,7 +49,21 @@ int run_generate(const GenerateCommand& g, const Output& o) {
       variants.push_back({name, name, drawn[i]});
     }
   }
-  for (const std::string& s : g.students) variants.push_back({file_part(s), s, variant_for_student(set, s, vary_all)});
+  std::vector<std::string> students = g.students;
+  if (g.roster) {
+    try {
+      const std::vector<std::string> listed = read_roster(*g.roster);
+      students.insert(students.end(), listed.begin(), listed.end());
+    } catch (const InputError& e) {
+      o.err << "error: " << e.diagnostic().format() << "\n";
+      return 1;
+    }
+  }
+  // The class together: pairwise distinct, redrawing a student whose variant repeats another's.
+  const std::vector<ProblemSet> class_variants = variants_for_class(set, students, vary_all);
+  for (std::size_t i = 0; i < students.size(); ++i)
+    variants.push_back({variant_name(students[i]), students[i], class_variants[i]});
+  bool redrawn = false;
 
   int status = 0;
   std::map<std::string, std::string> seen;  // the set's text → the first student who has it
@@ -71,6 +75,13 @@ int run_generate(const GenerateCommand& g, const Output& o) {
     }
     const std::string who = g.seed ? fmt::format("variant {} of seed {}", v.name, *g.seed) : "student " + v.student;
     const std::string set_file = stem + "-" + v.name + ".yaml";
+    const int draw = v.variant.variant ? v.variant.variant->draw : 1;
+    const std::string redraw_note =
+        draw > 1 ? fmt::format("\nDraw {}: the earlier draws repeated another student's problem. Grade this student "
+                               "against this file: frustum grade {} ANSWERS --variants {}",
+                               draw, source, g.out_dir)
+                 : "";
+    redrawn = redrawn || draw > 1;
     const std::string body = emit_variant_set(doc.root, v.variant, "");
     if (const auto [it, fresh] = seen.emplace(body, v.name); !fresh)
       o.err << "warning: " << v.name << " has the same variant as " << it->second
@@ -78,14 +89,14 @@ int run_generate(const GenerateCommand& g, const Output& o) {
     const std::string seed = fmt::format("{:016x}", v.variant.variant ? v.variant.variant->seed : 0);
     const std::string set_text = emit_variant_set(
         doc.root, v.variant,
-        fmt::format("Variant of {} for {} (seed {}), drawn by `frustum generate`.\nAnswer key: answers/{}", source,
-                    who, seed, set_file));
+        fmt::format("Variant of {} for {} (seed {}), drawn by `frustum generate`.\nAnswer key: answers/{}{}", source,
+                    who, seed, set_file, redraw_note));
     const std::string key_text = emit_answer_key(
         v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed));
     try {
       fs::create_directories(fs::path(g.out_dir) / "answers");
-      const std::string set_path = (fs::path(g.out_dir) / set_file).string();
-      const std::string key_path = (fs::path(g.out_dir) / "answers" / set_file).string();
+      const std::string set_path = variant_file(g.out_dir, g.set, v.name);
+      const std::string key_path = variant_key_file(g.out_dir, g.set, v.name);
       write_file_atomically(set_path, set_text);
       write_file_atomically(key_path, key_text);
       o.out << set_path << "  " << key_path << "\n";
@@ -94,6 +105,9 @@ int run_generate(const GenerateCommand& g, const Output& o) {
       return 1;
     }
   }
+  if (redrawn)
+    o.err << "note: some students were drawn again so that no two share a problem; grade the class against these "
+             "files: frustum grade " << g.set << " ANSWERS --variants " << g.out_dir << "\n";
   return status;
 }
 

@@ -2,6 +2,7 @@
 // or a class — a directory of answer files or a CSV roster — graded into a directory of
 // outputs with a progress bar on a terminal.
 #include "app/commands.hpp"
+#include "app/variant_files.hpp"
 #include "grader/atomic_file.hpp"
 #include "grader/batch.hpp"
 #include "grader/feedback.hpp"
@@ -19,8 +20,24 @@ namespace frustum::app {
 
 namespace {
 
-// The set a student is graded against: their own variant when the set varies.
-ProblemSet set_for_student(const ProblemSet& set, const std::string& student, std::string& variant) {
+// The set a student is graded against: with --variants, the file `frustum generate` wrote for
+// them; otherwise their own variant when the set varies.
+ProblemSet set_for_student(const ProblemSet& set, const std::optional<std::string>& variants_dir,
+                           const std::string& student, std::string& variant) {
+  if (variants_dir) {
+    const std::string file = variant_file(*variants_dir, set.file, variant_name(student));
+    std::error_code ec;
+    if (student.empty() || !std::filesystem::is_regular_file(file, ec)) {
+      ProblemSet missing = set;
+      missing.problems.clear();
+      missing.errors.push_back(Diagnostic{SourceLocation{file, 0, 0}, "student",
+                                          student.empty() ? "the answers need `student:` to find the student's generated set"
+                                                          : "no generated set for student " + student + " in " + *variants_dir});
+      return missing;
+    }
+    variant = "graded against " + file;
+    return load_problem_set(file);
+  }
   if (!set_varies(set)) return set;
   ProblemSet v = variant_for(set, student);
   if (v.variant)
@@ -47,7 +64,10 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   options.out_dir = g.out_dir.value_or("grades");
   options.timeout_seconds = g.timeout;
   options.lang = g.lang;
-  if (set_varies(set)) options.set_for = set_for_student;
+  if (set_varies(set) || g.variants)
+    options.set_for = [dir = g.variants](const ProblemSet& s, const std::string& student, std::string& variant) {
+      return set_for_student(s, dir, student, variant);
+    };
   if (o.progress)
     options.on_progress = [&](std::size_t done, std::size_t total, const std::string& who) {
       o.err << progress_bar(done, total, who) << std::flush;
@@ -82,7 +102,7 @@ int run_grade(const GradeOptions& g, const Output& o) {
 
   const Submission submission = load_submission(g.answers);
   std::string variant;
-  const ProblemSet graded = set_for_student(set, submission.student, variant);
+  const ProblemSet graded = set_for_student(set, g.variants, submission.student, variant);
   GradeReport report = grade(graded, submission);
   report.variant = variant;
   if (g.format == Format::Json)

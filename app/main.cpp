@@ -60,6 +60,9 @@ int main(int argc, char** argv) {
   grade->add_option("--gradescope", grade_opt.gradescope, "One student: write Gradescope's results.json here");
   grade->add_option("--html", grade_opt.html, "One student: write the feedback page (self-contained HTML) here");
   grade->add_option("--markdown", grade_opt.markdown, "One student: write the feedback as Markdown here");
+  grade->add_option("--variants", grade_opt.variants,
+                    "Grade each student against their set written by `frustum generate -o DIR` (DIR/SET-STUDENT.yaml)")
+      ->check(CLI::ExistingDirectory);
 
   auto* kinds = cli.add_subcommand("kinds", "List the problem kinds and their answers");
 
@@ -71,7 +74,11 @@ int main(int argc, char** argv) {
   generate->add_option("--count", gen_opt.count, "How many variants from --seed (default 1)")
       ->check(CLI::Range(1, 100000))
       ->needs(gen_seed);
+  auto* gen_roster = generate->add_option("--roster", gen_opt.roster,
+                                          "Class roster: a CSV with a student column, or one id per line")
+                         ->check(CLI::ExistingFile);
   gen_seed->excludes(gen_student);
+  gen_seed->excludes(gen_roster);
   generate->add_option("-o,--out", gen_opt.out_dir, "Directory for the sets; keys go in its answers/ (default .)");
 
   std::string draw_id, draw_output;
@@ -116,8 +123,8 @@ int main(int argc, char** argv) {
   }
   if (kinds->parsed()) return frustum::app::run_kinds(out);
   if (generate->parsed()) {
-    if (gen_opt.students.empty() && !gen_opt.seed) {
-      std::cerr << "generate: give --student ID or --seed N [--count K]\n";
+    if (gen_opt.students.empty() && !gen_opt.roster && !gen_opt.seed) {
+      std::cerr << "generate: give --student ID, --roster FILE or --seed N [--count K]\n";
       return 2;
     }
     return frustum::app::run_generate(gen_opt, out);

@@ -285,6 +285,46 @@ TEST(Vary, SeededVariantsArePairwiseDistinct) {
   EXPECT_NE(four[3].problems[0].error->message.find("the same as another variant"), std::string::npos);
 }
 
+TEST(Vary, ClassVariantsArePairwiseDistinct) {
+  // Six possible givens: six students get six different ones; a seventh cannot, and is told so.
+  const std::string yaml = R"(problems:
+  - id: v
+    kind: vectors
+    given: {a: [1, 0, 0], b: [0, 1, 0]}
+    vary: {a: [{range: [1, 6]}, 0, 0]}
+  - id: fixed
+    kind: vectors
+    given: {a: [1, 2, 3], b: [0, 1, 0]}
+)";
+  const ProblemSet set = load_problem_set_from_string(yaml, "six.yaml");
+  std::vector<std::string> students;
+  for (int i = 0; i < 7; ++i) students.push_back("s" + std::to_string(i));
+  const std::vector<ProblemSet> cls = variants_for_class(set, students, false);
+  ASSERT_EQ(cls.size(), 7u);
+  std::set<std::string> seen;
+  int redrawn = 0;
+  for (int i = 0; i < 6; ++i) {
+    ASSERT_TRUE(cls[i].all_errors().empty()) << i;
+    EXPECT_TRUE(seen.insert(emit_flow(cls[i].problems[0].given_node)).second) << "student " << i << " repeats";
+    EXPECT_EQ(emit_flow(cls[i].problems[1].given_node), emit_flow(set.problems[1].given_node));  // not varied
+    const int draw = cls[i].variant->draw;
+    redrawn += draw > 1;
+    // A first draw is the student's own variant, the one grading regenerates from the id.
+    if (draw == 1) {
+      EXPECT_EQ(emit_flow(cls[i].problems[0].given_node),
+                emit_flow(variant_for_student(set, students[i], false).problems[0].given_node));
+    }
+  }
+  EXPECT_GT(redrawn, 0) << "six students over six values: collisions are all but certain";
+  EXPECT_EQ(cls[0].variant->draw, 1);
+  ASSERT_FALSE(cls[6].all_errors().empty());
+  EXPECT_NE(cls[6].all_errors()[0].message.find("fewer variants than the class"), std::string::npos);
+  // The same roster gives the same class.
+  const std::vector<ProblemSet> again = variants_for_class(set, students, false);
+  for (int i = 0; i < 6; ++i)
+    EXPECT_EQ(emit_flow(again[i].problems[0].given_node), emit_flow(cls[i].problems[0].given_node));
+}
+
 TEST(Vary, MistakesAreLocatedErrors) {
   const std::string yaml = R"(variants: per_student
 problems:
@@ -415,6 +455,54 @@ TEST(GenerateCli, WritesReproducibleSetsWhoseKeysGradeFullMarks) {
   // Usage errors.
   run_cli("generate " + set, status);
   EXPECT_NE(status, 0);
+}
+
+TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
+  const std::string dir = ::testing::TempDir() + "frustum_generate_roster";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/answers");
+  const std::string set = dir + "/few.yaml";
+  std::ofstream(set) << R"(problems:
+  - id: v
+    kind: vectors
+    given: {a: [1, 0, 0], b: [0, 1, 0]}
+    vary: {a: [{range: [1, 4]}, 0, 0]}
+    ask: [dot]
+)";
+  std::ofstream(dir + "/roster.csv") << "student,name\nana,Ana\nben,Ben\ncy,Cy\ndee,Dee\n";
+  int status = 0;
+  const std::string gen = run_cli("generate " + set + " --roster " + dir + "/roster.csv -o " + dir + "/gen", status);
+  ASSERT_EQ(status, 0) << gen;
+  std::set<std::string> givens;
+  bool redrawn = false;
+  for (const std::string s : {"ana", "ben", "cy", "dee"}) {
+    const std::string text = read_text(dir + "/gen/few-" + s + ".yaml");
+    givens.insert(text.substr(text.find("given:")));
+    redrawn = redrawn || text.find("Draw ") != std::string::npos;
+    std::filesystem::copy_file(dir + "/gen/answers/few-" + s + ".yaml", dir + "/answers/" + s + ".yaml");
+  }
+  EXPECT_EQ(givens.size(), 4u) << "four students, four values: all different";
+  EXPECT_TRUE(redrawn) << gen;
+  EXPECT_NE(gen.find("--variants"), std::string::npos) << gen;
+  // Against their generated files every key grades full marks, redrawn students included.
+  const std::string out = run_cli("grade " + set + " " + dir + "/answers --variants " + dir + "/gen -o " + dir + "/grades", status);
+  EXPECT_EQ(status, 0) << out;
+  const std::string book = read_text(dir + "/grades/gradebook.csv");
+  for (const std::string s : {"ana", "ben", "cy", "dee"})
+    EXPECT_NE(book.find(s + ",1,1,100"), std::string::npos) << book;
+  // One student alone, and a student with no generated file.
+  const std::string one = run_cli("grade " + set + " " + dir + "/answers/cy.yaml --variants " + dir + "/gen", status);
+  EXPECT_EQ(status, 0) << one;
+  EXPECT_NE(one.find("graded against"), std::string::npos) << one;
+  std::ofstream(dir + "/zed.yaml") << "student: zed\nanswers:\n  v: {dot: 0}\n";
+  const std::string none = run_cli("grade " + set + " " + dir + "/zed.yaml --variants " + dir + "/gen", status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(none.find("no generated set for student zed"), std::string::npos) << none;
+  // A roster naming a student twice is a located error.
+  std::ofstream(dir + "/twice.txt") << "ana\n# comment\n\nana\n";
+  const std::string twice = run_cli("generate " + set + " --roster " + dir + "/twice.txt -o " + dir + "/t", status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(twice.find("twice.txt:4:1"), std::string::npos) << twice;
 }
 
 // ---------------------------------------------------------------- self-test of every kind

@@ -72,6 +72,7 @@ struct ProblemSpec {
 struct VariantInfo {
   std::string student;
   std::uint64_t seed = 0;
+  int draw = 1;  // > 1: drawn again so that a class's variants differ (variants_for_class)
 };
 
 struct ProblemSet {

@@ -8,6 +8,7 @@
 #include "solver/util/exact_format.hpp"
 
 #include <filesystem>
+#include <optional>
 
 namespace frustum {
 
@@ -185,6 +186,41 @@ ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std
 
 ProblemSet variant_for_student(const ProblemSet& set, const std::string& student, bool vary_all) {
   return make_variant(set, "student:" + student, student, vary_all, {});
+}
+
+std::vector<ProblemSet> variants_for_class(const ProblemSet& set, const std::vector<std::string>& students,
+                                           bool vary_all) {
+  std::vector<std::set<std::string>> taken(set.problems.size());  // per problem: the givens drawn so far
+  std::vector<ProblemSet> out;
+  for (const std::string& student : students) {
+    std::optional<ProblemSet> chosen;
+    for (int draw = 1; draw <= kMaxDrawAttempts && !chosen; ++draw) {
+      const std::string who = "student:" + student + (draw == 1 ? "" : "#" + std::to_string(draw));
+      ProblemSet v = make_variant(set, who, student, vary_all, {});
+      bool repeats = false;
+      for (std::size_t i = 0; i < v.problems.size() && !repeats; ++i)
+        repeats = !v.problems[i].error && (vary_all || problem_varies(set, set.problems[i])) &&
+                  taken[i].count(emit_flow(v.problems[i].given_node)) > 0;
+      if (repeats) continue;
+      v.variant->draw = draw;
+      chosen = std::move(v);
+    }
+    if (!chosen) {
+      chosen = set;
+      chosen->per_student = false;
+      chosen->variant = VariantInfo{student, 0, kMaxDrawAttempts};
+      chosen->errors.push_back(Diagnostic{
+          SourceLocation{set.file, 0, 0}, "student",
+          "no variant for " + student + " that differs from every earlier student's in " +
+              std::to_string(kMaxDrawAttempts) + " draws: the ranges hold fewer variants than the class"});
+    } else {
+      for (std::size_t i = 0; i < chosen->problems.size(); ++i)
+        if (!chosen->problems[i].error && (vary_all || problem_varies(set, set.problems[i])))
+          taken[i].insert(emit_flow(chosen->problems[i].given_node));
+    }
+    out.push_back(std::move(*chosen));
+  }
+  return out;
 }
 
 ProblemSet variant_for(const ProblemSet& set, const std::string& student) {

@@ -54,6 +54,15 @@ std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t 
                                            bool vary_all = false);
 // The student's variant, with vary_all as above.
 ProblemSet variant_for_student(const ProblemSet& set, const std::string& student, bool vary_all);
+// The variants of a class, in roster order, pairwise distinct in every varying problem. A
+// student's variant is their own (variant_for_student) unless one of its problems repeats the
+// same problem of an earlier student's; then it is drawn again with WHO "student:ID#2", "#3"…
+// (VariantInfo::draw). Such a student's variant cannot be regenerated from the source set and
+// the id alone, so a class generated this way is graded against the generated files
+// (`frustum grade SET ANSWERS --variants DIR`). When the ranges hold fewer variants than
+// students, the students left over carry an error saying so.
+std::vector<ProblemSet> variants_for_class(const ProblemSet& set, const std::vector<std::string>& students,
+                                           bool vary_all);
 
 // Why the answers are not nice ("" when they are): every number of an asked answer must be
 // simple — a rational with denominator ≤ 100, a square root of a rational with denominator

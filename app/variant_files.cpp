@@ -1,0 +1,83 @@
+#include "app/variant_files.hpp"
+
+#include "grader/csv.hpp"
+#include "solver/util/diagnostic.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace frustum::app {
+
+namespace fs = std::filesystem;
+
+std::string variant_name(const std::string& student) {
+  std::string s;
+  for (const char c : student) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
+                    c == '_' || c == '.';
+    s += ok ? c : '_';
+  }
+  return s.empty() ? "_" : s;
+}
+
+std::string variant_file(const std::string& dir, const std::string& set_path, const std::string& name) {
+  return (fs::path(dir) / (fs::path(set_path).stem().string() + "-" + name + ".yaml")).string();
+}
+
+std::string variant_key_file(const std::string& dir, const std::string& set_path, const std::string& name) {
+  return (fs::path(dir) / "answers" / (fs::path(set_path).stem().string() + "-" + name + ".yaml")).string();
+}
+
+std::vector<std::string> read_roster(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(Diagnostic{SourceLocation{path, 0, 0}, "", "cannot read the roster"});
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::vector<std::pair<int, std::string>> ids;  // line, id
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".csv") {
+    const CsvTable table = parse_csv(text.str());
+    if (table.error) throw InputError(Diagnostic{SourceLocation{path, 0, 0}, "", *table.error});
+    if (table.rows.empty()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
+    const std::vector<std::string>& header = table.rows[0].fields;
+    std::size_t col = header.size();
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      std::string h = header[i];
+      std::transform(h.begin(), h.end(), h.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (h == "student") col = i;
+    }
+    if (col == header.size()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "header", "no 'student' column"});
+    for (std::size_t r = 1; r < table.rows.size(); ++r) {
+      const CsvRow& row = table.rows[r];
+      if (col < row.fields.size() && !row.fields[col].empty()) ids.emplace_back(row.line, row.fields[col]);
+    }
+  } else {
+    std::istringstream lines(text.str());
+    std::string line;
+    for (int n = 1; std::getline(lines, line); ++n) {
+      const auto first = line.find_first_not_of(" \t\r");
+      if (first == std::string::npos || line[first] == '#') continue;
+      const auto last = line.find_last_not_of(" \t\r");
+      ids.emplace_back(n, line.substr(first, last - first + 1));
+    }
+  }
+  if (ids.empty()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "student", "the roster names no student"});
+  std::map<std::string, int> first_line;
+  std::vector<std::string> out;
+  for (const auto& [line, id] : ids) {
+    if (const auto [it, fresh] = first_line.emplace(id, line); !fresh)
+      throw InputError(Diagnostic{SourceLocation{path, line, 1}, "student",
+                                  fmt::format("'{}' is listed twice (first on line {})", id, it->second)});
+    out.push_back(id);
+  }
+  return out;
+}
+
+}  // namespace frustum::app
