@@ -113,12 +113,16 @@ YAML::Node GivenReader::require(std::string_view key) {
   return child;
 }
 
-Exact GivenReader::number_at(const YAML::Node& n, const std::string& field) const {
-  return read_number(n, file_, field);
+template <typename Field>
+Exact GivenReader::number_at(const YAML::Node& n, Field&& field) const {
+  // Most numbers are plain literals: read them without building their path.
+  if (n.IsScalar())
+    if (std::optional<Exact> d = parse_decimal_literal(n.Scalar())) return *d;
+  return read_number(n, file_, field());
 }
 
 Exact GivenReader::number(std::string_view key) {
-  return number_at(require(key), path(key));
+  return number_at(require(key), [&] { return path(key); });
 }
 
 std::vector<Exact> GivenReader::numbers(std::string_view key, std::size_t count) {
@@ -128,18 +132,19 @@ std::vector<Exact> GivenReader::numbers(std::string_view key, std::size_t count)
                               describe_node(n));
   std::vector<Exact> out;
   for (std::size_t i = 0; i < count; ++i)
-    out.push_back(number_at(n[i], path(key) + "[" + std::to_string(i) + "]"));
+    out.push_back(number_at(n[i], [&] { return path(key) + "[" + std::to_string(i) + "]"; }));
   return out;
 }
 
 std::vector<Exact> GivenReader::numbers_at(std::string_view key, std::size_t i, std::size_t count) {
   const YAML::Node list = require(key);
-  const std::string f = path(key) + "[" + std::to_string(i) + "]";
+  auto f = [&] { return path(key) + "[" + std::to_string(i) + "]"; };
   const YAML::Node n = list[i];
   if (!n.IsSequence() || n.size() != count)
-    fail_at(n, f, "expected a list of " + std::to_string(count) + " numbers, got " + describe_node(n));
+    fail_at(n, f(), "expected a list of " + std::to_string(count) + " numbers, got " + describe_node(n));
   std::vector<Exact> out;
-  for (std::size_t k = 0; k < count; ++k) out.push_back(number_at(n[k], f + "[" + std::to_string(k) + "]"));
+  for (std::size_t k = 0; k < count; ++k)
+    out.push_back(number_at(n[k], [&] { return f() + "[" + std::to_string(k) + "]"; }));
   return out;
 }
 
@@ -156,12 +161,12 @@ std::vector<Vec3<Exact>> GivenReader::points(std::string_view key, std::size_t m
   }
   std::vector<Vec3<Exact>> out;
   for (std::size_t i = 0; i < n.size(); ++i) {
-    const std::string f = path(key) + "[" + std::to_string(i) + "]";
+    auto f = [&] { return path(key) + "[" + std::to_string(i) + "]"; };
     const YAML::Node p = n[i];
     if (!p.IsSequence() || p.size() != 3)
-      fail_at(p, f, "expected a point [x, y, z], got " + describe_node(p));
-    out.emplace_back(number_at(p[0], f + "[0]"), number_at(p[1], f + "[1]"),
-                     number_at(p[2], f + "[2]"));
+      fail_at(p, f(), "expected a point [x, y, z], got " + describe_node(p));
+    out.emplace_back(number_at(p[0], [&] { return f() + "[0]"; }), number_at(p[1], [&] { return f() + "[1]"; }),
+                     number_at(p[2], [&] { return f() + "[2]"; }));
   }
   return out;
 }

@@ -61,7 +61,9 @@ class GivenReader {
 
  private:
   YAML::Node require(std::string_view key);
-  Exact number_at(const YAML::Node& n, const std::string& field) const;
+  // `field()` gives the node's path; it is only called when a message needs it.
+  template <typename Field>
+  Exact number_at(const YAML::Node& n, Field&& field) const;
   [[noreturn]] void fail_at(const YAML::Node& n, const std::string& field,
                             const std::string& message) const;
   std::string path(std::string_view key) const;

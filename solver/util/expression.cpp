@@ -1042,12 +1042,10 @@ ExpressionResult failure(std::string message, std::size_t offset) {
 
 std::string quote_excerpt(std::string_view text) { return quoted(text, 0, text.size()); }
 
-namespace {
-
 // A plain decimal literal ("-12", "0.57735", "1.5e-3") as the exact rational it denotes,
 // without the lexer and parser: most numbers in problem sets and answers are these.
 // Anything else (or an exponent beyond ±400) is left to the parser.
-std::optional<GiNaC::ex> plain_decimal(std::string_view text) {
+std::optional<GiNaC::ex> parse_decimal_literal(std::string_view text) {
   std::size_t i = 0;
   const std::size_t n = text.size();
   while (i < n && text[i] == ' ') ++i;
@@ -1086,8 +1084,6 @@ std::optional<GiNaC::ex> plain_decimal(std::string_view text) {
   return GiNaC::ex(negative ? -value : value);
 }
 
-}  // namespace
-
 ExpressionResult parse_expression(std::string_view text, const ExpressionOptions& options) {
   // Length first: nothing else runs on oversized input.
   if (text.size() > options.max_length) {
@@ -1095,7 +1091,7 @@ ExpressionResult parse_expression(std::string_view text, const ExpressionOptions
                        " bytes; the limit is " + std::to_string(options.max_length) + ")",
                    options.max_length);
   }
-  if (const std::optional<GiNaC::ex> d = plain_decimal(text)) {
+  if (const std::optional<GiNaC::ex> d = parse_decimal_literal(text)) {
     ExpressionResult r;
     r.value = *d;
     return r;

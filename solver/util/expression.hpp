@@ -45,6 +45,11 @@ struct ExpressionResult {
 // "..." when shortened ('1+1+1+1+1+1+1+1+1+1+1+1+1+1+1+1...').
 std::string quote_excerpt(std::string_view text);
 
+// A plain decimal literal ("-12", "0.57735", "1.5e-3", at most 40 digits and an exponent of at
+// most ±400) as the exact rational it denotes, without the lexer and parser; nullopt for
+// anything else. parse_expression takes this shortcut itself.
+std::optional<GiNaC::ex> parse_decimal_literal(std::string_view text);
+
 // Parses text into an exact GiNaC expression. Never throws, never recurses deeper than
 // options.max_depth, never builds a power whose exact result exceeds options.max_exact_bits.
 ExpressionResult parse_expression(std::string_view text, const ExpressionOptions& options = {});
