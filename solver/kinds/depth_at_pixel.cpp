@@ -11,6 +11,8 @@
 #include "solver/util/exact_format.hpp"
 #include "solver/util/diagnostic.hpp"
 
+#include <algorithm>
+
 namespace frustum {
 
 namespace {
@@ -200,8 +202,11 @@ struct DepthAtPixel {
         return v > 0 ? 1 : v < 0 ? -1 : 0;
       };
       std::vector<std::pair<std::int64_t, std::int64_t>> pixels;
-      for (std::int64_t x = 0; x <= 8; ++x)
-        for (std::int64_t y = 0; y <= 8; ++y) {
+      // Only the bounding box can hold inside or edge pixels (same list, same order as the grid).
+      const auto [x_lo, x_hi] = std::minmax({t[0][0], t[1][0], t[2][0]});
+      const auto [y_lo, y_hi] = std::minmax({t[0][1], t[1][1], t[2][1]});
+      for (std::int64_t x = x_lo; x <= x_hi; ++x)
+        for (std::int64_t y = y_lo; y <= y_hi; ++y) {
           const int s0 = orient(t[0], t[1], x, y), s1 = orient(t[1], t[2], x, y), s2 = orient(t[2], t[0], x, y);
           const bool strict = (s0 > 0 && s1 > 0 && s2 > 0) || (s0 < 0 && s1 < 0 && s2 < 0);
           const bool edge = !strict && (s0 * s1 >= 0 && s1 * s2 >= 0 && s0 * s2 >= 0) && (s0 || s1 || s2);
