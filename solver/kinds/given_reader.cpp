@@ -82,7 +82,8 @@ std::string GivenReader::path(std::string_view key) const {
 
 bool GivenReader::has(std::string_view key) const {
   const YAML::Node& n = node_;
-  return n[std::string(key)].IsDefined() && !n[std::string(key)].IsNull();
+  const YAML::Node child = n[std::string(key)];  // one lookup: yaml-cpp scans a mapping's keys
+  return child.IsDefined() && !child.IsNull();
 }
 
 void GivenReader::fail_at(const YAML::Node& n, const std::string& field,
