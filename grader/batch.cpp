@@ -204,6 +204,9 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     const Submission sub = load_submission_from_string(e.yaml, e.source);
     std::string variant;
     const ProblemSet graded_set = options.set_for ? options.set_for(set, sub.student, variant) : set;
+    // The student's own set could not be made (no `student:`, no generated file): an error row
+    // that says why, not a score of 0.
+    if (graded_set.errors.size() > set.errors.size()) throw std::runtime_error(graded_set.errors.back().format());
     GradeReport report = grade(graded_set, sub, solved ? &*solved : nullptr);
     if (report.student.empty()) report.student = e.student;
     if (!variant.empty()) report.variant = variant;

@@ -490,6 +490,15 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   const std::string book = read_text(dir + "/grades/gradebook.csv");
   for (const std::string s : {"ana", "ben", "cy", "dee"})
     EXPECT_NE(book.find(s + ",1,1,100"), std::string::npos) << book;
+  // In a batch, a student with no generated file is an error row that says why.
+  std::ofstream(dir + "/answers/zed.yaml") << "student: zed\nanswers:\n  v: {dot: 0}\n";
+  run_cli("grade " + set + " " + dir + "/answers --variants " + dir + "/gen -o " + dir + "/grades2", status);
+  EXPECT_NE(status, 0);
+  const std::string book2 = read_text(dir + "/grades2/gradebook.csv");
+  EXPECT_NE(book2.find("zed,0,"), std::string::npos) << book2;
+  EXPECT_NE(book2.find(",error,"), std::string::npos) << book2;
+  EXPECT_NE(book2.find("no generated set for student zed"), std::string::npos) << book2;
+  std::filesystem::remove(dir + "/answers/zed.yaml");
   // One student alone, and a student with no generated file.
   const std::string one = run_cli("grade " + set + " " + dir + "/answers/cy.yaml --variants " + dir + "/gen", status);
   EXPECT_EQ(status, 0) << one;
