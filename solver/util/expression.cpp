@@ -922,9 +922,14 @@ class Parser {
 
     Value r;
     const bool constant_base = !has_symbol(base.value);
-    if (constant_base && !k.is_positive() && is_exact_zero(base.value, offset)) {
+    if (constant_base && is_exact_zero(base.value, offset)) {
       if (k.is_zero()) fail("0^0 is undefined", offset);
       if (k.is_negative()) fail("division by zero (0 to a negative power)", offset);
+      // 0 to any positive power is 0. GiNaC leaves 0^(irrational) unevaluated, and dividing by
+      // it later throws from inside GiNaC's evalf, which leaks (found by fuzz_expression).
+      r.value = 0;
+      r.height = 0;
+      return r;
     }
     // Odd roots of negative numbers are real: (-8)^(1/3) = -2, as a student means it.
     const bool negative_base = constant_base && !integer && [&] {
