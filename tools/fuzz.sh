@@ -4,7 +4,10 @@
 # The corpus found during the run grows in build-fuzz/corpus/<target>/; a crash, leak or hang
 # (-timeout=5 s of wall time per input; FUZZ_TIMEOUT=N raises it on a loaded machine) is saved
 # in build-fuzz/artifacts/ and makes the script fail.
-# Usage: tools/fuzz.sh [SECONDS] [TARGET...]
+# FUZZ_SEED=N fixes libFuzzer's random seed: CI uses one, so a CI run replays (a prefix of) the
+# same inputs as a local run with that seed, and a red CI is a regression, not a lucky draw.
+# Without it every run explores afresh (what longer local runs are for).
+# Usage: [FUZZ_SEED=N] tools/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -27,6 +30,8 @@ for f in problems/seeds/answers/00[0-4]_*.yaml; do
 done
 
 mkdir -p build-fuzz/artifacts
+seed_arg=()
+[ -n "${FUZZ_SEED:-}" ] && seed_arg=(-seed="$FUZZ_SEED")
 status=0
 for t in "${targets[@]}"; do
   extra=()
@@ -39,7 +44,7 @@ for t in "${targets[@]}"; do
   log="build-fuzz/$t.log"
   if ! "build-fuzz/fuzz/$t" "build-fuzz/corpus/$t" "fuzz/corpus/$t" "${extra[@]}" \
         -max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-5}" -rss_limit_mb=2048 -max_len=262144 \
-        -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$t-" >"$log" 2>&1; then
+        -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$t-" "${seed_arg[@]}" >"$log" 2>&1; then
     echo "fuzz: $t FAILED (see $log and build-fuzz/artifacts/)"
     grep -E "^==[0-9]+==ERROR|^SUMMARY|ALARM|Test unit written" "$log" | head -5 || true
     status=1
