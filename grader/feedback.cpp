@@ -96,9 +96,9 @@ std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
     if (a.carried_forward) out += " — " + tr("credit carried forward from your earlier answer", lang);
     out += "\n\n";
     if (!a.misconception.empty())
-      out += fmt::format("> **{}:** {}{}\n\n", tr("Common mistake", lang), a.misconception,
+      out += fmt::format("> **{}:** {}{}\n\n", tr("Common mistake", lang), tr(a.misconception, lang),
                          a.wrong_step.empty() ? "" : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
-    if (!a.feedback.empty()) out += a.feedback + "\n\n";
+    if (!a.feedback.empty()) out += tr(a.feedback, lang) + "\n\n";
     if (!a.derivation.empty()) out += fmt::format("*{}:*\n\n", tr("How to get it", lang)) + render_steps_markdown(a.derivation, lang);
   }
   return out;
@@ -160,10 +160,10 @@ std::string render_feedback_html(const GradeReport& r, Lang lang) {
                          a.carried_forward ? " — " + html_escape(tr("credit carried forward from your earlier answer", lang)) : "");
       if (!a.misconception.empty())
         out += fmt::format("<p class=\"mistake\"><b>{}:</b> {}{}</p>\n", html_escape(tr("Common mistake", lang)),
-                           html_escape(a.misconception),
+                           html_escape(tr(a.misconception, lang)),
                            a.wrong_step.empty() ? "" : " (" + html_escape(tr("Where it goes wrong", lang)) + ": " +
                                                            html_escape(tr(a.wrong_step, lang)) + ")");
-      if (!a.feedback.empty()) out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(a.feedback));
+      if (!a.feedback.empty()) out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(tr(a.feedback, lang)));
       if (!a.derivation.empty())
         out += fmt::format("<details open><summary>{}</summary>\n{}</details>\n", html_escape(tr("How to get it", lang)),
                            steps_html(a.derivation, lang));

@@ -46,9 +46,9 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
         out += fmt::format("; {} {}", lang == Lang::En ? "expected" : tr("Expected", lang) + ":", a.expected.shown().unicode);
       out += "\n";
       if (!a.misconception.empty())
-        out += fmt::format("      {}: {}{}\n", tr("Common mistake", lang), a.misconception,
+        out += fmt::format("      {}: {}{}\n", tr("Common mistake", lang), tr(a.misconception, lang),
                            a.wrong_step.empty() ? "" : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
-      if (!a.feedback.empty() && a.verdict != Verdict::Correct) out += "      " + a.feedback + "\n";
+      if (!a.feedback.empty() && a.verdict != Verdict::Correct) out += "      " + tr(a.feedback, lang) + "\n";
       if (a.verdict != Verdict::Correct && !a.derivation.empty()) {
         out += "      " + tr("How to get it", lang) + ":\n";
         out += render_steps_text(a.derivation, style, "      ");

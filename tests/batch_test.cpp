@@ -9,6 +9,7 @@
 #include "grader/report.hpp"
 #include "test_util.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -247,6 +248,32 @@ TEST(Feedback, JapaneseFeedbackTranslatesVerdictsAndStepTitles) {
   EXPECT_EQ(tr("Something new", Lang::Ja), "Something new");
   const std::string md = render_feedback_markdown(r, Lang::Ja);
   EXPECT_NE(md.find("| 解答 | 判定 |"), std::string::npos) << md;
+}
+
+TEST(Feedback, JapaneseFeedbackNamesTheMistakeAndCarriesCreditForward) {
+  // The reversed normal (seed 001's left-handed projection space), and a z that follows from
+  // the student's own wrong plane: the mistake, its explanation and the carried credit in Japanese.
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  const SolvedSet solved = solve_for_grading(set);
+  const Answers& key = solved.results[0].answers;
+  const auto& n = key.find("normal")->numbers;
+  const auto& p = key.find("plane")->numbers;
+  const std::string answers = fmt::format(
+      "student: s1\nanswers:\n  zbuf: {{normal: [{}, {}, {}], plane: [{}, {}, {}, {}], z: {}}}\n", -n[0], -n[1],
+      -n[2], p[0], p[1], p[2], p[3] + 3, (p[3] + 3 - p[0] - p[1]) / p[2]);
+  const GradeReport r = grade(set, load_submission_from_string(answers, "a.yaml"), &solved);
+  const std::string ja = render_grade_text(r, TextStyle{false, Lang::Ja});
+  EXPECT_NE(ja.find("よくある誤り: 外積の順序が逆"), std::string::npos) << ja;
+  EXPECT_NE(ja.find("投影座標系は左手系 (seed 001) なので"), std::string::npos) << ja;
+  EXPECT_NE(ja.find("あなた自身の前の解答から正しく導かれています"), std::string::npos) << ja;
+  EXPECT_NE(ja.find("誤りの持ち越し"), std::string::npos) << ja;
+  const std::string html = render_feedback_html(r, Lang::Ja);
+  EXPECT_NE(html.find("外積の順序が逆"), std::string::npos);
+  // English stays English.
+  const std::string en = render_grade_text(r, TextStyle{false, Lang::En});
+  EXPECT_NE(en.find("reversed cross product"), std::string::npos) << en;
+  EXPECT_NE(en.find("error carried forward"), std::string::npos) << en;
+  EXPECT_EQ(en.find("外積"), std::string::npos);
 }
 
 }  // namespace

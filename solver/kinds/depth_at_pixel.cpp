@@ -95,7 +95,7 @@ struct DepthAtPixel {
     reversed.set("normal", Value::vector(Vec3<Exact>(-n)));
     reversed.set("unit_normal", Value::vector(unit(Vec3<Exact>(-n))));
     out.push_back({"reversed cross product",
-                   "You took " + g.order.second + " × " + g.order.first + ": the projection coordinates are "
+                   "You took " + g.order.second + " × " + g.order.first + ". The projection coordinates are "
                    "left-handed (seed 001), so the front normal here is " + g.order.first + " × " + g.order.second + ".",
                    "Normal", reversed});
     Answers unnormalized;
