@@ -60,7 +60,7 @@ int run_solve(const std::string& path, const std::optional<std::string>& id, For
   }
   // One set prints the object of problem-format.md §3; a directory prints {"sets": [...]}.
   if (format == Format::Json)
-    o.out << (sets.size() == 1 ? sets[0] : nlohmann::ordered_json{{"sets", sets}}).dump(2) << "\n";
+    o.out << json_text(sets.size() == 1 ? sets[0] : nlohmann::ordered_json{{"sets", sets}}) << "\n";
   return any_failed ? 1 : 0;
 }
 

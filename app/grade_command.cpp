@@ -106,11 +106,11 @@ int run_grade(const GradeOptions& g, const Output& o) {
   GradeReport report = grade(graded, submission);
   report.variant = variant;
   if (g.format == Format::Json)
-    o.out << render_grade_json(report).dump(2) << "\n";
+    o.out << json_text(render_grade_json(report)) << "\n";
   else
     o.out << render_grade_text(report, TextStyle{o.color, g.lang});
   try {
-    if (g.gradescope) write_file_atomically(*g.gradescope, gradescope_results(report, g.lang).dump(2) + "\n");
+    if (g.gradescope) write_file_atomically(*g.gradescope, json_text(gradescope_results(report, g.lang)) + "\n");
     if (g.html) write_file_atomically(*g.html, render_feedback_html(report, g.lang));
     if (g.markdown) write_file_atomically(*g.markdown, render_feedback_markdown(report, g.lang));
   } catch (const std::exception& e) {

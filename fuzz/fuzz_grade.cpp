@@ -45,6 +45,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const frustum::Submission sub = frustum::load_submission_from_string(text, "answers.yaml");
   const frustum::GradeReport report = frustum::grade(seed.set, sub, &seed.solved);
   (void)frustum::render_grade_text(report, frustum::TextStyle{});
-  (void)frustum::render_grade_json(report).dump(2);
+  (void)frustum::json_text(frustum::render_grade_json(report));
   return 0;
 }

@@ -15,6 +15,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const frustum::SetResult result = frustum::solve_set(set, true);
   (void)frustum::render_text(result, frustum::TextStyle{});
   (void)frustum::render_markdown(result);
-  (void)frustum::render_json(result).dump(2);
+  (void)frustum::json_text(frustum::render_json(result));
   return 0;
 }

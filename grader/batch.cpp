@@ -221,8 +221,8 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     j["unreadable"] = !sub.answers.IsDefined() || !sub.answers.IsMap();
     j["markdown"] = render_feedback_markdown(report, options.lang);
     j["html"] = render_feedback_html(report, options.lang);
-    j["gradescope"] = gradescope_results(report, options.lang).dump(2) + "\n";
-    return j.dump();
+    j["gradescope"] = json_text(gradescope_results(report, options.lang)) + "\n";
+    return json_text(j, -1);
   };
   const fs::path out(options.out_dir);
   const auto write = [&](const fs::path& p, const std::string& text) {
@@ -255,7 +255,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
       row.message = r.error;
       const std::string md = fmt::format("# {}\n\nThis submission could not be graded: {}\n", e.student, r.error);
       write(out / "feedback" / (stems[i] + ".md"), md);
-      gradescope = gradescope_failure(r.error).dump(2) + "\n";
+      gradescope = json_text(gradescope_failure(r.error)) + "\n";
     }
     write(out / "gradescope" / (stems[i] + ".json"), gradescope);
     result.rows.push_back(std::move(row));

@@ -152,7 +152,7 @@ TEST(BadInput, ProblemSetsGiveTheirLocatedMessageAndTheRestSolves) {
       })) << "warning '" << title << "'";
     }
     // Every renderer copes with what was loaded (invalid UTF-8 included).
-    EXPECT_FALSE(render_json(result).dump().empty());
+    EXPECT_FALSE(json_text(render_json(result)).empty());  // what solve --format json writes
     EXPECT_FALSE(render_text(result, TextStyle{}).empty());
   }
 }
@@ -206,8 +206,27 @@ TEST(BadInput, AnswerFilesGiveTheirMessageAndTheRestGrades) {
     }
     // Every problem of the set is in the report, graded or missing.
     EXPECT_EQ(r.problems.size(), set.problems.size());
-    EXPECT_FALSE(render_grade_json(r).dump().empty());
+    EXPECT_FALSE(json_text(render_grade_json(r)).empty());  // what grade --format json writes
   }
+}
+
+TEST(BadInput, YamlEscapesThatYamlCppDecodesToStrayBytesStillMakeValidJson) {
+  // yaml-cpp decodes the YAML escapes \N (NEL) and \_ (no-break space) to the single bytes
+  // 0x85 and 0xA0, not UTF-8; a message quoting such a key once aborted `grade --format json`
+  // (found by fuzz_grade with a fixed seed). The JSON now carries U+FFFD there.
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const GradeReport r = grade(set, load_submission_from_string(
+                                       "student: s1\nanswers:\n  seed001-pixel-z: {z: 8}\n\"bad\\Nkey\": 1\n"
+                                       "\"nb\\_sp\": 2\n",
+                                       "nel.yaml"));
+  ASSERT_EQ(r.errors.size(), 2u) << listing(r.errors);
+  EXPECT_EQ(r.errors[0].field, "bad\x85key");  // the stray byte as yaml-cpp gives it
+  const std::string text = json_text(render_grade_json(r));
+  const nlohmann::json back = nlohmann::json::parse(text);  // valid UTF-8 all through
+  EXPECT_NE(back["errors"][0].get<std::string>().find("bad\uFFFDkey"), std::string::npos) << text;
+  EXPECT_NE(text.find("nb\uFFFDsp"), std::string::npos) << text;
+  // The answers that could be read are still graded.
+  EXPECT_EQ(find_answer(r, "seed001-pixel-z.z")->verdict, Verdict::Correct);
 }
 
 }  // namespace

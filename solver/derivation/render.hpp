@@ -34,4 +34,13 @@ nlohmann::ordered_json steps_json(const std::vector<Step>& steps);
 nlohmann::ordered_json problem_json(const ProblemResult& p);
 nlohmann::ordered_json render_json(const SetResult& set);
 
+// JSON as text, never throwing on bytes that are not UTF-8 (they become U+FFFD): student and
+// instructor text reaches many fields, and yaml-cpp can hand back such bytes (a YAML NEL as the
+// single byte 0x85) even from a file whose invalid bytes were already replaced. Every JSON the
+// program writes goes through this; indent −1 is compact.
+template <typename Json>
+std::string json_text(const Json& j, int indent = 2) {
+  return j.dump(indent, ' ', false, Json::error_handler_t::replace);
+}
+
 }  // namespace frustum
