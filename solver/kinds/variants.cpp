@@ -191,17 +191,26 @@ ProblemSet variant_for_student(const ProblemSet& set, const std::string& student
 std::vector<ProblemSet> variants_for_class(const ProblemSet& set, const std::vector<std::string>& students,
                                            bool vary_all) {
   std::vector<std::set<std::string>> taken(set.problems.size());  // per problem: the givens drawn so far
+  // The given of each varying problem as text ("" for fixed or failed ones), to compare draws.
+  const auto givens = [&](const ProblemSet& v) {
+    std::vector<std::string> texts(v.problems.size());
+    for (std::size_t i = 0; i < v.problems.size(); ++i)
+      if (!v.problems[i].error && (vary_all || problem_varies(set, set.problems[i])))
+        texts[i] = emit_flow(v.problems[i].given_node);
+    return texts;
+  };
   std::vector<ProblemSet> out;
   for (const std::string& student : students) {
     std::optional<ProblemSet> chosen;
     for (int draw = 1; draw <= kMaxDrawAttempts && !chosen; ++draw) {
       const std::string who = "student:" + student + (draw == 1 ? "" : "#" + std::to_string(draw));
       ProblemSet v = make_variant(set, who, student, vary_all, {});
+      const std::vector<std::string> texts = givens(v);
       bool repeats = false;
-      for (std::size_t i = 0; i < v.problems.size() && !repeats; ++i)
-        repeats = !v.problems[i].error && (vary_all || problem_varies(set, set.problems[i])) &&
-                  taken[i].count(emit_flow(v.problems[i].given_node)) > 0;
+      for (std::size_t i = 0; i < texts.size() && !repeats; ++i) repeats = !texts[i].empty() && taken[i].count(texts[i]);
       if (repeats) continue;
+      for (std::size_t i = 0; i < texts.size(); ++i)
+        if (!texts[i].empty()) taken[i].insert(texts[i]);
       v.variant->draw = draw;
       chosen = std::move(v);
     }
@@ -213,10 +222,6 @@ std::vector<ProblemSet> variants_for_class(const ProblemSet& set, const std::vec
           SourceLocation{set.file, 0, 0}, "student",
           "no variant for " + student + " that differs from every earlier student's in " +
               std::to_string(kMaxDrawAttempts) + " draws: the ranges hold fewer variants than the class"});
-    } else {
-      for (std::size_t i = 0; i < chosen->problems.size(); ++i)
-        if (!chosen->problems[i].error && (vary_all || problem_varies(set, set.problems[i])))
-          taken[i].insert(emit_flow(chosen->problems[i].given_node));
     }
     out.push_back(std::move(*chosen));
   }
