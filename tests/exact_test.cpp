@@ -52,6 +52,14 @@ TEST(Exact, CanonicalRationalisesDenominators) {
   expect_canonical(ex(numeric(1, 27)) * sqrt_of(243), sqrt_of(3) / 3);
 }
 
+TEST(Exact, CanonicalLeavesNestedRootsInDenominatorsAlone) {
+  // √8 inside another root: no conjugate exists, and this once threw from GiNaC's degree().
+  const GiNaC::ex e = 1 / (GiNaC::sqrt(8 * GiNaC::sqrt(GiNaC::ex(8)) - 1) - 1);
+  GiNaC::ex c;
+  ASSERT_NO_THROW(c = canonical(e));
+  EXPECT_NEAR(to_double(c), 1 / (std::sqrt(8 * std::sqrt(8.0) - 1) - 1), 1e-12);
+}
+
 TEST(Exact, CanonicalRationalisesSumsOfRadicalsInDenominators) {
   expect_canonical(1 / (1 + 2 * sqrt_of(3)), (2 * sqrt_of(3) - 1) / 11);
   expect_canonical(ex(37) / (5 * GiNaC::pow(1 + 2 * sqrt_of(3), 2)) +

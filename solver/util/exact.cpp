@@ -282,7 +282,9 @@ ex rationalize_denominator(const ex& e) {
     if (!find_square_root(den, root)) break;
     const GiNaC::symbol s;
     const ex d = den.subs(root == s).expand();
-    if (d.degree(s) != 1 || d.ldegree(s) < 0) break;
+    // A root nested in another (√(8√8 − 1) − 1) is not a polynomial in s: GiNaC's degree()
+    // would throw (found by fuzz_expression), and there is no conjugate to multiply by.
+    if (!d.is_polynomial(s) || d.degree(s) != 1 || d.ldegree(s) < 0) break;
     const ex a = d.coeff(s, 0), b = d.coeff(s, 1);
     const ex conjugate = a - b * root;
     num = (num * conjugate).expand();
