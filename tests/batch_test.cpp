@@ -289,9 +289,9 @@ TEST(Gradescope, AutograderScriptWritesResultsJson) {
   fs::create_directories(ag / "submission");
   fs::create_symlink(FRUSTUM_BINARY, ag / "source" / "build" / "frustum");
   fs::create_symlink(test::source_path("problems"), ag / "source" / "problems");
-  write(ag / "autograder.conf", "SET=problems/seeds/001_zbuffer_plane_method.yaml\nLANG_FEEDBACK=ja\n");
-  const std::string run = "AUTOGRADER_ROOT=" + ag.string() + " AUTOGRADER_CONF=" + (ag / "autograder.conf").string() +
-                          " bash " + test::source_path("tools/gradescope/run_autograder") + " >/dev/null 2>&1";
+  write(ag / "source" / "autograder.conf", "SET=problems/seeds/001_zbuffer_plane_method.yaml\nLANG_FEEDBACK=ja\n");
+  const std::string run = "AUTOGRADER_ROOT=" + ag.string() + " bash " +
+                          test::source_path("tools/gradescope/run_autograder") + " >/dev/null 2>&1";
   // No answers file: a zero score that says why.
   ASSERT_EQ(std::system(run.c_str()), 0);
   auto results = nlohmann::json::parse(read(ag / "results" / "results.json"));

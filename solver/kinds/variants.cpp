@@ -272,14 +272,14 @@ YAML::Node answer_node(const Value& v) {
       }
       return n;
     case Value::Shape::Bool: return YAML::Node(v.flag ? "true" : "false");
-    case Value::Shape::Word: return YAML::Node(v.word);
+    case Value::Shape::Word: return string_node(v.word);  // a bit string 0010 stays a string
     case Value::Shape::WordMap:
       n = YAML::Node(YAML::NodeType::Map);
-      for (const auto& [k, w] : v.entries) n[k] = w;
+      for (const auto& [k, w] : v.entries) n[k] = string_node(w);
       return n;
     case Value::Shape::WordList:
       n = YAML::Node(YAML::NodeType::Sequence);
-      for (const std::string& w : v.words) n.push_back(w);
+      for (const std::string& w : v.words) n.push_back(string_node(w));
       return n;
   }
   return n;

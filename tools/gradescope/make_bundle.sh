@@ -1,21 +1,81 @@
 #!/usr/bin/env bash
-# Builds autograder.zip for Gradescope ("Zip file upload" autograder):
-#   tools/gradescope/make_bundle.sh problems/seeds/001_zbuffer_plane_method.yaml [ja] [out.zip]
-# The zip holds setup.sh and run_autograder at its root and Frustum's sources in source/
-# (the set and the feedback language recorded in source/autograder.conf).
+# Builds autograder.zip for Gradescope's "Zip file upload" autograder from any problem set
+# (tracked by git or not) and, optionally, the per-student sets `frustum generate -o DIR` wrote:
+#   tools/gradescope/make_bundle.sh SET.yaml [--variants DIR] [--lang en|ja]
+#                                   [--identity sid|email|id] [--visibility WHEN] [-o autograder.zip]
+# The zip's root holds setup.sh, run_autograder, autograder.conf, frustum/ (the sources the
+# `frustum` binary is built from) and assignment/ (the set, and the variants in variants/).
+# --identity: with per-student sets, check that the answers' `student:` is the Gradescope
+# submitter's student id (sid) or e-mail, so nobody is graded against another student's set.
+# --visibility: when students see each problem's feedback (expected answers and derivations):
+# visible (default), after_due_date, after_published or hidden; the score is shown either way.
 set -euo pipefail
-set_file=${1:?usage: make_bundle.sh SET.yaml [en|ja] [autograder.zip]}
-lang=${2:-en}
-out=$(realpath -m "${3:-autograder.zip}")
+usage() { echo "usage: make_bundle.sh SET.yaml [--variants DIR] [--lang en|ja] [--identity sid|email|id] [--visibility WHEN] [-o autograder.zip]" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/../.." && pwd)
-[ -f "$root/$set_file" ] || { echo "make_bundle: $set_file is not a file under $root" >&2; exit 1; }
+set_file= variants= lang=en identity= visibility=visible out=autograder.zip positional=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --variants) variants=${2:?--variants needs a directory}; shift 2 ;;
+    --lang) lang=${2:?--lang needs en or ja}; shift 2 ;;
+    --identity) identity=${2:?--identity needs sid, email or id}; shift 2 ;;
+    --visibility) visibility=${2:?--visibility needs visible, after_due_date, after_published or hidden}; shift 2 ;;
+    -o|--output) out=${2:?-o needs a file name}; shift 2 ;;
+    -h|--help) usage ;;
+    -*) echo "make_bundle: unknown option $1" >&2; usage ;;
+    *) positional+=("$1"); shift ;;
+  esac
+done
+# The older form `make_bundle.sh SET [LANG] [OUT]` still works.
+[ ${#positional[@]} -ge 1 ] || usage
+set_file=${positional[0]}
+[ ${#positional[@]} -ge 2 ] && lang=${positional[1]}
+[ ${#positional[@]} -ge 3 ] && out=${positional[2]}
+[ ${#positional[@]} -le 3 ] || usage
+case "$lang" in en|ja) ;; *) echo "make_bundle: --lang must be en or ja, not '$lang'" >&2; exit 2 ;; esac
+case "$identity" in ""|sid|email|id) ;; *) echo "make_bundle: --identity must be sid, email or id, not '$identity'" >&2; exit 2 ;; esac
+case "$visibility" in visible|after_due_date|after_published|hidden) ;;
+  *) echo "make_bundle: --visibility must be visible, after_due_date, after_published or hidden, not '$visibility'" >&2; exit 2 ;; esac
+[ -f "$set_file" ] || { echo "make_bundle: $set_file: no such file" >&2; exit 1; }
+[ -z "$variants" ] || [ -d "$variants" ] || { echo "make_bundle: $variants: no such directory" >&2; exit 1; }
+out=$(realpath -m "$out")
+set_name=$(basename "$set_file")
+stem=${set_name%.*}
+
+# A set with errors would give every submission 0: check it (and each variant) first when a
+# built frustum is at hand.
+frustum=$root/build/frustum
+[ -x "$frustum" ] || frustum=$(command -v frustum || true)
+if [ -n "$frustum" ]; then
+  "$frustum" check "$set_file" >/dev/null || { echo "make_bundle: $set_file has errors (frustum check $set_file)" >&2; exit 1; }
+fi
+
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
-mkdir -p "$stage/source"
-(cd "$root" && git ls-files -z | xargs -0 cp --parents -t "$stage/source")
-printf 'SET=%q\nLANG_FEEDBACK=%q\n' "$set_file" "$lang" > "$stage/source/autograder.conf"
+# The sources of the `frustum` target: the top CMakeLists.txt and the directories it builds from.
+mkdir -p "$stage/frustum/tools" "$stage/assignment"
+for part in CMakeLists.txt app bench grader solver; do cp -R "$root/$part" "$stage/frustum/"; done
+cp -R "$root/tools/packages" "$stage/frustum/tools/"
+cp "$set_file" "$stage/assignment/$set_name"
+variants_conf=
+if [ -n "$variants" ]; then
+  shopt -s nullglob
+  files=("$variants/$stem"-*.yaml)
+  shopt -u nullglob
+  [ ${#files[@]} -gt 0 ] || { echo "make_bundle: $variants has no $stem-*.yaml (frustum generate $set_file ... -o $variants)" >&2; exit 1; }
+  mkdir -p "$stage/assignment/variants"
+  for f in "${files[@]}"; do
+    if [ -n "$frustum" ]; then
+      "$frustum" check "$f" >/dev/null || { echo "make_bundle: $f has errors (frustum check $f)" >&2; exit 1; }
+    fi
+    cp "$f" "$stage/assignment/variants/"
+  done
+  variants_conf=assignment/variants
+  echo "make_bundle: ${#files[@]} per-student sets from $variants"
+fi
+printf 'SET=%q\nVARIANTS=%q\nLANG_FEEDBACK=%q\nIDENTITY=%q\nVISIBILITY=%q\n' \
+  "assignment/$set_name" "$variants_conf" "$lang" "$identity" "$visibility" > "$stage/autograder.conf"
 cp "$root/tools/gradescope/setup.sh" "$root/tools/gradescope/run_autograder" "$stage/"
 chmod +x "$stage/setup.sh" "$stage/run_autograder"
 rm -f "$out"
-(cd "$stage" && python3 -m zipfile -c "$out" setup.sh run_autograder source >/dev/null)
+(cd "$stage" && python3 -m zipfile -c "$out" setup.sh run_autograder autograder.conf frustum assignment >/dev/null)
 echo "wrote $out"
