@@ -81,11 +81,11 @@ int run_check(const std::string& path, const Output& o) {
         ++here;
       }
     if (here == 0)
-      o.err << file << ": " << set.problems.size() << " problem"
+      o.out << file << ": " << set.problems.size() << " problem"
             << (set.problems.size() == 1 ? "" : "s") << ", no errors\n";
     errors += here;
   }
-  if (errors) o.err << errors << " error" << (errors == 1 ? "" : "s") << "\n";
+  if (errors) o.out << errors << " error" << (errors == 1 ? "" : "s") << "\n";
   return errors == 0 ? 0 : 1;
 }
 

@@ -16,8 +16,9 @@ struct CliRun {
   std::string out;
 };
 
-CliRun run(const std::string& args) {
-  const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1";
+// Standard output and, unless `with_stderr` is false, standard error.
+CliRun run(const std::string& args, bool with_stderr = true) {
+  const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
@@ -84,6 +85,50 @@ TEST(Cli, BadUsageIsAnErrorNotACrash) {
   EXPECT_NE(run("solve /nonexistent.yaml").status, 0);
   EXPECT_NE(run("frobnicate").status, 0);
   EXPECT_NE(run("solve " + seed("001_zbuffer_plane_method.yaml") + " --format pdf").status, 0);
+}
+
+// --version, help and `check` print on standard output only.
+CliRun stdout_of(const std::string& args) { return run(args, false); }
+
+TEST(Cli, VersionPrintsTheProjectVersion) {
+  const CliRun r = stdout_of("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out, std::string("frustum ") + FRUSTUM_VERSION + "\n");
+}
+
+TEST(Cli, EverySubcommandHasAnExampleAndPlainChoices) {
+  for (const char* sub : {"solve", "check", "grade", "kinds", "generate", "draw", "render", "bench",
+                          "bench accuracy"}) {
+    const CliRun r = stdout_of(std::string(sub) + " --help");
+    EXPECT_EQ(r.status, 0) << sub;
+    EXPECT_NE(r.out.find("Example"), std::string::npos) << sub << ":\n" << r.out;
+    EXPECT_NE(r.out.find("frustum " + std::string(sub).substr(0, std::string(sub).find(' '))),
+              std::string::npos)
+        << sub;
+    EXPECT_EQ(r.out.find("->"), std::string::npos) << sub << " shows CLI11's internal mapping:\n"
+                                                   << r.out;
+  }
+  EXPECT_NE(stdout_of("solve --help").out.find("{text,markdown,json}"), std::string::npos);
+  EXPECT_NE(stdout_of("solve --help").out.find("{exact,double,float,long-double}"),
+            std::string::npos);
+  EXPECT_NE(stdout_of("grade --help").out.find("{text,json}"), std::string::npos);
+  // The words still select what they name.
+  EXPECT_EQ(stdout_of("solve " + test::source_path("problems/seeds/001_zbuffer_plane_method.yaml") +
+                      " --format JSON")
+                .out.substr(0, 1),
+            "{");
+  EXPECT_NE(stdout_of("solve " + test::source_path("problems/seeds/001_zbuffer_plane_method.yaml") +
+                      " --format 2")
+                .status,
+            0);
+}
+
+TEST(Cli, CheckPrintsItsSummaryOnStandardOutput) {
+  const CliRun r =
+      stdout_of("check " + test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("001_zbuffer_plane_method.yaml: 3 problems, no errors"), std::string::npos)
+      << r.out;
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ const std::regex& yaml11_non_string() {
   static const std::regex r(
       "y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF"
       "|~|null|Null|NULL"
-      "|[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+|[-+]?[1-9][0-9_]*(:[0-5]?[0-9])+"
+      "|[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+|[-+]?[1-9][0-9_]*(:["
+      "0-5]?[0-9])+"
       "|[-+]?([0-9][0-9_]*)?\\.[0-9.]*([eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(:[0-5]?[0-9])+\\.[0-9_]*"
       "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)");
   return r;
@@ -35,14 +36,16 @@ const std::regex& yaml12_non_string() {
   static const std::regex r(
       "true|True|TRUE|false|False|FALSE|~|null|Null|NULL"
       "|[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+"
-      "|[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)");
+      "|[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|"
+      "NAN)");
   return r;
 }
 
 // The same plain scalar read as different things (or the same number with different values:
 // 0010 is 8 in YAML 1.1 and 10 in 1.2). Integers and decimals written plainly agree.
 bool readers_disagree(const std::string& s) {
-  static const std::regex agreed("[-+]?(0|[1-9][0-9]*)(\\.[0-9]+)?|true|false|True|False|TRUE|FALSE|~|null|Null|NULL");
+  static const std::regex agreed(
+      "[-+]?(0|[1-9][0-9]*)(\\.[0-9]+)?|true|false|True|False|TRUE|FALSE|~|null|Null|NULL");
   if (std::regex_match(s, agreed)) return false;
   return std::regex_match(s, yaml11_non_string()) || std::regex_match(s, yaml12_non_string());
 }
@@ -51,11 +54,21 @@ std::string quote(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           char buf[8];
@@ -87,7 +100,8 @@ YAML::Node string_node(const std::string& s) {
 
 std::string emit_flow(const YAML::Node& n) {
   switch (n.Type()) {
-    case YAML::NodeType::Scalar: return emit_scalar(n.Scalar(), n.Tag() == "!");
+    case YAML::NodeType::Scalar:
+      return emit_scalar(n.Scalar(), n.Tag() == "!");
     case YAML::NodeType::Sequence: {
       std::string out = "[";
       for (std::size_t i = 0; i < n.size(); ++i) out += (i ? ", " : "") + emit_flow(n[i]);
@@ -102,7 +116,8 @@ std::string emit_flow(const YAML::Node& n) {
       }
       return out + "}";
     }
-    default: return "null";
+    default:
+      return "null";
   }
 }
 
