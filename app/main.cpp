@@ -41,7 +41,7 @@ std::string examples(std::initializer_list<const char*> lines) {
 
 int main(int argc, char** argv) {
   using frustum::app::Format;
-  CLI::App cli{"Frustum: solves, explains and grades exercises on the 3D graphics pipeline"};
+  CLI::App cli{"Frustum: solves, explains and grades exercises on the 3D graphics pipeline", "frustum"};
   cli.require_subcommand(1);
   cli.set_version_flag("--version", "frustum " FRUSTUM_VERSION, "Print the version and exit");
   cli.footer(
