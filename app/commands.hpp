@@ -35,6 +35,7 @@ struct GradeOptions {
   std::optional<std::string> out_dir;     // batch outputs (default "grades")
   double timeout = 10;                    // seconds per submission in a batch
   std::optional<std::string> gradescope;  // single: results.json
+  std::optional<std::string> prairielearn;  // single: PrairieLearn's external-grader results.json
   std::optional<std::string> html;        // single: feedback page
   std::optional<std::string> markdown;    // single: feedback Markdown
   std::optional<std::string> variants;    // --variants DIR: the sets `frustum generate` wrote
@@ -52,6 +53,21 @@ struct GenerateCommand {
   std::string out_dir = ".";
 };
 int run_generate(const GenerateCommand& options, const Output& o);
+
+// frustum export (app/export_command.cpp): a set as PrairieLearn questions, a Canvas QTI
+// package or Moodle XML (format prairielearn | qti | moodle, `input` a set), or a gradebook.csv
+// for Canvas's or Moodle's gradebook import (canvas-grades | moodle-grades, `input` the CSV).
+struct ExportOptions {
+  std::string format;
+  std::string input;
+  std::string out;                          // a directory (prairielearn, qti) or a file
+  int count = 1;                            // variants drawn
+  std::uint64_t seed = 1;
+  std::string assignment = "Frustum";       // the gradebook column
+  bool sis_login = false;                   // canvas-grades: ids are SIS Login IDs
+  std::string image = "frustum-prairielearn";
+};
+int run_export(const ExportOptions& options, const Output& o);
 
 // frustum render (app/render_command.cpp).
 struct RenderOptions {

@@ -7,6 +7,7 @@
 #include "grader/batch.hpp"
 #include "grader/feedback.hpp"
 #include "grader/gradescope.hpp"
+#include "grader/prairielearn.hpp"
 #include "grader/report.hpp"
 #include "solver/kinds/variants.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -111,6 +112,8 @@ int run_grade(const GradeOptions& g, const Output& o) {
     o.out << render_grade_text(report, TextStyle{o.color, g.lang});
   try {
     if (g.gradescope) write_file_atomically(*g.gradescope, json_text(gradescope_results(report, g.lang)) + "\n");
+    if (g.prairielearn)
+      write_file_atomically(*g.prairielearn, json_text(prairielearn_results(report, g.lang)) + "\n");
     if (g.html) write_file_atomically(*g.html, render_feedback_html(report, g.lang));
     if (g.markdown) write_file_atomically(*g.markdown, render_feedback_markdown(report, g.lang));
   } catch (const std::exception& e) {

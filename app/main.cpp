@@ -41,7 +41,8 @@ std::string examples(std::initializer_list<const char*> lines) {
 
 int main(int argc, char** argv) {
   using frustum::app::Format;
-  CLI::App cli{"Frustum: solves, explains and grades exercises on the 3D graphics pipeline", "frustum"};
+  CLI::App cli{"Frustum: solves, explains and grades exercises on the 3D graphics pipeline",
+               "frustum"};
   cli.require_subcommand(1);
   cli.set_version_flag("--version", "frustum " FRUSTUM_VERSION, "Print the version and exit");
   cli.footer(
@@ -112,6 +113,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.1, 3600.0));
   grade->add_option("--gradescope", grade_opt.gradescope,
                     "One student: write Gradescope's results.json here");
+  grade->add_option("--prairielearn", grade_opt.prairielearn,
+                    "One student: write PrairieLearn's external-grader results.json here");
   grade->add_option("--html", grade_opt.html,
                     "One student: write the feedback page (self-contained HTML) here");
   grade->add_option("--markdown", grade_opt.markdown,
@@ -154,6 +157,37 @@ int main(int argc, char** argv) {
                        "Directory for the sets; keys go in its answers/ (default .)");
   generate->footer(examples({"frustum generate SET.yaml --roster roster.csv -o variants/",
                              "frustum generate SET.yaml --seed 7 --count 30 -o drill/"}));
+
+  frustum::app::ExportOptions export_opt;
+  auto* exp = cli.add_subcommand("export",
+                                 "A set as PrairieLearn questions, Canvas QTI or Moodle XML; a "
+                                 "gradebook for Canvas or Moodle");
+  exp->add_option("format", export_opt.format, "What to write")
+      ->required()
+      ->check(CLI::IsMember({"prairielearn", "qti", "moodle", "canvas-grades", "moodle-grades"}));
+  exp->add_option("input", export_opt.input,
+                  "Problem set (YAML); for *-grades, the gradebook.csv of `frustum grade`")
+      ->required()
+      ->check(CLI::ExistingFile);
+  exp->add_option("-o,--out", export_opt.out,
+                  "Directory (prairielearn, qti), .xml file (moodle) or .csv file (*-grades; "
+                  "default: standard output)");
+  exp->add_option("--count", export_opt.count,
+                  "Variants to draw (default 1: the set itself when nothing varies)")
+      ->check(CLI::Range(1, 1000));
+  exp->add_option("--seed", export_opt.seed, "Seed of the variants (default 1)");
+  exp->add_option("--assignment", export_opt.assignment,
+                  "*-grades: the assignment's column name (default Frustum)");
+  exp->add_flag("--sis-login", export_opt.sis_login,
+                "canvas-grades: the student ids are SIS Login IDs (default SIS User IDs)");
+  exp->add_option("--image", export_opt.image,
+                  "prairielearn: the grader image (default frustum-prairielearn)");
+  exp->footer(examples(
+      {"frustum export prairielearn SET.yaml --count 20 -o course/questions/",
+       "frustum export qti SET.yaml --count 3 -o quiz/ && (cd quiz && zip -r ../quiz.zip .)",
+       "frustum export moodle SET.yaml --count 20 -o questions.xml",
+       "frustum export canvas-grades grades/gradebook.csv --assignment \"Homework 3\" -o "
+       "canvas.csv"}));
 
   std::string draw_id, draw_output;
   int raster = 48;
@@ -220,6 +254,13 @@ int main(int argc, char** argv) {
       return 2;
     }
     return frustum::app::run_generate(gen_opt, out);
+  }
+  if (exp->parsed()) {
+    if (export_opt.out.empty() && export_opt.format.find("grades") == std::string::npos) {
+      std::cerr << "export " << export_opt.format << ": give -o OUT\n";
+      return 2;
+    }
+    return frustum::app::run_export(export_opt, out);
   }
   if (draw->parsed()) return frustum::app::run_draw(set, draw_id, draw_output, raster, out);
   if (render->parsed()) {

@@ -298,8 +298,10 @@ void comment_lines(std::string& out, const std::string& header) {
   }
 }
 
+}  // namespace
+
 // `{field}` in a problem's text becomes that given field's value.
-std::string fill_text(const std::string& text, const YAML::Node& given) {
+std::string fill_given_text(const std::string& text, const YAML::Node& given) {
   std::string out;
   std::size_t i = 0;
   while (i < text.size()) {
@@ -315,8 +317,6 @@ std::string fill_text(const std::string& text, const YAML::Node& given) {
   }
   return out + text.substr(std::min(i, text.size()));
 }
-
-}  // namespace
 
 std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant, const std::string& header) {
   std::string out;
@@ -345,7 +345,7 @@ std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant, 
           for (auto g = given.begin(); g != given.end(); ++g)
             out += "      " + emit_flow(g->first) + ": " + emit_flow(g->second) + "\n";
         } else if (name == "text" && f->second.IsScalar()) {
-          out += "text: " + emit_scalar(fill_text(f->second.Scalar(), given), true) + "\n";
+          out += "text: " + emit_scalar(fill_given_text(f->second.Scalar(), given), true) + "\n";
         } else {
           out += emit_scalar(name) + ": " + emit_flow(f->second) + "\n";
         }

@@ -74,6 +74,9 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
 // `nice`, `difficulty` and `variants` removed, each `given` replaced by the drawn one, and
 // `{field}` in a problem's text replaced by that given field's value. `header` is written as
 // comment lines first.
+// `{field}` in a problem's text replaced by that given field's value (as YAML flow text).
+std::string fill_given_text(const std::string& text, const YAML::Node& given);
+
 std::string emit_variant_set(const YAML::Node& source_root, const ProblemSet& variant,
                              const std::string& header);
 // The answer key (problem-format.md §2) of a variant: every asked answer, exact where possible.

@@ -1,0 +1,124 @@
+// `frustum export FORMAT INPUT -o OUT`: a problem set as PrairieLearn questions, a Canvas QTI
+// package or Moodle XML questions (with --count variants drawn from --seed), or a class's
+// gradebook.csv as Canvas's or Moodle's gradebook import CSV.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "grader/atomic_file.hpp"
+#include "grader/export_gradebook.hpp"
+#include "grader/export_moodle.hpp"
+#include "grader/export_prairielearn.hpp"
+#include "grader/export_qti.hpp"
+#include "grader/quiz_items.hpp"
+#include "solver/kinds/variants.hpp"
+#include "solver/kinds/yaml_document.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The set itself when nothing varies and one is asked for, else `count` pairwise-distinct
+// variants drawn from `seed` (named seedS-I, as `frustum generate --seed` names them).
+std::vector<ProblemSet> drawn(const ProblemSet& set, const ExportOptions& e,
+                              std::vector<std::string>& names) {
+  if (e.count == 1 && !set_varies(set)) {
+    names = {""};
+    return {set};
+  }
+  std::vector<ProblemSet> out = variants_from_seed(set, e.seed, e.count, !set_varies(set));
+  for (std::size_t i = 0; i < out.size(); ++i) names.push_back(fmt::format("seed{}-{}", e.seed, i));
+  return out;
+}
+
+std::string ident_of(const std::string& stem) {
+  std::string out = "frustum_";
+  for (const char c : stem)
+    out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  return out;
+}
+
+int export_set(const ExportOptions& e, const Output& o) {
+  const ProblemSet set = load_problem_set(e.input);
+  if (!set.all_errors().empty()) {
+    for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
+    return 1;
+  }
+  std::vector<std::string> names;
+  const std::vector<ProblemSet> variants = drawn(set, e, names);
+  for (const ProblemSet& v : variants)
+    if (!v.all_errors().empty()) {
+      for (const Diagnostic& d : v.all_errors()) o.err << d.format() << "\n";
+      return 1;
+    }
+  const std::string stem = fs::path(e.input).stem().string();
+  const std::string title = set.title.empty() ? stem : set.title;
+  std::map<std::string, std::string> files;  // path under e.out → contents
+  if (e.format == "prairielearn") {
+    PrairieLearnOptions options;
+    options.image = e.image;
+    for (const auto& [dir, content] :
+         export_prairielearn(load_yaml_file(e.input).root, set, variants, stem, options))
+      for (const auto& [name, text] : content) files[dir + "/" + name] = text;
+  } else {
+    std::vector<QuizVariant> quiz;
+    for (std::size_t i = 0; i < variants.size(); ++i)
+      quiz.push_back({names[i], quiz_questions(variants[i])});
+    for (const QuizQuestion& q : quiz.front().questions)
+      for (const std::string& l : q.left_out)
+        o.err << "note: " << q.id << "." << l << " (left to frustum grade)\n";
+    if (e.format == "qti")
+      files = export_qti(quiz, title, ident_of(stem));
+    else
+      files[""] = export_moodle(quiz, title);
+  }
+  try {
+    for (const auto& [name, text] : files) {
+      const fs::path path = name.empty() ? fs::path(e.out) : fs::path(e.out) / name;
+      if (path.has_parent_path()) fs::create_directories(path.parent_path());
+      write_file_atomically(path.string(), text);
+      o.out << path.string() << "\n";
+    }
+  } catch (const std::exception& ex) {
+    o.err << "error: " << ex.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_export(const ExportOptions& e, const Output& o) {
+  if (e.format == "canvas-grades" || e.format == "moodle-grades") {
+    try {
+      std::ifstream in(e.input, std::ios::binary);
+      std::stringstream text;
+      text << in.rdbuf();
+      const std::string csv = export_gradebook(
+          text.str(), e.input,
+          e.format == "canvas-grades" ? GradebookFormat::Canvas : GradebookFormat::Moodle,
+          e.assignment, e.sis_login ? StudentKey::SisLoginId : StudentKey::SisUserId);
+      if (e.out.empty() || e.out == "-")
+        o.out << csv;
+      else
+        write_file_atomically(e.out, csv);
+      return 0;
+    } catch (const InputError& ex) {
+      o.err << "error: " << ex.diagnostic().format() << "\n";
+      return 1;
+    } catch (const std::exception& ex) {
+      o.err << "error: " << ex.what() << "\n";
+      return 1;
+    }
+  }
+  return export_set(e, o);
+}
+
+}  // namespace frustum::app

@@ -1,0 +1,143 @@
+#include "grader/quiz_items.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "grader/export_tolerance.hpp"
+#include "solver/kinds/solve_set.hpp"
+#include "solver/kinds/variants.hpp"
+#include "solver/kinds/yaml_emit.hpp"
+
+namespace frustum {
+
+namespace {
+
+std::vector<QuizField> numbers(const Value& v, const std::vector<double>& windows) {
+  static const char* const kAxes[] = {"x", "y", "z", "w"};
+  std::vector<QuizField> out;
+  for (std::size_t i = 0; i < v.numbers.size(); ++i) {
+    QuizField f;
+    f.value = v.numbers[i];
+    f.window = windows[i];
+    if (v.shape == Value::Shape::Matrix)
+      f.label = fmt::format("row {}, column {}", i / static_cast<std::size_t>(v.cols) + 1,
+                            i % static_cast<std::size_t>(v.cols) + 1);
+    else if (v.shape == Value::Shape::Vector)
+      f.label = v.numbers.size() <= 4 ? kAxes[i] : fmt::format("component {}", i + 1);
+    out.push_back(f);
+  }
+  return out;
+}
+
+// The fields of one answer, or the reason it cannot be a quiz field.
+std::string fields_of(const ProblemSpec& p, const AnswerSpec& spec, const Value& expected,
+                      QuizAnswer& a) {
+  if (expected.shape == Value::Shape::Null) return "it has no value here";
+  switch (spec.kind) {
+    case AnswerKind::Scalar:
+    case AnswerKind::Vector:
+    case AnswerKind::UnitVector:
+    case AnswerKind::Point:
+    case AnswerKind::Matrix:
+      a.fields = numbers(expected, accepted_windows(p, spec.name, expected));
+      return {};
+    case AnswerKind::Direction: {
+      // Right up to a positive factor: the quiz asks for the one of length 1.
+      Value unit = expected;
+      double norm = 0;
+      for (double x : unit.numbers) norm += x * x;
+      norm = std::sqrt(norm);
+      if (norm == 0) return "a zero vector has no direction";
+      for (double& x : unit.numbers) x /= norm;
+      unit.exact.clear();
+      a.prompt += " (scaled to length 1)";
+      a.fields = numbers(unit, accepted_windows(p, spec.name, unit));
+      return {};
+    }
+    case AnswerKind::Bool: {
+      QuizField f;
+      f.type = QuizField::Type::Choice;
+      f.choices = {"true", "false"};
+      f.correct = expected.flag ? "true" : "false";
+      a.fields = {f};
+      return {};
+    }
+    case AnswerKind::Category: {
+      QuizField f;
+      f.type = QuizField::Type::Choice;
+      f.choices = spec.words;
+      f.correct = expected.word;
+      a.fields = {f};
+      return {};
+    }
+    case AnswerKind::BitString: {
+      QuizField f;
+      f.type = QuizField::Type::Text;
+      f.correct = expected.word;
+      a.prompt += " (a bit string such as 0101)";
+      a.fields = {f};
+      return {};
+    }
+    case AnswerKind::Plane:
+      return "a plane's equation is right up to any non-zero factor";
+    case AnswerKind::Polygon:
+      return "a polygon is right from any starting vertex";
+    case AnswerKind::WordMap:
+    case AnswerKind::WordList:
+      return "a set of labels is right in any order";
+    case AnswerKind::Sequence:
+      return "an order of labels has no quiz field";
+  }
+  return "no quiz field fits it";
+}
+
+}  // namespace
+
+std::string question_text(const ProblemSet& set, const ProblemSpec& p) {
+  if (p.text.empty()) return p.info ? p.info->summary : p.kind;
+  std::string text = fill_given_text(p.text, p.given_node);
+  if (set.variant && p.text.find('{') == std::string::npos)
+    text += " (Use the values given below.)";
+  return text;
+}
+
+std::vector<std::string> given_lines(const ProblemSpec& p) {
+  std::vector<std::string> out;
+  if (p.given_node.IsMap())
+    for (auto it = p.given_node.begin(); it != p.given_node.end(); ++it)
+      out.push_back(it->first.as<std::string>() + ": " + emit_flow(it->second));
+  return out;
+}
+
+std::vector<QuizQuestion> quiz_questions(const ProblemSet& set) {
+  std::vector<QuizQuestion> out;
+  for (const ProblemSpec& p : set.problems) {
+    if (p.error || !p.info) continue;
+    const ProblemResult r = solve_problem(p, set.file, false);
+    if (r.error) continue;
+    QuizQuestion q;
+    q.id = p.id;
+    q.kind = p.kind;
+    q.text = question_text(set, p);
+    q.given = given_lines(p);
+    for (const std::string& name : p.ask) {
+      const AnswerSpec* spec = p.info->answer(name);
+      const Value* expected = r.answers.find(name);
+      if (!spec || !expected) continue;
+      QuizAnswer a;
+      a.name = name;
+      a.prompt = name;
+      a.points = p.answer_points(name);
+      const std::string reason = fields_of(p, *spec, *expected, a);
+      if (reason.empty())
+        q.answers.push_back(a);
+      else
+        q.left_out.push_back(name + ": " + reason);
+    }
+    out.push_back(q);
+  }
+  return out;
+}
+
+}  // namespace frustum

@@ -1,0 +1,59 @@
+// A problem set as quiz questions for platforms that grade by themselves (Canvas QTI, Moodle
+// XML, paper): each asked answer becomes fields a quiz engine can check — numbers with the
+// window `frustum grade` accepts, a choice among words, or an exact text — or is left out
+// with the reason when no field type can express its equivalence (a plane up to scale, a
+// polygon up to rotation, sets and orders of labels).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "solver/kinds/kind.hpp"
+#include "solver/kinds/problem_set.hpp"
+
+namespace frustum {
+
+struct QuizField {
+  enum class Type { Number, Choice, Text };
+  Type type = Type::Number;
+  std::string label;                 // "x", "row 2, column 3"; empty for a single field
+  double value = 0;                  // Number
+  double window = 0;                 // Number: accepted half-width
+  std::vector<std::string> choices;  // Choice
+  std::string correct;               // Choice and Text: the right word or text
+};
+
+struct QuizAnswer {
+  std::string name;    // the kind's answer name ("normal")
+  std::string prompt;  // what to enter ("normal (scaled to length 1)")
+  double points = 1;
+  std::vector<QuizField> fields;
+};
+
+struct QuizQuestion {
+  std::string id;  // the problem's id
+  std::string kind;
+  std::string text;                // the problem's text, or the kind's summary
+  std::vector<std::string> given;  // "triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]]", one per field
+  std::vector<QuizAnswer> answers;
+  std::vector<std::string> left_out;  // "plane: an equation is right up to any factor"
+};
+
+// One drawn variant of a set as questions ("seed7-0", or the student id; "" for the set itself).
+struct QuizVariant {
+  std::string name;
+  std::vector<QuizQuestion> questions;
+};
+
+// What a student reads: the problem's text with its {field}s filled (the kind's summary when it
+// has none). A drawn variant whose text names no field adds that the values are those given
+// below, since such a text may quote the template's numbers.
+std::string question_text(const ProblemSet& set, const ProblemSpec& problem);
+// The given fields as "name: value" lines (YAML flow values).
+std::vector<std::string> given_lines(const ProblemSpec& problem);
+
+// The questions of a set (a generated variant, or a set with fixed givens), solved exactly.
+// Problems that do not solve are left out (quiz_questions never throws for them).
+std::vector<QuizQuestion> quiz_questions(const ProblemSet& set);
+
+}  // namespace frustum

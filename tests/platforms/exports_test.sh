@@ -1,0 +1,187 @@
+#!/usr/bin/env bash
+# The routes to PrairieLearn, Canvas and Moodle, end to end on real sets:
+# - `frustum export prairielearn`: every info.json against PrairieLearn's documented fields,
+#   server.py's generate() run as PrairieLearn runs it, question.html's inputs matching the
+#   params; then tools/prairielearn/frustum-pl-grade in a stand-in /grade tree with the
+#   answers as PrairieLearn's elements submit them (right, wrong, unreadable), every
+#   results.json against PrairieLearn's documented format;
+# - `frustum export qti` and `export moodle`: the XML against the schemas in schemas/, and the
+#   numbers and windows in them against `frustum solve`;
+# - `frustum export canvas-grades` / `moodle-grades` from a class graded by `frustum grade`.
+# Usage: exports_test.sh SOURCE_DIR FRUSTUM_BINARY
+set -euo pipefail
+src=$(cd "$1" && pwd)
+frustum=$(realpath "$2")
+here=$src/tests/platforms
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+check() {
+  if "${@:2}"; then echo "ok: $1"; else echo "FAILED: $1"; failures=$((failures + 1)); fi
+}
+validate() { python3 "$here/validate_json.py" "$@"; }
+
+# --- PrairieLearn -------------------------------------------------------------------------
+for set in 001_zbuffer_plane_method 003_polygons_backface 000_projection_and_hidden_surfaces; do
+  "$frustum" export prairielearn "$src/problems/seeds/$set.yaml" --count 4 --seed 3 -o "$work/pl" >/dev/null 2>&1
+done
+check "every question's info.json has PrairieLearn's fields" \
+  validate "$here/prairielearn_info.schema.json" "$work"/pl/*/info.json
+check "UUIDs are distinct" test "$(cat "$work"/pl/*/info.json | grep -c '"uuid"')" = \
+                               "$(cat "$work"/pl/*/info.json | grep '"uuid"' | sort -u | wc -l)"
+"$frustum" export prairielearn "$src/problems/seeds/001_zbuffer_plane_method.yaml" --count 4 --seed 3 -o "$work/pl2" >/dev/null 2>&1
+check "a second export is byte-identical (UUIDs and variants stay)" \
+  diff <(cd "$work/pl2" && cat */*) <(cd "$work/pl" && cat 001_*/*)
+
+# PrairieLearn's side, played by Python: generate() with a seeded `random`, then the answers
+# as the elements submit them, then the external grader's run.
+cat > "$work/play.py" <<'PY'
+import importlib.util, json, os, random, re, subprocess, sys
+
+work, frustum, grader, question, mode = sys.argv[1:6]
+spec = importlib.util.spec_from_file_location("server", os.path.join(question, "server.py"))
+server = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(server)
+random.seed(int(sys.argv[6]))
+data = {"params": {}, "correct_answers": {}}
+server.generate(data)
+params = data["params"]
+html = open(os.path.join(question, "question.html"), encoding="utf-8").read()
+element = {"number": "pl-number-input", "vector": "pl-matrix-input", "matrix": "pl-matrix-input",
+           "choice": "pl-multiple-choice", "string": "pl-string-input"}
+for name, kind in params["inputs"].items():
+    if not re.search(r'<%s answers-name="%s"' % (element[kind], re.escape(name)), html):
+        sys.exit(f"question.html has no {element[kind]} for {name}")
+# The expected answers, from Frustum itself.
+set_path = os.path.join(work, "set.yaml")
+open(set_path, "w", encoding="utf-8").write(params["set"])
+solved = json.loads(subprocess.run([frustum, "solve", set_path, "--format", "json"], check=True,
+                                   stdout=subprocess.PIPE).stdout)
+answers = solved["problems"][0]["answers"]
+submitted, raw = {}, {}
+for name, kind in params["inputs"].items():
+    a = answers[name]
+    value = a["value"]
+    if kind == "number":
+        if mode == "wrong":
+            value = value + 1000
+        submitted[name], raw[name] = value, a.get("exact", str(value))
+    elif kind in ("vector", "matrix"):
+        rows = value if kind == "matrix" else [value]
+        submitted[name] = {"_type": "ndarray", "_value": rows, "_dtype": "float64"}
+        raw[name] = json.dumps(rows)
+    elif kind == "choice":
+        words = list(params["correct"][name])
+        params[name] = [{"key": chr(97 + i), "html": w} for i, w in enumerate(words)]
+        right = str(value).lower() if isinstance(value, bool) else str(value)
+        submitted[name] = raw[name] = chr(97 + words.index(right))
+    else:
+        text = a.get("text") if isinstance(value, list) or isinstance(value, dict) else str(value)
+        if isinstance(value, str):
+            text = value
+        elif isinstance(value, list) and all(isinstance(x, (int, float)) for x in value) and len(value) == 4:
+            text = json.dumps(value)  # a plane as [a, b, c, d]
+        elif isinstance(value, (list, dict)):
+            text = json.dumps(value)
+        submitted[name] = raw[name] = text
+if mode == "unreadable":  # a matrix that does not close, or a nested mapping where words belong
+    kinds = params["inputs"]
+    name = next((n for n, k in kinds.items() if k in ("vector", "matrix")), next(iter(kinds)))
+    raw[name] = submitted[name] = "[1, 2" if kinds[name] != "string" else "{0-1: {x: y}}"
+root = os.path.join(work, "grade")
+os.makedirs(os.path.join(root, "data"), exist_ok=True)
+json.dump({"params": params, "correct_answers": {}, "submitted_answers": submitted,
+           "raw_submitted_answers": raw}, open(os.path.join(root, "data", "data.json"), "w"))
+results = os.path.join(root, "results", "results.json")
+if os.path.exists(results):
+    os.remove(results)
+subprocess.run([sys.executable, grader], check=True, env=dict(os.environ, GRADE_ROOT=root, FRUSTUM=frustum))
+r = json.load(open(results))
+print(json.dumps({"gradable": r.get("gradable"), "score": r.get("score")}))
+PY
+grader=$src/tools/prairielearn/frustum-pl-grade
+all_right=1 all_wrong=1 all_invalid=1 graded=0
+for q in "$work"/pl/*/; do
+  for seed in 1 2; do
+    r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" right $seed) || { echo "FAILED: $q: $r"; all_right=0; continue; }
+    validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_right=0
+    [ "$r" = '{"gradable": true, "score": 1.0}' ] || { echo "  $q right answers: $r"; all_right=0; }
+    graded=$((graded + 1))
+  done
+  if grep -q '"number"' "$q/server.py"; then
+    r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" wrong 1)
+    validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_wrong=0
+    python3 -c "import json,sys; r=json.loads(sys.argv[1]); sys.exit(0 if r['gradable'] and r['score'] < 1 else 1)" "$r" ||
+      { echo "  $q wrong numbers: $r"; all_wrong=0; }
+  fi
+  r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" unreadable 1)
+  validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_invalid=0
+  [ "$r" = '{"gradable": false, "score": null}' ] || { echo "  $q unreadable: $r"; all_invalid=0; }
+done
+check "PrairieLearn: the right answers, as the elements submit them, earn 1.0 ($graded variants)" test $all_right = 1 -a $graded -gt 20
+check "PrairieLearn: numbers off by 1000 lose points" test $all_wrong = 1
+check "PrairieLearn: an unreadable matrix is not gradable (no attempt charged)" test $all_invalid = 1
+
+# --- Canvas QTI and Moodle XML ------------------------------------------------------------
+for set in 001_zbuffer_plane_method 003_polygons_backface 004_placing_and_projecting; do
+  "$frustum" export qti "$src/problems/seeds/$set.yaml" --count 2 -o "$work/qti-$set" >/dev/null 2>&1
+  "$frustum" export moodle "$src/problems/seeds/$set.yaml" --count 3 -o "$work/moodle-$set.xml" >/dev/null 2>&1
+done
+check "QTI assessments validate against the QTI 1.2 schema" \
+  xmllint --noout --schema "$here/schemas/qti_1p2_subset.xsd" "$work"/qti-*/frustum_*.xml
+check "QTI manifests are well-formed and list every assessment" \
+  python3 - "$work" <<'PY'
+import glob, os, sys, xml.etree.ElementTree as ET
+ok = True
+for manifest in glob.glob(os.path.join(sys.argv[1], "qti-*", "imsmanifest.xml")):
+    hrefs = {r.get("href") for r in ET.parse(manifest).getroot().iter("{http://www.imsglobal.org/xsd/imscp_v1p1}resource")}
+    files = {os.path.basename(f) for f in glob.glob(os.path.join(os.path.dirname(manifest), "frustum_*.xml"))}
+    ok = ok and hrefs == files and len(files) == 2
+sys.exit(0 if ok else 1)
+PY
+check "Moodle XML validates against the Moodle XML schema" \
+  xmllint --noout --schema "$here/schemas/moodle_xml_subset.xsd" "$work"/moodle-*.xml
+# Every numeric field's range is the grader's window: value ± window graded by Frustum.
+check "Moodle Cloze fields are well formed and their tolerances positive" python3 - "$work" <<'PY'
+import glob, os, re, sys
+ok, n = True, 0
+for f in glob.glob(os.path.join(sys.argv[1], "moodle-*.xml")):
+    text = open(f, encoding="utf-8").read()
+    for m in re.finditer(r"\{(\d+):(NUMERICAL|MULTICHOICE|SHORTANSWER):([^}]*)\}", text):
+        n += 1
+        if m.group(2) == "NUMERICAL":
+            value, tol = m.group(3).lstrip("=").split(":")
+            ok = ok and float(tol) > 0 and float(tol) < abs(float(value)) + 1
+        elif m.group(2) == "MULTICHOICE":
+            ok = ok and m.group(3).count("=") == 1
+    ok = ok and text.count("{") == text.count("}")
+sys.exit(0 if ok and n > 50 else 1)
+PY
+
+# --- Gradebooks ---------------------------------------------------------------------------
+mkdir -p "$work/class"
+cp "$src/problems/seeds/answers/003_polygons_backface.yaml" "$work/class/a.yaml"
+sed 's/^student: .*/student: s2/; s/D_f: -2/D_f: 5/' "$src/problems/seeds/answers/003_polygons_backface.yaml" > "$work/class/b.yaml"
+printf 'student: s3\nanswers: [broken\n' > "$work/class/c.yaml"
+"$frustum" grade "$src/problems/seeds/003_polygons_backface.yaml" "$work/class" -o "$work/grades" >/dev/null 2>&1 || true
+"$frustum" export canvas-grades "$work/grades/gradebook.csv" --assignment "Homework 3" -o "$work/canvas.csv"
+"$frustum" export moodle-grades "$work/grades/gradebook.csv" --assignment "Homework 3" -o "$work/moodle.csv"
+check "Canvas CSV: the import columns, Points Possible, one row per student" python3 - "$work" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1] + "/canvas.csv", encoding="utf-8")))
+book = {r[0]: r for r in csv.reader(open(sys.argv[1] + "/grades/gradebook.csv", encoding="utf-8"))}
+ok = rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "Homework 3"]
+ok = ok and rows[1][0] == "Points Possible" and rows[1][5] == book["seed003-published"][2]
+by_id = {r[2]: r[5] for r in rows[2:]}
+ok = ok and by_id.get("seed003-published") == book["seed003-published"][1]
+ok = ok and by_id.get("s3", "") == ""  # not graded: left empty, never a zero
+sys.exit(0 if ok else 1)
+PY
+check "Moodle CSV: ID number and the grade column" \
+  grep -q '^seed003-published,' <(tail -n +2 "$work/moodle.csv")
+printf 'student,score,max_score,percent,status\na,1,2,50,graded\na,2,2,100,graded\n' > "$work/twice.csv"
+check "a student with two rows is refused, naming the line" \
+  grep -q "twice.csv:3:1: student: student a is also on line 2" <("$frustum" export canvas-grades "$work/twice.csv" 2>&1 || true)
+
+echo "$failures failed"
+[ "$failures" -eq 0 ]
