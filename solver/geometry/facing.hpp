@@ -4,11 +4,11 @@
 // it for the hard-case study.
 #pragma once
 
-#include <limits>
-
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/numeric/scalar.hpp"
+
+#include <limits>
 
 namespace frustum {
 

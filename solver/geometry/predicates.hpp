@@ -8,11 +8,11 @@
 // absolute η besides the relative u) and overflow (infinity or NaN is "unknown").
 #pragma once
 
-#include <cmath>
-#include <limits>
-
 #include "solver/numeric/ranged.hpp"
 #include "solver/numeric/scalar.hpp"
+
+#include <cmath>
+#include <limits>
 
 namespace frustum {
 
