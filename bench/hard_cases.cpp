@@ -60,6 +60,8 @@ FacingStudy facing_study_in(Precision p, int cases, std::uint64_t seed) {
   std::vector<Polygon3<T>> polys;
   std::vector<Vec3<T>> eyes, far_eyes;
   std::vector<int> exact_signs;
+  std::vector<Polygon3<Exact>> exact_polys;  // the inputs' exact values (those of the T coordinates)
+  std::vector<Vec3<Exact>> exact_eyes, exact_far_eyes;
   for (int c = 0; c < cases; ++c) {
     Polygon3<Exact> poly;
     for (int i = 0; i < 3; ++i) poly.push_back(Vec3<Exact>(coordinate(), coordinate(), coordinate()));
@@ -78,22 +80,26 @@ FacingStudy facing_study_in(Precision p, int cases, std::uint64_t seed) {
     polys.push_back(pt);
     eyes.push_back(eye);
     far_eyes.push_back(Vec3<T>(T(3), T(-2), T(5)));
+    exact_polys.push_back(pe);
+    exact_eyes.push_back(ee);
+    exact_far_eyes.push_back(Vec3<Exact>(3, -2, 5));
   }
   for (int c = 0; c < cases; ++c) {
-    const Facing<T> f = facing(polys[static_cast<std::size_t>(c)], eyes[static_cast<std::size_t>(c)]);
+    const auto k = static_cast<std::size_t>(c);
+    const Facing<T> f = facing(polys[k], eyes[k], exact_polys[k], exact_eyes[k], true);
     s.naive_wrong += f.naive_sign != exact_signs[static_cast<std::size_t>(c)] ? 1 : 0;
     s.adaptive_wrong += f.sign != exact_signs[static_cast<std::size_t>(c)] ? 1 : 0;
     s.exact_fallbacks += f.used_exact ? 1 : 0;
   }
   // Timings: the naive sign, and the adaptive predicate, on these cases and on easy ones.
-  const auto time = [&](const std::vector<Vec3<T>>& e, bool adaptive) {
+  const auto time = [&](const std::vector<Vec3<T>>& e, const std::vector<Vec3<Exact>>& ee, bool adaptive) {
     const auto start = std::chrono::steady_clock::now();
     long passes = 0;
     long checksum = 0;
     do {
       for (std::size_t c = 0; c < polys.size(); ++c) {
         if (adaptive) {
-          checksum += facing(polys[c], e[c]).sign;
+          checksum += facing(polys[c], e[c], exact_polys[c], ee[c], true).sign;
         } else {
           const Vec3<T> n = newell_normal(polys[c]);
           checksum += scalar_sign(T((e[c] - polys[c][0]).dot(n)));
@@ -104,10 +110,10 @@ FacingStudy facing_study_in(Precision p, int cases, std::uint64_t seed) {
     const double ns = elapsed_ns<T>(start) / (static_cast<double>(passes) * static_cast<double>(polys.size()));
     return checksum == std::numeric_limits<long>::min() ? 0.0 : ns;  // keeps the loop observable
   };
-  s.naive_ns = time(eyes, false);
-  s.adaptive_ns = time(eyes, true);
-  s.naive_ns_generic = time(far_eyes, false);
-  s.adaptive_ns_generic = time(far_eyes, true);
+  s.naive_ns = time(eyes, exact_eyes, false);
+  s.adaptive_ns = time(eyes, exact_eyes, true);
+  s.naive_ns_generic = time(far_eyes, exact_far_eyes, false);
+  s.adaptive_ns_generic = time(far_eyes, exact_far_eyes, true);
   return s;
 }
 

@@ -9,6 +9,8 @@
 #include "test_util.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <set>
 
 namespace frustum {
 namespace {
@@ -29,6 +31,10 @@ const ProblemSpec& problem(const ProblemSet& set, const std::string& id) {
   EXPECT_NE(p, nullptr) << id;
   return *p;
 }
+
+// Every set in problems/hard (tests/accuracy_test.cpp checks the list against the folder).
+constexpr const char* kHardSets[] = {"normals",    "planes",      "backface", "eye_plane",
+                                     "magnitudes", "exact_signs", "coverage"};
 
 ProblemSet hard(const std::string& name) { return load_problem_set(source_path("problems/hard/" + name)); }
 
@@ -166,7 +172,7 @@ TEST(SolvePrecision, DerivationNamesTheBackendAndKeepsOtherKindsExact) {
 // `frustum solve problems/hard` succeeds (warnings only), and every exact answer in
 // problems/hard/answers grades full marks.
 TEST(HardCases, SolveCleanlyAndMatchTheirExactAnswers) {
-  for (const char* name : {"normals", "planes", "backface", "eye_plane", "magnitudes"}) {
+  for (const char* name : kHardSets) {
     const ProblemSet set = hard(std::string(name) + ".yaml");
     ASSERT_TRUE(set.all_errors().empty()) << name << ": " << set.all_errors()[0].format();
     const SetResult solved = solve_set(set, true);
@@ -179,6 +185,64 @@ TEST(HardCases, SolveCleanlyAndMatchTheirExactAnswers) {
       for (const AnswerGrade& a : p.answers)
         EXPECT_EQ(a.verdict, Verdict::Correct) << name << " " << p.id << " " << a.name << ": " << a.feedback;
   }
+}
+
+TEST(HardCases, EverySetInTheFolderIsChecked) {
+  std::set<std::string> listed(std::begin(kHardSets), std::end(kHardSets)), found;
+  for (const auto& f : std::filesystem::directory_iterator(source_path("problems/hard")))
+    if (f.path().extension() == ".yaml") found.insert(f.path().stem().string());
+  EXPECT_EQ(listed, found);
+}
+
+// The discrete part of an answer: a word, a flag, word lists and maps, or whether it exists
+// (null: no NDC behind the eye, no unit normal of a zero vector).
+std::string discrete_part(const Value& v) {
+  std::string s = std::to_string(static_cast<int>(v.shape));
+  if (v.shape == Value::Shape::Bool) s += v.flag ? " true" : " false";
+  s += " " + v.word;
+  for (const auto& [k, w] : v.entries) s += " " + k + "=" + w;
+  for (const std::string& w : v.words) s += " " + w;
+  return s;
+}
+
+// Every hard case in every backend: each discrete answer equals the exact one, and the
+// derivation says when the exact fallback decided.
+TEST(HardCases, DiscreteAnswersAreExactInEveryBackend) {
+  int compared = 0, fallbacks = 0;
+  for (const char* name : kHardSets) {
+    const ProblemSet set = hard(std::string(name) + ".yaml");
+    for (const ProblemSpec& spec : set.problems) {
+      const ProblemResult exact = solve_problem(spec, set.file, false);
+      ASSERT_FALSE(exact.error) << name << " " << spec.id;
+      for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
+        const ProblemResult r = solve_problem(spec, set.file, true, p);
+        ASSERT_FALSE(r.error) << name << " " << spec.id << " " << to_string(p);
+        for (const AnswerSpec& a : spec.info->answers) {
+          const bool discrete = a.kind == AnswerKind::Bool || a.kind == AnswerKind::Category ||
+                                a.kind == AnswerKind::WordMap || a.kind == AnswerKind::WordList ||
+                                a.kind == AnswerKind::Sequence || a.kind == AnswerKind::BitString;
+          const Value* want = exact.answers.find(a.name);
+          const Value* got = r.answers.find(a.name);
+          if (!want) continue;
+          ASSERT_NE(got, nullptr) << spec.id << " " << a.name << " " << to_string(p);
+          // No value where the exact answer has none (no NDC behind the eye); a value the
+          // backend lost to its range or precision is allowed, with a warning.
+          if (want->shape == Value::Shape::Null) {
+            EXPECT_EQ(got->shape, Value::Shape::Null) << name << " " << spec.id << " " << a.name << " " << to_string(p);
+          } else if (got->shape == Value::Shape::Null) {
+            EXPECT_TRUE(r.derivation.has_warnings()) << name << " " << spec.id << " " << a.name << " " << to_string(p);
+          }
+          if (!discrete) continue;
+          EXPECT_EQ(discrete_part(*got), discrete_part(*want)) << name << " " << spec.id << " " << a.name << " " << to_string(p);
+          ++compared;
+        }
+        for (const Step& s : r.derivation.steps())
+          if (s.title == "Backend" && s.note.find("decided by exact arithmetic") != std::string::npos) ++fallbacks;
+      }
+    }
+  }
+  EXPECT_GT(compared, 60);
+  EXPECT_GT(fallbacks, 10);  // the boundary cases need the fallback, and say so
 }
 
 TEST(HardCases, ExactNormalsOfDegeneratePolygonsAreExact) {

@@ -216,6 +216,26 @@ TEST(Exact, ExactSignFindsExactZeros) {
   EXPECT_EQ(exact_sign(sqrt_of(6) - sqrt_of(2) * sqrt_of(3)), 0);
 }
 
+// Nested radicals GiNaC does not denest: √(5 + 2√6) = √2 + √3, √(3 + 2√2) = 1 + √2,
+// √(2 + √3) = (√6 + √2)/2. canonical() proves them 0 through a polynomial with the value as a
+// root and a bound on that polynomial's non-zero roots; a value 10⁻⁵⁰ away stays non-zero.
+TEST(Exact, CanonicalProvesNestedRadicalZeros) {
+  const ex a = GiNaC::sqrt(5 + 2 * sqrt_of(6)) - sqrt_of(2) - sqrt_of(3);
+  const ex b = GiNaC::sqrt(3 + 2 * sqrt_of(2)) - 1 - sqrt_of(2);
+  const ex c = 2 * GiNaC::sqrt(2 + sqrt_of(3)) - sqrt_of(6) - sqrt_of(2);
+  for (const ex& zero : {a, b, c}) {
+    EXPECT_TRUE(canonical(zero).is_zero()) << zero << " -> " << canonical(zero);
+    EXPECT_EQ(exact_sign(zero), 0) << zero;
+    EXPECT_EQ(exact_sign(zero * sqrt_of(2) + 3 * zero), 0) << zero;
+  }
+  const ex tiny = GiNaC::pow(ex(10), -50);
+  EXPECT_FALSE(canonical(a + tiny).is_zero());
+  EXPECT_EQ(exact_sign(a + tiny), 1);
+  EXPECT_EQ(exact_sign(a - tiny), -1);
+  // A nested radical that is not zero keeps its form.
+  EXPECT_FALSE(canonical(GiNaC::sqrt(5 + 2 * sqrt_of(6)) - sqrt_of(2)).is_zero());
+}
+
 TEST(Exact, ExactSignRestoresDigitsAndRejectsNonReal) {
   const long digits_before = GiNaC::Digits;
   EXPECT_EQ(exact_sign(sqrt_of(8) - 2 * sqrt_of(2)), 0);

@@ -78,6 +78,35 @@ TEST(Rasterizer, SnappingRoundsLikeLlround) {
     EXPECT_EQ(to_fixed(v), std::llround(v * 256.0)) << fmt::format("{:.17g}", v);
 }
 
+// Snapping an exact coordinate decides by its exact value: 1/512 − 10⁻³⁰ rounds down though its
+// nearest double, 1/512, rounds up; the same for −, for irrational values and for every double.
+TEST(Rasterizer, ExactSnappingDecidesByTheExactValue) {
+  const Exact tiny = GiNaC::pow(Exact(10), -30), half = Exact(1) / 512;
+  bool off = false;
+  EXPECT_EQ(to_fixed(half - tiny, off), 0);
+  EXPECT_TRUE(off);
+  EXPECT_EQ(to_fixed(1.0 / 512), 1);
+  EXPECT_EQ(to_fixed(half, off), 1);
+  EXPECT_EQ(to_fixed(-half + tiny, off), 0);
+  EXPECT_EQ(to_fixed(-half, off), -1);
+  EXPECT_EQ(to_fixed(Exact(3) + half + tiny, off), 3 * 256 + 1);
+  // √2·256 = 362.0387…: +½ − 0.039 is just below 362.5, +½ − 0.038 just above.
+  EXPECT_EQ(to_fixed(GiNaC::sqrt(Exact(2)), off), 362);
+  EXPECT_EQ(to_fixed(GiNaC::sqrt(Exact(2)) + Exact(1) / 512 - Exact(39) / 1000 / 256, off), 362);
+  EXPECT_EQ(to_fixed(GiNaC::sqrt(Exact(2)) + Exact(1) / 512 - Exact(38) / 1000 / 256, off), 363);
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<std::int64_t> grid(-(std::int64_t{1} << 28), std::int64_t{1} << 28);
+  for (int n = 0; n < 2000; ++n) {
+    const double v = (static_cast<double>(grid(rng)) + (n % 2 ? 0.5 : 0.25)) / 256.0;
+    bool grid_off = false;
+    ASSERT_EQ(to_fixed(exact_from_double(v), grid_off), to_fixed(v)) << fmt::format("{:.17g}", v);
+    EXPECT_TRUE(grid_off);
+  }
+  bool on = false;
+  EXPECT_EQ(to_fixed(Exact(5) / 256, on), 5);
+  EXPECT_FALSE(on);
+}
+
 TEST(Rasterizer, DegenerateTriangleCoversNothing) {
   const TriangleSetup t = tri(0, 0, 2, 2, 5, 5);
   EXPECT_TRUE(t.degenerate);

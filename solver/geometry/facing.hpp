@@ -1,10 +1,11 @@
-// seed 003's back-face discriminant D_f = (p_eye − p₀)·n in any scalar, and its sign decided
-// adaptively: the computed sign when a forward error bound proves it, else the exact sign of
-// the same (rounded) inputs. The naive sign is kept beside it for the hard-case study.
+// seed 003's back-face discriminant D_f = (p_eye − p₀)·n in any scalar, and its sign decided by
+// the filtered predicate of predicates.hpp: the computed sign when the forward error bound
+// proves it, else the exact sign on the problem's exact inputs. The naive sign is kept beside
+// it for the hard-case study.
 #pragma once
 
 #include "solver/geometry/polygon_normal.hpp"
-#include "solver/numeric/precision.hpp"
+#include "solver/geometry/predicates.hpp"
 #include "solver/numeric/scalar.hpp"
 
 #include <limits>
@@ -13,54 +14,59 @@ namespace frustum {
 
 template <typename T>
 struct Facing {
-  Vec3<T> normal;       // Newell's n (e₀ × e₁ for a triangle)
-  Vec3<T> view;         // p_eye − p₀
-  T df{};               // v·n as computed
-  int naive_sign = 0;   // sign of the computed D_f
-  int sign = 0;         // the exact sign of D_f for these inputs
+  Vec3<T> normal;      // Newell's n (e₀ × e₁ for a triangle)
+  Vec3<T> view;        // p_eye − p₀
+  T df{};              // v·n as computed
+  int naive_sign = 0;  // sign of the computed D_f
+  int sign = 0;        // the exact sign of D_f for the exact inputs
   bool used_exact = false;
 };
 
-// D_f's forward error bound: every difference, product and sum of the m − 2 Newell terms and
-// the dot product rounds once; γ_k = k·u/(1 − k·u) times the permanent (seed formula with
-// absolute values) bounds the error (Higham, ch. 3).
+// D_f's forward error bound for inputs each within a relative u of the exact ones: the seed
+// formula on the inputs' magnitudes (every difference pᵢ − p₀ becomes |pᵢ| + |p₀|) times γ_k
+// with k = 2m + 12: m + 5 roundings on the longest path (input, difference, product, the m − 2
+// Newell terms, the cross difference, the dot product's product and sum) and as many again for
+// the bound's own arithmetic and |x| ≤ |x̃|/(1 − u), plus the
+// products that fall in the subnormal range: 2(m − 2) per component of n, each off by η/2 and
+// then multiplied by |vᵢ|, and three in the dot product.
 template <typename T>
-T facing_error_bound(const Polygon3<T>& p, const Vec3<T>& view) {
-  const T u = std::numeric_limits<T>::epsilon() / T(2);
+T facing_error_bound(const Polygon3<T>& p, const Vec3<T>& eye) {
+  const Vec3<T> a0 = p[0].cwiseAbs();
   Vec3<T> terms = Vec3<T>::Zero();
   for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-    const Vec3<T> a = (p[i] - p[0]).cwiseAbs(), b = (p[i + 1] - p[0]).cwiseAbs();
+    const Vec3<T> a = p[i].cwiseAbs() + a0, b = p[i + 1].cwiseAbs() + a0;
     terms += Vec3<T>(a.y() * b.z() + a.z() * b.y(), a.z() * b.x() + a.x() * b.z(),
                      a.x() * b.y() + a.y() * b.x());
   }
-  const T k = T(p.size() + 8);
-  const T gamma = k * u / (T(1) - k * u);
-  // The permanent itself is computed with rounding; a factor (1 + 2γ) covers it.
-  return gamma * (T(1) + T(2) * gamma) * T(view.cwiseAbs().dot(terms));
+  const Vec3<T> view = eye.cwiseAbs() + a0;
+  const int m = static_cast<int>(p.size());
+  const T k = Rounding<T>::gamma(2 * m + 12);
+  return k * T(view.dot(terms)) + Rounding<T>::eta * (T(2 * (m - 2)) * view.sum() + T(4));
 }
 
+// D_f = (eye − p₀)·n with n Newell's normal, in T (exact for the exact backend).
 template <typename T>
-Facing<T> facing(const Polygon3<T>& p, const Vec3<T>& eye) {
+T facing_discriminant(const Polygon3<T>& p, const Vec3<T>& eye) {
+  return T((eye - p[0]).dot(newell_normal(p)));
+}
+
+// `exact_points`, `exact_eye`: the problem's exact inputs, which `p` and `eye` were rounded
+// from; `inputs_relative`: every one of them converted within a relative u (converts_relatively).
+template <typename T>
+Facing<T> facing(const Polygon3<T>& p, const Vec3<T>& eye, const Polygon3<Exact>& exact_points,
+                 const Vec3<Exact>& exact_eye, bool inputs_relative) {
   Facing<T> f;
   f.normal = newell_normal(p);
   f.view = eye - p[0];
   f.df = f.view.dot(f.normal);
   f.naive_sign = scalar_sign(f.df);
-  if constexpr (kIsExact<T>) {
-    f.sign = f.naive_sign;
-  } else {
-    const T bound = facing_error_bound(p, f.view);
-    if (std::isfinite(f.df) && std::isfinite(bound) && scalar_abs(f.df) > bound) {
-      f.sign = f.naive_sign;
-    } else {
-      // Uncertain: the same formula on the exact values of the rounded inputs.
-      Polygon3<Exact> q;
-      for (const Vec3<T>& v : p) q.push_back(Vec3<Exact>(exact_of(v(0)), exact_of(v(1)), exact_of(v(2))));
-      const Vec3<Exact> e(exact_of(eye(0)), exact_of(eye(1)), exact_of(eye(2)));
-      f.sign = exact_sign((e - q[0]).dot(newell_normal(q)));
-      f.used_exact = true;
-    }
-  }
+  T bound{};
+  if constexpr (!kIsExact<T>) bound = facing_error_bound(p, eye);
+  const SignDecision d = decide_sign(f.df, bound, inputs_relative, [&] {
+    return exact_sign(facing_discriminant(exact_points, exact_eye));
+  });
+  f.sign = d.sign;
+  f.used_exact = d.exact;
   return f;
 }
 

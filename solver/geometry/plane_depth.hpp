@@ -2,10 +2,11 @@
 // left-handed projection coordinates), the plane n̂·(p − A) = 0 written ax + by + cz = d, and
 // z = (d − a·xₛ − b·yₛ)/c at the pixel. When the triangle is nearly edge-on (c ≈ 0) that formula
 // divides a cancelled numerator by a tiny c; the barycentric form z = Σ λᵢ zᵢ with λᵢ from the
-// 2D edge functions at the pixel is then used instead: for a pixel inside the triangle it is a
+// 2D edge functions (predicates.hpp) at the pixel is then used instead: for a pixel inside the triangle it is a
 // convex combination, so z stays within the vertices' depths whatever the rounding.
 #pragma once
 
+#include "solver/geometry/predicates.hpp"
 #include "solver/numeric/scalar.hpp"
 
 #include <array>
@@ -19,20 +20,13 @@ struct PlaneDepth {
   T d{};                // n̂·A
   T z{};                // the plane method's z (or the barycentric one, see `barycentric`)
   bool barycentric = false;
-  bool inside = false;  // closed triangle: edge functions all ≥ 0 or all ≤ 0, as computed
 };
-
-// 2D edge function of a → b at p: twice the signed area of (a, b, p).
-template <typename T>
-T edge_function(const Vec3<T>& a, const Vec3<T>& b, const Vec2<T>& p) {
-  return (b(0) - a(0)) * (p(1) - a(1)) - (b(1) - a(1)) * (p(0) - a(0));
-}
 
 // z at the pixel by barycentric interpolation: λ_A ∝ E(B, C, p), λ_B ∝ E(C, A, p), λ_C ∝ E(A, B, p).
 template <typename T>
 T barycentric_depth(const std::array<Vec3<T>, 3>& t, const Vec2<T>& p) {
-  const T wa = edge_function(t[1], t[2], p), wb = edge_function(t[2], t[0], p),
-          wc = edge_function(t[0], t[1], p);
+  const T wa = edge_function<T>(t[1], t[2], p), wb = edge_function<T>(t[2], t[0], p),
+          wc = edge_function<T>(t[0], t[1], p);
   return (wa * t[0](2) + wb * t[1](2) + wc * t[2](2)) / (wa + wb + wc);
 }
 
@@ -49,10 +43,6 @@ PlaneDepth<T> plane_depth(const std::array<Vec3<T>, 3>& t, const Vec3<T>& first,
   out.barycentric = use_barycentric;
   out.z = use_barycentric ? barycentric_depth(t, pixel)
                           : (out.d - u(0) * pixel(0) - u(1) * pixel(1)) / u(2);
-  const int s0 = scalar_sign(edge_function(t[0], t[1], pixel));
-  const int s1 = scalar_sign(edge_function(t[1], t[2], pixel));
-  const int s2 = scalar_sign(edge_function(t[2], t[0], pixel));
-  out.inside = (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
   return out;
 }
 

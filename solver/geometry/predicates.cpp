@@ -28,7 +28,9 @@ int orient3d_sign(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eige
   const double permanent = ua.x() * (va.y() * wa.z() + va.z() * wa.y()) +
                            ua.y() * (va.x() * wa.z() + va.z() * wa.x()) +
                            ua.z() * (va.x() * wa.y() + va.y() * wa.x());
-  const double bound = kOrient3dBound * permanent;
+  // Products in the subnormal range are off by up to η/2 absolutely; the cross product's meet w.
+  const double eta = std::numeric_limits<double>::denorm_min();
+  const double bound = kOrient3dBound * permanent + eta * (2 * wa.sum() + 4);
   if (std::isfinite(det) && std::isfinite(bound) && std::abs(det) > bound) {
     if (stats) ++stats->filtered;
     return det > 0 ? 1 : -1;

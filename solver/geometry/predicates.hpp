@@ -1,11 +1,127 @@
-// Exact geometric predicates. A front/back decision is the sign of a determinant, never a
-// comparison with a float epsilon: doubles decide when an error bound proves the sign, and
-// exact rational arithmetic (every double is a dyadic rational) decides the rest.
+// Exact geometric predicates. A discrete answer (front/back, inside, covered, a winner) is the
+// sign of an expression in the problem's exact inputs, never a comparison with an epsilon.
+// Every backend decides it the same way (decide_sign): the expression is computed in the
+// backend's scalar together with a forward error bound; when the bound proves the sign, that
+// sign stands; otherwise — |value| within the bound, a value or the bound not finite, or an
+// input that fell out of the normal range when it was converted — the sign is computed exactly
+// on the exact inputs. The bounds stay valid for subnormal intermediates (each rounding adds an
+// absolute η besides the relative u) and overflow (infinity or NaN is "unknown").
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/numeric/ranged.hpp"
+#include "solver/numeric/scalar.hpp"
+
+#include <cmath>
+#include <limits>
 
 namespace frustum {
+
+// ---- The mechanism ----
+
+// A backend's rounding: u = 2⁻ᵖ, η the smallest subnormal, γ_k = k·u/(1 − k·u) (Higham, ch. 3).
+template <typename T>
+struct Rounding {
+  static constexpr T u = std::numeric_limits<T>::epsilon() / 2;
+  static constexpr T eta = std::numeric_limits<T>::denorm_min();
+  static constexpr T gamma(int k) { return T(k) * u / (T(1) - T(k) * u); }
+};
+
+// Whether an exact input, converted to T as v, is within a relative error of u of its exact
+// value (the assumption of every closed-form bound below): false when it overflowed or fell
+// below the normal range (a subnormal, or flushed to zero). Predicates over such inputs take
+// the exact path.
+template <typename T>
+bool converts_relatively(const Exact& e, const T& v) {
+  if constexpr (kIsExact<T>) {
+    return true;
+  } else {
+    if (!std::isfinite(v)) return false;
+    if (v == T(0)) return exact_sign(e) == 0;
+    return std::abs(v) >= std::numeric_limits<T>::min();
+  }
+}
+
+// A sign and who decided it: the backend's own arithmetic, proven by its bound, or the exact
+// fallback on the exact inputs.
+struct SignDecision {
+  int sign = 0;
+  bool exact = false;  // the exact fallback decided
+};
+
+// |value| > bound, both finite: the computed sign is the exact one.
+template <typename T>
+bool sign_is_proven(const T& value, const T& bound) {
+  return std::isfinite(value) && std::isfinite(bound) && std::abs(value) > bound;
+}
+
+// The one decision rule. `exact_sign_of()` computes the sign on the exact inputs; it runs only
+// when the filter cannot prove the sign (`inputs_relative` false forces it). For the exact
+// backend the value is exact already.
+template <typename T, typename ExactSign>
+SignDecision decide_sign(const T& value, const T& bound, bool inputs_relative,
+                         ExactSign&& exact_sign_of) {
+  if constexpr (kIsExact<T>) {
+    return {exact_sign(value), false};
+  } else {
+    if (inputs_relative && sign_is_proven(value, bound)) return {value > T(0) ? 1 : -1, false};
+    return {exact_sign_of(), true};
+  }
+}
+
+// The same for a ranged value (ranged.hpp): its radius is the bound.
+template <typename T, typename ExactSign>
+SignDecision decide_sign(const Ranged<T>& value, ExactSign&& exact_sign_of) {
+  return decide_sign(value.v, value.r, true, exact_sign_of);
+}
+
+// ---- The edge function (orient2d) ----
+
+// E(a, b, p) = (b − a) × (p − a) = (bx − ax)(py − ay) − (by − ay)(px − ax): twice the signed area
+// of (a, b, p), > 0 when p lies left of a → b. Only x and y of a and b are read.
+template <typename T, typename A, typename B, typename P>
+T edge_function(const A& a, const B& b, const P& p) {
+  return (T(b(0)) - T(a(0))) * (T(p(1)) - T(a(1))) - (T(b(1)) - T(a(1))) * (T(p(0)) - T(a(0)));
+}
+
+// Forward error bound of edge_function in T for inputs each within a relative u of the exact
+// ones: the same formula on the inputs' magnitudes (differences become sums) times γ₉ (the
+// input, the difference, the product, the final difference, and the bound's own roundings),
+// plus 4η for products in the subnormal range.
+template <typename T, typename A, typename B, typename P>
+T edge_function_bound(const A& a, const B& b, const P& p) {
+  using std::abs;
+  const T permanent = (abs(T(b(0))) + abs(T(a(0)))) * (abs(T(p(1))) + abs(T(a(1)))) +
+                      (abs(T(b(1))) + abs(T(a(1)))) * (abs(T(p(0))) + abs(T(a(0))));
+  return Rounding<T>::gamma(9) * permanent + T(4) * Rounding<T>::eta;
+}
+
+// The sign of E(a, b, p) for inputs in T whose exact values are ea, eb, ep.
+template <typename T, int NA, int NP>
+SignDecision edge_sign(const Eigen::Matrix<T, NA, 1>& a, const Eigen::Matrix<T, NA, 1>& b,
+                       const Eigen::Matrix<T, NP, 1>& p, const Eigen::Matrix<Exact, NA, 1>& ea,
+                       const Eigen::Matrix<Exact, NA, 1>& eb, const Eigen::Matrix<Exact, NP, 1>& ep,
+                       bool inputs_relative) {
+  if constexpr (kIsExact<T>) {
+    return {exact_sign(edge_function<Exact>(a, b, p)), false};
+  } else {
+    return decide_sign(edge_function<T>(a, b, p), edge_function_bound<T>(a, b, p), inputs_relative,
+                       [&] { return exact_sign(edge_function<Exact>(ea, eb, ep)); });
+  }
+}
+
+// A point is in the closed triangle when its three edge signs agree (0 = on an edge).
+inline bool inside_closed_triangle(int s0, int s1, int s2) {
+  return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+}
+
+// ---- Facing ----
+
+// The back-face answer of a sign of D_f (seed 003): > 0 front, < 0 back, 0 edge-on.
+inline const char* facing_word(int sign) {
+  return sign > 0 ? "front" : sign < 0 ? "back" : "edge_on";
+}
+
+// ---- orient3d (hidden lines) ----
 
 // Sign of det[b − a, c − a, d − a] = ((b − a) × (c − a)) · (d − a): +1 when d lies on the
 // side the normal of triangle abc (counter-clockwise) points to, −1 behind it, 0 in its plane.

@@ -1,6 +1,7 @@
 // seed 003: back-face test. D_f = (p_eye − p_i)·n; D_f > 0 front, D_f < 0 back, 0 edge-on.
 // p0 = (1,0,0), p1 = (1,1,1), p2 = (0,1,2), eye = (0,1,0) → n = (1, −1, 1), v = (−1, 1, 0),
 // D_f = −2: back. The sign is decided exactly, never against a float epsilon.
+#include "solver/geometry/predicates.hpp"
 #include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
@@ -34,8 +35,7 @@ struct Backface {
   }
 
   static std::string facing_of(const Exact& df) {
-    const int sign = exact_sign(df);
-    return sign > 0 ? "front" : sign < 0 ? "back" : "edge_on";
+    return facing_word(exact_sign(df));
   }
 
   // Error carried forward: D_f from the student's normal and view vector, facing from D_f.
@@ -110,7 +110,7 @@ struct Backface {
                        "needs an error-bounded filter with an exact fallback)");
     }
     const int sign = exact_sign(df);
-    const std::string facing = sign > 0 ? "front" : sign < 0 ? "back" : "edge_on";
+    const std::string facing = facing_word(sign);
     out.set("facing", Value::category(facing));
     if (steps) {
       const std::string why = sign > 0   ? "D_f > 0: v and n make an acute angle, so the eye sees the front."

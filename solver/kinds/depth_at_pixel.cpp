@@ -2,6 +2,7 @@
 // coordinates, which are left-handed (seed 001's warning), so its front normal is AC × AB:
 // A(0,0,6), B(3,0,9), C(0,3,9) → n = (9, 9, −9), n̂ = (1/√3, 1/√3, −1/√3), x + y − z = −6,
 // and the pixel (1, 1) has z = 8.
+#include "solver/geometry/predicates.hpp"
 #include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
@@ -114,7 +115,7 @@ struct DepthAtPixel {
   }
 
   static int orient2d(const Vec3<Exact>& a, const Vec3<Exact>& b, const Vec2<Exact>& p) {
-    return exact_sign((b(0) - a(0)) * (p(1) - a(1)) - (b(1) - a(1)) * (p(0) - a(0)));
+    return exact_sign(edge_function<Exact>(a, b, p));
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
@@ -173,7 +174,7 @@ struct DepthAtPixel {
     const int s0 = orient2d(g.triangle[0], g.triangle[1], g.pixel);
     const int s1 = orient2d(g.triangle[1], g.triangle[2], g.pixel);
     const int s2 = orient2d(g.triangle[2], g.triangle[0], g.pixel);
-    const bool inside = (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+    const bool inside = inside_closed_triangle(s0, s1, s2);
     out.set("inside", Value::boolean(inside));
     if (steps) {
       steps->add("Is the pixel inside the projected triangle?")

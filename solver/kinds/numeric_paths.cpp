@@ -2,7 +2,9 @@
 
 #include "solver/geometry/facing.hpp"
 #include "solver/geometry/plane_depth.hpp"
+#include "solver/geometry/predicates.hpp"
 #include "solver/numeric/condition.hpp"
+#include "solver/numeric/ranged.hpp"
 
 #include <fmt/format.h>
 
@@ -12,17 +14,28 @@ namespace frustum {
 
 namespace {
 
+// An exact input in T, recording in `range` (when given) whether it left T's normal range.
+template <typename T>
+T conv(const Exact& e, InputRange* range = nullptr) {
+  const T v = from_exact<T>(e);
+  if constexpr (!kIsExact<T>) {
+    if (range && !std::isfinite(v)) range->overflow = true;
+    if (range && std::isfinite(v) && !converts_relatively(e, v)) range->underflow = true;
+  }
+  return v;
+}
+
 template <typename T, int N>
-Eigen::Matrix<T, N, 1> conv(const Eigen::Matrix<Exact, N, 1>& v) {
+Eigen::Matrix<T, N, 1> conv(const Eigen::Matrix<Exact, N, 1>& v, InputRange* range = nullptr) {
   Eigen::Matrix<T, N, 1> out;
-  for (int i = 0; i < N; ++i) out(i) = from_exact<T>(v(i));
+  for (int i = 0; i < N; ++i) out(i) = conv<T>(v(i), range);
   return out;
 }
 
 template <typename T>
-Polygon3<T> conv(const Polygon3<Exact>& p) {
+Polygon3<T> conv(const Polygon3<Exact>& p, InputRange* range = nullptr) {
   Polygon3<T> out;
-  for (const Vec3<Exact>& v : p) out.push_back(conv<T>(v));
+  for (const Vec3<Exact>& v : p) out.push_back(conv<T>(v, range));
   return out;
 }
 
@@ -275,21 +288,45 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
       Vec2<T> pixel;
       std::array<int, 4> order;
       bool barycentric;
+      std::array<Vec3<Exact>, 3> exact_t;  // for the exact fallback of `inside`
+      Vec2<Exact> exact_pixel;
+      InputRange range;
+    };
+    struct Out {
+      PlaneDepth<T> depth;
+      bool inside = false;
+      bool inside_exact = false;  // the exact fallback decided some edge sign
     };
     auto core = [](const In& in) {
+      Out o;
       const Vec3<T> first = in.t[in.order[1]] - in.t[in.order[0]];
       const Vec3<T> second = in.t[in.order[3]] - in.t[in.order[2]];
-      return plane_depth(in.t, first, second, in.pixel, in.barycentric);
+      o.depth = plane_depth(in.t, first, second, in.pixel, in.barycentric);
+      // Inside the closed triangle: the three edge signs agree (0 = on an edge), each decided
+      // by the filtered predicate.
+      int s[3];
+      for (int k = 0; k < 3; ++k) {
+        const int j = (k + 1) % 3;
+        const SignDecision d = edge_sign(in.t[k], in.t[j], in.pixel, in.exact_t[k], in.exact_t[j],
+                                         in.exact_pixel, in.range.relative());
+        s[k] = d.sign;
+        o.inside_exact = o.inside_exact || d.exact;
+      }
+      o.inside = inside_closed_triangle(s[0], s[1], s[2]);
+      return o;
     };
-    auto report = [p, cond](const In&, const PlaneDepth<T>& r) {
+    auto report = [p, cond](const In& in, const Out& o) {
+      const PlaneDepth<T>& r = o.depth;
       NumericOut<T> out(p);
+      out.inputs(in.range);
       out.vector("normal", r.normal);
       out.vector("unit_normal", r.unit_normal);
       out.vector("plane", std::vector<T>{r.unit_normal(0), r.unit_normal(1), r.unit_normal(2), r.d});
       out.scalar("z", r.z);
-      out.boolean("inside", r.inside);
+      out.boolean("inside", o.inside);
       out.note(r.barycentric ? "z by barycentric interpolation (stable fallback)"
                              : "z = (d − a·xₛ − b·yₛ)/c (the plane method)");
+      if (o.inside_exact) out.exact_decision("inside");
       if (r.barycentric)
         out.warn("Nearly edge-on triangle: barycentric fallback",
                  fmt::format("c ≈ 0 (κ_c ≈ {:.1e}); the plane method would keep {:.1f} digits of z, "
@@ -302,9 +339,10 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
     };
     const std::array<int, 4> o{order.first[0] - 'A', order.first[1] - 'A', order.second[0] - 'A',
                                order.second[1] - 'A'};
-    return prepare(In{{conv<T>(triangle[0]), conv<T>(triangle[1]), conv<T>(triangle[2])},
-                      conv<T>(pixel), o, fallback},
-                   core, report);
+    In in{{}, {}, o, fallback, triangle, pixel, {}};
+    for (int k = 0; k < 3; ++k) in.t[k] = conv<T>(triangle[k], &in.range);
+    in.pixel = conv<T>(pixel, &in.range);
+    return prepare(std::move(in), core, report);
   });
 }
 
@@ -315,40 +353,110 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
     struct In {
       Polygon3<T> points;
       Vec3<T> eye;
+      Polygon3<Exact> exact_points;  // for the exact fallback of the facing
+      Vec3<Exact> exact_eye;
+      InputRange range;
     };
-    auto core = [](const In& in) { return facing(in.points, in.eye); };
-    auto report = [p, kappa](const In&, const Facing<T>& f) {
+    auto core = [](const In& in) {
+      return facing(in.points, in.eye, in.exact_points, in.exact_eye, in.range.relative());
+    };
+    auto report = [p, kappa](const In& in, const Facing<T>& f) {
       NumericOut<T> out(p);
+      out.inputs(in.range);
       out.vector("normal", f.normal);
       out.vector("view", f.view);
       out.scalar("df", f.df);
-      out.word("facing", f.sign > 0 ? "front" : f.sign < 0 ? "back" : "edge_on");
+      out.word("facing", facing_word(f.sign));
       warn_condition(out, p, kappa, "Eye nearly in the polygon's plane", "D_f");
-      if (f.used_exact)
-        out.warn("Sign decided exactly",
-                 fmt::format("|D_f| is below its rounding-error bound, so the computed sign ({}) "
-                             "could be wrong; the facing comes from the exact sign of D_f for the "
-                             "inputs as rounded to {}.",
-                             f.naive_sign, to_string(p)));
-      out.note("facing: adaptive predicate (error-bounded filter, exact fallback)");
+      out.note("facing: the sign of D_f, proven by its rounding-error bound or else computed exactly");
+      if (f.used_exact) out.exact_decision("facing");
       return out.take();
     };
-    return prepare(In{conv<T>(points), conv<T>(eye)}, core, report);
+    In in{{}, {}, points, eye, {}};
+    in.points = conv<T>(points, &in.range);
+    in.eye = conv<T>(eye, &in.range);
+    return prepare(std::move(in), core, report);
   });
+}
+
+// The inputs of project_point in scalar S (T, Ranged<T> for the decisions, Exact for their
+// fallback), and clip = P·V·p from them: one formula for all three.
+template <typename S>
+struct ProjectionInputs {
+  Vec3<S> point;
+  std::optional<std::array<Vec3<S>, 3>> camera;
+  ProjectionSpec::Type type = ProjectionSpec::Type::Perspective;
+  Volume<S> volume;
+  std::optional<S> fovy, aspect;
+  Api api = Api::OpenGL;
+
+};
+
+// The exact inputs converted one by one by f (to T, to Ranged<T>).
+template <typename F>
+auto map_inputs(const ProjectionInputs<Exact>& in, F f) {
+  using R = decltype(f(std::declval<Exact>()));
+  auto vec = [&](const Vec3<Exact>& v) { return Vec3<R>(f(v(0)), f(v(1)), f(v(2))); };
+  ProjectionInputs<R> out;
+  out.point = vec(in.point);
+  if (in.camera) out.camera = std::array<Vec3<R>, 3>{vec((*in.camera)[0]), vec((*in.camera)[1]), vec((*in.camera)[2])};
+  out.type = in.type;
+  const Volume<Exact>& v = in.volume;
+  out.volume = {f(v.left), f(v.right), f(v.bottom), f(v.top), f(v.near), f(v.far)};
+  if (in.fovy) out.fovy = f(*in.fovy);
+  if (in.aspect) out.aspect = f(*in.aspect);
+  out.api = in.api;
+  return out;
+}
+
+template <typename S>
+MatX<S> clip_from_world(const ProjectionInputs<S>& in) {
+  MatX<S> m;
+  if (in.type == ProjectionSpec::Type::Ortho) {
+    m = ortho_matrix(in.volume, in.api);
+  } else {
+    const Volume<S> v = in.fovy ? perspective_volume(*in.fovy, *in.aspect, in.volume.near, in.volume.far) : in.volume;
+    m = frustum_matrix(v, in.api);
+  }
+  if (in.camera) m = MatX<S>(m * look_at((*in.camera)[0], (*in.camera)[1], (*in.camera)[2], in.api));
+  return m;
+}
+
+template <typename S>
+Vec4<S> clip_of(const MatX<S>& m, const Vec3<S>& point) {
+  return Vec4<S>(m * Vec4<S>(point(0), point(1), point(2), S(1)));
+}
+
+// The seven signs that decide where a clip point lies: w, then wᵢ ± xᵢ for the six planes
+// −w ≤ x, y ≤ w, −w ≤ z ≤ w (DirectX: 0 ≤ z ≤ w, so z itself).
+template <typename S>
+std::array<S, 7> volume_tests(const Vec4<S>& c, Api api) {
+  const S& w = c(3);
+  return {w, S(c(0) + w), S(w - c(0)), S(c(1) + w), S(w - c(1)), api == Api::DirectX ? c(2) : S(c(2) + w),
+          S(w - c(2))};
 }
 
 std::unique_ptr<NumericSolver> project_point_numeric(
     const Vec3<Exact>& point, const std::optional<std::array<Vec3<Exact>, 3>>& camera,
     const ProjectionSpec& projection, const Exact& width, const Exact& height, Api api, Precision p) {
+  ProjectionInputs<Exact> exact;
+  exact.point = point;
+  exact.camera = camera;
+  exact.type = projection.type;
+  exact.volume = projection.volume;
+  if (projection.fovy && projection.aspect) {
+    exact.fovy = *projection.fovy;
+    exact.aspect = *projection.aspect;
+  }
+  exact.api = api;
   return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
     struct In {
-      Vec3<T> point;
-      std::optional<std::array<Vec3<T>, 3>> camera;
-      ProjectionSpec::Type type;
-      Volume<T> volume;
-      std::optional<T> fovy, aspect;
+      ProjectionInputs<T> given;
+      // The same inputs with their rounding error (unused by the exact backend).
+      ProjectionInputs<std::conditional_t<kIsExact<T>, T, Ranged<T>>> ranged;
+      ProjectionInputs<Exact> exact;       // for the exact fallback of the decisions
       T width, height;
-      Api api;
+      InputRange range;
     };
     struct Out {
       Vec4<T> clip;
@@ -356,36 +464,44 @@ std::unique_ptr<NumericSolver> project_point_numeric(
       Vec4<T> row3, homogeneous;  // M's last row and the point, for the condition of w
       int w_sign = 0;
       bool inside = false;
+      bool exact_decided = false;
     };
     auto core = [](const In& in) {
       Out o;
-      MatX<T> m;
-      if (in.type == ProjectionSpec::Type::Ortho) {
-        m = ortho_matrix(in.volume, in.api);
-      } else {
-        const Volume<T> v = in.fovy ? perspective_volume(*in.fovy, *in.aspect, in.volume.near, in.volume.far)
-                                    : in.volume;
-        m = frustum_matrix(v, in.api);
-      }
-      if (in.camera) m = MatX<T>(m * look_at((*in.camera)[0], (*in.camera)[1], (*in.camera)[2], in.api));
-      o.homogeneous = Vec4<T>(in.point(0), in.point(1), in.point(2), T(1));
-      o.clip = m * o.homogeneous;
+      const MatX<T> m = clip_from_world(in.given);
+      o.homogeneous = Vec4<T>(in.given.point(0), in.given.point(1), in.given.point(2), T(1));
+      o.clip = clip_of(m, in.given.point);
       o.row3 = m.row(3).transpose();
-      const T& w = o.clip(3);
-      o.w_sign = scalar_sign(w);
-      o.inside = o.w_sign > 0;
-      for (int i = 0; i < 3 && o.inside; ++i) {
-        const T low = (i == 2 && in.api == Api::DirectX) ? T(0) : T(-w);
-        o.inside = scalar_sign(T(o.clip(i) - low)) >= 0 && scalar_sign(T(w - o.clip(i))) >= 0;
+      // The decisions: each sign proven on the ranged clip point, or computed exactly.
+      std::array<int, 7> sign{};
+      if constexpr (kIsExact<T>) {
+        const std::array<T, 7> t = volume_tests(o.clip, in.given.api);
+        for (int k = 0; k < 7; ++k) sign[k] = exact_sign(t[k]);
+      } else {
+        const std::array<Ranged<T>, 7> t =
+            volume_tests(clip_of(clip_from_world(in.ranged), in.ranged.point), in.given.api);
+        std::optional<std::array<Exact, 7>> exact;
+        for (int k = 0; k < 7; ++k) {
+          const SignDecision d = decide_sign(t[k], [&] {
+            if (!exact) exact = volume_tests(clip_of(clip_from_world(in.exact), in.exact.point), in.given.api);
+            return exact_sign((*exact)[k]);
+          });
+          sign[k] = d.sign;
+          o.exact_decided = o.exact_decided || d.exact;
+        }
       }
+      o.w_sign = sign[0];
+      o.inside = o.w_sign > 0;
+      for (int k = 1; k < 7; ++k) o.inside = o.inside && sign[k] >= 0;
       if (o.w_sign > 0) {
-        o.ndc = o.clip.template head<3>() / w;
-        o.window = viewport(o.ndc, in.width, in.height, in.api);
+        o.ndc = o.clip.template head<3>() / o.clip(3);
+        o.window = viewport(o.ndc, in.width, in.height, in.given.api);
       }
       return o;
     };
-    auto report = [p](const In&, const Out& o) {
+    auto report = [p](const In& in, const Out& o) {
       NumericOut<T> out(p);
+      out.inputs(in.range);
       out.vector("clip", o.clip);
       if (o.w_sign > 0) {
         out.vector("ndc", o.ndc);
@@ -394,9 +510,10 @@ std::unique_ptr<NumericSolver> project_point_numeric(
         out.null("ndc");
         out.null("window");
         out.warn(o.w_sign == 0 ? "The point is in the eye's plane" : "The point is behind the eye",
-                 "w_c ≤ 0 as computed: no NDC or window position.");
+                 "w_c ≤ 0: no NDC or window position.");
       }
       out.boolean("inside", o.inside);
+      if (o.exact_decided) out.exact_decision("w_c > 0 and inside");
       Eigen::Vector4d row, h;
       for (int i = 0; i < 4; ++i) {
         row(i) = static_cast<double>(to_long_double(o.row3(i)));
@@ -405,16 +522,10 @@ std::unique_ptr<NumericSolver> project_point_numeric(
       warn_condition(out, p, w_condition(row, h), "Point close to the eye's plane", "w_c (and the NDC divided by it)");
       return out.take();
     };
-    In in{conv<T>(point), std::nullopt, projection.type, {}, std::nullopt, std::nullopt,
-          from_exact<T>(width), from_exact<T>(height), api};
-    const Volume<Exact>& v = projection.volume;
-    in.volume = {from_exact<T>(v.left), from_exact<T>(v.right), from_exact<T>(v.bottom),
-                 from_exact<T>(v.top), from_exact<T>(v.near), from_exact<T>(v.far)};
-    if (projection.fovy && projection.aspect) {
-      in.fovy = from_exact<T>(*projection.fovy);
-      in.aspect = from_exact<T>(*projection.aspect);
-    }
-    if (camera) in.camera = std::array<Vec3<T>, 3>{conv<T>((*camera)[0]), conv<T>((*camera)[1]), conv<T>((*camera)[2])};
+    In in{{}, {}, exact, from_exact<T>(width), from_exact<T>(height), {}};
+    in.given = map_inputs(exact, [&](const Exact& e) { return conv<T>(e, &in.range); });
+    if constexpr (!kIsExact<T>)
+      in.ranged = map_inputs(exact, [](const Exact& e) { return Ranged<T>::input(from_exact<T>(e)); });
     return prepare(std::move(in), core, report);
   });
 }

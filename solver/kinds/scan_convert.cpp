@@ -43,9 +43,7 @@ struct ScanConvert {
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
-    std::array<Vec2<double>, 3> w;
-    for (int k = 0; k < 3; ++k) w[k] = to_double(g.triangle[k]);
-    const TriangleSetup t = setup_triangle(w);
+    const TriangleSetup t = setup_triangle_exact(g.triangle);
     const long box_w = t.i_max - t.i_min + 1, box_h = t.j_max - t.j_min + 1;
     if (box_w > kMaxBox || box_h > kMaxBox)
       throw DomainError("triangle", "the triangle's bounding box spans " + std::to_string(box_w) + " × " +

@@ -138,15 +138,15 @@ struct ZBuffer {
       int degenerate = 0;
       for (std::size_t v = 1; v + 1 < p.points.size(); ++v) {
         const std::array<const Vec3<Exact>*, 3> tri{&p.points[0], &p.points[v], &p.points[v + 1]};
-        std::array<Vec2<double>, 3> xy;
+        std::array<Vec2<Exact>, 3> xy;  // snapped exactly by setup_triangle_exact
         std::array<Exact, 3> z;
         for (int c = 0; c < 3; ++c) {
-          xy[c] = Vec2<double>(to_double((*tri[c])(0)), to_double((*tri[c])(1)));
+          xy[c] = Vec2<Exact>((*tri[c])(0), (*tri[c])(1));
           z[c] = (*tri[c])(2);
         }
         TriangleSetup t;
         try {
-          t = setup_triangle(xy);
+          t = setup_triangle_exact(xy);
         } catch (const DomainError& e) {
           throw DomainError("polygons[" + std::to_string(k) + "].points", e.what());
         }

@@ -39,6 +39,16 @@ struct NumericResult {
   }
 };
 
+// How a problem's exact inputs fared when converted to a backend's scalar: some overflowed
+// (infinite), or fell below the normal range (rounded to a subnormal number or flushed to 0).
+// Either breaks the relative-error assumption of the predicates' bounds, so discrete answers
+// then come from the exact inputs, and the answers warn.
+struct InputRange {
+  bool underflow = false;
+  bool overflow = false;
+  bool relative() const { return !underflow && !overflow; }
+};
+
 // A numeric solve prepared for one backend: the inputs already converted from exact, so run()
 // is only the arithmetic (what `frustum bench accuracy` times) and result() packages the last run.
 class NumericSolver {
@@ -104,6 +114,24 @@ class NumericOut {
     r_.warnings.push_back({std::move(title), std::move(text)});
   }
   void note(std::string text) { r_.notes.push_back(std::move(text)); }
+  // The inputs' conversion (InputRange): warned once, before the values' own range warnings.
+  void inputs(const InputRange& range) {
+    const std::string name(to_string(r_.precision));
+    if (range.overflow)
+      warn("Inputs overflow", "some inputs exceed the range of " + name +
+                                  " and became infinite; the values computed from them are meaningless, and "
+                                  "every discrete answer was decided on the exact inputs.");
+    if (range.underflow)
+      warn("Inputs underflow", "some inputs are below the normal range of " + name +
+                                   " and were rounded to subnormal numbers or to 0: the values computed from "
+                                   "them keep few or none of their digits, and every discrete answer was "
+                                   "decided on the exact inputs.");
+  }
+  // A discrete answer decided by the exact fallback (predicates.hpp), in neutral words.
+  void exact_decision(const std::string& what) {
+    note(what + ": decided by exact arithmetic on the given numbers (the " +
+         std::string(to_string(r_.precision)) + " computation could not settle it)");
+  }
 
   NumericResult take() {
     if (overflow_)

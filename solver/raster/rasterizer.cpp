@@ -8,6 +8,8 @@ namespace frustum {
 
 namespace {
 
+constexpr const char* kRangeMessage = "window coordinates must be finite and at most 2^20 in size";
+
 void make_edge(EdgeFunction& e, const FixedPoint2& from, const FixedPoint2& to) {
   e.from = from;
   e.to = to;
@@ -43,7 +45,58 @@ TriangleSetup setup_triangle(const std::array<Vec2<double>, 3>& window) {
   return t;
 }
 
+std::int64_t to_fixed(const Exact& v, bool& off_grid) {
+  const double d = to_double(v);
+  if (!std::isfinite(d) || std::abs(d) > kMaxWindowCoordinate)
+    throw DomainError("triangle", kRangeMessage);
+  const Exact q = v * static_cast<long>(kSubpixelScale);
+  if (GiNaC::is_a<GiNaC::numeric>(q) && GiNaC::ex_to<GiNaC::numeric>(q).is_rational()) {
+    // ⌊|q| + ½⌋ with q's sign: halves away from zero.
+    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(q);
+    const GiNaC::numeric a = GiNaC::abs(n) + GiNaC::numeric(1, 2);
+    const long k = GiNaC::iquo(a.numer(), a.denom()).to_long();
+    off_grid = off_grid || !n.is_integer();
+    return n.is_negative() ? -k : k;
+  }
+  // An irrational coordinate: the double's rounding, checked exactly against the half-way
+  // points on either side (it is never on the grid).
+  off_grid = true;
+  std::int64_t k = to_fixed(d);
+  const auto half_above = [](std::int64_t c) { return Exact(static_cast<long>(c)) + Exact(1) / 2; };
+  while (exact_sign(q - half_above(k - 1)) < 0) --k;  // q < k − ½
+  while (exact_sign(q - half_above(k)) >= 0) ++k;     // q ≥ k + ½
+  return k;
+}
+
+TriangleSetup setup_triangle_exact(const std::array<Vec2<Exact>, 3>& window) {
+  std::array<FixedPoint2, 3> in;
+  bool off_grid = false;
+  for (int k = 0; k < 3; ++k)
+    in[k] = {to_fixed(window[k](0), off_grid), to_fixed(window[k](1), off_grid)};
+  TriangleSetup t;
+  setup_fixed(in, t);
+  t.snapped = off_grid;
+  return t;
+}
+
 void setup_triangle(const std::array<Vec2<double>, 3>& window, TriangleSetup& t) {
+  std::array<FixedPoint2, 3> in;
+  bool snapped = false;
+  for (int k = 0; k < 3; ++k) {
+    for (int c = 0; c < 2; ++c)
+      if (!std::isfinite(window[k](c)) || std::abs(window[k](c)) > kMaxWindowCoordinate)
+        throw DomainError("triangle", kRangeMessage);
+    in[k] = {to_fixed(window[k](0)), to_fixed(window[k](1))};
+    const double scale = static_cast<double>(kSubpixelScale);
+    if (static_cast<double>(in[k].x) != window[k](0) * scale ||
+        static_cast<double>(in[k].y) != window[k](1) * scale)
+      snapped = true;
+  }
+  setup_fixed(in, t);
+  t.snapped = snapped;
+}
+
+void setup_fixed(const std::array<FixedPoint2, 3>& in, TriangleSetup& t) {
   // Every field is assigned here, none read: t may hold an earlier triangle.
   t.snapped = false;
   t.reordered = false;
@@ -51,17 +104,6 @@ void setup_triangle(const std::array<Vec2<double>, 3>& window, TriangleSetup& t)
   t.i_max = -1;
   t.j_min = 0;
   t.j_max = -1;
-  std::array<FixedPoint2, 3> in;
-  for (int k = 0; k < 3; ++k) {
-    for (int c = 0; c < 2; ++c)
-      if (!std::isfinite(window[k](c)) || std::abs(window[k](c)) > kMaxWindowCoordinate)
-        throw DomainError("triangle", "window coordinates must be finite and at most 2^20 in size");
-    in[k] = {to_fixed(window[k](0)), to_fixed(window[k](1))};
-    const double scale = static_cast<double>(kSubpixelScale);
-    if (static_cast<double>(in[k].x) != window[k](0) * scale ||
-        static_cast<double>(in[k].y) != window[k](1) * scale)
-      t.snapped = true;
-  }
   // Twice the signed area: (v1 − v0) × (v2 − v0); counter-clockwise > 0.
   const std::int64_t area2 =
       (in[1].x - in[0].x) * (in[2].y - in[0].y) - (in[1].y - in[0].y) * (in[2].x - in[0].x);

@@ -37,8 +37,12 @@ constexpr double kMaxWindowCoordinate = 1 << 20;
 inline std::int64_t floor_div(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && (a < 0)); }
 inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); }
 
-// v rounded to the nearest 1/2⁸ pixel, in units of 1/2⁸ pixel.
+// v rounded to the nearest 1/2⁸ pixel, in units of 1/2⁸ pixel (halves away from zero).
 std::int64_t to_fixed(double v);
+// The same from an exact value, decided exactly (a coordinate within rounding of a half-grid
+// point snaps the way its exact value says, not its nearest double). Sets `off_grid` when v is
+// not a multiple of 1/2⁸. Throws DomainError("triangle") beyond kMaxWindowCoordinate.
+std::int64_t to_fixed(const Exact& v, bool& off_grid);
 
 struct FixedPoint2 {
   std::int64_t x, y;  // 1/2⁸ pixel units
@@ -69,6 +73,10 @@ struct TriangleSetup {
 TriangleSetup setup_triangle(const std::array<Vec2<double>, 3>& window);
 // The same into t, overwriting every field (no temporary: the z-buffer's hot path).
 void setup_triangle(const std::array<Vec2<double>, 3>& window, TriangleSetup& t);
+// From exact window coordinates (the kinds' inputs), snapped exactly.
+TriangleSetup setup_triangle_exact(const std::array<Vec2<Exact>, 3>& window);
+// The setup from snapped vertices (orientation, edges, fill-rule classes, bounding box).
+void setup_fixed(const std::array<FixedPoint2, 3>& snapped, TriangleSetup& t);
 
 // Fixed-point centre of pixel (i, j): ((i + ½)·2⁸, (j + ½)·2⁸).
 FixedPoint2 pixel_centre(int i, int j);

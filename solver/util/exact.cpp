@@ -294,6 +294,106 @@ ex rationalize_denominator(const ex& e) {
   return changed ? num / den : e;
 }
 
+// ---- Zero of nested square roots (GiNaC does not denest √(5 + 2√6) = √2 + √3) ----
+
+// Square roots nested this deep in number, or polynomials of this degree, are not attempted.
+constexpr std::size_t kMaxZeroProofRadicals = 6;
+constexpr int kMaxZeroProofDegree = 64;
+
+bool is_half_power(const ex& e) {
+  if (!is_a<GiNaC::power>(e) || !is_a<numeric>(e.op(1))) return false;
+  const numeric& q = ex_to<numeric>(e.op(1));
+  return q.is_rational() && !q.is_integer();
+}
+
+// A sum holding a root whose radicand holds another root: the form whose zero canonical()
+// cannot see (sums of roots of rationals it reduces itself).
+bool has_nested_root(const ex& e) {
+  if (!is_a<GiNaC::add>(e)) return false;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_half_power(*it))
+      for (auto in = it->op(0).preorder_begin(); in != it->op(0).preorder_end(); ++in)
+        if (is_half_power(*in)) return true;
+  return false;
+}
+
+// Replaces every square root √b by a symbol y (inner roots first), recording y² = b.
+struct RootsToSymbols : GiNaC::map_function {
+  std::vector<std::pair<ex, GiNaC::symbol>> roots;  // (radicand in earlier symbols, y)
+  std::vector<ex> values;                           // the roots themselves, for evaluation
+  bool unsupported = false;                         // a root other than a square root
+
+  ex operator()(const ex& e) override {
+    if (!is_half_power(e)) return e.map(*this);
+    const numeric& q = ex_to<numeric>(e.op(1));
+    if (q.denom() != 2) {
+      unsupported = true;
+      return e;
+    }
+    const ex base = (*this)(e.op(0));
+    for (const auto& [b, y] : roots)
+      if (b.is_equal(base)) return GiNaC::pow(y, q.numer());
+    roots.emplace_back(base, GiNaC::symbol());
+    values.push_back(GiNaC::sqrt(e.op(0)));
+    return GiNaC::pow(roots.back().second, q.numer());
+  }
+};
+
+// Proves e = 0 for a real constant built from rationals and square roots (nested or not):
+// its numerator N in symbols yᵢ = √bᵢ is a root of R(x) = res_{y₁}(…res_{yₘ}(x − N, yₘ² − bₘ)…,
+// y₁² − b₁) ∈ Q[x]. When R(x) = xᵏ·S(x) with k ≥ 1, every non-zero root of S has
+// |x| ≥ |s₀|/(|s₀| + max|sᵢ|) (Cauchy's bound on the reversed polynomial); N evaluated well
+// inside that bound is therefore 0. False when unproven (too many roots, other radicals).
+bool proven_zero(const Exact& e) {
+  {
+    // Cheap on ordinary values: one evaluation shows most are far from 0.
+    const DigitsGuard guard(kSignDigits[0]);
+    numeric approx, scale = 1;
+    if (!evaluate_real(e, approx)) return false;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      numeric term;
+      if (evaluate_real(e.op(i), term)) scale += GiNaC::abs(term);
+    }
+    if (GiNaC::abs(approx) > scale / numeric(10).power(kSignDigits[0] / 2)) return false;
+  }
+  RootsToSymbols to_symbols;
+  const ex in_symbols = to_symbols(e);
+  if (to_symbols.unsupported || to_symbols.roots.empty() ||
+      to_symbols.roots.size() > kMaxZeroProofRadicals)
+    return false;
+  const ex numerator = in_symbols.normal().numer_denom().op(0).expand();
+  const GiNaC::symbol x;
+  ex r = (x - numerator).expand();
+  for (std::size_t i = to_symbols.roots.size(); i-- > 0;) {
+    const auto& [base, y] = to_symbols.roots[i];
+    const ex parts = base.normal().numer_denom();
+    const ex relation = (parts.op(1) * y * y - parts.op(0)).expand();
+    r = GiNaC::resultant(r, relation, y).expand();
+    if (!r.is_polynomial(x) || r.degree(x) > kMaxZeroProofDegree) return false;
+  }
+  for (const auto& [base, y] : to_symbols.roots)
+    if (r.has(y)) return false;
+  if (r.is_zero()) return false;
+  const int k = r.ldegree(x);
+  if (k == 0) return false;  // 0 is not a root of R: e ≠ 0
+  numeric low = GiNaC::abs(ex_to<numeric>(r.coeff(x, k))), high = 0;
+  for (int i = k + 1; i <= r.degree(x); ++i) {
+    const ex c = r.coeff(x, i);
+    if (!is_a<numeric>(c)) return false;
+    high = std::max(high, GiNaC::abs(ex_to<numeric>(c)));
+  }
+  const numeric separation = low / (low + high);
+  // N at enough digits to resolve a tenth of the separation.
+  GiNaC::exmap values;
+  for (std::size_t i = 0; i < to_symbols.roots.size(); ++i)
+    values[to_symbols.roots[i].second] = to_symbols.values[i];
+  const long digits = 30 + static_cast<long>(std::ceil(-std::log10(separation.to_double())));
+  const DigitsGuard guard(std::min(digits, 400L));
+  numeric value;
+  if (!evaluate_real(numerator.subs(values), value)) return false;
+  return GiNaC::abs(value) * 10 < separation;
+}
+
 }  // namespace
 
 Exact canonical(const Exact& e) {
@@ -308,6 +408,7 @@ Exact canonical(const Exact& e) {
     if (next.is_equal(current)) break;
     current = next;
   }
+  if (!has_symbol(current) && has_nested_root(current) && proven_zero(current)) return 0;
   if (!has_symbol(current)) {
     const ex rationalized = rationalize_denominator(current);
     if (!rationalized.is_equal(current)) {

@@ -1,16 +1,13 @@
 #include "solver/visibility/edge_classes.hpp"
 
+#include "solver/geometry/predicates.hpp"
+
 #include <map>
 
 namespace frustum {
 
 const char* facing_word(Facing f) {
-  switch (f) {
-    case Facing::Front: return "front";
-    case Facing::Back: return "back";
-    case Facing::EdgeOn: return "edge_on";
-  }
-  return "back";
+  return facing_word(f == Facing::Front ? 1 : f == Facing::Back ? -1 : 0);  // predicates.hpp
 }
 
 const char* edge_class_word(EdgeClass c) {
