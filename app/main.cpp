@@ -63,6 +63,10 @@ int main(int argc, char** argv) {
   grade->add_option("--variants", grade_opt.variants,
                     "Grade each student against their set written by `frustum generate -o DIR` (DIR/SET-STUDENT.yaml)")
       ->check(CLI::ExistingDirectory);
+  grade->add_option("--roster", grade_opt.roster,
+                    "Grade against the variants `frustum generate --roster` drew from this roster (redraws included)")
+      ->check(CLI::ExistingFile)
+      ->excludes("--variants");
 
   auto* kinds = cli.add_subcommand("kinds", "List the problem kinds and their answers");
 

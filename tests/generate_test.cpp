@@ -507,6 +507,27 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   const std::string none = run_cli("grade " + set + " " + dir + "/zed.yaml --variants " + dir + "/gen", status);
   EXPECT_NE(status, 0);
   EXPECT_NE(none.find("no generated set for student zed"), std::string::npos) << none;
+  // issue 13: the same roster regenerates the class, redraws included; without --variants or
+  // --roster, a class in which two students' variants from their ids collide (so someone was
+  // redrawn) is refused, never graded against another draw.
+  const std::string by_roster = run_cli("grade " + set + " " + dir + "/answers --roster " + dir + "/roster.csv -o " + dir + "/grades3", status);
+  EXPECT_EQ(status, 0) << by_roster;
+  const std::string book3 = read_text(dir + "/grades3/gradebook.csv");
+  for (const std::string s : {"ana", "ben", "cy", "dee"}) EXPECT_NE(book3.find(s + ",1,1,100"), std::string::npos) << book3;
+  for (const std::string s : {"ana", "ben", "cy", "dee"}) {
+    const std::string alone = run_cli("grade " + set + " " + dir + "/answers/" + s + ".yaml --roster " + dir + "/roster.csv", status);
+    EXPECT_NE(alone.find(": 1 / 1"), std::string::npos) << alone;
+  }
+  const std::string guessed = run_cli("grade " + set + " " + dir + "/answers -o " + dir + "/grades4", status);
+  EXPECT_NE(status, 0);
+  const std::string book4 = read_text(dir + "/grades4/gradebook.csv");
+  EXPECT_NE(book4.find("--variants"), std::string::npos) << book4;
+  for (const std::string s : {"ana", "ben", "cy", "dee"})
+    EXPECT_NE(book4.find(s + ",0,1,0.0,error"), std::string::npos) << s << "\n" << book4;
+  // A student alone without either is graded against the id's draw, and the report says how to
+  // grade a roster-generated class.
+  const std::string single = run_cli("grade " + set + " " + dir + "/answers/ana.yaml", status);
+  EXPECT_NE(single.find("--roster"), std::string::npos) << single;
   // A roster naming a student twice is a located error.
   std::ofstream(dir + "/twice.txt") << "ana\n# comment\n\nana\n";
   const std::string twice = run_cli("generate " + set + " --roster " + dir + "/twice.txt -o " + dir + "/t", status);
