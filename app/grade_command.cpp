@@ -10,39 +10,110 @@
 #include "grader/prairielearn.hpp"
 #include "grader/report.hpp"
 #include "solver/kinds/variants.hpp"
+#include "solver/kinds/yaml_emit.hpp"
 #include "solver/util/diagnostic.hpp"
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <map>
 #include <ostream>
 
 namespace frustum::app {
 
 namespace {
 
-// The set a student is graded against: with --variants, the file `frustum generate` wrote for
-// them; otherwise their own variant when the set varies.
-ProblemSet set_for_student(const ProblemSet& set, const std::optional<std::string>& variants_dir,
-                           const std::string& student, std::string& variant) {
-  if (variants_dir) {
-    const std::string file = variant_file(*variants_dir, set.file, variant_name(student));
-    std::error_code ec;
-    if (student.empty() || !std::filesystem::is_regular_file(file, ec)) {
-      ProblemSet missing = set;
-      missing.problems.clear();
-      missing.errors.push_back(Diagnostic{SourceLocation{file, 0, 0}, "student",
-                                          student.empty() ? "the answers need `student:` to find the student's generated set"
-                                                          : "no generated set for student " + student + " in " + *variants_dir});
-      return missing;
+// The sets of a class as `frustum generate --roster` drew them (redraws included), by student.
+using ClassVariants = std::map<std::string, ProblemSet>;
+
+ClassVariants class_variants(const ProblemSet& set, const std::vector<std::string>& roster) {
+  ClassVariants out;
+  const std::vector<ProblemSet> drawn = variants_for_class(set, roster, !set_varies(set));
+  for (std::size_t i = 0; i < roster.size(); ++i) out.emplace(roster[i], drawn[i]);
+  return out;
+}
+
+// With --roster: the class's variants, or false after printing why the roster cannot be read.
+bool read_class(const ProblemSet& set, const GradeOptions& g, const Output& o, std::optional<ClassVariants>& out) {
+  if (!g.roster) return true;
+  try {
+    out = class_variants(set, read_roster(*g.roster));
+    return true;
+  } catch (const InputError& e) {
+    o.err << "error: " << e.diagnostic().format() << "\n";
+    return false;
+  }
+}
+
+ProblemSet refused(const ProblemSet& set, const std::string& where, const std::string& why) {
+  ProblemSet none = set;
+  none.problems.clear();
+  none.errors.push_back(Diagnostic{SourceLocation{where, 0, 0}, "student", why});
+  return none;
+}
+
+const char* kRedrawHint =
+    "grade the class against the files `frustum generate -o DIR` wrote (--variants DIR) or against the roster it "
+    "was generated from (--roster ROSTER)";
+
+// Grading a class of a varying set without --variants or --roster is safe only when no student
+// of it can have been drawn again by `generate --roster`: the first redraw of a class always
+// comes from two students whose variants from their ids share a problem. When two submissions
+// do, which of them (and who after them) was redrawn depends on the roster, so the whole class
+// is refused rather than graded against a guess. Returns why ("" when safe).
+std::string redraw_risk(const ProblemSet& set, const std::vector<BatchEntry>& entries) {
+  std::map<std::string, std::string> first;  // problem id + given → the first student with it
+  for (const BatchEntry& e : entries) {
+    if (e.student.empty() || e.error) continue;
+    const ProblemSet v = variant_for(set, e.student);
+    for (std::size_t i = 0; i < v.problems.size() && i < set.problems.size(); ++i) {
+      const ProblemSpec& p = v.problems[i];
+      if (!problem_varies(set, set.problems[i]) || p.error) continue;
+      const auto [it, fresh] = first.emplace(p.id + "\x1f" + emit_flow(p.given_node), e.student);
+      if (!fresh && it->second != e.student)
+        return fmt::format("the variants of {} and {} drawn from their ids share problem {}: if the class was "
+                           "generated with `frustum generate --roster`, students were drawn again and which depends "
+                           "on the roster, so no one is graded against a guess: {}",
+                           it->second, e.student, p.id, kRedrawHint);
     }
+  }
+  return "";
+}
+
+// The set a student is graded against: with --variants, the file `frustum generate` wrote for
+// them; with --roster, their variant in the class drawn from that roster; otherwise their own
+// variant when the set varies.
+ProblemSet set_for_student(const ProblemSet& set, const GradeOptions& g, const ClassVariants* roster,
+                           const std::string& student, std::string& variant) {
+  if (g.variants) {
+    const std::string file = variant_file(*g.variants, set.file, variant_name(student));
+    std::error_code ec;
+    if (student.empty() || !std::filesystem::is_regular_file(file, ec))
+      return refused(set, file,
+                     student.empty() ? "the answers need `student:` to find the student's generated set"
+                                     : "no generated set for student " + student + " in " + *g.variants);
     variant = "graded against " + file;
     return load_problem_set(file);
+  }
+  if (roster) {
+    const auto it = roster->find(student);
+    if (it == roster->end())
+      return refused(set, *g.roster,
+                     student.empty() ? "the answers need `student:` to find the student in the roster"
+                                     : "student " + student + " is not in the roster " + *g.roster);
+    const ProblemSet& v = it->second;
+    if (v.variant)
+      variant = fmt::format("graded against the variant of student {} in the class of {} (draw {}, seed {:016x})",
+                            student, *g.roster, v.variant->draw, v.variant->seed);
+    return v;
   }
   if (!set_varies(set)) return set;
   ProblemSet v = variant_for(set, student);
   if (v.variant)
-    variant = fmt::format("graded against the variant of student {} (seed {:016x})", v.variant->student, v.variant->seed);
+    variant = fmt::format("graded against the variant of student {} (seed {:016x}) drawn from the id, as "
+                          "`frustum generate --student` draws it; a class generated with --roster may have drawn this "
+                          "student again: then {}",
+                          v.variant->student, v.variant->seed, kRedrawHint);
   return v;
 }
 
@@ -65,9 +136,16 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   options.out_dir = g.out_dir.value_or("grades");
   options.timeout_seconds = g.timeout;
   options.lang = g.lang;
-  if (set_varies(set) || g.variants)
-    options.set_for = [dir = g.variants](const ProblemSet& s, const std::string& student, std::string& variant) {
-      return set_for_student(s, dir, student, variant);
+  std::optional<ClassVariants> roster;
+  if (!read_class(set, g, o, roster)) return 1;
+  std::string risk;
+  if (!g.roster && !g.variants && set_varies(set)) {
+    risk = redraw_risk(set, entries);
+  }
+  if (set_varies(set) || g.variants || roster)
+    options.set_for = [&](const ProblemSet& s, const std::string& student, std::string& variant) {
+      if (!risk.empty()) return refused(s, s.file, risk);
+      return set_for_student(s, g, roster ? &*roster : nullptr, student, variant);
     };
   if (o.progress)
     options.on_progress = [&](std::size_t done, std::size_t total, const std::string& who) {
@@ -103,7 +181,9 @@ int run_grade(const GradeOptions& g, const Output& o) {
 
   const Submission submission = load_submission(g.answers);
   std::string variant;
-  const ProblemSet graded = set_for_student(set, g.variants, submission.student, variant);
+  std::optional<ClassVariants> roster;
+  if (!read_class(set, g, o, roster)) return 1;
+  const ProblemSet graded = set_for_student(set, g, roster ? &*roster : nullptr, submission.student, variant);
   GradeReport report = grade(graded, submission);
   report.variant = variant;
   if (g.format == Format::Json)

@@ -124,6 +124,10 @@ int main(int argc, char** argv) {
                    "Grade each student against their set written by `frustum generate -o DIR` "
                    "(DIR/SET-STUDENT.yaml)")
       ->check(CLI::ExistingDirectory);
+  grade->add_option("--roster", grade_opt.roster,
+                    "Grade against the variants `frustum generate --roster` drew from this roster (redraws included)")
+      ->check(CLI::ExistingFile)
+      ->excludes("--variants");
   grade->footer(examples(
       {"frustum grade problems/seeds/001_zbuffer_plane_method.yaml "
        "problems/seeds/answers/001_zbuffer_plane_method.yaml",

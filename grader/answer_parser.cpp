@@ -58,19 +58,25 @@ Exact parse_one(const std::string& text, std::string& error, const ExpressionOpt
   return canonical(*r.value);
 }
 
-// Splits "(a, b, c)" or "a, b, c" at top-level commas.
-std::vector<std::string> split_list(std::string s) {
+bool wrapped(const std::string& s) {
+  return s.size() >= 2 && ((s.front() == '(' && s.back() == ')') || (s.front() == '[' && s.back() == ']'));
+}
+
+std::string trimmed(std::string s) {
   s.erase(0, s.find_first_not_of(" \t"));
   s.erase(s.find_last_not_of(" \t") + 1);
-  if (s.size() >= 2 && ((s.front() == '(' && s.back() == ')') || (s.front() == '[' && s.back() == ']')))
-    s = s.substr(1, s.size() - 2);
+  return s;
+}
+
+// Splits "a, b, c" at top-level separators (commas; with `semicolons`, also ';').
+std::vector<std::string> split_top(const std::string& s, bool semicolons = false) {
   std::vector<std::string> out;
   int depth = 0;
   std::string cur;
   for (char c : s) {
-    if (c == '(') ++depth;
-    if (c == ')') --depth;
-    if (c == ',' && depth == 0) {
+    if (c == '(' || c == '[') ++depth;
+    if (c == ')' || c == ']') --depth;
+    if ((c == ',' || (semicolons && c == ';')) && depth == 0) {
       out.push_back(cur);
       cur.clear();
     } else {
@@ -79,6 +85,29 @@ std::vector<std::string> split_list(std::string s) {
   }
   out.push_back(cur);
   return out;
+}
+
+// Splits "(a, b, c)" or "a, b, c" at top-level commas.
+std::vector<std::string> split_list(std::string s) {
+  s = trimmed(s);
+  if (wrapped(s)) s = s.substr(1, s.size() - 2);
+  return split_top(s);
+}
+
+// A point list written as text, in the usual forms: "(0, 4), (8, 8)", "[[0, 4], [8, 8]]",
+// "(0, 4); (8, 8)". Empty when the text is not a list of bracketed tuples.
+std::vector<std::string> split_rows(std::string s) {
+  s = trimmed(s);
+  if (wrapped(s)) {
+    const std::string inner = trimmed(s.substr(1, s.size() - 2));
+    if (!inner.empty() && (inner.front() == '(' || inner.front() == '[') && split_top(inner, true).size() > 1) s = inner;
+  }
+  std::vector<std::string> rows = split_top(s, true);
+  for (std::string& r : rows) {
+    r = trimmed(r);
+    if (!wrapped(r)) return {};
+  }
+  return rows;
 }
 
 Numbers read_numbers(const YAML::Node& n) {
@@ -146,6 +175,40 @@ Numbers read_plane_equation(const std::string& text) {
     }
   out.values.push_back(-constant);
   for (Exact& c : out.values) c = canonical(c);
+  return out;
+}
+
+struct Rows {
+  std::vector<std::vector<Exact>> values;
+  std::string error;
+};
+
+// A matrix or a vertex list: a YAML list of rows (each a list or "(a, b)"), or one text in a
+// usual written form ("(0, 4), (8, 8)").
+Rows read_rows(const YAML::Node& node, const std::string& item) {
+  Rows out;
+  std::vector<YAML::Node> rows;
+  if (node.IsSequence() && node.size() > 0) {
+    for (std::size_t r = 0; r < node.size(); ++r) rows.push_back(node[r]);
+  } else if (node.IsScalar()) {
+    for (const std::string& r : split_rows(node.Scalar())) rows.emplace_back(r);
+  }
+  if (rows.empty()) {
+    out.error = "expected a list of " + item + "s, like [[0, 4], [8, 8]] or \"(0, 4), (8, 8)\"";
+    return out;
+  }
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const Numbers n = read_numbers(rows[r]);
+    if (!n.error.empty()) {
+      out.error = item + " " + std::to_string(r + 1) + ": " + n.error;
+      return out;
+    }
+    if (!out.values.empty() && n.values.size() != out.values[0].size()) {
+      out.error = item == "row" ? "the rows have different lengths" : item + " " + std::to_string(r + 1) + ": wrong number of coordinates";
+      return out;
+    }
+    out.values.push_back(n.values);
+  }
   return out;
 }
 
@@ -252,25 +315,17 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       p.value = Value::vector(n.values);
       break;
     }
-    case AnswerKind::Matrix: {
-      if (!node.IsSequence() || node.size() == 0) {
-        p.error = "expected a matrix as a list of rows";
+    case AnswerKind::Matrix:
+    case AnswerKind::Transform:
+    case AnswerKind::Segment:
+    case AnswerKind::Polygon: {
+      const bool vertices = spec.kind == AnswerKind::Polygon || spec.kind == AnswerKind::Segment;
+      const Rows rows = read_rows(node, vertices ? "vertex" : "row");
+      if (!rows.error.empty()) {
+        p.error = rows.error;
         return p;
       }
-      std::vector<std::vector<Exact>> rows;
-      for (std::size_t r = 0; r < node.size(); ++r) {
-        const Numbers n = read_numbers(node[r]);
-        if (!n.error.empty()) {
-          p.error = "row " + std::to_string(r + 1) + ": " + n.error;
-          return p;
-        }
-        if (!rows.empty() && n.values.size() != rows[0].size()) {
-          p.error = "the rows have different lengths";
-          return p;
-        }
-        rows.push_back(n.values);
-      }
-      p.value = Value::matrix(rows);
+      p.value = Value::matrix(rows.values);
       break;
     }
     case AnswerKind::Bool: {
@@ -303,23 +358,6 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
         return p;
       }
       p.value = Value::category(w);
-      break;
-    }
-    case AnswerKind::Polygon: {
-      if (!node.IsSequence() || node.size() == 0) {
-        p.error = "expected a list of vertices";
-        return p;
-      }
-      std::vector<std::vector<Exact>> rows;
-      for (std::size_t r = 0; r < node.size(); ++r) {
-        const Numbers n = read_numbers(node[r]);
-        if (!n.error.empty() || (!rows.empty() && n.values.size() != rows[0].size())) {
-          p.error = "vertex " + std::to_string(r + 1) + ": " + (n.error.empty() ? "wrong number of coordinates" : n.error);
-          return p;
-        }
-        rows.push_back(n.values);
-      }
-      p.value = Value::matrix(rows);
       break;
     }
     case AnswerKind::BitString: {

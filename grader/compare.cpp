@@ -1,45 +1,35 @@
 #include "grader/compare.hpp"
 
-#include "solver/util/exact_format.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+
+#include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
 std::string_view to_string(Verdict v) {
   switch (v) {
-    case Verdict::Correct: return "correct";
-    case Verdict::Incorrect: return "incorrect";
-    case Verdict::Partial: return "partial";
-    case Verdict::Unparseable: return "unparseable";
-    case Verdict::Missing: return "missing";
+    case Verdict::Correct:
+      return "correct";
+    case Verdict::Incorrect:
+      return "incorrect";
+    case Verdict::Partial:
+      return "partial";
+    case Verdict::Unparseable:
+      return "unparseable";
+    case Verdict::Missing:
+      return "missing";
   }
   return "incorrect";
 }
 
-double window(double expected, const Tolerance& tol, double scale) {
-  if (tol.decimals) return std::max(tol.abs, 0.5 * std::pow(10.0, -*tol.decimals));
-  if (tol.sigfigs) {
-    if (expected == 0) return tol.abs;
-    const double digit = std::floor(std::log10(std::abs(expected)));
-    return std::max(tol.abs, 0.5 * std::pow(10.0, digit - *tol.sigfigs + 1));
-  }
-  return std::max(tol.abs, tol.rel * std::abs(scale));
-}
-
-bool close(double expected, double got, const Tolerance& tol, double scale) {
-  if (!std::isfinite(got)) return false;
-  // A little slack for the rounding of the window itself (0.5 at the last digit).
-  return std::abs(got - expected) <= window(expected, tol, scale) * (1 + 1e-12);
-}
-
 namespace {
 
-Comparison correct(std::string why) { return {Verdict::Correct, 1.0, std::move(why)}; }
-Comparison incorrect(std::string why) { return {Verdict::Incorrect, 0.0, std::move(why)}; }
+Comparison correct(std::string why) { return {Verdict::Correct, 1.0, std::move(why), {}}; }
+Comparison incorrect(std::string why) { return {Verdict::Incorrect, 0.0, std::move(why), {}}; }
 
 bool exactly_equal(const Value& a, const Value& b) {
   if (a.exact.empty() || b.exact.empty() || a.exact.size() != b.exact.size()) return false;
@@ -48,7 +38,8 @@ bool exactly_equal(const Value& a, const Value& b) {
   if (a.numbers.size() == a.exact.size() && b.numbers.size() == b.exact.size())
     for (std::size_t i = 0; i < a.numbers.size(); ++i) {
       const double x = a.numbers[i], y = b.numbers[i];
-      if (std::isfinite(x) && std::isfinite(y) && std::abs(x - y) > 1e-9 * std::max({1.0, std::abs(x), std::abs(y)}))
+      if (std::isfinite(x) && std::isfinite(y) &&
+          std::abs(x - y) > 1e-9 * std::max({1.0, std::abs(x), std::abs(y)}))
         return false;
     }
   for (std::size_t i = 0; i < a.exact.size(); ++i)
@@ -56,130 +47,282 @@ bool exactly_equal(const Value& a, const Value& b) {
   return true;
 }
 
-double max_abs(const std::vector<double>& v) {
-  double m = 0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  return m;
+ComponentJudge judge_of(const Value& expected, const AnswerRules& r) {
+  return ComponentJudge(expected, r.spec->kind, r.tol, r.scale);
 }
 
-// Componentwise within tolerance, relative to the largest component of the expected value
-// (a vector's small components need not be more precise than its large ones), or, for
-// matrices, relative to each entry (a translation column must not excuse the rotation).
-bool close_all(const std::vector<double>& e, const std::vector<double>& g, const Tolerance& tol,
-               bool per_entry = false) {
-  if (e.size() != g.size()) return false;
-  const double scale = max_abs(e);
-  for (std::size_t i = 0; i < e.size(); ++i)
-    if (!close(e[i], g[i], tol, per_entry ? e[i] : scale)) return false;
-  return true;
-}
-
-// How many components are within tolerance (for partial credit).
-std::size_t count_close(const std::vector<double>& e, const std::vector<double>& g,
-                        const Tolerance& tol, bool per_entry) {
-  if (e.size() != g.size()) return 0;
-  const double scale = max_abs(e);
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < e.size(); ++i) n += close(e[i], g[i], tol, per_entry ? e[i] : scale);
-  return n;
-}
-
-// A polygon's vertex list as rows of `cols` numbers.
-std::vector<std::vector<double>> vertices(const Value& v) {
+// Rows of `cols` numbers (a polygon's or a segment's vertices).
+std::vector<std::vector<double>> rows_of(const Value& v) {
   std::vector<std::vector<double>> out;
   const std::size_t cols = v.cols > 0 ? static_cast<std::size_t>(v.cols) : 1;
   for (std::size_t i = 0; i + cols <= v.numbers.size(); i += cols)
-    out.emplace_back(v.numbers.begin() + static_cast<long>(i), v.numbers.begin() + static_cast<long>(i + cols));
+    out.emplace_back(v.numbers.begin() + static_cast<long>(i),
+                     v.numbers.begin() + static_cast<long>(i + cols));
   return out;
 }
 
-std::vector<double> scaled(const std::vector<double>& v, double k) {
+Value numeric_value(const Value& shape, std::vector<double> numbers) {
+  Value v;
+  v.shape = shape.shape;
+  v.rows = shape.rows;
+  v.cols = shape.cols;
+  v.numbers = std::move(numbers);
+  return v;
+}
+
+// v scaled by a power of two so that its largest |component| is in [0.5, 1): exact in binary,
+// so directions of 10⁻¹⁷⁰ or 10¹⁵⁶ compare like any other (no squared length under- or
+// overflows).
+std::vector<double> normalized_exponent(const std::vector<double>& v) {
+  const double m = max_abs(v);
+  if (m == 0 || !std::isfinite(m)) return v;
+  int e = 0;
+  std::frexp(m, &e);
   std::vector<double> out(v);
-  for (double& x : out) x *= k;
+  for (double& x : out) x = std::ldexp(x, -e);
   return out;
 }
 
-double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
+bool all_finite_and_faithful(const Value& v) {
+  for (std::size_t i = 0; i < v.numbers.size(); ++i) {
+    if (!std::isfinite(v.numbers[i])) return false;
+    // A non-zero exact number that became 0 in double (below 10⁻³⁰⁸).
+    if (v.numbers[i] == 0 && i < v.exact.size() && !v.exact[i].is_zero()) return false;
+  }
+  return true;
 }
 
-// The scale λ minimising ‖g − λe‖ (least squares), when g is a multiple of e.
-double best_scale(const std::vector<double>& e, const std::vector<double>& g) {
-  const double ee = dot(e, e);
-  return ee == 0 ? 0 : dot(g, e) / ee;
+enum class Multiple { None, Positive, Negative };
+
+// Is g a multiple k·e (k ≠ 0), each component of g judged against k·e? Both vectors are first
+// scaled by powers of two; numbers beyond double range are compared exactly (g × e = 0).
+Multiple multiple_of(const Value& expected, const Value& got, const AnswerRules& r,
+                     double* k_out = nullptr) {
+  if (!all_finite_and_faithful(expected) || !all_finite_and_faithful(got)) {
+    if (expected.exact.empty() || got.exact.size() != expected.exact.size()) return Multiple::None;
+    const std::vector<Exact>& e = expected.exact;
+    const std::vector<Exact>& g = got.exact;
+    Exact dot = 0;
+    for (std::size_t i = 0; i < e.size(); ++i) {
+      dot += e[i] * g[i];
+      for (std::size_t j = i + 1; j < e.size(); ++j)
+        if (!canonical(g[i] * e[j] - g[j] * e[i]).is_zero()) return Multiple::None;
+    }
+    const int s = exact_sign(canonical(dot));
+    return s > 0 ? Multiple::Positive : s < 0 ? Multiple::Negative : Multiple::None;
+  }
+  const std::vector<double> e = normalized_exponent(expected.numbers);
+  const std::vector<double> g = normalized_exponent(got.numbers);
+  double ee = 0, ge = 0;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    ee += e[i] * e[i];
+    ge += g[i] * e[i];
+  }
+  if (ee == 0 || ge == 0) return Multiple::None;
+  const double k = ge / ee;
+  std::vector<double> ke(e);
+  for (double& x : ke) x *= k;
+  AnswerRules plain = r;
+  plain.scale = nullptr;  // the kind's magnitudes belong to the unscaled key
+  if (!judge_of(numeric_value(expected, ke), plain).all(ke, g)) return Multiple::None;
+  if (k_out) *k_out = k;
+  return k > 0 ? Multiple::Positive : Multiple::Negative;
 }
 
-Comparison compare_numbers(const Value& expected, const Value& got, const Tolerance& tol) {
+bool purely_linear(const Value& m) {
+  if (m.shape != Value::Shape::Matrix || m.rows != m.cols || m.rows < 3) return false;
+  const std::size_t n = static_cast<std::size_t>(m.rows);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + 1 < n && m.numbers[i * n + n - 1] != 0) return false;              // translation column
+    if (m.numbers[(n - 1) * n + i] != (i + 1 == n ? 1.0 : 0.0)) return false;  // bottom row
+  }
+  return true;
+}
+
+// The (n−1)×(n−1) linear part of a homogeneous matrix.
+Value linear_part(const Value& m) {
+  const int n = m.rows - 1;
+  std::vector<std::vector<Exact>> rows(static_cast<std::size_t>(n));
+  Value v;
+  v.shape = Value::Shape::Matrix;
+  v.rows = v.cols = n;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const std::size_t k = static_cast<std::size_t>(i * m.cols + j);
+      v.numbers.push_back(m.numbers[k]);
+      if (!m.exact.empty()) v.exact.push_back(m.exact[k]);
+    }
+  return v;
+}
+
+std::string shape_text(const Value& v) {
+  return v.shape == Value::Shape::Matrix ? fmt::format("a {}×{} matrix", v.rows, v.cols)
+                                         : fmt::format("{} components", v.numbers.size());
+}
+
+// Credit per component that shows work: the components a trivial answer also gets right do not
+// count, neither in what the student got nor in what there was to get.
+std::optional<Comparison> component_credit(const Value& expected, const Value& got,
+                                           const ComponentJudge& judge, const AnswerRules& r) {
+  std::size_t shown = 0, right = 0;
+  for (std::size_t i = 0; i < expected.numbers.size(); ++i) {
+    bool free = false;
+    if (r.trivial)
+      for (const TrivialAnswer& t : *r.trivial)
+        free = free || judge.ok(i, expected.numbers[i], t.value.numbers[i]);
+    if (free) continue;
+    ++shown;
+    right += judge.ok(i, expected.numbers[i], got.numbers[i]);
+  }
+  if (right == 0 || shown == 0) return std::nullopt;
+  const bool matrix = expected.shape == Value::Shape::Matrix;
+  return Comparison{Verdict::Partial,
+                    static_cast<double>(right) / static_cast<double>(shown),
+                    fmt::format("{} of the {} {} that take work are right{}", right, shown,
+                                matrix ? "entries" : "components",
+                                shown < expected.numbers.size()
+                                    ? " (entries a trivial answer also has do not count)"
+                                    : ""),
+                    {}};
+}
+
+Comparison compare_components(const Value& expected, const Value& got, const AnswerRules& r) {
+  const AnswerKind kind = r.spec->kind;
+  if (kind == AnswerKind::Transform && got.shape == Value::Shape::Matrix &&
+      expected.rows == got.rows + 1 && got.rows == got.cols) {
+    if (!purely_linear(expected))
+      return incorrect(fmt::format(
+          "this transform moves the origin (a translation or a projection): it needs the "
+          "{0}×{0} homogeneous matrix",
+          expected.rows));
+    if (!r.linear_matrix)
+      return incorrect(
+          fmt::format("this problem asks for the {0}×{0} homogeneous matrix", expected.rows));
+    AnswerRules linear = r;
+    linear.trivial = nullptr;
+    linear.scale = nullptr;
+    Comparison c = compare_components(linear_part(expected), got, linear);
+    if (c.verdict == Verdict::Correct)
+      c.feedback = "the linear part of a transform without translation";
+    return c;
+  }
+  if (got.numbers.size() != expected.numbers.size() ||
+      (expected.shape == Value::Shape::Matrix && got.shape == Value::Shape::Matrix &&
+       expected.cols != got.cols))
+    return incorrect(fmt::format("expected {}, got {}", shape_text(expected), shape_text(got)));
   if (exactly_equal(expected, got)) return correct("exactly equal");
-  if (close_all(expected.numbers, got.numbers, tol, expected.shape == Value::Shape::Matrix))
-    return correct(fmt::format("within tolerance (relative {}, absolute {})", tol.rel, tol.abs));
+  const ComponentJudge judge = judge_of(expected, r);
+  if (judge.all(expected.numbers, got.numbers)) return correct("within tolerance");
+  if (kind == AnswerKind::Segment) {
+    const auto e = rows_of(expected), g = rows_of(got);
+    std::vector<double> reversed;
+    for (auto it = g.rbegin(); it != g.rend(); ++it)
+      reversed.insert(reversed.end(), it->begin(), it->end());
+    if (judge.all(expected.numbers, reversed))
+      return correct("the same segment, its endpoints in the other order");
+  }
+  if (kind == AnswerKind::Point && multiple_of(expected, got, r) == Multiple::Positive)
+    return correct("the same homogeneous point (a positive multiple)");
+  if (kind == AnswerKind::UnitVector) {
+    double k = 0;
+    const Multiple m = multiple_of(expected, got, r, &k);
+    if (m == Multiple::Positive)
+      return incorrect(
+          fmt::format("the direction is right but the length is {} — a unit vector has length 1 "
+                      "(divide by the length)",
+                      format_approx(std::abs(k))));
+    if (m == Multiple::Negative)
+      return incorrect("it points the opposite way: check the order of the cross product");
+  }
+  if (r.trivial)
+    for (const TrivialAnswer& t : *r.trivial)
+      if (judge.all(expected.numbers, t.value.numbers) == false &&
+          ComponentJudge(t.value, kind, r.tol, nullptr).all(t.value.numbers, got.numbers)) {
+        Comparison c = incorrect(t.feedback);
+        c.trivial = t.name;
+        return c;
+      }
+  if (r.partial &&
+      (kind == AnswerKind::Vector || kind == AnswerKind::Matrix || kind == AnswerKind::Transform))
+    if (auto c = component_credit(expected, got, judge, r)) return *c;
   return incorrect("");
+}
+
+// Word maps (faces, edges): credit per entry, corrected for the best constant answer ("every
+// face front"), which shows no work.
+Comparison compare_word_map(const Value& expected, const Value& got) {
+  std::size_t right = 0;
+  for (const auto& [k, w] : expected.entries)
+    for (const auto& [gk, gw] : got.entries)
+      if (gk == k && gw == w) ++right;
+  const std::size_t n = expected.entries.size();
+  if (right == n && got.entries.size() == right) return correct("");
+  std::size_t best_constant = 0;
+  for (const auto& [k, w] : expected.entries) {
+    std::size_t same = 0;
+    for (const auto& [k2, w2] : expected.entries) same += w2 == w;
+    best_constant = std::max(best_constant, same);
+  }
+  if (right > best_constant && n > best_constant)
+    return {
+        Verdict::Partial,
+        static_cast<double>(right - best_constant) / static_cast<double>(n - best_constant),
+        fmt::format("{} of {} entries right; answering \"{}\" everywhere would get {}, so the "
+                    "credit counts the "
+                    "entries beyond that",
+                    right, n, expected.entries.empty() ? "" : "the commonest word", best_constant),
+        {}};
+  return incorrect(
+      right > 0 ? fmt::format(
+                      "{} of {} entries right, no more than one word written everywhere would get",
+                      right, n)
+                : "");
 }
 
 }  // namespace
 
-Comparison compare(const Value& expected, const Value& got, const AnswerSpec& spec,
-                   const Tolerance& tol, bool partial) {
+Comparison compare(const Value& expected, const Value& got, const AnswerRules& r) {
   if (expected.shape == Value::Shape::Null) {
     return got.shape == Value::Shape::Null ? correct("there is no such value")
                                            : incorrect("there is no such value here");
   }
   if (got.shape == Value::Shape::Null) return incorrect("there is a value here");
-  switch (spec.kind) {
-    case AnswerKind::Scalar: return compare_numbers(expected, got, tol);
+  switch (r.spec->kind) {
+    case AnswerKind::Scalar: {
+      if (got.numbers.size() != 1 || expected.numbers.size() != 1)
+        return incorrect("expected one number");
+      if (exactly_equal(expected, got)) return correct("exactly equal");
+      if (judge_of(expected, r).ok(0, expected.numbers[0], got.numbers[0]))
+        return correct("within tolerance");
+      return incorrect("");
+    }
     case AnswerKind::Vector:
     case AnswerKind::Point:
     case AnswerKind::Matrix:
-    case AnswerKind::UnitVector: {
-      if (got.numbers.size() != expected.numbers.size())
-        return incorrect(fmt::format("expected {} components, got {}", expected.numbers.size(),
-                                     got.numbers.size()));
-      Comparison c = compare_numbers(expected, got, tol);
-      if (c.verdict == Verdict::Correct) return c;
-      if (spec.kind == AnswerKind::Point) {
-        // Homogeneous coordinates: (x, y, z, w) and (kx, ky, kz, kw), k > 0, are one point.
-        const double k = best_scale(expected.numbers, got.numbers);
-        if (k > 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
-          return correct("the same homogeneous point (a positive multiple)");
-      }
-      if (spec.kind == AnswerKind::UnitVector) {
-        const double k = best_scale(expected.numbers, got.numbers);
-        if (k > 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
-          return incorrect(fmt::format(
-              "the direction is right but the length is {} — a unit vector has length 1 "
-              "(divide by the length)",
-              format_approx(std::sqrt(dot(got.numbers, got.numbers)))));
-        if (k < 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
-          return incorrect("it points the opposite way: check the order of the cross product");
-      }
-      if ((spec.kind == AnswerKind::Vector || spec.kind == AnswerKind::Matrix) && partial) {
-        const bool per_entry = expected.shape == Value::Shape::Matrix;
-        const std::size_t right = count_close(expected.numbers, got.numbers, tol, per_entry);
-        if (right > 0)
-          return {Verdict::Partial, static_cast<double>(right) / static_cast<double>(expected.numbers.size()),
-                  fmt::format("{} of {} {} right", right, expected.numbers.size(), per_entry ? "entries" : "components")};
-      }
-      return c;
-    }
+    case AnswerKind::Transform:
+    case AnswerKind::Segment:
+    case AnswerKind::UnitVector:
+      return compare_components(expected, got, r);
     case AnswerKind::Direction: {
       if (got.numbers.size() != expected.numbers.size())
         return incorrect(fmt::format("expected {} components, got {}", expected.numbers.size(),
                                      got.numbers.size()));
-      const double k = best_scale(expected.numbers, got.numbers);
-      if (k > 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
-        return correct(k == 1 || exactly_equal(expected, got)
-                           ? "equal"
-                           : "the same direction (a normal is right up to a positive factor)");
-      if (k < 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
+      if (exactly_equal(expected, got)) return correct("equal");
+      if (max_abs(got.numbers) == 0 && all_finite_and_faithful(got)) {
+        Comparison c = incorrect("The zero vector has no direction: it is no normal.");
+        c.trivial = "zero vector";
+        return c;
+      }
+      const Multiple m = multiple_of(expected, got, r);
+      if (m == Multiple::Positive)
+        return correct("the same direction (a normal is right up to a positive factor)");
+      if (m == Multiple::Negative)
         return incorrect("it points the opposite way: check the order of the cross product");
       return incorrect("");
     }
     case AnswerKind::Plane: {
       if (got.numbers.size() != 4) return incorrect("a plane has 4 coefficients");
-      const double k = best_scale(expected.numbers, got.numbers);
-      if (k != 0 && close_all(scaled(expected.numbers, k), got.numbers, tol))
+      if (multiple_of(expected, got, r) != Multiple::None)
         return correct("the same plane (equations agree up to a non-zero factor)");
       return incorrect("");
     }
@@ -195,41 +338,45 @@ Comparison compare(const Value& expected, const Value& got, const AnswerSpec& sp
       if (a == b) return correct("the same set (order does not matter)");
       std::size_t common = 0;
       for (const std::string& w : b) common += std::binary_search(a.begin(), a.end(), w);
-      if (common > 0 && !a.empty()) {
-        Comparison c{Verdict::Partial, static_cast<double>(common) / static_cast<double>(std::max(a.size(), b.size())),
-                     fmt::format("{} of the {} expected items, and {} that should not be there", common,
-                                 a.size(), b.size() - common)};
-        return c;
-      }
+      if (common > 0 && !a.empty())
+        return {Verdict::Partial,
+                static_cast<double>(common) / static_cast<double>(std::max(a.size(), b.size())),
+                fmt::format("{} of the {} expected items, and {} that should not be there", common,
+                            a.size(), b.size() - common),
+                {}};
       return incorrect("");
     }
     case AnswerKind::Sequence:
       return got.words == expected.words ? correct("") : incorrect("the order differs");
-    case AnswerKind::WordMap: {
-      std::size_t right = 0;
-      for (const auto& [k, w] : expected.entries)
-        for (const auto& [gk, gw] : got.entries)
-          if (gk == k && gw == w) ++right;
-      if (right == expected.entries.size() && got.entries.size() == right) return correct("");
-      if (right > 0)
-        return {Verdict::Partial, static_cast<double>(right) / static_cast<double>(expected.entries.size()),
-                fmt::format("{} of {} entries right", right, expected.entries.size())};
-      return incorrect("");
-    }
+    case AnswerKind::WordMap:
+      return compare_word_map(expected, got);
     case AnswerKind::Polygon: {
       // The same vertex cycle, starting anywhere (orientation must match).
-      const auto e = vertices(expected), g = vertices(got);
-      if (e.size() != g.size() || e.empty()) return incorrect(fmt::format("expected {} vertices, got {}", e.size(), g.size()));
-      for (std::size_t shift = 0; shift < e.size(); ++shift) {
-        bool all = true;
-        for (std::size_t i = 0; i < e.size() && all; ++i) all = close_all(e[i], g[(i + shift) % g.size()], tol);
-        if (all) return correct(shift ? "the same polygon, starting at another vertex" : "equal");
-      }
+      const auto e = rows_of(expected), g = rows_of(got);
+      if (e.size() != g.size() || e.empty())
+        return incorrect(fmt::format("expected {} vertices, got {}", e.size(), g.size()));
+      const auto cycle_matches = [&](bool reversed) -> std::optional<std::size_t> {
+        for (std::size_t shift = 0; shift < e.size(); ++shift) {
+          bool all = true;
+          for (std::size_t i = 0; i < e.size() && all; ++i) {
+            const std::size_t j =
+                reversed ? (shift + e.size() - i) % e.size() : (i + shift) % e.size();
+            all = judge_of(numeric_value(expected, e[i]), r).all(e[i], g[j]);
+          }
+          if (all) return shift;
+        }
+        return std::nullopt;
+      };
+      if (const auto shift = cycle_matches(false))
+        return correct(*shift ? "the same polygon, starting at another vertex" : "equal");
+      if (cycle_matches(true))
+        return incorrect(
+            "the right vertices in the opposite order: the orientation decides which side is the "
+            "front");
       return incorrect("");
     }
-    default:
-      return incorrect("answers of this kind cannot be graded yet");
   }
+  return incorrect("answers of this kind cannot be graded yet");
 }
 
 }  // namespace frustum

@@ -1,13 +1,19 @@
-// Comparing a parsed answer with the expected one, by the answer kind's equivalences:
-// exact equality when both are exact, else within tolerance; a normal up to positive scale,
-// a plane up to any non-zero scale.
+// Comparing a parsed answer with the expected one, by the answer kind's equivalences
+// (docs/grading.md §2–4): exact equality when both are exact, else each component within its
+// own window (grader/tolerance.hpp); a normal up to positive scale, a plane up to any non-zero
+// scale, a homogeneous point up to w, a segment in either direction, a purely linear transform
+// as its linear part; component credit only when the set asks for it, and never for what a
+// trivial answer also gets right.
 #pragma once
 
+#include <string>
+#include <vector>
+
+#include "grader/tolerance.hpp"
+#include "grader/trivial.hpp"
 #include "solver/derivation/value.hpp"
 #include "solver/kinds/kind.hpp"
 #include "solver/kinds/problem_set.hpp"
-
-#include <string>
 
 namespace frustum {
 
@@ -19,15 +25,19 @@ struct Comparison {
   Verdict verdict = Verdict::Incorrect;
   double credit = 0;     // fraction of the answer's points, 0..1
   std::string feedback;  // why, for the student
+  std::string trivial;   // the trivial answer it is as a whole ("identity matrix"), if any
 };
 
-// The accepted window around `expected` (see Tolerance); `scale` is what `rel` is relative to.
-double window(double expected, const Tolerance& tol, double scale);
-// |got − expected| ≤ window.
-bool close(double expected, double got, const Tolerance& tol, double scale);
+// How one asked answer of one problem is judged; prepared once per problem.
+struct AnswerRules {
+  const AnswerSpec* spec = nullptr;
+  Tolerance tol;
+  const AnswerScale* scale = nullptr;         // the kind's, when it declares one
+  bool partial = false;                       // component credit
+  bool linear_matrix = kLinearMatrixDefault;  // a purely linear transform as its linear part
+  const std::vector<TrivialAnswer>* trivial = nullptr;  // of the key (trivial.hpp)
+};
 
-// partial: vectors and matrices with some components right get that fraction (Partial).
-Comparison compare(const Value& expected, const Value& got, const AnswerSpec& spec,
-                   const Tolerance& tol, bool partial = true);
+Comparison compare(const Value& expected, const Value& got, const AnswerRules& rules);
 
 }  // namespace frustum

@@ -28,11 +28,9 @@ std::string html_escape(std::string_view s) { return svg_escape(s); }
 
 std::string verdict_word(Verdict v, Lang lang) { return tr(to_string(v), lang); }
 
-std::string got_shown(const AnswerGrade& a) {
-  if (a.verdict == Verdict::Missing) return "—";
-  if (a.got && a.verdict != Verdict::Unparseable) return a.got->shown().unicode;
-  return a.got_text;
-}
+// The answer as the student wrote it (their decimals, their form), never our exact reading of
+// it: 0.948683 stays 0.948683 beside the key.
+std::string got_shown(const AnswerGrade& a) { return a.verdict == Verdict::Missing ? "—" : a.got_text; }
 
 const char* kStyle = R"CSS(
 body { font-family: system-ui, "Noto Sans CJK JP", sans-serif; max-width: 60rem; margin: 2rem auto; padding: 0 1rem; color: #1d232a; }

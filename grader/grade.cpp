@@ -8,6 +8,7 @@
 #include "solver/util/suggest.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace frustum {
 
@@ -62,17 +63,11 @@ Submission load_submission(const std::string& path) {
 
 namespace {
 
-// Names the common mistake a wrong answer matches, with the step where it goes wrong.
-std::optional<Misconception> diagnose(const ProblemSpec& spec, const std::vector<Misconception>& mistakes,
-                                      const std::string& name, const Value& got) {
-  const AnswerSpec& aspec = *spec.info->answer(name);
-  for (const Misconception& m : mistakes) {
-    const Value* v = m.answers.find(name);
-    if (v && v->shape != Value::Shape::Null &&
-        compare(*v, got, aspec, spec.tolerance_for(name), false).verdict == Verdict::Correct)
-      return m;
-  }
-  return std::nullopt;
+bool all_zero_vector(const Value& v) {
+  if (v.numbers.size() < 2) return false;
+  for (const double x : v.numbers)
+    if (x != 0) return false;
+  return true;
 }
 
 // The student's answers that `name` is recomputed from in error carried forward: along its
@@ -97,9 +92,176 @@ Answers carry_inputs(const KindInfo& kind, const std::string& name, const Answer
   return out;
 }
 
+std::string name_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return out;
+}
+
+// One problem's grading: the student's parsed answers, each graded in turn against the key,
+// the named mistakes and the student's own earlier answers.
+class ProblemGrader {
+ public:
+  ProblemGrader(const ProblemSpec& spec, const ProblemResult& solved, const std::vector<Misconception>& mistakes,
+                const ProblemJudging& judging)
+      : spec_(spec), solved_(solved), mistakes_(mistakes), judging_(judging) {}
+
+  void parse(const YAML::Node& student) {
+    parsed_.resize(spec_.ask.size());
+    for (std::size_t i = 0; i < spec_.ask.size(); ++i) {
+      const YAML::Node given = student.IsMap() ? student[spec_.ask[i]] : YAML::Node();
+      if (!given.IsDefined() || given.IsNull()) continue;
+      parsed_[i] = parse_answer(given, *spec_.info->answer(spec_.ask[i]));
+      if (parsed_[i].ok) answers_.set(spec_.ask[i], parsed_[i].value);
+    }
+  }
+
+  AnswerGrade grade(std::size_t i, const YAML::Node& student) {
+    const std::string& name = spec_.ask[i];
+    AnswerGrade ag;
+    ag.name = name;
+    ag.max_score = spec_.answer_points(name);
+    ag.expected = *solved_.answers.find(name);
+    const YAML::Node given = student.IsMap() ? student[name] : YAML::Node();
+    if (!given.IsDefined() || given.IsNull()) {
+      ag.verdict = Verdict::Missing;
+      ag.feedback = "no answer given";
+    } else if (!parsed_[i].ok) {
+      ag.got_text = parsed_[i].raw;
+      ag.verdict = Verdict::Unparseable;
+      ag.feedback = parsed_[i].error;
+    } else {
+      ag.got_text = parsed_[i].raw;
+      ag.got = parsed_[i].value;
+      judge(ag);
+    }
+    verdicts_.emplace_back(name, ag.verdict);
+    if (ag.got && ag.verdict != Verdict::Correct) {
+      // A wrong answer computed from a trivial one is trivial too: it carries nothing forward.
+      bool from_trivial = all_zero_vector(*ag.got);
+      const Answers inputs = carry_inputs(*spec_.info, name, answers_);
+      for (const auto& [d, v] : inputs.items()) from_trivial = from_trivial || is_trivial(d);
+      if (from_trivial) trivial_.push_back(name);
+    }
+    if (ag.verdict != Verdict::Correct) ag.derivation = solved_.derivation.steps_for(name);
+    return ag;
+  }
+
+ private:
+  AnswerRules rules(const std::string& name, bool credit) const {
+    AnswerRules r = judging_.rules(spec_, name);
+    if (!credit) r.partial = false;
+    return r;
+  }
+
+  bool is_trivial(const std::string& name) const {
+    if (std::find(trivial_.begin(), trivial_.end(), name) != trivial_.end()) return true;
+    const Value* v = answers_.find(name);
+    return v && all_zero_vector(*v) && verdict_of(name) != Verdict::Correct;
+  }
+
+  std::optional<Verdict> verdict_of(const std::string& name) const {
+    for (const auto& [n, v] : verdicts_)
+      if (n == name) return v;
+    return std::nullopt;
+  }
+
+  void judge(AnswerGrade& ag) {
+    const std::string& name = ag.name;
+    const Comparison c = compare(ag.expected, *ag.got, rules(name, true));
+    ag.verdict = c.verdict;
+    ag.score = c.credit * ag.max_score;
+    ag.feedback = c.feedback;
+    if (!c.trivial.empty()) ag.misconception = c.trivial;
+    if (ag.verdict == Verdict::Correct) return;
+    if (c.trivial.empty()) diagnose(ag);
+    // A named mistake as a whole earns no component credit: it is what the question tests.
+    if (!ag.misconception.empty() && ag.verdict == Verdict::Partial) {
+      ag.verdict = Verdict::Incorrect;
+      ag.score = 0;
+    }
+    carry_forward(ag);
+  }
+
+  // Names the common mistake the answer matches, when it is true of the student's own answers:
+  // every other answer the mistake changes that the student gave must be what it gives.
+  void diagnose(AnswerGrade& ag) {
+    std::vector<const Misconception*> fits;
+    for (const Misconception& m : mistakes_) {
+      const Value* v = m.answers.find(ag.name);
+      if (!v || v->shape == Value::Shape::Null) continue;
+      if (compare(*v, *ag.got, rules(ag.name, false)).verdict != Verdict::Correct) continue;
+      bool agrees = true;
+      for (const auto& [other, value] : m.answers.items()) {
+        const Value* theirs = other == ag.name ? nullptr : answers_.find(other);
+        if (theirs && value.shape != Value::Shape::Null &&
+            compare(value, *theirs, rules(other, false)).verdict != Verdict::Correct)
+          agrees = false;
+      }
+      if (agrees && std::none_of(fits.begin(), fits.end(), [&](const Misconception* f) { return f->name == m.name; }))
+        fits.push_back(&m);
+    }
+    if (fits.size() == 1) {
+      ag.misconception = fits[0]->name;
+      ag.wrong_step = fits[0]->step;
+      ag.feedback = fits[0]->feedback + (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
+    } else if (fits.size() > 1) {
+      std::vector<std::string> names;
+      for (const Misconception* f : fits) names.push_back(f->name);
+      std::string list;
+      for (std::size_t i = 0; i < names.size(); ++i) list += (i ? (i + 1 == names.size() ? " or " : ", ") : "") + names[i];
+      ag.feedback = "This is what a " + list + " gives; your other answers do not show which." +
+                    (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
+    }
+  }
+
+  // Error carried forward: right from the student's own earlier answers. When every earlier
+  // answer it was recomputed from is itself right (a normal scaled by 2), so is this one.
+  void carry_forward(AnswerGrade& ag) {
+    const AnswerSpec& aspec = *spec_.info->answer(ag.name);
+    if (aspec.depends_on.empty() || !spec_.info->carry_forward || spec_.grading.ecf <= 0) return;
+    Answers usable;
+    for (const auto& [n, v] : answers_.items())
+      if (n != ag.name && !is_trivial(n)) usable.set(n, v);
+    const Answers inputs = carry_inputs(*spec_.info, ag.name, usable);
+    if (inputs.items().empty()) return;
+    const Answers carried = spec_.info->carry_forward(spec_.given, inputs);
+    const Value* follow = carried.find(ag.name);
+    if (!follow || compare(*follow, *ag.got, rules(ag.name, false)).verdict != Verdict::Correct) return;
+    std::vector<std::string> wrong, right;
+    for (const auto& [n, v] : inputs.items()) (verdict_of(n) == Verdict::Correct ? right : wrong).push_back(n);
+    if (wrong.empty()) {
+      ag.verdict = Verdict::Correct;
+      ag.score = ag.max_score;
+      ag.misconception.clear();
+      ag.wrong_step.clear();
+      ag.feedback = "right for your own " + name_list(right) + ", which " + (right.size() == 1 ? "is" : "are") +
+                    " also right (the key used another, equally right, choice)";
+      return;
+    }
+    const double credit = spec_.grading.ecf * ag.max_score;
+    if (credit <= ag.score) return;
+    ag.verdict = Verdict::Partial;
+    ag.score = credit;
+    ag.carried_forward = true;
+    ag.feedback = "wrong, but it follows correctly from your own earlier " + name_list(wrong) +
+                  " (error carried forward: " + format_approx(spec_.grading.ecf * 100, 3) + "% of the points)";
+  }
+
+  const ProblemSpec& spec_;
+  const ProblemResult& solved_;
+  const std::vector<Misconception>& mistakes_;
+  const ProblemJudging& judging_;
+  std::vector<ParsedAnswer> parsed_;
+  Answers answers_;                                          // the parsed ones, by name
+  std::vector<std::pair<std::string, Verdict>> verdicts_;    // graded so far
+  std::vector<std::string> trivial_;                         // wrong answers computed from trivial ones
+};
+
 ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
-                           const std::vector<Misconception>* known_mistakes, const YAML::Node& student,
-                           const std::string& answers_file, std::vector<Diagnostic>& errors) {
+                           const std::vector<Misconception>& mistakes, const ProblemJudging& judging,
+                           const YAML::Node& student, const std::string& answers_file, std::vector<Diagnostic>& errors) {
   ProblemGrade pg;
   pg.id = spec.id;
   pg.kind = spec.kind;
@@ -113,73 +275,10 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
                                 "expected a mapping of answer name → value"});
   }
   // Parse every answer first: later answers are judged against the student's earlier ones.
-  Answers parsed_answers;
-  std::vector<ParsedAnswer> parsed(spec.ask.size());
+  ProblemGrader grader(spec, solved, mistakes, judging);
+  grader.parse(student);
   for (std::size_t i = 0; i < spec.ask.size(); ++i) {
-    const YAML::Node given = student.IsMap() ? student[spec.ask[i]] : YAML::Node();
-    if (!given.IsDefined() || given.IsNull()) continue;
-    parsed[i] = parse_answer(given, *spec.info->answer(spec.ask[i]));
-    if (parsed[i].ok) parsed_answers.set(spec.ask[i], parsed[i].value);
-  }
-  std::optional<std::vector<Misconception>> own_mistakes;  // when the set was not solved once for all
-  for (std::size_t i = 0; i < spec.ask.size(); ++i) {
-    const std::string& name = spec.ask[i];
-    const AnswerSpec& aspec = *spec.info->answer(name);
-    AnswerGrade ag;
-    ag.name = name;
-    ag.max_score = spec.answer_points(name);
-    ag.expected = *solved.answers.find(name);
-    const YAML::Node given = student.IsMap() ? student[name] : YAML::Node();
-    if (!given.IsDefined() || given.IsNull()) {
-      ag.verdict = Verdict::Missing;
-      ag.feedback = "no answer given";
-    } else if (!parsed[i].ok) {
-      ag.got_text = parsed[i].raw;
-      ag.verdict = Verdict::Unparseable;
-      ag.feedback = parsed[i].error;
-    } else {
-      ag.got_text = parsed[i].raw;
-      ag.got = parsed[i].value;
-      const Comparison c = compare(ag.expected, parsed[i].value, aspec, spec.tolerance_for(name), spec.grading.partial);
-      ag.verdict = c.verdict;
-      ag.score = c.credit * ag.max_score;
-      ag.feedback = c.feedback;
-      if (ag.verdict != Verdict::Correct && spec.info->misconceptions) {
-        if (!known_mistakes && !own_mistakes) own_mistakes = spec.info->misconceptions(spec.given);
-        if (const auto m = diagnose(spec, known_mistakes ? *known_mistakes : *own_mistakes, name, parsed[i].value)) {
-          ag.misconception = m->name;
-          ag.feedback = m->feedback + (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
-          ag.wrong_step = m->step;
-        }
-      }
-      // Error carried forward: right from the student's own wrong earlier answer.
-      if (ag.verdict != Verdict::Correct && !aspec.depends_on.empty() && spec.info->carry_forward &&
-          spec.grading.ecf > 0) {
-        const Answers inputs = carry_inputs(*spec.info, name, parsed_answers);
-        const Answers carried = inputs.items().empty() ? Answers{} : spec.info->carry_forward(spec.given, inputs);
-        const Value* follow = carried.find(name);
-        if (follow && compare(*follow, parsed[i].value, aspec, spec.tolerance_for(name), false).verdict ==
-                          Verdict::Correct) {
-          const double credit = spec.grading.ecf * ag.max_score;
-          if (credit > ag.score) {
-            ag.verdict = Verdict::Partial;
-            ag.score = credit;
-            ag.carried_forward = true;
-            // Name the student's own wrong earlier answers it follows from (the kind's direct
-            // dependency may be one the student was not asked: unit_normal behind normal).
-            std::string from;
-            for (const AnswerGrade& earlier : pg.answers)
-              if (earlier.got && earlier.verdict != Verdict::Correct)
-                from += (from.empty() ? "" : ", ") + earlier.name;
-            if (from.empty())
-              for (const std::string& d : aspec.depends_on) from += (from.empty() ? "" : ", ") + d;
-            ag.feedback = "wrong, but it follows correctly from your own earlier " + from +
-                          " (error carried forward: " + format_approx(spec.grading.ecf * 100, 3) + "% of the points)";
-          }
-        }
-      }
-    }
-    if (ag.verdict != Verdict::Correct) ag.derivation = solved.derivation.steps_for(name);
+    AnswerGrade ag = grader.grade(i, student);
     pg.score += ag.score;
     pg.answers.push_back(std::move(ag));
   }
@@ -194,20 +293,57 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
   return pg;
 }
 
+std::vector<Misconception> mistakes_of(const ProblemSpec& spec, const ProblemResult& solved) {
+  if (solved.error || !spec.info || !spec.info->misconceptions) return {};
+  try {
+    return spec.info->misconceptions(spec.given);
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
 }  // namespace
+
+AnswerRules ProblemJudging::rules(const ProblemSpec& spec, const std::string& name) const {
+  AnswerRules r;
+  r.spec = spec.info->answer(name);
+  r.tol = spec.tolerance_for(name);
+  r.partial = spec.grading.partial;
+  r.linear_matrix = spec.grading.linear_matrix;
+  for (const auto& [n, s] : scales)
+    if (n == name) r.scale = &s;
+  for (const auto& [n, t] : trivial)
+    if (n == name) r.trivial = &t;
+  return r;
+}
+
+ProblemJudging prepare_judging(const ProblemSpec& spec, const Answers& key) {
+  ProblemJudging j;
+  if (!spec.info) return j;
+  if (spec.info->scales) {
+    try {
+      j.scales = spec.info->scales(spec.given, key);
+    } catch (const std::exception&) {
+      j.scales.clear();  // the defaults judge every answer
+    }
+  }
+  std::optional<std::vector<GivenList>> given;
+  for (const std::string& name : spec.ask) {
+    const Value* v = key.find(name);
+    const AnswerSpec* a = spec.info->answer(name);
+    if (!v || !a || v->numbers.size() < 2) continue;
+    if (!given) given = given_lists(spec.given_node);
+    j.trivial.emplace_back(name, trivial_answers(*v, a->kind, *given, spec.conventions.api));
+  }
+  return j;
+}
 
 SolvedSet solve_for_grading(const ProblemSet& set) {
   SolvedSet s;
   for (const ProblemSpec& spec : set.problems) {
     s.results.push_back(solve_problem(spec, set.file, true));
-    std::vector<Misconception> m;
-    if (!s.results.back().error && spec.info && spec.info->misconceptions) {
-      try {
-        m = spec.info->misconceptions(spec.given);
-      } catch (const std::exception&) {
-      }
-    }
-    s.mistakes.push_back(std::move(m));
+    s.mistakes.push_back(mistakes_of(spec, s.results.back()));
+    s.judging.push_back(s.results.back().error ? ProblemJudging{} : prepare_judging(spec, s.results.back().answers));
   }
   return s;
 }
@@ -227,9 +363,12 @@ GradeReport grade(const ProblemSet& set, const Submission& submission, const Sol
     try {
       const std::size_t index = static_cast<std::size_t>(&spec - set.problems.data());
       if (solved && index < solved->results.size()) {
-        pg = grade_problem(spec, solved->results[index], &solved->mistakes[index], student, submission.file, r.errors);
+        pg = grade_problem(spec, solved->results[index], solved->mistakes[index], solved->judging[index], student,
+                           submission.file, r.errors);
       } else {
-        pg = grade_problem(spec, solve_problem(spec, set.file, true), nullptr, student, submission.file, r.errors);
+        const ProblemResult result = solve_problem(spec, set.file, true);
+        const ProblemJudging judging = result.error ? ProblemJudging{} : prepare_judging(spec, result.answers);
+        pg = grade_problem(spec, result, mistakes_of(spec, result), judging, student, submission.file, r.errors);
       }
     } catch (const std::exception& e) {
       pg.id = spec.id;

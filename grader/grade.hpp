@@ -4,6 +4,7 @@
 #pragma once
 
 #include "grader/compare.hpp"
+#include "grader/trivial.hpp"
 #include "solver/derivation/problem_result.hpp"
 #include "solver/kinds/problem_set.hpp"
 
@@ -60,11 +61,21 @@ struct GradeReport {
   std::vector<Diagnostic> errors;  // of the set or the answer file, and unknown ids
 };
 
+// What judging a problem's answers needs besides the key, made once per problem: the kind's
+// scales and each answer's trivial answers (trivial.hpp).
+struct ProblemJudging {
+  AnswerScales scales;
+  std::vector<std::pair<std::string, std::vector<TrivialAnswer>>> trivial;
+  AnswerRules rules(const ProblemSpec& spec, const std::string& name) const;
+};
+ProblemJudging prepare_judging(const ProblemSpec& spec, const Answers& key);
+
 // The set solved once (with derivations), to grade many submissions against: results[i] is
 // set.problems[i]'s.
 struct SolvedSet {
   std::vector<ProblemResult> results;
   std::vector<std::vector<Misconception>> mistakes;  // what common mistakes give, per problem
+  std::vector<ProblemJudging> judging;               // per problem
 };
 SolvedSet solve_for_grading(const ProblemSet& set);
 

@@ -507,6 +507,27 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   const std::string none = run_cli("grade " + set + " " + dir + "/zed.yaml --variants " + dir + "/gen", status);
   EXPECT_NE(status, 0);
   EXPECT_NE(none.find("no generated set for student zed"), std::string::npos) << none;
+  // issue 13: the same roster regenerates the class, redraws included; without --variants or
+  // --roster, a class in which two students' variants from their ids collide (so someone was
+  // redrawn) is refused, never graded against another draw.
+  const std::string by_roster = run_cli("grade " + set + " " + dir + "/answers --roster " + dir + "/roster.csv -o " + dir + "/grades3", status);
+  EXPECT_EQ(status, 0) << by_roster;
+  const std::string book3 = read_text(dir + "/grades3/gradebook.csv");
+  for (const std::string s : {"ana", "ben", "cy", "dee"}) EXPECT_NE(book3.find(s + ",1,1,100"), std::string::npos) << book3;
+  for (const std::string s : {"ana", "ben", "cy", "dee"}) {
+    const std::string alone = run_cli("grade " + set + " " + dir + "/answers/" + s + ".yaml --roster " + dir + "/roster.csv", status);
+    EXPECT_NE(alone.find(": 1 / 1"), std::string::npos) << alone;
+  }
+  const std::string guessed = run_cli("grade " + set + " " + dir + "/answers -o " + dir + "/grades4", status);
+  EXPECT_NE(status, 0);
+  const std::string book4 = read_text(dir + "/grades4/gradebook.csv");
+  EXPECT_NE(book4.find("--variants"), std::string::npos) << book4;
+  for (const std::string s : {"ana", "ben", "cy", "dee"})
+    EXPECT_NE(book4.find(s + ",0,1,0.0,error"), std::string::npos) << s << "\n" << book4;
+  // A student alone without either is graded against the id's draw, and the report says how to
+  // grade a roster-generated class.
+  const std::string single = run_cli("grade " + set + " " + dir + "/answers/ana.yaml", status);
+  EXPECT_NE(single.find("--roster"), std::string::npos) << single;
   // A roster naming a student twice is a located error.
   std::ofstream(dir + "/twice.txt") << "ana\n# comment\n\nana\n";
   const std::string twice = run_cli("generate " + set + " --roster " + dir + "/twice.txt -o " + dir + "/t", status);
@@ -523,7 +544,7 @@ int selftest_count() {
 
 // Every number moved by ten times its tolerance window (alternating signs); for answers
 // compared up to scale, one component.
-YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const Tolerance& tol) {
+YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const ComponentJudge& judge) {
   switch (v.shape) {
     case Value::Shape::Null: return YAML::Node("1");
     case Value::Shape::Bool: return YAML::Node(v.flag ? "false" : "true");
@@ -551,9 +572,11 @@ YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const Tolerance& to
     }
     default: break;
   }
-  const bool per_entry = v.shape == Value::Shape::Matrix;
-  double scale = 0;
-  for (const double x : v.numbers) scale = std::max(scale, std::abs(x));
+  // The grader's own window of each component (at least 1 where the window is 0: an exact 0).
+  const auto off = [&](std::size_t i) {
+    const double w = judge.window(i, v.numbers[i]);
+    return w > 0 ? 10 * w : 1.0;
+  };
   Value p = v;
   p.exact.clear();
   if (spec.kind == AnswerKind::Direction || spec.kind == AnswerKind::Plane || spec.kind == AnswerKind::Point) {
@@ -562,13 +585,10 @@ YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const Tolerance& to
     std::size_t k = 0;
     for (std::size_t i = 1; i < p.numbers.size(); ++i)
       if (std::abs(v.numbers[i]) < std::abs(v.numbers[k])) k = i;
-    p.numbers[k] += 10 * window(v.numbers[k], tol, scale);
+    p.numbers[k] += off(k);
     return answer_node(p);
   }
-  for (std::size_t i = 0; i < p.numbers.size(); ++i) {
-    const double w = window(v.numbers[i], tol, per_entry ? v.numbers[i] : scale);
-    p.numbers[i] += (i % 2 ? -10 : 10) * w;
-  }
+  for (std::size_t i = 0; i < p.numbers.size(); ++i) p.numbers[i] += (i % 2 ? -1 : 1) * off(i);
   return answer_node(p);
 }
 
@@ -619,8 +639,11 @@ TEST_P(SelfTest, KeysGradeFullPerturbedKeysDoNotMalformedAnswersAreUnparseable) 
     EXPECT_DOUBLE_EQ(full.score, full.max_score) << given;
 
     // (b) perturbed by ten times the tolerance: no answer is correct.
+    const ProblemJudging judging = prepare_judging(spec, solved.answers);
     const std::string off = submission_text(spec, [&](const AnswerSpec& a) {
-      return perturbed(*solved.answers.find(a.name), a, spec.tolerance_for(a.name));
+      const Value& key = *solved.answers.find(a.name);
+      const AnswerRules rules = judging.rules(spec, a.name);
+      return perturbed(key, a, ComponentJudge(key, a.kind, rules.tol, rules.scale));
     });
     const GradeReport wrong = grade(set, load_submission_from_string(off, "off.yaml"));
     for (const AnswerGrade& a : wrong.problems[0].answers)

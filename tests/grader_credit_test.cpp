@@ -175,14 +175,17 @@ TEST(GraderCredit, WeightsAndPartialCreditPerComponent) {
     ask: [dot, cross]
     points: {dot: 1, cross: 3}
 )Y";  // a × b = (−3, 6, −3), a·b = 32
-  const GradeReport r = grade_text(set, "answers:\n  v: {dot: 32, cross: [-3, 6, 3]}\n");
+  // Component credit is asked for (issue 13: all-or-nothing is the default, as in WeBWorK).
+  const GradeReport r = grade_text("grading: {partial: true}\n" + set, "answers:\n  v: {dot: 32, cross: [-3, 6, 3]}\n");
   EXPECT_DOUBLE_EQ(answer(r, "dot", "v").score, 1);
   EXPECT_EQ(answer(r, "cross", "v").verdict, Verdict::Partial);
   EXPECT_DOUBLE_EQ(answer(r, "cross", "v").score, 2);  // 2 of 3 components, of 3 points
   EXPECT_DOUBLE_EQ(r.max_score, 4);
-  const GradeReport all_or_nothing = grade_text("grading: {partial: false}\n" + set, "answers:\n  v: {cross: [-3, 6, 3]}\n");
-  EXPECT_EQ(answer(all_or_nothing, "cross", "v").verdict, Verdict::Incorrect);
-  EXPECT_DOUBLE_EQ(all_or_nothing.score, 0);
+  for (const std::string& setting : {std::string(""), std::string("grading: {partial: false}\n")}) {
+    const GradeReport all_or_nothing = grade_text(setting + set, "answers:\n  v: {cross: [-3, 6, 3]}\n");
+    EXPECT_EQ(answer(all_or_nothing, "cross", "v").verdict, Verdict::Incorrect) << setting;
+    EXPECT_DOUBLE_EQ(all_or_nothing.score, 0);
+  }
 }
 
 TEST(GraderCredit, PlanesUpToScaleAndNormalsUpToPositiveScale) {

@@ -58,8 +58,13 @@ struct Backface {
     const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", nullptr);
     const Vec3<Exact> v = g.eye - g.points[0];
     const Exact df = canonical(v.dot(n));
+    // Each mistake with everything it changes downstream, so that it is named only where the
+    // student's other answers show it (a reversed D_f beside a correct view vector is not a
+    // reversed view vector).
     Answers reversed_n;
     reversed_n.set("normal", Value::vector(Vec3<Exact>(-n)));
+    reversed_n.set("df", Value::scalar(-df));
+    reversed_n.set("facing", Value::category(facing_of(-df)));
     Answers reversed_v;
     reversed_v.set("view", Value::vector(Vec3<Exact>(-v)));
     reversed_v.set("df", Value::scalar(-df));
@@ -72,6 +77,12 @@ struct Backface {
              "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the "
              "polygon to the eye, and that flips the sign of D_f.",
              "View vector from p₀ to the eye", reversed_v}};
+  }
+
+  // Grading scales (docs/grading.md §2): D_f = v·n has terms of size max|vᵢ|·max|nᵢ| and its
+  // sign is the whole point of the question.
+  static AnswerScales scales(const Given&, const Answers& key) {
+    return {{"df", uniform_scale(1, largest(key.find("view")) * largest(key.find("normal")), {0})}};
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {

@@ -25,7 +25,7 @@ struct ClipLine {
             {"outcode_q", AnswerKind::BitString, {}, {}},
             {"accept", AnswerKind::Bool, {"outcode_p", "outcode_q"}, {}},
             {"reject", AnswerKind::Bool, {"outcode_p", "outcode_q"}, {}},
-            {"clipped", AnswerKind::Matrix, {"outcode_p", "outcode_q"}, {}}};
+            {"clipped", AnswerKind::Segment, {"outcode_p", "outcode_q"}, {}}};
   }
 
   static Given parse(GivenReader& r, const Conventions&) {

@@ -114,6 +114,17 @@ struct DepthAtPixel {
     return out;
   }
 
+  // Grading scales (docs/grading.md §2): z = (d − a·x − b·y)/c has terms of size
+  // max(|d|, |a·x|, |b·y|)/|c| on the key's plane.
+  static AnswerScales scales(const Given& g, const Answers& key) {
+    const Value* plane = key.find("plane");
+    if (!plane || plane->numbers.size() != 4 || plane->numbers[2] == 0) return {};
+    const std::vector<double>& p = plane->numbers;
+    const double x = to_double(g.pixel(0)), y = to_double(g.pixel(1));
+    const double terms = std::max({std::abs(p[3]), std::abs(p[0] * x), std::abs(p[1] * y)});
+    return {{"z", uniform_scale(1, terms / std::abs(p[2]))}};
+  }
+
   static int orient2d(const Vec3<Exact>& a, const Vec3<Exact>& b, const Vec2<Exact>& p) {
     return exact_sign(edge_function<Exact>(a, b, p));
   }

@@ -10,6 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <any>
 #include <functional>
 #include <string>
@@ -29,7 +30,11 @@ enum class AnswerKind {
   Direction,   // a vector up to positive scale (a normal; "unnormalised" is accepted)
   UnitVector,  // a vector of length 1, componentwise
   Plane,       // a, b, c, d of ax + by + cz = d, up to any non-zero scale
-  Matrix,      // componentwise, row by row
+  Matrix,      // componentwise, row by row (a list of points: each row judged at its own scale)
+  Transform,   // a square homogeneous transformation matrix: entries judged per block (linear
+               // part, translation column, bottom row); a purely linear one may be given as its
+               // linear part (3×3 in 3D) unless the set says grading: {linear_matrix: false}
+  Segment,     // two endpoints (rows), in either order
   Point,       // a point; homogeneous points up to w
   Bool,
   Category,    // one word of a fixed list (front/back/edge_on; 表/裏)
@@ -39,6 +44,29 @@ enum class AnswerKind {
   Polygon,     // vertex list up to cyclic rotation
   BitString    // outcodes
 };
+
+// How finely a numeric answer is judged, per component (docs/grading.md §2): `magnitude` is
+// the size of the terms the component is computed from (the tolerance's absolute floor is
+// rel × magnitude), `thresholds` the values whose side matters (0 for a sign-bearing D_f, ±1
+// for NDC): a component on the other side is never accepted unless the expected one lies
+// within that floor of the threshold. Empty: the grader's default for the answer kind.
+struct AnswerScale {
+  std::vector<double> magnitude;
+  std::vector<std::vector<double>> thresholds;
+};
+using AnswerScales = std::vector<std::pair<std::string, AnswerScale>>;
+// n components of one magnitude, each with the same thresholds.
+inline AnswerScale uniform_scale(std::size_t n, double magnitude, std::vector<double> thresholds = {}) {
+  return {std::vector<double>(n, magnitude),
+          thresholds.empty() ? std::vector<std::vector<double>>{} : std::vector<std::vector<double>>(n, thresholds)};
+}
+// The largest |x| (0 when empty or absent): a vector's scale without squaring it.
+inline double largest(const std::vector<double>& v) {
+  double m = 0;
+  for (const double x : v) m = std::max(m, x < 0 ? -x : x);
+  return m;
+}
+inline double largest(const Value* v) { return v ? largest(v->numbers) : 0.0; }
 
 struct AnswerSpec {
   std::string name;
@@ -71,6 +99,9 @@ struct KindInfo {
   std::function<Answers(const std::any& given, const Answers& student)> carry_forward;
   // Optional. The answers that common mistakes produce.
   std::function<std::vector<Misconception>(const std::any& given)> misconceptions;
+  // Optional. Per answer, how finely it is judged (AnswerScale), from the given and the key;
+  // answers left out get the grader's defaults.
+  std::function<AnswerScales(const std::any& given, const Answers& key)> scales;
   // Optional. The numeric path in a backend (values only, no steps; `frustum solve
   // --precision`, `frustum bench accuracy`): inputs converted once, run() only computes.
   std::function<std::unique_ptr<NumericSolver>(const std::any& given, Precision)> solve_numeric;
@@ -105,6 +136,8 @@ KindInfo make_kind() {
     };
   if constexpr (requires(const G& g) { K::misconceptions(g); })
     k.misconceptions = [](const std::any& g) { return K::misconceptions(std::any_cast<const G&>(g)); };
+  if constexpr (requires(const G& g, const Answers& a) { K::scales(g, a); })
+    k.scales = [](const std::any& g, const Answers& a) { return K::scales(std::any_cast<const G&>(g), a); };
   if constexpr (requires(const G& g) { K::solve_numeric(g, Precision::Double); })
     k.solve_numeric = [](const std::any& g, Precision p) {
       return K::solve_numeric(std::any_cast<const G&>(g), p);

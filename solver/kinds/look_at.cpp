@@ -22,7 +22,7 @@ struct LookAt {
   };
   static std::vector<std::string> given_fields() { return {"eye", "center", "up", "points"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"matrix", AnswerKind::Matrix, {}, {}}, {"points", AnswerKind::Matrix, {"matrix"}, {}}};
+    return {{"matrix", AnswerKind::Transform, {}, {}}, {"points", AnswerKind::Matrix, {"matrix"}, {}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
@@ -41,6 +41,27 @@ struct LookAt {
     out.set("points", transform_points_with_steps(m, points, "A point in view coordinates", "p", steps));
     return out;
   }
+  // The reversed basis: the camera's z axis along the view direction instead of against it (or
+  // the other way round in DirectX), as if the camera looked from eye away from center: the
+  // basis turns half a turn about up.
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    Given reversed = g;
+    reversed.center = Vec3<Exact>(canonical(2 * g.eye(0) - g.center(0)), canonical(2 * g.eye(1) - g.center(1)),
+                                  canonical(2 * g.eye(2) - g.center(2)));
+    try {
+      return {{"reversed look-at basis",
+               g.api == Api::DirectX
+                   ? "Your camera's z axis points away from the scene: DirectX's camera looks down +z, so "
+                     "z = (center − eye)/‖center − eye‖ and x = up × z."
+                   : "Your camera's z axis points at the scene: the camera looks down −z, so "
+                     "z = (eye − center)/‖eye − center‖ and x = up × z.",
+               g.api == Api::DirectX ? "Camera axes (left-handed, looking down +z)" : "Camera axes (right-handed, looking down −z)",
+               solve(reversed, nullptr)}};
+    } catch (const std::exception&) {
+      return {};
+    }
+  }
+
   // Default generator: center in [−2, 2]³, eye a few units away, up (0, 1, 0), and points near
   // the center (in front of the camera); nice: the view direction in the xz-plane with an
   // integer length, so every entry is rational; hard: up nearly along the view direction.

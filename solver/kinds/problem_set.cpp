@@ -186,16 +186,20 @@ Grading read_grading(const YAML::Node& n, const std::string& file, const std::st
                      Grading base) {
   if (!n.IsDefined() || n.IsNull()) return base;
   if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {ecf: 0.5, partial: true}");
-  check_keys(n, {"ecf", "partial"}, file, field);
+  check_keys(n, {"ecf", "partial", "linear_matrix"}, file, field);
   if (n["ecf"].IsDefined()) {
     base.ecf = read_nonnegative(n["ecf"], file, field + ".ecf");
     if (base.ecf > 1) fail_at(n["ecf"], file, field + ".ecf", "is a fraction of the points, from 0 to 1");
   }
-  if (n["partial"].IsDefined()) {
-    const std::string v = read_string(n["partial"], file, field + ".partial");
-    if (v != "true" && v != "false") fail_at(n["partial"], file, field + ".partial", "must be true or false");
-    base.partial = v == "true";
-  }
+  const auto flag = [&](const char* key, bool& out) {
+    if (!n[key].IsDefined()) return;
+    const std::string f = field + "." + key;
+    const std::string v = read_string(n[key], file, f);
+    if (v != "true" && v != "false") fail_at(n[key], file, f, "must be true or false");
+    out = v == "true";
+  };
+  flag("partial", base.partial);
+  flag("linear_matrix", base.linear_matrix);
   return base;
 }
 

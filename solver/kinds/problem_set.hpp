@@ -17,18 +17,26 @@
 
 namespace frustum {
 
-// Grading defaults (problem-format.md: relative 1e-3 like WeBWorK, with an absolute floor).
+// Grading defaults (docs/grading.md): relative 1e-3 like WeBWorK, per component; the absolute
+// floor comes from the problem's own magnitudes (rel × what the component is computed from),
+// so `abs` is 0 unless the instructor sets it.
 inline constexpr double kRelTolDefault = 1e-3;
-inline constexpr double kAbsTolDefault = 1e-6;
+inline constexpr double kAbsTolDefault = 0;
 
 // Error carried forward: the fraction of an answer's points given when it follows correctly
 // from the student's own wrong earlier answer.
 inline constexpr double kEcfCreditDefault = 0.5;
+// Vectors and matrices are all-or-nothing by default, like WeBWorK and PrairieLearn's matrix
+// input; `grading: {partial: true}` gives credit per component that shows work.
+inline constexpr bool kPartialDefault = false;
+// A purely linear 3D (2D) transform may be answered with its 3×3 (2×2) linear part.
+inline constexpr bool kLinearMatrixDefault = true;
 
-// Accepted window for a number e (the student's g is right when |g − e| ≤ window):
-//   rel:       max(abs, rel·|e|)            (vectors: rel·max|eᵢ|, matrices: per entry)
-//   sigfigs:   max(abs, ½·10^(⌊log₁₀|e|⌋ − sigfigs + 1))   half a unit in the last digit
-//   decimals:  max(abs, ½·10^(−decimals))
+// Accepted window for component i of an expected value e (docs/grading.md §2), with mᵢ the
+// magnitude of the terms it is computed from (AnswerScale):
+//   rel:       max(rel·|eᵢ|, rel·mᵢ, abs)
+//   sigfigs:   max(½·10^(⌊log₁₀|eᵢ|⌋ − sigfigs + 1), rel·mᵢ, abs)   half a unit in the last digit
+//   decimals:  max(½·10^(−decimals), rel·mᵢ, abs)
 struct Tolerance {
   double rel = kRelTolDefault;
   double abs = kAbsTolDefault;
@@ -37,8 +45,9 @@ struct Tolerance {
 };
 
 struct Grading {
-  double ecf = kEcfCreditDefault;  // 0 turns error carried forward off
-  bool partial = true;             // per-component partial credit for vectors and matrices
+  double ecf = kEcfCreditDefault;              // 0 turns error carried forward off
+  bool partial = kPartialDefault;              // credit per component for vectors and matrices
+  bool linear_matrix = kLinearMatrixDefault;   // 3×3 accepted for a purely linear 3D transform
 };
 
 struct ProblemSpec {

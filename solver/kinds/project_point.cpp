@@ -35,7 +35,7 @@ struct ProjectPoint {
     return {{"clip", AnswerKind::Point, {}, {}},
             {"ndc", AnswerKind::Vector, {"clip"}, {}},
             {"window", AnswerKind::Vector, {"ndc"}, {}},
-            {"inside", AnswerKind::Bool, {"clip"}, {}}};
+            {"inside", AnswerKind::Bool, {"ndc"}, {}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
@@ -57,21 +57,28 @@ struct ProjectPoint {
     return g;
   }
 
-  // Error carried forward: NDC by dividing the student's clip coordinates, the window from
-  // their NDC.
+  // Error carried forward: NDC by dividing the student's clip coordinates, the window and
+  // inside from their NDC.
   static Answers carry_forward(const Given& g, const Answers& student) {
     Answers out;
     std::optional<Vec3<Exact>> ndc;
     if (const auto c = carried(student, "clip", 4); c && exact_sign((*c)[3]) > 0) {
       ndc = Vec3<Exact>(canonical((*c)[0] / (*c)[3]), canonical((*c)[1] / (*c)[3]), canonical((*c)[2] / (*c)[3]));
       out.set("ndc", Value::vector(*ndc));
+    } else if (c) {
+      out.set("inside", Value::boolean(false));  // w ≤ 0: behind the eye
     }
     if (const Value* n = student.find("ndc"); n && n->exact.size() == 3) ndc = Vec3<Exact>(n->exact[0], n->exact[1], n->exact[2]);
     if (ndc) {
       const Vec3<Exact> w = viewport(*ndc, g.width, g.height, g.api);
       out.set("window", Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
+      out.set("inside", Value::boolean(ndc_inside(*ndc, g.api)));
     }
     return out;
+  }
+
+  static AnswerScales scales(const Given& g, const Answers&) {
+    return {{"ndc", ndc_scale(g.api)}, {"window", window_scale(g.width, g.height)}};
   }
 
   static std::vector<Misconception> misconceptions(const Given& g) {
@@ -93,37 +100,17 @@ struct ProjectPoint {
         nodiv.set("ndc", Value::vector(c));
         const Vec3<Exact> w = viewport(c, g.width, g.height, g.api);
         nodiv.set("window", Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
+        nodiv.set("inside", Value::boolean(ndc_inside(c, g.api)));
         out.push_back({"missing perspective divide", "You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
                        "Perspective divide", nodiv});
       }
     } catch (const std::exception&) {
     }
-    if (g.projection.fovy && g.projection.aspect) {
-      Given radians = g;
-      const Exact as_degrees = canonical(*g.projection.fovy * 180 / GiNaC::Pi);
-      if (!canonical(GiNaC::cos(as_degrees / 2)).is_zero()) {
-        radians.projection.fovy = as_degrees;
-        radians.projection.volume = perspective_volume(as_degrees, *g.projection.aspect, g.projection.volume.near, g.projection.volume.far);
-        variant("degrees taken as radians", "Your numbers come from using the angle in degrees as if it were radians.",
-                "The frustum of perspective(fovy, aspect, near, far)", radians);
-      }
-      // fovx: the angle spans the width, so r = n·tan(θ/2) and t = r / aspect.
-      Given fovx = g;
-      const Exact t = g.projection.volume.top;
-      fovx.projection.volume.right = t;
-      fovx.projection.volume.left = canonical(-t);
-      fovx.projection.volume.top = canonical(t / *g.projection.aspect);
-      fovx.projection.volume.bottom = canonical(-t / *g.projection.aspect);
-      variant("fovx for fovy", "You used the angle as the horizontal field of view; perspective() takes the vertical one (fovy).",
-              "The frustum of perspective(fovy, aspect, near, far)", fovx);
+    for (const ProjectionMistake& m : projection_mistakes(g.projection)) {
+      Given changed = g;
+      changed.projection = m.projection;
+      variant(m.name, m.feedback, m.step.empty() ? "Clip coordinates" : m.step, changed);
     }
-    // near/far sign: the planes' z coordinates (−n, −f) put into the matrix instead of the
-    // distances n, f.
-    Given signs = g;
-    signs.projection.volume.near = canonical(-g.projection.volume.near);
-    signs.projection.volume.far = canonical(-g.projection.volume.far);
-    variant("near/far sign", "near and far are distances in front of the eye (positive); you used the planes' z coordinates −n and −f.",
-            "Clip coordinates", signs);
     return out;
   }
 

@@ -16,13 +16,27 @@ struct ProjectionMatrix {
     Api api;
   };
   static std::vector<std::string> given_fields() { return {"perspective", "frustum", "ortho"}; }
-  static std::vector<AnswerSpec> answers() { return {{"matrix", AnswerKind::Matrix, {}, {}}}; }
+  static std::vector<AnswerSpec> answers() { return {{"matrix", AnswerKind::Transform, {}, {}}}; }
   static Given parse(GivenReader& r, const Conventions& c) { return {read_projection(r, c), c.api}; }
   static Answers solve(const Given& g, Derivation* steps) {
     Answers out;
     out.set("matrix", matrix_value(paper_form(projection_with_steps(g.projection, g.api, steps), g.api)));
     return out;
   }
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    std::vector<Misconception> out;
+    for (const ProjectionMistake& m : projection_mistakes(g.projection)) {
+      try {
+        Given changed = g;
+        changed.projection = m.projection;
+        out.push_back({m.name, m.feedback, m.step.empty() ? (g.projection.type == ProjectionSpec::Type::Ortho ? "Orthographic projection matrix" : "Perspective projection matrix") : m.step, solve(changed, nullptr)});
+      } catch (const std::exception&) {
+        // A mistake that leads to no volume (near = far) cannot be matched.
+      }
+    }
+    return out;
+  }
+
   // Default generator: perspective (fovy, aspect, near, far), frustum or ortho with integer
   // bounds; nice: fovy 90° or 60°; hard: a tiny near plane (1/100) against a far one of 1000.
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {

@@ -25,9 +25,9 @@ struct Transform {
   };
   static std::vector<std::string> given_fields() { return {"dim", "steps", "points"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"matrix", AnswerKind::Matrix, {}, {}},
+    return {{"matrix", AnswerKind::Transform, {}, {}},
             {"points", AnswerKind::Matrix, {"matrix"}, {}},
-            {"inverse", AnswerKind::Matrix, {"matrix"}, {}}};
+            {"inverse", AnswerKind::Transform, {"matrix"}, {}}};
   }
 
   static TransformStep read_step(GivenReader& s, int dim, const Conventions& c) {

@@ -62,16 +62,36 @@ struct Vectors {
     Answers triangle;
     triangle.set("area", Value::scalar(canonical(area / 2)));
     const Exact cos = canonical(g.a.dot(g.b) / (norm(g.a) * norm(g.b)));
-    Answers radians;
-    radians.set("angle", Value::scalar(canonical(exact_acos(cos))));
+    // The angle in the other unit than the set's (degrees ↔ radians).
+    const bool degrees = g.angles == AngleUnit::Degrees;
+    Answers other_unit;
+    const Exact rad = canonical(exact_acos(cos));
+    other_unit.set("angle", Value::scalar(degrees ? rad : canonical(rad * 180 / GiNaC::Pi)));
     Answers swapped;
     swapped.set("sin", Value::scalar(cos));
     return {{"reversed cross product", "You computed b × a = −(a × b): the cross product is anti-commutative.",
              "Cross product", reversed},
             {"triangle instead of parallelogram", "That is half the area: ‖a × b‖ is the parallelogram's area, "
              "the triangle's is half of it.", "Area of the parallelogram", triangle},
-            {"radians instead of degrees", "Your angle is in radians; the problem asks for degrees.", "Angle", radians},
+            {degrees ? "radians instead of degrees" : "degrees instead of radians",
+             degrees ? "Your angle is in radians; the problem asks for degrees."
+                     : "Your angle is in degrees; the problem asks for radians.",
+             "Angle", other_unit},
             {"cos for sin", "That is cos θ = a·b/(‖a‖‖b‖); sin θ uses ‖a × b‖.", "Sine of the angle", swapped}};
+  }
+
+  // Grading scales (docs/grading.md §2): every product's terms are of size max|aᵢ|·max|bᵢ|;
+  // dot and cos carry a sign (acute or obtuse), which a wrong answer never gets for free.
+  static AnswerScales scales(const Given& g, const Answers& key) {
+    const double ab = largest(doubles(g.a)) * largest(doubles(g.b));
+    const double degree = g.angles == AngleUnit::Degrees ? 1.0 : 3.141592653589793 / 180;
+    return {{"dot", uniform_scale(1, ab, {0})},
+            {"cross", uniform_scale(3, ab)},
+            {"area", uniform_scale(1, ab)},
+            {"sin", uniform_scale(1, 1)},
+            {"cos", uniform_scale(1, 1, {0})},
+            {"angle", uniform_scale(1, std::max(degree, largest(key.find("angle"))))},
+            {"unit_normal", uniform_scale(3, 1)}};
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {

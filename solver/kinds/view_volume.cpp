@@ -21,8 +21,8 @@ struct ViewVolume {
   };
   static std::vector<std::string> given_fields() { return {"d", "a", "b", "z_min", "z_max", "point"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"scale_matrix", AnswerKind::Matrix, {}, {}},
-            {"perspective_matrix", AnswerKind::Matrix, {}, {}},
+    return {{"scale_matrix", AnswerKind::Transform, {}, {}},
+            {"perspective_matrix", AnswerKind::Transform, {}, {}},
             {"point", AnswerKind::Vector, {"scale_matrix", "perspective_matrix"}, {}}};
   }
 

@@ -187,4 +187,57 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   return m;
 }
 
+std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
+  std::vector<ProjectionMistake> out;
+  const std::string frustum_step = "The frustum of perspective(fovy, aspect, near, far)";
+  if (p.fovy && p.aspect) {
+    const Exact as_degrees = canonical(*p.fovy * 180 / GiNaC::Pi);
+    if (!canonical(GiNaC::cos(as_degrees / 2)).is_zero()) {
+      ProjectionSpec radians = p;
+      radians.fovy = as_degrees;
+      radians.volume = perspective_volume(as_degrees, *p.aspect, p.volume.near, p.volume.far);
+      out.push_back({"degrees taken as radians", "Your numbers come from using the angle in degrees as if it were radians.",
+                     frustum_step, radians});
+    }
+    // fovx: the angle spans the width, so r = n·tan(θ/2) and t = r / aspect.
+    ProjectionSpec fovx = p;
+    const Exact t = p.volume.top;
+    fovx.volume.right = t;
+    fovx.volume.left = canonical(-t);
+    fovx.volume.top = canonical(t / *p.aspect);
+    fovx.volume.bottom = canonical(-t / *p.aspect);
+    out.push_back({"fovx for fovy",
+                   "You used the angle as the horizontal field of view; perspective() takes the vertical one (fovy).",
+                   frustum_step, fovx});
+  }
+  // near/far sign: the planes' z coordinates (−n, −f) put into the matrix instead of the
+  // distances n, f.
+  ProjectionSpec signs = p;
+  signs.volume.near = canonical(-p.volume.near);
+  signs.volume.far = canonical(-p.volume.far);
+  out.push_back({"near/far sign",
+                 "near and far are distances in front of the eye (positive); you used the planes' z coordinates −n and −f.",
+                 "", signs});
+  return out;
+}
+
+AnswerScale ndc_scale(Api api) {
+  AnswerScale s = uniform_scale(3, 1, {-1, 1});
+  if (api == Api::DirectX) s.thresholds[2] = {0, 1};
+  return s;
+}
+
+AnswerScale window_scale(const Exact& width, const Exact& height) {
+  const double w = to_double(width), h = to_double(height);
+  return {{w / 2, h / 2, 1}, {{0, w}, {0, h}, {0, 1}}};
+}
+
+bool ndc_inside(const Vec3<Exact>& ndc, Api api) {
+  for (int i = 0; i < 3; ++i) {
+    const Exact low = i == 2 && api == Api::DirectX ? Exact(0) : Exact(-1);
+    if (exact_sign(ndc(i) - low) < 0 || exact_sign(1 - ndc(i)) < 0) return false;
+  }
+  return true;
+}
+
 }  // namespace frustum

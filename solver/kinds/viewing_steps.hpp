@@ -3,6 +3,7 @@
 // and matrices shown as on paper.
 #pragma once
 
+#include "solver/kinds/kind.hpp"
 #include "solver/derivation/derivation.hpp"
 #include "solver/derivation/value.hpp"
 #include "solver/viewing/projection.hpp"
@@ -53,5 +54,23 @@ MathText matrix_text(const MatX<Exact>& m);
 
 // "M = " in the conventions: DirectX prints the row-vector matrix (p′ = p·M).
 std::string multiply_note(Api api);
+
+// Common mistakes in setting up a projection, each as the projection it amounts to: degrees
+// taken as radians, fovx for fovy, the planes' z coordinates for near and far. `step` is the
+// derivation step where it goes wrong ("" where the matrix itself is).
+struct ProjectionMistake {
+  std::string name, feedback, step;
+  ProjectionSpec projection;
+};
+std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p);
+
+// Grading scales (docs/grading.md §2) of NDC — each coordinate of size 1, on the side of ±1
+// that decides inside (DirectX's z of 0 and 1) — and of window coordinates: x and y of size
+// width/2 and height/2 against the viewport's edges, the depth of size 1 against 0 and 1.
+AnswerScale ndc_scale(Api api);
+AnswerScale window_scale(const Exact& width, const Exact& height);
+// Inside the NDC volume (a student's NDC, for error carried forward): |x|, |y| ≤ 1 and z in
+// [−1, 1] ([0, 1] in DirectX), decided exactly.
+bool ndc_inside(const Vec3<Exact>& ndc, Api api);
 
 }  // namespace frustum

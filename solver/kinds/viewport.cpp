@@ -27,6 +27,8 @@ struct Viewport {
     return g;
   }
 
+  static AnswerScales scales(const Given& g, const Answers&) { return {{"window", window_scale(g.width, g.height)}}; }
+
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
     return viewport_numeric(g.ndc, g.width, g.height, g.api, p);
   }

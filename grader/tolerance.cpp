@@ -1,0 +1,111 @@
+#include "grader/tolerance.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frustum {
+
+double max_abs(const std::vector<double>& v, std::size_t begin, std::size_t end) {
+  double m = 0;
+  for (std::size_t i = begin; i < std::min(end, v.size()); ++i) m = std::max(m, std::abs(v[i]));
+  return m;
+}
+
+double window(double expected, const Tolerance& tol, double magnitude) {
+  const double floor = std::max(tol.abs, tol.rel * std::abs(magnitude));
+  if (tol.decimals) return std::max(floor, 0.5 * std::pow(10.0, -*tol.decimals));
+  if (tol.sigfigs) {
+    if (expected == 0) return floor;
+    const double digit = std::floor(std::log10(std::abs(expected)));
+    return std::max(floor, 0.5 * std::pow(10.0, digit - *tol.sigfigs + 1));
+  }
+  return std::max(floor, tol.rel * std::abs(expected));
+}
+
+bool close(double expected, double got, const Tolerance& tol, double magnitude) {
+  if (!std::isfinite(got) || !std::isfinite(expected)) return false;
+  // A little slack for the rounding of the window itself (0.5 at the last digit).
+  return std::abs(got - expected) <= window(expected, tol, magnitude) * (1 + 1e-12);
+}
+
+namespace {
+
+// Default magnitudes (docs/grading.md §2): what each component is computed from.
+std::vector<double> default_magnitudes(const Value& e, AnswerKind kind) {
+  const std::vector<double>& x = e.numbers;
+  std::vector<double> m(x.size());
+  const bool rows = e.shape == Value::Shape::Matrix && e.cols > 0;
+  if (kind == AnswerKind::Transform && rows && e.rows == e.cols && e.rows >= 2) {
+    // Blocks of a homogeneous matrix: the linear part, the translation column, the bottom row.
+    const std::size_t n = static_cast<std::size_t>(e.rows);
+    enum Block { kLinear, kTranslation, kBottom };
+    const auto block = [n](std::size_t i, std::size_t j) {
+      return i == n - 1 ? kBottom : j == n - 1 ? kTranslation : kLinear;
+    };
+    double size[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        size[block(i, j)] = std::max(size[block(i, j)], std::abs(x[i * n + j]));
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) m[i * n + j] = size[block(i, j)];
+    return m;
+  }
+  if (rows && kind != AnswerKind::Transform) {
+    const std::size_t c = static_cast<std::size_t>(e.cols);
+    for (std::size_t r = 0; r * c < x.size(); ++r) {
+      const double row = max_abs(x, r * c, (r + 1) * c);
+      for (std::size_t j = r * c; j < std::min(x.size(), (r + 1) * c); ++j) m[j] = row;
+    }
+    return m;
+  }
+  if (e.shape == Value::Shape::Scalar) {
+    for (std::size_t i = 0; i < x.size(); ++i) m[i] = std::abs(x[i]);
+    return m;
+  }
+  std::fill(m.begin(), m.end(), max_abs(x));
+  return m;
+}
+
+}  // namespace
+
+ComponentJudge::ComponentJudge(const Value& expected, AnswerKind kind, const Tolerance& tol,
+                               const AnswerScale* declared)
+    : tol_(tol) {
+  const std::size_t n = expected.numbers.size();
+  if (declared && declared->magnitude.size() == n)
+    magnitude_ = declared->magnitude;
+  else
+    magnitude_ = default_magnitudes(expected, kind);
+  if (declared && declared->thresholds.size() == n) thresholds_ = &declared->thresholds;
+}
+
+double ComponentJudge::noise(std::size_t i) const {
+  return i < magnitude_.size() ? tol_.rel * magnitude_[i] : 0.0;
+}
+
+double ComponentJudge::window(std::size_t i, double e) const {
+  return frustum::window(e, tol_, i < magnitude_.size() ? magnitude_[i] : std::abs(e));
+}
+
+bool ComponentJudge::ok(std::size_t i, double e, double g) const {
+  const double m = i < magnitude_.size() ? magnitude_[i] : std::abs(e);
+  if (!close(e, g, tol_, m)) return false;
+  if (!thresholds_) return true;
+  // The side of each threshold: a student's number strictly on the other side is wrong unless
+  // the expected one is within the noise floor of the threshold (its side is then not
+  // meaningful at the problem's precision).
+  for (const double t : (*thresholds_)[i]) {
+    const double de = e - t, dg = g - t;
+    if (((de > 0 && dg < 0) || (de < 0 && dg > 0)) && std::abs(de) > tol_.rel * m) return false;
+  }
+  return true;
+}
+
+bool ComponentJudge::all(const std::vector<double>& e, const std::vector<double>& g) const {
+  if (e.size() != g.size()) return false;
+  for (std::size_t i = 0; i < e.size(); ++i)
+    if (!ok(i, e[i], g[i])) return false;
+  return true;
+}
+
+}  // namespace frustum

@@ -1,0 +1,35 @@
+// Answers that take no work (docs/grading.md §4): the zero vector or matrix, the identity, a
+// list copied from the given, the transposed key. A component that one of them also gets
+// right earns no partial credit, and an answer that is one of them as a whole is named.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+#include <vector>
+
+#include "solver/derivation/value.hpp"
+#include "solver/kinds/kind.hpp"
+
+namespace frustum {
+
+struct TrivialAnswer {
+  std::string name;      // "identity matrix" (a misconception name, translated in feedback)
+  std::string feedback;  // what it is, for the student
+  Value value;
+};
+
+// Every list of numbers in a problem's `given`, by field path ("points", "camera.eye"); a
+// list of lists is one matrix (rows). Items that are not numbers are left out.
+struct GivenList {
+  std::string field;
+  Value value;
+};
+std::vector<GivenList> given_lists(const YAML::Node& given);
+
+// The trivial answers of the shape of `key` (none for scalars and word answers); those equal
+// to the key are left out — a key that is trivial is simply right.
+std::vector<TrivialAnswer> trivial_answers(const Value& key, AnswerKind kind,
+                                           const std::vector<GivenList>& given, Api api);
+
+}  // namespace frustum
