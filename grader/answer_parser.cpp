@@ -1,10 +1,12 @@
 #include "grader/answer_parser.hpp"
 
 #include "solver/util/expression.hpp"
+#include "solver/util/work_budget.hpp"
 
 #include <algorithm>
 #include <optional>
 #include <cctype>
+#include <cmath>
 
 namespace frustum {
 
@@ -38,7 +40,11 @@ struct Numbers {
   std::string error;
 };
 
-Exact parse_one(const std::string& text, std::string& error, const ExpressionOptions& opts = {}) {
+// An answer too complex to simplify within its work budget keeps only its value, computed
+// with this many digits and rounded to a double; parse_answer then drops the exact form.
+constexpr long kNumericFallbackDigits = 40;
+
+Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget) {
   // YAML's spellings of NaN and infinity (the expression parser knows nan, inf and ∞).
   const std::string t = trim_lower(text);
   const std::string body = !t.empty() && (t[0] == '+' || t[0] == '-') ? t.substr(1) : t;
@@ -46,7 +52,7 @@ Exact parse_one(const std::string& text, std::string& error, const ExpressionOpt
     error = quote_excerpt(text) + " is not a finite number";
     return 0;
   }
-  const ExpressionResult r = parse_expression(text, opts);
+  const ExpressionResult r = parse_expression(text);
   if (!r) {
     error = "cannot read " + quote_excerpt(text) + ": " + r.error;
     return 0;
@@ -55,7 +61,11 @@ Exact parse_one(const std::string& text, std::string& error, const ExpressionOpt
     error = quote_excerpt(text) + " is not a real number";
     return 0;
   }
-  return canonical(*r.value);
+  const Exact e = canonical(*r.value, budget);
+  if (!budget.exceeded()) return e;
+  const double v = to_double(e);  // kNumericFallbackDigits digits, then rounded
+  if (!std::isfinite(v)) error = quote_excerpt(text) + " cannot be evaluated as a number";
+  return std::isfinite(v) ? exact_from_double(v) : Exact(0);
 }
 
 // Splits "(a, b, c)" or "a, b, c" at top-level commas.
@@ -81,7 +91,7 @@ std::vector<std::string> split_list(std::string s) {
   return out;
 }
 
-Numbers read_numbers(const YAML::Node& n) {
+Numbers read_numbers(const YAML::Node& n, WorkBudget& budget) {
   Numbers out;
   std::vector<std::string> items;
   if (n.IsSequence()) {
@@ -99,14 +109,14 @@ Numbers read_numbers(const YAML::Node& n) {
     return out;
   }
   for (const std::string& item : items) {
-    out.values.push_back(parse_one(item, out.error));
+    out.values.push_back(parse_one(item, out.error, budget));
     if (!out.error.empty()) return out;
   }
   return out;
 }
 
 // "x + y − z = −6" → [a, b, c, d] of ax + by + cz = d.
-Numbers read_plane_equation(const std::string& text) {
+Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
   Numbers out;
   ExpressionOptions opts;
   for (const char* name : {"x", "y", "z"}) opts.symbols.emplace(name, GiNaC::symbol(name));
@@ -145,7 +155,9 @@ Numbers read_plane_equation(const std::string& text) {
       return out;
     }
   out.values.push_back(-constant);
-  for (Exact& c : out.values) c = canonical(c);
+  for (Exact& c : out.values) c = canonical(c, budget);
+  if (budget.exceeded())
+    for (Exact& c : out.values) c = exact_from_double(to_double(c));
   return out;
 }
 
@@ -190,6 +202,7 @@ std::string raw_text(const YAML::Node& node) {
 
 ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
   ParsedAnswer p;
+  WorkBudget budget;  // one for the whole answer, shared by its numbers
   p.raw = raw_text(node);
   if (p.raw.size() > kMaxExpressionLength * 4) {
     p.error = "the answer is too long (more than " + std::to_string(kMaxExpressionLength * 4) +
@@ -217,7 +230,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
         return p;
       }
       std::string error;
-      const Exact v = parse_one(node.Scalar(), error);
+      const Exact v = parse_one(node.Scalar(), error, budget);
       if (!error.empty()) {
         p.error = error;
         return p;
@@ -229,7 +242,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
     case AnswerKind::Direction:
     case AnswerKind::UnitVector:
     case AnswerKind::Point: {
-      const Numbers n = read_numbers(node);
+      const Numbers n = read_numbers(node, budget);
       if (!n.error.empty()) {
         p.error = n.error;
         return p;
@@ -239,8 +252,8 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
     }
     case AnswerKind::Plane: {
       const Numbers n = node.IsScalar() && node.Scalar().find('=') != std::string::npos
-                            ? read_plane_equation(node.Scalar())
-                            : read_numbers(node);
+                            ? read_plane_equation(node.Scalar(), budget)
+                            : read_numbers(node, budget);
       if (!n.error.empty()) {
         p.error = n.error;
         return p;
@@ -259,7 +272,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       }
       std::vector<std::vector<Exact>> rows;
       for (std::size_t r = 0; r < node.size(); ++r) {
-        const Numbers n = read_numbers(node[r]);
+        const Numbers n = read_numbers(node[r], budget);
         if (!n.error.empty()) {
           p.error = "row " + std::to_string(r + 1) + ": " + n.error;
           return p;
@@ -312,7 +325,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       }
       std::vector<std::vector<Exact>> rows;
       for (std::size_t r = 0; r < node.size(); ++r) {
-        const Numbers n = read_numbers(node[r]);
+        const Numbers n = read_numbers(node[r], budget);
         if (!n.error.empty() || (!rows.empty() && n.values.size() != rows[0].size())) {
           p.error = "vertex " + std::to_string(r + 1) + ": " + (n.error.empty() ? "wrong number of coordinates" : n.error);
           return p;
@@ -379,6 +392,11 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       p.value = Value::word_map(entries);
       break;
     }
+  }
+  if (budget.exceeded()) {
+    p.value.exact.clear();
+    p.note = "too complex to compare exactly, so its value was computed to " +
+             std::to_string(kNumericFallbackDigits) + " significant digits and compared within the tolerance";
   }
   p.ok = true;
   return p;

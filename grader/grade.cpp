@@ -179,6 +179,7 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
         }
       }
     }
+    if (!parsed[i].note.empty()) ag.feedback = parsed[i].note + (ag.feedback.empty() ? "" : "; " + ag.feedback);
     if (ag.verdict != Verdict::Correct) ag.derivation = solved.derivation.steps_for(name);
     pg.score += ag.score;
     pg.answers.push_back(std::move(ag));
