@@ -1,10 +1,12 @@
 #include "grader/answer_parser.hpp"
 
 #include "solver/util/expression.hpp"
+#include "solver/util/work_budget.hpp"
 
 #include <algorithm>
 #include <optional>
 #include <cctype>
+#include <cmath>
 
 namespace frustum {
 
@@ -38,7 +40,11 @@ struct Numbers {
   std::string error;
 };
 
-Exact parse_one(const std::string& text, std::string& error, const ExpressionOptions& opts = {}) {
+// An answer too complex to simplify within its work budget keeps only its value, computed
+// with this many digits and rounded to a double; parse_answer then drops the exact form.
+constexpr long kNumericFallbackDigits = 40;
+
+Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget) {
   // YAML's spellings of NaN and infinity (the expression parser knows nan, inf and ∞).
   const std::string t = trim_lower(text);
   const std::string body = !t.empty() && (t[0] == '+' || t[0] == '-') ? t.substr(1) : t;
@@ -46,7 +52,7 @@ Exact parse_one(const std::string& text, std::string& error, const ExpressionOpt
     error = quote_excerpt(text) + " is not a finite number";
     return 0;
   }
-  const ExpressionResult r = parse_expression(text, opts);
+  const ExpressionResult r = parse_expression(text);
   if (!r) {
     error = "cannot read " + quote_excerpt(text) + ": " + r.error;
     return 0;
@@ -55,7 +61,11 @@ Exact parse_one(const std::string& text, std::string& error, const ExpressionOpt
     error = quote_excerpt(text) + " is not a real number";
     return 0;
   }
-  return canonical(*r.value);
+  const Exact e = canonical(*r.value, budget);
+  if (!budget.exceeded()) return e;
+  const double v = to_double(e);  // kNumericFallbackDigits digits, then rounded
+  if (!std::isfinite(v)) error = quote_excerpt(text) + " cannot be evaluated as a number";
+  return std::isfinite(v) ? exact_from_double(v) : Exact(0);
 }
 
 bool wrapped(const std::string& s) {
@@ -110,7 +120,7 @@ std::vector<std::string> split_rows(std::string s) {
   return rows;
 }
 
-Numbers read_numbers(const YAML::Node& n) {
+Numbers read_numbers(const YAML::Node& n, WorkBudget& budget) {
   Numbers out;
   std::vector<std::string> items;
   if (n.IsSequence()) {
@@ -128,14 +138,14 @@ Numbers read_numbers(const YAML::Node& n) {
     return out;
   }
   for (const std::string& item : items) {
-    out.values.push_back(parse_one(item, out.error));
+    out.values.push_back(parse_one(item, out.error, budget));
     if (!out.error.empty()) return out;
   }
   return out;
 }
 
 // "x + y − z = −6" → [a, b, c, d] of ax + by + cz = d.
-Numbers read_plane_equation(const std::string& text) {
+Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
   Numbers out;
   ExpressionOptions opts;
   for (const char* name : {"x", "y", "z"}) opts.symbols.emplace(name, GiNaC::symbol(name));
@@ -174,7 +184,9 @@ Numbers read_plane_equation(const std::string& text) {
       return out;
     }
   out.values.push_back(-constant);
-  for (Exact& c : out.values) c = canonical(c);
+  for (Exact& c : out.values) c = canonical(c, budget);
+  if (budget.exceeded())
+    for (Exact& c : out.values) c = exact_from_double(to_double(c));
   return out;
 }
 
@@ -185,7 +197,7 @@ struct Rows {
 
 // A matrix or a vertex list: a YAML list of rows (each a list or "(a, b)"), or one text in a
 // usual written form ("(0, 4), (8, 8)").
-Rows read_rows(const YAML::Node& node, const std::string& item) {
+Rows read_rows(const YAML::Node& node, const std::string& item, WorkBudget& budget) {
   Rows out;
   std::vector<YAML::Node> rows;
   if (node.IsSequence() && node.size() > 0) {
@@ -198,7 +210,7 @@ Rows read_rows(const YAML::Node& node, const std::string& item) {
     return out;
   }
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    const Numbers n = read_numbers(rows[r]);
+    const Numbers n = read_numbers(rows[r], budget);
     if (!n.error.empty()) {
       out.error = item + " " + std::to_string(r + 1) + ": " + n.error;
       return out;
@@ -253,6 +265,7 @@ std::string raw_text(const YAML::Node& node) {
 
 ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
   ParsedAnswer p;
+  WorkBudget budget;  // one for the whole answer, shared by its numbers
   p.raw = raw_text(node);
   if (p.raw.size() > kMaxExpressionLength * 4) {
     p.error = "the answer is too long (more than " + std::to_string(kMaxExpressionLength * 4) +
@@ -280,7 +293,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
         return p;
       }
       std::string error;
-      const Exact v = parse_one(node.Scalar(), error);
+      const Exact v = parse_one(node.Scalar(), error, budget);
       if (!error.empty()) {
         p.error = error;
         return p;
@@ -292,7 +305,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
     case AnswerKind::Direction:
     case AnswerKind::UnitVector:
     case AnswerKind::Point: {
-      const Numbers n = read_numbers(node);
+      const Numbers n = read_numbers(node, budget);
       if (!n.error.empty()) {
         p.error = n.error;
         return p;
@@ -302,8 +315,8 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
     }
     case AnswerKind::Plane: {
       const Numbers n = node.IsScalar() && node.Scalar().find('=') != std::string::npos
-                            ? read_plane_equation(node.Scalar())
-                            : read_numbers(node);
+                            ? read_plane_equation(node.Scalar(), budget)
+                            : read_numbers(node, budget);
       if (!n.error.empty()) {
         p.error = n.error;
         return p;
@@ -320,7 +333,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
     case AnswerKind::Segment:
     case AnswerKind::Polygon: {
       const bool vertices = spec.kind == AnswerKind::Polygon || spec.kind == AnswerKind::Segment;
-      const Rows rows = read_rows(node, vertices ? "vertex" : "row");
+      const Rows rows = read_rows(node, vertices ? "vertex" : "row", budget);
       if (!rows.error.empty()) {
         p.error = rows.error;
         return p;
@@ -417,6 +430,11 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       p.value = Value::word_map(entries);
       break;
     }
+  }
+  if (budget.exceeded()) {
+    p.value.exact.clear();
+    p.note = "too complex to compare exactly, so its value was computed to " +
+             std::to_string(kNumericFallbackDigits) + " significant digits and compared within the tolerance";
   }
   p.ok = true;
   return p;

@@ -15,6 +15,7 @@ struct ParsedAnswer {
   bool ok = false;
   std::string error;  // why it could not be read
   std::string raw;    // the answer as the student wrote it (for reports)
+  std::string note;   // how it was read, when not exactly (over its work budget)
   Value value;
 };
 

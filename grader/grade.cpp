@@ -136,6 +136,8 @@ class ProblemGrader {
       ag.got = parsed_[i].value;
       judge(ag);
     }
+    if (parsed_[i].ok && !parsed_[i].note.empty())
+      ag.feedback = parsed_[i].note + (ag.feedback.empty() ? "" : "; " + ag.feedback);
     verdicts_.emplace_back(name, ag.verdict);
     if (ag.got && ag.verdict != Verdict::Correct) {
       // A wrong answer computed from a trivial one is trivial too: it carries nothing forward.

@@ -1,7 +1,9 @@
 #include "solver/kinds/given_reader.hpp"
 
+#include "solver/util/exact_format.hpp"
 #include "solver/util/expression.hpp"
 #include "solver/util/suggest.hpp"
+#include "solver/util/work_budget.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -46,9 +48,21 @@ std::string describe_node(const YAML::Node& n) {
   }
 }
 
-}  // namespace
+// The irrational values e is built from, nested ones included: √(2 + √3) holds √(2 + √3) and
+// √3. Rationals, and sums and products of atoms, are not atoms.
+void collect_atoms(const Exact& e, std::set<Exact, GiNaC::ex_is_less>& atoms) {
+  if (GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational()) return;
+  const bool whole_power = GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+                           GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer();
+  if (!GiNaC::is_a<GiNaC::add>(e) && !GiNaC::is_a<GiNaC::mul>(e) && !whole_power) atoms.insert(e);
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_atoms(e.op(i), atoms);
+}
 
-Exact read_number(const YAML::Node& n, const std::string& file, const std::string& field) {
+// read_number, also adding to `atoms` the irrational values the expression is written with
+// (before simplification: 1/(√2 + √3) uses √2 and √3, and its simplified form √3 − √2 still
+// lives among them; √6 written as such is one more).
+Exact read_exact(const YAML::Node& n, const std::string& file, const std::string& field,
+                 std::set<Exact, GiNaC::ex_is_less>* atoms) {
   auto fail = [&](const std::string& message) -> Exact {
     throw InputError(Diagnostic{location_of(n, file), field, message});
   };
@@ -61,15 +75,36 @@ Exact read_number(const YAML::Node& n, const std::string& file, const std::strin
     return fail("expected a number, got " + quote_excerpt(text));
   const ExpressionResult r = parse_expression(text);
   if (!r) return fail("cannot read " + quote_excerpt(text) + " as a number: " + r.error);
-  const Exact e = canonical(*r.value);
+  WorkBudget budget;
+  const Exact e = canonical(*r.value, budget);
+  if (budget.exceeded())
+    return fail(quote_excerpt(text) + " is too complex for exact solving (simplifying it takes more than " +
+                std::to_string(static_cast<long>(budget.limit())) +
+                " steps): simplify it, or give it as a decimal");
   if (!is_real_constant(e)) return fail(quote_excerpt(text) + " is not a real number");
+  if (atoms) collect_atoms(*r.value, *atoms);
   return e;
 }
 
+}  // namespace
+
+Exact read_number(const YAML::Node& n, const std::string& file, const std::string& field) {
+  return read_exact(n, file, field, nullptr);
+}
+
+struct GivenReader::ExactInputs {
+  std::set<Exact, GiNaC::ex_is_less> atoms;
+};
+
 GivenReader::GivenReader(YAML::Node node, std::string file, std::string field,
                          std::vector<std::string> known_fields)
+    : GivenReader(std::move(node), std::move(file), std::move(field), std::move(known_fields),
+                  std::make_shared<ExactInputs>()) {}
+
+GivenReader::GivenReader(YAML::Node node, std::string file, std::string field,
+                         std::vector<std::string> known_fields, std::shared_ptr<ExactInputs> exact)
     : node_(std::move(node)), file_(std::move(file)), field_(std::move(field)),
-      known_(std::move(known_fields)) {
+      known_(std::move(known_fields)), exact_(std::move(exact)) {
   if (!node_.IsDefined() || node_.IsNull())
     fail_at(node_, field_, "missing: expected a mapping of " + std::to_string(known_.size()) +
                                " possible fields");
@@ -119,7 +154,23 @@ Exact GivenReader::number_at(const YAML::Node& n, Field&& field) const {
   // Most numbers are plain literals: read them without building their path.
   if (n.IsScalar())
     if (std::optional<Exact> d = parse_decimal_literal(n.Scalar())) return *d;
-  return read_number(n, file_, field());
+  std::set<Exact, GiNaC::ex_is_less> atoms = exact_->atoms;
+  const Exact e = read_exact(n, file_, field(), &atoms);
+  if (atoms.size() > kMaxGivenAtoms) {
+    // Sorted as text: GiNaC's order depends on hashes that differ from run to run.
+    std::vector<std::string> names;
+    for (const Exact& a : atoms) names.push_back(format_exact(a, MathStyle::Plain));
+    std::sort(names.begin(), names.end());
+    std::string list;
+    for (const std::string& a : names) list += (list.empty() ? "" : ", ") + a;
+    fail_at(n, field(),
+            quote_excerpt(n.Scalar()) + " brings the irrational values in this problem's given to " +
+                std::to_string(atoms.size()) + " (" + quote_excerpt(list) + "); at most " +
+                std::to_string(kMaxGivenAtoms) +
+                " keep exact solving fast (its work doubles with each new root): give some as decimals");
+  }
+  exact_->atoms = std::move(atoms);
+  return e;
 }
 
 Exact GivenReader::number(std::string_view key) {
@@ -199,7 +250,7 @@ std::vector<std::string> GivenReader::words(std::string_view key, std::size_t co
 }
 
 GivenReader GivenReader::child(std::string_view key, std::vector<std::string> known_fields) {
-  return GivenReader(require(key), file_, path(key), std::move(known_fields));
+  return GivenReader(require(key), file_, path(key), std::move(known_fields), exact_);
 }
 
 std::size_t GivenReader::list_size(std::string_view key, std::size_t min_count) {
@@ -215,7 +266,7 @@ GivenReader GivenReader::item(std::string_view key, std::size_t i,
                               std::vector<std::string> known_fields) {
   const YAML::Node n = require(key);
   return GivenReader(n[i], file_, path(key) + "[" + std::to_string(i) + "]",
-                     std::move(known_fields));
+                     std::move(known_fields), exact_);
 }
 
 bool GivenReader::is_list(std::string_view key) const {

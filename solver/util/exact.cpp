@@ -1,6 +1,8 @@
 // Exact values: canonical form with simplified radicals, sign, and conversions.
 #include "solver/util/exact.hpp"
 
+#include "solver/util/work_budget.hpp"
+
 #include <cln/integer.h>
 
 #include <cmath>
@@ -258,35 +260,47 @@ double rational_to_double(const numeric& q) {
   return q.is_negative() ? -magnitude : magnitude;
 }
 
-// A square root √k (k a positive integer) inside e, if there is one.
+// The square root √k (k a positive integer) inside e with the smallest k, if there is one.
+// Chosen by value, not by position: GiNaC orders terms by hashes that differ from run to run
+// (they include addresses), and the first root found would make the rounds, their cost and
+// the result's form differ between two runs on the same input.
 bool find_square_root(const ex& e, ex& root) {
+  bool found = false;
+  cln::cl_I smallest;
   for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
     cln::cl_I radicand;
     unsigned index = 0;
-    if (as_simple_radical(*it, radicand, index) && index == 2) {
+    if (as_simple_radical(*it, radicand, index) && index == 2 && (!found || radicand < smallest)) {
       root = *it;
-      return true;
+      smallest = radicand;
+      found = true;
     }
   }
-  return false;
+  return found;
 }
 
 // Rationalises a denominator that is a sum with square roots, one root per round:
 // n / (a + b·√k) = n·(a − b·√k) / (a² − b²·k), so 1/(1 + 2√3) becomes (2√3 − 1)/11.
-ex rationalize_denominator(const ex& e) {
+// Each round's products are priced before they are expanded: a denominator with r roots
+// multiplies the numerator's terms by up to 2^r (1/(√2 + √3 + … + √19) ran for minutes).
+// When the budget cannot pay for a round, e comes back as it was, not half rationalised.
+ex rationalize_denominator(const ex& e, WorkBudget& budget) {
+  if (!budget.spend(exact_size(e).work)) return e;
   const ex parts = e.numer_denom();
-  ex num = parts.op(0), den = parts.op(1).expand();
+  ex num = parts.op(0).expand(), den = parts.op(1).expand();
   bool changed = false;
   for (int round = 0; round < kMaxRationalizeRounds && is_a<GiNaC::add>(den); ++round) {
     ex root;
     if (!find_square_root(den, root)) break;
     const GiNaC::symbol s;
+    if (!budget.spend(term_count(den))) return e;
     const ex d = den.subs(root == s).expand();
     // A root nested in another (√(8√8 − 1) − 1) is not a polynomial in s: GiNaC's degree()
     // would throw (found by fuzz_expression), and there is no conjugate to multiply by.
     if (!d.is_polynomial(s) || d.degree(s) != 1 || d.ldegree(s) < 0) break;
-    const ex a = d.coeff(s, 0), b = d.coeff(s, 1);
-    const ex conjugate = a - b * root;
+    const ex a = d.coeff(s, 0).expand(), b = d.coeff(s, 1).expand();
+    const ex conjugate = (a - b * root).expand();
+    if (!budget.spend(product_cost(num, conjugate) + product_cost(a, a) + product_cost(b, b))) return e;
     num = (num * conjugate).expand();
     den = (a * a - b * b * root * root).expand();
     changed = true;
@@ -394,26 +408,41 @@ bool proven_zero(const Exact& e) {
   return GiNaC::abs(value) * 10 < separation;
 }
 
+// One pass of canonical(): radicals simplified, fractions collected, the sum flattened.
+bool simplify_pass(ex& current, WorkBudget& budget) {
+  if (!budget.spend(normal_cost(current))) return false;
+  SimplifyRadicals simplify;
+  // normal() cancels sqrt(3)*sqrt(3) and collects fractions; expand() flattens the result
+  // into a sum of terms.
+  current = simplify(current).normal().expand();
+  return true;
+}
+
 }  // namespace
 
 Exact canonical(const Exact& e) {
+  WorkBudget budget;
+  return canonical(e, budget);
+}
+
+Exact canonical(const Exact& e, WorkBudget& budget) {
   // A rational is already canonical (most typed answers and most inputs are).
   if (is_a<numeric>(e) && ex_to<numeric>(e).is_rational()) return e;
+  if (!budget.spend(exact_size(e).work + normal_cost(e))) return e;
   ex current = e.expand().normal();
   for (int pass = 0; pass < kMaxCanonicalPasses; ++pass) {
-    SimplifyRadicals simplify;
-    // normal() cancels sqrt(3)*sqrt(3) and collects fractions; expand() flattens the result
-    // into a sum of terms.
-    const ex next = simplify(current).normal().expand();
+    ex next = current;
+    if (!simplify_pass(next, budget)) return current;
     if (next.is_equal(current)) break;
     current = next;
   }
   if (!has_symbol(current) && has_nested_root(current) && proven_zero(current)) return 0;
   if (!has_symbol(current)) {
-    const ex rationalized = rationalize_denominator(current);
+    ex rationalized = rationalize_denominator(current, budget);
     if (!rationalized.is_equal(current)) {
-      SimplifyRadicals simplify;
-      current = simplify(rationalized.expand()).normal().expand();
+      if (!budget.spend(exact_size(rationalized).work)) return current;
+      rationalized = rationalized.expand();
+      if (simplify_pass(rationalized, budget)) current = rationalized;
     }
   }
   return current;

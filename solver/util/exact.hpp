@@ -9,12 +9,19 @@
 
 namespace frustum {
 
+class WorkBudget;
 using Exact = GiNaC::ex;
 
 // Canonical form of an exact value: expanded, rational parts normalised, radicals of
 // rationals simplified (sqrt(243) -> 9*sqrt(3)) and denominators rationalised
 // (1/sqrt(3) -> sqrt(3)/3). Values that compare equal print equal.
 Exact canonical(const Exact& e);
+
+// The same within a work budget (solver/util/work_budget.hpp): each expansion is priced
+// before it is done, and when the budget cannot pay for it the value comes back exact and
+// equal to e but less simplified, with budget.exceeded() set. canonical(e) spends a fresh
+// default budget of its own.
+Exact canonical(const Exact& e, WorkBudget& budget);
 
 // True when e is a real number that contains no symbols (it may hold sqrt, pi, sin...).
 bool is_real_constant(const Exact& e);

@@ -13,6 +13,8 @@
 // are errors), so "1 000" cannot silently become 0.
 #include "solver/util/expression.hpp"
 
+#include "solver/util/work_budget.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -428,79 +430,6 @@ double rational_height(const numeric& r) {
          std::log2(GiNaC::iquo(m, numeric(2).power(shift)).to_double());
 }
 
-// Number of terms of (t_1 + ... + t_m)^k expanded: C(m + k - 1, k), saturating.
-double multinomial_terms(double m, double k) {
-  if (m <= 1) return 1;
-  double terms = 1;
-  for (double i = 1; i <= k; ++i) {
-    terms = terms * (m - 1 + i) / i;
-    if (terms > kMaxExpandedTerms) return std::numeric_limits<double>::infinity();
-  }
-  return terms;
-}
-
-// What later exact work on a value can cost.
-struct Size {
-  double terms;          // bound on the terms of expand(e), and of expand(e^n) = terms^n
-  double work;           // bound on the terms expand() creates over all subexpressions
-  numeric max_exponent;  // largest |rational exponent| in e
-  long max_bits;         // largest floor(log2) of a numerator or denominator in e
-};
-
-void merge(Size& into, const Size& part) {
-  into.work += part.work;
-  into.max_exponent = std::max(into.max_exponent, part.max_exponent);
-  into.max_bits = std::max(into.max_bits, part.max_bits);
-}
-
-// Upper bounds measured on GiNaC's own form of e: the parse structure is not enough, since
-// GiNaC turns (√(x+y+z+1))^1024 into (x+y+z+1)^512. A fractional power s^(p/q) counts as
-// s^ceil(p/q): raised to n later it becomes s^(np/q), never more terms than that.
-Size size_of(const ex& e) {
-  if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
-    const bool product = is_a<GiNaC::mul>(e);
-    Size total{product ? 1.0 : 0.0, 0, 0, 0};
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      const Size part = size_of(e.op(i));
-      total.terms = product ? total.terms * part.terms : total.terms + part.terms;
-      merge(total, part);
-    }
-    if (product) total.work += total.terms;
-    return total;
-  }
-  if (is_a<GiNaC::power>(e)) {
-    Size base = size_of(e.op(0));
-    const ex& exponent = e.op(1);
-    if (!is_a<numeric>(exponent) || !ex_to<numeric>(exponent).is_rational()) {
-      merge(base, size_of(exponent));
-      base.terms = 1;
-      return base;
-    }
-    const numeric k = GiNaC::abs(ex_to<numeric>(exponent));
-    const numeric whole = GiNaC::iquo(k.numer() + k.denom() - 1, k.denom());  // ceil(k)
-    const double n = whole > numeric(1'000'000) ? 1e6 : whole.to_double();
-    base.terms = multinomial_terms(base.terms, n);
-    base.work += base.terms;
-    base.max_exponent = std::max(base.max_exponent, k);
-    return base;
-  }
-  if (is_a<numeric>(e)) {
-    const numeric& n = ex_to<numeric>(e);
-    const long bits =
-        n.is_rational() ? std::max(n.numer().int_length(), n.denom().int_length()) : 0;
-    return {1, 1, 0, std::max(bits - 1, 0L)};
-  }
-  // Symbols are one term. A function is one term too, but a power can unwrap it
-  // (abs(s)^2 = s^2), so its terms are those of its argument.
-  Size atom{1, 1, 0, 0};
-  for (std::size_t i = 0; i < e.nops(); ++i) {
-    const Size part = size_of(e.op(i));
-    atom.terms *= part.terms;
-    merge(atom, part);
-  }
-  return atom;
-}
-
 // Tightens the bounds when GiNaC has already reduced the value to an atom.
 void settle(Value& v) {
   if (is_a<numeric>(v.value)) {
@@ -819,16 +748,13 @@ class Parser {
   // that is spent, a constant counts as zero only if it evaluates to exactly zero.
   bool is_exact_zero(const ex& e, std::size_t offset) {
     if (e.is_zero()) return true;
-    const double work = size_of(e).work;
-    if (work <= zero_test_budget_) {
-      zero_test_budget_ -= work;
+    if (zero_test_budget_.spend(exact_size(e).work))
       return evaluate([&] { return e.expand(); }, offset).is_zero();
-    }
     return !has_symbol(e) && approximate(e, offset).is_zero();
   }
 
   void check_size(const Value& v, std::size_t offset) const {
-    const Size size = size_of(v.value);
+    const ExactSize size = exact_size(v.value);
     // GiNaC merges powers: (x^1000)^4 is x^4000.
     if (size.max_exponent > numeric(options_.max_exponent)) {
       fail("exponent too large (the powers combine to an exponent of " +
@@ -1033,7 +959,7 @@ class Parser {
   int max_depth_;
   int depth_ = 0;
   std::size_t pos_ = 0;
-  double zero_test_budget_ = kMaxZeroTestTerms;
+  WorkBudget zero_test_budget_{kMaxZeroTestTerms};
 };
 
 ExpressionResult failure(std::string message, std::size_t offset) {

@@ -1,0 +1,109 @@
+// The work budget of exact arithmetic: canonical() on hostile values stops within its budget
+// and stays exact and equal; budgets belong to one call, never to the process.
+#include "solver/util/work_budget.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "solver/util/exact.hpp"
+#include "solver/util/expression.hpp"
+#include "test_util.hpp"
+
+namespace frustum {
+namespace {
+
+using GiNaC::ex;
+
+ex value_of(const std::string& text) {
+  const ExpressionResult r = parse_expression(text);
+  EXPECT_TRUE(r) << text << ": " << r.error;
+  return r ? *r.value : ex(0);
+}
+
+const std::string kEightRoots =
+    "1/(sqrt(2)+sqrt(3)+sqrt(5)+sqrt(7)+sqrt(11)+sqrt(13)+sqrt(17)+sqrt(19))";
+
+TEST(WorkBudget, SpendsUntilTheLimitThenRefusesAndStaysExceeded) {
+  WorkBudget b(100);
+  EXPECT_TRUE(b.spend(60));
+  EXPECT_FALSE(b.spend(50));  // would pass the limit: nothing taken
+  EXPECT_TRUE(b.exceeded());
+  EXPECT_EQ(b.used(), 60);
+  EXPECT_TRUE(b.spend(40));  // what is left can still be spent
+  EXPECT_FALSE(b.spend(std::nan("")));
+  EXPECT_TRUE(b.exceeded());
+}
+
+TEST(WorkBudget, ProductCostGrowsWithTermsAndDigits) {
+  const ex small = value_of("sqrt(2)+sqrt(3)").expand();
+  const ex many = value_of("sqrt(2)+sqrt(3)+sqrt(5)+sqrt(7)").expand();
+  const ex big = value_of("10^300*sqrt(2)+sqrt(3)").expand();
+  EXPECT_LT(product_cost(small, small), product_cost(many, many));
+  EXPECT_LT(product_cost(small, small), product_cost(big, big));
+  EXPECT_LT(normal_cost(small), normal_cost(many));
+}
+
+TEST(WorkBudget, CanonicalOverItsBudgetIsExactAndEqual) {
+  // A tiny budget cannot pay for rationalising 1/(1 + √2); the value comes back unchanged.
+  const ex e = value_of("1/(1+sqrt(2))");
+  WorkBudget tiny(5);
+  const ex partial = canonical(e, tiny);
+  EXPECT_TRUE(tiny.exceeded());
+  EXPECT_NEAR(to_double(partial), std::sqrt(2.0) - 1, 1e-15);
+  // The default budget does it: √2 − 1.
+  WorkBudget normal;
+  EXPECT_TRUE(canonical(e, normal).is_equal(canonical(value_of("sqrt(2)-1"))));
+  EXPECT_FALSE(normal.exceeded());
+}
+
+TEST(WorkBudget, RationalisingEightRootsStopsWithinTheBudget) {
+  // 1/(√2 + √3 + … + √19): each rationalising round multiplied the terms, and a second
+  // canonical() of the result ran for minutes. Every call now stays within its budget.
+  const ex e = value_of(kEightRoots);
+  const double v = to_double(e);
+  WorkBudget first;
+  const ex once = canonical(e, first);
+  EXPECT_LE(first.used(), first.limit());
+  WorkBudget second;
+  const ex twice = canonical(once, second);
+  EXPECT_LE(second.used(), second.limit());
+  EXPECT_NEAR(to_double(once), v, 1e-15);
+  EXPECT_NEAR(to_double(twice), v, 1e-15);
+}
+
+TEST(WorkBudget, BudgetsBelongToOneCall) {
+  // Exhausting one budget (and canonical()'s own default ones) leaves every later call its
+  // full budget: nothing is kept between calls.
+  WorkBudget spent(1);
+  (void)canonical(value_of(kEightRoots), spent);
+  EXPECT_TRUE(spent.exceeded());
+  (void)canonical(value_of(kEightRoots));
+  WorkBudget fresh;
+  EXPECT_TRUE(
+      canonical(value_of("1/(1+sqrt(2))"), fresh).is_equal(canonical(value_of("sqrt(2)-1"))));
+  EXPECT_FALSE(fresh.exceeded());
+}
+
+TEST(WorkBudget, FuzzedNestedRootsStayWithinTheBudgetAndKeepTheirValue) {
+  // Inputs that took 1 to 17 s (fuzz/corpus/fuzz_expression/slow-*): the value survives.
+  for (int i = 1; i <= 6; ++i) {
+    std::ifstream in(
+        test::source_path("fuzz/corpus/fuzz_expression/slow-nested-roots-" + std::to_string(i)));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(text.empty()) << i;
+    const ExpressionResult r = parse_expression(text);
+    if (!r) continue;  // refused by the parser's own limits
+    WorkBudget budget;
+    const ex c = canonical(*r.value, budget);
+    EXPECT_LE(budget.used(), budget.limit()) << text;
+    const double before = to_double(*r.value), after = to_double(c);
+    EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << text;
+  }
+}
+
+}  // namespace
+}  // namespace frustum
