@@ -10,7 +10,20 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-std::string score_text(double v) { return format_approx(v, 6); }
+// A score as a teacher writes it: at most two decimals, trailing zeros dropped (21.33, 2, 0.5).
+std::string score_text(double v) {
+  std::string s = fmt::format("{:.2f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+// The number a step has in the rendered derivation (notes and warnings are not numbered).
+int step_number(const std::vector<Step>& steps) {
+  int n = 0;
+  for (const Step& s : steps) n += s.level == Step::Level::Info;
+  return n;
+}
 
 std::string mark(Verdict v, bool color) {
   const char* on = "";
@@ -39,6 +52,14 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
       out += "  " + tr("error", lang) + ": " + p.error->format() + "\n";
       continue;
     }
+    // The derivation is printed once per problem, after its answers: the longest of the wrong
+    // answers' derivations (each is a prefix of the problem's), and every wrong answer points
+    // at the step that gives it.
+    const std::vector<Step>* derivation = nullptr;
+    for (const AnswerGrade& a : p.answers)
+      if (a.verdict != Verdict::Correct && !a.derivation.empty() &&
+          (!derivation || a.derivation.size() > derivation->size()))
+        derivation = &a.derivation;
     for (const AnswerGrade& a : p.answers) {
       out += fmt::format("  {} {}: {}", mark(a.verdict, style.color), a.name, tr(to_string(a.verdict), lang));
       if (a.verdict != Verdict::Missing) out += fmt::format(" — {} {}", lang == Lang::En ? "you wrote" : tr("You wrote", lang) + ":", a.got_text);
@@ -49,10 +70,13 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
         out += fmt::format("      {}: {}{}\n", tr("Common mistake", lang), tr(a.misconception, lang),
                            a.wrong_step.empty() ? "" : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
       if (!a.feedback.empty() && a.verdict != Verdict::Correct) out += "      " + tr(a.feedback, lang) + "\n";
-      if (a.verdict != Verdict::Correct && !a.derivation.empty()) {
-        out += "      " + tr("How to get it", lang) + ":\n";
-        out += render_steps_text(a.derivation, style, "      ");
-      }
+      if (a.verdict != Verdict::Correct && !a.derivation.empty() && !a.derivation.back().answers.empty())
+        out += fmt::format("      {} {}: {}\n", tr("See step", lang), step_number(a.derivation),
+                           tr(a.derivation.back().title, lang));
+    }
+    if (derivation) {
+      out += "  " + tr("How to get it", lang) + ":\n";
+      out += render_steps_text(*derivation, style, "    ");
     }
   }
   return out;

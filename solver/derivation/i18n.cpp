@@ -60,7 +60,7 @@ const std::vector<std::pair<std::string_view, std::string_view>>& catalogue() {
         {"No inverse", "逆行列なし"},
         {"No plane", "平面なし"},
         {"Non-planar polygon", "平面でない多角形"},
-        {"Normal (seed 003: n = e₀ × e₁, counter-clockwise = front)", "法線 (n = e₀ × e₁, 反時計回り = 表)"},
+        {"Normal (n = e₀ × e₁, counter-clockwise = front)", "法線 (n = e₀ × e₁, 反時計回り = 表)"},
         {"Normal", "法線"},
         {"Nothing is left", "何も残らない"},
         {"Nothing is visible", "何も見えない"},

@@ -2,11 +2,15 @@
 
 #include "solver/util/exact_format.hpp"
 
+#include <algorithm>
+
 namespace frustum {
 
 MathText& MathText::operator+=(const MathText& other) {
   unicode += other.unicode;
   latex += other.latex;
+  for (const std::string& w : other.words)
+    if (std::find(words.begin(), words.end(), w) == words.end()) words.push_back(w);
   return *this;
 }
 
@@ -16,6 +20,36 @@ MathText math(std::string_view both) { return {std::string(both), std::string(bo
 
 MathText math(std::string_view unicode, std::string_view latex) {
   return {std::string(unicode), std::string(latex)};
+}
+
+std::string latex_text(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '\\': out += "\\textbackslash{}"; break;
+      case '_': case '#': case '%': case '&': case '{': case '}': case '$':
+        out += '\\';
+        out += c;
+        break;
+      case '^': out += "\\textasciicircum{}"; break;
+      case '~': out += "\\textasciitilde{}"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+MathText word(std::string_view english) {
+  MathText m{std::string(english), "\\text{" + latex_text(english) + "}", {}};
+  m.words.emplace_back(english);
+  return m;
+}
+
+MathText counts(const std::vector<std::pair<long, std::string>>& items) {
+  MathText m;
+  for (const auto& [n, what] : items)
+    m += (m.empty() ? MathText{} : math(", ", ",\\; ")) + math(std::to_string(n) + " ", std::to_string(n) + "\\,") + word(what);
+  return m;
 }
 
 bool needs_approx(const Exact& e) {
@@ -31,6 +65,17 @@ std::string unicode_minus(std::string s) {
   return out;
 }
 
+// A decimal in LaTeX: an exponent as a power of ten ("1.26e-18" → 1.26 \times 10^{-18}).
+std::string latex_decimal(const std::string& d) {
+  const std::size_t e = d.find_first_of("eE");
+  if (e == std::string::npos) return d;
+  std::string exponent = d.substr(e + 1);
+  if (!exponent.empty() && exponent[0] == '+') exponent.erase(0, 1);
+  while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
+  if (exponent.size() > 2 && exponent[0] == '-' && exponent[1] == '0') exponent.erase(1, 1);
+  return d.substr(0, e) + " \\times 10^{" + exponent + "}";
+}
+
 }  // namespace
 
 MathText exact(const Exact& e, bool with_approx) {
@@ -39,12 +84,12 @@ MathText exact(const Exact& e, bool with_approx) {
   if (with_approx && needs_approx(c)) {
     const std::string d = format_approx(to_double(c));
     m.unicode += " ≈ " + unicode_minus(d);
-    m.latex += " \\approx " + d;
+    m.latex += " \\approx " + latex_decimal(d);
   }
   return m;
 }
 
-MathText number(double v) { return math(unicode_minus(format_double(v)), format_double(v)); }
+MathText number(double v) { return math(unicode_minus(format_double(v)), latex_decimal(format_double(v))); }
 
 MathText vec(const std::vector<Exact>& v, bool with_approx) {
   MathText m = math("(", "\\left(");
@@ -56,13 +101,13 @@ MathText vec(const std::vector<Exact>& v, bool with_approx) {
   }
   m += math(")", "\\right)");
   if (with_approx && any_approx) {
-    std::string d = "(";
+    std::string d = "(", dl = "\\left(";
     for (std::size_t i = 0; i < v.size(); ++i) {
-      if (i) d += ", ";
+      if (i) d += ", ", dl += ", ";
       d += format_approx(to_double(v[i]));
+      dl += latex_decimal(format_approx(to_double(v[i])));
     }
-    d += ")";
-    m += math(" ≈ " + unicode_minus(d), " \\approx " + d);
+    m += math(" ≈ " + unicode_minus(d + ")"), " \\approx " + dl + "\\right)");
   }
   return m;
 }
@@ -98,7 +143,7 @@ MathText linear_expression(const std::vector<std::pair<Exact, std::string>>& ter
       if (sum) m += math("(", "\\left(");
       m += exact(mag);
       if (sum) m += math(")", "\\right)");
-      if (!name.empty() && !sum && !GiNaC::is_a<GiNaC::numeric>(mag)) m += math("·", " ");
+      if (!name.empty() && !sum && !GiNaC::is_a<GiNaC::numeric>(mag)) m += math("·", " \\cdot ");
     }
     m += math(name);
     first = false;

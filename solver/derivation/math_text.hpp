@@ -14,6 +14,9 @@ namespace frustum {
 struct MathText {
   std::string unicode;
   std::string latex;
+  // English words written inside the mathematics (each once, as given to word()): a renderer
+  // in another language translates them (i18n.hpp); the LaTeX holds each as \text{word}.
+  std::vector<std::string> words = {};
 
   bool empty() const { return unicode.empty() && latex.empty(); }
   MathText& operator+=(const MathText& other);
@@ -24,6 +27,15 @@ MathText operator+(MathText a, const MathText& b);
 // Literal text, the same in both notations or given in each.
 MathText math(std::string_view both);
 MathText math(std::string_view unicode, std::string_view latex);
+
+// Words inside mathematics ("yes", "front", "background"): Unicode as written, LaTeX as
+// \text{…} with LaTeX's special characters escaped; translated by the renderers.
+MathText word(std::string_view english);
+// Text escaped for LaTeX's text mode (\text{…}, and the LaTeX document's prose).
+std::string latex_text(std::string_view text);
+
+// Counts with their words, "3 front, 3 back, 0 edge-on" (LaTeX: 3\,\text{front},\; …).
+MathText counts(const std::vector<std::pair<long, std::string>>& items);
 
 // An exact value in paper form ("9√3"); with_approx adds the decimal ("9√3 ≈ 15.59") when
 // the value is not an integer.

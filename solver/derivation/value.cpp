@@ -97,19 +97,21 @@ MathText Value::shown() const {
         }
       return frustum::matrix(r);
     }
-    case Shape::Bool: return math(flag ? "true" : "false", flag ? "\\text{true}" : "\\text{false}");
-    case Shape::Word: return math(word, "\\text{" + word + "}");
+    case Shape::Bool: return frustum::word(flag ? "true" : "false");
+    case Shape::Word: return frustum::word(word);
     case Shape::WordMap: {
-      std::string s;
-      for (const auto& [k, v] : entries) s += (s.empty() ? "" : ", ") + k + ": " + v;
-      return math(s, "\\text{" + s + "}");
+      MathText m;
+      for (const auto& [k, v] : entries)
+        m += (m.empty() ? MathText{} : math(", ", ",\\; ")) + frustum::word(k) + math(": ", "\\colon ") + frustum::word(v);
+      return m;
     }
     case Shape::WordList: {
-      std::string s;
-      for (const auto& w : words) s += (s.empty() ? "" : ", ") + w;
-      return math(s.empty() ? "(none)" : s, "\\text{" + (s.empty() ? std::string("(none)") : s) + "}");
+      if (words.empty()) return frustum::word("none");
+      MathText m;
+      for (const auto& w : words) m += (m.empty() ? MathText{} : math(", ", ",\\; ")) + frustum::word(w);
+      return m;
     }
-    case Shape::Null: return math("none", "\\text{none}");
+    case Shape::Null: return frustum::word("none");
   }
   return {};
 }

@@ -72,7 +72,7 @@ struct Backface {
     return {{"reversed cross product",
              "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the front "
              "normal is n = e₀ × e₁ (seed 003).",
-             "Normal (seed 003: n = e₀ × e₁, counter-clockwise = front)", reversed_n},
+             "Normal (n = e₀ × e₁, counter-clockwise = front)", reversed_n},
             {"view vector reversed",
              "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the "
              "polygon to the eye, and that flips the sign of D_f.",
@@ -127,7 +127,7 @@ struct Backface {
       const std::string why = sign > 0   ? "D_f > 0: v and n make an acute angle, so the eye sees the front."
                               : sign < 0 ? "D_f < 0: v and n make an obtuse angle, so the eye sees the back."
                                          : "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.";
-      steps->add("Front or back", {}, {}, math(facing)).note = why;
+      steps->add("Front or back", {}, {}, word(facing)).note = why;
       steps->yields("facing");
     }
     return out;

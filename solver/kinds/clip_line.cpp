@@ -40,7 +40,7 @@ struct ClipLine {
   }
 
   static std::string bits_legend(int dims) {
-    std::string s = dims == 3 ? "6-bit codes (seed 000: z座標を加えた6ビットコード), most significant first: "
+    std::string s = dims == 3 ? "6-bit codes (the 2D codes with two bits for z added), most significant first: "
                                 "100000 z > zmax, 010000 z < zmin, 001000 top (y > ymax), 000100 bottom "
                                 "(y < ymin), 000010 right (x > xmax), 000001 left (x < xmin)."
                               : "4-bit codes, most significant first: 1000 top (y > ymax), 0100 bottom "
@@ -64,20 +64,32 @@ struct ClipLine {
       steps->add(N == 2 ? "Clip window" : g.region.default_volume ? "Clip volume (default: the NDC cube)" : "Clip volume",
                  {}, {}, clip_given::box_text(box))
           .note = bits_legend(N);
-      steps->add("Outcode of p", {}, math("p = ") + vec(g.p), math("outcode(p) = " + cp))
+      const auto code = [](unsigned c) {
+        const std::string bits = outcode_string(c, N);
+        return math(bits, "\\mathtt{" + bits + "}");
+      };
+      const auto outcode_of = [&](const std::string& who, bool moved = false) {
+        return math("outcode(" + who + (moved ? "′)" : ")"), "\\operatorname{outcode}(" + who + (moved ? "')" : ")"));
+      };
+      const MathText op_or = math(" OR ", " \\mathbin{\\mathrm{OR}} "), op_and = math(" AND ", " \\mathbin{\\mathrm{AND}} ");
+      steps->add("Outcode of p", {}, math("p = ") + vec(g.p), outcode_of("p") + math(" = ") + code(r.code_p))
           .note = outcode_meaning(r.code_p);
       steps->yields("outcode_p");
-      steps->add("Outcode of q", {}, math("q = ") + vec(g.q), math("outcode(q) = " + cq))
+      steps->add("Outcode of q", {}, math("q = ") + vec(g.q), outcode_of("q") + math(" = ") + code(r.code_q))
           .note = outcode_meaning(r.code_q);
       steps->yields("outcode_q");
-      steps->add("Trivial accept? (both codes 0)", math("outcode(p) OR outcode(q) = 0"),
-                 math(cp + " OR " + cq + " = " + outcode_string(r.code_p | r.code_q, N)),
-                 math(r.trivial_accept ? "accept: the whole segment is inside" : "no"));
+      steps->add("Trivial accept? (both codes 0)", outcode_of("p") + op_or + outcode_of("q") + math(" = ") + code(0),
+                 code(r.code_p) + op_or + code(r.code_q) + math(" = ") + code(r.code_p | r.code_q),
+                 word(r.trivial_accept ? "yes: the whole segment is inside" : "no"));
       steps->yields("accept");
-      steps->add("Trivial reject? (a common outside bit)", math("outcode(p) AND outcode(q) ≠ 0"),
-                 math(cp + " AND " + cq + " = " + outcode_string(r.code_p & r.code_q, N)),
-                 math(r.trivial_reject ? "reject: both endpoints are outside the same boundary" : "no"));
+      steps->add("Trivial reject? (a common outside bit)",
+                 outcode_of("p") + op_and + outcode_of("q") + math(" ≠ ", " \\ne ") + code(0),
+                 code(r.code_p) + op_and + code(r.code_q) + math(" = ") + code(r.code_p & r.code_q),
+                 word(r.trivial_reject ? "yes: both endpoints are outside the same boundary" : "no"));
       steps->yields("reject");
+      // The endpoints as the loop moves them: t is measured from the endpoint being moved (a)
+      // towards the other one (b).
+      std::array<V, 2> ends = {p, q};
       int n = 0;
       for (const auto& it : r.iterations) {
         int axis = 0;
@@ -85,15 +97,26 @@ struct ClipLine {
         const bool high = it.bit == outcode_bit(axis, true);
         const std::string x = axis_name(axis);
         const std::string bound_name = x + (high ? "max" : "min");
-        const std::string who = it.endpoint == 0 ? "p" : "q";
+        const MathText bound = math(x + "_" + (high ? "max" : "min"), x + "_{\\" + (high ? "max" : "min") + "}");
+        const std::string who = it.endpoint == 0 ? "p" : "q", other = it.endpoint == 0 ? "q" : "p";
+        const V& a = ends[static_cast<std::size_t>(it.endpoint)];
+        const V& b = ends[static_cast<std::size_t>(1 - it.endpoint)];
+        const Exact bound_value = high ? box.hi(axis) : box.lo(axis);
+        const Exact t = canonical((bound_value - a(axis)) / (b(axis) - a(axis)));
         steps->add("Iteration " + std::to_string(++n) + ": " + who + " (" + outcode_string(it.code_before, N) +
                        ") is outside " + bound_name + " (bit " + outcode_string(it.bit, N) + "): move it to " + x +
                        " = " + bound_name,
-                   math(who + "′ = a + t·(b − a),  t = (" + bound_name + " − a_" + x + ") / (b_" + x + " − a_" + x +
-                        "),  a = " + who + ", b = the other endpoint"),
-                   math("a = ") + vec(it.before) + math(",  " + bound_name + " = ") +
-                       exact(high ? box.hi(axis) : box.lo(axis)),
-                   math(who + "′ = ") + vec(it.after, true) + math(",  outcode " + outcode_string(it.code_after, N)));
+                   math("t = (", "t = \\frac{") + bound + math(" − " + who + "_" + x + ") / (" + other + "_" + x + " − " + who + "_" + x + "),  " +
+                                                                   who + "′ = " + who + " + t·(" + other + " − " + who + ")",
+                                                               " - " + who + "_" + x + "}{" + other + "_" + x + " - " + who + "_" + x +
+                                                                   "},\\; " + who + "' = " + who + " + t\\,(" + other + " - " + who + ")"),
+                   math(who + " = ") + vec(a) + math(",  " + other + " = ", ",\\; " + other + " = ") + vec(b) +
+                       math(",  ", ",\\; ") + bound + math(" = ") + exact(bound_value) + math(",  t = ", ",\\; t = ") + exact(t, true),
+                   math(who + "′ = ", who + "' = ") + vec(it.after, true) + math(",  ", ",\\; ") + outcode_of(who, true) +
+                       math(" = ") + code(it.code_after))
+            .note = "t is the fraction of the way from " + who + " to " + other + " at which the segment crosses " + x +
+                    " = " + bound_name + ".";
+        ends[static_cast<std::size_t>(it.endpoint)] = it.after;
       }
     }
     if (r.clipped) {
@@ -101,7 +124,8 @@ struct ClipLine {
       for (const V& e : *r.clipped) rows.emplace_back(e.data(), e.data() + N);
       out.set("clipped", Value::matrix(rows));
       if (steps) {
-        steps->add("Clipped segment", {}, {}, math("p′ = ") + vec((*r.clipped)[0], true) + math(",  q′ = ") + vec((*r.clipped)[1], true))
+        steps->add("Clipped segment", {}, {},
+                   math("p′ = ", "p' = ") + vec((*r.clipped)[0], true) + math(",  q′ = ", ",\\; q' = ") + vec((*r.clipped)[1], true))
             .note = r.trivial_accept ? std::string("Trivially accepted: the segment is unchanged.") : "Both codes are now " + outcode_string(0, N) + ": accept.";
         steps->yields("clipped");
       }

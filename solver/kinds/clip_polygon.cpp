@@ -37,9 +37,9 @@ struct ClipPolygon {
 
   template <int N>
   static MathText vertex_list(const std::vector<Eigen::Matrix<Exact, N, 1>>& vs) {
-    if (vs.empty()) return math("(no vertices)");
+    if (vs.empty()) return word("no vertices");
     MathText m;
-    for (std::size_t i = 0; i < vs.size(); ++i) m += math(i ? ", " : "") + vec(vs[i]);
+    for (std::size_t i = 0; i < vs.size(); ++i) m += math(i ? ", " : "", i ? ",\\; " : "") + vec(vs[i]);
     return m;
   }
 
@@ -51,7 +51,7 @@ struct ClipPolygon {
     const PolygonClipResult<V> r = clip_polygon_box(poly, box);
     if (steps) {
       steps->add(N == 2 ? "Clip window" : g.region.default_volume ? "Clip volume (default: the NDC cube)" : "Clip volume",
-                 {}, math("polygon: ") + vertex_list(poly), clip_given::box_text(box))
+                 {}, word("polygon") + math(": ", "\\colon ") + vertex_list(poly), clip_given::box_text(box))
           .note = "Sutherland–Hodgman: clip against one boundary at a time; for each edge S → E keep E when it is "
                   "inside (on the boundary counts as inside) and add the intersection where the edge crosses.";
       for (const auto& s : r.stages)

@@ -137,10 +137,10 @@ struct DepthAtPixel {
     if (steps)
       steps->note("Projection coordinates are left-handed",
                   g.order_given
-                      ? "seed 001: mind the order of the cross product; this problem uses " +
+                      ? "Mind the order of the cross product; this problem uses " +
                             g.order.first + " × " + g.order.second + "."
-                      : "seed 001: mind the order of the cross product; the front normal of a "
-                        "triangle ABC here is AC × AB (the order used by default).");
+                      : "Mind the order of the cross product: in a left-handed frame the front normal of a "
+                        "triangle ABC is AC × AB (the order used by default).");
     const Vec3<Exact> n = cross_normal_with_steps(g.triangle, g.order, "triangle", steps);
     if (steps) steps->yields("normal");
     Answers out;
@@ -168,7 +168,7 @@ struct DepthAtPixel {
     const Exact z = canonical((plane[3] - a * g.pixel(0) - b * g.pixel(1)) / c);
     out.set("z", Value::scalar(z));
     if (steps) {
-      steps->add("Depth at the pixel", math("z = (d − a·xₛ − b·yₛ) / c", "z_S = \\frac{d - a x_S - b y_S}{c}"),
+      steps->add("Depth at the pixel", math("z = (d − a·xₛ − b·yₛ) / c", "z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
                  linear_equation({{a * g.pixel(0), ""}, {b * g.pixel(1), ""}, {c, "z"}}, plane[3]),
                  math("z = ", "z_S = ") + exact(z, true));
       steps->yields("z");
@@ -178,8 +178,8 @@ struct DepthAtPixel {
         steps->warn("Nearly edge-on triangle",
                     "c is small beside the terms it is computed from (κ_c ≈ " + format_approx(cond.kappa_c) +
                         "), so z = (d − a·xₛ − b·yₛ)/c is ill-conditioned (" + digits_sentence(cond.kappa_z) +
-                        "). A numeric backend (--precision) that would keep fewer than half its digits "
-                        "falls back to barycentric interpolation z = Σ λᵢ zᵢ.");
+                        "). Computed in floating point with fewer than half its digits left, z is better found by "
+                        "barycentric interpolation z = Σ λᵢ zᵢ.");
     }
     // Inside the closed triangle: the three edge orientations agree (zero = on an edge).
     const int s0 = orient2d(g.triangle[0], g.triangle[1], g.pixel);
@@ -188,12 +188,14 @@ struct DepthAtPixel {
     const bool inside = inside_closed_triangle(s0, s1, s2);
     out.set("inside", Value::boolean(inside));
     if (steps) {
-      steps->add("Is the pixel inside the projected triangle?")
-          .note = "Signs of the edge functions AB, BC, CA at the pixel: " + std::to_string(s0) +
-                  ", " + std::to_string(s1) + ", " + std::to_string(s2) +
-                  (inside ? " — all agree (0 = on an edge), so the pixel is inside the closed "
-                            "triangle."
-                          : " — they differ, so the pixel is outside; the plane still gives its z.");
+      const auto sign_text = [](int s) { return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0"); };
+      steps->add("Is the pixel inside the projected triangle?",
+                 math("sign E_AB, sign E_BC, sign E_CA at (xₛ, yₛ)",
+                      "\\operatorname{sign} E_{AB},\\; \\operatorname{sign} E_{BC},\\; \\operatorname{sign} E_{CA}\\ \\text{at}\\ (x_S, y_S)"),
+                 sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
+                 word(inside ? "inside" : "outside"))
+          .note = inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."
+                         : "The signs differ, so the pixel is outside; the plane still gives its z.";
       steps->yields("inside");
     }
     return out;

@@ -79,28 +79,31 @@ struct DepthSort {
     out.set("conflicts", Value::word_list(res.conflicts));
     if (!steps) return out;
 
-    std::string lines;
+    const MathText sep = math(",  ", ",\\; ");
+    MathText lines;
     for (std::size_t k = 0; k < n; ++k)
-      lines += fmt::format("{}g{} = {}", k ? ",  " : "", k, vec(res.centroids[k]).unicode);
+      lines += (k ? sep : MathText{}) + math(fmt::format("g{} = ", k), fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
+               vec(res.centroids[k]);
     steps->add("Centroids", math("g = (p₀ + p₁ + ⋯ + p_{n−1}) / n", "\\mathbf{g} = \\frac{1}{n}(\\mathbf{p}_0 + \\cdots + \\mathbf{p}_{n-1})"),
-               {}, math(lines));
+               {}, lines);
     steps->yields("centroids");
-    std::string depths;
+    MathText depths;
     for (std::size_t k = 0; k < n; ++k)
-      depths += fmt::format("{}depth{} = {}", k ? ",  " : "", k, exact(res.depths[k], true).unicode);
+      depths += (k ? sep : MathText{}) + math(fmt::format("depth{} = ", k), fmt::format("\\text{{depth}}_{{{}}} = ", k)) +
+                exact(res.depths[k], true);
     if (g.viewer.eye)
       steps->add("Depth: distance from the eye", math("depth = ‖g − p_eye‖", "\\text{depth} = \\lVert\\mathbf{g} - \\mathbf{p}_{\\text{eye}}\\rVert"),
-                 math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(*g.viewer.eye), math(depths))
+                 math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(*g.viewer.eye), depths)
           .note = "Larger depth = farther from the eye.";
     else
       steps->add("Depth along the view direction", math("depth = g·v̂", "\\text{depth} = \\mathbf{g}\\cdot\\hat{\\mathbf{v}}"),
-                 math("v = ") + vec(*g.viewer.view_direction), math(depths))
+                 math("v = ", "\\mathbf{v} = ") + vec(*g.viewer.view_direction), depths)
           .note = "v is the direction the viewer looks (into the scene), so larger depth = farther "
                   "(with v = (0, 0, −1), OpenGL's default view, depth = −z).";
     steps->yields("depths");
-    std::string seq;
-    for (const std::string& k : order) seq += (seq.empty() ? "" : " → ") + k;
-    steps->add("Draw back to front (farthest centroid first)", {}, {}, math(seq))
+    MathText seq;
+    for (const std::string& k : order) seq += (seq.empty() ? MathText{} : math(" → ", " \\to ")) + word(k);
+    steps->add("Draw back to front (farthest centroid first)", {}, {}, seq)
         .note = "Equal depths keep the listed order.";
     steps->yields("order");
 
@@ -119,18 +122,16 @@ struct DepthSort {
                            p.planes.j_behind_plane_i ? "entirely behind" : p.planes.j_front_plane_i ? "entirely in front of" : "on both sides of",
                            p.i, p.conflict ? " — CONFLICT: " + p.reason : " — the centroid order is right");
     }
-    Step& s = steps->add("Check each overlapping pair (Newell)", {}, {},
-                         math(res.conflicts.empty() ? "no conflicts" : "conflicts: " + [&] {
-                           std::string c;
-                           for (const std::string& x : res.conflicts) c += (c.empty() ? "" : ", ") + x;
-                           return c;
-                         }()));
+    MathText conflicts = word(res.conflicts.empty() ? "no conflicts" : "conflicts");
+    for (std::size_t k = 0; k < res.conflicts.size(); ++k)
+      conflicts += (k ? sep : math(": ", "\\colon ")) + word(res.conflicts[k]);
+    Step& s = steps->add("Check each overlapping pair (Newell)", {}, {}, conflicts);
     s.note = "Overlap is decided exactly by the " + res.projection +
              " (each polygon cut into triangles on screen). Over each overlapping piece the depths "
              "of the two planes are compared at the piece's corners (depth is affine there), which "
              "gives the true order; Newell's plane tests are shown beside it. A pair conflicts when "
              "the centroid order is wrong, they interpenetrate, one wraps around the other, or they "
-             "lie on a cycle (seed 003: polygons have size, so one centroid cannot order them)." +
+             "lie on a cycle (polygons have size, so one centroid cannot order them)." +
              (res.overlapping.empty() ? std::string("\nNo two polygons overlap on screen: any order is right.") : pairs);
     if (!res.edge_on.empty()) {
       std::string e;

@@ -136,12 +136,15 @@ struct EdgeVisibility {
     if (det < 0)
       for (std::vector<int>& f : mesh.faces) std::reverse(f.begin(), f.end());
     if (steps) {
-      std::string order;
-      for (std::size_t i = 0; i < g.transform.size(); ++i)
+      std::string order, product, product_latex;
+      for (std::size_t i = 0; i < g.transform.size(); ++i) {
         order += fmt::format("{}A{}: {}", i ? "; " : "", i + 1, g.transform[i].first);
-      Step& s = steps->add("Transform the solid (first step applied first)", math(order), {},
-                           math("M = ") + matrix_text(m));
-      s.note = "Every vertex moves by P′ = M·P; faces keep their vertex lists.";
+        product = fmt::format("A{}", i + 1) + (i ? "·" : "") + product;
+        product_latex = fmt::format("A_{{{}}}", i + 1) + product_latex;
+      }
+      Step& s = steps->add("Transform the solid (first step applied first)", math("M = " + product, "M = " + product_latex),
+                           {}, math("M = ") + matrix_text(m));
+      s.note = order + ". Every vertex moves by P′ = M·P; faces keep their vertex lists.";
       if (det < 0)
         s.note += " det M < 0 mirrors the solid, so every face's vertex order is reversed to stay "
                   "counter-clockwise seen from outside.";
@@ -167,9 +170,11 @@ struct EdgeVisibility {
       throw DomainError(g.field, check.problem + " — front/back faces of a closed, consistently "
                                                  "oriented polyhedron are needed to classify its edges");
     if (steps)
-      steps->add("Closed and consistently oriented", math("V − E + F"), {},
-                 math(fmt::format("{} − {} + {} = {}", mesh.vertices.size(), check.edges.size(),
-                                  mesh.faces.size(),
+      steps->add("Closed and consistently oriented", math("V − E + F", "V - E + F"), {},
+                 math(fmt::format("{} − {} + {} = {}", mesh.vertices.size(), check.edges.size(), mesh.faces.size(),
+                                  static_cast<long>(mesh.vertices.size()) - static_cast<long>(check.edges.size()) +
+                                      static_cast<long>(mesh.faces.size())),
+                      fmt::format("{} - {} + {} = {}", mesh.vertices.size(), check.edges.size(), mesh.faces.size(),
                                   static_cast<long>(mesh.vertices.size()) - static_cast<long>(check.edges.size()) +
                                       static_cast<long>(mesh.faces.size()))))
           .note = "Every edge joins exactly two faces, which walk it in opposite directions.";
@@ -194,10 +199,9 @@ struct EdgeVisibility {
       Step& s = steps->add("Front or back per face",
                            math("D_f = (p_eye − p_i)·n", "D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
                            math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
-                           math(fmt::format("{} front, {} back, {} edge-on",
-                                            std::count_if(tests.begin(), tests.end(), [](const FaceTest& t) { return t.facing == Facing::Front; }),
-                                            std::count_if(tests.begin(), tests.end(), [](const FaceTest& t) { return t.facing == Facing::Back; }),
-                                            edge_on.size())));
+                           counts({{std::count_if(tests.begin(), tests.end(), [](const FaceTest& t) { return t.facing == Facing::Front; }), "front"},
+                                   {std::count_if(tests.begin(), tests.end(), [](const FaceTest& t) { return t.facing == Facing::Back; }), "back"},
+                                   {static_cast<long>(edge_on.size()), "edge-on"}}));
       s.note = "D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
                "counter-clockwise = front)." + table;
       steps->yields("faces");
@@ -221,9 +225,15 @@ struct EdgeVisibility {
     out.set("silhouette", Value::word_list(silhouette));
     out.set("hidden", Value::word_list(hidden));
     if (steps) {
-      steps->add("Edge classes", math("front–front: visible;  front–back: silhouette;  back–back: hidden"), {},
-                 math(fmt::format("{} visible, {} silhouette, {} hidden", visible.size(), silhouette.size(), hidden.size())))
-          .note = "seed 003: an edge is classified by the two faces that share it. Hidden-line "
+      steps->add("Edge classes",
+                 word("front") + math("–", "\\text{–}") + word("front") + math(": ", "\\colon ") + word("visible") +
+                     math(";  ", ";\\; ") + word("front") + math("–", "\\text{–}") + word("back") + math(": ", "\\colon ") +
+                     word("silhouette") + math(";  ", ";\\; ") + word("back") + math("–", "\\text{–}") + word("back") +
+                     math(": ", "\\colon ") + word("hidden"),
+                 {},
+                 counts({{static_cast<long>(visible.size()), "visible"}, {static_cast<long>(silhouette.size()), "silhouette"},
+                         {static_cast<long>(hidden.size()), "hidden"}}))
+          .note = "An edge is classified by the two faces that share it. Hidden-line "
                   "drawing = the edges of the front faces (visible + silhouette): " + join(visible) +
                   (visible.empty() ? "" : ", ") + join(silhouette) + ".";
       steps->yields("edges");
@@ -242,8 +252,8 @@ struct EdgeVisibility {
         for (int v : loop) s += (s.empty() ? "" : " → ") + std::to_string(v);
         loop_text += (loop_text.empty() ? "" : ";  ") + s;
       }
-      Step& s = steps->add("Silhouette (輪郭線): the front–back edges", {}, {},
-                           math(silhouette.empty() ? "none" : join(silhouette)));
+      Step& s = steps->add("Silhouette: the front–back edges", {}, {},
+                           silhouette.empty() ? word("none") : word(join(silhouette)));
       if (loops.ok && !loops.loops.empty())
         s.note = fmt::format("Chained by shared vertices: {} ({} loop{}).", loop_text, loops.loops.size(),
                              loops.loops.size() == 1 ? "" : "s") +
@@ -251,23 +261,23 @@ struct EdgeVisibility {
       else if (!loops.ok)
         s.note = "The silhouette edges do not chain into simple loops (the solid is not convex).";
       steps->yields("silhouette");
-      steps->add("Hidden edges: the back–back edges", {}, {}, math(join(hidden)))
+      steps->add("Hidden edges: the back–back edges", {}, {}, hidden.empty() ? word("none") : word(join(hidden)))
           .note = "Drawing only these shows the lines that should be hidden.";
       steps->yields("hidden");
       steps->add("Convex?", math("n_f·(v − p_f) ≤ 0 for every vertex v and face f",
-                                 "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0"),
-                 {}, math(convex ? "convex" : "not convex"))
+                                 "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\text{ for every vertex } \\mathbf{v} \\text{ and face } f"),
+                 {}, word(convex ? "convex" : "not convex"))
           .note = convex ? "Every vertex lies on the inner side of (or on) every face plane."
                          : "Not convex: " + witness + ".";
       steps->yields("convex");
     }
     out.set("backface_sufficient", Value::boolean(convex));
     if (steps) {
-      steps->add("Back-face culling alone?", {}, {}, math(convex ? "yes" : "no"))
+      steps->add("Back-face culling alone?", {}, {}, word(convex ? "yes" : "no"))
           .note = convex ? "A single closed convex polyhedron: no front face can hide another, so "
-                           "culling the back faces removes every hidden surface (seed 003)."
+                           "culling the back faces removes every hidden surface."
                          : "Not convex: a front face can be hidden by another front face, so back-face "
-                           "culling alone is not enough (seed 003's (b) and (d)); a depth test is "
+                           "culling alone is not enough (as for any concave polyhedron); a depth test is "
                            "still needed.";
       steps->yields("backface_sufficient");
     }

@@ -73,10 +73,12 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
     n = e0.cross(e1);
     for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
     if (steps) {
-      steps->add("Edge vectors", math("e₀ = p₁ − p₀,  e₁ = p₂ − p₁", "e_0 = p_1 - p_0,\\; e_1 = p_2 - p_1"),
-                 {}, math("e₀ = ", "e_0 = ") + vec(e0) + math(",  e₁ = ", ",\\; e_1 = ") + vec(e1));
-      steps->add("Normal (seed 003: n = e₀ × e₁, counter-clockwise = front)",
-                 math("n = e₀ × e₁", "\\mathbf{n} = e_0 \\times e_1"),
+      steps->add("Edge vectors",
+                 math("e₀ = p₁ − p₀,  e₁ = p₂ − p₁",
+                      "\\mathbf{e}_0 = \\mathbf{p}_1 - \\mathbf{p}_0,\\; \\mathbf{e}_1 = \\mathbf{p}_2 - \\mathbf{p}_1"),
+                 {}, math("e₀ = ", "\\mathbf{e}_0 = ") + vec(e0) + math(",  e₁ = ", ",\\; \\mathbf{e}_1 = ") + vec(e1));
+      steps->add("Normal (n = e₀ × e₁, counter-clockwise = front)",
+                 math("n = e₀ × e₁", "\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
                  math("n = ", "\\mathbf{n} = ") + vec(e0) + math(" × ", " \\times ") + vec(e1),
                  math("n = ", "\\mathbf{n} = ") + vec(n));
     }
@@ -86,10 +88,10 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
     if (steps)
       steps->add(fmt::format("Normal of the {}-gon by Newell's method", p.size()),
                  math("n = Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
-                      "\\mathbf{n} = \\sum_i (p_i - p_0) \\times (p_{i+1} - p_0)"),
+                      "\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times (\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
                  {}, math("n = ", "\\mathbf{n} = ") + vec(n))
           .note = "Newell's method sums every edge pair, so it stays accurate when some edges "
-                  "are nearly parallel or nearly zero (seed 003's warning), and gives twice the "
+                  "are nearly parallel or nearly zero (where eᵢ × eᵢ₊₁ loses accuracy), and gives twice the "
                   "vector area (the same direction as eᵢ × eᵢ₊₁ for a convex polygon).";
   }
   if (steps) {

@@ -96,7 +96,7 @@ struct Plane {
     out.set("distance", Value::scalar(dist));
     if (steps) {
       steps->add("Distance from the origin", math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
-                 math("dist = |") + exact(d) + math("| / ", "| / ") + exact(len),
+                 math("dist = |", "\\text{dist} = \\frac{\\lvert ") + exact(d) + math("| / ", " \\rvert}{") + exact(len) + math("", "}"),
                  math("dist = ", "\\text{dist} = ") + exact(dist, true));
       steps->yields("distance");
     }

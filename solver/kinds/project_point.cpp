@@ -125,7 +125,8 @@ struct ProjectPoint {
       const MatX<Exact> view = look_at_with_steps(eye, center, up, g.api, "camera.", steps);
       const std::vector<Exact> v = transform_point(view, std::vector<Exact>{p(0), p(1), p(2)});
       p = Vec3<Exact>(canonical(v[0]), canonical(v[1]), canonical(v[2]));
-      if (steps) steps->add("World to view coordinates", math("p_view = V·p_world"), {}, math("p_view = ") + vec(p, true));
+      if (steps) steps->add("World to view coordinates", math("p_view = V·p_world", "\\mathbf{p}_{\\text{view}} = V \\mathbf{p}_{\\text{world}}"), {},
+                            math("p_view = ", "\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
     }
     const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps);
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> h(4);
@@ -136,7 +137,9 @@ struct ProjectPoint {
     const std::vector<Exact> clip_v(clip.data(), clip.data() + 4);
     out.set("clip", Value::vector(clip_v));
     if (steps) {
-      steps->add("Clip coordinates", math(g.api == Api::DirectX ? "clip = p·M" : "clip = M·p"),
+      steps->add("Clip coordinates",
+                 g.api == Api::DirectX ? math("clip = p·M", "(x_c, y_c, z_c, w_c) = (x, y, z, 1)\\, M")
+                                       : math("clip = M·p", "(x_c, y_c, z_c, w_c)^{\\mathsf{T}} = M\\,(x, y, z, 1)^{\\mathsf{T}}"),
                  math("p = ") + vec(std::vector<Exact>{p(0), p(1), p(2), 1}),
                  math("(x_c, y_c, z_c, w_c) = ") + vec(clip_v, true));
       steps->yields("clip");
@@ -155,7 +158,7 @@ struct ProjectPoint {
         steps->note("Depth precision",
                     fmt::format("far/near = {:.0e}: a float depth buffer in [0, 1] separates surfaces at "
                                 "this distance only when they are more than Δz ≈ {} apart (Δz ≈ 2⁻²⁴(f − n)z²/(f·n); "
-                                "reversed-Z keeps far more, see docs/accuracy.md).",
+                                "a reversed-Z depth buffer keeps far more).",
                                 f / n, format_approx(float_depth_resolution(n, f, to_double(w)))));
     }
     // Inside the view volume: −w ≤ x, y ≤ w and −w ≤ z ≤ w (DirectX: 0 ≤ z ≤ w).
@@ -180,24 +183,20 @@ struct ProjectPoint {
       const Vec3<Exact> window(canonical(win(0)), canonical(win(1)), canonical(win(2)));
       out.set("window", Value::vector(window));
       if (steps) {
-        steps->add("Perspective divide", math("ndc = (x_c, y_c, z_c) / w_c"), {}, math("ndc = ") + vec(ndc, true));
+        steps->add("Perspective divide", math("ndc = (x_c, y_c, z_c) / w_c", "\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"), {},
+                   math("ndc = ", "\\text{ndc} = ") + vec(ndc, true));
         steps->yields("ndc");
-        const std::string y_rule = g.api == Api::DirectX ? "y_w = (1 − y)/2·height (window y down)"
-                                   : g.api == Api::Processing
-                                       ? "y_w = (1 − y)/2·height (window y down, Processing's screenY; its projection negated y for its y-down world)"
-                                       : "y_w = (y + 1)/2·height (window origin bottom-left)";
-        const std::string z_rule = g.api == Api::DirectX ? "depth = z" : "depth = (z + 1)/2";
-        steps->add("Viewport", math("x_w = (x + 1)/2·width,  " + y_rule + ",  " + z_rule),
-                   math("width = ") + exact(g.width) + math(", height = ") + exact(g.height),
-                   math("(x_w, y_w, depth) = ") + vec(window, true));
-        steps->yields("window");
+        viewport_step(steps, g.api, g.width, g.height, window);
       }
     }
     out.set("inside", Value::boolean(inside));
     if (steps) {
-      steps->add("Inside the view volume?")
-          .note = std::string(g.api == Api::DirectX ? "−w ≤ x, y ≤ w and 0 ≤ z ≤ w" : "−w ≤ x, y, z ≤ w") +
-                  " with w > 0: " + (inside ? "yes, the point is visible." : "no, clipping removes it.");
+      steps->add("Inside the view volume?",
+                 g.api == Api::DirectX ? math("−w_c ≤ x_c, y_c ≤ w_c,  0 ≤ z_c ≤ w_c,  w_c > 0",
+                                              "-w_c \\le x_c, y_c \\le w_c,\\; 0 \\le z_c \\le w_c,\\; w_c > 0")
+                                       : math("−w_c ≤ x_c, y_c, z_c ≤ w_c,  w_c > 0",
+                                              "-w_c \\le x_c, y_c, z_c \\le w_c,\\; w_c > 0"),
+                 {}, word(inside ? "yes: the point is visible" : "no: clipping removes it"));
       steps->yields("inside");
     }
     return out;

@@ -51,7 +51,7 @@ struct ProjectionPlane {
       steps->add("Distance of the projection plane",
                  math(std::string(toward < 0 ? "s = −" : "s = ") + "(height/2) / tan(fov/2)",
                       std::string(toward < 0 ? "s = -" : "s = ") + "\\frac{\\text{height}/2}{\\tan(\\text{fov}/2)}"),
-                 math("height = ") + exact(g.height) + math(",  fov = ", ",\\; \\text{fov} = ") +
+                 math("height = ", "\\text{height} = ") + exact(g.height) + math(",  fov = ", ",\\; \\text{fov} = ") +
                      angle_text(g.fov, g.conventions.angles),
                  math("s = ") + exact(s, true))
           .note = "The plane on which the window's height exactly fills the vertical field of view; "
@@ -70,8 +70,8 @@ struct ProjectionPlane {
     out.set("projected", Value::vector(p));
     if (steps) {
       steps->add("Similar triangles", math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
-                 math("P′ = ", "P' = ") + vec(g.point) + math(" · (") + exact(s) + math(") / (") +
-                     exact(g.point(2)) + math(")"),
+                 math("P′ = ", "P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") + exact(s) +
+                     math(") / (", "}{") + exact(g.point(2)) + math(")", "}"),
                  math("P′ = ", "P' = ") + vec(p, true));
       steps->yields("projected");
     }

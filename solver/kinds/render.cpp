@@ -84,9 +84,9 @@ struct Render {
     const std::vector<WindowTriangle> tris = geometry(scene, flat, &gs);
     if (steps)
       steps->add("Geometry: model → world → clip → window", {}, {},
-                 math(fmt::format("{} triangles: {} outside the view volume, {} clipped, {} back faces culled → {} "
-                                  "window triangles",
-                                  gs.triangles, gs.outside, gs.clipped, gs.culled, gs.window)))
+                 counts({{gs.triangles, "triangles"}}) + math(": ", "\\colon ") +
+                     counts({{gs.outside, "outside the view volume"}, {gs.clipped, "clipped"}, {gs.culled, "back faces culled"}}) +
+                     math(" → ", " \\to ") + counts({{gs.window, "window triangles"}}))
           .note = fmt::format("{} objects. Only the queried pixels are resolved: a triangle competes for a pixel when "
                               "its screen bounds hold the pixel centre; no {} × {} frame is allocated.",
                               flat.objects.size(), scene.width, scene.height);
@@ -123,15 +123,24 @@ struct Render {
         if (c.passed) stored = c.depth;
       }
       if (t.competitors.empty()) trace = std::string(kIndent) + "No triangle covers this pixel centre.";
-      Step& s = steps->add(fmt::format("Pixel ({}, {})", q[0], q[1]), math("Z = 1 (cleared), F = background " + color_text(scene.background)),
-                           {}, math(fmt::format("colour {}, depth {}  ({})", color_text(t.color), depth_text(t.depth), winner)));
+      Step& s = steps->add(fmt::format("Pixel ({}, {})", q[0], q[1]),
+                           math("Z = 1 (cleared),  F = background ", "Z = 1\\ \\text{(cleared)},\\; F = \\text{background}\\ ") +
+                               math(color_text(scene.background)),
+                           {},
+                           word("colour") + math(" " + color_text(t.color) + ", ", "\\ " + color_text(t.color) + ",\\; ") +
+                               word("depth") + math(" " + depth_text(t.depth) + "  (", "\\ " + depth_text(t.depth) + "\\quad (") +
+                               word(winner) + math(")"));
       s.note = fmt::format("Z-buffer trace, drawing order ({} competitor(s)):", t.competitors.size()) + trace;
     }
-    std::string shown;
-    for (int r = 0; r < pixels.rows; ++r)
-      shown += fmt::format("{}{}, {}, {}, {:.7g}", r ? "; " : "", pixels.numbers[4 * r], pixels.numbers[4 * r + 1],
-                           pixels.numbers[4 * r + 2], pixels.numbers[4 * r + 3]);
-    pixels.display = math("[" + shown + "]");
+    std::string shown, shown_latex;
+    for (int r = 0; r < pixels.rows; ++r) {
+      const std::string row = fmt::format("{}, {}, {}, {:.7g}", pixels.numbers[4 * r], pixels.numbers[4 * r + 1],
+                                          pixels.numbers[4 * r + 2], pixels.numbers[4 * r + 3]);
+      shown += (r ? "; " : "") + row;
+      shown_latex += (r ? " \\\\ " : "") + fmt::format("{} & {} & {} & {:.7g}", pixels.numbers[4 * r], pixels.numbers[4 * r + 1],
+                                                          pixels.numbers[4 * r + 2], pixels.numbers[4 * r + 3]);
+    }
+    pixels.display = math("[" + shown + "]", "\\begin{bmatrix}" + shown_latex + "\\end{bmatrix}");
     color_rows = Value::matrix(colors);
     depth = Value::vector(depths);
     Answers out;

@@ -82,21 +82,27 @@ struct ScanConvert {
                                          : "bottom or right edge: centres on it are not covered";
         steps->add("Edge function E_" + from + to,
                    math("E(x, y) = (x_" + to + " − x_" + from + ")(y − y_" + from + ") − (y_" + to + " − y_" + from +
-                        ")(x − x_" + from + ")"),
+                            ")(x − x_" + from + ")",
+                        "E_{" + from + to + "}(x, y) = (x_" + to + " - x_" + from + ")(y - y_" + from + ") - (y_" + to +
+                            " - y_" + from + ")(x - x_" + from + ")"),
                    {},
-                   math("E_" + from + to + "(x, y) = ") +
+                   math("E_" + from + to + "(x, y) = ", "E_{" + from + to + "}(x, y) = ") +
                        linear_expression({{pixels_of(e.a), "x"}, {pixels_of(e.b), "y"}, {pixels_of(e.c, 2), ""}}))
             .note = cls;
       }
       steps->add("Bounding box of the pixel centres", {}, {},
                  math("i = " + std::to_string(t.i_min) + " … " + std::to_string(t.i_max) + ",  j = " +
-                      std::to_string(t.j_min) + " … " + std::to_string(t.j_max)))
+                          std::to_string(t.j_min) + " … " + std::to_string(t.j_max),
+                      std::to_string(t.i_min) + " \\le i \\le " + std::to_string(t.i_max) + ",\\; " +
+                          std::to_string(t.j_min) + " \\le j \\le " + std::to_string(t.j_max)))
           .note = "A pixel is covered when E > 0 on all three edges, or E = 0 on an edge that is top or left.";
       std::map<int, std::string> rows;
       for (const Fragment& f : frags) rows[f.j] += (rows[f.j].empty() ? "" : ", ") + std::to_string(f.i);
-      std::string text;
-      for (const auto& [j, is] : rows) text += (text.empty() ? "" : ";  ") + std::string("j = ") + std::to_string(j) + ": i = " + is;
-      steps->add("Covered pixels, row by row", {}, {}, math(text.empty() ? "none" : text))
+      MathText text;
+      for (const auto& [j, is] : rows)
+        text += (text.empty() ? MathText{} : math(";  ", ";\\quad ")) +
+                math("j = " + std::to_string(j) + ": i = " + is, "j = " + std::to_string(j) + "\\colon i = " + is);
+      steps->add("Covered pixels, row by row", {}, {}, text.empty() ? word("none") : text)
           .note = std::to_string(frags.size()) + " pixel(s) covered.";
       steps->yields("pixels");
     }

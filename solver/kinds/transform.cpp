@@ -86,19 +86,22 @@ struct Transform {
       const TransformStep& s = g.steps[i];
       m = canonical(MatX<Exact>(s.matrix * m));
       if (steps) {
-        Step& st = steps->add(fmt::format("A{}: {}", i + 1, s.title), {}, {},
-                              math(fmt::format("A{} = ", i + 1)) + matrix_text(s.matrix));
+        Step& st = steps->add(fmt::format("A{}: {}", i + 1, s.title), s.formula, s.substitution,
+                              math(fmt::format("A{} = ", i + 1), fmt::format("A_{{{}}} = ", i + 1)) + matrix_text(s.matrix));
         st.note = s.note;
       }
     }
     Answers out;
     out.set("matrix", matrix_value(m));
     if (steps) {
-      std::string order;
-      for (std::size_t i = g.steps.size(); i >= 1; --i) order += fmt::format("{}A{}", i == g.steps.size() ? "" : "·", i);
-      steps->add("Composite (first step applied first)", math("M = " + order),
+      std::string order, order_latex;
+      for (std::size_t i = g.steps.size(); i >= 1; --i) {
+        order += fmt::format("{}A{}", i == g.steps.size() ? "" : "·", i);
+        order_latex += fmt::format("A_{{{}}}", i);
+      }
+      steps->add("Composite (first step applied first)", math("M = " + order, "M = " + order_latex),
                  {}, math("M = ") + matrix_text(m))
-          .note = "Column vectors: P′ = M·P, so the step applied first stands rightmost (seed 002: P′ = A₃A₂A₁P).";
+          .note = "Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = A₃A₂A₁P).";
       steps->yields("matrix");
     }
     out.set("points", transform_points_with_steps(m, g.points, "Transform a point", "P", steps));

@@ -41,6 +41,34 @@ void invert_step(TransformStep& t, const std::string& kind) {
   t.inverse = canonical(t.inverse);
 }
 
+// c = cos θ and s = sin θ of a rotation, as substituted into its matrix.
+MathText cos_sin(const Exact& radians, AngleUnit unit) {
+  return math("θ = ", "\\theta = ") + angle_text(radians, unit) + math(",  c = cos θ = ", ",\\; c = \\cos\\theta = ") +
+         exact(GiNaC::cos(radians)) + math(",  s = sin θ = ", ",\\; s = \\sin\\theta = ") + exact(GiNaC::sin(radians));
+}
+
+// R_x, R_y or R_z in symbols (c = cos θ, s = sin θ), as in the lecture's homogeneous matrices.
+MathText axis_rotation_formula(int axis) {
+  static const char* const unicode[] = {"R_x = [1 0 0 0; 0 c −s 0; 0 s c 0; 0 0 0 1]",
+                                        "R_y = [c 0 s 0; 0 1 0 0; −s 0 c 0; 0 0 0 1]",
+                                        "R_z = [c −s 0 0; s c 0 0; 0 0 1 0; 0 0 0 1]"};
+  static const char* const latex[] = {
+      "R_x(\\theta) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ 0 & c & -s & 0 \\\\ 0 & s & c & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
+      "R_y(\\theta) = \\begin{bmatrix} c & 0 & s & 0 \\\\ 0 & 1 & 0 & 0 \\\\ -s & 0 & c & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
+      "R_z(\\theta) = \\begin{bmatrix} c & -s & 0 & 0 \\\\ s & c & 0 & 0 \\\\ 0 & 0 & 1 & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"};
+  return math(unicode[axis], latex[axis]);
+}
+
+// Rotation by θ about the unit axis (x, y, z): Rodrigues' formula c·I + s·[u]ₓ + (1 − c)·u·uᵀ
+// written entry by entry.
+MathText axis_angle_formula() {
+  return math("R = [x²(1−c)+c, xy(1−c)−zs, xz(1−c)+ys, 0; yx(1−c)+zs, y²(1−c)+c, yz(1−c)−xs, 0; "
+              "xz(1−c)−ys, yz(1−c)+xs, z²(1−c)+c, 0; 0, 0, 0, 1]",
+              "R = \\begin{bmatrix} x^2(1-c)+c & xy(1-c)-zs & xz(1-c)+ys & 0 \\\\ "
+              "yx(1-c)+zs & y^2(1-c)+c & yz(1-c)-xs & 0 \\\\ xz(1-c)-ys & yz(1-c)+xs & z^2(1-c)+c & 0 \\\\ "
+              "0 & 0 & 0 & 1 \\end{bmatrix}");
+}
+
 }  // namespace
 
 TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c) {
@@ -63,10 +91,17 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
     if (dim != 3) s.fail(k, "rotations about x, y, z are 3D; in 2D use rotate");
     const Exact a = read_angle(s, k, c.angles);
     t = {k + " " + angle_text(a, c.angles).unicode, rotate_axis_index(k[7] - 'x', a), ""};
+    if (dim == 3) {
+      t.formula = axis_rotation_formula(k[7] - 'x');
+      t.substitution = cos_sin(a, c.angles);
+    }
   } else if (k == "rotate") {
     if (dim == 2) {
       const Exact a = read_angle(s, k, c.angles);
       t = {"rotate " + angle_text(a, c.angles).unicode, rotate_2d(a), ""};
+      t.formula = math("R = [c −s 0; s c 0; 0 0 1]",
+                       "R(\\theta) = \\begin{bmatrix} c & -s & 0 \\\\ s & c & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}");
+      t.substitution = cos_sin(a, c.angles);
     } else {
       GivenReader r = s.child(k, {"axis", "angle"});
       const Vec3<Exact> axis = r.vector<3>("axis");
@@ -76,8 +111,13 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
       const Vec3<Exact> u = unit(axis);
       t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
            rotate_about(u, a), ""};
+      t.formula = axis_angle_formula();
+      t.substitution = math("(x, y, z) = ", "(x, y, z) = ") + vec(u, true) + math(",  ", ",\\; ") + cos_sin(a, c.angles) +
+                       math(",  1 − c = ", ",\\; 1 - c = ") + exact(canonical(1 - GiNaC::cos(a)));
+      t.note = "Rodrigues' formula R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, written entry by entry, for the unit axis "
+               "u = (x, y, z).";
       if (!canonical(axis.dot(axis) - 1).is_zero())
-        t.note = "the axis is normalised first: (x, y, z) = " + vec(u).unicode;
+        t.note += " The axis is normalised first: (x, y, z) = " + vec(axis).unicode + " / " + exact(norm(axis)).unicode + ".";
     }
   } else if (k == "shear") {
     MatX<Exact> h = MatX<Exact>::Zero(dim, dim);

@@ -3,6 +3,7 @@
 // (transform, render's scene objects).
 #pragma once
 
+#include "solver/derivation/math_text.hpp"
 #include "solver/viewing/conventions.hpp"
 #include "solver/viewing/transforms.hpp"
 
@@ -18,6 +19,8 @@ struct TransformStep {
   std::string note;
   MatX<Exact> inverse = {};  // empty when the step is singular (a zero scale factor)
   Exact det = 1;
+  MathText formula = {};       // the step's matrix in symbols (rotations: cos θ, sin θ; Rodrigues)
+  MathText substitution = {};  // the values put into it (c = cos θ, s = sin θ, the unit axis)
 };
 
 // Reads the one-key mapping `s` ({translate: [2, 3]}) of dimension dim (2 or 3); angles in

@@ -137,7 +137,7 @@ struct Vectors {
     out.set("sin", Value::scalar(sin));
     if (steps) {
       steps->add("Sine of the angle", math("sin θ = ‖a × b‖ / (‖a‖ ‖b‖)", "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
-                 math("sin θ = ", "\\sin\\theta = ") + exact(area) + math(" / (", " / (") + exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")"),
+                 math("sin θ = ", "\\sin\\theta = \\frac{") + exact(area) + math(" / (", "}{") + exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
                  math("sin θ = ", "\\sin\\theta = ") + exact(sin, true));
       steps->yields("sin");
     }
@@ -145,7 +145,7 @@ struct Vectors {
     out.set("cos", Value::scalar(cos));
     if (steps) {
       steps->add("Cosine of the angle", math("cos θ = a·b / (‖a‖ ‖b‖)", "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
-                 math("cos θ = ", "\\cos\\theta = ") + exact(dot) + math(" / (", " / (") + exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")"),
+                 math("cos θ = ", "\\cos\\theta = \\frac{") + exact(dot) + math(" / (", "}{") + exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
                  math("cos θ = ", "\\cos\\theta = ") + exact(cos, true));
       steps->yields("cos");
     }
@@ -168,7 +168,7 @@ struct Vectors {
       out.set("unit_normal", Value::vector(n));
       if (steps) {
         steps->add("Unit normal of the plane through 0, a, b", math("n = (a × b) / ‖a × b‖", "\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert}"),
-                   math("n = ", "\\mathbf{n} = ") + vec(cross) + math(" / ") + exact(area),
+                   math("n = ", "\\mathbf{n} = \\frac{") + vec(cross) + math(" / ", "}{") + exact(area) + math("", "}"),
                    math("n = ", "\\mathbf{n} = ") + vec(n, true));
         steps->yields("unit_normal");
       }

@@ -14,7 +14,7 @@ namespace {
 
 struct ViewVolume {
   static constexpr const char* kName = "view_volume";
-  static constexpr const char* kSummary = "the normalized perspective view volume of Foley et al. (seed 002)";
+  static constexpr const char* kSummary = "the normalized perspective view volume of Foley et al.";
   struct Given {
     Exact d, a, b, z_min, z_max;
     Vec3<Exact> point;
@@ -50,13 +50,16 @@ struct ViewVolume {
     out.set("perspective_matrix", matrix_value(p));
     if (steps) {
       steps->add("① Normalize the view volume", math("S(d/(a·z_max), d/(b·z_max), 1/z_max)",
-                                                     "S\\left(\\frac{d}{a z_{max}}, \\frac{d}{b z_{max}}, \\frac{1}{z_{max}}\\right)"),
+                                                     "S\\left(\\frac{d}{a z_{\\max}}, \\frac{d}{b z_{\\max}}, \\frac{1}{z_{\\max}}\\right)"),
                  {}, math("S = ") + matrix_text(s))
           .note = "The back clipping plane moves to z = 1, where x and y span [−1, 1].";
       steps->yields("scale_matrix");
       steps->add("② Perspective of the normalized volume",
-                 math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) −z̃/(1−z̃); 0 0 1 0]"),
-                 math("z̃_min = ") + exact(zt), math("P = ") + matrix_text(p))
+                 math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) −z̃/(1−z̃); 0 0 1 0]",
+                      "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
+                      "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} \\\\ "
+                      "0 & 0 & 1 & 0 \\end{bmatrix}"),
+                 math("z̃_min = ", "\\tilde{z}_{\\min} = ") + exact(zt), math("P = ") + matrix_text(p))
           .note = "X′ and Y′ are unchanged and W′ = z: the matrix is projective, not affine.";
       steps->yields("perspective_matrix");
     }
@@ -64,8 +67,9 @@ struct ViewVolume {
     const std::vector<Exact> q = {canonical(h[0]), canonical(h[1]), canonical(h[2])};
     out.set("point", Value::vector(q));
     if (steps) {
-      steps->add("A point through both, then the divide by W′", math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′"),
-                 math("p = ") + vec(g.point), math("p′ = ") + vec(q, true));
+      steps->add("A point through both, then the divide by W′", math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′",
+                                                                                  "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = \\frac{(X', Y', Z')}{W'}"),
+                 math("p = ", "\\mathbf{p} = ") + vec(g.point), math("p′ = ", "\\mathbf{p}' = ") + vec(q, true));
       steps->yields("point");
     }
     return out;

@@ -93,8 +93,8 @@ Value transform_points_with_steps(const MatX<Exact>& m, const std::vector<std::v
     moved.push_back(transform_point(m, p));
     for (Exact& x : moved.back()) x = canonical(x);
     if (steps)
-      steps->add(title, math(name + "′ = M·" + name), math(name + " = ") + vec(p),
-                 math(name + "′ = ") + vec(moved.back(), true));
+      steps->add(title, math(name + "′ = M·" + name, name + "' = M " + name), math(name + " = ") + vec(p),
+                 math(name + "′ = ", name + "' = ") + vec(moved.back(), true));
   }
   if (steps) steps->yields("points");
   return Value::matrix(moved);
@@ -103,6 +103,28 @@ Value transform_points_with_steps(const MatX<Exact>& m, const std::vector<std::v
 Value matrix_value(const MatX<Exact>& m) { return Value::matrix(rows_of(canonical(m))); }
 
 MathText matrix_text(const MatX<Exact>& m) { return matrix(rows_of(canonical(m))); }
+
+void viewport_step(Derivation* steps, Api api, const Exact& width, const Exact& height,
+                   const Vec3<Exact>& window, const Vec3<Exact>* ndc) {
+  if (!steps) return;
+  const bool y_up = api == Api::OpenGL;
+  const MathText formula =
+      math("x_w = (x + 1)/2·width,  ", "x_w = \\frac{x + 1}{2}\\cdot\\text{width},\\; ") +
+      (y_up ? math("y_w = (y + 1)/2·height,  ", "y_w = \\frac{y + 1}{2}\\cdot\\text{height},\\; ")
+            : math("y_w = (1 − y)/2·height,  ", "y_w = \\frac{1 - y}{2}\\cdot\\text{height},\\; ")) +
+      (api == Api::DirectX ? math("depth = z", "\\text{depth} = z")
+                           : math("depth = (z + 1)/2", "\\text{depth} = \\frac{z + 1}{2}"));
+  MathText given = ndc ? math("ndc = ", "\\text{ndc} = ") + vec(*ndc) + math(",  ", ",\\; ") : MathText{};
+  given += math("width = ", "\\text{width} = ") + exact(width) + math(",  height = ", ",\\; \\text{height} = ") + exact(height);
+  steps->add("Viewport", formula, given,
+             math("(x_w, y_w, depth) = ", "(x_w, y_w, \\text{depth}) = ") + vec(window, true))
+      .note = api == Api::OpenGL    ? "OpenGL's window origin is bottom-left, y up."
+              : api == Api::DirectX ? "DirectX's window origin is top-left, y down; NDC z is already in [0, 1]."
+                                    : "Processing's window origin is top-left with y down (its screenY); its "
+                                      "projection negated y for its y-down world, so world y and window y both "
+                                      "point down.";
+  steps->yields("window");
+}
 
 std::string multiply_note(Api api) {
   return api == Api::DirectX
@@ -122,26 +144,95 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
     throw DomainError(field + "up", "up is parallel to the view direction (or zero): the camera's roll is undefined");
   const MatX<Exact> m = canonical(look_at(eye, center, up, api));
   if (steps) {
+    const auto row = [&](int i) { return Vec3<Exact>(m(i, 0), m(i, 1), m(i, 2)); };
+    const Vec3<Exact> f = unit(forward);
+    Vec3<Exact> side = api == Api::DirectX ? Vec3<Exact>(up.cross(f)) : Vec3<Exact>(f.cross(up));
+    for (int i = 0; i < 3; ++i) side(i) = canonical(side(i));
+    // Forward, side and up, as gluLookAt (or LookAtLH) computes them, then the translations.
+    steps->add("Viewing direction",
+               math("f = (center − eye)/‖center − eye‖", "\\mathbf{f} = \\frac{\\mathbf{c} - \\mathbf{e}}{\\lVert\\mathbf{c} - \\mathbf{e}\\rVert}"),
+               math("center − eye = ", "\\mathbf{c} - \\mathbf{e} = ") + vec(forward) +
+                   math(",  ‖center − eye‖ = ", ",\\; \\lVert\\mathbf{c} - \\mathbf{e}\\rVert = ") + exact(norm(forward), true),
+               math("f = ", "\\mathbf{f} = ") + vec(f, true))
+        .note = "eye = the camera's position (e), center = the point it looks at (c), up = the up vector.";
     if (api == Api::DirectX) {
       steps->add("Camera axes (left-handed, looking down +z)",
-                 math("z = (center − eye)/‖center − eye‖,  x = (up × z)/‖up × z‖,  y = z × x"), {},
-                 math("x = ") + vec(Vec3<Exact>(m(0, 0), m(0, 1), m(0, 2))) + math(",  y = ") +
-                     vec(Vec3<Exact>(m(1, 0), m(1, 1), m(1, 2))) + math(",  z = ") +
-                     vec(Vec3<Exact>(m(2, 0), m(2, 1), m(2, 2))));
+                 math("z = f,  x = (up × z)/‖up × z‖,  y = z × x",
+                      "\\mathbf{z} = \\mathbf{f},\\; \\mathbf{x} = \\frac{\\mathbf{up}\\times\\mathbf{z}}{\\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert},\\; \\mathbf{y} = \\mathbf{z}\\times\\mathbf{x}"),
+                 math("up × z = ", "\\mathbf{up}\\times\\mathbf{z} = ") + vec(side, true) +
+                     math(",  ‖up × z‖ = ", ",\\; \\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert = ") + exact(norm(side), true),
+                 math("x = ", "\\mathbf{x} = ") + vec(row(0)) + math(",  y = ", ",\\; \\mathbf{y} = ") + vec(row(1)) +
+                     math(",  z = ", ",\\; \\mathbf{z} = ") + vec(row(2)));
+      steps->add("Translations", math("t = (−x·eye, −y·eye, −z·eye)",
+                                      "\\mathbf{t} = (-\\mathbf{x}\\cdot\\mathbf{e},\\, -\\mathbf{y}\\cdot\\mathbf{e},\\, -\\mathbf{z}\\cdot\\mathbf{e})"),
+                 math("eye = ", "\\mathbf{e} = ") + vec(eye),
+                 math("t = ", "\\mathbf{t} = ") + vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true));
+      steps->add("View matrix",
+                 math("V = [x_x y_x z_x 0; x_y y_y z_y 0; x_z y_z z_z 0; t_x t_y t_z 1] (p′ = p·V)",
+                      "V = \\begin{bmatrix} x_x & y_x & z_x & 0 \\\\ x_y & y_y & z_y & 0 \\\\ x_z & y_z & z_z & 0 \\\\ t_x & t_y & t_z & 1 \\end{bmatrix}"),
+                 {}, math("V = ") + matrix_text(paper_form(m, api)))
+          .note = multiply_note(api);
     } else {
+      steps->add("Side axis",
+                 math("s = (f × up)/‖f × up‖", "\\mathbf{s} = \\frac{\\mathbf{f}\\times\\mathbf{up}}{\\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert}"),
+                 math("f × up = ", "\\mathbf{f}\\times\\mathbf{up} = ") + vec(side, true) +
+                     math(",  ‖f × up‖ = ", ",\\; \\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert = ") + exact(norm(side), true),
+                 math("s = ", "\\mathbf{s} = ") + vec(row(0), true));
       steps->add("Camera axes (right-handed, looking down −z)",
-                 math("f = (center − eye)/‖center − eye‖,  s = (f × up)/‖f × up‖,  u = s × f"),
-                 math("f = ") + vec(unit(forward), true),
-                 math("s = ") + vec(Vec3<Exact>(m(0, 0), m(0, 1), m(0, 2))) + math(",  u = ") +
-                     vec(Vec3<Exact>(m(1, 0), m(1, 1), m(1, 2))) + math(",  −f = ") +
-                     vec(Vec3<Exact>(m(2, 0), m(2, 1), m(2, 2))));
+                 math("u = s × f,  the camera's z axis is −f", "\\mathbf{u} = \\mathbf{s}\\times\\mathbf{f},\\; \\mathbf{z}_{\\text{cam}} = -\\mathbf{f}"),
+                 {},
+                 math("u = ", "\\mathbf{u} = ") + vec(row(1), true) + math(",  −f = ", ",\\; -\\mathbf{f} = ") + vec(row(2), true));
+      steps->add("Translations", math("(−s·eye, −u·eye, f·eye)",
+                                      "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; \\mathbf{f}\\cdot\\mathbf{e}\\right)"),
+                 math("eye = ", "\\mathbf{e} = ") + vec(eye),
+                 math("(−s·eye, −u·eye, f·eye) = ", "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; \\mathbf{f}\\cdot\\mathbf{e}\\right) = ") +
+                     vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true))
+          .note = "Each row of V dots a point with one camera axis after moving the eye to the origin: "
+                  "s·(p − eye) = s·p − s·eye.";
+      steps->add("View matrix",
+                 math("V = [s_x s_y s_z −s·eye; u_x u_y u_z −u·eye; −f_x −f_y −f_z f·eye; 0 0 0 1]",
+                      "V = \\begin{bmatrix} s_x & s_y & s_z & -\\mathbf{s}\\cdot\\mathbf{e} \\\\ u_x & u_y & u_z & -\\mathbf{u}\\cdot\\mathbf{e} \\\\ "
+                      "-f_x & -f_y & -f_z & \\mathbf{f}\\cdot\\mathbf{e} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"),
+                 {}, math("V = ") + matrix_text(paper_form(m, api)))
+          .note = multiply_note(api);
     }
-    steps->add("View matrix", math("V = [s, −s·eye; u, −u·eye; −f, f·eye; 0 0 0 1]"), {},
-               math("V = ") + matrix_text(paper_form(m, api)))
-        .note = multiply_note(api);
   }
   return m;
 }
+
+namespace {
+
+// The projection matrix in symbols, as on paper (DirectX: the row-vector form).
+MathText projection_formula(bool ortho, Api api) {
+  const bool y_down = api == Api::Processing;
+  if (api == Api::DirectX)
+    return ortho ? math("OrthoOffCenterLH: [2/(r−l) 0 0 0; 0 2/(t−b) 0 0; 0 0 1/(f−n) 0; (l+r)/(l−r) (t+b)/(b−t) n/(n−f) 1]",
+                        "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2}{t-b} & 0 & 0 \\\\ 0 & 0 & \\frac{1}{f-n} & 0 \\\\ "
+                        "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{n}{n-f} & 1 \\end{bmatrix}")
+                 : math("PerspectiveOffCenterLH: [2n/(r−l) 0 0 0; 0 2n/(t−b) 0 0; (l+r)/(l−r) (t+b)/(b−t) f/(f−n) 1; 0 0 nf/(n−f) 0]",
+                        "M = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2n}{t-b} & 0 & 0 \\\\ "
+                        "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{f}{f-n} & 1 \\\\ 0 & 0 & \\frac{nf}{n-f} & 0 \\end{bmatrix}");
+  const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
+  if (ortho)
+    return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign + "2/(t−b) 0 −(t+b)/(t−b); 0 0 −2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
+                "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " + latex_sign +
+                    "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & -\\frac{2}{f-n} & -\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+  return math("frustum: [2n/(r−l) 0 (r+l)/(r−l) 0; 0 " + sign + "2n/(t−b) (t+b)/(t−b) 0; 0 0 −(f+n)/(f−n) −2fn/(f−n); 0 0 −1 0]",
+              "M = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & \\frac{r+l}{r-l} & 0 \\\\ 0 & " + latex_sign +
+                  "\\frac{2n}{t-b} & \\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & -\\frac{f+n}{f-n} & -\\frac{2fn}{f-n} \\\\ 0 & 0 & -1 & 0 \\end{bmatrix}");
+}
+
+// "l = −1,  r = 1, …" for the six planes of a view volume.
+MathText volume_text(const Volume<Exact>& v) {
+  const std::pair<const char*, const Exact*> planes[] = {{"l", &v.left}, {"r", &v.right}, {"b", &v.bottom},
+                                                         {"t", &v.top},  {"n", &v.near},  {"f", &v.far}};
+  MathText m;
+  for (const auto& [name, value] : planes)
+    m += (m.empty() ? MathText{} : math(",  ", ",\\; ")) + math(std::string(name) + " = ") + exact(*value);
+  return m;
+}
+
+}  // namespace
 
 MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps) {
   const Volume<Exact>& v = p.volume;
@@ -149,38 +240,26 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
     steps->add("The frustum of perspective(fovy, aspect, near, far)",
                math("t = n·tan(fovy/2),  b = −t,  r = t·aspect,  l = −r",
                     "t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l = -r"),
-               math("fovy = ") + angle_text(*p.fovy, p.unit) + math(",  aspect = ", ",\\; \\text{aspect} = ") +
+               math("fovy = ", "\\text{fovy} = ") + angle_text(*p.fovy, p.unit) + math(",  aspect = ", ",\\; \\text{aspect} = ") +
                    exact(*p.aspect) + math(",  n = ", ",\\; n = ") + exact(v.near),
                math("t = ") + exact(v.top, true) + math(",  r = ", ",\\; r = ") + exact(v.right, true))
-        .note = "fovy is the vertical field of view. Seed 004 writes −b = t = n·(w/h)·tan(θ/2); "
-                "the aspect ratio belongs on r (the horizontal extent), not on t.";
+        .note = "fovy is the vertical field of view: it sets the top t, and the aspect ratio width/height "
+                "widens the right edge r. Writing −b = t = n·(w/h)·tan(θ/2) instead puts the aspect ratio "
+                "on the vertical extent, which reads θ as a horizontal angle.";
   }
   MatX<Exact> m = p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
   m = canonical(m);
   if (steps) {
     const bool ortho = p.type == ProjectionSpec::Type::Ortho;
-    std::string formula;
-    if (api == Api::DirectX)
-      formula = ortho ? "OrthoOffCenterLH: [2/(r−l) 0 0 0; 0 2/(t−b) 0 0; 0 0 1/(f−n) 0; (l+r)/(l−r) (t+b)/(b−t) n/(n−f) 1]"
-                      : "PerspectiveOffCenterLH: [2n/(r−l) 0 0 0; 0 2n/(t−b) 0 0; (l+r)/(l−r) (t+b)/(b−t) f/(f−n) 1; 0 0 nf/(n−f) 0]";
-    else if (ortho)
-      formula = std::string("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 ") + (api == Api::Processing ? "−" : "") +
-                "2/(t−b) 0 −(t+b)/(t−b); 0 0 −2/(f−n) −(f+n)/(f−n); 0 0 0 1]";
-    else
-      formula = std::string("frustum: [2n/(r−l) 0 (r+l)/(r−l) 0; 0 ") + (api == Api::Processing ? "−" : "") +
-                "2n/(t−b) (t+b)/(t−b) 0; 0 0 −(f+n)/(f−n) −2fn/(f−n); 0 0 −1 0]";
     Step& s = steps->add(ortho ? "Orthographic projection matrix" : "Perspective projection matrix",
-                         math(formula),
-                         math("l = ") + exact(v.left) + math(", r = ") + exact(v.right) + math(", b = ") +
-                             exact(v.bottom) + math(", t = ") + exact(v.top) + math(", n = ") +
-                             exact(v.near) + math(", f = ") + exact(v.far),
+                         projection_formula(ortho, api), volume_text(v),
                          math("M = ") + matrix_text(paper_form(m, api)));
     s.note = multiply_note(api);
     if (api == Api::Processing)
       s.note += " Processing negates the y row because its window's y axis points down.";
     if (api == Api::OpenGL && !ortho)
-      s.note += " z = −n maps to z_ndc = −1 and z = −f to +1 (seed 000's prose says the "
-                "opposite; its own matrix, like this one, maps near to −1).";
+      s.note += " z = −n maps to z_ndc = −1 and z = −f to +1. (A sentence stating z = −n ↦ +1 contradicts "
+                "this matrix; the matrix decides.)";
     if (api == Api::DirectX) s.note += " Looking down +z, z_ndc runs from 0 at near to 1 at far.";
     steps->yields("matrix");
   }

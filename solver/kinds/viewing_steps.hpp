@@ -52,6 +52,11 @@ std::vector<std::vector<Exact>> rows_of(const MatX<Exact>& m);
 Value matrix_value(const MatX<Exact>& m);
 MathText matrix_text(const MatX<Exact>& m);
 
+// The viewport step: window coordinates and depth from NDC in the conventions (y up or down,
+// depth (z + 1)/2 or z), with `ndc` in the substitution when it is a given; yields "window".
+void viewport_step(Derivation* steps, Api api, const Exact& width, const Exact& height,
+                   const Vec3<Exact>& window, const Vec3<Exact>* ndc = nullptr);
+
 // "M = " in the conventions: DirectX prints the row-vector matrix (p′ = p·M).
 std::string multiply_note(Api api);
 

@@ -38,18 +38,7 @@ struct Viewport {
     const Vec3<Exact> window(canonical(w(0)), canonical(w(1)), canonical(w(2)));
     Answers out;
     out.set("window", Value::vector(window));
-    if (steps) {
-      const std::string y_rule = g.api == Api::OpenGL ? "y_w = (y + 1)/2·height" : "y_w = (1 − y)/2·height";
-      steps->add("Viewport", math("x_w = (x + 1)/2·width,  " + y_rule + (g.api == Api::DirectX ? ",  depth = z" : ",  depth = (z + 1)/2")),
-                 math("ndc = ") + vec(g.ndc) + math(", width = ") + exact(g.width) + math(", height = ") + exact(g.height),
-                 math("(x_w, y_w, depth) = ") + vec(window, true))
-          .note = g.api == Api::OpenGL ? "OpenGL's window origin is bottom-left."
-                  : g.api == Api::DirectX ? "DirectX's window origin is top-left, y down; NDC z is already in [0, 1]."
-                                          : "Processing's window origin is top-left with y down (its screenY is "
-                                            "height − (1 + y)/2·height); its projection negated y for its y-down "
-                                            "world, so world y and window y both point down.";
-      steps->yields("window");
-    }
+    viewport_step(steps, g.api, g.width, g.height, window, &g.ndc);
     return out;
   }
   // Default generator: NDC in quarters of [−1, 1] (nice: halves; hard: on the cube's faces or

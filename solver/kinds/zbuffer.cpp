@@ -126,9 +126,9 @@ struct ZBuffer {
                   "Pixel (i, j) has its centre at (i + ½, j + ½), window y up; grids are written top row first. "
                   "Coverage uses the top-left fill rule; convex polygons are split into a fan of triangles from "
                   "their first vertex; z is interpolated linearly in x and y (the plane through the vertices). "
-                  "A pixel is overwritten when the polygon's z is smaller than Z(i, j) (seed 001); equal z keeps "
+                  "A pixel is overwritten when the polygon's z is smaller than Z(i, j); equal z keeps "
                   "the earlier polygon.");
-      steps->add("Initialise", {}, {}, math("F(i, j) = “.”,  Z(i, j) = ∞"))
+      steps->add("Initialise", {}, {}, math("F(i, j) = “.”,  Z(i, j) = ∞", "F(i, j) = \\text{“.”},\\; Z(i, j) = \\infty"))
           .note = show ? grids(frame, depth) : "(grids larger than 32 × 32 are not written out)";
     }
     std::vector<std::string> after;
@@ -161,8 +161,7 @@ struct ZBuffer {
       after.push_back(joined(frame_rows(frame)));
       if (steps) {
         Step& s = steps->add("Polygon " + std::to_string(k + 1) + " (label " + p.label + ")", {}, {},
-                             math(std::to_string(total.covered) + " pixel(s) covered, " + std::to_string(total.written) +
-                                  " nearer than Z(i, j) and written"));
+                             counts({{total.covered, "pixel(s) covered"}, {total.written, "nearer than Z(i, j) and written"}}));
         s.note = show ? grids(frame, depth) : "";
         if (degenerate > 0)
           steps->warn("Degenerate polygon " + std::to_string(k + 1),
@@ -184,7 +183,7 @@ struct ZBuffer {
     out.set("depth", d);
     out.set("steps", Value::word_list(after));
     if (steps) {
-      steps->add("Final frame buffer", {}, {}, math(joined(frame_rows(frame)))).note = "Rows top first, joined by “/”.";
+      steps->add("Final frame buffer", {}, {}, word(joined(frame_rows(frame)))).note = "Rows top first, joined by “/”.";
       steps->yields("frame");
       steps->yields("depth");
       steps->yields("steps");

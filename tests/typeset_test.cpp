@@ -1,0 +1,85 @@
+// Derivations as a textbook prints them: every formula is real LaTeX (no Unicode operators or
+// words left in math mode) that KaTeX renders in strict mode.
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "solver/derivation/latex_check.hpp"
+#include "typeset_corpus.hpp"
+
+namespace frustum {
+namespace {
+
+TEST(LatexCheck, FindsUnicodeOperatorsAndWordsInMathMode) {
+  EXPECT_TRUE(latex_problems("x_{\\min} = 0,\\; \\lVert\\mathbf{n}\\rVert \\cdot 2fn").empty());
+  EXPECT_TRUE(
+      latex_problems("\\text{outcode}(p) \\mathbin{\\mathrm{OR}} \\text{outcode}(q)").empty());
+  EXPECT_TRUE(latex_problems("\\begin{bmatrix}1 & 0 \\\\ 0 & 1\\end{bmatrix}").empty());
+  EXPECT_EQ(latex_problems("outcode(p) = 0").size(), 1u);
+  EXPECT_EQ(latex_problems("xmin = 0").size(), 1u);
+  EXPECT_TRUE(latex_problems("E_{AB}(x, y) = 4y - 2").empty()) << "capitals name points";
+  EXPECT_EQ(latex_problems("f = (c − e)/‖c − e‖").size(), 4u);  // −, ‖, −, ‖
+  EXPECT_EQ(latex_problems("no").size(), 1u);
+  EXPECT_EQ(latex_problems("\\text{unclosed").size(), 1u);
+}
+
+TEST(Typeset, EveryFormulaOfEveryKindIsLatexWithoutWordsOrUnicode) {
+  std::set<std::string> kinds;
+  int strings = 0;
+  for (const ProblemResult& p : test::typeset_corpus()) {
+    kinds.insert(p.kind);
+    for (const std::string& latex : test::latex_strings(p)) {
+      ++strings;
+      for (const std::string& problem : latex_problems(latex))
+        ADD_FAILURE() << p.id << " (" << p.kind << "): " << problem << "\n    " << latex;
+    }
+  }
+  EXPECT_EQ(kinds.size(), builtin_kinds().all().size()) << "a kind has no derivation in the corpus";
+  EXPECT_GT(strings, 1000);
+}
+
+constexpr const char* kKatex = "/usr/share/javascript/katex/katex.js";  // Debian's libjs-katex
+constexpr const char* kNode = "/usr/bin/node";
+
+// Runs a command and returns what it printed and its exit status.
+std::pair<std::string, int> run(const std::string& command) {
+  std::string out;
+  int status = -1;
+  if (FILE* p = popen(command.c_str(), "r")) {
+    std::array<char, 4096> buf;
+    std::size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+    status = pclose(p);
+  }
+  return {out, status};
+}
+
+TEST(Typeset, KatexRendersEveryFormulaInStrictMode) {
+  ASSERT_TRUE(std::filesystem::exists(kKatex))
+      << kKatex << " is missing: tools/setup.sh installs libjs-katex";
+  ASSERT_TRUE(std::filesystem::exists(kNode))
+      << kNode << " is missing: tools/setup.sh installs nodejs";
+  std::set<std::string> unique;
+  for (const ProblemResult& p : test::typeset_corpus())
+    for (const std::string& latex : test::latex_strings(p)) unique.insert(latex);
+  const std::string file = (std::filesystem::temp_directory_path() /
+                            ("frustum-latex-" + std::to_string(getpid()) + ".json"))
+                               .string();
+  std::ofstream(file)
+      << nlohmann::json(std::vector<std::string>(unique.begin(), unique.end())).dump();
+  const auto [out, status] =
+      run(std::string(kNode) + " " + test::source_path("tests/katex/render_all.js") + " " + kKatex +
+          " " + file + " 2>&1");
+  std::filesystem::remove(file);
+  EXPECT_EQ(status, 0) << out.substr(0, 6000);
+  EXPECT_NE(out.find(std::to_string(unique.size()) + " formulas, 0 failed"), std::string::npos)
+      << out.substr(0, 2000);
+}
+
+}  // namespace
+}  // namespace frustum
