@@ -31,8 +31,8 @@ std::vector<QuizField> numbers(const Value& v, const std::vector<double>& window
 }
 
 // The fields of one answer, or the reason it cannot be a quiz field.
-std::string fields_of(const ProblemSpec& p, const AnswerSpec& spec, const Value& expected,
-                      QuizAnswer& a) {
+std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
+                      const Value& expected, QuizAnswer& a) {
   if (expected.shape == Value::Shape::Null) return "it has no value here";
   switch (spec.kind) {
     case AnswerKind::Scalar:
@@ -40,7 +40,8 @@ std::string fields_of(const ProblemSpec& p, const AnswerSpec& spec, const Value&
     case AnswerKind::UnitVector:
     case AnswerKind::Point:
     case AnswerKind::Matrix:
-      a.fields = numbers(expected, accepted_windows(p, spec.name, expected));
+    case AnswerKind::Transform:
+      a.fields = numbers(expected, accepted_windows(p, key, spec.name, expected));
       return {};
     case AnswerKind::Direction: {
       // Right up to a positive factor: the quiz asks for the one of length 1.
@@ -52,7 +53,7 @@ std::string fields_of(const ProblemSpec& p, const AnswerSpec& spec, const Value&
       for (double& x : unit.numbers) x /= norm;
       unit.exact.clear();
       a.prompt += " (scaled to length 1)";
-      a.fields = numbers(unit, accepted_windows(p, spec.name, unit));
+      a.fields = numbers(unit, accepted_windows(p, key, spec.name, unit));
       return {};
     }
     case AnswerKind::Bool: {
@@ -83,6 +84,8 @@ std::string fields_of(const ProblemSpec& p, const AnswerSpec& spec, const Value&
       return "a plane's equation is right up to any non-zero factor";
     case AnswerKind::Polygon:
       return "a polygon is right from any starting vertex";
+    case AnswerKind::Segment:
+      return "a segment is right in either direction";
     case AnswerKind::WordMap:
     case AnswerKind::WordList:
       return "a set of labels is right in any order";
@@ -129,7 +132,7 @@ std::vector<QuizQuestion> quiz_questions(const ProblemSet& set) {
       a.name = name;
       a.prompt = name;
       a.points = p.answer_points(name);
-      const std::string reason = fields_of(p, *spec, *expected, a);
+      const std::string reason = fields_of(p, r.answers, *spec, *expected, a);
       if (reason.empty())
         q.answers.push_back(a);
       else
