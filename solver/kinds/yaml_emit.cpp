@@ -20,34 +20,49 @@ bool plain_safe(const std::string& s) {
   return true;
 }
 
-// What YAML 1.1 (the type repository's bool, int, float, null) and YAML 1.2 (the core schema)
-// resolve a plain scalar to, as regular expressions over the whole scalar.
-const std::regex& yaml11_non_string() {
-  static const std::regex r(
-      "y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF"
-      "|~|null|Null|NULL"
-      "|[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+|[-+]?[1-9][0-9_]*(:["
-      "0-5]?[0-9])+"
-      "|[-+]?([0-9][0-9_]*)?\\.[0-9.]*([eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(:[0-5]?[0-9])+\\.[0-9_]*"
+// What a plain scalar resolves to in YAML 1.1 (the type repository's bool, null, int, float:
+// PyYAML, older readers) and in YAML 1.2's core schema, as regular expressions over the whole
+// scalar.
+enum class Resolved { String, Bool, Null, Int, Float };
+
+Resolved yaml11(const std::string& s) {
+  static const std::regex boolean(
+      "y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF");
+  static const std::regex null("~|null|Null|NULL");
+  static const std::regex integer(
+      "[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+|[-+]?[1-9][0-9_]*(:["
+      "0-5]?[0-9])+");
+  static const std::regex real(
+      "[-+]?([0-9][0-9_]*)?\\.[0-9.]*([eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(:[0-5]?[0-9])+\\.[0-9_]*"
       "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)");
-  return r;
-}
-const std::regex& yaml12_non_string() {
-  static const std::regex r(
-      "true|True|TRUE|false|False|FALSE|~|null|Null|NULL"
-      "|[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+"
-      "|[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|"
-      "NAN)");
-  return r;
+  if (std::regex_match(s, boolean)) return Resolved::Bool;
+  if (std::regex_match(s, null)) return Resolved::Null;
+  if (std::regex_match(s, integer)) return Resolved::Int;
+  if (std::regex_match(s, real)) return Resolved::Float;
+  return Resolved::String;
 }
 
-// The same plain scalar read as different things (or the same number with different values:
-// 0010 is 8 in YAML 1.1 and 10 in 1.2). Integers and decimals written plainly agree.
+Resolved yaml12(const std::string& s) {
+  static const std::regex boolean("true|True|TRUE|false|False|FALSE");
+  static const std::regex null("~|null|Null|NULL");
+  static const std::regex integer("[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+");
+  static const std::regex real(
+      "[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|"
+      "NAN)");
+  if (std::regex_match(s, boolean)) return Resolved::Bool;
+  if (std::regex_match(s, null)) return Resolved::Null;
+  if (std::regex_match(s, integer)) return Resolved::Int;
+  if (std::regex_match(s, real)) return Resolved::Float;
+  return Resolved::String;
+}
+
+// The two read the scalar as different things (yes: a boolean or a string; 1e3: a string or a
+// float), or as integers of different values (0010 is octal 8 in YAML 1.1 and 10 in 1.2).
 bool readers_disagree(const std::string& s) {
-  static const std::regex agreed(
-      "[-+]?(0|[1-9][0-9]*)(\\.[0-9]+)?|true|false|True|False|TRUE|FALSE|~|null|Null|NULL");
-  if (std::regex_match(s, agreed)) return false;
-  return std::regex_match(s, yaml11_non_string()) || std::regex_match(s, yaml12_non_string());
+  const Resolved a = yaml11(s), b = yaml12(s);
+  if (a != b) return true;
+  static const std::regex leading_zero("[-+]?0[0-9_]+");
+  return a == Resolved::Int && std::regex_match(s, leading_zero);
 }
 
 std::string quote(const std::string& s) {
@@ -89,7 +104,7 @@ std::string emit_scalar(const std::string& s, bool was_quoted) {
 }
 
 bool plain_reads_as_string(const std::string& s) {
-  return !std::regex_match(s, yaml11_non_string()) && !std::regex_match(s, yaml12_non_string());
+  return yaml11(s) == Resolved::String && yaml12(s) == Resolved::String;
 }
 
 YAML::Node string_node(const std::string& s) {
