@@ -25,41 +25,44 @@ bool plain_safe(const std::string& s) {
 // scalar.
 enum class Resolved { String, Bool, Null, Int, Float };
 
-Resolved yaml11(const std::string& s) {
-  static const std::regex boolean(
-      "y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF");
-  static const std::regex null("~|null|Null|NULL");
-  static const std::regex integer(
-      "[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+|[-+]?[1-9][0-9_]*(:["
-      "0-5]?[0-9])+");
-  static const std::regex real(
-      "[-+]?([0-9][0-9_]*)?\\.[0-9.]*([eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(:[0-5]?[0-9])+\\.[0-9_]*"
-      "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)");
-  if (std::regex_match(s, boolean)) return Resolved::Bool;
-  if (std::regex_match(s, null)) return Resolved::Null;
-  if (std::regex_match(s, integer)) return Resolved::Int;
-  if (std::regex_match(s, real)) return Resolved::Float;
-  return Resolved::String;
+// One reader's implicit types, tried in order.
+struct Reader {
+  std::regex boolean, null, integer, real;
+  Resolved resolve(const std::string& s) const {
+    if (std::regex_match(s, boolean)) return Resolved::Bool;
+    if (std::regex_match(s, null)) return Resolved::Null;
+    if (std::regex_match(s, integer)) return Resolved::Int;
+    if (std::regex_match(s, real)) return Resolved::Float;
+    return Resolved::String;
+  }
+};
+
+const Reader& yaml11() {
+  static const Reader r{
+      std::regex(
+          "y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF"),
+      std::regex("~|null|Null|NULL"),
+      std::regex("[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+"
+                 "|[-+]?[1-9][0-9_]*(:[0-5]?[0-9])+"),
+      std::regex("[-+]?([0-9][0-9_]*)?\\.[0-9.]*([eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(:[0-5]?[0-9])+"
+                 "\\.[0-9_]*"
+                 "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)")};
+  return r;
 }
 
-Resolved yaml12(const std::string& s) {
-  static const std::regex boolean("true|True|TRUE|false|False|FALSE");
-  static const std::regex null("~|null|Null|NULL");
-  static const std::regex integer("[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+");
-  static const std::regex real(
-      "[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|"
-      "NAN)");
-  if (std::regex_match(s, boolean)) return Resolved::Bool;
-  if (std::regex_match(s, null)) return Resolved::Null;
-  if (std::regex_match(s, integer)) return Resolved::Int;
-  if (std::regex_match(s, real)) return Resolved::Float;
-  return Resolved::String;
+const Reader& yaml12() {
+  static const Reader r{std::regex("true|True|TRUE|false|False|FALSE"),
+                        std::regex("~|null|Null|NULL"),
+                        std::regex("[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+"),
+                        std::regex("[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?"
+                                   "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)")};
+  return r;
 }
 
 // The two read the scalar as different things (yes: a boolean or a string; 1e3: a string or a
 // float), or as integers of different values (0010 is octal 8 in YAML 1.1 and 10 in 1.2).
 bool readers_disagree(const std::string& s) {
-  const Resolved a = yaml11(s), b = yaml12(s);
+  const Resolved a = yaml11().resolve(s), b = yaml12().resolve(s);
   if (a != b) return true;
   static const std::regex leading_zero("[-+]?0[0-9_]+");
   return a == Resolved::Int && std::regex_match(s, leading_zero);
@@ -104,7 +107,7 @@ std::string emit_scalar(const std::string& s, bool was_quoted) {
 }
 
 bool plain_reads_as_string(const std::string& s) {
-  return yaml11(s) == Resolved::String && yaml12(s) == Resolved::String;
+  return yaml11().resolve(s) == Resolved::String && yaml12().resolve(s) == Resolved::String;
 }
 
 YAML::Node string_node(const std::string& s) {
