@@ -52,6 +52,7 @@ struct GenerateCommand {
   std::optional<std::uint64_t> seed;
   int count = 1;
   std::string out_dir = ".";
+  std::string format = "yaml";  // also latex (exam sheets + answer key) or pdf (compiled)
 };
 int run_generate(const GenerateCommand& options, const Output& o);
 

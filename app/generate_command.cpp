@@ -1,18 +1,20 @@
 // `frustum generate SET.yaml --student ID... | --seed N --count K [-o DIR]`: per-student or
 // seeded variants of a problem set, each written as a complete problem set with its answer key
 // (DIR/STEM-NAME.yaml and DIR/answers/STEM-NAME.yaml).
-#include "app/commands.hpp"
-
-#include "app/variant_files.hpp"
-#include "grader/atomic_file.hpp"
-#include "solver/kinds/variants.hpp"
-#include "solver/kinds/yaml_document.hpp"
-
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <ostream>
+
+#include "app/commands.hpp"
+#include "app/variant_files.hpp"
+#include "grader/atomic_file.hpp"
+#include "grader/paper.hpp"
+#include "solver/kinds/variants.hpp"
+#include "solver/kinds/yaml_document.hpp"
 
 namespace frustum::app {
 
@@ -23,6 +25,46 @@ struct Named {
   std::string student;  // the answer key's student:
   ProblemSet variant;
 };
+
+// The paper route: DIR/STEM-exams.tex and DIR/STEM-key.tex, compiled to PDF with --format pdf.
+int write_paper(const GenerateCommand& g, const ProblemSet& set, const std::vector<Named>& variants,
+                const Output& o) {
+  namespace fs = std::filesystem;
+  std::vector<PaperSheet> sheets;
+  for (const Named& v : variants)
+    if (v.variant.all_errors().empty()) sheets.push_back({v.student, v.variant});
+  const std::string stem = fs::path(g.set).stem().string();
+  const std::string title = set.title.empty() ? stem : set.title;
+  int status = 0;
+  for (const auto& [name, text] : {std::pair{stem + "-exams", exam_sheets_latex(sheets, title)},
+                                   std::pair{stem + "-key", answer_key_latex(sheets, title)}}) {
+    const std::string tex = (fs::path(g.out_dir) / (name + ".tex")).string();
+    try {
+      write_file_atomically(tex, text);
+    } catch (const std::exception& e) {
+      o.err << "error: " << e.what() << "\n";
+      return 1;
+    }
+    if (g.format != "pdf") {
+      o.out << tex << "\n";
+      continue;
+    }
+    // Japanese text needs LuaLaTeX (latex_preamble says so in the first line).
+    const std::string engine = text.rfind("% Japanese", 0) == 0 ? "lualatex" : "pdflatex";
+    const std::string command = fmt::format(
+        "{} -interaction=nonstopmode -halt-on-error -output-directory '{}' '{}' > '{}' 2>&1",
+        engine, g.out_dir, tex, (fs::path(g.out_dir) / (name + ".build.log")).string());
+    if (std::system(command.c_str()) != 0) {
+      o.err << "error: " << engine << " could not compile " << tex << " (see " << name
+            << ".build.log in " << g.out_dir
+            << "; Debian: apt-get install texlive-latex-recommended texlive-pictures)\n";
+      status = 1;
+      continue;
+    }
+    o.out << (fs::path(g.out_dir) / (name + ".pdf")).string() << "\n";
+  }
+  return status;
+}
 
 }  // namespace
 
@@ -36,8 +78,10 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   }
   const bool vary_all = !set_varies(set);
   if (vary_all)
-    o.err << g.set << ": no problem has `vary` and the set does not say `variants: per_student`, so every "
-          << "problem is drawn by its kind's default generator; grade against the generated files (or add "
+    o.err << g.set
+          << ": no problem has `vary` and the set does not say `variants: per_student`, so every "
+          << "problem is drawn by its kind's default generator; grade against the generated files "
+             "(or add "
           << "`variants: per_student` to grade against " << g.set << " itself)\n";
   const std::string stem = fs::path(g.set).stem().string();
   const std::string source = fs::path(g.set).filename().string();
@@ -69,28 +113,34 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   std::map<std::string, std::string> seen;  // the set's text → the first student who has it
   for (const Named& v : variants) {
     if (!v.variant.all_errors().empty()) {
-      for (const Diagnostic& d : v.variant.all_errors()) o.err << v.name << ": " << d.format() << "\n";
+      for (const Diagnostic& d : v.variant.all_errors())
+        o.err << v.name << ": " << d.format() << "\n";
       status = 1;
       continue;
     }
-    const std::string who = g.seed ? fmt::format("variant {} of seed {}", v.name, *g.seed) : "student " + v.student;
+    const std::string who =
+        g.seed ? fmt::format("variant {} of seed {}", v.name, *g.seed) : "student " + v.student;
     const std::string set_file = stem + "-" + v.name + ".yaml";
     const int draw = v.variant.variant ? v.variant.variant->draw : 1;
     const std::string redraw_note =
-        draw > 1 ? fmt::format("\nDraw {}: the earlier draws repeated another student's problem. Grade this student "
-                               "against this file: frustum grade {} ANSWERS --variants {}",
-                               draw, source, g.out_dir)
+        draw > 1 ? fmt::format(
+                       "\nDraw {}: the earlier draws repeated another student's problem. Grade "
+                       "this student "
+                       "against this file: frustum grade {} ANSWERS --variants {}",
+                       draw, source, g.out_dir)
                  : "";
     redrawn = redrawn || draw > 1;
     const std::string body = emit_variant_set(doc.root, v.variant, "");
     if (const auto [it, fresh] = seen.emplace(body, v.name); !fresh)
       o.err << "warning: " << v.name << " has the same variant as " << it->second
             << " (the ranges leave few choices)\n";
-    const std::string seed = fmt::format("{:016x}", v.variant.variant ? v.variant.variant->seed : 0);
-    const std::string set_text = emit_variant_set(
-        doc.root, v.variant,
-        fmt::format("Variant of {} for {} (seed {}), drawn by `frustum generate`.\nAnswer key: answers/{}{}", source,
-                    who, seed, set_file, redraw_note));
+    const std::string seed =
+        fmt::format("{:016x}", v.variant.variant ? v.variant.variant->seed : 0);
+    const std::string set_text =
+        emit_variant_set(doc.root, v.variant,
+                         fmt::format("Variant of {} for {} (seed {}), drawn by `frustum "
+                                     "generate`.\nAnswer key: answers/{}{}",
+                                     source, who, seed, set_file, redraw_note));
     const std::string key_text = emit_answer_key(
         v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed));
     try {
@@ -105,9 +155,12 @@ int run_generate(const GenerateCommand& g, const Output& o) {
       return 1;
     }
   }
+  if (g.format != "yaml") status = std::max(status, write_paper(g, set, variants, o));
   if (redrawn)
-    o.err << "note: some students were drawn again so that no two share a problem; grade the class against these "
-             "files: frustum grade " << g.set << " ANSWERS --variants " << g.out_dir << "\n";
+    o.err << "note: some students were drawn again so that no two share a problem; grade the class "
+             "against these "
+             "files: frustum grade "
+          << g.set << " ANSWERS --variants " << g.out_dir << "\n";
   return status;
 }
 

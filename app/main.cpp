@@ -159,8 +159,15 @@ int main(int argc, char** argv) {
   gen_seed->excludes(gen_roster);
   generate->add_option("-o,--out", gen_opt.out_dir,
                        "Directory for the sets; keys go in its answers/ (default .)");
-  generate->footer(examples({"frustum generate SET.yaml --roster roster.csv -o variants/",
-                             "frustum generate SET.yaml --seed 7 --count 30 -o drill/"}));
+  generate
+      ->add_option(
+          "--format", gen_opt.format,
+          "yaml (default: sets and keys), latex or pdf (also exam sheets and the answer key)")
+      ->check(CLI::IsMember({"yaml", "latex", "pdf"}));
+  generate->footer(examples(
+      {"frustum generate SET.yaml --roster roster.csv -o variants/",
+       "frustum generate SET.yaml --seed 7 --count 30 -o drill/",
+       "frustum generate SET.yaml --roster roster.csv -o exam/ --format pdf   (exams + key)"}));
 
   frustum::app::ExportOptions export_opt;
   auto* exp = cli.add_subcommand("export",

@@ -98,7 +98,7 @@ TEST(Cli, VersionPrintsTheProjectVersion) {
 
 TEST(Cli, EverySubcommandHasAnExampleAndPlainChoices) {
   for (const char* sub : {"solve", "check", "grade", "kinds", "generate", "draw", "render", "bench",
-                          "bench accuracy"}) {
+                          "bench accuracy", "export"}) {
     const CliRun r = stdout_of(std::string(sub) + " --help");
     EXPECT_EQ(r.status, 0) << sub;
     EXPECT_NE(r.out.find("Example"), std::string::npos) << sub << ":\n" << r.out;

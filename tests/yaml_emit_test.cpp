@@ -2,6 +2,7 @@
 // yaml-cpp, YAML 1.1 readers such as PyYAML, and YAML 1.2 readers.
 #include "solver/kinds/yaml_emit.hpp"
 
+#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cstdio>
@@ -9,7 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "test_util.hpp"
 
@@ -28,7 +28,7 @@ TEST(YamlEmit, QuotesWhatYaml11And12ReadDifferently) {
     EXPECT_EQ(emit_scalar(s), std::string("\"") + s + "\"") << s;
   // Read alike everywhere: stays plain.
   for (const char* s : {"3", "-12", "0", "2.5", "-0.125", "true", "false", "1000", "-1/2",
-                        "sqrt(3)/3", "front", "pi/3"})
+                        "sqrt(3)/3", "front", "pi/3", "1.0e-3", "0.5", "-2.5e+10", "0x1F"})
     EXPECT_EQ(emit_scalar(s), s) << s;
 }
 

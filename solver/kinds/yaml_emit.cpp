@@ -20,34 +20,52 @@ bool plain_safe(const std::string& s) {
   return true;
 }
 
-// What YAML 1.1 (the type repository's bool, int, float, null) and YAML 1.2 (the core schema)
-// resolve a plain scalar to, as regular expressions over the whole scalar.
-const std::regex& yaml11_non_string() {
-  static const std::regex r(
-      "y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF"
-      "|~|null|Null|NULL"
-      "|[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+|[-+]?[1-9][0-9_]*(:["
-      "0-5]?[0-9])+"
-      "|[-+]?([0-9][0-9_]*)?\\.[0-9.]*([eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(:[0-5]?[0-9])+\\.[0-9_]*"
-      "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)");
-  return r;
-}
-const std::regex& yaml12_non_string() {
-  static const std::regex r(
-      "true|True|TRUE|false|False|FALSE|~|null|Null|NULL"
-      "|[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+"
-      "|[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|"
-      "NAN)");
+// What a plain scalar resolves to in YAML 1.1 (the type repository's bool, null, int, float:
+// PyYAML, older readers) and in YAML 1.2's core schema, as regular expressions over the whole
+// scalar.
+enum class Resolved { String, Bool, Null, Int, Float };
+
+// One reader's implicit types, tried in order.
+struct Reader {
+  std::regex boolean, null, integer, real;
+  Resolved resolve(const std::string& s) const {
+    if (std::regex_match(s, boolean)) return Resolved::Bool;
+    if (std::regex_match(s, null)) return Resolved::Null;
+    if (std::regex_match(s, integer)) return Resolved::Int;
+    if (std::regex_match(s, real)) return Resolved::Float;
+    return Resolved::String;
+  }
+};
+
+const Reader& yaml11() {
+  static const Reader r{
+      std::regex(
+          "y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF"),
+      std::regex("~|null|Null|NULL"),
+      std::regex("[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+"
+                 "|[-+]?[1-9][0-9_]*(:[0-5]?[0-9])+"),
+      std::regex("[-+]?([0-9][0-9_]*)?\\.[0-9.]*([eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(:[0-5]?[0-9])+"
+                 "\\.[0-9_]*"
+                 "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)")};
   return r;
 }
 
-// The same plain scalar read as different things (or the same number with different values:
-// 0010 is 8 in YAML 1.1 and 10 in 1.2). Integers and decimals written plainly agree.
+const Reader& yaml12() {
+  static const Reader r{std::regex("true|True|TRUE|false|False|FALSE"),
+                        std::regex("~|null|Null|NULL"),
+                        std::regex("[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+"),
+                        std::regex("[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?"
+                                   "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)")};
+  return r;
+}
+
+// The two read the scalar as different things (yes: a boolean or a string; 1e3: a string or a
+// float), or as integers of different values (0010 is octal 8 in YAML 1.1 and 10 in 1.2).
 bool readers_disagree(const std::string& s) {
-  static const std::regex agreed(
-      "[-+]?(0|[1-9][0-9]*)(\\.[0-9]+)?|true|false|True|False|TRUE|FALSE|~|null|Null|NULL");
-  if (std::regex_match(s, agreed)) return false;
-  return std::regex_match(s, yaml11_non_string()) || std::regex_match(s, yaml12_non_string());
+  const Resolved a = yaml11().resolve(s), b = yaml12().resolve(s);
+  if (a != b) return true;
+  static const std::regex leading_zero("[-+]?0[0-9_]+");
+  return a == Resolved::Int && std::regex_match(s, leading_zero);
 }
 
 std::string quote(const std::string& s) {
@@ -89,7 +107,7 @@ std::string emit_scalar(const std::string& s, bool was_quoted) {
 }
 
 bool plain_reads_as_string(const std::string& s) {
-  return !std::regex_match(s, yaml11_non_string()) && !std::regex_match(s, yaml12_non_string());
+  return yaml11().resolve(s) == Resolved::String && yaml12().resolve(s) == Resolved::String;
 }
 
 YAML::Node string_node(const std::string& s) {

@@ -24,7 +24,7 @@ cmake --build "$build" --target frustum man >/dev/null
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 check "cmake --install: the binary" test -x "$work/prefix/bin/frustum"
 check "cmake --install: a man page per subcommand" \
-  test "$(ls "$work/prefix/share/man/man1" | grep -c '^frustum.*\.1\.gz$')" -ge 9
+  test "$(ls "$work/prefix/share/man/man1" | grep -c '^frustum.*\.1\.gz$')" -ge 10
 check "cmake --install: bash completion" test -f "$work/prefix/share/bash-completion/completions/frustum"
 
 (cd "$build" && cpack -G DEB -B "$work/deb" >/dev/null)

@@ -1,0 +1,106 @@
+#include "grader/paper.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "grader/latex_text.hpp"
+#include "grader/paper_figures.hpp"
+#include "grader/quiz_items.hpp"
+#include "solver/kinds/solve_set.hpp"
+
+namespace frustum {
+
+namespace {
+
+// The whole document: LuaLaTeX with luatexja as soon as any Japanese appears (a problem's text,
+// or a step's gloss such as 輪郭線), pdflatex otherwise.
+std::string document(const std::string& body) {
+  return latex_preamble(has_cjk(body)) + "\\begin{document}\n" + body + "\\end{document}\n";
+}
+
+// A derivation's math in LaTeX; a "formula" that is really words (reject: both endpoints are
+// outside) is set as text, so its spaces survive.
+std::string math_or_words(const std::string& latex) {
+  int letters = 0, run = 0;
+  for (const char c : latex) {
+    run = std::isalpha(static_cast<unsigned char>(c)) ? run + 1 : 0;
+    letters = std::max(letters, run);
+  }
+  const bool words = latex.find_first_of("\\^_{}") == std::string::npos && letters >= 4;
+  return words ? "\\text{" + latex_prose(latex) + "}" : latex_math(latex);
+}
+
+std::string points_text(double points) {
+  return fmt::format("{:g} point{}", points, points == 1 ? "" : "s");
+}
+
+std::string sheet_head(const std::string& title, const PaperSheet& s, const char* what) {
+  return fmt::format(
+      "\\section*{{{} --- {}}}\n\\textbf{{{}}} \\hfill Name: \\rule{{5cm}}{{0.4pt}}\n\n",
+      latex_prose(title), what, latex_prose(s.student));
+}
+
+}  // namespace
+
+std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::string& title) {
+  std::string out;
+  for (std::size_t k = 0; k < sheets.size(); ++k) {
+    const PaperSheet& s = sheets[k];
+    if (k) out += "\\clearpage\n";
+    out += sheet_head(title, s, "exam");
+    int n = 0;
+    for (const ProblemSpec& p : s.set.problems) {
+      if (p.error || !p.info) continue;
+      out += fmt::format("\\subsection*{{{}. \\normalfont\\small({})}}\n", ++n,
+                         points_text(p.max_score()));
+      out += latex_prose(question_text(s.set, p)) + "\n\n";
+      out += "\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
+      for (const std::string& line : given_lines(p))
+        out += "\\item \\texttt{" + latex_prose(line) + "}\n";
+      out += "\\end{itemize}\n";
+      if (const auto figure = tikz_figure(p))
+        out += "\\begin{center}\n" + *figure + "\\end{center}\n";
+      for (const std::string& name : p.ask)
+        out += "\\texttt{" + latex_prose(name) + "}: \\hrulefill\\par\\vspace{1.2em}\n";
+    }
+  }
+  return document(out);
+}
+
+std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::string& title) {
+  std::string out;
+  for (std::size_t k = 0; k < sheets.size(); ++k) {
+    const PaperSheet& s = sheets[k];
+    if (k) out += "\\clearpage\n";
+    out += sheet_head(title, s, "answer key");
+    int n = 0;
+    for (const ProblemSpec& p : s.set.problems) {
+      if (p.error || !p.info) continue;
+      const ProblemResult r = solve_problem(p, s.set.file, true);
+      out += fmt::format("\\subsection*{{{}. \\normalfont\\small {}}}\n", ++n, latex_prose(p.id));
+      if (r.error) {
+        out += "\\emph{" + latex_prose(r.error->message) + "}\n";
+        continue;
+      }
+      for (const std::string& name : p.ask)
+        if (const Value* v = r.answers.find(name))
+          out +=
+              fmt::format("\\texttt{{{}}} ({}): \\(\\displaystyle {}\\)\\par\n", latex_prose(name),
+                          points_text(p.answer_points(name)), latex_math(v->shown().latex));
+      std::string steps;
+      for (const Step& step : r.derivation.steps()) {
+        if (step.formula.empty() && step.substitution.empty() && step.result.empty()) continue;
+        steps += "\\item " + latex_prose(step.title);
+        for (const MathText* m : {&step.formula, &step.substitution, &step.result})
+          if (!m->latex.empty()) steps += "\\\\ \\(" + math_or_words(m->latex) + "\\)";
+        steps += "\n";
+      }
+      if (!steps.empty()) out += "\\begin{enumerate}\\small\n" + steps + "\\end{enumerate}\n";
+    }
+  }
+  return document(out);
+}
+
+}  // namespace frustum

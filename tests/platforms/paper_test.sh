@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# The paper route, compiled with Debian's TeX: `frustum generate --format pdf` for a class of
+# three and for drawn variants of every problem in the bundled sets (texts dropped: the seeds'
+# Japanese needs LuaLaTeX with luatexja, which CI does not install), checking that each PDF
+# has a sheet per student, that figures are drawn, and that a Japanese set chooses LuaLaTeX.
+# Usage: paper_test.sh SOURCE_DIR FRUSTUM_BINARY
+set -euo pipefail
+src=$(cd "$1" && pwd)
+frustum=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+check() {
+  if "${@:2}"; then echo "ok: $1"; else echo "FAILED: $1"; failures=$((failures + 1)); fi
+}
+pages() { sed -n 's/^Output written on .* (\([0-9]*\) pages\?,.*/\1/p' "$1"; }
+
+cat > "$work/hw.yaml" <<'YAML'
+title: "Homework 3: clipping, pixels & depth"
+variants: per_student
+problems:
+  - id: clip
+    kind: clip_line
+    text: "Clip the segment PQ against the window {window} (Cohen–Sutherland); 100% of the steps."
+    given: {p: [-2, 5], q: [3, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}
+  - {id: poly, kind: clip_polygon, given: {points: [[-1, 1], [3, 1], [3, 5]], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}}
+  - {id: raster, kind: scan_convert, given: {triangle: [[0.5, 0.5], [5.5, 1.5], [2.5, 4.5]]}}
+  - {id: depth, kind: depth_at_pixel, text: "Find z at pixel {pixel}.", given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1]}}
+  - {id: zb, kind: zbuffer, given: {size: [4, 3], polygons: [{label: A, points: [[0, 0, 1], [4, 0, 1], [0, 3, 1]]}, {label: B, points: [[4, 3, 0.5], [0, 3, 2], [4, 0, 2]]}]}}
+YAML
+printf 'student\ns1\ns2\ns3\n' > "$work/roster.csv"
+"$frustum" generate "$work/hw.yaml" --roster "$work/roster.csv" -o "$work/class" --format pdf > "$work/out.txt"
+check "exams and key compiled" test -s "$work/class/hw-exams.pdf" -a -s "$work/class/hw-key.pdf"
+check "a PDF file" grep -q '^%PDF' "$work/class/hw-exams.pdf"
+check "one sheet per student (at least 3 pages each way)" \
+  test "$(pages "$work/class/hw-exams.log")" -ge 3 -a "$(pages "$work/class/hw-key.log")" -ge 3
+check "each student's sheet is there" test "$(grep -c 'section\*{Homework 3' "$work/class/hw-exams.tex")" = 3
+check "figures for the five kinds that have one, per student" test "$(grep -c 'begin{tikzpicture}' "$work/class/hw-exams.tex")" = 15
+check "the variant's values fill the text" grep -q 'Find z at pixel \[' "$work/class/hw-exams.tex"
+check "the key gives every student's answers" test "$(grep -c 'texttt{z} (' "$work/class/hw-key.tex")" = 3
+check "the generated sets are still written for grading" test -f "$work/class/hw-s1.yaml" -a -f "$work/class/answers/hw-s1.yaml"
+
+# Every problem of the bundled sets, texts dropped, two drawn variants each: the key's steps
+# cover every kind's derivation text.
+python3 - "$src" "$work/all.yaml" <<'PY'
+import glob, sys, yaml
+src, out = sys.argv[1:]
+problems = []
+for f in sorted(glob.glob(src + "/problems/seeds/*.yaml") + glob.glob(src + "/problems/examples/*.yaml")):
+    doc = yaml.load(open(f, encoding="utf-8"), Loader=yaml.BaseLoader)  # every scalar as text
+    for p in doc.get("problems", []):
+        p.pop("text", None)
+        p["id"] = f"{len(problems)}-{p['id']}"
+        problems.append(p)
+yaml.safe_dump({"title": "Every kind", "problems": problems}, open(out, "w", encoding="utf-8"), allow_unicode=True)
+PY
+"$frustum" generate "$work/all.yaml" --seed 4 --count 2 -o "$work/all" --format latex >/dev/null 2>&1
+compile() { pdflatex -interaction=nonstopmode -halt-on-error -output-directory "$(dirname "$1")" "$1" >/dev/null; }
+check "every kind's exam sheet compiles with pdflatex" compile "$work/all/all-exams.tex"
+# Some steps gloss a term in Japanese (輪郭線): such a key is set for LuaLaTeX; the others compile here.
+if head -1 "$work/all/all-key.tex" | grep -q Japanese; then
+  check "a key with Japanese glosses is set for LuaLaTeX" grep -q 'usepackage{luatexja}' "$work/all/all-key.tex"
+fi
+python3 - "$work/all.yaml" "$work/latin.yaml" <<'PY'
+import sys, yaml
+doc = yaml.safe_load(open(sys.argv[1], encoding="utf-8"))
+doc["problems"] = [p for p in doc["problems"] if p["kind"] not in ("edge_visibility",)]
+yaml.safe_dump(doc, open(sys.argv[2], "w", encoding="utf-8"), allow_unicode=True)
+PY
+"$frustum" generate "$work/latin.yaml" --seed 4 --count 2 -o "$work/latin" --format pdf >/dev/null 2>&1 || true
+check "the key of every other kind compiles with pdflatex" test -s "$work/latin/latin-key.pdf"
+check "no character of any key or sheet lacks a LaTeX form" \
+  test "$(cat "$work"/all/*.tex "$work"/latin/*.tex | grep -c 'unknownchar{[0-9A-F]')" = 0
+
+"$frustum" generate "$src/problems/seeds/001_zbuffer_plane_method.yaml" --seed 1 -o "$work/ja" --format latex >/dev/null 2>&1
+check "a Japanese set chooses LuaLaTeX with luatexja" grep -q 'usepackage{luatexja}' "$work/ja/001_zbuffer_plane_method-exams.tex"
+
+echo "$failures failed"
+[ "$failures" -eq 0 ]
