@@ -534,7 +534,7 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
                                                  const std::vector<MatX<Exact>>& inverses,
                                                  bool invertible,
                                                  const std::vector<std::vector<Exact>>& points,
-                                                 Precision p) {
+                                                 Api api, Precision p) {
   return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
     struct In {
       int size;
@@ -562,9 +562,9 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
       }
       return o;
     };
-    auto report = [p](const In&, const Out& o) {
+    auto report = [p, api](const In&, const Out& o) {
       NumericOut<T> out(p);
-      out.matrix("matrix", o.m);
+      out.matrix("matrix", paper_form(o.m, api));
       if (o.moved.empty())
         out.null("points");
       else
@@ -572,7 +572,7 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
       if (o.inverse.size() == 0) {
         out.null("inverse");
       } else {
-        out.matrix("inverse", o.inverse);
+        out.matrix("inverse", paper_form(o.inverse, api));
         if constexpr (!kIsExact<T>) {
           const double kappa = static_cast<double>(o.m.cwiseAbs().rowwise().sum().maxCoeff() *
                                                    o.inverse.cwiseAbs().rowwise().sum().maxCoeff());
