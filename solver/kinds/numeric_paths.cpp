@@ -356,9 +356,13 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
       Polygon3<Exact> exact_points;  // for the exact fallback of the facing
       Vec3<Exact> exact_eye;
       InputRange range;
+      T fast_bound{};  // the filter's bound, computed once with the inputs
     };
     auto core = [](const In& in) {
-      return facing(in.points, in.eye, in.exact_points, in.exact_eye, in.range.relative());
+      if constexpr (kIsExact<T>)
+        return facing(in.points, in.eye, in.exact_points, in.exact_eye, true, T(0));
+      else
+        return facing(in.points, in.eye, in.exact_points, in.exact_eye, in.range.relative(), in.fast_bound);
     };
     auto report = [p, kappa](const In& in, const Facing<T>& f) {
       NumericOut<T> out(p);
@@ -372,9 +376,10 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
       if (f.used_exact) out.exact_decision("facing");
       return out.take();
     };
-    In in{{}, {}, points, eye, {}};
+    In in{{}, {}, points, eye, {}, {}};
     in.points = conv<T>(points, &in.range);
     in.eye = conv<T>(eye, &in.range);
+    if constexpr (!kIsExact<T>) in.fast_bound = facing_error_bound_fast(in.points, in.eye);
     return prepare(std::move(in), core, report);
   });
 }
