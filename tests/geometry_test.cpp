@@ -91,3 +91,20 @@ TEST(Geometry, Orient3dIsExactWhereNaiveDoublesFail) {
 
 }  // namespace
 }  // namespace frustum
+
+namespace frustum {
+namespace {
+
+// Short edges are not parallel edges: perpendicular edges of length 1e-160 (whose cross
+// product underflows in double) have sine 1 and lose no digit.
+TEST(PolygonAnalysis, TinyPerpendicularEdgesAreNotNearlyParallel) {
+  const Exact tiny = GiNaC::pow(Exact(10), -160);
+  const PolygonAnalysis a = analyse_polygon({Vec3<Exact>(0, 0, 0), Vec3<Exact>(tiny, 0, 0), Vec3<Exact>(0, tiny, 0)});
+  EXPECT_NEAR(a.min_sine, std::sqrt(0.5), 1e-12);  // the 45° corners
+  EXPECT_LT(a.condition, 2);
+  const PolygonAnalysis thin = analyse_polygon({Vec3<Exact>(0, 0, 0), Vec3<Exact>(tiny, 0, 0), Vec3<Exact>(2 * tiny, tiny / 1000000000, 0)});
+  EXPECT_LT(thin.min_sine, 1e-8);
+}
+
+}  // namespace
+}  // namespace frustum

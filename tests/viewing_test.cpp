@@ -1,6 +1,7 @@
 // The viewing pipeline: transforms, look_at, projections and the viewport, in the three
 // conventions. Seeds' worked answers, exact identities over generated cases, cross-checks
 // between the kinds and the templates, and the domain errors.
+#include "solver/kinds/solve_precision.hpp"
 #include "solver/kinds/viewing_steps.hpp"
 #include "solver/viewing/projection.hpp"
 #include "solver/viewing/transforms.hpp"
@@ -782,6 +783,105 @@ TEST(ViewingAngles, RadiansGiveTheSameMatricesAsDegrees) {
   // pi/2 read as degrees is a small angle, not a right angle.
   const ProblemResult small = solve_yaml(one("projection_matrix", "{perspective: {fovy: \"pi/2\", aspect: 2, near: 1, far: 3}}"));
   EXPECT_NE(exact_text(small, "matrix"), exact_text(deg, "matrix"));
+}
+
+
+// ---- Every kind that prints a matrix or a volume, in each convention (issue 14) ----
+
+// transform: column form (translation in the last column, P′ = M·P) for OpenGL and Processing;
+// DirectX prints the transpose (translation in the bottom row, P′ = P·M), the inverse too, in
+// the exact and every numeric backend; the moved points are the same.
+TEST(ConventionsEveryKind, TransformPrintsRowFormUnderDirectX) {
+  const std::string given = "{steps: [{translate: [1, 2, 3]}, {rotate_z: 90}, {scale: [2, 1, 1]}], points: [[1, 1, 1]]}";
+  const ProblemResult gl = solve_yaml(one("transform", given, "{api: opengl}"));
+  ASSERT_FALSE(gl.error) << error_text(gl);
+  const MatX<Exact> m = exact_matrix(*gl.answers.find("matrix")), inv = exact_matrix(*gl.answers.find("inverse"));
+  EXPECT_TRUE(test::same(m(0, 3), -4)) << text_of(m);  // translation (−2·2, 1, 3) in the last column
+  EXPECT_TRUE(test::same(m(3, 0), 0));
+  for (const Api api : {Api::Processing, Api::DirectX}) {
+    const ProblemResult r = solve_yaml(one("transform", given, api_conventions(api)));
+    ASSERT_FALSE(r.error) << error_text(r);
+    const bool rows = api == Api::DirectX;
+    EXPECT_TRUE(same_matrix(exact_matrix(*r.answers.find("matrix")), rows ? MatX<Exact>(m.transpose()) : m)) << to_string(api);
+    EXPECT_TRUE(same_matrix(exact_matrix(*r.answers.find("inverse")), rows ? MatX<Exact>(inv.transpose()) : inv));
+    EXPECT_EQ(exact_text(r, "points"), exact_text(gl, "points"));
+    for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble}) {
+      const ProblemResult n = solve_problem(load_problem_set_from_string(one("transform", given, api_conventions(api)), "t.yaml").problems[0],
+                                            "t.yaml", false, p);
+      ASSERT_FALSE(n.error);
+      const std::vector<double>& got = n.answers.find("matrix")->numbers;
+      EXPECT_NEAR(got[rows ? 12 : 3], -4, 1e-6) << to_string(api) << " " << to_string(p);
+    }
+    if (rows) {
+      bool said = false;
+      for (const Step& st : r.derivation.steps()) said = said || st.formula.unicode.find("P′ = P·M") != std::string::npos;
+      EXPECT_TRUE(said);
+    }
+  }
+}
+
+// look_at: DirectX's view matrix has its translation in the bottom row; OpenGL's and
+// Processing's in the last column.
+TEST(ConventionsEveryKind, LookAtTranslationRowOrColumn) {
+  const std::string given = "{eye: [1, 2, 5], center: [0, 0, 0], up: [0, 1, 0]}";
+  for (const Api api : {Api::OpenGL, Api::Processing, Api::DirectX}) {
+    const ProblemResult r = solve_yaml(one("look_at", given, api_conventions(api)));
+    ASSERT_FALSE(r.error) << error_text(r);
+    const MatX<Exact> m = exact_matrix(*r.answers.find("matrix"));
+    const bool rows = api == Api::DirectX;
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(test::same(rows ? m(k, 3) : m(3, k), 0)) << to_string(api) << text_of(m);
+    EXPECT_FALSE(test::same(rows ? m(3, 2) : m(2, 3), 0)) << to_string(api);
+  }
+}
+
+// projection_matrix: Processing's frustum differs from OpenGL's only in −2n/(t−b); DirectX
+// prints the row form with w′ = z in row 3, column 4.
+TEST(ConventionsEveryKind, ProjectionMatrixProcessingNegatesOnlyTheYScale) {
+  const std::string given = "{frustum: {left: -2, right: 3, bottom: -1, top: 4, near: 2, far: 10}}";
+  const MatX<Exact> gl = exact_matrix(*solve_yaml(one("projection_matrix", given, "{api: opengl}")).answers.find("matrix"));
+  const MatX<Exact> pr = exact_matrix(*solve_yaml(one("projection_matrix", given, "{api: processing}")).answers.find("matrix"));
+  const MatX<Exact> dx = exact_matrix(*solve_yaml(one("projection_matrix", given, "{api: directx}")).answers.find("matrix"));
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_TRUE(test::same(pr(i, j), i == 1 && j == 1 ? Exact(-gl(i, j)) : gl(i, j))) << i << j;
+  EXPECT_TRUE(test::same(gl(1, 1), Exact(4) / 5));  // 2n/(t − b)
+  EXPECT_TRUE(test::same(dx(2, 3), 1));
+  EXPECT_TRUE(test::same(dx(3, 2), Exact(-5) / 2));
+}
+
+// view_volume (seed 002's S and P): column form, transposed under DirectX.
+TEST(ConventionsEveryKind, ViewVolumeMatricesTransposeUnderDirectX) {
+  const std::string given = "{d: 1, a: 1, b: 1, z_min: 1, z_max: 100}";
+  const ProblemResult gl = solve_yaml(one("view_volume", given, "{api: opengl}"));
+  for (const Api api : {Api::Processing, Api::DirectX}) {
+    const ProblemResult r = solve_yaml(one("view_volume", given, api_conventions(api)));
+    ASSERT_FALSE(r.error) << error_text(r);
+    for (const char* name : {"scale_matrix", "perspective_matrix"}) {
+      const MatX<Exact> m = exact_matrix(*gl.answers.find(name));
+      EXPECT_TRUE(same_matrix(exact_matrix(*r.answers.find(name)), api == Api::DirectX ? MatX<Exact>(m.transpose()) : m)) << name;
+    }
+    EXPECT_EQ(exact_text(r, "point"), exact_text(gl, "point"));
+  }
+}
+
+// clip_line and clip_polygon: the default volume is the API's NDC volume, so z = −1/2 is
+// inside under OpenGL and Processing and outside (z < 0) under DirectX.
+TEST(ConventionsEveryKind, ClippingDefaultVolumeFollowsTheNdcRange) {
+  for (const Api api : {Api::OpenGL, Api::Processing, Api::DirectX}) {
+    const bool dx = api == Api::DirectX;
+    const ProblemResult line = solve_yaml(one("clip_line", "{p: [0, 0, -0.5], q: [0.5, 0, 0.5]}", api_conventions(api)));
+    ASSERT_FALSE(line.error) << error_text(line);
+    EXPECT_EQ(line.answers.find("accept")->flag, !dx) << to_string(api);
+    EXPECT_EQ(exact_text(line, "clipped"), dx ? "1/4, 0, 0, 1/2, 0, 1/2" : "0, 0, -1/2, 1/2, 0, 1/2") << to_string(api);
+    bool titled = false;
+    for (const Step& st : line.derivation.steps())
+      titled = titled || st.title == (dx ? "Clip volume (default: DirectX's NDC volume, z in [0, 1])"
+                                         : "Clip volume (default: the NDC cube)");
+    EXPECT_TRUE(titled) << to_string(api);
+    const ProblemResult poly = solve_yaml(one("clip_polygon", "{points: [[0, 0, -0.5], [0.5, 0, 0.5], [0, 0.5, 0.5]]}",
+                                              api_conventions(api)));
+    ASSERT_FALSE(poly.error) << error_text(poly);
+    EXPECT_EQ(poly.answers.find("clipped")->rows, dx ? 4 : 3) << to_string(api);
+  }
 }
 
 }  // namespace

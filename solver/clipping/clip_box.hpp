@@ -4,6 +4,7 @@
 #pragma once
 
 #include "solver/geometry/vec.hpp"
+#include "solver/viewing/conventions.hpp"
 
 #include <string>
 
@@ -27,6 +28,14 @@ struct ClipBox {
 template <typename T>
 ClipBox<T, 3> ndc_cube() {
   return {Vec3<T>(T(-1), T(-1), T(-1)), Vec3<T>(T(1), T(1), T(1))};
+}
+
+// The API's NDC volume: the cube [−1, 1]³ (OpenGL, Processing), or z ∈ [0, 1] (DirectX).
+template <typename T>
+ClipBox<T, 3> ndc_volume(Api api) {
+  ClipBox<T, 3> box = ndc_cube<T>();
+  if (api == Api::DirectX) box.lo(2) = T(0);
+  return box;
 }
 
 // Axis names for messages and steps: "x", "y", "z".

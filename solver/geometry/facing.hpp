@@ -41,7 +41,18 @@ T facing_error_bound(const Polygon3<T>& p, const Vec3<T>& eye) {
   const Vec3<T> view = eye.cwiseAbs() + a0;
   const int m = static_cast<int>(p.size());
   const T k = Rounding<T>::gamma(2 * m + 12);
-  return k * T(view.dot(terms)) + Rounding<T>::eta * (T(2 * (m - 2)) * view.sum() + T(4));
+  return k * T(view.dot(terms)) + Rounding<T>::underflow(T(2 * (m - 2)) * view.sum() + T(4));
+}
+
+// The same bound from the largest input magnitude S alone (each |pᵢ| + |p₀| ≤ 2S, so the
+// permanent is at most 48(m − 2)S³): looser, but a few operations; tried first.
+template <typename T>
+T facing_error_bound_fast(const Polygon3<T>& p, const Vec3<T>& eye) {
+  T s = eye.cwiseAbs().maxCoeff();
+  for (const Vec3<T>& v : p) s = std::max(s, v.cwiseAbs().maxCoeff());
+  const T m2 = T(p.size() - 2);
+  const T k = Rounding<T>::gamma(2 * static_cast<int>(p.size()) + 12);
+  return k * T(48) * m2 * (s * s * s) + Rounding<T>::underflow(T(12) * m2 * s + T(4));
 }
 
 // D_f = (eye − p₀)·n with n Newell's normal, in T (exact for the exact backend).
@@ -51,20 +62,29 @@ T facing_discriminant(const Polygon3<T>& p, const Vec3<T>& eye) {
 }
 
 // `exact_points`, `exact_eye`: the problem's exact inputs, which `p` and `eye` were rounded
-// from; `inputs_relative`: every one of them converted within a relative u (converts_relatively).
+// from; `inputs_relative`: every one of them converted within a relative u (converts_relatively);
+// `fast_bound`: facing_error_bound_fast(p, eye) when the caller computed it once beforehand
+// (a prepared solve: the inputs do not change between runs), else NaN.
 template <typename T>
 Facing<T> facing(const Polygon3<T>& p, const Vec3<T>& eye, const Polygon3<Exact>& exact_points,
-                 const Vec3<Exact>& exact_eye, bool inputs_relative) {
+                 const Vec3<Exact>& exact_eye, bool inputs_relative,
+                 T fast_bound = std::numeric_limits<T>::quiet_NaN()) {
   Facing<T> f;
   f.normal = newell_normal(p);
   f.view = eye - p[0];
   f.df = f.view.dot(f.normal);
   f.naive_sign = scalar_sign(f.df);
-  T bound{};
-  if constexpr (!kIsExact<T>) bound = facing_error_bound(p, eye);
-  const SignDecision d = decide_sign(f.df, bound, inputs_relative, [&] {
-    return exact_sign(facing_discriminant(exact_points, exact_eye));
-  });
+  const auto exact = [&] { return exact_sign(facing_discriminant(exact_points, exact_eye)); };
+  SignDecision d;
+  if constexpr (kIsExact<T>) {
+    d = decide_sign(f.df, T(0), true, exact);
+  } else {
+    // The cheap bound settles ordinary input; the sharper one is computed only near the plane.
+    if (std::isnan(fast_bound)) fast_bound = facing_error_bound_fast(p, eye);
+    const bool fast = inputs_relative && sign_is_proven(f.df, fast_bound);
+    d = fast ? SignDecision{f.naive_sign, false}
+             : decide_sign(f.df, facing_error_bound(p, eye), inputs_relative, exact);
+  }
   f.sign = d.sign;
   f.used_exact = d.exact;
   return f;

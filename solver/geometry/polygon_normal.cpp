@@ -17,10 +17,16 @@ PolygonAnalysis analyse_polygon(const Polygon3<Exact>& p) {
   }
   // Sine of each consecutive edge pair, in doubles: only used to warn, never to decide.
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d e = to_double(edge(p, i));
-    const Eigen::Vector3d f = to_double(edge(p, i + 1));
+    Eigen::Vector3d e = to_double(edge(p, i));
+    Eigen::Vector3d f = to_double(edge(p, i + 1));
+    // Scale-free: each edge divided by its largest component (the sine is unchanged), so tiny or
+    // huge edges neither underflow nor overflow in the products (no "inf digits" for short,
+    // perpendicular edges).
+    const double se = e.cwiseAbs().maxCoeff(), sf = f.cwiseAbs().maxCoeff();
+    if (!(se > 0.0) || !(sf > 0.0) || !std::isfinite(se) || !std::isfinite(sf)) continue;
+    e /= se;
+    f /= sf;
     const double ef = e.norm() * f.norm();
-    if (ef == 0.0) continue;
     const double s = e.cross(f).norm() / ef;
     if (s < a.min_sine) {
       a.min_sine = s;

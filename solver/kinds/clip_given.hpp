@@ -1,6 +1,6 @@
 // Reading the given of the clipping kinds: points of 2 or 3 components, and the `window`
 // {xmin, xmax, ymin, ymax} of 2D problems or the `volume` {xmin, …, zmax} of 3D ones (the
-// NDC cube [−1, 1]³ when absent).
+// API's NDC volume when absent: [−1, 1]³, or z ∈ [0, 1] under DirectX).
 #pragma once
 
 #include "solver/clipping/clip_box.hpp"
@@ -51,18 +51,28 @@ struct Region {
   ClipBox<Exact, 2> window;
   ClipBox<Exact, 3> volume;
   bool default_volume = false;
+  Api api = Api::OpenGL;
+
+  // The title of the derivation's step that states the region.
+  std::string title() const {
+    if (dims == 2) return "Clip window";
+    if (!default_volume) return "Clip volume";
+    return api == Api::DirectX ? "Clip volume (default: DirectX's NDC volume, z in [0, 1])"
+                               : "Clip volume (default: the NDC cube)";
+  }
 };
 
-inline Region read_region(GivenReader& r, int dims, const std::string& points_field) {
+inline Region read_region(GivenReader& r, int dims, const std::string& points_field, Api api) {
   Region g;
   g.dims = dims;
+  g.api = api;
   if (dims == 2) {
     if (r.has("volume")) r.fail("volume", "the " + points_field + " are 2D: give a `window` {xmin, xmax, ymin, ymax}");
     g.window = read_box<2>(r, "window");
   } else {
     if (r.has("window")) r.fail("window", "the " + points_field + " are 3D: give a `volume` {xmin, xmax, ymin, ymax, zmin, zmax} (default: the NDC cube)");
     g.default_volume = !r.has("volume");
-    g.volume = g.default_volume ? ndc_cube<Exact>() : read_box<3>(r, "volume");
+    g.volume = g.default_volume ? ndc_volume<Exact>(api) : read_box<3>(r, "volume");
   }
   return g;
 }

@@ -28,14 +28,14 @@ struct ClipLine {
             {"clipped", AnswerKind::Segment, {"outcode_p", "outcode_q"}, {}}};
   }
 
-  static Given parse(GivenReader& r, const Conventions&) {
+  static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
     const int dims = clip_given::point_dims(r, "p");
     g.p = r.numbers("p", static_cast<std::size_t>(dims));
     if (clip_given::point_dims(r, "q") != dims)
       r.fail("q", "expected " + std::to_string(dims) + " numbers like p");
     g.q = r.numbers("q", static_cast<std::size_t>(dims));
-    g.region = clip_given::read_region(r, dims, "points p and q");
+    g.region = clip_given::read_region(r, dims, "points p and q", c.api);
     return g;
   }
 
@@ -61,7 +61,7 @@ struct ClipLine {
     out.set("accept", Value::boolean(r.trivial_accept));
     out.set("reject", Value::boolean(r.trivial_reject));
     if (steps) {
-      steps->add(N == 2 ? "Clip window" : g.region.default_volume ? "Clip volume (default: the NDC cube)" : "Clip volume",
+      steps->add(g.region.title(),
                  {}, {}, clip_given::box_text(box))
           .note = bits_legend(N);
       const auto code = [](unsigned c) {

@@ -23,7 +23,7 @@ struct ClipPolygon {
   static std::vector<std::string> given_fields() { return {"points", "window", "volume"}; }
   static std::vector<AnswerSpec> answers() { return {{"clipped", AnswerKind::Polygon, {}, {}}}; }
 
-  static Given parse(GivenReader& r, const Conventions&) {
+  static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
     const std::size_t n = r.list_size("points", 3);
     if (n > kMaxVertices) r.fail("points", "at most " + std::to_string(kMaxVertices) + " vertices");
@@ -31,7 +31,7 @@ struct ClipPolygon {
     const YAML::Node first = root["points"][0];
     const std::size_t dims = first.IsSequence() && first.size() == 3 ? 3 : 2;
     for (std::size_t i = 0; i < n; ++i) g.points.push_back(r.numbers_at("points", i, dims));
-    g.region = clip_given::read_region(r, static_cast<int>(dims), "points");
+    g.region = clip_given::read_region(r, static_cast<int>(dims), "points", c.api);
     return g;
   }
 
@@ -50,8 +50,8 @@ struct ClipPolygon {
     for (const auto& p : g.points) poly.push_back(Eigen::Map<const V>(p.data()));
     const PolygonClipResult<V> r = clip_polygon_box(poly, box);
     if (steps) {
-      steps->add(N == 2 ? "Clip window" : g.region.default_volume ? "Clip volume (default: the NDC cube)" : "Clip volume",
-                 {}, word("polygon") + math(": ", "\\colon ") + vertex_list(poly), clip_given::box_text(box))
+      steps->add(g.region.title(), {}, word("polygon") + math(": ", "\\colon ") + vertex_list(poly),
+                 clip_given::box_text(box))
           .note = "Sutherland–Hodgman: clip against one boundary at a time; for each edge S → E keep E when it is "
                   "inside (on the boundary counts as inside) and add the intersection where the edge crosses.";
       for (const auto& s : r.stages)

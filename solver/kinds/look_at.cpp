@@ -38,7 +38,7 @@ struct LookAt {
     if (steps) steps->yields("matrix");
     std::vector<std::vector<Exact>> points;
     for (const Vec3<Exact>& p : g.points) points.push_back({p(0), p(1), p(2)});
-    out.set("points", transform_points_with_steps(m, points, "A point in view coordinates", "p", steps));
+    out.set("points", transform_points_with_steps(m, points, "A point in view coordinates", "p", steps, g.api));
     return out;
   }
   // The reversed basis: the camera's z axis along the view direction instead of against it (or

@@ -356,9 +356,13 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
       Polygon3<Exact> exact_points;  // for the exact fallback of the facing
       Vec3<Exact> exact_eye;
       InputRange range;
+      T fast_bound{};  // the filter's bound, computed once with the inputs
     };
     auto core = [](const In& in) {
-      return facing(in.points, in.eye, in.exact_points, in.exact_eye, in.range.relative());
+      if constexpr (kIsExact<T>)
+        return facing(in.points, in.eye, in.exact_points, in.exact_eye, true, T(0));
+      else
+        return facing(in.points, in.eye, in.exact_points, in.exact_eye, in.range.relative(), in.fast_bound);
     };
     auto report = [p, kappa](const In& in, const Facing<T>& f) {
       NumericOut<T> out(p);
@@ -372,9 +376,10 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
       if (f.used_exact) out.exact_decision("facing");
       return out.take();
     };
-    In in{{}, {}, points, eye, {}};
+    In in{{}, {}, points, eye, {}, {}};
     in.points = conv<T>(points, &in.range);
     in.eye = conv<T>(eye, &in.range);
+    if constexpr (!kIsExact<T>) in.fast_bound = facing_error_bound_fast(in.points, in.eye);
     return prepare(std::move(in), core, report);
   });
 }
@@ -534,7 +539,7 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
                                                  const std::vector<MatX<Exact>>& inverses,
                                                  bool invertible,
                                                  const std::vector<std::vector<Exact>>& points,
-                                                 Precision p) {
+                                                 Api api, Precision p) {
   return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
     struct In {
       int size;
@@ -562,9 +567,9 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
       }
       return o;
     };
-    auto report = [p](const In&, const Out& o) {
+    auto report = [p, api](const In&, const Out& o) {
       NumericOut<T> out(p);
-      out.matrix("matrix", o.m);
+      out.matrix("matrix", paper_form(o.m, api));
       if (o.moved.empty())
         out.null("points");
       else
@@ -572,7 +577,7 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
       if (o.inverse.size() == 0) {
         out.null("inverse");
       } else {
-        out.matrix("inverse", o.inverse);
+        out.matrix("inverse", paper_form(o.inverse, api));
         if constexpr (!kIsExact<T>) {
           const double kappa = static_cast<double>(o.m.cwiseAbs().rowwise().sum().maxCoeff() *
                                                    o.inverse.cwiseAbs().rowwise().sum().maxCoeff());

@@ -32,12 +32,13 @@ std::unique_ptr<NumericSolver> project_point_numeric(
     const Vec3<Exact>& point, const std::optional<std::array<Vec3<Exact>, 3>>& camera,
     const ProjectionSpec& projection, const Exact& width, const Exact& height, Api api, Precision p);
 // steps: each step's matrix; inverses: each step's inverse (used by the exact backend);
-// invertible: false when a step is singular (the inverse is then null).
+// invertible: false when a step is singular (the inverse is then null). Steps in column
+// form; under DirectX the matrix and inverse are reported in row-vector form (transposed).
 std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX<Exact>>& steps,
                                                  const std::vector<MatX<Exact>>& inverses,
                                                  bool invertible,
                                                  const std::vector<std::vector<Exact>>& points,
-                                                 Precision p);
+                                                 Api api, Precision p);
 std::unique_ptr<NumericSolver> viewport_numeric(const Vec3<Exact>& ndc, const Exact& width,
                                                 const Exact& height, Api api, Precision p);
 

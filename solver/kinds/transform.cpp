@@ -22,6 +22,7 @@ struct Transform {
     int dim = 3;
     std::vector<TransformStep> steps;
     std::vector<std::vector<Exact>> points;
+    Api api = Api::OpenGL;  // DirectX prints every matrix in row-vector form (the transpose)
   };
   static std::vector<std::string> given_fields() { return {"dim", "steps", "points"}; }
   static std::vector<AnswerSpec> answers() {
@@ -36,6 +37,7 @@ struct Transform {
 
   static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
+    g.api = c.api;
     g.dim = r.has("dim") ? static_cast<int>(to_double(r.number("dim"))) : 3;
     if (g.dim != 2 && g.dim != 3) r.fail("dim", "must be 2 or 3");
     const std::size_t n = r.list_size("steps");
@@ -76,35 +78,43 @@ struct Transform {
       inverses.push_back(s.inverse);
       singular = singular || s.inverse.size() == 0;
     }
-    return transform_numeric(g.dim, matrices, inverses, !singular, g.points, p);
+    return transform_numeric(g.dim, matrices, inverses, !singular, g.points, g.api, p);
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
     const int size = g.dim + 1;
+    const bool rows = g.api == Api::DirectX;
     MatX<Exact> m = MatX<Exact>::Identity(size, size);
     for (std::size_t i = 0; i < g.steps.size(); ++i) {
       const TransformStep& s = g.steps[i];
       m = canonical(MatX<Exact>(s.matrix * m));
       if (steps) {
-        Step& st = steps->add(fmt::format("A{}: {}", i + 1, s.title), s.formula, s.substitution,
-                              math(fmt::format("A{} = ", i + 1), fmt::format("A_{{{}}} = ", i + 1)) + matrix_text(s.matrix));
+        // Row vectors: the symbolic forms below are the column-vector ones, so only the values show.
+        Step& st = steps->add(fmt::format("A{}: {}", i + 1, s.title), rows ? MathText{} : s.formula, s.substitution,
+                              math(fmt::format("A{} = ", i + 1), fmt::format("A_{{{}}} = ", i + 1)) +
+                                  matrix_text(paper_form(s.matrix, g.api)));
         st.note = s.note;
       }
     }
     Answers out;
-    out.set("matrix", matrix_value(m));
+    out.set("matrix", matrix_value(paper_form(m, g.api)));
     if (steps) {
+      // Column vectors: M = Aₙ·…·A₁; DirectX's row vectors: M = A₁·…·Aₙ (each Aᵢ transposed).
       std::string order, order_latex;
-      for (std::size_t i = g.steps.size(); i >= 1; --i) {
-        order += fmt::format("{}A{}", i == g.steps.size() ? "" : "·", i);
+      for (std::size_t k = 1; k <= g.steps.size(); ++k) {
+        const std::size_t i = rows ? k : g.steps.size() + 1 - k;
+        order += fmt::format("{}A{}", k == 1 ? "" : "·", i);
         order_latex += fmt::format("A_{{{}}}", i);
       }
-      steps->add("Composite (first step applied first)", math("M = " + order, "M = " + order_latex),
-                 {}, math("M = ") + matrix_text(m))
-          .note = "Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = A₃A₂A₁P).";
+      steps->add("Composite (first step applied first)", math("M = " + order, "M = " + order_latex), {},
+                 math("M = ") + matrix_text(paper_form(m, g.api)))
+          .note = rows ? "DirectX multiplies row vectors: P′ = P·M, so the step applied first stands leftmost "
+                         "and every matrix is the transpose of its column-vector form (a translation in the "
+                         "bottom row, as XMMatrixTranslation builds it)."
+                       : "Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = A₃A₂A₁P).";
       steps->yields("matrix");
     }
-    out.set("points", transform_points_with_steps(m, g.points, "Transform a point", "P", steps));
+    out.set("points", transform_points_with_steps(m, g.points, "Transform a point", "P", steps, g.api));
     // det M is the product of the steps' determinants (rotations and translations have 1).
     Exact det = 1;
     for (const TransformStep& s : g.steps) det *= s.det;
@@ -116,16 +126,17 @@ struct Transform {
       // M⁻¹ = A₁⁻¹·A₂⁻¹·…·Aₙ⁻¹.
       MatX<Exact> inv = MatX<Exact>::Identity(size, size);
       for (const TransformStep& s : g.steps) inv = canonical(MatX<Exact>(inv * s.inverse));
-      out.set("inverse", matrix_value(inv));
+      out.set("inverse", matrix_value(paper_form(inv, g.api)));
       if (steps) {
         std::string order, order_latex;
-        for (std::size_t i = 1; i <= g.steps.size(); ++i) {
-          order += fmt::format("{}A{}⁻¹", i == 1 ? "" : "·", i);
+        for (std::size_t k = 1; k <= g.steps.size(); ++k) {
+          const std::size_t i = rows ? g.steps.size() + 1 - k : k;
+          order += fmt::format("{}A{}⁻¹", k == 1 ? "" : "·", i);
           order_latex += fmt::format("A_{{{}}}^{{-1}}", i);
         }
         steps->add("Inverse", math("M⁻¹ = " + order + " (M·M⁻¹ = I)",
                                    "M^{-1} = " + order_latex + "\\;(M M^{-1} = I)"), {},
-                   math("M⁻¹ = ", "M^{-1} = ") + matrix_text(inv))
+                   math("M⁻¹ = ", "M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
             .note = "Each step is undone on its own (a translation by its negative, a scaling by its "
                     "reciprocal, a rotation by its transpose), in reverse order.";
         steps->yields("inverse");

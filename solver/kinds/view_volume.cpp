@@ -18,6 +18,7 @@ struct ViewVolume {
   struct Given {
     Exact d, a, b, z_min, z_max;
     Vec3<Exact> point;
+    Api api = Api::OpenGL;  // DirectX prints S and P in row-vector form (transposed)
   };
   static std::vector<std::string> given_fields() { return {"d", "a", "b", "z_min", "z_max", "point"}; }
   static std::vector<AnswerSpec> answers() {
@@ -26,8 +27,8 @@ struct ViewVolume {
             {"point", AnswerKind::Vector, {"scale_matrix", "perspective_matrix"}, {}}};
   }
 
-  static Given parse(GivenReader& r, const Conventions&) {
-    Given g{r.number("d"), r.number("a"), r.number("b"), r.number("z_min"), r.number("z_max"), {}};
+  static Given parse(GivenReader& r, const Conventions& c) {
+    Given g{r.number("d"), r.number("a"), r.number("b"), r.number("z_min"), r.number("z_max"), {}, c.api};
     for (const char* k : {"d", "a", "b"})
       if (exact_sign(r.number(k)) <= 0) r.fail(k, "must be positive");
     if (exact_sign(g.z_min) <= 0) r.fail("z_min", "must be positive: the front clipping plane is in front of the eye");
@@ -46,20 +47,26 @@ struct ViewVolume {
     p(3, 2) = 1;
     p(3, 3) = 0;
     Answers out;
-    out.set("scale_matrix", matrix_value(s));
-    out.set("perspective_matrix", matrix_value(p));
+    out.set("scale_matrix", matrix_value(paper_form(s, g.api)));
+    out.set("perspective_matrix", matrix_value(paper_form(p, g.api)));
     if (steps) {
       steps->add("① Normalize the view volume", math("S(d/(a·z_max), d/(b·z_max), 1/z_max)",
                                                      "S\\left(\\frac{d}{a z_{\\max}}, \\frac{d}{b z_{\\max}}, \\frac{1}{z_{\\max}}\\right)"),
-                 {}, math("S = ") + matrix_text(s))
-          .note = "The back clipping plane moves to z = 1, where x and y span [−1, 1].";
+                 {}, math("S = ") + matrix_text(paper_form(s, g.api)))
+          .note = "The back clipping plane moves to z = 1, where x and y span [−1, 1]." +
+                  std::string(g.api == Api::DirectX ? " " + multiply_note(g.api) : "");
       steps->yields("scale_matrix");
       steps->add("② Perspective of the normalized volume",
-                 math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) −z̃/(1−z̃); 0 0 1 0]",
-                      "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
-                      "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} \\\\ "
-                      "0 & 0 & 1 & 0 \\end{bmatrix}"),
-                 math("z̃_min = ", "\\tilde{z}_{\\min} = ") + exact(zt), math("P = ") + matrix_text(p))
+                 g.api == Api::DirectX
+                     ? math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) 1; 0 0 −z̃/(1−z̃) 0]",
+                            "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
+                            "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & 1 \\\\ "
+                            "0 & 0 & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} & 0 \\end{bmatrix}")
+                     : math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) −z̃/(1−z̃); 0 0 1 0]",
+                            "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
+                            "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} \\\\ "
+                            "0 & 0 & 1 & 0 \\end{bmatrix}"),
+                 math("z̃_min = ", "\\tilde{z}_{\\min} = ") + exact(zt), math("P = ") + matrix_text(paper_form(p, g.api)))
           .note = "X′ and Y′ are unchanged and W′ = z: the matrix is projective, not affine.";
       steps->yields("perspective_matrix");
     }
@@ -67,8 +74,12 @@ struct ViewVolume {
     const std::vector<Exact> q = {canonical(h[0]), canonical(h[1]), canonical(h[2])};
     out.set("point", Value::vector(q));
     if (steps) {
-      steps->add("A point through both, then the divide by W′", math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′",
-                                                                                  "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = \\frac{(X', Y', Z')}{W'}"),
+      steps->add("A point through both, then the divide by W′",
+                 g.api == Api::DirectX
+                     ? math("(X′, Y′, Z′, W′) = p·S·P,  p′ = (X′, Y′, Z′)/W′",
+                            "(X', Y', Z', W') = \\mathbf{p} S P,\\; \\mathbf{p}' = \\frac{(X', Y', Z')}{W'}")
+                     : math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′",
+                            "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = \\frac{(X', Y', Z')}{W'}"),
                  math("p = ", "\\mathbf{p} = ") + vec(g.point), math("p′ = ", "\\mathbf{p}' = ") + vec(q, true));
       steps->yields("point");
     }

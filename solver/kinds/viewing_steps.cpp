@@ -86,15 +86,17 @@ std::vector<std::vector<Exact>> rows_of(const MatX<Exact>& m) {
 
 Value transform_points_with_steps(const MatX<Exact>& m, const std::vector<std::vector<Exact>>& points,
                                   const std::string& title, const std::string& name,
-                                  Derivation* steps) {
+                                  Derivation* steps, Api api) {
   if (points.empty()) return Value::null();
   std::vector<std::vector<Exact>> moved;
   for (const std::vector<Exact>& p : points) {
     moved.push_back(transform_point(m, p));
     for (Exact& x : moved.back()) x = canonical(x);
     if (steps)
-      steps->add(title, math(name + "′ = M·" + name, name + "' = M " + name), math(name + " = ") + vec(p),
-                 math(name + "′ = ", name + "' = ") + vec(moved.back(), true));
+      steps->add(title,
+                 api == Api::DirectX ? math(name + "′ = " + name + "·M", name + "' = " + name + " M")
+                                     : math(name + "′ = M·" + name, name + "' = M " + name),
+                 math(name + " = ") + vec(p), math(name + "′ = ", name + "' = ") + vec(moved.back(), true));
   }
   if (steps) steps->yields("points");
   return Value::matrix(moved);

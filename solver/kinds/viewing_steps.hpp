@@ -41,11 +41,12 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
                                const Vec3<Exact>& up, Api api, const std::string& field,
                                Derivation* steps);
 
-// Every point through M (with the divide by w), one step each, yielding "points"; the
+// Every point through M (with the divide by w), one step each, yielding "points" (written
+// P′ = P·M under DirectX's row vectors; M is the column form either way); the
 // answer value is the list of moved points (null when there are none).
 Value transform_points_with_steps(const MatX<Exact>& m, const std::vector<std::vector<Exact>>& points,
                                   const std::string& title, const std::string& name,
-                                  Derivation* steps);
+                                  Derivation* steps, Api api = Api::OpenGL);
 
 MatX<Exact> canonical(const MatX<Exact>& m);
 std::vector<std::vector<Exact>> rows_of(const MatX<Exact>& m);
