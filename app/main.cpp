@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
   CLI::App cli{"Frustum: solves, explains and grades exercises on the 3D graphics pipeline"};
   cli.require_subcommand(1);
   const std::map<std::string, Format> formats = {
-      {"text", Format::Text}, {"markdown", Format::Markdown}, {"json", Format::Json}};
+      {"text", Format::Text}, {"markdown", Format::Markdown}, {"json", Format::Json},
+      {"html", Format::Html}, {"latex", Format::Latex}};
 
   std::string set, answers;
   std::optional<std::string> id;
@@ -25,7 +26,7 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingPath);
   solve->add_option("--id", id, "Solve only this problem");
-  solve->add_option("--format", format, "text, markdown or json")
+  solve->add_option("--format", format, "text, markdown, json, html (typeset, self-contained) or latex (lualatex)")
       ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
   std::optional<frustum::Precision> precision;
   const std::map<std::string, frustum::Precision> precisions = {

@@ -9,7 +9,7 @@ packages=(build-essential cmake ninja-build pkg-config
           libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev
           libstb-dev libbenchmark-dev libosmesa6-dev
           clang libclang-rt-14-dev
-          chromium libjs-katex nodejs)
+          chromium libjs-katex nodejs texlive-luatex texlive-latex-recommended fonts-dejavu-core)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
