@@ -52,6 +52,8 @@ int run_solve(const std::string& path, const std::optional<std::string>& id, For
     switch (format) {
       case Format::Json: sets.push_back(render_json(result)); break;
       case Format::Markdown: o.out << render_markdown(result, lang); break;
+      case Format::Html: o.out << render_html(result, lang); break;
+      case Format::Latex: o.out << render_latex(result, lang); break;
       case Format::Text: o.out << render_text(result, TextStyle{o.color, lang}); break;
     }
     if (format != Format::Text)

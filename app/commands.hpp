@@ -12,7 +12,7 @@
 
 namespace frustum::app {
 
-enum class Format { Text, Markdown, Json };
+enum class Format { Text, Markdown, Json, Html, Latex };
 
 struct Output {
   std::ostream& out;

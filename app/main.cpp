@@ -50,7 +50,8 @@ int main(int argc, char** argv) {
                 "frustum grade SET.yaml ANSWERS.yaml",
                 "frustum SUBCOMMAND --help     (options and an example for each subcommand)"}));
   const std::vector<std::pair<std::string, Format>> formats = {
-      {"text", Format::Text}, {"markdown", Format::Markdown}, {"json", Format::Json}};
+      {"text", Format::Text}, {"markdown", Format::Markdown}, {"json", Format::Json},
+      {"html", Format::Html},  {"latex", Format::Latex}};
 
   std::string set, answers;
   std::optional<std::string> id;
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingPath);
   solve->add_option("--id", id, "Solve only this problem");
-  solve->add_option("--format", format, "Output: text (default), markdown or json")
+  solve->add_option("--format", format, "Output: text (default), markdown, json, html (a typeset, self-contained page) or latex (for lualatex)")
       ->type_name("FORMAT")
       ->transform(choice(formats));
   std::optional<frustum::Precision> precision;

@@ -1,5 +1,7 @@
 #include "grader/feedback.hpp"
 
+#include "grader/report.hpp"
+
 #include "solver/derivation/render.hpp"
 #include "solver/derivation/svg.hpp"
 #include "solver/util/exact_format.hpp"
@@ -10,7 +12,6 @@ namespace frustum {
 
 namespace {
 
-std::string score_text(double v) { return format_approx(v, 6); }
 
 // Markdown table cells: a pipe would end the cell.
 std::string cell(const std::string& s) {
@@ -61,20 +62,6 @@ const char* kScript = R"JS(
 })();
 )JS";
 
-std::string steps_html(const std::vector<Step>& steps, Lang lang) {
-  std::string out = "<ol class=\"steps\">\n";
-  for (const Step& s : steps) {
-    const char* cls = s.level == Step::Level::Warning ? " class=\"warning\"" : "";
-    out += fmt::format("<li{}><b>{}</b>", cls, html_escape(tr(s.title, lang)));
-    for (const MathText* m : {&s.formula, &s.substitution})
-      if (!m->empty()) out += fmt::format("<div class=\"math\">{}</div>", html_escape(m->unicode));
-    if (!s.result.empty()) out += fmt::format("<div class=\"math\">⇒ {}</div>", html_escape(s.result.unicode));
-    if (!s.note.empty()) out += fmt::format("<div class=\"note\">{}</div>", html_escape(tr(s.note, lang)));
-    out += "</li>\n";
-  }
-  return out + "</ol>\n";
-}
-
 }  // namespace
 
 std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
@@ -121,8 +108,8 @@ std::string render_feedback_html(const GradeReport& r, Lang lang) {
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-      "<title>Frustum — {}</title>\n<style>{}</style>\n</head>\n<body data-rendered=\"no\">\n",
-      to_string(lang), html_escape(student), kStyle);
+      "<title>Frustum — {}</title>\n<style>{}</style>\n{}</head>\n<body data-rendered=\"no\">\n",
+      to_string(lang), html_escape(student), kStyle, html_math_head());
   out += fmt::format("<h1>{} {}</h1>\n<p class=\"total\" id=\"total\">{}: {} / {}</p>\n<p id=\"summary\"></p>\n",
                      html_escape(tr("Student", lang)), html_escape(student), html_escape(tr("Score", lang)),
                      score_text(r.score), score_text(r.max_score));
@@ -147,7 +134,7 @@ std::string render_feedback_html(const GradeReport& r, Lang lang) {
           "<tr class=\"{}\" data-verdict=\"{}\"><td><code>{}</code></td><td class=\"verdict\">{}</td>"
           "<td>{} / {}</td><td class=\"math\">{}</td><td class=\"math\">{}</td></tr>\n",
           v, v, html_escape(a.name), html_escape(verdict_word(a.verdict, lang)), score_text(a.score),
-          score_text(a.max_score), html_escape(got_shown(a)), html_escape(a.expected.shown().unicode));
+          score_text(a.max_score), html_escape(got_shown(a)), html_math(a.expected.shown(), lang, false));
     }
     out += "</table>\n";
     for (const AnswerGrade& a : p.answers) {
@@ -164,12 +151,12 @@ std::string render_feedback_html(const GradeReport& r, Lang lang) {
       if (!a.feedback.empty()) out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(tr(a.feedback, lang)));
       if (!a.derivation.empty())
         out += fmt::format("<details open><summary>{}</summary>\n{}</details>\n", html_escape(tr("How to get it", lang)),
-                           steps_html(a.derivation, lang));
+                           html_steps(a.derivation, lang));
       out += "</div>\n";
     }
     out += "</section>\n";
   }
-  out += fmt::format("<script>{}</script>\n</body>\n</html>\n", kScript);
+  out += fmt::format("<script>{}{}</script>\n</body>\n</html>\n", kScript, html_math_script());
   return out;
 }
 

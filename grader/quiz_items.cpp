@@ -99,7 +99,7 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
 
 std::string question_text(const ProblemSet& set, const ProblemSpec& p) {
   if (p.text.empty()) return p.info ? p.info->summary : p.kind;
-  std::string text = fill_given_text(p.text, p.given_node);
+  std::string text = fill_text(p.text, p.given_node);
   if (set.variant && p.text.find('{') == std::string::npos)
     text += " (Use the values given below.)";
   return text;

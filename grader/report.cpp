@@ -10,13 +10,6 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-// A score as a teacher writes it: at most two decimals, trailing zeros dropped (21.33, 2, 0.5).
-std::string score_text(double v) {
-  std::string s = fmt::format("{:.2f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s == "-0" ? "0" : s;
-}
 
 // The number a step has in the rendered derivation (notes and warnings are not numbered).
 int step_number(const std::vector<Step>& steps) {
@@ -39,6 +32,14 @@ std::string mark(Verdict v, bool color) {
 }
 
 }  // namespace
+
+// A score as a teacher writes it: at most two decimals, trailing zeros dropped (21.33, 2, 0.5).
+std::string score_text(double v) {
+  std::string s = fmt::format("{:.2f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
 
 std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
   const Lang lang = style.lang;

@@ -1,5 +1,5 @@
-// Rendering a grade report: text for a person (with the derivation under each wrong answer)
-// and the JSON of problem-format.md §3.
+// Rendering a grade report: text for a person (the derivation once per problem, each wrong
+// answer pointing at its step) and the JSON of problem-format.md §3.
 #pragma once
 
 #include "grader/grade.hpp"
@@ -11,6 +11,8 @@
 
 namespace frustum {
 
+// A score as a teacher writes it: at most two decimals, trailing zeros dropped (21.33, 2, 0.5).
+std::string score_text(double v);
 std::string render_grade_text(const GradeReport& r, const TextStyle& style);
 nlohmann::ordered_json render_grade_json(const GradeReport& r);
 

@@ -75,7 +75,7 @@ title: "Z-buffer drill"
 problems:
   - id: zbuf
     kind: depth_at_pixel
-    text: "Find z at pixel [1, 1]."
+    text: "Find z at pixel (1, 1)."
     given:
       triangle: [[0, 0, 2], [2, 3, 2], [0, 3, 9]]
       pixel: [1, 1]
@@ -108,7 +108,7 @@ const char* kGoldenSetS7654321 = R"(title: "Z-buffer drill"
 problems:
   - id: zbuf
     kind: depth_at_pixel
-    text: "Find z at pixel [1, 1]."
+    text: "Find z at pixel (1, 1)."
     given:
       triangle: [[0, 0, 8], [1, 2, 3], [0, 3, 9]]
       pixel: [1, 1]
@@ -187,9 +187,9 @@ problems:
   - id: m
     kind: transform
     given:
-      dim: 3
-      steps: [{translate: [-5, 3, -3]}, {rotate_z: -60}]
-      points: [[0, 2, -1]]
+      dim: 2
+      steps: [{rotate: 120}]
+      points: [[2, 0]]
   - id: p
     kind: project_point
     given:
@@ -212,9 +212,9 @@ problems:
   - id: m
     kind: transform
     given:
-      dim: 3
-      steps: [{translate: [-4, -1, -5]}, {shear: {xy: 1}}]
-      points: [[-1, 2, 0]]
+      dim: 2
+      steps: [{rotate: 30}]
+      points: [[1, 0]]
   - id: p
     kind: project_point
     given:

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "solver/derivation/latex_check.hpp"
+#include "solver/derivation/render.hpp"
 #include "typeset_corpus.hpp"
 
 namespace frustum {
@@ -79,6 +80,50 @@ TEST(Typeset, KatexRendersEveryFormulaInStrictMode) {
   EXPECT_EQ(status, 0) << out.substr(0, 6000);
   EXPECT_NE(out.find(std::to_string(unique.size()) + " formulas, 0 failed"), std::string::npos)
       << out.substr(0, 2000);
+}
+
+// `solve --format html` in headless Chromium: the page typesets every formula with the inlined
+// KaTeX and a screenshot is taken (look at build/typeset-seed004.png).
+TEST(Typeset, HtmlPageTypesetsInChromiumAndScreenshots) {
+  constexpr const char* kChromium = "/usr/bin/chromium";
+  ASSERT_TRUE(std::filesystem::exists(kChromium)) << "tools/setup.sh installs chromium";
+  const SetResult set =
+      solve_set(load_problem_set(test::source_path("problems/seeds/004_placing_and_projecting.yaml")), true);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("frustum-html-" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir / "profile");
+  const std::string page = (dir / "seed004.html").string(), png = std::string(FRUSTUM_BINARY_DIR) + "/typeset-seed004.png";
+  std::ofstream(page) << render_html(set);
+  const std::string chromium = std::string("timeout 120 ") + kChromium +
+                               " --headless --no-sandbox --disable-gpu --disable-background-networking"
+                               " --disable-component-update --no-first-run --disable-dev-shm-usage --user-data-dir=" +
+                               (dir / "profile").string();
+  const auto [dom, status] = run(chromium + " --dump-dom 'file://" + page + "' 2>/dev/null");
+  EXPECT_NE(dom.find("data-math=\"yes\""), std::string::npos) << "the page's script did not run";
+  EXPECT_NE(dom.find("class=\"katex-display\""), std::string::npos);
+  EXPECT_EQ(dom.find("data-typeset=\"error\""), std::string::npos);
+  std::filesystem::remove(png);
+  run(chromium + " --window-size=1000,1400 --screenshot=" + png + " 'file://" + page + "' 2>/dev/null");
+  ASSERT_TRUE(std::filesystem::exists(png));
+  EXPECT_GT(std::filesystem::file_size(png), 20000u) << "a typeset page is more than a blank image";
+  std::filesystem::remove_all(dir);
+}
+
+// `solve --format latex` compiles with Debian's LuaLaTeX for every seed set.
+TEST(Typeset, LatexDocumentsCompileWithLualatex) {
+  ASSERT_TRUE(std::filesystem::exists("/usr/bin/lualatex")) << "tools/setup.sh installs texlive-luatex";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("frustum-tex-" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir / "var");
+  for (const std::string& file : test::bundled_sets()) {
+    if (file.find("/seeds/") == std::string::npos) continue;
+    const std::string tex = (dir / "set.tex").string();
+    std::ofstream(tex) << render_latex(solve_set(load_problem_set(file), true));
+    std::filesystem::remove(dir / "set.pdf");
+    const auto [log, status] = run("cd " + dir.string() + " && TEXMFVAR=" + (dir / "var").string() +
+                                   " timeout 300 lualatex -interaction=nonstopmode -halt-on-error set.tex 2>&1");
+    EXPECT_EQ(status, 0) << file << "\n" << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
+    EXPECT_TRUE(std::filesystem::exists(dir / "set.pdf")) << file;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

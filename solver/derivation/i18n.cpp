@@ -236,4 +236,28 @@ std::string tr(std::string_view english, Lang lang) {
   return out;
 }
 
+MathText tr(const MathText& m, Lang lang) {
+  if (lang == Lang::En || m.words.empty()) return m;
+  MathText out = m;
+  const auto is_word = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
+  for (const std::string& w : m.words) {
+    const std::string t = tr(w, lang);
+    if (t == w) continue;
+    for (std::size_t at = 0; (at = out.unicode.find(w, at)) != std::string::npos;) {
+      const bool whole = (at == 0 || !is_word(out.unicode[at - 1])) &&
+                         (at + w.size() >= out.unicode.size() || !is_word(out.unicode[at + w.size()]));
+      if (whole) {
+        out.unicode.replace(at, w.size(), t);
+        at += t.size();
+      } else {
+        at += w.size();
+      }
+    }
+    const std::string from = "\\text{" + latex_text(w) + "}", to = "\\text{" + latex_text(t) + "}";
+    for (std::size_t at = 0; (at = out.latex.find(from, at)) != std::string::npos; at += to.size())
+      out.latex.replace(at, from.size(), to);
+  }
+  return out;
+}
+
 }  // namespace frustum

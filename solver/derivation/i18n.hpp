@@ -3,6 +3,8 @@
 // kinds never format for a language. Mathematics (formulas, values) is never translated.
 #pragma once
 
+#include "solver/derivation/math_text.hpp"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -17,5 +19,8 @@ std::string_view to_string(Lang lang);
 // A step title, note or interface phrase in `lang`: a whole-text match first, then the known
 // phrases inside it (longest first); text the catalogue does not know stays as written.
 std::string tr(std::string_view english, Lang lang);
+// Mathematics in `lang`: its words (MathText::words, \text{…} in the LaTeX) translated, the
+// formulas themselves unchanged.
+MathText tr(const MathText& m, Lang lang);
 
 }  // namespace frustum

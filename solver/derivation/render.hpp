@@ -26,6 +26,18 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang = La
 std::string render_problem_markdown(const ProblemResult& p, Lang lang = Lang::En);
 std::string render_markdown(const SetResult& set, Lang lang = Lang::En);
 
+// Typeset HTML (render_html.cpp): formulas typeset by KaTeX, inlined from Debian's libjs-katex
+// (no network); each formula's Unicode form stays inside its element as the fallback.
+std::string html_math(const MathText& m, Lang lang = Lang::En, bool display = true);
+std::string html_steps(const std::vector<Step>& steps, Lang lang = Lang::En);
+// KaTeX's style (fonts inlined) and script for a page's <head>; empty when KaTeX is absent.
+std::string html_math_head();
+// The script that typesets every formula element; put it at the end of the <body>.
+std::string html_math_script();
+std::string render_html(const SetResult& set, Lang lang = Lang::En);
+// A LaTeX document (render_latex.cpp) that compiles with lualatex: for printing.
+std::string render_latex(const SetResult& set, Lang lang = Lang::En);
+
 // A number that round-trips: integral doubles become JSON integers (8, not 8.0).
 nlohmann::ordered_json number_json(double v);
 nlohmann::ordered_json value_json(const Value& v);   // "value"

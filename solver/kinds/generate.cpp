@@ -7,6 +7,76 @@
 
 namespace frustum {
 
+namespace {
+
+bool integer_literal(const std::string& s) {
+  std::size_t i = s[0] == '-' ? 1 : 0;
+  if (i >= s.size() || s.size() > 12) return false;
+  for (; i < s.size(); ++i)
+    if (s[i] < '0' || s[i] > '9') return false;
+  return true;
+}
+
+// A number as written in a given: digits, a fraction, a decimal or an expression (sqrt(2), pi/3).
+bool number_literal(const std::string& s) {
+  if (s.empty()) return false;
+  return s.find_first_of("0123456789") != std::string::npos || s.find("pi") != std::string::npos;
+}
+
+YAML::Node redraw(const YAML::Node& n, const std::string& key, Rng& rng) {
+  if (n.IsMap()) {
+    YAML::Node out(YAML::NodeType::Map);
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      out[k] = redraw(it->second, k, rng);
+    }
+    out.SetStyle(n.Style());
+    return out;
+  }
+  if (n.IsSequence()) {
+    YAML::Node out(YAML::NodeType::Sequence);
+    for (const YAML::Node& item : n) out.push_back(redraw(item, key, rng));
+    out.SetStyle(YAML::EmitterStyle::Flow);
+    return out;
+  }
+  if (!n.IsScalar() || !integer_literal(n.Scalar())) return YAML::Node(n.Scalar());
+  static const std::vector<std::string> kept = {"dim", "width", "height", "label", "faces", "pixels"};
+  if (std::find(kept.begin(), kept.end(), key) != kept.end()) return YAML::Node(n.Scalar());
+  const std::int64_t v = std::stoll(n.Scalar());
+  if (v == 0) return gen_number(0);
+  const bool angle = key == "fovy" || key == "fov" || key == "angle" || key.rfind("rotate", 0) == 0;
+  if (angle) {
+    const std::int64_t a = rng.pick(std::vector<std::int64_t>{30, 45, 60, 90, 120, 135, 150});
+    return gen_number(v < 0 ? -a : std::abs(v) < 180 ? a : v);
+  }
+  const std::int64_t mag = std::abs(v), r = std::max<std::int64_t>(2, mag / 2);
+  const std::int64_t m = rng.integer(std::max<std::int64_t>(1, mag - r), mag + r);
+  return gen_number(v < 0 ? -m : m);
+}
+
+}  // namespace
+
+std::string given_shape(const YAML::Node& n) {
+  if (n.IsMap()) {
+    std::vector<std::string> parts;
+    for (auto it = n.begin(); it != n.end(); ++it)
+      parts.push_back(it->first.as<std::string>() + ":" + given_shape(it->second));
+    std::sort(parts.begin(), parts.end());
+    std::string out = "{";
+    for (const std::string& p : parts) out += p + ",";
+    return out + "}";
+  }
+  if (n.IsSequence()) {
+    std::string out = "[";
+    for (const YAML::Node& item : n) out += given_shape(item) + ",";
+    return out + "]";
+  }
+  if (n.IsScalar()) return number_literal(n.Scalar()) ? "#" : "'" + n.Scalar() + "'";
+  return "~";
+}
+
+YAML::Node redraw_values(const YAML::Node& given, Rng& rng) { return redraw(given, "", rng); }
+
 YAML::Node gen_number(std::int64_t v) { return YAML::Node(std::to_string(v)); }
 
 YAML::Node gen_number(const Exact& v) {

@@ -46,6 +46,17 @@ YAML::Node gen_fraction(std::int64_t num, std::int64_t den);
 // An angle given in degrees, written in the set's unit (60 or pi/3).
 YAML::Node gen_angle(std::int64_t degrees, const Conventions& c);
 
+// ---- keeping an exercise's structure ----
+// The shape of a given: its keys, list lengths and words, with every number written "#". Two
+// givens of the same exercise with other values have the same shape ({rotate: 90} and
+// {rotate: 45} do; {rotate: 90} and {scale: 2} do not).
+std::string given_shape(const YAML::Node& given);
+// The given with its values drawn again and its shape kept: a non-zero integer moves within
+// about half its size keeping its sign, an angle (fovy, fov, angle, rotate…) becomes another
+// common angle of the same sign; zeros, fractions, words, sizes and indices (dim, width, height,
+// faces, pixels) stay.
+YAML::Node redraw_values(const YAML::Node& given, Rng& rng);
+
 // ---- integer vectors for drawing ----
 using IVec3 = std::array<std::int64_t, 3>;
 IVec3 gen_ivec3(Rng& rng, std::int64_t lo, std::int64_t hi);

@@ -1,6 +1,7 @@
 #include "solver/kinds/solve_set.hpp"
 
 #include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/variants.hpp"
 
 #include <cmath>
 #include <utility>
@@ -11,11 +12,16 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
   ProblemResult r;
   r.id = spec.id;
   r.kind = spec.kind;
-  r.text = spec.text;
+  r.text = fill_text(spec.text, spec.given_node);
   r.conventions = spec.conventions;
   r.ask = spec.ask;
   if (spec.error) {
     r.error = spec.error;
+    return r;
+  }
+  // What students read is checked before they read it: every placeholder names a value.
+  if (const auto bad = placeholder_error(spec.text, spec.given_node)) {
+    r.error = Diagnostic{spec.where, spec.field + ".text", *bad};
     return r;
   }
   try {

@@ -100,9 +100,20 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
   const GenerateOptions options{base.nice, base.hard, base.conventions};
   Rng rng(seed);
   std::string last;
+  // A default variant of a written exercise keeps its structure (the same steps, the same kind
+  // of givens): the kind's generator is used when it draws that shape, else the given's own
+  // values are drawn again. A problem with no given takes whatever the generator draws.
+  const bool keep_shape = use_default && base.given_node.IsMap() && base.given_node.size() > 0;
+  const std::string shape = keep_shape ? given_shape(base.given_node) : "";
+  const auto default_given = [&](int attempt) {
+    if (keep_shape && attempt < kMaxDrawAttempts / 2)
+      for (int k = 0; k < kShapeTries; ++k)
+        if (YAML::Node g = kind.generate(rng, options); given_shape(g) == shape) return g;
+    return keep_shape ? redraw_values(base.given_node, rng) : kind.generate(rng, options);
+  };
   for (int attempt = 0; attempt < kMaxDrawAttempts; ++attempt) {
     try {
-      YAML::Node given = use_default ? kind.generate(rng, options)
+      YAML::Node given = use_default ? default_given(attempt)
                                      : apply_vary(base.vary, base.given_node, rng, file, vary_field);
       const std::string text = emit_flow(given);
       if (avoid.count(text)) {
@@ -300,22 +311,79 @@ void comment_lines(std::string& out, const std::string& header) {
 
 }  // namespace
 
-// `{field}` in a problem's text becomes that given field's value.
-std::string fill_given_text(const std::string& text, const YAML::Node& given) {
-  std::string out;
+namespace {
+
+// The value a placeholder names ({eye}, {perspective.fovy}, {points.0}), as students read it:
+// a number as written, a list of numbers as a point (1, 2, 3); nullopt with `why` otherwise.
+std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given, std::string& why) {
+  YAML::Node at = YAML::Clone(given);
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = name.find('.', start);
+    const std::string part = name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (at.IsMap() && !part.empty() && at[part].IsDefined()) {
+      at = at[part];
+    } else if (at.IsSequence() && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos &&
+               part.size() < 6 && std::stoul(part) < at.size()) {
+      at = at[std::stoul(part)];
+    } else {
+      why = "names no field of the given";
+      return std::nullopt;
+    }
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  if (at.IsScalar()) return at.Scalar();
+  if (at.IsSequence() && at.size() > 0) {
+    std::string out = "(";
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      if (!at[i].IsScalar()) {
+        why = "is a nested list, not a number or a point";
+        return std::nullopt;
+      }
+      out += (i ? ", " : "") + at[i].Scalar();
+    }
+    return out + ")";
+  }
+  why = at.IsMap() ? "is a mapping: name one of its fields ({" + name + ".…})" : "has no value";
+  return std::nullopt;
+}
+
+// Each `{name}` of a text, with its position; text without a closing brace is left alone.
+template <typename F>
+void for_each_placeholder(const std::string& text, F f) {
   std::size_t i = 0;
   while (i < text.size()) {
     const std::size_t open = text.find('{', i);
-    if (open == std::string::npos) break;
+    if (open == std::string::npos) return;
     const std::size_t close = text.find('}', open);
-    if (close == std::string::npos) break;
-    const std::string name = text.substr(open + 1, close - open - 1);
-    out += text.substr(i, open - i);
-    if (given.IsMap() && !name.empty() && given[name].IsDefined()) out += emit_flow(given[name]);
-    else out += text.substr(open, close - open + 1);
+    if (close == std::string::npos) return;
+    f(open, close, text.substr(open + 1, close - open - 1));
     i = close + 1;
   }
+}
+
+}  // namespace
+
+std::string fill_text(const std::string& text, const YAML::Node& given) {
+  std::string out;
+  std::size_t i = 0;
+  for_each_placeholder(text, [&](std::size_t open, std::size_t close, const std::string& name) {
+    std::string why;
+    const std::optional<std::string> v = placeholder_value(name, given, why);
+    out += text.substr(i, open - i) + (v ? *v : text.substr(open, close - open + 1));
+    i = close + 1;
+  });
   return out + text.substr(std::min(i, text.size()));
+}
+
+std::optional<std::string> placeholder_error(const std::string& text, const YAML::Node& given) {
+  std::optional<std::string> error;
+  for_each_placeholder(text, [&](std::size_t, std::size_t, const std::string& name) {
+    std::string why;
+    if (!error && !placeholder_value(name, given, why)) error = "the placeholder {" + name + "} " + why;
+  });
+  return error;
 }
 
 std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant, const std::string& header) {
@@ -345,7 +413,7 @@ std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant, 
           for (auto g = given.begin(); g != given.end(); ++g)
             out += "      " + emit_flow(g->first) + ": " + emit_flow(g->second) + "\n";
         } else if (name == "text" && f->second.IsScalar()) {
-          out += "text: " + emit_scalar(fill_given_text(f->second.Scalar(), given), true) + "\n";
+          out += "text: " + emit_scalar(fill_text(f->second.Scalar(), given), true) + "\n";
         } else {
           out += emit_scalar(name) + ": " + emit_flow(f->second) + "\n";
         }

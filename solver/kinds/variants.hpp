@@ -16,6 +16,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@
 namespace frustum {
 
 inline constexpr int kMaxDrawAttempts = 100;
+// Generator draws per attempt looking for the shape of a written exercise's given.
+inline constexpr int kShapeTries = 20;
 
 // A problem varies when it has `vary`, or when the set says `variants: per_student`.
 bool problem_varies(const ProblemSet& set, const ProblemSpec& p);
@@ -74,11 +77,16 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
 // `nice`, `difficulty` and `variants` removed, each `given` replaced by the drawn one, and
 // `{field}` in a problem's text replaced by that given field's value. `header` is written as
 // comment lines first.
-// `{field}` in a problem's text replaced by that given field's value (as YAML flow text).
-std::string fill_given_text(const std::string& text, const YAML::Node& given);
-
 std::string emit_variant_set(const YAML::Node& source_root, const ProblemSet& variant,
                              const std::string& header);
+// `{field}` in a problem's text replaced by that given field's value as students read it: a
+// number as written, a point as (1, 2, 3); dotted paths reach inside ({perspective.fovy},
+// {points.0}). Placeholders that name nothing stay as written (check refuses them).
+std::string fill_text(const std::string& text, const YAML::Node& given);
+// Why a text's placeholders cannot be filled from the given (an unknown name, a mapping or a
+// nested list), or nullopt when every one can.
+std::optional<std::string> placeholder_error(const std::string& text, const YAML::Node& given);
+
 // The answer key (problem-format.md §2) of a variant: every asked answer, exact where possible.
 // A problem that cannot be solved is left out.
 std::string emit_answer_key(const ProblemSet& variant, const std::string& student,

@@ -1,0 +1,158 @@
+// Typeset HTML: every formula is an element carrying its LaTeX (data-tex) with the Unicode form
+// inside as the fallback; the page's script typesets them with KaTeX, inlined from Debian's
+// libjs-katex (script, style and fonts as data: URLs) so the page loads nothing from anywhere.
+#include <fmt/format.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "solver/derivation/render.hpp"
+#include "solver/derivation/svg.hpp"
+
+namespace frustum {
+
+namespace {
+
+constexpr const char* kKatexDir = "/usr/share/javascript/katex/";
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string base64(const std::string& bytes) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned n = static_cast<unsigned char>(bytes[i]) << 16 |
+                       static_cast<unsigned char>(bytes[i + 1]) << 8 |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    for (int k = 18; k >= 0; k -= 6) out += digits[(n >> k) & 63];
+  }
+  if (i < bytes.size()) {
+    unsigned n = static_cast<unsigned char>(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) n |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    out += digits[(n >> 18) & 63];
+    out += digits[(n >> 12) & 63];
+    out += i + 1 < bytes.size() ? digits[(n >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+// KaTeX's stylesheet with each font's woff2 inlined and the other formats dropped.
+std::string katex_css() {
+  std::string css = read_file(std::string(kKatexDir) + "katex.min.css");
+  std::string out;
+  std::size_t i = 0;
+  while (true) {
+    const std::size_t src = css.find("src:url(fonts/", i);
+    if (src == std::string::npos) break;
+    const std::size_t name_start = src + 14, name_end = css.find(')', name_start);
+    const std::size_t decl_end = css.find_first_of(";}", name_end);
+    if (name_end == std::string::npos || decl_end == std::string::npos) break;
+    const std::string font = read_file(std::string(kKatexDir) + "fonts/" +
+                                       css.substr(name_start, name_end - name_start));
+    out += css.substr(i, src - i) + "src:url(data:font/woff2;base64," + base64(font) +
+           ") format('woff2')";
+    i = decl_end;
+  }
+  return out + css.substr(i);
+}
+
+}  // namespace
+
+std::string html_math_head() {
+  const std::string js = read_file(std::string(kKatexDir) + "katex.min.js");
+  if (js.empty()) return {};  // no KaTeX here: the Unicode forms stay, still readable
+  std::string script = js;
+  // A script element ends at the first "</script"; KaTeX's source has none, but be sure.
+  for (std::size_t at = 0; (at = script.find("</script", at)) != std::string::npos;)
+    script.replace(at, 2, "<\\/");
+  return "<style>" + katex_css() + "</style>\n<script>" + script + "</script>\n";
+}
+
+std::string html_math_script() {
+  return R"JS(
+(function () {
+  if (typeof katex === 'undefined') return;
+  document.querySelectorAll('[data-tex]').forEach(function (e) {
+    try {
+      katex.render(e.getAttribute('data-tex'), e, {displayMode: e.classList.contains('display'), throwOnError: true});
+      e.setAttribute('data-typeset', 'yes');
+    } catch (err) { e.setAttribute('data-typeset', 'error'); }
+  });
+  document.body.setAttribute('data-math', 'yes');
+})();
+)JS";
+}
+
+std::string html_math(const MathText& m, Lang lang, bool display) {
+  const MathText t = tr(m, lang);
+  return fmt::format("<span class=\"tex{}\" data-tex=\"{}\" title=\"{}\">{}</span>",
+                     display ? " display" : "", svg_escape(t.latex), svg_escape(t.unicode),
+                     svg_escape(t.unicode));
+}
+
+std::string html_steps(const std::vector<Step>& steps, Lang lang) {
+  std::string out = "<ol class=\"steps\">\n";
+  int number = 0;  // notes and warnings are not numbered, as in the text rendering
+  for (const Step& s : steps) {
+    const std::string cls = s.level == Step::Level::Warning ? " class=\"warning\""
+                            : s.level == Step::Level::Note  ? " class=\"note-step\""
+                                                           : fmt::format(" value=\"{}\"", ++number);
+    out += fmt::format("<li{}><b>{}</b>", cls, svg_escape(tr(s.title, lang)));
+    for (const MathText* m : {&s.formula, &s.substitution})
+      if (!m->empty()) out += "<div class=\"math\">" + html_math(*m, lang) + "</div>";
+    if (!s.result.empty())
+      out += "<div class=\"math result\">" +
+             html_math(math("⇒ ", "\\Rightarrow\\; ") + s.result, lang) + "</div>";
+    if (!s.note.empty())
+      out += fmt::format("<div class=\"note\">{}</div>", svg_escape(tr(s.note, lang)));
+    out += "</li>\n";
+  }
+  return out + "</ol>\n";
+}
+
+std::string render_html(const SetResult& set, Lang lang) {
+  const std::string title = set.title.empty() ? set.file : set.title;
+  std::string out = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, "
+      "initial-scale=1\">\n<title>{}</title>\n"
+      "<style>body {{ font-family: system-ui, sans-serif; max-width: 60rem; margin: 2rem auto; "
+      "padding: 0 1rem; "
+      "color: #1d232a; }} h2 {{ border-bottom: 1px solid #ccd; margin-top: 2rem; }} ol.steps li {{ "
+      "margin: .6rem 0; }} "
+      ".note {{ color: #555; font-size: .95em; }} .warning b {{ color: #a35200; }} li.note-step, "
+      "li.warning {{ list-style: none; }} "
+      ".error {{ color: #c4262e; font-family: monospace; }} table {{ border-collapse: collapse; }} "
+      "td, th {{ border: 1px solid #ccd; padding: .3rem .6rem; text-align: left; "
+      "}}</style>\n{}</head>\n<body>\n<h1>{}</h1>\n",
+      to_string(lang), svg_escape(title), html_math_head(), svg_escape(title));
+  for (const Diagnostic& d : set.errors)
+    out += fmt::format("<p class=\"error\">{}</p>\n", svg_escape(d.format()));
+  for (const ProblemResult& p : set.problems) {
+    out += fmt::format("<section id=\"{}\">\n<h2>{} <small>({})</small></h2>\n", svg_escape(p.id),
+                       svg_escape(p.id), svg_escape(p.kind));
+    if (!p.text.empty()) out += fmt::format("<p>{}</p>\n", svg_escape(p.text));
+    if (p.error) {
+      out += fmt::format("<p class=\"error\">{}</p>\n</section>\n", svg_escape(p.error->format()));
+      continue;
+    }
+    out += html_steps(p.derivation.steps(), lang);
+    out += fmt::format("<table>\n<tr><th>{}</th><th></th></tr>\n", svg_escape(tr("Answers", lang)));
+    for (const std::string& name : p.ask)
+      if (const Value* v = p.answers.find(name))
+        out += fmt::format("<tr><td><code>{}</code></td><td>{}</td></tr>\n", svg_escape(name),
+                           html_math(v->shown(), lang, false));
+    out += "</table>\n</section>\n";
+  }
+  return out + "<script>" + html_math_script() + "</script>\n</body>\n</html>\n";
+}
+
+}  // namespace frustum

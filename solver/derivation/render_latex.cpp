@@ -1,0 +1,67 @@
+// A LaTeX document of a solved set, for instructors who print: every formula in display math,
+// matrices as bmatrix, prose escaped for text mode. Compiled with LuaLaTeX (fontspec, DejaVu
+// fonts for the Unicode in titles and notes), as Debian's texlive packages provide.
+#include <fmt/format.h>
+
+#include "solver/derivation/render.hpp"
+
+namespace frustum {
+
+namespace {
+
+// Prose for LaTeX's text mode: special characters escaped, line breaks kept as paragraphs.
+std::string prose(const std::string& text) {
+  std::string out;
+  for (const char c : latex_text(text))
+    out += c == '\n' ? std::string("\\\\\n") : std::string(1, c);
+  return out;
+}
+
+std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
+  std::string out = "\\begin{enumerate}\n";
+  for (const Step& s : steps) {
+    const bool info = s.level == Step::Level::Info;
+    out += info ? "\\item " : "\\item[\\textbullet] ";
+    out += (s.level == Step::Level::Warning ? "\\textbf{" + prose(tr("Warning", lang)) + ": "
+                                            : "\\textbf{") +
+           prose(tr(s.title, lang)) + "}\n";
+    for (const MathText* m : {&s.formula, &s.substitution})
+      if (!m->empty()) out += "\\[ " + tr(*m, lang).latex + " \\]\n";
+    if (!s.result.empty()) out += "\\[ \\Rightarrow\\; " + tr(s.result, lang).latex + " \\]\n";
+    if (!s.note.empty()) out += "{\\small " + prose(tr(s.note, lang)) + "}\n";
+  }
+  return out + "\\end{enumerate}\n";
+}
+
+}  // namespace
+
+std::string render_latex(const SetResult& set, Lang lang) {
+  const std::string title = set.title.empty() ? set.file : set.title;
+  std::string out =
+      "% Compile with lualatex.\n\\documentclass[11pt]{article}\n\\usepackage{amsmath,amssymb}\n"
+      "\\usepackage{fontspec}\n\\setmainfont{DejaVu Serif}\n\\setsansfont{DejaVu "
+      "Sans}\n\\setmonofont{DejaVu Sans Mono}\n"
+      "\\usepackage[margin=2cm]{geometry}\n\\setcounter{MaxMatrixCols}{20}\n\\allowdisplaybreaks\n"
+      "\\begin{document}\n\\section*{" +
+      prose(title) + "}\n";
+  for (const Diagnostic& d : set.errors)
+    out += "\\textbf{" + prose(tr("error", lang)) + ":} \\texttt{" + prose(d.format()) + "}\n\n";
+  for (const ProblemResult& p : set.problems) {
+    out += "\\subsection*{" + prose(p.id) + " \\normalfont(\\texttt{" + prose(p.kind) + "})}\n";
+    if (!p.text.empty()) out += prose(p.text) + "\n\n";
+    if (p.error) {
+      out += "\\textbf{" + prose(tr("error", lang)) + ":} \\texttt{" + prose(p.error->format()) +
+             "}\n\n";
+      continue;
+    }
+    out += steps_latex(p.derivation.steps(), lang);
+    out += "\\paragraph{" + prose(tr("Answers", lang)) + "}\n\\begin{align*}\n";
+    for (const std::string& name : p.ask)
+      if (const Value* v = p.answers.find(name))
+        out += "\\texttt{" + latex_text(name) + "} &= " + tr(v->shown(), lang).latex + " \\\\\n";
+    out += "\\end{align*}\n";
+  }
+  return out + "\\end{document}\n";
+}
+
+}  // namespace frustum

@@ -1,0 +1,75 @@
+// What students read is checked before they read it: a problem's text names only values of its
+// given, and a variant keeps its exercise's structure (the same steps and kinds of givens).
+#include "solver/kinds/generate.hpp"
+#include "solver/kinds/variants.hpp"
+#include "typeset_corpus.hpp"
+
+namespace frustum {
+namespace {
+
+const char* kPlaceholders = R"(problems:
+  - id: ok
+    kind: look_at
+    text: "The eye at {eye} looks at {center}; its x is {eye.0}."
+    given: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, 0]}
+  - id: unknown
+    kind: project_point
+    text: "fovy = {perspective.fov}"
+    given: {point: [0, 0, -5], perspective: {fovy: 90, aspect: 1, near: 1, far: 10}, viewport: {width: 200, height: 200}}
+  - id: mapping
+    kind: clip_line
+    text: "Clip against {window}."
+    given: {p: [-1, 1], q: [5, 2], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}
+)";
+
+TEST(Placeholders, FilledAsStudentsReadThemUnknownAndMappingsRefused) {
+  const SetResult r = solve_set(load_problem_set_from_string(kPlaceholders, "set.yaml"), true);
+  ASSERT_EQ(r.problems.size(), 3u);
+  EXPECT_FALSE(r.problems[0].error) << test::error_text(r.problems[0]);
+  EXPECT_EQ(r.problems[0].text, "The eye at (0, 0, 5) looks at (0, 0, 0); its x is 0.");
+  ASSERT_TRUE(r.problems[1].error);
+  EXPECT_NE(r.problems[1].error->format().find(
+                "problems[1].text: the placeholder {perspective.fov} names no field"),
+            std::string::npos)
+      << r.problems[1].error->format();
+  ASSERT_TRUE(r.problems[2].error);
+  EXPECT_NE(r.problems[2].error->format().find("{window} is a mapping"), std::string::npos)
+      << r.problems[2].error->format();
+}
+
+TEST(VariantShape, ShapeIgnoresValuesButNotStructure) {
+  EXPECT_EQ(given_shape(YAML::Load("{dim: 2, steps: [{rotate: 90}], points: [[1, 0]]}")),
+            given_shape(YAML::Load("{points: [[3, -2]], steps: [{rotate: 45}], dim: 2}")));
+  EXPECT_NE(given_shape(YAML::Load("{steps: [{rotate: 90}]}")),
+            given_shape(YAML::Load("{steps: [{scale: 2}]}")));
+  EXPECT_NE(given_shape(YAML::Load("{solid: cube}")),
+            given_shape(YAML::Load("{solid: octahedron}")));
+}
+
+// Every bundled problem varied by default keeps its structure: the given has the same shape
+// (keys, list lengths, step types, words) and only its numbers are drawn again.
+TEST(VariantShape, EveryBundledProblemKeepsItsStructure) {
+  int varied = 0;
+  for (const std::string& file : test::bundled_sets()) {
+    if (file.find("/hard/") != std::string::npos) continue;  // near-degenerate on purpose
+    const ProblemSet set = load_problem_set(file);
+    for (const ProblemSet& v : variants_from_seed(set, 7, 2, true))
+      for (std::size_t i = 0; i < v.problems.size(); ++i) {
+        const ProblemSpec& base = set.problems[i];
+        const ProblemSpec& drawn = v.problems[i];
+        if (base.error || !base.given_node.IsMap() ||
+            (base.vary.IsDefined() && !base.vary.IsNull()))
+          continue;
+        EXPECT_FALSE(drawn.error) << file << " " << base.id << ": " << drawn.error->format();
+        if (!drawn.error) {
+          EXPECT_EQ(given_shape(drawn.given_node), given_shape(base.given_node))
+              << file << " " << base.id;
+        }
+        ++varied;
+      }
+  }
+  EXPECT_GT(varied, 40);
+}
+
+}  // namespace
+}  // namespace frustum
