@@ -17,6 +17,10 @@
 
 namespace frustum {
 
+// Largest `points` of one problem or answer: far beyond any course's weights, and small enough
+// that a set's total and a class's sums stay finite doubles.
+inline constexpr double kMaxPoints = 1'000'000;
+
 // Grading defaults (problem-format.md: relative 1e-3 like WeBWorK, with an absolute floor).
 inline constexpr double kRelTolDefault = 1e-3;
 inline constexpr double kAbsTolDefault = 1e-6;
