@@ -278,7 +278,7 @@ std::optional<Diagnostic> read_text_file(const std::string& path, std::size_t ma
                       : "not a regular file (a pipe, socket or device); give a file");
   }
   const auto too_big = [&] {
-    return refuse("the file is larger than " + std::to_string(max_bytes / 1024) + " KiB, the limit");
+    return refuse("the file is larger than the limit of " + std::to_string(max_bytes) + " bytes");
   };
   if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
     ::close(fd);
