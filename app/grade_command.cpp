@@ -117,19 +117,44 @@ ProblemSet set_for_student(const ProblemSet& set, const GradeOptions& g, const C
   return v;
 }
 
+// Text from files (ids, messages) on a terminal: control characters, escape sequences among
+// them, are shown as '?' so that a student id cannot move the cursor or retitle the window.
+std::string terminal_text(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    // C0 controls and DEL, and C1 controls (U+0080–U+009F, UTF-8 C2 80–C2 9F).
+    if (c < 0x20 || c == 0x7F) {
+      out += '?';
+    } else if (c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+               static_cast<unsigned char>(s[i + 1]) <= 0x9F) {
+      out += '?';
+      ++i;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
 std::string progress_bar(std::size_t done, std::size_t total, const std::string& who) {
   constexpr int kWidth = 30;
   const int filled = total ? static_cast<int>(kWidth * done / total) : kWidth;
   return fmt::format("\r[{}{}] {}/{} {:<24.24}", std::string(static_cast<std::size_t>(filled), '#'),
-                     std::string(static_cast<std::size_t>(kWidth - filled), '.'), done, total, who);
+                     std::string(static_cast<std::size_t>(kWidth - filled), '.'), done, total, terminal_text(who));
 }
 
 int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
+  // NaN compares false with everything, so `--timeout nan` once meant no limit at all.
+  if (!(g.timeout > 0 && g.timeout <= kMaxBatchTimeout)) {
+    o.err << fmt::format("error: --timeout must be a number of seconds in (0, {}]\n", kMaxBatchTimeout);
+    return 2;
+  }
   std::vector<BatchEntry> entries;
   try {
     entries = collect_submissions(g.answers);
   } catch (const InputError& e) {
-    o.err << "error: " << e.diagnostic().format() << "\n";
+    o.err << "error: " << terminal_text(e.diagnostic().format()) << "\n";
     return 1;
   }
   BatchOptions options;
@@ -152,7 +177,16 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
       o.err << progress_bar(done, total, who) << std::flush;
       if (done == total) o.err << "\n";
     };
-  const BatchResult r = grade_batch(set, entries, options);
+  BatchResult r;
+  try {
+    r = grade_batch(set, entries, options);
+  } catch (const std::exception& e) {
+    if (o.progress) o.err << "\n";
+    o.err << "error: " << terminal_text(e.what()) << "\n"
+          << "error: nothing was written; the outputs in " << terminal_text(options.out_dir)
+          << " are as they were\n";
+    return 1;
+  }
   std::size_t graded = 0;
   double sum = 0;
   for (const BatchRow& row : r.rows) {
@@ -160,13 +194,13 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
       ++graded;
       sum += row.max_score > 0 ? row.score / row.max_score : 0;
     } else {
-      o.err << fmt::format("{}: {} ({}): {}\n", row.source, row.status, row.student, row.message);
+      o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message)) << "\n";
     }
   }
   o.out << fmt::format("Graded {} of {} submissions{}; wrote {}/gradebook.csv, feedback/ and gradescope/\n", graded,
                        r.rows.size(), graded ? fmt::format(" (mean {:.1f}%)", 100.0 * sum / double(graded)) : "",
                        options.out_dir);
-  for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
+  for (const Diagnostic& d : set.all_errors()) o.err << terminal_text(d.format()) << "\n";
   return graded == r.rows.size() && set.all_errors().empty() ? 0 : 1;
 }
 
@@ -180,6 +214,11 @@ int run_grade(const GradeOptions& g, const Output& o) {
   if (batch) return run_batch(set, g, o);
 
   const Submission submission = load_submission(g.answers);
+  // An answers file that could not be read has no `student:` to find a variant by: say why.
+  if (g.variants && !submission.answers.IsDefined() && !submission.errors.empty()) {
+    for (const Diagnostic& d : submission.errors) o.err << "error: " << terminal_text(d.format()) << "\n";
+    return 1;
+  }
   std::string variant;
   std::optional<ClassVariants> roster;
   if (!read_class(set, g, o, roster)) return 1;

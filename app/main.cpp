@@ -248,6 +248,9 @@ int main(int argc, char** argv) {
       {"frustum render problems/seeds/paperplane.yaml -o paperplane.png --depth depth.png"}));
 
   CLI11_PARSE(cli, argc, argv);
+  // The last line of defence: whatever a command throws (a file system error, memory) ends in
+  // a message and exit status 1, never in std::terminate.
+  try {
   const frustum::app::Output out{std::cout, std::cerr, isatty(STDOUT_FILENO) != 0,
                                  isatty(STDERR_FILENO) != 0};
   if (solve->parsed())
@@ -287,6 +290,13 @@ int main(int argc, char** argv) {
       render_opt.size = std::pair{w, h};
     }
     return frustum::app::run_render(render_opt, out);
+  }
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
   }
   return 2;
 }

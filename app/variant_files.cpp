@@ -1,6 +1,7 @@
 #include "app/variant_files.hpp"
 
 #include "grader/csv.hpp"
+#include "grader/file_names.hpp"
 #include "solver/util/diagnostic.hpp"
 
 #include <fmt/format.h>
@@ -16,15 +17,7 @@ namespace frustum::app {
 
 namespace fs = std::filesystem;
 
-std::string variant_name(const std::string& student) {
-  std::string s;
-  for (const char c : student) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-                    c == '_' || c == '.';
-    s += ok ? c : '_';
-  }
-  return s.empty() ? "_" : s;
-}
+std::string variant_name(const std::string& student) { return file_name_for(student); }
 
 std::string variant_file(const std::string& dir, const std::string& set_path, const std::string& name) {
   return (fs::path(dir) / (fs::path(set_path).stem().string() + "-" + name + ".yaml")).string();

@@ -7,7 +7,9 @@
 
 namespace frustum::app {
 
-// A student id as part of a file name: letters, digits, '-', '_' and '.' kept, the rest '_'.
+// A student id as part of a file name, never shared by two ids (file_name_for: "a/b" is
+// "a%2Fb", "a_b" stays; they once both became a_b and one student was graded on the other's
+// key).
 std::string variant_name(const std::string& student);
 
 // DIR/STEM-NAME.yaml for the set SET_PATH (its key is DIR/answers/STEM-NAME.yaml).

@@ -1,12 +1,48 @@
-// Writing an output file so that a reader never sees half of it: the text goes to a temporary
-// file in the same directory, is flushed to disk, and is renamed over the target.
+// Writing outputs so that a reader never sees half of them: one file through a temporary file
+// renamed over the target, and a whole set of outputs (a batch's gradebook, feedback pages and
+// Gradescope results) through a transaction published by one rename.
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace frustum {
 
 // Creates missing parent directories. Throws std::runtime_error naming the path on failure.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+// A batch's outputs under `dir`, published all at once. Layout:
+//   dir/.frustum/lock            held (flock) while a batch writes here
+//   dir/.frustum/run-N/...       the outputs of run N
+//   dir/.frustum/current         symlink to the published run-N (replaced by one rename)
+//   dir/NAME                     symlink to .frustum/current/NAME, for each published NAME
+// begin() takes the lock (a second batch on the same directory is refused), clears what a
+// killed run left, and opens a fresh run directory; write() puts files in it; commit() syncs
+// them and swaps `current` in one rename, then removes the previous run. A kill at any moment
+// leaves the previous complete outputs (or none), never a mix. Without commit() (an exception,
+// a full disk) the destructor removes the new run and the published outputs stay as they were.
+// The lock is released when the process ends, however it ends.
+class OutputTransaction {
+ public:
+  // Throws std::runtime_error with a sentence for a person (not writable, locked by pid N).
+  explicit OutputTransaction(std::string dir, std::vector<std::string> names);
+  ~OutputTransaction();
+  OutputTransaction(const OutputTransaction&) = delete;
+  OutputTransaction& operator=(const OutputTransaction&) = delete;
+
+  // `relative` is under one of `names` ("feedback/s1.md", "gradebook.csv").
+  void write(const std::string& relative, const std::string& content);
+  void commit();
+
+  // Where a published file can be read: dir/relative.
+  std::string published_path(const std::string& relative) const;
+
+ private:
+  std::string dir_;
+  std::vector<std::string> names_;
+  std::string run_;  // dir/.frustum/run-N being written
+  int lock_fd_ = -1;
+  bool committed_ = false;
+};
 
 }  // namespace frustum

@@ -3,11 +3,14 @@
 #include "grader/atomic_file.hpp"
 #include "grader/csv.hpp"
 #include "grader/feedback.hpp"
+#include "grader/file_names.hpp"
 #include "grader/gradescope.hpp"
 #include "grader/isolate.hpp"
 #include "grader/report.hpp"
+#include "solver/kinds/yaml_document.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
+#include "solver/util/expression.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -32,41 +35,34 @@ std::string lower(std::string s) {
   return s;
 }
 
-// The student id written in an answers file, without grading it.
-std::string student_in(const std::string& yaml) {
-  try {
-    const YAML::Node root = YAML::Load(yaml);
-    if (root.IsMap() && root["student"].IsDefined() && root["student"].IsScalar()) return root["student"].Scalar();
-  } catch (const std::exception&) {
-  }
+// The student id written in an answers file, without grading it (through the same bounded,
+// strict reader as grading).
+std::string student_in(const std::string& yaml, const std::string& name) {
+  const YamlDocument doc = parse_yaml(yaml, name);
+  const YAML::Node& root = doc.root;
+  if (!doc.error && root.IsMap() && root["student"].IsDefined() && root["student"].IsScalar())
+    return root["student"].Scalar();
   return {};
 }
 
 std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_bytes) {
   std::vector<fs::path> files;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
-    const std::string ext = lower(e.path().extension().string());
-    if ((ext == ".yaml" || ext == ".yml") && !e.is_directory()) files.push_back(e.path());
+  std::error_code ec;
+  fs::directory_iterator it(dir, ec), end;
+  for (; !ec && it != end; it.increment(ec)) {
+    const std::string ext = lower(it->path().extension().string());
+    std::error_code type_ec;  // a symlink loop is an entry that cannot be read, not an abort
+    if ((ext == ".yaml" || ext == ".yml") && !it->is_directory(type_ec)) files.push_back(it->path());
   }
+  if (ec)
+    throw InputError(Diagnostic{SourceLocation{dir.string(), 0, 0}, "", "cannot list the directory: " + ec.message()});
   std::sort(files.begin(), files.end());
   std::vector<BatchEntry> out;
   for (const fs::path& f : files) {
     BatchEntry b;
     b.source = f.string();
-    std::error_code ec;
-    const auto size = fs::file_size(f, ec);
-    if (ec) {
-      b.error = "cannot read: " + ec.message();
-    } else if (size > max_bytes) {
-      b.error = fmt::format("{} bytes: larger than the limit of {} bytes for one submission", size, max_bytes);
-    } else {
-      std::ifstream in(f, std::ios::binary);
-      std::ostringstream text;
-      text << in.rdbuf();
-      b.yaml = text.str();
-      if (!in && !in.eof()) b.error = "cannot read the file";
-    }
-    b.student = b.error ? std::string() : student_in(b.yaml);
+    if (const std::optional<Diagnostic> d = read_text_file(f.string(), max_bytes, b.yaml)) b.error = d->message;
+    b.student = b.error ? std::string() : student_in(b.yaml, b.source);
     if (b.student.empty()) b.student = f.stem().string();
     out.push_back(std::move(b));
   }
@@ -88,39 +84,50 @@ YAML::Node cell_value(const std::string& cell) {
 }
 
 std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  const CsvTable table = parse_csv(text.str());
-  if (table.error) throw InputError(Diagnostic{SourceLocation{path, 0, 0}, "", *table.error});
+  std::string text;
+  if (const std::optional<Diagnostic> d = read_text_file(path, kMaxRosterBytes, text)) throw InputError(*d);
+  const CsvTable table = parse_csv(text);
+  if (table.error) throw InputError(Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
   if (table.rows.empty()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
   const std::vector<std::string>& header = table.rows[0].fields;
+  const int header_line = table.rows[0].line;
   int student_col = -1;
   std::vector<std::pair<std::string, std::string>> columns(header.size());  // problem id, answer
   for (std::size_t i = 0; i < header.size(); ++i) {
     const std::string h = header[i];
+    const int column = static_cast<int>(i) + 1;
     if (lower(h) == "student") {
+      if (student_col >= 0)
+        throw InputError(Diagnostic{SourceLocation{path, header_line, column}, "header",
+                                    fmt::format("a second 'student' column (the first is column {})", student_col + 1)});
       student_col = static_cast<int>(i);
       continue;
     }
     const std::size_t dot = h.rfind('.');
     if (dot == std::string::npos || dot == 0 || dot + 1 == h.size())
-      throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "header",
-                                  fmt::format("column {} is '{}': name answer columns problem-id.answer", i + 1, h)});
+      throw InputError(Diagnostic{SourceLocation{path, header_line, column}, "header",
+                                  fmt::format("column {} is {}: name answer columns problem-id.answer", column,
+                                              quote_excerpt(h))});
     columns[i] = {h.substr(0, dot), h.substr(dot + 1)};
+    for (std::size_t k = 0; k < i; ++k)
+      if (columns[k] == columns[i])
+        throw InputError(Diagnostic{SourceLocation{path, header_line, column}, "header",
+                                    fmt::format("column {} repeats column {} ({})", column, k + 1, quote_excerpt(h))});
   }
-  if (student_col < 0) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "header", "no 'student' column"});
+  if (student_col < 0)
+    throw InputError(Diagnostic{SourceLocation{path, header_line, 1}, "header", "no 'student' column"});
   std::vector<BatchEntry> out;
   for (std::size_t r = 1; r < table.rows.size(); ++r) {
     const CsvRow& row = table.rows[r];
     BatchEntry b;
     b.source = fmt::format("{} row {}", path, row.line);
+    b.csv_file = path;
     b.student = student_col < static_cast<int>(row.fields.size()) ? row.fields[static_cast<std::size_t>(student_col)] : "";
     if (b.student.empty()) b.student = fmt::format("row-{}", row.line);
     std::size_t bytes = 0;
     for (const std::string& f : row.fields) bytes += f.size();
     if (row.fields.size() > header.size()) {
-      b.error = fmt::format("{} fields, but the header has {}", row.fields.size(), header.size());
+      b.error = fmt::format("line {}: {} fields, but the header has {}", row.line, row.fields.size(), header.size());
     } else if (bytes > max_bytes) {
       b.error = fmt::format("{} bytes: larger than the limit of {} bytes for one submission", bytes, max_bytes);
     } else {
@@ -128,6 +135,9 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
       for (std::size_t i = 0; i < row.fields.size(); ++i) {
         if (static_cast<int>(i) == student_col || row.fields[i].empty()) continue;
         answers[columns[i].first][columns[i].second] = cell_value(row.fields[i]);
+        const std::pair<int, int> cell{row.line, static_cast<int>(i) + 1};
+        b.cells.emplace("answers." + columns[i].first + "." + columns[i].second, cell);
+        b.cells.emplace("answers." + columns[i].first, cell);  // the first cell of that problem
       }
       YAML::Node root(YAML::NodeType::Map);
       root["student"] = b.student;
@@ -141,15 +151,17 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
   return out;
 }
 
-// A file name for a student id: letters, digits, '.', '-', '_' kept; anything else '_'.
-std::string file_stem(const std::string& student) {
-  std::string s;
-  for (const char c : student) {
-    const bool ok = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
-    s += ok ? c : '_';
+// Messages about a CSV row's answers, moved from the YAML the row became to its cells.
+void relocate(Diagnostic& d, const BatchEntry& e) {
+  if (e.csv_file.empty()) return;
+  for (std::string field = d.field; !field.empty(); field = field.substr(0, std::min(field.size(), field.rfind('.')))) {
+    if (const auto it = e.cells.find(field); it != e.cells.end()) {
+      d.where = SourceLocation{e.csv_file, it->second.first, it->second.second};
+      return;
+    }
+    if (field.find('.') == std::string::npos) break;
   }
-  if (s.empty() || s[0] == '.') s = "_" + s;
-  return s.substr(0, 100);
+  d.where = SourceLocation{e.csv_file, 0, 0};
 }
 
 std::string number_text(double v) { return format_approx(v, 6); }
@@ -159,8 +171,7 @@ std::string number_text(double v) { return format_approx(v, 6); }
 std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t max_bytes) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) return from_directory(path, max_bytes);
-  if (fs::is_regular_file(path, ec) && lower(fs::path(path).extension().string()) == ".csv")
-    return from_csv(path, max_bytes);
+  if (lower(fs::path(path).extension().string()) == ".csv") return from_csv(path, max_bytes);
   throw InputError(Diagnostic{SourceLocation{path, 0, 0}, "",
                               "expected an answers file (.yaml), a directory of them, or a CSV roster"});
 }
@@ -168,7 +179,7 @@ std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t
 std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& rows) {
   std::vector<std::string> header = {"student", "score", "max_score", "percent", "status"};
   for (const ProblemSpec& p : set.problems) header.push_back(p.id);
-  header.insert(header.end(), {"source", "message"});
+  header.insert(header.end(), {"source", "message", "file"});
   std::string out = csv_row(header);
   for (const BatchRow& r : rows) {
     std::vector<std::string> f = {r.student, number_text(r.score), number_text(r.max_score),
@@ -178,6 +189,7 @@ std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& ro
       f.push_back(i < r.problem_scores.size() ? number_text(r.problem_scores[i]) : "");
     f.push_back(r.source);
     f.push_back(r.message);
+    f.push_back(r.feedback_stem);
     out += csv_row(f);
   }
   return out;
@@ -185,15 +197,12 @@ std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& ro
 
 BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries, const BatchOptions& options) {
   BatchResult result;
-  // File stems, unique within the batch (two files claiming one id both get feedback).
-  std::vector<std::string> stems;
-  std::map<std::string, int> seen;
-  for (const BatchEntry& e : entries) {
-    std::string stem = file_stem(e.student);
-    const int n = ++seen[stem];
-    if (n > 1) stem += fmt::format("-{}", n);
-    stems.push_back(stem);
-  }
+  // File names, one per student and never shared (two files claiming one id both get theirs).
+  std::vector<std::string> ids;
+  for (const BatchEntry& e : entries) ids.push_back(e.student);
+  const std::vector<std::string> stems = unique_file_names(ids);
+  // Taken first: a locked or unwritable output directory stops the batch before any grading.
+  OutputTransaction out(options.out_dir, {"gradebook.csv", "feedback", "gradescope"});
   // A set that does not vary per student is solved once, here: every child inherits it.
   std::optional<SolvedSet> solved;
   if (!options.set_for) solved = solve_for_grading(set);
@@ -201,13 +210,18 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   const auto work = [&](std::size_t i) -> std::string {
     const BatchEntry& e = entries[i];
     if (e.error) throw std::runtime_error(*e.error);
-    const Submission sub = load_submission_from_string(e.yaml, e.source);
+    Submission sub = load_submission_from_string(e.yaml, e.source);
+    for (Diagnostic& d : sub.errors) relocate(d, e);
+    // A file that could not be read is reported as such, not as a file without `student:`.
+    if (options.set_for && !sub.answers.IsDefined() && !sub.errors.empty())
+      throw std::runtime_error(sub.errors[0].format());
     std::string variant;
     const ProblemSet graded_set = options.set_for ? options.set_for(set, sub.student, variant) : set;
     // The student's own set could not be made (no `student:`, no generated file): an error row
     // that says why, not a score of 0.
     if (graded_set.errors.size() > set.errors.size()) throw std::runtime_error(graded_set.errors.back().format());
     GradeReport report = grade(graded_set, sub, solved ? &*solved : nullptr);
+    for (Diagnostic& d : report.errors) relocate(d, e);
     if (report.student.empty()) report.student = e.student;
     if (!variant.empty()) report.variant = variant;
     json j;
@@ -224,10 +238,21 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     j["gradescope"] = json_text(gradescope_results(report, options.lang)) + "\n";
     return json_text(j, -1);
   };
-  const fs::path out(options.out_dir);
-  const auto write = [&](const fs::path& p, const std::string& text) {
-    write_file_atomically(p.string(), text);
-    result.files_written.push_back(p.string());
+  double max_score = 0;
+  for (const ProblemSpec& p : set.problems) max_score += p.max_score();
+  const auto write = [&](const std::string& relative, const std::string& text) {
+    out.write(relative, text);
+    result.files_written.push_back(out.published_path(relative));
+  };
+  const auto failed_row = [&](BatchRow& row, std::string status, const std::string& reason) {
+    row.status = std::move(status);
+    row.message = reason;
+    row.score = 0;
+    row.problem_scores.clear();
+    write("feedback/" + row.feedback_stem + ".md",
+          fmt::format("# {}\n\nThis submission could not be graded: {}\n", markdown_escape(row.student),
+                      markdown_escape(reason)));
+    write("gradescope/" + row.feedback_stem + ".json", json_text(gradescope_failure(reason)) + "\n");
   };
   const auto on_result = [&](std::size_t i, const IsolatedResult& r) {
     const BatchEntry& e = entries[i];
@@ -235,34 +260,35 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     row.student = e.student;
     row.source = e.source;
     row.feedback_stem = stems[i];
-    row.max_score = 0;
-    for (const ProblemSpec& p : set.problems) row.max_score += p.max_score();
-    std::string gradescope;
+    row.max_score = max_score;
     if (r.status == IsolatedResult::Status::Ok) {
-      const json j = json::parse(r.output);
-      row.status = j["unreadable"].get<bool>() ? "error" : "graded";
-      row.score = j["score"].get<double>();
-      row.max_score = j["max_score"].get<double>();
-      for (const auto& s : j["problem_scores"]) row.problem_scores.push_back(s.get<double>());
-      row.message = j["message"].get<std::string>();
-      write(out / "feedback" / (stems[i] + ".md"), j["markdown"].get<std::string>());
-      write(out / "feedback" / (stems[i] + ".html"), j["html"].get<std::string>());
-      gradescope = j["gradescope"].get<std::string>();
+      // What the child sent is checked like any input: a malformed result is this row's error.
+      try {
+        const json j = json::parse(r.output);
+        row.status = j.at("unreadable").get<bool>() ? "error" : "graded";
+        row.score = j.at("score").get<double>();
+        row.max_score = j.at("max_score").get<double>();
+        for (const auto& s : j.at("problem_scores")) row.problem_scores.push_back(s.get<double>());
+        row.message = j.at("message").get<std::string>();
+        write("feedback/" + stems[i] + ".md", j.at("markdown").get<std::string>());
+        write("feedback/" + stems[i] + ".html", j.at("html").get<std::string>());
+        write("gradescope/" + stems[i] + ".json", j.at("gradescope").get<std::string>());
+      } catch (const nlohmann::json::exception& x) {
+        failed_row(row, "error", std::string("the grader's result could not be read: ") + x.what());
+      }
     } else {
-      row.status = r.status == IsolatedResult::Status::Timeout   ? "timeout"
-                   : r.status == IsolatedResult::Status::Crashed ? "crashed"
-                                                                 : "error";
-      row.message = r.error;
-      const std::string md = fmt::format("# {}\n\nThis submission could not be graded: {}\n", e.student, r.error);
-      write(out / "feedback" / (stems[i] + ".md"), md);
-      gradescope = json_text(gradescope_failure(r.error)) + "\n";
+      failed_row(row,
+                 r.status == IsolatedResult::Status::Timeout   ? "timeout"
+                 : r.status == IsolatedResult::Status::Crashed ? "crashed"
+                                                               : "error",
+                 r.error);
     }
-    write(out / "gradescope" / (stems[i] + ".json"), gradescope);
     result.rows.push_back(std::move(row));
     if (options.on_progress) options.on_progress(i + 1, entries.size(), e.student);
   };
   run_isolated_each(entries.size(), work, options.timeout_seconds, on_result);
-  write(out / "gradebook.csv", gradebook_csv(set, result.rows));
+  write("gradebook.csv", gradebook_csv(set, result.rows));
+  out.commit();
   return result;
 }
 

@@ -9,6 +9,7 @@
 #include "solver/derivation/i18n.hpp"
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,7 +17,10 @@
 namespace frustum {
 
 constexpr double kBatchTimeoutDefault = 10.0;                  // seconds per submission
+constexpr double kMaxBatchTimeout = 3600.0;                    // an hour for one submission
 constexpr std::size_t kMaxSubmissionBytes = 1u << 20;          // 1 MiB of answers per student
+
+constexpr std::size_t kMaxRosterBytes = 64u << 20;             // a CSV roster of answers
 
 // One submission, before grading.
 struct BatchEntry {
@@ -24,11 +28,17 @@ struct BatchEntry {
   std::string student;  // from the answers, the CSV, or the file name
   std::string yaml;     // the answers as YAML text (CSV rows are converted)
   std::optional<std::string> error;  // could not be read at all (too big, unreadable)
+  // A CSV row: where each answer ("answers.ID.NAME") was in the CSV (line, column), so that
+  // messages point at the cell, not at the YAML the row was converted to.
+  std::string csv_file;
+  std::map<std::string, std::pair<int, int>> cells;
 };
 
 // Answer files (*.yaml, *.yml) directly in a directory, in name order; or the rows of a CSV
-// whose header has `student` and one column per answer named `problem-id.answer`.
-// Throws InputError for a path that is neither, or a CSV without a `student` column.
+// whose header has `student` and one column per answer named `problem-id.answer`. A file that
+// cannot be read (a symlink loop, a FIFO, too big) is an entry with its error.
+// Throws InputError for a path that is neither, an unreadable directory, or a CSV without a
+// `student` column (located in the CSV: line and column).
 std::vector<BatchEntry> collect_submissions(const std::string& path,
                                             std::size_t max_bytes = kMaxSubmissionBytes);
 
@@ -58,8 +68,13 @@ struct BatchResult {
   std::vector<std::string> files_written;
 };
 
-// Grades and writes every output under options.out_dir:
-//   gradebook.csv, feedback/<student>.md, feedback/<student>.html, gradescope/<student>.json
+// Grades and writes every output under options.out_dir as one transaction (OutputTransaction:
+// locked, staged, published by one rename):
+//   gradebook.csv, feedback/<file>.md, feedback/<file>.html, gradescope/<file>.json
+// with <file> = unique_file_names of the student ids (the gradebook's `file` column). Never
+// aborts on a submission: every failure is that student's row. Throws std::runtime_error only
+// when the outputs cannot be written at all (not writable, locked by another batch, disk
+// full); the previous outputs are then unchanged.
 BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries, const BatchOptions& options);
 
 // The gradebook's CSV text (header + one row per submission).

@@ -1,5 +1,7 @@
 #include "grader/csv.hpp"
 
+#include <string_view>
+
 namespace frustum {
 
 CsvTable parse_csv(const std::string& text) {
@@ -9,7 +11,7 @@ CsvTable parse_csv(const std::string& text) {
   CsvRow row{line, {}};
   std::string field;
   bool quoted = false, field_started = false;
-  int quote_line = 0;
+  int quote_line = 0, quote_column = 0, column = 1;
   const auto end_field = [&] {
     row.fields.push_back(std::move(field));
     field.clear();
@@ -21,7 +23,7 @@ CsvTable parse_csv(const std::string& text) {
     if (!(row.fields.size() == 1 && row.fields[0].empty())) table.rows.push_back(std::move(row));
     row = CsvRow{line, {}};
   };
-  for (; i < text.size(); ++i) {
+  for (; i < text.size(); ++i, ++column) {
     const char c = text[i];
     if (quoted) {
       if (c == '"') {
@@ -32,7 +34,7 @@ CsvTable parse_csv(const std::string& text) {
           quoted = false;
         }
       } else {
-        if (c == '\n') ++line;
+        if (c == '\n') ++line, column = 0;
         field += c;
       }
       continue;
@@ -43,6 +45,7 @@ CsvTable parse_csv(const std::string& text) {
           quoted = true;
           field_started = true;
           quote_line = line;
+          quote_column = column;
         } else {
           field += c;  // a stray quote inside an unquoted field is kept as written
         }
@@ -54,6 +57,7 @@ CsvTable parse_csv(const std::string& text) {
         break;
       case '\n':
         ++line;
+        column = 0;
         end_row();
         break;
       default:
@@ -63,6 +67,8 @@ CsvTable parse_csv(const std::string& text) {
   }
   if (quoted) {
     table.error = "line " + std::to_string(quote_line) + ": unterminated quoted field";
+    table.error_line = quote_line;
+    table.error_column = quote_column;
     return table;
   }
   if (field_started || !row.fields.empty()) end_row();
@@ -81,8 +87,30 @@ std::string csv_field(const std::string& field) {
 
 std::string csv_row(const std::vector<std::string>& fields) {
   std::string out;
-  for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + csv_field(fields[i]);
+  for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + csv_field(csv_neutralise(fields[i]));
   return out + "\n";
+}
+
+std::string csv_neutralise(const std::string& field) {
+  if (field.empty() || std::string_view("=+-@\t\r").find(field[0]) == std::string_view::npos) return field;
+  // A signed decimal number is data, not a formula.
+  std::size_t i = 1, digits = 0;
+  const auto run = [&] {
+    const std::size_t start = i;
+    while (i < field.size() && field[i] >= '0' && field[i] <= '9') ++i;
+    return i - start;
+  };
+  if (field[0] == '+' || field[0] == '-') {
+    digits = run();
+    if (i < field.size() && field[i] == '.') ++i, digits += run();
+    if (digits > 0 && i < field.size() && (field[i] == 'e' || field[i] == 'E')) {
+      ++i;
+      if (i < field.size() && (field[i] == '+' || field[i] == '-')) ++i;
+      if (run() == 0) digits = 0;
+    }
+    if (digits > 0 && i == field.size()) return field;
+  }
+  return "'" + field;
 }
 
 }  // namespace frustum

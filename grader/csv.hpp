@@ -17,13 +17,21 @@ struct CsvRow {
 struct CsvTable {
   std::vector<CsvRow> rows;
   std::optional<std::string> error;  // "line N: unterminated quoted field"
+  int error_line = 0, error_column = 0;  // where the error is (1-based)
 };
 
 // Reads a whole CSV text; a UTF-8 byte-order mark and CRLF line ends are accepted.
 CsvTable parse_csv(const std::string& text);
 
-// One field, quoted when it needs to be; and a whole row ending in "\n".
+// One field, quoted when it needs to be; and a whole row ending in "\n", every field
+// neutralised (csv_neutralise) first.
 std::string csv_field(const std::string& field);
 std::string csv_row(const std::vector<std::string>& fields);
+
+// A cell a spreadsheet will show, not run: text that starts with =, +, -, @, a tab or a
+// carriage return gets a leading ' (OWASP's rule against CSV formula injection: a student id
+// "=HYPERLINK(...)" would otherwise be a live formula in the instructor's gradebook). Plain
+// numbers ("-6", "+1.5e3") are left as they are.
+std::string csv_neutralise(const std::string& field);
 
 }  // namespace frustum

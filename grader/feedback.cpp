@@ -13,16 +13,8 @@ namespace frustum {
 namespace {
 
 
-// Markdown table cells: a pipe would end the cell.
-std::string cell(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    if (c == '|') out += "\\|";
-    else if (c == '\n') out += ' ';
-    else out += c;
-  }
-  return out;
-}
+// Markdown table cells: a pipe would end the cell (markdown_escape escapes it).
+std::string cell(const std::string& s) { return markdown_escape(s); }
 
 // HTML text and attribute values: the SVG writer's escaping (&, <, >, ", ') serves both.
 std::string html_escape(std::string_view s) { return svg_escape(s); }
@@ -64,26 +56,54 @@ const char* kScript = R"JS(
 
 }  // namespace
 
+std::string markdown_escape(std::string_view text) {
+  std::string out;
+  // At the start of a line these would make a heading, a list or a quote.
+  if (!text.empty() && std::string_view("#-+>").find(text[0]) != std::string_view::npos) out += '\\';
+  for (const char c : text) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (c == '\n' || c == '\r' || c == '\t') out += ' ';
+    else if (u < 0x20 || u == 0x7F) continue;
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else if (std::string_view("\\`*_[]|").find(c) != std::string_view::npos) out += std::string("\\") + c;
+    else out += c;
+  }
+  return out;
+}
+
+std::string markdown_code(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (c == '`') out += "ʼ";
+    else if (c == '\n' || c == '\r' || c == '\t') out += ' ';
+    else if (u >= 0x20 && u != 0x7F) out += c;
+  }
+  return out;
+}
+
 std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
   std::string out;
-  if (p.error) return out + fmt::format("**{}:** `{}`\n\n", tr("error", lang), p.error->format());
+  if (p.error) return out + fmt::format("**{}:** `{}`\n\n", tr("error", lang), markdown_code(p.error->format()));
   out += fmt::format("| {} | {} | {} | {} | {} |\n| --- | --- | --- | --- | --- |\n", tr("Answer", lang),
                      tr("Verdict", lang), tr("Score", lang), tr("You wrote", lang), tr("Expected", lang));
   for (const AnswerGrade& a : p.answers)
-    out += fmt::format("| `{}` | {} | {} / {} | {} | {} |\n", a.name, verdict_word(a.verdict, lang),
+    out += fmt::format("| `{}` | {} | {} / {} | {} | {} |\n", markdown_code(a.name), verdict_word(a.verdict, lang),
                        score_text(a.score), score_text(a.max_score), cell(got_shown(a)),
                        cell(a.expected.shown().unicode));
   out += "\n";
   for (const AnswerGrade& a : p.answers) {
     if (a.verdict == Verdict::Correct) continue;
     if (a.misconception.empty() && a.feedback.empty() && a.derivation.empty()) continue;
-    out += fmt::format("**`{}`**", a.name);
+    out += fmt::format("**`{}`**", markdown_code(a.name));
     if (a.carried_forward) out += " — " + tr("credit carried forward from your earlier answer", lang);
     out += "\n\n";
     if (!a.misconception.empty())
       out += fmt::format("> **{}:** {}{}\n\n", tr("Common mistake", lang), tr(a.misconception, lang),
                          a.wrong_step.empty() ? "" : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
-    if (!a.feedback.empty()) out += tr(a.feedback, lang) + "\n\n";
+    if (!a.feedback.empty()) out += markdown_escape(tr(a.feedback, lang)) + "\n\n";
     if (!a.derivation.empty()) out += fmt::format("*{}:*\n\n", tr("How to get it", lang)) + render_steps_markdown(a.derivation, lang);
   }
   return out;
@@ -91,13 +111,13 @@ std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
 
 std::string render_feedback_markdown(const GradeReport& r, Lang lang) {
   std::string out = fmt::format("# {} {}\n\n**{}: {} / {}**\n\n", tr("Student", lang),
-                                r.student.empty() ? "(unnamed)" : r.student, tr("Score", lang),
+                                r.student.empty() ? "(unnamed)" : markdown_escape(r.student), tr("Score", lang),
                                 score_text(r.score), score_text(r.max_score));
-  if (!r.variant.empty()) out += r.variant + "\n\n";
-  for (const Diagnostic& d : r.errors) out += fmt::format("- {}: `{}`\n", tr("warning", lang), d.format());
+  if (!r.variant.empty()) out += markdown_escape(r.variant) + "\n\n";
+  for (const Diagnostic& d : r.errors) out += fmt::format("- {}: `{}`\n", tr("warning", lang), markdown_code(d.format()));
   if (!r.errors.empty()) out += "\n";
   for (const ProblemGrade& p : r.problems) {
-    out += fmt::format("## {} — {} / {}\n\n", p.id, score_text(p.score), score_text(p.max_score));
+    out += fmt::format("## {} — {} / {}\n\n", markdown_escape(p.id), score_text(p.score), score_text(p.max_score));
     out += render_problem_feedback_markdown(p, lang);
   }
   return out;

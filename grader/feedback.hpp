@@ -8,11 +8,21 @@
 #include "solver/derivation/i18n.hpp"
 
 #include <string>
+#include <string_view>
 
 namespace frustum {
 
 std::string render_feedback_markdown(const GradeReport& r, Lang lang = Lang::En);
 std::string render_feedback_html(const GradeReport& r, Lang lang = Lang::En);
+
+// Untrusted text (a student id, an answer as written, a message quoting it) as Markdown that
+// shows it literally: HTML is written as entities (<img onerror=…> stays text in every
+// renderer), the characters that make emphasis, links, images, code and table cells
+// (\ ` * _ [ ] |) are backslash-escaped, as is a leading # - + >, control characters are
+// dropped and line breaks become spaces.
+std::string markdown_escape(std::string_view text);
+// The same for the inside of a `code span`: backticks, which would end it, become ʼ.
+std::string markdown_code(std::string_view text);
 
 // The problem's part of the Markdown feedback (Gradescope shows one per test).
 std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang = Lang::En);

@@ -13,8 +13,8 @@ json gradescope_results(const GradeReport& r, Lang lang) {
   json j;
   j["score"] = number_json(r.score);
   std::string summary = fmt::format("{} / {}", r.score, r.max_score);
-  if (!r.variant.empty()) summary += "\n\n" + r.variant;
-  for (const Diagnostic& d : r.errors) summary += "\n\n- `" + d.format() + "`";
+  if (!r.variant.empty()) summary += "\n\n" + markdown_escape(r.variant);
+  for (const Diagnostic& d : r.errors) summary += "\n\n- `" + markdown_code(d.format()) + "`";
   j["output"] = summary;
   j["output_format"] = "md";
   j["visibility"] = "visible";
@@ -37,7 +37,7 @@ json gradescope_results(const GradeReport& r, Lang lang) {
 
 json gradescope_failure(const std::string& reason) {
   return json{{"score", 0},
-              {"output", "The submission could not be graded: " + reason},
+              {"output", "The submission could not be graded: " + markdown_escape(reason)},
               {"output_format", "md"},
               {"visibility", "visible"},
               {"tests", json::array()}};

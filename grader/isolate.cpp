@@ -10,6 +10,7 @@
 #include <exception>
 
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -66,12 +67,17 @@ std::vector<IsolatedResult> run_isolated_each(
   while (results.size() < count) {
     const std::size_t first = results.size();
     int fds[2];
+    const pid_t parent = getpid();
     const pid_t pid = pipe(fds) == 0 ? fork() : -1;
     if (pid < 0) {  // no child process: grade here, without a time limit
       for (std::size_t i = first; i < count; ++i) finish(run_in_process([&] { return work(i); }));
       break;
     }
     if (pid == 0) {
+      // The child dies with its parent (kill -9 of a batch once left it grading on): the
+      // kernel sends SIGKILL when the parent goes; a parent already gone is caught here.
+      prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != parent) _exit(4);
       close(fds[0]);
       for (std::size_t i = first; i < count; ++i) {
         std::string text;

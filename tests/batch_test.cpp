@@ -63,8 +63,16 @@ void write(const fs::path& p, const std::string& text) {
 // Every file under a directory, relative path → content.
 std::map<std::string, std::string> tree(const fs::path& dir) {
   std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir))
+  // The published outputs, through their symlinks; not the runs kept under .frustum/.
+  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::follow_directory_symlink);
+       it != fs::recursive_directory_iterator(); ++it) {
+    if (it->path().filename() == ".frustum") {
+      it.disable_recursion_pending();
+      continue;
+    }
+    const fs::directory_entry& e = *it;
     if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read(e.path());
+  }
   return files;
 }
 

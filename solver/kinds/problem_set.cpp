@@ -45,6 +45,15 @@ double read_nonnegative(const YAML::Node& n, const std::string& file, const std:
   return v;
 }
 
+// A score weight: finite and at most kMaxPoints, so that a whole set's total (and every
+// gradebook sum and percentage) is a finite number (`points: 1e400` once aborted a batch).
+double read_points(const YAML::Node& n, const std::string& file, const std::string& field) {
+  const double v = read_nonnegative(n, file, field);
+  if (!(v <= kMaxPoints))
+    fail_at(n, file, field, "at most " + std::to_string(static_cast<long>(kMaxPoints)) + " points");
+  return v;
+}
+
 void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
                   std::set<std::string>& ids) {
   const std::string& file = set.file;
@@ -97,10 +106,10 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
       const std::string f = spec.field + ".points." + k;
       if (std::find(spec.ask.begin(), spec.ask.end(), k) == spec.ask.end())
         fail_at(it->first, file, f, "not an asked answer" + did_you_mean(k, spec.ask));
-      spec.weights[k] = read_nonnegative(it->second, file, f);
+      spec.weights[k] = read_points(it->second, file, f);
     }
   } else if (points.IsDefined()) {
-    spec.points = read_nonnegative(points, file, spec.field + ".points");
+    spec.points = read_points(points, file, spec.field + ".points");
   }
   // Per-answer tolerances: tolerance: {answers: {z: {decimals: 1}}}.
   const YAML::Node tol = p["tolerance"];

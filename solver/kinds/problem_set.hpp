@@ -17,6 +17,10 @@
 
 namespace frustum {
 
+// Largest `points` of one problem or answer: far beyond any course's weights, and small enough
+// that a set's total and a class's sums stay finite doubles.
+inline constexpr double kMaxPoints = 1'000'000;
+
 // Grading defaults (docs/grading.md): relative 1e-3 like WeBWorK, per component; the absolute
 // floor comes from the problem's own magnitudes (rel × what the component is computed from),
 // so `abs` is 0 unless the instructor sets it.

@@ -1,12 +1,20 @@
 #include "solver/kinds/yaml_document.hpp"
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
+#include <cstring>
+#include <map>
+#include <set>
 #include <sstream>
 #include <utility>
 #include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace frustum {
 
@@ -97,13 +105,148 @@ std::optional<Diagnostic> check_tree(const YAML::Node& root, const std::string& 
   return std::nullopt;
 }
 
+// Text saved as UTF-16 or UTF-32 (by a byte-order mark, or by the zero bytes of its ASCII
+// characters): yaml-cpp reads it as garbage ("unknown escape character").
+std::optional<std::string> wide_encoding(const std::string& text) {
+  const auto starts = [&](const char* bom, std::size_t n) { return text.compare(0, n, bom, n) == 0; };
+  if (starts("\xFF\xFE\0\0", 4) || starts("\0\0\xFE\xFF", 4)) return "UTF-32";
+  if (starts("\xFF\xFE", 2) || starts("\xFE\xFF", 2)) return "UTF-16";
+  if (text.size() >= 4 && (text[0] == 0) != (text[1] == 0)) return "UTF-16";
+  return std::nullopt;
+}
+
+// Stops the event pass at the first problem, with where it is.
+struct Refusal {
+  YAML::Mark mark;
+  std::string message;
+};
+
+// A pass over the parser's events before any node is built: counts the nodes with aliases
+// expanded, and finds keys written twice in one mapping and a second document.
+class StrictnessCheck : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor, nullptr); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+    const auto it = sizes_.find(anchor);
+    count(mark, it == sizes_.end() ? 1 : it->second);
+    finish_child(mark, nullptr);
+  }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                const std::string& value) override {
+    leaf(mark, anchor, &value);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                       YAML::EmitterStyle::value) override {
+    open(mark, anchor, false);
+  }
+  void OnSequenceEnd() override { close(); }
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                  YAML::EmitterStyle::value) override {
+    open(mark, anchor, true);
+  }
+  void OnMapEnd() override { close(); }
+
+ private:
+  struct Frame {
+    YAML::Mark mark;
+    YAML::anchor_t anchor;
+    std::size_t start;  // nodes counted before this one
+    bool map;
+    bool at_key = true;                        // the next child of a mapping is a key
+    std::map<std::string, int> keys;           // key → line (1-based) where it first appears
+  };
+
+  void count(const YAML::Mark& mark, std::size_t n) {
+    nodes_ += n;
+    if (nodes_ > kMaxYamlNodes)
+      throw Refusal{mark, "the document expands to more than " + std::to_string(kMaxYamlNodes) +
+                              " values (through anchors and aliases?)"};
+  }
+  void leaf(const YAML::Mark& mark, YAML::anchor_t anchor, const std::string* scalar) {
+    count(mark, 1);
+    if (anchor) sizes_[anchor] = 1;
+    finish_child(mark, scalar);
+  }
+  void open(const YAML::Mark& mark, YAML::anchor_t anchor, bool map) {
+    count(mark, 1);
+    stack_.push_back(Frame{mark, anchor, nodes_ - 1, map, true, {}});
+  }
+  void close() {
+    const Frame f = std::move(stack_.back());
+    stack_.pop_back();
+    if (f.anchor) sizes_[f.anchor] = nodes_ - f.start;
+    finish_child(f.mark, nullptr);
+  }
+  // A node ended inside the innermost container: a mapping's key is checked against the
+  // keys before it.
+  void finish_child(const YAML::Mark& mark, const std::string* scalar) {
+    if (stack_.empty() || !stack_.back().map) return;
+    Frame& f = stack_.back();
+    if (f.at_key && scalar) {
+      const auto [it, fresh] = f.keys.emplace(*scalar, mark.line + 1);
+      if (!fresh)
+        throw Refusal{mark, "duplicate key '" + valid_utf8(*scalar).substr(0, 64) + "' (first on line " +
+                                std::to_string(it->second) + "): a mapping names each key once"};
+    }
+    f.at_key = !f.at_key;
+  }
+
+  std::size_t nodes_ = 0;
+  std::vector<Frame> stack_;
+  std::map<YAML::anchor_t, std::size_t> sizes_;
+};
+
+// Runs the event pass over every document; the first problem, located.
+std::optional<Diagnostic> check_events(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  StrictnessCheck check;
+  const auto at = [&](const YAML::Mark& m, std::string message) {
+    return Diagnostic{SourceLocation{name, m.line >= 0 ? m.line + 1 : 0, m.line >= 0 ? m.column + 1 : 0}, "",
+                      std::move(message)};
+  };
+  try {
+    if (!parser.HandleNextDocument(check)) return std::nullopt;
+    // A second document: where it starts is where the first one's `---` or `...` ends.
+    struct FirstEvent : YAML::EventHandler {
+      std::optional<YAML::Mark> mark;
+      void note(const YAML::Mark& m) { if (!mark) mark = m; }
+      void OnDocumentStart(const YAML::Mark& m) override { note(m); }
+      void OnDocumentEnd() override {}
+      void OnNull(const YAML::Mark& m, YAML::anchor_t) override { note(m); }
+      void OnAlias(const YAML::Mark& m, YAML::anchor_t) override { note(m); }
+      void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t, const std::string&) override { note(m); }
+      void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override { note(m); }
+      void OnSequenceEnd() override {}
+      void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override { note(m); }
+      void OnMapEnd() override {}
+    } second;
+    if (parser.HandleNextDocument(second) && second.mark)
+      return at(*second.mark, "a second YAML document (after '---'): a file holds one document");
+  } catch (const Refusal& r) {
+    return at(r.mark, r.message);
+  } catch (const std::exception&) {
+    // Syntax errors are reported by the parse that builds the document.
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 YamlDocument parse_yaml(const std::string& text, const std::string& name) {
   YamlDocument doc;
+  if (const auto wide = wide_encoding(text)) {
+    doc.error = Diagnostic{SourceLocation{name, 1, 1}, "",
+                           "the file is " + *wide + " text: save it as UTF-8"};
+    return doc;
+  }
   std::string repaired = text;
   doc.invalid_utf8 = repair_utf8(repaired, name);
   try {
+    doc.error = check_events(repaired, name);
+    if (doc.error) return doc;
     doc.root = YAML::Load(repaired);
     doc.error = check_tree(doc.root, name);
   } catch (const YAML::DeepRecursion& e) {
@@ -120,17 +263,54 @@ YamlDocument parse_yaml(const std::string& text, const std::string& name) {
   return doc;
 }
 
+std::optional<Diagnostic> read_text_file(const std::string& path, std::size_t max_bytes, std::string& out) {
+  const auto refuse = [&](std::string message) {
+    return Diagnostic{SourceLocation{path, 0, 0}, "", std::move(message)};
+  };
+  // O_NONBLOCK: opening a FIFO that no one writes to returns at once instead of waiting.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return refuse(std::string("cannot open the file: ") + std::strerror(errno));
+  struct stat st {};
+  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    const bool dir = S_ISDIR(st.st_mode);
+    ::close(fd);
+    return refuse(dir ? "a directory, not a file"
+                      : "not a regular file (a pipe, socket or device); give a file");
+  }
+  const auto too_big = [&] {
+    return refuse("the file is larger than the limit of " + std::to_string(max_bytes) + " bytes");
+  };
+  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
+    ::close(fd);
+    return too_big();
+  }
+  out.clear();
+  out.reserve(static_cast<std::size_t>(st.st_size));
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const std::string reason = std::strerror(errno);
+      ::close(fd);
+      return refuse("cannot read the file: " + reason);
+    }
+    if (n == 0) break;
+    if (out.size() + static_cast<std::size_t>(n) > max_bytes) {
+      ::close(fd);
+      return too_big();
+    }
+    out.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return std::nullopt;
+}
+
 YamlDocument load_yaml_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return {YAML::Node(), Diagnostic{SourceLocation{path, 0, 0}, "", "cannot open the file"}, {}};
-  const std::streamoff size = in.tellg();
-  if (size < 0 || static_cast<std::size_t>(size) > kMaxYamlFileBytes)
-    return {YAML::Node(), Diagnostic{SourceLocation{path, 0, 0}, "",
-                                     "the file is larger than 16 MiB"}, {}};
-  in.seekg(0);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_yaml(ss.str(), path);
+  std::string text;
+  if (std::optional<Diagnostic> error = read_text_file(path, kMaxYamlFileBytes, text))
+    return {YAML::Node(), std::move(error), {}};
+  return parse_yaml(text, path);
 }
 
 }  // namespace frustum

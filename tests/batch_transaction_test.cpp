@@ -1,0 +1,267 @@
+// A batch as a transaction (issue 15): one name per student, a lock per output directory,
+// outputs that agree with the gradebook after a kill at any moment, a grading child that dies
+// with its parent, and outputs safe to open in a spreadsheet, a Markdown viewer or a terminal.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "grader/atomic_file.hpp"
+#include "grader/batch.hpp"
+#include "grader/csv.hpp"
+#include "grader/feedback.hpp"
+#include "grader/file_names.hpp"
+#include "grader/gradescope.hpp"
+#include "test_util.hpp"
+
+namespace frustum {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kSet = R"(problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
+    ask: [z]
+)";
+
+fs::path scratch(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() /
+                     ("frustum_txn_" + name + "_" + std::to_string(getpid()) + "_" +
+                      std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+  fs::create_directories(p);
+  return p;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path make_class(const fs::path& dir, int students) {
+  const fs::path in = dir / "in";
+  fs::create_directories(in);
+  for (int i = 0; i < students; ++i)
+    write(in / ("s" + std::to_string(100 + i) + ".yaml"),
+          "student: s" + std::to_string(100 + i) +
+              "\nanswers:\n  zbuf: {z: " + std::to_string(i % 2 ? 8 : 9) + "}\n");
+  return in;
+}
+
+TEST(FileNames, DifferentIdsNeverShareAName) {
+  EXPECT_EQ(file_name_for("a/b"), "a%2Fb");
+  EXPECT_EQ(file_name_for("a_b"), "a_b");
+  EXPECT_EQ(file_name_for(".."), "%2E.");
+  EXPECT_EQ(file_name_for(""), "%");
+  // Property: random ids over a hostile alphabet map to distinct names.
+  std::mt19937 rng(15);
+  const std::string alphabet = "aA_-./%~ \x1b\xc3\xa9=";
+  std::set<std::string> ids, names;
+  for (int i = 0; i < 5000; ++i) {
+    std::string id;
+    for (int k = static_cast<int>(rng() % 6); k >= 0; --k) id += alphabet[rng() % alphabet.size()];
+    if (!ids.insert(id).second) continue;
+    const std::string name = file_name_for(id);
+    EXPECT_TRUE(names.insert(name).second) << "'" << id << "' shares " << name;
+    EXPECT_EQ(name.find('/'), std::string::npos);
+    EXPECT_NE(name[0], '.');
+  }
+  // Within a batch, repeats and case-only differences get their own names.
+  EXPECT_EQ(unique_file_names({"a-2", "a", "a", "A"}),
+            (std::vector<std::string>{"a-2", "a", "a~2", "A~3"}));
+  const std::string long_id(400, 'x');
+  EXPECT_LE(file_name_for(long_id).size(), 120u);
+  EXPECT_NE(file_name_for(long_id), file_name_for(long_id + "y"));
+}
+
+TEST(BatchTransaction, IdsThatMapToOneNameEachKeepTheirOwnFeedback) {
+  // Ids a-2, a, a once made one student's feedback overwrite another's.
+  const fs::path dir = scratch("ids");
+  fs::create_directories(dir / "in");
+  write(dir / "in" / "1.yaml", "student: a-2\nanswers:\n  zbuf: {z: 8}\n");
+  write(dir / "in" / "2.yaml", "student: a\nanswers:\n  zbuf: {z: 9}\n");
+  write(dir / "in" / "3.yaml", "student: a\nanswers:\n  zbuf: {z: 7}\n");
+  BatchOptions o;
+  o.out_dir = (dir / "out").string();
+  const BatchResult r = grade_batch(load_problem_set_from_string(kSet, "set.yaml"),
+                                    collect_submissions((dir / "in").string()), o);
+  ASSERT_EQ(r.rows.size(), 3u);
+  EXPECT_EQ(r.rows[0].feedback_stem, "a-2");
+  EXPECT_EQ(r.rows[1].feedback_stem, "a");
+  EXPECT_EQ(r.rows[2].feedback_stem, "a~2");
+  EXPECT_NE(read(dir / "out" / "feedback" / "a.md").find("9"), std::string::npos);
+  EXPECT_NE(read(dir / "out" / "feedback" / "a~2.md").find("7"), std::string::npos);
+  const CsvTable book = parse_csv(read(dir / "out" / "gradebook.csv"));
+  ASSERT_EQ(book.rows.size(), 4u);
+  EXPECT_EQ(book.rows[0].fields.back(), "file");
+  EXPECT_EQ(book.rows[3].fields.back(), "a~2");
+  fs::remove_all(dir);
+}
+
+TEST(BatchTransaction, ASecondBatchOnTheSameOutputIsRefused) {
+  const fs::path dir = scratch("lock");
+  const fs::path in = make_class(dir, 2);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  BatchOptions o;
+  o.out_dir = (dir / "out").string();
+  grade_batch(set, collect_submissions(in.string()), o);
+  const std::string before = read(dir / "out" / "gradebook.csv");
+  {
+    OutputTransaction held(o.out_dir, {"gradebook.csv"});
+    try {
+      grade_batch(set, collect_submissions(in.string()), o);
+      ADD_FAILURE() << "a locked output directory was written";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("another batch is writing here"), std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_EQ(read(dir / "out" / "gradebook.csv"), before);
+  grade_batch(set, collect_submissions(in.string()), o);  // released with its holder
+  fs::remove_all(dir);
+}
+
+TEST(BatchTransaction, AnUnwritableOutputIsAnErrorNotAnAbort) {
+  const fs::path dir = scratch("unwritable");
+  const fs::path in = make_class(dir, 1);
+  write(dir / "file", "a file, not a directory");
+  BatchOptions o;
+  o.out_dir = (dir / "file" / "out").string();
+  EXPECT_THROW(grade_batch(load_problem_set_from_string(kSet, "set.yaml"),
+                           collect_submissions(in.string()), o),
+               std::runtime_error);
+  fs::remove_all(dir);
+}
+
+// The published outputs agree with the gradebook: one feedback page and one Gradescope file
+// per row, named in its `file` column, and nothing else.
+void expect_consistent(const fs::path& out) {
+  if (!fs::exists(out / "gradebook.csv")) {
+    EXPECT_FALSE(fs::exists(out / "feedback" / "s100.md")) << "outputs without a gradebook";
+    return;
+  }
+  const CsvTable book = parse_csv(read(out / "gradebook.csv"));
+  ASSERT_GE(book.rows.size(), 2u);
+  std::set<std::string> listed, on_disk;
+  for (std::size_t r = 1; r < book.rows.size(); ++r) listed.insert(book.rows[r].fields.back());
+  for (const auto& e : fs::directory_iterator(out / "gradescope"))
+    on_disk.insert(e.path().stem().string());
+  EXPECT_EQ(listed, on_disk);
+  for (const std::string& f : listed) {
+    const std::string md = read(out / "feedback" / (f + ".md"));
+    EXPECT_NE(md.find(f), std::string::npos) << f;
+  }
+}
+
+TEST(BatchTransaction, AKillAtAnyMomentLeavesConsistentOutputsAndNoGradingChild) {
+  const fs::path dir = scratch("kill");
+  const fs::path in = make_class(dir, 12);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  const std::string out = (dir / "out").string();
+  for (int round = 0; round < 6; ++round) {
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      BatchOptions o;
+      o.out_dir = out;
+      // Slow enough that the kill lands while students are being graded.
+      o.set_for = [](const ProblemSet& s, const std::string&, std::string&) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        return s;
+      };
+      // Every other run grades a different class size, so the outputs differ between runs.
+      std::vector<BatchEntry> entries = collect_submissions(in.string());
+      if (round % 2) entries.resize(7);
+      grade_batch(set, entries, o);
+      _exit(0);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(40 + 45 * round));
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    expect_consistent(out);
+    // The killed batch's grading child held the lock too: a new batch gets it within a moment
+    // only because that child died with its parent.
+    bool locked = true;
+    for (int tries = 0; tries < 50 && locked; ++tries) {
+      try {
+        OutputTransaction probe(out, {"gradebook.csv"});
+        locked = false;
+      } catch (const std::runtime_error&) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    }
+    EXPECT_FALSE(locked) << "round " << round << ": the grading child outlived its parent";
+  }
+  // A last complete run publishes, and leaves one run directory.
+  BatchOptions o;
+  o.out_dir = out;
+  grade_batch(set, collect_submissions(in.string()), o);
+  expect_consistent(out);
+  int runs = 0;
+  for (const auto& e : fs::directory_iterator(dir / "out" / ".frustum"))
+    runs += e.path().filename().string().rfind("run-", 0) == 0;
+  EXPECT_EQ(runs, 1);
+  fs::remove_all(dir);
+}
+
+TEST(BatchTransaction, ASymlinkLoopIsARowNotAnAbort) {
+  const fs::path dir = scratch("loop");
+  const fs::path in = make_class(dir, 2);
+  fs::create_symlink("loop.yaml", in / "loop.yaml");
+  BatchOptions o;
+  o.out_dir = (dir / "out").string();
+  const BatchResult r = grade_batch(load_problem_set_from_string(kSet, "set.yaml"),
+                                    collect_submissions(in.string()), o);
+  ASSERT_EQ(r.rows.size(), 3u);
+  EXPECT_EQ(r.rows[0].student, "loop");
+  EXPECT_EQ(r.rows[0].status, "error");
+  EXPECT_NE(r.rows[0].message.find("symbolic links"), std::string::npos) << r.rows[0].message;
+  fs::remove_all(dir);
+}
+
+TEST(OutputHygiene, CsvCellsCannotBeFormulas) {
+  for (const char* hostile : {"=HYPERLINK(\"http://x\",\"y\")", "+cmd|' /C calc'!A0",
+                              "@SUM(1+1)*cmd", "-2+3", "\t=1", "\r=1"})
+    EXPECT_EQ(csv_neutralise(hostile), std::string("'") + hostile) << hostile;
+  for (const char* plain : {"-6", "+1.5e3", "-0.25", "s001", "", "x = -6"})
+    EXPECT_EQ(csv_neutralise(plain), plain);
+  const CsvTable t = parse_csv(csv_row({"=1+1", "-6"}));
+  EXPECT_EQ(t.rows[0].fields, (std::vector<std::string>{"'=1+1", "-6"}));
+}
+
+TEST(OutputHygiene, MarkdownAndGradescopeShowHostileTextLiterally) {
+  GradeReport r =
+      grade(load_problem_set_from_string(kSet, "set.yaml"),
+            load_submission_from_string("student: \"<img src=x onerror=alert(1)>\"\nanswers:\n"
+                                        "  zbuf: {z: \"<script>alert(1)</script>\"}\n",
+                                        "a.yaml"));
+  const std::string md = render_feedback_markdown(r);
+  EXPECT_EQ(md.find("<img"), std::string::npos) << md;
+  EXPECT_EQ(md.find("<script"), std::string::npos) << md;
+  EXPECT_NE(md.find("&lt;img"), std::string::npos) << md;
+  const std::string gs = gradescope_results(r).dump();
+  EXPECT_EQ(gs.find("<img"), std::string::npos);
+  EXPECT_EQ(gs.find("<script"), std::string::npos);
+  EXPECT_EQ(markdown_escape("[x](javascript:alert(1)) *b* `c` |"),
+            "\\[x\\](javascript:alert(1)) \\*b\\* \\`c\\` \\|");
+  EXPECT_EQ(markdown_code("a`b\x1b[2J"), "aʼb[2J");
+}
+
+}  // namespace
+}  // namespace frustum
