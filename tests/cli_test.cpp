@@ -108,7 +108,7 @@ TEST(Cli, EverySubcommandHasAnExampleAndPlainChoices) {
     EXPECT_EQ(r.out.find("->"), std::string::npos) << sub << " shows CLI11's internal mapping:\n"
                                                    << r.out;
   }
-  EXPECT_NE(stdout_of("solve --help").out.find("{text,markdown,json}"), std::string::npos);
+  EXPECT_NE(stdout_of("solve --help").out.find("{text,markdown,json,html,latex}"), std::string::npos);
   EXPECT_NE(stdout_of("solve --help").out.find("{exact,double,float,long-double}"),
             std::string::npos);
   EXPECT_NE(stdout_of("grade --help").out.find("{text,json}"), std::string::npos);
