@@ -63,10 +63,14 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
     if (dim != 3) s.fail(k, "rotations about x, y, z are 3D; in 2D use rotate");
     const Exact a = read_angle(s, k, c.angles);
     t = {k + " " + angle_text(a, c.angles).unicode, rotate_axis_index(k[7] - 'x', a), ""};
+    t.angle = a;
+    t.rotation = [axis = k[7] - 'x'](const Exact& b) { return rotate_axis_index(axis, b); };
   } else if (k == "rotate") {
     if (dim == 2) {
       const Exact a = read_angle(s, k, c.angles);
       t = {"rotate " + angle_text(a, c.angles).unicode, rotate_2d(a), ""};
+      t.angle = a;
+      t.rotation = [](const Exact& b) { return rotate_2d(b); };
     } else {
       GivenReader r = s.child(k, {"axis", "angle"});
       const Vec3<Exact> axis = r.vector<3>("axis");
@@ -76,6 +80,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
       const Vec3<Exact> u = unit(axis);
       t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
            rotate_about(u, a), ""};
+      t.angle = a;
+      t.rotation = [u](const Exact& b) { return rotate_about(u, b); };
       if (!canonical(axis.dot(axis) - 1).is_zero())
         t.note = "the axis is normalised first: (x, y, z) = " + vec(u).unicode;
     }

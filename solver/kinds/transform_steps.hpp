@@ -6,6 +6,8 @@
 #include "solver/viewing/conventions.hpp"
 #include "solver/viewing/transforms.hpp"
 
+#include <functional>
+#include <optional>
 #include <string>
 
 namespace frustum {
@@ -18,6 +20,10 @@ struct TransformStep {
   std::string note;
   MatX<Exact> inverse = {};  // empty when the step is singular (a zero scale factor)
   Exact det = 1;
+  // Rotations only: the angle (radians) and the step's matrix for another angle (the grader's
+  // "degrees taken as radians").
+  std::optional<Exact> angle = std::nullopt;
+  std::function<MatX<Exact>(const Exact&)> rotation = nullptr;
 };
 
 // Reads the one-key mapping `s` ({translate: [2, 3]}) of dimension dim (2 or 3); angles in
