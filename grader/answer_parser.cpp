@@ -331,8 +331,9 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
     case AnswerKind::Matrix:
     case AnswerKind::Transform:
     case AnswerKind::Segment:
+    case AnswerKind::PointSet:
     case AnswerKind::Polygon: {
-      const bool vertices = spec.kind == AnswerKind::Polygon || spec.kind == AnswerKind::Segment;
+      const bool vertices = spec.kind != AnswerKind::Matrix && spec.kind != AnswerKind::Transform;
       const Rows rows = read_rows(node, vertices ? "vertex" : "row", budget);
       if (!rows.error.empty()) {
         p.error = rows.error;
@@ -397,11 +398,11 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
             p.error = "item " + std::to_string(i + 1) + " is not a word";
             return p;
           }
-          words.push_back(trim_lower(node[i].Scalar()));
+          words.push_back(trimmed(node[i].Scalar()));  // labels keep their case ("A.B")
         }
       } else if (node.IsScalar()) {
         for (std::string w : split_list(node.Scalar())) {
-          w = trim_lower(w);
+          w = trimmed(w);
           if (!w.empty()) words.push_back(w);
         }
       } else {

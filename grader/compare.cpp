@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 
 #include "solver/util/exact_format.hpp"
 
@@ -248,6 +249,24 @@ Comparison compare_components(const Value& expected, const Value& got, const Ans
   return incorrect("");
 }
 
+std::string lower(std::string s) {
+  for (char& c : s)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return s;
+}
+
+// Words compared without case ("Background" is background), unless the expected words differ
+// only by case (labels "a" and "A" of two polygons).
+std::vector<std::string> folded(const std::vector<std::string>& words,
+                                const std::vector<std::string>& expected) {
+  std::set<std::string> exact(expected.begin(), expected.end()), lowered;
+  for (const std::string& w : exact) lowered.insert(lower(w));
+  if (lowered.size() < exact.size()) return words;
+  std::vector<std::string> out;
+  for (const std::string& w : words) out.push_back(lower(w));
+  return out;
+}
+
 // Word maps (faces, edges): credit per entry, corrected for the best constant answer ("every
 // face front"), which shows no work.
 Comparison compare_word_map(const Value& expected, const Value& got) {
@@ -286,6 +305,10 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
     return got.shape == Value::Shape::Null ? correct("there is no such value")
                                            : incorrect("there is no such value here");
   }
+  // "none" for an empty list (no hidden edges) says the same thing.
+  if (got.shape == Value::Shape::Null && expected.shape == Value::Shape::WordList &&
+      expected.words.empty())
+    return correct("there are none");
   if (got.shape == Value::Shape::Null) return incorrect("there is a value here");
   switch (r.spec->kind) {
     case AnswerKind::Scalar: {
@@ -303,6 +326,30 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
     case AnswerKind::Segment:
     case AnswerKind::UnitVector:
       return compare_components(expected, got, r);
+    case AnswerKind::PointSet: {
+      // The same rows in any order: each expected row matched by a distinct given row.
+      const auto e = rows_of(expected), g = rows_of(got);
+      if (e.size() != g.size() || (!e.empty() && expected.cols != got.cols))
+        return incorrect(fmt::format("expected {} items, got {}", e.size(), g.size()));
+      // Sorted, the rows usually pair off at once (pixels are integers); otherwise each expected
+      // row takes the first unused row within tolerance.
+      auto se = e, sg = g;
+      std::sort(se.begin(), se.end());
+      std::sort(sg.begin(), sg.end());
+      bool paired = true;
+      for (std::size_t i = 0; i < se.size() && paired; ++i)
+        paired = judge_of(numeric_value(expected, se[i]), r).all(se[i], sg[i]);
+      if (paired) return correct("the same items (order does not matter)");
+      std::vector<bool> used(g.size(), false);
+      for (const auto& row : e) {
+        const ComponentJudge judge = judge_of(numeric_value(expected, row), r);
+        std::size_t j = 0;
+        while (j < g.size() && (used[j] || !judge.all(row, g[j]))) ++j;
+        if (j == g.size()) return incorrect("");
+        used[j] = true;
+      }
+      return correct("the same items (order does not matter)");
+    }
     case AnswerKind::Direction: {
       if (got.numbers.size() != expected.numbers.size())
         return incorrect(fmt::format("expected {} components, got {}", expected.numbers.size(),
@@ -332,7 +379,8 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
     case AnswerKind::BitString:
       return got.word == expected.word ? correct("") : incorrect("");
     case AnswerKind::WordList: {
-      std::vector<std::string> a = expected.words, b = got.words;
+      std::vector<std::string> a = folded(expected.words, expected.words),
+                               b = folded(got.words, expected.words);
       std::sort(a.begin(), a.end());
       std::sort(b.begin(), b.end());
       if (a == b) return correct("the same set (order does not matter)");
@@ -346,8 +394,15 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
                 {}};
       return incorrect("");
     }
-    case AnswerKind::Sequence:
-      return got.words == expected.words ? correct("") : incorrect("the order differs");
+    case AnswerKind::Sequence: {
+      const std::vector<std::string> a = folded(expected.words, expected.words),
+                                     b = folded(got.words, expected.words);
+      if (a == b) return correct("");
+      std::vector<std::string> sa = a, sb = b;
+      std::sort(sa.begin(), sa.end());
+      std::sort(sb.begin(), sb.end());
+      return incorrect(sa == sb ? "the right items in the wrong order" : "");
+    }
     case AnswerKind::WordMap:
       return compare_word_map(expected, got);
     case AnswerKind::Polygon: {

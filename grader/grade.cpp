@@ -74,8 +74,9 @@ bool all_zero_vector(const Value& v) {
 // dependencies, the nearest ones the student gave (a given plane supersedes the normal behind
 // it for z). Carrying only these spares the kind recomputing what the answer does not need
 // (a unit normal from a typed decimal normal is a square root of a large rational).
-Answers carry_inputs(const KindInfo& kind, const std::string& name, const Answers& given) {
-  Answers out;
+template <typename Present>
+std::vector<std::string> carry_inputs(const KindInfo& kind, const std::string& name, Present present) {
+  std::vector<std::string> out;
   std::vector<std::string> todo = kind.answer(name)->depends_on;
   std::vector<std::string> seen;
   while (!todo.empty()) {
@@ -83,8 +84,8 @@ Answers carry_inputs(const KindInfo& kind, const std::string& name, const Answer
     todo.pop_back();
     if (std::find(seen.begin(), seen.end(), d) != seen.end()) continue;
     seen.push_back(d);
-    if (const Value* v = given.find(d)) {
-      out.set(d, *v);
+    if (present(d)) {
+      out.push_back(d);
     } else if (const AnswerSpec* spec = kind.answer(d)) {
       todo.insert(todo.end(), spec->depends_on.begin(), spec->depends_on.end());
     }
@@ -109,6 +110,7 @@ class ProblemGrader {
 
   void parse(const YAML::Node& student) {
     parsed_.resize(spec_.ask.size());
+    verdicts_.reserve(spec_.ask.size());
     for (std::size_t i = 0; i < spec_.ask.size(); ++i) {
       const YAML::Node given = student.IsMap() ? student[spec_.ask[i]] : YAML::Node();
       if (!given.IsDefined() || given.IsNull()) continue;
@@ -142,8 +144,8 @@ class ProblemGrader {
     if (ag.got && ag.verdict != Verdict::Correct) {
       // A wrong answer computed from a trivial one is trivial too: it carries nothing forward.
       bool from_trivial = all_zero_vector(*ag.got);
-      const Answers inputs = carry_inputs(*spec_.info, name, answers_);
-      for (const auto& [d, v] : inputs.items()) from_trivial = from_trivial || is_trivial(d);
+      for (const std::string& d : carry_inputs(*spec_.info, name, [&](const std::string& n) { return answers_.find(n); }))
+        from_trivial = from_trivial || is_trivial(d);
       if (from_trivial) trivial_.push_back(name);
     }
     if (ag.verdict != Verdict::Correct) ag.derivation = solved_.derivation.steps_for(name);
@@ -223,10 +225,11 @@ class ProblemGrader {
   void carry_forward(AnswerGrade& ag) {
     const AnswerSpec& aspec = *spec_.info->answer(ag.name);
     if (aspec.depends_on.empty() || !spec_.info->carry_forward || spec_.grading.ecf <= 0) return;
-    Answers usable;
-    for (const auto& [n, v] : answers_.items())
-      if (n != ag.name && !is_trivial(n)) usable.set(n, v);
-    const Answers inputs = carry_inputs(*spec_.info, ag.name, usable);
+    Answers inputs;
+    for (const std::string& n : carry_inputs(*spec_.info, ag.name, [&](const std::string& d) {
+           return d != ag.name && answers_.find(d) && !is_trivial(d);
+         }))
+      inputs.set(n, *answers_.find(n));
     if (inputs.items().empty()) return;
     const Answers carried = spec_.info->carry_forward(spec_.given, inputs);
     const Value* follow = carried.find(ag.name);
@@ -279,6 +282,7 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
   // Parse every answer first: later answers are judged against the student's earlier ones.
   ProblemGrader grader(spec, solved, mistakes, judging);
   grader.parse(student);
+  pg.answers.reserve(spec.ask.size());
   for (std::size_t i = 0; i < spec.ask.size(); ++i) {
     AnswerGrade ag = grader.grade(i, student);
     pg.score += ag.score;

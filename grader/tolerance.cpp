@@ -58,12 +58,7 @@ std::vector<double> default_magnitudes(const Value& e, AnswerKind kind) {
     }
     return m;
   }
-  if (e.shape == Value::Shape::Scalar) {
-    for (std::size_t i = 0; i < x.size(); ++i) m[i] = std::abs(x[i]);
-    return m;
-  }
-  std::fill(m.begin(), m.end(), max_abs(x));
-  return m;
+  return {};  // vectors and scalars: see the constructor (no allocation)
 }
 
 }  // namespace
@@ -73,22 +68,28 @@ ComponentJudge::ComponentJudge(const Value& expected, AnswerKind kind, const Tol
     : tol_(tol) {
   const std::size_t n = expected.numbers.size();
   if (declared && declared->magnitude.size() == n)
-    magnitude_ = declared->magnitude;
-  else
-    magnitude_ = default_magnitudes(expected, kind);
+    declared_ = &declared->magnitude;
+  else if (expected.shape == Value::Shape::Matrix && expected.cols > 0)
+    computed_ = default_magnitudes(expected, kind);  // rows or blocks
+  if (!declared_ && computed_.empty()) {
+    own_ = expected.shape == Value::Shape::Scalar;  // a scalar: its own size
+    uniform_ = max_abs(expected.numbers);           // a vector's components share one scale
+  }
   if (declared && declared->thresholds.size() == n) thresholds_ = &declared->thresholds;
 }
 
-double ComponentJudge::noise(std::size_t i) const {
-  return i < magnitude_.size() ? tol_.rel * magnitude_[i] : 0.0;
+double ComponentJudge::magnitude(std::size_t i, double e) const {
+  if (declared_) return (*declared_)[i];
+  if (i < computed_.size()) return computed_[i];
+  return own_ ? std::abs(e) : uniform_;
 }
 
 double ComponentJudge::window(std::size_t i, double e) const {
-  return frustum::window(e, tol_, i < magnitude_.size() ? magnitude_[i] : std::abs(e));
+  return frustum::window(e, tol_, magnitude(i, e));
 }
 
 bool ComponentJudge::ok(std::size_t i, double e, double g) const {
-  const double m = i < magnitude_.size() ? magnitude_[i] : std::abs(e);
+  const double m = magnitude(i, e);
   if (!close(e, g, tol_, m)) return false;
   if (!thresholds_) return true;
   // The side of each threshold: a student's number strictly on the other side is wrong unless

@@ -32,13 +32,17 @@ class ComponentJudge {
   bool ok(std::size_t i, double e, double g) const;
   // Every component (sizes must agree).
   bool all(const std::vector<double>& e, const std::vector<double>& g) const;
-  // The noise floor of component i (rel·magnitude), and its whole window around e.
-  double noise(std::size_t i) const;
+  // The whole window of component i around e.
   double window(std::size_t i, double e) const;
 
  private:
+  double magnitude(std::size_t i, double e) const;
+
   const Tolerance& tol_;
-  std::vector<double> magnitude_;
+  const std::vector<double>* declared_ = nullptr;  // the kind's
+  std::vector<double> computed_;                   // a matrix's rows or blocks
+  double uniform_ = 0;                             // a vector's largest component
+  bool own_ = false;                               // a scalar: its own size
   const std::vector<std::vector<double>>* thresholds_ = nullptr;
 };
 

@@ -1,4 +1,5 @@
 // Grading: verdicts, equivalences, unparseable and missing answers, and the JSON report.
+#include "grader/feedback.hpp"
 #include "grader/report.hpp"
 #include "test_util.hpp"
 
@@ -122,6 +123,18 @@ TEST(Grader, JsonFollowsTheFormat) {
   EXPECT_FALSE(j["problems"][1].contains("error")) << j["problems"][1].dump();
   for (const auto& [name, a] : j["problems"][1]["answers"].items()) EXPECT_EQ(a["verdict"], "missing") << name;
   EXPECT_FALSE(j["problems"][1]["answers"].empty());
+}
+
+TEST(Grader, FeedbackEchoesWhatTheStudentWrote) {
+  // issue 13: 0.948683 stays 0.948683 beside the key, not our exact reading 948683/1000000.
+  const GradeReport r = grade(load_problem_set_from_string("problems:\n  - {id: v, kind: vectors, given: {a: [1, 0, 0], b: [3, 1, 0]}, ask: [cos, cross]}\n", "set.yaml"),
+                              load_submission_from_string("answers:\n  v: {cos: 0.948683, cross: \"(0, 0, 1.0)\"}\n", "a.yaml"));
+  for (const std::string& page : {render_feedback_markdown(r), render_feedback_html(r)}) {
+    EXPECT_NE(page.find("0.948683"), std::string::npos);
+    EXPECT_EQ(page.find("948683/1000000"), std::string::npos);
+    EXPECT_NE(page.find("(0, 0, 1.0)"), std::string::npos);
+    EXPECT_NE(page.find("3√10/10"), std::string::npos) << "the key beside it, exact";
+  }
 }
 
 TEST(Grader, BrokenAnswerFileIsReportedNotFatal) {

@@ -22,6 +22,19 @@ struct DepthSort {
     DepthViewer viewer;
   };
   static std::vector<std::string> given_fields() { return {"polygons", "eye", "view_direction"}; }
+  // Grading scales (docs/grading.md §2): a centroid's coordinate is the mean of the polygon's
+  // same coordinates, so it is judged at their size (not at the size of the other coordinates).
+  static AnswerScales scales(const Given& g, const Answers&) {
+    AnswerScale s;
+    for (const Polygon3<Exact>& poly : g.polygons)
+      for (int k = 0; k < 3; ++k) {
+        double m = 0;
+        for (const Vec3<Exact>& v : poly) m = std::max(m, std::abs(to_double(v(k))));
+        s.magnitude.push_back(m);
+      }
+    return {{"centroids", s}};
+  }
+
   static std::vector<AnswerSpec> answers() {
     return {{"centroids", AnswerKind::Matrix, {}, {}},
             {"depths", AnswerKind::Vector, {"centroids"}, {}},

@@ -35,6 +35,7 @@ enum class AnswerKind {
                // part, translation column, bottom row); a purely linear one may be given as its
                // linear part (3×3 in 3D) unless the set says grading: {linear_matrix: false}
   Segment,     // two endpoints (rows), in either order
+  PointSet,    // rows in any order (the pixels a triangle covers)
   Point,       // a point; homogeneous points up to w
   Bool,
   Category,    // one word of a fixed list (front/back/edge_on; 表/裏)

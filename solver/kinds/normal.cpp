@@ -18,6 +18,13 @@ struct Normal {
     Polygon3<Exact> points;              // when given as a polygon
     std::optional<CrossOrder> order;     // when given as A, B, C
   };
+  // Error carried forward: the unit normal of the student's own normal.
+  static Answers carry_forward(const Given&, const Answers& student) {
+    Answers out;
+    if (const auto n = carried(student, "normal", 3)) out.set("unit_normal", Value::vector(unit(Vec3<Exact>((*n)[0], (*n)[1], (*n)[2]))));
+    return out;
+  }
+
   static std::vector<std::string> given_fields() { return {"points", "A", "B", "C", "cross"}; }
   static std::vector<AnswerSpec> answers() {
     return {{"normal", AnswerKind::Direction, {}, {}},

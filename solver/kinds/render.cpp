@@ -59,6 +59,19 @@ struct Render {
   static std::string depth_text(float z) { return fmt::format("{:.7g}", z); }
   static std::string color_text(Rgb c) { return fmt::format("({}, {}, {})", c.r, c.g, c.b); }
 
+  // Grading scales (docs/grading.md §2): colour channels of size 255, depths in [0, 1] of size 1
+  // (a pixel's row [r, g, b, depth] must not lend the depth the colour's tolerance).
+  static AnswerScales scales(const Given&, const Answers& key) {
+    AnswerScales out;
+    if (const Value* p = key.find("pixels"); p && p->cols == 4) {
+      AnswerScale s;
+      for (int r = 0; r < p->rows; ++r) s.magnitude.insert(s.magnitude.end(), {255, 255, 255, 1});
+      out.emplace_back("pixels", s);
+    }
+    if (const Value* d = key.find("depth")) out.emplace_back("depth", uniform_scale(d->numbers.size(), 1));
+    return out;
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     const Scene& scene = g.spec.scene;
     const Api api = scene.api;

@@ -27,7 +27,7 @@ struct ScanConvert {
     std::array<Vec2<Exact>, 3> triangle;
   };
   static std::vector<std::string> given_fields() { return {"triangle"}; }
-  static std::vector<AnswerSpec> answers() { return {{"pixels", AnswerKind::Matrix, {}, {}}}; }
+  static std::vector<AnswerSpec> answers() { return {{"pixels", AnswerKind::PointSet, {}, {}}}; }
 
   static Given parse(GivenReader& r, const Conventions&) {
     Given g;

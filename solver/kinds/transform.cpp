@@ -56,17 +56,34 @@ struct Transform {
   }
 
   static std::vector<Misconception> misconceptions(const Given& g) {
-    if (g.steps.size() < 2) return {};
-    const int size = g.dim + 1;
-    MatX<Exact> m = MatX<Exact>::Identity(size, size);
-    for (const TransformStep& s : g.steps) m = canonical(MatX<Exact>(m * s.matrix));
-    Answers reversed;
-    reversed.set("matrix", matrix_value(m));
-    if (!g.points.empty()) reversed.set("points", transform_points_with_steps(m, g.points, "", "P", nullptr));
-    return {{"composition in the wrong order",
-             "You multiplied the steps in the order they are applied (A₁·A₂·…): with column vectors the "
-             "step applied first stands rightmost, M = …·A₂·A₁ (seed 002: P′ = A₃A₂A₁P).",
-             "Composite (first step applied first)", reversed}};
+    std::vector<Misconception> out;
+    const auto composite = [&](const std::vector<MatX<Exact>>& steps, bool reversed) {
+      MatX<Exact> m = MatX<Exact>::Identity(g.dim + 1, g.dim + 1);
+      for (const MatX<Exact>& s : steps) m = canonical(MatX<Exact>(reversed ? MatX<Exact>(m * s) : MatX<Exact>(s * m)));
+      Answers a;
+      a.set("matrix", matrix_value(m));
+      if (!g.points.empty()) a.set("points", transform_points_with_steps(m, g.points, "", "P", nullptr));
+      return a;
+    };
+    std::vector<MatX<Exact>> matrices;
+    for (const TransformStep& s : g.steps) matrices.push_back(s.matrix);
+    if (g.steps.size() >= 2)
+      out.push_back({"composition in the wrong order",
+                     "You multiplied the steps in the order they are applied (A₁·A₂·…): with column vectors the "
+                     "step applied first stands rightmost, M = …·A₂·A₁ (seed 002: P′ = A₃A₂A₁P).",
+                     "Composite (first step applied first)", composite(matrices, true)});
+    // Degrees taken as radians: every rotation by the angle's number of degrees, in radians.
+    bool rotates = false;
+    std::vector<MatX<Exact>> as_radians;
+    for (const TransformStep& s : g.steps) {
+      rotates = rotates || s.angle.has_value();
+      as_radians.push_back(s.angle && s.rotation ? s.rotation(canonical(*s.angle * 180 / GiNaC::Pi)) : s.matrix);
+    }
+    if (rotates)
+      out.push_back({"degrees taken as radians",
+                     "Your rotation uses the angle's number of degrees as radians (cos 90 instead of cos 90°).",
+                     "Composite (first step applied first)", composite(as_radians, false)});
+    return out;
   }
 
   // The numeric path: the steps' matrices rounded to the backend, composed and inverted there.

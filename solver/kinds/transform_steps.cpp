@@ -95,6 +95,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
       t.formula = axis_rotation_formula(k[7] - 'x');
       t.substitution = cos_sin(a, c.angles);
     }
+    t.angle = a;
+    t.rotation = [axis = k[7] - 'x'](const Exact& b) { return rotate_axis_index(axis, b); };
   } else if (k == "rotate") {
     if (dim == 2) {
       const Exact a = read_angle(s, k, c.angles);
@@ -102,6 +104,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
       t.formula = math("R = [c −s 0; s c 0; 0 0 1]",
                        "R(\\theta) = \\begin{bmatrix} c & -s & 0 \\\\ s & c & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}");
       t.substitution = cos_sin(a, c.angles);
+      t.angle = a;
+      t.rotation = [](const Exact& b) { return rotate_2d(b); };
     } else {
       GivenReader r = s.child(k, {"axis", "angle"});
       const Vec3<Exact> axis = r.vector<3>("axis");
@@ -116,6 +120,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
                        math(",  1 − c = ", ",\\; 1 - c = ") + exact(canonical(1 - GiNaC::cos(a)));
       t.note = "Rodrigues' formula R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, written entry by entry, for the unit axis "
                "u = (x, y, z).";
+      t.angle = a;
+      t.rotation = [u](const Exact& b) { return rotate_about(u, b); };
       if (!canonical(axis.dot(axis) - 1).is_zero())
         t.note += " The axis is normalised first: (x, y, z) = " + vec(axis).unicode + " / " + exact(norm(axis)).unicode + ".";
     }

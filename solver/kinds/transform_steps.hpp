@@ -7,6 +7,8 @@
 #include "solver/viewing/conventions.hpp"
 #include "solver/viewing/transforms.hpp"
 
+#include <functional>
+#include <optional>
 #include <string>
 
 namespace frustum {
@@ -21,6 +23,10 @@ struct TransformStep {
   Exact det = 1;
   MathText formula = {};       // the step's matrix in symbols (rotations: cos θ, sin θ; Rodrigues)
   MathText substitution = {};  // the values put into it (c = cos θ, s = sin θ, the unit axis)
+  // Rotations only: the angle (radians) and the step's matrix for another angle (the grader's
+  // "degrees taken as radians").
+  std::optional<Exact> angle = std::nullopt;
+  std::function<MatX<Exact>(const Exact&)> rotation = nullptr;
 };
 
 // Reads the one-key mapping `s` ({translate: [2, 3]}) of dimension dim (2 or 3); angles in

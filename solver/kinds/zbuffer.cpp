@@ -39,6 +39,19 @@ struct ZBuffer {
     std::vector<Polygon> polygons;
   };
   static std::vector<std::string> given_fields() { return {"size", "polygons"}; }
+  // Grading scales (docs/grading.md §2): every depth is judged at the size of the polygons'
+  // depths, so an empty pixel's far value (10³⁰) in the same row lends nothing to the others.
+  static AnswerScales scales(const Given& g, const Answers& key) {
+    double z = 0;
+    for (const auto& poly : g.polygons)
+      for (const auto& v : poly.points) z = std::max(z, std::abs(to_double(v(2))));
+    const Value* depth = key.find("depth");
+    if (!depth) return {};
+    AnswerScale s;
+    for (const double d : depth->numbers) s.magnitude.push_back(std::abs(d) > z ? std::abs(d) : z);
+    return {{"depth", s}};
+  }
+
   static std::vector<AnswerSpec> answers() {
     return {{"frame", AnswerKind::Sequence, {}, {}},
             {"depth", AnswerKind::Matrix, {}, {}},
