@@ -86,6 +86,8 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
       return "a polygon is right from any starting vertex";
     case AnswerKind::Segment:
       return "a segment is right in either direction";
+    case AnswerKind::PointSet:
+      return "a set of points is right in any order";
     case AnswerKind::WordMap:
     case AnswerKind::WordList:
       return "a set of labels is right in any order";
