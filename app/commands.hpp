@@ -38,6 +38,7 @@ struct GradeOptions {
   std::optional<std::string> html;        // single: feedback page
   std::optional<std::string> markdown;    // single: feedback Markdown
   std::optional<std::string> variants;    // --variants DIR: the sets `frustum generate` wrote
+  std::optional<std::string> roster;      // --roster FILE: who each file of a class belongs to
 };
 int run_grade(const GradeOptions& options, const Output& o);
 int run_kinds(const Output& o);

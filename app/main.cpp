@@ -60,6 +60,8 @@ int main(int argc, char** argv) {
   grade->add_option("--gradescope", grade_opt.gradescope, "One student: write Gradescope's results.json here");
   grade->add_option("--html", grade_opt.html, "One student: write the feedback page (self-contained HTML) here");
   grade->add_option("--markdown", grade_opt.markdown, "One student: write the feedback as Markdown here");
+  grade->add_option("--roster", grade_opt.roster,
+                    "A class directory: the roster (CSV with a student column, or one id a line) that says whose each file is");
   grade->add_option("--variants", grade_opt.variants,
                     "Grade each student against their set written by `frustum generate -o DIR` (DIR/SET-STUDENT.yaml)")
       ->check(CLI::ExistingDirectory);
