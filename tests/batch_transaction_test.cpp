@@ -272,6 +272,9 @@ TEST(OutputHygiene, CsvCellsCannotBeFormulas) {
     EXPECT_EQ(csv_neutralise(plain), plain);
   const CsvTable t = parse_csv(csv_row({"=1+1", "-6"}));
   EXPECT_EQ(t.rows[0].fields, (std::vector<std::string>{"'=1+1", "-6"}));
+  // A first cell starting with U+FEFF survives (it was taken for a byte-order mark).
+  const CsvTable bom = parse_csv(csv_row({"\xEF\xBB\xBFid", "1"}));
+  EXPECT_EQ(bom.rows[0].fields, (std::vector<std::string>{"\xEF\xBB\xBFid", "1"}));
 }
 
 TEST(OutputHygiene, MarkdownAndGradescopeShowHostileTextLiterally) {
