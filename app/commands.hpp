@@ -39,7 +39,7 @@ struct GradeOptions {
   std::optional<std::string> html;        // single: feedback page
   std::optional<std::string> markdown;    // single: feedback Markdown
   std::optional<std::string> variants;    // --variants DIR: the sets `frustum generate` wrote
-  std::optional<std::string> roster;      // --roster FILE: the class `generate --roster` drew, redrawn alike
+  std::optional<std::string> roster;      // --roster FILE: whose each file is; the class `generate --roster` drew
 };
 int run_grade(const GradeOptions& options, const Output& o);
 int run_kinds(const Output& o);

@@ -153,6 +153,7 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   std::vector<BatchEntry> entries;
   try {
     entries = collect_submissions(g.answers);
+    if (g.roster) entries = apply_roster(std::move(entries), read_roster(*g.roster), *g.roster);
   } catch (const InputError& e) {
     o.err << "error: " << terminal_text(e.diagnostic().format()) << "\n";
     return 1;
@@ -193,6 +194,8 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
     if (row.status == "graded") {
       ++graded;
       sum += row.max_score > 0 ? row.score / row.max_score : 0;
+      if (!row.message.empty() && g.roster)  // the file and the roster disagree
+        o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message)) << "\n";
     } else {
       o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message)) << "\n";
     }

@@ -126,7 +126,9 @@ int main(int argc, char** argv) {
                    "(DIR/SET-STUDENT.yaml)")
       ->check(CLI::ExistingDirectory);
   grade->add_option("--roster", grade_opt.roster,
-                    "Grade against the variants `frustum generate --roster` drew from this roster (redraws included)")
+                    "The class roster (CSV with a student column, or one id a line): says whose each file is, "
+                    "and grades each student against the variant `frustum generate --roster` drew (redraws "
+                    "included)")
       ->check(CLI::ExistingFile)
       ->excludes("--variants");
   grade->footer(examples(

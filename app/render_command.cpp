@@ -3,6 +3,7 @@
 // FILE is a scene file (top-level `scene:` and optional `conventions:`) or a problem set, whose
 // render problem is the one named by --id (default: the first of kind render).
 #include "app/commands.hpp"
+#include "solver/kinds/scene_reader.hpp"
 
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/problem_set.hpp"
@@ -97,6 +98,10 @@ int run_render(const RenderOptions& opt, const Output& o) {
   if (opt.method) scene.scanline = *opt.method == "scanline";
   if (opt.size) {
     const auto [w, h] = *opt.size;
+    if (static_cast<long>(w) * h > kMaxScenePixels) {
+      o.err << fmt::format("--size: {} × {} pixels; at most {} in all\n", w, h, kMaxScenePixels);
+      return 2;
+    }
     // A perspective whose aspect was width/height follows the new size (x scale ∝ 1/aspect).
     const bool perspective = scene.clip_from_eye(3, 2) != 0 && scene.clip_from_eye(0, 2) == 0;
     if (perspective) scene.clip_from_eye(0, 0) *= static_cast<double>(scene.width) * h / (static_cast<double>(scene.height) * w);

@@ -37,7 +37,8 @@ std::vector<std::string> read_roster(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == ".csv") {
     const CsvTable table = parse_csv(text.str());
-    if (table.error) throw InputError(Diagnostic{SourceLocation{path, 0, 0}, "", *table.error});
+    if (table.error)
+      throw InputError(Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
     if (table.rows.empty()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
     const std::vector<std::string>& header = table.rows[0].fields;
     std::size_t col = header.size();

@@ -176,6 +176,43 @@ std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t
                               "expected an answers file (.yaml), a directory of them, or a CSV roster"});
 }
 
+std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries, const std::vector<std::string>& roster,
+                                     const std::string& roster_file) {
+  std::map<std::string, std::size_t> by_stem;  // file stem → entry
+  for (std::size_t i = 0; i < entries.size(); ++i) by_stem.emplace(fs::path(entries[i].source).stem().string(), i);
+  std::vector<bool> used(entries.size(), false);
+  std::vector<BatchEntry> out;
+  for (const std::string& id : roster) {
+    const std::string stem = file_name_for(id);
+    const auto it = by_stem.find(stem);
+    if (it == by_stem.end()) {
+      BatchEntry missing;
+      missing.student = id;
+      missing.source = roster_file;
+      missing.from_roster = true;
+      missing.error = "no answers file " + stem + ".yaml for this student of the roster";
+      out.push_back(std::move(missing));
+      continue;
+    }
+    BatchEntry e = entries[it->second];
+    used[it->second] = true;
+    const std::string claimed = e.error ? std::string() : student_in(e.yaml, e.source);
+    if (!claimed.empty() && claimed != id)
+      e.note = fmt::format("the file says student {}, but the roster gives this file to {}: graded as {}",
+                           quote_excerpt(claimed), quote_excerpt(id), quote_excerpt(id));
+    e.student = id;
+    e.from_roster = true;
+    out.push_back(std::move(e));
+  }
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    if (!used[i]) {
+      BatchEntry e = std::move(entries[i]);
+      e.error = "not on the roster " + roster_file + " (its answers are not graded)";
+      out.push_back(std::move(e));
+    }
+  return out;
+}
+
 std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& rows) {
   std::vector<std::string> header = {"student", "score", "max_score", "percent", "status"};
   for (const ProblemSpec& p : set.problems) header.push_back(p.id);
@@ -215,6 +252,8 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     // A file that could not be read is reported as such, not as a file without `student:`.
     if (options.set_for && !sub.answers.IsDefined() && !sub.errors.empty())
       throw std::runtime_error(sub.errors[0].format());
+    // With a roster, the roster says whose answers these are (and so whose variant applies).
+    if (e.from_roster) sub.student = e.student;
     std::string variant;
     const ProblemSet graded_set = options.set_for ? options.set_for(set, sub.student, variant) : set;
     // The student's own set could not be made (no `student:`, no generated file): an error row
@@ -283,6 +322,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
                                                                : "error",
                  r.error);
     }
+    if (!e.note.empty()) row.message = e.note + (row.message.empty() ? "" : "; " + row.message);
     result.rows.push_back(std::move(row));
     if (options.on_progress) options.on_progress(i + 1, entries.size(), e.student);
   };

@@ -32,6 +32,10 @@ struct BatchEntry {
   // messages point at the cell, not at the YAML the row was converted to.
   std::string csv_file;
   std::map<std::string, std::pair<int, int>> cells;
+  // Set by apply_roster: `student` is the roster's id, not the file's claim, and `note` says
+  // where they disagree.
+  bool from_roster = false;
+  std::string note;
 };
 
 // Answer files (*.yaml, *.yml) directly in a directory, in name order; or the rows of a CSV
@@ -41,6 +45,14 @@ struct BatchEntry {
 // `student` column (located in the CSV: line and column).
 std::vector<BatchEntry> collect_submissions(const std::string& path,
                                             std::size_t max_bytes = kMaxSubmissionBytes);
+
+// The roster is the authority for who a file belongs to: the answers of roster id R are the
+// file file_name_for(R).yaml (or .yml) in the directory, whatever its `student:` says (a file
+// that claims another id is graded as R and the row says so). A roster id without a file is an
+// error row; a file that no roster id names is an error row "not on the roster". Rows follow
+// the roster's order, then the files not on it.
+std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries, const std::vector<std::string>& roster,
+                                     const std::string& roster_file);
 
 struct BatchOptions {
   std::string out_dir = "grades";

@@ -235,6 +235,35 @@ TEST(BatchTransaction, ASymlinkLoopIsARowNotAnAbort) {
   fs::remove_all(dir);
 }
 
+TEST(BatchTransaction, TheRosterSaysWhoseFileItIs) {
+  // Ids came from the files themselves, so any file could claim any id.
+  const fs::path dir = scratch("roster");
+  fs::create_directories(dir / "in");
+  write(dir / "in" / "s1.yaml", "student: s1\nanswers:\n  zbuf: {z: 8}\n");
+  write(dir / "in" / "s2.yaml", "student: s1\nanswers:\n  zbuf: {z: 9}\n");  // claims s1
+  write(dir / "in" / "x.yaml", "student: x\nanswers:\n  zbuf: {z: 8}\n");
+  const std::vector<BatchEntry> entries =
+      apply_roster(collect_submissions((dir / "in").string()), {"s1", "s2", "s3"}, "roster.csv");
+  BatchOptions o;
+  o.out_dir = (dir / "out").string();
+  const BatchResult r = grade_batch(load_problem_set_from_string(kSet, "set.yaml"), entries, o);
+  ASSERT_EQ(r.rows.size(), 4u);
+  EXPECT_EQ(r.rows[0].student, "s1");
+  EXPECT_EQ(r.rows[0].status, "graded");
+  EXPECT_DOUBLE_EQ(r.rows[0].score, 1);
+  EXPECT_EQ(r.rows[1].student, "s2");
+  EXPECT_EQ(r.rows[1].status, "graded");
+  EXPECT_DOUBLE_EQ(r.rows[1].score, 0);
+  EXPECT_NE(r.rows[1].message.find("the file says student 's1'"), std::string::npos) << r.rows[1].message;
+  EXPECT_EQ(r.rows[2].student, "s3");
+  EXPECT_EQ(r.rows[2].status, "error");
+  EXPECT_NE(r.rows[2].message.find("no answers file s3.yaml"), std::string::npos) << r.rows[2].message;
+  EXPECT_EQ(r.rows[3].status, "error");
+  EXPECT_NE(r.rows[3].message.find("not on the roster"), std::string::npos) << r.rows[3].message;
+  EXPECT_NE(read(dir / "out" / "feedback" / "s2.md").find("s2"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(OutputHygiene, CsvCellsCannotBeFormulas) {
   for (const char* hostile : {"=HYPERLINK(\"http://x\",\"y\")", "+cmd|' /C calc'!A0",
                               "@SUM(1+1)*cmd", "-2+3", "\t=1", "\r=1"})
@@ -243,6 +272,9 @@ TEST(OutputHygiene, CsvCellsCannotBeFormulas) {
     EXPECT_EQ(csv_neutralise(plain), plain);
   const CsvTable t = parse_csv(csv_row({"=1+1", "-6"}));
   EXPECT_EQ(t.rows[0].fields, (std::vector<std::string>{"'=1+1", "-6"}));
+  // A first cell starting with U+FEFF survives (it was taken for a byte-order mark).
+  const CsvTable bom = parse_csv(csv_row({"\xEF\xBB\xBFid", "1"}));
+  EXPECT_EQ(bom.rows[0].fields, (std::vector<std::string>{"\xEF\xBB\xBFid", "1"}));
 }
 
 TEST(OutputHygiene, MarkdownAndGradescopeShowHostileTextLiterally) {

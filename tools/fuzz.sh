@@ -7,6 +7,9 @@
 # FUZZ_SEED=N fixes libFuzzer's random seed: CI uses one, so a CI run replays (a prefix of) the
 # same inputs as a local run with that seed, and a red CI is a regression, not a lucky draw.
 # Without it every run explores afresh (what longer local runs are for).
+# Every run appends one row per target to build-fuzz/figures.md (date, machine, seconds,
+# executions, exec/s, corpus size, peak memory, findings): the figures docs/reliability.md
+# quotes. `nice -n 10 tools/fuzz.sh 3600` is the hour-per-target run.
 # Usage: [FUZZ_SEED=N] tools/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,7 +17,8 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_loader fuzz_expression fuzz_grade)
+all_targets=(fuzz_loader fuzz_expression fuzz_grade fuzz_batch fuzz_csv_roster fuzz_scene)
+[ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
@@ -29,7 +33,15 @@ for f in problems/seeds/answers/00[0-4]_*.yaml; do
   n=$(basename "$f"); { printf '%s' "${n:2:1}"; cat "$f"; } > "$seeds/fuzz_grade/$n"
 done
 
+# fuzz_scene starts from the bundled scenes too (the `scene:` of every render problem is
+# also a valid scene file when written under `scene:` at the top).
+mkdir -p "$seeds/fuzz_scene"
+for f in problems/*/*.yaml; do grep -q "^ *scene:" "$f" && cp "$f" "$seeds/fuzz_scene/$(basename "$f")"; done
+
 mkdir -p build-fuzz/artifacts
+figures=build-fuzz/figures.md
+[ -f "$figures" ] || printf '| date | machine | target | seconds | executions | exec/s | corpus | peak RSS MB | findings |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n' > "$figures"
+machine="$(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)"
 seed_arg=()
 [ -n "${FUZZ_SEED:-}" ] && seed_arg=(-seed="$FUZZ_SEED")
 status=0
@@ -38,10 +50,12 @@ for t in "${targets[@]}"; do
   case "$t" in
     fuzz_loader) extra=(problems/seeds problems/examples) ;;
     fuzz_grade) extra=("$seeds/fuzz_grade") ;;
+    fuzz_scene) extra=("$seeds/fuzz_scene") ;;
   esac
   mkdir -p "build-fuzz/corpus/$t"
   echo "fuzz: $t for ${seconds}s"
   log="build-fuzz/$t.log"
+  touch "$log.start"
   if ! "build-fuzz/fuzz/$t" "build-fuzz/corpus/$t" "fuzz/corpus/$t" "${extra[@]}" \
         -max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-5}" -rss_limit_mb=2048 -max_len=262144 \
         -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$t-" "${seed_arg[@]}" >"$log" 2>&1; then
@@ -50,5 +64,11 @@ for t in "${targets[@]}"; do
     status=1
   fi
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$log" | sed "s/^/fuzz: $t /" || true
+  figure() { grep -E "stat::$1:" "$log" | tail -1 | awk '{print $2}'; }
+  findings=$(find build-fuzz/artifacts -name "$t-*" -newer "$log.start" 2>/dev/null | wc -l)
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$(date -u +%F)" "$machine" "$t" "$seconds" \
+    "$(figure number_of_executed_units)" "$(figure average_exec_per_sec)" "$(find "build-fuzz/corpus/$t" -type f | wc -l)" \
+    "$(figure peak_rss_mb)" "$findings" >> "$figures"
 done
+echo "fuzz: figures appended to $figures"
 exit $status

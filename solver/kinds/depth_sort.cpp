@@ -46,7 +46,7 @@ struct DepthSort {
     Given g;
     if (r.has("eye") == r.has("view_direction"))
       r.fail(r.has("eye") ? "view_direction" : "eye", "give exactly one of eye and view_direction");
-    const std::size_t n = r.list_size("polygons");
+    const std::size_t n = r.list_size("polygons", 1, kMaxDepthSortPolygons);
     for (std::size_t k = 0; k < n; ++k) {
       // Each polygon is a list of points; read it through a one-field view of the item.
       const YAML::Node item = r.node()["polygons"][k];

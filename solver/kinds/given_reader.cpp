@@ -253,12 +253,14 @@ GivenReader GivenReader::child(std::string_view key, std::vector<std::string> kn
   return GivenReader(require(key), file_, path(key), std::move(known_fields), exact_);
 }
 
-std::size_t GivenReader::list_size(std::string_view key, std::size_t min_count) {
+std::size_t GivenReader::list_size(std::string_view key, std::size_t min_count, std::size_t max_count) {
   const YAML::Node n = require(key);
   if (!n.IsSequence()) fail_at(n, path(key), "expected a list, got " + describe_node(n));
   if (n.size() < min_count)
     fail_at(n, path(key), "expected at least " + std::to_string(min_count) + " items, got " +
                               std::to_string(n.size()));
+  if (n.size() > max_count)
+    fail_at(n, path(key), "at most " + std::to_string(max_count) + " items, got " + std::to_string(n.size()));
   return n.size();
 }
 

@@ -22,6 +22,15 @@ namespace frustum {
 // a second; with 5 it took 1.2 s and with 6 roots per number minutes. Exercises use one or two.
 inline constexpr std::size_t kMaxGivenAtoms = 4;
 
+// Lists in a given, checked before their items are read. Any list: far above any exercise.
+inline constexpr std::size_t kMaxGivenListItems = 100'000;
+// Transform steps: each is an exact 4×4 product, and rotations by angles without exact cosines
+// grow with every step (measured: 24 steps of 7° take 0.3 s, 300 steps over a minute).
+inline constexpr std::size_t kMaxTransformSteps = 32;
+// Depth-sort polygons: every pair is compared exactly (measured: 64 take 0.5 s, 128 take 2 s,
+// 2 000 would take minutes).
+inline constexpr std::size_t kMaxDepthSortPolygons = 100;
+
 SourceLocation location_of(const YAML::Node& node, const std::string& file);
 
 class GivenReader {
@@ -48,8 +57,10 @@ class GivenReader {
   std::vector<std::string> words(std::string_view key, std::size_t count);
   // A nested mapping, read with its own known fields.
   GivenReader child(std::string_view key, std::vector<std::string> known_fields);
-  // A list of mappings (transform steps): its length, and a reader for item i.
-  std::size_t list_size(std::string_view key, std::size_t min_count = 1);
+  // A list of mappings (transform steps): its length (refused beyond max_count before any item
+  // is read), and a reader for item i.
+  std::size_t list_size(std::string_view key, std::size_t min_count = 1,
+                        std::size_t max_count = kMaxGivenListItems);
   GivenReader item(std::string_view key, std::size_t i, std::vector<std::string> known_fields);
   // Whether the field is a list (scale: 2 or scale: [2, 3]).
   bool is_list(std::string_view key) const;

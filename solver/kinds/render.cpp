@@ -73,6 +73,15 @@ struct Render {
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
+    // The rasterizer names its own `triangle`; this kind's given has a scene, not a triangle.
+    try {
+      return solve_scene(g, steps);
+    } catch (const DomainError& e) {
+      throw DomainError("scene.objects", std::string("a triangle of the scene: ") + e.what());
+    }
+  }
+
+  static Answers solve_scene(const Given& g, Derivation* steps) {
     const Scene& scene = g.spec.scene;
     const Api api = scene.api;
     if (steps) {

@@ -27,8 +27,7 @@ Vec3d to_vec3d(const Vec3<Exact>& v) { return to_double(v); }
 
 int read_int(GivenReader& r, const std::string& field, const Exact& e, long lo, long hi) {
   if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_integer() ||
-      GiNaC::ex_to<GiNaC::numeric>(e).to_double() < static_cast<double>(lo) ||
-      GiNaC::ex_to<GiNaC::numeric>(e).to_double() > static_cast<double>(hi))
+      GiNaC::ex_to<GiNaC::numeric>(e) < GiNaC::numeric(lo) || GiNaC::ex_to<GiNaC::numeric>(e) > GiNaC::numeric(hi))
     throw InputError(r.locate(field, fmt::format("expected an integer from {} to {}", lo, hi)));
   return static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(e).to_long());
 }
@@ -129,11 +128,15 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
     copies = rep.count();
     obj.repeat = rep;
   }
-  const long factor = multiplier * copies;
-  if (factor > kMaxSceneTriangles) o.fail("repeat", fmt::format("more than {} copies", kMaxSceneTriangles));
-  triangles += factor * static_cast<long>(obj.triangles.size());
-  if (triangles > kMaxSceneTriangles)
+  // Every product checked for overflow before it is used: nested repeats of 100 001³ copies
+  // each once overflowed `long` and the triangle limit let an unbounded scene through.
+  long factor = 0, added = 0, total = 0;
+  if (__builtin_mul_overflow(multiplier, copies, &factor) || factor > kMaxSceneTriangles)
+    o.fail("repeat", fmt::format("more than {} copies (counting the repeats it is nested in)", kMaxSceneTriangles));
+  if (__builtin_mul_overflow(factor, static_cast<long>(obj.triangles.size()), &added) ||
+      __builtin_add_overflow(triangles, added, &total) || total > kMaxSceneTriangles)
     o.fail(o.has("repeat") ? "repeat" : "children", fmt::format("the scene has more than {} triangles", kMaxSceneTriangles));
+  triangles = total;
   if (o.has("children")) {
     if (depth >= kMaxSceneDepth) o.fail("children", fmt::format("objects may nest at most {} levels deep", kMaxSceneDepth));
     const std::size_t n = o.list_size("children");
@@ -167,8 +170,9 @@ Mesh read_mesh(GivenReader& m, std::size_t min_vertices, std::size_t min_faces) 
     for (std::size_t k = 0; k < face.size(); ++k) {
       const std::string field = fmt::format("{}[{}]", at, k);
       const Exact v = read_number(face[k], m.file(), m.locate(field, "").field);
+      // Compared exactly before any conversion: "2^64+1" once wrapped to vertex 1.
       if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_integer() ||
-          GiNaC::ex_to<GiNaC::numeric>(v).to_long() < 0 || GiNaC::ex_to<GiNaC::numeric>(v).to_long() >= n)
+          GiNaC::ex_to<GiNaC::numeric>(v) < 0 || GiNaC::ex_to<GiNaC::numeric>(v) >= GiNaC::numeric(n))
         throw InputError(m.locate(field, fmt::format("expected a vertex index from 0 to {}", n - 1)));
       const int i = static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(v).to_long());
       if (std::find(idx.begin(), idx.end(), i) != idx.end())
@@ -189,6 +193,8 @@ SceneSpec read_scene(GivenReader& r, const Conventions& c) {
     GivenReader v = r.child("viewport", {"width", "height"});
     s.width = read_int(v, "width", v.number("width"), 1, kMaxViewport);
     s.height = read_int(v, "height", v.number("height"), 1, kMaxViewport);
+    if (static_cast<long>(s.width) * s.height > kMaxScenePixels)
+      v.fail("height", fmt::format("{} × {} pixels: at most {} in all", s.width, s.height, kMaxScenePixels));
     v.finish();
   }
   {

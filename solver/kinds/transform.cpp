@@ -40,7 +40,7 @@ struct Transform {
     g.api = c.api;
     g.dim = r.has("dim") ? static_cast<int>(to_double(r.number("dim"))) : 3;
     if (g.dim != 2 && g.dim != 3) r.fail("dim", "must be 2 or 3");
-    const std::size_t n = r.list_size("steps");
+    const std::size_t n = r.list_size("steps", 1, kMaxTransformSteps);
     for (std::size_t i = 0; i < n; ++i) {
       GivenReader s = r.item("steps", i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
       g.steps.push_back(read_step(s, g.dim, c));

@@ -161,8 +161,9 @@ class StrictnessCheck : public YAML::EventHandler {
   void count(const YAML::Mark& mark, std::size_t n) {
     nodes_ += n;
     if (nodes_ > kMaxYamlNodes)
-      throw Refusal{mark, "the document expands to more than " + std::to_string(kMaxYamlNodes) +
-                              " values (through anchors and aliases?)"};
+      throw Refusal{mark, (sizes_.empty() ? "the document has more than " : "the document expands to more than ") +
+                              std::to_string(kMaxYamlNodes) +
+                              (sizes_.empty() ? " values" : " values (through anchors and aliases)")};
   }
   void leaf(const YAML::Mark& mark, YAML::anchor_t anchor, const std::string* scalar) {
     count(mark, 1);
