@@ -142,7 +142,7 @@ PY
 check "Moodle XML validates against the Moodle XML schema" \
   xmllint --noout --schema "$here/schemas/moodle_xml_subset.xsd" "$work"/moodle-*.xml
 # Every numeric field's range is the grader's window: value ± window graded by Frustum.
-check "Moodle Cloze fields are well formed and their tolerances positive" python3 - "$work" <<'PY'
+check "Moodle Cloze fields are well formed; tolerances positive (zero only where the grader wants an exact zero)" python3 - "$work" <<'PY'
 import glob, os, re, sys
 ok, n = True, 0
 for f in glob.glob(os.path.join(sys.argv[1], "moodle-*.xml")):
@@ -151,7 +151,7 @@ for f in glob.glob(os.path.join(sys.argv[1], "moodle-*.xml")):
         n += 1
         if m.group(2) == "NUMERICAL":
             value, tol = m.group(3).lstrip("=").split(":")
-            ok = ok and float(tol) > 0 and float(tol) < abs(float(value)) + 1
+            ok = ok and (float(tol) > 0 or float(value) == 0) and float(tol) < abs(float(value)) + 1
         elif m.group(2) == "MULTICHOICE":
             ok = ok and m.group(3).count("=") == 1
     ok = ok and text.count("{") == text.count("}")
