@@ -218,7 +218,7 @@ int run_grade(const GradeOptions& g, const Output& o) {
 
   const Submission submission = load_submission(g.answers);
   // An answers file that could not be read has no `student:` to find a variant by: say why.
-  if (g.variants && !submission.answers.IsDefined() && !submission.errors.empty()) {
+  if (g.variants && !submission.answers.IsMap() && !submission.errors.empty()) {
     for (const Diagnostic& d : submission.errors) o.err << "error: " << terminal_text(d.format()) << "\n";
     return 1;
   }
@@ -228,8 +228,14 @@ int run_grade(const GradeOptions& g, const Output& o) {
   const ProblemSet graded = set_for_student(set, g, roster ? &*roster : nullptr, submission.student, variant);
   GradeReport report = grade(graded, submission);
   report.variant = variant;
+  // A file that could not be read at all (not a regular file, too large, not YAML) is one
+  // error, said once: not every problem's derivation under "missing".
+  const bool unreadable = !submission.answers.IsMap() && !submission.errors.empty();
   if (g.format == Format::Json)
     o.out << json_text(render_grade_json(report)) << "\n";
+  else if (unreadable)
+    for (const Diagnostic& d : submission.errors)
+      o.err << "error: " << terminal_text(d.format()) << " — nothing was graded\n";
   else
     o.out << render_grade_text(report, TextStyle{o.color, g.lang});
   try {

@@ -27,6 +27,8 @@ CliRun run(const std::string& args, bool with_stderr = true) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
+CliRun stdout_of(const std::string& args) { return run(args, false); }
+
 std::string seed(const std::string& name) { return test::source_path("problems/seeds/" + name); }
 
 TEST(Cli, SolveJsonGivesTheSeedAnswersExactly) {
@@ -81,6 +83,20 @@ TEST(Cli, GradeTextShowsTheDerivationUnderAWrongAnswer) {
   EXPECT_NE(r.out.find("Depth at the pixel"), std::string::npos) << r.out;
 }
 
+TEST(Cli, AnUnreadableAnswersFileIsOneErrorNotEveryProblemMissing) {
+  // A file that is not YAML text (here: invalid YAML; a FIFO or an oversized file alike) once
+  // printed every problem as "missing" with its whole derivation.
+  const std::string path = ::testing::TempDir() + "/broken_answers.yaml";
+  std::ofstream(path) << "student: s1\nanswers: [broken\n";
+  const CliRun r = run("grade " + seed("001_zbuffer_plane_method.yaml") + " " + path);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("error: " + path), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nothing was graded"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("missing"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("How to get it"), std::string::npos) << r.out;
+  EXPECT_TRUE(stdout_of("grade " + seed("001_zbuffer_plane_method.yaml") + " " + path).out.empty());
+}
+
 TEST(Cli, BadUsageIsAnErrorNotACrash) {
   EXPECT_NE(run("solve /nonexistent.yaml").status, 0);
   EXPECT_NE(run("frobnicate").status, 0);
@@ -88,7 +104,6 @@ TEST(Cli, BadUsageIsAnErrorNotACrash) {
 }
 
 // --version, help and `check` print on standard output only.
-CliRun stdout_of(const std::string& args) { return run(args, false); }
 
 TEST(Cli, VersionPrintsTheProjectVersion) {
   const CliRun r = stdout_of("--version");
