@@ -100,6 +100,25 @@ TEST(Loader, DuplicateIdsAndUnknownAsk) {
   EXPECT_NE(set.problems[2].error->message.find("did you mean 'cross'"), std::string::npos);
 }
 
+TEST(Loader, AnAnswerThatNeedsAnUngivenFieldIsNotAsked) {
+  // A transform with no points once asked for "points" with the expected answer "none", so a
+  // student who rightly left it out lost a third of the marks.
+  const ProblemSet set = load_problem_set_from_string(
+      "problems:\n"
+      "  - id: t\n    kind: transform\n    given: {steps: [{translate: [1, 2, 3]}]}\n"
+      "  - id: p\n    kind: transform\n    given: {steps: [{translate: [1, 2, 3]}], points: [[0, 0, 0]]}\n"
+      "  - id: l\n    kind: look_at\n    given: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, 0]}\n"
+      "  - id: x\n    kind: transform\n    ask: [matrix, points]\n    given: {steps: [{translate: [1, 2, 3]}]}\n",
+      "ask.yaml");
+  ASSERT_EQ(set.problems.size(), 4u);
+  EXPECT_EQ(set.problems[0].ask, (std::vector<std::string>{"matrix", "inverse"}));
+  EXPECT_EQ(set.problems[1].ask, (std::vector<std::string>{"matrix", "points", "inverse"}));
+  EXPECT_EQ(set.problems[2].ask, std::vector<std::string>{"matrix"});
+  ASSERT_TRUE(set.problems[3].error);
+  EXPECT_NE(set.problems[3].error->message.find("needs given.points"), std::string::npos);
+  EXPECT_EQ(set.problems[3].error->where.line, 13);
+}
+
 TEST(Loader, ConventionsAndToleranceAreInheritedAndOverridden) {
   const ProblemSet set = load_problem_set_from_string(
       "conventions: {api: directx, angles: radians}\ntolerance: {rel: 0.01}\n"

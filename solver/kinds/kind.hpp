@@ -74,6 +74,7 @@ struct AnswerSpec {
   AnswerKind kind;
   std::vector<std::string> depends_on;  // earlier answers it is computed from
   std::vector<std::string> words;       // Category: the allowed words
+  std::string needs_given = {};         // asked only when the problem gives this field (e.g. points)
 };
 
 // A common mistake, as the answers it produces: the grader names it when a student's wrong

@@ -22,7 +22,7 @@ struct LookAt {
   };
   static std::vector<std::string> given_fields() { return {"eye", "center", "up", "points"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"matrix", AnswerKind::Transform, {}, {}}, {"points", AnswerKind::Matrix, {"matrix"}, {}}};
+    return {{"matrix", AnswerKind::Transform, {}, {}}, {"points", AnswerKind::Matrix, {"matrix"}, {}, "points"}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

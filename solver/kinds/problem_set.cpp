@@ -76,9 +76,17 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   spec.tolerance = read_tolerance(p["tolerance"], file, spec.field + ".tolerance", set.tolerance);
   spec.grading = read_grading(p["grading"], file, spec.field + ".grading", set.grading);
 
-  // ask: a list of the kind's answer names (default: all of them).
-  std::vector<std::string> answer_names;
-  for (const AnswerSpec& a : spec.info->answers) answer_names.push_back(a.name);
+  // ask: a list of the kind's answer names (default: all of them that the given makes
+  // sense of — no transformed points where no points are given).
+  std::vector<std::string> answer_names, applicable;
+  const YAML::Node given_node = p["given"];
+  const auto gives = [&](const std::string& field) {
+    return field.empty() || (given_node.IsMap() && given_node[field].IsDefined() && !given_node[field].IsNull());
+  };
+  for (const AnswerSpec& a : spec.info->answers) {
+    answer_names.push_back(a.name);
+    if (gives(a.needs_given)) applicable.push_back(a.name);
+  }
   const YAML::Node ask = p["ask"];
   if (ask.IsDefined() && !ask.IsNull()) {
     const std::string f = spec.field + ".ask";
@@ -90,14 +98,19 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
     } else {
       fail_at(ask, file, f, "expected a list of answer names");
     }
-    for (std::size_t i = 0; i < spec.ask.size(); ++i)
-      if (!spec.info->answer(spec.ask[i]))
+    for (std::size_t i = 0; i < spec.ask.size(); ++i) {
+      const AnswerSpec* a = spec.info->answer(spec.ask[i]);
+      if (!a)
         fail_at(ask.IsSequence() ? ask[i] : ask, file, f,
                 "'" + spec.ask[i] + "' is not an answer of " + spec.kind +
                     did_you_mean(spec.ask[i], answer_names));
+      else if (!gives(a->needs_given))
+        fail_at(ask.IsSequence() ? ask[i] : ask, file, f,
+                "'" + spec.ask[i] + "' needs given." + a->needs_given + ", which this problem does not give");
+    }
     if (spec.ask.empty()) fail_at(ask, file, f, "asks for nothing");
   } else {
-    spec.ask = answer_names;
+    spec.ask = applicable;
   }
   const YAML::Node points = p["points"];
   if (points.IsDefined() && points.IsMap()) {
