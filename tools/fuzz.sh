@@ -27,7 +27,9 @@ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build build-fuzz --parallel "$(nproc)" --target "${targets[@]}"
 
 # fuzz_grade reads one digit (which seed set) then the answer file.
-seeds=build-fuzz/seeds
+# One seed directory per run, so runs of different targets may go side by side.
+seeds=build-fuzz/seeds-$$
+trap 'rm -rf "$seeds"' EXIT
 rm -rf "$seeds" && mkdir -p "$seeds/fuzz_grade"
 for f in problems/seeds/answers/00[0-4]_*.yaml; do
   n=$(basename "$f"); { printf '%s' "${n:2:1}"; cat "$f"; } > "$seeds/fuzz_grade/$n"
@@ -47,6 +49,10 @@ seed_arg=()
 status=0
 for t in "${targets[@]}"; do
   extra=()
+  # fuzz_batch forks a grading child per student for two batches per input (about twenty
+  # processes under ASan): its inputs get six times the time of a single-process target.
+  timeout=${FUZZ_TIMEOUT:-5}
+  [ "$t" = fuzz_batch ] && timeout=$((timeout * 6))
   case "$t" in
     fuzz_loader) extra=(problems/seeds problems/examples) ;;
     fuzz_grade) extra=("$seeds/fuzz_grade") ;;
@@ -57,7 +63,7 @@ for t in "${targets[@]}"; do
   log="build-fuzz/$t.log"
   touch "$log.start"
   if ! "build-fuzz/fuzz/$t" "build-fuzz/corpus/$t" "fuzz/corpus/$t" "${extra[@]}" \
-        -max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-5}" -rss_limit_mb=2048 -max_len=262144 \
+        -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 -max_len=262144 \
         -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$t-" "${seed_arg[@]}" >"$log" 2>&1; then
     echo "fuzz: $t FAILED (see $log and build-fuzz/artifacts/)"
     grep -E "^==[0-9]+==ERROR|^SUMMARY|ALARM|Test unit written" "$log" | head -5 || true
@@ -66,7 +72,7 @@ for t in "${targets[@]}"; do
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$log" | sed "s/^/fuzz: $t /" || true
   figure() { grep -E "stat::$1:" "$log" | tail -1 | awk '{print $2}'; }
   findings=$(find build-fuzz/artifacts -name "$t-*" -newer "$log.start" 2>/dev/null | wc -l)
-  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$(date -u +%F)" "$machine" "$t" "$seconds" \
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$(date -u +%F)" "$machine → $(cut -d' ' -f1 /proc/loadavg)" "$t" "$seconds" \
     "$(figure number_of_executed_units)" "$(figure average_exec_per_sec)" "$(find "build-fuzz/corpus/$t" -type f | wc -l)" \
     "$(figure peak_rss_mb)" "$findings" >> "$figures"
 done
