@@ -376,8 +376,18 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
     case AnswerKind::Bool:
       return got.flag == expected.flag ? correct("") : incorrect("");
     case AnswerKind::Category:
-    case AnswerKind::BitString:
       return got.word == expected.word ? correct("") : incorrect("");
+    case AnswerKind::BitString: {
+      if (got.word == expected.word) return correct("");
+      // Written as a number, an outcode loses its leading zeros (0 for 0000, 101 for 0101):
+      // the same bits, read with the zeros restored.
+      if (!got.word.empty() && got.word.size() < expected.word.size() &&
+          std::string(expected.word.size() - got.word.size(), '0') + got.word == expected.word)
+        return correct(fmt::format("read as {} (the leading zeros restored)", expected.word));
+      if (got.word.size() != expected.word.size())
+        return incorrect(fmt::format("{} bits, one per window edge", expected.word.size()));
+      return incorrect("");
+    }
     case AnswerKind::WordList: {
       std::vector<std::string> a = folded(expected.words, expected.words),
                                b = folded(got.words, expected.words);
