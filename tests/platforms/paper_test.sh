@@ -21,7 +21,7 @@ variants: per_student
 problems:
   - id: clip
     kind: clip_line
-    text: "Clip the segment PQ against the window {window} (Cohen–Sutherland); 100% of the steps."
+    text: "Clip the segment PQ against the window [{window.xmin}, {window.xmax}] × [{window.ymin}, {window.ymax}] (Cohen–Sutherland); 100% of the steps."
     given: {p: [-2, 5], q: [3, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}
   - {id: poly, kind: clip_polygon, given: {points: [[-1, 1], [3, 1], [3, 5]], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}}
   - {id: raster, kind: scan_convert, given: {triangle: [[0.5, 0.5], [5.5, 1.5], [2.5, 4.5]]}}
@@ -29,6 +29,7 @@ problems:
   - {id: zb, kind: zbuffer, given: {size: [4, 3], polygons: [{label: A, points: [[0, 0, 1], [4, 0, 1], [0, 3, 1]]}, {label: B, points: [[4, 3, 0.5], [0, 3, 2], [4, 0, 2]]}]}}
 YAML
 printf 'student\ns1\ns2\ns3\n' > "$work/roster.csv"
+check "the homework set has no errors" "$frustum" check "$work/hw.yaml"
 "$frustum" generate "$work/hw.yaml" --roster "$work/roster.csv" -o "$work/class" --format pdf > "$work/out.txt"
 check "exams and key compiled" test -s "$work/class/hw-exams.pdf" -a -s "$work/class/hw-key.pdf"
 check "a PDF file" grep -q '^%PDF' "$work/class/hw-exams.pdf"
