@@ -34,6 +34,7 @@ struct GradeOptions {
   Lang lang = Lang::En;
   std::optional<std::string> out_dir;     // batch outputs (default "grades")
   double timeout = 10;                    // seconds per submission in a batch
+  std::size_t jobs = 0;                   // batch: child processes at once (0: one per core)
   std::optional<std::string> gradescope;  // single: results.json
   std::optional<std::string> prairielearn;  // single: PrairieLearn's external-grader results.json
   std::optional<std::string> html;        // single: feedback page

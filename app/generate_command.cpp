@@ -6,19 +6,23 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <map>
 #include <ostream>
+#include <unordered_map>
 
 #include "app/commands.hpp"
 #include "app/variant_files.hpp"
 #include "grader/atomic_file.hpp"
 #include "grader/paper.hpp"
+#include "solver/kinds/rng.hpp"
 #include "solver/kinds/variants.hpp"
 #include "solver/kinds/yaml_document.hpp"
 
 namespace frustum::app {
 
 namespace {
+
+// Variant files made durable per sync (two files per variant).
+constexpr std::size_t kFilesPerSync = 8192;
 
 struct Named {
   std::string name;     // file name part
@@ -85,14 +89,6 @@ int run_generate(const GenerateCommand& g, const Output& o) {
           << "`variants: per_student` to grade against " << g.set << " itself)\n";
   const std::string stem = fs::path(g.set).stem().string();
   const std::string source = fs::path(g.set).filename().string();
-  std::vector<Named> variants;
-  if (g.seed) {
-    const std::vector<ProblemSet> drawn = variants_from_seed(set, *g.seed, g.count, vary_all);
-    for (std::size_t i = 0; i < drawn.size(); ++i) {
-      const std::string name = fmt::format("seed{}-{}", *g.seed, i);
-      variants.push_back({name, name, drawn[i]});
-    }
-  }
   std::vector<std::string> students = g.students;
   if (g.roster) {
     try {
@@ -103,20 +99,29 @@ int run_generate(const GenerateCommand& g, const Output& o) {
       return 1;
     }
   }
-  // The class together: pairwise distinct, redrawing a student whose variant repeats another's.
-  const std::vector<ProblemSet> class_variants = variants_for_class(set, students, vary_all);
-  for (std::size_t i = 0; i < students.size(); ++i)
-    variants.push_back({variant_name(students[i]), students[i], class_variants[i]});
+  const bool paper = g.format != "yaml";
+  std::vector<Named> variants;  // kept only for the paper route
   bool redrawn = false;
-
   int status = 0;
-  std::map<std::string, std::string> seen;  // the set's text → the first student who has it
-  for (const Named& v : variants) {
+  bool failed = false;  // an output could not be written
+  // A variant's text (its FNV-1a hash: bodies are not kept) → the first variant that has it.
+  std::unordered_map<std::uint64_t, std::string> seen;
+  // Written in groups, each made durable by one sync (FileBatch); paths are printed once their
+  // group is in place.
+  FileBatch files;
+  std::vector<std::string> written;
+  const auto flush = [&] {
+    files.commit();
+    for (const std::string& line : written) o.out << line << "\n";
+    written.clear();
+  };
+  const auto take = [&](Named&& v) {
+    if (failed) return;
     if (!v.variant.all_errors().empty()) {
       for (const Diagnostic& d : v.variant.all_errors())
         o.err << v.name << ": " << d.format() << "\n";
       status = 1;
-      continue;
+      return;
     }
     const std::string who =
         g.seed ? fmt::format("variant {} of seed {}", v.name, *g.seed) : "student " + v.student;
@@ -131,30 +136,48 @@ int run_generate(const GenerateCommand& g, const Output& o) {
                  : "";
     redrawn = redrawn || draw > 1;
     const std::string body = emit_variant_set(doc.root, v.variant, "");
-    if (const auto [it, fresh] = seen.emplace(body, v.name); !fresh)
+    if (const auto [it, fresh] = seen.emplace(fnv1a64(body), v.name); !fresh)
       o.err << "warning: " << v.name << " has the same variant as " << it->second
             << " (the ranges leave few choices)\n";
     const std::string seed =
         fmt::format("{:016x}", v.variant.variant ? v.variant.variant->seed : 0);
     const std::string set_text =
-        emit_variant_set(doc.root, v.variant,
-                         fmt::format("Variant of {} for {} (seed {}), drawn by `frustum "
-                                     "generate`.\nAnswer key: answers/{}{}",
-                                     source, who, seed, set_file, redraw_note));
+        comment_lines(fmt::format("Variant of {} for {} (seed {}), drawn by `frustum "
+                                  "generate`.\nAnswer key: answers/{}{}",
+                                  source, who, seed, set_file, redraw_note)) +
+        body;
     const std::string key_text = emit_answer_key(
         v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed));
     try {
-      fs::create_directories(fs::path(g.out_dir) / "answers");
       const std::string set_path = variant_file(g.out_dir, g.set, v.name);
       const std::string key_path = variant_key_file(g.out_dir, g.set, v.name);
-      write_file_atomically(set_path, set_text);
-      write_file_atomically(key_path, key_text);
-      o.out << set_path << "  " << key_path << "\n";
+      files.stage(set_path, set_text);
+      files.stage(key_path, key_text);
+      written.push_back(set_path + "  " + key_path);
+      if (files.staged() >= kFilesPerSync) flush();
     } catch (const std::exception& e) {
       o.err << "error: " << e.what() << "\n";
-      return 1;
+      failed = true;
+      return;
     }
+    if (paper) variants.push_back(std::move(v));
+  };
+  if (g.seed)
+    for_each_variant_from_seed(set, *g.seed, g.count, vary_all, [&](int i, ProblemSet&& drawn) {
+      const std::string name = fmt::format("seed{}-{}", *g.seed, i);
+      take({name, name, std::move(drawn)});
+    });
+  // The class together: pairwise distinct, redrawing a student whose variant repeats another's.
+  std::vector<ProblemSet> class_variants = variants_for_class(set, students, vary_all);
+  for (std::size_t i = 0; i < students.size(); ++i)
+    take({variant_name(students[i]), students[i], std::move(class_variants[i])});
+  try {
+    if (!failed) flush();
+  } catch (const std::exception& e) {
+    o.err << "error: " << e.what() << "\n";
+    failed = true;
   }
+  if (failed) return 1;
   if (g.format != "yaml") status = std::max(status, write_paper(g, set, variants, o));
   if (redrawn)
     o.err << "note: some students were drawn again so that no two share a problem; grade the class "

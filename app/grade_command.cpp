@@ -161,6 +161,7 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   BatchOptions options;
   options.out_dir = g.out_dir.value_or("grades");
   options.timeout_seconds = g.timeout;
+  options.jobs = g.jobs;
   options.lang = g.lang;
   std::optional<ClassVariants> roster;
   if (!read_class(set, g, o, roster)) return 1;

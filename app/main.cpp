@@ -112,6 +112,8 @@ int main(int argc, char** argv) {
       ->add_option("--timeout", grade_opt.timeout,
                    "A class: seconds allowed per submission (default 10)")
       ->check(CLI::Range(0.1, 3600.0));
+  grade->add_option("-j,--jobs", grade_opt.jobs, "A class: submissions graded at once (default: one per core)")
+      ->check(CLI::Range(1, 1024));
   grade->add_option("--gradescope", grade_opt.gradescope,
                     "One student: write Gradescope's results.json here");
   grade->add_option("--prairielearn", grade_opt.prairielearn,

@@ -1,6 +1,6 @@
 // Raster throughput at 1920 × 1080, single thread: (a) 100k small triangles, (b) 100 large
 // ones, setup + coverage + depth test and write included; the same triangles through Mesa's
-// llvmpipe (OSMesa, LP_NUM_THREADS=1) side by side, and after the timings a comparison of
+// llvmpipe (OSMesa, LP_NUM_THREADS as set by the caller) side by side, and after the timings a comparison of
 // the two images: pixels whose winning triangle or depth differ. Not part of ctest.
 #include "solver/raster/fill.hpp"
 
@@ -203,7 +203,10 @@ void compare(bool small) {
 }  // namespace frustum
 
 int main(int argc, char** argv) {
-  setenv("LP_NUM_THREADS", "1", 1);  // llvmpipe single-threaded, before any context exists
+  // llvmpipe's threads are the documented LP_NUM_THREADS, as the caller set it (unset: one per
+  // core); tools/performance.sh runs it with 1 and with every core.
+  const char* lp_threads = std::getenv("LP_NUM_THREADS");
+  benchmark::AddCustomContext("LP_NUM_THREADS", lp_threads ? lp_threads : "unset (one per core)");
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -43,7 +44,11 @@ constexpr const char* kStateDir = ".frustum";
 
 }  // namespace
 
-void write_file_atomically(const std::string& path, const std::string& content) {
+namespace {
+
+// Writes `content` to a fresh temporary file beside `path` (mode 0644, synced when `sync`);
+// returns its name. Nothing is left behind on failure.
+std::string write_temporary(const std::string& path, const std::string& content, bool sync) {
   const fs::path target(path);
   std::error_code ec;
   if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
@@ -58,7 +63,7 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   try {
     write_all(fd, content, path);
     if (fchmod(fd, 0644) != 0) fail(path, "cannot set permissions");
-    if (fsync(fd) != 0) fail(path, "cannot flush");
+    if (sync && fsync(fd) != 0) fail(path, "cannot flush");
   } catch (...) {
     ::close(fd);
     ::unlink(tmp.c_str());
@@ -69,11 +74,59 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     ::unlink(tmp.c_str());
     fail(path, "cannot close", error);
   }
+  return tmp;
+}
+
+void rename_into_place(const std::string& tmp, const std::string& path) {
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int error = errno;
     ::unlink(tmp.c_str());
     fail(path, "cannot rename into place", error);
   }
+}
+
+// Flushes every file system change under `dir`'s file system (data and metadata) to disk.
+void sync_file_system(const std::string& dir) {
+  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) fail(dir, "cannot open to flush");
+  const int r = ::syncfs(fd);
+  const int error = errno;
+  ::close(fd);
+  if (r != 0) fail(dir, "cannot flush", error);
+}
+
+std::string parent_of(const std::string& path) {
+  const fs::path p = fs::path(path).parent_path();
+  return p.empty() ? std::string(".") : p.string();
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  rename_into_place(write_temporary(path, content, true), path);
+}
+
+FileBatch::~FileBatch() {
+  for (const Pending& p : pending_) ::unlink(p.temporary.c_str());
+}
+
+void FileBatch::stage(const std::string& path, const std::string& content) {
+  pending_.push_back({write_temporary(path, content, false), path});
+}
+
+void FileBatch::commit() {
+  if (pending_.empty()) return;
+  std::vector<std::string> dirs;
+  for (const Pending& p : pending_)
+    if (std::find(dirs.begin(), dirs.end(), parent_of(p.target)) == dirs.end())
+      dirs.push_back(parent_of(p.target));
+  for (const std::string& d : dirs) sync_file_system(d);  // one sync per file system in practice
+  while (!pending_.empty()) {
+    const Pending p = std::move(pending_.back());
+    pending_.pop_back();
+    rename_into_place(p.temporary, p.target);
+  }
+  for (const std::string& d : dirs) sync_directory(d);
 }
 
 OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> names)
@@ -127,7 +180,6 @@ void OutputTransaction::write(const std::string& relative, const std::string& co
   if (fd < 0) fail(published_path(relative), "cannot create");
   try {
     write_all(fd, content, published_path(relative));
-    if (::fsync(fd) != 0) fail(published_path(relative), "cannot flush");
   } catch (...) {
     ::close(fd);
     throw;
@@ -141,9 +193,8 @@ std::string OutputTransaction::published_path(const std::string& relative) const
 
 void OutputTransaction::commit() {
   const fs::path state = fs::path(dir_) / kStateDir;
-  for (const std::string& name : names_)
-    if (fs::path(name).extension().empty()) sync_directory((fs::path(run_) / name).string());
-  sync_directory(run_);
+  // One sync for the whole run (its files and directories), not one per file.
+  sync_file_system(run_);
   // Each published name is a fixed symlink into `current`. A real file or directory there (an
   // older Frustum wrote them in place) is moved into the old run's place first.
   std::error_code no_current;

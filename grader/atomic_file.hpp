@@ -11,6 +11,31 @@ namespace frustum {
 // Creates missing parent directories. Throws std::runtime_error naming the path on failure.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// Many files, each written atomically, made durable by one sync instead of one per file:
+// stage() writes a file to a temporary name beside its target (nothing is synced);
+// commit() syncs the file system once (syncfs), renames every staged file over its target and
+// syncs the directories it renamed into. A reader never sees a partial file, and once commit()
+// returns every file is on disk. Without commit() (an exception, a full disk) the destructor
+// removes the staged files and the targets stay as they were.
+class FileBatch {
+ public:
+  FileBatch() = default;
+  ~FileBatch();
+  FileBatch(const FileBatch&) = delete;
+  FileBatch& operator=(const FileBatch&) = delete;
+
+  // Creates missing parent directories. Throws std::runtime_error naming the path on failure.
+  void stage(const std::string& path, const std::string& content);
+  void commit();
+  std::size_t staged() const { return pending_.size(); }
+
+ private:
+  struct Pending {
+    std::string temporary, target;
+  };
+  std::vector<Pending> pending_;
+};
+
 // A batch's outputs under `dir`, published all at once. Layout:
 //   dir/.frustum/lock            held (flock) while a batch writes here
 //   dir/.frustum/run-N/...       the outputs of run N

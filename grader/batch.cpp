@@ -1,5 +1,18 @@
 #include "grader/batch.hpp"
 
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <thread>
+#include <utility>
+
 #include "grader/atomic_file.hpp"
 #include "grader/csv.hpp"
 #include "grader/feedback.hpp"
@@ -7,21 +20,11 @@
 #include "grader/gradescope.hpp"
 #include "grader/isolate.hpp"
 #include "grader/report.hpp"
+#include "solver/derivation/render.hpp"
 #include "solver/kinds/yaml_document.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/util/expression.hpp"
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-#include <yaml-cpp/yaml.h>
-
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <set>
-#include <sstream>
 
 namespace frustum {
 
@@ -52,16 +55,19 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
   for (; !ec && it != end; it.increment(ec)) {
     const std::string ext = lower(it->path().extension().string());
     std::error_code type_ec;  // a symlink loop is an entry that cannot be read, not an abort
-    if ((ext == ".yaml" || ext == ".yml") && !it->is_directory(type_ec)) files.push_back(it->path());
+    if ((ext == ".yaml" || ext == ".yml") && !it->is_directory(type_ec))
+      files.push_back(it->path());
   }
   if (ec)
-    throw InputError(Diagnostic{SourceLocation{dir.string(), 0, 0}, "", "cannot list the directory: " + ec.message()});
+    throw InputError(Diagnostic{SourceLocation{dir.string(), 0, 0}, "",
+                                "cannot list the directory: " + ec.message()});
   std::sort(files.begin(), files.end());
   std::vector<BatchEntry> out;
   for (const fs::path& f : files) {
     BatchEntry b;
     b.source = f.string();
-    if (const std::optional<Diagnostic> d = read_text_file(f.string(), max_bytes, b.yaml)) b.error = d->message;
+    if (const std::optional<Diagnostic> d = read_text_file(f.string(), max_bytes, b.yaml))
+      b.error = d->message;
     b.student = b.error ? std::string() : student_in(b.yaml, b.source);
     if (b.student.empty()) b.student = f.stem().string();
     out.push_back(std::move(b));
@@ -85,10 +91,15 @@ YAML::Node cell_value(const std::string& cell) {
 
 std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes) {
   std::string text;
-  if (const std::optional<Diagnostic> d = read_text_file(path, kMaxRosterBytes, text)) throw InputError(*d);
+  if (const std::optional<Diagnostic> d = read_text_file(path, kMaxRosterBytes, text))
+    throw InputError(*d);
   const CsvTable table = parse_csv(text);
-  if (table.error) throw InputError(Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
-  if (table.rows.empty()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
+  if (table.error)
+    throw InputError(
+        Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
+  if (table.rows.empty())
+    throw InputError(
+        Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
   const std::vector<std::string>& header = table.rows[0].fields;
   const int header_line = table.rows[0].line;
   int student_col = -1;
@@ -98,38 +109,46 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
     const int column = static_cast<int>(i) + 1;
     if (lower(h) == "student") {
       if (student_col >= 0)
-        throw InputError(Diagnostic{SourceLocation{path, header_line, column}, "header",
-                                    fmt::format("a second 'student' column (the first is column {})", student_col + 1)});
+        throw InputError(Diagnostic{
+            SourceLocation{path, header_line, column}, "header",
+            fmt::format("a second 'student' column (the first is column {})", student_col + 1)});
       student_col = static_cast<int>(i);
       continue;
     }
     const std::size_t dot = h.rfind('.');
     if (dot == std::string::npos || dot == 0 || dot + 1 == h.size())
-      throw InputError(Diagnostic{SourceLocation{path, header_line, column}, "header",
-                                  fmt::format("column {} is {}: name answer columns problem-id.answer", column,
-                                              quote_excerpt(h))});
+      throw InputError(
+          Diagnostic{SourceLocation{path, header_line, column}, "header",
+                     fmt::format("column {} is {}: name answer columns problem-id.answer", column,
+                                 quote_excerpt(h))});
     columns[i] = {h.substr(0, dot), h.substr(dot + 1)};
     for (std::size_t k = 0; k < i; ++k)
       if (columns[k] == columns[i])
-        throw InputError(Diagnostic{SourceLocation{path, header_line, column}, "header",
-                                    fmt::format("column {} repeats column {} ({})", column, k + 1, quote_excerpt(h))});
+        throw InputError(Diagnostic{
+            SourceLocation{path, header_line, column}, "header",
+            fmt::format("column {} repeats column {} ({})", column, k + 1, quote_excerpt(h))});
   }
   if (student_col < 0)
-    throw InputError(Diagnostic{SourceLocation{path, header_line, 1}, "header", "no 'student' column"});
+    throw InputError(
+        Diagnostic{SourceLocation{path, header_line, 1}, "header", "no 'student' column"});
   std::vector<BatchEntry> out;
   for (std::size_t r = 1; r < table.rows.size(); ++r) {
     const CsvRow& row = table.rows[r];
     BatchEntry b;
     b.source = fmt::format("{} row {}", path, row.line);
     b.csv_file = path;
-    b.student = student_col < static_cast<int>(row.fields.size()) ? row.fields[static_cast<std::size_t>(student_col)] : "";
+    b.student = student_col < static_cast<int>(row.fields.size())
+                    ? row.fields[static_cast<std::size_t>(student_col)]
+                    : "";
     if (b.student.empty()) b.student = fmt::format("row-{}", row.line);
     std::size_t bytes = 0;
     for (const std::string& f : row.fields) bytes += f.size();
     if (row.fields.size() > header.size()) {
-      b.error = fmt::format("line {}: {} fields, but the header has {}", row.line, row.fields.size(), header.size());
+      b.error = fmt::format("line {}: {} fields, but the header has {}", row.line,
+                            row.fields.size(), header.size());
     } else if (bytes > max_bytes) {
-      b.error = fmt::format("{} bytes: larger than the limit of {} bytes for one submission", bytes, max_bytes);
+      b.error = fmt::format("{} bytes: larger than the limit of {} bytes for one submission", bytes,
+                            max_bytes);
     } else {
       YAML::Node answers(YAML::NodeType::Map);
       for (std::size_t i = 0; i < row.fields.size(); ++i) {
@@ -154,7 +173,8 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
 // Messages about a CSV row's answers, moved from the YAML the row became to its cells.
 void relocate(Diagnostic& d, const BatchEntry& e) {
   if (e.csv_file.empty()) return;
-  for (std::string field = d.field; !field.empty(); field = field.substr(0, std::min(field.size(), field.rfind('.')))) {
+  for (std::string field = d.field; !field.empty();
+       field = field.substr(0, std::min(field.size(), field.rfind('.')))) {
     if (const auto it = e.cells.find(field); it != e.cells.end()) {
       d.where = SourceLocation{e.csv_file, it->second.first, it->second.second};
       return;
@@ -172,14 +192,17 @@ std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t
   std::error_code ec;
   if (fs::is_directory(path, ec)) return from_directory(path, max_bytes);
   if (lower(fs::path(path).extension().string()) == ".csv") return from_csv(path, max_bytes);
-  throw InputError(Diagnostic{SourceLocation{path, 0, 0}, "",
-                              "expected an answers file (.yaml), a directory of them, or a CSV roster"});
+  throw InputError(
+      Diagnostic{SourceLocation{path, 0, 0}, "",
+                 "expected an answers file (.yaml), a directory of them, or a CSV roster"});
 }
 
-std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries, const std::vector<std::string>& roster,
+std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries,
+                                     const std::vector<std::string>& roster,
                                      const std::string& roster_file) {
   std::map<std::string, std::size_t> by_stem;  // file stem → entry
-  for (std::size_t i = 0; i < entries.size(); ++i) by_stem.emplace(fs::path(entries[i].source).stem().string(), i);
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    by_stem.emplace(fs::path(entries[i].source).stem().string(), i);
   std::vector<bool> used(entries.size(), false);
   std::vector<BatchEntry> out;
   for (const std::string& id : roster) {
@@ -198,8 +221,9 @@ std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries, const std:
     used[it->second] = true;
     const std::string claimed = e.error ? std::string() : student_in(e.yaml, e.source);
     if (!claimed.empty() && claimed != id)
-      e.note = fmt::format("the file says student {}, but the roster gives this file to {}: graded as {}",
-                           quote_excerpt(claimed), quote_excerpt(id), quote_excerpt(id));
+      e.note = fmt::format(
+          "the file says student {}, but the roster gives this file to {}: graded as {}",
+          quote_excerpt(claimed), quote_excerpt(id), quote_excerpt(id));
     e.student = id;
     e.from_roster = true;
     out.push_back(std::move(e));
@@ -219,9 +243,9 @@ std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& ro
   header.insert(header.end(), {"source", "message", "file"});
   std::string out = csv_row(header);
   for (const BatchRow& r : rows) {
-    std::vector<std::string> f = {r.student, number_text(r.score), number_text(r.max_score),
-                                  r.max_score > 0 ? fmt::format("{:.1f}", 100.0 * r.score / r.max_score) : "",
-                                  r.status};
+    std::vector<std::string> f = {
+        r.student, number_text(r.score), number_text(r.max_score),
+        r.max_score > 0 ? fmt::format("{:.1f}", 100.0 * r.score / r.max_score) : "", r.status};
     for (std::size_t i = 0; i < set.problems.size(); ++i)
       f.push_back(i < r.problem_scores.size() ? number_text(r.problem_scores[i]) : "");
     f.push_back(r.source);
@@ -232,7 +256,8 @@ std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& ro
   return out;
 }
 
-BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries, const BatchOptions& options) {
+BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries,
+                        const BatchOptions& options) {
   BatchResult result;
   // File names, one per student and never shared (two files claiming one id both get theirs).
   std::vector<std::string> ids;
@@ -243,6 +268,9 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   // A set that does not vary per student is solved once, here: every child inherits it.
   std::optional<SolvedSet> solved;
   if (!options.set_for) solved = solve_for_grading(set);
+  // The typesetting head every feedback page carries, made once: the child sends its pages
+  // without it and the parent puts it in while writing (the same bytes as a page made alone).
+  const std::string math_head = html_math_head();
   // The child grades and renders; the parent only writes what comes back.
   const auto work = [&](std::size_t i) -> std::string {
     const BatchEntry& e = entries[i];
@@ -255,10 +283,12 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     // With a roster, the roster says whose answers these are (and so whose variant applies).
     if (e.from_roster) sub.student = e.student;
     std::string variant;
-    const ProblemSet graded_set = options.set_for ? options.set_for(set, sub.student, variant) : set;
+    const ProblemSet graded_set =
+        options.set_for ? options.set_for(set, sub.student, variant) : set;
     // The student's own set could not be made (no `student:`, no generated file): an error row
     // that says why, not a score of 0.
-    if (graded_set.errors.size() > set.errors.size()) throw std::runtime_error(graded_set.errors.back().format());
+    if (graded_set.errors.size() > set.errors.size())
+      throw std::runtime_error(graded_set.errors.back().format());
     GradeReport report = grade(graded_set, sub, solved ? &*solved : nullptr);
     for (Diagnostic& d : report.errors) relocate(d, e);
     if (report.student.empty()) report.student = e.student;
@@ -273,15 +303,20 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     // No answers could be read at all: the row says so (the feedback still lists the problems).
     j["unreadable"] = !sub.answers.IsDefined() || !sub.answers.IsMap();
     j["markdown"] = render_feedback_markdown(report, options.lang);
-    j["html"] = render_feedback_html(report, options.lang);
+    j["html"] = render_feedback_html(report, options.lang, "");
     j["gradescope"] = json_text(gradescope_results(report, options.lang)) + "\n";
     return json_text(j, -1);
   };
   double max_score = 0;
   for (const ProblemSpec& p : set.problems) max_score += p.max_score();
+  // Rows and written files by submission, so that their order is the class's whatever order
+  // the shares finish in.
+  std::vector<BatchRow> rows(entries.size());
+  std::vector<std::vector<std::string>> files(entries.size() + 1);
+  std::size_t file_slot = entries.size();  // the submission whose files are being written
   const auto write = [&](const std::string& relative, const std::string& text) {
     out.write(relative, text);
-    result.files_written.push_back(out.published_path(relative));
+    files[file_slot].push_back(out.published_path(relative));
   };
   const auto failed_row = [&](BatchRow& row, std::string status, const std::string& reason) {
     row.status = std::move(status);
@@ -289,13 +324,16 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     row.score = 0;
     row.problem_scores.clear();
     write("feedback/" + row.feedback_stem + ".md",
-          fmt::format("# {}\n\nThis submission could not be graded: {}\n", markdown_escape(row.student),
-                      markdown_escape(reason)));
-    write("gradescope/" + row.feedback_stem + ".json", json_text(gradescope_failure(reason)) + "\n");
+          fmt::format("# {}\n\nThis submission could not be graded: {}\n",
+                      markdown_escape(row.student), markdown_escape(reason)));
+    write("gradescope/" + row.feedback_stem + ".json",
+          json_text(gradescope_failure(reason)) + "\n");
   };
-  const auto on_result = [&](std::size_t i, const IsolatedResult& r) {
+  std::size_t done = 0;
+  const auto on_result = [&](std::size_t i, IsolatedResult& r) {
     const BatchEntry& e = entries[i];
-    BatchRow row;
+    file_slot = i;
+    BatchRow& row = rows[i];
     row.student = e.student;
     row.source = e.source;
     row.feedback_stem = stems[i];
@@ -303,14 +341,18 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     if (r.status == IsolatedResult::Status::Ok) {
       // What the child sent is checked like any input: a malformed result is this row's error.
       try {
-        const json j = json::parse(r.output);
+        const json j =
+            json::parse(std::exchange(r.output, {}));  // not kept: memory flat in class size
         row.status = j.at("unreadable").get<bool>() ? "error" : "graded";
         row.score = j.at("score").get<double>();
         row.max_score = j.at("max_score").get<double>();
         for (const auto& s : j.at("problem_scores")) row.problem_scores.push_back(s.get<double>());
         row.message = j.at("message").get<std::string>();
         write("feedback/" + stems[i] + ".md", j.at("markdown").get<std::string>());
-        write("feedback/" + stems[i] + ".html", j.at("html").get<std::string>());
+        std::string html = j.at("html").get<std::string>();
+        if (const std::size_t head_end = html.find("</head>"); head_end != std::string::npos)
+          html.insert(head_end, math_head);
+        write("feedback/" + stems[i] + ".html", html);
         write("gradescope/" + stems[i] + ".json", j.at("gradescope").get<std::string>());
       } catch (const nlohmann::json::exception& x) {
         failed_row(row, "error", std::string("the grader's result could not be read: ") + x.what());
@@ -323,11 +365,16 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
                  r.error);
     }
     if (!e.note.empty()) row.message = e.note + (row.message.empty() ? "" : "; " + row.message);
-    result.rows.push_back(std::move(row));
-    if (options.on_progress) options.on_progress(i + 1, entries.size(), e.student);
+    if (options.on_progress) options.on_progress(++done, entries.size(), e.student);
   };
-  run_isolated_each(entries.size(), work, options.timeout_seconds, on_result);
+  const std::size_t jobs =
+      options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+  run_isolated_each(entries.size(), work, options.timeout_seconds, on_result, 64u << 20, jobs);
+  result.rows = std::move(rows);
+  file_slot = entries.size();
   write("gradebook.csv", gradebook_csv(set, result.rows));
+  for (std::vector<std::string>& f : files)
+    result.files_written.insert(result.files_written.end(), f.begin(), f.end());
   out.commit();
   return result;
 }

@@ -5,28 +5,28 @@
 // error row; the batch always finishes and the gradebook lists every submission.
 #pragma once
 
-#include "grader/grade.hpp"
-#include "solver/derivation/i18n.hpp"
-
 #include <functional>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "grader/grade.hpp"
+#include "solver/derivation/i18n.hpp"
+
 namespace frustum {
 
-constexpr double kBatchTimeoutDefault = 10.0;                  // seconds per submission
-constexpr double kMaxBatchTimeout = 3600.0;                    // an hour for one submission
-constexpr std::size_t kMaxSubmissionBytes = 1u << 20;          // 1 MiB of answers per student
+constexpr double kBatchTimeoutDefault = 10.0;          // seconds per submission
+constexpr double kMaxBatchTimeout = 3600.0;            // an hour for one submission
+constexpr std::size_t kMaxSubmissionBytes = 1u << 20;  // 1 MiB of answers per student
 
-constexpr std::size_t kMaxRosterBytes = 64u << 20;             // a CSV roster of answers
+constexpr std::size_t kMaxRosterBytes = 64u << 20;  // a CSV roster of answers
 
 // One submission, before grading.
 struct BatchEntry {
-  std::string source;   // the file, or "roster.csv row 12"
-  std::string student;  // from the answers, the CSV, or the file name
-  std::string yaml;     // the answers as YAML text (CSV rows are converted)
+  std::string source;                // the file, or "roster.csv row 12"
+  std::string student;               // from the answers, the CSV, or the file name
+  std::string yaml;                  // the answers as YAML text (CSV rows are converted)
   std::optional<std::string> error;  // could not be read at all (too big, unreadable)
   // A CSV row: where each answer ("answers.ID.NAME") was in the CSV (line, column), so that
   // messages point at the cell, not at the YAML the row was converted to.
@@ -51,15 +51,20 @@ std::vector<BatchEntry> collect_submissions(const std::string& path,
 // that claims another id is graded as R and the row says so). A roster id without a file is an
 // error row; a file that no roster id names is an error row "not on the roster". Rows follow
 // the roster's order, then the files not on it.
-std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries, const std::vector<std::string>& roster,
+std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries,
+                                     const std::vector<std::string>& roster,
                                      const std::string& roster_file);
 
 struct BatchOptions {
   std::string out_dir = "grades";
   double timeout_seconds = kBatchTimeoutDefault;
   Lang lang = Lang::En;
+  // Child processes grading at once (each a contiguous share of the class); 0: one per core.
+  // The outputs are the same bytes whatever the number.
+  std::size_t jobs = 0;
   // The set a student is graded against (per-student variants); the set itself when empty.
-  std::function<ProblemSet(const ProblemSet& set, const std::string& student, std::string& variant)> set_for;
+  std::function<ProblemSet(const ProblemSet& set, const std::string& student, std::string& variant)>
+      set_for;
   // Called after each submission: how many are done, of how many, and whose it was.
   std::function<void(std::size_t done, std::size_t total, const std::string& student)> on_progress;
 };
@@ -87,7 +92,8 @@ struct BatchResult {
 // aborts on a submission: every failure is that student's row. Throws std::runtime_error only
 // when the outputs cannot be written at all (not writable, locked by another batch, disk
 // full); the previous outputs are then unchanged.
-BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries, const BatchOptions& options);
+BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries,
+                        const BatchOptions& options);
 
 // The gradebook's CSV text (header + one row per submission).
 std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& rows);

@@ -124,12 +124,16 @@ std::string render_feedback_markdown(const GradeReport& r, Lang lang) {
 }
 
 std::string render_feedback_html(const GradeReport& r, Lang lang) {
+  return render_feedback_html(r, lang, html_math_head());
+}
+
+std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head) {
   const std::string student = r.student.empty() ? "(unnamed)" : r.student;
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<title>Frustum — {}</title>\n<style>{}</style>\n{}</head>\n<body data-rendered=\"no\">\n",
-      to_string(lang), html_escape(student), kStyle, html_math_head());
+      to_string(lang), html_escape(student), kStyle, math_head);
   out += fmt::format("<h1>{} {}</h1>\n<p class=\"total\" id=\"total\">{}: {} / {}</p>\n<p id=\"summary\"></p>\n",
                      html_escape(tr("Student", lang)), html_escape(student), html_escape(tr("Score", lang)),
                      score_text(r.score), score_text(r.max_score));

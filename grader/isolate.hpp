@@ -13,7 +13,8 @@ struct IsolatedResult {
   enum class Status { Ok, Timeout, Crashed, Failed };
   Status status = Status::Failed;
   std::string output;  // what the work returned (Ok only)
-  std::string error;   // why there is no output: "time limit of 10 s exceeded", "killed by signal 11"
+  std::string
+      error;  // why there is no output: "time limit of 10 s exceeded", "killed by signal 11"
 };
 
 // Forks; the child runs `work` and writes its result to the parent, which waits at most
@@ -23,13 +24,15 @@ IsolatedResult run_isolated(const std::function<std::string()>& work, double sec
                             std::size_t max_output = 64u << 20);
 
 // Runs work(0) … work(count − 1) in child processes, each item under its own time limit, and
-// returns one result per item in order. One child works through the items and streams each
-// result back as it finishes (so a class costs one fork, not one per student); when an item
-// times out or crashes the child, that item alone is marked and a fresh child carries on with
-// the next. `on_result` (optional) is called in this process after each item.
+// returns one result per item in order. The items are cut into `jobs` contiguous shares; one
+// child per share works through it and streams each result back as it finishes (so a class
+// costs one fork per share, not one per student); when an item times out or crashes its child,
+// that item alone is marked and a fresh child carries on with the next of that share.
+// `on_result` (optional) is called in this process after each item, in each share's order
+// (shares interleave); what it moves out of the result (the output) is not kept.
 std::vector<IsolatedResult> run_isolated_each(
     std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
-    const std::function<void(std::size_t index, const IsolatedResult&)>& on_result = {},
-    std::size_t max_output = 64u << 20);
+    const std::function<void(std::size_t index, IsolatedResult&)>& on_result = {},
+    std::size_t max_output = 64u << 20, std::size_t jobs = 1);
 
 }  // namespace frustum

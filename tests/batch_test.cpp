@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <csignal>
@@ -131,6 +132,27 @@ TEST(Isolate, SlowAndCrashingItemsCostOnlyTheirOwnResult) {
   EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
 }
 
+TEST(Isolate, SharesInParallelKeepEachItemsOwnResult) {
+  std::vector<std::size_t> seen;
+  const auto results = run_isolated_each(
+      7,
+      [](std::size_t i) -> std::string {
+        if (i == 1) std::this_thread::sleep_for(std::chrono::seconds(30));
+        if (i == 5) std::raise(SIGSEGV);
+        return "item " + std::to_string(i);
+      },
+      0.5, [&](std::size_t i, const IsolatedResult&) { seen.push_back(i); }, 64u << 20, 3);
+  ASSERT_EQ(results.size(), 7u);
+  for (std::size_t i : {0, 2, 3, 4, 6}) {
+    EXPECT_EQ(results[i].status, IsolatedResult::Status::Ok) << i;
+    EXPECT_EQ(results[i].output, "item " + std::to_string(i));
+  }
+  EXPECT_EQ(results[1].status, IsolatedResult::Status::Timeout);
+  EXPECT_EQ(results[5].status, IsolatedResult::Status::Crashed);
+  std::sort(seen.begin(), seen.end());
+  EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6}));
+}
+
 // A class of five: right, wrong, broken YAML, empty, and too big.
 fs::path make_class(const fs::path& dir) {
   const fs::path in = dir / "in";
@@ -215,6 +237,27 @@ TEST(Batch, ASecondRunGivesByteIdenticalOutputs) {
   // gradebook, 5 Gradescope files, 5 Markdown pages, 4 HTML pages (not for the file never read)
   EXPECT_EQ(one.size(), 15u);
   EXPECT_TRUE(one == two);
+  fs::remove_all(dir);
+}
+
+TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
+  const fs::path dir = scratch("jobs");
+  const fs::path in = make_class(dir);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  BatchOptions options;
+  options.jobs = 1;
+  options.out_dir = (dir / "one").string();
+  const BatchResult one_child = grade_batch(set, collect_submissions(in.string()), options);
+  options.jobs = 3;
+  options.out_dir = (dir / "three").string();
+  const BatchResult three = grade_batch(set, collect_submissions(in.string()), options);
+  EXPECT_TRUE(tree(dir / "one") == tree(dir / "three"));
+  ASSERT_EQ(three.rows.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(three.rows[i].student, one_child.rows[i].student);
+  // The page the batch assembles (typesetting head added by the parent) is the page made alone.
+  const Submission sub =
+      load_submission_from_string(read(in / "b_wrong.yaml"), (in / "b_wrong.yaml").string());
+  EXPECT_EQ(read(dir / "three" / "feedback" / "s002.html"), render_feedback_html(grade(set, sub)));
   fs::remove_all(dir);
 }
 

@@ -1,14 +1,15 @@
 #include "solver/kinds/variants.hpp"
 
+#include <filesystem>
+#include <functional>
+#include <optional>
+
 #include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/solve_set.hpp"
 #include "solver/kinds/vary_spec.hpp"
 #include "solver/kinds/yaml_emit.hpp"
 #include "solver/util/exact_format.hpp"
-
-#include <filesystem>
-#include <optional>
 
 namespace frustum {
 
@@ -43,7 +44,9 @@ bool has_vary(const ProblemSpec& p) { return p.vary.IsDefined() && !p.vary.IsNul
 
 }  // namespace
 
-bool problem_varies(const ProblemSet& set, const ProblemSpec& p) { return has_vary(p) || set.per_student; }
+bool problem_varies(const ProblemSet& set, const ProblemSpec& p) {
+  return has_vary(p) || set.per_student;
+}
 
 bool set_varies(const ProblemSet& set) {
   for (const ProblemSpec& p : set.problems)
@@ -72,7 +75,8 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
     if (!v) continue;
     if (!v->numbers.empty() && v->exact.empty()) continue;  // a floating-point answer (render)
     for (const Exact& e : v->exact)
-      if (!simple_number(e)) return name + " has " + format_exact(e, MathStyle::Plain) + ", not a simple number";
+      if (!simple_number(e))
+        return name + " has " + format_exact(e, MathStyle::Plain) + ", not a simple number";
   }
   return "";
 }
@@ -94,7 +98,8 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
     return spec;
   }
   if (use_default && !kind.generate) {
-    spec.error = Diagnostic{base.where, vary_field, kind.name + " has no default generator: give `vary`"};
+    spec.error =
+        Diagnostic{base.where, vary_field, kind.name + " has no default generator: give `vary`"};
     return spec;
   }
   const GenerateOptions options{base.nice, base.hard, base.conventions};
@@ -113,8 +118,9 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
   };
   for (int attempt = 0; attempt < kMaxDrawAttempts; ++attempt) {
     try {
-      YAML::Node given = use_default ? default_given(attempt)
-                                     : apply_vary(base.vary, base.given_node, rng, file, vary_field);
+      YAML::Node given = use_default
+                             ? default_given(attempt)
+                             : apply_vary(base.vary, base.given_node, rng, file, vary_field);
       const std::string text = emit_flow(given);
       if (avoid.count(text)) {
         last = "the same as another variant";
@@ -127,7 +133,8 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
       // An empty list (no pixel covered) cannot be written as an answer: redrawn even when hard.
       last.clear();
       for (const std::string& name : base.ask)
-        if (const Value* v = answers.find(name); v && v->shape == Value::Shape::Matrix && v->rows == 0)
+        if (const Value* v = answers.find(name);
+            v && v->shape == Value::Shape::Matrix && v->rows == 0)
           last = name + " is empty";
       if (!last.empty()) continue;
       if (!base.hard && kind.ill_conditioned) {
@@ -151,9 +158,10 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
     }
   }
   const YAML::Node at = has_vary(base) ? base.vary : base.given_node;
-  spec.error = Diagnostic{location_of(at, file), vary_field,
-                          "no acceptable variant in " + std::to_string(kMaxDrawAttempts) +
-                              " draws (the last: " + last + "); widen the ranges or drop nice/difficulty"};
+  spec.error =
+      Diagnostic{location_of(at, file), vary_field,
+                 "no acceptable variant in " + std::to_string(kMaxDrawAttempts) +
+                     " draws (the last: " + last + "); widen the ranges or drop nice/difficulty"};
   return spec;
 }
 
@@ -171,24 +179,23 @@ ProblemSpec default_problem(const KindInfo& kind, bool nice, bool hard) {
 
 namespace {
 
+// `avoid` (when given) holds, per problem, the givens (emit_flow text) of earlier variants.
 ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std::string& student,
-                        bool vary_all, const std::vector<ProblemSet>& previous) {
+                        bool vary_all, const std::vector<std::set<std::string>>* avoid) {
   ProblemSet out = set;
   out.per_student = false;
   const std::uint64_t seed = variant_seed(set_key(set), who);
   out.variant = VariantInfo{student, seed};
   out.problems.clear();
+  static const std::set<std::string> kNone;
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const ProblemSpec& base = set.problems[i];
     if (!vary_all && !problem_varies(set, base)) {
       out.problems.push_back(base);
       continue;
     }
-    std::set<std::string> avoid;
-    for (const ProblemSet& other : previous)
-      if (i < other.problems.size() && !other.problems[i].error)
-        avoid.insert(emit_flow(other.problems[i].given_node));
-    out.problems.push_back(draw_problem(base, set.file, problem_seed(seed, base.id), avoid));
+    out.problems.push_back(
+        draw_problem(base, set.file, problem_seed(seed, base.id), avoid ? (*avoid)[i] : kNone));
   }
   return out;
 }
@@ -196,12 +203,14 @@ ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std
 }  // namespace
 
 ProblemSet variant_for_student(const ProblemSet& set, const std::string& student, bool vary_all) {
-  return make_variant(set, "student:" + student, student, vary_all, {});
+  return make_variant(set, "student:" + student, student, vary_all, nullptr);
 }
 
-std::vector<ProblemSet> variants_for_class(const ProblemSet& set, const std::vector<std::string>& students,
+std::vector<ProblemSet> variants_for_class(const ProblemSet& set,
+                                           const std::vector<std::string>& students,
                                            bool vary_all) {
-  std::vector<std::set<std::string>> taken(set.problems.size());  // per problem: the givens drawn so far
+  std::vector<std::set<std::string>> taken(
+      set.problems.size());  // per problem: the givens drawn so far
   // The given of each varying problem as text ("" for fixed or failed ones), to compare draws.
   const auto givens = [&](const ProblemSet& v) {
     std::vector<std::string> texts(v.problems.size());
@@ -215,10 +224,11 @@ std::vector<ProblemSet> variants_for_class(const ProblemSet& set, const std::vec
     std::optional<ProblemSet> chosen;
     for (int draw = 1; draw <= kMaxDrawAttempts && !chosen; ++draw) {
       const std::string who = "student:" + student + (draw == 1 ? "" : "#" + std::to_string(draw));
-      ProblemSet v = make_variant(set, who, student, vary_all, {});
+      ProblemSet v = make_variant(set, who, student, vary_all, nullptr);
       const std::vector<std::string> texts = givens(v);
       bool repeats = false;
-      for (std::size_t i = 0; i < texts.size() && !repeats; ++i) repeats = !texts[i].empty() && taken[i].count(texts[i]);
+      for (std::size_t i = 0; i < texts.size() && !repeats; ++i)
+        repeats = !texts[i].empty() && taken[i].count(texts[i]);
       if (repeats) continue;
       for (std::size_t i = 0; i < texts.size(); ++i)
         if (!texts[i].empty()) taken[i].insert(texts[i]);
@@ -232,7 +242,8 @@ std::vector<ProblemSet> variants_for_class(const ProblemSet& set, const std::vec
       chosen->errors.push_back(Diagnostic{
           SourceLocation{set.file, 0, 0}, "student",
           "no variant for " + student + " that differs from every earlier student's in " +
-              std::to_string(kMaxDrawAttempts) + " draws: the ranges hold fewer variants than the class"});
+              std::to_string(kMaxDrawAttempts) +
+              " draws: the ranges hold fewer variants than the class"});
     }
     out.push_back(std::move(*chosen));
   }
@@ -251,13 +262,26 @@ ProblemSet variant_for(const ProblemSet& set, const std::string& student) {
   return variant_for_student(set, student, false);
 }
 
+void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all,
+                                const std::function<void(int, ProblemSet&&)>& take) {
+  // Per problem, the givens drawn so far: each variant is checked against it in O(log n)
+  // (rebuilding it from every earlier variant made --count quadratic).
+  std::vector<std::set<std::string>> taken(set.problems.size());
+  for (int i = 0; i < count; ++i) {
+    const std::string who = "seed:" + std::to_string(seed) + ":" + std::to_string(i);
+    ProblemSet v = make_variant(set, who, "", vary_all, &taken);
+    for (std::size_t p = 0; p < v.problems.size(); ++p)
+      if (!v.problems[p].error && (vary_all || problem_varies(set, set.problems[p])))
+        taken[p].insert(emit_flow(v.problems[p].given_node));
+    take(i, std::move(v));
+  }
+}
+
 std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t seed, int count,
                                            bool vary_all) {
   std::vector<ProblemSet> out;
-  for (int i = 0; i < count; ++i) {
-    const std::string who = "seed:" + std::to_string(seed) + ":" + std::to_string(i);
-    out.push_back(make_variant(set, who, "", vary_all, out));
-  }
+  for_each_variant_from_seed(set, seed, count, vary_all,
+                             [&](int, ProblemSet&& v) { out.push_back(std::move(v)); });
   return out;
 }
 
@@ -268,8 +292,10 @@ YAML::Node answer_node(const Value& v) {
   };
   YAML::Node n;
   switch (v.shape) {
-    case Value::Shape::Null: return YAML::Node("none");
-    case Value::Shape::Scalar: return number(0);
+    case Value::Shape::Null:
+      return YAML::Node("none");
+    case Value::Shape::Scalar:
+      return number(0);
     case Value::Shape::Vector:
       n = YAML::Node(YAML::NodeType::Sequence);
       for (std::size_t i = 0; i < v.numbers.size(); ++i) n.push_back(number(i));
@@ -278,12 +304,15 @@ YAML::Node answer_node(const Value& v) {
       n = YAML::Node(YAML::NodeType::Sequence);
       for (int r = 0; r < v.rows; ++r) {
         YAML::Node row(YAML::NodeType::Sequence);
-        for (int c = 0; c < v.cols; ++c) row.push_back(number(static_cast<std::size_t>(r * v.cols + c)));
+        for (int c = 0; c < v.cols; ++c)
+          row.push_back(number(static_cast<std::size_t>(r * v.cols + c)));
         n.push_back(row);
       }
       return n;
-    case Value::Shape::Bool: return YAML::Node(v.flag ? "true" : "false");
-    case Value::Shape::Word: return string_node(v.word);  // a bit string 0010 stays a string
+    case Value::Shape::Bool:
+      return YAML::Node(v.flag ? "true" : "false");
+    case Value::Shape::Word:
+      return string_node(v.word);  // a bit string 0010 stays a string
     case Value::Shape::WordMap:
       n = YAML::Node(YAML::NodeType::Map);
       for (const auto& [k, w] : v.entries) n[k] = string_node(w);
@@ -296,35 +325,37 @@ YAML::Node answer_node(const Value& v) {
   return n;
 }
 
-namespace {
-
-void comment_lines(std::string& out, const std::string& header) {
+std::string comment_lines(const std::string& header) {
+  std::string out;
   std::size_t start = 0;
   while (start < header.size()) {
     const std::size_t end = header.find('\n', start);
-    const std::string line = header.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const std::string line =
+        header.substr(start, end == std::string::npos ? std::string::npos : end - start);
     out += line.empty() ? "#\n" : "# " + line + "\n";
     if (end == std::string::npos) break;
     start = end + 1;
   }
+  return out;
 }
-
-}  // namespace
 
 namespace {
 
 // The value a placeholder names ({eye}, {perspective.fovy}, {points.0}), as students read it:
 // a number as written, a list of numbers as a point (1, 2, 3); nullopt with `why` otherwise.
-std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given, std::string& why) {
+std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given,
+                                             std::string& why) {
   YAML::Node at = YAML::Clone(given);
   std::size_t start = 0;
   while (true) {
     const std::size_t dot = name.find('.', start);
-    const std::string part = name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    const std::string part =
+        name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
     if (at.IsMap() && !part.empty() && at[part].IsDefined()) {
       at = at[part];
-    } else if (at.IsSequence() && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos &&
-               part.size() < 6 && std::stoul(part) < at.size()) {
+    } else if (at.IsSequence() && !part.empty() &&
+               part.find_first_not_of("0123456789") == std::string::npos && part.size() < 6 &&
+               std::stoul(part) < at.size()) {
       at = at[std::stoul(part)];
     } else {
       why = "names no field of the given";
@@ -381,14 +412,15 @@ std::optional<std::string> placeholder_error(const std::string& text, const YAML
   std::optional<std::string> error;
   for_each_placeholder(text, [&](std::size_t, std::size_t, const std::string& name) {
     std::string why;
-    if (!error && !placeholder_value(name, given, why)) error = "the placeholder {" + name + "} " + why;
+    if (!error && !placeholder_value(name, given, why))
+      error = "the placeholder {" + name + "} " + why;
   });
   return error;
 }
 
-std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant, const std::string& header) {
-  std::string out;
-  comment_lines(out, header);
+std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant,
+                             const std::string& header) {
+  std::string out = comment_lines(header);
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string key = it->first.as<std::string>();
     if (key == "variants") continue;
@@ -423,9 +455,9 @@ std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant, 
   return out;
 }
 
-std::string emit_answer_key(const ProblemSet& variant, const std::string& student, const std::string& header) {
-  std::string out;
-  comment_lines(out, header);
+std::string emit_answer_key(const ProblemSet& variant, const std::string& student,
+                            const std::string& header) {
+  std::string out = comment_lines(header);
   out += "student: " + emit_scalar(student) + "\nanswers:\n";
   for (const ProblemSpec& p : variant.problems) {
     const ProblemResult r = solve_problem(p, variant.file, false);

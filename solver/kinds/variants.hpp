@@ -10,16 +10,17 @@
 // "student:" + the student id or "seed:N:I" (variant I of --seed N), and ID the problem id.
 #pragma once
 
-#include "solver/derivation/value.hpp"
-#include "solver/kinds/problem_set.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
 #include <vector>
+
+#include "solver/derivation/value.hpp"
+#include "solver/kinds/problem_set.hpp"
 
 namespace frustum {
 
@@ -40,7 +41,8 @@ std::uint64_t problem_seed(std::uint64_t variant_seed, const std::string& proble
 // One drawn problem: `base` with a new given (parsed and solvable), or with `error` set.
 // `avoid` holds the givens (as emit_flow text) of other variants; `given_text` receives this one's.
 ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::uint64_t seed,
-                         const std::set<std::string>& avoid = {}, std::string* given_text = nullptr);
+                         const std::set<std::string>& avoid = {},
+                         std::string* given_text = nullptr);
 
 // A problem "p" of the kind asking every answer, with no `vary` (so draw_problem uses the
 // kind's default generator): for self-tests and benchmarks.
@@ -55,6 +57,10 @@ ProblemSet variant_for(const ProblemSet& set, const std::string& student);
 // every problem varies (a set that declares no variation at all).
 std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t seed, int count,
                                            bool vary_all = false);
+// The same variants handed to `take` one at a time, in order (index, variant), without keeping
+// them: linear in `count` in time, and in memory only the givens drawn so far.
+void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all,
+                                const std::function<void(int, ProblemSet&&)>& take);
 // The student's variant, with vary_all as above.
 ProblemSet variant_for_student(const ProblemSet& set, const std::string& student, bool vary_all);
 // The variants of a class, in roster order, pairwise distinct in every varying problem. A
@@ -64,8 +70,8 @@ ProblemSet variant_for_student(const ProblemSet& set, const std::string& student
 // the id alone, so a class generated this way is graded against the generated files
 // (`frustum grade SET ANSWERS --variants DIR`). When the ranges hold fewer variants than
 // students, the students left over carry an error saying so.
-std::vector<ProblemSet> variants_for_class(const ProblemSet& set, const std::vector<std::string>& students,
-                                           bool vary_all);
+std::vector<ProblemSet> variants_for_class(const ProblemSet& set,
+                                           const std::vector<std::string>& students, bool vary_all);
 
 // Why the answers are not nice ("" when they are): every number of an asked answer must be
 // simple — a rational with denominator ≤ 100, a square root of a rational with denominator
@@ -79,6 +85,8 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
 // comment lines first.
 std::string emit_variant_set(const YAML::Node& source_root, const ProblemSet& variant,
                              const std::string& header);
+// `header` as YAML comment lines ("# " before each line, "#" for an empty one).
+std::string comment_lines(const std::string& header);
 // `{field}` in a problem's text replaced by that given field's value as students read it: a
 // number as written, a point as (1, 2, 3); dotted paths reach inside ({perspective.fovy},
 // {points.0}). Placeholders that name nothing stay as written (check refuses them).

@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""Inputs for tools/performance.sh, written deterministically (no randomness), and the
+Python + NumPy peer that grades the same class files.
+
+  workloads.py class-set SET.yaml                 20 depth_at_pixel problems × 3 answers
+  workloads.py class DIR KEY.json N               N answer files (KEY.json: `frustum solve --format json`)
+  workloads.py peer SET.yaml KEY.json DIR OUT.csv the NumPy peer: parse every file, grade, write a gradebook
+  workloads.py scene FILE N                       a render scene of about N small triangles
+  workloads.py mesh FILE N                        an edge_visibility problem: a closed torus of about N faces
+"""
+import csv
+import json
+import math
+import os
+import sys
+
+
+def class_set(path):
+    # The class of bench/grade_bench.cpp: twenty triangles, each asked normal, plane and z.
+    s = "problems:\n"
+    for i in range(20):
+        s += (f"  - id: p{i}\n    kind: depth_at_pixel\n    given:\n"
+              f"      triangle: [[0, 0, {6 + i % 3}], [{3 + i % 4}, 0, 9], [0, 3, 9]]\n"
+              f"      pixel: [1, 1]\n    ask: [normal, plane, z]\n")
+    with open(path, "w") as f:
+        f.write(s)
+
+
+def key_of(key_json):
+    with open(key_json) as f:
+        solved = json.load(f)
+    return {p["id"]: {k: p["answers"][k]["value"] for k in ("normal", "plane", "z")} for p in solved["problems"]}
+
+
+def write_class(directory, key_json, n):
+    # Decimals as students type them; one z in five off by 0.5 (the C++ benchmark's class).
+    key = key_of(key_json)
+    os.makedirs(directory, exist_ok=True)
+    for s in range(n):
+        lines = [f"student: s{s:05d}", "answers:"]
+        for i, (pid, a) in enumerate(key.items()):
+            z = a["z"] + (0.5 if (s + i) % 5 == 0 else 0.0)
+            nrm = ", ".join(f"{v:.6f}" for v in a["normal"])
+            pln = ", ".join(f"{v:.6f}" for v in a["plane"])
+            lines.append(f"  {pid}: {{normal: [{nrm}], plane: [{pln}], z: {z:.6f}}}")
+        with open(os.path.join(directory, f"s{s:05d}.yaml"), "w") as f:
+            f.write("\n".join(lines) + "\n")
+
+
+def peer(key_json, directory, out_csv):
+    # What a course's own script would do: read each file, compare in bulk with NumPy
+    # (normal up to a positive multiple, plane up to a non-zero multiple, z with rtol 1e-2),
+    # write one gradebook line per student.
+    import numpy as np
+    import yaml
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    key = key_of(key_json)
+    ids = list(key)
+    kn = np.array([key[i]["normal"] for i in ids], float)
+    kp = np.array([key[i]["plane"] for i in ids], float)
+    kz = np.array([key[i]["z"] for i in ids], float)
+    kn /= np.linalg.norm(kn, axis=1, keepdims=True)
+    kp /= np.linalg.norm(kp, axis=1, keepdims=True)
+    with open(out_csv, "w", newline="") as out:
+        w = csv.writer(out)
+        w.writerow(["student", "score", "max"])
+        for name in sorted(os.listdir(directory)):
+            with open(os.path.join(directory, name)) as f:
+                doc = yaml.load(f, Loader=loader)
+            ans = doc["answers"]
+            n = np.array([ans[i]["normal"] for i in ids], float)
+            p = np.array([ans[i]["plane"] for i in ids], float)
+            z = np.array([ans[i]["z"] for i in ids], float)
+            n /= np.linalg.norm(n, axis=1, keepdims=True)
+            p /= np.linalg.norm(p, axis=1, keepdims=True)
+            ok_n = np.abs(np.einsum("ij,ij->i", n, kn) - 1) < 1e-4
+            ok_p = np.abs(np.abs(np.einsum("ij,ij->i", p, kp)) - 1) < 1e-4
+            ok_z = np.abs(z - kz) <= 1e-2 * np.maximum(np.abs(kz), 1)
+            w.writerow([doc["student"], int(ok_n.sum() + ok_p.sum() + ok_z.sum()), 3 * len(ids)])
+
+
+def scene(path, n):
+    # A grid of k × k cells, two small triangles each (about 2 px on a 1920 × 1080 image),
+    # all in front of the camera and inside the view volume: transform, clip and fill all run.
+    k = max(1, int(math.sqrt(n / 2)))
+    step = 2.0 / k
+    with open(path, "w") as f:
+        f.write("scene:\n  viewport: {width: 1920, height: 1080}\n"
+                "  camera: {eye: [0, 0, 3], center: [0, 0, 0], up: [0, 1, 0]}\n"
+                "  perspective: {fovy: 60, aspect: 1.7778, near: 0.5, far: 10}\n"
+                "  objects:\n"
+                f"    - triangle: [[0, 0, 0], [{step}, 0, 0.1], [0, {step}, -0.1]]\n"
+                f"      repeat: {{from: [-1, -1, 0], to: [{-1 + step * (k - 1)}, {-1 + step * (k - 1)}, 0], "
+                f"step: [{step}, {step}, 1]}}\n"
+                f"    - triangle: [[{step}, 0, 0.1], [{step}, {step}, 0], [0, {step}, -0.1]]\n"
+                f"      repeat: {{from: [-1, -1, 0], to: [{-1 + step * (k - 1)}, {-1 + step * (k - 1)}, 0], "
+                f"step: [{step}, {step}, 1]}}\n")
+
+
+def mesh(path, n):
+    # A torus of u × v quads split into triangles (2uv faces), counter-clockwise seen from outside.
+    u = max(3, int(math.sqrt(n / 2)))
+    v = max(3, n // (2 * u))
+    R, r = 3.0, 1.0
+    verts = []
+    for i in range(u):
+        a = 2 * math.pi * i / u
+        for j in range(v):
+            b = 2 * math.pi * j / v
+            verts.append([round((R + r * math.cos(b)) * math.cos(a), 4), round((R + r * math.cos(b)) * math.sin(a), 4),
+                          round(r * math.sin(b), 4)])
+    faces = []
+    for i in range(u):
+        for j in range(v):
+            a, b = i * v + j, ((i + 1) % u) * v + j
+            c, d = ((i + 1) % u) * v + (j + 1) % v, i * v + (j + 1) % v
+            faces += [[a, b, c], [a, c, d]]
+    with open(path, "w") as f:
+        f.write("problems:\n  - id: torus\n    kind: edge_visibility\n    given:\n      mesh:\n        vertices:\n")
+        f.writelines(f"          - {p}\n" for p in verts)
+        f.write("        faces:\n")
+        f.writelines(f"          - {t}\n" for t in faces)
+        f.write("      eye: [2, -9, 7]\n    ask: [faces, edges]\n")
+
+
+if __name__ == "__main__":
+    cmd, args = sys.argv[1], sys.argv[2:]
+    if cmd == "class-set":
+        class_set(args[0])
+    elif cmd == "class":
+        write_class(args[0], args[1], int(args[2]))
+    elif cmd == "peer":
+        peer(args[1], args[2], args[3])
+    elif cmd == "scene":
+        scene(args[0], int(args[1]))
+    elif cmd == "mesh":
+        mesh(args[0], int(args[1]))
+    else:
+        sys.exit(__doc__)
