@@ -85,8 +85,8 @@ int main(int argc, char** argv) {
   check->footer(examples({"frustum check problems/seeds"}));
 
   std::string lang = "en", grade_lang = "en";
-  solve->add_option("--lang", lang, "Language of the derivations: en or ja")
-      ->check(CLI::IsMember({"en", "ja"}));
+  solve->add_option("--lang", lang, "Language of the derivations: en, ja or ru")
+      ->check(CLI::IsMember({"en", "ja", "ru"}));
 
   frustum::app::GradeOptions grade_opt;
   auto* grade =
@@ -103,8 +103,8 @@ int main(int argc, char** argv) {
   grade->add_option("--format", grade_opt.format, "Output: text (default) or json")
       ->type_name("FORMAT")
       ->transform(choice<Format>({{"text", Format::Text}, {"json", Format::Json}}));
-  grade->add_option("--lang", grade_lang, "Language of the feedback: en or ja")
-      ->check(CLI::IsMember({"en", "ja"}));
+  grade->add_option("--lang", grade_lang, "Language of the feedback: en, ja or ru")
+      ->check(CLI::IsMember({"en", "ja", "ru"}));
   grade->add_option(
       "-o,--out", grade_opt.out_dir,
       "A class: directory for gradebook.csv, feedback/, gradescope/ (default grades)");

@@ -1,23 +1,26 @@
 // The language of derivations and feedback. Steps are recorded in English; a renderer asked
-// for Japanese translates titles and fixed phrases through one catalogue (i18n.cpp), so the
-// kinds never format for a language. Mathematics (formulas, values) is never translated.
+// for Japanese or Russian translates titles, notes and fixed phrases through one catalogue
+// (phrases_*.cpp), so the kinds never format for a language. Mathematics (formulas, values)
+// is never translated; the words written inside it are (MathText::words).
 #pragma once
-
-#include "solver/derivation/math_text.hpp"
 
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "solver/derivation/math_text.hpp"
+
 namespace frustum {
 
-enum class Lang { En, Ja };
+enum class Lang { En, Ja, Ru };
 
-std::optional<Lang> parse_lang(std::string_view code);  // "en", "ja"
+std::optional<Lang> parse_lang(std::string_view code);  // "en", "ja", "ru"
 std::string_view to_string(Lang lang);
 
-// A step title, note or interface phrase in `lang`: a whole-text match first, then the known
-// phrases inside it (longest first); text the catalogue does not know stays as written.
+// A step title, note or interface phrase in `lang`: a whole-text match first, then a pattern
+// whose {0}, {1} … stand for values or names ("Clip against {0}"), then sentence by sentence,
+// and inside a sentence the known phrases (longest first); text the catalogue does not know
+// stays as written (the language test fails on it).
 std::string tr(std::string_view english, Lang lang);
 // Mathematics in `lang`: its words (MathText::words, \text{…} in the LaTeX) translated, the
 // formulas themselves unchanged.

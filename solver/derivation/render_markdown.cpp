@@ -15,9 +15,9 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang) {
       out += fmt::format("> **{}.** {}\n\n", title, note);
     else
       out += fmt::format("{}. **{}**\n\n", ++number, title);
-    if (!s.formula.empty()) out += "   $$" + s.formula.latex + "$$\n\n";
-    if (!s.substitution.empty()) out += "   $$" + s.substitution.latex + "$$\n\n";
-    if (!s.result.empty()) out += "   $$\\Rightarrow\\; " + s.result.latex + "$$\n\n";
+    if (!s.formula.empty()) out += "   $$" + tr(s.formula, lang).latex + "$$\n\n";
+    if (!s.substitution.empty()) out += "   $$" + tr(s.substitution, lang).latex + "$$\n\n";
+    if (!s.result.empty()) out += "   $$\\Rightarrow\\; " + tr(s.result, lang).latex + "$$\n\n";
     if (!s.note.empty() && s.level == Step::Level::Info) out += "   " + note + "\n\n";
   }
   return out;
@@ -26,18 +26,18 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang) {
 std::string render_problem_markdown(const ProblemResult& p, Lang lang) {
   std::string out = fmt::format("## {} (`{}`)\n\n", p.id, p.kind);
   if (!p.text.empty()) out += p.text + "\n\n";
-  if (p.error) return out + fmt::format("**Error:** `{}`\n\n", p.error->format());
+  if (p.error) return out + fmt::format("**{}:** `{}`\n\n", tr("Error", lang), p.error->format());
   out += render_steps_markdown(p.derivation.steps(), lang);
-  out += "**Answers**\n\n| answer | value |\n| --- | --- |\n";
+  out += fmt::format("**{}**\n\n| {} | {} |\n| --- | --- |\n", tr("Answers", lang), tr("answer", lang), tr("value", lang));
   for (const std::string& name : p.ask)
     if (const Value* v = p.answers.find(name))
-      out += fmt::format("| `{}` | ${}$ |\n", name, v->shown().latex);
+      out += fmt::format("| `{}` | ${}$ |\n", name, tr(v->shown(), lang).latex);
   return out + "\n";
 }
 
 std::string render_markdown(const SetResult& set, Lang lang) {
   std::string out = fmt::format("# {}\n\n", set.title.empty() ? set.file : set.title);
-  for (const Diagnostic& d : set.errors) out += fmt::format("**Error:** `{}`\n\n", d.format());
+  for (const Diagnostic& d : set.errors) out += fmt::format("**{}:** `{}`\n\n", tr("Error", lang), d.format());
   for (const ProblemResult& p : set.problems) out += render_problem_markdown(p, lang);
   return out;
 }

@@ -35,9 +35,9 @@ std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& s
     } else {
       out += fmt::format("{}{}{:>2}. {}{}\n", indent, a.bold(), ++number, title, a.reset());
     }
-    if (!s.formula.empty()) out += body + s.formula.unicode + "\n";
-    if (!s.substitution.empty()) out += body + s.substitution.unicode + "\n";
-    if (!s.result.empty()) out += indent + "  ⇒ " + a.bold() + s.result.unicode + a.reset() + "\n";
+    if (!s.formula.empty()) out += body + tr(s.formula, style.lang).unicode + "\n";
+    if (!s.substitution.empty()) out += body + tr(s.substitution, style.lang).unicode + "\n";
+    if (!s.result.empty()) out += indent + "  ⇒ " + a.bold() + tr(s.result, style.lang).unicode + a.reset() + "\n";
     if (!s.note.empty()) out += body + a.dim() + note + a.reset() + "\n";
   }
   return out;
@@ -55,7 +55,7 @@ std::string render_problem_text(const ProblemResult& p, const TextStyle& style) 
   out += fmt::format("  {}{}{}\n", a.bold(), tr("Answers", style.lang), a.reset());
   for (const std::string& name : p.ask) {
     if (const Value* v = p.answers.find(name))
-      out += fmt::format("    {} = {}\n", name, v->shown().unicode);
+      out += fmt::format("    {} = {}\n", name, tr(v->shown(), style.lang).unicode);
   }
   return out;
 }

@@ -71,7 +71,7 @@ struct Backface {
     reversed_v.set("facing", Value::category(facing_of(-df)));
     return {{"reversed cross product",
              "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the front "
-             "normal is n = e₀ × e₁ (seed 003).",
+             "normal is n = e₀ × e₁.",
              "Normal (n = e₀ × e₁, counter-clockwise = front)", reversed_n},
             {"view vector reversed",
              "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the "

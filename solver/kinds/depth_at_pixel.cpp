@@ -97,7 +97,7 @@ struct DepthAtPixel {
     reversed.set("unit_normal", Value::vector(unit(Vec3<Exact>(-n))));
     out.push_back({"reversed cross product",
                    "You took " + g.order.second + " × " + g.order.first + ". The projection coordinates are "
-                   "left-handed (seed 001), so the front normal here is " + g.order.first + " × " + g.order.second + ".",
+                   "left-handed, so the front normal here is " + g.order.first + " × " + g.order.second + ".",
                    "Normal", reversed});
     Answers unnormalized;
     unnormalized.set("unit_normal", Value::vector(n));
@@ -190,8 +190,9 @@ struct DepthAtPixel {
     if (steps) {
       const auto sign_text = [](int s) { return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0"); };
       steps->add("Is the pixel inside the projected triangle?",
-                 math("sign E_AB, sign E_BC, sign E_CA at (xₛ, yₛ)",
-                      "\\operatorname{sign} E_{AB},\\; \\operatorname{sign} E_{BC},\\; \\operatorname{sign} E_{CA}\\ \\text{at}\\ (x_S, y_S)"),
+                 math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",
+                      "\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, y_S),\\; "
+                      "\\operatorname{sign} E_{CA}(x_S, y_S)"),
                  sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
                  word(inside ? "inside" : "outside"))
           .note = inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."

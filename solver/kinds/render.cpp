@@ -146,8 +146,8 @@ struct Render {
       }
       if (t.competitors.empty()) trace = std::string(kIndent) + "No triangle covers this pixel centre.";
       Step& s = steps->add(fmt::format("Pixel ({}, {})", q[0], q[1]),
-                           math("Z = 1 (cleared),  F = background ", "Z = 1\\ \\text{(cleared)},\\; F = \\text{background}\\ ") +
-                               math(color_text(scene.background)),
+                           math("Z = 1 (", "Z = 1\\ (") + word("cleared") + math("),  F = ", "),\\; F = ") + word("background") +
+                               math(" " + color_text(scene.background), "\\ " + color_text(scene.background)),
                            {},
                            word("colour") + math(" " + color_text(t.color) + ", ", "\\ " + color_text(t.color) + ",\\; ") +
                                word("depth") + math(" " + depth_text(t.depth) + "  (", "\\ " + depth_text(t.depth) + "\\quad (") +

@@ -70,7 +70,7 @@ struct Transform {
     if (g.steps.size() >= 2)
       out.push_back({"composition in the wrong order",
                      "You multiplied the steps in the order they are applied (A₁·A₂·…): with column vectors the "
-                     "step applied first stands rightmost, M = …·A₂·A₁ (seed 002: P′ = A₃A₂A₁P).",
+                     "step applied first stands rightmost, M = …·A₂·A₁ (as in P′ = A₃A₂A₁P).",
                      "Composite (first step applied first)", composite(matrices, true)});
     // Degrees taken as radians: every rotation by the angle's number of degrees, in radians.
     bool rotates = false;

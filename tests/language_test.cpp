@@ -1,0 +1,164 @@
+// Derivations and feedback in Japanese and Russian (issue 16): no English word reaches a
+// student reading them in another language, only formulas and names. The corpus is every
+// student-facing text of every bundled set, of generated variants of every kind in every API
+// convention, and of the grader's feedback (student_text.hpp).
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "grader/feedback.hpp"
+#include "grader/report.hpp"
+#include "solver/derivation/i18n.hpp"
+#include "solver/derivation/render.hpp"
+#include "student_text.hpp"
+
+namespace frustum {
+namespace {
+
+// Names that stay as they are in every language: APIs and their functions and parameters,
+// algorithms named after people, and the operators written in formulas.
+const std::set<std::string>& names() {
+  static const std::set<std::string> n = {"OpenGL",
+                                          "DirectX",
+                                          "Processing",
+                                          "Newell",
+                                          "Cohen",
+                                          "Sutherland",
+                                          "Hodgman",
+                                          "Rodrigues",
+                                          "NDC",
+                                          "perspective",
+                                          "frustum",
+                                          "ortho",
+                                          "camera",
+                                          "lookAt",
+                                          "gluLookAt",
+                                          "fovy",
+                                          "fovx",
+                                          "aspect",
+                                          "near",
+                                          "far",
+                                          "eye",
+                                          "center",
+                                          "up",
+                                          "width",
+                                          "height",
+                                          "screenY",
+                                          "tan",
+                                          "sin",
+                                          "sign",
+                                          "cos",
+                                          "atan",
+                                          "sqrt",
+                                          "min",
+                                          "max",
+                                          "OR",
+                                          "AND",
+                                          "xy",
+                                          "yz",
+                                          "xz",
+                                          "ny",
+                                          "nx",
+                                          "nz",
+                                          "xmin",
+                                          "xmax",
+                                          "ymin",
+                                          "ymax",
+                                          "zmin",
+                                          "zmax",
+                                          "inf",
+                                          "float",
+                                          "double",
+                                          "long",
+                                          "lights",
+                                          "screenY",
+                                          "GPU",
+                                          "true",
+                                          "false",
+                                          "Direct3D",
+                                          "FrontCounterClockwise",
+                                          "XMMatrixTranslation"};
+  return n;
+}
+
+// The English words of a translated text: runs of Latin letters of two or more that are not a
+// name; identifiers (with a digit or _) and `code` are names too.
+std::vector<std::string> english_words(const std::string& text) {
+  std::vector<std::string> out;
+  bool code = false;
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '`') {
+      code = !code;
+      ++i;
+      continue;
+    }
+    const auto ident = [](char ch) {
+      return (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') ||
+             ch == '_';
+    };
+    if (!ident(c)) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && ident(text[j])) ++j;
+    const std::string token = text.substr(i, j - i);
+    i = j;
+    // Identifiers (a digit, _, an index [i]) and short capitals (vertex names AB, ABC) are names.
+    if (code || token.size() < 2 || token.find_first_of("0123456789_") != std::string::npos)
+      continue;
+    if (j < text.size() && text[j] == '[') continue;
+    if (token.size() <= 3 &&
+        token.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ") == std::string::npos)
+      continue;
+    if (!names().count(token)) out.push_back(token);
+  }
+  return out;
+}
+
+TEST(Language, EnglishWordsAreFoundAndNamesAreNot) {
+  EXPECT_EQ(english_words("法線 (n = e₀ × e₁)"), std::vector<std::string>{});
+  EXPECT_EQ(english_words("perspective(fovy, aspect, near, far) の視体積"),
+            std::vector<std::string>{});
+  EXPECT_EQ(english_words("so the eye sees the 裏"),
+            (std::vector<std::string>{"so", "the", "sees", "the"}));
+  EXPECT_EQ(english_words("`camera.eye` из условия, p_eye, x₀"), std::vector<std::string>{});
+}
+
+TEST(Language, NoEnglishWordReachesAJapaneseOrRussianStudent) {
+  std::map<std::string, std::string> texts;  // text → where first seen
+  for (const test::StudentText& t : test::student_texts()) texts.emplace(t.text, t.where);
+  EXPECT_GT(texts.size(), 300u);
+  std::ofstream dump;
+  if (const char* path = std::getenv("FRUSTUM_UNTRANSLATED")) dump.open(path);
+  int failures = 0;
+  for (const Lang lang : {Lang::Ja, Lang::Ru})
+    for (const auto& [text, where] : texts) {
+      const std::string shown = tr(text, lang);
+      const std::vector<std::string> words = english_words(shown);
+      if (words.empty()) continue;
+      if (dump.is_open()) dump << to_string(lang) << "\t" << where << "\t" << text << "\n";
+      if (++failures <= 40)
+        ADD_FAILURE() << to_string(lang) << " " << where << ": \"" << words[0] << "\" in\n    "
+                      << shown << "\n    (from: " << text << ")";
+    }
+  EXPECT_EQ(failures, 0);
+}
+
+// What students read never cites this project's own lecture files ("seed 003"), in any language.
+TEST(Language, StudentTextCitesNoLectureFile) {
+  for (const test::StudentText& t : test::student_texts())
+    for (const Lang lang : {Lang::En, Lang::Ja, Lang::Ru}) {
+      std::string shown = tr(t.text, lang);
+      std::transform(shown.begin(), shown.end(), shown.begin(),
+                     [](unsigned char c) { return std::tolower(c); });
+      EXPECT_EQ(shown.find("seed 0"), std::string::npos) << t.where << ": " << shown;
+    }
+}
+
+}  // namespace
+}  // namespace frustum
