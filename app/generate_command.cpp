@@ -14,6 +14,7 @@
 #include "grader/atomic_file.hpp"
 #include "grader/paper.hpp"
 #include "solver/kinds/rng.hpp"
+#include "solver/kinds/solve_set.hpp"
 #include "solver/kinds/variants.hpp"
 #include "solver/kinds/yaml_document.hpp"
 
@@ -79,6 +80,17 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   if (!set.all_errors().empty()) {
     for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
     return 1;
+  }
+  // What `check` refuses is refused here too, before any file is written: a problem that
+  // cannot be solved (a placeholder that names no value, answers beyond a double's range).
+  {
+    bool unsolvable = false;
+    for (const ProblemSpec& p : set.problems)
+      if (const ProblemResult r = solve_problem(p, set.file, false); r.error) {
+        o.err << r.error->format() << "\n";
+        unsolvable = true;
+      }
+    if (unsolvable) return 1;
   }
   const bool vary_all = !set_varies(set);
   if (vary_all)
@@ -146,8 +158,15 @@ int run_generate(const GenerateCommand& g, const Output& o) {
                                   "generate`.\nAnswer key: answers/{}{}",
                                   source, who, seed, set_file, redraw_note)) +
         body;
-    const std::string key_text = emit_answer_key(
-        v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed));
+    std::vector<Diagnostic> unsolved;
+    const std::string key_text =
+        emit_answer_key(v.variant, v.student,
+                        fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed), &unsolved);
+    if (!unsolved.empty()) {  // a key without the problem would be a lost result: nothing is written
+      for (const Diagnostic& d : unsolved) o.err << v.name << ": " << d.format() << "\n";
+      status = 1;
+      return;
+    }
     try {
       const std::string set_path = variant_file(g.out_dir, g.set, v.name);
       const std::string key_path = variant_key_file(g.out_dir, g.set, v.name);

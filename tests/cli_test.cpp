@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sys/wait.h>
 
@@ -95,6 +96,21 @@ TEST(Cli, AnUnreadableAnswersFileIsOneErrorNotEveryProblemMissing) {
   EXPECT_EQ(r.out.find("missing"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("How to get it"), std::string::npos) << r.out;
   EXPECT_TRUE(stdout_of("grade " + seed("001_zbuffer_plane_method.yaml") + " " + path).out.empty());
+}
+
+TEST(Cli, GenerateRefusesWhatCheckRefusesBeforeWritingAnything) {
+  // {window} is a mapping: `check` refused the set, but `generate` wrote every variant and an
+  // answer key without the problem, exit 0.
+  const std::string dir = ::testing::TempDir() + "/gen-refused";
+  const std::string path = ::testing::TempDir() + "/placeholder_set.yaml";
+  std::ofstream(path) << "title: t\nvariants: per_student\nproblems:\n"
+                         "  - id: c\n    kind: clip_line\n    text: \"Clip against {window}.\"\n"
+                         "    given: {p: [-2, 5], q: [3, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}\n";
+  const CliRun r = run("generate " + path + " --student s1 -o " + dir);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("placeholder_set.yaml:4:5: problems[0].text: the placeholder {window}"), std::string::npos)
+      << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/placeholder_set-s1.yaml"));
 }
 
 TEST(Cli, BadUsageIsAnErrorNotACrash) {

@@ -456,12 +456,15 @@ std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant,
 }
 
 std::string emit_answer_key(const ProblemSet& variant, const std::string& student,
-                            const std::string& header) {
+                            const std::string& header, std::vector<Diagnostic>* errors) {
   std::string out = comment_lines(header);
   out += "student: " + emit_scalar(student) + "\nanswers:\n";
   for (const ProblemSpec& p : variant.problems) {
     const ProblemResult r = solve_problem(p, variant.file, false);
-    if (r.error) continue;
+    if (r.error) {
+      if (errors) errors->push_back(*r.error);
+      continue;
+    }
     out += "  " + emit_scalar(p.id) + ":\n";
     for (const std::string& name : p.ask)
       if (const Value* v = r.answers.find(name))

@@ -96,9 +96,9 @@ std::string fill_text(const std::string& text, const YAML::Node& given);
 std::optional<std::string> placeholder_error(const std::string& text, const YAML::Node& given);
 
 // The answer key (problem-format.md §2) of a variant: every asked answer, exact where possible.
-// A problem that cannot be solved is left out.
+// A problem that cannot be solved is left out, and its error added to `errors` when given.
 std::string emit_answer_key(const ProblemSet& variant, const std::string& student,
-                            const std::string& header);
+                            const std::string& header, std::vector<Diagnostic>* errors = nullptr);
 // One answer value as YAML (a value with no value is the word `none`).
 YAML::Node answer_node(const Value& v);
 
