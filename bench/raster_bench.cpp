@@ -97,6 +97,39 @@ void BM_Frustum(benchmark::State& state) {
   }
   report(state, small);
 }
+// The bandwidth ceiling fill is measured against, on the same buffers: every pixel of the
+// frame depth-tested against a plane and written (read depth, write depth and colour: 12 bytes
+// per fragment), a loop the compiler vectorises with nothing else in it. Fill's pixels/s over
+// this one's is the fraction of the ceiling it reaches (tools/performance.sh prints it).
+__attribute__((target_clones("avx2", "default"))) void depth_pass(float* depth, std::uint32_t* color, float z0,
+                                                                  float dz, std::uint32_t id) {
+  for (int y = 0; y < kHeight; ++y) {
+    float* d = depth + static_cast<std::size_t>(y) * kWidth;
+    std::uint32_t* c = color + static_cast<std::size_t>(y) * kWidth;
+    for (int x = 0; x < kWidth; ++x) {  // kWidth is a multiple of every vector width: no epilogue
+      const float z = z0 + dz * static_cast<float>(x);
+      const bool pass = z < d[x];
+      d[x] = pass ? z : d[x];
+      c[x] = pass ? id : c[x];
+    }
+  }
+}
+
+void BM_BandwidthCeiling(benchmark::State& state) {
+  Frame frame(kWidth, kHeight, {});
+  std::uint32_t pass = 0;
+  for (auto _ : state) {
+    // Alternating slopes so that about half the fragments pass, as in a real frame.
+    ++pass;
+    depth_pass(frame.depth.data.data(), frame.color.data.data(), 0.5f, (pass % 2 ? -1.0f : 1.0f) * 1e-5f, pass);
+    benchmark::ClobberMemory();
+  }
+  state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * kWidth * kHeight,
+                                                  benchmark::Counter::kIsRate);
+  state.counters["bytes/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * kWidth * kHeight * 12.0,
+                                                 benchmark::Counter::kIsRate, benchmark::Counter::kIs1024);
+}
+BENCHMARK(BM_BandwidthCeiling)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_Setup)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_Frustum)->Arg(1)->ArgName("small")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_Frustum)->Arg(0)->ArgName("small")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();

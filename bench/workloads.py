@@ -80,21 +80,18 @@ def peer(key_json, directory, out_csv):
 
 
 def scene(path, n):
-    # A grid of k × k cells, two small triangles each (about 2 px on a 1920 × 1080 image),
-    # all in front of the camera and inside the view volume: transform, clip and fill all run.
+    # A grid of k × k cells, two small triangles each (a few pixels on a 1920 × 1080 image), all
+    # in front of the camera and inside the view volume: transform, clip and fill all run.
     k = max(1, int(math.sqrt(n / 2)))
-    step = 2.0 / k
+    h = round(2.0 / k, 6)
+    rep = f"repeat: {{from: [0, 0, 0], to: [{k - 1}, {k - 1}, 0], step: [{h}, {h}, 0]}}"
     with open(path, "w") as f:
         f.write("scene:\n  viewport: {width: 1920, height: 1080}\n"
                 "  camera: {eye: [0, 0, 3], center: [0, 0, 0], up: [0, 1, 0]}\n"
-                "  perspective: {fovy: 60, aspect: 1.7778, near: 0.5, far: 10}\n"
+                "  perspective: {fovy: 60, aspect: 16/9, near: 1/2, far: 10}\n"
                 "  objects:\n"
-                f"    - triangle: [[0, 0, 0], [{step}, 0, 0.1], [0, {step}, -0.1]]\n"
-                f"      repeat: {{from: [-1, -1, 0], to: [{-1 + step * (k - 1)}, {-1 + step * (k - 1)}, 0], "
-                f"step: [{step}, {step}, 1]}}\n"
-                f"    - triangle: [[{step}, 0, 0.1], [{step}, {step}, 0], [0, {step}, -0.1]]\n"
-                f"      repeat: {{from: [-1, -1, 0], to: [{-1 + step * (k - 1)}, {-1 + step * (k - 1)}, 0], "
-                f"step: [{step}, {step}, 1]}}\n")
+                f"    - triangle: [[-1, -1, 0], [{h - 1}, -1, 0.1], [-1, {h - 1}, -0.1]]\n      {rep}\n"
+                f"    - triangle: [[{h - 1}, -1, 0.1], [{h - 1}, {h - 1}, 0], [-1, {h - 1}, -0.1]]\n      {rep}\n")
 
 
 def mesh(path, n):

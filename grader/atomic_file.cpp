@@ -187,6 +187,12 @@ void OutputTransaction::write(const std::string& relative, const std::string& co
   if (::close(fd) != 0) fail(published_path(relative), "cannot close");
 }
 
+void OutputTransaction::remove(const std::string& relative) {
+  const std::string path = (fs::path(run_) / relative).string();
+  if (::unlink(path.c_str()) != 0 && errno != ENOENT)
+    fail(published_path(relative), "cannot remove");
+}
+
 std::string OutputTransaction::published_path(const std::string& relative) const {
   return (fs::path(dir_) / relative).string();
 }

@@ -57,6 +57,8 @@ class OutputTransaction {
 
   // `relative` is under one of `names` ("feedback/s1.md", "gradebook.csv").
   void write(const std::string& relative, const std::string& content);
+  // Takes back a file of this run (none there is fine).
+  void remove(const std::string& relative);
   void commit();
 
   // Where a published file can be read: dir/relative.

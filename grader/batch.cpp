@@ -268,10 +268,11 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   // A set that does not vary per student is solved once, here: every child inherits it.
   std::optional<SolvedSet> solved;
   if (!options.set_for) solved = solve_for_grading(set);
-  // The typesetting head every feedback page carries, made once: the child sends its pages
-  // without it and the parent puts it in while writing (the same bytes as a page made alone).
+  // The typesetting head every feedback page carries (~0.7 MB), made once for the class.
   const std::string math_head = html_math_head();
-  // The child grades and renders; the parent only writes what comes back.
+  // The child grades, renders and writes the student's three files into this run (so that
+  // -j children share the writing); the parent gets the row back. A file the child could not
+  // write stops the batch, as the parent's own writes do.
   const auto work = [&](std::size_t i) -> std::string {
     const BatchEntry& e = entries[i];
     if (e.error) throw std::runtime_error(*e.error);
@@ -302,9 +303,15 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     j["message"] = !sub.errors.empty() ? sub.errors[0].format() : std::string();
     // No answers could be read at all: the row says so (the feedback still lists the problems).
     j["unreadable"] = !sub.answers.IsDefined() || !sub.answers.IsMap();
-    j["markdown"] = render_feedback_markdown(report, options.lang);
-    j["html"] = render_feedback_html(report, options.lang, "");
-    j["gradescope"] = json_text(gradescope_results(report, options.lang)) + "\n";
+    try {
+      out.write("feedback/" + stems[i] + ".md", render_feedback_markdown(report, options.lang));
+      out.write("feedback/" + stems[i] + ".html",
+                render_feedback_html(report, options.lang, math_head));
+      out.write("gradescope/" + stems[i] + ".json",
+                json_text(gradescope_results(report, options.lang)) + "\n");
+    } catch (const std::exception& x) {
+      j["write_error"] = x.what();
+    }
     return json_text(j, -1);
   };
   double max_score = 0;
@@ -323,6 +330,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     row.message = reason;
     row.score = 0;
     row.problem_scores.clear();
+    out.remove("feedback/" + row.feedback_stem + ".html");  // a child stopped after writing it
     write("feedback/" + row.feedback_stem + ".md",
           fmt::format("# {}\n\nThis submission could not be graded: {}\n",
                       markdown_escape(row.student), markdown_escape(reason)));
@@ -341,19 +349,16 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     if (r.status == IsolatedResult::Status::Ok) {
       // What the child sent is checked like any input: a malformed result is this row's error.
       try {
-        const json j =
-            json::parse(std::exchange(r.output, {}));  // not kept: memory flat in class size
+        const json j = json::parse(r.output);
+        if (j.contains("write_error"))
+          throw std::runtime_error(j["write_error"].get<std::string>());
         row.status = j.at("unreadable").get<bool>() ? "error" : "graded";
         row.score = j.at("score").get<double>();
         row.max_score = j.at("max_score").get<double>();
         for (const auto& s : j.at("problem_scores")) row.problem_scores.push_back(s.get<double>());
         row.message = j.at("message").get<std::string>();
-        write("feedback/" + stems[i] + ".md", j.at("markdown").get<std::string>());
-        std::string html = j.at("html").get<std::string>();
-        if (const std::size_t head_end = html.find("</head>"); head_end != std::string::npos)
-          html.insert(head_end, math_head);
-        write("feedback/" + stems[i] + ".html", html);
-        write("gradescope/" + stems[i] + ".json", j.at("gradescope").get<std::string>());
+        for (const char* f : {"feedback/{}.md", "feedback/{}.html", "gradescope/{}.json"})
+          files[i].push_back(out.published_path(fmt::format(fmt::runtime(f), stems[i])));
       } catch (const nlohmann::json::exception& x) {
         failed_row(row, "error", std::string("the grader's result could not be read: ") + x.what());
       }

@@ -15,8 +15,7 @@ namespace frustum {
 std::string render_feedback_markdown(const GradeReport& r, Lang lang = Lang::En);
 std::string render_feedback_html(const GradeReport& r, Lang lang = Lang::En);
 // The same page with `math_head` (html_math_head(): KaTeX with its fonts inlined, ~0.7 MB, the
-// same on every page) in its head: a batch makes it once, not once per student. With an empty
-// head the page's first "</head>" is where it goes (everything before it is escaped).
+// same on every page) in its head: a batch makes it once, not once per student.
 std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head);
 
 // Untrusted text (a student id, an answer as written, a message quoting it) as Markdown that

@@ -3,6 +3,8 @@
 #include "solver/util/exact_format.hpp"
 
 #include <cmath>
+#include <string_view>
+#include <unordered_map>
 
 namespace frustum {
 
@@ -43,8 +45,16 @@ json value_json(const Value& v) {
     case Value::Shape::Bool: return v.flag;
     case Value::Shape::Word: return v.word;
     case Value::Shape::WordMap: {
+      // Appended, not looked up: ordered_json finds a key by a linear search (20 k edges took
+      // seconds). A repeated key keeps its first place and its last word, as m[k] = w did.
       json m = json::object();
-      for (const auto& [k, w] : v.entries) m[k] = w;
+      auto& object = m.get_ref<json::object_t&>();
+      std::unordered_map<std::string_view, std::size_t> place;
+      for (const auto& [k, w] : v.entries)
+        if (const auto [it, fresh] = place.emplace(k, object.size()); fresh)
+          object.emplace_back(k, w);
+        else
+          (object.begin() + static_cast<std::ptrdiff_t>(it->second))->second = w;
       return m;
     }
     case Value::Shape::WordList: return v.words;

@@ -1,0 +1,273 @@
+#!/usr/bin/python3
+"""The measurements behind docs/performance.md, run by tools/performance.sh.
+
+Every figure in the page comes from this one run: the machine (CPU model, cores, load before
+and after), then scaling runs of the commands at sizes ten times apart (min / median / max wall
+time of repeated runs, CPU time, peak memory, the per-item cost and its growth), the class
+grading race against a Python + NumPy script over the same files, and the raster benchmarks
+(frustum_bench) with llvmpipe and the bandwidth ceiling.
+"""
+import argparse
+import datetime
+import json
+import os
+import platform
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+WORKLOADS = os.path.join(HERE, "workloads.py")
+PY = "/usr/bin/python3"  # Debian's, which has python3-numpy and python3-yaml
+
+
+def loadavg():
+    with open("/proc/loadavg") as f:
+        return " ".join(f.read().split()[:3])
+
+
+def cpu_model():
+    with open("/proc/cpuinfo") as f:
+        for line in f:
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    return platform.processor() or "unknown"
+
+
+def timed(cmd, cwd=None, env=None):
+    """Wall, CPU (user + system, children included) and peak memory of one run of cmd."""
+    out = subprocess.run(["/usr/bin/time", "-f", "%e %U %S %M"] + cmd, cwd=cwd, env=env,
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if out.returncode != 0:
+        sys.exit(f"failed ({out.returncode}): {' '.join(cmd)}\n{out.stderr[-2000:]}")
+    wall, user, system, rss = out.stderr.strip().splitlines()[-1].split()
+    return float(wall), float(user) + float(system), int(rss) / 1024.0
+
+
+def repeat(cmd, reps, before=None, **kw):
+    runs = []
+    for _ in range(reps):
+        if before:
+            before()
+        runs.append(timed(cmd, **kw))
+    walls = sorted(r[0] for r in runs)
+    return {"min": walls[0], "median": statistics.median(walls), "max": walls[-1],
+            "cpu": statistics.median(r[1] for r in runs), "mb": max(r[2] for r in runs), "reps": reps}
+
+
+def fmt_s(x):
+    return f"{x:.2f}" if x >= 0.1 else f"{x:.3f}"
+
+
+def rate_text(v, unit):
+    for div, prefix in ((1e9, "G"), (1e6, "M"), (1e3, "k")):
+        if v >= div:
+            return f"{v / div:.2f} {prefix} {unit}"
+    return f"{v:.0f} {unit}"
+
+
+def scaling_table(title, unit, rows):
+    """rows: (size, stats). Per-item cost from the median wall; growth against the size before."""
+    out = [f"| {unit} | wall min / median / max (s) | CPU (s) | peak MB | per {unit.rstrip('s')} (ms, median) | growth |",
+           "| ---: | ---: | ---: | ---: | ---: | ---: |"]
+    prev = None
+    verdicts = []
+    for size, st in rows:
+        per = 1000.0 * st["median"] / size
+        per_cpu = 1000.0 * st["cpu"] / size
+        growth = ""
+        if prev:
+            g = per / prev[0]
+            gc = per_cpu / prev[1] if prev[1] > 0 else float("nan")
+            growth = f"{g:.2f}× (CPU {gc:.2f}×)"
+            verdicts.append(min(g, gc))
+        out.append(f"| {size:,} | {fmt_s(st['min'])} / {fmt_s(st['median'])} / {fmt_s(st['max'])} "
+                   f"(×{st['reps']}) | {fmt_s(st['cpu'])} | {st['mb']:.0f} | {per:.3f} | {growth} |")
+        prev = (per, per_cpu)
+    ok = all(v <= 1.5 for v in verdicts)
+    verdict = ("per-item cost grows by at most 1.5× per ×10 (the smaller of wall and CPU growth): **linear**"
+               if ok else "per-item cost grows by **more than 1.5×** per ×10 somewhere: not linear by this test")
+    return f"### {title}\n\n" + "\n".join(out) + f"\n\n{verdict}.\n"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--frustum", required=True)
+    ap.add_argument("--bench")
+    ap.add_argument("--repo", required=True)
+    ap.add_argument("--full", action="store_true", help="also the largest sizes (generate 100 000, grade 10 000, render 10 M)")
+    ap.add_argument("--reps", type=int, default=3)
+    args = ap.parse_args()
+    F, R = os.path.abspath(args.frustum), args.reps
+    work = tempfile.mkdtemp(prefix="frustum-perf-")
+    md = []
+    say = lambda s: (md.append(s), print(s, file=sys.stderr, flush=True))
+    load_before = loadavg()
+    started = datetime.datetime.now(datetime.timezone.utc)
+    commit = subprocess.run(["git", "-C", args.repo, "describe", "--always", "--dirty"], capture_output=True,
+                            text=True).stdout.strip()
+    try:
+        build = [l for l in open(os.path.join(os.path.dirname(F), "CMakeCache.txt")) if l.startswith("CMAKE_BUILD_TYPE:")]
+        build_type = build[0].split("=", 1)[1].strip() if build else "?"
+    except OSError:
+        build_type = "?"
+
+    # Generate: seeded variants of a seed set (variants + keys written, exact answers).
+    gen_set = os.path.join(args.repo, "problems/seeds/001_zbuffer_plane_method.yaml")
+    gen_sizes = [100, 1000, 10000] + ([100000] if args.full else [])
+    rows = []
+    for n in gen_sizes:
+        out = os.path.join(work, f"gen{n}")
+        st = repeat([F, "generate", gen_set, "--seed", "1", "--count", str(n), "-o", out], 1 if n >= 10000 else R,
+                    before=lambda: shutil.rmtree(out, ignore_errors=True))
+        shutil.rmtree(out, ignore_errors=True)
+        rows.append((n, st))
+        print(f"generate {n}: {st}", file=sys.stderr, flush=True)
+    gen_table = scaling_table("`frustum generate 001_zbuffer_plane_method.yaml --seed 1 --count N` (3 problems, exact keys)",
+                              "variants", rows)
+    gen_100k = next((st for n, st in rows if n == 100000), None)
+
+    # Grade: a class of N students × 20 problems × 3 numeric answers, every output written.
+    cls_set = os.path.join(work, "class.yaml")
+    subprocess.run([PY, WORKLOADS, "class-set", cls_set], check=True)
+    key = os.path.join(work, "key.json")
+    with open(key, "w") as f:
+        subprocess.run([F, "solve", cls_set, "--format", "json"], stdout=f, check=True)
+    grade_sizes = [100, 1000] + ([10000] if args.full else [])
+    rows, by_size = [], {}
+    for n in grade_sizes:
+        subs = os.path.join(work, f"class{n}")
+        subprocess.run([PY, WORKLOADS, "class", subs, key, str(n)], check=True)
+        out = os.path.join(work, f"grades{n}")
+        st = repeat([F, "grade", cls_set, subs, "-o", out, "-j", "1"], 1 if n >= 10000 else R,
+                    before=lambda: shutil.rmtree(out, ignore_errors=True))
+        rows.append((n, st))
+        by_size[n] = st
+        print(f"grade {n}: {st}", file=sys.stderr, flush=True)
+    grade_table = scaling_table("`frustum grade class.yaml DIR -o OUT -j 1` (20 problems × 3 answers, gradebook + "
+                                "Markdown + HTML + Gradescope per student)", "students", rows)
+    subs = os.path.join(work, "class1000")
+    out = os.path.join(work, "grades1000")
+    ncpu = os.cpu_count() or 1
+    j_all = repeat([F, "grade", cls_set, subs, "-o", out, "-j", str(ncpu)], R,
+                   before=lambda: shutil.rmtree(out, ignore_errors=True))
+    sizes = {}
+    for d in ("feedback", "gradescope"):
+        p = os.path.join(out, d)
+        sizes[d] = sum(os.path.getsize(os.path.join(p, x)) for x in os.listdir(p))
+    peer = repeat([PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, "peer.csv")], R)
+    one = by_size[1000]
+
+    # Render: a grid of small triangles through the whole pipeline, to a PNG.
+    render_sizes = [100000, 1000000] + ([10000000] if args.full else [])
+    rows = []
+    for n in render_sizes:
+        scene = os.path.join(work, f"scene{n}.yaml")
+        subprocess.run([PY, WORKLOADS, "scene", scene, str(n)], check=True)
+        st = repeat([F, "render", scene, "-o", os.path.join(work, "r.png")], 1 if n >= 10000000 else R)
+        rows.append((n, st))
+        print(f"render {n}: {st}", file=sys.stderr, flush=True)
+    render_table = scaling_table("`frustum render SCENE -o out.png` (1920 × 1080, z-buffer, small triangles "
+                                 "in a grid; read, transform, clip, raster, PNG)", "triangles", rows)
+
+    # Edge visibility of a closed torus mesh (exact face tests, edge classes, JSON derivation).
+    rows = []
+    for n in (200, 2000, 20000):
+        mesh = os.path.join(work, f"mesh{n}.yaml")
+        subprocess.run([PY, WORKLOADS, "mesh", mesh, str(n)], check=True)
+        st = repeat([F, "solve", mesh, "--format", "json"], 1 if n >= 20000 else R)
+        rows.append((n, st))
+        print(f"edge_visibility {n}: {st}", file=sys.stderr, flush=True)
+    edge_table = scaling_table("`frustum solve torus.yaml --format json` (`edge_visibility`, a closed torus mesh)",
+                               "faces", rows)
+
+    # Raster benchmarks: Frustum's fill, llvmpipe with 1 thread and with every core, the ceiling.
+    bench_rows = {}
+    if args.bench:
+        for threads in sorted({1, ncpu}):
+            env = dict(os.environ, LP_NUM_THREADS=str(threads))
+            res = subprocess.run([args.bench, "--benchmark_filter=BM_(BandwidthCeiling|Setup|Frustum|Llvmpipe)",
+                                  "--benchmark_min_time=0.5", "--benchmark_repetitions=3",
+                                  "--benchmark_report_aggregates_only=true", "--benchmark_format=json"],
+                                 env=env, capture_output=True, text=True)
+            data = json.loads(res.stdout[:res.stdout.rindex("}") + 1])
+            for b in data["benchmarks"]:
+                if b.get("aggregate_name") != "median":
+                    continue
+                bench_rows[(threads, b["run_name"])] = b
+    load_after = loadavg()
+
+    say("# Performance\n")
+    say(f"Generated by `tools/performance.sh{' --full' if args.full else ''}` — every figure below is from "
+        "this one run; rerun it to reproduce them on your machine. Methods and earlier analyses: "
+        "[performance-notes.md](performance-notes.md).\n")
+    say(f"- date: {started:%Y-%m-%d %H:%M} UTC; commit {commit}; build type {build_type}")
+    say(f"- CPU: {cpu_model()}; {ncpu} cores visible; {platform.system()} {platform.release()}")
+    say(f"- load average (1, 5, 15 min): {load_before} before, {load_after} after — the machine is shared, so "
+        "compare figures within this page, not across runs")
+    say(f"- each size repeated {R}× (the largest once); wall time min / median / max, CPU time (user + system) "
+        "median, peak resident memory\n")
+
+    say("## Scaling: every command linear in its input\n")
+    say("Sizes ten times apart; the per-item cost may grow by at most 1.5× from one size to the next.\n")
+    for t in (gen_table, grade_table, render_table, edge_table):
+        say(t)
+    if gen_100k:
+        say(f"`generate --seed 1 --count 100000`: **{gen_100k['median']:.1f} s** wall "
+            f"({gen_100k['cpu']:.1f} s CPU) against the target of 20 s.\n")
+    else:
+        say("`generate --count 100000` is run by `tools/performance.sh --full`.\n")
+
+    say("## Class grading against a Python + NumPy script\n")
+    say("1,000 students × 20 problems × 3 numeric answers. Frustum writes everything (gradebook, Markdown, "
+        f"self-contained HTML — {sizes['feedback'] / 1e6:.0f} MB of feedback in all, each page carrying KaTeX "
+        f"and its fonts — and Gradescope files, {sizes['gradescope'] / 1e6:.0f} MB), the students graded in "
+        "isolated child processes (one per `-j` share, a fresh one after a timeout or crash), the outputs "
+        "published by one rename after one sync; the peer "
+        "(bench/workloads.py `peer`) reads the same YAML files with PyYAML's C loader, grades with NumPy "
+        "and writes only a gradebook.\n")
+    say("| | wall min / median / max (s) | CPU (s) | peak MB |")
+    say("| --- | ---: | ---: | ---: |")
+    for name, st in ((f"Frustum `-j 1`", one), (f"Frustum `-j {ncpu}`", j_all), ("Python + NumPy peer", peer)):
+        say(f"| {name} | {fmt_s(st['min'])} / {fmt_s(st['median'])} / {fmt_s(st['max'])} | {fmt_s(st['cpu'])} | "
+            f"{st['mb']:.0f} |")
+    say(f"\nFrustum `-j 1` / peer (median wall): {one['median'] / peer['median']:.2f}; speed-up of `-j {ncpu}` "
+        f"over `-j 1`: {one['median'] / j_all['median']:.2f}× wall, {one['cpu'] / max(j_all['cpu'], 1e-9):.2f}× "
+        f"CPU. Targets: ≤ 1 s with one core, ≥ 1.8× with two. The HTML pages are "
+        f"{sizes['feedback'] / 1000 / 1e6:.2f} MB a student, almost all of it the inlined KaTeX (script, "
+        "stylesheet, fonts); wall time beyond CPU time is waiting (the disk, the other processes on the "
+        "machine).\n")
+
+    if bench_rows:
+        say("## Rasterization against llvmpipe (frustum_bench, triangles in window coordinates)\n")
+        say("`LP_NUM_THREADS=N ./build/frustum_bench --benchmark_filter='BM_(BandwidthCeiling|Setup|Frustum|Llvmpipe)'`, "
+            "median of 3 repetitions; rates per second of process CPU time, wall time per frame beside it. "
+            "Frustum's fill is single-threaded; llvmpipe runs with the LP_NUM_THREADS shown.\n")
+        say("| benchmark | LP_NUM_THREADS | wall / frame (ms) | CPU / frame (ms) | rate |")
+        say("| --- | ---: | ---: | ---: | ---: |")
+        for (threads, name), b in sorted(bench_rows.items(), key=lambda kv: (kv[0][1], kv[0][0])):
+            if not name.startswith("BM_Llvmpipe") and threads != 1:
+                continue
+            rate = ", ".join(rate_text(b[k], k) for k in ("tris/s", "pixels/s") if k in b)
+            say(f"| {name} | {threads if name.startswith('BM_Llvmpipe') else '—'} | {b['real_time']:.2f} | "
+                f"{b['cpu_time']:.2f} | {rate} |")
+        ceiling = bench_rows.get((1, "BM_BandwidthCeiling/process_time"))
+        large = bench_rows.get((1, "BM_Frustum/small:0/process_time"))
+        if ceiling and large:
+            say(f"\nLarge-triangle fill reaches **{100 * large['pixels/s'] / ceiling['pixels/s']:.0f} %** of the "
+                f"bandwidth ceiling measured in this run ({ceiling['pixels/s'] / 1e9:.2f} G px/s: a vectorised "
+                "depth-test-and-write loop over the same 1920 × 1080 depth and colour buffers, 12 bytes per "
+                "fragment).\n")
+    say("## Not measured here\n")
+    say("- End-to-end rendering against llvmpipe (scene → transform → clip → raster → PNG on both sides): the "
+        "raster benchmark above still feeds llvmpipe vertices in NDC and Frustum window coordinates; "
+        "`frustum render` above is Frustum's end-to-end figure alone.\n")
+    with open(os.path.join(args.repo, "docs/performance.md"), "w") as f:
+        f.write("\n".join(md) + "\n")
+    shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,17 @@
+#!/bin/bash
+# Regenerates docs/performance.md from one run on this machine: builds frustum and frustum_bench
+# (Release), then runs bench/performance.py, which measures every figure the page shows (CPU
+# model, date and load included). Needs python3-numpy and python3-yaml (tools/packages/test.txt).
+#
+#   tools/performance.sh            sizes up to generate 10 000, grade 1 000, render 1 M (~10 min)
+#   tools/performance.sh --full     also generate 100 000, grade 10 000, render 10 M
+#   BUILD=build-dir REPS=5 tools/performance.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${BUILD:-build}
+if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+  cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFRUSTUM_BENCH=ON
+fi
+cmake --build "$BUILD" -j"$(nproc)" --target frustum frustum_bench
+exec /usr/bin/python3 bench/performance.py --frustum "$BUILD/frustum" --bench "$BUILD/frustum_bench" \
+  --repo . --reps "${REPS:-3}" "$@"
