@@ -55,6 +55,7 @@ SetResult solve_set(const ProblemSet& set, bool with_steps,
   SetResult out;
   out.file = set.file;
   out.title = set.title;
+  out.source = set.source;
   out.errors = set.errors;
   for (const ProblemSpec& p : set.problems) {
     if (only_id && p.id != *only_id) continue;
