@@ -291,6 +291,15 @@ constexpr Phrase kPhrases[] = {
     {"D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.",
      "D_f = 0 (厳密): 視点は多角形の平面上にあり, 多角形を真横から見る.",
      "D_f = 0 точно: глаз лежит в плоскости многоугольника и видит его с ребра."},
+    {"Face(s) {0} have D_f = 0 exactly: the eye lies in their plane, so they cover no area on "
+     "screen.",
+     "面 {0} は D_f = 0 (厳密): 視点がその平面上にあるので, 画面上で面積を持たない.",
+     "У граней {0} D_f = 0 точно: глаз лежит в их плоскости, поэтому на экране они не занимают "
+     "площади."},
+    {"They count as back for the edge classes, as back-face culling treats them.",
+     "稜線の分類では, 背面除去と同じく裏として扱う.",
+     "При классификации рёбер они считаются обратными, как их и трактует отсечение нелицевых "
+     "граней."},
     {"D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
      "counter-clockwise = front).",
      "D_f > 0: 表, D_f < 0: 裏 (p_i は面の最初の頂点, n はその法線, 反時計回り = 表).",
