@@ -13,6 +13,7 @@
 #include "grader/report.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
+#include "solver/kinds/solve_set.hpp"
 #include "student_text.hpp"
 
 namespace frustum {
@@ -149,15 +150,38 @@ TEST(Language, NoEnglishWordReachesAJapaneseOrRussianStudent) {
   EXPECT_EQ(failures, 0);
 }
 
-// What students read never cites this project's own lecture files ("seed 003"), in any language.
+bool cites_lecture_file(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return text.find("seed 0") != std::string::npos || text.find("seed's") != std::string::npos;
+}
+
+// What students read never cites this project's own lecture files ("seed 003"), in any language:
+// not the steps or the feedback, nor a bundled set's title, source or problem texts.
 TEST(Language, StudentTextCitesNoLectureFile) {
   for (const test::StudentText& t : test::student_texts())
-    for (const Lang lang : {Lang::En, Lang::Ja, Lang::Ru}) {
-      std::string shown = tr(t.text, lang);
-      std::transform(shown.begin(), shown.end(), shown.begin(),
-                     [](unsigned char c) { return std::tolower(c); });
-      EXPECT_EQ(shown.find("seed 0"), std::string::npos) << t.where << ": " << shown;
-    }
+    for (const Lang lang : {Lang::En, Lang::Ja, Lang::Ru})
+      EXPECT_FALSE(cites_lecture_file(tr(t.text, lang))) << t.where << ": " << tr(t.text, lang);
+  for (const std::string& file : test::bundled_sets()) {
+    const ProblemSet set = load_problem_set(file);
+    EXPECT_FALSE(cites_lecture_file(set.title + " " + set.source)) << file << ": " << set.title;
+    for (const ProblemSpec& p : set.problems)
+      EXPECT_FALSE(cites_lecture_file(p.text)) << file << ": " << p.id;
+  }
+}
+
+// A set's `source:` is cited under its title in every format, in the reader's language.
+TEST(Language, SourceIsCitedUnderTheTitle) {
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/004_placing_and_projecting.yaml"));
+  ASSERT_NE(set.source.find("Рябинин"), std::string::npos);
+  const SetResult solved = solve_set(set, true, std::nullopt);
+  EXPECT_NE(render_text(solved, TextStyle{false, Lang::Ru}).find("Источник: К. В. Рябинин"),
+            std::string::npos);
+  EXPECT_NE(render_markdown(solved, Lang::Ja).find("*出典: К. В. Рябинин"), std::string::npos);
+  EXPECT_NE(render_html(solved, Lang::En).find("<p class=\"source\">Source: К. В. Рябинин"),
+            std::string::npos);
+  EXPECT_EQ(render_json(solved)["source"], set.source);
 }
 
 }  // namespace

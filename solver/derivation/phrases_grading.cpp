@@ -9,6 +9,7 @@ namespace {
 constexpr Phrase kPhrases[] = {
     // Interface.
     {"Student", "学生", "Студент"},
+    {"Source", "出典", "Источник"},
     {"Score", "得点", "Баллы"},
     {"Problem", "問題", "Задача"},
     {"Answer", "解答", "Ответ"},

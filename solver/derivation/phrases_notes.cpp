@@ -35,6 +35,33 @@ constexpr Phrase kPhrases[] = {
      "Processing: матрицы и куб NDC [−1, 1]³ как в OpenGL, столбцы-векторы, начало окна вверху "
      "слева, y направлена "
      "вниз; углы в {0}"},
+    {"OpenGL: right-handed eye space looking down −z, column vectors (p′ = M·p), NDC cube [−1, 1]³ "
+     "with near → −1, "
+     "window origin bottom-left",
+     "OpenGL: 視点座標系は右手系で −z 方向を見る, 列ベクトル (p′ = M·p), 正規化視体積は立方体 [−1, "
+     "1]³ (near → −1), "
+     "ウィンドウの原点は左下",
+     "OpenGL: правая система координат вида, взгляд вдоль −z, столбцы-векторы (p′ = M·p), куб NDC "
+     "[−1, 1]³ (near → −1), "
+     "начало окна внизу слева"},
+    {"DirectX: left-handed eye space looking down +z, row vectors (p′ = p·M), NDC z in [0, 1], "
+     "window origin top-left "
+     "with y pointing down",
+     "DirectX: 視点座標系は左手系で +z 方向を見る, 行ベクトル (p′ = p·M), 正規化座標の z は [0, "
+     "1], "
+     "ウィンドウの原点は左上で y は下向き",
+     "DirectX: левая система координат вида, взгляд вдоль +z, строки-векторы (p′ = p·M), z в NDC "
+     "из [0, 1], "
+     "начало окна вверху слева, y направлена вниз"},
+    {"Processing: OpenGL's matrices and NDC cube [−1, 1]³, column vectors, window origin top-left "
+     "with y pointing "
+     "down",
+     "Processing: OpenGL の行列と正規化視体積 [−1, 1]³, 列ベクトル, ウィンドウの原点は左上で y "
+     "は下向き",
+     "Processing: матрицы и куб NDC [−1, 1]³ как в OpenGL, столбцы-векторы, начало окна вверху "
+     "слева, y направлена "
+     "вниз"},
+    {"Angles in {0}", "角度の単位は{0}", "Углы в {0}"},
     {"Column vectors, p′ = M·p.", "列ベクトル: p′ = M·p.", "Столбцы-векторы: p′ = M·p."},
     {"Column vectors, p′ = M·p. z = −n maps to z_ndc = −1 and z = −f to +1.",
      "列ベクトル: p′ = M·p. z = −n は z_ndc = −1 に, z = −f は +1 に移る.",
@@ -92,6 +119,46 @@ constexpr Phrase kPhrases[] = {
     {"The back clipping plane moves to z = 1, where x and y span [−1, 1].",
      "後方クリッピング面は z = 1 に移り, そこで x と y は [−1, 1] に広がる.",
      "Дальняя плоскость отсечения переходит в z = 1, где x и y пробегают [−1, 1]."},
+    {"The eye looks down +z: the view volume runs from z = z_min to z = z_max, with half-widths a "
+     "(in x) and b (in "
+     "y) at distance d. S and P map it to 0 ≤ z ≤ 1 with near → 0 and far → 1, and x, y to [−1, 1] "
+     "(OpenGL's NDC "
+     "cube instead sends near to −1).",
+     "視点は +z 方向を見る: 視体積は z = z_min から z = z_max まで, 距離 d での半幅は a (x 方向) "
+     "と b (y 方向). S と P は"
+     "これを 0 ≤ z ≤ 1 (前方クリッピング面 → 0, 後方クリッピング面 → 1), x, y を [−1, 1] に写す "
+     "(OpenGL の正規化視体積の立方体では前方は −1 に行く).",
+     "Глаз смотрит вдоль +z: видимый объём простирается от z = z_min до z = z_max, с полуширинами "
+     "a (по x) и b (по "
+     "y) на расстоянии d. S и P переводят его в 0 ≤ z ≤ 1 (ближняя плоскость → 0, дальняя → 1), а "
+     "x, y — в [−1, 1] "
+     "(куб NDC в OpenGL переводит ближнюю плоскость в −1)."},
+    {"A point (x, y, z) in front of the eye (z > 0) meets the near plane z = n at (x_n, y_n): the "
+     "projection divides by "
+     "the depth z.",
+     "視点の前方 (z > 0) の点 (x, y, z) は前方クリッピング面 z = n と (x_n, y_n) で交わる: "
+     "投影は奥行き z で割る.",
+     "Точка (x, y, z) перед глазом (z > 0) попадает на ближнюю плоскость z = n в (x_n, y_n): "
+     "проекция делит на "
+     "глубину z."},
+    {"A point (x, y, z) in front of the eye (z < 0, so −z is its depth) meets the near plane z = "
+     "−n at (x_n, y_n): the "
+     "projection divides by −z.",
+     "視点の前方 (z < 0 なので −z が奥行き) の点 (x, y, z) は前方クリッピング面 z = −n と (x_n, "
+     "y_n) で交わる (三角形の相似より). "
+     "投影は −z で割る.",
+     "Точка (x, y, z) перед глазом (z < 0, так что −z — её глубина) попадает на ближнюю плоскость "
+     "z = −n в "
+     "(x_n, y_n): проекция делит на −z."},
+    {"No 4 × 4 matrix divides by a coordinate, but the perspective divide by w′ does: the matrix "
+     "only has to put the "
+     "depth into w′ and scale x_n, y_n from the window [l, r] × [b, t] to [−1, 1].",
+     "4 × 4 行列は座標で割ることはできないが, w′ による透視除算ならできる: 行列は奥行きを w′ "
+     "に入れ, x_n, y_n を"
+     "窓 [l, r] × [b, t] から [−1, 1] に拡大縮小すればよい.",
+     "Никакая матрица 4 × 4 не делит на координату, а перспективное деление на w′ делит: матрице "
+     "остаётся "
+     "поместить глубину в w′ и перевести x_n, y_n из окна [l, r] × [b, t] в [−1, 1]."},
     {"X′ and Y′ are unchanged and W′ = z: the matrix is projective, not affine.",
      "X′ と Y′ は変わらず W′ = z: この行列はアフィンではなく射影変換である.",
      "X′ и Y′ не меняются, а W′ = z: матрица проективная, не аффинная."},
@@ -224,6 +291,15 @@ constexpr Phrase kPhrases[] = {
     {"D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.",
      "D_f = 0 (厳密): 視点は多角形の平面上にあり, 多角形を真横から見る.",
      "D_f = 0 точно: глаз лежит в плоскости многоугольника и видит его с ребра."},
+    {"Face(s) {0} have D_f = 0 exactly: the eye lies in their plane, so they cover no area on "
+     "screen.",
+     "面 {0} は D_f = 0 (厳密): 視点がその平面上にあるので, 画面上で面積を持たない.",
+     "У граней {0} D_f = 0 точно: глаз лежит в их плоскости, поэтому на экране они не занимают "
+     "площади."},
+    {"They count as back for the edge classes, as back-face culling treats them.",
+     "稜線の分類では, 背面除去と同じく裏として扱う.",
+     "При классификации рёбер они считаются обратными, как их и трактует отсечение нелицевых "
+     "граней."},
     {"D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
      "counter-clockwise = front).",
      "D_f > 0: 表, D_f < 0: 裏 (p_i は面の最初の頂点, n はその法線, 反時計回り = 表).",
@@ -311,6 +387,14 @@ constexpr Phrase kPhrases[] = {
      "Следите за порядком векторного произведения: в левой системе лицевая нормаль треугольника "
      "ABC — AC × AB "
      "(порядок по умолчанию)."},
+    {"In a right-handed frame AB × AC points to the side from which A, B, C run counter-clockwise; "
+     "in a left-handed "
+     "frame (such as projection coordinates) that side's normal is AC × AB.",
+     "右手系では AB × AC は A, B, C が反時計回りに見える側を向く. 左手系 (投影座標系など) "
+     "ではその側の法線は AC × AB.",
+     "В правой системе AB × AC направлен в ту сторону, откуда A, B, C идут против часовой стрелки; "
+     "в левой системе "
+     "(например, в координатах проекции) нормаль этой стороны — AC × AB."},
     {"Mind the order of the cross product; this problem uses {0}.",
      "外積の順序に注意. この問題では {0} を使う.",
      "Следите за порядком векторного произведения; в этой задаче используется {0}."},

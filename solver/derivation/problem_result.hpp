@@ -26,6 +26,7 @@ struct ProblemResult {
 struct SetResult {
   std::string file;
   std::string title;
+  std::string source;  // cited under the title
   std::vector<ProblemResult> problems;
   std::vector<Diagnostic> errors;  // errors of the set itself (bad YAML, no problems list)
 };

@@ -134,6 +134,9 @@ std::string render_html(const SetResult& set, Lang lang) {
       "td, th {{ border: 1px solid #ccd; padding: .3rem .6rem; text-align: left; "
       "}}</style>\n{}</head>\n<body>\n<h1>{}</h1>\n",
       to_string(lang), svg_escape(title), html_math_head(), svg_escape(title));
+  if (!set.source.empty())
+    out += fmt::format("<p class=\"source\">{}: {}</p>\n", svg_escape(tr("Source", lang)),
+                       svg_escape(set.source));
   for (const Diagnostic& d : set.errors)
     out += fmt::format("<p class=\"error\">{}</p>\n", svg_escape(d.format()));
   for (const ProblemResult& p : set.problems) {

@@ -1,10 +1,9 @@
-#include "solver/derivation/render.hpp"
-
-#include "solver/util/exact_format.hpp"
-
 #include <cmath>
 #include <string_view>
 #include <unordered_map>
+
+#include "solver/derivation/render.hpp"
+#include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
@@ -41,9 +40,12 @@ json value_json(const Value& v) {
   switch (v.shape) {
     case Value::Shape::Scalar:
     case Value::Shape::Vector:
-    case Value::Shape::Matrix: return shaped(v, v.numbers, number_json);
-    case Value::Shape::Bool: return v.flag;
-    case Value::Shape::Word: return v.word;
+    case Value::Shape::Matrix:
+      return shaped(v, v.numbers, number_json);
+    case Value::Shape::Bool:
+      return v.flag;
+    case Value::Shape::Word:
+      return v.word;
     case Value::Shape::WordMap: {
       // Appended, not looked up: ordered_json finds a key by a linear search (20 k edges took
       // seconds). A repeated key keeps its first place and its last word, as m[k] = w did.
@@ -57,8 +59,10 @@ json value_json(const Value& v) {
           (object.begin() + static_cast<std::ptrdiff_t>(it->second))->second = w;
       return m;
     }
-    case Value::Shape::WordList: return v.words;
-    case Value::Shape::Null: return nullptr;
+    case Value::Shape::WordList:
+      return v.words;
+    case Value::Shape::Null:
+      return nullptr;
   }
   return nullptr;
 }
@@ -76,7 +80,8 @@ json steps_json(const std::vector<Step>& steps) {
       if (!m->empty()) text += (text.empty() ? "" : "\n") + m->unicode;
     if (!s.note.empty()) text += (text.empty() ? "" : "\n") + s.note;
     json j = {{"title", s.title}, {"text", text}};
-    if (!s.formula.empty()) j["formula"] = {{"text", s.formula.unicode}, {"latex", s.formula.latex}};
+    if (!s.formula.empty())
+      j["formula"] = {{"text", s.formula.unicode}, {"latex", s.formula.latex}};
     if (!s.substitution.empty())
       j["substitution"] = {{"text", s.substitution.unicode}, {"latex", s.substitution.latex}};
     if (!s.result.empty()) j["result"] = {{"text", s.result.unicode}, {"latex", s.result.latex}};
@@ -115,6 +120,7 @@ json render_json(const SetResult& set) {
   json j = json::object();
   j["file"] = set.file;
   if (!set.title.empty()) j["title"] = set.title;
+  if (!set.source.empty()) j["source"] = set.source;
   if (!set.errors.empty()) {
     json errs = json::array();
     for (const Diagnostic& d : set.errors) errs.push_back(d.format());

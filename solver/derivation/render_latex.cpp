@@ -44,6 +44,8 @@ std::string render_latex(const SetResult& set, Lang lang) {
       "\\usepackage[margin=2cm]{geometry}\n\\setcounter{MaxMatrixCols}{20}\n\\allowdisplaybreaks\n"
       "\\begin{document}\n\\section*{" +
       prose(title) + "}\n";
+  if (!set.source.empty())
+    out += "\\emph{" + prose(tr("Source", lang)) + ": " + prose(set.source) + "}\n\n";
   for (const Diagnostic& d : set.errors)
     out += "\\textbf{" + prose(tr("error", lang)) + ":} \\texttt{" + prose(d.format()) + "}\n\n";
   for (const ProblemResult& p : set.problems) {

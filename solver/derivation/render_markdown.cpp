@@ -1,6 +1,6 @@
-#include "solver/derivation/render.hpp"
-
 #include <fmt/format.h>
+
+#include "solver/derivation/render.hpp"
 
 namespace frustum {
 
@@ -28,7 +28,8 @@ std::string render_problem_markdown(const ProblemResult& p, Lang lang) {
   if (!p.text.empty()) out += p.text + "\n\n";
   if (p.error) return out + fmt::format("**{}:** `{}`\n\n", tr("Error", lang), p.error->format());
   out += render_steps_markdown(p.derivation.steps(), lang);
-  out += fmt::format("**{}**\n\n| {} | {} |\n| --- | --- |\n", tr("Answers", lang), tr("answer", lang), tr("value", lang));
+  out += fmt::format("**{}**\n\n| {} | {} |\n| --- | --- |\n", tr("Answers", lang),
+                     tr("answer", lang), tr("value", lang));
   for (const std::string& name : p.ask)
     if (const Value* v = p.answers.find(name))
       out += fmt::format("| `{}` | ${}$ |\n", name, tr(v->shown(), lang).latex);
@@ -37,7 +38,9 @@ std::string render_problem_markdown(const ProblemResult& p, Lang lang) {
 
 std::string render_markdown(const SetResult& set, Lang lang) {
   std::string out = fmt::format("# {}\n\n", set.title.empty() ? set.file : set.title);
-  for (const Diagnostic& d : set.errors) out += fmt::format("**{}:** `{}`\n\n", tr("Error", lang), d.format());
+  if (!set.source.empty()) out += fmt::format("*{}: {}*\n\n", tr("Source", lang), set.source);
+  for (const Diagnostic& d : set.errors)
+    out += fmt::format("**{}:** `{}`\n\n", tr("Error", lang), d.format());
   for (const ProblemResult& p : set.problems) out += render_problem_markdown(p, lang);
   return out;
 }

@@ -1,8 +1,7 @@
-#include "solver/derivation/render.hpp"
+#include <fmt/format.h>
 
 #include "solver/derivation/problem_result.hpp"
-
-#include <fmt/format.h>
+#include "solver/derivation/render.hpp"
 
 namespace frustum {
 
@@ -37,7 +36,8 @@ std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& s
     }
     if (!s.formula.empty()) out += body + tr(s.formula, style.lang).unicode + "\n";
     if (!s.substitution.empty()) out += body + tr(s.substitution, style.lang).unicode + "\n";
-    if (!s.result.empty()) out += indent + "  ⇒ " + a.bold() + tr(s.result, style.lang).unicode + a.reset() + "\n";
+    if (!s.result.empty())
+      out += indent + "  ⇒ " + a.bold() + tr(s.result, style.lang).unicode + a.reset() + "\n";
     if (!s.note.empty()) out += body + a.dim() + note + a.reset() + "\n";
   }
   return out;
@@ -48,7 +48,8 @@ std::string render_problem_text(const ProblemResult& p, const TextStyle& style) 
   std::string out = fmt::format("{}━━ {} · {} ━━{}\n", a.bold(), p.id, p.kind, a.reset());
   if (!p.text.empty()) out += p.text + "\n";
   if (p.error) {
-    out += fmt::format("  {}{}:{} {}\n", a.red(), tr("error", style.lang), a.reset(), p.error->format());
+    out += fmt::format("  {}{}:{} {}\n", a.red(), tr("error", style.lang), a.reset(),
+                       p.error->format());
     return out;
   }
   out += render_steps_text(p.derivation.steps(), style);
@@ -63,7 +64,9 @@ std::string render_problem_text(const ProblemResult& p, const TextStyle& style) 
 std::string render_text(const SetResult& set, const TextStyle& style) {
   const Ansi a{style.color};
   std::string out;
-  if (!set.title.empty()) out += fmt::format("{}{}{}\n\n", a.bold(), set.title, a.reset());
+  if (!set.title.empty()) out += fmt::format("{}{}{}\n", a.bold(), set.title, a.reset());
+  if (!set.source.empty()) out += fmt::format("{}: {}\n", tr("Source", style.lang), set.source);
+  if (!set.title.empty() || !set.source.empty()) out += "\n";
   for (const Diagnostic& d : set.errors)
     out += fmt::format("{}error:{} {}\n", a.red(), a.reset(), d.format());
   for (const ProblemResult& p : set.problems) out += render_problem_text(p, style) + "\n";

@@ -17,6 +17,7 @@ namespace {
 struct Backface {
   static constexpr const char* kName = "backface";
   static constexpr const char* kSummary = "is a polygon front- or back-facing from the eye";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     Polygon3<Exact> points;
     Vec3<Exact> eye;

@@ -15,6 +15,7 @@ namespace {
 struct ClipLine {
   static constexpr const char* kName = "clip_line";
   static constexpr const char* kSummary = "Cohen–Sutherland outcodes and clipping of a segment (2D or 3D)";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::vector<Exact> p, q;
     clip_given::Region region;

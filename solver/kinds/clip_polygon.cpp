@@ -15,6 +15,7 @@ namespace {
 struct ClipPolygon {
   static constexpr const char* kName = "clip_polygon";
   static constexpr const char* kSummary = "Sutherland–Hodgman clipping of a polygon (2D window or 3D volume)";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr std::size_t kMaxVertices = 1000;
   struct Given {
     std::vector<std::vector<Exact>> points;

@@ -21,6 +21,7 @@ namespace {
 struct DepthAtPixel {
   static constexpr const char* kName = "depth_at_pixel";
   static constexpr const char* kSummary = "z of a pixel inside a projected triangle by the plane method";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::array<Vec3<Exact>, 3> triangle;
     Vec2<Exact> pixel;

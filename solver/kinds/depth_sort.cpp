@@ -17,6 +17,7 @@ namespace {
 struct DepthSort {
   static constexpr const char* kName = "depth_sort";
   static constexpr const char* kSummary = "painter's algorithm: centroid order back to front, and its conflicts";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::vector<Polygon3<Exact>> polygons;
     DepthViewer viewer;

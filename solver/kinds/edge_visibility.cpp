@@ -30,6 +30,7 @@ struct EdgeVisibility {
   static constexpr const char* kName = "edge_visibility";
   static constexpr const char* kSummary =
       "front/back faces and visible, silhouette and hidden edges of a polyhedron";
+  static constexpr ConventionUse kUses{.api = false, .angles = true};
   struct Given {
     Mesh mesh;
     std::string solid;  // empty for a given mesh

@@ -115,6 +115,9 @@ struct KindInfo {
   std::function<std::string(const std::any& given, const Answers& answers)> ill_conditioned;
   // Optional. The geometry `frustum draw` pictures (hidden lines, painter vs z-buffer).
   std::function<Drawable(const std::any& given)> drawable;
+  // The conventions the answers depend on, stated in the derivation's first step (K::kUses;
+  // default: all of them).
+  ConventionUse uses;
 
   const AnswerSpec* answer(const std::string& name) const;
 };
@@ -152,6 +155,7 @@ KindInfo make_kind() {
     };
   if constexpr (requires(const G& g) { K::drawable(g); })
     k.drawable = [](const std::any& g) { return K::drawable(std::any_cast<const G&>(g)); };
+  if constexpr (requires { K::kUses; }) k.uses = K::kUses;
   return k;
 }
 

@@ -15,6 +15,7 @@ namespace {
 struct LookAt {
   static constexpr const char* kName = "look_at";
   static constexpr const char* kSummary = "the view matrix of a camera at eye looking at center";
+  static constexpr ConventionUse kUses{.api = true, .angles = false};
   struct Given {
     Vec3<Exact> eye, center, up;
     std::vector<Vec3<Exact>> points;

@@ -14,6 +14,7 @@ namespace {
 struct Normal {
   static constexpr const char* kName = "normal";
   static constexpr const char* kSummary = "the normal and unit normal of a polygon";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     Polygon3<Exact> points;              // when given as a polygon
     std::optional<CrossOrder> order;     // when given as A, B, C
@@ -53,6 +54,12 @@ struct Normal {
   static Answers solve(const Given& g, Derivation* steps) {
     Vec3<Exact> n;
     if (g.order) {
+      // Which side the normal points to depends on the frame's handedness: said here, as
+      // depth_at_pixel says it for its left-handed projection coordinates.
+      if (steps)
+        steps->note("Orientation", "In a right-handed frame AB × AC points to the side from which A, B, C run "
+                                   "counter-clockwise; in a left-handed frame (such as projection coordinates) "
+                                   "that side's normal is AC × AB.");
       n = cross_normal_with_steps({g.points[0], g.points[1], g.points[2]}, *g.order, "A", steps);
     } else {
       n = polygon_normal_with_steps(g.points, "points", steps);

@@ -14,6 +14,7 @@ namespace {
 struct Plane {
   static constexpr const char* kName = "plane";
   static constexpr const char* kSummary = "the plane through points, or through a point with a normal";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     Polygon3<Exact> points;  // empty when point + normal
     Vec3<Exact> point;

@@ -12,7 +12,7 @@ namespace frustum {
 
 namespace {
 
-const std::vector<std::string> kSetFields = {"title", "conventions", "tolerance", "problems",
+const std::vector<std::string> kSetFields = {"title", "source", "conventions", "tolerance", "problems",
                                              "description", "grading", "variants"};
 const std::vector<std::string> kProblemFields = {"id",     "kind",        "text",
                                                  "given",  "ask",         "points",
@@ -277,6 +277,7 @@ ProblemSet load_problem_set_from(const YamlDocument& doc, const std::string& nam
       fail_at(root, name, "", "expected a problem set: a mapping with a 'problems' list");
     check_keys(root, kSetFields, name, "");
     if (root["title"].IsDefined()) set.title = read_string(root["title"], name, "title");
+    if (root["source"].IsDefined()) set.source = read_string(root["source"], name, "source");
     if (root["variants"].IsDefined()) {
       const std::string v = read_string(root["variants"], name, "variants");
       if (v != "per_student" && v != "fixed")

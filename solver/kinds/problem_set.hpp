@@ -91,6 +91,7 @@ struct VariantInfo {
 struct ProblemSet {
   std::string file;
   std::string title;
+  std::string source;  // what the set follows (a course's lecture, a textbook), cited in headers
   bool per_student = false;            // variants: per_student
   std::optional<VariantInfo> variant;  // set when this is a generated variant
   Conventions conventions;

@@ -19,6 +19,7 @@ namespace {
 struct Render {
   static constexpr const char* kName = "render";
   static constexpr const char* kSummary = "colour and depth of queried pixels of a rendered scene (z-buffer trace)";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr std::size_t kMaxPixels = 64;
   static constexpr std::size_t kMaxTraceLines = 24;  // competitors listed per pixel
   static constexpr const char* kIndent = "\n        ";  // trace lines line up under the note

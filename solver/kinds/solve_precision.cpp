@@ -38,7 +38,8 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
     }();
     r.answers = n.answers;
     if (with_steps) {
-      r.derivation.note("Conventions", describe(spec.conventions));
+      if (const std::string c = describe(spec.conventions, spec.info->uses); !c.empty())
+        r.derivation.note("Conventions", c);
       std::string text = backend_note(precision);
       for (const std::string& how : n.notes) text += " " + how + ".";
       r.derivation.note("Backend", text);

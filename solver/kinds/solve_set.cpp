@@ -25,7 +25,9 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
     return r;
   }
   try {
-    if (with_steps) r.derivation.note("Conventions", describe(spec.conventions));
+    // The conventions line only where a convention can change the answers.
+    if (const std::string c = describe(spec.conventions, spec.info->uses); with_steps && !c.empty())
+      r.derivation.note("Conventions", c);
     Answers answers = spec.info->solve(spec.given, with_steps ? &r.derivation : nullptr);
     // Exact inputs near 1e308 can give answers beyond double's range (1e308 · 1e308): their
     // decimals would be inf or NaN (null in JSON), so the problem is refused instead.
@@ -55,6 +57,7 @@ SetResult solve_set(const ProblemSet& set, bool with_steps,
   SetResult out;
   out.file = set.file;
   out.title = set.title;
+  out.source = set.source;
   out.errors = set.errors;
   for (const ProblemSpec& p : set.problems) {
     if (only_id && p.id != *only_id) continue;

@@ -15,6 +15,7 @@ struct Vectors {
   static constexpr const char* kName = "vectors";
   static constexpr const char* kSummary =
       "dot and cross products of two vectors, the parallelogram's area, sin, cos and the angle";
+  static constexpr ConventionUse kUses{.api = false, .angles = true};
   struct Given {
     Vec3<Exact> a, b;
     AngleUnit angles;

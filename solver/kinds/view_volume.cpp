@@ -15,6 +15,7 @@ namespace {
 struct ViewVolume {
   static constexpr const char* kName = "view_volume";
   static constexpr const char* kSummary = "the normalized perspective view volume of Foley et al.";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     Exact d, a, b, z_min, z_max;
     Vec3<Exact> point;
@@ -47,6 +48,13 @@ struct ViewVolume {
     p(3, 2) = 1;
     p(3, 3) = 0;
     Answers out;
+    // The volume's own coordinates, stated instead of an API's eye space: they differ from
+    // OpenGL's (near → 0 here, −1 there), and a header saying otherwise would contradict step ②.
+    if (steps)
+      steps->note("The view volume and where it goes",
+                  "The eye looks down +z: the view volume runs from z = z_min to z = z_max, with half-widths a "
+                  "(in x) and b (in y) at distance d. S and P map it to 0 ≤ z ≤ 1 with near → 0 and far → 1, "
+                  "and x, y to [−1, 1] (OpenGL's NDC cube instead sends near to −1).");
     out.set("scale_matrix", matrix_value(paper_form(s, g.api)));
     out.set("perspective_matrix", matrix_value(paper_form(p, g.api)));
     if (steps) {

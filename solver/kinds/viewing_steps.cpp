@@ -234,6 +234,44 @@ MathText volume_text(const Volume<Exact>& v) {
   return m;
 }
 
+// Why a perspective matrix has the form it has, in the lectures' order: similar triangles put
+// the projected point at n·x/(−z), a division no matrix can do; homogeneous coordinates move
+// −z into w′, and the perspective divide performs it (DirectX: eye space looks down +z).
+void perspective_idea_steps(Api api, Derivation& steps) {
+  const bool plus_z = api == Api::DirectX;
+  steps
+      .add("Similar triangles",
+           plus_z ? math("x_n : n = x : z,  y_n : n = y : z", "x_n : n = x : z,\\; y_n : n = y : z")
+                  : math("x_n : n = x : (−z),  y_n : n = y : (−z)",
+                         "x_n : n = x : (-z),\\; y_n : n = y : (-z)"),
+           {},
+           plus_z ? math("x_n = n·x / z,  y_n = n·y / z",
+                         "x_n = \\frac{n\\,x}{z},\\; y_n = \\frac{n\\,y}{z}")
+                  : math("x_n = n·x / (−z),  y_n = n·y / (−z)",
+                         "x_n = \\frac{n\\,x}{-z},\\; y_n = \\frac{n\\,y}{-z}"))
+      .note = plus_z ? "A point (x, y, z) in front of the eye (z > 0) meets the near plane z = n "
+                       "at (x_n, y_n): "
+                       "the projection divides by the depth z."
+                     : "A point (x, y, z) in front of the eye (z < 0, so −z is its depth) meets "
+                       "the near plane "
+                       "z = −n at (x_n, y_n): the projection divides by −z.";
+  steps
+      .add("Homogeneous coordinates: the depth goes into w′",
+           plus_z ? math("w′ = z  (M_∗4 = (0, 0, 1, 0)ᵀ)",
+                         "w' = z \\quad (M_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
+                  : math("w′ = −z  (M_4∗ = (0, 0, −1, 0))",
+                         "w' = -z \\quad (M_{4 \\ast} = (0, 0, -1, 0))"),
+           {},
+           plus_z ? math("x_ndc = x′ / w′ = x′ / z",
+                         "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{z}")
+                  : math("x_ndc = x′ / w′ = x′ / (−z)",
+                         "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{-z}"))
+      .note =
+      "No 4 × 4 matrix divides by a coordinate, but the perspective divide by w′ does: the matrix "
+      "only "
+      "has to put the depth into w′ and scale x_n, y_n from the window [l, r] × [b, t] to [−1, 1].";
+}
+
 }  // namespace
 
 MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps) {
@@ -251,6 +289,7 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   }
   MatX<Exact> m = p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
   m = canonical(m);
+  if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, *steps);
   if (steps) {
     const bool ortho = p.type == ProjectionSpec::Type::Ortho;
     Step& s = steps->add(ortho ? "Orthographic projection matrix" : "Perspective projection matrix",

@@ -12,6 +12,7 @@ namespace {
 struct Viewport {
   static constexpr const char* kName = "viewport";
   static constexpr const char* kSummary = "NDC to window coordinates";
+  static constexpr ConventionUse kUses{.api = true, .angles = false};
   struct Given {
     Vec3<Exact> ndc;
     Exact width, height;

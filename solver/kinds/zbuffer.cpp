@@ -22,6 +22,7 @@ namespace {
 struct ZBuffer {
   static constexpr const char* kName = "zbuffer";
   static constexpr const char* kSummary = "frame and depth buffers of the Z-buffer algorithm on a small grid";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr int kMaxSize = 256;         // the largest grid: 256 × 256 pixels
   static constexpr int kMaxShownSize = 32;     // larger grids are not written into the derivation
   static constexpr double kInfinity = 1e30;    // +∞ in the numbers of `depth`

@@ -28,7 +28,9 @@ std::optional<AngleUnit> parse_angle_unit(std::string_view text) {
   return std::nullopt;
 }
 
-std::string describe(const Conventions& c) {
+std::string describe(const Conventions& c, ConventionUse use) {
+  const std::string_view unit = c.angles == AngleUnit::Degrees ? "degrees" : "radians";
+  if (!use.api) return use.angles ? "Angles in " + std::string(unit) : "";
   std::string s;
   switch (c.api) {
     case Api::OpenGL:
@@ -44,7 +46,7 @@ std::string describe(const Conventions& c) {
           "NDC z in [0, 1], window origin top-left with y pointing down";
       break;
   }
-  s += c.angles == AngleUnit::Degrees ? "; angles in degrees" : "; angles in radians";
+  if (use.angles) s += "; angles in " + std::string(unit);
   return s;
 }
 

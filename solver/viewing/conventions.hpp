@@ -26,7 +26,15 @@ std::string_view to_string(AngleUnit unit);
 std::optional<Api> parse_api(std::string_view text);
 std::optional<AngleUnit> parse_angle_unit(std::string_view text);
 
-// One sentence naming the conventions, for the first step of every derivation.
-std::string describe(const Conventions& c);
+// Which conventions can change a kind's answers (issue 16: a derivation states a convention only
+// where it matters; a 2D clipping problem has no eye space to describe).
+struct ConventionUse {
+  bool api = true;     // handedness, viewing direction, NDC range, row/column vectors, window origin
+  bool angles = true;  // degrees or radians
+};
+
+// One sentence naming the conventions `use` marks, for the first step of a derivation; empty
+// when none of them matters.
+std::string describe(const Conventions& c, ConventionUse use = {});
 
 }  // namespace frustum

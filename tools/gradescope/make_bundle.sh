@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds autograder.zip for Gradescope's "Zip file upload" autograder from any problem set
 # (tracked by git or not) and, optionally, the per-student sets `frustum generate -o DIR` wrote:
-#   tools/gradescope/make_bundle.sh SET.yaml [--variants DIR] [--lang en|ja]
+#   tools/gradescope/make_bundle.sh SET.yaml [--variants DIR] [--lang en|ja|ru]
 #                                   [--identity sid|email|id] [--visibility WHEN] [-o autograder.zip]
 # The zip's root holds setup.sh, run_autograder, autograder.conf, frustum/ (the sources the
 # `frustum` binary is built from) and assignment/ (the set, and the variants in variants/).
@@ -10,13 +10,13 @@
 # --visibility: when students see each problem's feedback (expected answers and derivations):
 # visible (default), after_due_date, after_published or hidden; the score is shown either way.
 set -euo pipefail
-usage() { echo "usage: make_bundle.sh SET.yaml [--variants DIR] [--lang en|ja] [--identity sid|email|id] [--visibility WHEN] [-o autograder.zip]" >&2; exit 2; }
+usage() { echo "usage: make_bundle.sh SET.yaml [--variants DIR] [--lang en|ja|ru] [--identity sid|email|id] [--visibility WHEN] [-o autograder.zip]" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/../.." && pwd)
 set_file= variants= lang=en identity= visibility=visible out=autograder.zip positional=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --variants) variants=${2:?--variants needs a directory}; shift 2 ;;
-    --lang) lang=${2:?--lang needs en or ja}; shift 2 ;;
+    --lang) lang=${2:?--lang needs en, ja or ru}; shift 2 ;;
     --identity) identity=${2:?--identity needs sid, email or id}; shift 2 ;;
     --visibility) visibility=${2:?--visibility needs visible, after_due_date, after_published or hidden}; shift 2 ;;
     -o|--output) out=${2:?-o needs a file name}; shift 2 ;;
@@ -31,7 +31,7 @@ set_file=${positional[0]}
 [ ${#positional[@]} -ge 2 ] && lang=${positional[1]}
 [ ${#positional[@]} -ge 3 ] && out=${positional[2]}
 [ ${#positional[@]} -le 3 ] || usage
-case "$lang" in en|ja) ;; *) echo "make_bundle: --lang must be en or ja, not '$lang'" >&2; exit 2 ;; esac
+case "$lang" in en|ja|ru) ;; *) echo "make_bundle: --lang must be en, ja or ru, not '$lang'" >&2; exit 2 ;; esac
 case "$identity" in ""|sid|email|id) ;; *) echo "make_bundle: --identity must be sid, email or id, not '$identity'" >&2; exit 2 ;; esac
 case "$visibility" in visible|after_due_date|after_published|hidden) ;;
   *) echo "make_bundle: --visibility must be visible, after_due_date, after_published or hidden, not '$visibility'" >&2; exit 2 ;; esac
