@@ -133,20 +133,35 @@ CaseError compare(const NumericResult& got, const NumericResult& exact) {
   }
   for (const auto& [name, ref] : exact.raw) {
     const std::vector<long double>* x = got.find_raw(name);
-    if (!x || x->size() != ref.size()) {
+    const Value* want = exact.answers.find(name);
+    if (!x || x->size() != ref.size() || !want || want->exact.size() != ref.size()) {
       e.error = kInfinity;
       continue;
     }
-    long double diff = 0, size = 0;
-    for (std::size_t i = 0; i < ref.size(); ++i) {
-      if (!std::isfinite((*x)[i])) diff = INFINITY;
-      diff = std::max(diff, std::abs((*x)[i] - ref[i]));
-      size = std::max(size, std::abs(ref[i]));
-    }
-    const double err = static_cast<double>(size > 0 ? diff / size : diff);
-    e.error = std::max(e.error, std::isnan(err) ? kInfinity : err);
+    e.error = std::max(e.error, relative_error(*x, want->exact));
   }
   return e;
+}
+
+double relative_error(const std::vector<long double>& got, const std::vector<Exact>& exact) {
+  // max |xᵢ − eᵢ| / max |eᵢ| in exact arithmetic, against the exact values themselves: a
+  // result that underflowed to 0 where the exact value is 10⁻⁴⁰⁰ is a total loss (error 1),
+  // not a match of two zeros.
+  using GiNaC::numeric;
+  numeric diff = 0, size = 0;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    if (!std::isfinite(got[i])) return kInfinity;
+    const numeric want = rational_near(exact[i]);
+    const numeric have = GiNaC::ex_to<numeric>(exact_of(got[i]));
+    diff = std::max(diff, GiNaC::abs(have - want));
+    size = std::max(size, GiNaC::abs(want));
+  }
+  const numeric err = size.is_zero() ? diff : diff / size;
+  // Beyond a double's range the error is total (or, below it, none to speak of).
+  if (err > numeric(std::numeric_limits<double>::max())) return kInfinity;
+  if (err < numeric(std::numeric_limits<double>::min()))
+    return err.is_zero() ? 0.0 : std::numeric_limits<double>::min();
+  return err.to_double();
 }
 
 std::vector<AccuracyRow> measure(const ProblemSet& set, const std::string& suite, double min_ns) {

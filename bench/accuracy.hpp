@@ -44,6 +44,10 @@ struct CaseError {
 };
 CaseError compare(const NumericResult& got, const NumericResult& exact);
 
+// Relative error max |xᵢ − eᵢ| / max |eᵢ| (absolute when every eᵢ is 0) of computed values
+// against exact ones, computed exactly; ∞ when a value is not finite.
+double relative_error(const std::vector<long double>& got, const std::vector<Exact>& exact);
+
 // The table as Markdown (one row per suite × kind × backend).
 std::string markdown_table(const std::vector<AccuracyRow>& rows);
 // Speed against error on log axes: one point per kind × backend of `suite`; in each kind, the

@@ -34,7 +34,7 @@ const ProblemSpec& problem(const ProblemSet& set, const std::string& id) {
 
 // Every set in problems/hard (tests/accuracy_test.cpp checks the list against the folder).
 constexpr const char* kHardSets[] = {"normals",    "planes",      "backface", "eye_plane",
-                                     "magnitudes", "exact_signs", "coverage"};
+                                     "magnitudes", "exact_signs", "coverage", "decisions"};
 
 ProblemSet hard(const std::string& name) { return load_problem_set(source_path("problems/hard/" + name)); }
 
@@ -69,6 +69,41 @@ TEST(Precision, ExactConversionsAreExactAndNearest) {
     }
   EXPECT_TRUE(test::same(exact_of(1.0e4000L) / exact_of(0.5e4000L), 2));
   EXPECT_TRUE(test::same(exact_of(0.5f), Exact(1) / 2));
+}
+
+// Float and long double round the exact value once, over their whole range: 10⁻⁴⁰⁰ is a long
+// double (not flushed through double), √2·10⁻³¹⁰ a subnormal double, 10⁻⁴⁵ a subnormal float.
+TEST(Precision, ConversionsKeepTheBackendsWholeRange) {
+  const Exact tiny = GiNaC::pow(Exact(10), -400);
+  const long double t = from_exact<long double>(tiny);
+  EXPECT_GT(t, 0.0L);
+  EXPECT_NEAR(static_cast<double>(t / 1e-400L), 1.0, 1e-15);
+  EXPECT_EQ(from_exact<long double>(-tiny), -t);
+  EXPECT_EQ(from_exact<long double>(GiNaC::pow(Exact(10), 5000)),
+            std::numeric_limits<long double>::infinity());
+  const double sub = from_exact<double>(GiNaC::sqrt(Exact(2)) * GiNaC::pow(Exact(10), -310));
+  EXPECT_GT(sub, 0.0);
+  EXPECT_NEAR(sub / 1.4142135623730951e-310, 1.0, 1e-9);  // a subnormal keeps fewer bits
+  EXPECT_EQ(from_exact<float>(GiNaC::pow(Exact(10), -45)),
+            std::numeric_limits<float>::denorm_min());
+  // Ties to even at the float grid: 1 + 2⁻²⁴ rounds to 1, 1 + 3·2⁻²⁴ to 1 + 2⁻²².
+  EXPECT_EQ(from_exact<float>(1 + GiNaC::pow(Exact(2), -24)), 1.0f);
+  EXPECT_EQ(from_exact<float>(1 + 3 * GiNaC::pow(Exact(2), -24)), 1.0f + std::ldexp(1.0f, -22));
+}
+
+// bench accuracy measures against the exact values themselves: a result flushed to 0 where
+// the exact value is 10⁻⁴⁰⁰ is a total loss, and the error of a long double is seen beyond
+// double's precision.
+TEST(BenchAccuracy, ErrorIsMeasuredAgainstTheExactValue) {
+  const Exact tiny = GiNaC::pow(Exact(10), -400);
+  EXPECT_EQ(bench::relative_error({0.0L}, {tiny}), 1.0);
+  EXPECT_EQ(bench::relative_error({0.0L, 1.0L}, {0, 1}), 0.0);
+  EXPECT_NEAR(bench::relative_error({from_exact<long double>(tiny)}, {tiny}), 0.0, 1e-19);
+  const double third = bench::relative_error({1.0L / 3}, {Exact(1) / 3});
+  EXPECT_GT(third, 0.0);
+  EXPECT_LT(third, 1.1e-19);
+  EXPECT_EQ(bench::relative_error({std::numeric_limits<long double>::infinity()}, {1}),
+            std::numeric_limits<double>::infinity());
 }
 
 TEST(Condition, EstimatesGrowAsProblemsDegenerate) {
@@ -194,10 +229,12 @@ TEST(HardCases, EverySetInTheFolderIsChecked) {
   EXPECT_EQ(listed, found);
 }
 
-// The discrete part of an answer: a word, a flag, word lists and maps, or whether it exists
-// (null: no NDC behind the eye, no unit normal of a zero vector).
+// The discrete part of an answer: a word, a flag, word lists and maps, whether it exists
+// (null: no NDC behind the eye, no unit normal of a zero vector), and how many rows a list of
+// points has (the vertices left by clipping).
 std::string discrete_part(const Value& v) {
   std::string s = std::to_string(static_cast<int>(v.shape));
+  if (v.shape == Value::Shape::Matrix) s += " rows=" + std::to_string(v.rows);
   if (v.shape == Value::Shape::Bool) s += v.flag ? " true" : " false";
   s += " " + v.word;
   for (const auto& [k, w] : v.entries) s += " " + k + "=" + w;
@@ -220,7 +257,8 @@ TEST(HardCases, DiscreteAnswersAreExactInEveryBackend) {
         for (const AnswerSpec& a : spec.info->answers) {
           const bool discrete = a.kind == AnswerKind::Bool || a.kind == AnswerKind::Category ||
                                 a.kind == AnswerKind::WordMap || a.kind == AnswerKind::WordList ||
-                                a.kind == AnswerKind::Sequence || a.kind == AnswerKind::BitString;
+                                a.kind == AnswerKind::Sequence || a.kind == AnswerKind::BitString ||
+                                a.kind == AnswerKind::Polygon || a.kind == AnswerKind::Segment;
           const Value* want = exact.answers.find(a.name);
           const Value* got = r.answers.find(a.name);
           if (!want) continue;
@@ -243,6 +281,50 @@ TEST(HardCases, DiscreteAnswersAreExactInEveryBackend) {
   }
   EXPECT_GT(compared, 60);
   EXPECT_GT(fallbacks, 10);  // the boundary cases need the fallback, and say so
+}
+
+// Deliverable 2 of issue 14: every digit estimate on the hard-case suite checked against the
+// digits actually lost (the error against the exact values, measured exactly). A backend that
+// says "keeps about X digits" keeps at least X − 1 of them; a result with no warning at all
+// lost at most the 4 digits a warning starts at (kIllConditioned), plus one for the estimate's
+// slack.
+TEST(HardCases, DigitEstimatesMatchTheDigitsActuallyLost) {
+  int checked = 0, estimates = 0;
+  for (const char* name : kHardSets) {
+    const ProblemSet set = hard(std::string(name) + ".yaml");
+    for (const ProblemSpec& spec : set.problems) {
+      if (!spec.info->solve_numeric) continue;
+      NumericResult exact;
+      try {
+        exact = numeric(spec, Precision::Exact);
+      } catch (const std::exception&) {
+        continue;  // no exact reference (a domain error)
+      }
+      for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble}) {
+        const NumericResult r = numeric(spec, p);
+        const double error = bench::compare(r, exact).error;
+        const double kept = error == 0 ? decimal_digits(p) : std::max(0.0, -std::log10(error));
+        const std::string where =
+            std::string(name) + " " + spec.id + " " + std::string(to_string(p));
+        if (r.warnings.empty()) {
+          EXPECT_GE(kept, decimal_digits(p) - 5)
+              << where << ": error " << error << " with no warning";
+        }
+        const std::string claim = std::string(to_string(p)) + " keeps about ";
+        for (const NumericWarning& w : r.warnings) {
+          const std::size_t at = w.text.find(claim);
+          if (at == std::string::npos) continue;
+          const double said = std::stod(w.text.substr(at + claim.size()));
+          EXPECT_GE(kept, said - 1)
+              << where << ": says " << said << " digits, keeps " << kept << " (" << w.text << ")";
+          ++estimates;
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 60);
+  EXPECT_GT(estimates, 3);
 }
 
 TEST(HardCases, ExactNormalsOfDegeneratePolygonsAreExact) {

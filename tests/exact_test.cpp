@@ -236,6 +236,18 @@ TEST(Exact, CanonicalProvesNestedRadicalZeros) {
   EXPECT_FALSE(canonical(GiNaC::sqrt(5 + 2 * sqrt_of(6)) - sqrt_of(2)).is_zero());
 }
 
+// A zero no simplification proves (sin² + cos² − 1 of an angle GiNaC keeps symbolic) is
+// refused, never decided by the sign of the noise at the last precision; a value 10⁻²⁰⁰
+// away from it is decided by refinement.
+TEST(Exact, ExactSignRefusesAZeroItCannotProve) {
+  const ex s = GiNaC::sin(GiNaC::Pi / 7), c = GiNaC::cos(GiNaC::Pi / 7);
+  const ex zero = s * s + c * c - 1;
+  EXPECT_THROW(exact_sign(zero), UndecidedSign);
+  EXPECT_THROW(exact_sign(-zero), UndecidedSign);
+  EXPECT_EQ(exact_sign(zero + GiNaC::pow(ex(10), -200)), 1);
+  EXPECT_EQ(exact_sign(zero - GiNaC::pow(ex(10), -200)), -1);
+}
+
 TEST(Exact, ExactSignRestoresDigitsAndRejectsNonReal) {
   const long digits_before = GiNaC::Digits;
   EXPECT_EQ(exact_sign(sqrt_of(8) - 2 * sqrt_of(2)), 0);

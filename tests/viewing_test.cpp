@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <random>
 
@@ -818,6 +819,35 @@ TEST(ConventionsEveryKind, TransformPrintsRowFormUnderDirectX) {
       EXPECT_TRUE(said);
     }
   }
+}
+
+// The transform's misconceptions are in the problem's own convention: under DirectX the
+// "composition in the wrong order" matrix is the row form (the transpose of OpenGL's wrong
+// order), so a DirectX student who multiplied in the wrong order is recognised.
+TEST(ConventionsEveryKind, TransformMisconceptionsInTheProblemsConvention) {
+  const std::string given =
+      "{steps: [{translate: [1, 2, 3]}, {rotate_z: 90}, {scale: [2, 1, 1]}], points: [[1, 1, 1]]}";
+  auto mistakes = [&](Api api) {
+    const ProblemSet set =
+        load_problem_set_from_string(one("transform", given, api_conventions(api)), "t.yaml");
+    const ProblemSpec& spec = set.problems[0];
+    std::map<std::string, MatX<Exact>> out;
+    for (const Misconception& m : spec.info->misconceptions(spec.given))
+      out[m.name] = exact_matrix(*m.answers.find("matrix"));
+    return out;
+  };
+  const auto gl = mistakes(Api::OpenGL), dx = mistakes(Api::DirectX);
+  ASSERT_EQ(gl.size(), 2u);
+  ASSERT_EQ(dx.size(), 2u);
+  for (const auto& [name, m] : gl)
+    EXPECT_TRUE(same_matrix(dx.at(name), MatX<Exact>(m.transpose()))) << name;
+  // The wrong order under DirectX: translation (1, 2, 3) applied last, in the bottom row.
+  const MatX<Exact>& wrong = dx.at("composition in the wrong order");
+  EXPECT_TRUE(test::same(wrong(3, 0), 1) && test::same(wrong(3, 1), 2) &&
+              test::same(wrong(3, 2), 3))
+      << text_of(wrong);
+  const ProblemResult key = solve_yaml(one("transform", given, api_conventions(Api::DirectX)));
+  EXPECT_FALSE(same_matrix(wrong, exact_matrix(*key.answers.find("matrix"))));
 }
 
 // look_at: DirectX's view matrix has its translation in the bottom row; OpenGL's and

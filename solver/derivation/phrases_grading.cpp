@@ -252,6 +252,12 @@ constexpr Phrase kPhrases[] = {
      "Вы перемножили шаги в порядке применения (A₁·A₂·…): для столбцов-векторов первый шаг стоит "
      "справа, "
      "M = …·A₂·A₁ (как в P′ = A₃A₂A₁P)."},
+    {"You multiplied the steps in reverse order (…·A₂·A₁): with DirectX's row vectors, P′ = P·M, "
+     "the step applied first stands leftmost, M = A₁·A₂·…",
+     "逆の順に行列を掛けています (…·A₂·A₁). DirectX の行ベクトルでは P′ = P·M なので, "
+     "最初に適用する変換が一番左に来ます: M = A₁·A₂·…",
+     "Вы перемножили шаги в обратном порядке (…·A₂·A₁): для строк-векторов DirectX, P′ = P·M, "
+     "первый шаг стоит слева, M = A₁·A₂·…"},
     {"You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the front normal "
      "is n = e₀ × e₁.",
      "e₁ × e₀ を計算しています. 表から見て頂点が反時計回りなので, 表向きの法線は n = e₀ × e₁ です.",

@@ -116,10 +116,18 @@ struct Backface {
       steps->yields("df");
       std::vector<Eigen::Vector3d> pts;
       for (const Vec3<Exact>& q : g.points) pts.push_back(to_double(q));
-      if (!df.is_zero())
-        warn_condition(steps, facing_condition(pts, to_double(g.eye)), "Eye nearly in the polygon's plane",
-                       "D_f (its sign, front or back, is decided exactly here; a floating-point sign "
-                       "needs an error-bounded filter with an exact fallback)");
+      // Each backend's own condition: products below its normal range cost it digits too.
+      const Eigen::Vector3d eye = to_double(g.eye);
+      const double kf = facing_condition(pts, eye, Precision::Float);
+      if (!df.is_zero() && kf > kIllConditioned)
+        steps->warn(
+            "Eye nearly in the polygon's plane",
+            "D_f (its sign, front or back, is decided exactly here; a floating-point sign needs an "
+            "error-bounded filter with an exact fallback) is ill-conditioned (" +
+                digits_sentence(facing_condition(pts, eye), kf,
+                                facing_condition(pts, eye, Precision::Double),
+                                facing_condition(pts, eye, Precision::LongDouble)) +
+                ").");
     }
     const int sign = exact_sign(df);
     const std::string facing = facing_word(sign);

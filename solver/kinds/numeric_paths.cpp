@@ -64,12 +64,17 @@ int power_of_two_scale(Vec3<T>& v) {
   return k;
 }
 
+// v·2ᵏ; `underflow` is set when a non-zero v lands below the normal range (subnormal or 0):
+// a product scaled back that its true value's magnitude no longer fits.
 template <typename T>
-T scaled_by(const T& v, int k) {
-  if constexpr (kIsExact<T>)
+T scaled_by(const T& v, int k, bool& underflow) {
+  if constexpr (kIsExact<T>) {
     return v;
-  else
-    return std::ldexp(v, k);
+  } else {
+    const T r = std::ldexp(v, k);
+    underflow = underflow || (v != T(0) && std::abs(r) < std::numeric_limits<T>::min());
+    return r;
+  }
 }
 
 // The warning a numeric path gives when its answer's condition is poor.
@@ -92,6 +97,7 @@ struct NormalPair {
   Vec3<T> n;
   Vec3<T> unit;
   bool zero = false;
+  bool underflow = false;  // n scaled back fell below the normal range
 };
 
 template <typename T>
@@ -116,13 +122,14 @@ NormalPair<T> polygon_normal(const Polygon3<T>& p) {
     Vec3<T> ns = triangle ? Vec3<T>(d[1].cross(d[2] - d[1])) : newell_normal(d);
     out.zero = ns.cwiseAbs().maxCoeff() == T(0);
     if (!out.zero) out.unit = ns / stable_norm(ns);
-    for (int i = 0; i < 3; ++i) out.n(i) = std::ldexp(ns(i), 2 * k);
+    for (int i = 0; i < 3; ++i) out.n(i) = scaled_by(ns(i), 2 * k, out.underflow);
     return out;
   }
 }
 
 template <typename T>
 void report_normal(NumericOut<T>& out, const NormalPair<T>& n) {
+  if (n.underflow) out.underflow();
   out.vector("normal", n.n);
   if (n.zero) {
     out.null("unit_normal");
@@ -152,6 +159,7 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
       T dot{}, area{}, sin{}, cos{}, angle{};
       Vec3<T> cross, unit;
       bool parallel = false;
+      bool underflow = false;
     };
     auto core = [](const In& in) {
       Out o;
@@ -168,9 +176,9 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
       const T dot = a.dot(b);
       const Vec3<T> cross = a.cross(b);
       const T area = stable_norm(cross), la = stable_norm(a), lb = stable_norm(b);
-      o.dot = scaled_by(dot, ka + kb);
-      for (int i = 0; i < 3; ++i) o.cross(i) = scaled_by(cross(i), ka + kb);
-      o.area = scaled_by(area, ka + kb);
+      o.dot = scaled_by(dot, ka + kb, o.underflow);
+      for (int i = 0; i < 3; ++i) o.cross(i) = scaled_by(cross(i), ka + kb, o.underflow);
+      o.area = scaled_by(area, ka + kb, o.underflow);
       o.sin = area / la / lb;
       o.cos = dot / la / lb;
       // θ = atan2(‖a × b‖, a·b): accurate at every angle, unlike arccos(cos θ) near 0 and π.
@@ -182,6 +190,7 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
     };
     auto report = [p](const In&, const Out& o) {
       NumericOut<T> out(p);
+      if (o.underflow) out.underflow();
       out.scalar("dot", o.dot);
       out.vector("cross", o.cross);
       out.scalar("area", o.area);
@@ -348,7 +357,7 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
 
 std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, const Vec3<Exact>& eye,
                                                 Precision p) {
-  const double kappa = facing_condition(doubles(points), to_double(eye));
+  const double kappa = facing_condition(doubles(points), to_double(eye), p);
   return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
     struct In {
       Polygon3<T> points;

@@ -61,17 +61,23 @@ struct Transform {
       MatX<Exact> m = MatX<Exact>::Identity(g.dim + 1, g.dim + 1);
       for (const MatX<Exact>& s : steps) m = canonical(MatX<Exact>(reversed ? MatX<Exact>(m * s) : MatX<Exact>(s * m)));
       Answers a;
-      a.set("matrix", matrix_value(m));
-      if (!g.points.empty()) a.set("points", transform_points_with_steps(m, g.points, "", "P", nullptr));
+      // In the problem's own convention: DirectX students write the row-vector form.
+      a.set("matrix", matrix_value(paper_form(m, g.api)));
+      if (!g.points.empty())
+        a.set("points", transform_points_with_steps(m, g.points, "", "P", nullptr, g.api));
       return a;
     };
     std::vector<MatX<Exact>> matrices;
     for (const TransformStep& s : g.steps) matrices.push_back(s.matrix);
     if (g.steps.size() >= 2)
-      out.push_back({"composition in the wrong order",
-                     "You multiplied the steps in the order they are applied (A₁·A₂·…): with column vectors the "
-                     "step applied first stands rightmost, M = …·A₂·A₁ (as in P′ = A₃A₂A₁P).",
-                     "Composite (first step applied first)", composite(matrices, true)});
+      out.push_back(
+          {"composition in the wrong order",
+           g.api == Api::DirectX
+               ? "You multiplied the steps in reverse order (…·A₂·A₁): with DirectX's row vectors, "
+                 "P′ = P·M, the step applied first stands leftmost, M = A₁·A₂·…"
+               : "You multiplied the steps in the order they are applied (A₁·A₂·…): with column "
+                 "vectors the step applied first stands rightmost, M = …·A₂·A₁ (as in P′ = A₃A₂A₁P).",
+           "Composite (first step applied first)", composite(matrices, true)});
     // Degrees taken as radians: every rotation by the angle's number of degrees, in radians.
     bool rotates = false;
     std::vector<MatX<Exact>> as_radians;

@@ -41,11 +41,15 @@ std::string digits_sentence(double kappa, Precision p) {
   return fmt::format("{} keeps about {:.1f} of its {:.1f} digits", to_string(p), d, decimal_digits(p));
 }
 
-std::string digits_sentence(double kappa) {
+std::string digits_sentence(double kappa) { return digits_sentence(kappa, kappa, kappa, kappa); }
+
+std::string digits_sentence(double kappa, double kappa_float, double kappa_double,
+                            double kappa_long_double) {
   const std::string k = std::isfinite(kappa) ? fmt::format("κ ≈ {:.1e}", kappa) : "κ = ∞";
   return fmt::format("{}: {}, {}, {}; the exact value shown is unaffected", k,
-                     digits_sentence(kappa, Precision::Float), digits_sentence(kappa, Precision::Double),
-                     digits_sentence(kappa, Precision::LongDouble));
+                     digits_sentence(kappa_float, Precision::Float),
+                     digits_sentence(kappa_double, Precision::Double),
+                     digits_sentence(kappa_long_double, Precision::LongDouble));
 }
 
 double normal_condition(const std::vector<Eigen::Vector3d>& p) {
@@ -64,8 +68,25 @@ double normal_condition(const std::vector<Eigen::Vector3d>& p) {
   return ratio(2 * scale * sum_d + terms.maxCoeff(), len);
 }
 
-double facing_condition(const std::vector<Eigen::Vector3d>& p, const Eigen::Vector3d& eye) {
-  if (p.size() < 3) return kInfinity;
+double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& eye) {
+  return facing_condition(points, eye, Precision::Exact);
+}
+
+double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& eye_in,
+                        Precision precision) {
+  if (points.size() < 3) return kInfinity;
+  // Scale by 2⁻ᵏ (exact) so the largest coordinate is about 1: products neither under- nor
+  // overflow, and κ is the same for the scaled problem.
+  double largest = eye_in.cwiseAbs().maxCoeff();
+  for (const Eigen::Vector3d& q : points) largest = std::max(largest, q.cwiseAbs().maxCoeff());
+  if (!std::isfinite(largest)) return kInfinity;
+  const int k = largest > 0 ? std::ilogb(largest) : 0;
+  const auto scaled = [k](const Eigen::Vector3d& q) {
+    return Eigen::Vector3d(std::ldexp(q.x(), -k), std::ldexp(q.y(), -k), std::ldexp(q.z(), -k));
+  };
+  std::vector<Eigen::Vector3d> p;
+  for (const Eigen::Vector3d& q : points) p.push_back(scaled(q));
+  const Eigen::Vector3d eye = scaled(eye_in);
   Eigen::Vector3d n = Eigen::Vector3d::Zero(), terms = Eigen::Vector3d::Zero();
   for (std::size_t i = 1; i + 1 < p.size(); ++i) {
     n += (p[i] - p[0]).cross(p[i + 1] - p[0]);
@@ -80,7 +101,26 @@ double facing_condition(const std::vector<Eigen::Vector3d>& p, const Eigen::Vect
     edges += (q - p[0]).cwiseAbs().maxCoeff();
   }
   const double input = 2 * scale * (n.cwiseAbs().sum() + v.cwiseAbs().maxCoeff() * edges);
-  return ratio(v.cwiseAbs().dot(terms) + input, std::abs(v.dot(n)));
+  const double df = std::abs(v.dot(n));
+  const double kappa = ratio(v.cwiseAbs().dot(terms) + input, df);
+  if (precision == Precision::Exact || !std::isfinite(kappa)) return kappa;
+  // Underflow, in log₂ (the unscaled magnitudes may be outside double's range): each of the
+  // 2(m − 2) products per component of n is off by η/2 and meets |v| = |v_s|·2ᵏ; the dot
+  // product's three by η; |D_f| = |D_s|·2³ᵏ.
+  // log₂ η = min_exponent − digits (η = 2^(emin − p + 1), emin = min_exponent − 1).
+  const auto log2_eta = [](auto x) {
+    using L = std::numeric_limits<decltype(x)>;
+    return double(L::min_exponent - L::digits);
+  };
+  const double log_eta = precision == Precision::Float    ? log2_eta(0.0f)
+                         : precision == Precision::Double ? log2_eta(0.0)
+                                                          : log2_eta(0.0L);
+  const double through_v = std::log2(double(p.size() - 2) * v.cwiseAbs().sum() + 1e-300) + k;
+  const double absolute = log_eta + std::max(through_v, std::log2(3.0)) + 1;
+  const double underflow =
+      absolute - (std::log2(df) + 3.0 * k) - std::log2(unit_roundoff(precision));
+  if (underflow > 1023) return kInfinity;
+  return kappa + std::exp2(underflow);
 }
 
 DepthCondition depth_condition(const Eigen::Vector3d& a, const Eigen::Vector3d& b,

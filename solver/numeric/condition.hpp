@@ -32,7 +32,19 @@ double normal_condition(const std::vector<Eigen::Vector3d>& points);
 
 // D_f = v·n with v = eye − p₀ and n the polygon's normal: the permanent (every product taken
 // with absolute values) plus the effect of rounding the inputs, over |D_f|. Infinite when D_f = 0.
+// Computed on the inputs scaled by a power of two (κ does not change with the scale), so tiny
+// and huge coordinates get a true estimate.
 double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& eye);
+
+// The same for one backend: products below its normal range are off by up to η absolutely
+// (η its least subnormal), which relative to |D_f| costs digits no κ shows; they are added as
+// an equivalent condition (absolute error / (u·|D_f|)). For the exact backend, κ alone.
+double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& eye,
+                        Precision p);
+
+// "κ ≈ …: float keeps …, double …, long double …" with each backend's own condition.
+std::string digits_sentence(double kappa, double kappa_float, double kappa_double,
+                            double kappa_long_double);
 
 // The plane method's z at pixel (x, y) of triangle ABC: c = n_z is a 2×2 determinant of the
 // projected edges (its condition κ_c is how close the triangle is to edge-on), and the

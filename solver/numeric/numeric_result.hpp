@@ -114,6 +114,9 @@ class NumericOut {
     r_.warnings.push_back({std::move(title), std::move(text)});
   }
   void note(std::string text) { r_.notes.push_back(std::move(text)); }
+  // A value whose true magnitude is below the normal range even where it came out 0 (a
+  // product scaled back by a power of two): warned as underflow.
+  void underflow() { underflow_ = true; }
   // The inputs' conversion (InputRange): warned once, before the values' own range warnings.
   void inputs(const InputRange& range) {
     const std::string name(to_string(r_.precision));
@@ -139,7 +142,8 @@ class NumericOut {
                            " and are infinite or not a number; the exact backend has no limit.");
     if (underflow_)
       warn("Underflow", "some values are below the normal range of " +
-                            std::string(to_string(r_.precision)) + " (subnormal): they keep fewer digits.");
+                            std::string(to_string(r_.precision)) +
+                            " (subnormal, or flushed to 0): they keep few or none of their digits.");
     return std::move(r_);
   }
 

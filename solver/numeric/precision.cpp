@@ -59,33 +59,57 @@ std::string describe(Precision p) {
 
 namespace {
 
-// e ≈ hi + lo with hi the nearest double and lo the nearest double of the rest: about 106
-// bits, more than a long double's 64.
-void split_double_double(const Exact& e, double& hi, double& lo) {
-  hi = to_double(e);
-  lo = std::isfinite(hi) ? to_double(e - exact_from_double(hi)) : 0.0;
+// The nearest T of a rational q, ties to even, in one rounding: subnormals kept (not flushed),
+// beyond the largest finite value ±∞. With p significand bits and 2^emin the least normal,
+// q = whole·2^(e−p+1) with whole an integer of at most p bits.
+template <typename T>
+T round_rational(const GiNaC::numeric& q) {
+  using GiNaC::numeric;
+  if (q.is_zero()) return T(0);
+  constexpr int p = std::numeric_limits<T>::digits;
+  constexpr int emin = std::numeric_limits<T>::min_exponent - 1;
+  constexpr int emax = std::numeric_limits<T>::max_exponent;
+  const numeric a = GiNaC::abs(q);
+  // 2^k ≤ a < 2^(k+1)
+  int k = a.numer().int_length() - a.denom().int_length();
+  while (a < numeric(2).power(k)) --k;
+  while (a >= numeric(2).power(k + 1)) ++k;
+  T magnitude = std::numeric_limits<T>::infinity();
+  if (k < emax) {
+    const int e = std::max(k, emin);
+    const numeric scaled = a * numeric(2).power(p - 1 - e);
+    const numeric num = scaled.numer(), den = scaled.denom();
+    numeric whole = GiNaC::iquo(num, den);
+    const numeric twice_rem = 2 * (num - whole * den);
+    if (twice_rem > den || (twice_rem == den && !whole.is_even())) whole += 1;
+    // whole < 2^64: its two 32-bit halves are exact in double, their sum exact in T.
+    const numeric high = GiNaC::iquo(whole, numeric(4294967296));
+    const T w = T(high.to_double()) * T(4294967296) + T((whole - high * 4294967296).to_double());
+    magnitude = std::ldexp(w, e - (p - 1));
+  }
+  return q.is_negative() ? -magnitude : magnitude;
 }
 
 }  // namespace
 
 template <>
 double from_exact<double>(const Exact& e) {
-  return to_double(e);
+  // Rationals by CLN (correctly rounded, subnormals too); other values from their rational
+  // approximation, so a subnormal √2·10⁻³¹⁰ is not flushed.
+  if (GiNaC::is_a<GiNaC::numeric>(e)) return to_double(e);
+  return round_rational<double>(rational_near(e));
 }
 
+// Float and long double round the exact value once (through double they would round twice,
+// and long double would lose the range beyond double's: 1e-400 is not 0).
 template <>
 float from_exact<float>(const Exact& e) {
-  // Rounding through double could round twice; rounding hi + lo once avoids it in practice.
-  double hi = 0, lo = 0;
-  split_double_double(e, hi, lo);
-  return static_cast<float>(static_cast<long double>(hi) + static_cast<long double>(lo));
+  return round_rational<float>(rational_near(e));
 }
 
 template <>
 long double from_exact<long double>(const Exact& e) {
-  double hi = 0, lo = 0;
-  split_double_double(e, hi, lo);
-  return static_cast<long double>(hi) + static_cast<long double>(lo);
+  return round_rational<long double>(rational_near(e));
 }
 
 long double to_long_double(const Exact& e) { return from_exact<long double>(e); }

@@ -40,8 +40,8 @@ decltype(auto) with_scalar(Precision p, F&& f) {
   return f.template operator()<Exact>();
 }
 
-// Exact values into a backend's scalar (nearest value; float and long double via a
-// double-double approximation, correct well beyond their precision) and back.
+// Exact values into a backend's scalar (the nearest value, rounded once from the exact value
+// or a 40-digit approximation of it, over the backend's whole range: subnormals kept) and back.
 template <typename T>
 T from_exact(const Exact& e);
 template <>

@@ -4,12 +4,16 @@
 #include "solver/util/work_budget.hpp"
 
 #include <cln/integer.h>
+#include <cln/rational.h>
+#include <cln/real.h>
 
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace frustum {
@@ -476,16 +480,39 @@ double to_double(const Exact& e) {
   }
 }
 
+GiNaC::numeric rational_near(const Exact& e) {
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_rational()) return ex_to<numeric>(e);
+  if (!is_real_constant(e)) throw std::domain_error("rational_near: not a real constant");
+  const DigitsGuard guard(40);
+  numeric value;
+  if (!evaluate_real(e, value)) throw std::domain_error("rational_near: not real");
+  if (value.is_rational()) return value;
+  // A CLN float is a dyadic rational: take it exactly.
+  return numeric(cln::rational(cln::the<cln::cl_R>(value.to_cl_N())));
+}
+
 int exact_sign(const Exact& e) {
   if (is_a<numeric>(e) && ex_to<numeric>(e).is_real()) {
     const numeric& n = ex_to<numeric>(e);
     return n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
   }
   if (!is_real_constant(e)) throw std::domain_error("exact_sign: not a real constant");
+  // Products and powers by their factors' signs: no cancellation there, so √2·10⁻³⁰⁰ is
+  // decided however small it is, and only sums are refined numerically.
+  if (is_a<GiNaC::mul>(e)) {
+    int sign = 1;
+    for (std::size_t i = 0; i < e.nops() && sign != 0; ++i) sign *= exact_sign(e.op(i));
+    return sign;
+  }
+  if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_rational()) {
+    const numeric& q = ex_to<numeric>(e.op(1));
+    const int base = exact_sign(e.op(0));
+    if (!q.is_integer()) return base;  // a real root: its base is ≥ 0 (is_real_constant)
+    return q.is_even() ? (base != 0 ? 1 : 0) : base;
+  }
 
   // Cancellation between the terms of a sum costs precision in proportion to their size.
   const ex expanded = e.expand();
-  numeric last;
   for (const long digits : kSignDigits) {
     const DigitsGuard guard(digits);
     numeric value;
@@ -501,10 +528,12 @@ int exact_sign(const Exact& e) {
     }
     const numeric bound = numeric(1) / numeric(10).power(digits - kGuardDigits) * scale;
     if (GiNaC::abs(value) > bound) return value.is_positive() ? 1 : -1;
-    last = value;
   }
-  if (canonical(e).is_zero()) return 0;
-  return last.is_zero() ? 0 : (last.is_positive() ? 1 : -1);
+  if (canonical(e).is_zero() || proven_zero(expanded)) return 0;
+  throw UndecidedSign("the sign of a value that is 0 to " +
+                      std::to_string(kSignDigits[std::size(kSignDigits) - 1] - kGuardDigits) +
+                      " digits could not be proven: exact arithmetic cannot tell whether it is 0 "
+                      "(write the given numbers as decimals or simpler radicals)");
 }
 
 Exact exact_from_double(double v) {

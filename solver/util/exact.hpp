@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <ginac/ginac.h>
 
+#include <stdexcept>
 #include <string>
 
 namespace frustum {
@@ -29,9 +30,23 @@ bool is_real_constant(const Exact& e);
 // Nearest double of a real constant; NaN when e is not one.
 double to_double(const Exact& e);
 
+// A sign exact arithmetic could not prove: the value is 0 to every precision tried and no
+// simplification proves it 0 (more nested radicals than the proof handles, cube roots,
+// sines of arbitrary angles). A discrete answer is never decided by the sign of the noise
+// left at the last precision: the problem is refused with this error instead.
+class UndecidedSign : public std::domain_error {
+ public:
+  using std::domain_error::domain_error;
+};
+
+// A rational within a relative 10⁻⁴⁰ of a real constant (e itself when it is a rational), for
+// rounding to a backend's format in one step. Throws std::domain_error when e is not real.
+GiNaC::numeric rational_near(const Exact& e);
+
 // Exact sign (-1, 0, +1) of a real constant: rationals decided directly, algebraic values
 // by interval refinement at growing precision and, when that cannot separate the value
-// from zero, by exact simplification. Throws std::domain_error if e is not real.
+// from zero, by exact simplification. Throws std::domain_error if e is not real, and
+// UndecidedSign when neither refinement nor simplification decides.
 int exact_sign(const Exact& e);
 
 // arccos in radians, exact for the unit circle's special values (acos(√2/2) = π/4).
