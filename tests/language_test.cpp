@@ -37,6 +37,8 @@ const std::set<std::string>& names() {
                                           "camera",
                                           "lookAt",
                                           "gluLookAt",
+                                          "glOrtho",
+                                          "glFrustum",
                                           "fovy",
                                           "fovx",
                                           "aspect",

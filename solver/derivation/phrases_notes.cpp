@@ -61,6 +61,22 @@ constexpr Phrase kPhrases[] = {
      "Processing: матрицы и куб NDC [−1, 1]³ как в OpenGL, столбцы-векторы, начало окна вверху "
      "слева, y направлена "
      "вниз"},
+    {"{0}; ortho's near and far are the z coordinates z_min, z_max; angles in {1}",
+     "{0}; ortho の near, far は z 座標 z_min, z_max; 角度の単位は{1}",
+     "{0}; near и far в ortho — z-координаты z_min, z_max; углы в {1}"},
+    {"{0}; ortho's near and far are the z coordinates z_min, z_max", "{0}; ortho の near, far は z 座標 z_min, z_max",
+     "{0}; near и far в ortho — z-координаты z_min, z_max"},
+    {"Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: the z row is +2/(z_max − "
+     "z_min).",
+     "ここでは near と far は z 座標 z_min = n, z_max = f で, それぞれ −1 と +1 に写る: z の行は +2/(z_max − z_min).",
+     "Здесь near и far — z-координаты z_min = n и z_max = f, переходящие в −1 и +1: строка z равна "
+     "+2/(z_max − z_min)."},
+    {"OpenGL's glOrtho reads them as distances in front of an eye looking down −z (the planes z = −n and z = −f), which "
+     "gives −2/(f − n) there; the two matrices differ only in the direction of the z axis.",
+     "OpenGL の glOrtho はこれらを −z 方向を見る視点の前方への距離 (平面 z = −n と z = −f) として読むので, そこは −2/(f − n) "
+     "になる. 二つの行列の違いは z 軸の向きだけである.",
+     "glOrtho в OpenGL читает их как расстояния перед глазом, смотрящим вдоль −z (плоскости z = −n и z = −f), и даёт "
+     "там −2/(f − n); две матрицы различаются только направлением оси z."},
     {"Angles in {0}", "角度の単位は{0}", "Углы в {0}"},
     {"Column vectors, p′ = M·p.", "列ベクトル: p′ = M·p.", "Столбцы-векторы: p′ = M·p."},
     {"Column vectors, p′ = M·p. z = −n maps to z_ndc = −1 and z = −f to +1.",

@@ -160,7 +160,7 @@ Conventions read_conventions(const YAML::Node& n, const std::string& file,
                              const std::string& field, Conventions base) {
   if (!n.IsDefined() || n.IsNull()) return base;
   if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {api: opengl, angles: degrees}");
-  check_keys(n, {"api", "angles"}, file, field);
+  check_keys(n, {"api", "angles", "z_planes"}, file, field);
   if (n["api"].IsDefined()) {
     const std::string v = read_string(n["api"], file, field + ".api");
     const auto api = parse_api(v);
@@ -178,6 +178,13 @@ Conventions read_conventions(const YAML::Node& n, const std::string& file,
               "'" + v + "' is not one of degrees, radians" +
                   did_you_mean(v, {"degrees", "radians"}));
     base.angles = *unit;
+  }
+  if (n["z_planes"].IsDefined()) {
+    const std::string v = read_string(n["z_planes"], file, field + ".z_planes");
+    if (v != "distances" && v != "coordinates")
+      fail_at(n["z_planes"], file, field + ".z_planes",
+              "'" + v + "' is not one of distances, coordinates" + did_you_mean(v, {"distances", "coordinates"}));
+    base.z_planes = v == "coordinates" ? ZPlanes::Coordinates : ZPlanes::Distances;
   }
   return base;
 }

@@ -59,6 +59,7 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
   GivenReader g = r.child(frustum ? "frustum" : "ortho", {"left", "right", "bottom", "top", "near", "far"});
   p.volume = {g.number("left"), g.number("right"), g.number("bottom"), g.number("top"),
               g.number("near"), g.number("far")};
+  p.z_coordinates = !frustum && c.z_planes == ZPlanes::Coordinates && c.api != Api::DirectX;
   if (canonical(p.volume.right - p.volume.left).is_zero()) g.fail("right", "left = right: the view volume has no width");
   if (canonical(p.volume.top - p.volume.bottom).is_zero()) g.fail("top", "bottom = top: the view volume has no height");
   if (canonical(p.volume.far - p.volume.near).is_zero()) g.fail("far", "near = far: the view volume has no depth");
@@ -205,6 +206,17 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
 namespace {
 
 // The projection matrix in symbols, as on paper (DirectX: the row-vector form).
+// The orthographic matrix with z_min, z_max as coordinates (Conventions::z_planes).
+MathText ortho_coordinates_formula(Api api) {
+  const bool y_down = api == Api::Processing;
+  const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
+  return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
+                  "2/(t−b) 0 −(t+b)/(t−b); 0 0 2/(z_max−z_min) −(z_max+z_min)/(z_max−z_min); 0 0 0 1]",
+              "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " + latex_sign +
+                  "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & \\frac{2}{z_{\\max}-z_{\\min}} & "
+                  "-\\frac{z_{\\max}+z_{\\min}}{z_{\\max}-z_{\\min}} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+}
+
 MathText projection_formula(bool ortho, Api api) {
   const bool y_down = api == Api::Processing;
   if (api == Api::DirectX)
@@ -290,10 +302,18 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   MatX<Exact> m = p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
   m = canonical(m);
   if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, *steps);
+  // The course's reading: z_min = near, z_max = far as coordinates map to −1 and +1, so the z row
+  // is +2/(z_max − z_min), −(z_max + z_min)/(z_max − z_min); glOrtho's planes z = −n, −f negate
+  // the first entry. Both map the same volume; only the direction of the z axis differs.
+  if (p.z_coordinates) {
+    m(2, 2) = canonical(2 / (v.far - v.near));
+    m(2, 3) = canonical(-(v.far + v.near) / (v.far - v.near));
+  }
   if (steps) {
     const bool ortho = p.type == ProjectionSpec::Type::Ortho;
     Step& s = steps->add(ortho ? "Orthographic projection matrix" : "Perspective projection matrix",
-                         projection_formula(ortho, api), volume_text(v),
+                         p.z_coordinates ? ortho_coordinates_formula(api) : projection_formula(ortho, api),
+                         volume_text(v),
                          math("M = ") + matrix_text(paper_form(m, api)));
     s.note = multiply_note(api);
     if (api == Api::Processing)
@@ -302,6 +322,11 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
       s.note += " z = −n maps to z_ndc = −1 and z = −f to +1. (A sentence stating z = −n ↦ +1 contradicts "
                 "this matrix; the matrix decides.)";
     if (api == Api::DirectX) s.note += " Looking down +z, z_ndc runs from 0 at near to 1 at far.";
+    if (p.z_coordinates)
+      s.note += " Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: the z row "
+                "is +2/(z_max − z_min). OpenGL's glOrtho reads them as distances in front of an eye looking down "
+                "−z (the planes z = −n and z = −f), which gives −2/(f − n) there; the two matrices differ only "
+                "in the direction of the z axis.";
     steps->yields("matrix");
   }
   return m;

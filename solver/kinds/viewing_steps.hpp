@@ -25,6 +25,7 @@ struct ProjectionSpec {
   std::optional<Exact> fovy;    // radians, perspective only
   std::optional<Exact> aspect;  // perspective only
   AngleUnit unit = AngleUnit::Degrees;
+  bool z_coordinates = false;  // ortho: near, far are z_min, z_max (Conventions::z_planes)
 };
 
 // Reads whichever of perspective / frustum / ortho is given (exactly one), checking the

@@ -46,6 +46,7 @@ std::string describe(const Conventions& c, ConventionUse use) {
           "NDC z in [0, 1], window origin top-left with y pointing down";
       break;
   }
+  if (c.z_planes == ZPlanes::Coordinates) s += "; ortho's near and far are the z coordinates z_min, z_max";
   if (use.angles) s += "; angles in " + std::string(unit);
   return s;
 }

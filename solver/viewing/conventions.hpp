@@ -16,9 +16,15 @@ enum class Api {
 
 enum class AngleUnit { Degrees, Radians };
 
+// How a course reads ortho()'s near and far: distances in front of the eye (OpenGL's glOrtho:
+// the planes z = −near, −far) or the z coordinates z_min, z_max of the planes on an axis
+// pointing into the scene (as some lectures write the orthographic matrix).
+enum class ZPlanes { Distances, Coordinates };
+
 struct Conventions {
   Api api = Api::OpenGL;
   AngleUnit angles = AngleUnit::Degrees;
+  ZPlanes z_planes = ZPlanes::Distances;
 };
 
 std::string_view to_string(Api api);
