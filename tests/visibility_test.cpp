@@ -188,6 +188,25 @@ TEST(EdgeVisibility, Seed003IcosahedronSilhouetteLoopHiddenLinesAndHiddenEdges) 
 // Seed 003's three icosahedron questions as the seed set asks them (eye (3, 5, 7)): the
 // silhouette of question 1, the drawing of question 2 and the hidden edges of question 3 are
 // the front–back, front-bearing and back–back edges of one classification.
+TEST(EdgeVisibility, HiddenLineNoteListsTheFrontEdgesWhenNoneIsVisible) {
+  // Straight above the tetrahedron's top face only that face is front: no front–front edge,
+  // three silhouette edges; the note once read "none0-1, …".
+  const ProblemResult r = solve_yaml(one(
+      "edge_visibility",
+      "{mesh: {vertices: [[0, 0, 0], [4, 0, 0], [0, 4, 0], [0, 0, 4]], faces: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]}, "
+      "eye: [10, 10, 10]}"));
+  ASSERT_FALSE(r.error) << error_text(r);
+  EXPECT_EQ(words_of(r, "silhouette").size(), 3u);
+  bool seen = false;
+  for (const Step& s : r.derivation.steps())
+    if (s.title == "Edge classes") {
+      seen = true;
+      EXPECT_EQ(s.note.find("none"), std::string::npos) << s.note;
+      EXPECT_NE(s.note.find("(visible + silhouette): 1-2, 1-3, 2-3."), std::string::npos) << s.note;
+    }
+  EXPECT_TRUE(seen);
+}
+
 TEST(Seed003, IcosahedronQuestionsAgreeWithOneClassification) {
   const ProblemSet set = load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));
   ASSERT_TRUE(set.errors.empty());

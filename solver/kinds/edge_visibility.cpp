@@ -226,6 +226,8 @@ struct EdgeVisibility {
     out.set("silhouette", Value::word_list(silhouette));
     out.set("hidden", Value::word_list(hidden));
     if (steps) {
+      std::vector<std::string> front_edges = visible;
+      front_edges.insert(front_edges.end(), silhouette.begin(), silhouette.end());
       steps->add("Edge classes",
                  word("front") + math("–", "\\text{–}") + word("front") + math(": ", "\\colon ") + word("visible") +
                      math(";  ", ";\\; ") + word("front") + math("–", "\\text{–}") + word("back") + math(": ", "\\colon ") +
@@ -235,8 +237,7 @@ struct EdgeVisibility {
                  counts({{static_cast<long>(visible.size()), "visible"}, {static_cast<long>(silhouette.size()), "silhouette"},
                          {static_cast<long>(hidden.size()), "hidden"}}))
           .note = "An edge is classified by the two faces that share it. Hidden-line "
-                  "drawing = the edges of the front faces (visible + silhouette): " + join(visible) +
-                  (visible.empty() ? "" : ", ") + join(silhouette) + ".";
+                  "drawing = the edges of the front faces (visible + silhouette): " + join(front_edges) + ".";
       steps->yields("edges");
     }
 
