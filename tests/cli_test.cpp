@@ -113,6 +113,24 @@ TEST(Cli, GenerateRefusesWhatCheckRefusesBeforeWritingAnything) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/placeholder_set-s1.yaml"));
 }
 
+TEST(Cli, GenerateStopsWhenAProblemRunsOutOfVariants) {
+  // Two pixels to choose from: the third variant cannot be new. Each later variant once spent
+  // every draw and failed alike (a 100,000-variant run of a narrow set took half an hour).
+  const std::string dir = ::testing::TempDir() + "/gen-exhausted";
+  const std::string path = ::testing::TempDir() + "/narrow_set.yaml";
+  std::ofstream(path) << "title: t\nproblems:\n"
+                         "  - id: z\n    kind: depth_at_pixel\n"
+                         "    given: {triangle: [[0, 0, 6], [6, 0, 9], [0, 6, 9]], pixel: [1, 1]}\n"
+                         "    vary: {pixel: {choices: [[1, 1], [2, 1]]}}\n";
+  const CliRun r = run("generate " + path + " --seed 1 --count 1000 -o " + dir);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("stopped at variant 3 of 1000 (2 distinct variants of this problem were drawn)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/narrow_set-seed1-1.yaml"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/narrow_set-seed1-3.yaml"));
+}
+
 TEST(Cli, BadUsageIsAnErrorNotACrash) {
   EXPECT_NE(run("solve /nonexistent.yaml").status, 0);
   EXPECT_NE(run("frobnicate").status, 0);

@@ -270,10 +270,22 @@ void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int c
   for (int i = 0; i < count; ++i) {
     const std::string who = "seed:" + std::to_string(seed) + ":" + std::to_string(i);
     ProblemSet v = make_variant(set, who, "", vary_all, &taken);
-    for (std::size_t p = 0; p < v.problems.size(); ++p)
-      if (!v.problems[p].error && (vary_all || problem_varies(set, set.problems[p])))
+    // A problem that found no new variant in all its draws has (nearly) used up its ranges:
+    // the later variants would each spend every draw and fail alike, so the run stops here.
+    bool exhausted = false;
+    for (std::size_t p = 0; p < v.problems.size(); ++p) {
+      if (!v.problems[p].error && (vary_all || problem_varies(set, set.problems[p]))) {
         taken[p].insert(emit_flow(v.problems[p].given_node));
+      } else if (v.problems[p].error && !set.problems[p].error) {
+        v.problems[p].error->message += "; stopped at variant " + std::to_string(i + 1) + " of " +
+                                        std::to_string(count) + " (" +
+                                        std::to_string(taken[p].size()) +
+                                        " distinct variants of this problem were drawn)";
+        exhausted = true;
+      }
+    }
     take(i, std::move(v));
+    if (exhausted) return;
   }
 }
 

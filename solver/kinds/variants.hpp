@@ -59,6 +59,7 @@ std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t 
                                            bool vary_all = false);
 // The same variants handed to `take` one at a time, in order (index, variant), without keeping
 // them: linear in `count` in time, and in memory only the givens drawn so far.
+// Stops after the first variant in which a problem could not be drawn (its ranges used up).
 void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all,
                                 const std::function<void(int, ProblemSet&&)>& take);
 // The student's variant, with vary_all as above.
