@@ -218,20 +218,18 @@ int run_grade(const GradeOptions& g, const Output& o) {
   if (batch) return run_batch(set, g, o);
 
   const Submission submission = load_submission(g.answers);
-  // An answers file that could not be read has no `student:` to find a variant by: say why.
-  if (g.variants && !submission.answers.IsMap() && !submission.errors.empty()) {
-    for (const Diagnostic& d : submission.errors) o.err << "error: " << terminal_text(d.format()) << "\n";
-    return 1;
-  }
+  // A file that could not be read at all (not a regular file, too large, not YAML) is one
+  // error, said once: not every problem's derivation under "missing". It has no `student:` to
+  // find a variant by, so it is scored (nothing earned) against the set itself, and the
+  // --gradescope/--prairielearn/--html/--markdown outputs still carry the located reason.
+  const bool unreadable = !submission.answers.IsMap() && !submission.errors.empty();
   std::string variant;
   std::optional<ClassVariants> roster;
   if (!read_class(set, g, o, roster)) return 1;
-  const ProblemSet graded = set_for_student(set, g, roster ? &*roster : nullptr, submission.student, variant);
+  const ProblemSet graded =
+      unreadable ? set : set_for_student(set, g, roster ? &*roster : nullptr, submission.student, variant);
   GradeReport report = grade(graded, submission);
   report.variant = variant;
-  // A file that could not be read at all (not a regular file, too large, not YAML) is one
-  // error, said once: not every problem's derivation under "missing".
-  const bool unreadable = !submission.answers.IsMap() && !submission.errors.empty();
   if (g.format == Format::Json)
     o.out << json_text(render_grade_json(report)) << "\n";
   else if (unreadable)

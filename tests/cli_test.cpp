@@ -96,6 +96,18 @@ TEST(Cli, AnUnreadableAnswersFileIsOneErrorNotEveryProblemMissing) {
   EXPECT_EQ(r.out.find("missing"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("How to get it"), std::string::npos) << r.out;
   EXPECT_TRUE(stdout_of("grade " + seed("001_zbuffer_plane_method.yaml") + " " + path).out.empty());
+  // The platform outputs still say why, with or without --variants (a Gradescope upload that
+  // does not parse scores 0 with the reason instead of stopping the autograder).
+  const std::string results = ::testing::TempDir() + "/broken_results.json";
+  std::filesystem::remove(results);
+  EXPECT_EQ(run("grade " + seed("001_zbuffer_plane_method.yaml") + " " + path + " --variants " +
+                ::testing::TempDir() + " --gradescope " + results)
+                .status,
+            1);
+  std::ifstream in(results);
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("broken_answers.yaml:3:1: invalid YAML"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"score\": 0"), std::string::npos) << json;
 }
 
 TEST(Cli, GenerateRefusesWhatCheckRefusesBeforeWritingAnything) {
