@@ -51,6 +51,6 @@ complete_words() {  # complete_words WORD...: what bash completion offers for th
 }
 check "completion: subcommands" test "$(complete_words frustum so)" = "solve"
 check "completion: options" grep -qw -- "--precision" <(complete_words frustum solve --p)
-check "completion: a choice's words" test "$(complete_words frustum solve x.yaml --format '')" = "text markdown json"
+check "completion: a choice's words" test "$(complete_words frustum solve x.yaml --format '')" = "text markdown json html latex"
 echo "$failures failed"
 [ "$failures" -eq 0 ]
