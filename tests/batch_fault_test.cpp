@@ -20,33 +20,6 @@ namespace fs = std::filesystem;
 // A time limit short enough for a fast test, long enough for seed 001 under sanitizers.
 constexpr double kTestTimeout = 3.0;
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write(const fs::path& p, const std::string& text) {
-  std::ofstream(p, std::ios::binary) << text;
-}
-
-// Every file under dir, by path relative to dir, with its bytes.
-std::map<std::string, std::string> tree(const fs::path& dir) {
-  std::map<std::string, std::string> out;
-  // The published outputs, through their symlinks; not the runs kept under .frustum/.
-  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::follow_directory_symlink);
-       it != fs::recursive_directory_iterator(); ++it) {
-    if (it->path().filename() == ".frustum") {
-      it.disable_recursion_pending();
-      continue;
-    }
-    const fs::directory_entry& e = *it;
-    if (e.is_regular_file()) out[fs::relative(e.path(), dir).string()] = read_all(e.path());
-  }
-  return out;
-}
-
 class BatchFaults : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -55,16 +28,16 @@ class BatchFaults : public ::testing::Test {
              "_" + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
     fs::create_directories(root_ / "in");
     const fs::path in = root_ / "in";
-    write(in / "a_good.yaml",
-          read_all(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml")));
-    write(in / "b_malformed.yaml", "student: malformed\nanswers:\n  seed001-pixel-z:\n    z: [8\n");
-    write(in / "c_empty.yaml", "");
-    write(in / "d_huge.yaml", "student: huge\nanswers: {}\n" + std::string(kMaxSubmissionBytes, '#'));
-    write(in / "e_slow.yaml", "student: slow\nanswers:\n  seed001-pixel-z: {z: 8}\n");
-    write(in / "f_hostile.yaml", "student: hostile\nanswers:\n  seed001-pixel-z:\n    z: \"" +
+    test::write_file(in / "a_good.yaml",
+          test::read_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml")));
+    test::write_file(in / "b_malformed.yaml", "student: malformed\nanswers:\n  seed001-pixel-z:\n    z: [8\n");
+    test::write_file(in / "c_empty.yaml", "");
+    test::write_file(in / "d_huge.yaml", "student: huge\nanswers: {}\n" + std::string(kMaxSubmissionBytes, '#'));
+    test::write_file(in / "e_slow.yaml", "student: slow\nanswers:\n  seed001-pixel-z: {z: 8}\n");
+    test::write_file(in / "f_hostile.yaml", "student: hostile\nanswers:\n  seed001-pixel-z:\n    z: \"" +
                                      std::string(100000, '(') + "8" + std::string(100000, ')') +
                                      "\"\n    plane: \"x + y - z = -6\"\n    inside: \"\xff\xfe\"\n");
-    write(in / "g_yaml_bomb.yaml", "student: bomb\nanswers: " + std::string(20000, '[') +
+    test::write_file(in / "g_yaml_bomb.yaml", "student: bomb\nanswers: " + std::string(20000, '[') +
                                        std::string(20000, ']') + "\n");
     set_ = load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
     ASSERT_TRUE(set_.all_errors().empty());
@@ -123,17 +96,17 @@ TEST_F(BatchFaults, EveryStudentHasARowWithAReasonAndASecondRunIsByteIdentical) 
   }
 
   // The gradebook lists every student; every output was renamed into place.
-  const std::string book = read_all(root_ / "out" / "gradebook.csv");
+  const std::string book = test::read_file(root_ / "out" / "gradebook.csv");
   for (const char* s : {"seed001-published", "b_malformed", "c_empty", "d_huge", "slow", "hostile", "g_yaml_bomb"})
     EXPECT_NE(book.find(s), std::string::npos) << s << " missing from\n" << book;
-  for (const auto& [path, text] : tree(root_ / "out")) {
+  for (const auto& [path, text] : test::published_tree(root_ / "out")) {
     EXPECT_NE(fs::path(path).filename().string()[0], '.') << "a temporary file was left: " << path;
     EXPECT_FALSE(text.empty()) << path;
   }
 
   run("second");
-  const auto first = tree(root_ / "out");
-  const auto second = tree(root_ / "second");
+  const auto first = test::published_tree(root_ / "out");
+  const auto second = test::published_tree(root_ / "second");
   ASSERT_FALSE(first.empty());
   ASSERT_EQ(first.size(), second.size());
   for (const auto& [path, text] : first) {

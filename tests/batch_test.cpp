@@ -41,40 +41,12 @@ problems:
     ask: [df, facing]
 )Y";
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // A fresh scratch directory per test.
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("frustum-batch-" + name + "-" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-void write(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
-
-// Every file under a directory, relative path → content.
-std::map<std::string, std::string> tree(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  // The published outputs, through their symlinks; not the runs kept under .frustum/.
-  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::follow_directory_symlink);
-       it != fs::recursive_directory_iterator(); ++it) {
-    if (it->path().filename() == ".frustum") {
-      it.disable_recursion_pending();
-      continue;
-    }
-    const fs::directory_entry& e = *it;
-    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read(e.path());
-  }
-  return files;
 }
 
 TEST(Csv, ReadsQuotesDoubledQuotesLineBreaksAndCrlf) {
@@ -101,7 +73,7 @@ TEST(AtomicFile, WritesTheWholeFileAndLeavesNoTemporaryBehind) {
   const fs::path target = dir / "sub" / "out.txt";
   write_file_atomically(target.string(), "first");
   write_file_atomically(target.string(), std::string(1 << 20, 'x'));
-  EXPECT_EQ(read(target), std::string(1 << 20, 'x'));
+  EXPECT_EQ(test::read_file(target), std::string(1 << 20, 'x'));
   EXPECT_EQ(std::distance(fs::directory_iterator(dir / "sub"), fs::directory_iterator()), 1);
   EXPECT_THROW(write_file_atomically((dir / "sub" / "out.txt" / "below").string(), "x"), std::exception);
   fs::remove_all(dir);
@@ -157,14 +129,14 @@ TEST(Isolate, SharesInParallelKeepEachItemsOwnResult) {
 fs::path make_class(const fs::path& dir) {
   const fs::path in = dir / "in";
   fs::create_directories(in);
-  write(in / "a_right.yaml",
+  test::write_file(in / "a_right.yaml",
         "student: s001\nanswers:\n  zbuf: {normal: [1, 1, -1], plane: \"x + y - z = -6\", z: 8}\n"
         "  bf: {df: -2, facing: back}\n");
-  write(in / "b_wrong.yaml", "student: s002\nanswers:\n  zbuf: {normal: [-1, -1, 1], plane: [1, 1, -1, -6], z: 9}\n");
-  write(in / "c_broken.yaml", "answers: [1, 2\n");
-  write(in / "d_empty.yaml", "");
-  write(in / "e_huge.yaml", "student: s005\n#" + std::string(kMaxSubmissionBytes + 10, 'x') + "\n");
-  write(in / "notes.txt", "not an answers file");
+  test::write_file(in / "b_wrong.yaml", "student: s002\nanswers:\n  zbuf: {normal: [-1, -1, 1], plane: [1, 1, -1, -6], z: 9}\n");
+  test::write_file(in / "c_broken.yaml", "answers: [1, 2\n");
+  test::write_file(in / "d_empty.yaml", "");
+  test::write_file(in / "e_huge.yaml", "student: s005\n#" + std::string(kMaxSubmissionBytes + 10, 'x') + "\n");
+  test::write_file(in / "notes.txt", "not an answers file");
   return in;
 }
 
@@ -197,7 +169,7 @@ TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
   EXPECT_EQ(r.rows[4].status, "error");
   EXPECT_NE(r.rows[4].message.find("larger than the limit"), std::string::npos);
 
-  const std::string book = read(dir / "out" / "gradebook.csv");
+  const std::string book = test::read_file(dir / "out" / "gradebook.csv");
   const CsvTable t = parse_csv(book);
   ASSERT_EQ(t.rows.size(), 6u) << book;
   EXPECT_EQ(t.rows[0].fields[0], "student");
@@ -208,7 +180,7 @@ TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
     EXPECT_TRUE(fs::exists(dir / "out" / "feedback" / (std::string(stem) + ".md"))) << stem;
     EXPECT_TRUE(fs::exists(dir / "out" / "gradescope" / (std::string(stem) + ".json"))) << stem;
   }
-  const auto gs = nlohmann::json::parse(read(dir / "out" / "gradescope" / "s002.json"));
+  const auto gs = nlohmann::json::parse(test::read_file(dir / "out" / "gradescope" / "s002.json"));
   ASSERT_EQ(gs["tests"].size(), 2u);
   EXPECT_EQ(gs["tests"][0]["name"], "zbuf");
   EXPECT_EQ(gs["tests"][0]["status"], "failed");
@@ -216,7 +188,7 @@ TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
   EXPECT_EQ(gs["tests"][0]["output_format"], "md");
   EXPECT_EQ(gs["tests"][0]["visibility"], "visible");
   EXPECT_NE(gs["tests"][0]["output"].get<std::string>().find("x + y − z = −6"), std::string::npos);
-  const std::string html = read(dir / "out" / "feedback" / "s002.html");
+  const std::string html = test::read_file(dir / "out" / "feedback" / "s002.html");
   EXPECT_NE(html.find("data-verdict=\"incorrect\""), std::string::npos);
   // The page must not load anything (the inlined KaTeX names XML namespaces, which are not loads).
   for (const char* load : {"src=\"http", "src='http", "src=\"//", "href=\"http", "href=\"//", "url(http", "url(//", "@import"})
@@ -233,7 +205,7 @@ TEST(Batch, ASecondRunGivesByteIdenticalOutputs) {
   grade_batch(set, collect_submissions(in.string()), options);
   options.out_dir = (dir / "two").string();
   grade_batch(set, collect_submissions(in.string()), options);
-  const auto one = tree(dir / "one"), two = tree(dir / "two");
+  const auto one = test::published_tree(dir / "one"), two = test::published_tree(dir / "two");
   // gradebook, 5 Gradescope files, 5 Markdown pages, 4 HTML pages (not for the file never read)
   EXPECT_EQ(one.size(), 15u);
   EXPECT_TRUE(one == two);
@@ -251,19 +223,19 @@ TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
   options.jobs = 3;
   options.out_dir = (dir / "three").string();
   const BatchResult three = grade_batch(set, collect_submissions(in.string()), options);
-  EXPECT_TRUE(tree(dir / "one") == tree(dir / "three"));
+  EXPECT_TRUE(test::published_tree(dir / "one") == test::published_tree(dir / "three"));
   ASSERT_EQ(three.rows.size(), 5u);
   for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(three.rows[i].student, one_child.rows[i].student);
   // The page the batch assembles (typesetting head added by the parent) is the page made alone.
   const Submission sub =
-      load_submission_from_string(read(in / "b_wrong.yaml"), (in / "b_wrong.yaml").string());
-  EXPECT_EQ(read(dir / "three" / "feedback" / "s002.html"), render_feedback_html(grade(set, sub)));
+      load_submission_from_string(test::read_file(in / "b_wrong.yaml"), (in / "b_wrong.yaml").string());
+  EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.html"), render_feedback_html(grade(set, sub)));
   fs::remove_all(dir);
 }
 
 TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
   const fs::path dir = scratch("csv");
-  write(dir / "roster.csv",
+  test::write_file(dir / "roster.csv",
         "student,zbuf.normal,zbuf.plane,zbuf.z,bf.df,bf.facing\n"
         "s001,\"[1, 1, -1]\",x + y - z = -6,8,-2,back\n"
         "s002,\"[2, 2, -2]\",\"[1, 1, -1, -6]\",9,,\n"
@@ -280,7 +252,7 @@ TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
   EXPECT_DOUBLE_EQ(r.rows[1].score, 2);  // normal and plane right, z wrong, bf missing
   EXPECT_DOUBLE_EQ(r.rows[2].score, 0);
   EXPECT_EQ(r.rows[0].source, (dir / "roster.csv").string() + " row 2");
-  write(dir / "bad.csv", "name,zbuf.z\nx,1\n");
+  test::write_file(dir / "bad.csv", "name,zbuf.z\nx,1\n");
   EXPECT_THROW(collect_submissions((dir / "bad.csv").string()), InputError);
   fs::remove_all(dir);
 }
@@ -342,18 +314,18 @@ TEST(Gradescope, AutograderScriptWritesResultsJson) {
   fs::create_directories(ag / "submission");
   fs::create_symlink(FRUSTUM_BINARY, ag / "source" / "build" / "frustum");
   fs::create_symlink(test::source_path("problems"), ag / "source" / "problems");
-  write(ag / "source" / "autograder.conf", "SET=problems/seeds/001_zbuffer_plane_method.yaml\nLANG_FEEDBACK=ja\n");
+  test::write_file(ag / "source" / "autograder.conf", "SET=problems/seeds/001_zbuffer_plane_method.yaml\nLANG_FEEDBACK=ja\n");
   const std::string run = "AUTOGRADER_ROOT=" + ag.string() + " bash " +
                           test::source_path("tools/gradescope/run_autograder") + " >/dev/null 2>&1";
   // No answers file: a zero score that says why.
   ASSERT_EQ(std::system(run.c_str()), 0);
-  auto results = nlohmann::json::parse(read(ag / "results" / "results.json"));
+  auto results = nlohmann::json::parse(test::read_file(ag / "results" / "results.json"));
   EXPECT_EQ(results["score"], 0);
   EXPECT_NE(results["output"].get<std::string>().find("No answers file"), std::string::npos);
   // The published answers: full marks, one test per problem, feedback in Japanese.
   fs::copy_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml"), ag / "submission" / "answers.yaml");
   ASSERT_EQ(std::system(run.c_str()), 0);
-  results = nlohmann::json::parse(read(ag / "results" / "results.json"));
+  results = nlohmann::json::parse(test::read_file(ag / "results" / "results.json"));
   EXPECT_EQ(results["score"], 8);
   ASSERT_EQ(results["tests"].size(), 3u);
   for (const auto& t : results["tests"]) {

@@ -42,22 +42,11 @@ fs::path scratch(const std::string& name) {
   return p;
 }
 
-void write(const fs::path& p, const std::string& text) {
-  std::ofstream(p, std::ios::binary) << text;
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 fs::path make_class(const fs::path& dir, int students) {
   const fs::path in = dir / "in";
   fs::create_directories(in);
   for (int i = 0; i < students; ++i)
-    write(in / ("s" + std::to_string(100 + i) + ".yaml"),
+    test::write_file(in / ("s" + std::to_string(100 + i) + ".yaml"),
           "student: s" + std::to_string(100 + i) +
               "\nanswers:\n  zbuf: {z: " + std::to_string(i % 2 ? 8 : 9) + "}\n");
   return in;
@@ -93,9 +82,9 @@ TEST(BatchTransaction, IdsThatMapToOneNameEachKeepTheirOwnFeedback) {
   // Ids a-2, a, a once made one student's feedback overwrite another's.
   const fs::path dir = scratch("ids");
   fs::create_directories(dir / "in");
-  write(dir / "in" / "1.yaml", "student: a-2\nanswers:\n  zbuf: {z: 8}\n");
-  write(dir / "in" / "2.yaml", "student: a\nanswers:\n  zbuf: {z: 9}\n");
-  write(dir / "in" / "3.yaml", "student: a\nanswers:\n  zbuf: {z: 7}\n");
+  test::write_file(dir / "in" / "1.yaml", "student: a-2\nanswers:\n  zbuf: {z: 8}\n");
+  test::write_file(dir / "in" / "2.yaml", "student: a\nanswers:\n  zbuf: {z: 9}\n");
+  test::write_file(dir / "in" / "3.yaml", "student: a\nanswers:\n  zbuf: {z: 7}\n");
   BatchOptions o;
   o.out_dir = (dir / "out").string();
   const BatchResult r = grade_batch(load_problem_set_from_string(kSet, "set.yaml"),
@@ -104,9 +93,9 @@ TEST(BatchTransaction, IdsThatMapToOneNameEachKeepTheirOwnFeedback) {
   EXPECT_EQ(r.rows[0].feedback_stem, "a-2");
   EXPECT_EQ(r.rows[1].feedback_stem, "a");
   EXPECT_EQ(r.rows[2].feedback_stem, "a~2");
-  EXPECT_NE(read(dir / "out" / "feedback" / "a.md").find("9"), std::string::npos);
-  EXPECT_NE(read(dir / "out" / "feedback" / "a~2.md").find("7"), std::string::npos);
-  const CsvTable book = parse_csv(read(dir / "out" / "gradebook.csv"));
+  EXPECT_NE(test::read_file(dir / "out" / "feedback" / "a.md").find("9"), std::string::npos);
+  EXPECT_NE(test::read_file(dir / "out" / "feedback" / "a~2.md").find("7"), std::string::npos);
+  const CsvTable book = parse_csv(test::read_file(dir / "out" / "gradebook.csv"));
   ASSERT_EQ(book.rows.size(), 4u);
   EXPECT_EQ(book.rows[0].fields.back(), "file");
   EXPECT_EQ(book.rows[3].fields.back(), "a~2");
@@ -120,7 +109,7 @@ TEST(BatchTransaction, ASecondBatchOnTheSameOutputIsRefused) {
   BatchOptions o;
   o.out_dir = (dir / "out").string();
   grade_batch(set, collect_submissions(in.string()), o);
-  const std::string before = read(dir / "out" / "gradebook.csv");
+  const std::string before = test::read_file(dir / "out" / "gradebook.csv");
   {
     OutputTransaction held(o.out_dir, {"gradebook.csv"});
     try {
@@ -131,7 +120,7 @@ TEST(BatchTransaction, ASecondBatchOnTheSameOutputIsRefused) {
           << e.what();
     }
   }
-  EXPECT_EQ(read(dir / "out" / "gradebook.csv"), before);
+  EXPECT_EQ(test::read_file(dir / "out" / "gradebook.csv"), before);
   grade_batch(set, collect_submissions(in.string()), o);  // released with its holder
   fs::remove_all(dir);
 }
@@ -139,7 +128,7 @@ TEST(BatchTransaction, ASecondBatchOnTheSameOutputIsRefused) {
 TEST(BatchTransaction, AnUnwritableOutputIsAnErrorNotAnAbort) {
   const fs::path dir = scratch("unwritable");
   const fs::path in = make_class(dir, 1);
-  write(dir / "file", "a file, not a directory");
+  test::write_file(dir / "file", "a file, not a directory");
   BatchOptions o;
   o.out_dir = (dir / "file" / "out").string();
   EXPECT_THROW(grade_batch(load_problem_set_from_string(kSet, "set.yaml"),
@@ -155,7 +144,7 @@ void expect_consistent(const fs::path& out) {
     EXPECT_FALSE(fs::exists(out / "feedback" / "s100.md")) << "outputs without a gradebook";
     return;
   }
-  const CsvTable book = parse_csv(read(out / "gradebook.csv"));
+  const CsvTable book = parse_csv(test::read_file(out / "gradebook.csv"));
   ASSERT_GE(book.rows.size(), 2u);
   std::set<std::string> listed, on_disk;
   for (std::size_t r = 1; r < book.rows.size(); ++r) listed.insert(book.rows[r].fields.back());
@@ -163,7 +152,7 @@ void expect_consistent(const fs::path& out) {
     on_disk.insert(e.path().stem().string());
   EXPECT_EQ(listed, on_disk);
   for (const std::string& f : listed) {
-    const std::string md = read(out / "feedback" / (f + ".md"));
+    const std::string md = test::read_file(out / "feedback" / (f + ".md"));
     EXPECT_NE(md.find(f), std::string::npos) << f;
   }
 }
@@ -239,9 +228,9 @@ TEST(BatchTransaction, TheRosterSaysWhoseFileItIs) {
   // Ids came from the files themselves, so any file could claim any id.
   const fs::path dir = scratch("roster");
   fs::create_directories(dir / "in");
-  write(dir / "in" / "s1.yaml", "student: s1\nanswers:\n  zbuf: {z: 8}\n");
-  write(dir / "in" / "s2.yaml", "student: s1\nanswers:\n  zbuf: {z: 9}\n");  // claims s1
-  write(dir / "in" / "x.yaml", "student: x\nanswers:\n  zbuf: {z: 8}\n");
+  test::write_file(dir / "in" / "s1.yaml", "student: s1\nanswers:\n  zbuf: {z: 8}\n");
+  test::write_file(dir / "in" / "s2.yaml", "student: s1\nanswers:\n  zbuf: {z: 9}\n");  // claims s1
+  test::write_file(dir / "in" / "x.yaml", "student: x\nanswers:\n  zbuf: {z: 8}\n");
   const std::vector<BatchEntry> entries =
       apply_roster(collect_submissions((dir / "in").string()), {"s1", "s2", "s3"}, "roster.csv");
   BatchOptions o;
@@ -260,7 +249,7 @@ TEST(BatchTransaction, TheRosterSaysWhoseFileItIs) {
   EXPECT_NE(r.rows[2].message.find("no answers file s3.yaml"), std::string::npos) << r.rows[2].message;
   EXPECT_EQ(r.rows[3].status, "error");
   EXPECT_NE(r.rows[3].message.find("not on the roster"), std::string::npos) << r.rows[3].message;
-  EXPECT_NE(read(dir / "out" / "feedback" / "s2.md").find("s2"), std::string::npos);
+  EXPECT_NE(test::read_file(dir / "out" / "feedback" / "s2.md").find("s2"), std::string::npos);
   fs::remove_all(dir);
 }
 

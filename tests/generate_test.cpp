@@ -415,13 +415,6 @@ std::string run_cli(const std::string& args, int& status) {
   return out;
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
 TEST(GenerateCli, WritesReproducibleSetsWhoseKeysGradeFullMarks) {
   const std::string dir = ::testing::TempDir() + "frustum_generate_cli";
   std::filesystem::remove_all(dir);
@@ -433,10 +426,10 @@ TEST(GenerateCli, WritesReproducibleSetsWhoseKeysGradeFullMarks) {
   ASSERT_EQ(status, 0);
   run_cli("generate " + set + " --student s1 -o " + dir + "/b", status);
   ASSERT_EQ(status, 0);
-  const std::string first = read_text(dir + "/a/drill-s1.yaml");
+  const std::string first = test::read_file(dir + "/a/drill-s1.yaml");
   EXPECT_NE(first.find("seed "), std::string::npos);
-  EXPECT_EQ(first, read_text(dir + "/b/drill-s1.yaml"));
-  EXPECT_EQ(read_text(dir + "/a/answers/drill-s1.yaml"), read_text(dir + "/b/answers/drill-s1.yaml"));
+  EXPECT_EQ(first, test::read_file(dir + "/b/drill-s1.yaml"));
+  EXPECT_EQ(test::read_file(dir + "/a/answers/drill-s1.yaml"), test::read_file(dir + "/b/answers/drill-s1.yaml"));
   // The key grades full marks against the master set, which regenerates s1's variant.
   const std::string out = run_cli("grade " + set + " " + dir + "/a/answers/drill-s1.yaml --format json", status);
   EXPECT_EQ(status, 0) << out;
@@ -476,7 +469,7 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   std::set<std::string> givens;
   bool redrawn = false;
   for (const std::string s : {"ana", "ben", "cy", "dee"}) {
-    const std::string text = read_text(dir + "/gen/few-" + s + ".yaml");
+    const std::string text = test::read_file(dir + "/gen/few-" + s + ".yaml");
     givens.insert(text.substr(text.find("given:")));
     redrawn = redrawn || text.find("Draw ") != std::string::npos;
     std::filesystem::copy_file(dir + "/gen/answers/few-" + s + ".yaml", dir + "/answers/" + s + ".yaml");
@@ -487,14 +480,14 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   // Against their generated files every key grades full marks, redrawn students included.
   const std::string out = run_cli("grade " + set + " " + dir + "/answers --variants " + dir + "/gen -o " + dir + "/grades", status);
   EXPECT_EQ(status, 0) << out;
-  const std::string book = read_text(dir + "/grades/gradebook.csv");
+  const std::string book = test::read_file(dir + "/grades/gradebook.csv");
   for (const std::string s : {"ana", "ben", "cy", "dee"})
     EXPECT_NE(book.find(s + ",1,1,100"), std::string::npos) << book;
   // In a batch, a student with no generated file is an error row that says why.
   std::ofstream(dir + "/answers/zed.yaml") << "student: zed\nanswers:\n  v: {dot: 0}\n";
   run_cli("grade " + set + " " + dir + "/answers --variants " + dir + "/gen -o " + dir + "/grades2", status);
   EXPECT_NE(status, 0);
-  const std::string book2 = read_text(dir + "/grades2/gradebook.csv");
+  const std::string book2 = test::read_file(dir + "/grades2/gradebook.csv");
   EXPECT_NE(book2.find("zed,0,"), std::string::npos) << book2;
   EXPECT_NE(book2.find(",error,"), std::string::npos) << book2;
   EXPECT_NE(book2.find("no generated set for student zed"), std::string::npos) << book2;
@@ -512,7 +505,7 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   // redrawn) is refused, never graded against another draw.
   const std::string by_roster = run_cli("grade " + set + " " + dir + "/answers --roster " + dir + "/roster.csv -o " + dir + "/grades3", status);
   EXPECT_EQ(status, 0) << by_roster;
-  const std::string book3 = read_text(dir + "/grades3/gradebook.csv");
+  const std::string book3 = test::read_file(dir + "/grades3/gradebook.csv");
   for (const std::string s : {"ana", "ben", "cy", "dee"}) EXPECT_NE(book3.find(s + ",1,1,100"), std::string::npos) << book3;
   for (const std::string s : {"ana", "ben", "cy", "dee"}) {
     const std::string alone = run_cli("grade " + set + " " + dir + "/answers/" + s + ".yaml --roster " + dir + "/roster.csv", status);
@@ -520,7 +513,7 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   }
   const std::string guessed = run_cli("grade " + set + " " + dir + "/answers -o " + dir + "/grades4", status);
   EXPECT_NE(status, 0);
-  const std::string book4 = read_text(dir + "/grades4/gradebook.csv");
+  const std::string book4 = test::read_file(dir + "/grades4/gradebook.csv");
   EXPECT_NE(book4.find("--variants"), std::string::npos) << book4;
   for (const std::string s : {"ana", "ben", "cy", "dee"})
     EXPECT_NE(book4.find(s + ",0,1,0.0,error"), std::string::npos) << s << "\n" << book4;

@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -50,6 +54,34 @@ inline bool same(const Exact& a, const Exact& b) { return canonical(a - b).is_ze
 
 inline std::string error_text(const ProblemResult& r) {
   return r.error ? r.error->format() : std::string();
+}
+
+// A file's bytes ("" when it cannot be read).
+inline std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline void write_file(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+// The published outputs of a batch's output directory, relative path → bytes, read through
+// their symlinks; the runs kept under .frustum/ are not outputs.
+inline std::map<std::string, std::string> published_tree(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::map<std::string, std::string> files;
+  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::follow_directory_symlink);
+       it != fs::recursive_directory_iterator(); ++it) {
+    if (it->path().filename() == ".frustum") {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file()) files[fs::relative(it->path(), dir).string()] = read_file(it->path());
+  }
+  return files;
 }
 
 }  // namespace frustum::test
