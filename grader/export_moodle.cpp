@@ -33,8 +33,11 @@ std::string cloze_field(const QuizField& f, int weight) {
              cloze_literal(f.choices[i]);
       return s + "}";
     }
-    case QuizField::Type::Text:
-      return fmt::format("{{{}:SHORTANSWER:={}}}", weight, cloze_literal(f.correct));
+    case QuizField::Type::Text: {
+      std::string answers = "=" + cloze_literal(f.correct);
+      for (const std::string& also : f.also) answers += "~=" + cloze_literal(also);
+      return fmt::format("{{{}:SHORTANSWER:{}}}", weight, answers);
+    }
   }
   return {};
 }

@@ -80,6 +80,9 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
           "          <response_str ident=\"response1\" rcardinality=\"Single\"><render_fib>"
           "<response_label ident=\"answer1\" rshuffle=\"No\"/></render_fib></response_str>\n";
       condition = "<varequal respident=\"response1\">" + xml_escape(f.correct) + "</varequal>";
+      for (const std::string& also : f.also)
+        condition += "<varequal respident=\"response1\">" + xml_escape(also) + "</varequal>";
+      if (!f.also.empty()) condition = "<or>" + condition + "</or>";
       break;
   }
   out += presentation + "        </presentation>\n";

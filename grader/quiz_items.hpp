@@ -21,6 +21,7 @@ struct QuizField {
   double window = 0;                 // Number: accepted half-width
   std::vector<std::string> choices;  // Choice
   std::string correct;               // Choice and Text: the right word or text
+  std::vector<std::string> also;     // Text: other spellings `frustum grade` accepts as right
 };
 
 struct QuizAnswer {

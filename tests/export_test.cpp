@@ -3,6 +3,8 @@
 // windows is not; every choice and text field's right word is graded correct.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "grader/export_moodle.hpp"
 #include "grader/export_qti.hpp"
 #include "grader/grade.hpp"
@@ -103,6 +105,47 @@ TEST(Export, AnswersNoFieldCanCheckAreNamedNotDropped) {
   ASSERT_TRUE(qti.count("seed1.xml"));
   EXPECT_NE(qti.at("seed1.xml").find("<vargte respident=\"response1\">7.992</vargte>"),
             std::string::npos);
+}
+
+// A text field (an outcode) is right on a platform for exactly the spellings the grader calls
+// right: every bit string up to the field's length is tried against both.
+TEST(Export, TextFieldsAcceptExactlyWhatTheGraderAccepts) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/hard/decisions.yaml"));
+  ASSERT_TRUE(set.all_errors().empty());
+  const SolvedSet solved = solve_for_grading(set);
+  const std::vector<QuizQuestion> qs = quiz_questions(set);
+  int fields = 0, dropped = 0;
+  for (const QuizQuestion& q : qs)
+    for (const QuizAnswer& a : q.answers)
+      for (const QuizField& f : a.fields) {
+        if (f.type != QuizField::Type::Text) continue;
+        ++fields;
+        std::vector<std::string> platform{f.correct};
+        platform.insert(platform.end(), f.also.begin(), f.also.end());
+        dropped += static_cast<int>(f.also.size());
+        for (std::size_t n = 1; n <= f.correct.size(); ++n)
+          for (unsigned bits = 0; bits < (1u << n); ++bits) {
+            std::string s;
+            for (std::size_t i = n; i-- > 0;) s += (bits >> i & 1u) ? '1' : '0';
+            const bool graded = verdict_of(set, solved, q.id, a.name, "\"" + s + "\"") == Verdict::Correct;
+            const bool listed = std::find(platform.begin(), platform.end(), s) != platform.end();
+            EXPECT_EQ(graded, listed) << q.id << "." << a.name << " " << s;
+          }
+        QuizQuestion only = q;  // this field alone
+        only.answers = {a};
+        only.answers[0].fields = {f};
+        const std::string moodle = export_moodle({{"", {only}}}, "t");
+        std::string cloze = "SHORTANSWER:=" + f.correct;
+        for (const std::string& also : f.also) cloze += "~=" + also;
+        EXPECT_NE(moodle.find(cloze + "}"), std::string::npos) << moodle;
+        const std::string qti = export_qti({{"", {only}}}, "t", "t").at("t.xml");
+        for (const std::string& s : platform)
+          EXPECT_NE(qti.find("<varequal respident=\"response1\">" + s + "</varequal>"), std::string::npos)
+              << s;
+        EXPECT_EQ(qti.find("<or>") != std::string::npos, !f.also.empty());
+      }
+  EXPECT_GE(fields, 4);
+  EXPECT_GT(dropped, 0);  // some outcode has a leading zero
 }
 
 }  // namespace
