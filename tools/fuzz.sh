@@ -42,6 +42,8 @@ for f in problems/*/*.yaml; do grep -q "^ *scene:" "$f" && cp "$f" "$seeds/fuzz_
 
 mkdir -p build-fuzz/artifacts
 figures=build-fuzz/figures.md
+# Rows before 2026-12 counted libFuzzer's slow-unit reports among the findings; later rows keep
+# them apart and say how a timeout did when re-run alone.
 [ -f "$figures" ] || printf '| date | machine | target | seconds | executions | exec/s | corpus | peak RSS MB | findings |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n' > "$figures"
 machine="$(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)"
 seed_arg=()
@@ -71,7 +73,24 @@ for t in "${targets[@]}"; do
   fi
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$log" | sed "s/^/fuzz: $t /" || true
   figure() { grep -E "stat::$1:" "$log" | tail -1 | awk '{print $2}'; }
-  findings=$(find build-fuzz/artifacts -name "$t-*" -newer "$log.start" 2>/dev/null | wc -l)
+  # Findings are crashes, leaks, out-of-memory and timeouts; a slow unit (over 10 s, under the
+  # limit) is only counted. A timeout is re-run alone: on a starved machine an input can pass
+  # the limit without hanging, and the row says how long it took by itself.
+  findings=$(find build-fuzz/artifacts -newer "$log.start" \( -name "$t-crash-*" -o -name "$t-leak-*" \
+             -o -name "$t-oom-*" -o -name "$t-timeout-*" \) 2>/dev/null | wc -l)
+  slow=$(find build-fuzz/artifacts -newer "$log.start" -name "$t-slow-unit-*" 2>/dev/null | wc -l)
+  alone=""
+  while IFS= read -r unit; do
+    start=$(date +%s%N)
+    if timeout $((timeout * 10)) "build-fuzz/fuzz/$t" "$unit" -runs=1 >/dev/null 2>&1; then
+      ms=$((($(date +%s%N) - start) / 1000000))
+      alone+="$((ms / 1000)).$((ms % 1000 / 100)) s; "
+    else
+      alone+="failed again; "
+    fi
+  done < <(find build-fuzz/artifacts -newer "$log.start" -name "$t-timeout-*" 2>/dev/null)
+  [ "$slow" -gt 0 ] && findings+=" (and $slow slow units)"
+  [ -n "$alone" ] && findings+=" (timeouts re-run alone: ${alone%; })"
   printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$(date -u +%F)" "$machine → $(cut -d' ' -f1 /proc/loadavg)" "$t" "$seconds" \
     "$(figure number_of_executed_units)" "$(figure average_exec_per_sec)" "$(find "build-fuzz/corpus/$t" -type f | wc -l)" \
     "$(figure peak_rss_mb)" "$findings" >> "$figures"
