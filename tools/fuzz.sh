@@ -42,7 +42,7 @@ for f in problems/*/*.yaml; do grep -q "^ *scene:" "$f" && cp "$f" "$seeds/fuzz_
 
 mkdir -p build-fuzz/artifacts
 figures=build-fuzz/figures.md
-# Rows before 2026-12 counted libFuzzer's slow-unit reports among the findings; later rows keep
+# Rows written up to 2026-11-30 counted libFuzzer's slow-unit reports among the findings; later rows keep
 # them apart and say how a timeout did when re-run alone.
 [ -f "$figures" ] || printf '| date | machine | target | seconds | executions | exec/s | corpus | peak RSS MB | findings |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n' > "$figures"
 machine="$(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg)"
