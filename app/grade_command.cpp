@@ -151,8 +151,9 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
     return 2;
   }
   std::vector<BatchEntry> entries;
+  std::vector<Diagnostic> not_graded;  // other files and folders beside the answers
   try {
-    entries = collect_submissions(g.answers);
+    entries = collect_submissions(g.answers, kMaxSubmissionBytes, &not_graded);
     if (g.roster) entries = apply_roster(std::move(entries), read_roster(*g.roster), *g.roster);
   } catch (const InputError& e) {
     o.err << "error: " << terminal_text(e.diagnostic().format()) << "\n";
@@ -195,7 +196,7 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
     if (row.status == "graded") {
       ++graded;
       sum += row.max_score > 0 ? row.score / row.max_score : 0;
-      if (!row.message.empty() && g.roster)  // the file and the roster disagree
+      if (!row.message.empty())  // the file and the roster disagree, or two files claim one student
         o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message)) << "\n";
     } else {
       o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message)) << "\n";
@@ -204,6 +205,7 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   o.out << fmt::format("Graded {} of {} submissions{}; wrote {}/gradebook.csv, feedback/ and gradescope/\n", graded,
                        r.rows.size(), graded ? fmt::format(" (mean {:.1f}%)", 100.0 * sum / double(graded)) : "",
                        options.out_dir);
+  for (const Diagnostic& d : not_graded) o.err << "warning: " << terminal_text(d.format()) << "\n";
   for (const Diagnostic& d : set.all_errors()) o.err << terminal_text(d.format()) << "\n";
   return graded == r.rows.size() && set.all_errors().empty() ? 0 : 1;
 }

@@ -48,15 +48,39 @@ std::string student_in(const std::string& yaml, const std::string& name) {
   return {};
 }
 
-std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_bytes) {
+// Files that claim a student another file also claims: each row names the other files, so the
+// instructor sees the two submissions (and two gradebook rows) before importing grades.
+void note_shared_students(std::vector<BatchEntry>& entries) {
+  std::map<std::string, std::vector<std::size_t>> by_student;
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    if (!entries[i].error) by_student[entries[i].student].push_back(i);
+  for (const auto& [student, files] : by_student) {
+    if (files.size() < 2) continue;
+    for (const std::size_t i : files) {
+      std::string others;
+      for (const std::size_t j : files)
+        if (j != i) others += (others.empty() ? "" : ", ") + entries[j].source;
+      entries[i].note = fmt::format("{} also claim{} student {}: each file is graded; keep the one that counts",
+                                    others, files.size() > 2 ? "" : "s", quote_excerpt(student));
+    }
+  }
+}
+
+std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_bytes,
+                                       std::vector<Diagnostic>* not_graded) {
   std::vector<fs::path> files;
+  std::vector<std::pair<fs::path, std::string>> passed_over;
   std::error_code ec;
   fs::directory_iterator it(dir, ec), end;
   for (; !ec && it != end; it.increment(ec)) {
     const std::string ext = lower(it->path().extension().string());
     std::error_code type_ec;  // a symlink loop is an entry that cannot be read, not an abort
-    if ((ext == ".yaml" || ext == ".yml") && !it->is_directory(type_ec))
+    const bool directory = it->is_directory(type_ec);
+    if ((ext == ".yaml" || ext == ".yml") && !directory)
       files.push_back(it->path());
+    else if (it->path().filename().string().rfind('.', 0) != 0)  // hidden files are the system's
+      passed_over.emplace_back(it->path(), directory ? "a directory: not graded (grade it on its own)"
+                                                     : "not an answers file (.yaml or .yml): not graded");
   }
   if (ec)
     throw InputError(Diagnostic{SourceLocation{dir.string(), 0, 0}, "",
@@ -71,6 +95,12 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
     b.student = b.error ? std::string() : student_in(b.yaml, b.source);
     if (b.student.empty()) b.student = f.stem().string();
     out.push_back(std::move(b));
+  }
+  note_shared_students(out);
+  if (not_graded) {
+    std::sort(passed_over.begin(), passed_over.end());
+    for (const auto& [path, why] : passed_over)
+      not_graded->push_back(Diagnostic{SourceLocation{path.string(), 0, 0}, "", why});
   }
   return out;
 }
@@ -188,9 +218,10 @@ std::string number_text(double v) { return format_approx(v, 6); }
 
 }  // namespace
 
-std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t max_bytes) {
+std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t max_bytes,
+                                            std::vector<Diagnostic>* not_graded) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) return from_directory(path, max_bytes);
+  if (fs::is_directory(path, ec)) return from_directory(path, max_bytes, not_graded);
   if (lower(fs::path(path).extension().string()) == ".csv") return from_csv(path, max_bytes);
   throw InputError(
       Diagnostic{SourceLocation{path, 0, 0}, "",
@@ -218,6 +249,7 @@ std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries,
       continue;
     }
     BatchEntry e = entries[it->second];
+    e.note.clear();  // the roster decides whose file it is: another file's claim does not matter
     used[it->second] = true;
     const std::string claimed = e.error ? std::string() : student_in(e.yaml, e.source);
     if (!claimed.empty() && claimed != id)

@@ -40,11 +40,16 @@ struct BatchEntry {
 
 // Answer files (*.yaml, *.yml) directly in a directory, in name order; or the rows of a CSV
 // whose header has `student` and one column per answer named `problem-id.answer`. A file that
-// cannot be read (a symlink loop, a FIFO, too big) is an entry with its error.
+// cannot be read (a symlink loop, a FIFO, too big) is an entry with its error. Two files that
+// claim the same student are both graded, and each row's note names the other file.
+// Everything else in the directory that is not hidden (other files, subdirectories) is not
+// graded: `not_graded`, when given, receives a located line for each, so nothing a student
+// handed in is passed over in silence.
 // Throws InputError for a path that is neither, an unreadable directory, or a CSV without a
 // `student` column (located in the CSV: line and column).
 std::vector<BatchEntry> collect_submissions(const std::string& path,
-                                            std::size_t max_bytes = kMaxSubmissionBytes);
+                                            std::size_t max_bytes = kMaxSubmissionBytes,
+                                            std::vector<Diagnostic>* not_graded = nullptr);
 
 // The roster is the authority for who a file belongs to: the answers of roster id R are the
 // file file_name_for(R).yaml (or .yml) in the directory, whatever its `student:` says (a file

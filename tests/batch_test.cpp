@@ -257,6 +257,42 @@ TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
   fs::remove_all(dir);
 }
 
+// Nothing handed in is passed over in silence: two files claiming one student both say so, and
+// other files and folders beside the answers are listed as not graded (hidden ones are not).
+TEST(Batch, SharedClaimsAndOtherFilesAreReportedNotSilent) {
+  const fs::path dir = scratch("claims");
+  test::write_file(dir / "a.yaml", "student: ann\nanswers: {zbuf: {z: 8}}\n");
+  test::write_file(dir / "b.yml", "student: ann\nanswers: {zbuf: {z: 9}}\n");
+  test::write_file(dir / "c.yaml", "student: cy\nanswers: {zbuf: {z: 8}}\n");
+  test::write_file(dir / "answers.json", "{\"student\": \"dee\"}\n");
+  test::write_file(dir / ".DS_Store", "x");
+  fs::create_directories(dir / "section2");
+  std::vector<Diagnostic> not_graded;
+  const std::vector<BatchEntry> entries = collect_submissions(dir.string(), kMaxSubmissionBytes, &not_graded);
+  ASSERT_EQ(entries.size(), 3u);
+  EXPECT_EQ(entries[0].note, (dir / "b.yml").string() + " also claims student 'ann': each file is graded; keep the one that counts");
+  EXPECT_EQ(entries[1].note, (dir / "a.yaml").string() + " also claims student 'ann': each file is graded; keep the one that counts");
+  EXPECT_EQ(entries[2].note, "");
+  ASSERT_EQ(not_graded.size(), 2u);
+  EXPECT_EQ(not_graded[0].format(), (dir / "answers.json").string() + ": not an answers file (.yaml or .yml): not graded");
+  EXPECT_EQ(not_graded[1].format(), (dir / "section2").string() + ": a directory: not graded (grade it on its own)");
+  // A roster decides whose each file is: the files' shared claim no longer matters.
+  const std::vector<BatchEntry> rostered = apply_roster(entries, {"a", "b"}, "roster.csv");
+  ASSERT_GE(rostered.size(), 2u);
+  EXPECT_EQ(rostered[0].student, "a");
+  EXPECT_EQ(rostered[0].note.find("also claims"), std::string::npos) << rostered[0].note;
+  // The batch's rows carry the note, so the gradebook shows both submissions for what they are.
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  BatchOptions options;
+  options.out_dir = (dir / "out").string();
+  options.jobs = 1;
+  const BatchResult r = grade_batch(set, entries, options);
+  ASSERT_EQ(r.rows.size(), 3u);
+  EXPECT_NE(r.rows[0].message.find("also claims student 'ann'"), std::string::npos) << r.rows[0].message;
+  EXPECT_NE(test::read_file(dir / "out" / "gradebook.csv").find("also claims student 'ann'"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(Feedback, JapaneseFeedbackTranslatesVerdictsAndStepTitles) {
   const GradeReport r = grade(load_problem_set_from_string(kSet, "set.yaml"),
                               load_submission_from_string("student: s1\nanswers:\n  zbuf: {z: 9}\n", "a.yaml"));
