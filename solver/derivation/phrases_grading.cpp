@@ -201,6 +201,7 @@ constexpr Phrase kPhrases[] = {
     {"reversed cross product", "外積の順序が逆", "обратный порядок векторного произведения"},
     {"unnormalised normal", "法線を正規化していない", "ненормированная нормаль"},
     {"plane through the origin", "原点を通る平面", "плоскость через начало координат"},
+    {"constant on the wrong side", "定数項の符号が逆", "свободный член не с той стороны"},
     {"missing perspective divide", "透視除算 (w による除算) の忘れ",
      "пропущено перспективное деление"},
     {"degrees taken as radians", "度をラジアンとして計算", "градусы взяты как радианы"},
@@ -224,6 +225,13 @@ constexpr Phrase kPhrases[] = {
     {"Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
      "あなたの平面は原点を通っています. n·(p − A) = 0 から d = n·A であり, 0 ではありません.",
      "Ваша плоскость проходит через начало координат: из n·(p − A) = 0 следует d = n·A, а не 0."},
+    {"Your constant d has the wrong sign.", "定数 d の符号が逆です.", "У свободного члена d не тот знак."},
+    {"Here the plane is written a·x + b·y + c·z = d with d = n·{0}; a list [a, b, c, d] means the same "
+     "form, not a·x + b·y + c·z + d = 0.",
+     "ここでは平面を a·x + b·y + c·z = d (d = n·{0}) と書きます. リスト [a, b, c, d] も同じ形を表し, "
+     "a·x + b·y + c·z + d = 0 ではありません.",
+     "Здесь плоскость записывается как a·x + b·y + c·z = d, где d = n·{0}; список [a, b, c, d] означает "
+     "ту же форму, а не a·x + b·y + c·z + d = 0."},
     {"You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
      "w による除算が抜けています. NDC = (x_c, y_c, z_c) / w_c です.",
      "Вы пропустили деление на w: NDC = (x_c, y_c, z_c) / w_c."},

@@ -65,11 +65,7 @@ struct DepthAtPixel {
     if (canonical(plane[2]).is_zero()) return std::nullopt;
     return canonical((plane[3] - plane[0] * g.pixel(0) - plane[1] * g.pixel(1)) / plane[2]);
   }
-  static Value plane_value(const std::array<Exact, 4>& plane) {
-    Value v = Value::vector(std::vector<Exact>(plane.begin(), plane.end()));
-    v.display = plane_equation(plane[0], plane[1], plane[2], plane[3]);
-    return v;
-  }
+  static Value plane_value(const std::array<Exact, 4>& plane) { return plane_answer(plane); }
 
   // Error carried forward: normal → unit normal → plane → z, from the student's own values.
   static Answers carry_forward(const Given& g, const Answers& student) {
@@ -112,6 +108,11 @@ struct DepthAtPixel {
     out.push_back({"plane through the origin",
                    "Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
                    "Plane through A with normal n̂", origin});
+    if (auto m = constant_sign_mistake(u, canonical(u.dot(g.triangle[0])), "A", "Plane through A with normal n̂")) {
+      const Value* plane = m->answers.find("plane");
+      if (const auto z = z_on(g, plane->exact)) m->answers.set("z", Value::scalar(*z));
+      out.push_back(std::move(*m));
+    }
     return out;
   }
 

@@ -40,6 +40,23 @@ std::string point_name(const std::string& stem, std::size_t i) {
   return stem + std::to_string(i);
 }
 
+Value plane_answer(const std::array<Exact, 4>& plane) {
+  Value v = Value::vector(std::vector<Exact>(plane.begin(), plane.end()));
+  v.display = plane_equation(plane[0], plane[1], plane[2], plane[3]);
+  return v;
+}
+
+std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
+                                                   const std::string& point, const std::string& step) {
+  if (canonical(d).is_zero()) return std::nullopt;
+  Answers answers;
+  answers.set("plane", plane_answer(paper_plane(n, canonical(-d))));
+  return Misconception{"constant on the wrong side",
+                       "Your constant d has the wrong sign. Here the plane is written a·x + b·y + c·z = d "
+                       "with d = n·" + point + "; a list [a, b, c, d] means the same form, not a·x + b·y + c·z + d = 0.",
+                       step, answers};
+}
+
 Vec3<Exact> unit(const Vec3<Exact>& n) {
   const Exact len = canonical(norm(n));
   Vec3<Exact> u;

@@ -4,6 +4,7 @@
 
 #include "solver/derivation/derivation.hpp"
 #include "solver/geometry/vec.hpp"
+#include "solver/kinds/kind.hpp"
 
 #include <array>
 #include <optional>
@@ -22,6 +23,16 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
 // The plane n·p = d scaled the way a teacher writes it: integer coefficients without a common
 // factor when possible (x + y − z = −6), the orientation of n kept.
 std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d);
+
+// A plane as an answer: [a, b, c, d] of ax + by + cz = d, shown as its equation.
+Value plane_answer(const std::array<Exact, 4>& plane);
+
+// The named mistake of a plane's constant on the wrong side (the form ax + by + cz + d = 0 taken
+// for ax + by + cz = d, or a list [a, b, c, d] written in it): the plane n·p = −d, scaled as on
+// paper. Nothing when d = 0, where both forms are the same plane. `point` names the point the
+// plane passes through (d = n·A); `step` is the derivation step where it goes wrong.
+std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
+                                                   const std::string& point, const std::string& step);
 
 // Unit vector n/|n| (exact, canonical).
 Vec3<Exact> unit(const Vec3<Exact>& n);

@@ -66,6 +66,13 @@ struct Plane {
     return out;
   }
 
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    const Vec3<Exact> p0 = g.points.empty() ? g.point : g.points[0];
+    const Vec3<Exact> n = g.points.empty() ? g.normal : polygon_normal_with_steps(g.points, "points", nullptr);
+    const auto m = constant_sign_mistake(n, canonical(n.dot(p0)), "p₀", "Plane through p₀ with normal n");
+    return m ? std::vector<Misconception>{*m} : std::vector<Misconception>{};
+  }
+
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
     return plane_numeric(g.points, g.point, g.normal, p);
   }
@@ -83,9 +90,7 @@ struct Plane {
     out.set("unit_normal", Value::vector(unit_normal_with_steps(n, steps)));
     const Exact len = canonical(norm(n));
     const Exact d = canonical(n.dot(p0));
-    const std::array<Exact, 4> plane = paper_plane(n, d);
-    Value pv = Value::vector(std::vector<Exact>(plane.begin(), plane.end()));
-    pv.display = plane_equation(plane[0], plane[1], plane[2], plane[3]);
+    const Value pv = plane_answer(paper_plane(n, d));
     out.set("plane", pv);
     if (steps) {
       steps->add("Plane through p₀ with normal n",
