@@ -187,8 +187,66 @@ std::optional<Comparison> component_credit(const Value& expected, const Value& g
                     {}};
 }
 
+// Points written another way than one row each, read as the rows they mean: one point as a
+// flat list or a column ([−2, 2, 3] reads as a 3×1 matrix), and points in homogeneous
+// coordinates whose w is exactly 1. Nothing when `got` is none of these.
+struct PointReading {
+  Value rows;
+  std::string how;
+};
+
+std::optional<PointReading> point_rows_of(const Value& expected, const Value& got) {
+  if (expected.shape != Value::Shape::Matrix || got.shape != Value::Shape::Matrix) return std::nullopt;
+  const std::size_t n = static_cast<std::size_t>(expected.cols);
+  Value as_rows = got;
+  std::string how;
+  if (expected.rows == 1 && got.cols == 1 && got.rows > 1) {  // one point, as a list or a column
+    as_rows.rows = 1;
+    as_rows.cols = got.rows;
+    how = "read as one point";
+  }
+  if (static_cast<std::size_t>(as_rows.cols) == n + 1 && as_rows.rows == expected.rows) {
+    // Homogeneous coordinates: (x, y, z, w) is the point (x/w, y/w, z/w); w = 0 is a direction.
+    const bool exact = as_rows.exact.size() == as_rows.numbers.size();
+    Value affine = as_rows;
+    affine.cols = static_cast<int>(n);
+    affine.numbers.clear();
+    affine.exact.clear();
+    bool all_one = true;
+    for (std::size_t row = 0; row < static_cast<std::size_t>(as_rows.rows); ++row) {
+      const std::size_t at = row * (n + 1);
+      const Exact w = exact ? canonical(as_rows.exact[at + n]) : Exact(0);
+      const double wd = as_rows.numbers[at + n];
+      if (exact ? w.is_zero() : wd == 0) return std::nullopt;
+      all_one = all_one && (exact ? canonical(w - 1).is_zero() : wd == 1.0);
+      for (std::size_t i = 0; i < n; ++i) {
+        affine.numbers.push_back(as_rows.numbers[at + i] / wd);
+        if (exact) affine.exact.push_back(canonical(as_rows.exact[at + i] / w));
+      }
+    }
+    if (exact)
+      for (std::size_t i = 0; i < affine.exact.size(); ++i) affine.numbers[i] = to_double(affine.exact[i]);
+    as_rows = affine;
+    how = all_one ? (expected.rows == 1 ? "read as one point in homogeneous coordinates (w = 1)"
+                                        : "read as points in homogeneous coordinates (w = 1)")
+                  : "read as homogeneous coordinates: (x, y, z, w) is the point (x/w, y/w, z/w)";
+  }
+  if (how.empty() || as_rows.cols != expected.cols) return std::nullopt;
+  return PointReading{as_rows, how};
+}
+
 Comparison compare_components(const Value& expected, const Value& got, const AnswerRules& r) {
   const AnswerKind kind = r.spec->kind;
+  if (r.spec->point_rows)
+    if (const std::optional<PointReading> p = point_rows_of(expected, got)) {
+      AnswerRules plain = r;
+      AnswerSpec spec = *r.spec;
+      spec.point_rows = false;
+      plain.spec = &spec;
+      Comparison c = compare_components(expected, p->rows, plain);
+      c.feedback = c.verdict == Verdict::Correct || c.feedback.empty() ? p->how : p->how + "; " + c.feedback;
+      return c;
+    }
   if (kind == AnswerKind::Transform && got.shape == Value::Shape::Matrix &&
       expected.rows == got.rows + 1 && got.rows == got.cols) {
     if (!purely_linear(expected))

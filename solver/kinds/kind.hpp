@@ -75,6 +75,9 @@ struct AnswerSpec {
   std::vector<std::string> depends_on;  // earlier answers it is computed from
   std::vector<std::string> words;       // Category: the allowed words
   std::string needs_given = {};         // asked only when the problem gives this field (e.g. points)
+  // Matrix: each row is a point (transformed points), so one point may be written as a flat list
+  // or a column, and points in homogeneous coordinates with w = 1.
+  bool point_rows = false;
 };
 
 // A common mistake, as the answers it produces: the grader names it when a student's wrong

@@ -23,7 +23,7 @@ struct LookAt {
   };
   static std::vector<std::string> given_fields() { return {"eye", "center", "up", "points"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"matrix", AnswerKind::Transform, {}, {}}, {"points", AnswerKind::Matrix, {"matrix"}, {}, "points"}};
+    return {{"matrix", AnswerKind::Transform, {}, {}}, {"points", AnswerKind::Matrix, {"matrix"}, {}, "points", true}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

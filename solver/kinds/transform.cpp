@@ -27,7 +27,7 @@ struct Transform {
   static std::vector<std::string> given_fields() { return {"dim", "steps", "points"}; }
   static std::vector<AnswerSpec> answers() {
     return {{"matrix", AnswerKind::Transform, {}, {}},
-            {"points", AnswerKind::Matrix, {"matrix"}, {}, "points"},
+            {"points", AnswerKind::Matrix, {"matrix"}, {}, "points", true},
             {"inverse", AnswerKind::Transform, {"matrix"}, {}}};
   }
 
