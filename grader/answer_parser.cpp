@@ -1,5 +1,7 @@
 #include "grader/answer_parser.hpp"
 
+#include "solver/derivation/i18n.hpp"
+
 #include "solver/util/expression.hpp"
 #include "solver/util/work_budget.hpp"
 
@@ -18,22 +20,56 @@ const std::vector<std::pair<std::string, std::string>> kWordSynonyms = {
     {"back", "back"},   {"裏", "back"},   {"うら", "back"},    {"back-facing", "back"},
     {"edge_on", "edge_on"}, {"edge-on", "edge_on"}, {"edge on", "edge_on"}, {"真横", "edge_on"},
     {"visible", "visible"}, {"可視", "visible"}, {"silhouette", "silhouette"},
-    {"輪郭線", "silhouette"}, {"輪郭", "silhouette"}, {"hidden", "hidden"}, {"不可視", "hidden"}};
+    {"輪郭線", "silhouette"}, {"輪郭", "silhouette"}, {"hidden", "hidden"}, {"不可視", "hidden"},
+    {"concave", "not convex"}, {"凹", "not convex"}, {"内部", "inside"}, {"外部", "outside"},
+    {"вне", "outside"}};
 
 const std::vector<std::pair<std::string, bool>> kBoolWords = {
     {"true", true},  {"yes", true},  {"y", true},  {"t", true},  {"1", true},  {"はい", true},
     {"○", true},     {"〇", true},   {"false", false}, {"no", false}, {"n", false}, {"f", false},
     {"0", false},    {"いいえ", false}, {"×", false}, {"✕", false}};
 
+// Trimmed, with Latin and Cyrillic capitals lowered (a Russian student may write "Да").
 std::string trim_lower(std::string s) {
   const auto not_space = [](unsigned char c) { return !std::isspace(c); };
   s.erase(s.begin(), std::find_if(s.begin(), s.end(), not_space));
   s.erase(std::find_if(s.rbegin(), s.rend(), not_space).base(), s.end());
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) {
-    return c < 128 ? static_cast<char>(std::tolower(c)) : static_cast<char>(c);
-  });
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 128) {
+      s[i] = static_cast<char>(std::tolower(c));
+    } else if (c == 0xD0 && i + 1 < s.size()) {  // U+0400–U+043F
+      const auto d = static_cast<unsigned char>(s[i + 1]);
+      if (d >= 0x90 && d <= 0x9F) {  // А–П → а–п
+        s[i + 1] = static_cast<char>(d + 0x20);
+      } else if (d >= 0xA0 && d <= 0xAF) {  // Р–Я → р–я
+        s[i] = static_cast<char>(0xD1);
+        s[i + 1] = static_cast<char>(d - 0x20);
+      } else if (d == 0x81) {  // Ё → ё
+        s[i] = static_cast<char>(0xD1);
+        s[i + 1] = static_cast<char>(0x91);
+      }
+      ++i;
+    }
+  }
   return s;
 }
+
+// The word a student wrote, as one of `candidates` when it is one of them in English, a listed
+// synonym, or the Japanese or Russian word the derivations print for it (what the key shows a
+// student reading in that language is accepted back). Unchanged otherwise.
+std::string known_word(const std::string& written, const std::vector<std::string>& candidates) {
+  std::string w = trim_lower(written);
+  for (const auto& [syn, canon] : kWordSynonyms)
+    if (syn == w) return canon;
+  for (const std::string& c : candidates)
+    for (const Lang lang : {Lang::Ja, Lang::Ru})
+      if (trim_lower(tr(c, lang)) == w) return c;
+  return w;
+}
+
+// The words a word map's entries may take (faces, edges).
+const std::vector<std::string> kMapWords = {"front", "back", "edge_on", "visible", "hidden", "silhouette"};
 
 struct Numbers {
   std::vector<Exact> values;
@@ -347,14 +383,19 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
         p.error = "expected true or false";
         return p;
       }
-      const std::string w = trim_lower(node.Scalar());
+      // true/false, yes/no, and the answer's own pair of words (inside/outside), in any language.
+      std::vector<std::string> pair = {"true", "false", "yes", "no"};
+      pair.insert(pair.end(), spec.words.begin(), spec.words.end());
+      const std::string w = known_word(node.Scalar(), pair);
       const auto it = std::find_if(kBoolWords.begin(), kBoolWords.end(),
                                    [&](const auto& b) { return b.first == w; });
-      if (it == kBoolWords.end()) {
-        p.error = quote_excerpt(node.Scalar()) + " is not true or false";
+      const auto named = std::find(spec.words.begin(), spec.words.end(), w);
+      if (it == kBoolWords.end() && named == spec.words.end()) {
+        p.error = quote_excerpt(node.Scalar()) + " is not true or false" +
+                  (spec.words.size() == 2 ? " (or " + spec.words[0] + " or " + spec.words[1] + ")" : "");
         return p;
       }
-      p.value = Value::boolean(it->second);
+      p.value = Value::boolean(it != kBoolWords.end() ? it->second : named == spec.words.begin());
       break;
     }
     case AnswerKind::Category: {
@@ -362,9 +403,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
         p.error = "expected one word";
         return p;
       }
-      std::string w = trim_lower(node.Scalar());
-      for (const auto& [syn, canon] : kWordSynonyms)
-        if (syn == w) w = canon;
+      const std::string w = known_word(node.Scalar(), spec.words);
       if (std::find(spec.words.begin(), spec.words.end(), w) == spec.words.end()) {
         std::string list;
         for (const auto& a : spec.words) list += (list.empty() ? "" : ", ") + a;
@@ -423,10 +462,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
           p.error = "the value of '" + it->first.as<std::string>() + "' is not a word";
           return p;
         }
-        std::string w = trim_lower(it->second.Scalar());
-        for (const auto& [syn, canon] : kWordSynonyms)
-          if (syn == w) w = canon;
-        entries.emplace_back(it->first.as<std::string>(), w);
+        entries.emplace_back(it->first.as<std::string>(), known_word(it->second.Scalar(), kMapWords));
       }
       p.value = Value::word_map(entries);
       break;

@@ -175,6 +175,8 @@ constexpr Phrase kPhrases[] = {
      "`{0}` нельзя вычислить как число"},
     {"'{0}' is not one of {1}", "`{0}` は次のいずれでもありません: `{1}`",
      "`{0}` — не одно из: `{1}`"},
+    {"'{0}' is not true or false (or {1} or {2})", "`{0}` は true でも false でも ({1} でも {2} でも) ありません",
+     "`{0}` — не true и не false (и не {1}, не {2})"},
     {"'{0}' is not true or false", "`{0}` は true でも false でもありません",
      "`{0}` — не true и не false"},
     {"'{0}' is not a bit string of 0 and 1", "`{0}` は 0 と 1 のビット列ではありません",

@@ -34,7 +34,7 @@ struct DepthAtPixel {
             {"unit_normal", AnswerKind::UnitVector, {"normal"}, {}},
             {"plane", AnswerKind::Plane, {"unit_normal"}, {}},
             {"z", AnswerKind::Scalar, {"plane"}, {}},
-            {"inside", AnswerKind::Bool, {}, {}}};
+            {"inside", AnswerKind::Bool, {}, {"inside", "outside"}}};
   }
 
   static Given parse(GivenReader& r, const Conventions&) {

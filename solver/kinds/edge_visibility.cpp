@@ -44,7 +44,7 @@ struct EdgeVisibility {
             {"edges", AnswerKind::WordMap, {"faces"}, {"visible", "silhouette", "hidden"}},
             {"silhouette", AnswerKind::WordList, {"edges"}, {}},
             {"hidden", AnswerKind::WordList, {"edges"}, {}},
-            {"convex", AnswerKind::Bool, {}, {}},
+            {"convex", AnswerKind::Bool, {}, {"convex", "not convex"}},
             {"backface_sufficient", AnswerKind::Bool, {"convex"}, {}}};
   }
 

@@ -35,7 +35,7 @@ struct ProjectPoint {
     return {{"clip", AnswerKind::Point, {}, {}},
             {"ndc", AnswerKind::Vector, {"clip"}, {}},
             {"window", AnswerKind::Vector, {"ndc"}, {}},
-            {"inside", AnswerKind::Bool, {"ndc"}, {}}};
+            {"inside", AnswerKind::Bool, {"ndc"}, {"inside", "outside"}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
