@@ -14,8 +14,8 @@ namespace frustum {
 // these): a sign the radius does not prove stops the ranged attempt.
 struct Unproven {};
 static int scalar_sign(const Ranged<double>& x) {
-  if (!x.proves_sign()) throw Unproven{};
-  return x.v > 0 ? 1 : -1;
+  if (const int s = x.proven_sign()) return s;
+  throw Unproven{};
 }
 static Ranged<double> tidy(const Ranged<double>& x) { return x; }
 
@@ -25,8 +25,8 @@ using R = Ranged<double>;
 
 // A sign the scalar proves: ranged values when |value| exceeds the radius, exact ones always.
 std::optional<int> decided_sign(const R& x) {
-  if (!x.proves_sign()) return std::nullopt;
-  return x.v > 0 ? 1 : -1;
+  if (const int s = x.proven_sign()) return s;
+  return std::nullopt;
 }
 std::optional<int> decided_sign(const Exact& x) { return exact_sign(x); }
 
