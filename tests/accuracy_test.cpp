@@ -33,8 +33,8 @@ const ProblemSpec& problem(const ProblemSet& set, const std::string& id) {
 }
 
 // Every set in problems/hard (tests/accuracy_test.cpp checks the list against the folder).
-constexpr const char* kHardSets[] = {"normals",    "planes",      "backface", "eye_plane",
-                                     "magnitudes", "exact_signs", "coverage", "decisions"};
+constexpr const char* kHardSets[] = {"normals",     "planes",   "backface",  "eye_plane", "magnitudes",
+                                     "exact_signs", "coverage", "decisions", "render"};
 
 ProblemSet hard(const std::string& name) { return load_problem_set(source_path("problems/hard/" + name)); }
 
@@ -115,6 +115,32 @@ TEST(Condition, EstimatesGrowAsProblemsDegenerate) {
   EXPECT_GT(facing_condition(good, {0.3, 0.3, 1e-12}), 1e11);
   EXPECT_EQ(trusted_digits(1e10, Precision::Float), 0.0);
   EXPECT_NEAR(trusted_digits(1e10, Precision::Double), 5.95, 0.01);
+}
+
+// κ is a ratio of terms of one degree in the coordinates, so it does not change when every
+// coordinate is scaled by a power of two — also where the products would under- or overflow in
+// double (10⁻²⁰⁰, 10²⁰⁰): the estimates are computed on the rescaled points.
+TEST(Condition, EstimatesDoNotChangeWithTheScale) {
+  const std::vector<Eigen::Vector3d> good = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::vector<Eigen::Vector3d> thin = {{0.5, 0.25, 0.1}, {1, 0.25, 0.3}, {2, 0.25 + 1e-9, 0.7}};
+  const Eigen::Vector3d eye(0.3, 0.3, 1e-6);
+  const Eigen::Vector2d pixel(0.75, 0.3);
+  for (const int k : {-700, -400, 400, 700}) {
+    auto scaled = [k](std::vector<Eigen::Vector3d> p) {
+      for (Eigen::Vector3d& q : p) q = q * std::ldexp(1.0, k);
+      return p;
+    };
+    const double s = std::ldexp(1.0, k);
+    EXPECT_DOUBLE_EQ(normal_condition(scaled(good)), normal_condition(good)) << k;
+    EXPECT_DOUBLE_EQ(normal_condition(scaled(thin)), normal_condition(thin)) << k;
+    EXPECT_DOUBLE_EQ(facing_condition(scaled(good), eye * s), facing_condition(good, eye)) << k;
+    const DepthCondition d = depth_condition(thin[0], thin[1], thin[2], pixel);
+    const DepthCondition ds = depth_condition(thin[0] * s, thin[1] * s, thin[2] * s, pixel * s);
+    EXPECT_DOUBLE_EQ(ds.kappa_c, d.kappa_c) << k;
+    EXPECT_DOUBLE_EQ(ds.kappa_z, d.kappa_z) << k;
+  }
+  EXPECT_GT(normal_condition(thin), 1e8);
+  EXPECT_GT(depth_condition(thin[0], thin[1], thin[2], pixel).kappa_c, 1e8);
 }
 
 // Every kind with a numeric path, on generated well-conditioned problems: each backend within

@@ -5,6 +5,8 @@
 
 #include "solver/kinds/registry.hpp"
 #include "solver/kinds/render.hpp"
+#include "solver/kinds/solve_set.hpp"
+#include "solver/raster/certified_trace.hpp"
 #include "solver/raster/fill.hpp"
 #include "solver/raster/scanline.hpp"
 #include "solver/visibility/mesh.hpp"
@@ -16,6 +18,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <random>
 #include <set>
 #include <sys/wait.h>
@@ -369,6 +372,103 @@ TEST(RenderKind, ScanlineImageOfThePaperplaneEqualsTheZBuffer) {
   long plane = 0;
   for (std::uint32_t c : z.color.data) plane += unpack(c).r > 200;
   EXPECT_GT(plane, 200);  // the white plane is drawn, lit from above
+}
+
+// ---------------------------------------------------------------- exact decisions (issue 14)
+
+// What the float pipeline (geometry() and trace_pixel() on doubles, no exact fallback) shows
+// at a pixel of the API's window: the winning object's name.
+std::string float_pipeline_winner(const Scene& s, int i, int window_row) {
+  const FlatScene flat = flatten(s);
+  const std::vector<WindowTriangle> tris = geometry(s, flat);
+  const PixelTrace t = trace_pixel(tris, i, raster_row(window_row, s.height, s.api), s.background);
+  if (t.winner < 0) return "background";
+  const WorldTriangle& w = flat.triangles[static_cast<std::size_t>(tris[static_cast<std::size_t>(t.winner)].source)];
+  return flat.objects[static_cast<std::size_t>(w.object)];
+}
+
+// problems/hard/render.yaml: each pair (on the boundary, 10⁻³⁰ off it) rounds to the same
+// doubles, so the float pipeline answers both alike, one of them wrongly; the render kind
+// answers each as exact arithmetic does, and its derivation says exact arithmetic decided.
+TEST(RenderKind, HardCasesAreDecidedExactlyWhereFloatsCannot) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/hard/render.yaml"));
+  ASSERT_TRUE(set.all_errors().empty()) << set.all_errors()[0].format();
+  const SetResult solved = solve_set(set, true);
+  ASSERT_EQ(solved.problems.size(), 6u);
+  std::map<std::string, std::string> exact, floats;
+  for (std::size_t k = 0; k < set.problems.size(); ++k) {
+    const ProblemResult& r = solved.problems[k];
+    ASSERT_FALSE(r.error) << r.id;
+    const RenderGiven& g = std::any_cast<const RenderGiven&>(set.problems[k].given);
+    exact[r.id] = r.answers.find("object")->words.at(0);
+    floats[r.id] = float_pipeline_winner(g.spec.scene, g.pixels[0][0], g.pixels[0][1]);
+    bool said = false;
+    for (const Step& st : r.derivation.steps())
+      said = said || st.note.find("xact arithmetic on the given numbers decided") != std::string::npos ||
+             st.note.find("decided by exact arithmetic") != std::string::npos;
+    EXPECT_TRUE(said) << r.id;
+  }
+  const std::map<std::string, std::string> want = {
+      {"render-vertex-on-half-grid", "background"}, {"render-edge-through-centre", "t"},
+      {"render-face-edge-on", "background"},        {"render-face-1e-30-front", "s1"},
+      {"render-equal-depths", "p1"},                {"render-second-1e-30-nearer", "p2"}};
+  EXPECT_EQ(exact, want);
+  const std::pair<const char*, const char*> pairs[] = {{"render-vertex-on-half-grid", "render-edge-through-centre"},
+                                                       {"render-face-edge-on", "render-face-1e-30-front"},
+                                                       {"render-equal-depths", "render-second-1e-30-nearer"}};
+  int wrong = 0;
+  for (const auto& [a, b] : pairs) {
+    EXPECT_EQ(floats[a], floats[b]) << a;  // the same doubles
+    wrong += (floats[a] != want.at(a)) + (floats[b] != want.at(b));
+  }
+  EXPECT_EQ(wrong, 3);  // one of each pair
+}
+
+// On ordinary scenes (random decimal coordinates: no tie, no vertex on a half-grid point) the
+// exact decisions are the float pipeline's: the same winner at every pixel and the same depth.
+// Most decisions are proven on the doubles; the exact fallback is rare.
+TEST(RenderKind, ExactDecisionsAgreeWithTheFloatPipelineOnOrdinaryScenes) {
+  std::mt19937 rng(14);
+  std::uniform_int_distribution<int> coord(-6000, 6000), depth(-8000, 4000), channel(0, 255);
+  const char* apis[] = {"opengl", "directx", "processing"};
+  long pixels = 0, exact_geometry = 0, triangles = 0;
+  for (int n = 0; n < 12; ++n) {
+    std::string objects;
+    for (int k = 0; k < 5; ++k) {
+      objects += fmt::format("          - {{name: o{}, triangle: [", k);
+      for (int v = 0; v < 3; ++v)
+        objects += fmt::format("{}[{}, {}, {}]", v ? ", " : "", coord(rng) / 1000.0, coord(rng) / 1000.0,
+                               depth(rng) / 1000.0);
+      objects += fmt::format("], fill: [{}, {}, {}]{}}}\n", channel(rng), channel(rng), channel(rng),
+                             k % 2 ? ", cull: back" : "");
+    }
+    const ProblemSet set = load_problem_set_from_string(scene_yaml(apis[n % 3], objects, "[[0, 0]]"), "s.yaml");
+    ASSERT_TRUE(set.all_errors().empty()) << set.all_errors()[0].format();
+    const RenderGiven& g = std::any_cast<const RenderGiven&>(set.problems[0].given);
+    const Scene& s = g.spec.scene;
+    const FlatScene flat = flatten(s);
+    const std::vector<WindowTriangle> tris = geometry(s, flat);
+    CertifiedScene cs = certified_geometry(s, flat, exact_clip_from_world(g.spec, s.api));
+    exact_geometry += cs.exact_geometry;
+    triangles += cs.stats.triangles;
+    for (int j = 0; j < s.height; j += 2)
+      for (int i = 0; i < s.width; i += 2) {
+        const PixelTrace f = trace_pixel(tris, i, j, s.background);
+        bool exact_depths = false;
+        const PixelTrace e = certified_trace(cs, s, flat, i, j, exact_depths);
+        ASSERT_EQ(f.winner < 0, e.winner < 0) << n << " " << i << " " << j;
+        if (f.winner >= 0) {
+          EXPECT_EQ(tris[static_cast<std::size_t>(f.winner)].source, cs.pieces[static_cast<std::size_t>(e.winner)].source);
+        }
+        EXPECT_NEAR(f.depth, e.depth, 1e-6);
+        EXPECT_EQ(f.color, e.color);
+        EXPECT_FALSE(exact_depths);
+        ++pixels;
+      }
+  }
+  EXPECT_EQ(pixels, 12L * 32 * 24);
+  EXPECT_EQ(triangles, 60);
+  EXPECT_LE(exact_geometry, 1);
 }
 
 // ---------------------------------------------------------------- frustum render

@@ -619,6 +619,24 @@ constexpr Phrase kPhrases[] = {
      "Трассировка Z-буфера в порядке рисования (претендентов: {0}):"},
     {"No triangle covers this pixel centre.", "この画素中心を覆う三角形はない.",
      "Ни один треугольник не покрывает центр этого пикселя."},
+    {"Every decision (clipping, facing, snapping, the depth test) is exact: taken on the computed "
+     "values when their error bound proves it, else by exact arithmetic on the given numbers.",
+     "判定 (クリッピング, 表裏, スナップ, 奥行き比較) はすべて厳密: 計算値の誤差限界が判定を保証するときは"
+     "計算値で, そうでなければ与えられた数での厳密な計算で決める.",
+     "Каждое решение (отсечение, ориентация, привязка к сетке, тест глубины) точное: принимается по "
+     "вычисленным значениям, когда их оценка погрешности его гарантирует, иначе точной арифметикой над "
+     "заданными числами."},
+    {"Exact arithmetic on the given numbers decided the clipping, facing or snapping of {0} "
+     "triangle(s) that rounding could not settle.",
+     "丸め誤差で決まらなかった三角形 {0} 個のクリッピング, 表裏またはスナップは, 与えられた数での"
+     "厳密な計算で決めた.",
+     "Отсечение, ориентацию или привязку к сетке для треугольников ({0}), которые округление не "
+     "позволяло определить, решила точная арифметика над заданными числами."},
+    {"The depth test was decided by exact arithmetic on the given numbers (the computed depths were "
+     "within rounding of each other).",
+     "奥行き比較は与えられた数での厳密な計算で決めた (計算した奥行きの差が丸め誤差の範囲内だった).",
+     "Тест глубины решён точной арифметикой над заданными числами (вычисленные глубины совпадали в "
+     "пределах округления)."},
     {"{0}. triangle {1} ({2} face {3}, {4}): z = {5} → written, colour {6}",
      "{0}. 三角形 {1} (`{2}` の面 {3}, {4}): z = {5} → 書き込む, 色 {6}",
      "{0}. треугольник {1} (`{2}`, грань {3}, {4}): z = {5} → записан, цвет {6}"},

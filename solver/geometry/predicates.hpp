@@ -61,14 +61,6 @@ struct SignDecision {
   bool exact = false;  // the exact fallback decided
 };
 
-// |value| > bound, both finite: the computed sign is the exact one. Two comparisons (a NaN or
-// infinite bound fails the first, a NaN or infinite value one of them): the filters' hot path.
-template <typename T>
-bool sign_is_proven(const T& value, const T& bound) {
-  const T magnitude = std::abs(value);
-  return magnitude > bound && magnitude < std::numeric_limits<T>::infinity();
-}
-
 // The one decision rule. `exact_sign_of()` computes the sign on the exact inputs; it runs only
 // when the filter cannot prove the sign (`inputs_relative` false forces it). For the exact
 // backend the value is exact already.

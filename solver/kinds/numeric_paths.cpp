@@ -215,6 +215,7 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
     struct In {
       Polygon3<T> points;
       std::optional<std::array<int, 4>> order;  // first = X₀→Y₀, second = X₁→Y₁ (vertex indices)
+      InputRange range;
     };
     auto core = [](const In& in) {
       if (!in.order) return polygon_normal(in.points);
@@ -225,13 +226,15 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
       if (!r.zero) r.unit = r.n / stable_norm(r.n);
       return r;
     };
-    auto report = [p, kappa](const In&, const NormalPair<T>& n) {
+    auto report = [p, kappa](const In& in, const NormalPair<T>& n) {
       NumericOut<T> out(p);
+      out.inputs(in.range, /*discrete_exact=*/false);
       report_normal(out, n);
       warn_condition(out, p, kappa, "Ill-conditioned normal", "the normal's direction");
       return out.take();
     };
-    In in{conv<T>(points), std::nullopt};
+    In in{{}, std::nullopt, {}};
+    in.points = conv<T>(points, &in.range);
     if (order)
       in.order = std::array<int, 4>{order->first[0] - 'A', order->first[1] - 'A',
                                     order->second[0] - 'A', order->second[1] - 'A'};
@@ -246,6 +249,7 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, cons
     struct In {
       Polygon3<T> points;
       Vec3<T> point, normal;
+      InputRange range;
     };
     struct Out {
       NormalPair<T> n;
@@ -266,8 +270,9 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, cons
       if (!o.n.zero) o.distance = scalar_abs(T(o.n.unit.dot(in.points[0])));
       return o;
     };
-    auto report = [p, kappa](const In&, const Out& o) {
+    auto report = [p, kappa](const In& in, const Out& o) {
       NumericOut<T> out(p);
+      out.inputs(in.range, /*discrete_exact=*/false);
       report_normal(out, o.n);
       out.vector("plane", std::vector<T>{o.n.n(0), o.n.n(1), o.n.n(2), o.d});
       if (o.n.zero)
@@ -278,7 +283,11 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, cons
       out.note("plane = (n, n·p₀), not rescaled; distance = |n̂·p₀|");
       return out.take();
     };
-    return prepare(In{conv<T>(points), conv<T>(point), conv<T>(normal)}, core, report);
+    In in;
+    in.points = conv<T>(points, &in.range);
+    in.point = conv<T>(point, &in.range);
+    in.normal = conv<T>(normal, &in.range);
+    return prepare(std::move(in), core, report);
   });
 }
 

@@ -8,7 +8,7 @@
 #include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/registry.hpp"
-#include "solver/raster/fill.hpp"
+#include "solver/raster/certified_trace.hpp"
 
 #include <fmt/format.h>
 
@@ -37,7 +37,7 @@ struct Render {
     Given g;
     g.conventions = c;
     GivenReader s = r.child("scene", scene_fields());
-    g.spec = read_scene(s, c);
+    g.spec = read_scene(s, c, /*keep_exact=*/true);
     const std::size_t n = r.list_size("pixels");
     if (n > kMaxPixels) r.fail("pixels", fmt::format("at most {} pixels may be queried", kMaxPixels));
     for (std::size_t k = 0; k < n; ++k) {
@@ -93,26 +93,32 @@ struct Render {
                       "by w, mapped by the viewport, snapped to 1/256 pixel and covered under the top-left rule; depth "
                       "is window z in [0, 1], interpolated as the plane through the snapped vertices (z/w is affine "
                       "in screen space) and stored as a 32-bit float. The depth buffer starts at 1 (far) and a "
-                      "fragment is written when its depth is less than the stored one (equal keeps the earlier). " +
+                      "fragment is written when its depth is less than the stored one (equal keeps the earlier). "
+                      "Every decision (clipping, facing, snapping, the depth test) is exact: taken on the computed "
+                      "values when their error bound proves it, else by exact arithmetic on the given numbers. " +
                       (scene.light ? fmt::format("Lighting as Processing's lights(): ambient {} + directional {} "
                                                  "travelling along ({:.4g}, {:.4g}, {:.4g}), flat and two-sided.",
                                                  scene.light->ambient, scene.light->diffuse, scene.light->direction(0),
                                                  scene.light->direction(1), scene.light->direction(2))
                                    : std::string("No light: each triangle has its fill colour.")));
-      look_at_with_steps(g.spec.eye, g.spec.center, g.spec.up, api, "scene.camera.", steps);
-      projection_with_steps(g.spec.projection, api, steps);
     }
+    // The exact projection · camera, for the decisions the computed values cannot settle.
     const FlatScene flat = flatten(scene);
-    GeometryStats gs;
-    const std::vector<WindowTriangle> tris = geometry(scene, flat, &gs);
-    if (steps)
-      steps->add("Geometry: model → world → clip → window", {}, {},
+    CertifiedScene cs = certified_geometry(scene, flat, exact_clip_from_world(g.spec, api, steps));
+    const GeometryStats& gs = cs.stats;
+    if (steps) {
+      Step& geometry = steps->add("Geometry: model → world → clip → window", {}, {},
                  counts({{gs.triangles, "triangles"}}) + math(": ", "\\colon ") +
                      counts({{gs.outside, "outside the view volume"}, {gs.clipped, "clipped"}, {gs.culled, "back faces culled"}}) +
-                     math(" → ", " \\to ") + counts({{gs.window, "window triangles"}}))
-          .note = fmt::format("{} objects. Only the queried pixels are resolved: a triangle competes for a pixel when "
+                     math(" → ", " \\to ") + counts({{gs.window, "window triangles"}}));
+      geometry.note = fmt::format("{} objects. Only the queried pixels are resolved: a triangle competes for a pixel when "
                               "its screen bounds hold the pixel centre; no {} × {} frame is allocated.",
                               flat.objects.size(), scene.width, scene.height);
+      if (cs.exact_geometry > 0)
+        geometry.note += fmt::format(" Exact arithmetic on the given numbers decided the clipping, facing or snapping "
+                                     "of {} triangle(s) that rounding could not settle.",
+                                     cs.exact_geometry);
+    }
     Value pixels, color_rows, depth;
     pixels.shape = Value::Shape::Matrix;
     pixels.cols = 4;
@@ -120,9 +126,12 @@ struct Render {
     std::vector<double> depths;
     std::vector<std::string> objects;
     for (const auto& q : g.pixels) {
-      const PixelTrace t = trace_pixel(tris, q[0], raster_row(q[1], scene.height, api), scene.background);
-      const std::string winner = t.winner < 0 ? "background" : flat.objects[static_cast<std::size_t>(
-                                                                   flat.triangles[static_cast<std::size_t>(tris[static_cast<std::size_t>(t.winner)].source)].object)];
+      bool exact_depths = false;
+      const PixelTrace t = certified_trace(cs, scene, flat, q[0], raster_row(q[1], scene.height, api), exact_depths);
+      const std::string winner =
+          t.winner < 0 ? "background"
+                       : flat.objects[static_cast<std::size_t>(
+                             flat.triangles[static_cast<std::size_t>(cs.pieces[static_cast<std::size_t>(t.winner)].source)].object)];
       pixels.numbers.insert(pixels.numbers.end(), {double(t.color.r), double(t.color.g), double(t.color.b), double(t.depth)});
       ++pixels.rows;
       colors.push_back({Exact(t.color.r), Exact(t.color.g), Exact(t.color.b)});
@@ -137,7 +146,7 @@ struct Render {
           trace += fmt::format("{}… {} more", kIndent, t.competitors.size() - k);
           break;
         }
-        const WindowTriangle& w = tris[static_cast<std::size_t>(c.triangle)];
+        const CertifiedPiece& w = cs.pieces[static_cast<std::size_t>(c.triangle)];
         const WorldTriangle& src = flat.triangles[static_cast<std::size_t>(w.source)];
         trace += fmt::format("{}{}. triangle {} ({} face {}, {}): z = {} {} Z = {} → {}", kIndent, k + 1, w.source,
                              flat.objects[static_cast<std::size_t>(src.object)], src.face, w.front ? "front" : "back",
@@ -154,6 +163,9 @@ struct Render {
                                word("depth") + math(" " + depth_text(t.depth) + "  (", "\\ " + depth_text(t.depth) + "\\quad (") +
                                word(winner) + math(")"));
       s.note = fmt::format("Z-buffer trace, drawing order ({} competitor(s)):", t.competitors.size()) + trace;
+      if (exact_depths)
+        s.note += std::string(kIndent) + "The depth test was decided by exact arithmetic on the given numbers (the "
+                                         "computed depths were within rounding of each other).";
     }
     std::string shown, shown_latex;
     for (int r = 0; r < pixels.rows; ++r) {

@@ -16,7 +16,8 @@ namespace {
 const std::vector<std::string> kObjectFields = {"name", "triangle", "mesh", "box", "solid", "transform",
                                                 "fill", "cull", "repeat", "children"};
 
-Mat4d to_mat4d(const MatX<Exact>& m) {
+template <typename M>
+Mat4d to_mat4d(const M& m) {
   Mat4d out;
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) out(i, j) = to_double(m(i, j));
@@ -55,24 +56,32 @@ Rgb read_color(GivenReader& r, const std::string& key) {
   return c;
 }
 
-// The composite of a list of transform steps, first applied first: M = Aₙ···A₁.
-Mat4d read_steps(GivenReader& r, const std::string& key, const Conventions& c) {
-  Mat4d m = Mat4d::Identity();
+// The composite of a list of transform steps, first applied first: M = Aₙ···A₁ (exact; the
+// doubles are its entries rounded once).
+Mat4<Exact> read_steps(GivenReader& r, const std::string& key, const Conventions& c) {
+  Mat4<Exact> m = Mat4<Exact>::Identity();
   const std::size_t n = r.list_size(key, 0);
   for (std::size_t i = 0; i < n; ++i) {
     GivenReader s = r.item(key, i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
-    m = to_mat4d(read_transform_step(s, 3, c).matrix) * m;
+    m = Mat4<Exact>(read_transform_step(s, 3, c).matrix * m);
+    for (Exact& e : m.reshaped()) e = canonical(e);
   }
   return m;
 }
 
-void add_polygons(SceneObject& o, const Mesh& mesh) {
-  for (const Vec3<Exact>& v : mesh.vertices) o.vertices.push_back(to_vec3d(v));
+void add_vertex(SceneObject& o, const Vec3<Exact>& v, bool keep_exact) {
+  o.vertices.push_back(to_vec3d(v));
+  if (keep_exact) o.exact_vertices.push_back(v);
+}
+
+void add_polygons(SceneObject& o, const Mesh& mesh, bool keep_exact) {
+  for (const Vec3<Exact>& v : mesh.vertices) add_vertex(o, v, keep_exact);
   for (const std::vector<int>& f : mesh.faces)
     for (std::size_t k = 1; k + 1 < f.size(); ++k) o.triangles.push_back({f[0], f[k], f[k + 1]});
 }
 
-SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long multiplier, long& triangles) {
+SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long multiplier, long& triangles,
+                        bool keep_exact) {
   SceneObject obj;
   if (o.has("name")) {
     const YAML::Node name = o.node()["name"];
@@ -82,11 +91,11 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
   const int shapes = o.has("triangle") + o.has("mesh") + o.has("box") + o.has("solid");
   if (shapes > 1) o.fail(o.has("triangle") ? "triangle" : "mesh", "give at most one of triangle, mesh, box and solid");
   if (o.has("triangle")) {
-    for (const Vec3<Exact>& p : o.points("triangle", 3, 3)) obj.vertices.push_back(to_vec3d(p));
+    for (const Vec3<Exact>& p : o.points("triangle", 3, 3)) add_vertex(obj, p, keep_exact);
     obj.triangles.push_back({0, 1, 2});
   } else if (o.has("mesh")) {
     GivenReader m = o.child("mesh", {"vertices", "faces"});
-    add_polygons(obj, read_mesh(m, 3, 1));
+    add_polygons(obj, read_mesh(m, 3, 1), keep_exact);
   } else if (o.has("box")) {
     std::vector<Exact> size;
     if (o.is_list("box")) {
@@ -108,10 +117,15 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
     SceneObject box = box_object(to_double(size[0]), to_double(size[1]), to_double(size[2]));
     obj.vertices = box.vertices;
     obj.triangles = box.triangles;
+    if (keep_exact) obj.exact_vertices = box_corners(size[0], size[1], size[2]);
   } else if (o.has("solid")) {
-    add_polygons(obj, named_solid(o.word("solid", solid_names())));
+    add_polygons(obj, named_solid(o.word("solid", solid_names())), keep_exact);
   }
-  if (o.has("transform")) obj.transform = read_steps(o, "transform", c);
+  if (o.has("transform")) {
+    const Mat4<Exact> m = read_steps(o, "transform", c);
+    obj.transform = to_mat4d(m);
+    if (keep_exact) obj.exact_transform = m;
+  }
   if (o.has("fill")) obj.fill = read_color(o, "fill");
   if (o.has("cull")) obj.cull = o.word("cull", {"none", "back"}) == "back" ? Cull::Back : Cull::None;
   long copies = 1;
@@ -123,6 +137,7 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
       rep.from[a] = read_int(r, fmt::format("from[{}]", a), from[a], -100000, 100000);
       rep.to[a] = read_int(r, fmt::format("to[{}]", a), to[a], rep.from[a], 100000);
       rep.step(a) = to_double(step[a]);
+      if (keep_exact) obj.exact_step(a) = step[a];
     }
     r.finish();
     copies = rep.count();
@@ -142,7 +157,7 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
     const std::size_t n = o.list_size("children");
     for (std::size_t k = 0; k < n; ++k) {
       GivenReader ch = o.item("children", k, kObjectFields);
-      obj.children.push_back(read_object(ch, c, depth + 1, factor, triangles));
+      obj.children.push_back(read_object(ch, c, depth + 1, factor, triangles, keep_exact));
     }
   }
   o.finish();
@@ -185,7 +200,14 @@ Mesh read_mesh(GivenReader& m, std::size_t min_vertices, std::size_t min_faces) 
   return mesh;
 }
 
-SceneSpec read_scene(GivenReader& r, const Conventions& c) {
+Mat4<Exact> exact_clip_from_world(const SceneSpec& spec, Api api, Derivation* steps) {
+  const MatX<Exact> view = look_at_with_steps(spec.eye, spec.center, spec.up, api, "scene.camera.", steps);
+  Mat4<Exact> m = projection_with_steps(spec.projection, api, steps) * view;
+  for (Exact& e : m.reshaped()) e = canonical(e);
+  return m;
+}
+
+SceneSpec read_scene(GivenReader& r, const Conventions& c, bool keep_exact) {
   SceneSpec spec;
   Scene& s = spec.scene;
   s.api = c.api;
@@ -219,7 +241,7 @@ SceneSpec read_scene(GivenReader& r, const Conventions& c) {
       GivenReader l = r.child("light", {"direction", "transform", "ambient", "diffuse"});
       if (l.has("direction")) light.direction = to_vec3d(l.vector<3>("direction"));
       if (light.direction.norm() == 0) l.fail("direction", "the zero vector is not a direction");
-      if (l.has("transform")) light.direction = read_steps(l, "transform", c).block<3, 3>(0, 0) * light.direction;
+      if (l.has("transform")) light.direction = to_mat4d(read_steps(l, "transform", c)).block<3, 3>(0, 0) * light.direction;
       if (l.has("ambient")) light.ambient = read_int(l, "ambient", l.number("ambient"), 0, 255);
       if (l.has("diffuse")) light.diffuse = read_int(l, "diffuse", l.number("diffuse"), 0, 255);
       l.finish();
@@ -230,7 +252,7 @@ SceneSpec read_scene(GivenReader& r, const Conventions& c) {
   const std::size_t n = r.list_size("objects");
   for (std::size_t k = 0; k < n; ++k) {
     GivenReader o = r.item("objects", k, kObjectFields);
-    s.objects.push_back(read_object(o, c, 1, 1, spec.triangles));
+    s.objects.push_back(read_object(o, c, 1, 1, spec.triangles, keep_exact));
   }
   r.finish();
   return spec;

@@ -48,7 +48,13 @@ inline constexpr int kMaxSceneDepth = 32;
 std::vector<std::string> scene_fields();
 
 // `r` is the scene mapping itself. Throws InputError naming file, line, column and field.
-SceneSpec read_scene(GivenReader& r, const Conventions& c);
+// `keep_exact`: keep the exact vertices, transforms and steps beside their doubles
+// (SceneObject::exact_*), for decisions that fall back on them (the render kind).
+SceneSpec read_scene(GivenReader& r, const Conventions& c, bool keep_exact = false);
+
+// The exact projection · camera of a scene (column form), with the camera's and the
+// projection's derivation steps when `steps` is given.
+Mat4<Exact> exact_clip_from_world(const SceneSpec& spec, Api api, Derivation* steps = nullptr);
 
 // A mesh {vertices, faces}: faces are lists of ≥ 3 distinct vertex indices.
 Mesh read_mesh(GivenReader& m, std::size_t min_vertices, std::size_t min_faces);

@@ -21,6 +21,22 @@ Eigen::Vector3d abs_cross(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
           x.x() * y.y() + x.y() * y.x()};
 }
 
+// The exponent k that puts the largest |coordinate| in [1, 2)·2ᵏ (0 when all are 0 or one is
+// not finite). κ is the same for the points scaled by 2⁻ᵏ (exactly), whose products neither
+// underflow nor overflow in double: an estimate true for tiny and huge coordinates alike.
+int largest_exponent(const std::vector<Eigen::Vector3d>& points, double also = 0) {
+  double largest = std::abs(also);
+  for (const Eigen::Vector3d& q : points) largest = std::max(largest, q.cwiseAbs().maxCoeff());
+  return largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
+}
+
+template <int N>
+Eigen::Matrix<double, N, 1> scaled(const Eigen::Matrix<double, N, 1>& q, int k) {
+  Eigen::Matrix<double, N, 1> out;
+  for (int i = 0; i < N; ++i) out(i) = std::ldexp(q(i), -k);
+  return out;
+}
+
 double ratio(double num, double den) {
   if (num == 0) return 1.0;
   if (den == 0) return kInfinity;
@@ -52,8 +68,11 @@ std::string digits_sentence(double kappa, double kappa_float, double kappa_doubl
                      digits_sentence(kappa_long_double, Precision::LongDouble));
 }
 
-double normal_condition(const std::vector<Eigen::Vector3d>& p) {
-  if (p.size() < 3) return kInfinity;
+double normal_condition(const std::vector<Eigen::Vector3d>& points) {
+  if (points.size() < 3) return kInfinity;
+  const int k = largest_exponent(points);
+  std::vector<Eigen::Vector3d> p;
+  for (const Eigen::Vector3d& q : points) p.push_back(scaled(q, k));
   Eigen::Vector3d n = Eigen::Vector3d::Zero(), terms = Eigen::Vector3d::Zero();
   double scale = 0, sum_d = 0;
   for (const Eigen::Vector3d& q : p) scale = std::max(scale, q.cwiseAbs().maxCoeff());
@@ -75,18 +94,14 @@ double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen:
 double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& eye_in,
                         Precision precision) {
   if (points.size() < 3) return kInfinity;
-  // Scale by 2⁻ᵏ (exact) so the largest coordinate is about 1: products neither under- nor
-  // overflow, and κ is the same for the scaled problem.
-  double largest = eye_in.cwiseAbs().maxCoeff();
-  for (const Eigen::Vector3d& q : points) largest = std::max(largest, q.cwiseAbs().maxCoeff());
-  if (!std::isfinite(largest)) return kInfinity;
-  const int k = largest > 0 ? std::ilogb(largest) : 0;
-  const auto scaled = [k](const Eigen::Vector3d& q) {
-    return Eigen::Vector3d(std::ldexp(q.x(), -k), std::ldexp(q.y(), -k), std::ldexp(q.z(), -k));
-  };
+  // Scaled by 2⁻ᵏ so the largest coordinate is about 1 (largest_exponent).
+  if (!std::isfinite(eye_in.cwiseAbs().maxCoeff())) return kInfinity;
+  for (const Eigen::Vector3d& q : points)
+    if (!std::isfinite(q.cwiseAbs().maxCoeff())) return kInfinity;
+  const int k = largest_exponent(points, eye_in.cwiseAbs().maxCoeff());
   std::vector<Eigen::Vector3d> p;
-  for (const Eigen::Vector3d& q : points) p.push_back(scaled(q));
-  const Eigen::Vector3d eye = scaled(eye_in);
+  for (const Eigen::Vector3d& q : points) p.push_back(scaled(q, k));
+  const Eigen::Vector3d eye = scaled(eye_in, k);
   Eigen::Vector3d n = Eigen::Vector3d::Zero(), terms = Eigen::Vector3d::Zero();
   for (std::size_t i = 1; i + 1 < p.size(); ++i) {
     n += (p[i] - p[0]).cross(p[i + 1] - p[0]);
@@ -123,9 +138,13 @@ double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen:
   return kappa + std::exp2(underflow);
 }
 
-DepthCondition depth_condition(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                               const Eigen::Vector3d& c, const Eigen::Vector2d& pixel) {
+DepthCondition depth_condition(const Eigen::Vector3d& a_in, const Eigen::Vector3d& b_in,
+                               const Eigen::Vector3d& c_in, const Eigen::Vector2d& pixel_in) {
   DepthCondition out;
+  // Scaled by 2⁻ᵏ (largest_exponent): every term of both κ has the same degree in the scale.
+  const int k = largest_exponent({a_in, b_in, c_in}, pixel_in.cwiseAbs().maxCoeff());
+  const Eigen::Vector3d a = scaled(a_in, k), b = scaled(b_in, k), c = scaled(c_in, k);
+  const Eigen::Vector2d pixel = scaled(pixel_in, k);
   const Eigen::Vector3d u = b - a, v = c - a;
   const Eigen::Vector3d n = u.cross(v), terms = abs_cross(u, v);
   // Input rounding in the projected edges, as for a normal.

@@ -28,6 +28,9 @@ std::string digits_sentence(double kappa, Precision p);
 
 // Polygon normal n = Σᵢ dᵢ × dᵢ₊₁ (dᵢ = pᵢ − p₀; a triangle's e₀ × e₁ is the one term): input
 // errors of u·max‖pᵢ‖ in the dᵢ, and the rounding of each product, relative to ‖n‖.
+// Computed on the points scaled by a power of two, so tiny and huge coordinates (whose products
+// would under- or overflow in double) get the estimate of the same shape at scale 1; the same
+// holds for depth_condition and facing_condition.
 double normal_condition(const std::vector<Eigen::Vector3d>& points);
 
 // D_f = v·n with v = eye − p₀ and n the polygon's normal: the permanent (every product taken

@@ -118,17 +118,17 @@ class NumericOut {
   // product scaled back by a power of two): warned as underflow.
   void underflow() { underflow_ = true; }
   // The inputs' conversion (InputRange): warned once, before the values' own range warnings.
-  void inputs(const InputRange& range) {
+  // `discrete_exact`: the kind decides its discrete answers on the exact inputs (say so).
+  void inputs(const InputRange& range, bool discrete_exact = true) {
     const std::string name(to_string(r_.precision));
+    const std::string decided = discrete_exact ? ", and every discrete answer was decided on the exact inputs." : ".";
     if (range.overflow)
       warn("Inputs overflow", "some inputs exceed the range of " + name +
-                                  " and became infinite; the values computed from them are meaningless, and "
-                                  "every discrete answer was decided on the exact inputs.");
+                                  " and became infinite; the values computed from them are meaningless" + decided);
     if (range.underflow)
       warn("Inputs underflow", "some inputs are below the normal range of " + name +
                                    " and were rounded to subnormal numbers or to 0: the values computed from "
-                                   "them keep few or none of their digits, and every discrete answer was "
-                                   "decided on the exact inputs.");
+                                   "them keep few or none of their digits" + decided);
   }
   // A discrete answer decided by the exact fallback (predicates.hpp), in neutral words.
   void exact_decision(const std::string& what) {

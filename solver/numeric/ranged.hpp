@@ -14,6 +14,15 @@
 
 namespace frustum {
 
+// |value| > bound, both finite: a value computed within `bound` of the exact one has the exact
+// one's sign. Two comparisons (a NaN or infinite bound fails the first, a NaN or infinite value
+// one of them): the filters' hot path (geometry/predicates.hpp).
+template <typename T>
+bool sign_is_proven(const T& value, const T& bound) {
+  const T magnitude = std::abs(value);
+  return magnitude > bound && magnitude < std::numeric_limits<T>::infinity();
+}
+
 template <typename T>
 struct Ranged {
   T v{};  // the value computed in T
@@ -38,7 +47,9 @@ struct Ranged {
   // (a few roundings of non-negative terms: a relative 4u, and η for their underflow).
   static T widen(T radius, T v) { return (radius + kU * std::abs(v)) * (T(1) + T(4) * kU) + kEta; }
 
-  bool proves_sign() const { return std::isfinite(v) && std::isfinite(r) && std::abs(v) > r; }
+  bool proves_sign() const { return sign_is_proven(v, r); }
+  // The exact value's sign when the radius proves it, else 0 ("unknown", never "zero").
+  int proven_sign() const { return proves_sign() ? (v > T(0) ? 1 : -1) : 0; }
 };
 
 // Identity of the pair (Eigen asks for it); says nothing about the values' order.

@@ -182,12 +182,7 @@ PixelTrace trace_pixel(const std::vector<WindowTriangle>& triangles, int i, int 
     if (!covers(t.setup, i, j)) continue;
     Competitor c{static_cast<int>(k), depth_at(t, i, j), false};
     c.passed = c.depth < p.depth;
-    if (c.passed) {
-      p.depth = c.depth;
-      p.winner = c.triangle;
-      p.color = w.color;
-    }
-    p.competitors.push_back(c);
+    p.add(c, w.color);
   }
   return p;
 }

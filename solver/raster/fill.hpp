@@ -89,6 +89,15 @@ struct PixelTrace {
   int winner = -1;   // −1: the background
   float depth = kDepthClear;
   Rgb color;
+  // Records a competitor in drawing order; one that passed is the new winner.
+  void add(const Competitor& c, Rgb colour) {
+    if (c.passed) {
+      depth = c.depth;
+      winner = c.triangle;
+      color = colour;
+    }
+    competitors.push_back(c);
+  }
 };
 PixelTrace trace_pixel(const std::vector<WindowTriangle>& triangles, int i, int j, Rgb background);
 

@@ -4,10 +4,7 @@ namespace frustum {
 
 SceneObject box_object(double w, double h, double d) {
   SceneObject o;
-  // seed 003's cube numbering: 0..3 the top (y = +h/2), 4..7 the bottom; z = +d/2 the front.
-  const int xyz[8][3] = {{-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1},
-                         {-1, -1, 1}, {1, -1, 1}, {1, -1, -1}, {-1, -1, -1}};
-  for (const auto& v : xyz) o.vertices.emplace_back(v[0] * w / 2, v[1] * h / 2, v[2] * d / 2);
+  o.vertices = box_corners(w, h, d);
   const int quads[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {1, 5, 6, 2}, {0, 3, 7, 4}, {0, 4, 5, 1}, {3, 2, 6, 7}};
   for (const auto& q : quads) {
     o.triangles.push_back({q[0], q[1], q[2]});

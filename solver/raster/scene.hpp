@@ -61,6 +61,12 @@ struct SceneObject {
   };
   std::optional<Repeat> repeat;
   std::vector<SceneObject> children;
+  // The exact inputs the doubles above were rounded from (decimals as rationals), kept when
+  // the scene was read for the render kind, whose discrete decisions fall back on them
+  // (raster/certified_trace.hpp); empty otherwise.
+  std::vector<Vec3<Exact>> exact_vertices;
+  Mat4<Exact> exact_transform = Mat4<Exact>::Identity();
+  Vec3<Exact> exact_step = Vec3<Exact>::Zero();  // the repeat's step
 };
 
 struct Camera {
@@ -82,5 +88,15 @@ struct Scene {
 // Processing's box(w, h, d): centred at the origin, 12 triangles counter-clockwise seen from
 // outside (right-handed).
 SceneObject box_object(double w, double h, double d);
+// Its eight corners in any scalar (the same numbering).
+template <typename T>
+std::vector<Vec3<T>> box_corners(const T& w, const T& h, const T& d) {
+  // seed 003's cube numbering: 0..3 the top (y = +h/2), 4..7 the bottom; z = +d/2 the front.
+  static const int xyz[8][3] = {{-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1},
+                                {-1, -1, 1}, {1, -1, 1}, {1, -1, -1}, {-1, -1, -1}};
+  std::vector<Vec3<T>> out;
+  for (const auto& v : xyz) out.emplace_back(T(v[0] * w / 2), T(v[1] * h / 2), T(v[2] * d / 2));
+  return out;
+}
 
 }  // namespace frustum

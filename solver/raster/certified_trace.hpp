@@ -1,0 +1,70 @@
+// The render kind's pixels with every discrete decision exact (issue 14): whether a triangle
+// leaves the view volume or is clipped, which way it faces (culling), where each vertex snaps
+// on the 1/256-pixel grid (and with it coverage under the top-left rule, exact integers from
+// there on), and which fragment wins the depth test. Each decision is first taken on the
+// doubles the pipeline computes, carried as ranged values (numeric/ranged.hpp: value and a
+// proven error radius) from the exact inputs rounded once; when the radius cannot prove it
+// (a vertex within rounding of a half-grid point, a face within rounding of edge-on, two
+// depths within rounding of each other, a vertex within rounding of a clip plane), the same
+// formula is evaluated exactly on the scene's exact inputs (SceneObject::exact_*), and the
+// trace says so. The model is the one the render kind states: clip in homogeneous space
+// (w ≥ ε), divide, viewport, snap, top-left coverage, depth the plane through the snapped
+// vertices; a fragment is written when its depth is less than the stored one (the buffer
+// cleared to 1), equal keeping the earlier, the depths compared exactly and shown as 32-bit
+// floats. The full-frame renderer (fill.hpp) keeps its float buffer and is not changed.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "solver/numeric/ranged.hpp"
+#include "solver/raster/fill.hpp"
+#include "solver/raster/pipeline.hpp"
+
+namespace frustum {
+
+// A window triangle (a piece of a clipped polygon's fan) with its snapped setup and its
+// window depths per input vertex: ranged always, exact once a decision needed them.
+struct CertifiedPiece {
+  TriangleSetup setup;
+  std::array<Ranged<double>, 3> z;
+  std::optional<std::array<Exact, 3>> exact_z;
+  Rgb color;
+  int source = 0;  // index into FlatScene::triangles
+  int fan = 0;     // which piece of the source's fan
+  bool front = true;
+};
+
+// Placement of every flattened object (flatten()'s order, index = FlatScene object index):
+// its exact world_from_object and the object whose exact vertices it places (null for the
+// root).
+struct ExactPlacement {
+  const SceneObject* object = nullptr;
+  Mat4<Exact> world_from_object;
+};
+std::vector<ExactPlacement> exact_placements(const Scene& scene);
+
+struct CertifiedScene {
+  std::vector<CertifiedPiece> pieces;  // drawing order
+  GeometryStats stats;
+  long exact_geometry =
+      0;  // triangles whose clipping, facing or snapping the exact fallback decided
+  // For the exact fallback: per flattened object, clip_from_object = clip_from_world ·
+  // world_from_object, exactly.
+  std::vector<ExactPlacement> placements;
+  std::vector<Mat4<Exact>> clip_from_object;
+};
+
+// The geometry half with exact decisions. `clip_from_world`: the exact projection · camera.
+// Needs the scene read with its exact inputs (read_scene(…, keep_exact = true)).
+CertifiedScene certified_geometry(const Scene& scene, const FlatScene& flat,
+                                  const Mat4<Exact>& clip_from_world);
+
+// One pixel's z-buffer trace (raster row j, y up): the pieces covering its centre in drawing
+// order, the depth test decided exactly. Competitor::triangle indexes scene.pieces;
+// `exact_depths` is set when some comparison needed the exact depths.
+PixelTrace certified_trace(CertifiedScene& scene, const Scene& s, const FlatScene& flat, int i,
+                           int j, bool& exact_depths);
+
+}  // namespace frustum
