@@ -47,6 +47,8 @@ CaseError compare(const NumericResult& got, const NumericResult& exact);
 // Relative error max |xᵢ − eᵢ| / max |eᵢ| (absolute when every eᵢ is 0) of computed values
 // against exact ones, computed exactly; ∞ when a value is not finite.
 double relative_error(const std::vector<long double>& got, const std::vector<Exact>& exact);
+// The same for a result kept in exact values: 0 when they are the exact values.
+double exact_relative_error(const std::vector<Exact>& got, const std::vector<Exact>& exact);
 
 // The table as Markdown (one row per suite × kind × backend).
 std::string markdown_table(const std::vector<AccuracyRow>& rows);

@@ -106,6 +106,26 @@ TEST(BenchAccuracy, ErrorIsMeasuredAgainstTheExactValue) {
             std::numeric_limits<double>::infinity());
 }
 
+// The exact backend is measured on its exact values: its error is 0, not the ~1e-20 of their
+// long double rounding; the other backends' errors are measured and non-zero somewhere.
+TEST(BenchAccuracy, TheExactBackendScoresZero) {
+  const Exact third = Exact(1) / 3, root = GiNaC::sqrt(Exact(3)) / 3;
+  EXPECT_EQ(bench::exact_relative_error({third, root}, {third, root}), 0.0);
+  EXPECT_GT(bench::exact_relative_error({third}, {root}), 0.0);
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  bool exact_seen = false, float_error = false;
+  for (const bench::AccuracyRow& row : bench::measure(set, "seed", 0)) {
+    if (row.precision == Precision::Exact) {
+      exact_seen = true;
+      EXPECT_EQ(row.max_error, 0.0) << row.kind;
+    }
+    if (row.precision == Precision::Float && row.max_error > 0) float_error = true;
+    EXPECT_EQ(row.wrong, 0u) << row.kind;
+  }
+  EXPECT_TRUE(exact_seen);
+  EXPECT_TRUE(float_error);
+}
+
 TEST(Condition, EstimatesGrowAsProblemsDegenerate) {
   const std::vector<Eigen::Vector3d> good = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   EXPECT_LT(normal_condition(good), 10);
