@@ -207,33 +207,51 @@ namespace {
 
 // The projection matrix in symbols, as on paper (DirectX: the row-vector form).
 // The orthographic matrix with z_min, z_max as coordinates (Conventions::z_planes).
-MathText ortho_coordinates_formula(Api api) {
+MathText ortho_coordinates_formula(Api api, const std::string& name) {
   const bool y_down = api == Api::Processing;
   const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
-  return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
-                  "2/(t−b) 0 −(t+b)/(t−b); 0 0 2/(z_max−z_min) −(z_max+z_min)/(z_max−z_min); 0 0 0 1]",
-              "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " + latex_sign +
-                  "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & \\frac{2}{z_{\\max}-z_{\\min}} & "
-                  "-\\frac{z_{\\max}+z_{\\min}}{z_{\\max}-z_{\\min}} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+  return math(
+      "ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
+          "2/(t−b) 0 −(t+b)/(t−b); 0 0 2/(z_max−z_min) −(z_max+z_min)/(z_max−z_min); 0 0 0 1]",
+      name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
+          latex_sign +
+          "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & \\frac{2}{z_{\\max}-z_{\\min}} & "
+          "-\\frac{z_{\\max}+z_{\\min}}{z_{\\max}-z_{\\min}} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
 }
 
-MathText projection_formula(bool ortho, Api api) {
+MathText projection_formula(bool ortho, Api api, const std::string& name) {
   const bool y_down = api == Api::Processing;
   if (api == Api::DirectX)
-    return ortho ? math("OrthoOffCenterLH: [2/(r−l) 0 0 0; 0 2/(t−b) 0 0; 0 0 1/(f−n) 0; (l+r)/(l−r) (t+b)/(b−t) n/(n−f) 1]",
-                        "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2}{t-b} & 0 & 0 \\\\ 0 & 0 & \\frac{1}{f-n} & 0 \\\\ "
-                        "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{n}{n-f} & 1 \\end{bmatrix}")
-                 : math("PerspectiveOffCenterLH: [2n/(r−l) 0 0 0; 0 2n/(t−b) 0 0; (l+r)/(l−r) (t+b)/(b−t) f/(f−n) 1; 0 0 nf/(n−f) 0]",
-                        "M = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2n}{t-b} & 0 & 0 \\\\ "
-                        "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{f}{f-n} & 1 \\\\ 0 & 0 & \\frac{nf}{n-f} & 0 \\end{bmatrix}");
+    return ortho
+               ? math(
+                     "OrthoOffCenterLH: [2/(r−l) 0 0 0; 0 2/(t−b) 0 0; 0 0 1/(f−n) 0; (l+r)/(l−r) "
+                     "(t+b)/(b−t) n/(n−f) 1]",
+                     name +
+                         " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2}{t-b} & "
+                         "0 & 0 \\\\ 0 & 0 & \\frac{1}{f-n} & 0 \\\\ "
+                         "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{n}{n-f} & 1 \\end{bmatrix}")
+               : math(
+                     "PerspectiveOffCenterLH: [2n/(r−l) 0 0 0; 0 2n/(t−b) 0 0; (l+r)/(l−r) "
+                     "(t+b)/(b−t) f/(f−n) 1; 0 0 nf/(n−f) 0]",
+                     name +
+                         " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2n}{t-b} "
+                         "& 0 & 0 \\\\ "
+                         "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{f}{f-n} & 1 \\\\ 0 & 0 & "
+                         "\\frac{nf}{n-f} & 0 \\end{bmatrix}");
   const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
   if (ortho)
-    return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign + "2/(t−b) 0 −(t+b)/(t−b); 0 0 −2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
-                "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " + latex_sign +
-                    "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & -\\frac{2}{f-n} & -\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
-  return math("frustum: [2n/(r−l) 0 (r+l)/(r−l) 0; 0 " + sign + "2n/(t−b) (t+b)/(t−b) 0; 0 0 −(f+n)/(f−n) −2fn/(f−n); 0 0 −1 0]",
-              "M = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & \\frac{r+l}{r-l} & 0 \\\\ 0 & " + latex_sign +
-                  "\\frac{2n}{t-b} & \\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & -\\frac{f+n}{f-n} & -\\frac{2fn}{f-n} \\\\ 0 & 0 & -1 & 0 \\end{bmatrix}");
+    return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
+                    "2/(t−b) 0 −(t+b)/(t−b); 0 0 −2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
+                name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
+                    latex_sign +
+                    "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & -\\frac{2}{f-n} & "
+                    "-\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+  return math("frustum: [2n/(r−l) 0 (r+l)/(r−l) 0; 0 " + sign +
+                  "2n/(t−b) (t+b)/(t−b) 0; 0 0 −(f+n)/(f−n) −2fn/(f−n); 0 0 −1 0]",
+              name + " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & \\frac{r+l}{r-l} & 0 \\\\ 0 & " +
+                  latex_sign +
+                  "\\frac{2n}{t-b} & \\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & -\\frac{f+n}{f-n} & "
+                  "-\\frac{2fn}{f-n} \\\\ 0 & 0 & -1 & 0 \\end{bmatrix}");
 }
 
 // "l = −1,  r = 1, …" for the six planes of a view volume.
@@ -249,7 +267,7 @@ MathText volume_text(const Volume<Exact>& v) {
 // Why a perspective matrix has the form it has, in the lectures' order: similar triangles put
 // the projected point at n·x/(−z), a division no matrix can do; homogeneous coordinates move
 // −z into w′, and the perspective divide performs it (DirectX: eye space looks down +z).
-void perspective_idea_steps(Api api, Derivation& steps) {
+void perspective_idea_steps(Api api, const std::string& name, Derivation& steps) {
   const bool plus_z = api == Api::DirectX;
   steps
       .add("Similar triangles",
@@ -269,10 +287,10 @@ void perspective_idea_steps(Api api, Derivation& steps) {
                        "z = −n at (x_n, y_n): the projection divides by −z.";
   steps
       .add("Homogeneous coordinates: the depth goes into w′",
-           plus_z ? math("w′ = z  (M_∗4 = (0, 0, 1, 0)ᵀ)",
-                         "w' = z \\quad (M_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
-                  : math("w′ = −z  (M_4∗ = (0, 0, −1, 0))",
-                         "w' = -z \\quad (M_{4 \\ast} = (0, 0, -1, 0))"),
+           plus_z ? math("w′ = z  (" + name + "_∗4 = (0, 0, 1, 0)ᵀ)",
+                         "w' = z \\quad (" + name + "_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
+                  : math("w′ = −z  (" + name + "_4∗ = (0, 0, −1, 0))",
+                         "w' = -z \\quad (" + name + "_{4 \\ast} = (0, 0, -1, 0))"),
            {},
            plus_z ? math("x_ndc = x′ / w′ = x′ / z",
                          "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{z}")
@@ -286,7 +304,8 @@ void perspective_idea_steps(Api api, Derivation& steps) {
 
 }  // namespace
 
-MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps) {
+MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps,
+                                  const std::string& name) {
   const Volume<Exact>& v = p.volume;
   if (steps && p.type == ProjectionSpec::Type::Perspective) {
     steps->add("The frustum of perspective(fovy, aspect, near, far)",
@@ -301,7 +320,7 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   }
   MatX<Exact> m = p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
   m = canonical(m);
-  if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, *steps);
+  if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, name, *steps);
   // The course's reading: z_min = near, z_max = far as coordinates map to −1 and +1, so the z row
   // is +2/(z_max − z_min), −(z_max + z_min)/(z_max − z_min); glOrtho's planes z = −n, −f negate
   // the first entry. Both map the same volume; only the direction of the z axis differs.
@@ -312,9 +331,9 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   if (steps) {
     const bool ortho = p.type == ProjectionSpec::Type::Ortho;
     Step& s = steps->add(ortho ? "Orthographic projection matrix" : "Perspective projection matrix",
-                         p.z_coordinates ? ortho_coordinates_formula(api) : projection_formula(ortho, api),
-                         volume_text(v),
-                         math("M = ") + matrix_text(paper_form(m, api)));
+                         p.z_coordinates ? ortho_coordinates_formula(api, name)
+                                         : projection_formula(ortho, api, name),
+                         volume_text(v), math(name + " = ") + matrix_text(paper_form(m, api)));
     s.note = multiply_note(api);
     if (api == Api::Processing)
       s.note += " Processing negates the y row because its window's y axis points down.";

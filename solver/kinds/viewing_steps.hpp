@@ -33,8 +33,10 @@ struct ProjectionSpec {
 ProjectionSpec read_projection(GivenReader& r, const Conventions& c);
 bool has_projection(const GivenReader& r);
 
-// The projection matrix (column form) with its derivation steps in the conventions.
-MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps);
+// The projection matrix (column form) with its derivation steps in the conventions, called
+// `name` in them (P where a model or view matrix M, V stands beside it).
+MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps,
+                                  const std::string& name = "M");
 
 // The view matrix of a camera (column form) with its steps; throws DomainError naming
 // field + "center" or field + "up" on a degenerate camera.
