@@ -171,5 +171,61 @@ TEST(LectureExercises, CourseConventionForOrthoZPlanesIsHonoured) {
             Verdict::Correct);
 }
 
+// A course reading the field of view as horizontal declares `fov: horizontal` once: θ = 90°
+// spans the width (r = 1, t = 1/2 for aspect 2), the derivation relates it to fovy =
+// 2·atan(1/2), the grader accepts the course's matrix and names the vertical reading.
+TEST(LectureExercises, CourseConventionForHorizontalFovIsHonoured) {
+  const ProblemSet course =
+      load_problem_set(test::source_path("problems/examples/course_fov_horizontal.yaml"));
+  ASSERT_TRUE(course.all_errors().empty());
+  const SetResult solved = solve_set(course, true, {});
+  const ProblemResult& m = find(solved, "fov-horizontal-matrix");
+  ASSERT_FALSE(m.error);
+  EXPECT_EQ(test::exact_text(m, "matrix"),
+            "1, 0, 0, 0, 0, 2, 0, 0, 0, 0, -11/9, -20/9, 0, 0, -1, 0");
+  bool related = false;
+  for (const Step& s : m.derivation.steps())
+    related =
+        related || (s.title == "The same frustum from the vertical angle" &&
+                    s.result.unicode.find("fovy = 2·atan(1/2) ≈ 53.13°") != std::string::npos);
+  EXPECT_TRUE(related) << "the derivation shows fovy = 2·atan(tan(fovx/2)/aspect)";
+  EXPECT_NE(m.derivation.steps().front().note.find("the field of view is horizontal"),
+            std::string::npos);
+  const ProblemResult& p = find(solved, "fov-horizontal-point");
+  EXPECT_EQ(test::exact_text(p, "window"), "600, 300, 5/9");
+
+  const SolvedSet key = solve_for_grading(course);
+  const auto grade_matrix = [&](const std::string& matrix) {
+    const std::string answers =
+        "student: s\nanswers:\n  fov-horizontal-matrix:\n    matrix: " + matrix + "\n";
+    return grade(course, load_submission_from_string(answers, "a.yaml"), &key)
+        .problems.at(0)
+        .answers.at(0);
+  };
+  EXPECT_EQ(
+      grade_matrix("[[1, 0, 0, 0], [0, 2, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]")
+          .verdict,
+      Verdict::Correct);
+  const AnswerGrade vertical =
+      grade_matrix("[[0.5, 0, 0, 0], [0, 1, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]");
+  EXPECT_NE(vertical.verdict, Verdict::Correct);
+  EXPECT_EQ(vertical.misconception, "fovy for fovx");
+
+  // Without the declaration `fov` is perspective()'s vertical angle; `fovx` names its axis
+  // anywhere.
+  const ProblemResult plain = test::solve_yaml(
+      test::one("projection_matrix", "{perspective: {fov: 90, aspect: 2, near: 1, far: 10}}"));
+  EXPECT_EQ(test::exact_text(plain, "matrix"),
+            "1/2, 0, 0, 0, 0, 1, 0, 0, 0, 0, -11/9, -20/9, 0, 0, -1, 0");
+  const ProblemResult named = test::solve_yaml(
+      test::one("projection_matrix", "{perspective: {fovx: 90, aspect: 2, near: 1, far: 10}}"));
+  EXPECT_EQ(test::exact_text(named, "matrix"), test::exact_text(m, "matrix"));
+  const ProblemSet both = load_problem_set_from_string(
+      test::one("projection_matrix",
+                "{perspective: {fovy: 90, fovx: 90, aspect: 2, near: 1, far: 10}}"),
+      "b.yaml");
+  EXPECT_FALSE(both.all_errors().empty());
+}
+
 }  // namespace
 }  // namespace frustum

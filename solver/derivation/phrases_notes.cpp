@@ -64,6 +64,17 @@ constexpr Phrase kPhrases[] = {
     {"{0}; ortho's near and far are the z coordinates z_min, z_max; angles in {1}",
      "{0}; ortho の near, far は z 座標 z_min, z_max; 角度の単位は{1}",
      "{0}; near и far в ortho — z-координаты z_min, z_max; углы в {1}"},
+    {"{0}; the field of view is horizontal (fovx); angles in {1}",
+     "{0}; 画角は水平方向 (fovx); 角度の単位は{1}",
+     "{0}; угол обзора горизонтальный (fovx); углы в {1}"},
+    {"Here the field of view spans the width (fovx): it sets the right edge r, and the top is r "
+     "divided by the aspect ratio. perspective() takes the vertical angle fovy; both give the same "
+     "frustum and the same matrix.",
+     "ここでは画角は横方向 (fovx) に広がる: 右端 r を決め, 上端は r をアスペクト比で割ったもの. "
+     "perspective() は縦方向の画角 fovy を取る. どちらも同じ視体積, 同じ行列を与える.",
+     "Здесь угол обзора охватывает ширину (fovx): он задаёт правый край r, а верх равен r, "
+     "делённому на соотношение сторон. perspective() принимает вертикальный угол fovy; оба дают "
+     "один и тот же объём и одну и ту же матрицу."},
     {"{0}; ortho's near and far are the z coordinates z_min, z_max",
      "{0}; ortho の near, far は z 座標 z_min, z_max",
      "{0}; near и far в ortho — z-координаты z_min, z_max"},

@@ -463,7 +463,8 @@ std::unique_ptr<NumericSolver> project_point_numeric(
   exact.camera = camera;
   exact.type = projection.type;
   exact.volume = projection.volume;
-  if (projection.fovy && projection.aspect) {
+  if (projection.fovy && projection.aspect &&
+      !projection.fovx) {  // fovx: the volume already holds it
     exact.fovy = *projection.fovy;
     exact.aspect = *projection.aspect;
   }

@@ -1,5 +1,7 @@
 #include "solver/kinds/viewing_steps.hpp"
 
+#include <fmt/format.h>
+
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -36,12 +38,17 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
   ProjectionSpec p;
   p.unit = c.angles;
   if (r.has("perspective")) {
-    GivenReader g = r.child("perspective", {"fovy", "aspect", "near", "far"});
+    GivenReader g = r.child("perspective", {"fovy", "fovx", "fov", "aspect", "near", "far"});
     p.type = ProjectionSpec::Type::Perspective;
-    p.fovy = read_angle(g, "fovy", c.angles);
-    if (exact_sign(*p.fovy) <= 0 || exact_sign(*p.fovy - GiNaC::Pi) >= 0)
-      g.fail("fovy", c.angles == AngleUnit::Degrees ? "must be between 0° and 180° (exclusive)"
-                                                    : "must be between 0 and π (exclusive)");
+    // fovy and fovx name their axis; fov is read in the course's convention (default vertical).
+    if (g.has("fovy") + g.has("fovx") + g.has("fov") != 1)
+      g.fail(g.has("fovx") ? "fovx" : "fovy", "give exactly one of fovy, fovx and fov");
+    const std::string key = g.has("fovy") ? "fovy" : g.has("fovx") ? "fovx" : "fov";
+    const bool horizontal = key == "fovx" || (key == "fov" && c.fov == FovAxis::Horizontal);
+    const Exact angle = read_angle(g, key, c.angles);
+    if (exact_sign(angle) <= 0 || exact_sign(angle - GiNaC::Pi) >= 0)
+      g.fail(key, c.angles == AngleUnit::Degrees ? "must be between 0° and 180° (exclusive)"
+                                                 : "must be between 0 and π (exclusive)");
     p.aspect = g.number("aspect");
     require_positive(g, "aspect", *p.aspect, "the aspect ratio is width / height");
     const Exact n = g.number("near"), f = g.number("far");
@@ -49,7 +56,16 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
     if (canonical(f - n).is_zero()) g.fail("far", "near = far: the view volume has no depth");
     require_positive(g, "far", f, "the far plane is in front of the eye");
     g.finish();
-    p.volume = perspective_volume(*p.fovy, *p.aspect, n, f);
+    if (horizontal) {
+      // The angle spans the width: r = n·tan(fovx/2), t = r/aspect.
+      p.fovx = angle;
+      const Exact r = canonical(n * GiNaC::tan(angle / 2));
+      p.volume = {-r, r, -r / *p.aspect, r / *p.aspect, n, f};
+      p.fovy = canonical(2 * GiNaC::atan(GiNaC::tan(angle / 2) / *p.aspect));
+    } else {
+      p.fovy = angle;
+      p.volume = perspective_volume(*p.fovy, *p.aspect, n, f);
+    }
     for (Exact* e : {&p.volume.left, &p.volume.right, &p.volume.bottom, &p.volume.top})
       *e = canonical(*e);
     return p;
@@ -307,7 +323,37 @@ void perspective_idea_steps(Api api, const std::string& name, Derivation& steps)
 MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps,
                                   const std::string& name) {
   const Volume<Exact>& v = p.volume;
-  if (steps && p.type == ProjectionSpec::Type::Perspective) {
+  if (steps && p.fovx) {
+    // The course's horizontal reading, and how it relates to perspective()'s vertical fovy.
+    steps->add(
+        "The frustum of a horizontal field of view",
+        math("r = n·tan(fovx/2),  l = −r,  t = r / aspect,  b = −t",
+             "r = n\\tan\\frac{\\text{fovx}}{2},\\; l = -r,\\; t = \\frac{r}{\\text{aspect}},\\; b "
+             "= -t"),
+        math("fovx = ", "\\text{fovx} = ") + angle_text(*p.fovx, p.unit) +
+            math(",  aspect = ", ",\\; \\text{aspect} = ") + exact(*p.aspect) +
+            math(",  n = ", ",\\; n = ") + exact(v.near),
+        math("r = ") + exact(v.right, true) + math(",  t = ", ",\\; t = ") + exact(v.top, true));
+    const double fovy_shown =
+        to_double(p.unit == AngleUnit::Degrees ? Exact(*p.fovy * 180 / GiNaC::Pi) : *p.fovy);
+    steps
+        ->add("The same frustum from the vertical angle",
+              math("fovy = 2·atan(tan(fovx/2) / aspect)",
+                   "\\text{fovy} = 2\\arctan\\frac{\\tan(\\text{fovx}/2)}{\\text{aspect}}"),
+              {},
+              math("fovy = 2·atan(", "\\text{fovy} = 2\\arctan\\left(") +
+                  exact(canonical(GiNaC::tan(*p.fovx / 2) / *p.aspect)) +
+                  math(fmt::format(") ≈ {:.4g}{}", fovy_shown,
+                                   p.unit == AngleUnit::Degrees ? "°" : ""),
+                       fmt::format("\\right) \\approx {:.4g}{}", fovy_shown,
+                                   p.unit == AngleUnit::Degrees ? "^{\\circ}" : "")) +
+                  math(",  t = n·tan(fovy/2) = ", ",\\; t = n\\tan\\frac{\\text{fovy}}{2} = ") +
+                  exact(v.top, true))
+        .note =
+        "Here the field of view spans the width (fovx): it sets the right edge r, and the top is "
+        "r divided by the aspect ratio. perspective() takes the vertical angle fovy; both give the "
+        "same frustum and the same matrix.";
+  } else if (steps && p.type == ProjectionSpec::Type::Perspective) {
     steps->add("The frustum of perspective(fovy, aspect, near, far)",
                math("t = n·tan(fovy/2),  b = −t,  r = t·aspect,  l = −r",
                     "t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l = -r"),
@@ -354,7 +400,19 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
 std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
   std::vector<ProjectionMistake> out;
   const std::string frustum_step = "The frustum of perspective(fovy, aspect, near, far)";
-  if (p.fovy && p.aspect) {
+  if (p.fovx && p.aspect) {
+    // The horizontal angle read as perspective()'s vertical one.
+    ProjectionSpec fovy = p;
+    fovy.fovx.reset();
+    fovy.fovy = p.fovx;
+    fovy.volume = perspective_volume(*p.fovx, *p.aspect, p.volume.near, p.volume.far);
+    for (Exact* e : {&fovy.volume.left, &fovy.volume.right, &fovy.volume.bottom, &fovy.volume.top})
+      *e = canonical(*e);
+    out.push_back(
+        {"fovy for fovx",
+         "You used the angle as the vertical field of view; here it is the horizontal one (fovx).",
+         "The frustum of a horizontal field of view", fovy});
+  } else if (p.fovy && p.aspect) {
     const Exact as_degrees = canonical(*p.fovy * 180 / GiNaC::Pi);
     if (!canonical(GiNaC::cos(as_degrees / 2)).is_zero()) {
       ProjectionSpec radians = p;

@@ -24,6 +24,9 @@ struct ProjectionSpec {
   Volume<Exact> volume;
   std::optional<Exact> fovy;    // radians, perspective only
   std::optional<Exact> aspect;  // perspective only
+  // The horizontal angle (radians) when the course gives one (`fovx`, or `fov` with
+  // conventions fov: horizontal); fovy is then 2·atan(tan(fovx/2)/aspect).
+  std::optional<Exact> fovx;
   AngleUnit unit = AngleUnit::Degrees;
   bool z_coordinates = false;  // ortho: near, far are z_min, z_max (Conventions::z_planes)
 };
