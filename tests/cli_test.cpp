@@ -111,16 +111,18 @@ TEST(Cli, AnUnreadableAnswersFileIsOneErrorNotEveryProblemMissing) {
 }
 
 TEST(Cli, GenerateRefusesWhatCheckRefusesBeforeWritingAnything) {
-  // {window} is a mapping: `check` refused the set, but `generate` wrote every variant and an
-  // answer key without the problem, exit 0.
+  // {window.zmin} names no field: `check` refused the set, but `generate` wrote every variant
+  // and an answer key without the problem, exit 0.
   const std::string dir = ::testing::TempDir() + "/gen-refused";
   const std::string path = ::testing::TempDir() + "/placeholder_set.yaml";
-  std::ofstream(path) << "title: t\nvariants: per_student\nproblems:\n"
-                         "  - id: c\n    kind: clip_line\n    text: \"Clip against {window}.\"\n"
-                         "    given: {p: [-2, 5], q: [3, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}\n";
+  std::ofstream(path)
+      << "title: t\nvariants: per_student\nproblems:\n"
+         "  - id: c\n    kind: clip_line\n    text: \"Clip against z = {window.zmin}.\"\n"
+         "    given: {p: [-2, 5], q: [3, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}\n";
   const CliRun r = run("generate " + path + " --student s1 -o " + dir);
   EXPECT_EQ(r.status, 1) << r.out;
-  EXPECT_NE(r.out.find("placeholder_set.yaml:4:5: problems[0].text: the placeholder {window}"), std::string::npos)
+  EXPECT_NE(r.out.find("placeholder_set.yaml:4:5: problems[0].text: the placeholder {window.zmin}"),
+            std::string::npos)
       << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir + "/placeholder_set-s1.yaml"));
 }

@@ -1,11 +1,15 @@
 // The bundled lecture exercises (problems/examples/lecture_exercises.yaml) give the lectures'
 // answers: the Z-buffer's frame does not depend on the drawing order, and back-face culling
-// alone suffices for the convex polyhedra (a), (c) and not for the concave (b).
+// alone suffices for the convex polyhedra (a), (c) and not for the concave (b), (d); depth sort
+// fails for a long, thin polygon; seed 004's v′ = (P·V·M)·v is one problem.
 #include <gtest/gtest.h>
 
 #include "grader/grade.hpp"
+#include "solver/kinds/generate.hpp"
 #include "solver/kinds/problem_set.hpp"
+#include "solver/kinds/registry.hpp"
 #include "solver/kinds/solve_set.hpp"
+#include "solver/kinds/yaml_emit.hpp"
 #include "test_util.hpp"
 
 namespace frustum {
@@ -34,12 +38,99 @@ TEST(LectureExercises, BackFaceCullingSufficesForConvexPolyhedraOnly) {
       load_problem_set(test::source_path("problems/examples/lecture_exercises.yaml")), false, {});
   for (const auto& [id, convex] :
        {std::pair{"polyhedron-a-cube", true}, std::pair{"polyhedron-b-l-prism", false},
-        std::pair{"polyhedron-c-octahedron", true}}) {
+        std::pair{"polyhedron-c-octahedron", true}, std::pair{"polyhedron-d-u-prism", false}}) {
     const ProblemResult& p = find(set, id);
     ASSERT_FALSE(p.error) << id;
     EXPECT_EQ(p.answers.find("convex")->flag, convex) << id;
     EXPECT_EQ(p.answers.find("backface_sufficient")->flag, convex) << id;
   }
+}
+
+// Seed 004's v′ = (P·V·M)·v as one problem: the object's vertex (1, 0, 0) rotated 90° about z
+// and moved by its parent to (10, 1, 0), seen from (10, 0, 5): view (0, 1, −5), clip
+// (0, 1, 305/99, 5), window (400, 360, 80/99) in the lecture's step order (M, V, P, then P·V·M).
+TEST(Seed004, ModelViewProjectionChainIsOneProblem) {
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/004_placing_and_projecting.yaml"));
+  const SetResult solved = solve_set(set, true, {});
+  const ProblemResult& p = find(solved, "seed004-mvp-chain");
+  ASSERT_FALSE(p.error);
+  EXPECT_EQ(test::exact_text(p, "clip"), "0, 1, 305/99, 5");
+  EXPECT_EQ(test::exact_text(p, "ndc"), "0, 1/5, 61/99");
+  EXPECT_EQ(test::exact_text(p, "window"), "400, 360, 80/99");
+  std::vector<std::string> titles;
+  for (const Step& s : p.derivation.steps()) titles.push_back(s.title);
+  const auto at = [&](const std::string& t) {
+    return std::find(titles.begin(), titles.end(), t) - titles.begin();
+  };
+  EXPECT_LT(at("Model matrix (first step applied first)"), at("View matrix"));
+  EXPECT_LT(at("View matrix"), at("Perspective projection matrix"));
+  EXPECT_LT(at("Perspective projection matrix"), at("The whole chain at once"));
+  EXPECT_LT(at("The whole chain at once"), static_cast<long>(titles.size()));
+  EXPECT_EQ(p.derivation.steps()[at("The whole chain at once")].substitution.unicode,
+            "P·V·M = [0, −1, 0, 0; 1, 0, 0, 0; 0, 0, −101/99, 305/99; 0, 0, −1, 5]");
+
+  // The grader takes the window as a student writes it; a model multiplied in the order the
+  // steps are applied (A₁·A₂) is named as that mistake.
+  const SolvedSet key = solve_for_grading(set);
+  const auto grade_window = [&](const std::string& window) {
+    const std::string answers =
+        "student: s\nanswers:\n  seed004-mvp-chain:\n    window: " + window + "\n";
+    for (const ProblemGrade& g :
+         grade(set, load_submission_from_string(answers, "a.yaml"), &key).problems)
+      if (g.id == "seed004-mvp-chain")
+        for (const AnswerGrade& a : g.answers)
+          if (a.name == "window") return a;
+    throw std::runtime_error("not graded");
+  };
+  EXPECT_EQ(grade_window("[400, 360, 0.8081]").verdict, Verdict::Correct);
+  // A₁·A₂: (1, 0, 0) → (11, 0, 0) → (0, 11, 0); view (−10, 11, −5); NDC (−2, 11/5, 61/99).
+  const AnswerGrade wrong = grade_window("[-400, 960, \"80/99\"]");
+  EXPECT_EQ(wrong.verdict, Verdict::Incorrect);
+  EXPECT_EQ(wrong.misconception, "composition in the wrong order");
+}
+
+// v′ = (P·V·M)·v equals projecting the moved point M·v: every generated problem with a model,
+// its points moved by the transform kind with the same steps, then projected without a model.
+TEST(ProjectPoint, ModelMatrixEqualsProjectingTheMovedPoint) {
+  const KindInfo* kind = builtin_kinds().find("project_point");
+  ASSERT_TRUE(kind && kind->generate);
+  Rng rng(11);
+  int with_model = 0;
+  for (int i = 0; i < 80; ++i) {
+    const YAML::Node g = kind->generate(rng, GenerateOptions{});
+    if (!g["model"]) continue;
+    ++with_model;
+    const ProblemResult moved =
+        test::solve_yaml(test::one("transform", "{steps: " + emit_flow(g["model"]) + ", points: [" +
+                                                    emit_flow(g["point"]) + "]}"),
+                         false);
+    YAML::Node plain = YAML::Clone(g);
+    plain.remove("model");
+    plain["point"] = YAML::Load("[" + test::exact_text(moved, "points") + "]");
+    const ProblemResult chain = test::solve_yaml(test::one("project_point", emit_flow(g)), false);
+    const ProblemResult direct =
+        test::solve_yaml(test::one("project_point", emit_flow(plain)), false);
+    ASSERT_FALSE(chain.error || direct.error) << emit_flow(g);
+    for (const std::string name : {"clip", "ndc", "window"})
+      EXPECT_EQ(test::exact_text(chain, name), test::exact_text(direct, name))
+          << name << " of " << emit_flow(g);
+    EXPECT_EQ(chain.answers.find("inside")->flag, direct.answers.find("inside")->flag)
+        << emit_flow(g);
+  }
+  EXPECT_GT(with_model, 5);
+}
+
+// Seed 000: depth sort fails for a long, thin polygon. A's near end covers B, yet A's centroid
+// (depth 11) is farther than B's (depth 8), so the centroid order draws A first and B over it.
+TEST(LectureExercises, DepthSortFailsForALongThinPolygon) {
+  const SetResult set = solve_set(
+      load_problem_set(test::source_path("problems/examples/lecture_exercises.yaml")), false, {});
+  const ProblemResult& p = find(set, "depth-sort-long-polygon");
+  ASSERT_FALSE(p.error);
+  EXPECT_EQ(test::exact_text(p, "depths"), "11, 8");
+  EXPECT_EQ(p.answers.find("order")->shown().unicode, "0, 1");
+  EXPECT_EQ(p.answers.find("conflicts")->words, std::vector<std::string>{"0-1"});
 }
 
 // A course declaring `z_planes: coordinates` once gets the orthographic matrix in its own form
@@ -78,6 +169,62 @@ TEST(LectureExercises, CourseConventionForOrthoZPlanesIsHonoured) {
                 .answers.at(0)
                 .verdict,
             Verdict::Correct);
+}
+
+// A course reading the field of view as horizontal declares `fov: horizontal` once: θ = 90°
+// spans the width (r = 1, t = 1/2 for aspect 2), the derivation relates it to fovy =
+// 2·atan(1/2), the grader accepts the course's matrix and names the vertical reading.
+TEST(LectureExercises, CourseConventionForHorizontalFovIsHonoured) {
+  const ProblemSet course =
+      load_problem_set(test::source_path("problems/examples/course_fov_horizontal.yaml"));
+  ASSERT_TRUE(course.all_errors().empty());
+  const SetResult solved = solve_set(course, true, {});
+  const ProblemResult& m = find(solved, "fov-horizontal-matrix");
+  ASSERT_FALSE(m.error);
+  EXPECT_EQ(test::exact_text(m, "matrix"),
+            "1, 0, 0, 0, 0, 2, 0, 0, 0, 0, -11/9, -20/9, 0, 0, -1, 0");
+  bool related = false;
+  for (const Step& s : m.derivation.steps())
+    related =
+        related || (s.title == "The same frustum from the vertical angle" &&
+                    s.result.unicode.find("fovy = 2·atan(1/2) ≈ 53.13°") != std::string::npos);
+  EXPECT_TRUE(related) << "the derivation shows fovy = 2·atan(tan(fovx/2)/aspect)";
+  EXPECT_NE(m.derivation.steps().front().note.find("the field of view is horizontal"),
+            std::string::npos);
+  const ProblemResult& p = find(solved, "fov-horizontal-point");
+  EXPECT_EQ(test::exact_text(p, "window"), "600, 300, 5/9");
+
+  const SolvedSet key = solve_for_grading(course);
+  const auto grade_matrix = [&](const std::string& matrix) {
+    const std::string answers =
+        "student: s\nanswers:\n  fov-horizontal-matrix:\n    matrix: " + matrix + "\n";
+    return grade(course, load_submission_from_string(answers, "a.yaml"), &key)
+        .problems.at(0)
+        .answers.at(0);
+  };
+  EXPECT_EQ(
+      grade_matrix("[[1, 0, 0, 0], [0, 2, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]")
+          .verdict,
+      Verdict::Correct);
+  const AnswerGrade vertical =
+      grade_matrix("[[0.5, 0, 0, 0], [0, 1, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]");
+  EXPECT_NE(vertical.verdict, Verdict::Correct);
+  EXPECT_EQ(vertical.misconception, "fovy for fovx");
+
+  // Without the declaration `fov` is perspective()'s vertical angle; `fovx` names its axis
+  // anywhere.
+  const ProblemResult plain = test::solve_yaml(
+      test::one("projection_matrix", "{perspective: {fov: 90, aspect: 2, near: 1, far: 10}}"));
+  EXPECT_EQ(test::exact_text(plain, "matrix"),
+            "1/2, 0, 0, 0, 0, 1, 0, 0, 0, 0, -11/9, -20/9, 0, 0, -1, 0");
+  const ProblemResult named = test::solve_yaml(
+      test::one("projection_matrix", "{perspective: {fovx: 90, aspect: 2, near: 1, far: 10}}"));
+  EXPECT_EQ(test::exact_text(named, "matrix"), test::exact_text(m, "matrix"));
+  const ProblemSet both = load_problem_set_from_string(
+      test::one("projection_matrix",
+                "{perspective: {fovy: 90, fovx: 90, aspect: 2, near: 1, far: 10}}"),
+      "b.yaml");
+  EXPECT_FALSE(both.all_errors().empty());
 }
 
 }  // namespace

@@ -20,11 +20,21 @@ const char* kPlaceholders = R"(problems:
     kind: clip_line
     text: "Clip against {window}."
     given: {p: [-1, 1], q: [5, 2], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}
+  - id: other-mapping
+    kind: project_point
+    text: "Project with {perspective}."
+    given: {point: [0, 0, -5], perspective: {fovy: 90, aspect: 1, near: 1, far: 10}, viewport: {width: 200, height: 200}}
+  - id: volume
+    kind: clip_line
+    text: "Clip against {volume}."
+    given: {p: [-1, 1, 0], q: [5, 2, 0], volume: {xmin: 0, xmax: 4, ymin: 0, ymax: 3, zmin: -1, zmax: "1/2"}}
 )";
 
+// A window or box mapping reads as on paper, [xmin, xmax] × [ymin, ymax]; any other mapping is
+// refused.
 TEST(Placeholders, FilledAsStudentsReadThemUnknownAndMappingsRefused) {
   const SetResult r = solve_set(load_problem_set_from_string(kPlaceholders, "set.yaml"), true);
-  ASSERT_EQ(r.problems.size(), 3u);
+  ASSERT_EQ(r.problems.size(), 5u);
   EXPECT_FALSE(r.problems[0].error) << test::error_text(r.problems[0]);
   EXPECT_EQ(r.problems[0].text, "The eye at (0, 0, 5) looks at (0, 0, 0); its x is 0.");
   ASSERT_TRUE(r.problems[1].error);
@@ -32,9 +42,13 @@ TEST(Placeholders, FilledAsStudentsReadThemUnknownAndMappingsRefused) {
                 "problems[1].text: the placeholder {perspective.fov} names no field"),
             std::string::npos)
       << r.problems[1].error->format();
-  ASSERT_TRUE(r.problems[2].error);
-  EXPECT_NE(r.problems[2].error->format().find("{window} is a mapping"), std::string::npos)
-      << r.problems[2].error->format();
+  EXPECT_FALSE(r.problems[2].error) << test::error_text(r.problems[2]);
+  EXPECT_EQ(r.problems[2].text, "Clip against [0, 4] × [0, 3].");
+  ASSERT_TRUE(r.problems[3].error);
+  EXPECT_NE(r.problems[3].error->format().find("{perspective} is a mapping"), std::string::npos)
+      << r.problems[3].error->format();
+  EXPECT_FALSE(r.problems[4].error) << test::error_text(r.problems[4]);
+  EXPECT_EQ(r.problems[4].text, "Clip against [0, 4] × [0, 3] × [-1, 1/2].");
 }
 
 TEST(VariantShape, ShapeIgnoresValuesButNotStructure) {

@@ -64,18 +64,35 @@ constexpr Phrase kPhrases[] = {
     {"{0}; ortho's near and far are the z coordinates z_min, z_max; angles in {1}",
      "{0}; ortho の near, far は z 座標 z_min, z_max; 角度の単位は{1}",
      "{0}; near и far в ortho — z-координаты z_min, z_max; углы в {1}"},
-    {"{0}; ortho's near and far are the z coordinates z_min, z_max", "{0}; ortho の near, far は z 座標 z_min, z_max",
+    {"{0}; the field of view is horizontal (fovx); angles in {1}",
+     "{0}; 画角は水平方向 (fovx); 角度の単位は{1}",
+     "{0}; угол обзора горизонтальный (fovx); углы в {1}"},
+    {"Here the field of view spans the width (fovx): it sets the right edge r, and the top is r "
+     "divided by the aspect ratio. perspective() takes the vertical angle fovy; both give the same "
+     "frustum and the same matrix.",
+     "ここでは画角は横方向 (fovx) に広がる: 右端 r を決め, 上端は r をアスペクト比で割ったもの. "
+     "perspective() は縦方向の画角 fovy を取る. どちらも同じ視体積, 同じ行列を与える.",
+     "Здесь угол обзора охватывает ширину (fovx): он задаёт правый край r, а верх равен r, "
+     "делённому на соотношение сторон. perspective() принимает вертикальный угол fovy; оба дают "
+     "один и тот же объём и одну и ту же матрицу."},
+    {"{0}; ortho's near and far are the z coordinates z_min, z_max",
+     "{0}; ortho の near, far は z 座標 z_min, z_max",
      "{0}; near и far в ortho — z-координаты z_min, z_max"},
-    {"Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: the z row is +2/(z_max − "
+    {"Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: the z "
+     "row is +2/(z_max − "
      "z_min).",
-     "ここでは near と far は z 座標 z_min = n, z_max = f で, それぞれ −1 と +1 に写る: z の行は +2/(z_max − z_min).",
+     "ここでは near と far は z 座標 z_min = n, z_max = f で, それぞれ −1 と +1 に写る: z の行は "
+     "+2/(z_max − z_min).",
      "Здесь near и far — z-координаты z_min = n и z_max = f, переходящие в −1 и +1: строка z равна "
      "+2/(z_max − z_min)."},
-    {"OpenGL's glOrtho reads them as distances in front of an eye looking down −z (the planes z = −n and z = −f), which "
+    {"OpenGL's glOrtho reads them as distances in front of an eye looking down −z (the planes z = "
+     "−n and z = −f), which "
      "gives −2/(f − n) there; the two matrices differ only in the direction of the z axis.",
-     "OpenGL の glOrtho はこれらを −z 方向を見る視点の前方への距離 (平面 z = −n と z = −f) として読むので, そこは −2/(f − n) "
+     "OpenGL の glOrtho はこれらを −z 方向を見る視点の前方への距離 (平面 z = −n と z = −f) "
+     "として読むので, そこは −2/(f − n) "
      "になる. 二つの行列の違いは z 軸の向きだけである.",
-     "glOrtho в OpenGL читает их как расстояния перед глазом, смотрящим вдоль −z (плоскости z = −n и z = −f), и даёт "
+     "glOrtho в OpenGL читает их как расстояния перед глазом, смотрящим вдоль −z (плоскости z = −n "
+     "и z = −f), и даёт "
      "там −2/(f − n); две матрицы различаются только направлением оси z."},
     {"Angles in {0}", "角度の単位は{0}", "Углы в {0}"},
     {"Column vectors, p′ = M·p.", "列ベクトル: p′ = M·p.", "Столбцы-векторы: p′ = M·p."},
@@ -85,6 +102,12 @@ constexpr Phrase kPhrases[] = {
     {"(A sentence stating z = −n ↦ +1 contradicts this matrix; the matrix decides.)",
      "(z = −n ↦ +1 とする記述はこの行列と矛盾します. 行列の方が正しい.)",
      "(Утверждение z = −n ↦ +1 противоречит этой матрице; верна матрица.)"},
+    {"The product of the matrices is computed once and applies to every vertex of the object; it "
+     "gives the same clip coordinates as the steps one by one.",
+     "行列の積は一度だけ計算すれば物体のすべての頂点に使える. "
+     "一段ずつ変換した場合と同じクリップ座標になる.",
+     "Произведение матриц вычисляется один раз и применяется ко всем вершинам объекта; оно даёт те "
+     "же координаты отсечения, что и пошаговое преобразование."},
     {"Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = A₃A₂A₁P).",
      "列ベクトル: P′ = M·P なので, 最初に適用する変換が一番右に来る (P′ = A₃A₂A₁P).",
      "Столбцы-векторы: P′ = M·P, поэтому первое применяемое преобразование стоит справа (P′ = "
@@ -707,6 +730,19 @@ constexpr Phrase kPhrases[] = {
      "КОНФЛИКТ: они взаимно проникают: на их перекрытии ближний многоугольник меняется внутри "
      "одного куска, поэтому "
      "никакой порядок целых многоугольников не верен"},
+    {"CONFLICT: over their overlap {0} is nearer everywhere, but its centroid is farther than "
+     "{1}'s, "
+     "so the centroid order draws {2} first and {3} paints over it",
+     "矛盾: 重なりではどこでも {0} が手前だが, その重心は {1} の重心より奥にあるので, "
+     "重心の順では {2} を先に描き, {3} がその上に描かれてしまう",
+     "КОНФЛИКТ: на перекрытии {0} везде ближе, но его центр тяжести дальше, чем у {1}, поэтому "
+     "порядок по центрам тяжести рисует {2} первым, и {3} закрашивает его"},
+    {"CONFLICT: one wraps around the other (a concave polygon): part of the overlap has one in "
+     "front, part the other, so no order of whole polygons is right",
+     "矛盾: 一方が他方を包んでいる (凹ポリゴン). 重なりの一部では一方が, 残りでは他方が手前なので, "
+     "多角形単位のどの順序も正しくない",
+     "КОНФЛИКТ: один охватывает другой (невыпуклый многоугольник): на части перекрытия впереди "
+     "один, на части — другой, поэтому никакой порядок целых многоугольников не верен"},
     // Text not split into sentences above.
     {"depth:", "奥行き:", "глубина:"},
     {"frame:", "フレーム:", "кадр:"},

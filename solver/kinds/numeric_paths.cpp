@@ -403,10 +403,11 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
 }
 
 // The inputs of project_point in scalar S (T, Ranged<T> for the decisions, Exact for their
-// fallback), and clip = P·V·p from them: one formula for all three.
+// fallback), and clip = P·V·M·p from them: one formula for all three.
 template <typename S>
 struct ProjectionInputs {
   Vec3<S> point;
+  std::optional<MatX<S>> model;
   std::optional<std::array<Vec3<S>, 3>> camera;
   ProjectionSpec::Type type = ProjectionSpec::Type::Perspective;
   Volume<S> volume;
@@ -422,6 +423,7 @@ auto map_inputs(const ProjectionInputs<Exact>& in, F f) {
   auto vec = [&](const Vec3<Exact>& v) { return Vec3<R>(f(v(0)), f(v(1)), f(v(2))); };
   ProjectionInputs<R> out;
   out.point = vec(in.point);
+  if (in.model) out.model = in.model->unaryExpr([&](const Exact& e) { return f(e); }).eval();
   if (in.camera) out.camera = std::array<Vec3<R>, 3>{vec((*in.camera)[0]), vec((*in.camera)[1]), vec((*in.camera)[2])};
   out.type = in.type;
   const Volume<Exact>& v = in.volume;
@@ -442,6 +444,7 @@ MatX<S> clip_from_world(const ProjectionInputs<S>& in) {
     m = frustum_matrix(v, in.api);
   }
   if (in.camera) m = MatX<S>(m * look_at((*in.camera)[0], (*in.camera)[1], (*in.camera)[2], in.api));
+  if (in.model) m = MatX<S>(m * *in.model);
   return m;
 }
 
@@ -460,14 +463,17 @@ std::array<S, 7> volume_tests(const Vec4<S>& c, Api api) {
 }
 
 std::unique_ptr<NumericSolver> project_point_numeric(
-    const Vec3<Exact>& point, const std::optional<std::array<Vec3<Exact>, 3>>& camera,
-    const ProjectionSpec& projection, const Exact& width, const Exact& height, Api api, Precision p) {
+    const Vec3<Exact>& point, const std::optional<MatX<Exact>>& model,
+    const std::optional<std::array<Vec3<Exact>, 3>>& camera, const ProjectionSpec& projection,
+    const Exact& width, const Exact& height, Api api, Precision p) {
   ProjectionInputs<Exact> exact;
   exact.point = point;
+  exact.model = model;
   exact.camera = camera;
   exact.type = projection.type;
   exact.volume = projection.volume;
-  if (projection.fovy && projection.aspect) {
+  if (projection.fovy && projection.aspect &&
+      !projection.fovx) {  // fovx: the volume already holds it
     exact.fovy = *projection.fovy;
     exact.aspect = *projection.aspect;
   }

@@ -28,9 +28,11 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
                                                       const CrossOrder& order, Precision p);
 std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, const Vec3<Exact>& eye,
                                                 Precision p);
+// model: the composite model matrix M (column form), when the point is in model coordinates.
 std::unique_ptr<NumericSolver> project_point_numeric(
-    const Vec3<Exact>& point, const std::optional<std::array<Vec3<Exact>, 3>>& camera,
-    const ProjectionSpec& projection, const Exact& width, const Exact& height, Api api, Precision p);
+    const Vec3<Exact>& point, const std::optional<MatX<Exact>>& model,
+    const std::optional<std::array<Vec3<Exact>, 3>>& camera, const ProjectionSpec& projection,
+    const Exact& width, const Exact& height, Api api, Precision p);
 // steps: each step's matrix; inverses: each step's inverse (used by the exact backend);
 // invertible: false when a step is singular (the inverse is then null). Steps in column
 // form; under DirectX the matrix and inverse are reported in row-vector form (transposed).

@@ -160,7 +160,7 @@ Conventions read_conventions(const YAML::Node& n, const std::string& file,
                              const std::string& field, Conventions base) {
   if (!n.IsDefined() || n.IsNull()) return base;
   if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {api: opengl, angles: degrees}");
-  check_keys(n, {"api", "angles", "z_planes"}, file, field);
+  check_keys(n, {"api", "angles", "z_planes", "fov"}, file, field);
   if (n["api"].IsDefined()) {
     const std::string v = read_string(n["api"], file, field + ".api");
     const auto api = parse_api(v);
@@ -185,6 +185,14 @@ Conventions read_conventions(const YAML::Node& n, const std::string& file,
       fail_at(n["z_planes"], file, field + ".z_planes",
               "'" + v + "' is not one of distances, coordinates" + did_you_mean(v, {"distances", "coordinates"}));
     base.z_planes = v == "coordinates" ? ZPlanes::Coordinates : ZPlanes::Distances;
+  }
+  if (n["fov"].IsDefined()) {
+    const std::string v = read_string(n["fov"], file, field + ".fov");
+    if (v != "vertical" && v != "horizontal")
+      fail_at(n["fov"], file, field + ".fov",
+              "'" + v + "' is not one of vertical, horizontal" +
+                  did_you_mean(v, {"vertical", "horizontal"}));
+    base.fov = v == "horizontal" ? FovAxis::Horizontal : FovAxis::Vertical;
   }
   return base;
 }

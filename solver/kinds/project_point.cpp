@@ -1,18 +1,22 @@
-// A point through the pipeline (seed 004: v′ = P·V·M·v, then divide by w, then the
+// A point through the pipeline (seed 004: v′ = (P·V·M)·v, then divide by w, then the
 // viewport): clip coordinates, NDC, window coordinates with depth in [0, 1], and whether it
-// lies inside the view volume. A point at or behind the eye (w ≤ 0) is reported as such and
-// never divided.
+// lies inside the view volume. The model matrix M (optional `model`: transform steps, first
+// applied first, M = M_parent·M_object) places the point, the camera's V views it. A point at
+// or behind the eye (w ≤ 0) is reported as such and never divided.
+#include <fmt/format.h>
+
+#include <algorithm>
+
 #include "solver/kinds/generate.hpp"
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
 #include "solver/kinds/numeric_paths.hpp"
 #include "solver/kinds/registry.hpp"
-#include "solver/numeric/condition.hpp"
-#include "solver/util/exact_format.hpp"
+#include "solver/kinds/transform_steps.hpp"
 #include "solver/kinds/viewing_steps.hpp"
+#include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
-
-#include <fmt/format.h>
+#include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
@@ -23,13 +27,14 @@ struct ProjectPoint {
   static constexpr const char* kSummary = "a point's clip, NDC and window coordinates";
   struct Given {
     Vec3<Exact> point;
+    std::vector<TransformStep> model;                  // empty: the point is in world coordinates
     std::optional<std::array<Vec3<Exact>, 3>> camera;  // eye, center, up
     ProjectionSpec projection;
     Exact width, height;
     Api api;
   };
   static std::vector<std::string> given_fields() {
-    return {"point", "camera", "perspective", "frustum", "ortho", "viewport"};
+    return {"point", "model", "camera", "perspective", "frustum", "ortho", "viewport"};
   }
   static std::vector<AnswerSpec> answers() {
     return {{"clip", AnswerKind::Point, {}, {}},
@@ -41,6 +46,7 @@ struct ProjectPoint {
   static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
     g.point = r.vector<3>("point");
+    if (r.has("model")) g.model = read_transform_steps(r, "model", 3, c);
     if (r.has("camera")) {
       GivenReader cam = r.child("camera", {"eye", "center", "up"});
       g.camera = {cam.vector<3>("eye"), cam.vector<3>("center"), cam.vector<3>("up")};
@@ -106,6 +112,13 @@ struct ProjectPoint {
       }
     } catch (const std::exception&) {
     }
+    // The model's steps multiplied in the order they are applied (the transform kind's mistake).
+    if (g.model.size() >= 2) {
+      Given changed = g;
+      std::reverse(changed.model.begin(), changed.model.end());
+      variant("composition in the wrong order", wrong_order_feedback(g.api),
+              "Model matrix (first step applied first)", changed);
+    }
     for (const ProjectionMistake& m : projection_mistakes(g.projection)) {
       Given changed = g;
       changed.projection = m.projection;
@@ -114,21 +127,76 @@ struct ProjectPoint {
     return out;
   }
 
+  // Seed 004's v′ = (P·V·M)·v: the three matrices multiplied first, the same clip point.
+  static void chain_step(Derivation* steps, const Given& g, const MatX<Exact>& pvm,
+                         const std::vector<Exact>& clip) {
+    const bool rows = g.api == Api::DirectX;
+    std::string product = g.camera ? "P·V" : "P", product_latex = g.camera ? "P V" : "P";
+    if (!g.model.empty()) {
+      product += "·M";
+      product_latex += " M";
+    }
+    if (rows) {  // row vectors: v′ = v·(M·V·P)
+      product = g.model.empty() ? "V·P" : (g.camera ? "M·V·P" : "M·P");
+      product_latex = g.model.empty() ? "V P" : (g.camera ? "M V P" : "M P");
+    }
+    steps
+        ->add("The whole chain at once",
+              rows ? math("v′ = v·(" + product + ")",
+                          "\\mathbf{v}' = \\mathbf{v}\\,(" + product_latex + ")")
+                   : math("v′ = (" + product + ")·v",
+                          "\\mathbf{v}' = (" + product_latex + ")\\,\\mathbf{v}"),
+              math(product + " = ", product_latex + " = ") + matrix_text(paper_form(pvm, g.api)),
+              math("v′ = ", "\\mathbf{v}' = ") + vec(clip, true))
+        .note =
+        "The product of the matrices is computed once and applies to every vertex of the object; "
+        "it gives the same clip coordinates as the steps one by one.";
+  }
+
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
-    return project_point_numeric(g.point, g.camera, g.projection, g.width, g.height, g.api, p);
+    return project_point_numeric(g.point, model_matrix(g.model), g.camera, g.projection, g.width,
+                                 g.height, g.api, p);
+  }
+
+  // M = Aₙ·…·A₁ of the model's steps (column form), or nothing without a model.
+  static std::optional<MatX<Exact>> model_matrix(const std::vector<TransformStep>& model) {
+    if (model.empty()) return std::nullopt;
+    return compose_with_steps(model, 3, Api::OpenGL, "M", "", nullptr);
+  }
+
+  static Vec3<Exact> moved(const MatX<Exact>& m, const Vec3<Exact>& p) {
+    const std::vector<Exact> v = transform_point(m, std::vector<Exact>{p(0), p(1), p(2)});
+    return Vec3<Exact>(canonical(v[0]), canonical(v[1]), canonical(v[2]));
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
     Vec3<Exact> p = g.point;
+    const bool rows = g.api == Api::DirectX;
+    MatX<Exact> model = MatX<Exact>::Identity(4, 4), view = MatX<Exact>::Identity(4, 4);
+    if (!g.model.empty()) {
+      // Seed 004: the model matrix places the object (M = M_parent·M_object).
+      model = compose_with_steps(g.model, 3, g.api, "M", "Model matrix (first step applied first)",
+                                 steps);
+      p = moved(model, p);
+      if (steps) {
+        const std::string to = g.camera ? "world" : "view";
+        steps->add(
+            g.camera ? "Model to world coordinates" : "Model to view coordinates",
+            rows ? math("p_" + to + " = v·M", "\\mathbf{p}_{\\text{" + to + "}} = \\mathbf{v} M")
+                 : math("p_" + to + " = M·v", "\\mathbf{p}_{\\text{" + to + "}} = M \\mathbf{v}"),
+            math("v = ", "\\mathbf{v} = ") + vec(g.point),
+            math("p_" + to + " = ", "\\mathbf{p}_{\\text{" + to + "}} = ") + vec(p, true));
+      }
+    }
     if (g.camera) {
       const auto& [eye, center, up] = *g.camera;
-      const MatX<Exact> view = look_at_with_steps(eye, center, up, g.api, "camera.", steps);
-      const std::vector<Exact> v = transform_point(view, std::vector<Exact>{p(0), p(1), p(2)});
-      p = Vec3<Exact>(canonical(v[0]), canonical(v[1]), canonical(v[2]));
+      view = look_at_with_steps(eye, center, up, g.api, "camera.", steps);
+      p = moved(view, p);
       if (steps) steps->add("World to view coordinates", math("p_view = V·p_world", "\\mathbf{p}_{\\text{view}} = V \\mathbf{p}_{\\text{world}}"), {},
                             math("p_view = ", "\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
     }
-    const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps);
+    // The lecture's names: P projects, V views, M places (v′ = (P·V·M)·v).
+    const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps, "P");
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> h(4);
     h << p(0), p(1), p(2), Exact(1);
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> clip = m * h;
@@ -138,10 +206,14 @@ struct ProjectPoint {
     out.set("clip", Value::vector(clip_v));
     if (steps) {
       steps->add("Clip coordinates",
-                 g.api == Api::DirectX ? math("clip = p·M", "(x_c, y_c, z_c, w_c) = (x, y, z, 1)\\, M")
-                                       : math("clip = M·p", "(x_c, y_c, z_c, w_c)^{\\mathsf{T}} = M\\,(x, y, z, 1)^{\\mathsf{T}}"),
+                 g.api == Api::DirectX
+                     ? math("clip = p·P", "(x_c, y_c, z_c, w_c) = (x, y, z, 1)\\, P")
+                     : math("clip = P·p",
+                            "(x_c, y_c, z_c, w_c)^{\\mathsf{T}} = P\\,(x, y, z, 1)^{\\mathsf{T}}"),
                  math("p = ") + vec(std::vector<Exact>{p(0), p(1), p(2), 1}),
                  math("(x_c, y_c, z_c, w_c) = ") + vec(clip_v, true));
+      if (!g.model.empty() || g.camera)
+        chain_step(steps, g, canonical(MatX<Exact>(m * view * model)), clip_v);
       steps->yields("clip");
     }
     const Exact& w = clip(3);
@@ -204,7 +276,8 @@ struct ProjectPoint {
   // Default generator: perspective (fovy 45°/60°/90°, aspect of the viewport) or a symmetric
   // frustum, and a point in front of the eye between near and far (hard: between the eye and
   // the near plane), in view coordinates or, one time in three, in world coordinates seen by
-  // camera {eye: (0, 0, k), center: 0, up: y}; nice: fovy 90°.
+  // camera {eye: (0, 0, k), center: 0, up: y}, half of those in an object's coordinates with a
+  // model matrix (rotate_y by a right angle, then translate); nice: fovy 90°.
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
     const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{{200, 200}, {400, 300}, {640, 480}, {800, 600}});
     const std::int64_t near = rng.integer(1, 3);
@@ -232,7 +305,28 @@ struct ProjectPoint {
       cam["eye"] = gen_list({0, 0, k});
       cam["center"] = gen_list({0, 0, 0});
       cam["up"] = gen_list({0, 1, 0});
-      g["point"] = gen_list(std::vector<Exact>{x, y, Exact(k) - depth});
+      const std::vector<Exact> world{x, y, Exact(k) - depth};
+      if (rng.chance(1, 2)) {
+        // Seed 004's chain: the point in its object's coordinates, placed by M = T·R_y(θ), so
+        // v = R_y(θ)ᵀ·(world − t) lands where the camera sees it.
+        const std::int64_t angle = rng.pick(std::vector<std::int64_t>{90, 180, -90});
+        const std::vector<Exact> t{Exact(rng.integer(-3, 3)), Exact(0), Exact(rng.integer(-3, 3))};
+        const MatX<Exact> r = rotate_axis_index(1, Exact(GiNaC::numeric(angle, 180) * GiNaC::Pi));
+        std::vector<Exact> v(3);
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) v[i] += r(j, i) * (world[j] - t[j]);
+        for (Exact& e : v) e = canonical(e);
+        YAML::Node rotate, translate;
+        rotate["rotate_y"] = gen_angle(angle, o.conventions);
+        translate["translate"] = gen_list(t);
+        YAML::Node model(YAML::NodeType::Sequence);
+        model.push_back(rotate);
+        model.push_back(translate);
+        g["point"] = gen_list(v);
+        g["model"] = model;
+      } else {
+        g["point"] = gen_list(world);
+      }
       g["camera"] = cam;
     } else {
       g["point"] = gen_list(std::vector<Exact>{x, y, toward * depth});

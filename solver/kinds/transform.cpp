@@ -31,20 +31,12 @@ struct Transform {
             {"inverse", AnswerKind::Transform, {"matrix"}, {}}};
   }
 
-  static TransformStep read_step(GivenReader& s, int dim, const Conventions& c) {
-    return read_transform_step(s, dim, c);
-  }
-
   static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
     g.api = c.api;
     g.dim = r.has("dim") ? static_cast<int>(to_double(r.number("dim"))) : 3;
     if (g.dim != 2 && g.dim != 3) r.fail("dim", "must be 2 or 3");
-    const std::size_t n = r.list_size("steps", 1, kMaxTransformSteps);
-    for (std::size_t i = 0; i < n; ++i) {
-      GivenReader s = r.item("steps", i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
-      g.steps.push_back(read_step(s, g.dim, c));
-    }
+    g.steps = read_transform_steps(r, "steps", g.dim, c);
     if (r.has("points")) {
       const std::size_t count = r.list_size("points");
       for (std::size_t i = 0; i < count; ++i) {
@@ -70,14 +62,8 @@ struct Transform {
     std::vector<MatX<Exact>> matrices;
     for (const TransformStep& s : g.steps) matrices.push_back(s.matrix);
     if (g.steps.size() >= 2)
-      out.push_back(
-          {"composition in the wrong order",
-           g.api == Api::DirectX
-               ? "You multiplied the steps in reverse order (…·A₂·A₁): with DirectX's row vectors, "
-                 "P′ = P·M, the step applied first stands leftmost, M = A₁·A₂·…"
-               : "You multiplied the steps in the order they are applied (A₁·A₂·…): with column "
-                 "vectors the step applied first stands rightmost, M = …·A₂·A₁ (as in P′ = A₃A₂A₁P).",
-           "Composite (first step applied first)", composite(matrices, true)});
+      out.push_back({"composition in the wrong order", wrong_order_feedback(g.api),
+                     "Composite (first step applied first)", composite(matrices, true)});
     // Degrees taken as radians: every rotation by the angle's number of degrees, in radians.
     bool rotates = false;
     std::vector<MatX<Exact>> as_radians;
@@ -107,36 +93,11 @@ struct Transform {
   static Answers solve(const Given& g, Derivation* steps) {
     const int size = g.dim + 1;
     const bool rows = g.api == Api::DirectX;
-    MatX<Exact> m = MatX<Exact>::Identity(size, size);
-    for (std::size_t i = 0; i < g.steps.size(); ++i) {
-      const TransformStep& s = g.steps[i];
-      m = canonical(MatX<Exact>(s.matrix * m));
-      if (steps) {
-        // Row vectors: the symbolic forms below are the column-vector ones, so only the values show.
-        Step& st = steps->add(fmt::format("A{}: {}", i + 1, s.title), rows ? MathText{} : s.formula, s.substitution,
-                              math(fmt::format("A{} = ", i + 1), fmt::format("A_{{{}}} = ", i + 1)) +
-                                  matrix_text(paper_form(s.matrix, g.api)));
-        st.note = s.note;
-      }
-    }
+    const MatX<Exact> m = compose_with_steps(g.steps, g.dim, g.api, "M",
+                                             "Composite (first step applied first)", steps);
     Answers out;
     out.set("matrix", matrix_value(paper_form(m, g.api)));
-    if (steps) {
-      // Column vectors: M = Aₙ·…·A₁; DirectX's row vectors: M = A₁·…·Aₙ (each Aᵢ transposed).
-      std::string order, order_latex;
-      for (std::size_t k = 1; k <= g.steps.size(); ++k) {
-        const std::size_t i = rows ? k : g.steps.size() + 1 - k;
-        order += fmt::format("{}A{}", k == 1 ? "" : "·", i);
-        order_latex += fmt::format("A_{{{}}}", i);
-      }
-      steps->add("Composite (first step applied first)", math("M = " + order, "M = " + order_latex), {},
-                 math("M = ") + matrix_text(paper_form(m, g.api)))
-          .note = rows ? "DirectX multiplies row vectors: P′ = P·M, so the step applied first stands leftmost "
-                         "and every matrix is the transpose of its column-vector form (a translation in the "
-                         "bottom row, as XMMatrixTranslation builds it)."
-                       : "Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = A₃A₂A₁P).";
-      steps->yields("matrix");
-    }
+    if (steps) steps->yields("matrix");
     out.set("points", transform_points_with_steps(m, g.points, "Transform a point", "P", steps, g.api));
     // det M is the product of the steps' determinants (rotations and translations have 1).
     Exact det = 1;

@@ -1,5 +1,7 @@
 #include "solver/kinds/transform_steps.hpp"
 
+#include <fmt/format.h>
+
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
 #include "solver/kinds/viewing_steps.hpp"
@@ -148,6 +150,65 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
   t.matrix = canonical(t.matrix);
   invert_step(t, k);
   return t;
+}
+
+std::string wrong_order_feedback(Api api) {
+  return api == Api::DirectX
+             ? "You multiplied the steps in reverse order (…·A₂·A₁): with DirectX's row vectors, "
+               "P′ = P·M, the step applied first stands leftmost, M = A₁·A₂·…"
+             : "You multiplied the steps in the order they are applied (A₁·A₂·…): with column "
+               "vectors the step applied first stands rightmost, M = …·A₂·A₁ (as in P′ = A₃A₂A₁P).";
+}
+
+std::vector<TransformStep> read_transform_steps(GivenReader& r, const std::string& key, int dim,
+                                                const Conventions& c) {
+  std::vector<TransformStep> out;
+  const std::size_t n = r.list_size(key, 1, kMaxTransformSteps);
+  for (std::size_t i = 0; i < n; ++i) {
+    GivenReader s = r.item(
+        key, i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
+    out.push_back(read_transform_step(s, dim, c));
+  }
+  return out;
+}
+
+MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim, Api api,
+                               const std::string& name, const std::string& title,
+                               Derivation* derivation) {
+  const bool rows = api == Api::DirectX;
+  MatX<Exact> m = MatX<Exact>::Identity(dim + 1, dim + 1);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const TransformStep& s = steps[i];
+    m = canonical(MatX<Exact>(s.matrix * m));
+    if (derivation) {
+      // Row vectors: the symbolic forms are the column-vector ones, so only the values show.
+      Step& st = derivation->add(
+          fmt::format("A{}: {}", i + 1, s.title), rows ? MathText{} : s.formula, s.substitution,
+          math(fmt::format("A{} = ", i + 1), fmt::format("A_{{{}}} = ", i + 1)) +
+              matrix_text(paper_form(s.matrix, api)));
+      st.note = s.note;
+    }
+  }
+  if (derivation) {
+    // Column vectors: M = Aₙ·…·A₁; DirectX's row vectors: M = A₁·…·Aₙ (each Aᵢ transposed).
+    std::string order, order_latex;
+    for (std::size_t k = 1; k <= steps.size(); ++k) {
+      const std::size_t i = rows ? k : steps.size() + 1 - k;
+      order += fmt::format("{}A{}", k == 1 ? "" : "·", i);
+      order_latex += fmt::format("A_{{{}}}", i);
+    }
+    derivation
+        ->add(title, math(name + " = " + order, name + " = " + order_latex), {},
+              math(name + " = ") + matrix_text(paper_form(m, api)))
+        .note =
+        rows
+            ? "DirectX multiplies row vectors: P′ = P·M, so the step applied first stands leftmost "
+              "and every matrix is the transpose of its column-vector form (a translation in the "
+              "bottom row, as XMMatrixTranslation builds it)."
+            : "Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = "
+              "A₃A₂A₁P).";
+  }
+  return m;
 }
 
 }  // namespace frustum

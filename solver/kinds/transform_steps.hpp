@@ -3,13 +3,15 @@
 // (transform, render's scene objects).
 #pragma once
 
-#include "solver/derivation/math_text.hpp"
-#include "solver/viewing/conventions.hpp"
-#include "solver/viewing/transforms.hpp"
-
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/derivation/math_text.hpp"
+#include "solver/viewing/conventions.hpp"
+#include "solver/viewing/transforms.hpp"
 
 namespace frustum {
 
@@ -32,5 +34,20 @@ struct TransformStep {
 // Reads the one-key mapping `s` ({translate: [2, 3]}) of dimension dim (2 or 3); angles in
 // the conventions' unit. Throws InputError located at the bad field.
 TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c);
+
+// The feedback for a composite multiplied in the wrong order (the order the steps are applied
+// in, for column vectors; the reverse, for DirectX's row vectors).
+std::string wrong_order_feedback(Api api);
+
+// Reads the list `key` of such steps (1 to kMaxTransformSteps of them).
+std::vector<TransformStep> read_transform_steps(GivenReader& r, const std::string& key, int dim,
+                                                const Conventions& c);
+
+// The composite `name` = Aₙ·…·A₁ (column form: the step applied first stands rightmost), with
+// one derivation step per Aᵢ and one for the composite, titled `title` (DirectX prints every
+// matrix in row-vector form, `name` = A₁·…·Aₙ).
+MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim, Api api,
+                               const std::string& name, const std::string& title,
+                               Derivation* derivation);
 
 }  // namespace frustum

@@ -353,8 +353,26 @@ std::string comment_lines(const std::string& header) {
 
 namespace {
 
+// A clip window or box {xmin, xmax, ymin, ymax[, zmin, zmax]} as students read it:
+// [xmin, xmax] × [ymin, ymax] (× [zmin, zmax]); nullopt for any other mapping.
+std::optional<std::string> box_text(const YAML::Node& at) {
+  std::string out;
+  std::size_t fields = 0;
+  for (const std::string axis : {"x", "y", "z"}) {
+    const YAML::Node low = at[axis + "min"], high = at[axis + "max"];
+    if (!low.IsDefined() && !high.IsDefined() && axis == "z") break;
+    if (!low.IsDefined() || !high.IsDefined() || !low.IsScalar() || !high.IsScalar())
+      return std::nullopt;
+    out += (out.empty() ? "[" : " × [") + low.Scalar() + ", " + high.Scalar() + "]";
+    fields += 2;
+  }
+  if (fields != at.size()) return std::nullopt;
+  return out;
+}
+
 // The value a placeholder names ({eye}, {perspective.fovy}, {points.0}), as students read it:
-// a number as written, a list of numbers as a point (1, 2, 3); nullopt with `why` otherwise.
+// a number as written, a list of numbers as a point (1, 2, 3), a window as [0, 4] × [0, 3];
+// nullopt with `why` otherwise.
 std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given,
                                              std::string& why) {
   YAML::Node at = YAML::Clone(given);
@@ -388,6 +406,8 @@ std::optional<std::string> placeholder_value(const std::string& name, const YAML
     }
     return out + ")";
   }
+  if (at.IsMap())
+    if (std::optional<std::string> box = box_text(at)) return box;
   why = at.IsMap() ? "is a mapping: name one of its fields ({" + name + ".…})" : "has no value";
   return std::nullopt;
 }

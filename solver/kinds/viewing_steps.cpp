@@ -1,5 +1,7 @@
 #include "solver/kinds/viewing_steps.hpp"
 
+#include <fmt/format.h>
+
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/kind_steps.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -36,12 +38,17 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
   ProjectionSpec p;
   p.unit = c.angles;
   if (r.has("perspective")) {
-    GivenReader g = r.child("perspective", {"fovy", "aspect", "near", "far"});
+    GivenReader g = r.child("perspective", {"fovy", "fovx", "fov", "aspect", "near", "far"});
     p.type = ProjectionSpec::Type::Perspective;
-    p.fovy = read_angle(g, "fovy", c.angles);
-    if (exact_sign(*p.fovy) <= 0 || exact_sign(*p.fovy - GiNaC::Pi) >= 0)
-      g.fail("fovy", c.angles == AngleUnit::Degrees ? "must be between 0° and 180° (exclusive)"
-                                                    : "must be between 0 and π (exclusive)");
+    // fovy and fovx name their axis; fov is read in the course's convention (default vertical).
+    if (g.has("fovy") + g.has("fovx") + g.has("fov") != 1)
+      g.fail(g.has("fovx") ? "fovx" : "fovy", "give exactly one of fovy, fovx and fov");
+    const std::string key = g.has("fovy") ? "fovy" : g.has("fovx") ? "fovx" : "fov";
+    const bool horizontal = key == "fovx" || (key == "fov" && c.fov == FovAxis::Horizontal);
+    const Exact angle = read_angle(g, key, c.angles);
+    if (exact_sign(angle) <= 0 || exact_sign(angle - GiNaC::Pi) >= 0)
+      g.fail(key, c.angles == AngleUnit::Degrees ? "must be between 0° and 180° (exclusive)"
+                                                 : "must be between 0 and π (exclusive)");
     p.aspect = g.number("aspect");
     require_positive(g, "aspect", *p.aspect, "the aspect ratio is width / height");
     const Exact n = g.number("near"), f = g.number("far");
@@ -49,7 +56,16 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
     if (canonical(f - n).is_zero()) g.fail("far", "near = far: the view volume has no depth");
     require_positive(g, "far", f, "the far plane is in front of the eye");
     g.finish();
-    p.volume = perspective_volume(*p.fovy, *p.aspect, n, f);
+    if (horizontal) {
+      // The angle spans the width: r = n·tan(fovx/2), t = r/aspect.
+      p.fovx = angle;
+      const Exact r = canonical(n * GiNaC::tan(angle / 2));
+      p.volume = {-r, r, -r / *p.aspect, r / *p.aspect, n, f};
+      p.fovy = canonical(2 * GiNaC::atan(GiNaC::tan(angle / 2) / *p.aspect));
+    } else {
+      p.fovy = angle;
+      p.volume = perspective_volume(*p.fovy, *p.aspect, n, f);
+    }
     for (Exact* e : {&p.volume.left, &p.volume.right, &p.volume.bottom, &p.volume.top})
       *e = canonical(*e);
     return p;
@@ -207,33 +223,51 @@ namespace {
 
 // The projection matrix in symbols, as on paper (DirectX: the row-vector form).
 // The orthographic matrix with z_min, z_max as coordinates (Conventions::z_planes).
-MathText ortho_coordinates_formula(Api api) {
+MathText ortho_coordinates_formula(Api api, const std::string& name) {
   const bool y_down = api == Api::Processing;
   const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
-  return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
-                  "2/(t−b) 0 −(t+b)/(t−b); 0 0 2/(z_max−z_min) −(z_max+z_min)/(z_max−z_min); 0 0 0 1]",
-              "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " + latex_sign +
-                  "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & \\frac{2}{z_{\\max}-z_{\\min}} & "
-                  "-\\frac{z_{\\max}+z_{\\min}}{z_{\\max}-z_{\\min}} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+  return math(
+      "ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
+          "2/(t−b) 0 −(t+b)/(t−b); 0 0 2/(z_max−z_min) −(z_max+z_min)/(z_max−z_min); 0 0 0 1]",
+      name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
+          latex_sign +
+          "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & \\frac{2}{z_{\\max}-z_{\\min}} & "
+          "-\\frac{z_{\\max}+z_{\\min}}{z_{\\max}-z_{\\min}} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
 }
 
-MathText projection_formula(bool ortho, Api api) {
+MathText projection_formula(bool ortho, Api api, const std::string& name) {
   const bool y_down = api == Api::Processing;
   if (api == Api::DirectX)
-    return ortho ? math("OrthoOffCenterLH: [2/(r−l) 0 0 0; 0 2/(t−b) 0 0; 0 0 1/(f−n) 0; (l+r)/(l−r) (t+b)/(b−t) n/(n−f) 1]",
-                        "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2}{t-b} & 0 & 0 \\\\ 0 & 0 & \\frac{1}{f-n} & 0 \\\\ "
-                        "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{n}{n-f} & 1 \\end{bmatrix}")
-                 : math("PerspectiveOffCenterLH: [2n/(r−l) 0 0 0; 0 2n/(t−b) 0 0; (l+r)/(l−r) (t+b)/(b−t) f/(f−n) 1; 0 0 nf/(n−f) 0]",
-                        "M = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2n}{t-b} & 0 & 0 \\\\ "
-                        "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{f}{f-n} & 1 \\\\ 0 & 0 & \\frac{nf}{n-f} & 0 \\end{bmatrix}");
+    return ortho
+               ? math(
+                     "OrthoOffCenterLH: [2/(r−l) 0 0 0; 0 2/(t−b) 0 0; 0 0 1/(f−n) 0; (l+r)/(l−r) "
+                     "(t+b)/(b−t) n/(n−f) 1]",
+                     name +
+                         " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2}{t-b} & "
+                         "0 & 0 \\\\ 0 & 0 & \\frac{1}{f-n} & 0 \\\\ "
+                         "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{n}{n-f} & 1 \\end{bmatrix}")
+               : math(
+                     "PerspectiveOffCenterLH: [2n/(r−l) 0 0 0; 0 2n/(t−b) 0 0; (l+r)/(l−r) "
+                     "(t+b)/(b−t) f/(f−n) 1; 0 0 nf/(n−f) 0]",
+                     name +
+                         " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2n}{t-b} "
+                         "& 0 & 0 \\\\ "
+                         "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{f}{f-n} & 1 \\\\ 0 & 0 & "
+                         "\\frac{nf}{n-f} & 0 \\end{bmatrix}");
   const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
   if (ortho)
-    return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign + "2/(t−b) 0 −(t+b)/(t−b); 0 0 −2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
-                "M = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " + latex_sign +
-                    "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & -\\frac{2}{f-n} & -\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
-  return math("frustum: [2n/(r−l) 0 (r+l)/(r−l) 0; 0 " + sign + "2n/(t−b) (t+b)/(t−b) 0; 0 0 −(f+n)/(f−n) −2fn/(f−n); 0 0 −1 0]",
-              "M = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & \\frac{r+l}{r-l} & 0 \\\\ 0 & " + latex_sign +
-                  "\\frac{2n}{t-b} & \\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & -\\frac{f+n}{f-n} & -\\frac{2fn}{f-n} \\\\ 0 & 0 & -1 & 0 \\end{bmatrix}");
+    return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
+                    "2/(t−b) 0 −(t+b)/(t−b); 0 0 −2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
+                name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
+                    latex_sign +
+                    "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & -\\frac{2}{f-n} & "
+                    "-\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+  return math("frustum: [2n/(r−l) 0 (r+l)/(r−l) 0; 0 " + sign +
+                  "2n/(t−b) (t+b)/(t−b) 0; 0 0 −(f+n)/(f−n) −2fn/(f−n); 0 0 −1 0]",
+              name + " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & \\frac{r+l}{r-l} & 0 \\\\ 0 & " +
+                  latex_sign +
+                  "\\frac{2n}{t-b} & \\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & -\\frac{f+n}{f-n} & "
+                  "-\\frac{2fn}{f-n} \\\\ 0 & 0 & -1 & 0 \\end{bmatrix}");
 }
 
 // "l = −1,  r = 1, …" for the six planes of a view volume.
@@ -249,7 +283,7 @@ MathText volume_text(const Volume<Exact>& v) {
 // Why a perspective matrix has the form it has, in the lectures' order: similar triangles put
 // the projected point at n·x/(−z), a division no matrix can do; homogeneous coordinates move
 // −z into w′, and the perspective divide performs it (DirectX: eye space looks down +z).
-void perspective_idea_steps(Api api, Derivation& steps) {
+void perspective_idea_steps(Api api, const std::string& name, Derivation& steps) {
   const bool plus_z = api == Api::DirectX;
   steps
       .add("Similar triangles",
@@ -269,10 +303,10 @@ void perspective_idea_steps(Api api, Derivation& steps) {
                        "z = −n at (x_n, y_n): the projection divides by −z.";
   steps
       .add("Homogeneous coordinates: the depth goes into w′",
-           plus_z ? math("w′ = z  (M_∗4 = (0, 0, 1, 0)ᵀ)",
-                         "w' = z \\quad (M_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
-                  : math("w′ = −z  (M_4∗ = (0, 0, −1, 0))",
-                         "w' = -z \\quad (M_{4 \\ast} = (0, 0, -1, 0))"),
+           plus_z ? math("w′ = z  (" + name + "_∗4 = (0, 0, 1, 0)ᵀ)",
+                         "w' = z \\quad (" + name + "_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
+                  : math("w′ = −z  (" + name + "_4∗ = (0, 0, −1, 0))",
+                         "w' = -z \\quad (" + name + "_{4 \\ast} = (0, 0, -1, 0))"),
            {},
            plus_z ? math("x_ndc = x′ / w′ = x′ / z",
                          "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{z}")
@@ -286,9 +320,40 @@ void perspective_idea_steps(Api api, Derivation& steps) {
 
 }  // namespace
 
-MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps) {
+MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps,
+                                  const std::string& name) {
   const Volume<Exact>& v = p.volume;
-  if (steps && p.type == ProjectionSpec::Type::Perspective) {
+  if (steps && p.fovx) {
+    // The course's horizontal reading, and how it relates to perspective()'s vertical fovy.
+    steps->add(
+        "The frustum of a horizontal field of view",
+        math("r = n·tan(fovx/2),  l = −r,  t = r / aspect,  b = −t",
+             "r = n\\tan\\frac{\\text{fovx}}{2},\\; l = -r,\\; t = \\frac{r}{\\text{aspect}},\\; b "
+             "= -t"),
+        math("fovx = ", "\\text{fovx} = ") + angle_text(*p.fovx, p.unit) +
+            math(",  aspect = ", ",\\; \\text{aspect} = ") + exact(*p.aspect) +
+            math(",  n = ", ",\\; n = ") + exact(v.near),
+        math("r = ") + exact(v.right, true) + math(",  t = ", ",\\; t = ") + exact(v.top, true));
+    const double fovy_shown =
+        to_double(p.unit == AngleUnit::Degrees ? Exact(*p.fovy * 180 / GiNaC::Pi) : *p.fovy);
+    steps
+        ->add("The same frustum from the vertical angle",
+              math("fovy = 2·atan(tan(fovx/2) / aspect)",
+                   "\\text{fovy} = 2\\arctan\\frac{\\tan(\\text{fovx}/2)}{\\text{aspect}}"),
+              {},
+              math("fovy = 2·atan(", "\\text{fovy} = 2\\arctan\\left(") +
+                  exact(canonical(GiNaC::tan(*p.fovx / 2) / *p.aspect)) +
+                  math(fmt::format(") ≈ {:.4g}{}", fovy_shown,
+                                   p.unit == AngleUnit::Degrees ? "°" : ""),
+                       fmt::format("\\right) \\approx {:.4g}{}", fovy_shown,
+                                   p.unit == AngleUnit::Degrees ? "^{\\circ}" : "")) +
+                  math(",  t = n·tan(fovy/2) = ", ",\\; t = n\\tan\\frac{\\text{fovy}}{2} = ") +
+                  exact(v.top, true))
+        .note =
+        "Here the field of view spans the width (fovx): it sets the right edge r, and the top is "
+        "r divided by the aspect ratio. perspective() takes the vertical angle fovy; both give the "
+        "same frustum and the same matrix.";
+  } else if (steps && p.type == ProjectionSpec::Type::Perspective) {
     steps->add("The frustum of perspective(fovy, aspect, near, far)",
                math("t = n·tan(fovy/2),  b = −t,  r = t·aspect,  l = −r",
                     "t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l = -r"),
@@ -301,7 +366,7 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   }
   MatX<Exact> m = p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
   m = canonical(m);
-  if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, *steps);
+  if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, name, *steps);
   // The course's reading: z_min = near, z_max = far as coordinates map to −1 and +1, so the z row
   // is +2/(z_max − z_min), −(z_max + z_min)/(z_max − z_min); glOrtho's planes z = −n, −f negate
   // the first entry. Both map the same volume; only the direction of the z axis differs.
@@ -312,9 +377,9 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   if (steps) {
     const bool ortho = p.type == ProjectionSpec::Type::Ortho;
     Step& s = steps->add(ortho ? "Orthographic projection matrix" : "Perspective projection matrix",
-                         p.z_coordinates ? ortho_coordinates_formula(api) : projection_formula(ortho, api),
-                         volume_text(v),
-                         math("M = ") + matrix_text(paper_form(m, api)));
+                         p.z_coordinates ? ortho_coordinates_formula(api, name)
+                                         : projection_formula(ortho, api, name),
+                         volume_text(v), math(name + " = ") + matrix_text(paper_form(m, api)));
     s.note = multiply_note(api);
     if (api == Api::Processing)
       s.note += " Processing negates the y row because its window's y axis points down.";
@@ -335,7 +400,19 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
 std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
   std::vector<ProjectionMistake> out;
   const std::string frustum_step = "The frustum of perspective(fovy, aspect, near, far)";
-  if (p.fovy && p.aspect) {
+  if (p.fovx && p.aspect) {
+    // The horizontal angle read as perspective()'s vertical one.
+    ProjectionSpec fovy = p;
+    fovy.fovx.reset();
+    fovy.fovy = p.fovx;
+    fovy.volume = perspective_volume(*p.fovx, *p.aspect, p.volume.near, p.volume.far);
+    for (Exact* e : {&fovy.volume.left, &fovy.volume.right, &fovy.volume.bottom, &fovy.volume.top})
+      *e = canonical(*e);
+    out.push_back(
+        {"fovy for fovx",
+         "You used the angle as the vertical field of view; here it is the horizontal one (fovx).",
+         "The frustum of a horizontal field of view", fovy});
+  } else if (p.fovy && p.aspect) {
     const Exact as_degrees = canonical(*p.fovy * 180 / GiNaC::Pi);
     if (!canonical(GiNaC::cos(as_degrees / 2)).is_zero()) {
       ProjectionSpec radians = p;

@@ -24,6 +24,9 @@ struct ProjectionSpec {
   Volume<Exact> volume;
   std::optional<Exact> fovy;    // radians, perspective only
   std::optional<Exact> aspect;  // perspective only
+  // The horizontal angle (radians) when the course gives one (`fovx`, or `fov` with
+  // conventions fov: horizontal); fovy is then 2·atan(tan(fovx/2)/aspect).
+  std::optional<Exact> fovx;
   AngleUnit unit = AngleUnit::Degrees;
   bool z_coordinates = false;  // ortho: near, far are z_min, z_max (Conventions::z_planes)
 };
@@ -33,8 +36,10 @@ struct ProjectionSpec {
 ProjectionSpec read_projection(GivenReader& r, const Conventions& c);
 bool has_projection(const GivenReader& r);
 
-// The projection matrix (column form) with its derivation steps in the conventions.
-MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps);
+// The projection matrix (column form) with its derivation steps in the conventions, called
+// `name` in them (P where a model or view matrix M, V stands beside it).
+MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps,
+                                  const std::string& name = "M");
 
 // The view matrix of a camera (column form) with its steps; throws DomainError naming
 // field + "center" or field + "up" on a degenerate camera.

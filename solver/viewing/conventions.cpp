@@ -47,6 +47,7 @@ std::string describe(const Conventions& c, ConventionUse use) {
       break;
   }
   if (c.z_planes == ZPlanes::Coordinates) s += "; ortho's near and far are the z coordinates z_min, z_max";
+  if (c.fov == FovAxis::Horizontal) s += "; the field of view is horizontal (fovx)";
   if (use.angles) s += "; angles in " + std::string(unit);
   return s;
 }

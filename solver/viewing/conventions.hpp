@@ -21,10 +21,15 @@ enum class AngleUnit { Degrees, Radians };
 // pointing into the scene (as some lectures write the orthographic matrix).
 enum class ZPlanes { Distances, Coordinates };
 
+// Which extent a perspective's `fov` spans: the height (OpenGL's and Processing's fovy) or the
+// width (as some lectures read θ); `fovy` and `fovx` always name their own axis.
+enum class FovAxis { Vertical, Horizontal };
+
 struct Conventions {
   Api api = Api::OpenGL;
   AngleUnit angles = AngleUnit::Degrees;
   ZPlanes z_planes = ZPlanes::Distances;
+  FovAxis fov = FovAxis::Vertical;
 };
 
 std::string_view to_string(Api api);
