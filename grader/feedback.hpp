@@ -14,8 +14,9 @@ namespace frustum {
 
 std::string render_feedback_markdown(const GradeReport& r, Lang lang = Lang::En);
 std::string render_feedback_html(const GradeReport& r, Lang lang = Lang::En);
-// The same page with `math_head` (html_math_head(): KaTeX with its fonts inlined, ~0.7 MB, the
-// same on every page) in its head: a batch makes it once, not once per student.
+// The same page with `math_head` in its head: html_math_head() (KaTeX with its fonts inlined,
+// ~0.7 MB) for a page on its own, or html_math_head_linked() for the pages of a batch, which
+// link one shared copy written beside them.
 std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head);
 
 // Untrusted text (a student id, an answer as written, a message quoting it) as Markdown that
