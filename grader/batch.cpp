@@ -312,11 +312,13 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     // No answers could be read at all: the row says so (the feedback still lists the problems).
     j["unreadable"] = !sub.answers.IsDefined() || !sub.answers.IsMap();
     try {
-      out.write("feedback/" + stems[i] + ".md", render_feedback_markdown(report, options.lang));
+      const std::vector<std::string> parts = problem_feedback_markdown(report, options.lang);
+      out.write("feedback/" + stems[i] + ".md",
+                render_feedback_markdown(report, options.lang, parts));
       out.write("feedback/" + stems[i] + ".html",
                 render_feedback_html(report, options.lang, math_head));
       out.write("gradescope/" + stems[i] + ".json",
-                json_text(gradescope_results(report, options.lang)) + "\n");
+                json_text(gradescope_results(report, parts)) + "\n");
     } catch (const std::exception& x) {
       j["write_error"] = x.what();
     }

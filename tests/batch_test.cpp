@@ -285,8 +285,14 @@ TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
   // instead of carrying it.
   const Submission sub =
       load_submission_from_string(read(in / "b_wrong.yaml"), (in / "b_wrong.yaml").string());
+  const GradeReport alone = grade(set, sub);
   EXPECT_EQ(read(dir / "three" / "feedback" / "s002.html"),
-            render_feedback_html(grade(set, sub), Lang::En, html_math_head_linked("../katex/")));
+            render_feedback_html(alone, Lang::En, html_math_head_linked("../katex/")));
+  // So are the Markdown page and the Gradescope results (the batch formats the keys once for
+  // the class and each problem's Markdown once for both).
+  EXPECT_EQ(read(dir / "three" / "feedback" / "s002.md"), render_feedback_markdown(alone));
+  EXPECT_EQ(read(dir / "three" / "gradescope" / "s002.json"),
+            json_text(gradescope_results(alone)) + "\n");
   fs::remove_all(dir);
 }
 
