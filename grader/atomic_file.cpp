@@ -175,8 +175,13 @@ OutputTransaction::~OutputTransaction() {
 }
 
 void OutputTransaction::write(const std::string& relative, const std::string& content) {
-  const std::string path = (fs::path(run_) / relative).string();
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const fs::path path = fs::path(run_) / relative;
+  int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0 && errno == ENOENT) {  // a file in a subdirectory of a name ("katex/fonts/…")
+    std::error_code ec;
+    fs::create_directories(path.parent_path(), ec);
+    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  }
   if (fd < 0) fail(published_path(relative), "cannot create");
   try {
     write_all(fd, content, published_path(relative));

@@ -55,7 +55,8 @@ class OutputTransaction {
   OutputTransaction(const OutputTransaction&) = delete;
   OutputTransaction& operator=(const OutputTransaction&) = delete;
 
-  // `relative` is under one of `names` ("feedback/s1.md", "gradebook.csv").
+  // `relative` is under one of `names` ("feedback/s1.md", "gradebook.csv", "katex/fonts/f.woff2";
+  // subdirectories are made as needed).
   void write(const std::string& relative, const std::string& content);
   // Takes back a file of this run (none there is fine).
   void remove(const std::string& relative);

@@ -216,6 +216,9 @@ void relocate(Diagnostic& d, const BatchEntry& e) {
 
 std::string number_text(double v) { return format_approx(v, 6); }
 
+// The shared copy of KaTeX in the output directory, beside feedback/.
+constexpr const char* kKatexDir = "katex";
+
 }  // namespace
 
 std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t max_bytes,
@@ -296,12 +299,17 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   for (const BatchEntry& e : entries) ids.push_back(e.student);
   const std::vector<std::string> stems = unique_file_names(ids);
   // Taken first: a locked or unwritable output directory stops the batch before any grading.
-  OutputTransaction out(options.out_dir, {"gradebook.csv", "feedback", "gradescope"});
+  // KaTeX once for the class (katex/, linked by every feedback page), not ~0.7 MB in each page;
+  // without KaTeX on this machine the pages show the formulas' Unicode forms and link nothing.
+  const std::vector<std::pair<std::string, std::string>> katex = katex_files();
+  std::vector<std::string> names = {"gradebook.csv", "feedback", "gradescope"};
+  if (!katex.empty()) names.push_back(kKatexDir);
+  OutputTransaction out(options.out_dir, names);
   // A set that does not vary per student is solved once, here: every child inherits it.
   std::optional<SolvedSet> solved;
   if (!options.set_for) solved = solve_for_grading(set);
-  // The typesetting head every feedback page carries (~0.7 MB), made once for the class.
-  const std::string math_head = html_math_head();
+  const std::string math_head =
+      katex.empty() ? std::string() : html_math_head_linked(std::string("../") + kKatexDir + "/");
   // The child grades, renders and writes the student's three files into this run (so that
   // -j children share the writing); the parent gets the row back. A file the child could not
   // write stops the batch, as the parent's own writes do.
@@ -336,11 +344,13 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     // No answers could be read at all: the row says so (the feedback still lists the problems).
     j["unreadable"] = !sub.answers.IsDefined() || !sub.answers.IsMap();
     try {
-      out.write("feedback/" + stems[i] + ".md", render_feedback_markdown(report, options.lang));
+      const std::vector<std::string> parts = problem_feedback_markdown(report, options.lang);
+      out.write("feedback/" + stems[i] + ".md",
+                render_feedback_markdown(report, options.lang, parts));
       out.write("feedback/" + stems[i] + ".html",
                 render_feedback_html(report, options.lang, math_head));
       out.write("gradescope/" + stems[i] + ".json",
-                json_text(gradescope_results(report, options.lang)) + "\n");
+                json_text(gradescope_results(report, parts)) + "\n");
     } catch (const std::exception& x) {
       j["write_error"] = x.what();
     }
@@ -369,6 +379,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     write("gradescope/" + row.feedback_stem + ".json",
           json_text(gradescope_failure(reason)) + "\n");
   };
+  for (const auto& [relative, bytes] : katex) write(std::string(kKatexDir) + "/" + relative, bytes);
   std::size_t done = 0;
   const auto on_result = [&](std::size_t i, IsolatedResult& r) {
     const BatchEntry& e = entries[i];

@@ -1,7 +1,8 @@
 // Grading a whole class: every submission in a directory of answer files (or every row of a
 // CSV roster) against one problem set, each in an isolated child process under a time limit,
-// with a CSV gradebook, per-student feedback (Markdown and self-contained HTML) and Gradescope
-// results.json files written atomically. A broken, empty, huge or slow submission gets its own
+// with a CSV gradebook, per-student feedback (Markdown and HTML pages that share one copy of
+// KaTeX in the output directory, which works offline as a whole) and Gradescope results.json
+// files written atomically. A broken, empty, huge or slow submission gets its own
 // error row; the batch always finishes and the gradebook lists every submission.
 #pragma once
 
@@ -92,7 +93,8 @@ struct BatchResult {
 
 // Grades and writes every output under options.out_dir as one transaction (OutputTransaction:
 // locked, staged, published by one rename):
-//   gradebook.csv, feedback/<file>.md, feedback/<file>.html, gradescope/<file>.json
+//   gradebook.csv, feedback/<file>.md, feedback/<file>.html, gradescope/<file>.json,
+//   katex/ (KaTeX's script, stylesheet and fonts, linked by the HTML pages as ../katex/)
 // with <file> = unique_file_names of the student ids (the gradebook's `file` column). Never
 // aborts on a submission: every failure is that student's row. Throws std::runtime_error only
 // when the outputs cannot be written at all (not writable, locked by another batch, disk

@@ -109,16 +109,28 @@ std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
   return out;
 }
 
+std::vector<std::string> problem_feedback_markdown(const GradeReport& r, Lang lang) {
+  std::vector<std::string> out;
+  for (const ProblemGrade& p : r.problems) out.push_back(render_problem_feedback_markdown(p, lang));
+  return out;
+}
+
 std::string render_feedback_markdown(const GradeReport& r, Lang lang) {
+  return render_feedback_markdown(r, lang, problem_feedback_markdown(r, lang));
+}
+
+std::string render_feedback_markdown(const GradeReport& r, Lang lang,
+                                     const std::vector<std::string>& problem_markdown) {
   std::string out = fmt::format("# {} {}\n\n**{}: {} / {}**\n\n", tr("Student", lang),
                                 r.student.empty() ? "(unnamed)" : markdown_escape(r.student), tr("Score", lang),
                                 score_text(r.score), score_text(r.max_score));
   if (!r.variant.empty()) out += markdown_escape(r.variant) + "\n\n";
   for (const Diagnostic& d : r.errors) out += fmt::format("- {}: `{}`\n", tr("warning", lang), markdown_code(d.format()));
   if (!r.errors.empty()) out += "\n";
-  for (const ProblemGrade& p : r.problems) {
+  for (std::size_t i = 0; i < r.problems.size(); ++i) {
+    const ProblemGrade& p = r.problems[i];
     out += fmt::format("## {} — {} / {}\n\n", markdown_escape(p.id), score_text(p.score), score_text(p.max_score));
-    out += render_problem_feedback_markdown(p, lang);
+    out += problem_markdown.at(i);
   }
   return out;
 }

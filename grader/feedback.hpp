@@ -4,18 +4,24 @@
 // points.
 #pragma once
 
-#include "grader/grade.hpp"
-#include "solver/derivation/i18n.hpp"
-
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "grader/grade.hpp"
+#include "solver/derivation/i18n.hpp"
 
 namespace frustum {
 
 std::string render_feedback_markdown(const GradeReport& r, Lang lang = Lang::En);
+// The same with each problem's part already made (problem_feedback_markdown(r, lang)): a batch
+// makes the parts once for the page and for Gradescope's results.
+std::string render_feedback_markdown(const GradeReport& r, Lang lang,
+                                     const std::vector<std::string>& problem_markdown);
 std::string render_feedback_html(const GradeReport& r, Lang lang = Lang::En);
-// The same page with `math_head` (html_math_head(): KaTeX with its fonts inlined, ~0.7 MB, the
-// same on every page) in its head: a batch makes it once, not once per student.
+// The same page with `math_head` in its head: html_math_head() (KaTeX with its fonts inlined,
+// ~0.7 MB) for a page on its own, or html_math_head_linked() for the pages of a batch, which
+// link one shared copy written beside them.
 std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head);
 
 // Untrusted text (a student id, an answer as written, a message quoting it) as Markdown that
@@ -29,5 +35,7 @@ std::string markdown_code(std::string_view text);
 
 // The problem's part of the Markdown feedback (Gradescope shows one per test).
 std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang = Lang::En);
+// render_problem_feedback_markdown of each problem of the report, in order.
+std::vector<std::string> problem_feedback_markdown(const GradeReport& r, Lang lang);
 
 }  // namespace frustum

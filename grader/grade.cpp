@@ -348,6 +348,14 @@ SolvedSet solve_for_grading(const ProblemSet& set) {
   SolvedSet s;
   for (const ProblemSpec& spec : set.problems) {
     s.results.push_back(solve_problem(spec, set.file, true));
+    // Each key as students see it, formatted once for the class rather than on every page.
+    Answers keys;
+    for (const auto& [name, value] : s.results.back().answers.items()) {
+      Value key = value;
+      if (key.display.empty()) key.display = value.shown();
+      keys.set(name, std::move(key));
+    }
+    s.results.back().answers = std::move(keys);
     s.mistakes.push_back(mistakes_of(spec, s.results.back()));
     s.judging.push_back(s.results.back().error ? ProblemJudging{} : prepare_judging(spec, s.results.back().answers));
   }

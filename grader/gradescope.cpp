@@ -10,6 +10,10 @@ namespace frustum {
 using json = nlohmann::ordered_json;
 
 json gradescope_results(const GradeReport& r, Lang lang) {
+  return gradescope_results(r, problem_feedback_markdown(r, lang));
+}
+
+json gradescope_results(const GradeReport& r, const std::vector<std::string>& problem_markdown) {
   json j;
   j["score"] = number_json(r.score);
   std::string summary = fmt::format("{} / {}", r.score, r.max_score);
@@ -20,13 +24,14 @@ json gradescope_results(const GradeReport& r, Lang lang) {
   j["visibility"] = "visible";
   j["stdout_visibility"] = "hidden";
   json tests = json::array();
-  for (const ProblemGrade& p : r.problems) {
+  for (std::size_t i = 0; i < r.problems.size(); ++i) {
+    const ProblemGrade& p = r.problems[i];
     json t;
     t["name"] = p.id;
     t["score"] = number_json(p.score);
     t["max_score"] = number_json(p.max_score);
     t["status"] = !p.error && p.score >= p.max_score ? "passed" : "failed";
-    t["output"] = render_problem_feedback_markdown(p, lang);
+    t["output"] = problem_markdown.at(i);
     t["output_format"] = "md";
     t["visibility"] = "visible";
     tests.push_back(t);

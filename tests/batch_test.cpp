@@ -1,26 +1,29 @@
 // Grading a class: CSV reading, atomic writes, isolation of slow and crashing work, the batch's
 // gradebook, feedback pages, Gradescope results, reproducible outputs, and Japanese feedback.
-#include "grader/atomic_file.hpp"
 #include "grader/batch.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <thread>
+
+#include "grader/atomic_file.hpp"
 #include "grader/csv.hpp"
 #include "grader/feedback.hpp"
 #include "grader/gradescope.hpp"
 #include "grader/isolate.hpp"
 #include "grader/report.hpp"
+#include "solver/derivation/render.hpp"
 #include "test_util.hpp"
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
-#include <algorithm>
-#include <chrono>
-#include <cstdlib>
-#include <csignal>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
-#include <thread>
 
 namespace frustum {
 namespace {
@@ -190,9 +193,30 @@ TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
   EXPECT_NE(gs["tests"][0]["output"].get<std::string>().find("x + y − z = −6"), std::string::npos);
   const std::string html = test::read_file(dir / "out" / "feedback" / "s002.html");
   EXPECT_NE(html.find("data-verdict=\"incorrect\""), std::string::npos);
-  // The page must not load anything (the inlined KaTeX names XML namespaces, which are not loads).
+  // The page loads nothing from outside the output directory: only the class's one copy of
+  // KaTeX beside feedback/, and every file that copy names is there (the directory works
+  // offline as a whole).
   for (const char* load : {"src=\"http", "src='http", "src=\"//", "href=\"http", "href=\"//", "url(http", "url(//", "@import"})
     EXPECT_EQ(html.find(load), std::string::npos) << "the page must not load anything: " << load;
+  const std::regex link(R"re((?:src|href)="([^"]*)")re");
+  std::vector<std::string> loaded;
+  for (auto m = std::sregex_iterator(html.begin(), html.end(), link); m != std::sregex_iterator();
+       ++m)
+    loaded.push_back((*m)[1]);
+  EXPECT_EQ(loaded, (std::vector<std::string>{"../katex/katex.min.css", "../katex/katex.min.js"}));
+  for (const std::string& l : loaded)
+    EXPECT_TRUE(fs::is_regular_file(dir / "out" / "feedback" / l)) << l;
+  const std::string css = test::read_file(dir / "out" / "katex" / "katex.min.css");
+  const std::regex font(R"re(url\(([^)]*)\))re");
+  int fonts = 0;
+  for (auto m = std::sregex_iterator(css.begin(), css.end(), font); m != std::sregex_iterator();
+       ++m, ++fonts) {
+    EXPECT_EQ((*m)[1].str().rfind("fonts/", 0), 0u) << (*m)[1];
+    EXPECT_GT(fs::file_size(dir / "out" / "katex" / (*m)[1].str()), 1000u) << (*m)[1];
+  }
+  EXPECT_GE(fonts, 10);
+  // The page is small: KaTeX is not inlined in it.
+  EXPECT_LT(html.size(), 100'000u);
   fs::remove_all(dir);
 }
 
@@ -206,8 +230,11 @@ TEST(Batch, ASecondRunGivesByteIdenticalOutputs) {
   options.out_dir = (dir / "two").string();
   grade_batch(set, collect_submissions(in.string()), options);
   const auto one = test::published_tree(dir / "one"), two = test::published_tree(dir / "two");
-  // gradebook, 5 Gradescope files, 5 Markdown pages, 4 HTML pages (not for the file never read)
-  EXPECT_EQ(one.size(), 15u);
+  // gradebook, 5 Gradescope files, 5 Markdown pages, 4 HTML pages (not for the file never read),
+  // and the class's copy of KaTeX
+  const std::size_t katex = katex_files().size();
+  EXPECT_GT(katex, 10u);
+  EXPECT_EQ(one.size(), 15u + katex);
   EXPECT_TRUE(one == two);
   fs::remove_all(dir);
 }
@@ -226,10 +253,18 @@ TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
   EXPECT_TRUE(test::published_tree(dir / "one") == test::published_tree(dir / "three"));
   ASSERT_EQ(three.rows.size(), 5u);
   for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(three.rows[i].student, one_child.rows[i].student);
-  // The page the batch assembles (typesetting head added by the parent) is the page made alone.
+  // The page the batch writes is the page made alone, linking the class's copy of KaTeX
+  // instead of carrying it.
   const Submission sub =
       load_submission_from_string(test::read_file(in / "b_wrong.yaml"), (in / "b_wrong.yaml").string());
-  EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.html"), render_feedback_html(grade(set, sub)));
+  const GradeReport alone = grade(set, sub);
+  EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.html"),
+            render_feedback_html(alone, Lang::En, html_math_head_linked("../katex/")));
+  // So are the Markdown page and the Gradescope results (the batch formats the keys once for
+  // the class and each problem's Markdown once for both).
+  EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.md"), render_feedback_markdown(alone));
+  EXPECT_EQ(test::read_file(dir / "three" / "gradescope" / "s002.json"),
+            json_text(gradescope_results(alone)) + "\n");
   fs::remove_all(dir);
 }
 

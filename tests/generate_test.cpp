@@ -658,3 +658,35 @@ INSTANTIATE_TEST_SUITE_P(EveryKind, SelfTest, ::testing::ValuesIn(kind_names()),
 
 }  // namespace
 }  // namespace frustum
+
+namespace frustum {
+namespace {
+
+// A drawn variant carries the answers its draw was checked with, and the answer key reuses
+// them: for every seed set (every problem varied) and many students they are the answers
+// solving the variant again gives.
+TEST(Generate, AnswerKeysFromTheDrawEqualKeysSolvedAgain) {
+  int reused = 0;  // problems whose key came from the draw
+  for (const char* file : {"problems/seeds/000_projection_and_hidden_surfaces.yaml",
+                           "problems/seeds/001_zbuffer_plane_method.yaml",
+                           "problems/seeds/002_transforms_and_view_volume.yaml",
+                           "problems/seeds/003_polygons_backface.yaml",
+                           "problems/seeds/004_placing_and_projecting.yaml"}) {
+    const ProblemSet set = load_problem_set(test::source_path(file));
+    for (int s = 0; s < 8; ++s) {
+      const std::string student = "s" + std::to_string(s);
+      const ProblemSet drawn = variant_for_student(set, student, true);
+      ProblemSet solved_again = drawn;
+      for (ProblemSpec& p : solved_again.problems) {
+        reused += p.drawn_answers != nullptr;
+        p.drawn_answers.reset();
+      }
+      EXPECT_EQ(emit_answer_key(drawn, student, ""), emit_answer_key(solved_again, student, ""))
+          << file << " " << student;
+    }
+  }
+  EXPECT_GT(reused, 100);
+}
+
+}  // namespace
+}  // namespace frustum

@@ -2,13 +2,13 @@
 // and JSON in the shape of problem-format.md §3.
 #pragma once
 
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/problem_result.hpp"
-
-#include <nlohmann/json.hpp>
-
-#include <string>
-#include <vector>
 
 namespace frustum {
 
@@ -32,6 +32,12 @@ std::string html_math(const MathText& m, Lang lang = Lang::En, bool display = tr
 std::string html_steps(const std::vector<Step>& steps, Lang lang = Lang::En);
 // KaTeX's style (fonts inlined) and script for a page's <head>; empty when KaTeX is absent.
 std::string html_math_head();
+// KaTeX as files, for many pages that link one shared copy instead of each carrying it:
+// (path relative to the copy, bytes) for katex.min.js, katex.min.css (woff2 fonts only) and
+// fonts/*.woff2; empty when KaTeX is absent.
+std::vector<std::pair<std::string, std::string>> katex_files();
+// The <head> part of a page that uses the copy of katex_files() at `prefix` ("../katex/").
+std::string html_math_head_linked(const std::string& prefix);
 // The script that typesets every formula element; put it at the end of the <body>.
 std::string html_math_script();
 std::string render_html(const SetResult& set, Lang lang = Lang::En);

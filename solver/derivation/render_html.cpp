@@ -44,9 +44,11 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
-// KaTeX's stylesheet with each font's woff2 inlined and the other formats dropped.
-std::string katex_css() {
-  std::string css = read_file(std::string(kKatexDir) + "katex.min.css");
+// KaTeX's stylesheet with each font's woff2 only (every browser that runs KaTeX reads woff2), the
+// other formats dropped; `font_url` gives the URL of a font file named in it.
+template <typename FontUrl>
+std::string katex_css(FontUrl font_url) {
+  const std::string css = read_file(std::string(kKatexDir) + "katex.min.css");
   std::string out;
   std::size_t i = 0;
   while (true) {
@@ -55,25 +57,52 @@ std::string katex_css() {
     const std::size_t name_start = src + 14, name_end = css.find(')', name_start);
     const std::size_t decl_end = css.find_first_of(";}", name_end);
     if (name_end == std::string::npos || decl_end == std::string::npos) break;
-    const std::string font = read_file(std::string(kKatexDir) + "fonts/" +
-                                       css.substr(name_start, name_end - name_start));
-    out += css.substr(i, src - i) + "src:url(data:font/woff2;base64," + base64(font) +
-           ") format('woff2')";
+    out += css.substr(i, src - i) + "src:url(" +
+           font_url(css.substr(name_start, name_end - name_start)) + ") format('woff2')";
     i = decl_end;
   }
   return out + css.substr(i);
 }
 
+// A script element ends at the first "</script"; KaTeX's source has none, but be sure.
+std::string katex_script() {
+  std::string script = read_file(std::string(kKatexDir) + "katex.min.js");
+  for (std::size_t at = 0; (at = script.find("</script", at)) != std::string::npos;)
+    script.replace(at, 2, "<\\/");
+  return script;
+}
+
 }  // namespace
 
 std::string html_math_head() {
-  const std::string js = read_file(std::string(kKatexDir) + "katex.min.js");
+  const std::string js = katex_script();
   if (js.empty()) return {};  // no KaTeX here: the Unicode forms stay, still readable
-  std::string script = js;
-  // A script element ends at the first "</script"; KaTeX's source has none, but be sure.
-  for (std::size_t at = 0; (at = script.find("</script", at)) != std::string::npos;)
-    script.replace(at, 2, "<\\/");
-  return "<style>" + katex_css() + "</style>\n<script>" + script + "</script>\n";
+  const std::string css = katex_css([](const std::string& font) {
+    return "data:font/woff2;base64," + base64(read_file(std::string(kKatexDir) + "fonts/" + font));
+  });
+  return "<style>" + css + "</style>\n<script>" + js + "</script>\n";
+}
+
+std::vector<std::pair<std::string, std::string>> katex_files() {
+  std::vector<std::pair<std::string, std::string>> files{
+      {"katex.min.js", read_file(std::string(kKatexDir) + "katex.min.js")}};
+  if (files[0].second.empty()) return {};
+  std::vector<std::string> fonts;
+  const std::string css = katex_css([&](const std::string& font) {
+    fonts.push_back(font);
+    return "fonts/" + font;
+  });
+  files.emplace_back("katex.min.css", css);
+  for (const std::string& font : fonts)
+    files.emplace_back("fonts/" + font, read_file(std::string(kKatexDir) + "fonts/" + font));
+  return files;
+}
+
+std::string html_math_head_linked(const std::string& prefix) {
+  return fmt::format(
+      "<link rel=\"stylesheet\" href=\"{0}katex.min.css\">\n<script "
+      "src=\"{0}katex.min.js\"></script>\n",
+      svg_escape(prefix));
 }
 
 std::string html_math_script() {

@@ -3,17 +3,18 @@
 // set or on its problem, and one broken problem never stops the rest.
 #pragma once
 
-#include "solver/kinds/kind.hpp"
-#include "solver/util/diagnostic.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <any>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "solver/kinds/kind.hpp"
+#include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
@@ -69,6 +70,9 @@ struct ProblemSpec {
   std::string field;              // "problems[2]"
   const KindInfo* info = nullptr;
   std::any given;                 // the kind's parsed Given
+  // The answers found when a variant was drawn (variants.cpp: each draw is solved to be
+  // checked), reused by solve_problem without steps instead of solving the same given again.
+  std::shared_ptr<const Answers> drawn_answers;
   YAML::Node given_node;
   YAML::Node vary;            // the `vary:` block (generate.hpp); undefined when absent
   bool nice = false;          // nice: true — integer or simple exact answers

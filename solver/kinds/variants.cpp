@@ -87,6 +87,7 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
   // nodes of a copied ProblemSpec are rebound with reset(), and specs are never assigned.
   ProblemSpec spec = base;
   spec.vary.reset();
+  spec.drawn_answers.reset();
   if (base.error || !base.info) return spec;
   const KindInfo& kind = *base.info;
   const bool use_default = !has_vary(base) || vary_is_default(base.vary);
@@ -129,7 +130,7 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
       GivenReader reader(given, file, base.field + ".given", kind.given_fields);
       std::any parsed = kind.parse(reader, base.conventions);
       reader.finish();
-      const Answers answers = kind.solve(parsed, nullptr);
+      Answers answers = kind.solve(parsed, nullptr);
       // An empty list (no pixel covered) cannot be written as an answer: redrawn even when hard.
       last.clear();
       for (const std::string& name : base.ask)
@@ -147,6 +148,7 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
       }
       spec.given = std::move(parsed);
       spec.given_node.reset(given);
+      spec.drawn_answers = std::make_shared<const Answers>(std::move(answers));
       if (given_text) *given_text = text;
       return spec;
     } catch (const InputError& e) {
