@@ -701,6 +701,11 @@ constexpr Phrase kPhrases[] = {
      "охватывает другую или они "
      "лежат на цикле (у многоугольников есть размер, поэтому один центр тяжести не упорядочивает "
      "их)."},
+    // The two plane tests of a pair, each translated on its own (the shorter pattern below would
+    // take both as one test).
+    {"{0}-{1}: overlap on screen; over the overlap {2}; plane tests: {3}, {5} — {4}",
+     "{0}-{1}: 画面上で重なる. 重なりでは {2}. 平面テスト: {3}, {5} — {4}",
+     "{0}-{1}: перекрываются на экране; на перекрытии {2}; плоскостные тесты: {3}, {5} — {4}"},
     {"{0}-{1}: overlap on screen; over the overlap {2}; plane tests: {3} — {4}",
      "{0}-{1}: 画面上で重なる. 重なりでは {2}. 平面テスト: {3} — {4}",
      "{0}-{1}: перекрываются на экране; на перекрытии {2}; плоскостные тесты: {3} — {4}"},
@@ -737,6 +742,12 @@ constexpr Phrase kPhrases[] = {
      "重心の順では {2} を先に描き, {3} がその上に描かれてしまう",
      "КОНФЛИКТ: на перекрытии {0} везде ближе, но его центр тяжести дальше, чем у {1}, поэтому "
      "порядок по центрам тяжести рисует {2} первым, и {3} закрашивает его"},
+    {"CONFLICT: over their overlap {0} is nearer everywhere, but its centroid is as far as {1}'s, "
+     "so the centroid order draws {2} first and {3} paints over it",
+     "矛盾: 重なりではどこでも {0} が手前だが, その重心は {1} の重心と同じ奥行きなので, "
+     "重心の順では {2} を先に描き, {3} がその上に描かれてしまう",
+     "КОНФЛИКТ: на перекрытии {0} везде ближе, но его центр тяжести так же далеко, как у {1}, "
+     "поэтому порядок по центрам тяжести рисует {2} первым, и {3} закрашивает его"},
     {"CONFLICT: one wraps around the other (a concave polygon): part of the overlap has one in "
      "front, part the other, so no order of whole polygons is right",
      "矛盾: 一方が他方を包んでいる (凹ポリゴン). 重なりの一部では一方が, 残りでは他方が手前なので, "

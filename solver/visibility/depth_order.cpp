@@ -272,10 +272,10 @@ DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons, const D
     } else if ((p.order == PairOrder::FirstBehind && !i_first) || (p.order == PairOrder::SecondBehind && i_first)) {
       const int far = p.order == PairOrder::FirstBehind ? p.i : p.j;
       const int near = far == p.i ? p.j : p.i;
-      p.reason = fmt::format("over their overlap {} is nearer everywhere, but its centroid is "
-                             "{} than {}'s, so the centroid order draws {} first and {} paints over it",
-                             near, sign(key[static_cast<std::size_t>(near)] - key[static_cast<std::size_t>(far)]) == 0 ? "as far" : "farther",
-                             far, near, far);
+      const bool tie = sign(key[static_cast<std::size_t>(near)] - key[static_cast<std::size_t>(far)]) == 0;
+      p.reason = fmt::format("over their overlap {} is nearer everywhere, but its centroid is {} {}'s, "
+                             "so the centroid order draws {} first and {} paints over it",
+                             near, tie ? "as far as" : "farther than", far, near, far);
     }
     p.conflict = !p.reason.empty();
     if (p.conflict) r.conflicts.push_back(p.name());
