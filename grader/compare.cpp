@@ -189,7 +189,7 @@ std::optional<Comparison> component_credit(const Value& expected, const Value& g
 
 // Points written another way than one row each, read as the rows they mean: one point as a
 // flat list or a column ([−2, 2, 3] reads as a 3×1 matrix), and points in homogeneous
-// coordinates whose w is exactly 1. Nothing when `got` is none of these.
+// coordinates (x, y, z, w), w ≠ 0, as (x/w, y/w, z/w). Nothing when `got` is none of these.
 struct PointReading {
   Value rows;
   std::string how;

@@ -65,7 +65,6 @@ struct DepthAtPixel {
     if (canonical(plane[2]).is_zero()) return std::nullopt;
     return canonical((plane[3] - plane[0] * g.pixel(0) - plane[1] * g.pixel(1)) / plane[2]);
   }
-  static Value plane_value(const std::array<Exact, 4>& plane) { return plane_answer(plane); }
 
   // Error carried forward: normal → unit normal → plane → z, from the student's own values.
   static Answers carry_forward(const Given& g, const Answers& student) {
@@ -77,7 +76,7 @@ struct DepthAtPixel {
     std::optional<std::vector<Exact>> plane;
     if (n) {
       const std::array<Exact, 4> p = plane_through_a(g, *n);
-      out.set("plane", plane_value(p));
+      out.set("plane", plane_answer(p));
       plane = std::vector<Exact>(p.begin(), p.end());
     }
     if (const auto v = carried(student, "plane", 4)) plane = v;
@@ -103,7 +102,7 @@ struct DepthAtPixel {
     const Vec3<Exact> u = unit(n);
     Answers origin;
     const std::array<Exact, 4> p0 = paper_plane(u, 0);
-    origin.set("plane", plane_value(p0));
+    origin.set("plane", plane_answer(p0));
     if (const auto z = z_on(g, std::vector<Exact>(p0.begin(), p0.end()))) origin.set("z", Value::scalar(*z));
     out.push_back({"plane through the origin",
                    "Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
@@ -152,7 +151,7 @@ struct DepthAtPixel {
     // Plane through A: n̂·(p − A) = 0, then cleared of its common factor.
     const Vec3<Exact>& A = g.triangle[0];
     const std::array<Exact, 4> plane = plane_through_a(g, u);
-    const Value pv = plane_value(plane);
+    const Value pv = plane_answer(plane);
     out.set("plane", pv);
     if (steps) {
       steps->add("Plane through A with normal n̂",
