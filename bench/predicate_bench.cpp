@@ -23,13 +23,14 @@ constexpr int kCases = 4096;
 struct Case {
   std::array<Vec3<double>, 3> t;
   Vec3<double> eye;
+  double facing_bound = 0;  // the filter's bound, computed with the inputs and kept beside them,
+                            // as backface's prepared solve does
+  Polygon3<double> poly;
   Vec2<double> pixel;
   std::array<Vec3<Exact>, 3> exact_t;
   Vec3<Exact> exact_eye;
   Vec2<Exact> exact_pixel;
-  Polygon3<double> poly;
   Polygon3<Exact> exact_poly;
-  double facing_bound = 0;  // the filter's bound, computed with the inputs (a prepared solve)
 };
 
 const std::vector<Case>& cases() {

@@ -8,10 +8,6 @@
 #   BUILD=build-dir REPS=5 tools/performance.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-BUILD=${BUILD:-build}
-if [ ! -f "$BUILD/CMakeCache.txt" ]; then
-  cmake -S . -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFRUSTUM_BENCH=ON
-fi
-cmake --build "$BUILD" -j"$(nproc)" --target frustum frustum_bench
+. tools/bench_build.sh
 exec /usr/bin/python3 bench/performance.py --frustum "$BUILD/frustum" --bench "$BUILD/frustum_bench" \
   --repo . --reps "${REPS:-3}" "$@"

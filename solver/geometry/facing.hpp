@@ -6,6 +6,7 @@
 
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
+#include "solver/geometry/zero_vector.hpp"
 #include "solver/numeric/scalar.hpp"
 
 #include <limits>
@@ -35,8 +36,7 @@ T facing_error_bound(const Polygon3<T>& p, const Vec3<T>& eye) {
   Vec3<T> terms = Vec3<T>::Zero();
   for (std::size_t i = 1; i + 1 < p.size(); ++i) {
     const Vec3<T> a = p[i].cwiseAbs() + a0, b = p[i + 1].cwiseAbs() + a0;
-    terms += Vec3<T>(a.y() * b.z() + a.z() * b.y(), a.z() * b.x() + a.x() * b.z(),
-                     a.x() * b.y() + a.y() * b.x());
+    terms += cross_permanent(a, b);
   }
   const Vec3<T> view = eye.cwiseAbs() + a0;
   const int m = static_cast<int>(p.size());
@@ -88,15 +88,15 @@ template <typename T>
   f.normal = newell_normal(p);
   f.view = eye - p[0];
   f.df = f.view.dot(f.normal);
-  f.naive_sign = scalar_sign(f.df);
   if constexpr (kIsExact<T>) {
-    f.sign = exact_sign(f.df);
+    f.naive_sign = f.sign = exact_sign(f.df);
   } else {
     // The cheap bound settles ordinary input; the sharper one is computed only near the plane.
     if (std::isnan(fast_bound)) fast_bound = facing_error_bound_fast(p, eye);
     if (inputs_relative && sign_is_proven(f.df, fast_bound)) [[likely]] {
-      f.sign = f.naive_sign;
+      f.naive_sign = f.sign = f.df > T(0) ? 1 : -1;  // proven nonzero: one comparison
     } else {
+      f.naive_sign = scalar_sign(f.df);
       const SignDecision d = facing_near_plane(f, p, eye, exact_points, exact_eye, inputs_relative);
       f.sign = d.sign;
       f.used_exact = d.exact;

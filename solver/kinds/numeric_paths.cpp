@@ -3,6 +3,8 @@
 #include "solver/geometry/facing.hpp"
 #include "solver/geometry/plane_depth.hpp"
 #include "solver/geometry/predicates.hpp"
+#include "solver/geometry/zero_vector.hpp"
+#include "solver/kinds/kind_steps.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/numeric/ranged.hpp"
 
@@ -91,25 +93,68 @@ void warn_condition(NumericOut<T>& out, Precision p, double kappa, const std::st
 // A polygon's normal in T: e₀ × e₁ for a triangle (seed 003), Newell's Σ dᵢ × dᵢ₊₁ (dᵢ = pᵢ − p₀)
 // otherwise. In floating point the offsets are first scaled by a power of two (exact) so that
 // neither the products nor ‖n‖ overflow or underflow for huge, tiny or subnormal coordinates;
-// the normal is scaled back (it may then overflow; the unit normal never does).
+// the normal is scaled back (it may then overflow; the unit normal never does). Whether the
+// normal is zero (a degenerate polygon) is a discrete answer: decided by the normal's error
+// bound, else exactly on the exact points (zero_vector.hpp), which then also give the unit normal.
 template <typename T>
 struct NormalPair {
-  Vec3<T> n;
-  Vec3<T> unit;
+  Vec3<T> n = Vec3<T>::Zero();
+  Vec3<T> unit = Vec3<T>::Zero();
   bool zero = false;
-  bool underflow = false;  // n scaled back fell below the normal range
+  bool exact_zero_test = false;  // the exact fallback decided whether n is zero
+  bool underflow = false;        // n scaled back fell below the normal range
 };
 
+// The exact normal of the formula polygon_normal uses (e₀ × e₁ = Newell's for a triangle).
+inline NormalPair<Exact> exact_polygon_normal(const Polygon3<Exact>& p) {
+  NormalPair<Exact> out;
+  out.n = p.size() == 3 ? edge_pair_normal(p, 0) : newell_normal(p);
+  out.zero = is_zero_vector(out.n);
+  if (!out.zero) out.unit = out.n / stable_norm(out.n);
+  return out;
+}
+
+// Whether the normal `computed` in T is zero, by its componentwise `bound` or else exactly:
+// `exact_normal()` gives the exact normal of the same formula, of which `computed` is the
+// rounded value times 2^−scale. When the exact fallback ran, the computed vector was not proven
+// to hold even its signs, so the exact one, rounded once, replaces it; the unit normal comes
+// from that, or from the exact normal itself when the rounded one is 0 or overflows.
+template <typename T, typename ExactNormal>
+void decide_normal_zero(NormalPair<T>& out, Vec3<T>& computed, const Vec3<T>& bound, bool inputs_relative,
+                        int scale, ExactNormal&& exact_normal) {
+  std::optional<Vec3<Exact>> exact_n;
+  const ZeroDecision z = decide_zero(computed, bound, inputs_relative, [&] {
+    exact_n = exact_normal();
+    return is_zero_vector(*exact_n);
+  });
+  out.zero = z.zero;
+  out.exact_zero_test = z.exact;
+  if (out.zero) {
+    computed = Vec3<T>::Zero();
+    return;
+  }
+  if constexpr (!kIsExact<T>) {
+    if (exact_n) {
+      const Exact factor = GiNaC::pow(GiNaC::numeric(2), -scale);
+      for (int i = 0; i < 3; ++i) computed(i) = from_exact<T>((*exact_n)(i) * factor);
+      const T length = stable_norm(computed);
+      if (!(length > T(0)) || !std::isfinite(length)) {
+        const Exact exact_length = stable_norm(*exact_n);
+        for (int i = 0; i < 3; ++i) out.unit(i) = from_exact<T>((*exact_n)(i) / exact_length);
+        return;
+      }
+    }
+  }
+  out.unit = computed / stable_norm(computed);
+}
+
 template <typename T>
-NormalPair<T> polygon_normal(const Polygon3<T>& p) {
-  NormalPair<T> out;
-  const bool triangle = p.size() == 3;
+NormalPair<T> polygon_normal(const Polygon3<T>& p, const Polygon3<Exact>& exact_points, bool inputs_relative) {
   if constexpr (kIsExact<T>) {
-    out.n = triangle ? edge_pair_normal(p, 0) : newell_normal(p);
-    out.zero = scalar_sign(T(out.n.dot(out.n))) == 0;
-    if (!out.zero) out.unit = out.n / stable_norm(out.n);
-    return out;
+    return exact_polygon_normal(p);
   } else {
+    NormalPair<T> out;
+    const bool triangle = p.size() == 3;
     Polygon3<T> d;
     Vec3<T> largest = Vec3<T>::Zero();
     for (const Vec3<T>& v : p) {
@@ -120,8 +165,21 @@ NormalPair<T> polygon_normal(const Polygon3<T>& p) {
     for (Vec3<T>& v : d)
       for (int i = 0; i < 3; ++i) v(i) = std::ldexp(v(i), -k);
     Vec3<T> ns = triangle ? Vec3<T>(d[1].cross(d[2] - d[1])) : newell_normal(d);
-    out.zero = ns.cwiseAbs().maxCoeff() == T(0);
-    if (!out.zero) out.unit = ns / stable_norm(ns);
+    // The bound on the scaled magnitudes: each offset dᵢ within |pᵢ| + |p₀|, e₁ = d₂ − d₁
+    // within |p₂| + |p₁| + 2|p₀|.
+    auto magnitude = [&](std::size_t i) { return Vec3<T>((p[i].cwiseAbs() + p[0].cwiseAbs()) * std::ldexp(T(1), -k)); };
+    Vec3<T> bound;
+    if (triangle) {
+      bound = cross_error_bound(magnitude(1), Vec3<T>(magnitude(2) + magnitude(1)), 3);
+    } else {
+      Vec3<T> terms = Vec3<T>::Zero();
+      for (std::size_t i = 1; i + 1 < p.size(); ++i) terms += cross_permanent(magnitude(i), magnitude(i + 1));
+      const int m = static_cast<int>(p.size());
+      bound = Rounding<T>::gamma(2 * m + 12) * terms +
+              Vec3<T>::Constant(Rounding<T>::underflow(T(2 * (m - 2) + 4)));
+    }
+    decide_normal_zero(out, ns, bound, inputs_relative, 2 * k, [&] { return exact_polygon_normal(exact_points).n; });
+    if (out.zero) return out;  // the exact normal: 0
     for (int i = 0; i < 3; ++i) out.n(i) = scaled_by(ns(i), 2 * k, out.underflow);
     return out;
   }
@@ -131,11 +189,9 @@ template <typename T>
 void report_normal(NumericOut<T>& out, const NormalPair<T>& n) {
   if (n.underflow) out.underflow();
   out.vector("normal", n.n);
+  if (n.exact_zero_test) out.exact_decision("whether the normal is zero");
   if (n.zero) {
     out.null("unit_normal");
-    out.warn("Zero normal in this precision",
-             "the normal computed in this backend is the zero vector (cancellation or underflow): "
-             "the polygon is degenerate at this precision.");
   } else {
     out.vector("unit_normal", n.unit);
   }
@@ -154,11 +210,13 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
     struct In {
       Vec3<T> a, b;
       bool degrees;
+      InputRange range;
+      Vec3<Exact> exact_a, exact_b;  // for the exact parallel test
     };
     struct Out {
       T dot{}, area{}, sin{}, cos{}, angle{};
-      Vec3<T> cross, unit;
-      bool parallel = false;
+      Vec3<T> cross;
+      NormalPair<T> unit;  // unit.zero: a and b are parallel (a × b = 0)
       bool underflow = false;
     };
     auto core = [](const In& in) {
@@ -174,7 +232,13 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
         kb = power_of_two_scale(b);
       }
       const T dot = a.dot(b);
-      const Vec3<T> cross = a.cross(b);
+      Vec3<T> cross = a.cross(b);
+      // Parallel or not is a discrete answer (the unit normal exists or not): a × b's bound
+      // (each scaled component one rounding from its exact value) or else exactly.
+      Vec3<T> bound = Vec3<T>::Zero();
+      if constexpr (!kIsExact<T>) bound = cross_error_bound(Vec3<T>(a.cwiseAbs()), Vec3<T>(b.cwiseAbs()), 1);
+      decide_normal_zero(o.unit, cross, bound, in.range.relative(), ka + kb,
+                         [&] { return Vec3<Exact>(in.exact_a.cross(in.exact_b)); });
       const T area = stable_norm(cross), la = stable_norm(a), lb = stable_norm(b);
       o.dot = scaled_by(dot, ka + kb, o.underflow);
       for (int i = 0; i < 3; ++i) o.cross(i) = scaled_by(cross(i), ka + kb, o.underflow);
@@ -184,12 +248,11 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
       // θ = atan2(‖a × b‖, a·b): accurate at every angle, unlike arccos(cos θ) near 0 and π.
       o.angle = scalar_angle(area, dot);
       if (in.degrees) o.angle = o.angle * T(180) / scalar_pi(o.angle);
-      o.parallel = scalar_sign(area) == 0;
-      if (!o.parallel) o.unit = cross / area;
       return o;
     };
-    auto report = [p](const In&, const Out& o) {
+    auto report = [p](const In& in, const Out& o) {
       NumericOut<T> out(p);
+      out.inputs(in.range);
       if (o.underflow) out.underflow();
       out.scalar("dot", o.dot);
       out.vector("cross", o.cross);
@@ -197,14 +260,18 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
       out.scalar("sin", o.sin);
       out.scalar("cos", o.cos);
       out.scalar("angle", o.angle);
-      if (o.parallel)
+      if (o.unit.exact_zero_test) out.exact_decision("whether a and b are parallel");
+      if (o.unit.zero)
         out.null("unit_normal");
       else
-        out.vector("unit_normal", o.unit);
+        out.vector("unit_normal", o.unit.unit);
       out.note("angle = atan2(‖a × b‖, a·b)");
       return out.take();
     };
-    return prepare(In{conv<T>(a), conv<T>(b), unit == AngleUnit::Degrees}, core, report);
+    In in{{}, {}, unit == AngleUnit::Degrees, {}, a, b};
+    in.a = conv<T>(a, &in.range);
+    in.b = conv<T>(b, &in.range);
+    return prepare(std::move(in), core, report);
   });
 }
 
@@ -216,24 +283,39 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
       Polygon3<T> points;
       std::optional<std::array<int, 4>> order;  // first = X₀→Y₀, second = X₁→Y₁ (vertex indices)
       InputRange range;
+      Polygon3<Exact> exact_points;  // for the exact zero test and the refusal
+      std::optional<CrossOrder> cross;
     };
     auto core = [](const In& in) {
-      if (!in.order) return polygon_normal(in.points);
-      const auto& o = *in.order;
       NormalPair<T> r;
+      if (!in.order) {
+        r = polygon_normal(in.points, in.exact_points, in.range.relative());
+        // A degenerate polygon is refused, as the exact solve refuses it (the same words).
+        if (r.zero) polygon_normal_with_steps(in.exact_points, "points", nullptr);
+        return r;
+      }
+      const auto& o = *in.order;
       r.n = Vec3<T>(in.points[o[1]] - in.points[o[0]]).cross(Vec3<T>(in.points[o[3]] - in.points[o[2]]));
-      r.zero = scalar_sign(T(r.n.dot(r.n))) == 0;
-      if (!r.zero) r.unit = r.n / stable_norm(r.n);
+      Vec3<T> bound = Vec3<T>::Zero();
+      if constexpr (!kIsExact<T>) {
+        auto magnitude = [&](int i, int j) { return Vec3<T>(in.points[i].cwiseAbs() + in.points[j].cwiseAbs()); };
+        bound = cross_error_bound(magnitude(o[1], o[0]), magnitude(o[3], o[2]), 2);
+      }
+      const std::array<Vec3<Exact>, 3> abc{in.exact_points[0], in.exact_points[1], in.exact_points[2]};
+      decide_normal_zero(r, r.n, bound, in.range.relative(), 0, [&] {
+        return Vec3<Exact>(Vec3<Exact>(abc[o[1]] - abc[o[0]]).cross(Vec3<Exact>(abc[o[3]] - abc[o[2]])));
+      });
+      if (r.zero) cross_normal_with_steps(abc, *in.cross, "A", nullptr);
       return r;
     };
     auto report = [p, kappa](const In& in, const NormalPair<T>& n) {
       NumericOut<T> out(p);
-      out.inputs(in.range, /*discrete_exact=*/false);
+      out.inputs(in.range);
       report_normal(out, n);
       warn_condition(out, p, kappa, "Ill-conditioned normal", "the normal's direction");
       return out.take();
     };
-    In in{{}, std::nullopt, {}};
+    In in{{}, std::nullopt, {}, points, order};
     in.points = conv<T>(points, &in.range);
     if (order)
       in.order = std::array<int, 4>{order->first[0] - 'A', order->first[1] - 'A',
@@ -250,6 +332,7 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, cons
       Polygon3<T> points;
       Vec3<T> point, normal;
       InputRange range;
+      Polygon3<Exact> exact_points;  // for the exact zero test and the refusal
     };
     struct Out {
       NormalPair<T> n;
@@ -264,7 +347,9 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, cons
         o.distance = scalar_abs(T(o.n.unit.dot(in.point)));
         return o;
       }
-      o.n = polygon_normal(in.points);
+      o.n = polygon_normal(in.points, in.exact_points, in.range.relative());
+      // A degenerate polygon is refused, as the exact solve refuses it (the same words).
+      if (o.n.zero) polygon_normal_with_steps(in.exact_points, "points", nullptr);
       o.d = o.n.n.dot(in.points[0]);
       // dist = |n̂·p₀|, the same as |d|/‖n‖ without squaring ‖n‖.
       if (!o.n.zero) o.distance = scalar_abs(T(o.n.unit.dot(in.points[0])));
@@ -272,7 +357,7 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, cons
     };
     auto report = [p, kappa](const In& in, const Out& o) {
       NumericOut<T> out(p);
-      out.inputs(in.range, /*discrete_exact=*/false);
+      out.inputs(in.range);
       report_normal(out, o.n);
       out.vector("plane", std::vector<T>{o.n.n(0), o.n.n(1), o.n.n(2), o.d});
       if (o.n.zero)
@@ -284,6 +369,7 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, cons
       return out.take();
     };
     In in;
+    in.exact_points = points;
     in.points = conv<T>(points, &in.range);
     in.point = conv<T>(point, &in.range);
     in.normal = conv<T>(normal, &in.range);
@@ -371,10 +457,10 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
     struct In {
       Polygon3<T> points;
       Vec3<T> eye;
+      T fast_bound{};  // the filter's bound, computed once with the inputs (beside them: one cache line)
       Polygon3<Exact> exact_points;  // for the exact fallback of the facing
       Vec3<Exact> exact_eye;
       InputRange range;
-      T fast_bound{};  // the filter's bound, computed once with the inputs
     };
     auto core = [](const In& in) {
       if constexpr (kIsExact<T>)
@@ -394,7 +480,7 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
       if (f.used_exact) out.exact_decision("facing");
       return out.take();
     };
-    In in{{}, {}, points, eye, {}, {}};
+    In in{{}, {}, {}, points, eye, {}};
     in.points = conv<T>(points, &in.range);
     in.eye = conv<T>(eye, &in.range);
     if constexpr (!kIsExact<T>) in.fast_bound = facing_error_bound_fast(in.points, in.eye);

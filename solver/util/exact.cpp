@@ -28,6 +28,8 @@ using GiNaC::numeric;
 // kTrialLimit the cofactor then has at most two prime factors, so one square test finishes.
 constexpr std::uint64_t kFactorLimit = 1'000'000'000'000'000;  // 10^15
 constexpr std::uint64_t kTrialLimit = 100'000;
+// Above kFactorLimit only divisors below this are tried (radicands are at most kMaxRadicandBits).
+constexpr std::uint64_t kSmallPrimeLimit = 1'000;
 // Radicals beyond these sizes are left as GiNaC holds them (bounded work on hostile input).
 constexpr unsigned kMaxRootIndex = 64;
 constexpr std::uintptr_t kMaxRadicandBits = 4096;
@@ -55,7 +57,28 @@ cln::cl_I int_power(const cln::cl_I& base, unsigned exponent) {
 // Splits the largest index-th power out of m >= 1, or leaves m whole when it is too big to
 // factor quickly.
 RootSplit split_root(const cln::cl_I& m, unsigned index) {
-  if (m >= cln::cl_I(kFactorLimit)) return {1, m};
+  if (m >= cln::cl_I(kFactorLimit)) {
+    // Too big to factor, but the small primes still come out: decimal inputs make radicands of
+    // 2^a·5^b times a little more (√(2·10^63) = 2^32·5^31·√5).
+    cln::cl_I rest = m, coeff = 1, radicand = 1;
+    for (std::uint64_t p = 2; p < kSmallPrimeLimit; p += (p == 2 ? 1 : 2)) {
+      const cln::cl_I divisor(p);
+      unsigned count = 0;
+      while (cln::zerop(cln::mod(rest, divisor))) {
+        rest = cln::exquo(rest, divisor);
+        ++count;
+      }
+      coeff *= int_power(divisor, count / index);
+      radicand *= int_power(divisor, count % index);
+    }
+    if (rest < cln::cl_I(kFactorLimit)) {
+      const RootSplit small = split_root(rest, index);
+      return {coeff * small.coeff, radicand * small.radicand};
+    }
+    cln::cl_I root;
+    if (cln::rootp(rest, index, &root)) return {coeff * root, radicand};
+    return {coeff, radicand * rest};
+  }
   std::uint64_t n = cln::cl_I_to_UQ(m);
   cln::cl_I coeff = 1;
   cln::cl_I radicand = 1;
