@@ -552,5 +552,50 @@ TEST(HardCases, HugeTinyAndSubnormalVectors) {
   EXPECT_TRUE(has_warning(numeric(problem(set, "ill-conditioned-transform"), Precision::Double), "Ill-conditioned"));
 }
 
+// Degenerate input in decimals (collinear points, a triangle edge-on to the view): the exact
+// solve refuses it, and so must every backend, with the same words — rounded, these points give
+// a tiny nonzero normal, D_f or c, and a floating backend used to answer from that noise.
+TEST(HardCases, DegenerateInputIsRefusedInEveryBackendAsTheExactSolveRefusesIt) {
+  const ProblemSet set = load_problem_set_from_string(R"(
+problems:
+  - {id: normal, kind: normal, given: {points: [[0.1, 0.2, 0.3], [0.2, 0.4, 0.6], [0.3, 0.6, 0.9]]}}
+  - {id: plane, kind: plane, given: {points: [[0.1, 0.2, 0.3], [0.2, 0.4, 0.6], [0.3, 0.6, 0.9]]}}
+  - {id: backface, kind: backface, given: {points: [[0.1, 0.2, 0.3], [0.2, 0.4, 0.6], [0.3, 0.6, 0.9]], eye: [1, 0, 0]}}
+  - {id: collinear-depth, kind: depth_at_pixel, given: {triangle: [[0.1, 0.2, 1], [0.2, 0.4, 2], [0.3, 0.6, 3]], pixel: [0.2, 0.4]}}
+  - {id: edge-on-depth, kind: depth_at_pixel, given: {triangle: [[0.1, 0.2, 1], [0.2, 0.4, 2], [0.3, 0.6, 4]], pixel: [0.2, 0.4]}}
+)",
+                                                      "degenerate.yaml");
+  ASSERT_TRUE(set.all_errors().empty());
+  for (const ProblemSpec& spec : set.problems) {
+    const ProblemResult exact = solve_problem(spec, set.file, false);
+    ASSERT_TRUE(exact.error) << spec.id;
+    for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
+      const ProblemResult r = solve_problem(spec, set.file, true, p);
+      ASSERT_TRUE(r.error) << spec.id << " " << to_string(p);
+      EXPECT_EQ(r.error->message, exact.error->message) << spec.id << " " << to_string(p);
+    }
+  }
+  // The refusals name what is wrong.
+  EXPECT_NE(solve_problem(set.problems[4], set.file, false).error->message.find("edge-on"), std::string::npos);
+}
+
+// Parallel decimal vectors have no unit normal in any backend.
+TEST(HardCases, ParallelDecimalVectorsHaveNoUnitNormalInAnyBackend) {
+  const ProblemSet set = load_problem_set_from_string(R"(
+problems:
+  - {id: v, kind: vectors, given: {a: [0.1, 0.2, 0.3], b: [0.3, 0.6, 0.9]}}
+  - {id: w, kind: vectors, given: {a: [0.7, -0.1, 0.3], b: [-2.1, 0.3, -0.9]}}
+)",
+                                                      "parallel.yaml");
+  for (const ProblemSpec& spec : set.problems)
+    for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble}) {
+      const ProblemResult r = solve_problem(spec, set.file, true, p);
+      ASSERT_FALSE(r.error) << spec.id;
+      const Value* unit = r.answers.find("unit_normal");
+      ASSERT_NE(unit, nullptr);
+      EXPECT_EQ(unit->shape, Value::Shape::Null) << spec.id << " " << to_string(p);
+    }
+}
+
 }  // namespace
 }  // namespace frustum

@@ -163,9 +163,7 @@ struct DepthAtPixel {
     const Exact& a = plane[0];
     const Exact& b = plane[1];
     const Exact& c = plane[2];
-    if (c.is_zero())
-      throw DomainError("triangle", "the triangle is edge-on (c = 0 in ax + by + cz = d): its "
-                                    "plane has no single z above a pixel");
+    if (c.is_zero()) refuse_edge_on_triangle("triangle");
     const Exact z = canonical((plane[3] - a * g.pixel(0) - b * g.pixel(1)) / c);
     out.set("z", Value::scalar(z));
     if (steps) {

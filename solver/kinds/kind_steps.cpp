@@ -190,6 +190,11 @@ Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>
   return to - from;
 }
 
+void refuse_edge_on_triangle(const std::string& field) {
+  throw DomainError(field, "the triangle is edge-on (c = 0 in ax + by + cz = d): its plane has no single z "
+                           "above a pixel");
+}
+
 Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const CrossOrder& order,
                                     const std::string& field, Derivation* steps) {
   const Vec3<Exact> u = named_edge(order.first, abc), v = named_edge(order.second, abc);

@@ -71,6 +71,10 @@ CrossOrder read_cross(GivenReader& r, const std::string& key, CrossOrder fallbac
 Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>& abc);
 
 // n = first × second with its steps ("AC = C − A = (0, 3, 3)" ...).
+// Refuses a triangle whose plane is parallel to the z axis (c = 0 in ax + by + cz = d): no single
+// depth above a pixel. Shared by the exact and numeric solves of depth_at_pixel.
+[[noreturn]] void refuse_edge_on_triangle(const std::string& field);
+
 Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const CrossOrder& order,
                                     const std::string& field, Derivation* steps);
 

@@ -392,9 +392,10 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
       Vec2<T> pixel;
       std::array<int, 4> order;
       bool barycentric;
-      std::array<Vec3<Exact>, 3> exact_t;  // for the exact fallback of `inside`
+      std::array<Vec3<Exact>, 3> exact_t;  // for the exact fallback of `inside` and of c = 0
       Vec2<Exact> exact_pixel;
       InputRange range;
+      CrossOrder cross;
     };
     struct Out {
       PlaneDepth<T> depth;
@@ -403,6 +404,15 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
     };
     auto core = [](const In& in) {
       Out o;
+      // Edge-on (c = 0) is a discrete answer too: c = ±E(A, B, C) over x and y, decided like the
+      // edge signs; such a triangle is refused, as the exact solve refuses it (the same words).
+      const SignDecision c = edge_sign(in.t[0], in.t[1], Vec2<T>(in.t[2].x(), in.t[2].y()), in.exact_t[0],
+                                       in.exact_t[1], Vec2<Exact>(in.exact_t[2].x(), in.exact_t[2].y()),
+                                       in.range.relative());
+      if (c.sign == 0) {
+        cross_normal_with_steps(in.exact_t, in.cross, "triangle", nullptr);  // refuses a collinear one
+        refuse_edge_on_triangle("triangle");
+      }
       const Vec3<T> first = in.t[in.order[1]] - in.t[in.order[0]];
       const Vec3<T> second = in.t[in.order[3]] - in.t[in.order[2]];
       o.depth = plane_depth(in.t, first, second, in.pixel, in.barycentric);
@@ -443,7 +453,7 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
     };
     const std::array<int, 4> o{order.first[0] - 'A', order.first[1] - 'A', order.second[0] - 'A',
                                order.second[1] - 'A'};
-    In in{{}, {}, o, fallback, triangle, pixel, {}};
+    In in{{}, {}, o, fallback, triangle, pixel, {}, order};
     for (int k = 0; k < 3; ++k) in.t[k] = conv<T>(triangle[k], &in.range);
     in.pixel = conv<T>(pixel, &in.range);
     return prepare(std::move(in), core, report);
@@ -465,8 +475,14 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
     auto core = [](const In& in) {
       if constexpr (kIsExact<T>)
         return facing(in.points, in.eye, in.exact_points, in.exact_eye, true, T(0));
-      else
-        return facing(in.points, in.eye, in.exact_points, in.exact_eye, in.range.relative(), in.fast_bound);
+      else {
+        const Facing<T> f =
+            facing(in.points, in.eye, in.exact_points, in.exact_eye, in.range.relative(), in.fast_bound);
+        // D_f exactly 0 may mean a degenerate polygon, which is refused as the exact solve
+        // refuses it (the same words); checked only after an exact decision.
+        if (f.used_exact && f.sign == 0) polygon_normal_with_steps(in.exact_points, "points", nullptr);
+        return f;
+      }
     };
     auto report = [p, kappa](const In& in, const Facing<T>& f) {
       NumericOut<T> out(p);
