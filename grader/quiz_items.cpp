@@ -42,8 +42,9 @@ std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAns
 
 // A given that is the problem's key (AnswerKind::Statements: each statement's truth).
 bool given_is_key(const ProblemSpec& p) {
-  return p.info && std::any_of(p.info->answers.begin(), p.info->answers.end(),
-                               [](const AnswerSpec& a) { return a.kind == AnswerKind::Statements; });
+  return p.info &&
+         std::any_of(p.info->answers.begin(), p.info->answers.end(),
+                     [](const AnswerSpec& a) { return a.kind == AnswerKind::Statements; });
 }
 
 // The fields of one answer, or the reason it cannot be a quiz field.
@@ -121,13 +122,23 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
 
 }  // namespace
 
+std::vector<std::string> statement_texts(const ProblemSpec& p) {
+  std::vector<std::string> out;
+  const YAML::Node statements = given_is_key(p) ? p.given_node["statements"] : YAML::Node();
+  if (statements.IsSequence())
+    for (const YAML::Node& s : statements) out.push_back(s["text"] ? s["text"].Scalar() : "");
+  return out;
+}
+
 QuizField statement_checkboxes(const ProblemSpec& p, const Value& key) {
   QuizField f;
   f.type = QuizField::Type::Checkboxes;
   const YAML::Node statements = p.given_node["statements"];
+  f.choices = statement_texts(p);
+  f.choices.resize(key.entries.size());
   for (std::size_t i = 0; i < key.entries.size(); ++i) {
-    const YAML::Node s = statements.IsSequence() && i < statements.size() ? statements[i] : YAML::Node();
-    f.choices.push_back(s["text"] ? s["text"].Scalar() : std::to_string(i + 1));
+    const YAML::Node s =
+        statements.IsSequence() && i < statements.size() ? statements[i] : YAML::Node();
     f.reasons.push_back(s["reason"] ? s["reason"].Scalar() : "");
     f.right.push_back(key.entries[i].second == "true");
     if (f.right.back()) f.correct += (f.correct.empty() ? "" : ", ") + std::to_string(i + 1);

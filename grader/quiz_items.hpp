@@ -59,6 +59,10 @@ std::string question_text(const ProblemSet& set, const ProblemSpec& problem);
 // is its key (the truths of `statements`), which students must not see.
 std::vector<std::string> given_lines(const ProblemSpec& problem);
 
+// The statements of a `statements` problem as students read them (never their truths); empty
+// for any other problem.
+std::vector<std::string> statement_texts(const ProblemSpec& problem);
+
 // One checkbox per statement of a `statements` problem: its text, its truth in `key` (the
 // answer true_statements), and its reason.
 QuizField statement_checkboxes(const ProblemSpec& problem, const Value& key);

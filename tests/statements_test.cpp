@@ -10,6 +10,7 @@
 #include "grader/export_qti.hpp"
 #include "grader/grade.hpp"
 #include "grader/gradescope.hpp"
+#include "grader/paper.hpp"
 #include "grader/quiz_items.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
@@ -248,6 +249,22 @@ TEST(Statements, PrairieLearnExportIsACheckboxGradedByFrustum) {
   EXPECT_NE(files.at("server.py").find("\\\"true_statements\\\":\\\"checkbox\\\""),
             std::string::npos)
       << files.at("server.py");
+}
+
+// On a paper exam the statements are listed, numbered, and their truths are not.
+TEST(Statements, PaperExamListsTheStatementsNotTheKey) {
+  ProblemSet set = load_problem_set(test::source_path(kSeed003));
+  const std::string exam = exam_sheets_latex({{"s1", set}}, "Seed 3");
+  EXPECT_NE(exam.find("\\begin{enumerate}\n\\item 1つの凸多面体の陰面消去には"), std::string::npos)
+      << exam;
+  EXPECT_NE(exam.find("\\item 凹多面体を描画する場合はバックフェースカリングを使うべきではない."),
+            std::string::npos);
+  EXPECT_EQ(exam.find("truth"), std::string::npos);
+  EXPECT_EQ(exam.find("頂点ではなく"), std::string::npos) << "no reason on the exam";
+  EXPECT_EQ(exam.find("\\begin{itemize}\\setlength{\\itemsep}{0pt}\n\\end{itemize}"),
+            std::string::npos);
+  const std::string key = answer_key_latex({{"s1", set}}, "Seed 3");
+  EXPECT_NE(key.find("1\\,\\bigcirc,\\; 2\\,\\times"), std::string::npos) << key;
 }
 
 TEST(Statements, GradescopeScoresPerStatement) {
