@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <random>
 
 #include "grader/export_moodle.hpp"
 #include "grader/export_prairielearn.hpp"
@@ -12,6 +13,7 @@
 #include "grader/gradescope.hpp"
 #include "grader/paper.hpp"
 #include "grader/quiz_items.hpp"
+#include "grader/statement_choice.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/kinds/registry.hpp"
@@ -249,6 +251,62 @@ TEST(Statements, PrairieLearnExportIsACheckboxGradedByFrustum) {
   EXPECT_NE(files.at("server.py").find("\\\"true_statements\\\":\\\"checkbox\\\""),
             std::string::npos)
       << files.at("server.py");
+}
+
+// Over many keys and answers: the numbers and the truths say the same; order and repeats do
+// not matter; full marks exactly for the key; nothing for a constant answer; the credit is
+// +1/T per true statement ticked and −1/F per false one, within [0, 1].
+TEST(Statements, CreditPropertiesOverManyKeysAndAnswers) {
+  std::mt19937 rng(16);
+  for (int round = 0; round < 3000; ++round) {
+    const std::size_t n = 1 + rng() % 8;
+    std::vector<std::pair<std::string, std::string>> entries;
+    std::vector<bool> truth(n), ticked(n);
+    std::size_t trues = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      truth[i] = rng() % 2;
+      ticked[i] = rng() % 2;
+      trues += truth[i];
+      entries.emplace_back(std::to_string(i + 1), truth[i] ? "true" : "false");
+    }
+    const Value key = Value::word_map(entries);
+    YAML::Node numbers(YAML::NodeType::Sequence), truths(YAML::NodeType::Sequence);
+    std::size_t a = 0, b = 0;
+    for (std::size_t i = n; i-- > 0;)  // backwards, with repeats
+      if (ticked[i]) {
+        numbers.push_back(std::to_string(i + 1));
+        if (rng() % 3 == 0) numbers.push_back(std::to_string(i + 1));
+      }
+    for (std::size_t i = 0; i < n; ++i) {
+      truths.push_back(ticked[i] ? "○" : "×");
+      a += ticked[i] && truth[i];
+      b += ticked[i] && !truth[i];
+    }
+    const StatementChoice by_number = read_statement_choice(numbers),
+                          by_truth = read_statement_choice(truths);
+    ASSERT_EQ(by_number.error, "");
+    ASSERT_EQ(by_truth.error, "");
+    const Comparison c = compare_statement_choice(key, by_number.value);
+    const Comparison d = compare_statement_choice(key, by_truth.value);
+    EXPECT_EQ(c.verdict, d.verdict);
+    EXPECT_DOUBLE_EQ(c.credit, d.credit);
+    const std::size_t falses = n - trues;
+    const double expected = std::max(0.0, (trues ? double(a) / double(trues) : 1.0) -
+                                              (falses ? double(b) / double(falses) : 0.0));
+    EXPECT_NEAR(c.credit, expected, 1e-12);
+    EXPECT_EQ(c.verdict == Verdict::Correct, ticked == truth);
+    EXPECT_EQ(c.verdict == Verdict::Correct, c.credit == 1.0);
+    EXPECT_GE(c.credit, 0.0);
+    // Constant answers ("none", "all") earn nothing unless they are the key.
+    if (trues > 0) {
+      EXPECT_EQ(compare_statement_choice(key, Value::null()).credit, 0.0);
+    }
+    if (falses > 0) {
+      std::vector<std::string> all;
+      for (std::size_t i = 0; i < n; ++i) all.push_back(std::to_string(i + 1));
+      EXPECT_EQ(compare_statement_choice(key, Value::word_list(all)).credit, 0.0);
+    }
+  }
 }
 
 // On a paper exam the statements are listed, numbered, and their truths are not.
