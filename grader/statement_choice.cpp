@@ -186,8 +186,10 @@ Comparison compare_statement_choice(const Value& expected, const Value& got) {
     right_chosen += chosen[i] && truth[i];
     wrong_chosen += chosen[i] && !truth[i];
     if (chosen[i] != truth[i])
-      why += fmt::format("{}Statement {} is {}, not {}.", why.empty() ? "" : " ", i + 1,
-                         truth[i] ? "true" : "false", truth[i] ? "false" : "true");
+      // The kind derives statement k in step k (it states no conventions before them).
+      why +=
+          fmt::format("{}Statement {} is {}, not {} (see step {}).", why.empty() ? "" : " ",
+                      i + 1, truth[i] ? "true" : "false", truth[i] ? "false" : "true", i + 1);
   }
   if (why.empty()) return judged(Verdict::Correct, 1, "");
   // Each true statement chosen earns 1/T, each false one chosen costs 1/F.
@@ -196,7 +198,6 @@ Comparison compare_statement_choice(const Value& expected, const Value& got) {
   const double lost =
       falses ? static_cast<double>(wrong_chosen) / static_cast<double>(falses) : 0.0;
   const double credit = std::max(0.0, earned - lost);
-  why += " The reason for each statement is in the derivation.";
   if (trues && falses)
     why += fmt::format(
         " You chose {} of the {} true statements and {} of the {} false ones. Each true statement "

@@ -63,7 +63,7 @@ TEST(Seed003, CullingStatementsKeyIsOneTrueThreeFalse) {
   const AnswerGrade& half = graded(set, "[1, 3]");
   EXPECT_EQ(half.verdict, Verdict::Partial);
   EXPECT_NEAR(half.score, 2.0 / 3.0, 1e-12);
-  EXPECT_NE(half.feedback.find("Statement 3 is false, not true."), std::string::npos)
+  EXPECT_NE(half.feedback.find("Statement 3 is false, not true (see step 3)."), std::string::npos)
       << half.feedback;
   // The wrong answer comes with the derivation that holds the reasons.
   ASSERT_FALSE(half.derivation.empty());
@@ -337,7 +337,7 @@ TEST(Statements, GradescopeScoresPerStatement) {
     if (t["name"].get<std::string>().find(kId) != std::string::npos) {
       found = true;
       EXPECT_NEAR(t["score"].get<double>(), 2.0 / 3.0, 1e-9);
-      EXPECT_NE(t["output"].get<std::string>().find("記述 2 は誤り (×). 正しい (○) ではない."),
+      EXPECT_NE(t["output"].get<std::string>().find("記述 2 は誤り (×). 正しい (○) ではない (ステップ 2 参照)."),
                 std::string::npos)
           << t["output"];
     }
