@@ -76,7 +76,7 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
       break;
     case QuizField::Type::Checkboxes:
       // Canvas's multiple-answers question: right when exactly the right boxes are ticked
-      // (Canvas scores partial selections itself).
+      // (Canvas scores partial selections by its own setting, not Frustum's 1/T and 1/F).
       out += metadata("multiple_answers_question", points);
       presentation +=
           "          <response_lid ident=\"response1\" rcardinality=\"Multiple\"><render_choice>";

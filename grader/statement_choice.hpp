@@ -2,7 +2,7 @@
 // write the numbers of the true statements ([1, 3], "1, 3", 1; [] or none for none; order and
 // repeats do not matter), one truth per statement ([true, false, false, false], ○×××, はい/いいえ,
 // да/нет), or a mapping {1: true, 2: false, …} (the form of the answer keys Frustum writes).
-// Each statement is part of the mark, as quiz platforms score multiple answers: every true
+// Each statement is part of the mark, as Moodle scores a multiple-answer question: every true
 // statement chosen earns 1/T of the points and every false one chosen costs 1/F (T true and F
 // false statements), never below 0 — so no constant answer ("none", "all") earns anything.
 #pragma once
