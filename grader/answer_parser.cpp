@@ -1,9 +1,12 @@
 #include "grader/answer_parser.hpp"
 
+#include "grader/statement_choice.hpp"
+
 #include "solver/derivation/i18n.hpp"
 
 #include "solver/util/expression.hpp"
 #include "solver/util/work_budget.hpp"
+#include "solver/util/words.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -28,32 +31,6 @@ const std::vector<std::pair<std::string, bool>> kBoolWords = {
     {"true", true},  {"yes", true},  {"y", true},  {"t", true},  {"1", true},  {"はい", true},
     {"○", true},     {"〇", true},   {"false", false}, {"no", false}, {"n", false}, {"f", false},
     {"0", false},    {"いいえ", false}, {"×", false}, {"✕", false}};
-
-// Trimmed, with Latin and Cyrillic capitals lowered (a Russian student may write "Да").
-std::string trim_lower(std::string s) {
-  const auto not_space = [](unsigned char c) { return !std::isspace(c); };
-  s.erase(s.begin(), std::find_if(s.begin(), s.end(), not_space));
-  s.erase(std::find_if(s.rbegin(), s.rend(), not_space).base(), s.end());
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c < 128) {
-      s[i] = static_cast<char>(std::tolower(c));
-    } else if (c == 0xD0 && i + 1 < s.size()) {  // U+0400–U+043F
-      const auto d = static_cast<unsigned char>(s[i + 1]);
-      if (d >= 0x90 && d <= 0x9F) {  // А–П → а–п
-        s[i + 1] = static_cast<char>(d + 0x20);
-      } else if (d >= 0xA0 && d <= 0xAF) {  // Р–Я → р–я
-        s[i] = static_cast<char>(0xD1);
-        s[i + 1] = static_cast<char>(d - 0x20);
-      } else if (d == 0x81) {  // Ё → ё
-        s[i] = static_cast<char>(0xD1);
-        s[i + 1] = static_cast<char>(0x91);
-      }
-      ++i;
-    }
-  }
-  return s;
-}
 
 // The word a student wrote, as one of `candidates` when it is one of them in English, a listed
 // synonym, or the Japanese or Russian word the derivations print for it (what the key shows a
@@ -449,6 +426,15 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
         return p;
       }
       p.value = Value::word_list(words);
+      break;
+    }
+    case AnswerKind::Statements: {
+      StatementChoice c = read_statement_choice(node);
+      if (!c.error.empty()) {
+        p.error = c.error;
+        return p;
+      }
+      p.value = std::move(c.value);
       break;
     }
     case AnswerKind::WordMap: {

@@ -1,5 +1,7 @@
 #include "grader/compare.hpp"
 
+#include "grader/statement_choice.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -367,6 +369,8 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
   if (got.shape == Value::Shape::Null && expected.shape == Value::Shape::WordList &&
       expected.words.empty())
     return correct("there are none");
+  // "none" chooses no statement.
+  if (r.spec->kind == AnswerKind::Statements) return compare_statement_choice(expected, got);
   if (got.shape == Value::Shape::Null) return incorrect("there is a value here");
   switch (r.spec->kind) {
     case AnswerKind::Scalar: {
@@ -473,6 +477,8 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
     }
     case AnswerKind::WordMap:
       return compare_word_map(expected, got);
+    case AnswerKind::Statements:
+      return compare_statement_choice(expected, got);
     case AnswerKind::Polygon: {
       // The same vertex cycle, starting anywhere (orientation must match).
       const auto e = rows_of(expected), g = rows_of(got);

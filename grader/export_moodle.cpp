@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "grader/xml_text.hpp"
@@ -20,6 +21,15 @@ std::string cloze_literal(const std::string& s) {
   return out;
 }
 
+// Moodle's grade of one ticked box in a multiple-answer question: each right choice earns
+// 100/T percent, each wrong one costs 100/F (T right and F wrong choices), as `frustum grade`
+// scores it; Moodle's XML import takes the nearest grade it offers.
+std::string box_fraction(const QuizField& f, std::size_t i) {
+  const auto right = static_cast<double>(std::count(f.right.begin(), f.right.end(), true));
+  const double wrong = static_cast<double>(f.right.size()) - right;
+  return fmt::format("{:.5g}", f.right[i] ? 100 / right : -100 / wrong);
+}
+
 // One Cloze field; its weight is the field's share of the answer's points (integers in Cloze:
 // the points scaled by the fields' common denominator, at most 1000).
 std::string cloze_field(const QuizField& f, int weight) {
@@ -33,6 +43,12 @@ std::string cloze_field(const QuizField& f, int weight) {
              cloze_literal(f.choices[i]);
       return s + "}";
     }
+    case QuizField::Type::Checkboxes: {
+      std::string s = fmt::format("{{{}:MULTIRESPONSE:", weight);
+      for (std::size_t i = 0; i < f.choices.size(); ++i)
+        s += (i ? "~%" : "%") + box_fraction(f, i) + "%" + cloze_literal(f.choices[i]);
+      return s + "}";
+    }
     case QuizField::Type::Text: {
       std::string answers = "=" + cloze_literal(f.correct);
       for (const std::string& also : f.also) answers += "~=" + cloze_literal(also);
@@ -40,6 +56,33 @@ std::string cloze_field(const QuizField& f, int weight) {
     }
   }
   return {};
+}
+
+// A question whose one answer is a set of checkboxes, as Moodle's own multiple-answer question
+// (multichoice, single = false): the statements numbered 1, 2, … in the set's order, each with
+// its reason as the choice's feedback.
+std::string multichoice_question(const QuizQuestion& q, const std::string& name) {
+  const QuizAnswer& a = q.answers[0];
+  const QuizField& f = a.fields[0];
+  std::string out = "  <question type=\"multichoice\">\n";
+  out += "    <name><text>" + xml_escape(name) + "</text></name>\n";
+  out += "    <questiontext format=\"html\"><text><![CDATA[<p>" + xml_escape(q.text) +
+         "</p>]]></text></questiontext>\n";
+  out += "    <generalfeedback format=\"html\"><text></text></generalfeedback>\n";
+  out += fmt::format("    <defaultgrade>{}</defaultgrade>\n", a.points);
+  out += "    <penalty>0</penalty>\n    <hidden>0</hidden>\n";
+  out += "    <single>false</single>\n    <shuffleanswers>false</shuffleanswers>\n";
+  out += "    <answernumbering>123</answernumbering>\n";
+  for (std::size_t i = 0; i < f.choices.size(); ++i)
+    out += "    <answer fraction=\"" + box_fraction(f, i) + "\" format=\"html\"><text><![CDATA[" +
+           xml_escape(f.choices[i]) + "]]></text><feedback format=\"html\"><text><![CDATA[" +
+           xml_escape(f.reasons[i]) + "]]></text></feedback></answer>\n";
+  return out + "  </question>\n";
+}
+
+bool only_checkboxes(const QuizQuestion& q) {
+  return q.answers.size() == 1 && q.answers[0].fields.size() == 1 &&
+         q.answers[0].fields[0].type == QuizField::Type::Checkboxes && q.left_out.empty();
 }
 
 std::string cloze_question(const QuizQuestion& q, const std::string& name) {
@@ -82,7 +125,8 @@ std::string export_moodle(const std::vector<QuizVariant>& variants, const std::s
     for (const QuizVariant& v : variants)
       for (const QuizQuestion& q : v.questions)
         if (q.id == id && !q.answers.empty())
-          questions += cloze_question(q, v.name.empty() ? id : id + " " + v.name);
+          questions += (only_checkboxes(q) ? multichoice_question : cloze_question)(
+              q, v.name.empty() ? id : id + " " + v.name);
     if (questions.empty()) continue;  // nothing in it a Cloze field can check
     out += "  <question type=\"category\">\n    <category><text>$course$/top/" +
            xml_escape(category) + "/" + xml_escape(id) + "</text></category>\n  </question>\n" +

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 
@@ -40,9 +41,27 @@ std::string file_part(const std::string& s) {
   return out;
 }
 
-std::string input_html(const AnswerSpec& spec) {
+// Which statements are true, as checkboxes in the set's order, each numbered as in the set
+// (frustum-pl-grade reads the ticked ones back by these numbers); a blank submission is "none".
+std::string checkbox_html(const std::string& name, const ProblemSpec& p) {
+  const ProblemResult solved = solve_problem(p, "", false);
+  const Value* key = solved.error ? nullptr : solved.answers.find(name);
+  const QuizField f = key ? statement_checkboxes(p, *key) : QuizField{};
+  const bool none_true = std::find(f.right.begin(), f.right.end(), true) == f.right.end();
+  std::string s = fmt::format(
+      "<p>{}:</p>\n<pl-checkbox answers-name=\"{}\" fixed-order=\"true\" allow-blank=\"true\" "
+      "hide-letter-keys=\"true\"{}>\n",
+      name, name, none_true ? " min-correct=\"0\"" : "");
+  for (std::size_t i = 0; i < f.choices.size(); ++i)
+    s += fmt::format("  <pl-answer correct=\"{}\">{}. {}</pl-answer>\n", f.right[i] ? "true" : "false",
+                     i + 1, xml_escape(f.choices[i]));
+  return s + "</pl-checkbox>";
+}
+
+std::string input_html(const AnswerSpec& spec, const ProblemSpec& p) {
   const std::string name = xml_escape(spec.name);
   const std::string input = prairielearn_input(spec);
+  if (input == "checkbox") return checkbox_html(name, p);
   if (input == "number")
     return fmt::format(
         "<pl-number-input answers-name=\"{0}\" label=\"\\({0} =\\)\" "
@@ -101,6 +120,8 @@ std::string prairielearn_input(const AnswerSpec& spec) {
     case AnswerKind::Bool:
     case AnswerKind::Category:
       return "choice";
+    case AnswerKind::Statements:
+      return "checkbox";
     default:
       return "string";
   }
@@ -167,7 +188,7 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
         "<pl-question-panel>\n  <p>{{params.text}}</p>\n  "
         "<pre>{{params.given}}</pre>\n</pl-question-panel>\n\n";
     for (const std::string& name : p.ask)
-      if (const AnswerSpec* spec = p.info->answer(name)) html += input_html(*spec) + "\n\n";
+      if (const AnswerSpec* spec = p.info->answer(name)) html += input_html(*spec, p) + "\n\n";
     html +=
         "<pl-submission-panel>\n  "
         "<pl-external-grader-results></pl-external-grader-results>\n</pl-submission-panel>\n";

@@ -74,6 +74,23 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
         if (f.choices[i] == f.correct)
           condition = fmt::format("<varequal respident=\"response1\">c{}</varequal>", i);
       break;
+    case QuizField::Type::Checkboxes:
+      // Canvas's multiple-answers question: right when exactly the right boxes are ticked
+      // (Canvas scores partial selections by its own setting, not Frustum's 1/T and 1/F).
+      out += metadata("multiple_answers_question", points);
+      presentation +=
+          "          <response_lid ident=\"response1\" rcardinality=\"Multiple\"><render_choice>";
+      for (std::size_t i = 0; i < f.choices.size(); ++i) {
+        presentation += fmt::format(
+            "<response_label ident=\"c{}\"><material><mattext "
+            "texttype=\"text/plain\">{}. {}</mattext></material></response_label>",
+            i, i + 1, xml_escape(f.choices[i]));
+        const std::string ticked = fmt::format("<varequal respident=\"response1\">c{}</varequal>", i);
+        condition += f.right[i] ? ticked : "<not>" + ticked + "</not>";
+      }
+      presentation += "</render_choice></response_lid>\n";
+      condition = "<and>" + condition + "</and>";
+      break;
     case QuizField::Type::Text:
       out += metadata("short_answer_question", points);
       presentation +=

@@ -56,10 +56,18 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
       out += fmt::format("\\subsection*{{{}. \\normalfont\\small({})}}\n", ++n,
                          points_text(p.max_score()));
       out += latex_prose(question_text(s.set, p)) + "\n\n";
-      out += "\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
-      for (const std::string& line : given_lines(p))
-        out += "\\item \\texttt{" + latex_prose(line) + "}\n";
-      out += "\\end{itemize}\n";
+      // An empty itemize does not compile (a statements problem shows no given).
+      if (const std::vector<std::string> lines = given_lines(p); !lines.empty()) {
+        out += "\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
+        for (const std::string& line : lines) out += "\\item \\texttt{" + latex_prose(line) + "}\n";
+        out += "\\end{itemize}\n";
+      }
+      // Which statements are true: the statements numbered, never their truths.
+      if (const std::vector<std::string> statements = statement_texts(p); !statements.empty()) {
+        out += "\\begin{enumerate}\n";
+        for (const std::string& text : statements) out += "\\item " + latex_prose(text) + "\n";
+        out += "\\end{enumerate}\n";
+      }
       if (const auto figure = tikz_figure(p))
         out += "\\begin{center}\n" + *figure + "\\end{center}\n";
       for (const std::string& name : p.ask)

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "grader/export_tolerance.hpp"
@@ -28,6 +29,22 @@ std::vector<QuizField> numbers(const Value& v, const std::vector<double>& window
     out.push_back(f);
   }
   return out;
+}
+
+std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAnswer& a) {
+  const QuizField f = statement_checkboxes(p, expected);
+  if (std::find(f.right.begin(), f.right.end(), true) == f.right.end())
+    return "no statement is true, and a checkbox question needs a right choice";
+  a.prompt = "the true statements";
+  a.fields = {f};
+  return {};
+}
+
+// A given that is the problem's key (AnswerKind::Statements: each statement's truth).
+bool given_is_key(const ProblemSpec& p) {
+  return p.info &&
+         std::any_of(p.info->answers.begin(), p.info->answers.end(),
+                     [](const AnswerSpec& a) { return a.kind == AnswerKind::Statements; });
 }
 
 // The fields of one answer, or the reason it cannot be a quiz field.
@@ -97,11 +114,37 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
       return "a set of labels is right in any order";
     case AnswerKind::Sequence:
       return "an order of labels has no quiz field";
+    case AnswerKind::Statements:
+      return statement_boxes(p, expected, a);
   }
   return "no quiz field fits it";
 }
 
 }  // namespace
+
+std::vector<std::string> statement_texts(const ProblemSpec& p) {
+  std::vector<std::string> out;
+  const YAML::Node statements = given_is_key(p) ? p.given_node["statements"] : YAML::Node();
+  if (statements.IsSequence())
+    for (const YAML::Node& s : statements) out.push_back(s["text"] ? s["text"].Scalar() : "");
+  return out;
+}
+
+QuizField statement_checkboxes(const ProblemSpec& p, const Value& key) {
+  QuizField f;
+  f.type = QuizField::Type::Checkboxes;
+  const YAML::Node statements = p.given_node["statements"];
+  f.choices = statement_texts(p);
+  f.choices.resize(key.entries.size());
+  for (std::size_t i = 0; i < key.entries.size(); ++i) {
+    const YAML::Node s =
+        statements.IsSequence() && i < statements.size() ? statements[i] : YAML::Node();
+    f.reasons.push_back(s["reason"] ? s["reason"].Scalar() : "");
+    f.right.push_back(key.entries[i].second == "true");
+    if (f.right.back()) f.correct += (f.correct.empty() ? "" : ", ") + std::to_string(i + 1);
+  }
+  return f;
+}
 
 std::string question_text(const ProblemSet& set, const ProblemSpec& p) {
   if (p.text.empty()) return p.info ? p.info->summary : p.kind;
@@ -113,7 +156,7 @@ std::string question_text(const ProblemSet& set, const ProblemSpec& p) {
 
 std::vector<std::string> given_lines(const ProblemSpec& p) {
   std::vector<std::string> out;
-  if (p.given_node.IsMap())
+  if (p.given_node.IsMap() && !given_is_key(p))
     for (auto it = p.given_node.begin(); it != p.given_node.end(); ++it)
       out.push_back(it->first.as<std::string>() + ": " + emit_flow(it->second));
   return out;

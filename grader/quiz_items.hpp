@@ -14,14 +14,19 @@
 namespace frustum {
 
 struct QuizField {
-  enum class Type { Number, Choice, Text };
+  // Checkboxes: several choices may be right (which statements are true), each ticked one
+  // scored as the platform scores multiple answers.
+  enum class Type { Number, Choice, Text, Checkboxes };
   Type type = Type::Number;
   std::string label;                 // "x", "row 2, column 3"; empty for a single field
   double value = 0;                  // Number
   double window = 0;                 // Number: accepted half-width
   std::vector<std::string> choices;  // Choice
-  std::string correct;               // Choice and Text: the right word or text
+  std::string correct;               // Choice and Text: the right word or text; Checkboxes: the
+                                     // right choices' numbers ("1, 3"), as a student writes them
   std::vector<std::string> also;     // Text: other spellings `frustum grade` accepts as right
+  std::vector<bool> right;           // Checkboxes: which choices are right
+  std::vector<std::string> reasons;  // Checkboxes: why each choice is right or wrong ("" if none)
 };
 
 struct QuizAnswer {
@@ -50,8 +55,17 @@ struct QuizVariant {
 // has none). A drawn variant whose text names no field adds that the values are those given
 // below, since such a text may quote the template's numbers.
 std::string question_text(const ProblemSet& set, const ProblemSpec& problem);
-// The given fields as "name: value" lines (YAML flow values).
+// The given fields as "name: value" lines (YAML flow values); none for a problem whose given
+// is its key (the truths of `statements`), which students must not see.
 std::vector<std::string> given_lines(const ProblemSpec& problem);
+
+// The statements of a `statements` problem as students read them (never their truths); empty
+// for any other problem.
+std::vector<std::string> statement_texts(const ProblemSpec& problem);
+
+// One checkbox per statement of a `statements` problem: its text, its truth in `key` (the
+// answer true_statements), and its reason.
+QuizField statement_checkboxes(const ProblemSpec& problem, const Value& key);
 
 // The questions of a set (a generated variant, or a set with fixed givens), solved exactly.
 // Problems that do not solve are left out (quiz_questions never throws for them).

@@ -227,6 +227,12 @@ constexpr Phrase kPhrases[] = {
     {"yes: the point is visible", "はい: 点は見える", "да: точка видна"},
     {"degrees", "度", "градусах"},
     {"radians", "ラジアン", "радианах"},
+    // statements: which of the given statements are true (○/× as the lecture marks them).
+    {"Statement {0}: {1}", "記述 {0}: {1}", "Утверждение {0}: {1}"},
+    {"The true statements", "正しい記述", "Верные утверждения"},
+    {"Reason: {0}", "理由: {0}", "Обоснование: {0}"},
+    {"True", "正しい", "верно"},
+    {"False", "誤り", "неверно"},
 };
 
 }  // namespace

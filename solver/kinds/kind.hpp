@@ -43,7 +43,9 @@ enum class AnswerKind {
   WordList,    // an unordered set of words (edge lists)
   Sequence,    // an ordered list of words (a drawing order)
   Polygon,     // vertex list up to cyclic rotation
-  BitString    // outcodes
+  BitString,   // outcodes
+  Statements   // which numbered statements are true: their numbers, or one true/false each;
+               // credit per statement (grader/statement_choice.hpp)
 };
 
 // How finely a numeric answer is judged, per component (docs/grading.md §2): `magnitude` is
@@ -121,6 +123,9 @@ struct KindInfo {
   // The conventions the answers depend on, stated in the derivation's first step (K::kUses;
   // default: all of them).
   ConventionUse uses;
+  // Nothing to draw (K::kFixed): the instructor's own statements and key. Variants keep such a
+  // problem as written, and `vary:` on it is an error.
+  bool fixed = false;
 
   const AnswerSpec* answer(const std::string& name) const;
 };
@@ -159,6 +164,7 @@ KindInfo make_kind() {
   if constexpr (requires(const G& g) { K::drawable(g); })
     k.drawable = [](const std::any& g) { return K::drawable(std::any_cast<const G&>(g)); };
   if constexpr (requires { K::kUses; }) k.uses = K::kUses;
+  if constexpr (requires { K::kFixed; }) k.fixed = K::kFixed;
   return k;
 }
 

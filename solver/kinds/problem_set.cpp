@@ -136,6 +136,9 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
     }
   // Variation (generate.hpp): `vary`, `nice: true`, `difficulty: normal|hard`.
   if (p["vary"].IsDefined() && !p["vary"].IsNull()) spec.vary = p["vary"];
+  if (p["vary"].IsDefined() && !p["vary"].IsNull() && spec.info->fixed)
+    fail_at(p["vary"], file, spec.field + ".vary",
+            spec.kind + " has nothing to vary: every variant keeps it as written");
   if (p["nice"].IsDefined()) {
     const std::string v = read_string(p["nice"], file, spec.field + ".nice");
     if (v != "true" && v != "false") fail_at(p["nice"], file, spec.field + ".nice", "must be true or false");

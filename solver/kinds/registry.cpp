@@ -49,6 +49,7 @@ const Registry& builtin_kinds() {
     r.add(edge_visibility_kind());
     r.add(depth_sort_kind());
     r.add(render_kind());
+    r.add(statements_kind());
     return r;
   }();
   return registry;

@@ -43,5 +43,6 @@ KindInfo zbuffer_kind();
 KindInfo edge_visibility_kind();
 KindInfo depth_sort_kind();
 KindInfo render_kind();
+KindInfo statements_kind();
 
 }  // namespace frustum

@@ -42,10 +42,18 @@ namespace {
 // A default-constructed YAML::Node is defined (and null): `vary` is present when it is neither.
 bool has_vary(const ProblemSpec& p) { return p.vary.IsDefined() && !p.vary.IsNull(); }
 
+// A kind with nothing to draw (the instructor's own statements): every variant keeps it as written.
+bool is_fixed(const ProblemSpec& p) { return p.info && p.info->fixed; }
+
+// Whether variants draw this problem anew (vary_all: every problem that can be drawn).
+bool drawn_anew(const ProblemSet& set, const ProblemSpec& p, bool vary_all) {
+  return (vary_all && !is_fixed(p)) || problem_varies(set, p);
+}
+
 }  // namespace
 
 bool problem_varies(const ProblemSet& set, const ProblemSpec& p) {
-  return has_vary(p) || set.per_student;
+  return !is_fixed(p) && (has_vary(p) || set.per_student);
 }
 
 bool set_varies(const ProblemSet& set) {
@@ -192,7 +200,7 @@ ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std
   static const std::set<std::string> kNone;
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const ProblemSpec& base = set.problems[i];
-    if (!vary_all && !problem_varies(set, base)) {
+    if (!drawn_anew(set, base, vary_all)) {
       out.problems.push_back(base);
       continue;
     }
@@ -217,7 +225,7 @@ std::vector<ProblemSet> variants_for_class(const ProblemSet& set,
   const auto givens = [&](const ProblemSet& v) {
     std::vector<std::string> texts(v.problems.size());
     for (std::size_t i = 0; i < v.problems.size(); ++i)
-      if (!v.problems[i].error && (vary_all || problem_varies(set, set.problems[i])))
+      if (!v.problems[i].error && drawn_anew(set, set.problems[i], vary_all))
         texts[i] = emit_flow(v.problems[i].given_node);
     return texts;
   };
@@ -276,7 +284,7 @@ void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int c
     // the later variants would each spend every draw and fail alike, so the run stops here.
     bool exhausted = false;
     for (std::size_t p = 0; p < v.problems.size(); ++p) {
-      if (!v.problems[p].error && (vary_all || problem_varies(set, set.problems[p]))) {
+      if (!v.problems[p].error && drawn_anew(set, set.problems[p], vary_all)) {
         taken[p].insert(emit_flow(v.problems[p].given_node));
       } else if (v.problems[p].error && !set.problems[p].error) {
         v.problems[p].error->message += "; stopped at variant " + std::to_string(i + 1) + " of " +

@@ -48,7 +48,7 @@ server.generate(data)
 params = data["params"]
 html = open(os.path.join(question, "question.html"), encoding="utf-8").read()
 element = {"number": "pl-number-input", "vector": "pl-matrix-input", "matrix": "pl-matrix-input",
-           "choice": "pl-multiple-choice", "string": "pl-string-input"}
+           "choice": "pl-multiple-choice", "string": "pl-string-input", "checkbox": "pl-checkbox"}
 for name, kind in params["inputs"].items():
     if not re.search(r'<%s answers-name="%s"' % (element[kind], re.escape(name)), html):
         sys.exit(f"question.html has no {element[kind]} for {name}")
@@ -75,6 +75,12 @@ for name, kind in params["inputs"].items():
         params[name] = [{"key": chr(97 + i), "html": w} for i, w in enumerate(words)]
         right = str(value).lower() if isinstance(value, bool) else str(value)
         submitted[name] = raw[name] = chr(97 + words.index(right))
+    elif kind == "checkbox":  # which statements are true: the options as question.html lists them
+        options = re.findall(r'<pl-answer correct="(true|false)">(.*?)</pl-answer>', html)
+        params[name] = [{"key": chr(97 + i), "html": text} for i, (_, text) in enumerate(options)]
+        submitted[name] = [chr(97 + i) for i, (right, _) in enumerate(options) if right == "true"]
+        if [k for k, v in value.items() if v == "true"] != [str(i + 1) for i, (r, _) in enumerate(options) if r == "true"]:
+            sys.exit("question.html's checkboxes are not the key")
     else:
         text = a.get("text") if isinstance(value, list) or isinstance(value, dict) else str(value)
         if isinstance(value, str):
@@ -87,7 +93,8 @@ for name, kind in params["inputs"].items():
 if mode == "unreadable":  # a matrix that does not close, or a nested mapping where words belong
     kinds = params["inputs"]
     name = next((n for n, k in kinds.items() if k in ("vector", "matrix")), next(iter(kinds)))
-    raw[name] = submitted[name] = "[1, 2" if kinds[name] != "string" else "{0-1: {x: y}}"
+    raw[name] = submitted[name] = ("[1, 2" if kinds[name] not in ("string", "checkbox") else
+                                   ["z"] if kinds[name] == "checkbox" else "{0-1: {x: y}}")
 root = os.path.join(work, "grade")
 os.makedirs(os.path.join(root, "data"), exist_ok=True)
 json.dump({"params": params, "correct_answers": {}, "submitted_answers": submitted,

@@ -1,0 +1,139 @@
+// "Which of these statements are true?" (seed 003's back-face culling quiz). The statements are
+// matters of concept: the instructor gives each one's truth and reason, and the derivation lists
+// them, each with ○ or × as the lecture marks them. Nothing is computed and nothing varies.
+#include "solver/kinds/statements.hpp"
+
+#include <array>
+#include <utility>
+
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/util/words.hpp"
+
+namespace frustum {
+
+std::optional<bool> truth_word(std::string_view written) {
+  static constexpr std::array<std::pair<std::string_view, bool>, 32> kWords = {{
+      {"true", true},      {"false", false},       {"yes", true},     {"no", false},
+      {"t", true},         {"f", false},           {"y", true},       {"n", false},
+      {"○", true},         {"〇", true},           {"◯", true},       {"×", false},
+      {"✕", false},        {"x", false},           {"正しい", true},  {"誤り", false},
+      {"正", true},        {"誤", false},          {"真", true},      {"偽", false},
+      {"はい", true},      {"いいえ", false},      {"верно", true},   {"неверно", false},
+      {"правильно", true}, {"неправильно", false}, {"истина", true},  {"ложь", false},
+      {"да", true},        {"нет", false},         {"истинно", true}, {"ложно", false},
+  }};
+  const std::string w = trim_lower(std::string(written));
+  for (const auto& [word, truth] : kWords)
+    if (w == word) return truth;
+  return std::nullopt;
+}
+
+namespace {
+
+// Line breaks and runs of spaces in a YAML block scalar, as one line.
+std::string one_line(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    const bool space = c == ' ' || c == '\n' || c == '\r' || c == '\t';
+    if (space && (out.empty() || out.back() == ' ')) continue;
+    out += space ? ' ' : c;
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+struct Statements {
+  static constexpr const char* kName = "statements";
+  static constexpr const char* kSummary = "which of the given statements are true";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
+  static constexpr bool kFixed = true;
+  struct Statement {
+    std::string text;
+    bool truth = false;
+    std::string reason;  // may be empty
+  };
+  struct Given {
+    std::vector<Statement> statements;
+  };
+  static std::vector<std::string> given_fields() { return {"statements"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"true_statements", AnswerKind::Statements, {}, {}}};
+  }
+
+  // A text field of one statement: one line, bounded.
+  static std::string text(GivenReader& item, const char* key, bool required) {
+    const YAML::Node n = item.node()[key];
+    if (!n.IsDefined() || n.IsNull()) {
+      if (required) item.fail(key, "missing required field");
+      return "";
+    }
+    if (!n.IsScalar()) item.fail(key, "expected text");
+    if (n.Scalar().size() > kMaxStatementBytes)
+      item.fail(key, "longer than " + std::to_string(kMaxStatementBytes) + " bytes");
+    const std::string s = one_line(n.Scalar());
+    if (s.empty() && required) item.fail(key, "is empty");
+    return s;
+  }
+
+  static Given parse(GivenReader& r, const Conventions&) {
+    Given g;
+    const std::size_t n = r.list_size("statements", 1, kMaxStatements);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!r.node()["statements"][i].IsMap())
+        r.fail("statements",
+               "statement " + std::to_string(i + 1) +
+                   " is not a mapping: write {text: ..., truth: true or false, reason: ...}");
+      GivenReader item = r.item("statements", i, {"text", "truth", "reason"});
+      Statement s;
+      s.text = text(item, "text", true);
+      const YAML::Node t = item.node()["truth"];
+      if (!t.IsDefined() || t.IsNull())
+        item.fail("truth", "missing: every statement needs its truth (true or false) for the key");
+      const std::optional<bool> truth = t.IsScalar() ? truth_word(t.Scalar()) : std::nullopt;
+      if (!truth) item.fail("truth", "expected true or false (also yes/no, ○/×)");
+      s.truth = *truth;
+      s.reason = text(item, "reason", false);
+      item.finish();
+      g.statements.push_back(std::move(s));
+    }
+    return g;
+  }
+
+  static MathText mark(bool truth) {
+    return truth ? math("○ ", "\\bigcirc\\; ") + word("True")
+                 : math("× ", "\\times\\; ") + word("False");
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    std::vector<std::pair<std::string, std::string>> entries;
+    MathText key, chosen;
+    for (std::size_t i = 0; i < g.statements.size(); ++i) {
+      const Statement& s = g.statements[i];
+      const std::string number = std::to_string(i + 1);
+      entries.emplace_back(number, s.truth ? "true" : "false");
+      const MathText sep = key.empty() ? MathText{} : math(", ", ",\\; ");
+      key += sep + math(number + (s.truth ? " ○" : " ×"),
+                        number + (s.truth ? "\\,\\bigcirc" : "\\,\\times"));
+      if (s.truth) chosen += (chosen.empty() ? MathText{} : math(", ", ",\\; ")) + math(number);
+      if (steps)
+        steps->add("Statement " + number + ": " + s.text, {}, {}, mark(s.truth)).note =
+            s.reason.empty() ? "" : "Reason: " + s.reason;
+    }
+    Value v = Value::word_map(std::move(entries));
+    v.display = key;
+    if (steps) {
+      steps->add("The true statements", {}, {}, chosen.empty() ? word("none") : chosen);
+      steps->yields("true_statements");
+    }
+    Answers out;
+    out.set("true_statements", std::move(v));
+    return out;
+  }
+};
+
+}  // namespace
+
+KindInfo statements_kind() { return make_kind<Statements>(); }
+
+}  // namespace frustum
