@@ -60,8 +60,9 @@ void note_shared_students(std::vector<BatchEntry>& entries) {
       std::string others;
       for (const std::size_t j : files)
         if (j != i) others += (others.empty() ? "" : ", ") + entries[j].source;
-      entries[i].note = fmt::format("{} also claim{} student {}: each file is graded; keep the one that counts",
-                                    others, files.size() > 2 ? "" : "s", quote_excerpt(student));
+      entries[i].note =
+          fmt::format("{} also claim{} student {}: each file is graded; keep the one that counts",
+                      others, files.size() > 2 ? "" : "s", quote_excerpt(student));
     }
   }
 }
@@ -79,8 +80,9 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
     if ((ext == ".yaml" || ext == ".yml") && !directory)
       files.push_back(it->path());
     else if (it->path().filename().string().rfind('.', 0) != 0)  // hidden files are the system's
-      passed_over.emplace_back(it->path(), directory ? "a directory: not graded (grade it on its own)"
-                                                     : "not an answers file (.yaml or .yml): not graded");
+      passed_over.emplace_back(it->path(), directory
+                                               ? "a directory: not graded (grade it on its own)"
+                                               : "not an answers file (.yaml or .yml): not graded");
   }
   if (ec)
     throw InputError(Diagnostic{SourceLocation{dir.string(), 0, 0}, "",
@@ -92,8 +94,8 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
     b.source = f.string();
     if (const std::optional<Diagnostic> d = read_text_file(f.string(), max_bytes, b.yaml))
       b.error = d->message;
-    b.student = b.error ? std::string() : student_in(b.yaml, b.source);
-    if (b.student.empty()) b.student = f.stem().string();
+    b.claimed = b.error ? std::string() : student_in(b.yaml, b.source);
+    b.student = b.claimed.empty() ? f.stem().string() : b.claimed;
     out.push_back(std::move(b));
   }
   note_shared_students(out);
@@ -194,6 +196,7 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
       YAML::Emitter e;
       e << root;
       b.yaml = std::string(e.c_str()) + "\n";
+      b.claimed = b.student;
     }
     out.push_back(std::move(b));
   }
@@ -254,11 +257,10 @@ std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries,
     BatchEntry e = entries[it->second];
     e.note.clear();  // the roster decides whose file it is: another file's claim does not matter
     used[it->second] = true;
-    const std::string claimed = e.error ? std::string() : student_in(e.yaml, e.source);
-    if (!claimed.empty() && claimed != id)
+    if (!e.claimed.empty() && e.claimed != id)
       e.note = fmt::format(
           "the file says student {}, but the roster gives this file to {}: graded as {}",
-          quote_excerpt(claimed), quote_excerpt(id), quote_excerpt(id));
+          quote_excerpt(e.claimed), quote_excerpt(id), quote_excerpt(id));
     e.student = id;
     e.from_roster = true;
     out.push_back(std::move(e));

@@ -27,6 +27,7 @@ constexpr std::size_t kMaxRosterBytes = 64u << 20;  // a CSV roster of answers
 struct BatchEntry {
   std::string source;                // the file, or "roster.csv row 12"
   std::string student;               // from the answers, the CSV, or the file name
+  std::string claimed;               // the id the answers file states ("" if none or unreadable)
   std::string yaml;                  // the answers as YAML text (CSV rows are converted)
   std::optional<std::string> error;  // could not be read at all (too big, unreadable)
   // A CSV row: where each answer ("answers.ID.NAME") was in the CSV (line, column), so that
