@@ -4,8 +4,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -67,8 +69,34 @@ void note_shared_students(std::vector<BatchEntry>& entries) {
   }
 }
 
+// Runs each(i) for i in [0, count) on `jobs` threads (0: one per core), each a contiguous share;
+// the first exception is thrown again here once all have stopped.
+void for_each_shared(std::size_t count, std::size_t jobs,
+                     const std::function<void(std::size_t)>& each) {
+  jobs =
+      std::min<std::size_t>(jobs ? jobs : std::max(1u, std::thread::hardware_concurrency()), count);
+  if (jobs <= 1) {
+    for (std::size_t i = 0; i < count; ++i) each(i);
+    return;
+  }
+  std::vector<std::exception_ptr> failed(jobs);
+  const auto share = [&](std::size_t j) {
+    try {
+      for (std::size_t i = count * j / jobs; i < count * (j + 1) / jobs; ++i) each(i);
+    } catch (...) {
+      failed[j] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < jobs; ++j) threads.emplace_back(share, j);
+  share(0);
+  for (std::thread& t : threads) t.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
+
 std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_bytes,
-                                       std::vector<Diagnostic>* not_graded) {
+                                       std::vector<Diagnostic>* not_graded, std::size_t jobs) {
   std::vector<fs::path> files;
   std::vector<std::pair<fs::path, std::string>> passed_over;
   std::error_code ec;
@@ -88,16 +116,15 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
     throw InputError(Diagnostic{SourceLocation{dir.string(), 0, 0}, "",
                                 "cannot list the directory: " + ec.message()});
   std::sort(files.begin(), files.end());
-  std::vector<BatchEntry> out;
-  for (const fs::path& f : files) {
-    BatchEntry b;
-    b.source = f.string();
-    if (const std::optional<Diagnostic> d = read_text_file(f.string(), max_bytes, b.yaml))
+  std::vector<BatchEntry> out(files.size());
+  for_each_shared(files.size(), jobs, [&](std::size_t i) {
+    BatchEntry& b = out[i];
+    b.source = files[i].string();
+    if (const std::optional<Diagnostic> d = read_text_file(b.source, max_bytes, b.yaml))
       b.error = d->message;
     b.claimed = b.error ? std::string() : student_in(b.yaml, b.source);
-    b.student = b.claimed.empty() ? f.stem().string() : b.claimed;
-    out.push_back(std::move(b));
-  }
+    b.student = b.claimed.empty() ? files[i].stem().string() : b.claimed;
+  });
   note_shared_students(out);
   if (not_graded) {
     std::sort(passed_over.begin(), passed_over.end());
@@ -225,9 +252,9 @@ constexpr const char* kKatexDir = "katex";
 }  // namespace
 
 std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t max_bytes,
-                                            std::vector<Diagnostic>* not_graded) {
+                                            std::vector<Diagnostic>* not_graded, std::size_t jobs) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) return from_directory(path, max_bytes, not_graded);
+  if (fs::is_directory(path, ec)) return from_directory(path, max_bytes, not_graded, jobs);
   if (lower(fs::path(path).extension().string()) == ".csv") return from_csv(path, max_bytes);
   throw InputError(
       Diagnostic{SourceLocation{path, 0, 0}, "",
