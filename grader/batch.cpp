@@ -43,11 +43,7 @@ std::string lower(std::string s) {
 // The student id written in an answers file, without grading it (through the same bounded,
 // strict reader as grading).
 std::string student_in(const std::string& yaml, const std::string& name) {
-  const YamlDocument doc = parse_yaml(yaml, name);
-  const YAML::Node& root = doc.root;
-  if (!doc.error && root.IsMap() && root["student"].IsDefined() && root["student"].IsScalar())
-    return root["student"].Scalar();
-  return {};
+  return top_scalar(yaml, name, "student").value_or("");
 }
 
 // Files that claim a student another file also claims: each row names the other files, so the

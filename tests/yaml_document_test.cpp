@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "test_util.hpp"
@@ -94,6 +95,52 @@ TEST(YamlDocument, StrictChecksRunWhileBuilding) {
   EXPECT_EQ(error("{[a]: 1}\n"), "t.yaml:1:2: a key must be a name, not a list");
   // A refused document keeps no node.
   EXPECT_EQ(parse_yaml("a: 1\na: 2\n", "t.yaml").root.Type(), YAML::NodeType::Null);
+}
+
+// The id read for a class (top_scalar, no nodes built) is what parse_yaml's tree says, for
+// every document parse_yaml accepts or refuses.
+std::optional<std::string> scalar_of_tree(const std::string& text, const std::string& key) {
+  const YamlDocument doc = parse_yaml(text, "t.yaml");
+  if (doc.error || !doc.root.IsMap() || !doc.root[key].IsDefined() || !doc.root[key].IsScalar())
+    return std::nullopt;
+  return doc.root[key].Scalar();
+}
+
+TEST(YamlDocument, TopScalarIsTheTreesScalarWithoutBuildingIt) {
+  std::vector<std::string> texts = {"a: &x [1, 2]\nb: *x\n",
+                                    "&k student: 1\n*k : 2\n",
+                                    "x: &s sc\nstudent: *s\n",
+                                    "&e []: 1\n",
+                                    "a: &e []\n*e : 2\n",
+                                    "a: &a [*a]\n",
+                                    "a: &a {x: *a}\n",
+                                    "student: ~\n",
+                                    "student:\n",
+                                    "student: [1]\n",
+                                    "- student\n",
+                                    "student: a\n---\nb\n",
+                                    "{[a]: 1, student: x}\n",
+                                    "student: x\n{a: 1}: 2\n",
+                                    "a: &n ~\n*n : 3\nstudent: q\n",
+                                    "student: 'q'\n",
+                                    "student: \"a\\tb\"\n",
+                                    "student: !!str 12\n",
+                                    "x: {student: 3}\n",
+                                    "student: a\nstudent: b\n",
+                                    "? student\n: v\n",
+                                    "? [student]\n: v\n",
+                                    "student: |\n  two\n  lines\n",
+                                    "student: s1\nanswers: {p: [1, \n",
+                                    "\xFF\xFEs\0"};
+  for (const char* dir : {"problems", "tests"})
+    for (const auto& e : std::filesystem::recursive_directory_iterator(test::source_path(dir)))
+      if (e.is_regular_file() &&
+          (e.path().extension() == ".yaml" || e.path().extension() == ".yml"))
+        texts.push_back(test::read_file(e.path()));
+  for (const std::string& text : texts)
+    for (const char* key : {"student", "title", "a", "x", "problems"})
+      EXPECT_EQ(top_scalar(text, "t.yaml", key), scalar_of_tree(text, key))
+          << key << " in " << text.substr(0, 200);
 }
 
 }  // namespace

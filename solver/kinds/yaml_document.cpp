@@ -140,9 +140,18 @@ struct Refusal {
 // the limit) without scanning the text a second time: the scan is most of yaml-cpp's cost.
 // Nodes are made through yaml-cpp's installed detail API (memory_holder, detail::node); the
 // finished root becomes a YAML::Node through a sequence iterator, the public way to wrap one.
+//
+// Without `build`, nothing is built: the pass then also refuses what parse_yaml's walk of the
+// built tree (check_tree) refuses — a key that is a list or a mapping, an alias inside its own
+// anchor's node (a cycle) — so that it accepts exactly the documents parse_yaml accepts, and
+// keeps the scalar under `key` in the top mapping (root[key], the first such key).
 class StrictBuilder : public YAML::EventHandler {
  public:
   StrictBuilder() : memory_(std::make_shared<YAML::detail::memory_holder>()) {}
+  explicit StrictBuilder(std::string key) : build_(false), key_(std::move(key)) {}
+
+  // The scalar under the key in the top mapping (without build).
+  const std::optional<std::string>& top_scalar() const { return value_; }
 
   // The document's root; a null Node (as YAML::Load gives) when there was none.
   YAML::Node root() {
@@ -154,22 +163,40 @@ class StrictBuilder : public YAML::EventHandler {
   void OnDocumentStart(const YAML::Mark&) override {}
   void OnDocumentEnd() override {}
   void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override {
-    leaf(mark, anchor, nullptr).set_null();
-    pop();
+    if (!build_) {
+      watch(nullptr);
+      if (anchor) anchors_seen_.push_back({false, std::nullopt});
+    }
+    if (YAML::detail::node* n = leaf(mark, anchor, nullptr)) {
+      n->set_null();
+      pop();
+    }
   }
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
     const std::size_t size = sizes_.at(anchor - 1);
+    if (!build_) {
+      const Anchored& a = anchors_seen_.at(anchor - 1);
+      if (size == 0) throw Refusal{mark, "an alias inside its own anchor's node"};
+      if (at_key() && a.container) throw Refusal{mark, "a key must be a name"};
+      watch(a.scalar ? &*a.scalar : nullptr);
+    }
     count(mark, size ? size : 1);  // an alias inside its own anchor's node counts as one
     finish_child(mark, nullptr);
+    if (!build_) return;
     push(*anchors_.at(anchor - 1));
     pop();
   }
   void OnScalar(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor,
                 const std::string& value) override {
-    YAML::detail::node& n = leaf(mark, anchor, &value);
-    n.set_scalar(value);
-    n.set_tag(tag);
-    pop();
+    if (!build_) {
+      watch(&value);
+      if (anchor) anchors_seen_.push_back({false, value});
+    }
+    if (YAML::detail::node* n = leaf(mark, anchor, &value)) {
+      n->set_scalar(value);
+      n->set_tag(tag);
+      pop();
+    }
   }
   void OnSequenceStart(const YAML::Mark& mark, const std::string& tag, YAML::anchor_t anchor,
                        YAML::EmitterStyle::value style) override {
@@ -203,33 +230,54 @@ class StrictBuilder : public YAML::EventHandler {
               std::to_string(kMaxYamlNodes) +
               (sizes_.empty() ? " values" : " values (through anchors and aliases)")};
   }
-  // A new node at `mark`: counted, checked as a key, registered under its anchor, pushed.
-  YAML::detail::node& leaf(const YAML::Mark& mark, YAML::anchor_t anchor,
+  // A new node at `mark`: counted, checked as a key, registered under its anchor, pushed
+  // (null without build).
+  YAML::detail::node* leaf(const YAML::Mark& mark, YAML::anchor_t anchor,
                            const std::string* scalar) {
     count(mark, 1);
     finish_child(mark, scalar);
-    YAML::detail::node& n = create(mark, anchor);
     if (anchor) sizes_.push_back(1);
+    if (!build_) return nullptr;
+    YAML::detail::node& n = create(mark, anchor);
     push(n);
-    return n;
+    return &n;
   }
   void open(const YAML::Mark& mark, YAML::anchor_t anchor, bool map, const std::string& tag,
             YAML::EmitterStyle::value style) {
     count(mark, 1);
-    YAML::detail::node& n = create(mark, anchor);
-    n.set_tag(tag);
-    n.set_type(map ? YAML::NodeType::Map : YAML::NodeType::Sequence);
-    n.set_style(style);
+    YAML::detail::node* n = nullptr;
+    if (build_) {
+      n = &create(mark, anchor);
+      n->set_tag(tag);
+      n->set_type(map ? YAML::NodeType::Map : YAML::NodeType::Sequence);
+      n->set_style(style);
+      push(*n);
+    } else {
+      if (at_key()) throw Refusal{mark, "a key must be a name"};
+      watch(nullptr);
+      if (anchor) anchors_seen_.push_back({true, std::nullopt});
+    }
     if (anchor) sizes_.push_back(0);  // known when it closes
-    push(n);
-    stack_.push_back(Frame{&n, mark, anchor, nodes_ - 1, map, true, {}, nullptr});
+    stack_.push_back(Frame{n, mark, anchor, nodes_ - 1, map, true, {}, nullptr});
   }
   void close() {
     Frame f = std::move(stack_.back());
     stack_.pop_back();
     if (f.anchor) sizes_.at(f.anchor - 1) = nodes_ - f.start;
     finish_child(f.mark, nullptr);
-    pop();
+    if (build_) pop();
+  }
+  bool at_key() const { return !stack_.empty() && stack_.back().map && stack_.back().at_key; }
+  // Without build: a node about to start in the top mapping, a scalar's text or null. The
+  // first key equal to key_ makes the next value the one kept.
+  void watch(const std::string* scalar) {
+    if (stack_.size() != 1 || !stack_[0].map) return;
+    if (at_key()) {
+      if (!found_ && scalar && *scalar == key_) found_ = taking_ = true;
+    } else if (taking_) {
+      taking_ = false;
+      if (scalar) value_ = *scalar;
+    }
   }
   YAML::detail::node& create(const YAML::Mark& mark, YAML::anchor_t anchor) {
     YAML::detail::node& n = memory_->create_node();
@@ -279,20 +327,26 @@ class StrictBuilder : public YAML::EventHandler {
   std::vector<Frame> stack_;
   std::vector<YAML::detail::node*> anchors_;  // by anchor − 1
   std::vector<std::size_t> sizes_;            // nodes each anchor stands for, by anchor − 1
+  bool build_ = true;
+  std::string key_;
+  bool found_ = false, taking_ = false;
+  std::optional<std::string> value_;
+  struct Anchored {
+    bool container;
+    std::optional<std::string> scalar;
+  };
+  std::vector<Anchored> anchors_seen_;  // by anchor − 1 (without build)
 };
 
-// Parses the first document into `root` and checks it in one pass (StrictBuilder); then looks
-// for a second document, which is the error returned (root is then left as it was). Throws
-// Refusal, or yaml-cpp's exception for invalid YAML.
-std::optional<Diagnostic> build_checked(const std::string& text, const std::string& name,
-                                        YAML::Node& root) {
+// Runs the first document through `builder`; then looks for a second document, which is the
+// error returned. False in `any` when there was no document. Throws Refusal, or yaml-cpp's
+// exception for invalid YAML.
+std::optional<Diagnostic> run_checked(const std::string& text, const std::string& name,
+                                      StrictBuilder& builder, bool& any) {
   std::istringstream in(text);
   YAML::Parser parser(in);
-  StrictBuilder builder;
-  if (!parser.HandleNextDocument(builder)) {
-    root = YAML::Node();
-    return std::nullopt;
-  }
+  any = parser.HandleNextDocument(builder);
+  if (!any) return std::nullopt;
   // A second document: where it starts is where the first one's `---` or `...` ends.
   struct FirstEvent : YAML::EventHandler {
     std::optional<YAML::Mark> mark;
@@ -328,8 +382,18 @@ std::optional<Diagnostic> build_checked(const std::string& text, const std::stri
   } catch (const std::exception&) {
     // Text after the first document that is not YAML: only the first document is read.
   }
-  root = builder.root();
   return std::nullopt;
+}
+
+// Parses the first document into `root` and checks it in one pass (StrictBuilder); a second
+// document is the error returned (root is then left as it was).
+std::optional<Diagnostic> build_checked(const std::string& text, const std::string& name,
+                                        YAML::Node& root) {
+  StrictBuilder builder;
+  bool any = false;
+  std::optional<Diagnostic> second = run_checked(text, name, builder, any);
+  if (!second) root = any ? builder.root() : YAML::Node();
+  return second;
 }
 
 }  // namespace
@@ -365,6 +429,23 @@ YamlDocument parse_yaml(const std::string& text, const std::string& name) {
   }
   if (doc.error) doc.root = YAML::Node();
   return doc;
+}
+
+std::optional<std::string> top_scalar(const std::string& text, const std::string& name,
+                                      const std::string& key) {
+  if (wide_encoding(text)) return std::nullopt;
+  std::string repaired = text;
+  repair_utf8(repaired, name);
+  StrictBuilder check(key);
+  bool any = false;
+  try {
+    if (run_checked(repaired, name, check, any) || !any) return std::nullopt;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  } catch (const Refusal&) {
+    return std::nullopt;
+  }
+  return check.top_scalar();
 }
 
 std::optional<Diagnostic> read_text_file(const std::string& path, std::size_t max_bytes,
