@@ -281,10 +281,11 @@ def main():
                 f"bandwidth ceiling measured in this run ({ceiling['pixels/s'] / 1e9:.2f} G px/s: a vectorised "
                 "depth-test-and-write loop over the same 1920 × 1080 depth and colour buffers, 12 bytes per "
                 "fragment).\n")
-    say("## Not measured here\n")
-    say("- End-to-end rendering against llvmpipe (scene → transform → clip → raster → PNG on both sides): the "
-        "raster benchmark above still feeds llvmpipe vertices in NDC and Frustum window coordinates; "
-        "`frustum render` above is Frustum's end-to-end figure alone.\n")
+    if want("render") or want("raster"):
+        say("## Not measured here\n")
+        say("- End-to-end rendering against llvmpipe (scene → transform → clip → raster → PNG on both sides): the "
+            "raster benchmark above still feeds llvmpipe vertices in NDC and Frustum window coordinates; "
+            "`frustum render` above is Frustum's end-to-end figure alone.\n")
     with open(os.path.join(args.repo, "docs/performance.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     shutil.rmtree(work, ignore_errors=True)
