@@ -21,6 +21,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 WORKLOADS = os.path.join(HERE, "workloads.py")
 PY = "/usr/bin/python3"  # Debian's, which has python3-numpy and python3-yaml
+SECTIONS = ("generate", "grade", "render", "edge_visibility", "raster")
 
 
 def loadavg():
@@ -92,134 +93,7 @@ def scaling_table(title, unit, rows):
     return f"### {title}\n\n" + "\n".join(out) + f"\n\n{verdict}.\n"
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--frustum", required=True)
-    ap.add_argument("--bench")
-    ap.add_argument("--repo", required=True)
-    ap.add_argument("--full", action="store_true", help="also the largest sizes (generate 100 000, grade 10 000, render 10 M)")
-    ap.add_argument("--reps", type=int, default=3)
-    args = ap.parse_args()
-    F, R = os.path.abspath(args.frustum), args.reps
-    work = tempfile.mkdtemp(prefix="frustum-perf-")
-    md = []
-    say = lambda s: (md.append(s), print(s, file=sys.stderr, flush=True))
-    load_before = loadavg()
-    started = datetime.datetime.now(datetime.timezone.utc)
-    commit = subprocess.run(["git", "-C", args.repo, "describe", "--always", "--dirty"], capture_output=True,
-                            text=True).stdout.strip()
-    try:
-        build = [l for l in open(os.path.join(os.path.dirname(F), "CMakeCache.txt")) if l.startswith("CMAKE_BUILD_TYPE:")]
-        build_type = build[0].split("=", 1)[1].strip() if build else "?"
-    except OSError:
-        build_type = "?"
-
-    # Generate: seeded variants of a seed set (variants + keys written, exact answers).
-    gen_set = os.path.join(args.repo, "problems/seeds/001_zbuffer_plane_method.yaml")
-    gen_sizes = [100, 1000, 10000] + ([100000] if args.full else [])
-    rows = []
-    for n in gen_sizes:
-        out = os.path.join(work, f"gen{n}")
-        st = repeat([F, "generate", gen_set, "--seed", "1", "--count", str(n), "-o", out], 1 if n >= 10000 else R,
-                    before=lambda: shutil.rmtree(out, ignore_errors=True))
-        shutil.rmtree(out, ignore_errors=True)
-        rows.append((n, st))
-        print(f"generate {n}: {st}", file=sys.stderr, flush=True)
-    gen_table = scaling_table("`frustum generate 001_zbuffer_plane_method.yaml --seed 1 --count N` (3 problems, exact keys)",
-                              "variants", rows)
-    gen_100k = next((st for n, st in rows if n == 100000), None)
-
-    # Grade: a class of N students × 20 problems × 3 numeric answers, every output written.
-    cls_set = os.path.join(work, "class.yaml")
-    subprocess.run([PY, WORKLOADS, "class-set", cls_set], check=True)
-    key = os.path.join(work, "key.json")
-    with open(key, "w") as f:
-        subprocess.run([F, "solve", cls_set, "--format", "json"], stdout=f, check=True)
-    grade_sizes = [100, 1000] + ([10000] if args.full else [])
-    rows, by_size = [], {}
-    for n in grade_sizes:
-        subs = os.path.join(work, f"class{n}")
-        subprocess.run([PY, WORKLOADS, "class", subs, key, str(n)], check=True)
-        out = os.path.join(work, f"grades{n}")
-        st = repeat([F, "grade", cls_set, subs, "-o", out, "-j", "1"], 1 if n >= 10000 else R,
-                    before=lambda: shutil.rmtree(out, ignore_errors=True))
-        rows.append((n, st))
-        by_size[n] = st
-        print(f"grade {n}: {st}", file=sys.stderr, flush=True)
-    grade_table = scaling_table("`frustum grade class.yaml DIR -o OUT -j 1` (20 problems × 3 answers, gradebook + "
-                                "Markdown + HTML + Gradescope per student)", "students", rows)
-    subs = os.path.join(work, "class1000")
-    out = os.path.join(work, "grades1000")
-    ncpu = os.cpu_count() or 1
-    j_all = repeat([F, "grade", cls_set, subs, "-o", out, "-j", str(ncpu)], R,
-                   before=lambda: shutil.rmtree(out, ignore_errors=True))
-    sizes = {}
-    for d in ("feedback", "gradescope", "katex"):
-        p = os.path.join(out, d)
-        sizes[d] = sum(os.path.getsize(os.path.join(r, x)) for r, _, xs in os.walk(p, followlinks=True) for x in xs)
-    peer = repeat([PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, "peer.csv")], R)
-    one = by_size[1000]
-
-    # Render: a grid of small triangles through the whole pipeline, to a PNG.
-    render_sizes = [100000, 1000000] + ([10000000] if args.full else [])
-    rows = []
-    for n in render_sizes:
-        scene = os.path.join(work, f"scene{n}.yaml")
-        subprocess.run([PY, WORKLOADS, "scene", scene, str(n)], check=True)
-        st = repeat([F, "render", scene, "-o", os.path.join(work, "r.png")], 1 if n >= 10000000 else R)
-        rows.append((n, st))
-        print(f"render {n}: {st}", file=sys.stderr, flush=True)
-    render_table = scaling_table("`frustum render SCENE -o out.png` (1920 × 1080, z-buffer, small triangles "
-                                 "in a grid; read, transform, clip, raster, PNG)", "triangles", rows)
-
-    # Edge visibility of a closed torus mesh (exact face tests, edge classes, JSON derivation).
-    rows = []
-    for n in (200, 2000, 20000):
-        mesh = os.path.join(work, f"mesh{n}.yaml")
-        subprocess.run([PY, WORKLOADS, "mesh", mesh, str(n)], check=True)
-        st = repeat([F, "solve", mesh, "--format", "json"], 1 if n >= 20000 else R)
-        rows.append((n, st))
-        print(f"edge_visibility {n}: {st}", file=sys.stderr, flush=True)
-    edge_table = scaling_table("`frustum solve torus.yaml --format json` (`edge_visibility`, a closed torus mesh)",
-                               "faces", rows)
-
-    # Raster benchmarks: Frustum's fill, llvmpipe with 1 thread and with every core, the ceiling.
-    bench_rows = {}
-    if args.bench:
-        for threads in sorted({1, ncpu}):
-            env = dict(os.environ, LP_NUM_THREADS=str(threads))
-            res = subprocess.run([args.bench, "--benchmark_filter=BM_(BandwidthCeiling|Setup|Frustum|Llvmpipe)",
-                                  "--benchmark_min_time=0.5", "--benchmark_repetitions=3",
-                                  "--benchmark_report_aggregates_only=true", "--benchmark_format=json"],
-                                 env=env, capture_output=True, text=True)
-            data = json.loads(res.stdout[:res.stdout.rindex("}") + 1])
-            for b in data["benchmarks"]:
-                if b.get("aggregate_name") != "median":
-                    continue
-                bench_rows[(threads, b["run_name"])] = b
-    load_after = loadavg()
-
-    say("# Performance\n")
-    say(f"Generated by `tools/performance.sh{' --full' if args.full else ''}` — every figure below is from "
-        "this one run; rerun it to reproduce them on your machine. Methods and earlier analyses: "
-        "[performance-notes.md](performance-notes.md).\n")
-    say(f"- date: {started:%Y-%m-%d %H:%M} UTC; commit {commit}; build type {build_type}")
-    say(f"- CPU: {cpu_model()}; {ncpu} cores visible; {platform.system()} {platform.release()}")
-    say(f"- load average (1, 5, 15 min): {load_before} before, {load_after} after — the machine is shared, so "
-        "compare figures within this page, not across runs")
-    say(f"- each size repeated {R}× (the largest once); wall time min / median / max, CPU time (user + system) "
-        "median, peak resident memory\n")
-
-    say("## Scaling: every command linear in its input\n")
-    say("Sizes ten times apart; the per-item cost may grow by at most 1.5× from one size to the next.\n")
-    for t in (gen_table, grade_table, render_table, edge_table):
-        say(t)
-    if gen_100k:
-        say(f"`generate --seed 1 --count 100000`: **{gen_100k['median']:.1f} s** wall "
-            f"({gen_100k['cpu']:.1f} s CPU) against the target of 20 s.\n")
-    else:
-        say("`generate --count 100000` is run by `tools/performance.sh --full`.\n")
-
+def grading_race(say, one, j_all, peer, sizes, ncpu):
     say("## Class grading against a Python + NumPy script\n")
     say("1,000 students × 20 problems × 3 numeric answers. Frustum writes everything (gradebook, Markdown, "
         f"HTML pages — {sizes['feedback'] / 1e6:.0f} MB of feedback in all, the pages linking one shared copy of "
@@ -243,6 +117,150 @@ def main():
         f"A feedback file (Markdown or HTML) is {sizes['feedback'] / 2000 / 1e3:.0f} kB on average; wall time beyond CPU time is waiting (the disk, the one sync, the other processes on the "
         "machine).\n")
 
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--frustum", required=True)
+    ap.add_argument("--bench")
+    ap.add_argument("--repo", required=True)
+    ap.add_argument("--full", action="store_true", help="also the largest sizes (generate 100 000, grade 10 000, render 10 M)")
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--only", action="append", choices=SECTIONS,
+                    help="measure only these sections (repeatable); the page then says which were not rerun")
+    args = ap.parse_args()
+    want = lambda section: not args.only or section in args.only
+    F, R = os.path.abspath(args.frustum), args.reps
+    work = tempfile.mkdtemp(prefix="frustum-perf-")
+    md = []
+    say = lambda s: (md.append(s), print(s, file=sys.stderr, flush=True))
+    load_before = loadavg()
+    started = datetime.datetime.now(datetime.timezone.utc)
+    commit = subprocess.run(["git", "-C", args.repo, "describe", "--always", "--dirty"], capture_output=True,
+                            text=True).stdout.strip()
+    try:
+        build = [l for l in open(os.path.join(os.path.dirname(F), "CMakeCache.txt")) if l.startswith("CMAKE_BUILD_TYPE:")]
+        build_type = build[0].split("=", 1)[1].strip() if build else "?"
+    except OSError:
+        build_type = "?"
+
+    # Generate: seeded variants of a seed set (variants + keys written, exact answers).
+    gen_set = os.path.join(args.repo, "problems/seeds/001_zbuffer_plane_method.yaml")
+    gen_sizes = ([100, 1000, 10000] + ([100000] if args.full else [])) if want("generate") else []
+    rows = []
+    for n in gen_sizes:
+        out = os.path.join(work, f"gen{n}")
+        st = repeat([F, "generate", gen_set, "--seed", "1", "--count", str(n), "-o", out], 1 if n >= 10000 else R,
+                    before=lambda: shutil.rmtree(out, ignore_errors=True))
+        shutil.rmtree(out, ignore_errors=True)
+        rows.append((n, st))
+        print(f"generate {n}: {st}", file=sys.stderr, flush=True)
+    gen_table = rows and scaling_table("`frustum generate 001_zbuffer_plane_method.yaml --seed 1 --count N` (3 problems, exact keys)",
+                              "variants", rows)
+    gen_100k = next((st for n, st in rows if n == 100000), None)
+
+    # Grade: a class of N students × 20 problems × 3 numeric answers, every output written.
+    cls_set = os.path.join(work, "class.yaml")
+    subprocess.run([PY, WORKLOADS, "class-set", cls_set], check=True)
+    key = os.path.join(work, "key.json")
+    with open(key, "w") as f:
+        subprocess.run([F, "solve", cls_set, "--format", "json"], stdout=f, check=True)
+    grade_sizes = ([100, 1000] + ([10000] if args.full else [])) if want("grade") else []
+    rows, by_size = [], {}
+    for n in grade_sizes:
+        subs = os.path.join(work, f"class{n}")
+        subprocess.run([PY, WORKLOADS, "class", subs, key, str(n)], check=True)
+        out = os.path.join(work, f"grades{n}")
+        st = repeat([F, "grade", cls_set, subs, "-o", out, "-j", "1"], 1 if n >= 10000 else R,
+                    before=lambda: shutil.rmtree(out, ignore_errors=True))
+        rows.append((n, st))
+        by_size[n] = st
+        print(f"grade {n}: {st}", file=sys.stderr, flush=True)
+    grade_table = rows and scaling_table("`frustum grade class.yaml DIR -o OUT -j 1` (20 problems × 3 answers, gradebook + "
+                                "Markdown + HTML + Gradescope per student)", "students", rows)
+    subs = os.path.join(work, "class1000")
+    out = os.path.join(work, "grades1000")
+    ncpu = os.cpu_count() or 1
+    j_all = peer = one = None
+    sizes = {}
+    if want("grade"):
+        j_all = repeat([F, "grade", cls_set, subs, "-o", out, "-j", str(ncpu)], R,
+                       before=lambda: shutil.rmtree(out, ignore_errors=True))
+        for d in ("feedback", "gradescope", "katex"):
+            p = os.path.join(out, d)
+            sizes[d] = sum(os.path.getsize(os.path.join(r, x)) for r, _, xs in os.walk(p, followlinks=True) for x in xs)
+        peer = repeat([PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, "peer.csv")], R)
+        one = by_size[1000]
+
+    # Render: a grid of small triangles through the whole pipeline, to a PNG.
+    render_sizes = ([100000, 1000000] + ([10000000] if args.full else [])) if want("render") else []
+    rows = []
+    for n in render_sizes:
+        scene = os.path.join(work, f"scene{n}.yaml")
+        subprocess.run([PY, WORKLOADS, "scene", scene, str(n)], check=True)
+        st = repeat([F, "render", scene, "-o", os.path.join(work, "r.png")], 1 if n >= 10000000 else R)
+        rows.append((n, st))
+        print(f"render {n}: {st}", file=sys.stderr, flush=True)
+    render_table = rows and scaling_table("`frustum render SCENE -o out.png` (1920 × 1080, z-buffer, small triangles "
+                                 "in a grid; read, transform, clip, raster, PNG)", "triangles", rows)
+
+    # Edge visibility of a closed torus mesh (exact face tests, edge classes, JSON derivation).
+    rows = []
+    for n in (200, 2000, 20000) if want("edge_visibility") else ():
+        mesh = os.path.join(work, f"mesh{n}.yaml")
+        subprocess.run([PY, WORKLOADS, "mesh", mesh, str(n)], check=True)
+        st = repeat([F, "solve", mesh, "--format", "json"], 1 if n >= 20000 else R)
+        rows.append((n, st))
+        print(f"edge_visibility {n}: {st}", file=sys.stderr, flush=True)
+    edge_table = rows and scaling_table("`frustum solve torus.yaml --format json` (`edge_visibility`, a closed torus mesh)",
+                               "faces", rows)
+
+    # Raster benchmarks: Frustum's fill, llvmpipe with 1 thread and with every core, the ceiling.
+    bench_rows = {}
+    if args.bench and want("raster"):
+        for threads in sorted({1, ncpu}):
+            env = dict(os.environ, LP_NUM_THREADS=str(threads))
+            res = subprocess.run([args.bench, "--benchmark_filter=BM_(BandwidthCeiling|Setup|Frustum|Llvmpipe)",
+                                  "--benchmark_min_time=0.5", "--benchmark_repetitions=3",
+                                  "--benchmark_report_aggregates_only=true", "--benchmark_format=json"],
+                                 env=env, capture_output=True, text=True)
+            data = json.loads(res.stdout[:res.stdout.rindex("}") + 1])
+            for b in data["benchmarks"]:
+                if b.get("aggregate_name") != "median":
+                    continue
+                bench_rows[(threads, b["run_name"])] = b
+    load_after = loadavg()
+
+    say("# Performance\n")
+    say(f"Generated by `tools/performance.sh{' --full' if args.full else ''}` — every figure below is from "
+        "this one run; rerun it to reproduce them on your machine. Methods and earlier analyses: "
+        "[performance-notes.md](performance-notes.md).\n")
+    say(f"- date: {started:%Y-%m-%d %H:%M} UTC; commit {commit}; build type {build_type}")
+    say(f"- CPU: {cpu_model()}; {ncpu} cores visible; {platform.system()} {platform.release()}")
+    say(f"- load average (1, 5, 15 min): {load_before} before, {load_after} after — the machine is shared, so "
+        "compare figures within this page, not across runs")
+    say(f"- each size repeated {R}× (the largest once); wall time min / median / max, CPU time (user + system) "
+        "median, peak resident memory")
+    skipped = [x for x in SECTIONS if not want(x)]
+    if skipped:
+        say(f"- this run measured only {', '.join(args.only)} (`--only`); {', '.join(skipped)} were not rerun: their "
+            "last figures are in this page's history (`git log -p docs/performance.md`)")
+    say("")
+
+    say("## Scaling: every command linear in its input\n")
+    say("Sizes ten times apart; the per-item cost may grow by at most 1.5× from one size to the next.\n")
+    for t in (gen_table, grade_table, render_table, edge_table):
+        if t:
+            say(t)
+    if not want("generate"):
+        pass
+    elif gen_100k:
+        say(f"`generate --seed 1 --count 100000`: **{gen_100k['median']:.1f} s** wall "
+            f"({gen_100k['cpu']:.1f} s CPU) against the target of 20 s.\n")
+    else:
+        say("`generate --count 100000` is run by `tools/performance.sh --full`.\n")
+
+    if one:
+        grading_race(say, one, j_all, peer, sizes, ncpu)
     if bench_rows:
         say("## Rasterization against llvmpipe (frustum_bench, triangles in window coordinates)\n")
         say("`LP_NUM_THREADS=N ./build/frustum_bench --benchmark_filter='BM_(BandwidthCeiling|Setup|Frustum|Llvmpipe)'`, "
@@ -263,10 +281,11 @@ def main():
                 f"bandwidth ceiling measured in this run ({ceiling['pixels/s'] / 1e9:.2f} G px/s: a vectorised "
                 "depth-test-and-write loop over the same 1920 × 1080 depth and colour buffers, 12 bytes per "
                 "fragment).\n")
-    say("## Not measured here\n")
-    say("- End-to-end rendering against llvmpipe (scene → transform → clip → raster → PNG on both sides): the "
-        "raster benchmark above still feeds llvmpipe vertices in NDC and Frustum window coordinates; "
-        "`frustum render` above is Frustum's end-to-end figure alone.\n")
+    if want("render") or want("raster"):
+        say("## Not measured here\n")
+        say("- End-to-end rendering against llvmpipe (scene → transform → clip → raster → PNG on both sides): the "
+            "raster benchmark above still feeds llvmpipe vertices in NDC and Frustum window coordinates; "
+            "`frustum render` above is Frustum's end-to-end figure alone.\n")
     with open(os.path.join(args.repo, "docs/performance.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     shutil.rmtree(work, ignore_errors=True)

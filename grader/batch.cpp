@@ -4,8 +4,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -41,11 +43,7 @@ std::string lower(std::string s) {
 // The student id written in an answers file, without grading it (through the same bounded,
 // strict reader as grading).
 std::string student_in(const std::string& yaml, const std::string& name) {
-  const YamlDocument doc = parse_yaml(yaml, name);
-  const YAML::Node& root = doc.root;
-  if (!doc.error && root.IsMap() && root["student"].IsDefined() && root["student"].IsScalar())
-    return root["student"].Scalar();
-  return {};
+  return top_scalar(yaml, name, "student").value_or("");
 }
 
 // Files that claim a student another file also claims: each row names the other files, so the
@@ -60,14 +58,41 @@ void note_shared_students(std::vector<BatchEntry>& entries) {
       std::string others;
       for (const std::size_t j : files)
         if (j != i) others += (others.empty() ? "" : ", ") + entries[j].source;
-      entries[i].note = fmt::format("{} also claim{} student {}: each file is graded; keep the one that counts",
-                                    others, files.size() > 2 ? "" : "s", quote_excerpt(student));
+      entries[i].note =
+          fmt::format("{} also claim{} student {}: each file is graded; keep the one that counts",
+                      others, files.size() > 2 ? "" : "s", quote_excerpt(student));
     }
   }
 }
 
+// Runs each(i) for i in [0, count) on `jobs` threads (0: one per core), each a contiguous share;
+// the first exception is thrown again here once all have stopped.
+void for_each_shared(std::size_t count, std::size_t jobs,
+                     const std::function<void(std::size_t)>& each) {
+  jobs =
+      std::min<std::size_t>(jobs ? jobs : std::max(1u, std::thread::hardware_concurrency()), count);
+  if (jobs <= 1) {
+    for (std::size_t i = 0; i < count; ++i) each(i);
+    return;
+  }
+  std::vector<std::exception_ptr> failed(jobs);
+  const auto share = [&](std::size_t j) {
+    try {
+      for (std::size_t i = count * j / jobs; i < count * (j + 1) / jobs; ++i) each(i);
+    } catch (...) {
+      failed[j] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t j = 1; j < jobs; ++j) threads.emplace_back(share, j);
+  share(0);
+  for (std::thread& t : threads) t.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
+
 std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_bytes,
-                                       std::vector<Diagnostic>* not_graded) {
+                                       std::vector<Diagnostic>* not_graded, std::size_t jobs) {
   std::vector<fs::path> files;
   std::vector<std::pair<fs::path, std::string>> passed_over;
   std::error_code ec;
@@ -79,23 +104,23 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
     if ((ext == ".yaml" || ext == ".yml") && !directory)
       files.push_back(it->path());
     else if (it->path().filename().string().rfind('.', 0) != 0)  // hidden files are the system's
-      passed_over.emplace_back(it->path(), directory ? "a directory: not graded (grade it on its own)"
-                                                     : "not an answers file (.yaml or .yml): not graded");
+      passed_over.emplace_back(it->path(), directory
+                                               ? "a directory: not graded (grade it on its own)"
+                                               : "not an answers file (.yaml or .yml): not graded");
   }
   if (ec)
     throw InputError(Diagnostic{SourceLocation{dir.string(), 0, 0}, "",
                                 "cannot list the directory: " + ec.message()});
   std::sort(files.begin(), files.end());
-  std::vector<BatchEntry> out;
-  for (const fs::path& f : files) {
-    BatchEntry b;
-    b.source = f.string();
-    if (const std::optional<Diagnostic> d = read_text_file(f.string(), max_bytes, b.yaml))
+  std::vector<BatchEntry> out(files.size());
+  for_each_shared(files.size(), jobs, [&](std::size_t i) {
+    BatchEntry& b = out[i];
+    b.source = files[i].string();
+    if (const std::optional<Diagnostic> d = read_text_file(b.source, max_bytes, b.yaml))
       b.error = d->message;
-    b.student = b.error ? std::string() : student_in(b.yaml, b.source);
-    if (b.student.empty()) b.student = f.stem().string();
-    out.push_back(std::move(b));
-  }
+    b.claimed = b.error ? std::string() : student_in(b.yaml, b.source);
+    b.student = b.claimed.empty() ? files[i].stem().string() : b.claimed;
+  });
   note_shared_students(out);
   if (not_graded) {
     std::sort(passed_over.begin(), passed_over.end());
@@ -194,6 +219,7 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
       YAML::Emitter e;
       e << root;
       b.yaml = std::string(e.c_str()) + "\n";
+      b.claimed = b.student;
     }
     out.push_back(std::move(b));
   }
@@ -222,9 +248,9 @@ constexpr const char* kKatexDir = "katex";
 }  // namespace
 
 std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t max_bytes,
-                                            std::vector<Diagnostic>* not_graded) {
+                                            std::vector<Diagnostic>* not_graded, std::size_t jobs) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) return from_directory(path, max_bytes, not_graded);
+  if (fs::is_directory(path, ec)) return from_directory(path, max_bytes, not_graded, jobs);
   if (lower(fs::path(path).extension().string()) == ".csv") return from_csv(path, max_bytes);
   throw InputError(
       Diagnostic{SourceLocation{path, 0, 0}, "",
@@ -254,11 +280,10 @@ std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries,
     BatchEntry e = entries[it->second];
     e.note.clear();  // the roster decides whose file it is: another file's claim does not matter
     used[it->second] = true;
-    const std::string claimed = e.error ? std::string() : student_in(e.yaml, e.source);
-    if (!claimed.empty() && claimed != id)
+    if (!e.claimed.empty() && e.claimed != id)
       e.note = fmt::format(
           "the file says student {}, but the roster gives this file to {}: graded as {}",
-          quote_excerpt(claimed), quote_excerpt(id), quote_excerpt(id));
+          quote_excerpt(e.claimed), quote_excerpt(id), quote_excerpt(id));
     e.student = id;
     e.from_roster = true;
     out.push_back(std::move(e));

@@ -27,6 +27,7 @@ constexpr std::size_t kMaxRosterBytes = 64u << 20;  // a CSV roster of answers
 struct BatchEntry {
   std::string source;                // the file, or "roster.csv row 12"
   std::string student;               // from the answers, the CSV, or the file name
+  std::string claimed;               // the id the answers file states ("" if none or unreadable)
   std::string yaml;                  // the answers as YAML text (CSV rows are converted)
   std::optional<std::string> error;  // could not be read at all (too big, unreadable)
   // A CSV row: where each answer ("answers.ID.NAME") was in the CSV (line, column), so that
@@ -48,9 +49,13 @@ struct BatchEntry {
 // handed in is passed over in silence.
 // Throws InputError for a path that is neither, an unreadable directory, or a CSV without a
 // `student` column (located in the CSV: line and column).
+// The files of a directory are read and their ids parsed by `jobs` threads (0: one per core;
+// reading the id is a full parse, most of the parent's work in a class), each a contiguous
+// share; the entries are the same whatever the number.
 std::vector<BatchEntry> collect_submissions(const std::string& path,
                                             std::size_t max_bytes = kMaxSubmissionBytes,
-                                            std::vector<Diagnostic>* not_graded = nullptr);
+                                            std::vector<Diagnostic>* not_graded = nullptr,
+                                            std::size_t jobs = 1);
 
 // The roster is the authority for who a file belongs to: the answers of roster id R are the
 // file file_name_for(R).yaml (or .yml) in the directory, whatever its `student:` says (a file

@@ -407,5 +407,34 @@ TEST(Gradescope, AutograderScriptWritesResultsJson) {
   fs::remove_all(ag);
 }
 
+// issue 18: the ids of a directory's files are read by several threads; the entries (ids read
+// or taken from the file name, unreadable files, shared claims) are the same whatever the number.
+TEST(Batch, IdsReadByThreadsAreTheSameEntries) {
+  const fs::path dir = scratch("threads");
+  for (int i = 0; i < 23; ++i)
+    test::write_file(dir / fmt::format("f{:02d}.yaml", i),
+                     i % 7 == 3 ? std::string("student: [not, an, id]\nanswers: {}\n")
+                     : i % 5 == 1
+                         ? std::string("student: s1\nstudent: s2\n")  // refused: no id
+                         : fmt::format("student: s{}\nanswers: {{zbuf: {{z: 8}}}}\n", i % 11));
+  fs::create_directories(dir / "f99.yaml");  // a directory named like a file: not read
+  const auto text = [](const std::vector<BatchEntry>& entries) {
+    std::string out;
+    for (const BatchEntry& e : entries)
+      out += fmt::format("{}|{}|{}|{}|{}\n", e.source, e.student, e.claimed, e.error.value_or("-"),
+                         e.note);
+    return out;
+  };
+  const std::string one = text(collect_submissions(dir.string(), kMaxSubmissionBytes, nullptr, 1));
+  EXPECT_NE(one.find("f01.yaml|f01||-|"), std::string::npos) << one;   // refused: the file's name
+  EXPECT_NE(one.find("f03.yaml|f03||-|"), std::string::npos) << one;   // not an id: the file's name
+  EXPECT_NE(one.find("f02.yaml|s2|s2|-|"), std::string::npos) << one;  // read from the file
+  EXPECT_NE(one.find("also claims student 's2'"), std::string::npos) << one;  // f02 and f13
+  for (const std::size_t jobs : {2u, 3u, 0u, 40u})
+    EXPECT_EQ(text(collect_submissions(dir.string(), kMaxSubmissionBytes, nullptr, jobs)), one)
+        << jobs;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace frustum

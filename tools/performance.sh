@@ -5,6 +5,8 @@
 #
 #   tools/performance.sh            sizes up to generate 10 000, grade 1 000, render 1 M (~10 min)
 #   tools/performance.sh --full     also generate 100 000, grade 10 000, render 10 M
+#   tools/performance.sh --only grade   one section (generate, grade, render, edge_visibility,
+#                                        raster; repeatable): the page says which were not rerun
 #   BUILD=build-dir REPS=5 tools/performance.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,12 +1,12 @@
 // Reading a YAML file or text into a document, with a located error instead of an exception.
 #pragma once
 
-#include "solver/util/diagnostic.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <optional>
 #include <string>
+
+#include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
@@ -21,7 +21,7 @@ inline constexpr std::size_t kMaxYamlNodes = 1'000'000;
 
 struct YamlDocument {
   YAML::Node root;
-  std::optional<Diagnostic> error;    // nothing could be read
+  std::optional<Diagnostic> error;  // nothing could be read
   // Bytes that are not UTF-8 were replaced by U+FFFD and the rest was read; this names the
   // first of them. Readers report it and carry on.
   std::optional<Diagnostic> invalid_utf8;
@@ -31,6 +31,11 @@ struct YamlDocument {
 // written twice in one mapping (yaml-cpp keeps the first silently), a second document after
 // `---`, text in UTF-16 or UTF-32, and documents that expand to more than kMaxYamlNodes nodes.
 YamlDocument parse_yaml(const std::string& text, const std::string& name);
+// parse_yaml(text, name).root[key].Scalar() for a document parse_yaml accepts whose top
+// mapping has a scalar under `key`, else nothing; decided without building the document's
+// nodes (about a quarter less work: a class's student ids are read this way).
+std::optional<std::string> top_scalar(const std::string& text, const std::string& name,
+                                      const std::string& key);
 // Reads the file first with read_text_file (kMaxYamlFileBytes).
 YamlDocument load_yaml_file(const std::string& path);
 
@@ -38,6 +43,7 @@ YamlDocument load_yaml_file(const std::string& path);
 // a device (/dev/zero), a directory or a larger file is refused with a located message, and
 // opening never blocks (a FIFO with no writer). The size is checked again while reading (a
 // file that grows).
-std::optional<Diagnostic> read_text_file(const std::string& path, std::size_t max_bytes, std::string& out);
+std::optional<Diagnostic> read_text_file(const std::string& path, std::size_t max_bytes,
+                                         std::string& out);
 
 }  // namespace frustum
