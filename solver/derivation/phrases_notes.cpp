@@ -78,6 +78,10 @@ constexpr Phrase kPhrases[] = {
     {"{0}; ortho's near and far are the z coordinates z_min, z_max",
      "{0}; ortho の near, far は z 座標 z_min, z_max",
      "{0}; near и far в ortho — z-координаты z_min, z_max"},
+    // Course conventions (issue 16): each clause a pattern of its own, with and without the
+    // angle unit after it, so that any combination of them reads in every language.
+    {"{0}; the field of view is horizontal (fovx)", "{0}; 画角は水平方向 (fovx)",
+     "{0}; угол обзора горизонтальный (fovx)"},
     {"Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: the z "
      "row is +2/(z_max − "
      "z_min).",
