@@ -56,6 +56,7 @@ const std::set<std::string>& names() {
                                           "cos",
                                           "atan",
                                           "sqrt",
+                                          "diag",
                                           "min",
                                           "max",
                                           "OR",
@@ -196,7 +197,8 @@ TEST(Language, CourseConventionsLineIsTranslated) {
     for (const bool api_used : {false, true})
       for (const bool angles : {false, true}) {
         const std::string line =
-            describe(test::course_conventions(api), ConventionUse{.api = api_used, .angles = angles});
+            describe(test::course_conventions(api),
+                     ConventionUse{.api = api_used, .angles = angles, .handedness = true});
         if (line.empty()) continue;
         for (const Lang lang : {Lang::Ja, Lang::Ru})
           EXPECT_EQ(english_words(tr(line, lang)), std::vector<std::string>{})

@@ -91,12 +91,13 @@ inline GradeReport grade_answers(const ProblemSet& set, const SolvedSet& solved,
 }
 
 // Every course convention declared away from its default (z_planes: coordinates, fov:
-// horizontal), under `api`.
+// horizontal, handedness: left), under `api`.
 inline Conventions course_conventions(Api api) {
   Conventions c;
   c.api = api;
   c.z_planes = ZPlanes::Coordinates;
   c.fov = FovAxis::Horizontal;
+  c.handedness = Handedness::Left;
   return c;
 }
 
