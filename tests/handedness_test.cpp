@@ -9,6 +9,7 @@
 
 #include "grader/grade.hpp"
 #include "solver/derivation/i18n.hpp"
+#include "solver/derivation/render.hpp"
 #include "solver/kinds/problem_set.hpp"
 #include "solver/kinds/solve_set.hpp"
 #include "test_util.hpp"
@@ -260,6 +261,20 @@ TEST(Handedness, DeclarationErrorsNameTheField) {
       error_of(kLeft, "projection_plane", "{window: [200, 200], fov: 60, point: [0, 100, -300]}")
           .find("right-handed only"),
       std::string::npos);
+}
+
+
+// JSON states the handedness each problem was solved in: the declared one, else the API's own.
+TEST(Handedness, JsonStatesTheHandednessUsed) {
+  for (const auto& [conventions, expected] :
+       {std::pair<std::string, std::string>{kLeft, "left"}, {kRight, "right"},
+        {"{api: directx}", "left"}, {"{api: processing, handedness: right}", "right"}}) {
+    const std::string yaml = "conventions: " + conventions +
+                             "\nproblems:\n  - id: p\n    kind: normal\n    given: {points: [[0, 0, 0], "
+                             "[1, 0, 0], [0, 1, 0]]}\n";
+    const SetResult solved = solve_set(load_problem_set_from_string(yaml, "h.yaml"), false, {});
+    EXPECT_EQ(render_json(solved)["problems"][0]["conventions"]["handedness"], expected) << conventions;
+  }
 }
 
 }  // namespace
