@@ -200,6 +200,9 @@ TEST(Handedness, ProjectionIsTheRightHandedOneMirroredInZ) {
   EXPECT_NEAR(l[1], r[1], 1e-12);
   EXPECT_NEAR(l[2], r[2], 1e-12);
   EXPECT_EQ(left.answers.find("inside")->flag, right.answers.find("inside")->flag);
+  std::string notes;
+  for (const Step& st : left.derivation.steps()) notes += st.note + "\n";
+  EXPECT_NE(notes.find("mirrored left to right"), std::string::npos) << notes;
 }
 
 // The bundled example: every answer in the course's left-handed form is marked correct; the

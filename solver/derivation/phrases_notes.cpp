@@ -840,6 +840,17 @@ constexpr Phrase kPhrases[] = {
      "逆である.",
      "Матрица правой системы (взгляд вдоль −z) — эта же матрица с третьим столбцом с обратным знаком: "
      "тот же видимый объём с обращённой осью z."},
+    {"Read in right-handed coordinates (gluLookAt and the right-handed projection on the same numbers), "
+     "the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' x changes sign "
+     "between V and P, so for a view volume symmetric in x (l = −r) the picture is mirrored left to "
+     "right.",
+     "右手系で読むと (同じ数値に gluLookAt と右手系の投影を使うと), 連鎖は代わりに "
+     "P_right·diag(−1, 1, 1, 1)·V_right になる: V と P の間で視点座標の x の符号が変わるので, x について"
+     "対称な視体積 (l = −r) では画像が左右反転する.",
+     "В правой системе координат (gluLookAt и проекция правой системы на тех же числах) цепочка "
+     "вместо этого равна P_right·diag(−1, 1, 1, 1)·V_right: координата x вида меняет знак между V и P, "
+     "поэтому для видимого объёма, симметричного по x (l = −r), изображение зеркально отражается "
+     "слева направо."},
     {"Mind the order of the cross product: projection coordinates (x, y on the screen, z the depth away "
      "from the eye) are left-handed, as this course's eye space is, so the front normal of a triangle "
      "ABC is AC × AB (the order used by default).",

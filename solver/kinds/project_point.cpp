@@ -199,6 +199,12 @@ struct ProjectPoint {
     }
     // The lecture's names: P projects, V views, M places (v′ = (P·V·M)·v).
     const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps, "P");
+    if (steps && g.left_handed && g.camera)
+      steps->note("The right-handed reading",
+                  "Read in right-handed coordinates (gluLookAt and the right-handed projection on the same "
+                  "numbers), the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' x "
+                  "changes sign between V and P, so for a view volume symmetric in x (l = −r) the picture is "
+                  "mirrored left to right.");
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> h(4);
     h << p(0), p(1), p(2), Exact(1);
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> clip = m * h;
