@@ -4,7 +4,10 @@
 // the course's own form.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <random>
 
 #include "grader/grade.hpp"
@@ -278,6 +281,35 @@ TEST(Handedness, JsonStatesTheHandednessUsed) {
     const SetResult solved = solve_set(load_problem_set_from_string(yaml, "h.yaml"), false, {});
     EXPECT_EQ(render_json(solved)["problems"][0]["conventions"]["handedness"], expected) << conventions;
   }
+}
+
+
+// A scene file for `frustum render` declaring a left-handed OpenGL course is refused with its
+// location, as the render kind is in a set; DirectX's own left-handedness renders.
+TEST(Handedness, RenderCommandRefusesALeftHandedOpenGLScene) {
+  const std::string dir = ::testing::TempDir();
+  const auto write = [&](const std::string& name, const std::string& conventions) {
+    std::ofstream(dir + name) << "conventions: " << conventions
+                              << "\nscene:\n  viewport: {width: 8, height: 8}\n"
+                                 "  camera: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, 0]}\n"
+                                 "  perspective: {fovy: 60, aspect: 1, near: 1, far: 10}\n"
+                                 "  objects:\n    - triangle: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]\n";
+    return dir + name;
+  };
+  const auto run = [](const std::string& args) {
+    const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf;
+    while (const std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
+    pclose(p);
+    return out;
+  };
+  const std::string left = run("render " + write("lh.yaml", kLeft) + " -o " + dir + "lh.png");
+  EXPECT_NE(left.find("lh.yaml:1:"), std::string::npos) << left;
+  EXPECT_NE(left.find("handedness: left"), std::string::npos) << left;
+  const std::string dx = run("render " + write("dx.yaml", "{api: directx}") + " -o " + dir + "dx.png");
+  EXPECT_NE(dx.find("1 drawn"), std::string::npos) << dx;
 }
 
 }  // namespace
