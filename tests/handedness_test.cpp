@@ -23,8 +23,9 @@ namespace {
 // One problem of `kind` with `given` (YAML flow text), solved under `conventions`.
 ProblemResult solve_one(const std::string& conventions, const std::string& kind,
                         const std::string& given) {
-  const std::string yaml = "conventions: " + conventions + "\nproblems:\n  - id: p\n    kind: " +
-                           kind + "\n    given: " + given + "\n";
+  const std::string yaml = "conventions: " + conventions +
+                           "\nproblems:\n  - id: p\n    kind: " + kind + "\n    given: " + given +
+                           "\n";
   const ProblemSet set = load_problem_set_from_string(yaml, "h.yaml");
   if (set.problems.empty()) throw std::runtime_error("no problem read: " + yaml);
   return solve_problem(set.problems.at(0), set.file, true);
@@ -250,9 +251,11 @@ TEST(Handedness, GraderAcceptsTheCoursesOwnFormAndNamesTheRightHandedOne) {
 TEST(Handedness, DeclarationErrorsNameTheField) {
   const auto error_of = [](const std::string& conventions, const std::string& kind,
                            const std::string& given) {
-    const std::string yaml = "conventions: " + conventions + "\nproblems:\n  - id: p\n    kind: " +
-                             kind + "\n    given: " + given + "\n";
-    const std::vector<Diagnostic> errors = load_problem_set_from_string(yaml, "h.yaml").all_errors();
+    const std::string yaml = "conventions: " + conventions +
+                             "\nproblems:\n  - id: p\n    kind: " + kind + "\n    given: " + given +
+                             "\n";
+    const std::vector<Diagnostic> errors =
+        load_problem_set_from_string(yaml, "h.yaml").all_errors();
     return errors.empty() ? std::string() : errors.front().format();
   };
   const std::string tri = "{points: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}";
@@ -269,31 +272,33 @@ TEST(Handedness, DeclarationErrorsNameTheField) {
       std::string::npos);
 }
 
-
 // JSON states the handedness each problem was solved in: the declared one, else the API's own.
 TEST(Handedness, JsonStatesTheHandednessUsed) {
-  for (const auto& [conventions, expected] :
-       {std::pair<std::string, std::string>{kLeft, "left"}, {kRight, "right"},
-        {"{api: directx}", "left"}, {"{api: processing, handedness: right}", "right"}}) {
-    const std::string yaml = "conventions: " + conventions +
-                             "\nproblems:\n  - id: p\n    kind: normal\n    given: {points: [[0, 0, 0], "
-                             "[1, 0, 0], [0, 1, 0]]}\n";
+  for (const auto& [conventions, expected] : {std::pair<std::string, std::string>{kLeft, "left"},
+                                              {kRight, "right"},
+                                              {"{api: directx}", "left"},
+                                              {"{api: processing, handedness: right}", "right"}}) {
+    const std::string yaml =
+        "conventions: " + conventions +
+        "\nproblems:\n  - id: p\n    kind: normal\n    given: {points: [[0, 0, 0], "
+        "[1, 0, 0], [0, 1, 0]]}\n";
     const SetResult solved = solve_set(load_problem_set_from_string(yaml, "h.yaml"), false, {});
-    EXPECT_EQ(render_json(solved)["problems"][0]["conventions"]["handedness"], expected) << conventions;
+    EXPECT_EQ(render_json(solved)["problems"][0]["conventions"]["handedness"], expected)
+        << conventions;
   }
 }
-
 
 // A scene file for `frustum render` declaring a left-handed OpenGL course is refused with its
 // location, as the render kind is in a set; DirectX's own left-handedness renders.
 TEST(Handedness, RenderCommandRefusesALeftHandedOpenGLScene) {
   const std::string dir = ::testing::TempDir();
   const auto write = [&](const std::string& name, const std::string& conventions) {
-    std::ofstream(dir + name) << "conventions: " << conventions
-                              << "\nscene:\n  viewport: {width: 8, height: 8}\n"
-                                 "  camera: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, 0]}\n"
-                                 "  perspective: {fovy: 60, aspect: 1, near: 1, far: 10}\n"
-                                 "  objects:\n    - triangle: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]\n";
+    std::ofstream(dir + name)
+        << "conventions: " << conventions
+        << "\nscene:\n  viewport: {width: 8, height: 8}\n"
+           "  camera: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, 0]}\n"
+           "  perspective: {fovy: 60, aspect: 1, near: 1, far: 10}\n"
+           "  objects:\n    - triangle: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]\n";
     return dir + name;
   };
   const auto run = [](const std::string& args) {
@@ -308,7 +313,8 @@ TEST(Handedness, RenderCommandRefusesALeftHandedOpenGLScene) {
   const std::string left = run("render " + write("lh.yaml", kLeft) + " -o " + dir + "lh.png");
   EXPECT_NE(left.find("lh.yaml:1:"), std::string::npos) << left;
   EXPECT_NE(left.find("handedness: left"), std::string::npos) << left;
-  const std::string dx = run("render " + write("dx.yaml", "{api: directx}") + " -o " + dir + "dx.png");
+  const std::string dx =
+      run("render " + write("dx.yaml", "{api: directx}") + " -o " + dir + "dx.png");
   EXPECT_NE(dx.find("1 drawn"), std::string::npos) << dx;
 }
 
