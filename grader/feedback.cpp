@@ -92,7 +92,7 @@ std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
   for (const AnswerGrade& a : p.answers)
     out += fmt::format("| `{}` | {} | {} / {} | {} | {} |\n", markdown_code(a.name), verdict_word(a.verdict, lang),
                        score_text(a.score), score_text(a.max_score), cell(got_shown(a)),
-                       cell(a.expected.shown().unicode));
+                       cell(tr(a.expected.shown(), lang).unicode));
   out += "\n";
   for (const AnswerGrade& a : p.answers) {
     if (a.verdict == Verdict::Correct) continue;

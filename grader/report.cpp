@@ -65,7 +65,7 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
       out += fmt::format("  {} {}: {}", mark(a.verdict, style.color), a.name, tr(to_string(a.verdict), lang));
       if (a.verdict != Verdict::Missing) out += fmt::format(" — {} {}", lang == Lang::En ? "you wrote" : tr("You wrote", lang) + ":", a.got_text);
       if (a.verdict != Verdict::Correct)
-        out += fmt::format("; {} {}", lang == Lang::En ? "expected" : tr("Expected", lang) + ":", a.expected.shown().unicode);
+        out += fmt::format("; {} {}", lang == Lang::En ? "expected" : tr("Expected", lang) + ":", tr(a.expected.shown(), lang).unicode);
       out += "\n";
       if (!a.misconception.empty())
         out += fmt::format("      {}: {}{}\n", tr("Common mistake", lang), tr(a.misconception, lang),

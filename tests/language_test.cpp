@@ -56,6 +56,7 @@ const std::set<std::string>& names() {
                                           "cos",
                                           "atan",
                                           "sqrt",
+                                          "diag",
                                           "min",
                                           "max",
                                           "OR",
@@ -184,6 +185,61 @@ TEST(Language, SourceIsCitedUnderTheTitle) {
   EXPECT_NE(render_html(solved, Lang::En).find("<p class=\"source\">Source: К. В. Рябинин"),
             std::string::npos);
   EXPECT_EQ(render_json(solved)["source"], set.source);
+}
+
+
+// Course conventions and boolean keys in the student's language (issue 16).
+
+// The conventions line of a course that declares every course convention reads in Japanese and
+// Russian under every API, whatever the kind states (with or without the angle unit).
+TEST(Language, CourseConventionsLineIsTranslated) {
+  for (const Api api : {Api::OpenGL, Api::Processing, Api::DirectX})
+    for (const bool api_used : {false, true})
+      for (const bool angles : {false, true}) {
+        const std::string line =
+            describe(test::course_conventions(api),
+                     ConventionUse{.api = api_used, .angles = angles, .handedness = true});
+        if (line.empty()) continue;
+        for (const Lang lang : {Lang::Ja, Lang::Ru})
+          EXPECT_EQ(english_words(tr(line, lang)), std::vector<std::string>{})
+              << to_string(lang) << ": " << tr(line, lang);
+      }
+}
+
+// A true/false key is printed in the student's language (真/偽, истина/ложь) in the text and
+// Markdown feedback, and a student who writes that word back gets the mark.
+TEST(Language, BooleanKeyIsPrintedInTheStudentsLanguageAndAcceptedBack) {
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const SolvedSet solved = solve_for_grading(set);
+  const std::string id = "seed001-pixel-z";
+  for (const Lang lang : {Lang::Ja, Lang::Ru}) {
+    YAML::Node wrong;
+    wrong[id]["inside"] = tr("false", lang);
+    const GradeReport r = test::grade_answers(set, solved, wrong);
+    const std::string expected = tr("Expected", lang) + ": " + tr("true", lang);
+    EXPECT_NE(render_grade_text(r, TextStyle{false, lang}).find(expected), std::string::npos)
+        << render_grade_text(r, TextStyle{false, lang});
+    const ProblemGrade* p = nullptr;
+    for (const ProblemGrade& g : r.problems)
+      if (g.id == id) p = &g;
+    ASSERT_NE(p, nullptr);
+    const std::string md = render_problem_feedback_markdown(*p, lang);
+    EXPECT_NE(md.find("| " + tr("true", lang) + " |"), std::string::npos) << md;
+    EXPECT_EQ(md.find("| true |"), std::string::npos) << md;
+    // The key's own word, written back by the student, is correct.
+    YAML::Node right;
+    right[id]["inside"] = tr("true", lang);
+    const GradeReport ok = test::grade_answers(set, solved, right);
+    for (const ProblemGrade& g : ok.problems) {
+      if (g.id != id) continue;
+      for (const AnswerGrade& a : g.answers) {
+        if (a.name == "inside") {
+          EXPECT_EQ(a.verdict, Verdict::Correct) << to_string(lang);
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -90,6 +90,17 @@ inline GradeReport grade_answers(const ProblemSet& set, const SolvedSet& solved,
   return grade(set, load_submission_from_string(text.c_str(), "answers.yaml"), &solved);
 }
 
+// Every course convention declared away from its default (z_planes: coordinates, fov:
+// horizontal, handedness: left), under `api`.
+inline Conventions course_conventions(Api api) {
+  Conventions c;
+  c.api = api;
+  c.z_planes = ZPlanes::Coordinates;
+  c.fov = FovAxis::Horizontal;
+  c.handedness = Handedness::Left;
+  return c;
+}
+
 // The sets whose problems the texts come from: the bundled ones and, per kind and convention,
 // generated variants.
 inline std::vector<ProblemSet> student_text_sets(int per_kind = 2) {
@@ -100,14 +111,18 @@ inline std::vector<ProblemSet> student_text_sets(int per_kind = 2) {
     ProblemSet set;
     set.file = "generated.yaml";
     for (const Api api : {Api::OpenGL, Api::Processing, Api::DirectX})
-      for (int i = 0; i < per_kind; ++i) {
-        ProblemSpec base = default_problem(kind, i % 3 == 1, i % 3 == 2);
-        base.conventions.api = api;
-        base.id = kind.name + "-" + std::string(to_string(api)) + "-" + std::to_string(i);
-        ProblemSpec drawn =
-            draw_problem(base, "generated.yaml", 2000 + static_cast<std::uint64_t>(i));
-        if (!drawn.error) set.problems.push_back(std::move(drawn));
-      }
+      for (const bool course : {false, true})
+        for (int i = 0; i < per_kind; ++i) {
+          ProblemSpec base = default_problem(kind, i % 3 == 1, i % 3 == 2);
+          base.conventions.api = api;
+          // A course that declares every course convention away from its default.
+          if (course) base.conventions = course_conventions(api);
+          base.id = kind.name + "-" + std::string(to_string(api)) + (course ? "-course-" : "-") +
+                    std::to_string(i);
+          ProblemSpec drawn =
+              draw_problem(base, "generated.yaml", 2000 + static_cast<std::uint64_t>(i));
+          if (!drawn.error) set.problems.push_back(std::move(drawn));
+        }
     sets.push_back(std::move(set));
   }
   return sets;

@@ -406,6 +406,26 @@ constexpr Phrase kPhrases[] = {
     {"empty answer: write the numbers of the true statements, or none",
      "解答が空. 正しい記述の番号を書くか, なければ「なし」と書くこと",
      "пустой ответ: укажите номера верных утверждений или «ни одного»"},
+    // Handedness as a course convention (issue 16).
+    {"right-handed matrix", "右手系の行列", "матрица правой системы"},
+    {"You used the right-handed matrix (the eye looking down −z); in this course's left-handed "
+     "coordinates the eye looks down +z, so the third column has the opposite sign (w′ = z).",
+     "右手系の行列 (視点は −z 方向を見る) を使っています. このコースの左手系の座標では視点は +z 方向を"
+     "見るので, 第 3 列の符号が逆になります (w′ = z).",
+     "Вы использовали матрицу правой системы (глаз смотрит вдоль −z); в левой системе координат этого "
+     "курса глаз смотрит вдоль +z, поэтому третий столбец имеет обратный знак (w′ = z)."},
+    {"You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, with the vertices "
+     "counter-clockwise seen from the front, the front normal is n = e₁ × e₀.",
+     "右手系の式 e₀ × e₁ を計算しています. この左手系の座標では, 表から見て頂点が反時計回りなので, "
+     "表向きの法線は n = e₁ × e₀ です.",
+     "Вы взяли e₀ × e₁, формулу правой системы: в этих левых координатах, когда вершины обходятся "
+     "против часовой стрелки при взгляде с лицевой стороны, лицевая нормаль n = e₁ × e₀."},
+    {"Your camera's z axis points away from the scene: in left-handed coordinates the camera looks "
+     "down +z, so z = (center − eye)/‖center − eye‖ and x = up × z.",
+     "あなたのカメラの z 軸はシーンと反対を向いています. 左手系の座標ではカメラは +z 方向を見るので, "
+     "z = (center − eye)/‖center − eye‖, x = up × z です.",
+     "Ось z вашей камеры направлена от сцены: в левой системе координат камера смотрит вдоль +z, "
+     "поэтому z = (center − eye)/‖center − eye‖ и x = up × z."},
 };
 
 }  // namespace

@@ -78,6 +78,10 @@ constexpr Phrase kPhrases[] = {
     {"{0}; ortho's near and far are the z coordinates z_min, z_max",
      "{0}; ortho の near, far は z 座標 z_min, z_max",
      "{0}; near и far в ortho — z-координаты z_min, z_max"},
+    // Course conventions (issue 16): each clause a pattern of its own, with and without the
+    // angle unit after it, so that any combination of them reads in every language.
+    {"{0}; the field of view is horizontal (fovx)", "{0}; 画角は水平方向 (fovx)",
+     "{0}; угол обзора горизонтальный (fovx)"},
     {"Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: the z "
      "row is +2/(z_max − "
      "z_min).",
@@ -763,6 +767,104 @@ constexpr Phrase kPhrases[] = {
     // Text not split into sentences above.
     {"depth:", "奥行き:", "глубина:"},
     {"frame:", "フレーム:", "кадр:"},
+    // Handedness as a course convention (issue 16).
+    {"OpenGL, left-handed: eye space looking down +z, column vectors (p′ = M·p), NDC cube [−1, 1]³ "
+     "with near → −1, window origin bottom-left",
+     "OpenGL, 左手系: 視点座標系は +z 方向を見る, 列ベクトル (p′ = M·p), 正規化視体積は立方体 [−1, 1]³ "
+     "(near → −1), ウィンドウの原点は左下",
+     "OpenGL, левая система: система координат вида с взглядом вдоль +z, столбцы-векторы (p′ = M·p), "
+     "куб NDC [−1, 1]³ (near → −1), начало окна внизу слева"},
+    {"OpenGL, left-handed: eye space looking down +z, column vectors (p′ = M·p), NDC cube [−1, 1]³ "
+     "with near → −1, window origin bottom-left; angles in {0}",
+     "OpenGL, 左手系: 視点座標系は +z 方向を見る, 列ベクトル (p′ = M·p), 正規化視体積は立方体 [−1, 1]³ "
+     "(near → −1), ウィンドウの原点は左下; 角度の単位は{0}",
+     "OpenGL, левая система: система координат вида с взглядом вдоль +z, столбцы-векторы (p′ = M·p), "
+     "куб NDC [−1, 1]³ (near → −1), начало окна внизу слева; углы в {0}"},
+    {"Processing, left-handed: eye space looking down +z, OpenGL's NDC cube [−1, 1]³, column vectors, "
+     "window origin top-left with y pointing down",
+     "Processing, 左手系: 視点座標系は +z 方向を見る, OpenGL の正規化視体積 [−1, 1]³, 列ベクトル, "
+     "ウィンドウの原点は左上で y は下向き",
+     "Processing, левая система: система координат вида с взглядом вдоль +z, куб NDC [−1, 1]³ как в "
+     "OpenGL, столбцы-векторы, начало окна вверху слева, y направлена вниз"},
+    {"Processing, left-handed: eye space looking down +z, OpenGL's NDC cube [−1, 1]³, column vectors, "
+     "window origin top-left with y pointing down; angles in {0}",
+     "Processing, 左手系: 視点座標系は +z 方向を見る, OpenGL の正規化視体積 [−1, 1]³, 列ベクトル, "
+     "ウィンドウの原点は左上で y は下向き; 角度の単位は{0}",
+     "Processing, левая система: система координат вида с взглядом вдоль +z, куб NDC [−1, 1]³ как в "
+     "OpenGL, столбцы-векторы, начало окна вверху слева, y направлена вниз; углы в {0}"},
+    {"Left-handed coordinates", "左手系の座標", "Левая система координат"},
+    {"Left-handed coordinates; angles in {0}", "左手系の座標; 角度の単位は{0}",
+     "Левая система координат; углы в {0}"},
+    {"In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is the side of "
+     "e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite normal, that of the "
+     "mirror image.",
+     "左手系では p₀, p₁, p₂ が反時計回りに見える側は e₁ × e₀ = −(e₀ × e₁) の側である: 右手系の式 "
+     "e₀ × e₁ は逆向きの法線, すなわち鏡像の法線を与える.",
+     "В левой системе координат сторона, откуда p₀, p₁, p₂ идут против часовой стрелки, — это "
+     "сторона e₁ × e₀ = −(e₀ × e₁): формула правой системы e₀ × e₁ даёт противоположную нормаль, "
+     "нормаль зеркального образа."},
+    {"In left-handed coordinates the counter-clockwise side's normal is the right-handed sum with its "
+     "sign changed (e₁ × e₀ for a triangle).",
+     "左手系では反時計回りに見える側の法線は右手系の和の符号を変えたもの (三角形では e₁ × e₀).",
+     "В левой системе координат нормаль стороны, откуда обход идёт против часовой стрелки, — это "
+     "сумма правой системы с обратным знаком (для треугольника e₁ × e₀)."},
+    {"These coordinates are left-handed: AC × AB points to the side from which A, B, C run "
+     "counter-clockwise (the front).",
+     "この座標は左手系である: AC × AB は A, B, C が反時計回りに見える側 (表) を向く.",
+     "Эти координаты — левая система: AC × AB направлен в ту сторону, откуда A, B, C идут против "
+     "часовой стрелки (лицевая сторона)."},
+    {"Read in a right-handed frame, the same numbers describe the mirror image, whose front normal is "
+     "AB × AC = −(AC × AB).",
+     "右手系で読むと同じ数値は鏡像を表し, その表の法線は AB × AC = −(AC × AB) である.",
+     "Прочитанные в правой системе, те же числа описывают зеркальный образ, лицевая нормаль "
+     "которого AB × AC = −(AC × AB)."},
+    {"Read in right-handed coordinates the same numbers describe the mirror image: its normal e₀ × e₁ "
+     "is −n, D_f changes sign, and the eye would see the other side.",
+     "右手系で読むと同じ数値は鏡像を表す: その法線 e₀ × e₁ は −n で, D_f の符号が変わり, "
+     "視点からは反対側が見える.",
+     "Прочитанные в правой системе, те же числа описывают зеркальный образ: его нормаль e₀ × e₁ "
+     "равна −n, D_f меняет знак, и глаз увидел бы другую сторону."},
+    {"The handedness decides the answer.", "答えは座標系の右手・左手で決まる.",
+     "Ответ зависит от ориентации системы координат."},
+    {"Left-handed, the camera looks down +z.", "左手系では, カメラは +z 方向を見る.",
+     "В левой системе камера смотрит вдоль +z."},
+    {"A right-handed camera at the same place (gluLookAt, looking down −z) has the x and z rows "
+     "negated: V_right = diag(−1, 1, −1, 1)·V.",
+     "同じ位置の右手系のカメラ (gluLookAt, −z 方向を見る) では x と z の行の符号が逆になる: "
+     "V_right = diag(−1, 1, −1, 1)·V.",
+     "У камеры правой системы в том же месте (gluLookAt, взгляд вдоль −z) строки x и z меняют знак: "
+     "V_right = diag(−1, 1, −1, 1)·V."},
+    {"Left-handed, looking down +z: z = n maps to z_ndc = −1 and z = f to +1, so near and far are also "
+     "the z coordinates of their planes.",
+     "左手系で +z 方向を見る: z = n は z_ndc = −1 に, z = f は +1 に写るので, near と far はそれぞれの"
+     "平面の z 座標でもある.",
+     "Левая система, взгляд вдоль +z: z = n переходит в z_ndc = −1, а z = f — в +1, так что near и far "
+     "— это и z-координаты их плоскостей."},
+    {"The right-handed matrix (looking down −z) is this one with its third column negated: the same "
+     "view volume with the z axis reversed.",
+     "右手系の行列 (−z 方向を見る) はこの行列の第 3 列の符号を変えたもの: 同じ視体積で z 軸の向きだけが"
+     "逆である.",
+     "Матрица правой системы (взгляд вдоль −z) — эта же матрица с третьим столбцом с обратным знаком: "
+     "тот же видимый объём с обращённой осью z."},
+    {"Read in right-handed coordinates (gluLookAt and the right-handed projection on the same numbers), "
+     "the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' x changes sign "
+     "between V and P, so for a view volume symmetric in x (l = −r) the picture is mirrored left to "
+     "right.",
+     "右手系で読むと (同じ数値に gluLookAt と右手系の投影を使うと), 連鎖は代わりに "
+     "P_right·diag(−1, 1, 1, 1)·V_right になる: V と P の間で視点座標の x の符号が変わるので, x について"
+     "対称な視体積 (l = −r) では画像が左右反転する.",
+     "В правой системе координат (gluLookAt и проекция правой системы на тех же числах) цепочка "
+     "вместо этого равна P_right·diag(−1, 1, 1, 1)·V_right: координата x вида меняет знак между V и P, "
+     "поэтому для видимого объёма, симметричного по x (l = −r), изображение зеркально отражается "
+     "слева направо."},
+    {"Mind the order of the cross product: projection coordinates (x, y on the screen, z the depth away "
+     "from the eye) are left-handed, as this course's eye space is, so the front normal of a triangle "
+     "ABC is AC × AB (the order used by default).",
+     "外積の順序に注意: 投影座標系 (画面上の x, y と視点から奥へ向かう奥行き z) はこのコースの視点座標系と"
+     "同じく左手系なので, 三角形 ABC の表の法線は AC × AB (既定の順序) である.",
+     "Следите за порядком векторного произведения: координаты проекции (x, y на экране, z — глубина "
+     "от глаза) образуют левую систему, как и система координат вида в этом курсе, поэтому лицевая "
+     "нормаль треугольника ABC — AC × AB (порядок по умолчанию)."},
 };
 
 }  // namespace

@@ -233,6 +233,13 @@ constexpr Phrase kPhrases[] = {
     {"Reason: {0}", "理由: {0}", "Обоснование: {0}"},
     {"True", "正しい", "верно"},
     {"False", "誤り", "неверно"},
+    // Handedness as a course convention (issue 16).
+    {"Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
+     "法線 (左手系: n = e₁ × e₀, 反時計回り = 表)",
+     "Нормаль (левая система: n = e₁ × e₀, против часовой стрелки = лицевая)"},
+    {"Normal of the {0}-gon by Newell's method, left-handed", "Newell の方法による {0} 角形の法線 (左手系)",
+     "Нормаль {0}-угольника методом Newell, левая система"},
+    {"The right-handed reading", "右手系で読むと", "Прочтение в правой системе"},
 };
 
 }  // namespace

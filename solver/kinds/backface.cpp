@@ -17,11 +17,12 @@ namespace {
 struct Backface {
   static constexpr const char* kName = "backface";
   static constexpr const char* kSummary = "is a polygon front- or back-facing from the eye";
-  static constexpr ConventionUse kUses{.api = false, .angles = false};
+  static constexpr ConventionUse kUses{.api = false, .angles = false, .handedness = true};
   struct Given {
     Polygon3<Exact> points;
     Vec3<Exact> eye;
     Api api;
+    bool left_handed = false;  // a left-handed course under OpenGL's winding: n = e₁ × e₀
   };
   static std::vector<std::string> given_fields() { return {"points", "eye"}; }
   static std::vector<AnswerSpec> answers() {
@@ -32,7 +33,7 @@ struct Backface {
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
-    return {r.points("points", 3), r.vector<3>("eye"), c.api};
+    return {r.points("points", 3), r.vector<3>("eye"), c.api, left_handed_columns(c)};
   }
 
   static std::string facing_of(const Exact& df) {
@@ -42,7 +43,7 @@ struct Backface {
   // Error carried forward: D_f from the student's normal and view vector, facing from D_f.
   static Answers carry_forward(const Given& g, const Answers& student) {
     Answers out;
-    Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", nullptr);
+    Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
     Vec3<Exact> v = g.eye - g.points[0];
     const auto sn = carried(student, "normal", 3);
     const auto sv = carried(student, "view", 3);
@@ -56,7 +57,7 @@ struct Backface {
   }
 
   static std::vector<Misconception> misconceptions(const Given& g) {
-    const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", nullptr);
+    const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
     const Vec3<Exact> v = g.eye - g.points[0];
     const Exact df = canonical(v.dot(n));
     // Each mistake with everything it changes downstream, so that it is named only where the
@@ -71,9 +72,14 @@ struct Backface {
     reversed_v.set("df", Value::scalar(-df));
     reversed_v.set("facing", Value::category(facing_of(-df)));
     return {{"reversed cross product",
-             "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the front "
-             "normal is n = e₀ × e₁.",
-             "Normal (n = e₀ × e₁, counter-clockwise = front)", reversed_n},
+             g.left_handed ? "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, "
+                             "with the vertices counter-clockwise seen from the front, the front normal is "
+                             "n = e₁ × e₀."
+                           : "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the front "
+                             "normal is n = e₀ × e₁.",
+             g.left_handed ? "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)"
+                           : "Normal (n = e₀ × e₁, counter-clockwise = front)",
+             reversed_n},
             {"view vector reversed",
              "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the "
              "polygon to the eye, and that flips the sign of D_f.",
@@ -87,7 +93,7 @@ struct Backface {
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
-    return backface_numeric(g.points, g.eye, p);
+    return backface_numeric(g.left_handed ? reversed_winding(g.points) : g.points, g.eye, p);
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
@@ -96,7 +102,7 @@ struct Backface {
                   "In DirectX's left-handed coordinates the same formula n = e₀ × e₁ points to "
                   "the side from which the vertices appear clockwise — Direct3D's default front "
                   "face (FrontCounterClockwise = false).");
-    const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", steps);
+    const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", steps, g.left_handed);
     if (steps) steps->yields("normal");
     Answers out;
     out.set("normal", Value::vector(n));
@@ -138,6 +144,11 @@ struct Backface {
                                          : "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.";
       steps->add("Front or back", {}, {}, word(facing)).note = why;
       steps->yields("facing");
+      if (g.left_handed && sign != 0)
+        steps->note("The right-handed reading",
+                    "Read in right-handed coordinates the same numbers describe the mirror image: its "
+                    "normal e₀ × e₁ is −n, D_f changes sign, and the eye would see the other side. The "
+                    "handedness decides the answer.");
     }
     return out;
   }

@@ -27,6 +27,7 @@ struct DepthAtPixel {
     Vec2<Exact> pixel;
     CrossOrder order;
     bool order_given = false;
+    bool course_left_handed = false;  // the course's eye space (conventions: handedness)
   };
   static std::vector<std::string> given_fields() { return {"triangle", "pixel", "cross"}; }
   static std::vector<AnswerSpec> answers() {
@@ -37,8 +38,9 @@ struct DepthAtPixel {
             {"inside", AnswerKind::Bool, {}, {"inside", "outside"}}};
   }
 
-  static Given parse(GivenReader& r, const Conventions&) {
+  static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
+    g.course_left_handed = handedness_of(c) == Handedness::Left;
     const Polygon3<Exact> t = r.points("triangle", 3, 3);
     g.triangle = {t[0], t[1], t[2]};
     g.pixel = r.vector<2>("pixel");
@@ -140,6 +142,10 @@ struct DepthAtPixel {
                   g.order_given
                       ? "Mind the order of the cross product; this problem uses " +
                             g.order.first + " × " + g.order.second + "."
+                  : g.course_left_handed
+                      ? "Mind the order of the cross product: projection coordinates (x, y on the screen, z the "
+                        "depth away from the eye) are left-handed, as this course's eye space is, so the front "
+                        "normal of a triangle ABC is AC × AB (the order used by default)."
                       : "Mind the order of the cross product: in a left-handed frame the front normal of a "
                         "triangle ABC is AC × AB (the order used by default).");
     const Vec3<Exact> n = cross_normal_with_steps(g.triangle, g.order, "triangle", steps);

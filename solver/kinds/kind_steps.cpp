@@ -1,5 +1,7 @@
 #include "solver/kinds/kind_steps.hpp"
 
+#include <algorithm>
+
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -78,8 +80,14 @@ Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps) {
   return u;
 }
 
+Polygon3<Exact> reversed_winding(const Polygon3<Exact>& p) {
+  Polygon3<Exact> out(p.rbegin(), p.rend());
+  if (!out.empty()) std::rotate(out.begin(), out.end() - 1, out.end());
+  return out;
+}
+
 Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::string& field,
-                                      Derivation* steps) {
+                                      Derivation* steps, bool left_handed) {
   const PolygonAnalysis a = analyse_polygon(p);
   if (a.degenerate)
     throw DomainError(field, "the polygon is degenerate: its vertices are collinear or "
@@ -87,22 +95,39 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
   Vec3<Exact> n;
   if (p.size() == 3) {
     const Vec3<Exact> e0 = edge(p, 0), e1 = edge(p, 1);
-    n = e0.cross(e1);
+    n = left_handed ? Vec3<Exact>(e1.cross(e0)) : Vec3<Exact>(e0.cross(e1));
     for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
     if (steps) {
       steps->add("Edge vectors",
                  math("e₀ = p₁ − p₀,  e₁ = p₂ − p₁",
                       "\\mathbf{e}_0 = \\mathbf{p}_1 - \\mathbf{p}_0,\\; \\mathbf{e}_1 = \\mathbf{p}_2 - \\mathbf{p}_1"),
                  {}, math("e₀ = ", "\\mathbf{e}_0 = ") + vec(e0) + math(",  e₁ = ", ",\\; \\mathbf{e}_1 = ") + vec(e1));
-      steps->add("Normal (n = e₀ × e₁, counter-clockwise = front)",
-                 math("n = e₀ × e₁", "\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
-                 math("n = ", "\\mathbf{n} = ") + vec(e0) + math(" × ", " \\times ") + vec(e1),
-                 math("n = ", "\\mathbf{n} = ") + vec(n));
+      if (left_handed)
+        steps->add("Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
+                   math("n = e₁ × e₀", "\\mathbf{n} = \\mathbf{e}_1 \\times \\mathbf{e}_0"),
+                   math("n = ", "\\mathbf{n} = ") + vec(e1) + math(" × ", " \\times ") + vec(e0),
+                   math("n = ", "\\mathbf{n} = ") + vec(n))
+            .note = "In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is "
+                    "the side of e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite "
+                    "normal, that of the mirror image.";
+      else
+        steps->add("Normal (n = e₀ × e₁, counter-clockwise = front)",
+                   math("n = e₀ × e₁", "\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
+                   math("n = ", "\\mathbf{n} = ") + vec(e0) + math(" × ", " \\times ") + vec(e1),
+                   math("n = ", "\\mathbf{n} = ") + vec(n));
     }
   } else {
     n = newell_normal(p);
+    if (left_handed) n = -n;
     for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
-    if (steps)
+    if (steps && left_handed)
+      steps->add(fmt::format("Normal of the {}-gon by Newell's method, left-handed", p.size()),
+                 math("n = −Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
+                      "\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times (\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
+                 {}, math("n = ", "\\mathbf{n} = ") + vec(n))
+          .note = "In left-handed coordinates the counter-clockwise side's normal is the right-handed "
+                  "sum with its sign changed (e₁ × e₀ for a triangle).";
+    else if (steps)
       steps->add(fmt::format("Normal of the {}-gon by Newell's method", p.size()),
                  math("n = Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
                       "\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times (\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),

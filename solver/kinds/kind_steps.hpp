@@ -17,8 +17,14 @@ namespace frustum {
 // Newell's method for more vertices. Records the steps and warnings (degenerate, nearly
 // parallel or zero edges, non-planar) when `steps` is set. Throws DomainError on a
 // degenerate polygon, naming `field`.
+// The polygon listed the other way round from p₀ (p₀, pₙ₋₁, …, p₁): its right-handed normal is
+// the left-handed front normal of the original (the numeric paths compute it so).
+Polygon3<Exact> reversed_winding(const Polygon3<Exact>& p);
+
+// `left_handed`: the coordinates are left-handed, so the front (counter-clockwise) side's
+// normal is e₁ × e₀ (Newell's sum negated), and the step says how it relates to e₀ × e₁.
 Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::string& field,
-                                      Derivation* steps);
+                                      Derivation* steps, bool left_handed = false);
 
 // The plane n·p = d scaled the way a teacher writes it: integer coefficients without a common
 // factor when possible (x + y − z = −6), the orientation of n kept.

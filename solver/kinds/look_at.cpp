@@ -20,6 +20,7 @@ struct LookAt {
     Vec3<Exact> eye, center, up;
     std::vector<Vec3<Exact>> points;
     Api api;
+    bool left_handed = false;  // a left-handed course under column vectors: LookAtLH's basis
   };
   static std::vector<std::string> given_fields() { return {"eye", "center", "up", "points"}; }
   static std::vector<AnswerSpec> answers() {
@@ -27,13 +28,13 @@ struct LookAt {
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
-    Given g{r.vector<3>("eye"), r.vector<3>("center"), r.vector<3>("up"), {}, c.api};
+    Given g{r.vector<3>("eye"), r.vector<3>("center"), r.vector<3>("up"), {}, c.api, left_handed_columns(c)};
     if (r.has("points")) g.points = r.points("points", 1);
     return g;
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
-    const MatX<Exact> m = look_at_with_steps(g.eye, g.center, g.up, g.api, "", steps);
+    const MatX<Exact> m = look_at_with_steps(g.eye, g.center, g.up, g.api, "", steps, g.left_handed);
     Answers out;
     out.set("matrix", matrix_value(paper_form(m, g.api)));
     if (steps) steps->yields("matrix");
@@ -50,13 +51,17 @@ struct LookAt {
     reversed.center = Vec3<Exact>(canonical(2 * g.eye(0) - g.center(0)), canonical(2 * g.eye(1) - g.center(1)),
                                   canonical(2 * g.eye(2) - g.center(2)));
     try {
+      const bool plus_z = g.api == Api::DirectX || g.left_handed;
       return {{"reversed look-at basis",
                g.api == Api::DirectX
                    ? "Your camera's z axis points away from the scene: DirectX's camera looks down +z, so "
                      "z = (center − eye)/‖center − eye‖ and x = up × z."
+               : g.left_handed
+                   ? "Your camera's z axis points away from the scene: in left-handed coordinates the camera "
+                     "looks down +z, so z = (center − eye)/‖center − eye‖ and x = up × z."
                    : "Your camera's z axis points at the scene: the camera looks down −z, so "
                      "z = (eye − center)/‖eye − center‖ and x = up × z.",
-               g.api == Api::DirectX ? "Camera axes (left-handed, looking down +z)" : "Camera axes (right-handed, looking down −z)",
+               plus_z ? "Camera axes (left-handed, looking down +z)" : "Camera axes (right-handed, looking down −z)",
                solve(reversed, nullptr)}};
     } catch (const std::exception&) {
       return {};

@@ -14,10 +14,11 @@ namespace {
 struct Normal {
   static constexpr const char* kName = "normal";
   static constexpr const char* kSummary = "the normal and unit normal of a polygon";
-  static constexpr ConventionUse kUses{.api = false, .angles = false};
+  static constexpr ConventionUse kUses{.api = false, .angles = false, .handedness = true};
   struct Given {
     Polygon3<Exact> points;              // when given as a polygon
     std::optional<CrossOrder> order;     // when given as A, B, C
+    bool left_handed = false;            // the course's coordinates (conventions: handedness)
   };
   // Error carried forward: the unit normal of the student's own normal.
   static Answers carry_forward(const Given&, const Answers& student) {
@@ -32,8 +33,9 @@ struct Normal {
             {"unit_normal", AnswerKind::UnitVector, {"normal"}, {}}};
   }
 
-  static Given parse(GivenReader& r, const Conventions&) {
+  static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
+    g.left_handed = left_handed_columns(c);  // DirectX: clockwise = front, e₀ × e₁ as it is
     if (r.has("points")) {
       if (r.has("A") || r.has("cross"))
         r.fail("points", "give either points or A, B, C (with cross), not both");
@@ -43,11 +45,15 @@ struct Normal {
     if (!r.has("A") && !r.has("B") && !r.has("C"))
       r.fail("points", "missing required field: give points (a polygon) or A, B, C");
     g.points = {r.vector<3>("A"), r.vector<3>("B"), r.vector<3>("C")};
-    g.order = read_cross(r, "cross", CrossOrder{});
+    // The front normal by default: AB × AC in right-handed coordinates, AC × AB in left-handed.
+    g.order = read_cross(r, "cross", g.left_handed ? CrossOrder{"AC", "AB"} : CrossOrder{});
     return g;
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    // The numeric paths take the polygon's right-handed normal: a left-handed one is that of
+    // the polygon listed the other way round.
+    if (g.left_handed && !g.order) return normal_numeric(reversed_winding(g.points), g.order, p);
     return normal_numeric(g.points, g.order, p);
   }
 
@@ -57,12 +63,17 @@ struct Normal {
       // Which side the normal points to depends on the frame's handedness: said here, as
       // depth_at_pixel says it for its left-handed projection coordinates.
       if (steps)
-        steps->note("Orientation", "In a right-handed frame AB × AC points to the side from which A, B, C run "
-                                   "counter-clockwise; in a left-handed frame (such as projection coordinates) "
-                                   "that side's normal is AC × AB.");
+        steps->note("Orientation", g.left_handed
+                                       ? "These coordinates are left-handed: AC × AB points to the side from which "
+                                         "A, B, C run counter-clockwise (the front). Read in a right-handed frame, "
+                                         "the same numbers describe the mirror image, whose front normal is "
+                                         "AB × AC = −(AC × AB)."
+                                       : "In a right-handed frame AB × AC points to the side from which A, B, C run "
+                                         "counter-clockwise; in a left-handed frame (such as projection coordinates) "
+                                         "that side's normal is AC × AB.");
       n = cross_normal_with_steps({g.points[0], g.points[1], g.points[2]}, *g.order, "A", steps);
     } else {
-      n = polygon_normal_with_steps(g.points, "points", steps);
+      n = polygon_normal_with_steps(g.points, "points", steps, g.left_handed);
     }
     if (steps) steps->yields("normal");
     Answers out;

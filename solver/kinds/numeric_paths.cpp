@@ -515,7 +515,7 @@ struct ProjectionInputs {
   Volume<S> volume;
   std::optional<S> fovy, aspect;
   Api api = Api::OpenGL;
-
+  bool left_handed = false;  // ProjectionSpec::left_handed: LookAtLH's basis, third column negated
 };
 
 // The exact inputs converted one by one by f (to T, to Ranged<T>).
@@ -533,6 +533,7 @@ auto map_inputs(const ProjectionInputs<Exact>& in, F f) {
   if (in.fovy) out.fovy = f(*in.fovy);
   if (in.aspect) out.aspect = f(*in.aspect);
   out.api = in.api;
+  out.left_handed = in.left_handed;
   return out;
 }
 
@@ -545,7 +546,10 @@ MatX<S> clip_from_world(const ProjectionInputs<S>& in) {
     const Volume<S> v = in.fovy ? perspective_volume(*in.fovy, *in.aspect, in.volume.near, in.volume.far) : in.volume;
     m = frustum_matrix(v, in.api);
   }
-  if (in.camera) m = MatX<S>(m * look_at((*in.camera)[0], (*in.camera)[1], (*in.camera)[2], in.api));
+  if (in.left_handed)
+    for (int i = 0; i < 4; ++i) m(i, 2) = -m(i, 2);
+  const Api basis = in.left_handed ? Api::DirectX : in.api;
+  if (in.camera) m = MatX<S>(m * look_at((*in.camera)[0], (*in.camera)[1], (*in.camera)[2], basis));
   if (in.model) m = MatX<S>(m * *in.model);
   return m;
 }
@@ -580,6 +584,7 @@ std::unique_ptr<NumericSolver> project_point_numeric(
     exact.aspect = *projection.aspect;
   }
   exact.api = api;
+  exact.left_handed = projection.left_handed;
   return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
     struct In {
       ProjectionInputs<T> given;

@@ -14,11 +14,12 @@ namespace {
 struct Plane {
   static constexpr const char* kName = "plane";
   static constexpr const char* kSummary = "the plane through points, or through a point with a normal";
-  static constexpr ConventionUse kUses{.api = false, .angles = false};
+  static constexpr ConventionUse kUses{.api = false, .angles = false, .handedness = true};
   struct Given {
     Polygon3<Exact> points;  // empty when point + normal
     Vec3<Exact> point;
     Vec3<Exact> normal;
+    bool left_handed = false;  // the course's coordinates: the front normal is e₁ × e₀
   };
   static std::vector<std::string> given_fields() { return {"points", "point", "normal"}; }
   static std::vector<AnswerSpec> answers() {
@@ -28,8 +29,9 @@ struct Plane {
             {"distance", AnswerKind::Scalar, {"plane"}, {}}};
   }
 
-  static Given parse(GivenReader& r, const Conventions&) {
+  static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
+    g.left_handed = left_handed_columns(c);  // DirectX: clockwise = front, e₀ × e₁ as it is
     if (r.has("points")) {
       if (r.has("point") || r.has("normal"))
         r.fail("points", "give either points or point + normal, not both");
@@ -68,20 +70,21 @@ struct Plane {
 
   static std::vector<Misconception> misconceptions(const Given& g) {
     const Vec3<Exact> p0 = g.points.empty() ? g.point : g.points[0];
-    const Vec3<Exact> n = g.points.empty() ? g.normal : polygon_normal_with_steps(g.points, "points", nullptr);
+    const Vec3<Exact> n =
+        g.points.empty() ? g.normal : polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
     const auto m = constant_sign_mistake(n, canonical(n.dot(p0)), "p₀", "Plane through p₀ with normal n");
     return m ? std::vector<Misconception>{*m} : std::vector<Misconception>{};
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
-    return plane_numeric(g.points, g.point, g.normal, p);
+    return plane_numeric(g.left_handed ? reversed_winding(g.points) : g.points, g.point, g.normal, p);
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
     Vec3<Exact> n = g.normal;
     Vec3<Exact> p0 = g.point;
     if (!g.points.empty()) {
-      n = polygon_normal_with_steps(g.points, "points", steps);
+      n = polygon_normal_with_steps(g.points, "points", steps, g.left_handed);
       p0 = g.points[0];
     }
     if (steps) steps->yields("normal");

@@ -73,6 +73,14 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   if (p["text"].IsDefined()) spec.text = read_string(p["text"], file, spec.field + ".text");
   spec.conventions = read_conventions(p["conventions"], file, spec.field + ".conventions",
                                       set.conventions);
+  // Kinds that do not yet follow a left-handed course under OpenGL's or Processing's matrices
+  // (their solids' windings, scene cameras and projection plane are right-handed): refused
+  // rather than answered in the other handedness.
+  if (left_handed_columns(spec.conventions) &&
+      (spec.kind == "edge_visibility" || spec.kind == "render" || spec.kind == "projection_plane"))
+    fail_at(p["conventions"].IsDefined() ? p["conventions"] : p["kind"], file,
+            spec.field + ".conventions.handedness",
+            "the kind '" + spec.kind + "' is solved right-handed only (or left-handed with api: directx)");
   spec.tolerance = read_tolerance(p["tolerance"], file, spec.field + ".tolerance", set.tolerance);
   spec.grading = read_grading(p["grading"], file, spec.field + ".grading", set.grading);
 
@@ -163,7 +171,7 @@ Conventions read_conventions(const YAML::Node& n, const std::string& file,
                              const std::string& field, Conventions base) {
   if (!n.IsDefined() || n.IsNull()) return base;
   if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {api: opengl, angles: degrees}");
-  check_keys(n, {"api", "angles", "z_planes", "fov"}, file, field);
+  check_keys(n, {"api", "angles", "z_planes", "fov", "handedness"}, file, field);
   if (n["api"].IsDefined()) {
     const std::string v = read_string(n["api"], file, field + ".api");
     const auto api = parse_api(v);
@@ -197,6 +205,18 @@ Conventions read_conventions(const YAML::Node& n, const std::string& file,
                   did_you_mean(v, {"vertical", "horizontal"}));
     base.fov = v == "horizontal" ? FovAxis::Horizontal : FovAxis::Vertical;
   }
+  if (n["handedness"].IsDefined()) {
+    const std::string v = read_string(n["handedness"], file, field + ".handedness");
+    if (v != "right" && v != "left")
+      fail_at(n["handedness"], file, field + ".handedness",
+              "'" + v + "' is not one of right, left" + did_you_mean(v, {"right", "left"}));
+    base.handedness = v == "left" ? Handedness::Left : Handedness::Right;
+  }
+  // DirectX's matrices here are the left-handed ones (LookAtLH, PerspectiveOffCenterLH).
+  if (base.api == Api::DirectX && base.handedness == Handedness::Right)
+    fail_at(n["handedness"].IsDefined() ? n["handedness"] : n, file, field + ".handedness",
+            "DirectX is left-handed here (LookAtLH, PerspectiveOffCenterLH); a right-handed course "
+            "uses api: opengl or processing");
   return base;
 }
 

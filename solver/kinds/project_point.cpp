@@ -32,6 +32,7 @@ struct ProjectPoint {
     ProjectionSpec projection;
     Exact width, height;
     Api api;
+    bool left_handed = false;  // a left-handed course under column vectors (camera and projection)
   };
   static std::vector<std::string> given_fields() {
     return {"point", "model", "camera", "perspective", "frustum", "ortho", "viewport"};
@@ -60,6 +61,7 @@ struct ProjectPoint {
     if (exact_sign(g.height) <= 0) vp.fail("height", "must be positive");
     vp.finish();
     g.api = c.api;
+    g.left_handed = left_handed_columns(c);
     return g;
   }
 
@@ -190,13 +192,19 @@ struct ProjectPoint {
     }
     if (g.camera) {
       const auto& [eye, center, up] = *g.camera;
-      view = look_at_with_steps(eye, center, up, g.api, "camera.", steps);
+      view = look_at_with_steps(eye, center, up, g.api, "camera.", steps, g.left_handed);
       p = moved(view, p);
       if (steps) steps->add("World to view coordinates", math("p_view = V·p_world", "\\mathbf{p}_{\\text{view}} = V \\mathbf{p}_{\\text{world}}"), {},
                             math("p_view = ", "\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
     }
     // The lecture's names: P projects, V views, M places (v′ = (P·V·M)·v).
     const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps, "P");
+    if (steps && g.left_handed && g.camera)
+      steps->note("The right-handed reading",
+                  "Read in right-handed coordinates (gluLookAt and the right-handed projection on the same "
+                  "numbers), the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' x "
+                  "changes sign between V and P, so for a view volume symmetric in x (l = −r) the picture is "
+                  "mirrored left to right.");
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> h(4);
     h << p(0), p(1), p(2), Exact(1);
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> clip = m * h;
@@ -298,7 +306,7 @@ struct ProjectPoint {
     p["far"] = gen_number(far);
     const Exact depth = o.hard ? Exact(GiNaC::numeric(near, rng.integer(2, 10))) : Exact(rng.integer(near + 1, far - 1));
     const Exact x = depth * GiNaC::numeric(rng.integer(-2, 2), 4), y = depth * GiNaC::numeric(rng.integer(-2, 2), 4);
-    const int toward = o.conventions.api == Api::DirectX ? 1 : -1;
+    const int toward = o.conventions.api == Api::DirectX || left_handed_columns(o.conventions) ? 1 : -1;
     if (!o.hard && rng.chance(1, 3)) {
       const std::int64_t k = rng.integer(2, 10);
       YAML::Node cam;

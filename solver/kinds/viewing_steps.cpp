@@ -37,6 +37,7 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
                         "give only one of perspective, frustum and ortho");
   ProjectionSpec p;
   p.unit = c.angles;
+  p.left_handed = left_handed_columns(c);
   if (r.has("perspective")) {
     GivenReader g = r.child("perspective", {"fovy", "fovx", "fov", "aspect", "near", "far"});
     p.type = ProjectionSpec::Type::Perspective;
@@ -75,7 +76,8 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
   GivenReader g = r.child(frustum ? "frustum" : "ortho", {"left", "right", "bottom", "top", "near", "far"});
   p.volume = {g.number("left"), g.number("right"), g.number("bottom"), g.number("top"),
               g.number("near"), g.number("far")};
-  p.z_coordinates = !frustum && c.z_planes == ZPlanes::Coordinates && c.api != Api::DirectX;
+  // Looking down +z, near and far are the planes' z coordinates already.
+  p.z_coordinates = !frustum && c.z_planes == ZPlanes::Coordinates && c.api != Api::DirectX && !p.left_handed;
   if (canonical(p.volume.right - p.volume.left).is_zero()) g.fail("right", "left = right: the view volume has no width");
   if (canonical(p.volume.top - p.volume.bottom).is_zero()) g.fail("top", "bottom = top: the view volume has no height");
   if (canonical(p.volume.far - p.volume.near).is_zero()) g.fail("far", "near = far: the view volume has no depth");
@@ -154,18 +156,20 @@ std::string multiply_note(Api api) {
 
 MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center,
                                const Vec3<Exact>& up, Api api, const std::string& field,
-                               Derivation* steps) {
+                               Derivation* steps, bool left_handed) {
   const Vec3<Exact> forward = center - eye;
   if (canonical(forward.dot(forward)).is_zero())
     throw DomainError(field + "center", "center = eye: the camera looks nowhere");
   const Vec3<Exact> side = forward.cross(up);
   if (canonical(side.dot(side)).is_zero())
     throw DomainError(field + "up", "up is parallel to the view direction (or zero): the camera's roll is undefined");
-  const MatX<Exact> m = canonical(look_at(eye, center, up, api));
+  // A left-handed course takes LookAtLH's basis (DirectX's, in column form).
+  const bool plus_z = api == Api::DirectX || left_handed;
+  const MatX<Exact> m = canonical(look_at(eye, center, up, plus_z ? Api::DirectX : api));
   if (steps) {
     const auto row = [&](int i) { return Vec3<Exact>(m(i, 0), m(i, 1), m(i, 2)); };
     const Vec3<Exact> f = unit(forward);
-    Vec3<Exact> side = api == Api::DirectX ? Vec3<Exact>(up.cross(f)) : Vec3<Exact>(f.cross(up));
+    Vec3<Exact> side = plus_z ? Vec3<Exact>(up.cross(f)) : Vec3<Exact>(f.cross(up));
     for (int i = 0; i < 3; ++i) side(i) = canonical(side(i));
     // Forward, side and up, as gluLookAt (or LookAtLH) computes them, then the translations.
     steps->add("Viewing direction",
@@ -174,7 +178,7 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
                    math(",  ‖center − eye‖ = ", ",\\; \\lVert\\mathbf{c} - \\mathbf{e}\\rVert = ") + exact(norm(forward), true),
                math("f = ", "\\mathbf{f} = ") + vec(f, true))
         .note = "eye = the camera's position (e), center = the point it looks at (c), up = the up vector.";
-    if (api == Api::DirectX) {
+    if (plus_z) {
       steps->add("Camera axes (left-handed, looking down +z)",
                  math("z = f,  x = (up × z)/‖up × z‖,  y = z × x",
                       "\\mathbf{z} = \\mathbf{f},\\; \\mathbf{x} = \\frac{\\mathbf{up}\\times\\mathbf{z}}{\\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert},\\; \\mathbf{y} = \\mathbf{z}\\times\\mathbf{x}"),
@@ -186,11 +190,20 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
                                       "\\mathbf{t} = (-\\mathbf{x}\\cdot\\mathbf{e},\\, -\\mathbf{y}\\cdot\\mathbf{e},\\, -\\mathbf{z}\\cdot\\mathbf{e})"),
                  math("eye = ", "\\mathbf{e} = ") + vec(eye),
                  math("t = ", "\\mathbf{t} = ") + vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true));
-      steps->add("View matrix",
-                 math("V = [x_x y_x z_x 0; x_y y_y z_y 0; x_z y_z z_z 0; t_x t_y t_z 1] (p′ = p·V)",
-                      "V = \\begin{bmatrix} x_x & y_x & z_x & 0 \\\\ x_y & y_y & z_y & 0 \\\\ x_z & y_z & z_z & 0 \\\\ t_x & t_y & t_z & 1 \\end{bmatrix}"),
-                 {}, math("V = ") + matrix_text(paper_form(m, api)))
-          .note = multiply_note(api);
+      if (api == Api::DirectX)
+        steps->add("View matrix",
+                   math("V = [x_x y_x z_x 0; x_y y_y z_y 0; x_z y_z z_z 0; t_x t_y t_z 1] (p′ = p·V)",
+                        "V = \\begin{bmatrix} x_x & y_x & z_x & 0 \\\\ x_y & y_y & z_y & 0 \\\\ x_z & y_z & z_z & 0 \\\\ t_x & t_y & t_z & 1 \\end{bmatrix}"),
+                   {}, math("V = ") + matrix_text(paper_form(m, api)))
+            .note = multiply_note(api);
+      else
+        steps->add("View matrix",
+                   math("V = [x_x x_y x_z t_x; y_x y_y y_z t_y; z_x z_y z_z t_z; 0 0 0 1]",
+                        "V = \\begin{bmatrix} x_x & x_y & x_z & t_x \\\\ y_x & y_y & y_z & t_y \\\\ z_x & z_y & z_z & t_z \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"),
+                   {}, math("V = ") + matrix_text(m))
+            .note = multiply_note(api) +
+                    " Left-handed, the camera looks down +z. A right-handed camera at the same place "
+                    "(gluLookAt, looking down −z) has the x and z rows negated: V_right = diag(−1, 1, −1, 1)·V.";
     } else {
       steps->add("Side axis",
                  math("s = (f × up)/‖f × up‖", "\\mathbf{s} = \\frac{\\mathbf{f}\\times\\mathbf{up}}{\\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert}"),
@@ -235,7 +248,7 @@ MathText ortho_coordinates_formula(Api api, const std::string& name) {
           "-\\frac{z_{\\max}+z_{\\min}}{z_{\\max}-z_{\\min}} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
 }
 
-MathText projection_formula(bool ortho, Api api, const std::string& name) {
+MathText projection_formula(bool ortho, Api api, bool left_handed, const std::string& name) {
   const bool y_down = api == Api::Processing;
   if (api == Api::DirectX)
     return ortho
@@ -254,20 +267,24 @@ MathText projection_formula(bool ortho, Api api, const std::string& name) {
                          "& 0 & 0 \\\\ "
                          "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{f}{f-n} & 1 \\\\ 0 & 0 & "
                          "\\frac{nf}{n-f} & 0 \\end{bmatrix}");
+  // Left-handed under column vectors (glm's *LH_NO): the right-handed matrix with its third
+  // column negated, w′ = z.
   const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
+  const std::string minus = left_handed ? "" : "−", latex_minus = left_handed ? "" : "-";
+  const std::string plus = left_handed ? "−" : "", latex_plus = left_handed ? "-" : "";
+  const std::string suffix = left_handed ? "_LH" : "";
   if (ortho)
-    return math("ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
-                    "2/(t−b) 0 −(t+b)/(t−b); 0 0 −2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
-                name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
-                    latex_sign +
-                    "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & -\\frac{2}{f-n} & "
-                    "-\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
-  return math("frustum: [2n/(r−l) 0 (r+l)/(r−l) 0; 0 " + sign +
-                  "2n/(t−b) (t+b)/(t−b) 0; 0 0 −(f+n)/(f−n) −2fn/(f−n); 0 0 −1 0]",
-              name + " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & \\frac{r+l}{r-l} & 0 \\\\ 0 & " +
-                  latex_sign +
-                  "\\frac{2n}{t-b} & \\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & -\\frac{f+n}{f-n} & "
-                  "-\\frac{2fn}{f-n} \\\\ 0 & 0 & -1 & 0 \\end{bmatrix}");
+    return math("ortho" + suffix + ": [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign + "2/(t−b) 0 −(t+b)/(t−b); 0 0 " +
+                    minus + "2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
+                name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " + latex_sign +
+                    "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & " + latex_minus +
+                    "\\frac{2}{f-n} & -\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+  return math("frustum" + suffix + ": [2n/(r−l) 0 " + plus + "(r+l)/(r−l) 0; 0 " + sign + "2n/(t−b) " + plus +
+                  "(t+b)/(t−b) 0; 0 0 " + minus + "(f+n)/(f−n) −2fn/(f−n); 0 0 " + minus + "1 0]",
+              name + " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & " + latex_plus + "\\frac{r+l}{r-l} & 0 \\\\ 0 & " +
+                  latex_sign + "\\frac{2n}{t-b} & " + latex_plus + "\\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & " +
+                  latex_minus + "\\frac{f+n}{f-n} & -\\frac{2fn}{f-n} \\\\ 0 & 0 & " + latex_minus +
+                  "1 & 0 \\end{bmatrix}");
 }
 
 // "l = −1,  r = 1, …" for the six planes of a view volume.
@@ -283,8 +300,9 @@ MathText volume_text(const Volume<Exact>& v) {
 // Why a perspective matrix has the form it has, in the lectures' order: similar triangles put
 // the projected point at n·x/(−z), a division no matrix can do; homogeneous coordinates move
 // −z into w′, and the perspective divide performs it (DirectX: eye space looks down +z).
-void perspective_idea_steps(Api api, const std::string& name, Derivation& steps) {
-  const bool plus_z = api == Api::DirectX;
+void perspective_idea_steps(Api api, bool left_handed, const std::string& name, Derivation& steps) {
+  const bool plus_z = api == Api::DirectX || left_handed;
+  const bool rows = api == Api::DirectX;  // w′ = z in column 4 (row vectors), else in row 4
   steps
       .add("Similar triangles",
            plus_z ? math("x_n : n = x : z,  y_n : n = y : z", "x_n : n = x : z,\\; y_n : n = y : z")
@@ -303,9 +321,11 @@ void perspective_idea_steps(Api api, const std::string& name, Derivation& steps)
                        "z = −n at (x_n, y_n): the projection divides by −z.";
   steps
       .add("Homogeneous coordinates: the depth goes into w′",
-           plus_z ? math("w′ = z  (" + name + "_∗4 = (0, 0, 1, 0)ᵀ)",
-                         "w' = z \\quad (" + name + "_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
-                  : math("w′ = −z  (" + name + "_4∗ = (0, 0, −1, 0))",
+           rows     ? math("w′ = z  (" + name + "_∗4 = (0, 0, 1, 0)ᵀ)",
+                           "w' = z \\quad (" + name + "_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
+           : plus_z ? math("w′ = z  (" + name + "_4∗ = (0, 0, 1, 0))",
+                           "w' = z \\quad (" + name + "_{4 \\ast} = (0, 0, 1, 0))")
+                    : math("w′ = −z  (" + name + "_4∗ = (0, 0, −1, 0))",
                          "w' = -z \\quad (" + name + "_{4 \\ast} = (0, 0, -1, 0))"),
            {},
            plus_z ? math("x_ndc = x′ / w′ = x′ / z",
@@ -365,8 +385,12 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
                 "on the vertical extent, which reads θ as a horizontal angle.";
   }
   MatX<Exact> m = p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
+  // Left-handed (the eye looks down +z): z ↦ −z before the right-handed matrix, so its third
+  // column changes sign.
+  if (p.left_handed)
+    for (int i = 0; i < 4; ++i) m(i, 2) = -m(i, 2);
   m = canonical(m);
-  if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, name, *steps);
+  if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, p.left_handed, name, *steps);
   // The course's reading: z_min = near, z_max = far as coordinates map to −1 and +1, so the z row
   // is +2/(z_max − z_min), −(z_max + z_min)/(z_max − z_min); glOrtho's planes z = −n, −f negate
   // the first entry. Both map the same volume; only the direction of the z axis differs.
@@ -378,12 +402,16 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
     const bool ortho = p.type == ProjectionSpec::Type::Ortho;
     Step& s = steps->add(ortho ? "Orthographic projection matrix" : "Perspective projection matrix",
                          p.z_coordinates ? ortho_coordinates_formula(api, name)
-                                         : projection_formula(ortho, api, name),
+                                         : projection_formula(ortho, api, p.left_handed, name),
                          volume_text(v), math(name + " = ") + matrix_text(paper_form(m, api)));
     s.note = multiply_note(api);
     if (api == Api::Processing)
       s.note += " Processing negates the y row because its window's y axis points down.";
-    if (api == Api::OpenGL && !ortho)
+    if (p.left_handed)
+      s.note += " Left-handed, looking down +z: z = n maps to z_ndc = −1 and z = f to +1, so near and far are "
+                "also the z coordinates of their planes. The right-handed matrix (looking down −z) is this one "
+                "with its third column negated: the same view volume with the z axis reversed.";
+    if (api == Api::OpenGL && !ortho && !p.left_handed)
       s.note += " z = −n maps to z_ndc = −1 and z = −f to +1. (A sentence stating z = −n ↦ +1 contradicts "
                 "this matrix; the matrix decides.)";
     if (api == Api::DirectX) s.note += " Looking down +z, z_ndc runs from 0 at near to 1 at far.";
@@ -431,6 +459,15 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
     out.push_back({"fovx for fovy",
                    "You used the angle as the horizontal field of view; perspective() takes the vertical one (fovy).",
                    frustum_step, fovx});
+  }
+  // A left-handed course's projection written with the right-handed matrix (looking down −z).
+  if (p.left_handed) {
+    ProjectionSpec right = p;
+    right.left_handed = false;
+    out.push_back({"right-handed matrix",
+                   "You used the right-handed matrix (the eye looking down −z); in this course's left-handed "
+                   "coordinates the eye looks down +z, so the third column has the opposite sign (w′ = z).",
+                   "", right});
   }
   // near/far sign: the planes' z coordinates (−n, −f) put into the matrix instead of the
   // distances n, f.

@@ -29,6 +29,9 @@ struct ProjectionSpec {
   std::optional<Exact> fovx;
   AngleUnit unit = AngleUnit::Degrees;
   bool z_coordinates = false;  // ortho: near, far are z_min, z_max (Conventions::z_planes)
+  // A left-handed course under OpenGL's or Processing's matrices: the eye looks down +z, w′ = z,
+  // and the matrix is the right-handed one with its third column negated (left_handed_columns).
+  bool left_handed = false;
 };
 
 // Reads whichever of perspective / frustum / ortho is given (exactly one), checking the
@@ -42,10 +45,11 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
                                   const std::string& name = "M");
 
 // The view matrix of a camera (column form) with its steps; throws DomainError naming
-// field + "center" or field + "up" on a degenerate camera.
+// field + "center" or field + "up" on a degenerate camera. `left_handed` (a left-handed course
+// under OpenGL's or Processing's column vectors): LookAtLH's basis, looking down +z.
 MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center,
                                const Vec3<Exact>& up, Api api, const std::string& field,
-                               Derivation* steps);
+                               Derivation* steps, bool left_handed = false);
 
 // Every point through M (with the divide by w), one step each, yielding "points" (written
 // P′ = P·M under DirectX's row vectors; M is the column form either way); the

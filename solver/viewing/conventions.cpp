@@ -28,18 +28,37 @@ std::optional<AngleUnit> parse_angle_unit(std::string_view text) {
   return std::nullopt;
 }
 
+Handedness handedness_of(const Conventions& c) {
+  return c.handedness.value_or(c.api == Api::DirectX ? Handedness::Left : Handedness::Right);
+}
+
+bool left_handed_columns(const Conventions& c) {
+  return c.api != Api::DirectX && handedness_of(c) == Handedness::Left;
+}
+
 std::string describe(const Conventions& c, ConventionUse use) {
   const std::string_view unit = c.angles == AngleUnit::Degrees ? "degrees" : "radians";
-  if (!use.api) return use.angles ? "Angles in " + std::string(unit) : "";
+  if (!use.api) {
+    // Kinds with no eye space state a left-handed course's frame (the front normal flips).
+    if (use.handedness && left_handed_columns(c))
+      return use.angles ? "Left-handed coordinates; angles in " + std::string(unit)
+                        : "Left-handed coordinates";
+    return use.angles ? "Angles in " + std::string(unit) : "";
+  }
   std::string s;
+  const bool left = left_handed_columns(c);
   switch (c.api) {
     case Api::OpenGL:
-      s = "OpenGL: right-handed eye space looking down −z, column vectors (p′ = M·p), "
-          "NDC cube [−1, 1]³ with near → −1, window origin bottom-left";
+      s = left ? "OpenGL, left-handed: eye space looking down +z, column vectors (p′ = M·p), "
+                 "NDC cube [−1, 1]³ with near → −1, window origin bottom-left"
+               : "OpenGL: right-handed eye space looking down −z, column vectors (p′ = M·p), "
+                 "NDC cube [−1, 1]³ with near → −1, window origin bottom-left";
       break;
     case Api::Processing:
-      s = "Processing: OpenGL's matrices and NDC cube [−1, 1]³, column vectors, "
-          "window origin top-left with y pointing down";
+      s = left ? "Processing, left-handed: eye space looking down +z, OpenGL's NDC cube "
+                 "[−1, 1]³, column vectors, window origin top-left with y pointing down"
+               : "Processing: OpenGL's matrices and NDC cube [−1, 1]³, column vectors, "
+                 "window origin top-left with y pointing down";
       break;
     case Api::DirectX:
       s = "DirectX: left-handed eye space looking down +z, row vectors (p′ = p·M), "

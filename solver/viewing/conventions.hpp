@@ -25,12 +25,27 @@ enum class ZPlanes { Distances, Coordinates };
 // width (as some lectures read θ); `fovy` and `fovx` always name their own axis.
 enum class FovAxis { Vertical, Horizontal };
 
+// The handedness of world and eye space. OpenGL and Processing are right-handed (the eye looks
+// down −z); DirectX is left-handed (the eye looks down +z). A course may declare `left` with
+// OpenGL's or Processing's column vectors and NDC cube: the eye then looks down +z (as a
+// lecture's projection coordinates, where z is the depth), look_at's basis is LookAtLH's and
+// the projection puts w′ = +z (the right-handed matrices with their third column negated), and
+// a polygon's front normal (counter-clockwise = front) is e₁ × e₀ (AC × AB).
+enum class Handedness { Right, Left };
+
 struct Conventions {
   Api api = Api::OpenGL;
   AngleUnit angles = AngleUnit::Degrees;
   ZPlanes z_planes = ZPlanes::Distances;
   FovAxis fov = FovAxis::Vertical;
+  std::optional<Handedness> handedness;  // unset: the API's own (handedness_of)
 };
+
+// The declared handedness, or the API's own (left for DirectX, right otherwise).
+Handedness handedness_of(const Conventions& c);
+// A left-handed course under OpenGL's or Processing's matrices (DirectX is left-handed anyway,
+// with its own matrices).
+bool left_handed_columns(const Conventions& c);
 
 std::string_view to_string(Api api);
 std::string_view to_string(AngleUnit unit);
@@ -42,6 +57,8 @@ std::optional<AngleUnit> parse_angle_unit(std::string_view text);
 struct ConventionUse {
   bool api = true;     // handedness, viewing direction, NDC range, row/column vectors, window origin
   bool angles = true;  // degrees or radians
+  // The handedness alone (for kinds with no API: a polygon's front normal), stated when left.
+  bool handedness = false;
 };
 
 // One sentence naming the conventions `use` marks, for the first step of a derivation; empty

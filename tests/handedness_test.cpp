@@ -1,0 +1,322 @@
+// Handedness as a course convention (issue 16): `conventions: {handedness: left}` declared once
+// changes every kind it concerns, each answer relates to the right-handed one as the derivation
+// says (a mirror in z), the headers say the same handedness as the steps, and the grader takes
+// the course's own form.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+
+#include "grader/grade.hpp"
+#include "solver/derivation/i18n.hpp"
+#include "solver/derivation/render.hpp"
+#include "solver/kinds/problem_set.hpp"
+#include "solver/kinds/solve_set.hpp"
+#include "test_util.hpp"
+
+namespace frustum {
+namespace {
+
+// One problem of `kind` with `given` (YAML flow text), solved under `conventions`.
+ProblemResult solve_one(const std::string& conventions, const std::string& kind,
+                        const std::string& given) {
+  const std::string yaml = "conventions: " + conventions +
+                           "\nproblems:\n  - id: p\n    kind: " + kind + "\n    given: " + given +
+                           "\n";
+  const ProblemSet set = load_problem_set_from_string(yaml, "h.yaml");
+  if (set.problems.empty()) throw std::runtime_error("no problem read: " + yaml);
+  return solve_problem(set.problems.at(0), set.file, true);
+}
+
+const std::string kRight = "{api: opengl}";
+const std::string kLeft = "{api: opengl, handedness: left}";
+
+std::string point_text(const std::array<int, 3>& p) {
+  return "[" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) +
+         "]";
+}
+std::array<int, 3> mirrored(const std::array<int, 3>& p) { return {p[0], p[1], -p[2]}; }
+
+const std::vector<double>& numbers(const ProblemResult& r, const std::string& answer) {
+  const Value* v = r.answers.find(answer);
+  if (!v) throw std::runtime_error("no answer " + answer);
+  return v->numbers;
+}
+
+// Seed 003's example read left-handed: n = e₁ × e₀ = (−1, 1, −1), D_f = +2, front (right-handed:
+// (1, −1, 1), −2, back).
+TEST(Handedness, Seed003BackFaceExampleFlipsInALeftHandedCourse) {
+  const std::string given = "{points: [[1, 0, 0], [1, 1, 1], [0, 1, 2]], eye: [0, 1, 0]}";
+  const ProblemResult right = solve_one(kRight, "backface", given);
+  const ProblemResult left = solve_one(kLeft, "backface", given);
+  ASSERT_FALSE(right.error || left.error);
+  EXPECT_EQ(test::exact_text(right, "normal"), "1, -1, 1");
+  EXPECT_EQ(test::exact_text(right, "df"), "-2");
+  EXPECT_EQ(right.answers.find("facing")->word, "back");
+  EXPECT_EQ(test::exact_text(left, "normal"), "-1, 1, -1");
+  EXPECT_EQ(test::exact_text(left, "df"), "2");
+  EXPECT_EQ(left.answers.find("facing")->word, "front");
+}
+
+// Property over many triangles and eyes: the left-handed reading of the numbers is the
+// right-handed reading of their mirror image in z — normal mirrored, D_f and facing the same —
+// and, on the same numbers, the normal and D_f change sign.
+TEST(Handedness, NormalAndFacingAreTheMirrorImagesOfTheRightHandedOnes) {
+  std::mt19937 rng(16);
+  std::uniform_int_distribution<int> coord(-6, 6);
+  int checked = 0;
+  for (int i = 0; i < 60; ++i) {
+    std::array<std::array<int, 3>, 4> p;  // three vertices and the eye
+    for (auto& q : p)
+      for (int& c : q) c = coord(rng);
+    const auto given = [&](bool mirror) {
+      const auto at = [&](int k) { return point_text(mirror ? mirrored(p[k]) : p[k]); };
+      return "{points: [" + at(0) + ", " + at(1) + ", " + at(2) + "], eye: " + at(3) + "}";
+    };
+    const ProblemResult left = solve_one(kLeft, "backface", given(false));
+    if (left.error) continue;  // a degenerate triangle
+    const ProblemResult right_mirror = solve_one(kRight, "backface", given(true));
+    const ProblemResult right_same = solve_one(kRight, "backface", given(false));
+    ASSERT_FALSE(right_mirror.error || right_same.error);
+    const std::vector<double>& nl = numbers(left, "normal");
+    const std::vector<double>& nm = numbers(right_mirror, "normal");
+    const std::vector<double>& ns = numbers(right_same, "normal");
+    EXPECT_EQ((std::vector<double>{nl[0], nl[1], -nl[2]}), nm);
+    EXPECT_EQ((std::vector<double>{-ns[0], -ns[1], -ns[2]}), nl);
+    EXPECT_EQ(numbers(left, "df"), numbers(right_mirror, "df"));
+    EXPECT_EQ(numbers(left, "df")[0], -numbers(right_same, "df")[0]);
+    EXPECT_EQ(left.answers.find("facing")->word, right_mirror.answers.find("facing")->word);
+    // The normal kind agrees with the back-face test's normal, in both forms of its given.
+    const ProblemResult normal = solve_one(
+        kLeft, "normal",
+        "{points: [" + point_text(p[0]) + ", " + point_text(p[1]) + ", " + point_text(p[2]) + "]}");
+    const ProblemResult abc = solve_one(
+        kLeft, "normal",
+        "{A: " + point_text(p[0]) + ", B: " + point_text(p[1]) + ", C: " + point_text(p[2]) + "}");
+    EXPECT_EQ(numbers(normal, "normal"), nl);
+    EXPECT_EQ(numbers(abc, "normal"), nl);  // AC × AB = e₁ × e₀ for a triangle
+    // The plane through them: the same plane, its normal the left-handed front normal.
+    const std::string polygon =
+        "{points: [" + point_text(p[0]) + ", " + point_text(p[1]) + ", " + point_text(p[2]) + "]}";
+    const ProblemResult plane_left = solve_one(kLeft, "plane", polygon);
+    const ProblemResult plane_right = solve_one(kRight, "plane", polygon);
+    EXPECT_EQ(numbers(plane_left, "normal"), nl);
+    EXPECT_EQ(numbers(plane_left, "distance"), numbers(plane_right, "distance"));
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+}
+
+// Seed 001's plane method is in projection coordinates, left-handed in either course: the same
+// answers, and the note says how the course's eye space relates to them.
+TEST(Handedness, DepthAtPixelIsTheSameInBothCoursesAndSaysWhy) {
+  const std::string given = "{triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1]}";
+  const ProblemResult right = solve_one(kRight, "depth_at_pixel", given);
+  const ProblemResult left = solve_one(kLeft, "depth_at_pixel", given);
+  ASSERT_FALSE(right.error || left.error);
+  EXPECT_EQ(test::exact_text(left, "normal"), "9, 9, -9");
+  EXPECT_EQ(test::exact_text(left, "z"), "8");
+  EXPECT_EQ(numbers(left, "plane"), numbers(right, "plane"));
+  std::string notes;
+  for (const Step& st : left.derivation.steps()) notes += st.note + "\n";
+  EXPECT_NE(notes.find("as this course's eye space is"), std::string::npos) << notes;
+}
+
+// look_at: the camera looks down +z (center at z = +5 in view coordinates), V_right =
+// diag(−1, 1, −1, 1)·V_left, and every header of the derivation says left-handed.
+TEST(Handedness, LookAtTakesTheLeftHandedBasisAndItsHeadersSaySo) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coord(-5, 5);
+  for (int i = 0; i < 30; ++i) {
+    const std::array<int, 3> eye{coord(rng), coord(rng), coord(rng)},
+        center{coord(rng), coord(rng), coord(rng)};
+    const std::string given = "{eye: " + point_text(eye) + ", center: " + point_text(center) +
+                              ", up: [0, 1, 0], points: [" + point_text(center) + "]}";
+    const ProblemResult left = solve_one(kLeft, "look_at", given);
+    const ProblemResult right = solve_one(kRight, "look_at", given);
+    if (right.error) continue;  // up along the view direction, or center = eye
+    ASSERT_FALSE(left.error);
+    const std::vector<double>& l = numbers(left, "matrix");
+    const std::vector<double>& r = numbers(right, "matrix");
+    for (int row = 0; row < 4; ++row)
+      for (int col = 0; col < 4; ++col)
+        EXPECT_NEAR(r[row * 4 + col], (row == 0 || row == 2 ? -1 : 1) * l[row * 4 + col], 1e-12);
+    const double distance = std::sqrt(double((center[0] - eye[0]) * (center[0] - eye[0]) +
+                                             (center[1] - eye[1]) * (center[1] - eye[1]) +
+                                             (center[2] - eye[2]) * (center[2] - eye[2])));
+    EXPECT_NEAR(numbers(left, "points")[2], distance, 1e-12);
+    EXPECT_NEAR(numbers(right, "points")[2], -distance, 1e-12);
+    for (const Step& s : left.derivation.steps()) {
+      EXPECT_EQ(s.title.find("right-handed"), std::string::npos) << s.title;
+      if (s.title == "Conventions") {
+        EXPECT_NE(s.note.find("left-handed"), std::string::npos) << s.note;
+        EXPECT_EQ(s.note.find("right-handed"), std::string::npos) << s.note;
+      }
+    }
+  }
+}
+
+// The projection: P_left = P_right·diag(1, 1, −1, 1) for every type, z = n ↦ −1 and z = f ↦ +1
+// looking down +z, and project_point's picture is the right-handed one mirrored left-right.
+TEST(Handedness, ProjectionIsTheRightHandedOneMirroredInZ) {
+  for (const std::string projection :
+       {"perspective: {fovy: 90, aspect: 2, near: 1, far: 3}",
+        "frustum: {left: -1, right: 2, bottom: -1, top: 1, near: 2, far: 5}",
+        "ortho: {left: -100, right: 100, bottom: -50, top: 50, near: 10, far: 1000}"})
+    for (const std::string api : {"opengl", "processing"}) {
+      const ProblemResult left = solve_one("{api: " + api + ", handedness: left}",
+                                           "projection_matrix", "{" + projection + "}");
+      const ProblemResult right =
+          solve_one("{api: " + api + "}", "projection_matrix", "{" + projection + "}");
+      ASSERT_FALSE(left.error || right.error) << projection;
+      const std::vector<double>& l = numbers(left, "matrix");
+      const std::vector<double>& r = numbers(right, "matrix");
+      for (int k = 0; k < 16; ++k)
+        EXPECT_NEAR(l[k], (k % 4 == 2 ? -1 : 1) * r[k], 1e-12) << projection;
+      // Looking down +z: the near plane's z = n maps to −1 and the far plane's to +1.
+      const Value* m = left.answers.find("matrix");
+      const auto ndc_z = [&](const Exact& z) {
+        const Exact zc = m->exact[10] * z + m->exact[11], wc = m->exact[14] * z + m->exact[15];
+        return to_double(Exact(zc / wc));
+      };
+      const bool ortho = projection.rfind("ortho", 0) == 0;
+      const Exact n = ortho                  ? 10
+                      : projection[0] == 'p' ? 1
+                                             : 2,
+                  f = ortho                  ? 1000
+                      : projection[0] == 'p' ? 3
+                                             : 5;
+      EXPECT_NEAR(ndc_z(n), -1, 1e-12) << projection;
+      EXPECT_NEAR(ndc_z(f), 1, 1e-12) << projection;
+    }
+  const std::string given =
+      "{point: [1, 2, 0], camera: {eye: [3, 1, 6], center: [0, 0, 0], up: [0, 1, 0]}, perspective: "
+      "{fovy: 60, aspect: 1, near: 1, far: 20}, viewport: {width: 200, height: 100}}";
+  const ProblemResult left = solve_one(kLeft, "project_point", given);
+  const ProblemResult right = solve_one(kRight, "project_point", given);
+  ASSERT_FALSE(left.error || right.error);
+  const std::vector<double>& l = numbers(left, "ndc");
+  const std::vector<double>& r = numbers(right, "ndc");
+  EXPECT_NEAR(l[0], -r[0], 1e-12);
+  EXPECT_NEAR(l[1], r[1], 1e-12);
+  EXPECT_NEAR(l[2], r[2], 1e-12);
+  EXPECT_EQ(left.answers.find("inside")->flag, right.answers.find("inside")->flag);
+  std::string notes;
+  for (const Step& st : left.derivation.steps()) notes += st.note + "\n";
+  EXPECT_NE(notes.find("mirrored left to right"), std::string::npos) << notes;
+}
+
+// The bundled example: every answer in the course's left-handed form is marked correct; the
+// right-handed answers to the same numbers are not, and the grader names the right-handed
+// projection matrix.
+TEST(Handedness, GraderAcceptsTheCoursesOwnFormAndNamesTheRightHandedOne) {
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/examples/course_handedness.yaml"));
+  const SolvedSet key = solve_for_grading(set);
+  const std::string own =
+      "student: s\nanswers:\n"
+      "  lh-backface: {normal: [-1, 1, -1], view: [-1, 1, 0], df: 2, facing: front}\n"
+      "  lh-perspective:\n    matrix: [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 2, -3], [0, 0, 1, 0]]\n"
+      "  lh-look-at:\n    matrix: [[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, 5], [0, 0, 0, 1]]\n";
+  const GradeReport mine = grade(set, load_submission_from_string(own, "own.yaml"), &key);
+  int graded = 0;
+  for (const ProblemGrade& p : mine.problems)
+    for (const AnswerGrade& a : p.answers)
+      if (a.verdict != Verdict::Missing) {
+        EXPECT_EQ(a.verdict, Verdict::Correct) << p.id << "." << a.name << ": " << a.feedback;
+        ++graded;
+      }
+  EXPECT_EQ(graded, 6);
+  const std::string right_handed =
+      "student: s\nanswers:\n"
+      "  lh-backface: {normal: [1, -1, 1], facing: back}\n"
+      "  lh-perspective:\n    matrix: [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, -2, -3], [0, 0, -1, "
+      "0]]\n";
+  const GradeReport theirs = grade(set, load_submission_from_string(right_handed, "rh.yaml"), &key);
+  for (const ProblemGrade& p : theirs.problems)
+    for (const AnswerGrade& a : p.answers) {
+      if (a.verdict == Verdict::Missing) continue;
+      EXPECT_NE(a.verdict, Verdict::Correct) << p.id << "." << a.name;
+      if (p.id == "lh-perspective") {
+        EXPECT_EQ(a.misconception, "right-handed matrix");
+      }
+    }
+}
+
+// Declaring it: a misspelt value is refused with a suggestion, DirectX cannot be right-handed
+// here, and the kinds that are not yet left-handed refuse rather than answer right-handed.
+TEST(Handedness, DeclarationErrorsNameTheField) {
+  const auto error_of = [](const std::string& conventions, const std::string& kind,
+                           const std::string& given) {
+    const std::string yaml = "conventions: " + conventions +
+                             "\nproblems:\n  - id: p\n    kind: " + kind + "\n    given: " + given +
+                             "\n";
+    const std::vector<Diagnostic> errors =
+        load_problem_set_from_string(yaml, "h.yaml").all_errors();
+    return errors.empty() ? std::string() : errors.front().format();
+  };
+  const std::string tri = "{points: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}";
+  EXPECT_NE(error_of("{handedness: lefty}", "normal", tri).find("did you mean 'left'"),
+            std::string::npos)
+      << error_of("{handedness: lefty}", "normal", tri);
+  EXPECT_NE(
+      error_of("{api: directx, handedness: right}", "normal", tri).find("conventions.handedness"),
+      std::string::npos);
+  EXPECT_EQ(error_of("{api: directx, handedness: left}", "normal", tri), "");
+  EXPECT_NE(
+      error_of(kLeft, "projection_plane", "{window: [200, 200], fov: 60, point: [0, 100, -300]}")
+          .find("right-handed only"),
+      std::string::npos);
+}
+
+// JSON states the handedness each problem was solved in: the declared one, else the API's own.
+TEST(Handedness, JsonStatesTheHandednessUsed) {
+  for (const auto& [conventions, expected] : {std::pair<std::string, std::string>{kLeft, "left"},
+                                              {kRight, "right"},
+                                              {"{api: directx}", "left"},
+                                              {"{api: processing, handedness: right}", "right"}}) {
+    const std::string yaml =
+        "conventions: " + conventions +
+        "\nproblems:\n  - id: p\n    kind: normal\n    given: {points: [[0, 0, 0], "
+        "[1, 0, 0], [0, 1, 0]]}\n";
+    const SetResult solved = solve_set(load_problem_set_from_string(yaml, "h.yaml"), false, {});
+    EXPECT_EQ(render_json(solved)["problems"][0]["conventions"]["handedness"], expected)
+        << conventions;
+  }
+}
+
+// A scene file for `frustum render` declaring a left-handed OpenGL course is refused with its
+// location, as the render kind is in a set; DirectX's own left-handedness renders.
+TEST(Handedness, RenderCommandRefusesALeftHandedOpenGLScene) {
+  const std::string dir = ::testing::TempDir();
+  const auto write = [&](const std::string& name, const std::string& conventions) {
+    std::ofstream(dir + name)
+        << "conventions: " << conventions
+        << "\nscene:\n  viewport: {width: 8, height: 8}\n"
+           "  camera: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, 0]}\n"
+           "  perspective: {fovy: 60, aspect: 1, near: 1, far: 10}\n"
+           "  objects:\n    - triangle: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]\n";
+    return dir + name;
+  };
+  const auto run = [](const std::string& args) {
+    const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buf;
+    while (const std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
+    pclose(p);
+    return out;
+  };
+  const std::string left = run("render " + write("lh.yaml", kLeft) + " -o " + dir + "lh.png");
+  EXPECT_NE(left.find("lh.yaml:1:"), std::string::npos) << left;
+  EXPECT_NE(left.find("handedness: left"), std::string::npos) << left;
+  const std::string dx =
+      run("render " + write("dx.yaml", "{api: directx}") + " -o " + dir + "dx.png");
+  EXPECT_NE(dx.find("1 drawn"), std::string::npos) << dx;
+}
+
+}  // namespace
+}  // namespace frustum
