@@ -51,6 +51,12 @@ for f in sorted(glob.glob(src + "/problems/seeds/*.yaml") + glob.glob(src + "/pr
     doc = yaml.load(open(f, encoding="utf-8"), Loader=yaml.BaseLoader)  # every scalar as text
     for p in doc.get("problems", []):
         p.pop("text", None)
+        # A statements problem's givens are text in the set's language: Latin placeholders here
+        # (pdflatex), as the texts are dropped; Japanese sets are checked to choose LuaLaTeX below.
+        for i, st in enumerate(p.get("given", {}).get("statements", []) if p.get("kind") == "statements" else []):
+            st["text"] = f"Statement {i + 1} of problem {len(problems)}."
+            if "reason" in st:
+                st["reason"] = f"Reason {i + 1}."
         p["id"] = f"{len(problems)}-{p['id']}"
         problems.append(p)
 yaml.safe_dump({"title": "Every kind", "problems": problems}, open(out, "w", encoding="utf-8"), allow_unicode=True)
