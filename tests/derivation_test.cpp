@@ -38,6 +38,13 @@ TEST(Derivation, TextShowsExactValuesWithDecimalsAndNoColourUnlessAsked) {
   EXPECT_NE(render_text(set, TextStyle{true}).find("\033["), std::string::npos);
 }
 
+TEST(Derivation, TextIndentsANotesFurtherLinesUnlessTheyBringTheirOwn) {
+  Derivation d;
+  d.note("Backend", "first line\nsecond line\n        a trace row");
+  EXPECT_EQ(render_steps_text(d.steps(), TextStyle{false}),
+            "  • Backend\n      first line\n      second line\n        a trace row\n");
+}
+
 TEST(Derivation, MarkdownUsesLatex) {
   SetResult set;
   set.problems.push_back(test::solve_yaml(kSeed001));

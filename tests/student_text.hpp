@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "grader/grade.hpp"
+#include "solver/kinds/solve_precision.hpp"
 #include "typeset_corpus.hpp"
 
 namespace frustum::test {
@@ -138,6 +139,12 @@ inline std::vector<StudentText> student_texts() {
       const ProblemResult& r = solved.results[i];
       if (r.error) continue;
       add_steps(out, spec.id, r.derivation.steps());
+      // The same problem in each floating backend: its Backend note and warnings.
+      if (spec.info->solve_numeric)
+        for (const Precision p : {Precision::Float, Precision::Double, Precision::LongDouble}) {
+          const ProblemResult n = solve_problem(spec, set.file, true, p);
+          if (!n.error) add_steps(out, spec.id + " (" + std::string(to_string(p)) + ")", n.derivation.steps());
+        }
       for (const auto& [name, v] : r.answers.items())
         for (const std::string& w : v.shown().words)
           out.push_back({spec.id + "." + name + " word", w});
@@ -158,6 +165,17 @@ inline std::vector<StudentText> student_texts() {
         add_grade(out, grade_answers(set, solved, answers));
       }
     }
+  }
+  // The hard-case suite in every backend: the warnings of overflow, underflow, ill-conditioning
+  // and exact decisions.
+  for (const auto& e : std::filesystem::directory_iterator(source_path("problems/hard"))) {
+    if (e.path().extension() != ".yaml") continue;
+    const ProblemSet set = load_problem_set(e.path().string());
+    for (const ProblemSpec& spec : set.problems)
+      for (const Precision p : {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
+        const ProblemResult n = solve_problem(spec, set.file, true, p);
+        if (!n.error) add_steps(out, spec.id + " (" + std::string(to_string(p)) + ")", n.derivation.steps());
+      }
   }
   // The reviewed verdict corpus: every case graded, its feedback kept.
   for (const auto& e : std::filesystem::directory_iterator(source_path("tests/verdicts"))) {

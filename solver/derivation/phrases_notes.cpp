@@ -764,6 +764,87 @@ constexpr Phrase kPhrases[] = {
      "a と b は平行 (a × b = 0): 点 0, a, b は一直線上にあって平面を張らないので, 単位法線はない.",
      "a и b параллельны (a × b = 0): точки 0, a, b лежат на одной прямой и не задают плоскость, "
      "поэтому единичной нормали нет."},
+    // Numeric backends (--precision): the Backend note, one sentence per line, and the warnings.
+    {"Answers computed in {0} ({1}, {2}-bit significand, unit roundoff {3}, about {4} decimal digits); "
+     "values only, no derivation steps (--precision exact gives them).",
+     "{0} で計算した解答 (`{1}`, 仮数 {2} ビット, 単位丸め誤差 {3}, 10 進で約 {4} 桁). 値だけで, 導出の手順はない "
+     "(`--precision exact` で手順が出る).",
+     "Ответы вычислены в {0} (`{1}`, мантисса {2} бит, единица округления {3}, около {4} десятичных "
+     "знаков); только значения, без шагов вывода (их даёт `--precision exact`)."},
+    {"Answers computed in exact (GiNaC: rationals and radicals, no rounding anywhere).",
+     "厳密計算 (`GiNaC`: 有理数と根号, 丸めは一切ない) で計算した解答.",
+     "Ответы вычислены точно (`GiNaC`: рациональные числа и радикалы, без округлений)."},
+    {"exact (GiNaC: rationals and radicals, no rounding anywhere)",
+     "厳密計算 (`GiNaC`: 有理数と根号, 丸めは一切ない)",
+     "точно (`GiNaC`: рациональные числа и радикалы, без округлений)"},
+    {"The kind {0} has no numeric path; it was solved exactly ({1}).",
+     "種類 `{0}` には数値計算の経路がないので, 厳密に解いた ({1}).",
+     "У вида `{0}` нет численного пути; он решён точно ({1})."},
+    {"{0}: decided by exact arithmetic on the given numbers (the {1} computation could not settle it).",
+     "{0}: 与えられた数の厳密計算で決めた ({1} の計算では決められなかった).",
+     "{0}: решено точной арифметикой на данных числах (вычисление в {1} не смогло это решить)."},
+    {"facing", "表裏", "ориентация"},
+    {"w_c > 0 and inside", "w_c > 0 と内側かどうか", "w_c > 0 и «внутри»"},
+    {"whether the normal is zero", "法線がゼロかどうか", "равна ли нормаль нулю"},
+    {"whether a and b are parallel", "a と b が平行かどうか", "параллельны ли a и b"},
+    {"angle = atan2(‖a × b‖, a·b).", "角度 = atan2(‖a × b‖, a·b).", "угол = atan2(‖a × b‖, a·b)."},
+    {"facing: the sign of D_f, proven by its rounding-error bound or else computed exactly.",
+     "表裏: D_f の符号. 丸め誤差の上界で確かめ, 確かめられなければ厳密に計算する.",
+     "ориентация: знак D_f, доказанный оценкой ошибки округления или иначе вычисленный точно."},
+    {"inverse by LU with partial pivoting.", "逆行列は部分ピボット選択付き LU 分解で求めた.",
+     "обратная матрица — LU-разложением с частичным выбором ведущего элемента."},
+    {"inverse = A₁⁻¹·…·Aₙ⁻¹.", "逆行列 = A₁⁻¹·…·Aₙ⁻¹.", "обратная матрица = A₁⁻¹·…·Aₙ⁻¹."},
+    {"plane = (n, n·p₀), not rescaled; distance = |n̂·p₀|.",
+     "平面 = (n, n·p₀) (係数は約さない), 距離 = |n̂·p₀|.",
+     "плоскость = (n, n·p₀) без масштабирования; расстояние = |n̂·p₀|."},
+    {"z = (d − a·xₛ − b·yₛ)/c (the plane method).", "z = (d − a·xₛ − b·yₛ)/c (平面の方程式による方法).",
+     "z = (d − a·xₛ − b·yₛ)/c (метод плоскости)."},
+    {"z by barycentric interpolation (stable fallback).", "z は重心座標による補間で求めた (安定な代替法).",
+     "z найдено барицентрической интерполяцией (устойчивая замена)."},
+    {"{0} is ill-conditioned ({1}): {2}; solve with --precision exact for the exact value.",
+     "{0} は条件が悪い ({1}): {2}. 厳密な値は `--precision exact` で解くこと.",
+     "{0} плохо обусловлено ({1}): {2}; точное значение даёт решение с `--precision exact`."},
+    {"w_c ≤ 0: no NDC or window position.", "w_c ≤ 0: NDC もウィンドウ上の位置もない.",
+     "w_c ≤ 0: нет ни NDC, ни положения в окне."},
+    {"the normal's direction", "法線の向き", "направление нормали"},
+    {"the plane's normal", "平面の法線", "нормаль плоскости"},
+    {"z at this pixel", "この画素の z", "z в этом пикселе"},
+    {"w_c (and the NDC divided by it)", "w_c (と, それで割った NDC)", "w_c (и NDC, делённые на него)"},
+    {"the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)", "逆行列 (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)", "обратная матрица (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)"},
+    {"{0} keeps no correct digit", "{0} では正しい桁が残らない", "в {0} не остаётся ни одной верной цифры"},
+    {"{0} keeps about {1} of its {2} digits", "{0} では {2} 桁のうち約 {1} 桁が残る",
+     "в {0} остаётся около {1} из {2} цифр"},
+    {"c ≈ 0 (κ_c ≈ {0}); the plane method would keep {1} digits of z, so z = Σ λᵢ zᵢ with λᵢ from the "
+     "edge functions at the pixel is used: for a pixel inside the triangle it stays within the vertices' "
+     "depths.",
+     "c ≈ 0 (κ_c ≈ {0}). 平面の方程式では z が {1} 桁しか残らないので, 画素での辺関数から求めた λᵢ による "
+     "z = Σ λᵢ zᵢ を使う. 三角形の内側の画素ではこの値は頂点の奥行きの範囲内にある.",
+     "c ≈ 0 (κ_c ≈ {0}); метод плоскости сохранил бы {1} цифр z, поэтому используется z = Σ λᵢ zᵢ с λᵢ "
+     "из рёберных функций в пикселе: для пикселя внутри треугольника оно остаётся в пределах глубин "
+     "вершин."},
+    {"some inputs exceed the range of {0} and became infinite; the values computed from them are "
+     "meaningless, and every discrete answer was decided on the exact inputs.",
+     "一部の入力は {0} の範囲を超えて無限大になった. それから計算した値は意味をもたないが, 離散的な答えはすべて"
+     "厳密な入力で決めた.",
+     "некоторые входные данные выходят за диапазон {0} и стали бесконечными; вычисленные из них значения "
+     "бессмысленны, а каждый дискретный ответ решён по точным входным данным."},
+    {"some inputs are below the normal range of {0} and were rounded to subnormal numbers or to 0: the "
+     "values computed from them keep few or none of their digits, and every discrete answer was decided "
+     "on the exact inputs.",
+     "一部の入力は {0} の正規化数の範囲より小さく, 非正規化数か 0 に丸められた. それから計算した値には正しい桁が"
+     "ほとんど残らないが, 離散的な答えはすべて厳密な入力で決めた.",
+     "некоторые входные данные меньше нормального диапазона {0} и округлены до субнормальных чисел или до 0: "
+     "вычисленные из них значения сохраняют мало верных цифр или ни одной, а каждый дискретный ответ решён "
+     "по точным входным данным."},
+    {"some values exceed the range of {0} and are infinite or not a number; the exact backend has no limit.",
+     "一部の値は {0} の範囲を超え, 無限大か非数になった. 厳密計算には範囲の限界がない.",
+     "некоторые значения выходят за диапазон {0} и равны бесконечности или не являются числом; у точного "
+     "вычисления нет такого предела."},
+    {"some values are below the normal range of {0} (subnormal, or flushed to 0): they keep few or none of "
+     "their digits.",
+     "一部の値は {0} の正規化数の範囲より小さい (非正規化数か 0): 正しい桁はほとんど残らない.",
+     "некоторые значения меньше нормального диапазона {0} (субнормальные или обращены в 0): в них мало "
+     "верных цифр или нет ни одной."},
     // Text not split into sentences above.
     {"depth:", "奥行き:", "глубина:"},
     {"frame:", "フレーム:", "кадр:"},

@@ -17,6 +17,17 @@ struct Ansi {
   std::string reset() const { return on ? "\033[0m" : ""; }
 };
 
+// A note's further lines under its first: a line that brings its own indentation (a trace
+// under its heading) keeps it; any other is indented as the first.
+std::string indent_lines(const std::string& text, const std::string& indent) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    out += text[i];
+    if (text[i] == '\n' && i + 1 < text.size() && text[i + 1] != ' ' && text[i + 1] != '\n') out += indent;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& style,
@@ -38,7 +49,7 @@ std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& s
     if (!s.substitution.empty()) out += body + tr(s.substitution, style.lang).unicode + "\n";
     if (!s.result.empty())
       out += indent + "  ⇒ " + a.bold() + tr(s.result, style.lang).unicode + a.reset() + "\n";
-    if (!s.note.empty()) out += body + a.dim() + note + a.reset() + "\n";
+    if (!s.note.empty()) out += body + a.dim() + indent_lines(note, body) + a.reset() + "\n";
   }
   return out;
 }

@@ -41,7 +41,8 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
       if (const std::string c = describe(spec.conventions, spec.info->uses); !c.empty())
         r.derivation.note("Conventions", c);
       std::string text = backend_note(precision);
-      for (const std::string& how : n.notes) text += " " + how + ".";
+      // One line per note: each is a sentence of its own (and is translated as one).
+      for (const std::string& how : n.notes) text += "\n" + how + ".";
       r.derivation.note("Backend", text);
       for (const NumericWarning& w : n.warnings) r.derivation.warn(w.title, w.text);
     }
