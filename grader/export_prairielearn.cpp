@@ -131,14 +131,16 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
     const YAML::Node& root, const ProblemSet& set, const std::vector<ProblemSet>& variants,
     const std::string& stem, const PrairieLearnOptions& options) {
   std::map<std::string, std::map<std::string, std::string>> out;
-  const std::string title = set.title.empty() ? stem : set.title;
+  // The uuid keeps to the set's own title, so a question keeps its id in every language.
+  const std::string title = set.title.empty() ? stem : set.title.text;
+  const std::string shown = set.title.empty() ? stem : set.title.in(options.lang);
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const ProblemSpec& p = set.problems[i];
     if (!p.info) continue;
     json info;
     info["uuid"] = stable_uuid(title, p.id);
-    info["title"] = title + ": " + p.id;
-    info["topic"] = title;
+    info["title"] = shown + ": " + p.id;
+    info["topic"] = shown;
     info["tags"] = json::array({"frustum", p.kind});
     info["type"] = "v3";
     info["singleVariant"] = variants.size() == 1;
@@ -157,7 +159,7 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
       if (r.error) continue;
       json params;
       params["problem"] = vp.id;
-      params["text"] = question_text(v, vp);
+      params["text"] = question_text(v, vp, options.lang);
       std::string given;
       for (const std::string& line : given_lines(vp)) given += line + "\n";
       params["given"] = given;

@@ -167,9 +167,11 @@ TEST(Language, StudentTextCitesNoLectureFile) {
       EXPECT_FALSE(cites_lecture_file(tr(t.text, lang))) << t.where << ": " << tr(t.text, lang);
   for (const std::string& file : test::bundled_sets()) {
     const ProblemSet set = load_problem_set(file);
-    EXPECT_FALSE(cites_lecture_file(set.title + " " + set.source)) << file << ": " << set.title;
+    for (const auto& [lang, title] : set.title.all())
+      EXPECT_FALSE(cites_lecture_file(title + " " + set.source)) << file << ": " << title;
     for (const ProblemSpec& p : set.problems)
-      EXPECT_FALSE(cites_lecture_file(p.text)) << file << ": " << p.id;
+      for (const auto& [lang, text] : p.text.all())
+        EXPECT_FALSE(cites_lecture_file(text)) << file << ": " << p.id;
   }
 }
 

@@ -89,7 +89,7 @@ TEST(Statements, DerivationListsEachStatementWithItsMarkAndReason) {
   EXPECT_EQ(tr(steps[0].result, Lang::Ja).unicode, "○ 正しい");
   EXPECT_EQ(tr(steps[3].result, Lang::Ru).unicode, "× неверно");
   EXPECT_EQ(tr(steps[4].title, Lang::Ru), "Верные утверждения");
-  const SetResult one{set.file, "", "", {p}, {}};
+  const SetResult one{set.file, {}, "", {p}, {}};
   const std::string ja = render_text(one, TextStyle{false, Lang::Ja});
   EXPECT_NE(ja.find("記述 3: バックフェースカリングを実行するためには頂点の法線が必要である."),
             std::string::npos)

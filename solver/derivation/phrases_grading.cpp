@@ -426,6 +426,8 @@ constexpr Phrase kPhrases[] = {
      "z = (center − eye)/‖center − eye‖, x = up × z です.",
      "Ось z вашей камеры направлена от сцены: в левой системе координат камера смотрит вдоль +z, "
      "поэтому z = (center − eye)/‖center − eye‖ и x = up × z."},
+    // Problems in the students' languages (issue 16): quiz and paper questions of a variant.
+    {"(Use the values given below.)", "(下に示す値を使うこと.)", "(Используйте значения, данные ниже.)"},
 };
 
 }  // namespace
