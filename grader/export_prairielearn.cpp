@@ -43,10 +43,10 @@ std::string file_part(const std::string& s) {
 
 // Which statements are true, as checkboxes in the set's order, each numbered as in the set
 // (frustum-pl-grade reads the ticked ones back by these numbers); a blank submission is "none".
-std::string checkbox_html(const std::string& name, const ProblemSpec& p) {
+std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang lang) {
   const ProblemResult solved = solve_problem(p, "", false);
   const Value* key = solved.error ? nullptr : solved.answers.find(name);
-  const QuizField f = key ? statement_checkboxes(p, *key) : QuizField{};
+  const QuizField f = key ? statement_checkboxes(p, *key, lang) : QuizField{};
   const bool none_true = std::find(f.right.begin(), f.right.end(), true) == f.right.end();
   std::string s = fmt::format(
       "<p>{}:</p>\n<pl-checkbox answers-name=\"{}\" fixed-order=\"true\" allow-blank=\"true\" "
@@ -58,10 +58,10 @@ std::string checkbox_html(const std::string& name, const ProblemSpec& p) {
   return s + "</pl-checkbox>";
 }
 
-std::string input_html(const AnswerSpec& spec, const ProblemSpec& p) {
+std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) {
   const std::string name = xml_escape(spec.name);
   const std::string input = prairielearn_input(spec);
-  if (input == "checkbox") return checkbox_html(name, p);
+  if (input == "checkbox") return checkbox_html(name, p, lang);
   if (input == "number")
     return fmt::format(
         "<pl-number-input answers-name=\"{0}\" label=\"\\({0} =\\)\" "
@@ -190,7 +190,8 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
         "<pl-question-panel>\n  <p>{{params.text}}</p>\n  "
         "<pre>{{params.given}}</pre>\n</pl-question-panel>\n\n";
     for (const std::string& name : p.ask)
-      if (const AnswerSpec* spec = p.info->answer(name)) html += input_html(*spec, p) + "\n\n";
+      if (const AnswerSpec* spec = p.info->answer(name))
+        html += input_html(*spec, p, options.lang) + "\n\n";
     html +=
         "<pl-submission-panel>\n  "
         "<pl-external-grader-results></pl-external-grader-results>\n</pl-submission-panel>\n";
