@@ -84,7 +84,8 @@ const std::set<std::string>& names() {
                                           "false",
                                           "Direct3D",
                                           "FrontCounterClockwise",
-                                          "XMMatrixTranslation"};
+                                          "XMMatrixTranslation",
+                                          "translate"};
   return n;
 }
 
@@ -242,6 +243,28 @@ TEST(Language, BooleanKeyIsPrintedInTheStudentsLanguageAndAcceptedBack) {
       }
     }
   }
+}
+
+// Problems in the students' languages (issue 16): the seed and example sets give every text a
+// student reads — titles, problem texts, statements and reasons — in Japanese and Russian, so
+// no English reaches a student reading them in another language (the same check as the steps').
+TEST(Language, NoEnglishProblemTextReachesAJapaneseOrRussianStudent) {
+  const std::vector<test::InstructorText> texts = test::instructor_texts();
+  EXPECT_GT(texts.size(), 70u);
+  int failures = 0;
+  for (const test::InstructorText& t : texts)
+    for (const Lang lang : {Lang::Ja, Lang::Ru}) {
+      const std::string& shown = t.shown.at(lang);
+      const std::vector<std::string> words = english_words(shown);
+      if (words.empty()) continue;
+      if (++failures <= 40)
+        ADD_FAILURE() << to_string(lang) << " " << t.where << ": \"" << words[0] << "\" in\n    "
+                      << shown;
+    }
+  EXPECT_EQ(failures, 0);
+  // And each language reads its own text: a Japanese text is not shown to a Russian student.
+  for (const test::InstructorText& t : texts)
+    EXPECT_NE(t.shown.at(Lang::Ja), t.shown.at(Lang::Ru)) << t.where;
 }
 
 }  // namespace
