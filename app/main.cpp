@@ -85,7 +85,10 @@ int main(int argc, char** argv) {
   check->footer(examples({"frustum check problems/seeds"}));
 
   std::string lang = "en", grade_lang = "en";
-  solve->add_option("--lang", lang, "Language of the derivations: en, ja or ru")
+  solve
+      ->add_option("--lang", lang,
+                   "Language of the derivations and of the problems' texts (where the set gives "
+                   "it): en, ja or ru")
       ->check(CLI::IsMember({"en", "ja", "ru"}));
 
   frustum::app::GradeOptions grade_opt;

@@ -113,6 +113,7 @@ TEST(ProblemTexts, ChosenLanguageOrTheSetsOwn) {
 TEST(ProblemTexts, JsonGivesTheChosenTextAndEveryLanguage) {
   const SetResult solved = solve_set(load_problem_set_from_string(kTwoLanguages, "t.yaml"), true);
   const auto j = render_json(solved, Lang::Ja);
+  EXPECT_EQ(j["lang"], "en");
   EXPECT_EQ(j["title"], "視点と投影");
   EXPECT_EQ(j["titles"]["ru"], "Наблюдение");
   EXPECT_EQ(j["problems"][0]["text"],

@@ -131,6 +131,7 @@ json problem_json(const ProblemResult& p, Lang lang) {
 json render_json(const SetResult& set, Lang lang) {
   json j = json::object();
   j["file"] = set.file;
+  j["lang"] = std::string(to_string(set.title.lang));  // the set's own: what texts fall back to
   if (!set.title.empty()) {
     j["title"] = set.title.in(lang);
     j["titles"] = texts_json(set.title);
