@@ -160,7 +160,7 @@ QuizField statement_checkboxes(const ProblemSpec& p, const Value& key, Lang lang
 }
 
 std::string question_text(const ProblemSet& set, const ProblemSpec& p, Lang lang) {
-  if (p.text.empty()) return p.info ? p.info->summary : p.kind;
+  if (p.text.empty()) return p.info ? tr(p.info->summary, lang) : p.kind;
   const std::string& written = p.text.in(lang);
   std::string text = fill_text(written, p.given_node);
   if (set.variant && written.find('{') == std::string::npos)

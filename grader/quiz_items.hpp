@@ -51,9 +51,9 @@ struct QuizVariant {
   std::vector<QuizQuestion> questions;
 };
 
-// What a student reads: the problem's text with its {field}s filled (the kind's summary when it
-// has none). A drawn variant whose text names no field adds that the values are those given
-// below, since such a text may quote the template's numbers.
+// What a student reads: the problem's text in `lang` with its {field}s filled (the kind's
+// summary, translated, when it has none). A drawn variant whose text names no field adds that the
+// values are those given below, since such a text may quote the template's numbers.
 std::string question_text(const ProblemSet& set, const ProblemSpec& problem, Lang lang = Lang::En);
 // The given fields as "name: value" lines (YAML flow values); none for a problem whose given
 // is its key (the truths of `statements`), which students must not see.

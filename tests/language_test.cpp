@@ -267,5 +267,13 @@ TEST(Language, NoEnglishProblemTextReachesAJapaneseOrRussianStudent) {
     EXPECT_NE(t.shown.at(Lang::Ja), t.shown.at(Lang::Ru)) << t.where;
 }
 
+// A problem without a text is asked by its kind's summary, in the student's language too.
+TEST(Language, KindSummariesAreTranslated) {
+  for (const KindInfo& kind : builtin_kinds().all())
+    for (const Lang lang : {Lang::Ja, Lang::Ru})
+      EXPECT_EQ(english_words(tr(kind.summary, lang)), std::vector<std::string>{})
+          << kind.name << " " << to_string(lang) << ": " << tr(kind.summary, lang);
+}
+
 }  // namespace
 }  // namespace frustum

@@ -197,5 +197,15 @@ TEST(ProblemTexts, StatementsAndReasonsInTheDerivation) {
             "Frustum (en, ja, ru)");
 }
 
+TEST(ProblemTexts, AProblemWithoutTextIsAskedByItsKindInTheChosenLanguage) {
+  const ProblemSet set = load_problem_set_from_string(
+      "problems:\n  - id: p\n    kind: normal\n    given: {points: [[0, 0, 0], [1, 0, 0], [0, 1, "
+      "0]]}\n",
+      "t.yaml");
+  EXPECT_EQ(quiz_questions(set, Lang::Ja).at(0).text, "多角形の法線ベクトルと単位法線ベクトル");
+  EXPECT_EQ(quiz_questions(set, Lang::Ru).at(0).text, "нормаль и единичная нормаль многоугольника");
+  EXPECT_EQ(quiz_questions(set).at(0).text, "the normal and unit normal of a polygon");
+}
+
 }  // namespace
 }  // namespace frustum
