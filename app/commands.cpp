@@ -51,7 +51,7 @@ int run_solve(const std::string& path, const std::optional<std::string>& id, For
                                        : solve_set(load_problem_set(file), true, id);
     any_failed = any_failed || failed(result);
     switch (format) {
-      case Format::Json: sets.push_back(render_json(result)); break;
+      case Format::Json: sets.push_back(render_json(result, lang)); break;
       case Format::Markdown: o.out << render_markdown(result, lang); break;
       case Format::Html: o.out << render_html(result, lang); break;
       case Format::Latex: o.out << render_latex(result, lang); break;

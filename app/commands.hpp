@@ -54,6 +54,7 @@ struct GenerateCommand {
   int count = 1;
   std::string out_dir = ".";
   std::string format = "yaml";  // also latex (exam sheets + answer key) or pdf (compiled)
+  Lang lang = Lang::En;         // the exam sheets' texts (the set's own where not given)
 };
 int run_generate(const GenerateCommand& options, const Output& o);
 
@@ -69,6 +70,7 @@ struct ExportOptions {
   std::string assignment = "Frustum";       // the gradebook column
   bool sis_login = false;                   // canvas-grades: ids are SIS Login IDs
   std::string image = "frustum-prairielearn";
+  Lang lang = Lang::En;  // the questions' texts (the set's own where not given)
 };
 int run_export(const ExportOptions& options, const Output& o);
 

@@ -59,18 +59,19 @@ int export_set(const ExportOptions& e, const Output& o) {
       return 1;
     }
   const std::string stem = fs::path(e.input).stem().string();
-  const std::string title = set.title.empty() ? stem : set.title;
+  const std::string title = set.title.empty() ? stem : set.title.in(e.lang);
   std::map<std::string, std::string> files;  // path under e.out → contents
   if (e.format == "prairielearn") {
     PrairieLearnOptions options;
     options.image = e.image;
+    options.lang = e.lang;
     for (const auto& [dir, content] :
          export_prairielearn(load_yaml_file(e.input).root, set, variants, stem, options))
       for (const auto& [name, text] : content) files[dir + "/" + name] = text;
   } else {
     std::vector<QuizVariant> quiz;
     for (std::size_t i = 0; i < variants.size(); ++i)
-      quiz.push_back({names[i], quiz_questions(variants[i])});
+      quiz.push_back({names[i], quiz_questions(variants[i], e.lang)});
     for (const QuizQuestion& q : quiz.front().questions)
       for (const std::string& l : q.left_out)
         o.err << "note: " << q.id << "." << l << " (left to frustum grade)\n";

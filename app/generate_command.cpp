@@ -39,10 +39,11 @@ int write_paper(const GenerateCommand& g, const ProblemSet& set, const std::vect
   for (const Named& v : variants)
     if (v.variant.all_errors().empty()) sheets.push_back({v.student, v.variant});
   const std::string stem = fs::path(g.set).stem().string();
-  const std::string title = set.title.empty() ? stem : set.title;
+  const std::string title = set.title.empty() ? stem : set.title.in(g.lang);
   int status = 0;
-  for (const auto& [name, text] : {std::pair{stem + "-exams", exam_sheets_latex(sheets, title)},
-                                   std::pair{stem + "-key", answer_key_latex(sheets, title)}}) {
+  for (const auto& [name, text] :
+       {std::pair{stem + "-exams", exam_sheets_latex(sheets, title, g.lang)},
+        std::pair{stem + "-key", answer_key_latex(sheets, title, g.lang)}}) {
     const std::string tex = (fs::path(g.out_dir) / (name + ".tex")).string();
     try {
       write_file_atomically(tex, text);

@@ -85,7 +85,10 @@ int main(int argc, char** argv) {
   check->footer(examples({"frustum check problems/seeds"}));
 
   std::string lang = "en", grade_lang = "en";
-  solve->add_option("--lang", lang, "Language of the derivations: en, ja or ru")
+  solve
+      ->add_option("--lang", lang,
+                   "Language of the derivations and of the problems' texts (where the set gives "
+                   "it): en, ja or ru")
       ->check(CLI::IsMember({"en", "ja", "ru"}));
 
   frustum::app::GradeOptions grade_opt;
@@ -169,6 +172,11 @@ int main(int argc, char** argv) {
           "--format", gen_opt.format,
           "yaml (default: sets and keys), latex or pdf (also exam sheets and the answer key)")
       ->check(CLI::IsMember({"yaml", "latex", "pdf"}));
+  std::string gen_lang = "en", export_lang = "en";
+  generate
+      ->add_option("--lang", gen_lang,
+                   "latex, pdf: language of the exam sheets' texts: en, ja or ru")
+      ->check(CLI::IsMember({"en", "ja", "ru"}));
   generate->footer(examples(
       {"frustum generate SET.yaml --roster roster.csv -o variants/",
        "frustum generate SET.yaml --seed 7 --count 30 -o drill/",
@@ -198,6 +206,8 @@ int main(int argc, char** argv) {
                 "canvas-grades: the student ids are SIS Login IDs (default SIS User IDs)");
   exp->add_option("--image", export_opt.image,
                   "prairielearn: the grader image (default frustum-prairielearn)");
+  exp->add_option("--lang", export_lang, "Language of the questions' texts: en, ja or ru")
+      ->check(CLI::IsMember({"en", "ja", "ru"}));
   exp->footer(examples(
       {"frustum export prairielearn SET.yaml --count 20 -o course/questions/",
        "frustum export qti SET.yaml --count 3 -o quiz/ && (cd quiz && zip -r ../quiz.zip .)",
@@ -272,6 +282,7 @@ int main(int argc, char** argv) {
       std::cerr << "generate: give --student ID, --roster FILE or --seed N [--count K]\n";
       return 2;
     }
+    gen_opt.lang = *frustum::parse_lang(gen_lang);
     return frustum::app::run_generate(gen_opt, out);
   }
   if (exp->parsed()) {
@@ -279,6 +290,7 @@ int main(int argc, char** argv) {
       std::cerr << "export " << export_opt.format << ": give -o OUT\n";
       return 2;
     }
+    export_opt.lang = *frustum::parse_lang(export_lang);
     return frustum::app::run_export(export_opt, out);
   }
   if (draw->parsed()) return frustum::app::run_draw(set, draw_id, draw_output, raster, out);

@@ -43,10 +43,10 @@ std::string file_part(const std::string& s) {
 
 // Which statements are true, as checkboxes in the set's order, each numbered as in the set
 // (frustum-pl-grade reads the ticked ones back by these numbers); a blank submission is "none".
-std::string checkbox_html(const std::string& name, const ProblemSpec& p) {
+std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang lang) {
   const ProblemResult solved = solve_problem(p, "", false);
   const Value* key = solved.error ? nullptr : solved.answers.find(name);
-  const QuizField f = key ? statement_checkboxes(p, *key) : QuizField{};
+  const QuizField f = key ? statement_checkboxes(p, *key, lang) : QuizField{};
   const bool none_true = std::find(f.right.begin(), f.right.end(), true) == f.right.end();
   std::string s = fmt::format(
       "<p>{}:</p>\n<pl-checkbox answers-name=\"{}\" fixed-order=\"true\" allow-blank=\"true\" "
@@ -58,10 +58,10 @@ std::string checkbox_html(const std::string& name, const ProblemSpec& p) {
   return s + "</pl-checkbox>";
 }
 
-std::string input_html(const AnswerSpec& spec, const ProblemSpec& p) {
+std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) {
   const std::string name = xml_escape(spec.name);
   const std::string input = prairielearn_input(spec);
-  if (input == "checkbox") return checkbox_html(name, p);
+  if (input == "checkbox") return checkbox_html(name, p, lang);
   if (input == "number")
     return fmt::format(
         "<pl-number-input answers-name=\"{0}\" label=\"\\({0} =\\)\" "
@@ -131,14 +131,16 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
     const YAML::Node& root, const ProblemSet& set, const std::vector<ProblemSet>& variants,
     const std::string& stem, const PrairieLearnOptions& options) {
   std::map<std::string, std::map<std::string, std::string>> out;
-  const std::string title = set.title.empty() ? stem : set.title;
+  // The uuid keeps to the set's own title, so a question keeps its id in every language.
+  const std::string title = set.title.empty() ? stem : set.title.text;
+  const std::string shown = set.title.empty() ? stem : set.title.in(options.lang);
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const ProblemSpec& p = set.problems[i];
     if (!p.info) continue;
     json info;
     info["uuid"] = stable_uuid(title, p.id);
-    info["title"] = title + ": " + p.id;
-    info["topic"] = title;
+    info["title"] = shown + ": " + p.id;
+    info["topic"] = shown;
     info["tags"] = json::array({"frustum", p.kind});
     info["type"] = "v3";
     info["singleVariant"] = variants.size() == 1;
@@ -157,7 +159,7 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
       if (r.error) continue;
       json params;
       params["problem"] = vp.id;
-      params["text"] = question_text(v, vp);
+      params["text"] = question_text(v, vp, options.lang);
       std::string given;
       for (const std::string& line : given_lines(vp)) given += line + "\n";
       params["given"] = given;
@@ -188,7 +190,8 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
         "<pl-question-panel>\n  <p>{{params.text}}</p>\n  "
         "<pre>{{params.given}}</pre>\n</pl-question-panel>\n\n";
     for (const std::string& name : p.ask)
-      if (const AnswerSpec* spec = p.info->answer(name)) html += input_html(*spec, p) + "\n\n";
+      if (const AnswerSpec* spec = p.info->answer(name))
+        html += input_html(*spec, p, options.lang) + "\n\n";
     html +=
         "<pl-submission-panel>\n  "
         "<pl-external-grader-results></pl-external-grader-results>\n</pl-submission-panel>\n";

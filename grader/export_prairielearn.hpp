@@ -19,6 +19,7 @@ struct PrairieLearnOptions {
   std::string image = "frustum-prairielearn";  // built from tools/prairielearn/Dockerfile
   std::string entrypoint = "/usr/local/bin/frustum-pl-grade";
   int timeout = 30;  // seconds per grading job
+  Lang lang = Lang::En;  // the questions' texts (the set's own where not given)
 };
 
 // Question directory name → file name → contents. `source_root` is the set file's YAML (its

@@ -44,7 +44,8 @@ std::string sheet_head(const std::string& title, const PaperSheet& s, const char
 
 }  // namespace
 
-std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::string& title) {
+std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::string& title,
+                              Lang lang) {
   std::string out;
   for (std::size_t k = 0; k < sheets.size(); ++k) {
     const PaperSheet& s = sheets[k];
@@ -55,7 +56,7 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
       if (p.error || !p.info) continue;
       out += fmt::format("\\subsection*{{{}. \\normalfont\\small({})}}\n", ++n,
                          points_text(p.max_score()));
-      out += latex_prose(question_text(s.set, p)) + "\n\n";
+      out += latex_prose(question_text(s.set, p, lang)) + "\n\n";
       // An empty itemize does not compile (a statements problem shows no given).
       if (const std::vector<std::string> lines = given_lines(p); !lines.empty()) {
         out += "\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
@@ -63,7 +64,8 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
         out += "\\end{itemize}\n";
       }
       // Which statements are true: the statements numbered, never their truths.
-      if (const std::vector<std::string> statements = statement_texts(p); !statements.empty()) {
+      if (const std::vector<std::string> statements = statement_texts(p, lang);
+          !statements.empty()) {
         out += "\\begin{enumerate}\n";
         for (const std::string& text : statements) out += "\\item " + latex_prose(text) + "\n";
         out += "\\end{enumerate}\n";
@@ -77,7 +79,8 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
   return document(out);
 }
 
-std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::string& title) {
+std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::string& title,
+                             Lang lang) {
   std::string out;
   for (std::size_t k = 0; k < sheets.size(); ++k) {
     const PaperSheet& s = sheets[k];
@@ -100,7 +103,7 @@ std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::s
       std::string steps;
       for (const Step& step : r.derivation.steps()) {
         if (step.formula.empty() && step.substitution.empty() && step.result.empty()) continue;
-        steps += "\\item " + latex_prose(step.title);
+        steps += "\\item " + latex_prose(title_in(step, lang));
         for (const MathText* m : {&step.formula, &step.substitution, &step.result})
           if (!m->latex.empty()) steps += "\\\\ \\(" + math_or_words(m->latex) + "\\)";
         steps += "\n";

@@ -17,7 +17,10 @@ struct PaperSheet {
   ProblemSet set;       // the student's variant
 };
 
-std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::string& title);
-std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::string& title);
+// The problems' texts (and the key's step titles) in `lang`, the set's own where not given.
+std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::string& title,
+                              Lang lang = Lang::En);
+std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::string& title,
+                             Lang lang = Lang::En);
 
 }  // namespace frustum

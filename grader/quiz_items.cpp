@@ -7,6 +7,7 @@
 
 #include "grader/export_tolerance.hpp"
 #include "solver/kinds/solve_set.hpp"
+#include "solver/kinds/text_reader.hpp"
 #include "solver/kinds/variants.hpp"
 #include "solver/kinds/yaml_emit.hpp"
 
@@ -31,8 +32,8 @@ std::vector<QuizField> numbers(const Value& v, const std::vector<double>& window
   return out;
 }
 
-std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAnswer& a) {
-  const QuizField f = statement_checkboxes(p, expected);
+std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAnswer& a, Lang lang) {
+  const QuizField f = statement_checkboxes(p, expected, lang);
   if (std::find(f.right.begin(), f.right.end(), true) == f.right.end())
     return "no statement is true, and a checkbox question needs a right choice";
   a.prompt = "the true statements";
@@ -49,7 +50,7 @@ bool given_is_key(const ProblemSpec& p) {
 
 // The fields of one answer, or the reason it cannot be a quiz field.
 std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
-                      const Value& expected, QuizAnswer& a) {
+                      const Value& expected, QuizAnswer& a, Lang lang) {
   if (expected.shape == Value::Shape::Null) return "it has no value here";
   switch (spec.kind) {
     case AnswerKind::Scalar:
@@ -115,42 +116,55 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
     case AnswerKind::Sequence:
       return "an order of labels has no quiz field";
     case AnswerKind::Statements:
-      return statement_boxes(p, expected, a);
+      return statement_boxes(p, expected, a, lang);
   }
   return "no quiz field fits it";
 }
 
 }  // namespace
 
-std::vector<std::string> statement_texts(const ProblemSpec& p) {
+namespace {
+
+// A statement's `text` or `reason` in `lang`, or in the set's own language (text_reader.hpp).
+std::string statement_field(const ProblemSpec& p, const YAML::Node& statement, const char* key,
+                            Lang lang) {
+  const YAML::Node n =
+      statement.IsMap() ? local_text_node(statement[key], lang, p.text.lang) : YAML::Node();
+  return n.IsDefined() && n.IsScalar() ? n.Scalar() : "";
+}
+
+}  // namespace
+
+std::vector<std::string> statement_texts(const ProblemSpec& p, Lang lang) {
   std::vector<std::string> out;
   const YAML::Node statements = given_is_key(p) ? p.given_node["statements"] : YAML::Node();
   if (statements.IsSequence())
-    for (const YAML::Node& s : statements) out.push_back(s["text"] ? s["text"].Scalar() : "");
+    for (const YAML::Node& s : statements) out.push_back(statement_field(p, s, "text", lang));
   return out;
 }
 
-QuizField statement_checkboxes(const ProblemSpec& p, const Value& key) {
+QuizField statement_checkboxes(const ProblemSpec& p, const Value& key, Lang lang) {
   QuizField f;
   f.type = QuizField::Type::Checkboxes;
   const YAML::Node statements = p.given_node["statements"];
-  f.choices = statement_texts(p);
+  f.choices = statement_texts(p, lang);
   f.choices.resize(key.entries.size());
   for (std::size_t i = 0; i < key.entries.size(); ++i) {
     const YAML::Node s =
         statements.IsSequence() && i < statements.size() ? statements[i] : YAML::Node();
-    f.reasons.push_back(s["reason"] ? s["reason"].Scalar() : "");
+    f.reasons.push_back(statement_field(p, s, "reason", lang));
     f.right.push_back(key.entries[i].second == "true");
     if (f.right.back()) f.correct += (f.correct.empty() ? "" : ", ") + std::to_string(i + 1);
   }
   return f;
 }
 
-std::string question_text(const ProblemSet& set, const ProblemSpec& p) {
-  if (p.text.empty()) return p.info ? p.info->summary : p.kind;
-  std::string text = fill_text(p.text, p.given_node);
-  if (set.variant && p.text.find('{') == std::string::npos)
-    text += " (Use the values given below.)";
+std::string question_text(const ProblemSet& set, const ProblemSpec& p, Lang lang) {
+  if (p.text.empty()) return p.info ? tr(p.info->summary, lang) : p.kind;
+  const std::string& written = p.text.in(lang);
+  std::string text = fill_text(written, p.given_node);
+  if (set.variant && written.find('{') == std::string::npos)
+    text += " " + tr("(Use the values given below.)", lang);
   return text;
 }
 
@@ -162,7 +176,7 @@ std::vector<std::string> given_lines(const ProblemSpec& p) {
   return out;
 }
 
-std::vector<QuizQuestion> quiz_questions(const ProblemSet& set) {
+std::vector<QuizQuestion> quiz_questions(const ProblemSet& set, Lang lang) {
   std::vector<QuizQuestion> out;
   for (const ProblemSpec& p : set.problems) {
     if (p.error || !p.info) continue;
@@ -171,7 +185,7 @@ std::vector<QuizQuestion> quiz_questions(const ProblemSet& set) {
     QuizQuestion q;
     q.id = p.id;
     q.kind = p.kind;
-    q.text = question_text(set, p);
+    q.text = question_text(set, p, lang);
     q.given = given_lines(p);
     for (const std::string& name : p.ask) {
       const AnswerSpec* spec = p.info->answer(name);
@@ -181,7 +195,7 @@ std::vector<QuizQuestion> quiz_questions(const ProblemSet& set) {
       a.name = name;
       a.prompt = name;
       a.points = p.answer_points(name);
-      const std::string reason = fields_of(p, r.answers, *spec, *expected, a);
+      const std::string reason = fields_of(p, r.answers, *spec, *expected, a, lang);
       if (reason.empty())
         q.answers.push_back(a);
       else

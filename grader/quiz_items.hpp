@@ -51,24 +51,25 @@ struct QuizVariant {
   std::vector<QuizQuestion> questions;
 };
 
-// What a student reads: the problem's text with its {field}s filled (the kind's summary when it
-// has none). A drawn variant whose text names no field adds that the values are those given
-// below, since such a text may quote the template's numbers.
-std::string question_text(const ProblemSet& set, const ProblemSpec& problem);
+// What a student reads: the problem's text in `lang` with its {field}s filled (the kind's
+// summary, translated, when it has none). A drawn variant whose text names no field adds that the
+// values are those given below, since such a text may quote the template's numbers.
+std::string question_text(const ProblemSet& set, const ProblemSpec& problem, Lang lang = Lang::En);
 // The given fields as "name: value" lines (YAML flow values); none for a problem whose given
 // is its key (the truths of `statements`), which students must not see.
 std::vector<std::string> given_lines(const ProblemSpec& problem);
 
-// The statements of a `statements` problem as students read them (never their truths); empty
-// for any other problem.
-std::vector<std::string> statement_texts(const ProblemSpec& problem);
+// The statements of a `statements` problem as students read them (never their truths), in
+// `lang` where the set gives it; empty for any other problem.
+std::vector<std::string> statement_texts(const ProblemSpec& problem, Lang lang = Lang::En);
 
 // One checkbox per statement of a `statements` problem: its text, its truth in `key` (the
 // answer true_statements), and its reason.
-QuizField statement_checkboxes(const ProblemSpec& problem, const Value& key);
+QuizField statement_checkboxes(const ProblemSpec& problem, const Value& key, Lang lang = Lang::En);
 
 // The questions of a set (a generated variant, or a set with fixed givens), solved exactly.
-// Problems that do not solve are left out (quiz_questions never throws for them).
-std::vector<QuizQuestion> quiz_questions(const ProblemSet& set);
+// Problems that do not solve are left out (quiz_questions never throws for them). Texts are
+// in `lang` where the set gives it (its own language otherwise).
+std::vector<QuizQuestion> quiz_questions(const ProblemSet& set, Lang lang = Lang::En);
 
 }  // namespace frustum

@@ -73,7 +73,7 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
       if (!a.feedback.empty() && a.verdict != Verdict::Correct) out += "      " + tr(a.feedback, lang) + "\n";
       if (a.verdict != Verdict::Correct && !a.derivation.empty() && !a.derivation.back().answers.empty())
         out += fmt::format("      {} {}: {}\n", tr("See step", lang), step_number(a.derivation),
-                           tr(a.derivation.back().title, lang));
+                           title_in(a.derivation.back(), lang));
     }
     if (derivation) {
       out += "  " + tr("How to get it", lang) + ":\n";

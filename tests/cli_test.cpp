@@ -194,5 +194,34 @@ TEST(Cli, CheckPrintsItsSummaryOnStandardOutput) {
       << r.out;
 }
 
+// Problems in the students' languages (issue 16): check names a bad language key with its
+// location; solve, export and generate show the chosen language's text.
+TEST(Cli, ProblemTextsInTheChosenLanguage) {
+  const std::string dir = ::testing::TempDir() + "frustum_cli_texts";
+  std::filesystem::create_directories(dir);
+  const std::string bad = dir + "/bad.yaml";
+  std::ofstream(bad) << "problems:\n  - id: p\n    kind: vectors\n    text: {en: a, de: b}\n"
+                        "    given: {a: [1, 0, 0], b: [0, 1, 0]}\n";
+  const CliRun checked = run("check " + bad);
+  EXPECT_EQ(checked.status, 1);
+  EXPECT_NE(checked.out.find("bad.yaml:4:19: problems[0].text.de: 'de' is not a language"),
+            std::string::npos)
+      << checked.out;
+  const std::string seed003 = seed("003_polygons_backface.yaml");
+  const CliRun ru = stdout_of("solve " + seed003 + " --lang ru --format json");
+  EXPECT_NE(ru.out.find("\"text\": \"Какие из следующих утверждений верны?\""), std::string::npos);
+  EXPECT_NE(ru.out.find("\"ja\": \"次の記述のうち正しいものを選べ.\""), std::string::npos);
+  const std::string xml = dir + "/q.xml";
+  ASSERT_EQ(run("export moodle " + seed003 + " --lang ru -o " + xml).status, 0);
+  const std::string moodle = test::read_file(xml);
+  EXPECT_NE(moodle.find("Нужны нормали граней, а не вершин."), std::string::npos);
+  EXPECT_EQ(moodle.find("Back-face culling"), std::string::npos);
+  ASSERT_EQ(run("generate " + seed003 + " --seed 3 --format latex --lang ja -o " + dir).status, 0);
+  const std::string exam = test::read_file(dir + "/003_polygons_backface-exams.tex");
+  EXPECT_NE(exam.find("凹多面体を描画する場合はバックフェースカリングを使うべきではない."),
+            std::string::npos);
+  EXPECT_EQ(exam.find("Back-face culling"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace frustum

@@ -242,7 +242,7 @@ TEST(Vary, SeedsAreTheDocumentedHash) {
   EXPECT_EQ(problem_seed(v.variant->seed, "zbuf"), fnv1a64(text + '\x1f' + "zbuf"));
   // Without a title the key is the file name's stem.
   ProblemSet untitled = set;
-  untitled.title.clear();
+  untitled.title = {};
   EXPECT_EQ(set_key(untitled), "drill");
 }
 

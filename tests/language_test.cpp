@@ -84,7 +84,8 @@ const std::set<std::string>& names() {
                                           "false",
                                           "Direct3D",
                                           "FrontCounterClockwise",
-                                          "XMMatrixTranslation"};
+                                          "XMMatrixTranslation",
+                                          "translate"};
   return n;
 }
 
@@ -167,9 +168,11 @@ TEST(Language, StudentTextCitesNoLectureFile) {
       EXPECT_FALSE(cites_lecture_file(tr(t.text, lang))) << t.where << ": " << tr(t.text, lang);
   for (const std::string& file : test::bundled_sets()) {
     const ProblemSet set = load_problem_set(file);
-    EXPECT_FALSE(cites_lecture_file(set.title + " " + set.source)) << file << ": " << set.title;
+    for (const auto& [lang, title] : set.title.all())
+      EXPECT_FALSE(cites_lecture_file(title + " " + set.source)) << file << ": " << title;
     for (const ProblemSpec& p : set.problems)
-      EXPECT_FALSE(cites_lecture_file(p.text)) << file << ": " << p.id;
+      for (const auto& [lang, text] : p.text.all())
+        EXPECT_FALSE(cites_lecture_file(text)) << file << ": " << p.id;
   }
 }
 
@@ -240,6 +243,36 @@ TEST(Language, BooleanKeyIsPrintedInTheStudentsLanguageAndAcceptedBack) {
       }
     }
   }
+}
+
+// Problems in the students' languages (issue 16): the seed and example sets give every text a
+// student reads — titles, problem texts, statements and reasons — in Japanese and Russian, so
+// no English reaches a student reading them in another language (the same check as the steps').
+TEST(Language, NoEnglishProblemTextReachesAJapaneseOrRussianStudent) {
+  const std::vector<test::InstructorText> texts = test::instructor_texts();
+  EXPECT_GT(texts.size(), 70u);
+  int failures = 0;
+  for (const test::InstructorText& t : texts)
+    for (const Lang lang : {Lang::Ja, Lang::Ru}) {
+      const std::string& shown = t.shown.at(lang);
+      const std::vector<std::string> words = english_words(shown);
+      if (words.empty()) continue;
+      if (++failures <= 40)
+        ADD_FAILURE() << to_string(lang) << " " << t.where << ": \"" << words[0] << "\" in\n    "
+                      << shown;
+    }
+  EXPECT_EQ(failures, 0);
+  // And each language reads its own text: a Japanese text is not shown to a Russian student.
+  for (const test::InstructorText& t : texts)
+    EXPECT_NE(t.shown.at(Lang::Ja), t.shown.at(Lang::Ru)) << t.where;
+}
+
+// A problem without a text is asked by its kind's summary, in the student's language too.
+TEST(Language, KindSummariesAreTranslated) {
+  for (const KindInfo& kind : builtin_kinds().all())
+    for (const Lang lang : {Lang::Ja, Lang::Ru})
+      EXPECT_EQ(english_words(tr(kind.summary, lang)), std::vector<std::string>{})
+          << kind.name << " " << to_string(lang) << ": " << tr(kind.summary, lang);
 }
 
 }  // namespace

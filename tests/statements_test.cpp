@@ -89,7 +89,7 @@ TEST(Statements, DerivationListsEachStatementWithItsMarkAndReason) {
   EXPECT_EQ(tr(steps[0].result, Lang::Ja).unicode, "○ 正しい");
   EXPECT_EQ(tr(steps[3].result, Lang::Ru).unicode, "× неверно");
   EXPECT_EQ(tr(steps[4].title, Lang::Ru), "Верные утверждения");
-  const SetResult one{set.file, "", "", {p}, {}};
+  const SetResult one{set.file, {}, "", {p}, {}};
   const std::string ja = render_text(one, TextStyle{false, Lang::Ja});
   EXPECT_NE(ja.find("記述 3: バックフェースカリングを実行するためには頂点の法線が必要である."),
             std::string::npos)
@@ -176,7 +176,7 @@ TEST(Statements, VariantsKeepTheProblemAsWritten) {
 std::vector<QuizQuestion> culling_questions() {
   const ProblemSet set = load_problem_set(test::source_path(kSeed003));
   std::vector<QuizQuestion> out;
-  for (const QuizQuestion& q : quiz_questions(set))
+  for (const QuizQuestion& q : quiz_questions(set, Lang::Ja))  // in the lecture's own words
     if (q.id == kId) out.push_back(q);
   return out;
 }
@@ -237,7 +237,9 @@ TEST(Statements, CanvasExportIsAMultipleAnswersQuestion) {
 TEST(Statements, PrairieLearnExportIsACheckboxGradedByFrustum) {
   const std::string path = test::source_path(kSeed003);
   const ProblemSet set = load_problem_set(path);
-  const auto out = export_prairielearn(load_yaml_file(path).root, set, {set}, "003");
+  PrairieLearnOptions japanese;  // the lecture's own words
+  japanese.lang = Lang::Ja;
+  const auto out = export_prairielearn(load_yaml_file(path).root, set, {set}, "003", japanese);
   ASSERT_TRUE(out.count("003-seed003-culling-statements"));
   const auto& files = out.at("003-seed003-culling-statements");
   const std::string& html = files.at("question.html");
@@ -312,7 +314,7 @@ TEST(Statements, CreditPropertiesOverManyKeysAndAnswers) {
 // On a paper exam the statements are listed, numbered, and their truths are not.
 TEST(Statements, PaperExamListsTheStatementsNotTheKey) {
   ProblemSet set = load_problem_set(test::source_path(kSeed003));
-  const std::string exam = exam_sheets_latex({{"s1", set}}, "Seed 3");
+  const std::string exam = exam_sheets_latex({{"s1", set}}, "Seed 3", Lang::Ja);
   EXPECT_NE(exam.find("\\begin{enumerate}\n\\item 1つの凸多面体の陰面消去には"), std::string::npos)
       << exam;
   EXPECT_NE(exam.find("\\item 凹多面体を描画する場合はバックフェースカリングを使うべきではない."),

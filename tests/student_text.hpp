@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -63,8 +64,10 @@ inline YAML::Node answer_yaml(const Value& v) {
 inline void add_steps(std::vector<StudentText>& out, const std::string& where,
                       const std::vector<Step>& steps) {
   for (const Step& s : steps) {
-    out.push_back({where + " title", s.title});
-    if (!s.note.empty()) out.push_back({where + " note", s.note});
+    // A title or note quoting the instructor's text in several languages (a statement and its
+    // reason) is the instructor's, checked in each language by instructor_texts().
+    if (s.titles.empty()) out.push_back({where + " title", s.title});
+    if (!s.note.empty() && s.notes.empty()) out.push_back({where + " note", s.note});
     for (const MathText* m : {&s.formula, &s.substitution, &s.result})
       for (const std::string& w : m->words) out.push_back({where + " word", w});
   }
@@ -196,6 +199,41 @@ inline std::vector<StudentText> student_texts() {
         YAML::Node answers;
         answers["p"] = c["answers"];
         add_grade(out, grade_answers(set, solved, answers));
+      }
+    }
+  }
+  return out;
+}
+
+// Problems in the students' languages (issue 16): what the instructor wrote for students in the
+// seed and example sets — titles, problem texts with their placeholders filled, statements and
+// reasons quoted in steps — as a student reading each language sees it.
+struct InstructorText {
+  std::string where;
+  std::map<Lang, std::string> shown;
+};
+
+inline std::vector<InstructorText> instructor_texts() {
+  std::vector<InstructorText> out;
+  const auto each = [](const auto& f) {
+    std::map<Lang, std::string> m;
+    for (const Lang lang : {Lang::En, Lang::Ja, Lang::Ru}) m[lang] = f(lang);
+    return m;
+  };
+  for (const std::string& file : bundled_sets()) {
+    if (file.find("/problems/hard/") != std::string::npos) continue;  // instructors' stress tests
+    const SetResult r = solve_set(load_problem_set(file), true);
+    if (!r.title.empty())
+      out.push_back({file + " title", each([&](Lang l) { return r.title.in(l); })});
+    for (const ProblemResult& p : r.problems) {
+      const std::string where = file + ": " + p.id;
+      if (!p.text.empty())
+        out.push_back({where + " text", each([&](Lang l) { return p.text.in(l); })});
+      for (const Step& s : p.derivation.steps()) {
+        if (!s.titles.empty())
+          out.push_back({where + " step", each([&](Lang l) { return title_in(s, l); })});
+        if (!s.notes.empty())
+          out.push_back({where + " note", each([&](Lang l) { return note_in(s, l); })});
       }
     }
   }

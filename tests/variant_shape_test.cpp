@@ -36,19 +36,19 @@ TEST(Placeholders, FilledAsStudentsReadThemUnknownAndMappingsRefused) {
   const SetResult r = solve_set(load_problem_set_from_string(kPlaceholders, "set.yaml"), true);
   ASSERT_EQ(r.problems.size(), 5u);
   EXPECT_FALSE(r.problems[0].error) << test::error_text(r.problems[0]);
-  EXPECT_EQ(r.problems[0].text, "The eye at (0, 0, 5) looks at (0, 0, 0); its x is 0.");
+  EXPECT_EQ(r.problems[0].text.text, "The eye at (0, 0, 5) looks at (0, 0, 0); its x is 0.");
   ASSERT_TRUE(r.problems[1].error);
   EXPECT_NE(r.problems[1].error->format().find(
                 "problems[1].text: the placeholder {perspective.fov} names no field"),
             std::string::npos)
       << r.problems[1].error->format();
   EXPECT_FALSE(r.problems[2].error) << test::error_text(r.problems[2]);
-  EXPECT_EQ(r.problems[2].text, "Clip against [0, 4] × [0, 3].");
+  EXPECT_EQ(r.problems[2].text.text, "Clip against [0, 4] × [0, 3].");
   ASSERT_TRUE(r.problems[3].error);
   EXPECT_NE(r.problems[3].error->format().find("{perspective} is a mapping"), std::string::npos)
       << r.problems[3].error->format();
   EXPECT_FALSE(r.problems[4].error) << test::error_text(r.problems[4]);
-  EXPECT_EQ(r.problems[4].text, "Clip against [0, 4] × [0, 3] × [-1, 1/2].");
+  EXPECT_EQ(r.problems[4].text.text, "Clip against [0, 4] × [0, 3] × [-1, 1/2].");
 }
 
 TEST(VariantShape, ShapeIgnoresValuesButNotStructure) {

@@ -3,10 +3,12 @@
 // (render_text, render_markdown, render_json) decide how it looks.
 #pragma once
 
-#include "solver/derivation/math_text.hpp"
-
+#include <map>
 #include <string>
 #include <vector>
+
+#include "solver/derivation/i18n.hpp"
+#include "solver/derivation/math_text.hpp"
 
 namespace frustum {
 
@@ -20,6 +22,9 @@ struct Step {
   std::string note;           // prose: a convention, a seed's slip, a warning
   Level level = Level::Info;
   std::vector<std::string> answers;  // the answers this step produces ("plane")
+  // The title and note as written for another language, where they quote an instructor's text
+  // that the set gives in that language (a statement and its reason): local_text.hpp.
+  std::map<Lang, std::string> titles, notes;
 };
 
 class Derivation {

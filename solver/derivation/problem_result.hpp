@@ -1,21 +1,22 @@
 // What solving a problem set produces: per problem its answers and derivation, or its error.
 #pragma once
 
-#include "solver/derivation/derivation.hpp"
-#include "solver/derivation/value.hpp"
-#include "solver/util/diagnostic.hpp"
-#include "solver/viewing/conventions.hpp"
-
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/derivation/local_text.hpp"
+#include "solver/derivation/value.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "solver/viewing/conventions.hpp"
 
 namespace frustum {
 
 struct ProblemResult {
   std::string id;
   std::string kind;
-  std::string text;
+  LocalText text;  // placeholders filled, in every language the set gives
   Conventions conventions;
   std::vector<std::string> ask;  // answers to report, in order
   Answers answers;
@@ -25,7 +26,7 @@ struct ProblemResult {
 
 struct SetResult {
   std::string file;
-  std::string title;
+  LocalText title;
   std::string source;  // cited under the title
   std::vector<ProblemResult> problems;
   std::vector<Diagnostic> errors;  // errors of the set itself (bad YAML, no problems list)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "solver/derivation/i18n.hpp"
+#include "solver/derivation/local_text.hpp"
 #include "solver/derivation/problem_result.hpp"
 
 namespace frustum {
@@ -49,8 +50,10 @@ nlohmann::ordered_json number_json(double v);
 nlohmann::ordered_json value_json(const Value& v);   // "value"
 nlohmann::ordered_json exact_json(const Value& v);   // "exact" (null when not exact)
 nlohmann::ordered_json steps_json(const std::vector<Step>& steps);
-nlohmann::ordered_json problem_json(const ProblemResult& p);
-nlohmann::ordered_json render_json(const SetResult& set);
+// `text` and `title` in `lang` (the set's own when it does not give that language); `texts` and
+// `titles` map every language given ({"en": …, "ja": …}); `lang` is the set's own language.
+nlohmann::ordered_json problem_json(const ProblemResult& p, Lang lang = Lang::En);
+nlohmann::ordered_json render_json(const SetResult& set, Lang lang = Lang::En);
 
 // JSON as text, never throwing on bytes that are not UTF-8 (they become U+FFFD): student and
 // instructor text reaches many fields, and yaml-cpp can hand back such bytes (a YAML NEL as the

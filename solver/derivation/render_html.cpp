@@ -134,21 +134,21 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang) {
     const std::string cls = s.level == Step::Level::Warning ? " class=\"warning\""
                             : s.level == Step::Level::Note  ? " class=\"note-step\""
                                                            : fmt::format(" value=\"{}\"", ++number);
-    out += fmt::format("<li{}><b>{}</b>", cls, svg_escape(tr(s.title, lang)));
+    out += fmt::format("<li{}><b>{}</b>", cls, svg_escape(title_in(s, lang)));
     for (const MathText* m : {&s.formula, &s.substitution})
       if (!m->empty()) out += "<div class=\"math\">" + html_math(*m, lang) + "</div>";
     if (!s.result.empty())
       out += "<div class=\"math result\">" +
              html_math(math("⇒ ", "\\Rightarrow\\; ") + s.result, lang) + "</div>";
     if (!s.note.empty())
-      out += fmt::format("<div class=\"note\">{}</div>", svg_escape(tr(s.note, lang)));
+      out += fmt::format("<div class=\"note\">{}</div>", svg_escape(note_in(s, lang)));
     out += "</li>\n";
   }
   return out + "</ol>\n";
 }
 
 std::string render_html(const SetResult& set, Lang lang) {
-  const std::string title = set.title.empty() ? set.file : set.title;
+  const std::string title = set.title.empty() ? set.file : set.title.in(lang);
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, "
@@ -171,7 +171,7 @@ std::string render_html(const SetResult& set, Lang lang) {
   for (const ProblemResult& p : set.problems) {
     out += fmt::format("<section id=\"{}\">\n<h2>{} <small>({})</small></h2>\n", svg_escape(p.id),
                        svg_escape(p.id), svg_escape(p.kind));
-    if (!p.text.empty()) out += fmt::format("<p>{}</p>\n", svg_escape(p.text));
+    if (!p.text.empty()) out += fmt::format("<p>{}</p>\n", svg_escape(p.text.in(lang)));
     if (p.error) {
       out += fmt::format("<p class=\"error\">{}</p>\n</section>\n", svg_escape(p.error->format()));
       continue;

@@ -93,8 +93,19 @@ json steps_json(const std::vector<Step>& steps) {
   return out;
 }
 
-json problem_json(const ProblemResult& p) {
+// The instructor's text in the reader's language, and every language given, by code.
+json texts_json(const LocalText& t) {
+  json out = json::object();
+  for (const auto& [lang, text] : t.all()) out[std::string(to_string(lang))] = text;
+  return out;
+}
+
+json problem_json(const ProblemResult& p, Lang lang) {
   json j = {{"id", p.id}, {"kind", p.kind}};
+  if (!p.text.empty()) {
+    j["text"] = p.text.in(lang);
+    j["texts"] = texts_json(p.text);
+  }
   if (p.error) {
     j["error"] = p.error->format();
     return j;
@@ -117,10 +128,14 @@ json problem_json(const ProblemResult& p) {
   return j;
 }
 
-json render_json(const SetResult& set) {
+json render_json(const SetResult& set, Lang lang) {
   json j = json::object();
   j["file"] = set.file;
-  if (!set.title.empty()) j["title"] = set.title;
+  j["lang"] = std::string(to_string(set.title.lang));  // the set's own: what texts fall back to
+  if (!set.title.empty()) {
+    j["title"] = set.title.in(lang);
+    j["titles"] = texts_json(set.title);
+  }
   if (!set.source.empty()) j["source"] = set.source;
   if (!set.errors.empty()) {
     json errs = json::array();
@@ -128,7 +143,7 @@ json render_json(const SetResult& set) {
     j["errors"] = errs;
   }
   json problems = json::array();
-  for (const ProblemResult& p : set.problems) problems.push_back(problem_json(p));
+  for (const ProblemResult& p : set.problems) problems.push_back(problem_json(p, lang));
   j["problems"] = problems;
   return j;
 }

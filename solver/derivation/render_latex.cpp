@@ -24,11 +24,11 @@ std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
     out += info ? "\\item " : "\\item[\\textbullet] ";
     out += (s.level == Step::Level::Warning ? "\\textbf{" + prose(tr("Warning", lang)) + ": "
                                             : "\\textbf{") +
-           prose(tr(s.title, lang)) + "}\n";
+           prose(title_in(s, lang)) + "}\n";
     for (const MathText* m : {&s.formula, &s.substitution})
       if (!m->empty()) out += "\\[ " + tr(*m, lang).latex + " \\]\n";
     if (!s.result.empty()) out += "\\[ \\Rightarrow\\; " + tr(s.result, lang).latex + " \\]\n";
-    if (!s.note.empty()) out += "{\\small " + prose(tr(s.note, lang)) + "}\n";
+    if (!s.note.empty()) out += "{\\small " + prose(note_in(s, lang)) + "}\n";
   }
   return out + "\\end{enumerate}\n";
 }
@@ -36,7 +36,7 @@ std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
 }  // namespace
 
 std::string render_latex(const SetResult& set, Lang lang) {
-  const std::string title = set.title.empty() ? set.file : set.title;
+  const std::string title = set.title.empty() ? set.file : set.title.in(lang);
   std::string out =
       "% Compile with lualatex.\n\\documentclass[11pt]{article}\n\\usepackage{amsmath,amssymb}\n"
       "\\usepackage{fontspec}\n\\setmainfont{DejaVu Serif}\n\\setsansfont{DejaVu "
@@ -50,7 +50,7 @@ std::string render_latex(const SetResult& set, Lang lang) {
     out += "\\textbf{" + prose(tr("error", lang)) + ":} \\texttt{" + prose(d.format()) + "}\n\n";
   for (const ProblemResult& p : set.problems) {
     out += "\\subsection*{" + prose(p.id) + " \\normalfont(\\texttt{" + prose(p.kind) + "})}\n";
-    if (!p.text.empty()) out += prose(p.text) + "\n\n";
+    if (!p.text.empty()) out += prose(p.text.in(lang)) + "\n\n";
     if (p.error) {
       out += "\\textbf{" + prose(tr("error", lang)) + ":} \\texttt{" + prose(p.error->format()) +
              "}\n\n";

@@ -8,7 +8,7 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang) {
   std::string out;
   int number = 0;
   for (const Step& s : steps) {
-    const std::string title = tr(s.title, lang), note = tr(s.note, lang);
+    const std::string title = title_in(s, lang), note = note_in(s, lang);
     if (s.level == Step::Level::Warning)
       out += fmt::format("> **{} — {}.** {}\n\n", tr("Warning", lang), title, note);
     else if (s.level == Step::Level::Note)
@@ -25,7 +25,7 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang) {
 
 std::string render_problem_markdown(const ProblemResult& p, Lang lang) {
   std::string out = fmt::format("## {} (`{}`)\n\n", p.id, p.kind);
-  if (!p.text.empty()) out += p.text + "\n\n";
+  if (!p.text.empty()) out += p.text.in(lang) + "\n\n";
   if (p.error) return out + fmt::format("**{}:** `{}`\n\n", tr("Error", lang), p.error->format());
   out += render_steps_markdown(p.derivation.steps(), lang);
   out += fmt::format("**{}**\n\n| {} | {} |\n| --- | --- |\n", tr("Answers", lang),
@@ -37,7 +37,7 @@ std::string render_problem_markdown(const ProblemResult& p, Lang lang) {
 }
 
 std::string render_markdown(const SetResult& set, Lang lang) {
-  std::string out = fmt::format("# {}\n\n", set.title.empty() ? set.file : set.title);
+  std::string out = fmt::format("# {}\n\n", set.title.empty() ? set.file : set.title.in(lang));
   if (!set.source.empty()) out += fmt::format("*{}: {}*\n\n", tr("Source", lang), set.source);
   for (const Diagnostic& d : set.errors)
     out += fmt::format("**{}:** `{}`\n\n", tr("Error", lang), d.format());

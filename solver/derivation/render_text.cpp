@@ -37,7 +37,7 @@ std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& s
   int number = 0;
   for (const Step& s : steps) {
     const std::string body = indent + "    ";
-    const std::string title = tr(s.title, style.lang), note = tr(s.note, style.lang);
+    const std::string title = title_in(s, style.lang), note = note_in(s, style.lang);
     if (s.level == Step::Level::Warning) {
       out += fmt::format("{}{}⚠ {}{}\n", indent, a.yellow(), title, a.reset());
     } else if (s.level == Step::Level::Note) {
@@ -57,7 +57,7 @@ std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& s
 std::string render_problem_text(const ProblemResult& p, const TextStyle& style) {
   const Ansi a{style.color};
   std::string out = fmt::format("{}━━ {} · {} ━━{}\n", a.bold(), p.id, p.kind, a.reset());
-  if (!p.text.empty()) out += p.text + "\n";
+  if (!p.text.empty()) out += p.text.in(style.lang) + "\n";
   if (p.error) {
     out += fmt::format("  {}{}:{} {}\n", a.red(), tr("error", style.lang), a.reset(),
                        p.error->format());
@@ -75,7 +75,8 @@ std::string render_problem_text(const ProblemResult& p, const TextStyle& style) 
 std::string render_text(const SetResult& set, const TextStyle& style) {
   const Ansi a{style.color};
   std::string out;
-  if (!set.title.empty()) out += fmt::format("{}{}{}\n", a.bold(), set.title, a.reset());
+  if (!set.title.empty())
+    out += fmt::format("{}{}{}\n", a.bold(), set.title.in(style.lang), a.reset());
   if (!set.source.empty()) out += fmt::format("{}: {}\n", tr("Source", style.lang), set.source);
   if (!set.title.empty() || !set.source.empty()) out += "\n";
   for (const Diagnostic& d : set.errors)

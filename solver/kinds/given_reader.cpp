@@ -250,7 +250,9 @@ std::vector<std::string> GivenReader::words(std::string_view key, std::size_t co
 }
 
 GivenReader GivenReader::child(std::string_view key, std::vector<std::string> known_fields) {
-  return GivenReader(require(key), file_, path(key), std::move(known_fields), exact_);
+  GivenReader out(require(key), file_, path(key), std::move(known_fields), exact_);
+  out.text_lang_ = text_lang_;
+  return out;
 }
 
 std::size_t GivenReader::list_size(std::string_view key, std::size_t min_count, std::size_t max_count) {
@@ -267,8 +269,10 @@ std::size_t GivenReader::list_size(std::string_view key, std::size_t min_count, 
 GivenReader GivenReader::item(std::string_view key, std::size_t i,
                               std::vector<std::string> known_fields) {
   const YAML::Node n = require(key);
-  return GivenReader(n[i], file_, path(key) + "[" + std::to_string(i) + "]",
-                     std::move(known_fields), exact_);
+  GivenReader out(n[i], file_, path(key) + "[" + std::to_string(i) + "]", std::move(known_fields),
+                  exact_);
+  out.text_lang_ = text_lang_;
+  return out;
 }
 
 bool GivenReader::is_list(std::string_view key) const {

@@ -2,9 +2,6 @@
 // line, column and field; unknown or misspelled fields are errors with a suggestion.
 #pragma once
 
-#include "solver/geometry/vec.hpp"
-#include "solver/util/diagnostic.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <memory>
@@ -12,6 +9,10 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "solver/derivation/i18n.hpp"
+#include "solver/geometry/vec.hpp"
+#include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
@@ -77,6 +78,9 @@ class GivenReader {
 
   const YAML::Node& node() const { return node_; }
   const std::string& file() const { return file_; }
+  // The set's own language (`lang:`), for the instructor's texts inside a given (statements).
+  void set_text_lang(Lang lang) { text_lang_ = lang; }
+  Lang text_lang() const { return text_lang_; }
 
  private:
   YAML::Node require(std::string_view key);
@@ -99,6 +103,7 @@ class GivenReader {
   std::vector<std::string> known_;
   std::set<std::string, std::less<>> used_;
   std::shared_ptr<ExactInputs> exact_;
+  Lang text_lang_ = Lang::En;
 };
 
 // Reads one number of a YAML scalar node: integers and decimals exactly, strings as exact

@@ -1,19 +1,21 @@
 #include "solver/kinds/problem_set.hpp"
 
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/yaml_document.hpp"
-#include "solver/util/suggest.hpp"
-
 #include <cmath>
 #include <set>
+
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/registry.hpp"
+#include "solver/kinds/text_reader.hpp"
+#include "solver/kinds/yaml_document.hpp"
+#include "solver/util/suggest.hpp"
 
 namespace frustum {
 
 namespace {
 
-const std::vector<std::string> kSetFields = {"title", "source", "conventions", "tolerance", "problems",
-                                             "description", "grading", "variants"};
+const std::vector<std::string> kSetFields = {"title",       "lang",      "source",
+                                             "conventions", "tolerance", "problems",
+                                             "description", "grading",   "variants"};
 const std::vector<std::string> kProblemFields = {"id",     "kind",        "text",
                                                  "given",  "ask",         "points",
                                                  "vary",   "conventions", "tolerance",
@@ -70,7 +72,11 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   if (!spec.info)
     fail_at(p["kind"], file, spec.field + ".kind",
             "unknown kind '" + spec.kind + "'" + did_you_mean(spec.kind, builtin_kinds().names()));
-  if (p["text"].IsDefined()) spec.text = read_string(p["text"], file, spec.field + ".text");
+  spec.text.lang = set.lang;
+  if (p["text"].IsDefined()) {
+    spec.text = read_local_text(p["text"], file, spec.field + ".text", set.lang);
+    spec.text_node = p["text"];
+  }
   spec.conventions = read_conventions(p["conventions"], file, spec.field + ".conventions",
                                       set.conventions);
   // Kinds that do not yet follow a left-handed course under OpenGL's or Processing's matrices
@@ -161,6 +167,7 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   }
   spec.given_node = p["given"];
   GivenReader reader(p["given"], file, spec.field + ".given", spec.info->given_fields);
+  reader.set_text_lang(set.lang);
   spec.given = spec.info->parse(reader, spec.conventions);
   reader.finish();
 }
@@ -314,7 +321,17 @@ ProblemSet load_problem_set_from(const YamlDocument& doc, const std::string& nam
     if (!root.IsMap())
       fail_at(root, name, "", "expected a problem set: a mapping with a 'problems' list");
     check_keys(root, kSetFields, name, "");
-    if (root["title"].IsDefined()) set.title = read_string(root["title"], name, "title");
+    if (root["lang"].IsDefined()) {
+      const std::string v = read_string(root["lang"], name, "lang");
+      const std::optional<Lang> lang = parse_lang(v);
+      if (!lang)
+        fail_at(root["lang"], name, "lang",
+                "'" + v + "' is not one of en, ja, ru" + did_you_mean(v, {"en", "ja", "ru"}));
+      set.lang = *lang;
+    }
+    set.title.lang = set.lang;
+    if (root["title"].IsDefined())
+      set.title = read_local_text(root["title"], name, "title", set.lang);
     if (root["source"].IsDefined()) set.source = read_string(root["source"], name, "source");
     if (root["variants"].IsDefined()) {
       const std::string v = read_string(root["variants"], name, "variants");

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/derivation/local_text.hpp"
 #include "solver/kinds/kind.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -58,7 +59,8 @@ struct Grading {
 struct ProblemSpec {
   std::string id;
   std::string kind;
-  std::string text;
+  LocalText text;        // `text:`, in every language the set gives it
+  YAML::Node text_node;  // where it is written (placeholders' errors point there)
   Conventions conventions;
   Tolerance tolerance;
   std::map<std::string, Tolerance> answer_tolerance;  // tolerance: {answers: {z: {...}}}
@@ -94,7 +96,8 @@ struct VariantInfo {
 
 struct ProblemSet {
   std::string file;
-  std::string title;
+  Lang lang = Lang::En;  // `lang:` the language the set is written in; other texts fall back to it
+  LocalText title;
   std::string source;  // what the set follows (a course's lecture, a textbook), cited in headers
   bool per_student = false;            // variants: per_student
   std::optional<VariantInfo> variant;  // set when this is a generated variant

@@ -1,6 +1,7 @@
 #include "solver/kinds/solve_precision.hpp"
 
 #include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/variants.hpp"
 
 namespace frustum {
 
@@ -28,8 +29,15 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
     }
     return r;
   }
-  ProblemResult r{.id = spec.id, .kind = spec.kind, .text = spec.text, .conventions = spec.conventions,
-                  .ask = spec.ask, .answers = {}, .derivation = {}, .error = {}};
+  ProblemResult r{
+      .id = spec.id,
+      .kind = spec.kind,
+      .text = spec.text.map([&](const std::string& t) { return fill_text(t, spec.given_node); }),
+      .conventions = spec.conventions,
+      .ask = spec.ask,
+      .answers = {},
+      .derivation = {},
+      .error = {}};
   try {
     const NumericResult n = [&] {
       auto solver = spec.info->solve_numeric(spec.given, precision);

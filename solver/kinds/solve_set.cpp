@@ -1,10 +1,11 @@
 #include "solver/kinds/solve_set.hpp"
 
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/variants.hpp"
-
 #include <cmath>
 #include <utility>
+
+#include "solver/kinds/given_reader.hpp"
+#include "solver/kinds/text_reader.hpp"
+#include "solver/kinds/variants.hpp"
 
 namespace frustum {
 
@@ -12,7 +13,7 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
   ProblemResult r;
   r.id = spec.id;
   r.kind = spec.kind;
-  r.text = fill_text(spec.text, spec.given_node);
+  r.text = spec.text.map([&](const std::string& t) { return fill_text(t, spec.given_node); });
   r.conventions = spec.conventions;
   r.ask = spec.ask;
   if (spec.error) {
@@ -20,10 +21,16 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
     return r;
   }
   // What students read is checked before they read it: every placeholder names a value.
-  if (const auto bad = placeholder_error(spec.text, spec.given_node)) {
-    r.error = Diagnostic{spec.where, spec.field + ".text", *bad};
-    return r;
-  }
+  // In every language the set gives, each checked where it is written.
+  for (const auto& [lang, text] : spec.text.all())
+    if (const auto bad = placeholder_error(text, spec.given_node)) {
+      const bool mapping = spec.text_node.IsMap();
+      const YAML::Node at = local_text_node(spec.text_node, lang, spec.text.lang);
+      r.error = Diagnostic{
+          mapping ? location_of(at, file) : spec.where,
+          spec.field + ".text" + (mapping ? "." + std::string(to_string(lang)) : ""), *bad};
+      return r;
+    }
   try {
     // The conventions line only where a convention can change the answers.
     if (const std::string c = describe(spec.conventions, spec.info->uses); with_steps && !c.empty())

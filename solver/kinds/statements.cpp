@@ -8,6 +8,7 @@
 
 #include "solver/kinds/given_reader.hpp"
 #include "solver/kinds/registry.hpp"
+#include "solver/kinds/text_reader.hpp"
 #include "solver/util/words.hpp"
 
 namespace frustum {
@@ -49,9 +50,9 @@ struct Statements {
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr bool kFixed = true;
   struct Statement {
-    std::string text;
+    LocalText text;  // in every language the set gives (text_reader.hpp)
     bool truth = false;
-    std::string reason;  // may be empty
+    LocalText reason;  // may be empty
   };
   struct Given {
     std::vector<Statement> statements;
@@ -61,19 +62,28 @@ struct Statements {
     return {{"true_statements", AnswerKind::Statements, {}, {}}};
   }
 
-  // A text field of one statement: one line, bounded.
-  static std::string text(GivenReader& item, const char* key, bool required) {
+  // A text field of one statement, in each language the set gives: one line, bounded.
+  static LocalText text(GivenReader& item, const char* key, bool required) {
     const YAML::Node n = item.node()[key];
     if (!n.IsDefined() || n.IsNull()) {
       if (required) item.fail(key, "missing required field");
-      return "";
+      return LocalText{item.text_lang(), "", {}};
     }
-    if (!n.IsScalar()) item.fail(key, "expected text");
-    if (n.Scalar().size() > kMaxStatementBytes)
-      item.fail(key, "longer than " + std::to_string(kMaxStatementBytes) + " bytes");
-    const std::string s = one_line(n.Scalar());
-    if (s.empty() && required) item.fail(key, "is empty");
-    return s;
+    LocalText t;
+    try {
+      t = read_local_text(n, item.file(), "", item.text_lang(), kMaxStatementBytes);
+    } catch (const InputError& e) {
+      // Where read_local_text found it, named by this statement's path (".ja" of a mapping).
+      Diagnostic d = e.diagnostic();
+      d.field = item.locate(key + d.field, "").field;
+      throw InputError(d);
+    }
+    t = t.map(one_line);
+    for (const auto& [lang, s] : t.all())
+      if (s.empty() && required)
+        item.fail(n.IsMap() ? std::string(key) + "." + std::string(to_string(lang)) : key,
+                  "is empty");
+    return t;
   }
 
   static Given parse(GivenReader& r, const Conventions&) {
@@ -116,9 +126,16 @@ struct Statements {
       key += sep + math(number + (s.truth ? " ○" : " ×"),
                         number + (s.truth ? "\\,\\bigcirc" : "\\,\\times"));
       if (s.truth) chosen += (chosen.empty() ? MathText{} : math(", ", ",\\; ")) + math(number);
-      if (steps)
-        steps->add("Statement " + number + ": " + s.text, {}, {}, mark(s.truth)).note =
-            s.reason.empty() ? "" : "Reason: " + s.reason;
+      if (steps) {
+        // The statement and its reason quoted in each language the set gives them in.
+        Step& step = steps->add("Statement " + number + ": " + s.text.text, {}, {}, mark(s.truth));
+        for (const auto& [lang, t] : s.text.translations)
+          step.titles[lang] = "Statement " + number + ": " + t;
+        if (!s.reason.empty()) {
+          step.note = "Reason: " + s.reason.text;
+          for (const auto& [lang, t] : s.reason.translations) step.notes[lang] = "Reason: " + t;
+        }
+      }
     }
     Value v = Value::word_map(std::move(entries));
     v.display = key;

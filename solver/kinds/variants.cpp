@@ -63,7 +63,7 @@ bool set_varies(const ProblemSet& set) {
 }
 
 std::string set_key(const ProblemSet& set) {
-  if (!set.title.empty()) return set.title;
+  if (!set.title.empty()) return set.title.text;
   return std::filesystem::path(set.file).stem().string();
 }
 
@@ -488,6 +488,14 @@ std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant,
             out += "      " + emit_flow(g->first) + ": " + emit_flow(g->second) + "\n";
         } else if (name == "text" && f->second.IsScalar()) {
           out += "text: " + emit_scalar(fill_text(f->second.Scalar(), given), true) + "\n";
+        } else if (name == "text" && f->second.IsMap()) {
+          // Every language the set gives, each with the drawn values.
+          out += "text:\n";
+          for (auto l = f->second.begin(); l != f->second.end(); ++l)
+            out += "      " + emit_flow(l->first) + ": " +
+                   emit_scalar(l->second.IsScalar() ? fill_text(l->second.Scalar(), given) : "",
+                               true) +
+                   "\n";
         } else {
           out += emit_scalar(name) + ": " + emit_flow(f->second) + "\n";
         }

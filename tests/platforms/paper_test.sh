@@ -79,8 +79,8 @@ check "the key of every other kind compiles with pdflatex" test -s "$work/latin/
 check "no character of any key or sheet lacks a LaTeX form" \
   test "$(cat "$work"/all/*.tex "$work"/latin/*.tex | grep -c 'unknownchar{[0-9A-F]')" = 0
 
-"$frustum" generate "$src/problems/seeds/001_zbuffer_plane_method.yaml" --seed 1 -o "$work/ja" --format latex >/dev/null 2>&1
-check "a Japanese set chooses LuaLaTeX with luatexja" grep -q 'usepackage{luatexja}' "$work/ja/001_zbuffer_plane_method-exams.tex"
+"$frustum" generate "$src/problems/seeds/001_zbuffer_plane_method.yaml" --seed 1 --lang ja -o "$work/ja" --format latex >/dev/null 2>&1
+check "a Japanese exam chooses LuaLaTeX with luatexja" grep -q 'usepackage{luatexja}' "$work/ja/001_zbuffer_plane_method-exams.tex"
 
 echo "$failures failed"
 [ "$failures" -eq 0 ]
