@@ -3,8 +3,8 @@
 // studies. Writes DIR/accuracy_results.md and DIR/accuracy_plot.svg and prints the table.
 #include "app/commands.hpp"
 
-#include "bench/accuracy.hpp"
-#include "bench/hard_cases.hpp"
+#include "solver/accuracy/accuracy.hpp"
+#include "solver/accuracy/hard_cases.hpp"
 
 #include <algorithm>
 #include <filesystem>

@@ -2,9 +2,9 @@
 
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/solve_precision.hpp"
-#include "solver/kinds/solve_set.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/solve_precision.hpp"
+#include "solver/problem/solve_set.hpp"
 
 #include <algorithm>
 #include <filesystem>

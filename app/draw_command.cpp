@@ -1,9 +1,9 @@
 // `frustum draw SET.yaml --id ID [-o FILE.svg] [--raster N]`: the picture of one problem.
 #include "app/commands.hpp"
 
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/solve_set.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/solve_set.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/pictures.hpp"
 

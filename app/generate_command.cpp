@@ -13,10 +13,10 @@
 #include "app/variant_files.hpp"
 #include "grader/atomic_file.hpp"
 #include "grader/paper.hpp"
-#include "solver/kinds/rng.hpp"
-#include "solver/kinds/solve_set.hpp"
-#include "solver/kinds/variants.hpp"
-#include "solver/kinds/yaml_document.hpp"
+#include "solver/problem/rng.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/problem/variants.hpp"
+#include "solver/input/yaml_document.hpp"
 
 namespace frustum::app {
 

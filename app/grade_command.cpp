@@ -9,8 +9,8 @@
 #include "grader/gradescope.hpp"
 #include "grader/prairielearn.hpp"
 #include "grader/report.hpp"
-#include "solver/kinds/variants.hpp"
-#include "solver/kinds/yaml_emit.hpp"
+#include "solver/problem/variants.hpp"
+#include "solver/input/yaml_emit.hpp"
 #include "solver/util/diagnostic.hpp"
 
 #include <fmt/format.h>

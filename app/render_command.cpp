@@ -3,12 +3,12 @@
 // FILE is a scene file (top-level `scene:` and optional `conventions:`) or a problem set, whose
 // render problem is the one named by --id (default: the first of kind render).
 #include "app/commands.hpp"
-#include "solver/kinds/scene_reader.hpp"
+#include "solver/steps/scene_reader.hpp"
 
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/problem_set.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/problem_set.hpp"
 #include "solver/kinds/render.hpp"
-#include "solver/kinds/yaml_document.hpp"
+#include "solver/input/yaml_document.hpp"
 #include "solver/raster/fill.hpp"
 #include "solver/raster/scanline.hpp"
 

@@ -4,11 +4,11 @@
 //                        conditioning — what `frustum generate` does per problem
 //   GenerateDouble/KIND  generate, parse, then the numeric double path (solve --precision double)
 // Registered at start-up, one benchmark per kind of the registry.
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/solve_precision.hpp"
-#include "solver/kinds/variants.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/solve_precision.hpp"
+#include "solver/problem/variants.hpp"
 
 #include <benchmark/benchmark.h>
 

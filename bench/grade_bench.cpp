@@ -1,7 +1,7 @@
 // Grading throughput (issue 7): answers graded per second for numeric answers, single thread,
 // and a class of 1,000 students × 20 problems graded in process (the set solved once).
 #include "grader/grade.hpp"
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/problem_set.hpp"
 
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>

@@ -1,6 +1,6 @@
 // libFuzzer target: the answer-expression parser on arbitrary bytes, as a number and as a
 // plane equation in x, y, z; a parsed value is also evaluated to a double.
-#include "solver/util/exact.hpp"
+#include "solver/core/exact.hpp"
 #include "solver/util/expression.hpp"
 
 #include <cstddef>

@@ -1,8 +1,8 @@
 // libFuzzer target: a problem set from arbitrary bytes is loaded, solved with derivations and
 // rendered in every format. The library promises never to throw, crash or hang on any input.
 #include "solver/derivation/render.hpp"
-#include "solver/kinds/problem_set.hpp"
-#include "solver/kinds/solve_set.hpp"
+#include "solver/problem/problem_set.hpp"
+#include "solver/problem/solve_set.hpp"
 
 #include <cstddef>
 #include <cstdint>

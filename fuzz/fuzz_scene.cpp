@@ -2,10 +2,10 @@
 // nested children with `repeat`) is read with the scene reader. It either fails with a
 // located message or gives a scene within the limits: the triangle count, repeats included,
 // at most kMaxSceneTriangles, and at most kMaxScenePixels pixels.
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/problem_set.hpp"
-#include "solver/kinds/scene_reader.hpp"
-#include "solver/kinds/yaml_document.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/problem_set.hpp"
+#include "solver/steps/scene_reader.hpp"
+#include "solver/input/yaml_document.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -5,7 +5,7 @@
 #include "solver/derivation/i18n.hpp"
 
 #include "solver/util/expression.hpp"
-#include "solver/util/work_budget.hpp"
+#include "solver/core/work_budget.hpp"
 #include "solver/util/words.hpp"
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "solver/derivation/value.hpp"
-#include "solver/kinds/kind.hpp"
+#include "solver/problem/kind.hpp"
 
 #include <yaml-cpp/yaml.h>
 

@@ -23,7 +23,7 @@
 #include "grader/isolate.hpp"
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/kinds/yaml_document.hpp"
+#include "solver/input/yaml_document.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/util/expression.hpp"

@@ -12,8 +12,8 @@
 #include "grader/tolerance.hpp"
 #include "grader/trivial.hpp"
 #include "solver/derivation/value.hpp"
-#include "solver/kinds/kind.hpp"
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/kind.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 

@@ -8,9 +8,9 @@
 
 #include "grader/quiz_items.hpp"
 #include "grader/xml_text.hpp"
-#include "solver/kinds/solve_set.hpp"
-#include "solver/kinds/variants.hpp"
-#include "solver/kinds/yaml_emit.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/problem/variants.hpp"
+#include "solver/input/yaml_emit.hpp"
 
 namespace frustum {
 

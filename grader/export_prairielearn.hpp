@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "solver/derivation/value.hpp"
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 

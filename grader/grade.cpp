@@ -1,9 +1,9 @@
 #include "grader/grade.hpp"
 
 #include "grader/answer_parser.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/solve_set.hpp"
-#include "solver/kinds/yaml_document.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/input/yaml_document.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/util/suggest.hpp"
 

@@ -6,7 +6,7 @@
 #include "grader/compare.hpp"
 #include "grader/trivial.hpp"
 #include "solver/derivation/problem_result.hpp"
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/problem_set.hpp"
 
 #include <yaml-cpp/yaml.h>
 

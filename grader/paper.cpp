@@ -8,7 +8,7 @@
 #include "grader/latex_text.hpp"
 #include "grader/paper_figures.hpp"
 #include "grader/quiz_items.hpp"
-#include "solver/kinds/solve_set.hpp"
+#include "solver/problem/solve_set.hpp"
 
 namespace frustum {
 

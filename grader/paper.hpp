@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "grader/latex_text.hpp"
-#include "solver/util/exact.hpp"
+#include "solver/core/exact.hpp"
 #include "solver/util/expression.hpp"
 
 namespace frustum {

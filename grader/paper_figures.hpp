@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "grader/export_tolerance.hpp"
-#include "solver/kinds/solve_set.hpp"
-#include "solver/kinds/text_reader.hpp"
-#include "solver/kinds/variants.hpp"
-#include "solver/kinds/yaml_emit.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/input/text_reader.hpp"
+#include "solver/problem/variants.hpp"
+#include "solver/input/yaml_emit.hpp"
 
 namespace frustum {
 

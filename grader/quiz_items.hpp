@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/kinds/kind.hpp"
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/kind.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 

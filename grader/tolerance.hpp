@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "solver/derivation/value.hpp"
-#include "solver/kinds/kind.hpp"
-#include "solver/kinds/problem_set.hpp"
+#include "solver/problem/kind.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "solver/derivation/value.hpp"
-#include "solver/kinds/kind.hpp"
+#include "solver/problem/kind.hpp"
 
 namespace frustum {
 

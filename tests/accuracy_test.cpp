@@ -1,10 +1,10 @@
 // The numeric paths against the exact backend (generated well-conditioned problems), and the
 // hard-case suite problems/hard: exact answers, robust numeric answers, the studies' findings.
-#include "bench/accuracy.hpp"
-#include "bench/hard_cases.hpp"
+#include "solver/accuracy/accuracy.hpp"
+#include "solver/accuracy/hard_cases.hpp"
 #include "grader/grade.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/solve_precision.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/solve_precision.hpp"
 #include "solver/numeric/condition.hpp"
 #include "test_util.hpp"
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "grader/answer_parser.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/registry.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -17,7 +17,7 @@
 #include "grader/grade.hpp"
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/kinds/solve_set.hpp"
+#include "solver/problem/solve_set.hpp"
 #include "test_util.hpp"
 
 #include <algorithm>

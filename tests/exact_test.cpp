@@ -1,4 +1,4 @@
-#include "solver/util/exact.hpp"
+#include "solver/core/exact.hpp"
 
 #include <gtest/gtest.h>
 

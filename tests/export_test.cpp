@@ -9,7 +9,7 @@
 #include "grader/export_qti.hpp"
 #include "grader/grade.hpp"
 #include "grader/quiz_items.hpp"
-#include "solver/kinds/variants.hpp"
+#include "solver/problem/variants.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

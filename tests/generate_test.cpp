@@ -4,10 +4,10 @@
 // malformed answers (unparseable, never a crash). FRUSTUM_SELFTEST_COUNT=N runs N per kind.
 #include "grader/compare.hpp"
 #include "grader/grade.hpp"
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/variants.hpp"
-#include "solver/kinds/yaml_emit.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/variants.hpp"
+#include "solver/input/yaml_emit.hpp"
 #include "test_util.hpp"
 
 #include <nlohmann/json.hpp>

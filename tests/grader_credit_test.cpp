@@ -2,7 +2,7 @@
 // forward (with its guard against trivial earlier answers), named misconceptions, and the
 // answer-kind equivalences.
 #include "grader/report.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/registry.hpp"
 #include "test_util.hpp"
 
 #include <fmt/format.h>

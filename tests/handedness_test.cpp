@@ -13,8 +13,8 @@
 #include "grader/grade.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/kinds/problem_set.hpp"
-#include "solver/kinds/solve_set.hpp"
+#include "solver/problem/problem_set.hpp"
+#include "solver/problem/solve_set.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -1,6 +1,6 @@
 // Each kind beyond the seeds: properties over generated cases, exact inputs, domain errors.
 #include "solver/geometry/predicates.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/registry.hpp"
 #include "test_util.hpp"
 
 #include <fmt/format.h>

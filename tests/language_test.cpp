@@ -13,7 +13,7 @@
 #include "grader/report.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/kinds/solve_set.hpp"
+#include "solver/problem/solve_set.hpp"
 #include "student_text.hpp"
 
 namespace frustum {

@@ -1,6 +1,6 @@
 // Loading problem sets: every kind of mistake gets one clear message naming the file, line,
 // column and field, and one broken problem never stops the rest of the set.
-#include "solver/kinds/solve_set.hpp"
+#include "solver/problem/solve_set.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

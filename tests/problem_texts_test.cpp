@@ -8,7 +8,7 @@
 #include "grader/paper.hpp"
 #include "grader/quiz_items.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/kinds/variants.hpp"
+#include "solver/problem/variants.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -3,9 +3,9 @@
 // meshes, and the paper-plane seed.
 #include "test_util.hpp"
 
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/kinds/render.hpp"
-#include "solver/kinds/solve_set.hpp"
+#include "solver/problem/solve_set.hpp"
 #include "solver/raster/certified_trace.hpp"
 #include "solver/raster/fill.hpp"
 #include "solver/raster/scanline.hpp"

@@ -16,10 +16,10 @@
 #include "grader/statement_choice.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/variants.hpp"
-#include "solver/kinds/yaml_document.hpp"
-#include "solver/kinds/yaml_emit.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/variants.hpp"
+#include "solver/input/yaml_document.hpp"
+#include "solver/input/yaml_emit.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

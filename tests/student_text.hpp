@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "grader/grade.hpp"
-#include "solver/kinds/solve_precision.hpp"
+#include "solver/problem/solve_precision.hpp"
 #include "typeset_corpus.hpp"
 
 namespace frustum::test {

@@ -2,9 +2,9 @@
 #pragma once
 
 #include "solver/derivation/problem_result.hpp"
-#include "solver/kinds/problem_set.hpp"
-#include "solver/kinds/solve_set.hpp"
-#include "solver/util/exact.hpp"
+#include "solver/problem/problem_set.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/core/exact.hpp"
 #include "solver/util/exact_format.hpp"
 
 #include <gtest/gtest.h>

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <vector>
 
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/variants.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/variants.hpp"
 #include "test_util.hpp"
 
 namespace frustum::test {

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "grader/grade.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/registry.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -1,8 +1,8 @@
 // The viewing pipeline: transforms, look_at, projections and the viewport, in the three
 // conventions. Seeds' worked answers, exact identities over generated cases, cross-checks
 // between the kinds and the templates, and the domain errors.
-#include "solver/kinds/solve_precision.hpp"
-#include "solver/kinds/viewing_steps.hpp"
+#include "solver/problem/solve_precision.hpp"
+#include "solver/steps/viewing_steps.hpp"
 #include "solver/viewing/projection.hpp"
 #include "solver/viewing/transforms.hpp"
 #include "test_util.hpp"

@@ -1,6 +1,6 @@
 // The work budget of exact arithmetic: canonical() on hostile values stops within its budget
 // and stays exact and equal; budgets belong to one call, never to the process.
-#include "solver/util/work_budget.hpp"
+#include "solver/core/work_budget.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/util/exact.hpp"
+#include "solver/core/exact.hpp"
 #include "solver/util/expression.hpp"
 #include "test_util.hpp"
 

@@ -1,7 +1,7 @@
 // parse_yaml reads a document in one pass: the strict checks (duplicate keys, the node bound
 // with aliases expanded, one document) run on the parser's events while the nodes are built.
 // The tree must be the one YAML::Load builds, marks included (every located message uses them).
-#include "solver/kinds/yaml_document.hpp"
+#include "solver/input/yaml_document.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>

@@ -1,6 +1,6 @@
 // The YAML Frustum writes (generated sets, answer keys) reads the same in every YAML reader:
 // yaml-cpp, YAML 1.1 readers such as PyYAML, and YAML 1.2 readers.
-#include "solver/kinds/yaml_emit.hpp"
+#include "solver/input/yaml_emit.hpp"
 
 #include <unistd.h>
 #include <yaml-cpp/yaml.h>

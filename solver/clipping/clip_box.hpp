@@ -1,18 +1,15 @@
 // The axis-aligned region that clipping keeps: a 2D window {xmin, xmax, ymin, ymax} or a 3D
-// box {xmin, …, zmax} (the NDC cube [−1, 1]³ by default), and the two scalar operations the
-// clippers need beyond + − × ÷, so double and Exact share one implementation.
+// box {xmin, …, zmax} (the NDC cube [−1, 1]³ by default), and `tidy`, which keeps exact
+// intermediate values small, so double and Exact share one implementation.
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
+#include "solver/core/scalar.hpp"
 #include "solver/viewing/conventions.hpp"
 
 #include <string>
 
 namespace frustum {
-
-// Sign (−1, 0, +1): exact for Exact values (never an epsilon), plain comparison for doubles.
-inline int scalar_sign(double v) { return (v > 0) - (v < 0); }
-inline int scalar_sign(const Exact& v) { return exact_sign(v); }
 
 // Keeps exact intermediate values small (canonical form); the identity for doubles.
 inline double tidy(double v) { return v; }

@@ -2,7 +2,7 @@
 // terminal and JSON ("√3/3", "x + y − z = −6") and LaTeX for Markdown ("\frac{\sqrt{3}}{3}").
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 
 #include <string>
 #include <string_view>

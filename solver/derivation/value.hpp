@@ -3,7 +3,7 @@
 #pragma once
 
 #include "solver/derivation/math_text.hpp"
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 
 #include <optional>
 #include <string>

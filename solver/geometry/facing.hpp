@@ -7,7 +7,7 @@
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/geometry/zero_vector.hpp"
-#include "solver/numeric/scalar.hpp"
+#include "solver/core/scalar.hpp"
 
 #include <limits>
 

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "solver/geometry/predicates.hpp"
-#include "solver/numeric/scalar.hpp"
+#include "solver/core/scalar.hpp"
 
 #include <array>
 

@@ -4,7 +4,7 @@
 // area-weighted normal) and the analysis below warns about the hard cases.
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 
 #include <cstddef>
 #include <string>

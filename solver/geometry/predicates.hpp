@@ -9,7 +9,7 @@
 #pragma once
 
 #include "solver/numeric/ranged.hpp"
-#include "solver/numeric/scalar.hpp"
+#include "solver/core/scalar.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "solver/geometry/predicates.hpp"
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 
 namespace frustum {
 

@@ -2,11 +2,11 @@
 // p0 = (1,0,0), p1 = (1,1,1), p2 = (0,1,2), eye = (0,1,0) → n = (1, −1, 1), v = (−1, 1, 0),
 // D_f = −2: back. The sign is decided exactly, never against a float epsilon.
 #include "solver/geometry/predicates.hpp"
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/kind_steps.hpp"
-#include "solver/kinds/numeric_paths.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/steps/numeric_paths.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
 

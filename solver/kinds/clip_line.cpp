@@ -4,9 +4,9 @@
 // (y < ymin), 0010 right (x > xmax), 0001 left (x < xmin); 3D adds 100000 (z > zmax) and
 // 010000 (z < zmin) in front. A point on a boundary is inside.
 #include "solver/clipping/line_clip.hpp"
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/clip_given.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/clip_given.hpp"
+#include "solver/problem/registry.hpp"
 
 namespace frustum {
 

@@ -4,9 +4,9 @@
 // plane is inside. The answer is the vertex list after the last stage, or null when fewer
 // than three vertices are left.
 #include "solver/clipping/polygon_clip.hpp"
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/clip_given.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/clip_given.hpp"
+#include "solver/problem/registry.hpp"
 
 namespace frustum {
 

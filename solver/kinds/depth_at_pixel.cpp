@@ -3,11 +3,11 @@
 // A(0,0,6), B(3,0,9), C(0,3,9) → n = (9, 9, −9), n̂ = (1/√3, 1/√3, −1/√3), x + y − z = −6,
 // and the pixel (1, 1) has z = 8.
 #include "solver/geometry/predicates.hpp"
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/kind_steps.hpp"
-#include "solver/kinds/numeric_paths.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/steps/numeric_paths.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/util/diagnostic.hpp"

@@ -1,9 +1,9 @@
 // seeds 001, 003: the depth-sort (painter's) algorithm — centroids, depths, the back-to-front
 // order — and the pairs where it fails: cyclic overlap (三すくみ), interpenetration (貫通) and
 // concave polygons, decided exactly from the geometry over each pair's overlap on screen.
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/depth_order.hpp"
 #include "solver/visibility/drawable.hpp"

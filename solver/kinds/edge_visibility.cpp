@@ -3,12 +3,12 @@
 // or hidden (back–back). Back-face culling alone removes every hidden surface only for a
 // single closed convex polyhedron (the seed's (a)–(d) question).
 #include "solver/geometry/polygon_normal.hpp"
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/kind_steps.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/scene_reader.hpp"
-#include "solver/kinds/viewing_steps.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/scene_reader.hpp"
+#include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/viewing/transforms.hpp"
 #include "solver/visibility/drawable.hpp"

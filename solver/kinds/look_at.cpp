@@ -1,11 +1,11 @@
 // The view matrix of gluLookAt / Processing's camera() (seed 000: camera(eye, center, up)),
 // or DirectX's LookAtLH: rows are the camera's axes, the last column moves the eye to the
 // origin.
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/kind_steps.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/viewing_steps.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

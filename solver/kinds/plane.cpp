@@ -1,10 +1,10 @@
 // The plane through three or more points, or through a point with a normal (seed 001:
 // n·(r − r₀) = 0 → ax + by + cz = d; the distance from the origin is |d| / ‖n‖).
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/kind_steps.hpp"
-#include "solver/kinds/numeric_paths.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/steps/numeric_paths.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

@@ -1,8 +1,8 @@
 // The matrix of perspective(), frustum() or ortho() in the set's conventions (seeds 000, 004).
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/viewing_steps.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/viewing_steps.hpp"
 
 namespace frustum {
 

@@ -3,10 +3,10 @@
 // (Processing's default camera z); a point P in view coordinates projects to
 // P′ = P · (s / z_P) on it. Window 200×200, fov 60°: s = −100√3, and P(0, 100, −300) ↦
 // P′ = (0, 100√3/3, −100√3).
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/viewing_steps.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

@@ -5,9 +5,9 @@
 // covered it, in drawing order, with their depths, and the winner.
 #include "solver/kinds/render.hpp"
 
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/raster/certified_trace.hpp"
 
 #include <fmt/format.h>

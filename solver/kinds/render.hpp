@@ -2,7 +2,7 @@
 // which draws the whole image of the same scene.
 #pragma once
 
-#include "solver/kinds/scene_reader.hpp"
+#include "solver/steps/scene_reader.hpp"
 
 #include <array>
 #include <vector>

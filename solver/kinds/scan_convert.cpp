@@ -2,9 +2,9 @@
 // the top-left fill rule (rasterizer.hpp). Pixel (i, j) has its centre at (i + ½, j + ½),
 // window y up; vertices are snapped to 1/256 pixel and the edge functions evaluated exactly.
 // `pixels` lists [i, j] sorted by j, then i.
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/raster/rasterizer.hpp"
 #include "solver/util/diagnostic.hpp"
 

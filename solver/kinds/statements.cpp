@@ -6,9 +6,9 @@
 #include <array>
 #include <utility>
 
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/text_reader.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/input/text_reader.hpp"
 #include "solver/util/words.hpp"
 
 namespace frustum {

@@ -1,12 +1,12 @@
 // Composite transforms in 2D and 3D homogeneous coordinates (seeds 002, 004): steps applied
 // in the listed order, so the composite of A₁, A₂, A₃ is M = A₃·A₂·A₁ and P′ = M·P.
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/kind_steps.hpp"
-#include "solver/kinds/numeric_paths.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/transform_steps.hpp"
-#include "solver/kinds/viewing_steps.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/steps/numeric_paths.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/transform_steps.hpp"
+#include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
 #include <fmt/format.h>

@@ -2,10 +2,10 @@
 // plane at distance d with half-extents a, b; clipping planes z_min, z_max. First
 // S(d/(a·z_max), d/(b·z_max), 1/z_max) puts the back plane at z = 1 with x, y ∈ [−1, 1]; then
 // P(z̃_min), z̃_min = z_min/z_max, maps z̃_min → 0 and 1 → 1 after the divide by W′ = z.
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/viewing_steps.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

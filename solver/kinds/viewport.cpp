@@ -1,9 +1,9 @@
 // The viewport transform: NDC to window coordinates and depth in [0, 1] (seed 000 9.6).
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/numeric_paths.hpp"
-#include "solver/kinds/registry.hpp"
-#include "solver/kinds/viewing_steps.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/numeric_paths.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/viewing_steps.hpp"
 
 namespace frustum {
 

@@ -5,9 +5,9 @@
 // into a fan of triangles from their first vertex; coverage follows the top-left rule with
 // pixel centres at (i + ½, j + ½), y up. Grids are reported top row (j = h − 1) first, as
 // drawn on paper; +∞ is written 1e30 in numbers and "inf" in the derivation.
-#include "solver/kinds/generate.hpp"
-#include "solver/kinds/given_reader.hpp"
-#include "solver/kinds/registry.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/raster/zbuffer.hpp"
 #include "solver/util/diagnostic.hpp"
 

@@ -3,7 +3,7 @@
 // unit roundoff, and converts exact values to and from them.
 #pragma once
 
-#include "solver/util/exact.hpp"
+#include "solver/core/exact.hpp"
 
 #include <optional>
 #include <string>

@@ -7,7 +7,7 @@
 // |value| > radius (predicates.hpp), else decided exactly.
 #pragma once
 
-#include "solver/numeric/scalar.hpp"
+#include "solver/core/scalar.hpp"
 
 #include <cmath>
 #include <limits>

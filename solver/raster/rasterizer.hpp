@@ -20,7 +20,7 @@
 //   vertex k). λₖ are exact ratios of integers.
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 
 #include <array>
 #include <cstdint>

@@ -4,7 +4,7 @@
 // from YAML only in solver/kinds/scene_reader.*.
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 #include "solver/viewing/conventions.hpp"
 
 #include <array>
@@ -14,10 +14,6 @@
 #include <vector>
 
 namespace frustum {
-
-using Mat4d = Eigen::Matrix4d;
-using Vec3d = Eigen::Vector3d;
-using Vec4d = Eigen::Vector4d;
 
 struct Rgb {
   std::uint8_t r = 0, g = 0, b = 0;

@@ -1,7 +1,7 @@
 // Printing exact values the way they are written on paper, in three styles.
 #pragma once
 
-#include "solver/util/exact.hpp"
+#include "solver/core/exact.hpp"
 
 #include <string>
 

@@ -13,7 +13,7 @@
 // are errors), so "1 000" cannot silently become 0.
 #include "solver/util/expression.hpp"
 
-#include "solver/util/work_budget.hpp"
+#include "solver/core/work_budget.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -2,23 +2,11 @@
 // composite of steps A₁, A₂, A₃ (first applied first) is A₃·A₂·A₁ (seed 002).
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 
 #include <cmath>
 
 namespace frustum {
-
-inline double scalar_cos(double v) { return std::cos(v); }
-inline double scalar_sin(double v) { return std::sin(v); }
-inline float scalar_cos(float v) { return std::cos(v); }
-inline float scalar_sin(float v) { return std::sin(v); }
-inline long double scalar_cos(long double v) { return std::cos(v); }
-inline long double scalar_sin(long double v) { return std::sin(v); }
-inline Exact scalar_cos(const Exact& v) { return GiNaC::cos(v); }
-inline Exact scalar_sin(const Exact& v) { return GiNaC::sin(v); }
-
-template <typename T>
-using MatX = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
 
 // T(t): translation by t (2 or 3 components) in homogeneous coordinates.
 template <typename T>

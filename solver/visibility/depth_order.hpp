@@ -6,7 +6,7 @@
 // exists), or the pair lies on a cycle of "must be drawn before" (三すくみ).
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 
 #include <optional>
 #include <string>

@@ -3,7 +3,7 @@
 // closed and consistently oriented, and whether it is convex, all decided exactly.
 #pragma once
 
-#include "solver/geometry/vec.hpp"
+#include "solver/core/matrix.hpp"
 
 #include <optional>
 #include <string>

@@ -1,0 +1,334 @@
+#include "solver/accuracy/accuracy.hpp"
+
+#include "solver/derivation/svg.hpp"
+#include "solver/problem/rng.hpp"
+#include "solver/numeric/condition.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+
+namespace frustum::bench {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A generated problem is redrawn until its condition estimate is below this.
+constexpr double kWellConditioned = 50;
+constexpr int kMaxDraws = 1000;
+// In the plot, errors of 0 (the exact backend) sit on a floor row below every measured error.
+constexpr double kFloor = 1e-22;
+
+// A decimal in [lo, hi] with two decimals, written exactly ("-3.25"): most are not binary
+// fractions, so rounding the inputs is part of what is measured.
+std::string decimal(Rng& rng, int lo, int hi) {
+  const std::int64_t k = rng.integer(lo * 100, hi * 100);
+  return fmt::format("{}{}.{:02d}", k < 0 ? "-" : "", std::abs(k) / 100, std::abs(k) % 100);
+}
+double value(const std::string& s) { return std::stod(s); }
+
+struct Point3 {
+  std::string x, y, z;
+  Eigen::Vector3d d() const { return {value(x), value(y), value(z)}; }
+  std::string yaml() const { return "[" + x + ", " + y + ", " + z + "]"; }
+};
+Point3 point(Rng& rng, int lo, int hi) { return {decimal(rng, lo, hi), decimal(rng, lo, hi), decimal(rng, lo, hi)}; }
+
+std::string triangle_yaml(const std::array<Point3, 3>& t) {
+  return "[" + t[0].yaml() + ", " + t[1].yaml() + ", " + t[2].yaml() + "]";
+}
+
+// One `given` mapping of a well-conditioned problem of the kind.
+std::string draw_given(const std::string& kind, Rng& rng) {
+  for (int attempt = 0; attempt < kMaxDraws; ++attempt) {
+    if (kind == "vectors") {
+      const Point3 a = point(rng, -9, 9), b = point(rng, -9, 9);
+      const Eigen::Vector3d x = a.d(), y = b.d();
+      const double s = x.cross(y).norm() / (x.norm() * y.norm()), c = x.dot(y) / (x.norm() * y.norm());
+      if (x.norm() > 1 && y.norm() > 1 && s > 0.2 && std::abs(c) > 0.1)
+        return "{a: " + a.yaml() + ", b: " + b.yaml() + "}";
+    } else if (kind == "normal" || kind == "plane" || kind == "backface") {
+      const std::array<Point3, 3> t = {point(rng, -9, 9), point(rng, -9, 9), point(rng, -9, 9)};
+      const std::vector<Eigen::Vector3d> p = {t[0].d(), t[1].d(), t[2].d()};
+      if (normal_condition(p) > kWellConditioned) continue;
+      if (kind == "normal") return "{points: " + triangle_yaml(t) + "}";
+      const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
+      if (kind == "plane") {
+        if (std::abs(n.normalized().dot(p[0])) > 0.5) return "{points: " + triangle_yaml(t) + "}";
+        continue;
+      }
+      const Point3 eye = point(rng, -20, 20);
+      if (facing_condition(p, eye.d()) < kWellConditioned)
+        return "{points: " + triangle_yaml(t) + ", eye: " + eye.yaml() + "}";
+    } else if (kind == "depth_at_pixel") {
+      std::array<Point3, 3> t;
+      for (Point3& q : t) q = {decimal(rng, 0, 20), decimal(rng, 0, 20), decimal(rng, 1, 20)};
+      const Eigen::Vector2d pixel(static_cast<double>(rng.integer(0, 20)), static_cast<double>(rng.integer(0, 20)));
+      if (depth_condition(t[0].d(), t[1].d(), t[2].d(), pixel).kappa_z < kWellConditioned)
+        return fmt::format("{{triangle: {}, pixel: [{}, {}]}}", triangle_yaml(t), pixel.x(), pixel.y());
+    } else if (kind == "project_point") {
+      const std::string projection = fmt::format(
+          "perspective: {{fovy: {}, aspect: {}, near: {}, far: {}}}, viewport: {{width: 640, height: 480}}",
+          rng.integer(30, 90), rng.chance(1, 2) ? "1" : "\"4/3\"", decimal(rng, 1, 2), rng.integer(50, 200));
+      if (rng.chance(1, 3)) {
+        const Point3 eye = {decimal(rng, -5, 5), decimal(rng, -5, 5), decimal(rng, 10, 20)};
+        return "{point: " + point(rng, -3, 3).yaml() + ", camera: {eye: " + eye.yaml() +
+               ", center: [0, 0, 0], up: [0, 1, 0]}, " + projection + "}";
+      }
+      const Point3 p = {decimal(rng, -5, 5), decimal(rng, -5, 5), decimal(rng, -40, -3)};
+      return "{point: " + p.yaml() + ", " + projection + "}";
+    } else if (kind == "transform") {
+      const Point3 axis = point(rng, -3, 3);
+      if (axis.d().norm() < 0.5) continue;
+      return fmt::format("{{dim: 3, steps: [{{translate: {}}}, {{rotate_z: {}}}, {{scale: [{}, {}, {}]}}, "
+                         "{{rotate: {{axis: {}, angle: {}}}}}], points: [{}, {}]}}",
+                         point(rng, -9, 9).yaml(), rng.integer(5, 85), decimal(rng, 1, 3), decimal(rng, 1, 3),
+                         decimal(rng, 1, 3), axis.yaml(), rng.integer(5, 85), point(rng, -9, 9).yaml(),
+                         point(rng, -9, 9).yaml());
+    } else if (kind == "viewport") {
+      return fmt::format("{{ndc: [{}, {}, {}], width: {}, height: {}}}", decimal(rng, -1, 1), decimal(rng, -1, 1),
+                         decimal(rng, -1, 1), rng.integer(100, 1920), rng.integer(100, 1080));
+    }
+  }
+  return "{}";
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+}  // namespace
+
+std::vector<std::string> generated_kinds() {
+  return {"vectors", "normal", "plane", "depth_at_pixel", "backface", "project_point", "transform", "viewport"};
+}
+
+ProblemSet generated_problems(const std::string& kind, int count, std::uint64_t seed) {
+  Rng rng(seed ^ fnv1a64(kind));
+  std::string yaml = "title: generated " + kind + "\nproblems:\n";
+  for (int i = 0; i < count; ++i)
+    yaml += fmt::format("  - id: g{}\n    kind: {}\n    given: {}\n", i, kind, draw_given(kind, rng));
+  return load_problem_set_from_string(yaml, "generated-" + kind + ".yaml");
+}
+
+CaseError compare(const NumericResult& got, const NumericResult& exact) {
+  CaseError e;
+  for (const auto& [name, value] : exact.answers.items()) {
+    const Value* g = got.answers.find(name);
+    if (!g || g->shape != value.shape) {
+      e.wrong = true;
+      continue;
+    }
+    if (value.shape == Value::Shape::Bool && g->flag != value.flag) e.wrong = true;
+    if (value.shape == Value::Shape::Word && g->word != value.word) e.wrong = true;
+  }
+  for (const auto& [name, ref] : exact.raw) {
+    const std::vector<long double>* x = got.find_raw(name);
+    const Value* want = exact.answers.find(name);
+    if (!x || x->size() != ref.size() || !want || want->exact.size() != ref.size()) {
+      e.error = kInfinity;
+      continue;
+    }
+    // A backend that keeps exact values (the exact one) is measured on them, not on their
+    // long double rounding (which would score it about 1e-20).
+    const Value* g = got.answers.find(name);
+    e.error = std::max(e.error, g && g->exact.size() == want->exact.size() ? exact_relative_error(g->exact, want->exact)
+                                                                           : relative_error(*x, want->exact));
+  }
+  return e;
+}
+
+double exact_relative_error(const std::vector<Exact>& got, const std::vector<Exact>& exact) {
+  bool equal = got.size() == exact.size();
+  for (std::size_t i = 0; equal && i < exact.size(); ++i) equal = canonical(got[i] - exact[i]).is_zero();
+  if (equal) return 0.0;
+  std::vector<long double> near;
+  for (const Exact& x : got) near.push_back(from_exact<long double>(x));
+  return relative_error(near, exact);
+}
+
+double relative_error(const std::vector<long double>& got, const std::vector<Exact>& exact) {
+  // max |xᵢ − eᵢ| / max |eᵢ| in exact arithmetic, against the exact values themselves: a
+  // result that underflowed to 0 where the exact value is 10⁻⁴⁰⁰ is a total loss (error 1),
+  // not a match of two zeros.
+  using GiNaC::numeric;
+  numeric diff = 0, size = 0;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    if (!std::isfinite(got[i])) return kInfinity;
+    const numeric want = rational_near(exact[i]);
+    const numeric have = GiNaC::ex_to<numeric>(exact_of(got[i]));
+    diff = std::max(diff, GiNaC::abs(have - want));
+    size = std::max(size, GiNaC::abs(want));
+  }
+  const numeric err = size.is_zero() ? diff : diff / size;
+  // Beyond a double's range the error is total (or, below it, none to speak of).
+  if (err > numeric(std::numeric_limits<double>::max())) return kInfinity;
+  if (err < numeric(std::numeric_limits<double>::min()))
+    return err.is_zero() ? 0.0 : std::numeric_limits<double>::min();
+  return err.to_double();
+}
+
+std::vector<AccuracyRow> measure(const ProblemSet& set, const std::string& suite, double min_ns) {
+  // Kinds in the order they first appear.
+  std::vector<std::string> kinds;
+  for (const ProblemSpec& p : set.problems)
+    if (!p.error && p.info && p.info->solve_numeric &&
+        std::find(kinds.begin(), kinds.end(), p.kind) == kinds.end())
+      kinds.push_back(p.kind);
+  std::vector<AccuracyRow> rows;
+  for (const std::string& kind : kinds) {
+    std::vector<const ProblemSpec*> specs;
+    std::vector<NumericResult> reference;
+    for (const ProblemSpec& p : set.problems) {
+      if (p.error || p.kind != kind || !p.info || !p.info->solve_numeric) continue;
+      try {
+        auto exact = p.info->solve_numeric(p.given, Precision::Exact);
+        exact->run();
+        reference.push_back(exact->result());
+        specs.push_back(&p);
+      } catch (const std::exception&) {
+        // A problem the exact path cannot solve (a domain error) has no reference.
+      }
+    }
+    if (specs.empty()) continue;
+    for (Precision precision : kAllPrecisions) {
+      std::vector<std::unique_ptr<NumericSolver>> solvers;
+      for (const ProblemSpec* p : specs) solvers.push_back(p->info->solve_numeric(p->given, precision));
+      using Clock = std::chrono::steady_clock;
+      const auto start = Clock::now();
+      long passes = 0;
+      double elapsed = 0;
+      do {
+        for (auto& s : solvers) s->run();
+        ++passes;
+        elapsed = static_cast<double>(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count());
+      } while (elapsed < min_ns);
+      AccuracyRow row{suite, kind, precision, specs.size(), elapsed / (static_cast<double>(passes) * static_cast<double>(specs.size())), 0, 0, 0};
+      std::vector<double> errors;
+      for (std::size_t i = 0; i < solvers.size(); ++i) {
+        const CaseError e = compare(solvers[i]->result(), reference[i]);
+        errors.push_back(e.error);
+        row.wrong += e.wrong ? 1 : 0;
+      }
+      row.median_error = median(errors);
+      row.max_error = *std::max_element(errors.begin(), errors.end());
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+namespace {
+
+std::string sci(double v) {
+  if (v == 0) return "0";
+  if (!std::isfinite(v)) return "∞";
+  return fmt::format("{:.1e}", v);
+}
+
+}  // namespace
+
+std::string markdown_table(const std::vector<AccuracyRow>& rows) {
+  std::string out =
+      "| suite | kind | backend | cases | ns/solve | median rel. error | max rel. error | wrong decisions |\n"
+      "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const AccuracyRow& r : rows)
+    out += fmt::format("| {} | {} | {} | {} | {:.0f} | {} | {} | {} |\n", r.suite, r.kind, to_string(r.precision),
+                       r.cases, r.ns_per_solve, sci(r.median_error), sci(r.max_error), r.wrong);
+  return out;
+}
+
+std::string speed_error_svg(const std::vector<AccuracyRow>& all, const std::string& suite) {
+  std::vector<AccuracyRow> rows;
+  for (const AccuracyRow& r : all)
+    if (r.suite == suite) rows.push_back(r);
+  auto err = [](const AccuracyRow& r) { return std::max(r.median_error, kFloor); };
+  const double width = 760, height = 520, left = 80, right = 200, top = 40, bottom = 60;
+  double x_lo = 1e300, x_hi = 0;
+  for (const AccuracyRow& r : rows) {
+    x_lo = std::min(x_lo, r.ns_per_solve);
+    x_hi = std::max(x_hi, r.ns_per_solve);
+  }
+  const double lx0 = std::floor(std::log10(std::max(x_lo, 1.0))), lx1 = std::ceil(std::log10(std::max(x_hi, 10.0)));
+  const double ly0 = std::log10(kFloor), ly1 = 0;
+  auto px = [&](double ns) {
+    return left + (std::log10(std::max(ns, 1.0)) - lx0) / std::max(lx1 - lx0, 1.0) * (width - left - right);
+  };
+  auto py = [&](double e) {
+    return top + (ly1 - std::log10(std::min(std::max(e, kFloor), 1.0))) / (ly1 - ly0) * (height - top - bottom);
+  };
+  Svg svg(width, height);
+  svg.title("Frustum: speed against error (" + suite + " problems)");
+  svg.style(".axis{stroke:#333;stroke-width:1}.grid{stroke:#ddd;stroke-width:0.5}"
+            "text{font:11px sans-serif;fill:#222}.front{fill:none;stroke-width:1.5}");
+  const char* colors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  for (double e = lx0; e <= lx1; ++e) {
+    svg.line({px(std::pow(10, e)), top}, {px(std::pow(10, e)), height - bottom}, "grid");
+    svg.text({px(std::pow(10, e)) - 10, height - bottom + 16}, fmt::format("1e{:.0f}", e), "");
+  }
+  for (double e = ly0; e <= ly1; e += 2) {
+    svg.line({left, py(std::pow(10, e))}, {width - right, py(std::pow(10, e))}, "grid");
+    svg.text({8, py(std::pow(10, e)) + 4}, e == ly0 ? "exact (0)" : fmt::format("1e{:.0f}", e), "");
+  }
+  svg.line({left, height - bottom}, {width - right, height - bottom}, "axis");
+  svg.line({left, top}, {left, height - bottom}, "axis");
+  svg.text({left + 120, height - 18}, "nanoseconds per solve (numeric path, log scale)", "");
+  svg.text({left, 24}, "median relative error against exact (log scale); filled = Pareto front of its kind", "");
+  std::vector<std::string> kinds;
+  for (const AccuracyRow& r : rows)
+    if (std::find(kinds.begin(), kinds.end(), r.kind) == kinds.end()) kinds.push_back(r.kind);
+  const char* shapes[] = {"float", "double", "long-double", "exact"};
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    const std::string color = colors[k % 8];
+    std::vector<const AccuracyRow*> mine, front;
+    for (const AccuracyRow& r : rows)
+      if (r.kind == kinds[k]) mine.push_back(&r);
+    for (const AccuracyRow* r : mine) {
+      bool dominated = false;
+      for (const AccuracyRow* o : mine)
+        dominated = dominated || (o != r && o->ns_per_solve <= r->ns_per_solve && err(*o) <= err(*r) &&
+                                  (o->ns_per_solve < r->ns_per_solve || err(*o) < err(*r)));
+      if (!dominated) front.push_back(r);
+    }
+    std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->ns_per_solve < b->ns_per_solve; });
+    std::vector<Eigen::Vector2d> line;
+    for (const AccuracyRow* r : front) line.push_back(Eigen::Vector2d(px(r->ns_per_solve), py(err(*r))));
+    for (std::size_t i = 1; i < line.size(); ++i)
+      svg.line(line[i - 1], line[i], "front", "stroke=\"" + color + "\"");
+    for (const AccuracyRow* r : mine) {
+      const bool on_front = std::find(front.begin(), front.end(), r) != front.end();
+      const Eigen::Vector2d c(px(r->ns_per_solve), py(err(*r)));
+      const std::string style = fmt::format("fill=\"{}\" stroke=\"{}\" stroke-width=\"1.5\"",
+                                            on_front ? color : "white", color);
+      const int shape = static_cast<int>(r->precision);
+      if (shape == 0) svg.circle(c, 4.5, "", style);
+      else if (shape == 1) svg.rect(c.x() - 4, c.y() - 4, 8, 8, "", style);
+      else if (shape == 2) svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5, c.y() + 4}, {c.x() - 5, c.y() + 4}}, "", style);
+      else svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5.5, c.y()}, {c.x(), c.y() + 5.5}, {c.x() - 5.5, c.y()}}, "", style);
+    }
+    svg.rect(width - right + 14, top + 18.0 * static_cast<double>(k), 10, 10, "", "fill=\"" + color + "\"");
+    svg.text({width - right + 30, top + 9 + 18.0 * static_cast<double>(k)}, kinds[k], "");
+  }
+  const double legend = top + 18.0 * static_cast<double>(kinds.size()) + 20;
+  for (int s = 0; s < 4; ++s) {
+    const Eigen::Vector2d c(width - right + 19, legend + 18.0 * s);
+    const std::string style = "fill=\"white\" stroke=\"#333\" stroke-width=\"1.5\"";
+    if (s == 0) svg.circle(c, 4.5, "", style);
+    else if (s == 1) svg.rect(c.x() - 4, c.y() - 4, 8, 8, "", style);
+    else if (s == 2) svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5, c.y() + 4}, {c.x() - 5, c.y() + 4}}, "", style);
+    else svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5.5, c.y()}, {c.x(), c.y() + 5.5}, {c.x() - 5.5, c.y()}}, "", style);
+    svg.text({width - right + 30, legend + 4 + 18.0 * s}, shapes[s], "");
+  }
+  return svg.str();
+}
+
+}  // namespace frustum::bench

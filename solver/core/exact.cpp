@@ -1,0 +1,595 @@
+// Exact values: canonical form with simplified radicals, sign, and conversions.
+#include "solver/core/exact.hpp"
+
+#include "solver/core/work_budget.hpp"
+
+#include <cln/integer.h>
+#include <cln/rational.h>
+#include <cln/real.h>
+
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace frustum {
+namespace {
+
+using GiNaC::ex;
+using GiNaC::ex_to;
+using GiNaC::is_a;
+using GiNaC::numeric;
+
+// Radicands are factored by trial division only below this bound; with divisors up to
+// kTrialLimit the cofactor then has at most two prime factors, so one square test finishes.
+constexpr std::uint64_t kFactorLimit = 1'000'000'000'000'000;  // 10^15
+constexpr std::uint64_t kTrialLimit = 100'000;
+// Above kFactorLimit only divisors below this are tried (radicands are at most kMaxRadicandBits).
+constexpr std::uint64_t kSmallPrimeLimit = 1'000;
+// Radicals beyond these sizes are left as GiNaC holds them (bounded work on hostile input).
+constexpr unsigned kMaxRootIndex = 64;
+constexpr std::uintptr_t kMaxRadicandBits = 4096;
+// canonical() repeats its pass until nothing changes; two passes suffice in practice.
+constexpr int kMaxCanonicalPasses = 4;
+// A denominator a + b·√k loses one square root per conjugate multiplication; at most this many.
+constexpr int kMaxRationalizeRounds = 4;
+// exact_sign() refines at these precisions (decimal digits) before trying exact zero.
+constexpr long kSignDigits[] = {30, 60, 120, 240};
+constexpr long kGuardDigits = 10;
+
+// m = coeff^index * radicand.
+struct RootSplit {
+  cln::cl_I coeff;
+  cln::cl_I radicand;
+};
+
+cln::cl_I to_cl_i(const numeric& n) { return cln::the<cln::cl_I>(n.to_cl_N()); }
+
+// cln::expt_pos requires a positive exponent.
+cln::cl_I int_power(const cln::cl_I& base, unsigned exponent) {
+  return exponent == 0 ? cln::cl_I(1) : cln::expt_pos(base, exponent);
+}
+
+// Splits the largest index-th power out of m >= 1, or leaves m whole when it is too big to
+// factor quickly.
+RootSplit split_root(const cln::cl_I& m, unsigned index) {
+  if (m >= cln::cl_I(kFactorLimit)) {
+    // Too big to factor, but the small primes still come out: decimal inputs make radicands of
+    // 2^a·5^b times a little more (√(2·10^63) = 2^32·5^31·√5).
+    cln::cl_I rest = m, coeff = 1, radicand = 1;
+    for (std::uint64_t p = 2; p < kSmallPrimeLimit; p += (p == 2 ? 1 : 2)) {
+      const cln::cl_I divisor(p);
+      unsigned count = 0;
+      while (cln::zerop(cln::mod(rest, divisor))) {
+        rest = cln::exquo(rest, divisor);
+        ++count;
+      }
+      coeff *= int_power(divisor, count / index);
+      radicand *= int_power(divisor, count % index);
+    }
+    if (rest < cln::cl_I(kFactorLimit)) {
+      const RootSplit small = split_root(rest, index);
+      return {coeff * small.coeff, radicand * small.radicand};
+    }
+    cln::cl_I root;
+    if (cln::rootp(rest, index, &root)) return {coeff * root, radicand};
+    return {coeff, radicand * rest};
+  }
+  std::uint64_t n = cln::cl_I_to_UQ(m);
+  cln::cl_I coeff = 1;
+  cln::cl_I radicand = 1;
+  std::uint64_t p = 2;
+  for (; p <= kTrialLimit && p * p <= n; p += (p == 2 ? 1 : 2)) {
+    unsigned count = 0;
+    while (n % p == 0) {
+      n /= p;
+      ++count;
+    }
+    if (count == 0) continue;
+    coeff *= int_power(cln::cl_I(p), count / index);
+    radicand *= int_power(cln::cl_I(p), count % index);
+  }
+  if (n > 1) {
+    // Either n is prime (p^2 > n) or n < 10^15 has only prime factors > 10^5, so it is
+    // q, q*r or q^2: only a square can still be taken out.
+    cln::cl_I rest(n);
+    cln::cl_I root;
+    if (p * p <= n && index == 2 && cln::sqrtp(rest, &root)) {
+      coeff *= root;
+    } else {
+      radicand *= rest;
+    }
+  }
+  return {coeff, radicand};
+}
+
+// Lowers the root index when the radicand is itself a power: 4^(1/6) = 2^(1/3).
+void reduce_index(cln::cl_I& radicand, unsigned& index) {
+  for (unsigned k = 2; k <= index; ++k) {
+    cln::cl_I root;
+    if (index % k == 0 && cln::rootp(radicand, k, &root)) {
+      radicand = root;
+      index /= k;
+      k = 1;
+    }
+  }
+}
+
+// coeff * radicand^(1/index) as a GiNaC value (radicand >= 1).
+ex make_radical(const numeric& coeff, cln::cl_I radicand, unsigned index) {
+  reduce_index(radicand, index);
+  if (radicand == 1 || index == 1) return coeff * numeric(cln::cl_N(radicand));
+  return coeff * GiNaC::pow(ex(numeric(cln::cl_N(radicand))), ex(numeric(1, long(index))));
+}
+
+bool is_positive_rational(const ex& e) {
+  if (!is_a<numeric>(e)) return false;
+  const numeric& n = ex_to<numeric>(e);
+  return n.is_rational() && n.is_positive();
+}
+
+bool is_proper_fraction_exponent(const ex& e) {
+  if (!is_a<numeric>(e)) return false;
+  const numeric& n = ex_to<numeric>(e);
+  return n.is_rational() && !n.is_integer() && n.denom() <= numeric(long(kMaxRootIndex));
+}
+
+// (a/b)^(p/r) = (a/b)^k * c * d^(1/r) / b with d r-th-power free, where p = k*r + s,
+// 0 < s < r and a^s * b^(r-s) = c^r * d. The denominator is rationalised on the way.
+ex simplify_power(const ex& e) {
+  const ex& base = e.op(0);
+  const ex& exponent = e.op(1);
+  if (!is_positive_rational(base) || !is_proper_fraction_exponent(exponent)) return e;
+  const numeric& q = ex_to<numeric>(base);
+  const numeric& x = ex_to<numeric>(exponent);
+  const cln::cl_I a = to_cl_i(q.numer());
+  const cln::cl_I b = to_cl_i(q.denom());
+  const cln::cl_I p = to_cl_i(x.numer());
+  const unsigned r = unsigned(cln::cl_I_to_UQ(to_cl_i(x.denom())));
+  const cln::cl_I k = cln::floor1(p, cln::cl_I(r));
+  const unsigned s = unsigned(cln::cl_I_to_UQ(p - k * cln::cl_I(r)));
+
+  const std::uintptr_t bits_a = cln::integer_length(a);
+  const std::uintptr_t bits_b = cln::integer_length(b);
+  if (s * bits_a + (r - s) * bits_b > kMaxRadicandBits) return e;
+  if (k != 0 && cln::abs(k) * cln::cl_I(bits_a + bits_b) > cln::cl_I(kMaxRadicandBits)) return e;
+
+  const cln::cl_I m = int_power(a, s) * int_power(b, r - s);
+  const RootSplit split = split_root(m, r);
+  const numeric whole =
+      q.power(numeric(cln::cl_N(k))) * numeric(cln::cl_N(split.coeff)) / numeric(cln::cl_N(b));
+  return make_radical(whole, split.radicand, r);
+}
+
+// The integer radicand and index of d^(1/r) as canonical() leaves it, if e is one.
+bool as_simple_radical(const ex& e, cln::cl_I& radicand, unsigned& index) {
+  if (!is_a<GiNaC::power>(e)) return false;
+  const ex& base = e.op(0);
+  const ex& exponent = e.op(1);
+  if (!is_a<numeric>(base) || !ex_to<numeric>(base).is_pos_integer()) return false;
+  if (!is_proper_fraction_exponent(exponent) || !ex_to<numeric>(exponent).numer().is_equal(1))
+    return false;
+  radicand = to_cl_i(ex_to<numeric>(base));
+  index = unsigned(cln::cl_I_to_UQ(to_cl_i(ex_to<numeric>(exponent).denom())));
+  return true;
+}
+
+// Merges radicals of equal index in a product: sqrt(2)*sqrt(6) = 2*sqrt(3).
+ex combine_radicals(const ex& e) {
+  std::map<unsigned, std::vector<cln::cl_I>> groups;
+  ex rest = 1;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    cln::cl_I radicand;
+    unsigned index = 0;
+    if (as_simple_radical(e.op(i), radicand, index)) {
+      groups[index].push_back(radicand);
+    } else {
+      rest *= e.op(i);
+    }
+  }
+  bool changed = false;
+  ex radicals = 1;
+  for (const auto& group : groups) {
+    const unsigned index = group.first;
+    const std::vector<cln::cl_I>& radicands = group.second;
+    const auto keep = [&] {
+      for (const cln::cl_I& d : radicands)
+        radicals *= GiNaC::pow(ex(numeric(cln::cl_N(d))), ex(numeric(1, long(index))));
+    };
+    if (radicands.size() < 2) {
+      keep();
+      continue;
+    }
+    std::uintptr_t bits = 0;
+    for (const cln::cl_I& d : radicands) bits += cln::integer_length(d);
+    if (bits > kMaxRadicandBits) {
+      keep();
+      continue;
+    }
+    cln::cl_I coeff = 1;
+    cln::cl_I product = 1;
+    if (index == 2) {
+      // Square-free inputs stay square-free without factoring: ab = g^2 (a/g)(b/g).
+      for (const cln::cl_I& d : radicands) {
+        const cln::cl_I g = cln::gcd(product, d);
+        coeff *= g;
+        product = cln::exquo(product, g) * cln::exquo(d, g);
+      }
+    } else {
+      for (const cln::cl_I& d : radicands) product *= d;
+    }
+    if (index != 2 && product >= cln::cl_I(kFactorLimit)) {
+      keep();
+      continue;
+    }
+    const RootSplit split = split_root(product, index);
+    radicals *= make_radical(numeric(cln::cl_N(coeff * split.coeff)), split.radicand, index);
+    changed = true;
+  }
+  return changed ? rest * radicals : e;
+}
+
+// Bottom-up pass that rewrites radicals of rationals (children first, so sin(sqrt(12))
+// and sums of products are reached).
+struct SimplifyRadicals : GiNaC::map_function {
+  ex operator()(const ex& e) override {
+    const ex mapped = e.map(*this);
+    if (is_a<GiNaC::power>(mapped)) return simplify_power(mapped);
+    if (is_a<GiNaC::mul>(mapped)) return combine_radicals(mapped);
+    return mapped;
+  }
+};
+
+bool has_symbol(const ex& e) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it) || is_a<GiNaC::wildcard>(*it)) return true;
+  }
+  return false;
+}
+
+// GiNaC's working precision is a process-wide setting; restore it whatever happens.
+class DigitsGuard {
+ public:
+  explicit DigitsGuard(long digits) : saved_(GiNaC::Digits) { GiNaC::Digits = digits; }
+  ~DigitsGuard() { GiNaC::Digits = saved_; }
+  DigitsGuard(const DigitsGuard&) = delete;
+  DigitsGuard& operator=(const DigitsGuard&) = delete;
+
+ private:
+  long saved_;
+};
+
+// A real numeric approximation of e at the current precision, if there is one.
+bool evaluate_real(const ex& e, numeric& value) {
+  const ex v = e.evalf();
+  if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return false;
+  value = ex_to<numeric>(v);
+  return true;
+}
+
+// Nearest double of a rational, subnormals included (CLN's conversion flushes them to zero):
+// below 2^-1022 the doubles are the multiples of 2^-1074, so round q·2^1074 to an integer,
+// ties to even.
+double rational_to_double(const numeric& q) {
+  if (q.is_integer()) return q.to_double();  // correctly rounded by CLN
+  static const numeric kMinNormal = numeric(2).power(-1022);
+  if (GiNaC::abs(q) >= kMinNormal) return q.to_double();
+  const numeric scaled = GiNaC::abs(q) * numeric(2).power(1074);
+  const numeric num = scaled.numer(), den = scaled.denom();
+  numeric whole = GiNaC::iquo(num, den);
+  const numeric twice_rem = 2 * (num - whole * den);
+  if (twice_rem > den || (twice_rem == den && !whole.is_even())) whole += 1;
+  const double magnitude = std::ldexp(whole.to_double(), -1074);
+  return q.is_negative() ? -magnitude : magnitude;
+}
+
+// The square root √k (k a positive integer) inside e with the smallest k, if there is one.
+// Chosen by value, not by position: GiNaC orders terms by hashes that differ from run to run
+// (they include addresses), and the first root found would make the rounds, their cost and
+// the result's form differ between two runs on the same input.
+bool find_square_root(const ex& e, ex& root) {
+  bool found = false;
+  cln::cl_I smallest;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    cln::cl_I radicand;
+    unsigned index = 0;
+    if (as_simple_radical(*it, radicand, index) && index == 2 && (!found || radicand < smallest)) {
+      root = *it;
+      smallest = radicand;
+      found = true;
+    }
+  }
+  return found;
+}
+
+// Rationalises a denominator that is a sum with square roots, one root per round:
+// n / (a + b·√k) = n·(a − b·√k) / (a² − b²·k), so 1/(1 + 2√3) becomes (2√3 − 1)/11.
+// Each round's products are priced before they are expanded: a denominator with r roots
+// multiplies the numerator's terms by up to 2^r (1/(√2 + √3 + … + √19) ran for minutes).
+// When the budget cannot pay for a round, e comes back as it was, not half rationalised.
+ex rationalize_denominator(const ex& e, WorkBudget& budget) {
+  if (!budget.spend(exact_size(e).work)) return e;
+  const ex parts = e.numer_denom();
+  ex num = parts.op(0).expand(), den = parts.op(1).expand();
+  bool changed = false;
+  for (int round = 0; round < kMaxRationalizeRounds && is_a<GiNaC::add>(den); ++round) {
+    ex root;
+    if (!find_square_root(den, root)) break;
+    const GiNaC::symbol s;
+    if (!budget.spend(term_count(den))) return e;
+    const ex d = den.subs(root == s).expand();
+    // A root nested in another (√(8√8 − 1) − 1) is not a polynomial in s: GiNaC's degree()
+    // would throw (found by fuzz_expression), and there is no conjugate to multiply by.
+    if (!d.is_polynomial(s) || d.degree(s) != 1 || d.ldegree(s) < 0) break;
+    const ex a = d.coeff(s, 0).expand(), b = d.coeff(s, 1).expand();
+    const ex conjugate = (a - b * root).expand();
+    if (!budget.spend(product_cost(num, conjugate) + product_cost(a, a) + product_cost(b, b))) return e;
+    num = (num * conjugate).expand();
+    den = (a * a - b * b * root * root).expand();
+    changed = true;
+  }
+  return changed ? num / den : e;
+}
+
+// ---- Zero of nested square roots (GiNaC does not denest √(5 + 2√6) = √2 + √3) ----
+
+// Square roots nested this deep in number, or polynomials of this degree, are not attempted.
+constexpr std::size_t kMaxZeroProofRadicals = 6;
+constexpr int kMaxZeroProofDegree = 64;
+
+bool is_half_power(const ex& e) {
+  if (!is_a<GiNaC::power>(e) || !is_a<numeric>(e.op(1))) return false;
+  const numeric& q = ex_to<numeric>(e.op(1));
+  return q.is_rational() && !q.is_integer();
+}
+
+// A sum holding a root whose radicand holds another root: the form whose zero canonical()
+// cannot see (sums of roots of rationals it reduces itself).
+bool has_nested_root(const ex& e) {
+  if (!is_a<GiNaC::add>(e)) return false;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_half_power(*it))
+      for (auto in = it->op(0).preorder_begin(); in != it->op(0).preorder_end(); ++in)
+        if (is_half_power(*in)) return true;
+  return false;
+}
+
+// Replaces every square root √b by a symbol y (inner roots first), recording y² = b.
+struct RootsToSymbols : GiNaC::map_function {
+  std::vector<std::pair<ex, GiNaC::symbol>> roots;  // (radicand in earlier symbols, y)
+  std::vector<ex> values;                           // the roots themselves, for evaluation
+  bool unsupported = false;                         // a root other than a square root
+
+  ex operator()(const ex& e) override {
+    if (!is_half_power(e)) return e.map(*this);
+    const numeric& q = ex_to<numeric>(e.op(1));
+    if (q.denom() != 2) {
+      unsupported = true;
+      return e;
+    }
+    const ex base = (*this)(e.op(0));
+    for (const auto& [b, y] : roots)
+      if (b.is_equal(base)) return GiNaC::pow(y, q.numer());
+    roots.emplace_back(base, GiNaC::symbol());
+    values.push_back(GiNaC::sqrt(e.op(0)));
+    return GiNaC::pow(roots.back().second, q.numer());
+  }
+};
+
+// Proves e = 0 for a real constant built from rationals and square roots (nested or not):
+// its numerator N in symbols yᵢ = √bᵢ is a root of R(x) = res_{y₁}(…res_{yₘ}(x − N, yₘ² − bₘ)…,
+// y₁² − b₁) ∈ Q[x]. When R(x) = xᵏ·S(x) with k ≥ 1, every non-zero root of S has
+// |x| ≥ |s₀|/(|s₀| + max|sᵢ|) (Cauchy's bound on the reversed polynomial); N evaluated well
+// inside that bound is therefore 0. False when unproven (too many roots, other radicals).
+bool proven_zero(const Exact& e) {
+  {
+    // Cheap on ordinary values: one evaluation shows most are far from 0.
+    const DigitsGuard guard(kSignDigits[0]);
+    numeric approx, scale = 1;
+    if (!evaluate_real(e, approx)) return false;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      numeric term;
+      if (evaluate_real(e.op(i), term)) scale += GiNaC::abs(term);
+    }
+    if (GiNaC::abs(approx) > scale / numeric(10).power(kSignDigits[0] / 2)) return false;
+  }
+  RootsToSymbols to_symbols;
+  const ex in_symbols = to_symbols(e);
+  if (to_symbols.unsupported || to_symbols.roots.empty() ||
+      to_symbols.roots.size() > kMaxZeroProofRadicals)
+    return false;
+  const ex numerator = in_symbols.normal().numer_denom().op(0).expand();
+  const GiNaC::symbol x;
+  ex r = (x - numerator).expand();
+  for (std::size_t i = to_symbols.roots.size(); i-- > 0;) {
+    const auto& [base, y] = to_symbols.roots[i];
+    const ex parts = base.normal().numer_denom();
+    const ex relation = (parts.op(1) * y * y - parts.op(0)).expand();
+    r = GiNaC::resultant(r, relation, y).expand();
+    if (!r.is_polynomial(x) || r.degree(x) > kMaxZeroProofDegree) return false;
+  }
+  for (const auto& [base, y] : to_symbols.roots)
+    if (r.has(y)) return false;
+  if (r.is_zero()) return false;
+  const int k = r.ldegree(x);
+  if (k == 0) return false;  // 0 is not a root of R: e ≠ 0
+  numeric low = GiNaC::abs(ex_to<numeric>(r.coeff(x, k))), high = 0;
+  for (int i = k + 1; i <= r.degree(x); ++i) {
+    const ex c = r.coeff(x, i);
+    if (!is_a<numeric>(c)) return false;
+    high = std::max(high, GiNaC::abs(ex_to<numeric>(c)));
+  }
+  const numeric separation = low / (low + high);
+  // N at enough digits to resolve a tenth of the separation.
+  GiNaC::exmap values;
+  for (std::size_t i = 0; i < to_symbols.roots.size(); ++i)
+    values[to_symbols.roots[i].second] = to_symbols.values[i];
+  const long digits = 30 + static_cast<long>(std::ceil(-std::log10(separation.to_double())));
+  const DigitsGuard guard(std::min(digits, 400L));
+  numeric value;
+  if (!evaluate_real(numerator.subs(values), value)) return false;
+  return GiNaC::abs(value) * 10 < separation;
+}
+
+// One pass of canonical(): radicals simplified, fractions collected, the sum flattened.
+bool simplify_pass(ex& current, WorkBudget& budget) {
+  if (!budget.spend(normal_cost(current))) return false;
+  SimplifyRadicals simplify;
+  // normal() cancels sqrt(3)*sqrt(3) and collects fractions; expand() flattens the result
+  // into a sum of terms.
+  current = simplify(current).normal().expand();
+  return true;
+}
+
+}  // namespace
+
+Exact canonical(const Exact& e) {
+  WorkBudget budget;
+  return canonical(e, budget);
+}
+
+Exact canonical(const Exact& e, WorkBudget& budget) {
+  // A rational is already canonical (most typed answers and most inputs are).
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_rational()) return e;
+  if (!budget.spend(exact_size(e).work + normal_cost(e))) return e;
+  ex current = e.expand().normal();
+  for (int pass = 0; pass < kMaxCanonicalPasses; ++pass) {
+    ex next = current;
+    if (!simplify_pass(next, budget)) return current;
+    if (next.is_equal(current)) break;
+    current = next;
+  }
+  if (!has_symbol(current) && has_nested_root(current) && proven_zero(current)) return 0;
+  if (!has_symbol(current)) {
+    ex rationalized = rationalize_denominator(current, budget);
+    if (!rationalized.is_equal(current)) {
+      if (!budget.spend(exact_size(rationalized).work)) return current;
+      rationalized = rationalized.expand();
+      if (simplify_pass(rationalized, budget)) current = rationalized;
+    }
+  }
+  return current;
+}
+
+bool is_real_constant(const Exact& e) {
+  if (is_a<numeric>(e)) return ex_to<numeric>(e).is_real();
+  if (has_symbol(e)) return false;
+  if (is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e) || is_a<GiNaC::matrix>(e)) return false;
+  try {
+    numeric value;
+    return evaluate_real(e, value);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+double to_double(const Exact& e) {
+  // Rationals convert exactly rounded; anything else is evaluated with digits to spare so
+  // the double is the nearest one.
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_real() && ex_to<numeric>(e).is_rational())
+    return rational_to_double(ex_to<numeric>(e));
+  if (!is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
+  try {
+    const DigitsGuard guard(40);
+    numeric value;
+    if (!evaluate_real(e, value)) return std::numeric_limits<double>::quiet_NaN();
+    return value.to_double();
+  } catch (const std::exception&) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+GiNaC::numeric rational_near(const Exact& e) {
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_rational()) return ex_to<numeric>(e);
+  if (!is_real_constant(e)) throw std::domain_error("rational_near: not a real constant");
+  const DigitsGuard guard(40);
+  numeric value;
+  if (!evaluate_real(e, value)) throw std::domain_error("rational_near: not real");
+  if (value.is_rational()) return value;
+  // A CLN float is a dyadic rational: take it exactly.
+  return numeric(cln::rational(cln::the<cln::cl_R>(value.to_cl_N())));
+}
+
+int exact_sign(const Exact& e) {
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_real()) {
+    const numeric& n = ex_to<numeric>(e);
+    return n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
+  }
+  if (!is_real_constant(e)) throw std::domain_error("exact_sign: not a real constant");
+  // Products and powers by their factors' signs: no cancellation there, so √2·10⁻³⁰⁰ is
+  // decided however small it is, and only sums are refined numerically.
+  if (is_a<GiNaC::mul>(e)) {
+    int sign = 1;
+    for (std::size_t i = 0; i < e.nops() && sign != 0; ++i) sign *= exact_sign(e.op(i));
+    return sign;
+  }
+  if (is_a<GiNaC::power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_rational()) {
+    const numeric& q = ex_to<numeric>(e.op(1));
+    const int base = exact_sign(e.op(0));
+    if (!q.is_integer()) return base;  // a real root: its base is ≥ 0 (is_real_constant)
+    return q.is_even() ? (base != 0 ? 1 : 0) : base;
+  }
+
+  // Cancellation between the terms of a sum costs precision in proportion to their size.
+  const ex expanded = e.expand();
+  for (const long digits : kSignDigits) {
+    const DigitsGuard guard(digits);
+    numeric value;
+    if (!evaluate_real(expanded, value)) throw std::domain_error("exact_sign: not real");
+    numeric scale = 1;
+    if (is_a<GiNaC::add>(expanded)) {
+      numeric sum = 0;
+      for (std::size_t i = 0; i < expanded.nops(); ++i) {
+        numeric term;
+        if (evaluate_real(expanded.op(i), term)) sum += GiNaC::abs(term);
+      }
+      if (sum > scale) scale = sum;
+    }
+    const numeric bound = numeric(1) / numeric(10).power(digits - kGuardDigits) * scale;
+    if (GiNaC::abs(value) > bound) return value.is_positive() ? 1 : -1;
+  }
+  if (canonical(e).is_zero() || proven_zero(expanded)) return 0;
+  throw UndecidedSign("the sign of a value that is 0 to " +
+                      std::to_string(kSignDigits[std::size(kSignDigits) - 1] - kGuardDigits) +
+                      " digits could not be proven: exact arithmetic cannot tell whether it is 0 "
+                      "(write the given numbers as decimals or simpler radicals)");
+}
+
+Exact exact_from_double(double v) {
+  if (!std::isfinite(v)) throw std::domain_error("exact_from_double: not a finite number");
+  int exponent = 0;
+  const double fraction = std::frexp(v, &exponent);  // v = fraction * 2^exponent
+  constexpr int kMantissaBits = std::numeric_limits<double>::digits;
+  // fraction * 2^53 is an integer (subnormals too: frexp normalises them).
+  const auto mantissa = static_cast<long long>(std::ldexp(fraction, kMantissaBits));
+  return numeric(mantissa) * numeric(2).power(exponent - kMantissaBits);
+}
+
+}  // namespace frustum
+
+namespace frustum {
+
+Exact exact_acos(const Exact& c) {
+  // The angles of the unit circle a course uses; GiNaC leaves acos(sqrt(2)/2) unevaluated.
+  using GiNaC::numeric;
+  const Exact r2 = GiNaC::sqrt(Exact(2)) / 2, r3 = GiNaC::sqrt(Exact(3)) / 2;
+  const std::pair<Exact, Exact> table[] = {{1, 0},
+                                           {r3, GiNaC::Pi / 6},
+                                           {r2, GiNaC::Pi / 4},
+                                           {numeric(1, 2), GiNaC::Pi / 3},
+                                           {0, GiNaC::Pi / 2},
+                                           {numeric(-1, 2), 2 * GiNaC::Pi / 3},
+                                           {-r2, 3 * GiNaC::Pi / 4},
+                                           {-r3, 5 * GiNaC::Pi / 6},
+                                           {-1, GiNaC::Pi}};
+  const Exact cc = canonical(c);
+  for (const auto& [value, angle] : table)
+    if (canonical(cc - value).is_zero()) return angle;
+  return GiNaC::acos(cc);
+}
+
+}  // namespace frustum

@@ -1,0 +1,142 @@
+#include "solver/input/yaml_emit.hpp"
+
+#include <cstdio>
+#include <regex>
+
+namespace frustum {
+
+namespace {
+
+bool plain_safe(const std::string& s) {
+  if (s.empty()) return false;
+  for (const char c : s) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '.' || c == '+' || c == '-' || c == '/' || c == '*' ||
+                    c == '(' || c == ')' || c == '^';
+    if (!ok) return false;
+  }
+  // Indicators that may not start a plain scalar, and "-" alone (a list item).
+  if (s[0] == '*' || s == "-" || (s[0] == '-' && s.size() > 1 && s[1] == '-')) return false;
+  return true;
+}
+
+// What a plain scalar resolves to in YAML 1.1 (the type repository's bool, null, int, float:
+// PyYAML, older readers) and in YAML 1.2's core schema, as regular expressions over the whole
+// scalar.
+enum class Resolved { String, Bool, Null, Int, Float };
+
+// One reader's implicit types, tried in order.
+struct Reader {
+  std::regex boolean, null, integer, real;
+  Resolved resolve(const std::string& s) const {
+    if (std::regex_match(s, boolean)) return Resolved::Bool;
+    if (std::regex_match(s, null)) return Resolved::Null;
+    if (std::regex_match(s, integer)) return Resolved::Int;
+    if (std::regex_match(s, real)) return Resolved::Float;
+    return Resolved::String;
+  }
+};
+
+const Reader& yaml11() {
+  static const Reader r{
+      std::regex(
+          "y|Y|yes|Yes|YES|n|N|no|No|NO|true|True|TRUE|false|False|FALSE|on|On|ON|off|Off|OFF"),
+      std::regex("~|null|Null|NULL"),
+      std::regex("[-+]?0b[01_]+|[-+]?0[0-7_]+|[-+]?(0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+"
+                 "|[-+]?[1-9][0-9_]*(:[0-5]?[0-9])+"),
+      std::regex("[-+]?([0-9][0-9_]*)?\\.[0-9.]*([eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(:[0-5]?[0-9])+"
+                 "\\.[0-9_]*"
+                 "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)")};
+  return r;
+}
+
+const Reader& yaml12() {
+  static const Reader r{std::regex("true|True|TRUE|false|False|FALSE"),
+                        std::regex("~|null|Null|NULL"),
+                        std::regex("[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+"),
+                        std::regex("[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?"
+                                   "|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|NAN)")};
+  return r;
+}
+
+// The two read the scalar as different things (yes: a boolean or a string; 1e3: a string or a
+// float), or as integers of different values (0010 is octal 8 in YAML 1.1 and 10 in 1.2).
+bool readers_disagree(const std::string& s) {
+  const Resolved a = yaml11().resolve(s), b = yaml12().resolve(s);
+  if (a != b) return true;
+  static const std::regex leading_zero("[-+]?0[0-9_]+");
+  return a == Resolved::Int && std::regex_match(s, leading_zero);
+}
+
+std::string quote(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned char>(c));
+          out += buf;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string emit_scalar(const std::string& s, bool was_quoted) {
+  return !was_quoted && plain_safe(s) && !readers_disagree(s) ? s : quote(s);
+}
+
+bool plain_reads_as_string(const std::string& s) {
+  return yaml11().resolve(s) == Resolved::String && yaml12().resolve(s) == Resolved::String;
+}
+
+YAML::Node string_node(const std::string& s) {
+  YAML::Node n(s);
+  if (!plain_reads_as_string(s)) n.SetTag("!");
+  return n;
+}
+
+std::string emit_flow(const YAML::Node& n) {
+  switch (n.Type()) {
+    case YAML::NodeType::Scalar:
+      return emit_scalar(n.Scalar(), n.Tag() == "!");
+    case YAML::NodeType::Sequence: {
+      std::string out = "[";
+      for (std::size_t i = 0; i < n.size(); ++i) out += (i ? ", " : "") + emit_flow(n[i]);
+      return out + "]";
+    }
+    case YAML::NodeType::Map: {
+      std::string out = "{";
+      bool first = true;
+      for (auto it = n.begin(); it != n.end(); ++it) {
+        out += (first ? "" : ", ") + emit_flow(it->first) + ": " + emit_flow(it->second);
+        first = false;
+      }
+      return out + "}";
+    }
+    default:
+      return "null";
+  }
+}
+
+}  // namespace frustum

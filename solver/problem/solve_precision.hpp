@@ -1,0 +1,20 @@
+// Solving in a chosen backend (`frustum solve --precision`): the kind's numeric path gives the
+// answers (values only), and the derivation states the backend, the formulation used and the
+// ill-conditioning found. A kind without a numeric path is solved exactly, with a note.
+#pragma once
+
+#include "solver/problem/solve_set.hpp"
+#include "solver/numeric/precision.hpp"
+
+#include <optional>
+#include <string>
+
+namespace frustum {
+
+ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps,
+                            Precision precision);
+
+SetResult solve_set(const ProblemSet& set, bool with_steps, const std::optional<std::string>& only_id,
+                    Precision precision);
+
+}  // namespace frustum

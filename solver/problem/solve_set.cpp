@@ -1,0 +1,81 @@
+#include "solver/problem/solve_set.hpp"
+
+#include <cmath>
+#include <utility>
+
+#include "solver/input/given_reader.hpp"
+#include "solver/input/text_reader.hpp"
+#include "solver/problem/variants.hpp"
+
+namespace frustum {
+
+ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps) {
+  ProblemResult r;
+  r.id = spec.id;
+  r.kind = spec.kind;
+  r.text = spec.text.map([&](const std::string& t) { return fill_text(t, spec.given_node); });
+  r.conventions = spec.conventions;
+  r.ask = spec.ask;
+  if (spec.error) {
+    r.error = spec.error;
+    return r;
+  }
+  // What students read is checked before they read it: every placeholder names a value.
+  // In every language the set gives, each checked where it is written.
+  for (const auto& [lang, text] : spec.text.all())
+    if (const auto bad = placeholder_error(text, spec.given_node)) {
+      const bool mapping = spec.text_node.IsMap();
+      const YAML::Node at = local_text_node(spec.text_node, lang, spec.text.lang);
+      r.error = Diagnostic{
+          mapping ? location_of(at, file) : spec.where,
+          spec.field + ".text" + (mapping ? "." + std::string(to_string(lang)) : ""), *bad};
+      return r;
+    }
+  try {
+    // The conventions line only where a convention can change the answers.
+    if (const std::string c = describe(spec.conventions, spec.info->uses); with_steps && !c.empty())
+      r.derivation.note("Conventions", c);
+    Answers answers = !with_steps && spec.drawn_answers
+                          ? *spec.drawn_answers
+                          : spec.info->solve(spec.given, with_steps ? &r.derivation : nullptr);
+    // Exact inputs near 1e308 can give answers beyond double's range (1e308 · 1e308): their
+    // decimals would be inf or NaN (null in JSON), so the problem is refused instead.
+    for (const auto& [name, value] : answers.items())
+      for (const double x : value.numbers)
+        if (!std::isfinite(x)) {
+          r.error = Diagnostic{location_of(spec.given_node, file), spec.field + ".given",
+                               "the answer '" + name +
+                                   "' is beyond the range of a double (about ±1.8e308): scale "
+                                   "the given numbers down"};
+          return r;
+        }
+    r.answers = std::move(answers);
+  } catch (const DomainError& e) {
+    GivenReader reader(spec.given_node, file, spec.field + ".given", {});
+    r.error = reader.locate(e.field(), e.what());
+  } catch (const InputError& e) {
+    r.error = e.diagnostic();
+  } catch (const std::exception& e) {
+    r.error = Diagnostic{spec.where, spec.field, std::string("cannot solve: ") + e.what()};
+  }
+  return r;
+}
+
+SetResult solve_set(const ProblemSet& set, bool with_steps,
+                    const std::optional<std::string>& only_id) {
+  SetResult out;
+  out.file = set.file;
+  out.title = set.title;
+  out.source = set.source;
+  out.errors = set.errors;
+  for (const ProblemSpec& p : set.problems) {
+    if (only_id && p.id != *only_id) continue;
+    out.problems.push_back(solve_problem(p, set.file, with_steps));
+  }
+  if (only_id && out.problems.empty())
+    out.errors.push_back(Diagnostic{SourceLocation{set.file, 0, 0}, "id",
+                                    "no problem with id '" + *only_id + "'"});
+  return out;
+}
+
+}  // namespace frustum

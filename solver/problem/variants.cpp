@@ -1,0 +1,526 @@
+#include "solver/problem/variants.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/problem/vary_spec.hpp"
+#include "solver/input/yaml_emit.hpp"
+#include "solver/util/exact_format.hpp"
+
+namespace frustum {
+
+namespace {
+
+constexpr char kUnitSeparator = '\x1f';
+constexpr const char* kSeedPrefix = "frustum-variant/1";
+
+// Simple exact numbers (see not_nice).
+constexpr long kNiceDenominator = 100;
+constexpr long kNiceSquareDenominator = 10000;
+constexpr long kNicePiDenominator = 12;
+
+bool small_rational(const Exact& e, long max_denominator) {
+  if (!GiNaC::is_a<GiNaC::numeric>(e)) return false;
+  const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(e);
+  return n.is_rational() && n.denom() <= GiNaC::numeric(max_denominator);
+}
+
+bool simple_number(const Exact& e) {
+  if (small_rational(e, kNiceDenominator)) return true;
+  if (small_rational(canonical(e * e), kNiceSquareDenominator)) return true;
+  return small_rational(canonical(e / GiNaC::Pi), kNicePiDenominator);
+}
+
+}  // namespace
+
+namespace {
+
+// A default-constructed YAML::Node is defined (and null): `vary` is present when it is neither.
+bool has_vary(const ProblemSpec& p) { return p.vary.IsDefined() && !p.vary.IsNull(); }
+
+// A kind with nothing to draw (the instructor's own statements): every variant keeps it as written.
+bool is_fixed(const ProblemSpec& p) { return p.info && p.info->fixed; }
+
+// Whether variants draw this problem anew (vary_all: every problem that can be drawn).
+bool drawn_anew(const ProblemSet& set, const ProblemSpec& p, bool vary_all) {
+  return (vary_all && !is_fixed(p)) || problem_varies(set, p);
+}
+
+}  // namespace
+
+bool problem_varies(const ProblemSet& set, const ProblemSpec& p) {
+  return !is_fixed(p) && (has_vary(p) || set.per_student);
+}
+
+bool set_varies(const ProblemSet& set) {
+  for (const ProblemSpec& p : set.problems)
+    if (problem_varies(set, p)) return true;
+  return false;
+}
+
+std::string set_key(const ProblemSet& set) {
+  if (!set.title.empty()) return set.title.text;
+  return std::filesystem::path(set.file).stem().string();
+}
+
+std::uint64_t variant_seed(const std::string& key, const std::string& who) {
+  std::uint64_t h = fnv1a64(kSeedPrefix);
+  h = fnv1a64(std::string(1, kUnitSeparator) + key, h);
+  return fnv1a64(std::string(1, kUnitSeparator) + who, h);
+}
+
+std::uint64_t problem_seed(std::uint64_t seed, const std::string& problem_id) {
+  return fnv1a64(std::string(1, kUnitSeparator) + problem_id, seed);
+}
+
+std::string not_nice(const Answers& answers, const std::vector<std::string>& ask) {
+  for (const std::string& name : ask) {
+    const Value* v = answers.find(name);
+    if (!v) continue;
+    if (!v->numbers.empty() && v->exact.empty()) continue;  // a floating-point answer (render)
+    for (const Exact& e : v->exact)
+      if (!simple_number(e))
+        return name + " has " + format_exact(e, MathStyle::Plain) + ", not a simple number";
+  }
+  return "";
+}
+
+ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::uint64_t seed,
+                         const std::set<std::string>& avoid, std::string* given_text) {
+  // yaml-cpp's Node::operator= writes through to every copy of a node (the base set's too):
+  // nodes of a copied ProblemSpec are rebound with reset(), and specs are never assigned.
+  ProblemSpec spec = base;
+  spec.vary.reset();
+  spec.drawn_answers.reset();
+  if (base.error || !base.info) return spec;
+  const KindInfo& kind = *base.info;
+  const bool use_default = !has_vary(base) || vary_is_default(base.vary);
+  const std::string vary_field = base.field + ".vary";
+  try {
+    if (!use_default) check_vary(base.vary, kind, file, vary_field);
+  } catch (const InputError& e) {
+    spec.error = e.diagnostic();
+    return spec;
+  }
+  if (use_default && !kind.generate) {
+    spec.error =
+        Diagnostic{base.where, vary_field, kind.name + " has no default generator: give `vary`"};
+    return spec;
+  }
+  const GenerateOptions options{base.nice, base.hard, base.conventions};
+  Rng rng(seed);
+  std::string last;
+  // A default variant of a written exercise keeps its structure (the same steps, the same kind
+  // of givens): the kind's generator is used when it draws that shape, else the given's own
+  // values are drawn again. A problem with no given takes whatever the generator draws.
+  const bool keep_shape = use_default && base.given_node.IsMap() && base.given_node.size() > 0;
+  const std::string shape = keep_shape ? given_shape(base.given_node) : "";
+  const auto default_given = [&](int attempt) {
+    if (keep_shape && attempt < kMaxDrawAttempts / 2)
+      for (int k = 0; k < kShapeTries; ++k)
+        if (YAML::Node g = kind.generate(rng, options); given_shape(g) == shape) return g;
+    return keep_shape ? redraw_values(base.given_node, rng) : kind.generate(rng, options);
+  };
+  for (int attempt = 0; attempt < kMaxDrawAttempts; ++attempt) {
+    try {
+      YAML::Node given = use_default
+                             ? default_given(attempt)
+                             : apply_vary(base.vary, base.given_node, rng, file, vary_field);
+      const std::string text = emit_flow(given);
+      if (avoid.count(text)) {
+        last = "the same as another variant";
+        continue;
+      }
+      GivenReader reader(given, file, base.field + ".given", kind.given_fields);
+      std::any parsed = kind.parse(reader, base.conventions);
+      reader.finish();
+      Answers answers = kind.solve(parsed, nullptr);
+      // An empty list (no pixel covered) cannot be written as an answer: redrawn even when hard.
+      last.clear();
+      for (const std::string& name : base.ask)
+        if (const Value* v = answers.find(name);
+            v && v->shape == Value::Shape::Matrix && v->rows == 0)
+          last = name + " is empty";
+      if (!last.empty()) continue;
+      if (!base.hard && kind.ill_conditioned) {
+        last = kind.ill_conditioned(parsed, answers);
+        if (!last.empty()) continue;
+      }
+      if (base.nice && !base.hard) {  // hard cases are rarely nice: hard wins
+        last = not_nice(answers, base.ask);
+        if (!last.empty()) continue;
+      }
+      spec.given = std::move(parsed);
+      spec.given_node.reset(given);
+      spec.drawn_answers = std::make_shared<const Answers>(std::move(answers));
+      if (given_text) *given_text = text;
+      return spec;
+    } catch (const InputError& e) {
+      last = e.diagnostic().field + ": " + e.diagnostic().message;
+    } catch (const DomainError& e) {
+      last = e.field() + ": " + e.what();
+    } catch (const std::exception& e) {
+      last = e.what();
+    }
+  }
+  const YAML::Node at = has_vary(base) ? base.vary : base.given_node;
+  spec.error =
+      Diagnostic{location_of(at, file), vary_field,
+                 "no acceptable variant in " + std::to_string(kMaxDrawAttempts) +
+                     " draws (the last: " + last + "); widen the ranges or drop nice/difficulty"};
+  return spec;
+}
+
+ProblemSpec default_problem(const KindInfo& kind, bool nice, bool hard) {
+  ProblemSpec s;
+  s.id = "p";
+  s.kind = kind.name;
+  s.info = &kind;
+  s.field = "problems[0]";
+  for (const AnswerSpec& a : kind.answers) s.ask.push_back(a.name);
+  s.nice = nice;
+  s.hard = hard;
+  return s;
+}
+
+namespace {
+
+// `avoid` (when given) holds, per problem, the givens (emit_flow text) of earlier variants.
+ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std::string& student,
+                        bool vary_all, const std::vector<std::set<std::string>>* avoid) {
+  ProblemSet out = set;
+  out.per_student = false;
+  const std::uint64_t seed = variant_seed(set_key(set), who);
+  out.variant = VariantInfo{student, seed};
+  out.problems.clear();
+  static const std::set<std::string> kNone;
+  for (std::size_t i = 0; i < set.problems.size(); ++i) {
+    const ProblemSpec& base = set.problems[i];
+    if (!drawn_anew(set, base, vary_all)) {
+      out.problems.push_back(base);
+      continue;
+    }
+    out.problems.push_back(
+        draw_problem(base, set.file, problem_seed(seed, base.id), avoid ? (*avoid)[i] : kNone));
+  }
+  return out;
+}
+
+}  // namespace
+
+ProblemSet variant_for_student(const ProblemSet& set, const std::string& student, bool vary_all) {
+  return make_variant(set, "student:" + student, student, vary_all, nullptr);
+}
+
+std::vector<ProblemSet> variants_for_class(const ProblemSet& set,
+                                           const std::vector<std::string>& students,
+                                           bool vary_all) {
+  std::vector<std::set<std::string>> taken(
+      set.problems.size());  // per problem: the givens drawn so far
+  // The given of each varying problem as text ("" for fixed or failed ones), to compare draws.
+  const auto givens = [&](const ProblemSet& v) {
+    std::vector<std::string> texts(v.problems.size());
+    for (std::size_t i = 0; i < v.problems.size(); ++i)
+      if (!v.problems[i].error && drawn_anew(set, set.problems[i], vary_all))
+        texts[i] = emit_flow(v.problems[i].given_node);
+    return texts;
+  };
+  std::vector<ProblemSet> out;
+  for (const std::string& student : students) {
+    std::optional<ProblemSet> chosen;
+    for (int draw = 1; draw <= kMaxDrawAttempts && !chosen; ++draw) {
+      const std::string who = "student:" + student + (draw == 1 ? "" : "#" + std::to_string(draw));
+      ProblemSet v = make_variant(set, who, student, vary_all, nullptr);
+      const std::vector<std::string> texts = givens(v);
+      bool repeats = false;
+      for (std::size_t i = 0; i < texts.size() && !repeats; ++i)
+        repeats = !texts[i].empty() && taken[i].count(texts[i]);
+      if (repeats) continue;
+      for (std::size_t i = 0; i < texts.size(); ++i)
+        if (!texts[i].empty()) taken[i].insert(texts[i]);
+      v.variant->draw = draw;
+      chosen = std::move(v);
+    }
+    if (!chosen) {
+      chosen = set;
+      chosen->per_student = false;
+      chosen->variant = VariantInfo{student, 0, kMaxDrawAttempts};
+      chosen->errors.push_back(Diagnostic{
+          SourceLocation{set.file, 0, 0}, "student",
+          "no variant for " + student + " that differs from every earlier student's in " +
+              std::to_string(kMaxDrawAttempts) +
+              " draws: the ranges hold fewer variants than the class"});
+    }
+    out.push_back(std::move(*chosen));
+  }
+  return out;
+}
+
+ProblemSet variant_for(const ProblemSet& set, const std::string& student) {
+  if (!set_varies(set)) return set;
+  if (student.empty()) {
+    ProblemSet out = set;
+    out.errors.push_back(Diagnostic{SourceLocation{set.file, 0, 0}, "student",
+                                    "this set gives every student their own variant: the answers "
+                                    "need `student:` to say whose variant to grade"});
+    return out;
+  }
+  return variant_for_student(set, student, false);
+}
+
+void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all,
+                                const std::function<void(int, ProblemSet&&)>& take) {
+  // Per problem, the givens drawn so far: each variant is checked against it in O(log n)
+  // (rebuilding it from every earlier variant made --count quadratic).
+  std::vector<std::set<std::string>> taken(set.problems.size());
+  for (int i = 0; i < count; ++i) {
+    const std::string who = "seed:" + std::to_string(seed) + ":" + std::to_string(i);
+    ProblemSet v = make_variant(set, who, "", vary_all, &taken);
+    // A problem that found no new variant in all its draws has (nearly) used up its ranges:
+    // the later variants would each spend every draw and fail alike, so the run stops here.
+    bool exhausted = false;
+    for (std::size_t p = 0; p < v.problems.size(); ++p) {
+      if (!v.problems[p].error && drawn_anew(set, set.problems[p], vary_all)) {
+        taken[p].insert(emit_flow(v.problems[p].given_node));
+      } else if (v.problems[p].error && !set.problems[p].error) {
+        v.problems[p].error->message += "; stopped at variant " + std::to_string(i + 1) + " of " +
+                                        std::to_string(count) + " (" +
+                                        std::to_string(taken[p].size()) +
+                                        " distinct variants of this problem were drawn)";
+        exhausted = true;
+      }
+    }
+    take(i, std::move(v));
+    if (exhausted) return;
+  }
+}
+
+std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t seed, int count,
+                                           bool vary_all) {
+  std::vector<ProblemSet> out;
+  for_each_variant_from_seed(set, seed, count, vary_all,
+                             [&](int, ProblemSet&& v) { out.push_back(std::move(v)); });
+  return out;
+}
+
+YAML::Node answer_node(const Value& v) {
+  auto number = [&](std::size_t i) {
+    return YAML::Node(i < v.exact.size() ? format_exact(canonical(v.exact[i]), MathStyle::Plain)
+                                         : format_double(v.numbers[i]));
+  };
+  YAML::Node n;
+  switch (v.shape) {
+    case Value::Shape::Null:
+      return YAML::Node("none");
+    case Value::Shape::Scalar:
+      return number(0);
+    case Value::Shape::Vector:
+      n = YAML::Node(YAML::NodeType::Sequence);
+      for (std::size_t i = 0; i < v.numbers.size(); ++i) n.push_back(number(i));
+      return n;
+    case Value::Shape::Matrix:
+      n = YAML::Node(YAML::NodeType::Sequence);
+      for (int r = 0; r < v.rows; ++r) {
+        YAML::Node row(YAML::NodeType::Sequence);
+        for (int c = 0; c < v.cols; ++c)
+          row.push_back(number(static_cast<std::size_t>(r * v.cols + c)));
+        n.push_back(row);
+      }
+      return n;
+    case Value::Shape::Bool:
+      return YAML::Node(v.flag ? "true" : "false");
+    case Value::Shape::Word:
+      return string_node(v.word);  // a bit string 0010 stays a string
+    case Value::Shape::WordMap:
+      n = YAML::Node(YAML::NodeType::Map);
+      for (const auto& [k, w] : v.entries) n[k] = string_node(w);
+      return n;
+    case Value::Shape::WordList:
+      n = YAML::Node(YAML::NodeType::Sequence);
+      for (const std::string& w : v.words) n.push_back(string_node(w));
+      return n;
+  }
+  return n;
+}
+
+std::string comment_lines(const std::string& header) {
+  std::string out;
+  std::size_t start = 0;
+  while (start < header.size()) {
+    const std::size_t end = header.find('\n', start);
+    const std::string line =
+        header.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    out += line.empty() ? "#\n" : "# " + line + "\n";
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+namespace {
+
+// A clip window or box {xmin, xmax, ymin, ymax[, zmin, zmax]} as students read it:
+// [xmin, xmax] × [ymin, ymax] (× [zmin, zmax]); nullopt for any other mapping.
+std::optional<std::string> box_text(const YAML::Node& at) {
+  std::string out;
+  std::size_t fields = 0;
+  for (const std::string axis : {"x", "y", "z"}) {
+    const YAML::Node low = at[axis + "min"], high = at[axis + "max"];
+    if (!low.IsDefined() && !high.IsDefined() && axis == "z") break;
+    if (!low.IsDefined() || !high.IsDefined() || !low.IsScalar() || !high.IsScalar())
+      return std::nullopt;
+    out += (out.empty() ? "[" : " × [") + low.Scalar() + ", " + high.Scalar() + "]";
+    fields += 2;
+  }
+  if (fields != at.size()) return std::nullopt;
+  return out;
+}
+
+// The value a placeholder names ({eye}, {perspective.fovy}, {points.0}), as students read it:
+// a number as written, a list of numbers as a point (1, 2, 3), a window as [0, 4] × [0, 3];
+// nullopt with `why` otherwise.
+std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given,
+                                             std::string& why) {
+  YAML::Node at = YAML::Clone(given);
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = name.find('.', start);
+    const std::string part =
+        name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (at.IsMap() && !part.empty() && at[part].IsDefined()) {
+      at = at[part];
+    } else if (at.IsSequence() && !part.empty() &&
+               part.find_first_not_of("0123456789") == std::string::npos && part.size() < 6 &&
+               std::stoul(part) < at.size()) {
+      at = at[std::stoul(part)];
+    } else {
+      why = "names no field of the given";
+      return std::nullopt;
+    }
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  if (at.IsScalar()) return at.Scalar();
+  if (at.IsSequence() && at.size() > 0) {
+    std::string out = "(";
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      if (!at[i].IsScalar()) {
+        why = "is a nested list, not a number or a point";
+        return std::nullopt;
+      }
+      out += (i ? ", " : "") + at[i].Scalar();
+    }
+    return out + ")";
+  }
+  if (at.IsMap())
+    if (std::optional<std::string> box = box_text(at)) return box;
+  why = at.IsMap() ? "is a mapping: name one of its fields ({" + name + ".…})" : "has no value";
+  return std::nullopt;
+}
+
+// Each `{name}` of a text, with its position; text without a closing brace is left alone.
+template <typename F>
+void for_each_placeholder(const std::string& text, F f) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t open = text.find('{', i);
+    if (open == std::string::npos) return;
+    const std::size_t close = text.find('}', open);
+    if (close == std::string::npos) return;
+    f(open, close, text.substr(open + 1, close - open - 1));
+    i = close + 1;
+  }
+}
+
+}  // namespace
+
+std::string fill_text(const std::string& text, const YAML::Node& given) {
+  std::string out;
+  std::size_t i = 0;
+  for_each_placeholder(text, [&](std::size_t open, std::size_t close, const std::string& name) {
+    std::string why;
+    const std::optional<std::string> v = placeholder_value(name, given, why);
+    out += text.substr(i, open - i) + (v ? *v : text.substr(open, close - open + 1));
+    i = close + 1;
+  });
+  return out + text.substr(std::min(i, text.size()));
+}
+
+std::optional<std::string> placeholder_error(const std::string& text, const YAML::Node& given) {
+  std::optional<std::string> error;
+  for_each_placeholder(text, [&](std::size_t, std::size_t, const std::string& name) {
+    std::string why;
+    if (!error && !placeholder_value(name, given, why))
+      error = "the placeholder {" + name + "} " + why;
+  });
+  return error;
+}
+
+std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant,
+                             const std::string& header) {
+  std::string out = comment_lines(header);
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    const std::string key = it->first.as<std::string>();
+    if (key == "variants") continue;
+    if (key != "problems") {
+      out += emit_scalar(key) + ": " + emit_flow(it->second) + "\n";
+      continue;
+    }
+    out += "problems:\n";
+    const YAML::Node problems = it->second;
+    for (std::size_t i = 0; i < problems.size(); ++i) {
+      const YAML::Node p = problems[i];
+      const ProblemSpec* spec = i < variant.problems.size() ? &variant.problems[i] : nullptr;
+      const YAML::Node given = spec ? spec->given_node : p["given"];
+      bool first = true;
+      for (auto f = p.begin(); f != p.end(); ++f) {
+        const std::string name = f->first.as<std::string>();
+        if (name == "vary" || name == "nice" || name == "difficulty") continue;
+        out += first ? "  - " : "    ";
+        first = false;
+        if (name == "given" && given.IsMap()) {
+          out += "given:\n";
+          for (auto g = given.begin(); g != given.end(); ++g)
+            out += "      " + emit_flow(g->first) + ": " + emit_flow(g->second) + "\n";
+        } else if (name == "text" && f->second.IsScalar()) {
+          out += "text: " + emit_scalar(fill_text(f->second.Scalar(), given), true) + "\n";
+        } else if (name == "text" && f->second.IsMap()) {
+          // Every language the set gives, each with the drawn values.
+          out += "text:\n";
+          for (auto l = f->second.begin(); l != f->second.end(); ++l)
+            out += "      " + emit_flow(l->first) + ": " +
+                   emit_scalar(l->second.IsScalar() ? fill_text(l->second.Scalar(), given) : "",
+                               true) +
+                   "\n";
+        } else {
+          out += emit_scalar(name) + ": " + emit_flow(f->second) + "\n";
+        }
+      }
+    }
+  }
+  return out;
+}
+
+std::string emit_answer_key(const ProblemSet& variant, const std::string& student,
+                            const std::string& header, std::vector<Diagnostic>* errors) {
+  std::string out = comment_lines(header);
+  out += "student: " + emit_scalar(student) + "\nanswers:\n";
+  for (const ProblemSpec& p : variant.problems) {
+    const ProblemResult r = solve_problem(p, variant.file, false);
+    if (r.error) {
+      if (errors) errors->push_back(*r.error);
+      continue;
+    }
+    out += "  " + emit_scalar(p.id) + ":\n";
+    for (const std::string& name : p.ask)
+      if (const Value* v = r.answers.find(name))
+        out += "    " + emit_scalar(name) + ": " + emit_flow(answer_node(*v)) + "\n";
+  }
+  return out;
+}
+
+}  // namespace frustum

@@ -1,0 +1,161 @@
+#include "solver/problem/vary_spec.hpp"
+
+#include "solver/problem/generate.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/util/suggest.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frustum {
+
+namespace {
+
+// More values than this in one range is a mistake (a step of 0.000001 over [0, 1000]).
+constexpr double kMaxRangeValues = 1e9;
+
+[[noreturn]] void fail_at(const YAML::Node& n, const std::string& file, const std::string& field,
+                          const std::string& message) {
+  throw InputError(Diagnostic{location_of(n, file), field, message});
+}
+
+bool has_key(const YAML::Node& n, const char* key) { return n.IsMap() && n[key].IsDefined(); }
+
+void check_keys(const YAML::Node& spec, const std::vector<std::string>& known, const std::string& file,
+                const std::string& field) {
+  for (auto it = spec.begin(); it != spec.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    if (std::find(known.begin(), known.end(), k) == known.end())
+      fail_at(it->first, file, field + "." + k, "unknown option" + did_you_mean(k, known));
+  }
+}
+
+// The number of values of a range, and its lower end and step.
+struct Range {
+  Exact lo, step;
+  std::uint64_t count = 0;
+};
+
+Range read_range(const YAML::Node& spec, const std::string& file, const std::string& field) {
+  check_keys(spec, {"range", "step"}, file, field);
+  const YAML::Node r = spec["range"];
+  if (!r.IsSequence() || r.size() != 2) fail_at(r, file, field + ".range", "expected [lo, hi]");
+  Range out;
+  out.lo = read_number(r[0], file, field + ".range[0]");
+  const Exact hi = read_number(r[1], file, field + ".range[1]");
+  out.step = spec["step"].IsDefined() ? read_number(spec["step"], file, field + ".step") : Exact(1);
+  if (exact_sign(out.step) <= 0) fail_at(spec["step"], file, field + ".step", "must be positive");
+  if (exact_sign(hi - out.lo) < 0) fail_at(r, file, field + ".range", "lo must not exceed hi");
+  const Exact q = canonical((hi - out.lo) / out.step);
+  double steps = 0;
+  if (GiNaC::is_a<GiNaC::numeric>(q) && GiNaC::ex_to<GiNaC::numeric>(q).is_rational()) {
+    const GiNaC::numeric nq = GiNaC::ex_to<GiNaC::numeric>(q);
+    const GiNaC::numeric whole = GiNaC::iquo(nq.numer(), nq.denom());
+    if (whole > GiNaC::numeric(static_cast<long>(kMaxRangeValues)))
+      fail_at(r, file, field + ".range", "more than 10⁹ values: use a larger step");
+    steps = static_cast<double>(whole.to_long());
+  } else {
+    steps = std::floor(to_double(q) + 1e-12);
+    if (!(steps < kMaxRangeValues)) fail_at(r, file, field + ".range", "more than 10⁹ values: use a larger step");
+  }
+  out.count = static_cast<std::uint64_t>(steps) + 1;
+  return out;
+}
+
+void check_spec(const YAML::Node& spec, const std::string& file, const std::string& field) {
+  if (has_key(spec, "range")) {
+    read_range(spec, file, field);
+  } else if (has_key(spec, "choices")) {
+    check_keys(spec, {"choices"}, file, field);
+    if (!spec["choices"].IsSequence() || spec["choices"].size() == 0)
+      fail_at(spec["choices"], file, field + ".choices", "expected a non-empty list of values");
+  } else if (has_key(spec, "each")) {
+    check_keys(spec, {"each", "count"}, file, field);
+    check_spec(spec["each"], file, field + ".each");
+    if (spec["count"].IsDefined()) {
+      const Exact c = read_number(spec["count"], file, field + ".count");
+      if (!GiNaC::is_a<GiNaC::numeric>(c) || !GiNaC::ex_to<GiNaC::numeric>(c).is_pos_integer() ||
+          exact_sign(c - 1000) > 0)
+        fail_at(spec["count"], file, field + ".count", "must be a whole number from 1 to 1000");
+    }
+  } else if (spec.IsSequence()) {
+    for (std::size_t i = 0; i < spec.size(); ++i) check_spec(spec[i], file, field + "[" + std::to_string(i) + "]");
+  } else if (spec.IsMap()) {
+    for (auto it = spec.begin(); it != spec.end(); ++it)
+      check_spec(it->second, file, field + "." + it->first.as<std::string>());
+  }
+}
+
+YAML::Node draw(const YAML::Node& spec, const YAML::Node& base, Rng& rng, const std::string& file,
+                const std::string& field) {
+  if (has_key(spec, "range")) {
+    const Range r = read_range(spec, file, field);
+    const auto k = static_cast<long>(rng.below(r.count));
+    return gen_number(Exact(r.lo + r.step * k));
+  }
+  if (has_key(spec, "choices")) return clone_node(spec["choices"][static_cast<std::size_t>(rng.below(spec["choices"].size()))]);
+  if (has_key(spec, "each")) {
+    std::size_t count = base.IsSequence() ? base.size() : 0;
+    if (spec["count"].IsDefined())
+      count = static_cast<std::size_t>(to_double(read_number(spec["count"], file, field + ".count")));
+    if (count == 0)
+      fail_at(spec, file, field, "`each` needs a list in `given` to vary, or a `count`");
+    YAML::Node out(YAML::NodeType::Sequence);
+    for (std::size_t i = 0; i < count; ++i)
+      out.push_back(draw(spec["each"], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file,
+                         field + ".each"));
+    out.SetStyle(YAML::EmitterStyle::Flow);
+    return out;
+  }
+  if (spec.IsSequence()) {
+    YAML::Node out(YAML::NodeType::Sequence);
+    for (std::size_t i = 0; i < spec.size(); ++i)
+      out.push_back(draw(spec[i], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file,
+                         field + "[" + std::to_string(i) + "]"));
+    out.SetStyle(YAML::EmitterStyle::Flow);
+    return out;
+  }
+  if (spec.IsMap()) {
+    YAML::Node out = base.IsMap() ? clone_node(base) : YAML::Node(YAML::NodeType::Map);
+    for (auto it = spec.begin(); it != spec.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      out[k] = draw(it->second, base.IsMap() ? base[k] : YAML::Node(), rng, file, field + "." + k);
+    }
+    return out;
+  }
+  return clone_node(spec);
+}
+
+}  // namespace
+
+YAML::Node clone_node(const YAML::Node& n) { return YAML::Clone(n); }
+
+bool vary_is_default(const YAML::Node& vary) {
+  return vary.IsDefined() && vary.IsScalar() && vary.Scalar() == "default";
+}
+
+void check_vary(const YAML::Node& vary, const KindInfo& kind, const std::string& file,
+                const std::string& field) {
+  if (vary_is_default(vary)) return;
+  if (!vary.IsMap())
+    fail_at(vary, file, field, "expected a mapping of given fields to {range}, {choices} or {each}, or `default`");
+  for (auto it = vary.begin(); it != vary.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    if (std::find(kind.given_fields.begin(), kind.given_fields.end(), k) == kind.given_fields.end())
+      fail_at(it->first, file, field + "." + k,
+              "not a given field of " + kind.name + did_you_mean(k, kind.given_fields));
+    check_spec(it->second, file, field + "." + k);
+  }
+}
+
+YAML::Node apply_vary(const YAML::Node& vary, const YAML::Node& base, Rng& rng, const std::string& file,
+                      const std::string& field) {
+  YAML::Node out = base.IsMap() ? clone_node(base) : YAML::Node(YAML::NodeType::Map);
+  for (auto it = vary.begin(); it != vary.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    out[k] = draw(it->second, base.IsMap() ? base[k] : YAML::Node(), rng, file, field + "." + k);
+  }
+  return out;
+}
+
+}  // namespace frustum

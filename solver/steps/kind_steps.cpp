@@ -1,0 +1,251 @@
+#include "solver/steps/kind_steps.hpp"
+
+#include <algorithm>
+
+#include "solver/geometry/polygon_normal.hpp"
+#include "solver/numeric/condition.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "solver/util/exact_format.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace frustum {
+
+std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
+                                          std::size_t size) {
+  const Value* v = student.find(name);
+  if (!v || v->exact.size() != size) return std::nullopt;
+  bool all_zero = true;
+  for (const Exact& e : v->exact) all_zero = all_zero && canonical(e).is_zero();
+  if (all_zero) return std::nullopt;
+  return v->exact;
+}
+
+void warn_condition(Derivation* steps, double kappa, const std::string& title, const std::string& what) {
+  if (!steps || !(kappa > kIllConditioned)) return;
+  steps->warn(title, what + " is ill-conditioned (" + digits_sentence(kappa) + ").");
+}
+
+namespace {
+
+std::vector<Eigen::Vector3d> to_doubles(const Polygon3<Exact>& p) {
+  std::vector<Eigen::Vector3d> out;
+  for (const Vec3<Exact>& v : p) out.push_back(to_double(v));
+  return out;
+}
+
+}  // namespace
+
+std::string point_name(const std::string& stem, std::size_t i) {
+  return stem + std::to_string(i);
+}
+
+Value plane_answer(const std::array<Exact, 4>& plane) {
+  Value v = Value::vector(std::vector<Exact>(plane.begin(), plane.end()));
+  v.display = plane_equation(plane[0], plane[1], plane[2], plane[3]);
+  return v;
+}
+
+std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
+                                                   const std::string& point, const std::string& step) {
+  if (canonical(d).is_zero()) return std::nullopt;
+  Answers answers;
+  answers.set("plane", plane_answer(paper_plane(n, canonical(-d))));
+  return Misconception{"constant on the wrong side",
+                       "Your constant d has the wrong sign. Here the plane is written a·x + b·y + c·z = d "
+                       "with d = n·" + point + "; a list [a, b, c, d] means the same form, not a·x + b·y + c·z + d = 0.",
+                       step, answers};
+}
+
+Vec3<Exact> unit(const Vec3<Exact>& n) {
+  const Exact len = canonical(norm(n));
+  Vec3<Exact> u;
+  for (int i = 0; i < 3; ++i) u(i) = canonical(n(i) / len);
+  return u;
+}
+
+Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps) {
+  const Vec3<Exact> u = unit(n);
+  if (steps) {
+    steps->add("Unit normal",
+               math("n̂ = n / ‖n‖,  ‖n‖ = √(nₓ² + n_y² + n_z²)",
+                    "\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
+                    "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
+               math("‖n‖ = ", "\\lVert\\mathbf{n}\\rVert = ") + exact(norm(n), true),
+               math("n̂ = ", "\\hat{\\mathbf{n}} = ") + vec(u, true));
+    steps->yields("unit_normal");
+  }
+  return u;
+}
+
+Polygon3<Exact> reversed_winding(const Polygon3<Exact>& p) {
+  Polygon3<Exact> out(p.rbegin(), p.rend());
+  if (!out.empty()) std::rotate(out.begin(), out.end() - 1, out.end());
+  return out;
+}
+
+Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::string& field,
+                                      Derivation* steps, bool left_handed) {
+  const PolygonAnalysis a = analyse_polygon(p);
+  if (a.degenerate)
+    throw DomainError(field, "the polygon is degenerate: its vertices are collinear or "
+                             "coincident, so it has no normal");
+  Vec3<Exact> n;
+  if (p.size() == 3) {
+    const Vec3<Exact> e0 = edge(p, 0), e1 = edge(p, 1);
+    n = left_handed ? Vec3<Exact>(e1.cross(e0)) : Vec3<Exact>(e0.cross(e1));
+    for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
+    if (steps) {
+      steps->add("Edge vectors",
+                 math("e₀ = p₁ − p₀,  e₁ = p₂ − p₁",
+                      "\\mathbf{e}_0 = \\mathbf{p}_1 - \\mathbf{p}_0,\\; \\mathbf{e}_1 = \\mathbf{p}_2 - \\mathbf{p}_1"),
+                 {}, math("e₀ = ", "\\mathbf{e}_0 = ") + vec(e0) + math(",  e₁ = ", ",\\; \\mathbf{e}_1 = ") + vec(e1));
+      if (left_handed)
+        steps->add("Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
+                   math("n = e₁ × e₀", "\\mathbf{n} = \\mathbf{e}_1 \\times \\mathbf{e}_0"),
+                   math("n = ", "\\mathbf{n} = ") + vec(e1) + math(" × ", " \\times ") + vec(e0),
+                   math("n = ", "\\mathbf{n} = ") + vec(n))
+            .note = "In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is "
+                    "the side of e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite "
+                    "normal, that of the mirror image.";
+      else
+        steps->add("Normal (n = e₀ × e₁, counter-clockwise = front)",
+                   math("n = e₀ × e₁", "\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
+                   math("n = ", "\\mathbf{n} = ") + vec(e0) + math(" × ", " \\times ") + vec(e1),
+                   math("n = ", "\\mathbf{n} = ") + vec(n));
+    }
+  } else {
+    n = newell_normal(p);
+    if (left_handed) n = -n;
+    for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
+    if (steps && left_handed)
+      steps->add(fmt::format("Normal of the {}-gon by Newell's method, left-handed", p.size()),
+                 math("n = −Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
+                      "\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times (\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
+                 {}, math("n = ", "\\mathbf{n} = ") + vec(n))
+          .note = "In left-handed coordinates the counter-clockwise side's normal is the right-handed "
+                  "sum with its sign changed (e₁ × e₀ for a triangle).";
+    else if (steps)
+      steps->add(fmt::format("Normal of the {}-gon by Newell's method", p.size()),
+                 math("n = Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
+                      "\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times (\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
+                 {}, math("n = ", "\\mathbf{n} = ") + vec(n))
+          .note = "Newell's method sums every edge pair, so it stays accurate when some edges "
+                  "are nearly parallel or nearly zero (where eᵢ × eᵢ₊₁ loses accuracy), and gives twice the "
+                  "vector area (the same direction as eᵢ × eᵢ₊₁ for a convex polygon).";
+  }
+  if (steps) {
+    for (std::size_t i : a.zero_edges)
+      steps->warn("Repeated vertex",
+                  fmt::format("e{} = p{} − p{} is the zero vector (a repeated vertex); the "
+                              "normal uses the other edges.",
+                              i, (i + 1) % p.size(), i));
+    if (a.min_sine < kNearParallelSine)
+      steps->warn("Nearly parallel edges",
+                  fmt::format("e{} and e{} are nearly parallel (sin θ ≈ {}); e × e loses about "
+                              "{:.0f} of double precision's 16 digits here, but this normal is "
+                              "computed exactly.",
+                              a.worst_pair, (a.worst_pair + 1) % p.size(),
+                              format_approx(a.min_sine), std::log10(a.condition)));
+    warn_condition(steps, normal_condition(to_doubles(p)), "Ill-conditioned normal",
+                   "The normal's direction");
+    if (!a.planar)
+      steps->warn("Non-planar polygon",
+                  fmt::format("vertex p{} is not in the plane of the others; the normal is the "
+                              "best-fit (Newell) direction.",
+                              a.off_plane_vertex));
+  }
+  return n;
+}
+
+std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d) {
+  std::array<Exact, 4> c = {canonical(n(0)), canonical(n(1)), canonical(n(2)), canonical(d)};
+  // Divide by the first non-zero coefficient's magnitude; if everything is then rational,
+  // clear denominators and common factors.
+  int first = 0;
+  while (first < 3 && c[first].is_zero()) ++first;
+  if (first == 3) return c;
+  const Exact lead = exact_sign(c[first]) < 0 ? Exact(-c[first]) : c[first];
+  std::array<Exact, 4> r;
+  for (int i = 0; i < 4; ++i) {
+    r[i] = canonical(c[i] / lead);
+    if (!GiNaC::is_a<GiNaC::numeric>(r[i]) || !GiNaC::ex_to<GiNaC::numeric>(r[i]).is_rational())
+      return c;
+  }
+  GiNaC::numeric denominators = 1, numerators = 0;
+  for (const Exact& x : r) {
+    const GiNaC::numeric q = GiNaC::ex_to<GiNaC::numeric>(x);
+    denominators = GiNaC::lcm(denominators, q.denom());
+  }
+  for (const Exact& x : r)
+    numerators = GiNaC::gcd(numerators, GiNaC::ex_to<GiNaC::numeric>(x * denominators).numer());
+  for (Exact& x : r) x = canonical(x * denominators / numerators);
+  return r;
+}
+
+}  // namespace frustum
+
+#include "solver/input/given_reader.hpp"
+
+namespace frustum {
+
+namespace {
+
+bool valid_edge_name(const std::string& s) {
+  return s.size() == 2 && s[0] != s[1] && std::string("ABC").find(s[0]) != std::string::npos &&
+         std::string("ABC").find(s[1]) != std::string::npos;
+}
+
+}  // namespace
+
+CrossOrder read_cross(GivenReader& r, const std::string& key, CrossOrder fallback) {
+  if (!r.has(key)) return fallback;
+  const std::vector<std::string> w = r.words(key, 2);
+  for (const std::string& s : w)
+    if (!valid_edge_name(s))
+      r.fail(key, "'" + s + "' is not an edge of triangle ABC (use AB, AC, BC, BA, CA or CB)");
+  return {w[0], w[1]};
+}
+
+Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>& abc) {
+  const Vec3<Exact>& from = abc[static_cast<std::size_t>(name[0] - 'A')];
+  const Vec3<Exact>& to = abc[static_cast<std::size_t>(name[1] - 'A')];
+  return to - from;
+}
+
+void refuse_edge_on_triangle(const std::string& field) {
+  throw DomainError(field, "the triangle is edge-on (c = 0 in ax + by + cz = d): its plane has no single z "
+                           "above a pixel");
+}
+
+Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const CrossOrder& order,
+                                    const std::string& field, Derivation* steps) {
+  const Vec3<Exact> u = named_edge(order.first, abc), v = named_edge(order.second, abc);
+  Vec3<Exact> n = u.cross(v);
+  for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
+  if (canonical(n.dot(n)).is_zero())
+    throw DomainError(field, "the points are collinear (" + order.first + " × " + order.second +
+                                 " = 0): the triangle has no normal");
+  if (steps) {
+    auto edge_text = [&](const std::string& e, const Vec3<Exact>& value) {
+      const std::string from(1, e[0]), to(1, e[1]);
+      return math(e + " = " + to + " − " + from + " = ",
+                  "\\overrightarrow{" + e + "} = " + to + " - " + from + " = ") + vec(value);
+    };
+    steps->add("Edge vectors", {}, {}, edge_text(order.first, u) + math(",  ", ",\\; ") +
+                                           edge_text(order.second, v));
+    steps->add("Normal",
+               math("n = " + order.first + " × " + order.second,
+                    "\\mathbf{n} = \\overrightarrow{" + order.first + "} \\times \\overrightarrow{" +
+                        order.second + "}"),
+               math("n = ", "\\mathbf{n} = ") + vec(u) + math(" × ", " \\times ") + vec(v),
+               math("n = ", "\\mathbf{n} = ") + vec(n));
+    warn_condition(steps, normal_condition(to_doubles({abc[0], abc[1], abc[2]})),
+                   "Ill-conditioned normal", "The normal's direction");
+  }
+  return n;
+}
+
+}  // namespace frustum

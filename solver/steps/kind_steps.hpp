@@ -1,0 +1,87 @@
+// Derivation pieces several kinds share: a polygon's normal with its warnings, and a plane
+// scaled to the form written on paper.
+#pragma once
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/core/matrix.hpp"
+#include "solver/problem/kind.hpp"
+
+#include <array>
+#include <optional>
+#include "solver/derivation/value.hpp"
+#include <string>
+
+namespace frustum {
+
+// Normal of a polygon, counter-clockwise = front: e_0 × e_1 for a triangle (seed 003),
+// Newell's method for more vertices. Records the steps and warnings (degenerate, nearly
+// parallel or zero edges, non-planar) when `steps` is set. Throws DomainError on a
+// degenerate polygon, naming `field`.
+// The polygon listed the other way round from p₀ (p₀, pₙ₋₁, …, p₁): its right-handed normal is
+// the left-handed front normal of the original (the numeric paths compute it so).
+Polygon3<Exact> reversed_winding(const Polygon3<Exact>& p);
+
+// `left_handed`: the coordinates are left-handed, so the front (counter-clockwise) side's
+// normal is e₁ × e₀ (Newell's sum negated), and the step says how it relates to e₀ × e₁.
+Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::string& field,
+                                      Derivation* steps, bool left_handed = false);
+
+// The plane n·p = d scaled the way a teacher writes it: integer coefficients without a common
+// factor when possible (x + y − z = −6), the orientation of n kept.
+std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d);
+
+// A plane as an answer: [a, b, c, d] of ax + by + cz = d, shown as its equation.
+Value plane_answer(const std::array<Exact, 4>& plane);
+
+// The named mistake of a plane's constant on the wrong side (the form ax + by + cz + d = 0 taken
+// for ax + by + cz = d, or a list [a, b, c, d] written in it): the plane n·p = −d, scaled as on
+// paper. Nothing when d = 0, where both forms are the same plane. `point` names the point the
+// plane passes through (d = n·A); `step` is the derivation step where it goes wrong.
+std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
+                                                   const std::string& point, const std::string& step);
+
+// Unit vector n/|n| (exact, canonical).
+Vec3<Exact> unit(const Vec3<Exact>& n);
+
+// n̂ = n / ‖n‖ with its step (‖n‖ shown exactly, 9√3 ≈ 15.59), yielding "unit_normal".
+Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps);
+
+// A student's earlier answer usable for error carried forward: present, exact, of the given
+// number of components, and not all zero (a zero normal makes later parts trivial).
+std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
+                                          std::size_t size);
+
+// A warning that an answer is ill-conditioned (κ above kIllConditioned in condition.hpp):
+// the condition estimate and the digits float, double and long double would keep.
+void warn_condition(Derivation* steps, double kappa, const std::string& title, const std::string& what);
+
+// "p0, p1, p2" style names.
+std::string point_name(const std::string& stem, std::size_t i);
+
+}  // namespace frustum
+
+namespace frustum {
+
+class GivenReader;
+
+// Which edge vectors a normal is the cross product of, as in seed 001's AC × AB.
+struct CrossOrder {
+  std::string first = "AB";
+  std::string second = "AC";
+};
+
+// Reads `cross: [AC, AB]` (each an ordered pair of distinct vertex names A, B, C).
+CrossOrder read_cross(GivenReader& r, const std::string& key, CrossOrder fallback);
+
+// The edge vector XY = Y − X of triangle ABC.
+Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>& abc);
+
+// n = first × second with its steps ("AC = C − A = (0, 3, 3)" ...).
+// Refuses a triangle whose plane is parallel to the z axis (c = 0 in ax + by + cz = d): no single
+// depth above a pixel. Shared by the exact and numeric solves of depth_at_pixel.
+[[noreturn]] void refuse_edge_on_triangle(const std::string& field);
+
+Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const CrossOrder& order,
+                                    const std::string& field, Derivation* steps);
+
+}  // namespace frustum

@@ -1,0 +1,214 @@
+#include "solver/steps/transform_steps.hpp"
+
+#include <fmt/format.h>
+
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/steps/viewing_steps.hpp"
+
+namespace frustum {
+
+namespace {
+
+// The inverse of one step from its kind: translations negate, scalings take reciprocals,
+// rotations transpose; only a shear (rational entries) is inverted by elimination. The
+// composite's inverse is then the product in reverse order, which never asks GiNaC to
+// invert a matrix of nested radicals.
+void invert_step(TransformStep& t, const std::string& kind) {
+  const int size = static_cast<int>(t.matrix.rows());
+  const int n = size - 1;
+  if (kind == "translate") {
+    t.inverse = t.matrix;
+    for (int i = 0; i < n; ++i) t.inverse(i, n) = -t.matrix(i, n);
+  } else if (kind == "scale") {
+    t.inverse = MatX<Exact>::Identity(size, size);
+    for (int i = 0; i < n; ++i) {
+      t.det *= t.matrix(i, i);
+      if (t.matrix(i, i).is_zero()) {
+        t.inverse.resize(0, 0);
+        return;
+      }
+      t.inverse(i, i) = 1 / t.matrix(i, i);
+    }
+  } else if (kind == "shear") {
+    t.det = canonical(t.matrix.determinant());
+    if (t.det.is_zero()) {
+      t.inverse.resize(0, 0);
+      return;
+    }
+    t.inverse = t.matrix.inverse();
+  } else {  // rotations are orthogonal
+    t.inverse = t.matrix.transpose();
+  }
+  t.inverse = canonical(t.inverse);
+}
+
+// c = cos θ and s = sin θ of a rotation, as substituted into its matrix.
+MathText cos_sin(const Exact& radians, AngleUnit unit) {
+  return math("θ = ", "\\theta = ") + angle_text(radians, unit) + math(",  c = cos θ = ", ",\\; c = \\cos\\theta = ") +
+         exact(GiNaC::cos(radians)) + math(",  s = sin θ = ", ",\\; s = \\sin\\theta = ") + exact(GiNaC::sin(radians));
+}
+
+// R_x, R_y or R_z in symbols (c = cos θ, s = sin θ), as in the lecture's homogeneous matrices.
+MathText axis_rotation_formula(int axis) {
+  static const char* const unicode[] = {"R_x = [1 0 0 0; 0 c −s 0; 0 s c 0; 0 0 0 1]",
+                                        "R_y = [c 0 s 0; 0 1 0 0; −s 0 c 0; 0 0 0 1]",
+                                        "R_z = [c −s 0 0; s c 0 0; 0 0 1 0; 0 0 0 1]"};
+  static const char* const latex[] = {
+      "R_x(\\theta) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ 0 & c & -s & 0 \\\\ 0 & s & c & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
+      "R_y(\\theta) = \\begin{bmatrix} c & 0 & s & 0 \\\\ 0 & 1 & 0 & 0 \\\\ -s & 0 & c & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
+      "R_z(\\theta) = \\begin{bmatrix} c & -s & 0 & 0 \\\\ s & c & 0 & 0 \\\\ 0 & 0 & 1 & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"};
+  return math(unicode[axis], latex[axis]);
+}
+
+// Rotation by θ about the unit axis (x, y, z): Rodrigues' formula c·I + s·[u]ₓ + (1 − c)·u·uᵀ
+// written entry by entry.
+MathText axis_angle_formula() {
+  return math("R = [x²(1−c)+c, xy(1−c)−zs, xz(1−c)+ys, 0; yx(1−c)+zs, y²(1−c)+c, yz(1−c)−xs, 0; "
+              "xz(1−c)−ys, yz(1−c)+xs, z²(1−c)+c, 0; 0, 0, 0, 1]",
+              "R = \\begin{bmatrix} x^2(1-c)+c & xy(1-c)-zs & xz(1-c)+ys & 0 \\\\ "
+              "yx(1-c)+zs & y^2(1-c)+c & yz(1-c)-xs & 0 \\\\ xz(1-c)-ys & yz(1-c)+xs & z^2(1-c)+c & 0 \\\\ "
+              "0 & 0 & 0 & 1 \\end{bmatrix}");
+}
+
+}  // namespace
+
+TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c) {
+  const std::vector<std::string> keys = s.keys();
+  if (keys.size() != 1)
+    s.fail(keys.empty() ? "translate" : keys[1],
+           "each step is one of translate, scale, rotate_x, rotate_y, rotate_z, rotate, shear");
+  const std::string& k = keys[0];
+  TransformStep t;
+  const std::size_t n = static_cast<std::size_t>(dim);
+  if (k == "translate") {
+    const std::vector<Exact> v = s.numbers(k, n);
+    t = {"translate " + vec(v).unicode, translate(v), ""};
+  } else if (k == "scale") {
+    std::vector<Exact> v = s.is_list(k) ? s.numbers(k, n) : std::vector<Exact>(n, s.number(k));
+    t = {"scale " + vec(v).unicode, scale(v), ""};
+    for (const Exact& x : v)
+      if (x.is_zero()) t.note = "a zero scale factor flattens space: the composite has no inverse";
+  } else if (k == "rotate_x" || k == "rotate_y" || k == "rotate_z") {
+    if (dim != 3) s.fail(k, "rotations about x, y, z are 3D; in 2D use rotate");
+    const Exact a = read_angle(s, k, c.angles);
+    t = {k + " " + angle_text(a, c.angles).unicode, rotate_axis_index(k[7] - 'x', a), ""};
+    if (dim == 3) {
+      t.formula = axis_rotation_formula(k[7] - 'x');
+      t.substitution = cos_sin(a, c.angles);
+    }
+    t.angle = a;
+    t.rotation = [axis = k[7] - 'x'](const Exact& b) { return rotate_axis_index(axis, b); };
+  } else if (k == "rotate") {
+    if (dim == 2) {
+      const Exact a = read_angle(s, k, c.angles);
+      t = {"rotate " + angle_text(a, c.angles).unicode, rotate_2d(a), ""};
+      t.formula = math("R = [c −s 0; s c 0; 0 0 1]",
+                       "R(\\theta) = \\begin{bmatrix} c & -s & 0 \\\\ s & c & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}");
+      t.substitution = cos_sin(a, c.angles);
+      t.angle = a;
+      t.rotation = [](const Exact& b) { return rotate_2d(b); };
+    } else {
+      GivenReader r = s.child(k, {"axis", "angle"});
+      const Vec3<Exact> axis = r.vector<3>("axis");
+      if (canonical(axis.dot(axis)).is_zero()) r.fail("axis", "the zero vector is not an axis");
+      const Exact a = read_angle(r, "angle", c.angles);
+      r.finish();
+      const Vec3<Exact> u = unit(axis);
+      t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
+           rotate_about(u, a), ""};
+      t.formula = axis_angle_formula();
+      t.substitution = math("(x, y, z) = ", "(x, y, z) = ") + vec(u, true) + math(",  ", ",\\; ") + cos_sin(a, c.angles) +
+                       math(",  1 − c = ", ",\\; 1 - c = ") + exact(canonical(1 - GiNaC::cos(a)));
+      t.note = "Rodrigues' formula R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, written entry by entry, for the unit axis "
+               "u = (x, y, z).";
+      t.angle = a;
+      t.rotation = [u](const Exact& b) { return rotate_about(u, b); };
+      if (!canonical(axis.dot(axis) - 1).is_zero())
+        t.note += " The axis is normalised first: (x, y, z) = " + vec(axis).unicode + " / " + exact(norm(axis)).unicode + ".";
+    }
+  } else if (k == "shear") {
+    MatX<Exact> h = MatX<Exact>::Zero(dim, dim);
+    if (dim == 2) {
+      const std::vector<Exact> v = s.numbers(k, 2);
+      h(0, 1) = v[0];
+      h(1, 0) = v[1];
+      t.title = "shear x′ = x + " + exact(v[0]).unicode + "·y, y′ = y + " + exact(v[1]).unicode + "·x";
+    } else {
+      GivenReader r = s.child(k, {"xy", "xz", "yx", "yz", "zx", "zy"});
+      const std::string names = "xyz";
+      for (const std::string f : {"xy", "xz", "yx", "yz", "zx", "zy"})
+        if (r.has(f)) h(static_cast<int>(names.find(f[0])), static_cast<int>(names.find(f[1]))) = r.number(f);
+      r.finish();
+      t.title = "shear (h_ij adds coordinate j to coordinate i)";
+    }
+    t.matrix = shear(h);
+  } else {
+    s.fail(k, "unknown step: use translate, scale, rotate_x, rotate_y, rotate_z, rotate or shear");
+  }
+  s.finish();
+  t.matrix = canonical(t.matrix);
+  invert_step(t, k);
+  return t;
+}
+
+std::string wrong_order_feedback(Api api) {
+  return api == Api::DirectX
+             ? "You multiplied the steps in reverse order (…·A₂·A₁): with DirectX's row vectors, "
+               "P′ = P·M, the step applied first stands leftmost, M = A₁·A₂·…"
+             : "You multiplied the steps in the order they are applied (A₁·A₂·…): with column "
+               "vectors the step applied first stands rightmost, M = …·A₂·A₁ (as in P′ = A₃A₂A₁P).";
+}
+
+std::vector<TransformStep> read_transform_steps(GivenReader& r, const std::string& key, int dim,
+                                                const Conventions& c) {
+  std::vector<TransformStep> out;
+  const std::size_t n = r.list_size(key, 1, kMaxTransformSteps);
+  for (std::size_t i = 0; i < n; ++i) {
+    GivenReader s = r.item(
+        key, i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
+    out.push_back(read_transform_step(s, dim, c));
+  }
+  return out;
+}
+
+MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim, Api api,
+                               const std::string& name, const std::string& title,
+                               Derivation* derivation) {
+  const bool rows = api == Api::DirectX;
+  MatX<Exact> m = MatX<Exact>::Identity(dim + 1, dim + 1);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const TransformStep& s = steps[i];
+    m = canonical(MatX<Exact>(s.matrix * m));
+    if (derivation) {
+      // Row vectors: the symbolic forms are the column-vector ones, so only the values show.
+      Step& st = derivation->add(
+          fmt::format("A{}: {}", i + 1, s.title), rows ? MathText{} : s.formula, s.substitution,
+          math(fmt::format("A{} = ", i + 1), fmt::format("A_{{{}}} = ", i + 1)) +
+              matrix_text(paper_form(s.matrix, api)));
+      st.note = s.note;
+    }
+  }
+  if (derivation) {
+    // Column vectors: M = Aₙ·…·A₁; DirectX's row vectors: M = A₁·…·Aₙ (each Aᵢ transposed).
+    std::string order, order_latex;
+    for (std::size_t k = 1; k <= steps.size(); ++k) {
+      const std::size_t i = rows ? k : steps.size() + 1 - k;
+      order += fmt::format("{}A{}", k == 1 ? "" : "·", i);
+      order_latex += fmt::format("A_{{{}}}", i);
+    }
+    derivation
+        ->add(title, math(name + " = " + order, name + " = " + order_latex), {},
+              math(name + " = ") + matrix_text(paper_form(m, api)))
+        .note =
+        rows
+            ? "DirectX multiplies row vectors: P′ = P·M, so the step applied first stands leftmost "
+              "and every matrix is the transpose of its column-vector form (a translation in the "
+              "bottom row, as XMMatrixTranslation builds it)."
+            : "Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = "
+              "A₃A₂A₁P).";
+  }
+  return m;
+}
+
+}  // namespace frustum
