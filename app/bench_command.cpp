@@ -1,15 +1,14 @@
 // `frustum bench accuracy [-o DIR]`: speed against error of every numeric path and backend,
 // on generated well-conditioned problems and on the hard-case suite, plus the hard-case
 // studies. Writes DIR/accuracy_results.md and DIR/accuracy_plot.svg and prints the table.
-#include "app/commands.hpp"
-
-#include "solver/accuracy/accuracy.hpp"
-#include "solver/accuracy/hard_cases.hpp"
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+
+#include "app/commands.hpp"
+#include "solver/accuracy/accuracy.hpp"
+#include "solver/accuracy/hard_cases.hpp"
 
 namespace frustum::app {
 
@@ -51,11 +50,13 @@ bool write_file(const std::filesystem::path& path, const std::string& text, cons
 
 }  // namespace
 
-int run_bench_accuracy(const std::string& out_dir, const std::string& hard_dir, int cases, const Output& o) {
+int run_bench_accuracy(const std::string& out_dir, const std::string& hard_dir, int cases,
+                       const Output& o) {
   std::vector<bench::AccuracyRow> rows;
   for (const std::string& kind : bench::generated_kinds()) {
     const ProblemSet set = bench::generated_problems(kind, cases, kBenchSeed);
-    for (const Diagnostic& d : set.all_errors()) o.err << "generated " << kind << ": " << d.format() << "\n";
+    for (const Diagnostic& d : set.all_errors())
+      o.err << "generated " << kind << ": " << d.format() << "\n";
     const std::vector<bench::AccuracyRow> r = bench::measure(set, "generated");
     rows.insert(rows.end(), r.begin(), r.end());
   }
@@ -74,9 +75,13 @@ int run_bench_accuracy(const std::string& out_dir, const std::string& hard_dir, 
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   const bool ok = write_file(fs::path(out_dir) / "accuracy_results.md", report, o) &&
-                  write_file(fs::path(out_dir) / "accuracy_plot.svg", bench::speed_error_svg(rows, "generated"), o) &&
-                  write_file(fs::path(out_dir) / "accuracy_plot_hard.svg", bench::speed_error_svg(rows, "hard"), o);
-  if (ok) o.err << "wrote " << out_dir << "/accuracy_results.md, accuracy_plot.svg, accuracy_plot_hard.svg\n";
+                  write_file(fs::path(out_dir) / "accuracy_plot.svg",
+                             bench::speed_error_svg(rows, "generated"), o) &&
+                  write_file(fs::path(out_dir) / "accuracy_plot_hard.svg",
+                             bench::speed_error_svg(rows, "hard"), o);
+  if (ok)
+    o.err << "wrote " << out_dir
+          << "/accuracy_results.md, accuracy_plot.svg, accuracy_plot_hard.svg\n";
   return ok && errors.empty() ? 0 : 1;
 }
 

@@ -1,15 +1,15 @@
 #include "app/commands.hpp"
 
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+#include <vector>
+
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_precision.hpp"
 #include "solver/problem/solve_set.hpp"
-
-#include <algorithm>
-#include <filesystem>
-#include <ostream>
-#include <vector>
 
 namespace frustum::app {
 
@@ -31,8 +31,9 @@ std::vector<std::string> set_files(const std::string& path) {
 }
 
 bool failed(const SetResult& r) {
-  return !r.errors.empty() || std::any_of(r.problems.begin(), r.problems.end(),
-                                          [](const ProblemResult& p) { return p.error.has_value(); });
+  return !r.errors.empty() ||
+         std::any_of(r.problems.begin(), r.problems.end(),
+                     [](const ProblemResult& p) { return p.error.has_value(); });
 }
 
 }  // namespace
@@ -51,11 +52,21 @@ int run_solve(const std::string& path, const std::optional<std::string>& id, For
                                        : solve_set(load_problem_set(file), true, id);
     any_failed = any_failed || failed(result);
     switch (format) {
-      case Format::Json: sets.push_back(render_json(result, lang)); break;
-      case Format::Markdown: o.out << render_markdown(result, lang); break;
-      case Format::Html: o.out << render_html(result, lang); break;
-      case Format::Latex: o.out << render_latex(result, lang); break;
-      case Format::Text: o.out << render_text(result, TextStyle{o.color, lang}); break;
+      case Format::Json:
+        sets.push_back(render_json(result, lang));
+        break;
+      case Format::Markdown:
+        o.out << render_markdown(result, lang);
+        break;
+      case Format::Html:
+        o.out << render_html(result, lang);
+        break;
+      case Format::Latex:
+        o.out << render_latex(result, lang);
+        break;
+      case Format::Text:
+        o.out << render_text(result, TextStyle{o.color, lang});
+        break;
     }
     if (format != Format::Text)
       for (const ProblemResult& p : result.problems)

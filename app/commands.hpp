@@ -1,14 +1,14 @@
 // The subcommands of `frustum`: each maps its options to library calls and prints.
 #pragma once
 
-#include "solver/derivation/i18n.hpp"
-#include "solver/numeric/precision.hpp"
-
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "solver/derivation/i18n.hpp"
+#include "solver/numeric/precision.hpp"
 
 namespace frustum::app {
 
@@ -17,13 +17,14 @@ enum class Format { Text, Markdown, Json, Html, Latex };
 struct Output {
   std::ostream& out;
   std::ostream& err;
-  bool color;            // stdout is a terminal
+  bool color;             // stdout is a terminal
   bool progress = false;  // stderr is a terminal: progress bars
 };
 
 // Exit status: 0 all good, 1 some problem or answer had an error (the rest is still printed).
 int run_solve(const std::string& set, const std::optional<std::string>& id, Format format,
-              const Output& o, std::optional<Precision> precision = std::nullopt, Lang lang = Lang::En);
+              const Output& o, std::optional<Precision> precision = std::nullopt,
+              Lang lang = Lang::En);
 int run_check(const std::string& set, const Output& o);
 // frustum grade (app/grade_command.cpp): `answers` is one answers file, a directory of them, or
 // a CSV roster (a batch, written under out_dir).
@@ -32,15 +33,16 @@ struct GradeOptions {
   std::string answers;
   Format format = Format::Text;
   Lang lang = Lang::En;
-  std::optional<std::string> out_dir;     // batch outputs (default "grades")
-  double timeout = 10;                    // seconds per submission in a batch
-  std::size_t jobs = 0;                   // batch: child processes at once (0: one per core)
-  std::optional<std::string> gradescope;  // single: results.json
+  std::optional<std::string> out_dir;       // batch outputs (default "grades")
+  double timeout = 10;                      // seconds per submission in a batch
+  std::size_t jobs = 0;                     // batch: child processes at once (0: one per core)
+  std::optional<std::string> gradescope;    // single: results.json
   std::optional<std::string> prairielearn;  // single: PrairieLearn's external-grader results.json
-  std::optional<std::string> html;        // single: feedback page
-  std::optional<std::string> markdown;    // single: feedback Markdown
-  std::optional<std::string> variants;    // --variants DIR: the sets `frustum generate` wrote
-  std::optional<std::string> roster;      // --roster FILE: whose each file is; the class `generate --roster` drew
+  std::optional<std::string> html;          // single: feedback page
+  std::optional<std::string> markdown;      // single: feedback Markdown
+  std::optional<std::string> variants;      // --variants DIR: the sets `frustum generate` wrote
+  std::optional<std::string>
+      roster;  // --roster FILE: whose each file is; the class `generate --roster` drew
 };
 int run_grade(const GradeOptions& options, const Output& o);
 int run_kinds(const Output& o);
@@ -64,11 +66,11 @@ int run_generate(const GenerateCommand& options, const Output& o);
 struct ExportOptions {
   std::string format;
   std::string input;
-  std::string out;                          // a directory (prairielearn, qti) or a file
-  int count = 1;                            // variants drawn
+  std::string out;  // a directory (prairielearn, qti) or a file
+  int count = 1;    // variants drawn
   std::uint64_t seed = 1;
-  std::string assignment = "Frustum";       // the gradebook column
-  bool sis_login = false;                   // canvas-grades: ids are SIS Login IDs
+  std::string assignment = "Frustum";  // the gradebook column
+  bool sis_login = false;              // canvas-grades: ids are SIS Login IDs
   std::string image = "frustum-prairielearn";
   Lang lang = Lang::En;  // the questions' texts (the set's own where not given)
 };
@@ -76,18 +78,19 @@ int run_export(const ExportOptions& options, const Output& o);
 
 // frustum render (app/render_command.cpp).
 struct RenderOptions {
-  std::string file;                            // scene file or problem set
-  std::string output;                          // PNG
-  std::optional<std::string> depth;            // depth PNG
-  std::optional<std::pair<int, int>> size;     // --size WxH
-  std::optional<std::string> id;               // the render problem of a set
-  std::optional<std::string> method;           // zbuffer | scanline
+  std::string file;                         // scene file or problem set
+  std::string output;                       // PNG
+  std::optional<std::string> depth;         // depth PNG
+  std::optional<std::pair<int, int>> size;  // --size WxH
+  std::optional<std::string> id;            // the render problem of a set
+  std::optional<std::string> method;        // zbuffer | scanline
 };
 int run_render(const RenderOptions& options, const Output& o);
 // `frustum bench accuracy`: speed against error of every numeric path and backend, on generated
 // and hard cases (every *.yaml in hard_dir); writes accuracy_results.md and the plots into out_dir
 // (bench_command.cpp).
-int run_bench_accuracy(const std::string& out_dir, const std::string& hard_dir, int cases, const Output& o);
+int run_bench_accuracy(const std::string& out_dir, const std::string& hard_dir, int cases,
+                       const Output& o);
 // `frustum draw`: an SVG picture of one problem (hidden lines, painter vs z-buffer); written
 // to `output`, or to o.out when it is empty or "-". `raster` is the painter/z-buffer size.
 int run_draw(const std::string& set, const std::string& id, const std::string& output, int raster,

@@ -1,14 +1,13 @@
 // `frustum draw SET.yaml --id ID [-o FILE.svg] [--raster N]`: the picture of one problem.
-#include "app/commands.hpp"
+#include <fstream>
+#include <ostream>
 
+#include "app/commands.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/pictures.hpp"
-
-#include <fstream>
-#include <ostream>
 
 namespace frustum::app {
 
@@ -23,8 +22,8 @@ std::string drawable_kinds() {
 
 }  // namespace
 
-int run_draw(const std::string& set_file, const std::string& id, const std::string& output, int raster,
-             const Output& o) {
+int run_draw(const std::string& set_file, const std::string& id, const std::string& output,
+             int raster, const Output& o) {
   const ProblemSet set = load_problem_set(set_file);
   for (const Diagnostic& d : set.errors) o.err << d.format() << "\n";
   const ProblemSpec* spec = set.find(id);
@@ -55,7 +54,9 @@ int run_draw(const std::string& set_file, const std::string& id, const std::stri
     options.raster = raster;
     picture = draw_picture(spec->info->drawable(spec->given), options);
   } catch (const DomainError& e) {
-    o.err << GivenReader(spec->given_node, set.file, spec->field + ".given", {}).locate(e.field(), e.what()).format()
+    o.err << GivenReader(spec->given_node, set.file, spec->field + ".given", {})
+                 .locate(e.field(), e.what())
+                 .format()
           << "\n";
     return 1;
   }

@@ -15,8 +15,8 @@
 #include "grader/export_prairielearn.hpp"
 #include "grader/export_qti.hpp"
 #include "grader/quiz_items.hpp"
-#include "solver/problem/variants.hpp"
 #include "solver/input/yaml_document.hpp"
+#include "solver/problem/variants.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum::app {

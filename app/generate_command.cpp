@@ -13,10 +13,10 @@
 #include "app/variant_files.hpp"
 #include "grader/atomic_file.hpp"
 #include "grader/paper.hpp"
+#include "solver/input/yaml_document.hpp"
 #include "solver/problem/rng.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
-#include "solver/input/yaml_document.hpp"
 
 namespace frustum::app {
 
@@ -160,10 +160,11 @@ int run_generate(const GenerateCommand& g, const Output& o) {
                                   source, who, seed, set_file, redraw_note)) +
         body;
     std::vector<Diagnostic> unsolved;
-    const std::string key_text =
-        emit_answer_key(v.variant, v.student,
-                        fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed), &unsolved);
-    if (!unsolved.empty()) {  // a key without the problem would be a lost result: nothing is written
+    const std::string key_text = emit_answer_key(
+        v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed),
+        &unsolved);
+    if (!unsolved
+             .empty()) {  // a key without the problem would be a lost result: nothing is written
       for (const Diagnostic& d : unsolved) o.err << v.name << ": " << d.format() << "\n";
       status = 1;
       return;

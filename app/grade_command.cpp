@@ -1,6 +1,12 @@
 // `frustum grade SET ANSWERS`: one answers file (text or JSON report, optional feedback files),
 // or a class — a directory of answer files or a CSV roster — graded into a directory of
 // outputs with a progress bar on a terminal.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <map>
+#include <ostream>
+
 #include "app/commands.hpp"
 #include "app/variant_files.hpp"
 #include "grader/atomic_file.hpp"
@@ -9,15 +15,9 @@
 #include "grader/gradescope.hpp"
 #include "grader/prairielearn.hpp"
 #include "grader/report.hpp"
-#include "solver/problem/variants.hpp"
 #include "solver/input/yaml_emit.hpp"
+#include "solver/problem/variants.hpp"
 #include "solver/util/diagnostic.hpp"
-
-#include <fmt/format.h>
-
-#include <filesystem>
-#include <map>
-#include <ostream>
 
 namespace frustum::app {
 
@@ -34,7 +34,8 @@ ClassVariants class_variants(const ProblemSet& set, const std::vector<std::strin
 }
 
 // With --roster: the class's variants, or false after printing why the roster cannot be read.
-bool read_class(const ProblemSet& set, const GradeOptions& g, const Output& o, std::optional<ClassVariants>& out) {
+bool read_class(const ProblemSet& set, const GradeOptions& g, const Output& o,
+                std::optional<ClassVariants>& out) {
   if (!g.roster) return true;
   try {
     out = class_variants(set, read_roster(*g.roster));
@@ -53,7 +54,8 @@ ProblemSet refused(const ProblemSet& set, const std::string& where, const std::s
 }
 
 const char* kRedrawHint =
-    "grade the class against the files `frustum generate -o DIR` wrote (--variants DIR) or against the roster it "
+    "grade the class against the files `frustum generate -o DIR` wrote (--variants DIR) or against "
+    "the roster it "
     "was generated from (--roster ROSTER)";
 
 // Grading a class of a varying set without --variants or --roster is safe only when no student
@@ -71,10 +73,12 @@ std::string redraw_risk(const ProblemSet& set, const std::vector<BatchEntry>& en
       if (!problem_varies(set, set.problems[i]) || p.error) continue;
       const auto [it, fresh] = first.emplace(p.id + "\x1f" + emit_flow(p.given_node), e.student);
       if (!fresh && it->second != e.student)
-        return fmt::format("the variants of {} and {} drawn from their ids share problem {}: if the class was "
-                           "generated with `frustum generate --roster`, students were drawn again and which depends "
-                           "on the roster, so no one is graded against a guess: {}",
-                           it->second, e.student, p.id, kRedrawHint);
+        return fmt::format(
+            "the variants of {} and {} drawn from their ids share problem {}: if the class was "
+            "generated with `frustum generate --roster`, students were drawn again and which "
+            "depends "
+            "on the roster, so no one is graded against a guess: {}",
+            it->second, e.student, p.id, kRedrawHint);
     }
   }
   return "";
@@ -83,15 +87,17 @@ std::string redraw_risk(const ProblemSet& set, const std::vector<BatchEntry>& en
 // The set a student is graded against: with --variants, the file `frustum generate` wrote for
 // them; with --roster, their variant in the class drawn from that roster; otherwise their own
 // variant when the set varies.
-ProblemSet set_for_student(const ProblemSet& set, const GradeOptions& g, const ClassVariants* roster,
-                           const std::string& student, std::string& variant) {
+ProblemSet set_for_student(const ProblemSet& set, const GradeOptions& g,
+                           const ClassVariants* roster, const std::string& student,
+                           std::string& variant) {
   if (g.variants) {
     const std::string file = variant_file(*g.variants, set.file, variant_name(student));
     std::error_code ec;
     if (student.empty() || !std::filesystem::is_regular_file(file, ec))
       return refused(set, file,
-                     student.empty() ? "the answers need `student:` to find the student's generated set"
-                                     : "no generated set for student " + student + " in " + *g.variants);
+                     student.empty()
+                         ? "the answers need `student:` to find the student's generated set"
+                         : "no generated set for student " + student + " in " + *g.variants);
     variant = "graded against " + file;
     return load_problem_set(file);
   }
@@ -99,21 +105,25 @@ ProblemSet set_for_student(const ProblemSet& set, const GradeOptions& g, const C
     const auto it = roster->find(student);
     if (it == roster->end())
       return refused(set, *g.roster,
-                     student.empty() ? "the answers need `student:` to find the student in the roster"
-                                     : "student " + student + " is not in the roster " + *g.roster);
+                     student.empty()
+                         ? "the answers need `student:` to find the student in the roster"
+                         : "student " + student + " is not in the roster " + *g.roster);
     const ProblemSet& v = it->second;
     if (v.variant)
-      variant = fmt::format("graded against the variant of student {} in the class of {} (draw {}, seed {:016x})",
-                            student, *g.roster, v.variant->draw, v.variant->seed);
+      variant = fmt::format(
+          "graded against the variant of student {} in the class of {} (draw {}, seed {:016x})",
+          student, *g.roster, v.variant->draw, v.variant->seed);
     return v;
   }
   if (!set_varies(set)) return set;
   ProblemSet v = variant_for(set, student);
   if (v.variant)
-    variant = fmt::format("graded against the variant of student {} (seed {:016x}) drawn from the id, as "
-                          "`frustum generate --student` draws it; a class generated with --roster may have drawn this "
-                          "student again: then {}",
-                          v.variant->student, v.variant->seed, kRedrawHint);
+    variant = fmt::format(
+        "graded against the variant of student {} (seed {:016x}) drawn from the id, as "
+        "`frustum generate --student` draws it; a class generated with --roster may have drawn "
+        "this "
+        "student again: then {}",
+        v.variant->student, v.variant->seed, kRedrawHint);
   return v;
 }
 
@@ -141,13 +151,15 @@ std::string progress_bar(std::size_t done, std::size_t total, const std::string&
   constexpr int kWidth = 30;
   const int filled = total ? static_cast<int>(kWidth * done / total) : kWidth;
   return fmt::format("\r[{}{}] {}/{} {:<24.24}", std::string(static_cast<std::size_t>(filled), '#'),
-                     std::string(static_cast<std::size_t>(kWidth - filled), '.'), done, total, terminal_text(who));
+                     std::string(static_cast<std::size_t>(kWidth - filled), '.'), done, total,
+                     terminal_text(who));
 }
 
 int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   // NaN compares false with everything, so `--timeout nan` once meant no limit at all.
   if (!(g.timeout > 0 && g.timeout <= kMaxBatchTimeout)) {
-    o.err << fmt::format("error: --timeout must be a number of seconds in (0, {}]\n", kMaxBatchTimeout);
+    o.err << fmt::format("error: --timeout must be a number of seconds in (0, {}]\n",
+                         kMaxBatchTimeout);
     return 2;
   }
   std::vector<BatchEntry> entries;
@@ -197,14 +209,19 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
       ++graded;
       sum += row.max_score > 0 ? row.score / row.max_score : 0;
       if (!row.message.empty())  // the file and the roster disagree, or two files claim one student
-        o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message)) << "\n";
+        o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student,
+                                           row.message))
+              << "\n";
     } else {
-      o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message)) << "\n";
+      o.err << terminal_text(
+                   fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message))
+            << "\n";
     }
   }
-  o.out << fmt::format("Graded {} of {} submissions{}; wrote {}/gradebook.csv, feedback/ and gradescope/\n", graded,
-                       r.rows.size(), graded ? fmt::format(" (mean {:.1f}%)", 100.0 * sum / double(graded)) : "",
-                       options.out_dir);
+  o.out << fmt::format(
+      "Graded {} of {} submissions{}; wrote {}/gradebook.csv, feedback/ and gradescope/\n", graded,
+      r.rows.size(), graded ? fmt::format(" (mean {:.1f}%)", 100.0 * sum / double(graded)) : "",
+      options.out_dir);
   for (const Diagnostic& d : not_graded) o.err << "warning: " << terminal_text(d.format()) << "\n";
   for (const Diagnostic& d : set.all_errors()) o.err << terminal_text(d.format()) << "\n";
   return graded == r.rows.size() && set.all_errors().empty() ? 0 : 1;
@@ -228,8 +245,9 @@ int run_grade(const GradeOptions& g, const Output& o) {
   std::string variant;
   std::optional<ClassVariants> roster;
   if (!read_class(set, g, o, roster)) return 1;
-  const ProblemSet graded =
-      unreadable ? set : set_for_student(set, g, roster ? &*roster : nullptr, submission.student, variant);
+  const ProblemSet graded = unreadable ? set
+                                       : set_for_student(set, g, roster ? &*roster : nullptr,
+                                                         submission.student, variant);
   GradeReport report = grade(graded, submission);
   report.variant = variant;
   if (g.format == Format::Json)
@@ -240,9 +258,11 @@ int run_grade(const GradeOptions& g, const Output& o) {
   else
     o.out << render_grade_text(report, TextStyle{o.color, g.lang});
   try {
-    if (g.gradescope) write_file_atomically(*g.gradescope, json_text(gradescope_results(report, g.lang)) + "\n");
+    if (g.gradescope)
+      write_file_atomically(*g.gradescope, json_text(gradescope_results(report, g.lang)) + "\n");
     if (g.prairielearn)
-      write_file_atomically(*g.prairielearn, json_text(prairielearn_results(report, g.lang)) + "\n");
+      write_file_atomically(*g.prairielearn,
+                            json_text(prairielearn_results(report, g.lang)) + "\n");
     if (g.html) write_file_atomically(*g.html, render_feedback_html(report, g.lang));
     if (g.markdown) write_file_atomically(*g.markdown, render_feedback_markdown(report, g.lang));
   } catch (const std::exception& e) {

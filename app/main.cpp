@@ -49,9 +49,11 @@ int main(int argc, char** argv) {
       examples({"frustum solve problems/seeds/001_zbuffer_plane_method.yaml",
                 "frustum grade SET.yaml ANSWERS.yaml",
                 "frustum SUBCOMMAND --help     (options and an example for each subcommand)"}));
-  const std::vector<std::pair<std::string, Format>> formats = {
-      {"text", Format::Text}, {"markdown", Format::Markdown}, {"json", Format::Json},
-      {"html", Format::Html},  {"latex", Format::Latex}};
+  const std::vector<std::pair<std::string, Format>> formats = {{"text", Format::Text},
+                                                               {"markdown", Format::Markdown},
+                                                               {"json", Format::Json},
+                                                               {"html", Format::Html},
+                                                               {"latex", Format::Latex}};
 
   std::string set, answers;
   std::optional<std::string> id;
@@ -62,7 +64,10 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingPath);
   solve->add_option("--id", id, "Solve only this problem");
-  solve->add_option("--format", format, "Output: text (default), markdown, json, html (a typeset, self-contained page) or latex (for lualatex)")
+  solve
+      ->add_option("--format", format,
+                   "Output: text (default), markdown, json, html (a typeset, self-contained page) "
+                   "or latex (for lualatex)")
       ->type_name("FORMAT")
       ->transform(choice(formats));
   std::optional<frustum::Precision> precision;
@@ -115,7 +120,9 @@ int main(int argc, char** argv) {
       ->add_option("--timeout", grade_opt.timeout,
                    "A class: seconds allowed per submission (default 10)")
       ->check(CLI::Range(0.1, 3600.0));
-  grade->add_option("-j,--jobs", grade_opt.jobs, "A class: submissions graded at once (default: one per core)")
+  grade
+      ->add_option("-j,--jobs", grade_opt.jobs,
+                   "A class: submissions graded at once (default: one per core)")
       ->check(CLI::Range(1, 1024));
   grade->add_option("--gradescope", grade_opt.gradescope,
                     "One student: write Gradescope's results.json here");
@@ -130,10 +137,13 @@ int main(int argc, char** argv) {
                    "Grade each student against their set written by `frustum generate -o DIR` "
                    "(DIR/SET-STUDENT.yaml)")
       ->check(CLI::ExistingDirectory);
-  grade->add_option("--roster", grade_opt.roster,
-                    "The class roster (CSV with a student column, or one id a line): says whose each file is, "
-                    "and grades each student against the variant `frustum generate --roster` drew (redraws "
-                    "included)")
+  grade
+      ->add_option(
+          "--roster", grade_opt.roster,
+          "The class roster (CSV with a student column, or one id a line): says whose each file "
+          "is, "
+          "and grades each student against the variant `frustum generate --roster` drew (redraws "
+          "included)")
       ->check(CLI::ExistingFile)
       ->excludes("--variants");
   grade->footer(examples(
@@ -265,48 +275,48 @@ int main(int argc, char** argv) {
   // The last line of defence: whatever a command throws (a file system error, memory) ends in
   // a message and exit status 1, never in std::terminate.
   try {
-  const frustum::app::Output out{std::cout, std::cerr, isatty(STDOUT_FILENO) != 0,
-                                 isatty(STDERR_FILENO) != 0};
-  if (solve->parsed())
-    return frustum::app::run_solve(set, id, format, out, precision, *frustum::parse_lang(lang));
-  if (accuracy->parsed())
-    return frustum::app::run_bench_accuracy(bench_dir, hard_dir, bench_cases, out);
-  if (check->parsed()) return frustum::app::run_check(set, out);
-  if (grade->parsed()) {
-    grade_opt.lang = *frustum::parse_lang(grade_lang);
-    return frustum::app::run_grade(grade_opt, out);
-  }
-  if (kinds->parsed()) return frustum::app::run_kinds(out);
-  if (generate->parsed()) {
-    if (gen_opt.students.empty() && !gen_opt.roster && !gen_opt.seed) {
-      std::cerr << "generate: give --student ID, --roster FILE or --seed N [--count K]\n";
-      return 2;
+    const frustum::app::Output out{std::cout, std::cerr, isatty(STDOUT_FILENO) != 0,
+                                   isatty(STDERR_FILENO) != 0};
+    if (solve->parsed())
+      return frustum::app::run_solve(set, id, format, out, precision, *frustum::parse_lang(lang));
+    if (accuracy->parsed())
+      return frustum::app::run_bench_accuracy(bench_dir, hard_dir, bench_cases, out);
+    if (check->parsed()) return frustum::app::run_check(set, out);
+    if (grade->parsed()) {
+      grade_opt.lang = *frustum::parse_lang(grade_lang);
+      return frustum::app::run_grade(grade_opt, out);
     }
-    gen_opt.lang = *frustum::parse_lang(gen_lang);
-    return frustum::app::run_generate(gen_opt, out);
-  }
-  if (exp->parsed()) {
-    if (export_opt.out.empty() && export_opt.format.find("grades") == std::string::npos) {
-      std::cerr << "export " << export_opt.format << ": give -o OUT\n";
-      return 2;
-    }
-    export_opt.lang = *frustum::parse_lang(export_lang);
-    return frustum::app::run_export(export_opt, out);
-  }
-  if (draw->parsed()) return frustum::app::run_draw(set, draw_id, draw_output, raster, out);
-  if (render->parsed()) {
-    if (!render_size.empty()) {
-      int w = 0, h = 0;
-      char x = 0, extra = 0;
-      if (std::sscanf(render_size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 ||
-          (x != 'x' && x != 'X') || w < 1 || h < 1 || w > 16384 || h > 16384) {
-        std::cerr << "--size: expected WxH with 1 ≤ W, H ≤ 16384, got '" << render_size << "'\n";
+    if (kinds->parsed()) return frustum::app::run_kinds(out);
+    if (generate->parsed()) {
+      if (gen_opt.students.empty() && !gen_opt.roster && !gen_opt.seed) {
+        std::cerr << "generate: give --student ID, --roster FILE or --seed N [--count K]\n";
         return 2;
       }
-      render_opt.size = std::pair{w, h};
+      gen_opt.lang = *frustum::parse_lang(gen_lang);
+      return frustum::app::run_generate(gen_opt, out);
     }
-    return frustum::app::run_render(render_opt, out);
-  }
+    if (exp->parsed()) {
+      if (export_opt.out.empty() && export_opt.format.find("grades") == std::string::npos) {
+        std::cerr << "export " << export_opt.format << ": give -o OUT\n";
+        return 2;
+      }
+      export_opt.lang = *frustum::parse_lang(export_lang);
+      return frustum::app::run_export(export_opt, out);
+    }
+    if (draw->parsed()) return frustum::app::run_draw(set, draw_id, draw_output, raster, out);
+    if (render->parsed()) {
+      if (!render_size.empty()) {
+        int w = 0, h = 0;
+        char x = 0, extra = 0;
+        if (std::sscanf(render_size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 ||
+            (x != 'x' && x != 'X') || w < 1 || h < 1 || w > 16384 || h > 16384) {
+          std::cerr << "--size: expected WxH with 1 ≤ W, H ≤ 16384, got '" << render_size << "'\n";
+          return 2;
+        }
+        render_opt.size = std::pair{w, h};
+      }
+      return frustum::app::run_render(render_opt, out);
+    }
   } catch (const std::bad_alloc&) {
     std::cerr << "error: out of memory\n";
     return 1;

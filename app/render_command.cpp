@@ -2,22 +2,21 @@
 //                [--method zbuffer|scanline]
 // FILE is a scene file (top-level `scene:` and optional `conventions:`) or a problem set, whose
 // render problem is the one named by --id (default: the first of kind render).
-#include "app/commands.hpp"
-#include "solver/steps/scene_reader.hpp"
-
-#include "solver/input/given_reader.hpp"
-#include "solver/problem/problem_set.hpp"
-#include "solver/kinds/render.hpp"
-#include "solver/input/yaml_document.hpp"
-#include "solver/raster/fill.hpp"
-#include "solver/raster/scanline.hpp"
-
 #include <fmt/format.h>
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <chrono>
 #include <ostream>
+
+#include "app/commands.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/input/yaml_document.hpp"
+#include "solver/kinds/render.hpp"
+#include "solver/problem/problem_set.hpp"
+#include "solver/raster/fill.hpp"
+#include "solver/raster/scanline.hpp"
+#include "solver/steps/scene_reader.hpp"
 
 namespace frustum::app {
 
@@ -45,7 +44,9 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
       }
       return std::any_cast<const RenderGiven&>(p.given).spec.scene;
     }
-    o.err << opt.file << ": " << (opt.id ? "no problem with id '" + *opt.id + "'" : "no problem of kind render") << "\n";
+    o.err << opt.file << ": "
+          << (opt.id ? "no problem with id '" + *opt.id + "'" : "no problem of kind render")
+          << "\n";
     return std::nullopt;
   }
   try {
@@ -53,8 +54,9 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
     const Conventions c = read_conventions(doc.root["conventions"], opt.file, "conventions", {});
     // As the render kind in a set: the scene pipeline is not left-handed under OpenGL's matrices.
     if (left_handed_columns(c))
-      root.fail("conventions", "handedness: left is solved with api: directx only in a scene (OpenGL and "
-                               "Processing scenes are right-handed)");
+      root.fail("conventions",
+                "handedness: left is solved with api: directx only in a scene (OpenGL and "
+                "Processing scenes are right-handed)");
     GivenReader s = root.child("scene", scene_fields());
     Scene scene = read_scene(s, c).scene;
     root.finish();
@@ -69,7 +71,8 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
 bool write_color_png(const std::string& path, const Image<std::uint32_t>& img) {
   std::vector<std::uint32_t> rows(img.data.size());
   for (int r = 0; r < img.height; ++r)
-    std::copy_n(&img.at(0, img.height - 1 - r), img.width, rows.begin() + static_cast<long>(r) * img.width);
+    std::copy_n(&img.at(0, img.height - 1 - r), img.width,
+                rows.begin() + static_cast<long>(r) * img.width);
   return stbi_write_png(path.c_str(), img.width, img.height, 4, rows.data(), img.width * 4) != 0;
 }
 
@@ -88,7 +91,8 @@ bool write_depth_png(const std::string& path, const Image<float>& depth) {
       const float z = depth.at(i, depth.height - 1 - r);
       if (z >= kDepthClear) continue;
       const double t = hi > lo ? (z - lo) / (hi - lo) : 0.0;
-      grey[static_cast<std::size_t>(r) * depth.width + i] = static_cast<std::uint8_t>(255 - std::lround(t * 215));
+      grey[static_cast<std::size_t>(r) * depth.width + i] =
+          static_cast<std::uint8_t>(255 - std::lround(t * 215));
     }
   return stbi_write_png(path.c_str(), depth.width, depth.height, 1, grey.data(), depth.width) != 0;
 }
@@ -108,7 +112,9 @@ int run_render(const RenderOptions& opt, const Output& o) {
     }
     // A perspective whose aspect was width/height follows the new size (x scale ∝ 1/aspect).
     const bool perspective = scene.clip_from_eye(3, 2) != 0 && scene.clip_from_eye(0, 2) == 0;
-    if (perspective) scene.clip_from_eye(0, 0) *= static_cast<double>(scene.width) * h / (static_cast<double>(scene.height) * w);
+    if (perspective)
+      scene.clip_from_eye(0, 0) *=
+          static_cast<double>(scene.width) * h / (static_cast<double>(scene.height) * w);
     scene.width = w;
     scene.height = h;
   }
@@ -121,19 +127,22 @@ int run_render(const RenderOptions& opt, const Output& o) {
   std::string method;
   if (scene.scanline) {
     ScanlineStats st;
-    color = render_scanline(tris, scene.width, scene.height, scene.background, &st, opt.depth ? &depth : nullptr);
-    method = fmt::format("scan-line: one row of depth ({} bytes) instead of the z-buffer's {} bytes; at most {} "
-                         "triangles active on a row, {} spans",
-                         st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
+    color = render_scanline(tris, scene.width, scene.height, scene.background, &st,
+                            opt.depth ? &depth : nullptr);
+    method = fmt::format(
+        "scan-line: one row of depth ({} bytes) instead of the z-buffer's {} bytes; at most {} "
+        "triangles active on a row, {} spans",
+        st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
   } else {
     FillStats fs;
     Frame frame = render_zbuffer(tris, scene.width, scene.height, scene.background, &fs);
     color = std::move(frame.color);
     depth = std::move(frame.depth);
-    method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written", depth.data.size() * sizeof(float),
-                         fs.fragments, fs.written);
+    method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",
+                         depth.data.size() * sizeof(float), fs.fragments, fs.written);
   }
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!write_color_png(opt.output, color)) {
     o.err << opt.output << ": cannot write the image\n";
     return 1;
@@ -142,9 +151,10 @@ int run_render(const RenderOptions& opt, const Output& o) {
     o.err << *opt.depth << ": cannot write the depth image\n";
     return 1;
   }
-  o.out << fmt::format("{}: {} × {}, {} triangles ({} outside, {} clipped, {} culled, {} drawn) in {:.1f} ms\n{}\n",
-                       opt.output, scene.width, scene.height, gs.triangles, gs.outside, gs.clipped, gs.culled,
-                       gs.window, ms, method);
+  o.out << fmt::format(
+      "{}: {} × {}, {} triangles ({} outside, {} clipped, {} culled, {} drawn) in {:.1f} ms\n{}\n",
+      opt.output, scene.width, scene.height, gs.triangles, gs.outside, gs.clipped, gs.culled,
+      gs.window, ms, method);
   return 0;
 }
 

@@ -1,9 +1,5 @@
 #include "app/variant_files.hpp"
 
-#include "grader/csv.hpp"
-#include "grader/file_names.hpp"
-#include "solver/util/diagnostic.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -13,18 +9,25 @@
 #include <map>
 #include <sstream>
 
+#include "grader/csv.hpp"
+#include "grader/file_names.hpp"
+#include "solver/util/diagnostic.hpp"
+
 namespace frustum::app {
 
 namespace fs = std::filesystem;
 
 std::string variant_name(const std::string& student) { return file_name_for(student); }
 
-std::string variant_file(const std::string& dir, const std::string& set_path, const std::string& name) {
+std::string variant_file(const std::string& dir, const std::string& set_path,
+                         const std::string& name) {
   return (fs::path(dir) / (fs::path(set_path).stem().string() + "-" + name + ".yaml")).string();
 }
 
-std::string variant_key_file(const std::string& dir, const std::string& set_path, const std::string& name) {
-  return (fs::path(dir) / "answers" / (fs::path(set_path).stem().string() + "-" + name + ".yaml")).string();
+std::string variant_key_file(const std::string& dir, const std::string& set_path,
+                             const std::string& name) {
+  return (fs::path(dir) / "answers" / (fs::path(set_path).stem().string() + "-" + name + ".yaml"))
+      .string();
 }
 
 std::vector<std::string> read_roster(const std::string& path) {
@@ -34,23 +37,30 @@ std::vector<std::string> read_roster(const std::string& path) {
   text << in.rdbuf();
   std::vector<std::pair<int, std::string>> ids;  // line, id
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".csv") {
     const CsvTable table = parse_csv(text.str());
     if (table.error)
-      throw InputError(Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
-    if (table.rows.empty()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
+      throw InputError(
+          Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
+    if (table.rows.empty())
+      throw InputError(
+          Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
     const std::vector<std::string>& header = table.rows[0].fields;
     std::size_t col = header.size();
     for (std::size_t i = 0; i < header.size(); ++i) {
       std::string h = header[i];
-      std::transform(h.begin(), h.end(), h.begin(), [](unsigned char c) { return std::tolower(c); });
+      std::transform(h.begin(), h.end(), h.begin(),
+                     [](unsigned char c) { return std::tolower(c); });
       if (h == "student") col = i;
     }
-    if (col == header.size()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "header", "no 'student' column"});
+    if (col == header.size())
+      throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "header", "no 'student' column"});
     for (std::size_t r = 1; r < table.rows.size(); ++r) {
       const CsvRow& row = table.rows[r];
-      if (col < row.fields.size() && !row.fields[col].empty()) ids.emplace_back(row.line, row.fields[col]);
+      if (col < row.fields.size() && !row.fields[col].empty())
+        ids.emplace_back(row.line, row.fields[col]);
     }
   } else {
     std::istringstream lines(text.str());
@@ -62,13 +72,16 @@ std::vector<std::string> read_roster(const std::string& path) {
       ids.emplace_back(n, line.substr(first, last - first + 1));
     }
   }
-  if (ids.empty()) throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "student", "the roster names no student"});
+  if (ids.empty())
+    throw InputError(
+        Diagnostic{SourceLocation{path, 1, 1}, "student", "the roster names no student"});
   std::map<std::string, int> first_line;
   std::vector<std::string> out;
   for (const auto& [line, id] : ids) {
     if (const auto [it, fresh] = first_line.emplace(id, line); !fresh)
-      throw InputError(Diagnostic{SourceLocation{path, line, 1}, "student",
-                                  fmt::format("'{}' is listed twice (first on line {})", id, it->second)});
+      throw InputError(
+          Diagnostic{SourceLocation{path, line, 1}, "student",
+                     fmt::format("'{}' is listed twice (first on line {})", id, it->second)});
     out.push_back(id);
   }
   return out;

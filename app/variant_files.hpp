@@ -13,8 +13,10 @@ namespace frustum::app {
 std::string variant_name(const std::string& student);
 
 // DIR/STEM-NAME.yaml for the set SET_PATH (its key is DIR/answers/STEM-NAME.yaml).
-std::string variant_file(const std::string& dir, const std::string& set_path, const std::string& name);
-std::string variant_key_file(const std::string& dir, const std::string& set_path, const std::string& name);
+std::string variant_file(const std::string& dir, const std::string& set_path,
+                         const std::string& name);
+std::string variant_key_file(const std::string& dir, const std::string& set_path,
+                             const std::string& name);
 
 // The student ids of a roster, in order: a CSV with a `student` column (the roster that
 // `frustum grade` takes; other columns are ignored), or a text file with one id per line

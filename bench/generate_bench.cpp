@@ -4,13 +4,13 @@
 //                        conditioning — what `frustum generate` does per problem
 //   GenerateDouble/KIND  generate, parse, then the numeric double path (solve --precision double)
 // Registered at start-up, one benchmark per kind of the registry.
-#include "solver/problem/generate.hpp"
+#include <benchmark/benchmark.h>
+
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_precision.hpp"
 #include "solver/problem/variants.hpp"
-
-#include <benchmark/benchmark.h>
 
 namespace frustum {
 namespace {
@@ -19,7 +19,8 @@ void generate_only(benchmark::State& state, const KindInfo* kind) {
   Rng rng(1);
   const GenerateOptions options;
   for (auto _ : state) benchmark::DoNotOptimize(kind->generate(rng, options));
-  state.counters["variants/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["variants/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 void generate_solve(benchmark::State& state, const KindInfo* kind) {
@@ -30,7 +31,8 @@ void generate_solve(benchmark::State& state, const KindInfo* kind) {
     if (spec.error) state.SkipWithError(spec.error->message.c_str());
     benchmark::DoNotOptimize(spec.given);
   }
-  state.counters["variants/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["variants/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 void generate_double(benchmark::State& state, const KindInfo* kind) {
@@ -47,7 +49,8 @@ void generate_double(benchmark::State& state, const KindInfo* kind) {
     }
     benchmark::DoNotOptimize(solve_problem(spec, "bench.yaml", false, Precision::Double));
   }
-  state.counters["variants/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["variants/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 const bool kRegistered = [] {

@@ -6,14 +6,14 @@
 // so the exact fallback never runs; the ratio filtered/plain is the cost of the bound (issue 14
 // asks ≤ 1.2). The facing bound is measured both computed per call and prepared once with the
 // inputs (as backface's numeric path does). Not part of ctest.
-#include "solver/geometry/facing.hpp"
-#include "solver/geometry/predicates.hpp"
-
 #include <benchmark/benchmark.h>
 
 #include <limits>
 #include <random>
 #include <vector>
+
+#include "solver/geometry/facing.hpp"
+#include "solver/geometry/predicates.hpp"
 
 namespace frustum {
 namespace {
@@ -63,7 +63,8 @@ void BM_InsidePlain(benchmark::State& state) {
     int inside = 0;
     for (const Case& c : cs) {
       int s[3];
-      for (int k = 0; k < 3; ++k) s[k] = scalar_sign(edge_function<double>(c.t[k], c.t[(k + 1) % 3], c.pixel));
+      for (int k = 0; k < 3; ++k)
+        s[k] = scalar_sign(edge_function<double>(c.t[k], c.t[(k + 1) % 3], c.pixel));
       inside += inside_closed_triangle(s[0], s[1], s[2]);
     }
     benchmark::DoNotOptimize(inside);
@@ -80,7 +81,8 @@ void BM_InsideFiltered(benchmark::State& state) {
       int s[3];
       for (int k = 0; k < 3; ++k) {
         const int j = (k + 1) % 3;
-        const SignDecision d = edge_sign(c.t[k], c.t[j], c.pixel, c.exact_t[k], c.exact_t[j], c.exact_pixel, true);
+        const SignDecision d =
+            edge_sign(c.t[k], c.t[j], c.pixel, c.exact_t[k], c.exact_t[j], c.exact_pixel, true);
         s[k] = d.sign;
         fallbacks += d.exact;
       }

@@ -1,9 +1,7 @@
 // Raster throughput at 1920 × 1080, single thread: (a) 100k small triangles, (b) 100 large
 // ones, setup + coverage + depth test and write included; the same triangles through Mesa's
-// llvmpipe (OSMesa, LP_NUM_THREADS as set by the caller) side by side, and after the timings a comparison of
-// the two images: pixels whose winning triangle or depth differ. Not part of ctest.
-#include "solver/raster/fill.hpp"
-
+// llvmpipe (OSMesa, LP_NUM_THREADS as set by the caller) side by side, and after the timings a
+// comparison of the two images: pixels whose winning triangle or depth differ. Not part of ctest.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -11,9 +9,11 @@
 #include <cstdlib>
 #include <random>
 
+#include "solver/raster/fill.hpp"
+
 #ifdef FRUSTUM_HAVE_OSMESA
-#include <GL/osmesa.h>
 #include <GL/gl.h>
+#include <GL/osmesa.h>
 #endif
 
 namespace frustum {
@@ -37,7 +37,8 @@ Rgb id_color(std::size_t k) {
 std::vector<WindowTriangle> make_triangles(bool small, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> x(0, kWidth), y(0, kHeight), d(-4, 4), z(0.01, 0.99);
-  std::uniform_real_distribution<double> bx(-0.25 * kWidth, 1.25 * kWidth), by(-0.25 * kHeight, 1.25 * kHeight);
+  std::uniform_real_distribution<double> bx(-0.25 * kWidth, 1.25 * kWidth),
+      by(-0.25 * kHeight, 1.25 * kHeight);
   std::vector<WindowTriangle> out;
   const int n = small ? kSmallCount : kLargeCount;
   for (int k = 0; k < n; ++k) {
@@ -55,7 +56,8 @@ std::vector<WindowTriangle> make_triangles(bool small, std::uint32_t seed) {
 }
 
 const std::vector<WindowTriangle>& triangles(bool small) {
-  static const std::vector<WindowTriangle> s = make_triangles(true, 1), l = make_triangles(false, 2);
+  static const std::vector<WindowTriangle> s = make_triangles(true, 1),
+                                           l = make_triangles(false, 2);
   return small ? s : l;
 }
 
@@ -72,16 +74,20 @@ long covered_fragments(bool small) {
 
 void report(benchmark::State& state, bool small) {
   const double frames = static_cast<double>(state.iterations());
-  state.counters["tris/s"] = benchmark::Counter(frames * static_cast<double>(triangles(small).size()), benchmark::Counter::kIsRate);
-  state.counters["pixels/s"] = benchmark::Counter(frames * static_cast<double>(covered_fragments(small)), benchmark::Counter::kIsRate);
+  state.counters["tris/s"] = benchmark::Counter(
+      frames * static_cast<double>(triangles(small).size()), benchmark::Counter::kIsRate);
+  state.counters["pixels/s"] = benchmark::Counter(
+      frames * static_cast<double>(covered_fragments(small)), benchmark::Counter::kIsRate);
 }
 
 // Setup alone: snapping, edge functions, bounding box and depth plane.
 void BM_Setup(benchmark::State& state) {
   const std::vector<WindowTriangle>& tris = triangles(true);
   for (auto _ : state)
-    for (std::size_t k = 0; k < tris.size(); ++k) benchmark::DoNotOptimize(setup_raster(tris[k], static_cast<int>(k)));
-  state.counters["tris/s"] = benchmark::Counter(static_cast<double>(state.iterations() * tris.size()), benchmark::Counter::kIsRate);
+    for (std::size_t k = 0; k < tris.size(); ++k)
+      benchmark::DoNotOptimize(setup_raster(tris[k], static_cast<int>(k)));
+  state.counters["tris/s"] = benchmark::Counter(
+      static_cast<double>(state.iterations() * tris.size()), benchmark::Counter::kIsRate);
 }
 
 // One frame: clear, then setup + fill every triangle (the clear is a small share).
@@ -92,7 +98,8 @@ void BM_Frustum(benchmark::State& state) {
   for (auto _ : state) {
     std::fill(frame.depth.data.begin(), frame.depth.data.end(), kDepthClear);
     std::fill(frame.color.data.begin(), frame.color.data.end(), 0u);
-    for (std::size_t k = 0; k < tris.size(); ++k) draw_triangle(setup_raster(tris[k], static_cast<int>(k)), frame);
+    for (std::size_t k = 0; k < tris.size(); ++k)
+      draw_triangle(setup_raster(tris[k], static_cast<int>(k)), frame);
     benchmark::DoNotOptimize(frame.color.data.data());
   }
   report(state, small);
@@ -101,7 +108,8 @@ void BM_Frustum(benchmark::State& state) {
 // frame depth-tested against a plane and written (read depth, write depth and colour: 12 bytes
 // per fragment), a loop the compiler vectorises with nothing else in it. Fill's pixels/s over
 // this one's is the fraction of the ceiling it reaches (tools/performance.sh prints it).
-__attribute__((target_clones("avx2", "default"))) void depth_pass(float* depth, std::uint32_t* color, float z0,
+__attribute__((target_clones("avx2", "default"))) void depth_pass(float* depth,
+                                                                  std::uint32_t* color, float z0,
                                                                   float dz, std::uint32_t id) {
   for (int y = 0; y < kHeight; ++y) {
     float* d = depth + static_cast<std::size_t>(y) * kWidth;
@@ -121,18 +129,28 @@ void BM_BandwidthCeiling(benchmark::State& state) {
   for (auto _ : state) {
     // Alternating slopes so that about half the fragments pass, as in a real frame.
     ++pass;
-    depth_pass(frame.depth.data.data(), frame.color.data.data(), 0.5f, (pass % 2 ? -1.0f : 1.0f) * 1e-5f, pass);
+    depth_pass(frame.depth.data.data(), frame.color.data.data(), 0.5f,
+               (pass % 2 ? -1.0f : 1.0f) * 1e-5f, pass);
     benchmark::ClobberMemory();
   }
-  state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * kWidth * kHeight,
-                                                  benchmark::Counter::kIsRate);
-  state.counters["bytes/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * kWidth * kHeight * 12.0,
-                                                 benchmark::Counter::kIsRate, benchmark::Counter::kIs1024);
+  state.counters["pixels/s"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * kWidth * kHeight, benchmark::Counter::kIsRate);
+  state.counters["bytes/s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * kWidth * kHeight * 12.0,
+                         benchmark::Counter::kIsRate, benchmark::Counter::kIs1024);
 }
 BENCHMARK(BM_BandwidthCeiling)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
 BENCHMARK(BM_Setup)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
-BENCHMARK(BM_Frustum)->Arg(1)->ArgName("small")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
-BENCHMARK(BM_Frustum)->Arg(0)->ArgName("small")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_Frustum)
+    ->Arg(1)
+    ->ArgName("small")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_Frustum)
+    ->Arg(0)
+    ->ArgName("small")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 
 #ifdef FRUSTUM_HAVE_OSMESA
 // llvmpipe through OSMesa: identity matrices, vertices given in NDC so that its window
@@ -161,8 +179,9 @@ struct Mesa {
     rgb.clear();
     for (const WindowTriangle& t : tris)
       for (const Vec3d& v : t.v) {
-        xyz.insert(xyz.end(), {static_cast<float>(2 * v(0) / kWidth - 1), static_cast<float>(2 * v(1) / kHeight - 1),
-                               static_cast<float>(2 * v(2) - 1)});
+        xyz.insert(xyz.end(),
+                   {static_cast<float>(2 * v(0) / kWidth - 1),
+                    static_cast<float>(2 * v(1) / kHeight - 1), static_cast<float>(2 * v(2) - 1)});
         rgb.insert(rgb.end(), {t.color.r, t.color.g, t.color.b});
       }
   }
@@ -180,7 +199,8 @@ struct Mesa {
     GLint w = 0, h = 0, bytes = 0;
     void* buffer = nullptr;
     OSMesaGetDepthBuffer(ctx, &w, &h, &bytes, &buffer);
-    const std::size_t at = static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i);
+    const std::size_t at =
+        static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i);
     // llvmpipe keeps 24 bits (Z24 in the low bits of each 32-bit word).
     if (bytes == 4) return (static_cast<const std::uint32_t*>(buffer)[at] & 0xffffff) / 16777215.0;
     return static_cast<const std::uint16_t*>(buffer)[at] / 65535.0;
@@ -199,8 +219,16 @@ void BM_Llvmpipe(benchmark::State& state) {
   for (auto _ : state) m.draw();
   report(state, small);
 }
-BENCHMARK(BM_Llvmpipe)->Arg(1)->ArgName("small")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
-BENCHMARK(BM_Llvmpipe)->Arg(0)->ArgName("small")->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
+BENCHMARK(BM_Llvmpipe)
+    ->Arg(1)
+    ->ArgName("small")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_Llvmpipe)
+    ->Arg(0)
+    ->ArgName("small")
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 
 void compare(bool small) {
   const std::vector<WindowTriangle>& tris = triangles(small);
@@ -225,10 +253,12 @@ void compare(bool small) {
       depth5 += dz > 1e-5;
       depth3 += dz > 1e-3;
     }
-  std::printf("%s: %ld pixels covered; %ld differ in the winning triangle (%.4f%%); of the rest, depth differs by "
-              "more than 1e-5 at %ld and by more than 1e-3 at %ld (largest %.2g)\n",
-              small ? "100k small" : "100 large", covered, coverage, 100.0 * coverage / std::max(covered, 1L), depth5,
-              depth3, worst);
+  std::printf(
+      "%s: %ld pixels covered; %ld differ in the winning triangle (%.4f%%); of the rest, depth "
+      "differs by "
+      "more than 1e-5 at %ld and by more than 1e-3 at %ld (largest %.2g)\n",
+      small ? "100k small" : "100 large", covered, coverage,
+      100.0 * coverage / std::max(covered, 1L), depth5, depth3, worst);
 }
 #endif
 

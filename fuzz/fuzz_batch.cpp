@@ -7,8 +7,8 @@
 // Input: records separated by a NUL byte; each record's first byte picks what it becomes
 // ('l' symlink to the record named by the next byte, 's' symlink to itself, 'm' dangling
 // symlink, 'd' directory, 'p' FIFO, anything else a file whose content is the rest).
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include <sys/stat.h>
-#include <unistd.h>
+#include "grader/batch.hpp"
+#include "grader/csv.hpp"
 
 namespace {
 
@@ -35,7 +35,9 @@ const frustum::ProblemSet& set() {
   return s;
 }
 
-std::string name_of(std::size_t i) { return "s" + std::to_string(i) + (i % 3 == 2 ? ".yml" : ".yaml"); }
+std::string name_of(std::size_t i) {
+  return "s" + std::to_string(i) + (i % 3 == 2 ? ".yml" : ".yaml");
+}
 
 }  // namespace
 
@@ -47,8 +49,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   fs::create_directories(in);
   std::vector<std::string> records(1);
   for (std::size_t i = 0; i < size; ++i) {
-    if (data[i] == 0) records.emplace_back();
-    else records.back() += static_cast<char>(data[i]);
+    if (data[i] == 0)
+      records.emplace_back();
+    else
+      records.back() += static_cast<char>(data[i]);
   }
   if (records.size() > 24) records.resize(24);
   for (std::size_t i = 0; i < records.size(); ++i) {
@@ -56,12 +60,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const fs::path p = in / name_of(i);
     const char kind = r.empty() ? 'f' : r[0];
     std::error_code ec;
-    if (kind == 'l' && r.size() > 1) fs::create_symlink(name_of(static_cast<unsigned char>(r[1]) % records.size()), p, ec);
-    else if (kind == 's') fs::create_symlink(p.filename(), p, ec);
-    else if (kind == 'm') fs::create_symlink("missing.yaml", p, ec);
-    else if (kind == 'd') fs::create_directories(p, ec);
-    else if (kind == 'p') mkfifo(p.c_str(), 0600);
-    else std::ofstream(p, std::ios::binary) << r.substr(r.empty() ? 0 : 1);
+    if (kind == 'l' && r.size() > 1)
+      fs::create_symlink(name_of(static_cast<unsigned char>(r[1]) % records.size()), p, ec);
+    else if (kind == 's')
+      fs::create_symlink(p.filename(), p, ec);
+    else if (kind == 'm')
+      fs::create_symlink("missing.yaml", p, ec);
+    else if (kind == 'd')
+      fs::create_directories(p, ec);
+    else if (kind == 'p')
+      mkfifo(p.c_str(), 0600);
+    else
+      std::ofstream(p, std::ios::binary) << r.substr(r.empty() ? 0 : 1);
   }
   try {
     const std::vector<frustum::BatchEntry> entries = frustum::collect_submissions(in.string());
@@ -72,7 +82,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const frustum::BatchResult result = frustum::grade_batch(set(), entries, options);
       if (result.rows.size() != entries.size()) std::abort();
       std::ifstream book(root / "out" / "gradebook.csv", std::ios::binary);
-      const std::string text((std::istreambuf_iterator<char>(book)), std::istreambuf_iterator<char>());
+      const std::string text((std::istreambuf_iterator<char>(book)),
+                             std::istreambuf_iterator<char>());
       const frustum::CsvTable table = frustum::parse_csv(text);
       if (table.error || table.rows.size() != entries.size() + 1) std::abort();
       std::set<std::string> names;

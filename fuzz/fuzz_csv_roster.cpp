@@ -1,9 +1,7 @@
 // libFuzzer target: a CSV roster of answers from arbitrary bytes. Reading it either fails with
 // a message located in the CSV or gives one entry per row whose YAML grading can read; and
 // every row written by csv_row reads back as the neutralised fields.
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
-#include "grader/grade.hpp"
+#include <unistd.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -11,7 +9,9 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
+#include "grader/batch.hpp"
+#include "grader/csv.hpp"
+#include "grader/grade.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

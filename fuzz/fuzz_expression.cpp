@@ -1,11 +1,11 @@
 // libFuzzer target: the answer-expression parser on arbitrary bytes, as a number and as a
 // plane equation in x, y, z; a parsed value is also evaluated to a double.
-#include "solver/core/exact.hpp"
-#include "solver/util/expression.hpp"
-
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+
+#include "solver/core/exact.hpp"
+#include "solver/util/expression.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -1,13 +1,13 @@
 // libFuzzer target: an answer file from arbitrary bytes is graded against one of the fixed
 // seed problem sets (chosen by the first byte) and the report rendered as text and JSON.
-#include "grader/grade.hpp"
-#include "grader/report.hpp"
-
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "grader/grade.hpp"
+#include "grader/report.hpp"
 
 namespace {
 

@@ -1,12 +1,12 @@
 // libFuzzer target: a problem set from arbitrary bytes is loaded, solved with derivations and
 // rendered in every format. The library promises never to throw, crash or hang on any input.
-#include "solver/derivation/render.hpp"
-#include "solver/problem/problem_set.hpp"
-#include "solver/problem/solve_set.hpp"
-
 #include <cstddef>
 #include <cstdint>
 #include <string>
+
+#include "solver/derivation/render.hpp"
+#include "solver/problem/problem_set.hpp"
+#include "solver/problem/solve_set.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

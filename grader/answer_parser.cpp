@@ -1,17 +1,15 @@
 #include "grader/answer_parser.hpp"
 
-#include "grader/statement_choice.hpp"
-
-#include "solver/derivation/i18n.hpp"
-
-#include "solver/util/expression.hpp"
-#include "solver/core/work_budget.hpp"
-#include "solver/util/words.hpp"
-
 #include <algorithm>
-#include <optional>
 #include <cctype>
 #include <cmath>
+#include <optional>
+
+#include "grader/statement_choice.hpp"
+#include "solver/core/work_budget.hpp"
+#include "solver/derivation/i18n.hpp"
+#include "solver/util/expression.hpp"
+#include "solver/util/words.hpp"
 
 namespace frustum {
 
@@ -19,18 +17,20 @@ namespace {
 
 // Words a student may write for each category and boolean, with Japanese equivalents.
 const std::vector<std::pair<std::string, std::string>> kWordSynonyms = {
-    {"front", "front"}, {"表", "front"},  {"おもて", "front"}, {"front-facing", "front"},
-    {"back", "back"},   {"裏", "back"},   {"うら", "back"},    {"back-facing", "back"},
-    {"edge_on", "edge_on"}, {"edge-on", "edge_on"}, {"edge on", "edge_on"}, {"真横", "edge_on"},
-    {"visible", "visible"}, {"可視", "visible"}, {"silhouette", "silhouette"},
-    {"輪郭線", "silhouette"}, {"輪郭", "silhouette"}, {"hidden", "hidden"}, {"不可視", "hidden"},
-    {"concave", "not convex"}, {"凹", "not convex"}, {"内部", "inside"}, {"外部", "outside"},
-    {"вне", "outside"}};
+    {"front", "front"},        {"表", "front"},           {"おもて", "front"},
+    {"front-facing", "front"}, {"back", "back"},          {"裏", "back"},
+    {"うら", "back"},          {"back-facing", "back"},   {"edge_on", "edge_on"},
+    {"edge-on", "edge_on"},    {"edge on", "edge_on"},    {"真横", "edge_on"},
+    {"visible", "visible"},    {"可視", "visible"},       {"silhouette", "silhouette"},
+    {"輪郭線", "silhouette"},  {"輪郭", "silhouette"},    {"hidden", "hidden"},
+    {"不可視", "hidden"},      {"concave", "not convex"}, {"凹", "not convex"},
+    {"内部", "inside"},        {"外部", "outside"},       {"вне", "outside"}};
 
 const std::vector<std::pair<std::string, bool>> kBoolWords = {
-    {"true", true},  {"yes", true},  {"y", true},  {"t", true},  {"1", true},  {"はい", true},
-    {"○", true},     {"〇", true},   {"false", false}, {"no", false}, {"n", false}, {"f", false},
-    {"0", false},    {"いいえ", false}, {"×", false}, {"✕", false}};
+    {"true", true},   {"yes", true},     {"y", true},  {"t", true},
+    {"1", true},      {"はい", true},    {"○", true},  {"〇", true},
+    {"false", false}, {"no", false},     {"n", false}, {"f", false},
+    {"0", false},     {"いいえ", false}, {"×", false}, {"✕", false}};
 
 // The word a student wrote, as one of `candidates` when it is one of them in English, a listed
 // synonym, or the Japanese or Russian word the derivations print for it (what the key shows a
@@ -46,7 +46,8 @@ std::string known_word(const std::string& written, const std::vector<std::string
 }
 
 // The words a word map's entries may take (faces, edges).
-const std::vector<std::string> kMapWords = {"front", "back", "edge_on", "visible", "hidden", "silhouette"};
+const std::vector<std::string> kMapWords = {"front",   "back",   "edge_on",
+                                            "visible", "hidden", "silhouette"};
 
 struct Numbers {
   std::vector<Exact> values;
@@ -82,7 +83,8 @@ Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget)
 }
 
 bool wrapped(const std::string& s) {
-  return s.size() >= 2 && ((s.front() == '(' && s.back() == ')') || (s.front() == '[' && s.back() == ']'));
+  return s.size() >= 2 &&
+         ((s.front() == '(' && s.back() == ')') || (s.front() == '[' && s.back() == ']'));
 }
 
 std::string trimmed(std::string s) {
@@ -123,7 +125,9 @@ std::vector<std::string> split_rows(std::string s) {
   s = trimmed(s);
   if (wrapped(s)) {
     const std::string inner = trimmed(s.substr(1, s.size() - 2));
-    if (!inner.empty() && (inner.front() == '(' || inner.front() == '[') && split_top(inner, true).size() > 1) s = inner;
+    if (!inner.empty() && (inner.front() == '(' || inner.front() == '[') &&
+        split_top(inner, true).size() > 1)
+      s = inner;
   }
   std::vector<std::string> rows = split_top(s, true);
   for (std::string& r : rows) {
@@ -229,7 +233,9 @@ Rows read_rows(const YAML::Node& node, const std::string& item, WorkBudget& budg
       return out;
     }
     if (!out.values.empty() && n.values.size() != out.values[0].size()) {
-      out.error = item == "row" ? "the rows have different lengths" : item + " " + std::to_string(r + 1) + ": wrong number of coordinates";
+      out.error = item == "row"
+                      ? "the rows have different lengths"
+                      : item + " " + std::to_string(r + 1) + ": wrong number of coordinates";
       return out;
     }
     out.values.push_back(n.values);
@@ -281,8 +287,8 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
   WorkBudget budget;  // one for the whole answer, shared by its numbers
   p.raw = raw_text(node);
   if (p.raw.size() > kMaxExpressionLength * 4) {
-    p.error = "the answer is too long (more than " + std::to_string(kMaxExpressionLength * 4) +
-              " bytes)";
+    p.error =
+        "the answer is too long (more than " + std::to_string(kMaxExpressionLength * 4) + " bytes)";
     // Reports show the start only.
     std::size_t cut = 64;
     while (cut > 0 && (static_cast<unsigned char>(p.raw[cut]) & 0xC0) == 0x80) --cut;
@@ -368,8 +374,9 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
                                    [&](const auto& b) { return b.first == w; });
       const auto named = std::find(spec.words.begin(), spec.words.end(), w);
       if (it == kBoolWords.end() && named == spec.words.end()) {
-        p.error = quote_excerpt(node.Scalar()) + " is not true or false" +
-                  (spec.words.size() == 2 ? " (or " + spec.words[0] + " or " + spec.words[1] + ")" : "");
+        p.error =
+            quote_excerpt(node.Scalar()) + " is not true or false" +
+            (spec.words.size() == 2 ? " (or " + spec.words[0] + " or " + spec.words[1] + ")" : "");
         return p;
       }
       p.value = Value::boolean(it != kBoolWords.end() ? it->second : named == spec.words.begin());
@@ -397,7 +404,8 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       }
       std::string bits;
       for (char c : node.Scalar())
-        if (c == '0' || c == '1') bits += c;
+        if (c == '0' || c == '1')
+          bits += c;
         else if (c != ' ' && c != '_') {
           p.error = quote_excerpt(node.Scalar()) + " is not a bit string of 0 and 1";
           return p;
@@ -448,7 +456,8 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
           p.error = "the value of '" + it->first.as<std::string>() + "' is not a word";
           return p;
         }
-        entries.emplace_back(it->first.as<std::string>(), known_word(it->second.Scalar(), kMapWords));
+        entries.emplace_back(it->first.as<std::string>(),
+                             known_word(it->second.Scalar(), kMapWords));
       }
       p.value = Value::word_map(entries);
       break;
@@ -457,7 +466,8 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
   if (budget.exceeded()) {
     p.value.exact.clear();
     p.note = "too complex to compare exactly, so its value was computed to " +
-             std::to_string(kNumericFallbackDigits) + " significant digits and compared within the tolerance";
+             std::to_string(kNumericFallbackDigits) +
+             " significant digits and compared within the tolerance";
   }
   p.ok = true;
   return p;

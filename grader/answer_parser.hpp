@@ -2,12 +2,12 @@
 // recorded with its reason, so an unparseable answer is never graded as wrong.
 #pragma once
 
-#include "solver/derivation/value.hpp"
-#include "solver/problem/kind.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <string>
+
+#include "solver/derivation/value.hpp"
+#include "solver/problem/kind.hpp"
 
 namespace frustum {
 

@@ -1,7 +1,5 @@
 #include "grader/compare.hpp"
 
-#include "grader/statement_choice.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 #include <optional>
 #include <set>
 
+#include "grader/statement_choice.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {
@@ -198,7 +197,8 @@ struct PointReading {
 };
 
 std::optional<PointReading> point_rows_of(const Value& expected, const Value& got) {
-  if (expected.shape != Value::Shape::Matrix || got.shape != Value::Shape::Matrix) return std::nullopt;
+  if (expected.shape != Value::Shape::Matrix || got.shape != Value::Shape::Matrix)
+    return std::nullopt;
   const std::size_t n = static_cast<std::size_t>(expected.cols);
   Value as_rows = got;
   std::string how;
@@ -227,7 +227,8 @@ std::optional<PointReading> point_rows_of(const Value& expected, const Value& go
       }
     }
     if (exact)
-      for (std::size_t i = 0; i < affine.exact.size(); ++i) affine.numbers[i] = to_double(affine.exact[i]);
+      for (std::size_t i = 0; i < affine.exact.size(); ++i)
+        affine.numbers[i] = to_double(affine.exact[i]);
     as_rows = affine;
     how = all_one ? (expected.rows == 1 ? "read as one point in homogeneous coordinates (w = 1)"
                                         : "read as points in homogeneous coordinates (w = 1)")
@@ -246,7 +247,8 @@ Comparison compare_components(const Value& expected, const Value& got, const Ans
       spec.point_rows = false;
       plain.spec = &spec;
       Comparison c = compare_components(expected, p->rows, plain);
-      c.feedback = c.verdict == Verdict::Correct || c.feedback.empty() ? p->how : p->how + "; " + c.feedback;
+      c.feedback =
+          c.verdict == Verdict::Correct || c.feedback.empty() ? p->how : p->how + "; " + c.feedback;
       return c;
     }
   if (kind == AnswerKind::Transform && got.shape == Value::Shape::Matrix &&

@@ -78,7 +78,8 @@ CsvTable parse_csv(const std::string& text) {
 std::string csv_field(const std::string& field) {
   // A field that starts with U+FEFF is quoted too: first in a file, a reader takes those bytes
   // for a byte-order mark and drops them (found by fuzz_csv_roster).
-  if (field.find_first_of(",\"\r\n") == std::string::npos && field.rfind("\xEF\xBB\xBF", 0) != 0) return field;
+  if (field.find_first_of(",\"\r\n") == std::string::npos && field.rfind("\xEF\xBB\xBF", 0) != 0)
+    return field;
   std::string out = "\"";
   for (const char c : field) {
     if (c == '"') out += '"';
@@ -89,12 +90,14 @@ std::string csv_field(const std::string& field) {
 
 std::string csv_row(const std::vector<std::string>& fields) {
   std::string out;
-  for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + csv_field(csv_neutralise(fields[i]));
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    out += (i ? "," : "") + csv_field(csv_neutralise(fields[i]));
   return out + "\n";
 }
 
 std::string csv_neutralise(const std::string& field) {
-  if (field.empty() || std::string_view("=+-@\t\r").find(field[0]) == std::string_view::npos) return field;
+  if (field.empty() || std::string_view("=+-@\t\r").find(field[0]) == std::string_view::npos)
+    return field;
   // A signed decimal number is data, not a formula.
   std::size_t i = 1, digits = 0;
   const auto run = [&] {

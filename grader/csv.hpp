@@ -16,7 +16,7 @@ struct CsvRow {
 
 struct CsvTable {
   std::vector<CsvRow> rows;
-  std::optional<std::string> error;  // "line N: unterminated quoted field"
+  std::optional<std::string> error;      // "line N: unterminated quoted field"
   int error_line = 0, error_column = 0;  // where the error is (1-based)
 };
 

@@ -8,9 +8,9 @@
 
 #include "grader/quiz_items.hpp"
 #include "grader/xml_text.hpp"
+#include "solver/input/yaml_emit.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
-#include "solver/input/yaml_emit.hpp"
 
 namespace frustum {
 
@@ -53,8 +53,8 @@ std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang la
       "hide-letter-keys=\"true\"{}>\n",
       name, name, none_true ? " min-correct=\"0\"" : "");
   for (std::size_t i = 0; i < f.choices.size(); ++i)
-    s += fmt::format("  <pl-answer correct=\"{}\">{}. {}</pl-answer>\n", f.right[i] ? "true" : "false",
-                     i + 1, xml_escape(f.choices[i]));
+    s += fmt::format("  <pl-answer correct=\"{}\">{}. {}</pl-answer>\n",
+                     f.right[i] ? "true" : "false", i + 1, xml_escape(f.choices[i]));
   return s + "</pl-checkbox>";
 }
 

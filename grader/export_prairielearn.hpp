@@ -18,7 +18,7 @@ namespace frustum {
 struct PrairieLearnOptions {
   std::string image = "frustum-prairielearn";  // built from tools/prairielearn/Dockerfile
   std::string entrypoint = "/usr/local/bin/frustum-pl-grade";
-  int timeout = 30;  // seconds per grading job
+  int timeout = 30;      // seconds per grading job
   Lang lang = Lang::En;  // the questions' texts (the set's own where not given)
 };
 

@@ -85,7 +85,8 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
             "<response_label ident=\"c{}\"><material><mattext "
             "texttype=\"text/plain\">{}. {}</mattext></material></response_label>",
             i, i + 1, xml_escape(f.choices[i]));
-        const std::string ticked = fmt::format("<varequal respident=\"response1\">c{}</varequal>", i);
+        const std::string ticked =
+            fmt::format("<varequal respident=\"response1\">c{}</varequal>", i);
         condition += f.right[i] ? ticked : "<not>" + ticked + "</not>";
       }
       presentation += "</render_choice></response_lid>\n";

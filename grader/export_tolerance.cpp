@@ -28,7 +28,8 @@ std::vector<double> accepted_windows(const ProblemSpec& problem, const Answers& 
   for (std::size_t i = 0; i < expected.numbers.size(); ++i) {
     const double e = expected.numbers[i];
     double w = judge.window(i, e);
-    for (int step = 0; step < kNarrowingSteps && !(judge.ok(i, e, e + w) && judge.ok(i, e, e - w)); ++step)
+    for (int step = 0; step < kNarrowingSteps && !(judge.ok(i, e, e + w) && judge.ok(i, e, e - w));
+         ++step)
       w /= 2;
     out.push_back(w);
   }

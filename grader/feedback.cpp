@@ -1,17 +1,15 @@
 #include "grader/feedback.hpp"
 
-#include "grader/report.hpp"
+#include <fmt/format.h>
 
+#include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/derivation/svg.hpp"
 #include "solver/util/exact_format.hpp"
 
-#include <fmt/format.h>
-
 namespace frustum {
 
 namespace {
-
 
 // Markdown table cells: a pipe would end the cell (markdown_escape escapes it).
 std::string cell(const std::string& s) { return markdown_escape(s); }
@@ -23,7 +21,9 @@ std::string verdict_word(Verdict v, Lang lang) { return tr(to_string(v), lang); 
 
 // The answer as the student wrote it (their decimals, their form), never our exact reading of
 // it: 0.948683 stays 0.948683 beside the key.
-std::string got_shown(const AnswerGrade& a) { return a.verdict == Verdict::Missing ? "—" : a.got_text; }
+std::string got_shown(const AnswerGrade& a) {
+  return a.verdict == Verdict::Missing ? "—" : a.got_text;
+}
 
 const char* kStyle = R"CSS(
 body { font-family: system-ui, "Noto Sans CJK JP", sans-serif; max-width: 60rem; margin: 2rem auto; padding: 0 1rem; color: #1d232a; }
@@ -59,16 +59,24 @@ const char* kScript = R"JS(
 std::string markdown_escape(std::string_view text) {
   std::string out;
   // At the start of a line these would make a heading, a list or a quote.
-  if (!text.empty() && std::string_view("#-+>").find(text[0]) != std::string_view::npos) out += '\\';
+  if (!text.empty() && std::string_view("#-+>").find(text[0]) != std::string_view::npos)
+    out += '\\';
   for (const char c : text) {
     const unsigned char u = static_cast<unsigned char>(c);
-    if (c == '\n' || c == '\r' || c == '\t') out += ' ';
-    else if (u < 0x20 || u == 0x7F) continue;
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (std::string_view("\\`*_[]|").find(c) != std::string_view::npos) out += std::string("\\") + c;
-    else out += c;
+    if (c == '\n' || c == '\r' || c == '\t')
+      out += ' ';
+    else if (u < 0x20 || u == 0x7F)
+      continue;
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else if (std::string_view("\\`*_[]|").find(c) != std::string_view::npos)
+      out += std::string("\\") + c;
+    else
+      out += c;
   }
   return out;
 }
@@ -77,34 +85,46 @@ std::string markdown_code(std::string_view text) {
   std::string out;
   for (const char c : text) {
     const unsigned char u = static_cast<unsigned char>(c);
-    if (c == '`') out += "ʼ";
-    else if (c == '\n' || c == '\r' || c == '\t') out += ' ';
-    else if (u >= 0x20 && u != 0x7F) out += c;
+    if (c == '`')
+      out += "ʼ";
+    else if (c == '\n' || c == '\r' || c == '\t')
+      out += ' ';
+    else if (u >= 0x20 && u != 0x7F)
+      out += c;
   }
   return out;
 }
 
 std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
   std::string out;
-  if (p.error) return out + fmt::format("**{}:** `{}`\n\n", tr("error", lang), markdown_code(p.error->format()));
-  out += fmt::format("| {} | {} | {} | {} | {} |\n| --- | --- | --- | --- | --- |\n", tr("Answer", lang),
-                     tr("Verdict", lang), tr("Score", lang), tr("You wrote", lang), tr("Expected", lang));
+  if (p.error)
+    return out +
+           fmt::format("**{}:** `{}`\n\n", tr("error", lang), markdown_code(p.error->format()));
+  out += fmt::format("| {} | {} | {} | {} | {} |\n| --- | --- | --- | --- | --- |\n",
+                     tr("Answer", lang), tr("Verdict", lang), tr("Score", lang),
+                     tr("You wrote", lang), tr("Expected", lang));
   for (const AnswerGrade& a : p.answers)
-    out += fmt::format("| `{}` | {} | {} / {} | {} | {} |\n", markdown_code(a.name), verdict_word(a.verdict, lang),
-                       score_text(a.score), score_text(a.max_score), cell(got_shown(a)),
-                       cell(tr(a.expected.shown(), lang).unicode));
+    out += fmt::format("| `{}` | {} | {} / {} | {} | {} |\n", markdown_code(a.name),
+                       verdict_word(a.verdict, lang), score_text(a.score), score_text(a.max_score),
+                       cell(got_shown(a)), cell(tr(a.expected.shown(), lang).unicode));
   out += "\n";
   for (const AnswerGrade& a : p.answers) {
     if (a.verdict == Verdict::Correct) continue;
     if (a.misconception.empty() && a.feedback.empty() && a.derivation.empty()) continue;
     out += fmt::format("**`{}`**", markdown_code(a.name));
-    if (a.carried_forward) out += " — " + tr("credit carried forward from your earlier answer", lang);
+    if (a.carried_forward)
+      out += " — " + tr("credit carried forward from your earlier answer", lang);
     out += "\n\n";
     if (!a.misconception.empty())
-      out += fmt::format("> **{}:** {}{}\n\n", tr("Common mistake", lang), tr(a.misconception, lang),
-                         a.wrong_step.empty() ? "" : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
+      out += fmt::format(
+          "> **{}:** {}{}\n\n", tr("Common mistake", lang), tr(a.misconception, lang),
+          a.wrong_step.empty()
+              ? ""
+              : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
     if (!a.feedback.empty()) out += markdown_escape(tr(a.feedback, lang)) + "\n\n";
-    if (!a.derivation.empty()) out += fmt::format("*{}:*\n\n", tr("How to get it", lang)) + render_steps_markdown(a.derivation, lang);
+    if (!a.derivation.empty())
+      out += fmt::format("*{}:*\n\n", tr("How to get it", lang)) +
+             render_steps_markdown(a.derivation, lang);
   }
   return out;
 }
@@ -122,14 +142,16 @@ std::string render_feedback_markdown(const GradeReport& r, Lang lang) {
 std::string render_feedback_markdown(const GradeReport& r, Lang lang,
                                      const std::vector<std::string>& problem_markdown) {
   std::string out = fmt::format("# {} {}\n\n**{}: {} / {}**\n\n", tr("Student", lang),
-                                r.student.empty() ? "(unnamed)" : markdown_escape(r.student), tr("Score", lang),
-                                score_text(r.score), score_text(r.max_score));
+                                r.student.empty() ? "(unnamed)" : markdown_escape(r.student),
+                                tr("Score", lang), score_text(r.score), score_text(r.max_score));
   if (!r.variant.empty()) out += markdown_escape(r.variant) + "\n\n";
-  for (const Diagnostic& d : r.errors) out += fmt::format("- {}: `{}`\n", tr("warning", lang), markdown_code(d.format()));
+  for (const Diagnostic& d : r.errors)
+    out += fmt::format("- {}: `{}`\n", tr("warning", lang), markdown_code(d.format()));
   if (!r.errors.empty()) out += "\n";
   for (std::size_t i = 0; i < r.problems.size(); ++i) {
     const ProblemGrade& p = r.problems[i];
-    out += fmt::format("## {} — {} / {}\n\n", markdown_escape(p.id), score_text(p.score), score_text(p.max_score));
+    out += fmt::format("## {} — {} / {}\n\n", markdown_escape(p.id), score_text(p.score),
+                       score_text(p.max_score));
     out += problem_markdown.at(i);
   }
   return out;
@@ -146,48 +168,61 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<title>Frustum — {}</title>\n<style>{}</style>\n{}</head>\n<body data-rendered=\"no\">\n",
       to_string(lang), html_escape(student), kStyle, math_head);
-  out += fmt::format("<h1>{} {}</h1>\n<p class=\"total\" id=\"total\">{}: {} / {}</p>\n<p id=\"summary\"></p>\n",
-                     html_escape(tr("Student", lang)), html_escape(student), html_escape(tr("Score", lang)),
-                     score_text(r.score), score_text(r.max_score));
+  out += fmt::format(
+      "<h1>{} {}</h1>\n<p class=\"total\" id=\"total\">{}: {} / {}</p>\n<p id=\"summary\"></p>\n",
+      html_escape(tr("Student", lang)), html_escape(student), html_escape(tr("Score", lang)),
+      score_text(r.score), score_text(r.max_score));
   if (!r.variant.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_escape(r.variant));
   for (const Diagnostic& d : r.errors)
-    out += fmt::format("<p class=\"error\">{}: {}</p>\n", html_escape(tr("warning", lang)), html_escape(d.format()));
+    out += fmt::format("<p class=\"error\">{}: {}</p>\n", html_escape(tr("warning", lang)),
+                       html_escape(d.format()));
   for (const ProblemGrade& p : r.problems) {
-    out += fmt::format("<section class=\"problem\" id=\"problem-{}\">\n<h2>{} <small>({})</small> — {} / {}</h2>\n",
-                       html_escape(p.id), html_escape(p.id), html_escape(p.kind), score_text(p.score),
-                       score_text(p.max_score));
+    out += fmt::format(
+        "<section class=\"problem\" id=\"problem-{}\">\n<h2>{} <small>({})</small> — {} / "
+        "{}</h2>\n",
+        html_escape(p.id), html_escape(p.id), html_escape(p.kind), score_text(p.score),
+        score_text(p.max_score));
     if (p.error) {
       out += fmt::format("<p class=\"error\">{}</p>\n</section>\n", html_escape(p.error->format()));
       continue;
     }
-    out += fmt::format("<table>\n<tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th></tr>\n",
-                       html_escape(tr("Answer", lang)), html_escape(tr("Verdict", lang)),
-                       html_escape(tr("Score", lang)), html_escape(tr("You wrote", lang)),
-                       html_escape(tr("Expected", lang)));
+    out +=
+        fmt::format("<table>\n<tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th></tr>\n",
+                    html_escape(tr("Answer", lang)), html_escape(tr("Verdict", lang)),
+                    html_escape(tr("Score", lang)), html_escape(tr("You wrote", lang)),
+                    html_escape(tr("Expected", lang)));
     for (const AnswerGrade& a : p.answers) {
       const std::string_view v = to_string(a.verdict);
       out += fmt::format(
-          "<tr class=\"{}\" data-verdict=\"{}\"><td><code>{}</code></td><td class=\"verdict\">{}</td>"
+          "<tr class=\"{}\" data-verdict=\"{}\"><td><code>{}</code></td><td "
+          "class=\"verdict\">{}</td>"
           "<td>{} / {}</td><td class=\"math\">{}</td><td class=\"math\">{}</td></tr>\n",
-          v, v, html_escape(a.name), html_escape(verdict_word(a.verdict, lang)), score_text(a.score),
-          score_text(a.max_score), html_escape(got_shown(a)), html_math(a.expected.shown(), lang, false));
+          v, v, html_escape(a.name), html_escape(verdict_word(a.verdict, lang)),
+          score_text(a.score), score_text(a.max_score), html_escape(got_shown(a)),
+          html_math(a.expected.shown(), lang, false));
     }
     out += "</table>\n";
     for (const AnswerGrade& a : p.answers) {
       if (a.verdict == Verdict::Correct) continue;
       if (a.misconception.empty() && a.feedback.empty() && a.derivation.empty()) continue;
-      out += fmt::format("<div class=\"answer-feedback\" id=\"feedback-{}-{}\">\n<h3><code>{}</code>{}</h3>\n",
-                         html_escape(p.id), html_escape(a.name), html_escape(a.name),
-                         a.carried_forward ? " — " + html_escape(tr("credit carried forward from your earlier answer", lang)) : "");
+      out += fmt::format(
+          "<div class=\"answer-feedback\" id=\"feedback-{}-{}\">\n<h3><code>{}</code>{}</h3>\n",
+          html_escape(p.id), html_escape(a.name), html_escape(a.name),
+          a.carried_forward
+              ? " — " + html_escape(tr("credit carried forward from your earlier answer", lang))
+              : "");
       if (!a.misconception.empty())
-        out += fmt::format("<p class=\"mistake\"><b>{}:</b> {}{}</p>\n", html_escape(tr("Common mistake", lang)),
-                           html_escape(tr(a.misconception, lang)),
-                           a.wrong_step.empty() ? "" : " (" + html_escape(tr("Where it goes wrong", lang)) + ": " +
-                                                           html_escape(tr(a.wrong_step, lang)) + ")");
-      if (!a.feedback.empty()) out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(tr(a.feedback, lang)));
+        out += fmt::format(
+            "<p class=\"mistake\"><b>{}:</b> {}{}</p>\n", html_escape(tr("Common mistake", lang)),
+            html_escape(tr(a.misconception, lang)),
+            a.wrong_step.empty() ? ""
+                                 : " (" + html_escape(tr("Where it goes wrong", lang)) + ": " +
+                                       html_escape(tr(a.wrong_step, lang)) + ")");
+      if (!a.feedback.empty())
+        out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(tr(a.feedback, lang)));
       if (!a.derivation.empty())
-        out += fmt::format("<details open><summary>{}</summary>\n{}</details>\n", html_escape(tr("How to get it", lang)),
-                           html_steps(a.derivation, lang));
+        out += fmt::format("<details open><summary>{}</summary>\n{}</details>\n",
+                           html_escape(tr("How to get it", lang)), html_steps(a.derivation, lang));
       out += "</div>\n";
     }
     out += "</section>\n";

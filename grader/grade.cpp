@@ -1,14 +1,14 @@
 #include "grader/grade.hpp"
 
-#include "grader/answer_parser.hpp"
-#include "solver/input/given_reader.hpp"
-#include "solver/problem/solve_set.hpp"
-#include "solver/input/yaml_document.hpp"
-#include "solver/util/exact_format.hpp"
-#include "solver/util/suggest.hpp"
-
 #include <algorithm>
 #include <optional>
+
+#include "grader/answer_parser.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/input/yaml_document.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/util/exact_format.hpp"
+#include "solver/util/suggest.hpp"
 
 namespace frustum {
 
@@ -27,8 +27,9 @@ Submission load_submission_from(const YamlDocument& doc, const std::string& name
     s.errors.push_back(Diagnostic{location_of(n, name), field, message});
   };
   if (root.IsNull() && root.Mark().line < 0) {
-    s.errors.push_back(Diagnostic{SourceLocation{name, 1, 1}, "",
-                                  "the file is empty: expected a mapping with 'student' and 'answers'"});
+    s.errors.push_back(
+        Diagnostic{SourceLocation{name, 1, 1}, "",
+                   "the file is empty: expected a mapping with 'student' and 'answers'"});
     return s;
   }
   if (!root.IsMap()) {
@@ -41,13 +42,18 @@ Submission load_submission_from(const YamlDocument& doc, const std::string& name
       err(it->first, k, "unknown field" + did_you_mean(k, {"student", "answers"}));
   }
   if (root["student"].IsDefined()) {
-    if (root["student"].IsScalar()) s.student = root["student"].Scalar();
-    else err(root["student"], "student", "expected the student's id");
+    if (root["student"].IsScalar())
+      s.student = root["student"].Scalar();
+    else
+      err(root["student"], "student", "expected the student's id");
   }
   const YAML::Node answers = root["answers"];
-  if (!answers.IsDefined()) err(root, "answers", "missing required field");
-  else if (!answers.IsMap()) err(answers, "answers", "expected a mapping of problem id → answers");
-  else s.answers = answers;
+  if (!answers.IsDefined())
+    err(root, "answers", "missing required field");
+  else if (!answers.IsMap())
+    err(answers, "answers", "expected a mapping of problem id → answers");
+  else
+    s.answers = answers;
   return s;
 }
 
@@ -75,7 +81,8 @@ bool all_zero_vector(const Value& v) {
 // it for z). Carrying only these spares the kind recomputing what the answer does not need
 // (a unit normal from a typed decimal normal is a square root of a large rational).
 template <typename Present>
-std::vector<std::string> carry_inputs(const KindInfo& kind, const std::string& name, Present present) {
+std::vector<std::string> carry_inputs(const KindInfo& kind, const std::string& name,
+                                      Present present) {
   std::vector<std::string> out;
   std::vector<std::string> todo = kind.answer(name)->depends_on;
   std::vector<std::string> seen;
@@ -104,8 +111,8 @@ std::string name_list(const std::vector<std::string>& names) {
 // the named mistakes and the student's own earlier answers.
 class ProblemGrader {
  public:
-  ProblemGrader(const ProblemSpec& spec, const ProblemResult& solved, const std::vector<Misconception>& mistakes,
-                const ProblemJudging& judging)
+  ProblemGrader(const ProblemSpec& spec, const ProblemResult& solved,
+                const std::vector<Misconception>& mistakes, const ProblemJudging& judging)
       : spec_(spec), solved_(solved), mistakes_(mistakes), judging_(judging) {}
 
   void parse(const YAML::Node& student) {
@@ -144,7 +151,8 @@ class ProblemGrader {
     if (ag.got && ag.verdict != Verdict::Correct) {
       // A wrong answer computed from a trivial one is trivial too: it carries nothing forward.
       bool from_trivial = all_zero_vector(*ag.got);
-      for (const std::string& d : carry_inputs(*spec_.info, name, [&](const std::string& n) { return answers_.find(n); }))
+      for (const std::string& d :
+           carry_inputs(*spec_.info, name, [&](const std::string& n) { return answers_.find(n); }))
         from_trivial = from_trivial || is_trivial(d);
       if (from_trivial) trivial_.push_back(name);
     }
@@ -203,7 +211,8 @@ class ProblemGrader {
             compare(value, *theirs, rules(other, false)).verdict != Verdict::Correct)
           agrees = false;
       }
-      if (agrees && std::none_of(fits.begin(), fits.end(), [&](const Misconception* f) { return f->name == m.name; }))
+      if (agrees && std::none_of(fits.begin(), fits.end(),
+                                 [&](const Misconception* f) { return f->name == m.name; }))
         fits.push_back(&m);
     }
     if (fits.size() == 1) {
@@ -214,7 +223,8 @@ class ProblemGrader {
       std::vector<std::string> names;
       for (const Misconception* f : fits) names.push_back(f->name);
       std::string list;
-      for (std::size_t i = 0; i < names.size(); ++i) list += (i ? (i + 1 == names.size() ? " or " : ", ") : "") + names[i];
+      for (std::size_t i = 0; i < names.size(); ++i)
+        list += (i ? (i + 1 == names.size() ? " or " : ", ") : "") + names[i];
       ag.feedback = "This is what a " + list + " gives; your other answers do not show which." +
                     (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
     }
@@ -233,15 +243,18 @@ class ProblemGrader {
     if (inputs.items().empty()) return;
     const Answers carried = spec_.info->carry_forward(spec_.given, inputs);
     const Value* follow = carried.find(ag.name);
-    if (!follow || compare(*follow, *ag.got, rules(ag.name, false)).verdict != Verdict::Correct) return;
+    if (!follow || compare(*follow, *ag.got, rules(ag.name, false)).verdict != Verdict::Correct)
+      return;
     std::vector<std::string> wrong, right;
-    for (const auto& [n, v] : inputs.items()) (verdict_of(n) == Verdict::Correct ? right : wrong).push_back(n);
+    for (const auto& [n, v] : inputs.items())
+      (verdict_of(n) == Verdict::Correct ? right : wrong).push_back(n);
     if (wrong.empty()) {
       ag.verdict = Verdict::Correct;
       ag.score = ag.max_score;
       ag.misconception.clear();
       ag.wrong_step.clear();
-      ag.feedback = "right for your own " + name_list(right) + ", which " + (right.size() == 1 ? "is" : "are") +
+      ag.feedback = "right for your own " + name_list(right) + ", which " +
+                    (right.size() == 1 ? "is" : "are") +
                     " also right (the key used another, equally right, choice)";
       return;
     }
@@ -251,7 +264,8 @@ class ProblemGrader {
     ag.score = credit;
     ag.carried_forward = true;
     ag.feedback = "wrong, but it follows correctly from your own earlier " + name_list(wrong) +
-                  " (error carried forward: " + format_approx(spec_.grading.ecf * 100, 3) + "% of the points)";
+                  " (error carried forward: " + format_approx(spec_.grading.ecf * 100, 3) +
+                  "% of the points)";
   }
 
   const ProblemSpec& spec_;
@@ -259,14 +273,15 @@ class ProblemGrader {
   const std::vector<Misconception>& mistakes_;
   const ProblemJudging& judging_;
   std::vector<ParsedAnswer> parsed_;
-  Answers answers_;                                          // the parsed ones, by name
-  std::vector<std::pair<std::string, Verdict>> verdicts_;    // graded so far
-  std::vector<std::string> trivial_;                         // wrong answers computed from trivial ones
+  Answers answers_;                                        // the parsed ones, by name
+  std::vector<std::pair<std::string, Verdict>> verdicts_;  // graded so far
+  std::vector<std::string> trivial_;  // wrong answers computed from trivial ones
 };
 
 ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
-                           const std::vector<Misconception>& mistakes, const ProblemJudging& judging,
-                           const YAML::Node& student, const std::string& answers_file, std::vector<Diagnostic>& errors) {
+                           const std::vector<Misconception>& mistakes,
+                           const ProblemJudging& judging, const YAML::Node& student,
+                           const std::string& answers_file, std::vector<Diagnostic>& errors) {
   ProblemGrade pg;
   pg.id = spec.id;
   pg.kind = spec.kind;
@@ -292,7 +307,8 @@ ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
     for (auto it = student.begin(); it != student.end(); ++it) {
       const std::string k = it->first.as<std::string>();
       if (std::find(spec.ask.begin(), spec.ask.end(), k) == spec.ask.end())
-        errors.push_back(Diagnostic{location_of(it->first, answers_file), "answers." + spec.id + "." + k,
+        errors.push_back(Diagnostic{location_of(it->first, answers_file),
+                                    "answers." + spec.id + "." + k,
                                     "not asked in this problem" + did_you_mean(k, spec.ask)});
     }
   }
@@ -357,7 +373,8 @@ SolvedSet solve_for_grading(const ProblemSet& set) {
     }
     s.results.back().answers = std::move(keys);
     s.mistakes.push_back(mistakes_of(spec, s.results.back()));
-    s.judging.push_back(s.results.back().error ? ProblemJudging{} : prepare_judging(spec, s.results.back().answers));
+    s.judging.push_back(s.results.back().error ? ProblemJudging{}
+                                               : prepare_judging(spec, s.results.back().answers));
   }
   return s;
 }
@@ -371,18 +388,21 @@ GradeReport grade(const ProblemSet& set, const Submission& submission, const Sol
   r.errors.insert(r.errors.end(), submission.errors.begin(), submission.errors.end());
   for (const ProblemSpec& spec : set.problems) {
     // A const lookup of a missing key gives an invalid node: every answer is then missing.
-    const YAML::Node found = submission.answers.IsMap() ? submission.answers[spec.id] : YAML::Node();
+    const YAML::Node found =
+        submission.answers.IsMap() ? submission.answers[spec.id] : YAML::Node();
     const YAML::Node student = found.IsDefined() ? found : YAML::Node();
     ProblemGrade pg;
     try {
       const std::size_t index = static_cast<std::size_t>(&spec - set.problems.data());
       if (solved && index < solved->results.size()) {
-        pg = grade_problem(spec, solved->results[index], solved->mistakes[index], solved->judging[index], student,
-                           submission.file, r.errors);
+        pg = grade_problem(spec, solved->results[index], solved->mistakes[index],
+                           solved->judging[index], student, submission.file, r.errors);
       } else {
         const ProblemResult result = solve_problem(spec, set.file, true);
-        const ProblemJudging judging = result.error ? ProblemJudging{} : prepare_judging(spec, result.answers);
-        pg = grade_problem(spec, result, mistakes_of(spec, result), judging, student, submission.file, r.errors);
+        const ProblemJudging judging =
+            result.error ? ProblemJudging{} : prepare_judging(spec, result.answers);
+        pg = grade_problem(spec, result, mistakes_of(spec, result), judging, student,
+                           submission.file, r.errors);
       }
     } catch (const std::exception& e) {
       pg.id = spec.id;
@@ -399,8 +419,9 @@ GradeReport grade(const ProblemSet& set, const Submission& submission, const Sol
     for (auto it = submission.answers.begin(); it != submission.answers.end(); ++it) {
       const std::string k = it->first.as<std::string>();
       if (!set.find(k))
-        r.errors.push_back(Diagnostic{location_of(it->first, submission.file), "answers." + k,
-                                      "no problem with this id in " + set.file + did_you_mean(k, ids)});
+        r.errors.push_back(
+            Diagnostic{location_of(it->first, submission.file), "answers." + k,
+                       "no problem with this id in " + set.file + did_you_mean(k, ids)});
     }
   }
   return r;

@@ -3,16 +3,16 @@
 // reported and never stops the rest.
 #pragma once
 
-#include "grader/compare.hpp"
-#include "grader/trivial.hpp"
-#include "solver/derivation/problem_result.hpp"
-#include "solver/problem/problem_set.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "grader/compare.hpp"
+#include "grader/trivial.hpp"
+#include "solver/derivation/problem_result.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 
@@ -81,6 +81,7 @@ SolvedSet solve_for_grading(const ProblemSet& set);
 
 // Grades one submission; `solved` (from solve_for_grading on the same set) saves solving the
 // set again for every student of a class.
-GradeReport grade(const ProblemSet& set, const Submission& submission, const SolvedSet* solved = nullptr);
+GradeReport grade(const ProblemSet& set, const Submission& submission,
+                  const SolvedSet* solved = nullptr);
 
 }  // namespace frustum

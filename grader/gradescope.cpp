@@ -1,9 +1,9 @@
 #include "grader/gradescope.hpp"
 
+#include <fmt/format.h>
+
 #include "grader/feedback.hpp"
 #include "solver/derivation/render.hpp"
-
-#include <fmt/format.h>
 
 namespace frustum {
 

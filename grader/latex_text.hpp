@@ -1,7 +1,7 @@
 // Text for pdflatex: special characters escaped in prose, and the Unicode that derivations use
 // (−, ·, ×, √, π, ′, ₀…₉, ⁻¹, ‖, ≈, ∞ …) mapped to LaTeX by declarations in the preamble.
-// Characters outside that table and outside CJK are shown as [U+XXXX] (a document with Japanese needs
-// LuaLaTeX with luatexja; the caller chooses latex_preamble(true) when has_cjk).
+// Characters outside that table and outside CJK are shown as [U+XXXX] (a document with Japanese
+// needs LuaLaTeX with luatexja; the caller chooses latex_preamble(true) when has_cjk).
 #pragma once
 
 #include <string>

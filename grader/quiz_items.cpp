@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "grader/export_tolerance.hpp"
-#include "solver/problem/solve_set.hpp"
 #include "solver/input/text_reader.hpp"
-#include "solver/problem/variants.hpp"
 #include "solver/input/yaml_emit.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/problem/variants.hpp"
 
 namespace frustum {
 

@@ -1,15 +1,14 @@
 #include "grader/report.hpp"
 
-#include "solver/util/exact_format.hpp"
-
 #include <fmt/format.h>
+
+#include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
 using json = nlohmann::ordered_json;
 
 namespace {
-
 
 // The number a step has in the rendered derivation (notes and warnings are not numbered).
 int step_number(const std::vector<Step>& steps) {
@@ -22,11 +21,26 @@ std::string mark(Verdict v, bool color) {
   const char* on = "";
   const char* symbol = "?";
   switch (v) {
-    case Verdict::Correct: on = "\033[32m"; symbol = "✓"; break;
-    case Verdict::Partial: on = "\033[33m"; symbol = "½"; break;
-    case Verdict::Incorrect: on = "\033[31m"; symbol = "✗"; break;
-    case Verdict::Unparseable: on = "\033[35m"; symbol = "?"; break;
-    case Verdict::Missing: on = "\033[2m"; symbol = "–"; break;
+    case Verdict::Correct:
+      on = "\033[32m";
+      symbol = "✓";
+      break;
+    case Verdict::Partial:
+      on = "\033[33m";
+      symbol = "½";
+      break;
+    case Verdict::Incorrect:
+      on = "\033[31m";
+      symbol = "✗";
+      break;
+    case Verdict::Unparseable:
+      on = "\033[35m";
+      symbol = "?";
+      break;
+    case Verdict::Missing:
+      on = "\033[2m";
+      symbol = "–";
+      break;
   }
   return color ? std::string(on) + symbol + "\033[0m" : symbol;
 }
@@ -43,12 +57,14 @@ std::string score_text(double v) {
 
 std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
   const Lang lang = style.lang;
-  std::string out = fmt::format("{} {}: {} / {}\n", tr("Student", lang), r.student.empty() ? "(unnamed)" : r.student,
-                                score_text(r.score), score_text(r.max_score));
+  std::string out = fmt::format("{} {}: {} / {}\n", tr("Student", lang),
+                                r.student.empty() ? "(unnamed)" : r.student, score_text(r.score),
+                                score_text(r.max_score));
   if (!r.variant.empty()) out += "  " + r.variant + "\n";
   for (const Diagnostic& d : r.errors) out += "  " + tr("warning", lang) + ": " + d.format() + "\n";
   for (const ProblemGrade& p : r.problems) {
-    out += fmt::format("\n{} ({}): {} / {}\n", p.id, p.kind, score_text(p.score), score_text(p.max_score));
+    out += fmt::format("\n{} ({}): {} / {}\n", p.id, p.kind, score_text(p.score),
+                       score_text(p.max_score));
     if (p.error) {
       out += "  " + tr("error", lang) + ": " + p.error->format() + "\n";
       continue;
@@ -62,16 +78,25 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
           (!derivation || a.derivation.size() > derivation->size()))
         derivation = &a.derivation;
     for (const AnswerGrade& a : p.answers) {
-      out += fmt::format("  {} {}: {}", mark(a.verdict, style.color), a.name, tr(to_string(a.verdict), lang));
-      if (a.verdict != Verdict::Missing) out += fmt::format(" — {} {}", lang == Lang::En ? "you wrote" : tr("You wrote", lang) + ":", a.got_text);
+      out += fmt::format("  {} {}: {}", mark(a.verdict, style.color), a.name,
+                         tr(to_string(a.verdict), lang));
+      if (a.verdict != Verdict::Missing)
+        out += fmt::format(" — {} {}", lang == Lang::En ? "you wrote" : tr("You wrote", lang) + ":",
+                           a.got_text);
       if (a.verdict != Verdict::Correct)
-        out += fmt::format("; {} {}", lang == Lang::En ? "expected" : tr("Expected", lang) + ":", tr(a.expected.shown(), lang).unicode);
+        out += fmt::format("; {} {}", lang == Lang::En ? "expected" : tr("Expected", lang) + ":",
+                           tr(a.expected.shown(), lang).unicode);
       out += "\n";
       if (!a.misconception.empty())
-        out += fmt::format("      {}: {}{}\n", tr("Common mistake", lang), tr(a.misconception, lang),
-                           a.wrong_step.empty() ? "" : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
-      if (!a.feedback.empty() && a.verdict != Verdict::Correct) out += "      " + tr(a.feedback, lang) + "\n";
-      if (a.verdict != Verdict::Correct && !a.derivation.empty() && !a.derivation.back().answers.empty())
+        out += fmt::format(
+            "      {}: {}{}\n", tr("Common mistake", lang), tr(a.misconception, lang),
+            a.wrong_step.empty()
+                ? ""
+                : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
+      if (!a.feedback.empty() && a.verdict != Verdict::Correct)
+        out += "      " + tr(a.feedback, lang) + "\n";
+      if (a.verdict != Verdict::Correct && !a.derivation.empty() &&
+          !a.derivation.back().answers.empty())
         out += fmt::format("      {} {}: {}\n", tr("See step", lang), step_number(a.derivation),
                            title_in(a.derivation.back(), lang));
     }
@@ -91,7 +116,8 @@ json render_grade_json(const GradeReport& r) {
   j["max_score"] = number_json(r.max_score);
   json problems = json::array();
   for (const ProblemGrade& p : r.problems) {
-    json pj = {{"id", p.id}, {"score", number_json(p.score)}, {"max_score", number_json(p.max_score)}};
+    json pj = {
+        {"id", p.id}, {"score", number_json(p.score)}, {"max_score", number_json(p.max_score)}};
     if (p.error) pj["error"] = p.error->format();
     json answers = json::object();
     for (const AnswerGrade& a : p.answers) {
@@ -101,7 +127,8 @@ json render_grade_json(const GradeReport& r) {
                  {"expected", value_json(a.expected)}};
       const json exact = exact_json(a.expected);
       if (!exact.is_null()) aj["expected_exact"] = exact;
-      aj["got"] = a.got ? value_json(*a.got) : (a.got_text.empty() ? json(nullptr) : json(a.got_text));
+      aj["got"] =
+          a.got ? value_json(*a.got) : (a.got_text.empty() ? json(nullptr) : json(a.got_text));
       if (a.verdict != Verdict::Missing) aj["got_text"] = a.got_text;
       aj["feedback"] = a.feedback;
       if (!a.misconception.empty()) {

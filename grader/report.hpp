@@ -2,12 +2,11 @@
 // answer pointing at its step) and the JSON of problem-format.md §3.
 #pragma once
 
+#include <nlohmann/json.hpp>
+#include <string>
+
 #include "grader/grade.hpp"
 #include "solver/derivation/render.hpp"
-
-#include <nlohmann/json.hpp>
-
-#include <string>
 
 namespace frustum {
 

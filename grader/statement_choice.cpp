@@ -187,9 +187,8 @@ Comparison compare_statement_choice(const Value& expected, const Value& got) {
     wrong_chosen += chosen[i] && !truth[i];
     if (chosen[i] != truth[i])
       // The kind derives statement k in step k (it states no conventions before them).
-      why +=
-          fmt::format("{}Statement {} is {}, not {} (see step {}).", why.empty() ? "" : " ",
-                      i + 1, truth[i] ? "true" : "false", truth[i] ? "false" : "true", i + 1);
+      why += fmt::format("{}Statement {} is {}, not {} (see step {}).", why.empty() ? "" : " ",
+                         i + 1, truth[i] ? "true" : "false", truth[i] ? "false" : "true", i + 1);
   }
   if (why.empty()) return judged(Verdict::Correct, 1, "");
   // Each true statement chosen earns 1/T, each false one chosen costs 1/F.

@@ -1,16 +1,17 @@
 // The numeric paths against the exact backend (generated well-conditioned problems), and the
 // hard-case suite problems/hard: exact answers, robust numeric answers, the studies' findings.
 #include "solver/accuracy/accuracy.hpp"
-#include "solver/accuracy/hard_cases.hpp"
-#include "grader/grade.hpp"
-#include "solver/problem/registry.hpp"
-#include "solver/problem/solve_precision.hpp"
-#include "solver/numeric/condition.hpp"
-#include "test_util.hpp"
 
 #include <cmath>
 #include <filesystem>
 #include <set>
+
+#include "grader/grade.hpp"
+#include "solver/accuracy/hard_cases.hpp"
+#include "solver/numeric/condition.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/solve_precision.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -33,10 +34,13 @@ const ProblemSpec& problem(const ProblemSet& set, const std::string& id) {
 }
 
 // Every set in problems/hard (tests/accuracy_test.cpp checks the list against the folder).
-constexpr const char* kHardSets[] = {"normals",     "planes",   "backface",  "eye_plane", "magnitudes",
-                                     "exact_signs", "coverage", "decisions", "render"};
+constexpr const char* kHardSets[] = {"normals",   "planes",     "backface",
+                                     "eye_plane", "magnitudes", "exact_signs",
+                                     "coverage",  "decisions",  "render"};
 
-ProblemSet hard(const std::string& name) { return load_problem_set(source_path("problems/hard/" + name)); }
+ProblemSet hard(const std::string& name) {
+  return load_problem_set(source_path("problems/hard/" + name));
+}
 
 bool has_warning(const NumericResult& r, const std::string& title_part) {
   for (const NumericWarning& w : r.warnings)
@@ -112,7 +116,8 @@ TEST(BenchAccuracy, TheExactBackendScoresZero) {
   const Exact third = Exact(1) / 3, root = GiNaC::sqrt(Exact(3)) / 3;
   EXPECT_EQ(bench::exact_relative_error({third, root}, {third, root}), 0.0);
   EXPECT_GT(bench::exact_relative_error({third}, {root}), 0.0);
-  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
   bool exact_seen = false, float_error = false;
   for (const bench::AccuracyRow& row : bench::measure(set, "seed", 0)) {
     if (row.precision == Precision::Exact) {
@@ -142,7 +147,8 @@ TEST(Condition, EstimatesGrowAsProblemsDegenerate) {
 // double (10⁻²⁰⁰, 10²⁰⁰): the estimates are computed on the rescaled points.
 TEST(Condition, EstimatesDoNotChangeWithTheScale) {
   const std::vector<Eigen::Vector3d> good = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  const std::vector<Eigen::Vector3d> thin = {{0.5, 0.25, 0.1}, {1, 0.25, 0.3}, {2, 0.25 + 1e-9, 0.7}};
+  const std::vector<Eigen::Vector3d> thin = {
+      {0.5, 0.25, 0.1}, {1, 0.25, 0.3}, {2, 0.25 + 1e-9, 0.7}};
   const Eigen::Vector3d eye(0.3, 0.3, 1e-6);
   const Eigen::Vector2d pixel(0.75, 0.3);
   for (const int k : {-700, -400, 400, 700}) {
@@ -199,7 +205,8 @@ TEST(NumericPaths, ExactBackendMatchesTheDerivation) {
         if (name == "plane") {
           const double scale = n->numbers[0] / v.numbers[0];
           for (std::size_t i = 0; i < v.numbers.size(); ++i)
-            EXPECT_NEAR(n->numbers[i], scale * v.numbers[i], 1e-9 * std::abs(scale * v.numbers[i]) + 1e-12);
+            EXPECT_NEAR(n->numbers[i], scale * v.numbers[i],
+                        1e-9 * std::abs(scale * v.numbers[i]) + 1e-12);
           continue;
         }
         for (std::size_t i = 0; i < v.numbers.size(); ++i)
@@ -224,25 +231,31 @@ TEST(NumericPaths, TransformTimesInverseIsIdentity) {
       for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) {
           long double s = 0;
-          for (int k = 0; k < 4; ++k) s += m[static_cast<std::size_t>(4 * i + k)] * inv[static_cast<std::size_t>(4 * k + j)];
-          EXPECT_NEAR(static_cast<double>(s), i == j ? 1.0 : 0.0, 1e3 * unit_roundoff(p)) << to_string(p);
+          for (int k = 0; k < 4; ++k)
+            s += m[static_cast<std::size_t>(4 * i + k)] * inv[static_cast<std::size_t>(4 * k + j)];
+          EXPECT_NEAR(static_cast<double>(s), i == j ? 1.0 : 0.0, 1e3 * unit_roundoff(p))
+              << to_string(p);
         }
     }
 }
 
 TEST(SolvePrecision, DerivationNamesTheBackendAndKeepsOtherKindsExact) {
-  const ProblemSet set = load_problem_set(source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const ProblemSet set =
+      load_problem_set(source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
   const SetResult r = solve_set(set, true, std::nullopt, Precision::Float);
   ASSERT_FALSE(r.problems.empty());
   for (const ProblemResult& p : r.problems) {
     ASSERT_FALSE(p.error) << p.error->format();
     bool backend = false;
     for (const Step& s : p.derivation.steps())
-      backend = backend || (s.title == "Backend" && s.note.find(p.kind == "depth_at_pixel" ? "float (IEEE 754 binary32" : "") != std::string::npos);
+      backend = backend || (s.title == "Backend" &&
+                            s.note.find(p.kind == "depth_at_pixel" ? "float (IEEE 754 binary32"
+                                                                   : "") != std::string::npos);
     EXPECT_TRUE(backend) << p.id;
   }
   // seed 001's pixel: z = 8 in float too.
-  const ProblemResult z = solve_problem(problem(set, "seed001-pixel-z"), set.file, true, Precision::Float);
+  const ProblemResult z =
+      solve_problem(problem(set, "seed001-pixel-z"), set.file, true, Precision::Float);
   ASSERT_FALSE(z.error);
   EXPECT_FLOAT_EQ(static_cast<float>(z.answers.find("z")->numbers[0]), 8.0f);
   EXPECT_TRUE(z.answers.find("z")->exact.empty());
@@ -258,13 +271,15 @@ TEST(HardCases, SolveCleanlyAndMatchTheirExactAnswers) {
     ASSERT_TRUE(set.all_errors().empty()) << name << ": " << set.all_errors()[0].format();
     const SetResult solved = solve_set(set, true);
     for (const ProblemResult& p : solved.problems) EXPECT_FALSE(p.error) << name << " " << p.id;
-    const GradeReport g = grade(set, load_submission(source_path(std::string("problems/hard/answers/") + name + ".yaml")));
+    const GradeReport g = grade(
+        set, load_submission(source_path(std::string("problems/hard/answers/") + name + ".yaml")));
     EXPECT_TRUE(g.errors.empty()) << name;
     EXPECT_GT(g.max_score, 0) << name;
     EXPECT_DOUBLE_EQ(g.score, g.max_score) << name;
     for (const ProblemGrade& p : g.problems)
       for (const AnswerGrade& a : p.answers)
-        EXPECT_EQ(a.verdict, Verdict::Correct) << name << " " << p.id << " " << a.name << ": " << a.feedback;
+        EXPECT_EQ(a.verdict, Verdict::Correct)
+            << name << " " << p.id << " " << a.name << ": " << a.feedback;
   }
 }
 
@@ -297,7 +312,8 @@ TEST(HardCases, DiscreteAnswersAreExactInEveryBackend) {
     for (const ProblemSpec& spec : set.problems) {
       const ProblemResult exact = solve_problem(spec, set.file, false);
       ASSERT_FALSE(exact.error) << name << " " << spec.id;
-      for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
+      for (Precision p :
+           {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
         const ProblemResult r = solve_problem(spec, set.file, true, p);
         ASSERT_FALSE(r.error) << name << " " << spec.id << " " << to_string(p);
         for (const AnswerSpec& a : spec.info->answers) {
@@ -314,11 +330,14 @@ TEST(HardCases, DiscreteAnswersAreExactInEveryBackend) {
           EXPECT_EQ(got->shape == Value::Shape::Null, want->shape == Value::Shape::Null)
               << name << " " << spec.id << " " << a.name << " " << to_string(p);
           if (!discrete) continue;
-          EXPECT_EQ(discrete_part(*got), discrete_part(*want)) << name << " " << spec.id << " " << a.name << " " << to_string(p);
+          EXPECT_EQ(discrete_part(*got), discrete_part(*want))
+              << name << " " << spec.id << " " << a.name << " " << to_string(p);
           ++compared;
         }
         for (const Step& s : r.derivation.steps())
-          if (s.title == "Backend" && s.note.find("decided by exact arithmetic") != std::string::npos) ++fallbacks;
+          if (s.title == "Backend" &&
+              s.note.find("decided by exact arithmetic") != std::string::npos)
+            ++fallbacks;
       }
     }
   }
@@ -380,9 +399,11 @@ TEST(HardCases, ExactNormalsOfDegeneratePolygonsAreExact) {
       EXPECT_NEAR(to_double(x), 1 / std::sqrt(3.0), 2e-16) << spec.id;
   }
   // The derivation warns about the ill-conditioned ones, with digits.
-  for (const char* id : {"offset-1e8-features-1e-8", "offset-1e8-unit-square", "subnormal-triangle"})
+  for (const char* id :
+       {"offset-1e8-features-1e-8", "offset-1e8-unit-square", "subnormal-triangle"})
     EXPECT_EQ(exact_text(solve_problem(problem(set, id), set.file, false), "unit_normal"),
-              "sqrt(3)/3, sqrt(3)/3, sqrt(3)/3") << id;
+              "sqrt(3)/3, sqrt(3)/3, sqrt(3)/3")
+        << id;
   const ProblemResult thin = solve_problem(problem(set, "near-parallel-edges"), set.file, true);
   EXPECT_TRUE(thin.derivation.has_warnings());
 }
@@ -420,7 +441,8 @@ TEST(HardCases, NewellAndBestPairBeatTheNaiveCrossProduct) {
 TEST(HardCases, NumericNormalSurvivesSubnormalAndHugeCoordinates) {
   const ProblemSet set = hard("normals.yaml");
   const double third = 1 / std::sqrt(3.0);
-  for (const char* id : {"subnormal-triangle", "huge-triangle", "near-parallel-edges", "near-zero-edge"}) {
+  for (const char* id :
+       {"subnormal-triangle", "huge-triangle", "near-parallel-edges", "near-zero-edge"}) {
     const NumericResult r = numeric(problem(set, id), Precision::Double);
     const std::vector<long double> u = raw(r, "unit_normal");
     ASSERT_EQ(u.size(), 3u) << id;
@@ -436,10 +458,13 @@ TEST(HardCases, BackfaceNearThePlaneExactAndAdaptive) {
   EXPECT_TRUE(front.derivation.has_warnings());
   const ProblemResult on = solve_problem(problem(set, "eye-in-plane"), set.file, true);
   EXPECT_EQ(on.answers.find("facing")->word, "edge_on");
-  EXPECT_EQ(solve_problem(problem(set, "far-face-eye-in-plane"), set.file, false).answers.find("facing")->word,
+  EXPECT_EQ(solve_problem(problem(set, "far-face-eye-in-plane"), set.file, false)
+                .answers.find("facing")
+                ->word,
             "edge_on");
   // In double the inputs are rounded; the numeric path warns that D_f is ill-conditioned.
-  EXPECT_TRUE(has_warning(numeric(problem(set, "eye-1e-18-in-front"), Precision::Double), "nearly in"));
+  EXPECT_TRUE(
+      has_warning(numeric(problem(set, "eye-1e-18-in-front"), Precision::Double), "nearly in"));
 }
 
 TEST(HardCases, NaiveSignsFailNearThePlaneAdaptiveNever) {
@@ -503,12 +528,15 @@ TEST(HardCases, FarNearOneMillionFloatCannotSeparateWhatExactDoes) {
   const ProblemSpec& a = problem(set, "deep-far-near-1e6");
   const ProblemSpec& b = problem(set, "deep-far-near-1e6-behind-by-1e-3");
   const ProblemResult ea = solve_problem(a, set.file, true), eb = solve_problem(b, set.file, false);
-  EXPECT_EQ(exact_sign(eb.answers.find("window")->exact[2] - ea.answers.find("window")->exact[2]), 1);
+  EXPECT_EQ(exact_sign(eb.answers.find("window")->exact[2] - ea.answers.find("window")->exact[2]),
+            1);
   bool noted = false;
   for (const Step& s : ea.derivation.steps()) noted = noted || s.title == "Depth precision";
   EXPECT_TRUE(noted);
-  EXPECT_EQ(raw(numeric(a, Precision::Float), "window")[2], raw(numeric(b, Precision::Float), "window")[2]);
-  EXPECT_LT(raw(numeric(a, Precision::Double), "window")[2], raw(numeric(b, Precision::Double), "window")[2]);
+  EXPECT_EQ(raw(numeric(a, Precision::Float), "window")[2],
+            raw(numeric(b, Precision::Float), "window")[2]);
+  EXPECT_LT(raw(numeric(a, Precision::Double), "window")[2],
+            raw(numeric(b, Precision::Double), "window")[2]);
 }
 
 TEST(HardCases, DepthBufferReversedZSeparatesWhatStandardCannot) {
@@ -520,7 +548,8 @@ TEST(HardCases, DepthBufferReversedZSeparatesWhatStandardCannot) {
       EXPECT_GT(bench::depth_flips(DepthMapping::DirectX, ratio, 1e-4), 0) << ratio;
     }
     EXPECT_LT(bench::smallest_separable_gap(DepthMapping::ReversedZ, ratio) * 100,
-              bench::smallest_separable_gap(DepthMapping::OpenGL, ratio)) << ratio;
+              bench::smallest_separable_gap(DepthMapping::OpenGL, ratio))
+        << ratio;
   }
   // Standard mappings get worse as far/near grows.
   EXPECT_GT(bench::smallest_separable_gap(DepthMapping::OpenGL, 1e6),
@@ -544,12 +573,14 @@ TEST(HardCases, HugeTinyAndSubnormalVectors) {
       const std::vector<long double> x = raw(d, name), r = raw(exact, name);
       ASSERT_EQ(x.size(), r.size()) << id << " " << name;
       for (std::size_t i = 0; i < x.size(); ++i)
-        EXPECT_NEAR(static_cast<double>(x[i]), static_cast<double>(r[i]), 1e-12) << id << " " << name;
+        EXPECT_NEAR(static_cast<double>(x[i]), static_cast<double>(r[i]), 1e-12)
+            << id << " " << name;
     }
   }
   EXPECT_TRUE(has_warning(numeric(problem(set, "tiny-vectors"), Precision::Double), "Underflow") ||
               raw(numeric(problem(set, "tiny-vectors"), Precision::Double), "cross")[2] == 0);
-  EXPECT_TRUE(has_warning(numeric(problem(set, "ill-conditioned-transform"), Precision::Double), "Ill-conditioned"));
+  EXPECT_TRUE(has_warning(numeric(problem(set, "ill-conditioned-transform"), Precision::Double),
+                          "Ill-conditioned"));
 }
 
 // Degenerate input in decimals (collinear points, a triangle edge-on to the view): the exact
@@ -569,14 +600,16 @@ problems:
   for (const ProblemSpec& spec : set.problems) {
     const ProblemResult exact = solve_problem(spec, set.file, false);
     ASSERT_TRUE(exact.error) << spec.id;
-    for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
+    for (Precision p :
+         {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
       const ProblemResult r = solve_problem(spec, set.file, true, p);
       ASSERT_TRUE(r.error) << spec.id << " " << to_string(p);
       EXPECT_EQ(r.error->message, exact.error->message) << spec.id << " " << to_string(p);
     }
   }
   // The refusals name what is wrong.
-  EXPECT_NE(solve_problem(set.problems[4], set.file, false).error->message.find("edge-on"), std::string::npos);
+  EXPECT_NE(solve_problem(set.problems[4], set.file, false).error->message.find("edge-on"),
+            std::string::npos);
 }
 
 // Parallel decimal vectors have no unit normal in any backend.

@@ -8,8 +8,8 @@
 #include <fstream>
 
 #include "grader/grade.hpp"
-#include "solver/problem/problem_set.hpp"
 #include "solver/input/yaml_document.hpp"
+#include "solver/problem/problem_set.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -11,19 +11,19 @@
 //   # solves: ID ...                      these problems solve cleanly (default: fine;
 //                                         "none": nothing can be solved)
 // Answer files (tests/bad_inputs/answers/*.yaml), graded against seed 001:
-//   # expect: ID.ANSWER: VERDICT: FRAGMENT   that answer's verdict, its feedback containing FRAGMENT
-//   # expect: LINE:COL: FIELD: FRAGMENT      an error of the answer file
-//   # correct: ID.ANSWER                     graded correct despite the bad neighbours
+//   # expect: ID.ANSWER: VERDICT: FRAGMENT   that answer's verdict, its feedback containing
+//   FRAGMENT # expect: LINE:COL: FIELD: FRAGMENT      an error of the answer file # correct:
+//   ID.ANSWER                     graded correct despite the bad neighbours
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "grader/grade.hpp"
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "test_util.hpp"
-
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace frustum {
 namespace {
@@ -108,7 +108,8 @@ TEST(BadInput, CatalogueCoversEveryRequiredCase) {
     EXPECT_TRUE(fs::exists(test::source_path(std::string("tests/bad_inputs/") + name + ".yaml")))
         << name;
   for (const char* name : {"deep_nesting", "enormous", "invalid_utf8", "nan", "malformed_yaml"})
-    EXPECT_TRUE(fs::exists(test::source_path(std::string("tests/bad_inputs/answers/") + name + ".yaml")))
+    EXPECT_TRUE(
+        fs::exists(test::source_path(std::string("tests/bad_inputs/answers/") + name + ".yaml")))
         << name;
 }
 
@@ -147,9 +148,10 @@ TEST(BadInput, ProblemSetsGiveTheirLocatedMessageAndTheRestSolves) {
                                     [](const ProblemResult& p) { return p.id == "bad"; });
       ASSERT_NE(bad, result.problems.end());
       const auto& steps = bad->derivation.steps();
-      EXPECT_TRUE(std::any_of(steps.begin(), steps.end(), [&](const Step& s) {
-        return s.level == Step::Level::Warning && s.title == title;
-      })) << "warning '" << title << "'";
+      EXPECT_TRUE(std::any_of(
+          steps.begin(), steps.end(),
+          [&](const Step& s) { return s.level == Step::Level::Warning && s.title == title; }))
+          << "warning '" << title << "'";
     }
     // Every renderer copes with what was loaded (invalid UTF-8 included).
     EXPECT_FALSE(json_text(render_json(result)).empty());  // what solve --format json writes
@@ -168,7 +170,8 @@ const AnswerGrade* find_answer(const GradeReport& r, const std::string& path) {
 }
 
 TEST(BadInput, AnswerFilesGiveTheirMessageAndTheRestGrades) {
-  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
   ASSERT_TRUE(set.all_errors().empty());
   const std::vector<Case> all = cases("tests/bad_inputs/answers");
   ASSERT_GE(all.size(), 10u);
@@ -214,11 +217,13 @@ TEST(BadInput, YamlEscapesThatYamlCppDecodesToStrayBytesStillMakeValidJson) {
   // yaml-cpp decodes the YAML escapes \N (NEL) and \_ (no-break space) to the single bytes
   // 0x85 and 0xA0, not UTF-8; a message quoting such a key once aborted `grade --format json`
   // (found by fuzz_grade with a fixed seed). The JSON now carries U+FFFD there.
-  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
-  const GradeReport r = grade(set, load_submission_from_string(
-                                       "student: s1\nanswers:\n  seed001-pixel-z: {z: 8}\n\"bad\\Nkey\": 1\n"
-                                       "\"nb\\_sp\": 2\n",
-                                       "nel.yaml"));
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const GradeReport r =
+      grade(set, load_submission_from_string(
+                     "student: s1\nanswers:\n  seed001-pixel-z: {z: 8}\n\"bad\\Nkey\": 1\n"
+                     "\"nb\\_sp\": 2\n",
+                     "nel.yaml"));
   ASSERT_EQ(r.errors.size(), 2u) << listing(r.errors);
   EXPECT_EQ(r.errors[0].field, "bad\x85key");  // the stray byte as yaml-cpp gives it
   const std::string text = json_text(render_grade_json(r));

@@ -2,15 +2,15 @@
 // gets its own row with a reason (and a time limit), the gradebook lists every student, no
 // temporary file is left behind, and a second run over the same inputs writes byte-identical
 // outputs.
-#include "grader/batch.hpp"
-#include "test_util.hpp"
-
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <thread>
+
+#include "grader/batch.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -24,21 +24,26 @@ class BatchFaults : public ::testing::Test {
  protected:
   void SetUp() override {
     root_ = fs::temp_directory_path() /
-            ("frustum_batch_fault_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-             "_" + std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+            ("frustum_batch_fault_" +
+             std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+             std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
     fs::create_directories(root_ / "in");
     const fs::path in = root_ / "in";
-    test::write_file(in / "a_good.yaml",
-          test::read_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml")));
-    test::write_file(in / "b_malformed.yaml", "student: malformed\nanswers:\n  seed001-pixel-z:\n    z: [8\n");
+    test::write_file(
+        in / "a_good.yaml",
+        test::read_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml")));
+    test::write_file(in / "b_malformed.yaml",
+                     "student: malformed\nanswers:\n  seed001-pixel-z:\n    z: [8\n");
     test::write_file(in / "c_empty.yaml", "");
-    test::write_file(in / "d_huge.yaml", "student: huge\nanswers: {}\n" + std::string(kMaxSubmissionBytes, '#'));
+    test::write_file(in / "d_huge.yaml",
+                     "student: huge\nanswers: {}\n" + std::string(kMaxSubmissionBytes, '#'));
     test::write_file(in / "e_slow.yaml", "student: slow\nanswers:\n  seed001-pixel-z: {z: 8}\n");
-    test::write_file(in / "f_hostile.yaml", "student: hostile\nanswers:\n  seed001-pixel-z:\n    z: \"" +
-                                     std::string(100000, '(') + "8" + std::string(100000, ')') +
-                                     "\"\n    plane: \"x + y - z = -6\"\n    inside: \"\xff\xfe\"\n");
+    test::write_file(in / "f_hostile.yaml",
+                     "student: hostile\nanswers:\n  seed001-pixel-z:\n    z: \"" +
+                         std::string(100000, '(') + "8" + std::string(100000, ')') +
+                         "\"\n    plane: \"x + y - z = -6\"\n    inside: \"\xff\xfe\"\n");
     test::write_file(in / "g_yaml_bomb.yaml", "student: bomb\nanswers: " + std::string(20000, '[') +
-                                       std::string(20000, ']') + "\n");
+                                                  std::string(20000, ']') + "\n");
     set_ = load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
     ASSERT_TRUE(set_.all_errors().empty());
   }
@@ -72,7 +77,8 @@ TEST_F(BatchFaults, EveryStudentHasARowWithAReasonAndASecondRunIsByteIdentical) 
 
   // Malformed and empty files get an error row naming the file's mistake.
   EXPECT_EQ(by.at("b_malformed").status, "error");
-  EXPECT_NE(by.at("b_malformed").message.find("invalid YAML"), std::string::npos) << by.at("b_malformed").message;
+  EXPECT_NE(by.at("b_malformed").message.find("invalid YAML"), std::string::npos)
+      << by.at("b_malformed").message;
   EXPECT_EQ(by.at("c_empty").status, "error");
   EXPECT_NE(by.at("c_empty").message.find("empty"), std::string::npos) << by.at("c_empty").message;
 
@@ -97,7 +103,8 @@ TEST_F(BatchFaults, EveryStudentHasARowWithAReasonAndASecondRunIsByteIdentical) 
 
   // The gradebook lists every student; every output was renamed into place.
   const std::string book = test::read_file(root_ / "out" / "gradebook.csv");
-  for (const char* s : {"seed001-published", "b_malformed", "c_empty", "d_huge", "slow", "hostile", "g_yaml_bomb"})
+  for (const char* s :
+       {"seed001-published", "b_malformed", "c_empty", "d_huge", "slow", "hostile", "g_yaml_bomb"})
     EXPECT_NE(book.find(s), std::string::npos) << s << " missing from\n" << book;
   for (const auto& [path, text] : test::published_tree(root_ / "out")) {
     EXPECT_NE(fs::path(path).filename().string()[0], '.') << "a temporary file was left: " << path;

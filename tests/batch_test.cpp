@@ -46,15 +46,17 @@ problems:
 
 // A fresh scratch directory per test.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("frustum-batch-" + name + "-" + std::to_string(getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("frustum-batch-" + name + "-" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
 }
 
 TEST(Csv, ReadsQuotesDoubledQuotesLineBreaksAndCrlf) {
-  const CsvTable t = parse_csv("\xEF\xBB\xBFstudent,zbuf.plane\r\ns1,\"x + y - z = -6\"\r\n"
-                               "\"s,2\",\"say \"\"hi\"\"\nthere\"\n\n");
+  const CsvTable t = parse_csv(
+      "\xEF\xBB\xBFstudent,zbuf.plane\r\ns1,\"x + y - z = -6\"\r\n"
+      "\"s,2\",\"say \"\"hi\"\"\nthere\"\n\n");
   ASSERT_FALSE(t.error);
   ASSERT_EQ(t.rows.size(), 3u);
   EXPECT_EQ(t.rows[0].fields, (std::vector<std::string>{"student", "zbuf.plane"}));
@@ -65,7 +67,8 @@ TEST(Csv, ReadsQuotesDoubledQuotesLineBreaksAndCrlf) {
 }
 
 TEST(Csv, WritingAndReadingRoundTrips) {
-  const std::vector<std::string> fields = {"plain", "with,comma", "with \"quote\"", "two\nlines", ""};
+  const std::vector<std::string> fields = {"plain", "with,comma", "with \"quote\"", "two\nlines",
+                                           ""};
   const CsvTable t = parse_csv(csv_row(fields) + csv_row({"x"}));
   ASSERT_EQ(t.rows.size(), 2u);
   EXPECT_EQ(t.rows[0].fields, fields);
@@ -78,7 +81,8 @@ TEST(AtomicFile, WritesTheWholeFileAndLeavesNoTemporaryBehind) {
   write_file_atomically(target.string(), std::string(1 << 20, 'x'));
   EXPECT_EQ(test::read_file(target), std::string(1 << 20, 'x'));
   EXPECT_EQ(std::distance(fs::directory_iterator(dir / "sub"), fs::directory_iterator()), 1);
-  EXPECT_THROW(write_file_atomically((dir / "sub" / "out.txt" / "below").string(), "x"), std::exception);
+  EXPECT_THROW(write_file_atomically((dir / "sub" / "out.txt" / "below").string(), "x"),
+               std::exception);
   fs::remove_all(dir);
 }
 
@@ -132,13 +136,17 @@ TEST(Isolate, SharesInParallelKeepEachItemsOwnResult) {
 fs::path make_class(const fs::path& dir) {
   const fs::path in = dir / "in";
   fs::create_directories(in);
-  test::write_file(in / "a_right.yaml",
-        "student: s001\nanswers:\n  zbuf: {normal: [1, 1, -1], plane: \"x + y - z = -6\", z: 8}\n"
-        "  bf: {df: -2, facing: back}\n");
-  test::write_file(in / "b_wrong.yaml", "student: s002\nanswers:\n  zbuf: {normal: [-1, -1, 1], plane: [1, 1, -1, -6], z: 9}\n");
+  test::write_file(
+      in / "a_right.yaml",
+      "student: s001\nanswers:\n  zbuf: {normal: [1, 1, -1], plane: \"x + y - z = -6\", z: 8}\n"
+      "  bf: {df: -2, facing: back}\n");
+  test::write_file(
+      in / "b_wrong.yaml",
+      "student: s002\nanswers:\n  zbuf: {normal: [-1, -1, 1], plane: [1, 1, -1, -6], z: 9}\n");
   test::write_file(in / "c_broken.yaml", "answers: [1, 2\n");
   test::write_file(in / "d_empty.yaml", "");
-  test::write_file(in / "e_huge.yaml", "student: s005\n#" + std::string(kMaxSubmissionBytes + 10, 'x') + "\n");
+  test::write_file(in / "e_huge.yaml",
+                   "student: s005\n#" + std::string(kMaxSubmissionBytes + 10, 'x') + "\n");
   test::write_file(in / "notes.txt", "not an answers file");
   return in;
 }
@@ -196,7 +204,8 @@ TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
   // The page loads nothing from outside the output directory: only the class's one copy of
   // KaTeX beside feedback/, and every file that copy names is there (the directory works
   // offline as a whole).
-  for (const char* load : {"src=\"http", "src='http", "src=\"//", "href=\"http", "href=\"//", "url(http", "url(//", "@import"})
+  for (const char* load : {"src=\"http", "src='http", "src=\"//", "href=\"http", "href=\"//",
+                           "url(http", "url(//", "@import"})
     EXPECT_EQ(html.find(load), std::string::npos) << "the page must not load anything: " << load;
   const std::regex link(R"re((?:src|href)="([^"]*)")re");
   std::vector<std::string> loaded;
@@ -255,14 +264,15 @@ TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
   for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(three.rows[i].student, one_child.rows[i].student);
   // The page the batch writes is the page made alone, linking the class's copy of KaTeX
   // instead of carrying it.
-  const Submission sub =
-      load_submission_from_string(test::read_file(in / "b_wrong.yaml"), (in / "b_wrong.yaml").string());
+  const Submission sub = load_submission_from_string(test::read_file(in / "b_wrong.yaml"),
+                                                     (in / "b_wrong.yaml").string());
   const GradeReport alone = grade(set, sub);
   EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.html"),
             render_feedback_html(alone, Lang::En, html_math_head_linked("../katex/")));
   // So are the Markdown page and the Gradescope results (the batch formats the keys once for
   // the class and each problem's Markdown once for both).
-  EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.md"), render_feedback_markdown(alone));
+  EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.md"),
+            render_feedback_markdown(alone));
   EXPECT_EQ(test::read_file(dir / "three" / "gradescope" / "s002.json"),
             json_text(gradescope_results(alone)) + "\n");
   fs::remove_all(dir);
@@ -271,10 +281,10 @@ TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
 TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
   const fs::path dir = scratch("csv");
   test::write_file(dir / "roster.csv",
-        "student,zbuf.normal,zbuf.plane,zbuf.z,bf.df,bf.facing\n"
-        "s001,\"[1, 1, -1]\",x + y - z = -6,8,-2,back\n"
-        "s002,\"[2, 2, -2]\",\"[1, 1, -1, -6]\",9,,\n"
-        ",,,,,\n");
+                   "student,zbuf.normal,zbuf.plane,zbuf.z,bf.df,bf.facing\n"
+                   "s001,\"[1, 1, -1]\",x + y - z = -6,8,-2,back\n"
+                   "s002,\"[2, 2, -2]\",\"[1, 1, -1, -6]\",9,,\n"
+                   ",,,,,\n");
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   const std::vector<BatchEntry> entries = collect_submissions((dir / "roster.csv").string());
   ASSERT_EQ(entries.size(), 3u);
@@ -303,14 +313,21 @@ TEST(Batch, SharedClaimsAndOtherFilesAreReportedNotSilent) {
   test::write_file(dir / ".DS_Store", "x");
   fs::create_directories(dir / "section2");
   std::vector<Diagnostic> not_graded;
-  const std::vector<BatchEntry> entries = collect_submissions(dir.string(), kMaxSubmissionBytes, &not_graded);
+  const std::vector<BatchEntry> entries =
+      collect_submissions(dir.string(), kMaxSubmissionBytes, &not_graded);
   ASSERT_EQ(entries.size(), 3u);
-  EXPECT_EQ(entries[0].note, (dir / "b.yml").string() + " also claims student 'ann': each file is graded; keep the one that counts");
-  EXPECT_EQ(entries[1].note, (dir / "a.yaml").string() + " also claims student 'ann': each file is graded; keep the one that counts");
+  EXPECT_EQ(entries[0].note,
+            (dir / "b.yml").string() +
+                " also claims student 'ann': each file is graded; keep the one that counts");
+  EXPECT_EQ(entries[1].note,
+            (dir / "a.yaml").string() +
+                " also claims student 'ann': each file is graded; keep the one that counts");
   EXPECT_EQ(entries[2].note, "");
   ASSERT_EQ(not_graded.size(), 2u);
-  EXPECT_EQ(not_graded[0].format(), (dir / "answers.json").string() + ": not an answers file (.yaml or .yml): not graded");
-  EXPECT_EQ(not_graded[1].format(), (dir / "section2").string() + ": a directory: not graded (grade it on its own)");
+  EXPECT_EQ(not_graded[0].format(),
+            (dir / "answers.json").string() + ": not an answers file (.yaml or .yml): not graded");
+  EXPECT_EQ(not_graded[1].format(),
+            (dir / "section2").string() + ": a directory: not graded (grade it on its own)");
   // A roster decides whose each file is: the files' shared claim no longer matters.
   const std::vector<BatchEntry> rostered = apply_roster(entries, {"a", "b"}, "roster.csv");
   ASSERT_GE(rostered.size(), 2u);
@@ -323,14 +340,17 @@ TEST(Batch, SharedClaimsAndOtherFilesAreReportedNotSilent) {
   options.jobs = 1;
   const BatchResult r = grade_batch(set, entries, options);
   ASSERT_EQ(r.rows.size(), 3u);
-  EXPECT_NE(r.rows[0].message.find("also claims student 'ann'"), std::string::npos) << r.rows[0].message;
-  EXPECT_NE(test::read_file(dir / "out" / "gradebook.csv").find("also claims student 'ann'"), std::string::npos);
+  EXPECT_NE(r.rows[0].message.find("also claims student 'ann'"), std::string::npos)
+      << r.rows[0].message;
+  EXPECT_NE(test::read_file(dir / "out" / "gradebook.csv").find("also claims student 'ann'"),
+            std::string::npos);
   fs::remove_all(dir);
 }
 
 TEST(Feedback, JapaneseFeedbackTranslatesVerdictsAndStepTitles) {
-  const GradeReport r = grade(load_problem_set_from_string(kSet, "set.yaml"),
-                              load_submission_from_string("student: s1\nanswers:\n  zbuf: {z: 9}\n", "a.yaml"));
+  const GradeReport r =
+      grade(load_problem_set_from_string(kSet, "set.yaml"),
+            load_submission_from_string("student: s1\nanswers:\n  zbuf: {z: 9}\n", "a.yaml"));
   const std::string ja = render_grade_text(r, TextStyle{false, Lang::Ja});
   EXPECT_NE(ja.find("不正解"), std::string::npos) << ja;
   EXPECT_NE(ja.find("求め方"), std::string::npos);
@@ -339,7 +359,8 @@ TEST(Feedback, JapaneseFeedbackTranslatesVerdictsAndStepTitles) {
   const std::string en = render_grade_text(r, TextStyle{false, Lang::En});
   EXPECT_NE(en.find("incorrect"), std::string::npos);
   EXPECT_EQ(en.find("不正解"), std::string::npos);
-  EXPECT_EQ(tr("Normalize the view volume", Lang::Ja), "視体積の正規化");  // the lecture says 視体積
+  EXPECT_EQ(tr("Normalize the view volume", Lang::Ja),
+            "視体積の正規化");  // the lecture says 視体積
   EXPECT_EQ(tr("Clip against x ≤ 1", Lang::Ja), "クリップ: x ≤ 1");
   EXPECT_EQ(tr("Something new", Lang::Ja), "Something new");
   const std::string md = render_feedback_markdown(r, Lang::Ja);
@@ -355,8 +376,8 @@ TEST(Feedback, JapaneseFeedbackNamesTheMistakeAndCarriesCreditForward) {
   const auto& n = key.find("normal")->numbers;
   const auto& p = key.find("plane")->numbers;
   const std::string answers = fmt::format(
-      "student: s1\nanswers:\n  zbuf: {{normal: [{}, {}, {}], plane: [{}, {}, {}, {}], z: {}}}\n", -n[0], -n[1],
-      -n[2], p[0], p[1], p[2], p[3] + 3, (p[3] + 3 - p[0] - p[1]) / p[2]);
+      "student: s1\nanswers:\n  zbuf: {{normal: [{}, {}, {}], plane: [{}, {}, {}, {}], z: {}}}\n",
+      -n[0], -n[1], -n[2], p[0], p[1], p[2], p[3] + 3, (p[3] + 3 - p[0] - p[1]) / p[2]);
   const GradeReport r = grade(set, load_submission_from_string(answers, "a.yaml"), &solved);
   const std::string ja = render_grade_text(r, TextStyle{false, Lang::Ja});
   EXPECT_NE(ja.find("よくある誤り: 外積の順序が逆"), std::string::npos) << ja;
@@ -385,7 +406,8 @@ TEST(Gradescope, AutograderScriptWritesResultsJson) {
   fs::create_directories(ag / "submission");
   fs::create_symlink(FRUSTUM_BINARY, ag / "source" / "build" / "frustum");
   fs::create_symlink(test::source_path("problems"), ag / "source" / "problems");
-  test::write_file(ag / "source" / "autograder.conf", "SET=problems/seeds/001_zbuffer_plane_method.yaml\nLANG_FEEDBACK=ja\n");
+  test::write_file(ag / "source" / "autograder.conf",
+                   "SET=problems/seeds/001_zbuffer_plane_method.yaml\nLANG_FEEDBACK=ja\n");
   const std::string run = "AUTOGRADER_ROOT=" + ag.string() + " bash " +
                           test::source_path("tools/gradescope/run_autograder") + " >/dev/null 2>&1";
   // No answers file: a zero score that says why.
@@ -394,7 +416,8 @@ TEST(Gradescope, AutograderScriptWritesResultsJson) {
   EXPECT_EQ(results["score"], 0);
   EXPECT_NE(results["output"].get<std::string>().find("No answers file"), std::string::npos);
   // The published answers: full marks, one test per problem, feedback in Japanese.
-  fs::copy_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml"), ag / "submission" / "answers.yaml");
+  fs::copy_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml"),
+                ag / "submission" / "answers.yaml");
   ASSERT_EQ(std::system(run.c_str()), 0);
   results = nlohmann::json::parse(test::read_file(ag / "results" / "results.json"));
   EXPECT_EQ(results["score"], 8);

@@ -47,8 +47,8 @@ fs::path make_class(const fs::path& dir, int students) {
   fs::create_directories(in);
   for (int i = 0; i < students; ++i)
     test::write_file(in / ("s" + std::to_string(100 + i) + ".yaml"),
-          "student: s" + std::to_string(100 + i) +
-              "\nanswers:\n  zbuf: {z: " + std::to_string(i % 2 ? 8 : 9) + "}\n");
+                     "student: s" + std::to_string(100 + i) +
+                         "\nanswers:\n  zbuf: {z: " + std::to_string(i % 2 ? 8 : 9) + "}\n");
   return in;
 }
 
@@ -243,10 +243,12 @@ TEST(BatchTransaction, TheRosterSaysWhoseFileItIs) {
   EXPECT_EQ(r.rows[1].student, "s2");
   EXPECT_EQ(r.rows[1].status, "graded");
   EXPECT_DOUBLE_EQ(r.rows[1].score, 0);
-  EXPECT_NE(r.rows[1].message.find("the file says student 's1'"), std::string::npos) << r.rows[1].message;
+  EXPECT_NE(r.rows[1].message.find("the file says student 's1'"), std::string::npos)
+      << r.rows[1].message;
   EXPECT_EQ(r.rows[2].student, "s3");
   EXPECT_EQ(r.rows[2].status, "error");
-  EXPECT_NE(r.rows[2].message.find("no answers file s3.yaml"), std::string::npos) << r.rows[2].message;
+  EXPECT_NE(r.rows[2].message.find("no answers file s3.yaml"), std::string::npos)
+      << r.rows[2].message;
   EXPECT_EQ(r.rows[3].status, "error");
   EXPECT_NE(r.rows[3].message.find("not on the roster"), std::string::npos) << r.rows[3].message;
   EXPECT_NE(test::read_file(dir / "out" / "feedback" / "s2.md").find("s2"), std::string::npos);

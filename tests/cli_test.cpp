@@ -1,13 +1,13 @@
 // The `frustum` command line, run as a user would.
-#include "test_util.hpp"
-
-#include <nlohmann/json.hpp>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sys/wait.h>
+#include <nlohmann/json.hpp>
+
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -19,7 +19,8 @@ struct CliRun {
 
 // Standard output and, unless `with_stderr` is false, standard error.
 CliRun run(const std::string& args, bool with_stderr = true) {
-  const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
+  const std::string cmd =
+      std::string(FRUSTUM_BINARY) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
@@ -33,7 +34,8 @@ CliRun stdout_of(const std::string& args) { return run(args, false); }
 std::string seed(const std::string& name) { return test::source_path("problems/seeds/" + name); }
 
 TEST(Cli, SolveJsonGivesTheSeedAnswersExactly) {
-  const CliRun r = run("solve " + seed("001_zbuffer_plane_method.yaml") + " --id seed001-pixel-z --format json");
+  const CliRun r =
+      run("solve " + seed("001_zbuffer_plane_method.yaml") + " --id seed001-pixel-z --format json");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["problems"].size(), 1u);
@@ -54,12 +56,14 @@ TEST(Cli, SolveDirectorySolvesEverySeedSet) {
 
 TEST(Cli, CheckReportsLocatedErrorsAndExitsNonZero) {
   const std::string path = ::testing::TempDir() + "/broken_set.yaml";
-  std::ofstream(path) << "problems:\n  - id: a\n    kind: vectors\n    given: {a: [1, .nan, 0], b: [0,1,0]}\n"
-                         "  - id: b\n    kind: nope\n    given: {}\n";
+  std::ofstream(path)
+      << "problems:\n  - id: a\n    kind: vectors\n    given: {a: [1, .nan, 0], b: [0,1,0]}\n"
+         "  - id: b\n    kind: nope\n    given: {}\n";
   const CliRun r = run("check " + path);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find(path + ":4:"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("problems[0].given.a[1]: '.nan' is not a finite number"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("problems[0].given.a[1]: '.nan' is not a finite number"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("problems[1].kind: unknown kind 'nope'"), std::string::npos) << r.out;
   const CliRun clean = run("check " + seed("003_polygons_backface.yaml"));
   EXPECT_EQ(clean.status, 0) << clean.out;
@@ -68,7 +72,7 @@ TEST(Cli, CheckReportsLocatedErrorsAndExitsNonZero) {
 
 TEST(Cli, GradeJsonScoresThePublishedAnswersFully) {
   const CliRun r = run("grade " + seed("003_polygons_backface.yaml") + " " +
-                    seed("answers/003_polygons_backface.yaml") + " --format json");
+                       seed("answers/003_polygons_backface.yaml") + " --format json");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["student"], "seed003-published");
@@ -138,8 +142,9 @@ TEST(Cli, GenerateStopsWhenAProblemRunsOutOfVariants) {
                          "    vary: {pixel: {choices: [[1, 1], [2, 1]]}}\n";
   const CliRun r = run("generate " + path + " --seed 1 --count 1000 -o " + dir);
   EXPECT_EQ(r.status, 1) << r.out;
-  EXPECT_NE(r.out.find("stopped at variant 3 of 1000 (2 distinct variants of this problem were drawn)"),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find("stopped at variant 3 of 1000 (2 distinct variants of this problem were drawn)"),
+      std::string::npos)
       << r.out;
   EXPECT_TRUE(std::filesystem::exists(dir + "/narrow_set-seed1-1.yaml"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/narrow_set-seed1-3.yaml"));
@@ -171,7 +176,8 @@ TEST(Cli, EverySubcommandHasAnExampleAndPlainChoices) {
     EXPECT_EQ(r.out.find("->"), std::string::npos) << sub << " shows CLI11's internal mapping:\n"
                                                    << r.out;
   }
-  EXPECT_NE(stdout_of("solve --help").out.find("{text,markdown,json,html,latex}"), std::string::npos);
+  EXPECT_NE(stdout_of("solve --help").out.find("{text,markdown,json,html,latex}"),
+            std::string::npos);
   EXPECT_NE(stdout_of("solve --help").out.find("{exact,double,float,long-double}"),
             std::string::npos);
   EXPECT_NE(stdout_of("grade --help").out.find("{text,json}"), std::string::npos);

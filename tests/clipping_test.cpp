@@ -1,13 +1,13 @@
 // Clipping: Cohen–Sutherland against an exact parametric (Liang–Barsky) reference,
 // Sutherland–Hodgman areas and containment, homogeneous clipping before the divide, and the
 // clip_line / clip_polygon kinds.
-#include "solver/clipping/line_clip.hpp"
-#include "solver/clipping/polygon_clip.hpp"
-#include "test_util.hpp"
-
 #include <fmt/format.h>
 
 #include <random>
+
+#include "solver/clipping/line_clip.hpp"
+#include "solver/clipping/polygon_clip.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -18,8 +18,6 @@ using test::one;
 using test::same;
 using test::solve_yaml;
 
-
-
 // Random rational in [−range, range] with denominators up to 4.
 Exact random_rational(std::mt19937& rng, int range) {
   std::uniform_int_distribution<int> num(-4 * range, 4 * range), den(1, 4);
@@ -29,7 +27,8 @@ Exact random_rational(std::mt19937& rng, int range) {
 // The visible part of pq by the parametric method, exactly: t ∈ [0, 1] ∩ slabs.
 template <int N>
 std::optional<std::array<Eigen::Matrix<Exact, N, 1>, 2>> reference_clip(
-    const Eigen::Matrix<Exact, N, 1>& p, const Eigen::Matrix<Exact, N, 1>& q, const ClipBox<Exact, N>& box) {
+    const Eigen::Matrix<Exact, N, 1>& p, const Eigen::Matrix<Exact, N, 1>& q,
+    const ClipBox<Exact, N>& box) {
   Exact t0 = 0, t1 = 1;
   for (int a = 0; a < N; ++a) {
     const Exact d = canonical(q(a) - p(a));
@@ -94,11 +93,13 @@ TEST(Outcode, BitOrderIsTopBottomRightLeft) {
   const ClipBox<Exact, 2> w{Vec2<Exact>(0, 0), Vec2<Exact>(4, 3)};
   EXPECT_EQ(outcode_string(outcode(Vec2<Exact>(-1, 5), w), 2), "1001");
   EXPECT_EQ(outcode_string(outcode(Vec2<Exact>(5, -1), w), 2), "0110");
-  EXPECT_EQ(outcode_string(outcode(Vec2<Exact>(4, 3), w), 2), "0000") << "a boundary point is inside";
+  EXPECT_EQ(outcode_string(outcode(Vec2<Exact>(4, 3), w), 2), "0000")
+      << "a boundary point is inside";
   const ClipBox<Exact, 3> cube = ndc_cube<Exact>();
   EXPECT_EQ(outcode_string(outcode(Vec3<Exact>(0, 0, 2), cube), 3), "100000");
   EXPECT_EQ(outcode_string(outcode(Vec3<Exact>(-2, 0, -2), cube), 3), "010001");
-  EXPECT_EQ(outcode_meaning(outcode_bit(1, true) | outcode_bit(0, false)), "top (y > ymax), left (x < xmin)");
+  EXPECT_EQ(outcode_meaning(outcode_bit(1, true) | outcode_bit(0, false)),
+            "top (y > ymax), left (x < xmin)");
 }
 
 TEST(CohenSutherland, MatchesExactParametricReference2D) { check_random_segments<2>(7, 600); }
@@ -120,8 +121,10 @@ TEST(SutherlandHodgman, KnownAreasAndContainment) {
   const std::vector<Vec2<Exact>> tri{Vec2<Exact>(0, 0), Vec2<Exact>(4, 0), Vec2<Exact>(0, 4)};
   const auto r = clip_polygon_box(tri, w);
   EXPECT_EQ(r.stages.size(), 4u);
-  EXPECT_TRUE(same(twice_signed_area(r.clipped), 4)) << "area 2: the square minus the corner beyond x + y = 4";
-  const std::vector<Vec2<Exact>> big{Vec2<Exact>(-1, -1), Vec2<Exact>(5, -1), Vec2<Exact>(5, 5), Vec2<Exact>(-1, 5)};
+  EXPECT_TRUE(same(twice_signed_area(r.clipped), 4))
+      << "area 2: the square minus the corner beyond x + y = 4";
+  const std::vector<Vec2<Exact>> big{Vec2<Exact>(-1, -1), Vec2<Exact>(5, -1), Vec2<Exact>(5, 5),
+                                     Vec2<Exact>(-1, 5)};
   const auto all = clip_polygon_box(big, w);
   EXPECT_EQ(all.clipped.size(), 4u);
   EXPECT_TRUE(same(twice_signed_area(all.clipped), 8));
@@ -134,7 +137,8 @@ TEST(SutherlandHodgman, KnownAreasAndContainment) {
 TEST(SutherlandHodgman, RandomConvexPolygonsInsideTheWindowWithTheRightArea) {
   std::mt19937 rng(3);
   const ClipBox<Exact, 2> w{Vec2<Exact>(-1, -1), Vec2<Exact>(2, 1)};
-  const std::vector<Vec2<Exact>> window{Vec2<Exact>(-1, -1), Vec2<Exact>(2, -1), Vec2<Exact>(2, 1), Vec2<Exact>(-1, 1)};
+  const std::vector<Vec2<Exact>> window{Vec2<Exact>(-1, -1), Vec2<Exact>(2, -1), Vec2<Exact>(2, 1),
+                                        Vec2<Exact>(-1, 1)};
   int nonempty = 0;
   for (int c = 0; c < 150; ++c) {
     // A random triangle, made counter-clockwise.
@@ -153,7 +157,10 @@ TEST(SutherlandHodgman, RandomConvexPolygonsInsideTheWindowWithTheRightArea) {
     for (std::size_t e = 0; e < p.size(); ++e) {
       const Vec2<Exact> a = p[e], b = p[(e + 1) % p.size()];
       other = clip_polygon_stage(
-          other, [&](const Vec2<Exact>& v) { return Exact((b(0) - a(0)) * (v(1) - a(1)) - (b(1) - a(1)) * (v(0) - a(0))); },
+          other,
+          [&](const Vec2<Exact>& v) {
+            return Exact((b(0) - a(0)) * (v(1) - a(1)) - (b(1) - a(1)) * (v(0) - a(0)));
+          },
           [](Vec2<Exact>&) {});
     }
     const Exact area = r.empty() ? Exact(0) : twice_signed_area(r.clipped);
@@ -166,7 +173,8 @@ TEST(SutherlandHodgman, RandomConvexPolygonsInsideTheWindowWithTheRightArea) {
 
 TEST(SutherlandHodgman, ThreeDBoxKeepsVerticesInside) {
   const ClipBox<Exact, 3> cube = ndc_cube<Exact>();
-  const std::vector<Vec3<Exact>> tri{Vec3<Exact>(0, 0, -3), Vec3<Exact>(3, 0, 0), Vec3<Exact>(0, 0, 3)};
+  const std::vector<Vec3<Exact>> tri{Vec3<Exact>(0, 0, -3), Vec3<Exact>(3, 0, 0),
+                                     Vec3<Exact>(0, 0, 3)};
   const auto r = clip_polygon_box(tri, cube);
   EXPECT_EQ(r.stages.size(), 6u);
   ASSERT_FALSE(r.empty());
@@ -192,14 +200,16 @@ TEST(HomogeneousClip, NeverProducesVerticesWithWAtOrBelowZero) {
   }
   EXPECT_GT(kept, 100);
   // Exact: a triangle crossing the eye plane keeps only its w ≥ ε part.
-  const std::vector<Vec4<Exact>> tri{Vec4<Exact>(0, 0, 0, -1), Vec4<Exact>(1, 0, 0, 2), Vec4<Exact>(0, 1, 0, 2)};
+  const std::vector<Vec4<Exact>> tri{Vec4<Exact>(0, 0, 0, -1), Vec4<Exact>(1, 0, 0, 2),
+                                     Vec4<Exact>(0, 1, 0, 2)};
   const auto r = clip_polygon_homogeneous(tri, Exact(GiNaC::numeric(1, 100)));
   for (const auto& v : r.clipped) EXPECT_GT(exact_sign(v(3)), 0);
   EXPECT_EQ(r.stages.front().vertices.size(), 4u);
 }
 
 TEST(ClipLineKind, TwoDimensionalSegmentClippedAtBothEnds) {
-  const ProblemResult r = solve_yaml(one("clip_line", "{p: [-1, 1], q: [5, 2], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
+  const ProblemResult r = solve_yaml(
+      one("clip_line", "{p: [-1, 1], q: [5, 2], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
   ASSERT_FALSE(r.error) << error_text(r);
   EXPECT_EQ(r.answers.find("outcode_p")->word, "0001");
   EXPECT_EQ(r.answers.find("outcode_q")->word, "0010");
@@ -220,36 +230,44 @@ TEST(ClipLineKind, ThreeDimensionalDefaultsToTheNdcCube) {
 }
 
 TEST(ClipLineKind, TrivialAcceptAndReject) {
-  const ProblemResult in = solve_yaml(one("clip_line", "{p: [1, 1], q: [2, 2], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
+  const ProblemResult in = solve_yaml(
+      one("clip_line", "{p: [1, 1], q: [2, 2], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
   EXPECT_TRUE(in.answers.find("accept")->flag);
   EXPECT_EQ(exact_text(in, "clipped"), "1, 1, 2, 2");
-  const ProblemResult out = solve_yaml(one("clip_line", "{p: [5, 5], q: [6, 7], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
+  const ProblemResult out = solve_yaml(
+      one("clip_line", "{p: [5, 5], q: [6, 7], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
   EXPECT_EQ(out.answers.find("outcode_p")->word, "1010");
   EXPECT_TRUE(out.answers.find("reject")->flag);
   EXPECT_EQ(out.answers.find("clipped")->shape, Value::Shape::Null);
 }
 
 TEST(ClipLineKind, BadWindowNamesTheField) {
-  const ProblemResult r = solve_yaml(one("clip_line", "{p: [0, 0], q: [1, 1], window: {xmin: 4, xmax: 4, ymin: 0, ymax: 3}}"));
+  const ProblemResult r = solve_yaml(
+      one("clip_line", "{p: [0, 0], q: [1, 1], window: {xmin: 4, xmax: 4, ymin: 0, ymax: 3}}"));
   ASSERT_TRUE(r.error);
   EXPECT_EQ(r.error->field, "problems[0].given.window.xmin");
   EXPECT_NE(r.error->message.find("less than xmax"), std::string::npos);
-  const ProblemResult mixed = solve_yaml(one("clip_line", "{p: [0, 0], q: [1, 1, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
+  const ProblemResult mixed = solve_yaml(
+      one("clip_line", "{p: [0, 0], q: [1, 1, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
   ASSERT_TRUE(mixed.error);
   EXPECT_EQ(mixed.error->field, "problems[0].given.q");
-  const ProblemResult wrong = solve_yaml(one("clip_line", "{p: [0, 0, 0], q: [1, 1, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
+  const ProblemResult wrong = solve_yaml(one(
+      "clip_line", "{p: [0, 0, 0], q: [1, 1, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 3}}"));
   ASSERT_TRUE(wrong.error);
   EXPECT_EQ(wrong.error->field, "problems[0].given.window");
 }
 
 TEST(ClipPolygonKind, OneStepPerClipPlane) {
-  const ProblemResult r = solve_yaml(one("clip_polygon", "{points: [[0, 0], [4, 0], [0, 4]], window: {xmin: 1, xmax: 3, ymin: 1, ymax: 3}}"));
+  const ProblemResult r = solve_yaml(
+      one("clip_polygon",
+          "{points: [[0, 0], [4, 0], [0, 4]], window: {xmin: 1, xmax: 3, ymin: 1, ymax: 3}}"));
   ASSERT_FALSE(r.error) << error_text(r);
   EXPECT_EQ(exact_text(r, "clipped"), "1, 1, 3, 1, 1, 3");
   int stages = 0;
   for (const Step& s : r.derivation.steps()) stages += s.title.rfind("Clip against", 0) == 0;
   EXPECT_EQ(stages, 4);
-  const ProblemResult none = solve_yaml(one("clip_polygon", "{points: [[5, 5, 5], [6, 5, 5], [6, 6, 5]]}"));
+  const ProblemResult none =
+      solve_yaml(one("clip_polygon", "{points: [[5, 5, 5], [6, 5, 5], [6, 6, 5]]}"));
   ASSERT_FALSE(none.error) << error_text(none);
   EXPECT_EQ(none.answers.find("clipped")->shape, Value::Shape::Null);
 }

@@ -30,9 +30,11 @@ TEST(Derivation, TextShowsExactValuesWithDecimalsAndNoColourUnlessAsked) {
   const std::string plain = render_text(set, TextStyle{false});
   EXPECT_NE(plain.find("x + y − z = −6"), std::string::npos) << plain;
   EXPECT_NE(plain.find("9√3 ≈ 15.59"), std::string::npos) << plain;
-  EXPECT_NE(plain.find("(√3/3, √3/3, −√3/3) ≈ (0.5774, 0.5774, −0.5774)"), std::string::npos) << plain;
+  EXPECT_NE(plain.find("(√3/3, √3/3, −√3/3) ≈ (0.5774, 0.5774, −0.5774)"), std::string::npos)
+      << plain;
   EXPECT_NE(plain.find("z = 8"), std::string::npos);
-  EXPECT_EQ(plain.find("OpenGL"), std::string::npos) << "a convention is stated only where it matters";
+  EXPECT_EQ(plain.find("OpenGL"), std::string::npos)
+      << "a convention is stated only where it matters";
   EXPECT_NE(plain.find("left-handed"), std::string::npos);
   EXPECT_EQ(plain.find("\033["), std::string::npos);
   EXPECT_NE(render_text(set, TextStyle{true}).find("\033["), std::string::npos);
@@ -72,8 +74,9 @@ TEST(Derivation, JsonCarriesValueAndExact) {
 
 TEST(Derivation, ErrorsReplaceAnswersInJson) {
   SetResult set;
-  set.problems.push_back(test::solve_yaml(
-      "problems:\n  - id: bad\n    kind: normal\n    given: {points: [[0,0,0],[1,1,1],[2,2,2]]}\n"));
+  set.problems.push_back(
+      test::solve_yaml("problems:\n  - id: bad\n    kind: normal\n    given: {points: "
+                       "[[0,0,0],[1,1,1],[2,2,2]]}\n"));
   const auto j = render_json(set);
   EXPECT_TRUE(j["problems"][0].contains("error"));
   EXPECT_FALSE(j["problems"][0].contains("answers"));

@@ -1,12 +1,5 @@
 // Pictures (issue 5): the SVG writer, hidden lines removed per segment (cross-checked by ray
 // casting), painter vs z-buffer, and `frustum draw`.
-#include "app/commands.hpp"
-#include "solver/derivation/svg.hpp"
-#include "solver/visibility/hidden_lines.hpp"
-#include "solver/visibility/painter_vs_zbuffer.hpp"
-#include "solver/visibility/pictures.hpp"
-#include "test_util.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -17,6 +10,13 @@
 #include <random>
 #include <set>
 #include <sstream>
+
+#include "app/commands.hpp"
+#include "solver/derivation/svg.hpp"
+#include "solver/visibility/hidden_lines.hpp"
+#include "solver/visibility/painter_vs_zbuffer.hpp"
+#include "solver/visibility/pictures.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -38,9 +38,11 @@ XmlCheck check_xml(const std::string& s) {
     if (end == std::string::npos) return {false, "unterminated tag", {}};
     const std::string tag = s.substr(at + 1, end - at - 1);
     if (tag.empty() || tag[0] == '?' || tag[0] == '!') continue;
-    if (std::count(tag.begin(), tag.end(), '"') % 2 != 0) return {false, "unbalanced quotes in <" + tag + ">", {}};
+    if (std::count(tag.begin(), tag.end(), '"') % 2 != 0)
+      return {false, "unbalanced quotes in <" + tag + ">", {}};
     if (tag[0] == '/') {
-      if (open.empty() || open.back() != tag.substr(1)) return {false, "unexpected </" + tag.substr(1) + ">", {}};
+      if (open.empty() || open.back() != tag.substr(1))
+        return {false, "unexpected </" + tag.substr(1) + ">", {}};
       open.pop_back();
       continue;
     }
@@ -53,7 +55,8 @@ XmlCheck check_xml(const std::string& s) {
   if (roots != 1 || c.elements["svg"] != 1) return {false, "expected one <svg> root", {}};
   // Text between tags must not hold a raw '&' that is not an entity.
   for (std::size_t at = s.find('&'); at != std::string::npos; at = s.find('&', at + 1))
-    if (s.find(';', at) == std::string::npos || s.find(';', at) - at > 6) return {false, "raw &", {}};
+    if (s.find(';', at) == std::string::npos || s.find(';', at) - at > 6)
+      return {false, "raw &", {}};
   return c;
 }
 
@@ -101,16 +104,19 @@ TEST(Svg, WritesAWellFormedDocumentWithEscapedText) {
 enum class Ray { Clear, Blocked, Grazing };
 constexpr double kGraze = 1e-7;
 
-double segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+double segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                        const Eigen::Vector3d& b) {
   const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
   return (a + t * (b - a) - p).norm();
 }
 
-Ray cast_ray(const Mesh& m, const MeshEdge& e, const Eigen::Vector3d& x, const Eigen::Vector3d& eye) {
+Ray cast_ray(const Mesh& m, const MeshEdge& e, const Eigen::Vector3d& x,
+             const Eigen::Vector3d& eye) {
   Ray result = Ray::Clear;
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     const std::vector<int>& face = m.faces[f];
-    if (std::count(face.begin(), face.end(), e.i) && std::count(face.begin(), face.end(), e.j)) continue;
+    if (std::count(face.begin(), face.end(), e.i) && std::count(face.begin(), face.end(), e.j))
+      continue;
     std::vector<Eigen::Vector3d> v;
     for (int k : face) v.push_back(to_double(m.vertices[static_cast<std::size_t>(k)]));
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
@@ -119,7 +125,8 @@ Ray cast_ray(const Mesh& m, const MeshEdge& e, const Eigen::Vector3d& x, const E
     const Eigen::Vector3d dir = eye - x;
     const double denom = n.dot(dir);
     if (std::abs(denom) < kGraze * dir.norm()) {
-      if (std::abs(n.dot(v[0] - x)) < kGraze) result = Ray::Grazing;  // the ray runs in the face's plane
+      if (std::abs(n.dot(v[0] - x)) < kGraze)
+        result = Ray::Grazing;  // the ray runs in the face's plane
       continue;
     }
     const double s = n.dot(v[0] - x) / denom;
@@ -127,7 +134,8 @@ Ray cast_ray(const Mesh& m, const MeshEdge& e, const Eigen::Vector3d& x, const E
     if (s >= 1) continue;
     const Eigen::Vector3d y = x + s * dir;
     double boundary = 1e300;
-    for (std::size_t k = 0; k < v.size(); ++k) boundary = std::min(boundary, segment_distance(y, v[k], v[(k + 1) % v.size()]));
+    for (std::size_t k = 0; k < v.size(); ++k)
+      boundary = std::min(boundary, segment_distance(y, v[k], v[(k + 1) % v.size()]));
     if (boundary < kGraze) {
       result = Ray::Grazing;
       continue;
@@ -140,7 +148,8 @@ Ray cast_ray(const Mesh& m, const MeshEdge& e, const Eigen::Vector3d& x, const E
     bool inside = false;
     for (std::size_t k = 0; k < v.size(); ++k) {
       const Eigen::Vector3d &p = v[k], &q = v[(k + 1) % v.size()];
-      if ((p(w) > y(w)) != (q(w) > y(w)) && y(u) < p(u) + (y(w) - p(w)) * (q(u) - p(u)) / (q(w) - p(w)))
+      if ((p(w) > y(w)) != (q(w) > y(w)) &&
+          y(u) < p(u) + (y(w) - p(w)) * (q(u) - p(u)) / (q(w) - p(w)))
         inside = !inside;
     }
     if (inside) return Ray::Blocked;
@@ -153,7 +162,8 @@ Ray cast_ray(const Mesh& m, const MeshEdge& e, const Eigen::Vector3d& x, const E
 // an eye in a face's plane is skipped (grazing rays are a tie the brute force cannot judge).
 int compare_with_rays(const Mesh& m, const Vec3<Exact>& eye, int* split_edges = nullptr) {
   const HiddenLines h = hidden_lines(m, eye);
-  if (std::any_of(h.faces.begin(), h.faces.end(), [](const FaceTest& f) { return f.facing == Facing::EdgeOn; }))
+  if (std::any_of(h.faces.begin(), h.faces.end(),
+                  [](const FaceTest& f) { return f.facing == Facing::EdgeOn; }))
     return 0;
   const Eigen::Vector3d e = to_double(eye);
   int checked = 0;
@@ -176,7 +186,8 @@ int compare_with_rays(const Mesh& m, const Vec3<Exact>& eye, int* split_edges = 
       }
       const Ray ray = cast_ray(m, l.edge, a + t * (b - a), e);
       if (near_cut || ray == Ray::Grazing) continue;
-      EXPECT_EQ(visible, ray == Ray::Clear) << "edge " << l.edge.name() << " at t = " << t << " from eye " << e.transpose();
+      EXPECT_EQ(visible, ray == Ray::Clear)
+          << "edge " << l.edge.name() << " at t = " << t << " from eye " << e.transpose();
       ++checked;
     }
   }
@@ -226,8 +237,9 @@ TEST(HiddenLines, ConcaveLPrismAgreesWithRayCastingPerSegment) {
   int split = 0, checked = 0;
   // Low eyes beside an arm see it cover part of the other arm's notch face.
   const Exact half = Exact(1) / 2;
-  for (const Vec3<Exact>& eye : {Vec3<Exact>(5, 5, 3), Vec3<Exact>(6, 4, 5), Vec3<Exact>(-2, 7, 4),
-                                 Vec3<Exact>(4, 8, -3), Vec3<Exact>(8, -4, half), Vec3<Exact>(-4, 8, half)})
+  for (const Vec3<Exact>& eye :
+       {Vec3<Exact>(5, 5, 3), Vec3<Exact>(6, 4, 5), Vec3<Exact>(-2, 7, 4), Vec3<Exact>(4, 8, -3),
+        Vec3<Exact>(8, -4, half), Vec3<Exact>(-4, 8, half)})
     checked += compare_with_rays(m, eye, &split);
   EXPECT_GT(checked, 3000);
   EXPECT_GT(split, 0) << "the notch must hide part of an edge from some eye";
@@ -245,7 +257,8 @@ TEST(HiddenLines, ConvexSolidsNeedNoSplittingFromRandomEyes) {
       const Vec3<Exact> eye(Exact(d(rng)) / 3, Exact(d(rng)) / 3, Exact(d(rng)) / 3);
       if (to_double(eye).norm() < 2.5) continue;
       const HiddenLines h = hidden_lines(m, eye);
-      if (std::any_of(h.faces.begin(), h.faces.end(), [](const FaceTest& f) { return f.facing == Facing::EdgeOn; }))
+      if (std::any_of(h.faces.begin(), h.faces.end(),
+                      [](const FaceTest& f) { return f.facing == Facing::EdgeOn; }))
         continue;
       EXPECT_EQ(h.split_edges, 0) << name << " eye " << to_double(eye).transpose();
       for (const EdgeLines& l : h.edges) {
@@ -264,7 +277,8 @@ TEST(HiddenLines, IntervalsMergeAndDropSlivers) {
   EXPECT_EQ(merge_intervals({{0.5, 0.7}, {0.1, 0.2}, {0.65, 0.9}, {0.3, 0.3 + 1e-12}, {-1, 0.05}}),
             (std::vector<Interval>{{0, 0.05}, {0.1, 0.2}, {0.5, 0.9}}));
   // A triangle in z = 0 covering the middle of a segment behind it, seen from above.
-  const Occluder o{{Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, -1, 0), Eigen::Vector3d(0, 2, 0)}, 0};
+  const Occluder o{
+      {Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, -1, 0), Eigen::Vector3d(0, 2, 0)}, 0};
   const std::vector<Interval> c = covered_by({-4, 0, -1}, {4, 0, -1}, {0, 0, 10}, o);
   ASSERT_EQ(c.size(), 1u);
   // Seen from (0, 0, 10) the segment at z = −1 projects scaled by 10/11: x ∈ [−4, 4] → the
@@ -286,7 +300,8 @@ const ProblemSpec& seed_problem(const ProblemSet& set, const std::string& id) {
 }
 
 TEST(Pictures, Seed003IcosahedronHasOneLinePerEdgeByClass) {
-  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));
   const ProblemSpec& spec = seed_problem(set, "seed003-ico-hidden-lines");
   const ProblemResult solved = solve_problem(spec, set.file, false);
   ASSERT_FALSE(solved.error) << test::error_text(solved);
@@ -310,8 +325,10 @@ TEST(Pictures, Seed003IcosahedronHasOneLinePerEdgeByClass) {
 TEST(PainterVsZBuffer, SeparableSceneHasNoDifferingPixels) {
   // Parallel squares at z = −2, −8, −5, overlapping on screen, seen from an eye and along −z.
   const std::vector<Polygon3<Exact>> polys = {
-      {Vec3<Exact>(-1, -1, -2), Vec3<Exact>(1, -1, -2), Vec3<Exact>(1, 1, -2), Vec3<Exact>(-1, 1, -2)},
-      {Vec3<Exact>(-3, -3, -8), Vec3<Exact>(3, -3, -8), Vec3<Exact>(3, 3, -8), Vec3<Exact>(-3, 3, -8)},
+      {Vec3<Exact>(-1, -1, -2), Vec3<Exact>(1, -1, -2), Vec3<Exact>(1, 1, -2),
+       Vec3<Exact>(-1, 1, -2)},
+      {Vec3<Exact>(-3, -3, -8), Vec3<Exact>(3, -3, -8), Vec3<Exact>(3, 3, -8),
+       Vec3<Exact>(-3, 3, -8)},
       {Vec3<Exact>(0, 0, -5), Vec3<Exact>(2, 0, -5), Vec3<Exact>(2, 2, -5), Vec3<Exact>(0, 2, -5)}};
   for (const DepthViewer& v : {DepthViewer{Vec3<Exact>(0, 0, 4), std::nullopt},
                                DepthViewer{std::nullopt, Vec3<Exact>(0, 0, -1)}}) {
@@ -334,11 +351,13 @@ TEST(PainterVsZBuffer, FailureCasesDifferWhereThePainterIsWrong) {
     // Each differing pixel is covered in both frames, and the painter shows a polygon it drew
     // after the nearest one (a farther polygon painted over it).
     std::map<std::string, std::size_t> position;
-    for (std::size_t k = 0; k < r.sort.order.size(); ++k) position[std::to_string(r.sort.order[k])] = k;
+    for (std::size_t k = 0; k < r.sort.order.size(); ++k)
+      position[std::to_string(r.sort.order[k])] = k;
     for (const auto& [i, j] : r.differing) {
       ASSERT_NE(r.painter.at(i, j), kBackground);
       ASSERT_NE(r.zbuffer.at(i, j), kBackground);
-      EXPECT_GT(position.at(r.painter.at(i, j)), position.at(r.zbuffer.at(i, j))) << id << " pixel " << i << ", " << j;
+      EXPECT_GT(position.at(r.painter.at(i, j)), position.at(r.zbuffer.at(i, j)))
+          << id << " pixel " << i << ", " << j;
     }
   }
 }
@@ -351,11 +370,13 @@ TEST(Pictures, PainterPictureIsWellFormedAndMarksTheDifferences) {
   const Picture p = draw_picture(spec.info->drawable(spec.given), o);
   const XmlCheck c = check_xml(p.svg);
   ASSERT_TRUE(c.ok) << c.problem;
-  const PainterVsZBuffer r = painter_vs_zbuffer(spec.info->drawable(spec.given).polygons,
-                                                spec.info->drawable(spec.given).viewer, Api::OpenGL, 32);
+  const PainterVsZBuffer r =
+      painter_vs_zbuffer(spec.info->drawable(spec.given).polygons,
+                         spec.info->drawable(spec.given).viewer, Api::OpenGL, 32);
   EXPECT_EQ(count_of(p.svg, "class=\"diff\""), 2 * static_cast<int>(r.differing.size()));
   EXPECT_EQ(count_of(p.svg, "class=\"outline\""), 6);
-  EXPECT_NE(p.summary.find(fmt::format("{} pixels differ", r.differing.size())), std::string::npos) << p.summary;
+  EXPECT_NE(p.summary.find(fmt::format("{} pixels differ", r.differing.size())), std::string::npos)
+      << p.summary;
 }
 
 // ---- frustum draw -----------------------------------------------------------------------
@@ -367,34 +388,39 @@ struct DrawRun {
 
 DrawRun draw(const std::string& set, const std::string& id, const std::string& output = "") {
   std::ostringstream out, err;
-  const int status = app::run_draw(test::source_path(set), id, output, 24, app::Output{out, err, false});
+  const int status =
+      app::run_draw(test::source_path(set), id, output, 24, app::Output{out, err, false});
   return {status, out.str(), err.str()};
 }
 
 TEST(DrawCommand, WritesTheSvgAndSaysWhatItDrew) {
   const std::string file = ::testing::TempDir() + "frustum_draw_test.svg";
-  const DrawRun r = draw("problems/seeds/003_polygons_backface.yaml", "seed003-ico-hidden-lines", file);
+  const DrawRun r =
+      draw("problems/seeds/003_polygons_backface.yaml", "seed003-ico-hidden-lines", file);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("30 edges"), std::string::npos) << r.out;
   std::ifstream in(file);
   const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_TRUE(check_xml(svg).ok);
   std::remove(file.c_str());
-  const DrawRun stdout_run = draw("problems/examples/visibility.yaml", "depth-sort-interpenetrating");
+  const DrawRun stdout_run =
+      draw("problems/examples/visibility.yaml", "depth-sort-interpenetrating");
   ASSERT_EQ(stdout_run.status, 0) << stdout_run.err;
   EXPECT_TRUE(check_xml(stdout_run.out).ok);
 }
 
 TEST(DrawCommand, ClearErrorsForUndrawableKindsAndBadProblems) {
-  const DrawRun vectors = draw("problems/seeds/003_polygons_backface.yaml", "seed003-cross-product");
+  const DrawRun vectors =
+      draw("problems/seeds/003_polygons_backface.yaml", "seed003-cross-product");
   EXPECT_EQ(vectors.status, 1);
-  EXPECT_NE(vectors.err.find("kind vectors, which cannot be drawn"), std::string::npos) << vectors.err;
+  EXPECT_NE(vectors.err.find("kind vectors, which cannot be drawn"), std::string::npos)
+      << vectors.err;
   EXPECT_NE(vectors.err.find("edge_visibility"), std::string::npos) << vectors.err;
   const DrawRun missing = draw("problems/seeds/003_polygons_backface.yaml", "no-such-id");
   EXPECT_EQ(missing.status, 1);
   EXPECT_NE(missing.err.find("no problem with id 'no-such-id'"), std::string::npos);
-  const DrawRun unwritable = draw("problems/seeds/003_polygons_backface.yaml", "seed003-ico-hidden-lines",
-                                  "/nonexistent-dir/x.svg");
+  const DrawRun unwritable = draw("problems/seeds/003_polygons_backface.yaml",
+                                  "seed003-ico-hidden-lines", "/nonexistent-dir/x.svg");
   EXPECT_EQ(unwritable.status, 1);
   EXPECT_NE(unwritable.err.find("cannot write"), std::string::npos);
 }

@@ -110,8 +110,10 @@ TEST(ExactFormat, HigherRootsAndFunctions) {
 
 TEST(ExactFormat, FallbacksStayParenthesised) {
   // A square-root sum in a denominator is rationalised (√3/2 − 1/2); a cube-root sum is not.
-  expect_formats({1 / (1 + sqrt_of(3)), "sqrt(3)/2 - 1/2", "√3/2 − 1/2", "\\frac{\\sqrt{3}}{2} - \\frac{1}{2}"});
-  expect_formats({1 / (1 + root(2, 3)), "1/(1 + 2^(1/3))", "1/(1 + ∛2)", "\\frac{1}{1 + \\sqrt[3]{2}}"});
+  expect_formats({1 / (1 + sqrt_of(3)), "sqrt(3)/2 - 1/2", "√3/2 − 1/2",
+                  "\\frac{\\sqrt{3}}{2} - \\frac{1}{2}"});
+  expect_formats(
+      {1 / (1 + root(2, 3)), "1/(1 + 2^(1/3))", "1/(1 + ∛2)", "\\frac{1}{1 + \\sqrt[3]{2}}"});
   expect_formats({GiNaC::pow(1 + GiNaC::Pi, 2) * 3, "3 + 6*pi + 3*pi^2", "3 + 6π + 3π²",
                   "3 + 6\\pi + 3\\pi^{2}"});
   expect_formats({GiNaC::pow(ex(-8), ex(numeric(1, 3))), "(-8)^(1/3)", "∛(−8)", "\\sqrt[3]{-8}"});

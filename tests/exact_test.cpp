@@ -99,8 +99,10 @@ TEST(Exact, CanonicalTakesSmallPrimesOutOfHugeRadicands) {
   // Beyond the factoring bound (10^15) the small primes still come out: decimal inputs of
   // 1e-31 give radicands of 2^a·5^b (√(2·10^63) = 2^32·5^31·√5), and the key says 2√5/5.
   const numeric ten63 = numeric(10).power(63);
-  expect_canonical(GiNaC::sqrt(ex(2 * ten63)), ex(numeric(2).power(32) * numeric(5).power(31)) * sqrt_of(5));
-  expect_canonical(GiNaC::sqrt(ex(2 * ten63)) / ex(numeric(5) * numeric(10).power(31)), 2 * sqrt_of(5) / 5);
+  expect_canonical(GiNaC::sqrt(ex(2 * ten63)),
+                   ex(numeric(2).power(32) * numeric(5).power(31)) * sqrt_of(5));
+  expect_canonical(GiNaC::sqrt(ex(2 * ten63)) / ex(numeric(5) * numeric(10).power(31)),
+                   2 * sqrt_of(5) / 5);
   // A large prime square times small primes: the cofactor's square test still runs.
   const numeric big = numeric(1000000007L);
   expect_canonical(GiNaC::sqrt(ex(big * big * 12 * numeric(10).power(20))),

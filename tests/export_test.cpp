@@ -127,7 +127,8 @@ TEST(Export, TextFieldsAcceptExactlyWhatTheGraderAccepts) {
           for (unsigned bits = 0; bits < (1u << n); ++bits) {
             std::string s;
             for (std::size_t i = n; i-- > 0;) s += (bits >> i & 1u) ? '1' : '0';
-            const bool graded = verdict_of(set, solved, q.id, a.name, "\"" + s + "\"") == Verdict::Correct;
+            const bool graded =
+                verdict_of(set, solved, q.id, a.name, "\"" + s + "\"") == Verdict::Correct;
             const bool listed = std::find(platform.begin(), platform.end(), s) != platform.end();
             EXPECT_EQ(graded, listed) << q.id << "." << a.name << " " << s;
           }
@@ -140,7 +141,8 @@ TEST(Export, TextFieldsAcceptExactlyWhatTheGraderAccepts) {
         EXPECT_NE(moodle.find(cloze + "}"), std::string::npos) << moodle;
         const std::string qti = export_qti({{"", {only}}}, "t", "t").at("t.xml");
         for (const std::string& s : platform)
-          EXPECT_NE(qti.find("<varequal respident=\"response1\">" + s + "</varequal>"), std::string::npos)
+          EXPECT_NE(qti.find("<varequal respident=\"response1\">" + s + "</varequal>"),
+                    std::string::npos)
               << s;
         EXPECT_EQ(qti.find("<or>") != std::string::npos, !f.also.empty());
       }

@@ -88,7 +88,8 @@ TEST(Expression, DecimalsMatchTheirFractions) {
     EXPECT_EQ(GiNaC::ex_to<numeric>(*r.value), numeric(n) / numeric(10).power(s)) << text;
     // A bare literal takes a shortcut past the lexer; in parentheses it goes through the
     // grammar. Both must agree, signs and exponents included.
-    const std::string signed_text = (i % 2 ? "-" : "") + text + (i % 3 ? "e-" + std::to_string(i % 7) : "");
+    const std::string signed_text =
+        (i % 2 ? "-" : "") + text + (i % 3 ? "e-" + std::to_string(i % 7) : "");
     const ExpressionResult direct = parse_expression(signed_text);
     const ExpressionResult grammar = parse_expression("(" + signed_text + ")");
     ASSERT_TRUE(direct.value && grammar.value) << signed_text;

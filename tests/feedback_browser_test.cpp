@@ -35,13 +35,15 @@ const char* kSet = R"Y(problems:
 
 // Runs Chromium on the page and returns the DOM it dumped.
 std::string dump_dom(const fs::path& page) {
-  const fs::path profile = fs::temp_directory_path() / ("frustum-chromium-" + std::to_string(getpid()));
+  const fs::path profile =
+      fs::temp_directory_path() / ("frustum-chromium-" + std::to_string(getpid()));
   fs::create_directories(profile);
   const std::string command =
       std::string("timeout 120 ") + kChromium +
-      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking"
-      " --disable-component-update --disable-sync --disable-dev-shm-usage --user-data-dir=" + profile.string() +
-      " --dump-dom 'file://" + page.string() + "' 2>/dev/null";
+      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "--disable-background-networking"
+      " --disable-component-update --disable-sync --disable-dev-shm-usage --user-data-dir=" +
+      profile.string() + " --dump-dom 'file://" + page.string() + "' 2>/dev/null";
   std::string out;
   if (FILE* p = popen(command.c_str(), "r")) {
     std::array<char, 4096> buf;
@@ -62,7 +64,8 @@ void expect_rendered(const std::string& dom) {
   ASSERT_FALSE(dom.empty()) << "Chromium printed nothing";
   // The page's script ran in the browser: it marks the body and counts the verdicts shown.
   EXPECT_NE(dom.find("data-rendered=\"yes\""), std::string::npos) << dom.substr(0, 2000);
-  EXPECT_NE(dom.find("<p id=\"summary\">correct: 2, incorrect: 2, missing: 1</p>"), std::string::npos)
+  EXPECT_NE(dom.find("<p id=\"summary\">correct: 2, incorrect: 2, missing: 1</p>"),
+            std::string::npos)
       << dom.substr(0, 4000);
   EXPECT_NE(dom.find("Score: 2 / 5"), std::string::npos);
   // The math shows as written on paper: the exact unit normal and the plane's equation.

@@ -2,25 +2,25 @@
 // byte, per-student grading, and the self-test of every kind — generated variants graded against
 // their own key (full marks), a key perturbed by ten times the tolerance (not correct) and
 // malformed answers (unparseable, never a crash). FRUSTUM_SELFTEST_COUNT=N runs N per kind.
-#include "grader/compare.hpp"
-#include "grader/grade.hpp"
 #include "solver/problem/generate.hpp"
-#include "solver/problem/registry.hpp"
-#include "solver/problem/variants.hpp"
-#include "solver/input/yaml_emit.hpp"
-#include "test_util.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <cstdlib>
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
+
+#include "grader/compare.hpp"
+#include "grader/grade.hpp"
+#include "solver/input/yaml_emit.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/variants.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -237,7 +237,8 @@ TEST(Vary, SeedsAreTheDocumentedHash) {
   const ProblemSet v = variant_for(set, "s1");
   ASSERT_TRUE(v.variant);
   EXPECT_EQ(v.variant->student, "s1");
-  const std::string text = std::string("frustum-variant/1") + '\x1f' + "Z-buffer drill" + '\x1f' + "student:s1";
+  const std::string text =
+      std::string("frustum-variant/1") + '\x1f' + "Z-buffer drill" + '\x1f' + "student:s1";
   EXPECT_EQ(v.variant->seed, fnv1a64(text));
   EXPECT_EQ(problem_seed(v.variant->seed, "zbuf"), fnv1a64(text + '\x1f' + "zbuf"));
   // Without a title the key is the file name's stem.
@@ -282,7 +283,8 @@ TEST(Vary, SeededVariantsArePairwiseDistinct) {
   // Only three values exist: a fourth distinct variant is a clear error, not a hang.
   const std::vector<ProblemSet> four = variants_from_seed(set, 7, 4);
   ASSERT_TRUE(four[3].problems[0].error);
-  EXPECT_NE(four[3].problems[0].error->message.find("the same as another variant"), std::string::npos);
+  EXPECT_NE(four[3].problems[0].error->message.find("the same as another variant"),
+            std::string::npos);
 }
 
 TEST(Vary, ClassVariantsArePairwiseDistinct) {
@@ -305,8 +307,10 @@ TEST(Vary, ClassVariantsArePairwiseDistinct) {
   int redrawn = 0;
   for (int i = 0; i < 6; ++i) {
     ASSERT_TRUE(cls[i].all_errors().empty()) << i;
-    EXPECT_TRUE(seen.insert(emit_flow(cls[i].problems[0].given_node)).second) << "student " << i << " repeats";
-    EXPECT_EQ(emit_flow(cls[i].problems[1].given_node), emit_flow(set.problems[1].given_node));  // not varied
+    EXPECT_TRUE(seen.insert(emit_flow(cls[i].problems[0].given_node)).second)
+        << "student " << i << " repeats";
+    EXPECT_EQ(emit_flow(cls[i].problems[1].given_node),
+              emit_flow(set.problems[1].given_node));  // not varied
     const int draw = cls[i].variant->draw;
     redrawn += draw > 1;
     // A first draw is the student's own variant, the one grading regenerates from the id.
@@ -318,7 +322,8 @@ TEST(Vary, ClassVariantsArePairwiseDistinct) {
   EXPECT_GT(redrawn, 0) << "six students over six values: collisions are all but certain";
   EXPECT_EQ(cls[0].variant->draw, 1);
   ASSERT_FALSE(cls[6].all_errors().empty());
-  EXPECT_NE(cls[6].all_errors()[0].message.find("fewer variants than the class"), std::string::npos);
+  EXPECT_NE(cls[6].all_errors()[0].message.find("fewer variants than the class"),
+            std::string::npos);
   // The same roster gives the same class.
   const std::vector<ProblemSet> again = variants_for_class(set, students, false);
   for (int i = 0; i < 6; ++i)
@@ -346,12 +351,15 @@ problems:
 )";
   const ProblemSet v = variant_for(load_problem_set_from_string(yaml, "bad.yaml"), "s");
   ASSERT_TRUE(v.problems[0].error);
-  EXPECT_EQ(v.problems[0].error->format(), "bad.yaml:7:7: problems[0].vary.c: not a given field of vectors (did you mean 'a'?)");
+  EXPECT_EQ(v.problems[0].error->format(),
+            "bad.yaml:7:7: problems[0].vary.c: not a given field of vectors (did you mean 'a'?)");
   ASSERT_TRUE(v.problems[1].error);
-  EXPECT_EQ(v.problems[1].error->format(), "bad.yaml:12:18: problems[1].vary.a.range: lo must not exceed hi");
+  EXPECT_EQ(v.problems[1].error->format(),
+            "bad.yaml:12:18: problems[1].vary.a.range: lo must not exceed hi");
   // Every draw fails (a zero vector): a bounded number of attempts, then the reason.
   ASSERT_TRUE(v.problems[2].error);
-  EXPECT_NE(v.problems[2].error->message.find("no acceptable variant in 100 draws"), std::string::npos);
+  EXPECT_NE(v.problems[2].error->message.find("no acceptable variant in 100 draws"),
+            std::string::npos);
   EXPECT_NE(v.problems[2].error->message.find("zero vector"), std::string::npos);
   // A student id is needed to pick the variant.
   const ProblemSet none = variant_for(load_problem_set_from_string(kVariedSet, "drill.yaml"), "");
@@ -374,15 +382,22 @@ problems:
     ASSERT_TRUE(v.all_errors().empty()) << v.all_errors()[0].format();
     const SetResult r = solve_set(v, false);
     const GiNaC::ex z = r.problems[0].answers.find("z")->exact[0];
-    EXPECT_TRUE(GiNaC::is_a<GiNaC::numeric>(z) && GiNaC::ex_to<GiNaC::numeric>(z).is_integer()) << z;
+    EXPECT_TRUE(GiNaC::is_a<GiNaC::numeric>(z) && GiNaC::ex_to<GiNaC::numeric>(z).is_integer())
+        << z;
     EXPECT_EQ(r.problems[1].answers.find("facing")->word, "edge_on");
     const int fov = v.problems[2].given_node["fov"].as<int>();
     EXPECT_TRUE(fov == 60 || fov == 90) << fov;
     EXPECT_TRUE(not_nice(r.problems[2].answers, v.problems[2].ask).empty());
     EXPECT_LT(triangle_shape(doubles(std::vector<Vec3<Exact>>{
-                  Vec3<Exact>(v.problems[3].given_node["points"][0][0].as<int>(), v.problems[3].given_node["points"][0][1].as<int>(), v.problems[3].given_node["points"][0][2].as<int>()),
-                  Vec3<Exact>(v.problems[3].given_node["points"][1][0].as<int>(), v.problems[3].given_node["points"][1][1].as<int>(), v.problems[3].given_node["points"][1][2].as<int>()),
-                  Vec3<Exact>(v.problems[3].given_node["points"][2][0].as<int>(), v.problems[3].given_node["points"][2][1].as<int>(), v.problems[3].given_node["points"][2][2].as<int>())})),
+                  Vec3<Exact>(v.problems[3].given_node["points"][0][0].as<int>(),
+                              v.problems[3].given_node["points"][0][1].as<int>(),
+                              v.problems[3].given_node["points"][0][2].as<int>()),
+                  Vec3<Exact>(v.problems[3].given_node["points"][1][0].as<int>(),
+                              v.problems[3].given_node["points"][1][1].as<int>(),
+                              v.problems[3].given_node["points"][1][2].as<int>()),
+                  Vec3<Exact>(v.problems[3].given_node["points"][2][0].as<int>(),
+                              v.problems[3].given_node["points"][2][1].as<int>(),
+                              v.problems[3].given_node["points"][2][2].as<int>())})),
               kMinTriangleShape);
   }
 }
@@ -429,20 +444,24 @@ TEST(GenerateCli, WritesReproducibleSetsWhoseKeysGradeFullMarks) {
   const std::string first = test::read_file(dir + "/a/drill-s1.yaml");
   EXPECT_NE(first.find("seed "), std::string::npos);
   EXPECT_EQ(first, test::read_file(dir + "/b/drill-s1.yaml"));
-  EXPECT_EQ(test::read_file(dir + "/a/answers/drill-s1.yaml"), test::read_file(dir + "/b/answers/drill-s1.yaml"));
+  EXPECT_EQ(test::read_file(dir + "/a/answers/drill-s1.yaml"),
+            test::read_file(dir + "/b/answers/drill-s1.yaml"));
   // The key grades full marks against the master set, which regenerates s1's variant.
-  const std::string out = run_cli("grade " + set + " " + dir + "/a/answers/drill-s1.yaml --format json", status);
+  const std::string out =
+      run_cli("grade " + set + " " + dir + "/a/answers/drill-s1.yaml --format json", status);
   EXPECT_EQ(status, 0) << out;
   EXPECT_NE(out.find("variant of student s1"), std::string::npos) << out;
   const nlohmann::json j = nlohmann::json::parse(out.substr(out.find('{')));
   EXPECT_EQ(j["score"], j["max_score"]);
   // Each student is graded against their own variant.
-  const std::string cross = run_cli("grade " + set + " " + dir + "/a/answers/drill-s2.yaml", status);
+  const std::string cross =
+      run_cli("grade " + set + " " + dir + "/a/answers/drill-s2.yaml", status);
   EXPECT_NE(cross.find("Student s2"), std::string::npos) << cross;
   // Seeded variants grade against their own generated files.
   run_cli("generate " + set + " --seed 5 --count 2 -o " + dir + "/c", status);
   ASSERT_EQ(status, 0);
-  const std::string own = run_cli("grade " + dir + "/c/drill-seed5-1.yaml " + dir + "/c/answers/drill-seed5-1.yaml", status);
+  const std::string own = run_cli(
+      "grade " + dir + "/c/drill-seed5-1.yaml " + dir + "/c/answers/drill-seed5-1.yaml", status);
   EXPECT_EQ(status, 0) << own;
   EXPECT_NE(own.find(": 6 / 6"), std::string::npos) << own;
   // Usage errors.
@@ -464,7 +483,8 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
 )";
   std::ofstream(dir + "/roster.csv") << "student,name\nana,Ana\nben,Ben\ncy,Cy\ndee,Dee\n";
   int status = 0;
-  const std::string gen = run_cli("generate " + set + " --roster " + dir + "/roster.csv -o " + dir + "/gen", status);
+  const std::string gen =
+      run_cli("generate " + set + " --roster " + dir + "/roster.csv -o " + dir + "/gen", status);
   ASSERT_EQ(status, 0) << gen;
   std::set<std::string> givens;
   bool redrawn = false;
@@ -472,20 +492,24 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
     const std::string text = test::read_file(dir + "/gen/few-" + s + ".yaml");
     givens.insert(text.substr(text.find("given:")));
     redrawn = redrawn || text.find("Draw ") != std::string::npos;
-    std::filesystem::copy_file(dir + "/gen/answers/few-" + s + ".yaml", dir + "/answers/" + s + ".yaml");
+    std::filesystem::copy_file(dir + "/gen/answers/few-" + s + ".yaml",
+                               dir + "/answers/" + s + ".yaml");
   }
   EXPECT_EQ(givens.size(), 4u) << "four students, four values: all different";
   EXPECT_TRUE(redrawn) << gen;
   EXPECT_NE(gen.find("--variants"), std::string::npos) << gen;
   // Against their generated files every key grades full marks, redrawn students included.
-  const std::string out = run_cli("grade " + set + " " + dir + "/answers --variants " + dir + "/gen -o " + dir + "/grades", status);
+  const std::string out = run_cli(
+      "grade " + set + " " + dir + "/answers --variants " + dir + "/gen -o " + dir + "/grades",
+      status);
   EXPECT_EQ(status, 0) << out;
   const std::string book = test::read_file(dir + "/grades/gradebook.csv");
   for (const std::string s : {"ana", "ben", "cy", "dee"})
     EXPECT_NE(book.find(s + ",1,1,100"), std::string::npos) << book;
   // In a batch, a student with no generated file is an error row that says why.
   std::ofstream(dir + "/answers/zed.yaml") << "student: zed\nanswers:\n  v: {dot: 0}\n";
-  run_cli("grade " + set + " " + dir + "/answers --variants " + dir + "/gen -o " + dir + "/grades2", status);
+  run_cli("grade " + set + " " + dir + "/answers --variants " + dir + "/gen -o " + dir + "/grades2",
+          status);
   EXPECT_NE(status, 0);
   const std::string book2 = test::read_file(dir + "/grades2/gradebook.csv");
   EXPECT_NE(book2.find("zed,0,"), std::string::npos) << book2;
@@ -493,25 +517,33 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   EXPECT_NE(book2.find("no generated set for student zed"), std::string::npos) << book2;
   std::filesystem::remove(dir + "/answers/zed.yaml");
   // One student alone, and a student with no generated file.
-  const std::string one = run_cli("grade " + set + " " + dir + "/answers/cy.yaml --variants " + dir + "/gen", status);
+  const std::string one =
+      run_cli("grade " + set + " " + dir + "/answers/cy.yaml --variants " + dir + "/gen", status);
   EXPECT_EQ(status, 0) << one;
   EXPECT_NE(one.find("graded against"), std::string::npos) << one;
   std::ofstream(dir + "/zed.yaml") << "student: zed\nanswers:\n  v: {dot: 0}\n";
-  const std::string none = run_cli("grade " + set + " " + dir + "/zed.yaml --variants " + dir + "/gen", status);
+  const std::string none =
+      run_cli("grade " + set + " " + dir + "/zed.yaml --variants " + dir + "/gen", status);
   EXPECT_NE(status, 0);
   EXPECT_NE(none.find("no generated set for student zed"), std::string::npos) << none;
   // issue 13: the same roster regenerates the class, redraws included; without --variants or
   // --roster, a class in which two students' variants from their ids collide (so someone was
   // redrawn) is refused, never graded against another draw.
-  const std::string by_roster = run_cli("grade " + set + " " + dir + "/answers --roster " + dir + "/roster.csv -o " + dir + "/grades3", status);
+  const std::string by_roster = run_cli("grade " + set + " " + dir + "/answers --roster " + dir +
+                                            "/roster.csv -o " + dir + "/grades3",
+                                        status);
   EXPECT_EQ(status, 0) << by_roster;
   const std::string book3 = test::read_file(dir + "/grades3/gradebook.csv");
-  for (const std::string s : {"ana", "ben", "cy", "dee"}) EXPECT_NE(book3.find(s + ",1,1,100"), std::string::npos) << book3;
+  for (const std::string s : {"ana", "ben", "cy", "dee"})
+    EXPECT_NE(book3.find(s + ",1,1,100"), std::string::npos) << book3;
   for (const std::string s : {"ana", "ben", "cy", "dee"}) {
-    const std::string alone = run_cli("grade " + set + " " + dir + "/answers/" + s + ".yaml --roster " + dir + "/roster.csv", status);
+    const std::string alone = run_cli(
+        "grade " + set + " " + dir + "/answers/" + s + ".yaml --roster " + dir + "/roster.csv",
+        status);
     EXPECT_NE(alone.find(": 1 / 1"), std::string::npos) << alone;
   }
-  const std::string guessed = run_cli("grade " + set + " " + dir + "/answers -o " + dir + "/grades4", status);
+  const std::string guessed =
+      run_cli("grade " + set + " " + dir + "/answers -o " + dir + "/grades4", status);
   EXPECT_NE(status, 0);
   const std::string book4 = test::read_file(dir + "/grades4/gradebook.csv");
   EXPECT_NE(book4.find("--variants"), std::string::npos) << book4;
@@ -523,7 +555,8 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   EXPECT_NE(single.find("--roster"), std::string::npos) << single;
   // A roster naming a student twice is a located error.
   std::ofstream(dir + "/twice.txt") << "ana\n# comment\n\nana\n";
-  const std::string twice = run_cli("generate " + set + " --roster " + dir + "/twice.txt -o " + dir + "/t", status);
+  const std::string twice =
+      run_cli("generate " + set + " --roster " + dir + "/twice.txt -o " + dir + "/t", status);
   EXPECT_NE(status, 0);
   EXPECT_NE(twice.find("twice.txt:4:1"), std::string::npos) << twice;
 }
@@ -539,10 +572,13 @@ int selftest_count() {
 // compared up to scale, one component.
 YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const ComponentJudge& judge) {
   switch (v.shape) {
-    case Value::Shape::Null: return YAML::Node("1");
-    case Value::Shape::Bool: return YAML::Node(v.flag ? "false" : "true");
+    case Value::Shape::Null:
+      return YAML::Node("1");
+    case Value::Shape::Bool:
+      return YAML::Node(v.flag ? "false" : "true");
     case Value::Shape::Word: {
-      if (spec.kind == AnswerKind::BitString) return YAML::Node((v.word[0] == '0' ? "1" : "0") + v.word.substr(1));
+      if (spec.kind == AnswerKind::BitString)
+        return YAML::Node((v.word[0] == '0' ? "1" : "0") + v.word.substr(1));
       for (const std::string& w : spec.words)
         if (w != v.word) return YAML::Node(w);
       return YAML::Node("front");
@@ -555,7 +591,8 @@ YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const ComponentJudg
     }
     case Value::Shape::WordList: {
       YAML::Node n = answer_node(v);
-      if (spec.kind == AnswerKind::Sequence && v.words.size() >= 2 && v.words.front() != v.words.back()) {
+      if (spec.kind == AnswerKind::Sequence && v.words.size() >= 2 &&
+          v.words.front() != v.words.back()) {
         YAML::Node r(YAML::NodeType::Sequence);
         for (std::size_t i = v.words.size(); i-- > 0;) r.push_back(v.words[i]);
         return r;
@@ -563,7 +600,8 @@ YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const ComponentJudg
       n.push_back("nonsense");
       return n;
     }
-    default: break;
+    default:
+      break;
   }
   // The grader's own window of each component (at least 1 where the window is 0: an exact 0).
   const auto off = [&](std::size_t i) {
@@ -572,7 +610,8 @@ YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const ComponentJudg
   };
   Value p = v;
   p.exact.clear();
-  if (spec.kind == AnswerKind::Direction || spec.kind == AnswerKind::Plane || spec.kind == AnswerKind::Point) {
+  if (spec.kind == AnswerKind::Direction || spec.kind == AnswerKind::Plane ||
+      spec.kind == AnswerKind::Point) {
     // Compared up to scale: move only the smallest component, which no rescaling undoes (the
     // residual is at least 10·window·√(1 − 1/n)).
     std::size_t k = 0;
@@ -588,19 +627,27 @@ YAML::Node perturbed(const Value& v, const AnswerSpec& spec, const ComponentJudg
 // Not an answer of its kind in any reading.
 YAML::Node malformed(const AnswerSpec& spec) {
   switch (spec.kind) {
-    case AnswerKind::Bool: return YAML::Node("maybe");
-    case AnswerKind::Category: return YAML::Node("sideways");
-    case AnswerKind::BitString: return YAML::Node("01x");
+    case AnswerKind::Bool:
+      return YAML::Node("maybe");
+    case AnswerKind::Category:
+      return YAML::Node("sideways");
+    case AnswerKind::BitString:
+      return YAML::Node("01x");
     case AnswerKind::WordList:
-    case AnswerKind::Sequence: return YAML::Load("{a: 1}");
-    case AnswerKind::WordMap: return YAML::Node("x");
-    default: return YAML::Node("1 +* ");
+    case AnswerKind::Sequence:
+      return YAML::Load("{a: 1}");
+    case AnswerKind::WordMap:
+      return YAML::Node("x");
+    default:
+      return YAML::Node("1 +* ");
   }
 }
 
-std::string submission_text(const ProblemSpec& spec, const std::function<YAML::Node(const AnswerSpec&)>& make) {
+std::string submission_text(const ProblemSpec& spec,
+                            const std::function<YAML::Node(const AnswerSpec&)>& make) {
   std::string s = "student: s\nanswers:\n  p:\n";
-  for (const std::string& name : spec.ask) s += "    " + name + ": " + emit_flow(make(*spec.info->answer(name))) + "\n";
+  for (const std::string& name : spec.ask)
+    s += "    " + name + ": " + emit_flow(make(*spec.info->answer(name))) + "\n";
   return s;
 }
 
@@ -615,7 +662,8 @@ TEST_P(SelfTest, KeysGradeFullPerturbedKeysDoNotMalformedAnswersAreUnparseable) 
     const ProblemSpec base = default_problem(kind, i % 4 == 1, i % 5 == 2);
     ProblemSet set;
     set.file = "selftest.yaml";
-    set.problems.push_back(draw_problem(base, set.file, fnv1a64(kind.name + "/" + std::to_string(i))));
+    set.problems.push_back(
+        draw_problem(base, set.file, fnv1a64(kind.name + "/" + std::to_string(i))));
     const ProblemSpec& spec = set.problems[0];
     ASSERT_FALSE(spec.error) << kind.name << " #" << i << ": " << spec.error->format();
     const std::string given = emit_flow(spec.given_node);
@@ -623,12 +671,13 @@ TEST_P(SelfTest, KeysGradeFullPerturbedKeysDoNotMalformedAnswersAreUnparseable) 
     ASSERT_FALSE(solved.error) << given;
 
     // (a) its own key: full marks.
-    const GradeReport full = grade(set, load_submission_from_string(emit_answer_key(set, "s", ""), "key.yaml"));
+    const GradeReport full =
+        grade(set, load_submission_from_string(emit_answer_key(set, "s", ""), "key.yaml"));
     ASSERT_TRUE(full.errors.empty()) << given << "\n" << full.errors[0].format();
     ASSERT_FALSE(full.problems[0].error) << given;
     for (const AnswerGrade& a : full.problems[0].answers)
-      EXPECT_EQ(a.verdict, Verdict::Correct) << kind.name << " " << a.name << " of " << given << ": got " << a.got_text
-                                             << ", " << a.feedback;
+      EXPECT_EQ(a.verdict, Verdict::Correct) << kind.name << " " << a.name << " of " << given
+                                             << ": got " << a.got_text << ", " << a.feedback;
     EXPECT_DOUBLE_EQ(full.score, full.max_score) << given;
 
     // (b) perturbed by ten times the tolerance: no answer is correct.
@@ -640,13 +689,16 @@ TEST_P(SelfTest, KeysGradeFullPerturbedKeysDoNotMalformedAnswersAreUnparseable) 
     });
     const GradeReport wrong = grade(set, load_submission_from_string(off, "off.yaml"));
     for (const AnswerGrade& a : wrong.problems[0].answers)
-      EXPECT_NE(a.verdict, Verdict::Correct) << kind.name << " " << a.name << " of " << given << ": " << a.got_text;
+      EXPECT_NE(a.verdict, Verdict::Correct)
+          << kind.name << " " << a.name << " of " << given << ": " << a.got_text;
     EXPECT_LT(wrong.score, wrong.max_score);
 
     // (c) malformed: unparseable, and graded without a crash.
-    const GradeReport bad = grade(set, load_submission_from_string(submission_text(spec, malformed), "bad.yaml"));
+    const GradeReport bad =
+        grade(set, load_submission_from_string(submission_text(spec, malformed), "bad.yaml"));
     for (const AnswerGrade& a : bad.problems[0].answers)
-      EXPECT_EQ(a.verdict, Verdict::Unparseable) << kind.name << " " << a.name << ": " << a.got_text;
+      EXPECT_EQ(a.verdict, Verdict::Unparseable)
+          << kind.name << " " << a.name << ": " << a.got_text;
     EXPECT_EQ(bad.score, 0);
   }
 }
@@ -661,7 +713,9 @@ std::vector<std::string> kind_names() {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryKind, SelfTest, ::testing::ValuesIn(kind_names()),
-                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
 
 }  // namespace
 }  // namespace frustum

@@ -1,10 +1,10 @@
 // Normals, Newell's method and the exact orientation predicate.
-#include "solver/geometry/polygon_normal.hpp"
-#include "solver/geometry/predicates.hpp"
-
 #include <gtest/gtest.h>
 
 #include <random>
+
+#include "solver/geometry/polygon_normal.hpp"
+#include "solver/geometry/predicates.hpp"
 
 namespace frustum {
 namespace {
@@ -41,7 +41,8 @@ TEST(Geometry, NewellIsParallelToEveryEdgePairOfAConvexPolygon) {
 
 TEST(Geometry, AnalysisFindsDegenerateRepeatedAndNearParallel) {
   EXPECT_TRUE(analyse_polygon({ev(0, 0, 0), ev(1, 1, 1), ev(2, 2, 2)}).degenerate);
-  const PolygonAnalysis repeated = analyse_polygon({ev(0, 0, 0), ev(1, 0, 0), ev(1, 0, 0), ev(0, 1, 0)});
+  const PolygonAnalysis repeated =
+      analyse_polygon({ev(0, 0, 0), ev(1, 0, 0), ev(1, 0, 0), ev(0, 1, 0)});
   EXPECT_FALSE(repeated.degenerate);
   ASSERT_EQ(repeated.zero_edges.size(), 1u);
   EXPECT_EQ(repeated.zero_edges[0], 1u);
@@ -79,7 +80,8 @@ TEST(Geometry, Orient3dIsExactWhereNaiveDoublesFail) {
     if (nudge) d.z() = std::nextafter(d.z(), nudge > 0 ? INFINITY : -INFINITY);
     // The exact truth from rationals.
     const auto ex = [](const Eigen::Vector3d& p) {
-      return Vec3<Exact>(exact_from_double(p.x()), exact_from_double(p.y()), exact_from_double(p.z()));
+      return Vec3<Exact>(exact_from_double(p.x()), exact_from_double(p.y()),
+                         exact_from_double(p.z()));
     };
     const int truth = orient3d_sign(ex(a), ex(b), ex(c), ex(d));
     EXPECT_EQ(orient3d_sign(a, b, c, d, &stats), truth);
@@ -99,10 +101,12 @@ namespace {
 // product underflows in double) have sine 1 and lose no digit.
 TEST(PolygonAnalysis, TinyPerpendicularEdgesAreNotNearlyParallel) {
   const Exact tiny = GiNaC::pow(Exact(10), -160);
-  const PolygonAnalysis a = analyse_polygon({Vec3<Exact>(0, 0, 0), Vec3<Exact>(tiny, 0, 0), Vec3<Exact>(0, tiny, 0)});
+  const PolygonAnalysis a =
+      analyse_polygon({Vec3<Exact>(0, 0, 0), Vec3<Exact>(tiny, 0, 0), Vec3<Exact>(0, tiny, 0)});
   EXPECT_NEAR(a.min_sine, std::sqrt(0.5), 1e-12);  // the 45° corners
   EXPECT_LT(a.condition, 2);
-  const PolygonAnalysis thin = analyse_polygon({Vec3<Exact>(0, 0, 0), Vec3<Exact>(tiny, 0, 0), Vec3<Exact>(2 * tiny, tiny / 1000000000, 0)});
+  const PolygonAnalysis thin = analyse_polygon(
+      {Vec3<Exact>(0, 0, 0), Vec3<Exact>(tiny, 0, 0), Vec3<Exact>(2 * tiny, tiny / 1000000000, 0)});
   EXPECT_LT(thin.min_sine, 1e-8);
 }
 

@@ -1,13 +1,13 @@
 // The grader's judgement: tolerance modes and windows, weights and partial credit, error carried
 // forward (with its guard against trivial earlier answers), named misconceptions, and the
 // answer-kind equivalences.
-#include "grader/report.hpp"
-#include "solver/problem/registry.hpp"
-#include "test_util.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
+
+#include "grader/report.hpp"
+#include "solver/problem/registry.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -22,10 +22,12 @@ const char* kDepth = R"Y(problems:
 )Y";
 
 GradeReport grade_text(const std::string& set, const std::string& answers) {
-  return grade(load_problem_set_from_string(set, "set.yaml"), load_submission_from_string(answers, "answers.yaml"));
+  return grade(load_problem_set_from_string(set, "set.yaml"),
+               load_submission_from_string(answers, "answers.yaml"));
 }
 
-const AnswerGrade& answer(const GradeReport& r, const std::string& name, const std::string& id = "z") {
+const AnswerGrade& answer(const GradeReport& r, const std::string& name,
+                          const std::string& id = "z") {
   for (const ProblemGrade& p : r.problems)
     if (p.id == id)
       for (const AnswerGrade& a : p.answers)
@@ -38,7 +40,8 @@ const AnswerGrade& answer(const GradeReport& r, const std::string& name, const s
 TEST(GraderCredit, ErrorCarriedForwardFromAWrongNormal) {
   // Normal (1, 2, −1) is wrong; the plane through A with it is x + 2y − z = −6 and its z at
   // pixel (1, 1) is 9: both follow correctly from the student's own normal.
-  const GradeReport r = grade_text(kDepth, "answers:\n  z: {normal: [1, 2, -1], plane: \"x + 2y - z = -6\", z: 9}\n");
+  const GradeReport r =
+      grade_text(kDepth, "answers:\n  z: {normal: [1, 2, -1], plane: \"x + 2y - z = -6\", z: 9}\n");
   EXPECT_EQ(answer(r, "normal").verdict, Verdict::Incorrect);
   const AnswerGrade& plane = answer(r, "plane");
   EXPECT_EQ(plane.verdict, Verdict::Partial);
@@ -50,13 +53,15 @@ TEST(GraderCredit, ErrorCarriedForwardFromAWrongNormal) {
   EXPECT_TRUE(z.carried_forward);
   EXPECT_DOUBLE_EQ(r.score, 2 * kEcfCreditDefault);
   // A z that does not follow from the student's plane earns nothing.
-  const GradeReport r2 = grade_text(kDepth, "answers:\n  z: {normal: [1, 2, -1], plane: \"x + 2y - z = -6\", z: 10}\n");
+  const GradeReport r2 = grade_text(
+      kDepth, "answers:\n  z: {normal: [1, 2, -1], plane: \"x + 2y - z = -6\", z: 10}\n");
   EXPECT_EQ(answer(r2, "z").verdict, Verdict::Incorrect);
   EXPECT_FALSE(answer(r2, "z").carried_forward);
 }
 
 TEST(GraderCredit, EcfFractionIsConfigurableAndCanBeTurnedOff) {
-  const std::string answers = "answers:\n  z: {normal: [1, 2, -1], plane: \"x + 2y - z = -6\", z: 9}\n";
+  const std::string answers =
+      "answers:\n  z: {normal: [1, 2, -1], plane: \"x + 2y - z = -6\", z: 9}\n";
   const GradeReport quarter = grade_text(std::string("grading: {ecf: 0.25}\n") + kDepth, answers);
   EXPECT_DOUBLE_EQ(answer(quarter, "plane").score, 0.25);
   const GradeReport off = grade_text(std::string("grading: {ecf: 0}\n") + kDepth, answers);
@@ -66,7 +71,8 @@ TEST(GraderCredit, EcfFractionIsConfigurableAndCanBeTurnedOff) {
 
 TEST(GraderCredit, ATrivialEarlierAnswerEarnsNothingForward) {
   // A zero normal makes "every plane" follow; no credit is carried from it.
-  const GradeReport r = grade_text(kDepth, "answers:\n  z: {normal: [0, 0, 0], plane: [0, 0, 0, 0], z: 0}\n");
+  const GradeReport r =
+      grade_text(kDepth, "answers:\n  z: {normal: [0, 0, 0], plane: [0, 0, 0, 0], z: 0}\n");
   EXPECT_EQ(answer(r, "plane").verdict, Verdict::Incorrect);
   EXPECT_EQ(answer(r, "z").verdict, Verdict::Incorrect);
   EXPECT_DOUBLE_EQ(r.score, 0);
@@ -99,17 +105,20 @@ TEST(GraderCredit, ProjectionMistakesAreDiagnosed) {
   const ProblemResult right = solve_problem(s.problems[0], s.file, false);
   const KindInfo* kind = builtin_kinds().find("project_point");
   ASSERT_NE(kind, nullptr);
-  // Each named mistake's answers (from the kind itself), written by a student, are diagnosed by name.
+  // Each named mistake's answers (from the kind itself), written by a student, are diagnosed by
+  // name.
   const std::vector<Misconception> mistakes = kind->misconceptions(s.problems[0].given);
   std::vector<std::string> names;
   for (const Misconception& m : mistakes) names.push_back(m.name);
-  for (const char* expected : {"missing perspective divide", "degrees taken as radians", "fovx for fovy", "near/far sign"})
+  for (const char* expected :
+       {"missing perspective divide", "degrees taken as radians", "fovx for fovy", "near/far sign"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
   for (const Misconception& m : mistakes) {
     const Value* ndc = m.answers.find("ndc");
     if (!ndc || ndc->numbers.size() != 3) continue;
-    const std::string answers = fmt::format("answers:\n  pp: {{ndc: [{:.17g}, {:.17g}, {:.17g}]}}\n", ndc->numbers[0],
-                                            ndc->numbers[1], ndc->numbers[2]);
+    const std::string answers =
+        fmt::format("answers:\n  pp: {{ndc: [{:.17g}, {:.17g}, {:.17g}]}}\n", ndc->numbers[0],
+                    ndc->numbers[1], ndc->numbers[2]);
     const GradeReport r = grade_text(set, answers);
     const AnswerGrade& a = answer(r, "ndc", "pp");
     if (a.verdict == Verdict::Correct) continue;  // a mistake that happens to give the right NDC
@@ -127,9 +136,11 @@ TEST(GraderCredit, CompositionInTheWrongOrder) {
     ask: [matrix]
 )Y";
   // Translate then rotate: M = R·T. A₁·A₂ = T·R is the wrong order.
-  const GradeReport r = grade_text(set, "answers:\n  t: {matrix: [[0, -1, 2], [1, 0, 0], [0, 0, 1]]}\n");
+  const GradeReport r =
+      grade_text(set, "answers:\n  t: {matrix: [[0, -1, 2], [1, 0, 0], [0, 0, 1]]}\n");
   EXPECT_EQ(answer(r, "matrix", "t").misconception, "composition in the wrong order");
-  const GradeReport ok = grade_text(set, "answers:\n  t: {matrix: [[0, -1, 0], [1, 0, 2], [0, 0, 1]]}\n");
+  const GradeReport ok =
+      grade_text(set, "answers:\n  t: {matrix: [[0, -1, 0], [1, 0, 2], [0, 0, 1]]}\n");
   EXPECT_EQ(answer(ok, "matrix", "t").verdict, Verdict::Correct);
 }
 
@@ -144,11 +155,12 @@ TEST(GraderCredit, ToleranceModesAndTheirWindows) {
     const GradeReport r = grade_text(tolerance + base, "answers:\n  v: {angle: " + got + "}\n");
     return answer(r, "angle", "v").verdict;
   };
-  EXPECT_EQ(verdict("", "45.04"), Verdict::Correct);    // rel 1e-3: window 0.045
+  EXPECT_EQ(verdict("", "45.04"), Verdict::Correct);  // rel 1e-3: window 0.045
   EXPECT_EQ(verdict("", "45.05"), Verdict::Incorrect);
   EXPECT_EQ(verdict("tolerance: {rel: 0, abs: 0.5}\n", "45.4"), Verdict::Correct);
   EXPECT_EQ(verdict("tolerance: {rel: 0, abs: 0.5}\n", "45.6"), Verdict::Incorrect);
-  EXPECT_EQ(verdict("tolerance: {sigfigs: 2}\n", "45.4"), Verdict::Correct);  // half a unit of the 2nd digit
+  EXPECT_EQ(verdict("tolerance: {sigfigs: 2}\n", "45.4"),
+            Verdict::Correct);  // half a unit of the 2nd digit
   EXPECT_EQ(verdict("tolerance: {sigfigs: 2}\n", "45.6"), Verdict::Incorrect);
   EXPECT_EQ(verdict("tolerance: {decimals: 1}\n", "45.04"), Verdict::Correct);
   EXPECT_EQ(verdict("tolerance: {decimals: 1}\n", "45.06"), Verdict::Incorrect);
@@ -176,13 +188,15 @@ TEST(GraderCredit, WeightsAndPartialCreditPerComponent) {
     points: {dot: 1, cross: 3}
 )Y";  // a × b = (−3, 6, −3), a·b = 32
   // Component credit is asked for (issue 13: all-or-nothing is the default, as in WeBWorK).
-  const GradeReport r = grade_text("grading: {partial: true}\n" + set, "answers:\n  v: {dot: 32, cross: [-3, 6, 3]}\n");
+  const GradeReport r = grade_text("grading: {partial: true}\n" + set,
+                                   "answers:\n  v: {dot: 32, cross: [-3, 6, 3]}\n");
   EXPECT_DOUBLE_EQ(answer(r, "dot", "v").score, 1);
   EXPECT_EQ(answer(r, "cross", "v").verdict, Verdict::Partial);
   EXPECT_DOUBLE_EQ(answer(r, "cross", "v").score, 2);  // 2 of 3 components, of 3 points
   EXPECT_DOUBLE_EQ(r.max_score, 4);
   for (const std::string& setting : {std::string(""), std::string("grading: {partial: false}\n")}) {
-    const GradeReport all_or_nothing = grade_text(setting + set, "answers:\n  v: {cross: [-3, 6, 3]}\n");
+    const GradeReport all_or_nothing =
+        grade_text(setting + set, "answers:\n  v: {cross: [-3, 6, 3]}\n");
     EXPECT_EQ(answer(all_or_nothing, "cross", "v").verdict, Verdict::Incorrect) << setting;
     EXPECT_DOUBLE_EQ(all_or_nothing.score, 0);
   }
@@ -190,18 +204,22 @@ TEST(GraderCredit, WeightsAndPartialCreditPerComponent) {
 
 TEST(GraderCredit, PlanesUpToScaleAndNormalsUpToPositiveScale) {
   const auto verdicts = [&](const std::string& normal, const std::string& plane) {
-    const GradeReport r = grade_text(kDepth, "answers:\n  z: {normal: " + normal + ", plane: " + plane + "}\n");
+    const GradeReport r =
+        grade_text(kDepth, "answers:\n  z: {normal: " + normal + ", plane: " + plane + "}\n");
     return std::pair{answer(r, "normal").verdict, answer(r, "plane").verdict};
   };
-  EXPECT_EQ(verdicts("[2, 2, -2]", "\"-3x - 3y + 3z = 18\""), std::pair(Verdict::Correct, Verdict::Correct));
-  EXPECT_EQ(verdicts("[\"√3/3\", \"√3/3\", \"-√3/3\"]", "[0.5, 0.5, -0.5, -3]"), std::pair(Verdict::Correct, Verdict::Correct));
+  EXPECT_EQ(verdicts("[2, 2, -2]", "\"-3x - 3y + 3z = 18\""),
+            std::pair(Verdict::Correct, Verdict::Correct));
+  EXPECT_EQ(verdicts("[\"√3/3\", \"√3/3\", \"-√3/3\"]", "[0.5, 0.5, -0.5, -3]"),
+            std::pair(Verdict::Correct, Verdict::Correct));
   EXPECT_EQ(verdicts("[-2, -2, 2]", "\"x + y - z = 6\"").second, Verdict::Incorrect);
 }
 
 TEST(GraderCredit, HostileAnswersAreUnparseableAtOnce) {
-  const std::vector<std::string> hostile = {"\"2^2^2^2^2^2^2^2^2\"",
-                                           "\"" + std::string(20000, '(') + "1" + std::string(20000, ')') + "\"",
-                                           "\"10^(10^9)\"", "\"1/0\"", "\"x +\""};
+  const std::vector<std::string> hostile = {
+      "\"2^2^2^2^2^2^2^2^2\"",
+      "\"" + std::string(20000, '(') + "1" + std::string(20000, ')') + "\"", "\"10^(10^9)\"",
+      "\"1/0\"", "\"x +\""};
   for (const std::string& got : hostile) {
     const GradeReport r = grade_text(kDepth, "answers:\n  z: {z: " + got + "}\n");
     EXPECT_EQ(answer(r, "z").verdict, Verdict::Unparseable) << got.substr(0, 40);

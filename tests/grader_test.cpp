@@ -61,7 +61,8 @@ TEST(Grader, WrongAnswerCarriesItsDerivation) {
 }
 
 TEST(Grader, ReversedNormalIsIncorrectWithFeedback) {
-  const GradeReport r = grade_answers("answers:\n  zbuf-pixel: {normal: [-9, -9, 9], unit_normal: [9, 9, -9]}\n");
+  const GradeReport r =
+      grade_answers("answers:\n  zbuf-pixel: {normal: [-9, -9, 9], unit_normal: [9, 9, -9]}\n");
   const AnswerGrade& n = answer(r, "zbuf-pixel", "normal");
   EXPECT_EQ(n.verdict, Verdict::Incorrect);
   EXPECT_NE(n.feedback.find("opposite"), std::string::npos);
@@ -71,10 +72,12 @@ TEST(Grader, ReversedNormalIsIncorrectWithFeedback) {
 }
 
 TEST(Grader, ToleranceIsRelativeOneInAThousand) {
-  EXPECT_EQ(answer(grade_answers("answers:\n  zbuf-pixel: {z: 8.007}\n"), "zbuf-pixel", "z").verdict,
-            Verdict::Correct);
-  EXPECT_EQ(answer(grade_answers("answers:\n  zbuf-pixel: {z: 8.009}\n"), "zbuf-pixel", "z").verdict,
-            Verdict::Incorrect);
+  EXPECT_EQ(
+      answer(grade_answers("answers:\n  zbuf-pixel: {z: 8.007}\n"), "zbuf-pixel", "z").verdict,
+      Verdict::Correct);
+  EXPECT_EQ(
+      answer(grade_answers("answers:\n  zbuf-pixel: {z: 8.009}\n"), "zbuf-pixel", "z").verdict,
+      Verdict::Incorrect);
 }
 
 TEST(Grader, UnparseableAnswersNeverStopTheRest) {
@@ -106,7 +109,8 @@ TEST(Grader, UnknownIdsAndAnswerNamesAreWarnings) {
 }
 
 TEST(Grader, JsonFollowsTheFormat) {
-  const GradeReport r = grade_answers("student: s1234567\nanswers:\n  zbuf-pixel: {z: 8, plane: [1, 1, -1, -6]}\n");
+  const GradeReport r =
+      grade_answers("student: s1234567\nanswers:\n  zbuf-pixel: {z: 8, plane: [1, 1, -1, -6]}\n");
   const auto j = render_grade_json(r);
   EXPECT_EQ(j["student"], "s1234567");
   EXPECT_EQ(j["score"], 2);
@@ -121,14 +125,19 @@ TEST(Grader, JsonFollowsTheFormat) {
   // A problem the file does not mention at all: every answer missing, no error.
   ASSERT_EQ(j["problems"].size(), 2u);
   EXPECT_FALSE(j["problems"][1].contains("error")) << j["problems"][1].dump();
-  for (const auto& [name, a] : j["problems"][1]["answers"].items()) EXPECT_EQ(a["verdict"], "missing") << name;
+  for (const auto& [name, a] : j["problems"][1]["answers"].items())
+    EXPECT_EQ(a["verdict"], "missing") << name;
   EXPECT_FALSE(j["problems"][1]["answers"].empty());
 }
 
 TEST(Grader, FeedbackEchoesWhatTheStudentWrote) {
   // issue 13: 0.948683 stays 0.948683 beside the key, not our exact reading 948683/1000000.
-  const GradeReport r = grade(load_problem_set_from_string("problems:\n  - {id: v, kind: vectors, given: {a: [1, 0, 0], b: [3, 1, 0]}, ask: [cos, cross]}\n", "set.yaml"),
-                              load_submission_from_string("answers:\n  v: {cos: 0.948683, cross: \"(0, 0, 1.0)\"}\n", "a.yaml"));
+  const GradeReport r =
+      grade(load_problem_set_from_string("problems:\n  - {id: v, kind: vectors, given: {a: [1, 0, "
+                                         "0], b: [3, 1, 0]}, ask: [cos, cross]}\n",
+                                         "set.yaml"),
+            load_submission_from_string("answers:\n  v: {cos: 0.948683, cross: \"(0, 0, 1.0)\"}\n",
+                                        "a.yaml"));
   for (const std::string& page : {render_feedback_markdown(r), render_feedback_html(r)}) {
     EXPECT_NE(page.find("0.948683"), std::string::npos);
     EXPECT_EQ(page.find("948683/1000000"), std::string::npos);

@@ -190,7 +190,6 @@ TEST(Language, SourceIsCitedUnderTheTitle) {
   EXPECT_EQ(render_json(solved)["source"], set.source);
 }
 
-
 // Course conventions and boolean keys in the student's language (issue 16).
 
 // The conventions line of a course that declares every course convention reads in Japanese and

@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 
 #include "grader/grade.hpp"
+#include "solver/input/yaml_emit.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/problem_set.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
-#include "solver/input/yaml_emit.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -9,8 +9,9 @@ namespace {
 // Loads a set whose first problem is broken and whose second is fine; returns the first
 // problem's diagnostic after checking the second still solves.
 Diagnostic first_error(const std::string& broken_problem) {
-  const std::string yaml = "problems:\n" + broken_problem +
-                           "  - id: fine\n    kind: vectors\n    given: {a: [2, 0, 1], b: [1, 2, 0]}\n";
+  const std::string yaml =
+      "problems:\n" + broken_problem +
+      "  - id: fine\n    kind: vectors\n    given: {a: [2, 0, 1], b: [1, 2, 0]}\n";
   const ProblemSet set = load_problem_set_from_string(yaml, "set.yaml");
   EXPECT_TRUE(set.errors.empty());
   EXPECT_EQ(set.problems.size(), 2u);
@@ -23,7 +24,8 @@ Diagnostic first_error(const std::string& broken_problem) {
 }
 
 TEST(Loader, InvalidYamlNamesLineAndColumn) {
-  const ProblemSet set = load_problem_set_from_string("problems:\n  - id: a\n    given: [1, 2\n", "bad.yaml");
+  const ProblemSet set =
+      load_problem_set_from_string("problems:\n  - id: a\n    given: [1, 2\n", "bad.yaml");
   ASSERT_EQ(set.errors.size(), 1u);
   EXPECT_EQ(set.errors[0].where.file, "bad.yaml");
   EXPECT_GE(set.errors[0].where.line, 3);
@@ -40,39 +42,51 @@ TEST(Loader, UnknownKindSuggestsTheClosest) {
 }
 
 TEST(Loader, MissingField) {
-  const Diagnostic d = first_error("  - id: a\n    kind: depth_at_pixel\n    given:\n      triangle: [[0,0,6],[3,0,9],[0,3,9]]\n");
+  const Diagnostic d = first_error(
+      "  - id: a\n    kind: depth_at_pixel\n    given:\n      triangle: "
+      "[[0,0,6],[3,0,9],[0,3,9]]\n");
   EXPECT_EQ(d.field, "problems[0].given.pixel");
   EXPECT_NE(d.message.find("missing required field"), std::string::npos);
   EXPECT_EQ(d.format().rfind("set.yaml:5:", 0), 0u) << d.format();
 }
 
 TEST(Loader, MisspelledFieldIsNamedWithASuggestion) {
-  const Diagnostic d = first_error("  - id: a\n    kind: depth_at_pixel\n    given:\n      triangel: [[0,0,6],[3,0,9],[0,3,9]]\n      pixel: [1, 1]\n");
+  const Diagnostic d = first_error(
+      "  - id: a\n    kind: depth_at_pixel\n    given:\n      triangel: "
+      "[[0,0,6],[3,0,9],[0,3,9]]\n      pixel: [1, 1]\n");
   EXPECT_NE(d.message.find("triangel"), std::string::npos) << d.format();
-  const Diagnostic unknown = first_error("  - id: a\n    kind: vectors\n    given: {a: [1,0,0], b: [0,1,0], c: [0,0,1]}\n");
+  const Diagnostic unknown = first_error(
+      "  - id: a\n    kind: vectors\n    given: {a: [1,0,0], b: [0,1,0], c: [0,0,1]}\n");
   EXPECT_EQ(unknown.field, "problems[0].given.c");
   EXPECT_NE(unknown.message.find("unknown field"), std::string::npos);
-  const Diagnostic top = first_error("  - id: a\n    kind: vectors\n    giben: {a: [1,0,0], b: [0,1,0]}\n");
+  const Diagnostic top =
+      first_error("  - id: a\n    kind: vectors\n    giben: {a: [1,0,0], b: [0,1,0]}\n");
   EXPECT_NE(top.message.find("did you mean 'given'"), std::string::npos) << top.format();
 }
 
 TEST(Loader, WrongTypeAndLength) {
-  const Diagnostic type = first_error("  - id: a\n    kind: vectors\n    given: {a: \"hello\", b: [0,1,0]}\n");
+  const Diagnostic type =
+      first_error("  - id: a\n    kind: vectors\n    given: {a: \"hello\", b: [0,1,0]}\n");
   EXPECT_EQ(type.field, "problems[0].given.a");
   EXPECT_NE(type.message.find("expected a list of 3 numbers"), std::string::npos);
-  const Diagnostic length = first_error("  - id: a\n    kind: vectors\n    given: {a: [1, 2], b: [0,1,0]}\n");
+  const Diagnostic length =
+      first_error("  - id: a\n    kind: vectors\n    given: {a: [1, 2], b: [0,1,0]}\n");
   EXPECT_NE(length.message.find("got a list of 2"), std::string::npos);
-  const Diagnostic point = first_error("  - id: a\n    kind: backface\n    given: {points: [[0,0,0],[1,0],[0,1,0]], eye: [0,0,1]}\n");
+  const Diagnostic point = first_error(
+      "  - id: a\n    kind: backface\n    given: {points: [[0,0,0],[1,0],[0,1,0]], eye: "
+      "[0,0,1]}\n");
   EXPECT_EQ(point.field, "problems[0].given.points[1]");
-  const Diagnostic word = first_error("  - id: a\n    kind: vectors\n    given: {a: [1, abc, 0], b: [0,1,0]}\n");
+  const Diagnostic word =
+      first_error("  - id: a\n    kind: vectors\n    given: {a: [1, abc, 0], b: [0,1,0]}\n");
   EXPECT_EQ(word.field, "problems[0].given.a[1]");
   EXPECT_NE(word.message.find("unknown name"), std::string::npos) << word.format();
 }
 
 TEST(Loader, NonFiniteNumbers) {
   for (const char* bad : {".nan", ".inf", "-.inf", "nan", "inf"}) {
-    const Diagnostic d = first_error(std::string("  - id: a\n    kind: vectors\n    given: {a: [1, ") + bad +
-                                     ", 0], b: [0,1,0]}\n");
+    const Diagnostic d =
+        first_error(std::string("  - id: a\n    kind: vectors\n    given: {a: [1, ") + bad +
+                    ", 0], b: [0,1,0]}\n");
     EXPECT_EQ(d.field, "problems[0].given.a[1]") << bad;
     EXPECT_NE(d.message.find("not a finite number"), std::string::npos) << bad << ": " << d.message;
   }
@@ -80,7 +94,8 @@ TEST(Loader, NonFiniteNumbers) {
 
 TEST(Loader, HugeAndTinyNumbersStayExact) {
   const ProblemResult r = test::solve_yaml(
-      "problems:\n  - id: a\n    kind: vectors\n    given: {a: [1.0e308, 0, 0], b: [0, 4.9e-324, 0]}\n");
+      "problems:\n  - id: a\n    kind: vectors\n    given: {a: [1.0e308, 0, 0], b: [0, 4.9e-324, "
+      "0]}\n");
   ASSERT_FALSE(r.error) << test::error_text(r);
   EXPECT_EQ(test::exact_text(r, "angle"), "90");
 }
@@ -106,9 +121,12 @@ TEST(Loader, AnAnswerThatNeedsAnUngivenFieldIsNotAsked) {
   const ProblemSet set = load_problem_set_from_string(
       "problems:\n"
       "  - id: t\n    kind: transform\n    given: {steps: [{translate: [1, 2, 3]}]}\n"
-      "  - id: p\n    kind: transform\n    given: {steps: [{translate: [1, 2, 3]}], points: [[0, 0, 0]]}\n"
-      "  - id: l\n    kind: look_at\n    given: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, 0]}\n"
-      "  - id: x\n    kind: transform\n    ask: [matrix, points]\n    given: {steps: [{translate: [1, 2, 3]}]}\n",
+      "  - id: p\n    kind: transform\n    given: {steps: [{translate: [1, 2, 3]}], points: [[0, "
+      "0, 0]]}\n"
+      "  - id: l\n    kind: look_at\n    given: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, "
+      "0]}\n"
+      "  - id: x\n    kind: transform\n    ask: [matrix, points]\n    given: {steps: [{translate: "
+      "[1, 2, 3]}]}\n",
       "ask.yaml");
   ASSERT_EQ(set.problems.size(), 4u);
   EXPECT_EQ(set.problems[0].ask, (std::vector<std::string>{"matrix", "inverse"}));
@@ -123,7 +141,8 @@ TEST(Loader, ConventionsAndToleranceAreInheritedAndOverridden) {
   const ProblemSet set = load_problem_set_from_string(
       "conventions: {api: directx, angles: radians}\ntolerance: {rel: 0.01}\n"
       "problems:\n  - id: a\n    kind: vectors\n    given: {a: [1,0,0], b: [0,1,0]}\n"
-      "  - id: b\n    kind: vectors\n    conventions: {angles: degrees}\n    tolerance: {abs: 0.5}\n"
+      "  - id: b\n    kind: vectors\n    conventions: {angles: degrees}\n    tolerance: {abs: "
+      "0.5}\n"
       "    ask: [angle]\n    points: 4\n    given: {a: [1,0,0], b: [0,1,0]}\n",
       "c.yaml");
   ASSERT_TRUE(set.all_errors().empty());
@@ -141,7 +160,8 @@ TEST(Loader, ConventionsAndToleranceAreInheritedAndOverridden) {
 
 TEST(Loader, BadConventionsAreNamed) {
   const ProblemSet set = load_problem_set_from_string(
-      "conventions: {api: opengles}\nproblems:\n  - id: a\n    kind: vectors\n    given: {a: [1,0,0], b: [0,1,0]}\n",
+      "conventions: {api: opengles}\nproblems:\n  - id: a\n    kind: vectors\n    given: {a: "
+      "[1,0,0], b: [0,1,0]}\n",
       "conv.yaml");
   ASSERT_EQ(set.errors.size(), 1u);
   EXPECT_EQ(set.errors[0].field, "conventions.api");
@@ -160,10 +180,12 @@ TEST(Loader, NotAProblemSetAtAll) {
 }
 
 TEST(Loader, HostileExpressionsInGivenAreRefusedQuickly) {
-  const Diagnostic power = first_error("  - id: a\n    kind: vectors\n    given: {a: [\"2^2^2^2^2^2^2^2^2\", 0, 0], b: [0,1,0]}\n");
+  const Diagnostic power = first_error(
+      "  - id: a\n    kind: vectors\n    given: {a: [\"2^2^2^2^2^2^2^2^2\", 0, 0], b: [0,1,0]}\n");
   EXPECT_NE(power.message.find("exponent"), std::string::npos) << power.message;
   const std::string deep = std::string(100000, '(') + "1" + std::string(100000, ')');
-  const Diagnostic nested = first_error("  - id: a\n    kind: vectors\n    given: {a: [\"" + deep + "\", 0, 0], b: [0,1,0]}\n");
+  const Diagnostic nested = first_error("  - id: a\n    kind: vectors\n    given: {a: [\"" + deep +
+                                        "\", 0, 0], b: [0,1,0]}\n");
   EXPECT_EQ(nested.field, "problems[0].given.a[0]");
 }
 

@@ -1,14 +1,14 @@
 // Rasterization and the Z-buffer: the top-left rule on hand-made ties, watertight meshes
 // (every pixel exactly once), depth against the plane method, and the scan_convert and
 // zbuffer kinds.
-#include "solver/raster/zbuffer.hpp"
-#include "solver/util/diagnostic.hpp"
-#include "test_util.hpp"
-
 #include <fmt/format.h>
 
 #include <cmath>
 #include <random>
+
+#include "solver/raster/zbuffer.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -18,7 +18,6 @@ using test::exact_text;
 using test::one;
 using test::same;
 using test::solve_yaml;
-
 
 TriangleSetup tri(double ax, double ay, double bx, double by, double cx, double cy) {
   return setup_triangle({Vec2<double>(ax, ay), Vec2<double>(bx, by), Vec2<double>(cx, cy)});
@@ -70,11 +69,13 @@ TEST(Rasterizer, SnappingRoundsLikeLlround) {
   std::uniform_real_distribution<double> any(-kMaxWindowCoordinate, kMaxWindowCoordinate);
   std::uniform_int_distribution<std::int64_t> grid(-(std::int64_t{1} << 28), std::int64_t{1} << 28);
   for (int n = 0; n < 200000; ++n) {
-    const double v = n % 2 ? any(rng) : (static_cast<double>(grid(rng)) + 0.5) / 256.0;  // even n: exact halves
+    const double v =
+        n % 2 ? any(rng) : (static_cast<double>(grid(rng)) + 0.5) / 256.0;  // even n: exact halves
     ASSERT_EQ(to_fixed(v), std::llround(v * 256.0)) << fmt::format("{:.17g}", v);
   }
-  for (const double v : {0.0, -0.0, 1.0 / 512, -1.0 / 512, 3.0 / 512, -3.0 / 512, kMaxWindowCoordinate,
-                         -kMaxWindowCoordinate, std::nextafter(1.0 / 512, 0.0), std::nextafter(-1.0 / 512, 0.0)})
+  for (const double v :
+       {0.0, -0.0, 1.0 / 512, -1.0 / 512, 3.0 / 512, -3.0 / 512, kMaxWindowCoordinate,
+        -kMaxWindowCoordinate, std::nextafter(1.0 / 512, 0.0), std::nextafter(-1.0 / 512, 0.0)})
     EXPECT_EQ(to_fixed(v), std::llround(v * 256.0)) << fmt::format("{:.17g}", v);
 }
 
@@ -121,7 +122,8 @@ void check_watertight(unsigned seed, double step) {
   std::mt19937 rng(seed);
   const int n = 5;
   const double cell = 4, x0 = 2.5, y0 = 1.5;  // corners on pixel centres: ties everywhere
-  std::uniform_int_distribution<int> jitter(-static_cast<int>(0.75 / step), static_cast<int>(0.75 / step));
+  std::uniform_int_distribution<int> jitter(-static_cast<int>(0.75 / step),
+                                            static_cast<int>(0.75 / step));
   std::uniform_int_distribution<int> coin(0, 1);
   std::vector<std::vector<Vec2<double>>> v(n + 1, std::vector<Vec2<double>>(n + 1));
   for (int a = 0; a <= n; ++a)
@@ -135,8 +137,9 @@ void check_watertight(unsigned seed, double step) {
     for (int b = 0; b < n; ++b) {
       const Vec2<double> p00 = v[a][b], p10 = v[a + 1][b], p11 = v[a + 1][b + 1], p01 = v[a][b + 1];
       const std::array<std::array<Vec2<double>, 3>, 2> halves =
-          coin(rng) ? std::array<std::array<Vec2<double>, 3>, 2>{{{p00, p10, p11}, {p00, p11, p01}}}
-                    : std::array<std::array<Vec2<double>, 3>, 2>{{{p00, p10, p01}, {p10, p11, p01}}};
+          coin(rng)
+              ? std::array<std::array<Vec2<double>, 3>, 2>{{{p00, p10, p11}, {p00, p11, p01}}}
+              : std::array<std::array<Vec2<double>, 3>, 2>{{{p00, p10, p01}, {p10, p11, p01}}};
       for (const auto& h : halves)
         for (const Fragment& f : rasterize(setup_triangle(h))) ++count[{f.i, f.j}];
     }
@@ -148,7 +151,8 @@ void check_watertight(unsigned seed, double step) {
       const bool inside = x0 <= cx && cx < x1 && y0 < cy && cy <= y1;
       expected += inside;
       const auto it = count.find({i, j});
-      ASSERT_EQ(it == count.end() ? 0 : it->second, inside ? 1 : 0) << "pixel " << i << ", " << j << " seed " << seed;
+      ASSERT_EQ(it == count.end() ? 0 : it->second, inside ? 1 : 0)
+          << "pixel " << i << ", " << j << " seed " << seed;
     }
   EXPECT_EQ(static_cast<int>(count.size()), expected);
 }
@@ -164,8 +168,9 @@ TEST(Rasterizer, SharedEdgesCoverEveryPixelExactlyOnceWithTiesAtCentres) {
 TEST(Rasterizer, FanAroundAVertexOnAPixelCentreCoversItOnce) {
   // Eight triangles around (3½, 3½): the centre pixel belongs to exactly one of them.
   const Vec2<double> c(3.5, 3.5);
-  const std::array<Vec2<double>, 8> ring{Vec2<double>(6.5, 3.5), Vec2<double>(6.5, 6.5), Vec2<double>(3.5, 6.5),
-                                         Vec2<double>(0.5, 6.5), Vec2<double>(0.5, 3.5), Vec2<double>(0.5, 0.5),
+  const std::array<Vec2<double>, 8> ring{Vec2<double>(6.5, 3.5), Vec2<double>(6.5, 6.5),
+                                         Vec2<double>(3.5, 6.5), Vec2<double>(0.5, 6.5),
+                                         Vec2<double>(0.5, 3.5), Vec2<double>(0.5, 0.5),
                                          Vec2<double>(3.5, 0.5), Vec2<double>(6.5, 0.5)};
   int hits = 0;
   for (int k = 0; k < 8; ++k) hits += covers(setup_triangle({c, ring[k], ring[(k + 1) % 8]}), 3, 3);
@@ -199,18 +204,22 @@ TEST(Rasterizer, DepthEqualsThePlaneMethod) {
 TEST(ZBufferStage, SmallerZWinsAndTiesKeepTheFirst) {
   DepthBuffer<double> depth(2, 1, std::nullopt);
   FrameBuffer frame(2, 1, kBackground);
-  const TriangleSetup t = tri(0, 0, 2, 0, 0, 2);  // (1½, ½) lies on its right edge: covers (0, 0) only
-  const TriangleSetup full = setup_triangle({Vec2<double>(0, 0), Vec2<double>(4, 0), Vec2<double>(0, 4)});
+  const TriangleSetup t =
+      tri(0, 0, 2, 0, 0, 2);  // (1½, ½) lies on its right edge: covers (0, 0) only
+  const TriangleSetup full =
+      setup_triangle({Vec2<double>(0, 0), Vec2<double>(4, 0), Vec2<double>(0, 4)});
   draw_triangle<double>(full, {5, 5, 5}, "1", depth, frame);
   EXPECT_EQ(frame_rows(frame), (std::vector<std::string>{"11"}));
-  EXPECT_EQ(draw_triangle<double>(full, {5, 5, 5}, "2", depth, frame).written, 0) << "equal z keeps the first";
+  EXPECT_EQ(draw_triangle<double>(full, {5, 5, 5}, "2", depth, frame).written, 0)
+      << "equal z keeps the first";
   EXPECT_EQ(draw_triangle<double>(t, {1, 1, 1}, "3", depth, frame).written, 1);
   EXPECT_EQ(frame_rows(frame), (std::vector<std::string>{"31"}));
   EXPECT_EQ(*depth.at(0, 0), 1);
 }
 
 TEST(ScanConvertKind, ListsPixelsRowByRow) {
-  const ProblemResult r = solve_yaml(one("scan_convert", "{triangle: [[0.5, 0.5], [4.5, 0.5], [0.5, 4.5]]}"));
+  const ProblemResult r =
+      solve_yaml(one("scan_convert", "{triangle: [[0.5, 0.5], [4.5, 0.5], [0.5, 4.5]]}"));
   ASSERT_FALSE(r.error) << error_text(r);
   EXPECT_EQ(exact_text(r, "pixels"), "0, 1, 1, 1, 2, 1, 0, 2, 1, 2, 0, 3");
   EXPECT_EQ(r.answers.find("pixels")->rows, 6);
@@ -218,14 +227,16 @@ TEST(ScanConvertKind, ListsPixelsRowByRow) {
 }
 
 TEST(ScanConvertKind, DegenerateTriangleCoversNoPixelsAndSaysSo) {
-  const ProblemResult r = solve_yaml(one("scan_convert", "{triangle: [[0, 0, 1], [2, 2, 1], [4, 4, 1]]}"));
+  const ProblemResult r =
+      solve_yaml(one("scan_convert", "{triangle: [[0, 0, 1], [2, 2, 1], [4, 4, 1]]}"));
   ASSERT_FALSE(r.error) << error_text(r);
   EXPECT_EQ(r.answers.find("pixels")->rows, 0);
   EXPECT_TRUE(r.derivation.has_warnings());
 }
 
 TEST(ScanConvertKind, HugeTriangleIsRefused) {
-  const ProblemResult r = solve_yaml(one("scan_convert", "{triangle: [[0, 0], [1000, 0], [0, 1000]]}"));
+  const ProblemResult r =
+      solve_yaml(one("scan_convert", "{triangle: [[0, 0], [1000, 0], [0, 1000]]}"));
   ASSERT_TRUE(r.error);
   EXPECT_EQ(r.error->field, "problems[0].given.triangle");
 }
@@ -239,7 +250,8 @@ TEST(ZBufferKind, ThreeOverlappingPolygonsLikeSeed001) {
   const ProblemResult r = solve_yaml(one("zbuffer", kThreePolygons));
   ASSERT_FALSE(r.error) << error_text(r);
   EXPECT_EQ(r.answers.find("frame")->words, (std::vector<std::string>{"1133", "1222", "1222"}));
-  EXPECT_EQ(r.answers.find("steps")->words, (std::vector<std::string>{"111./111./111.", "111./1222/1222", "1133/1222/1222"}));
+  EXPECT_EQ(r.answers.find("steps")->words,
+            (std::vector<std::string>{"111./111./111.", "111./1222/1222", "1133/1222/1222"}));
   EXPECT_EQ(exact_text(r, "depth"), "5, 5, 4, 4, 5, 3, 3, 3, 5, 3, 3, 3");
   int polygons = 0;
   for (const Step& s : r.derivation.steps()) polygons += s.title.rfind("Polygon", 0) == 0;
@@ -247,24 +259,30 @@ TEST(ZBufferKind, ThreeOverlappingPolygonsLikeSeed001) {
 }
 
 TEST(ZBufferKind, SlopedTriangleTakesThePlaneDepthAndBackgroundIsInfinite) {
-  const ProblemResult r = solve_yaml(one("zbuffer", "{size: [3, 3], polygons: [{label: A, points: [[0, 0, 6], [3, 0, 9], [0, 3, 9]]}]}"));
+  const ProblemResult r = solve_yaml(
+      one("zbuffer",
+          "{size: [3, 3], polygons: [{label: A, points: [[0, 0, 6], [3, 0, 9], [0, 3, 9]]}]}"));
   ASSERT_FALSE(r.error) << error_text(r);
   EXPECT_EQ(r.answers.find("frame")->words, (std::vector<std::string>{"...", "A..", "AA."}));
   const Value& d = *r.answers.find("depth");
-  EXPECT_EQ(d.numbers[6], 7);   // pixel (0, 0): z = x + y + 6 at (½, ½)
-  EXPECT_EQ(d.numbers[7], 8);   // pixel (1, 0)
+  EXPECT_EQ(d.numbers[6], 7);  // pixel (0, 0): z = x + y + 6 at (½, ½)
+  EXPECT_EQ(d.numbers[7], 8);  // pixel (1, 0)
   EXPECT_EQ(d.numbers[0], 1e30);
 }
 
 TEST(ZBufferKind, BadInput) {
-  const ProblemResult big = solve_yaml(one("zbuffer", "{size: [300, 10], polygons: [{label: \"1\", points: [[0,0,0],[1,0,0],[0,1,0]]}]}"));
+  const ProblemResult big = solve_yaml(
+      one("zbuffer",
+          "{size: [300, 10], polygons: [{label: \"1\", points: [[0,0,0],[1,0,0],[0,1,0]]}]}"));
   ASSERT_TRUE(big.error);
   EXPECT_EQ(big.error->field, "problems[0].given.size");
   EXPECT_NE(big.error->message.find("256"), std::string::npos);
-  const ProblemResult dot = solve_yaml(one("zbuffer", "{size: [3, 3], polygons: [{label: \".\", points: [[0,0,0],[1,0,0],[0,1,0]]}]}"));
+  const ProblemResult dot = solve_yaml(one(
+      "zbuffer", "{size: [3, 3], polygons: [{label: \".\", points: [[0,0,0],[1,0,0],[0,1,0]]}]}"));
   ASSERT_TRUE(dot.error);
   EXPECT_EQ(dot.error->field, "problems[0].given.polygons[0].label");
-  const ProblemResult flat = solve_yaml(one("zbuffer", "{size: [3, 3], polygons: [{label: \"1\", points: [[0,0,0],[1,1,0],[2,2,0]]}]}"));
+  const ProblemResult flat = solve_yaml(one(
+      "zbuffer", "{size: [3, 3], polygons: [{label: \"1\", points: [[0,0,0],[1,1,0],[2,2,0]]}]}"));
   ASSERT_FALSE(flat.error) << error_text(flat);
   EXPECT_TRUE(flat.derivation.has_warnings());
   EXPECT_EQ(flat.answers.find("frame")->words, (std::vector<std::string>{"...", "...", "..."}));

@@ -1,17 +1,10 @@
 // The scene pipeline, the z-buffer and scan-line renderers, the render kind and
 // `frustum render`: cross-checks against the plane method, coverage properties over random
 // meshes, and the paper-plane seed.
-#include "test_util.hpp"
-
-#include "solver/problem/registry.hpp"
 #include "solver/kinds/render.hpp"
-#include "solver/problem/solve_set.hpp"
-#include "solver/raster/certified_trace.hpp"
-#include "solver/raster/fill.hpp"
-#include "solver/raster/scanline.hpp"
-#include "solver/visibility/mesh.hpp"
 
 #include <fmt/format.h>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
@@ -21,7 +14,14 @@
 #include <map>
 #include <random>
 #include <set>
-#include <sys/wait.h>
+
+#include "solver/problem/registry.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/raster/certified_trace.hpp"
+#include "solver/raster/fill.hpp"
+#include "solver/raster/scanline.hpp"
+#include "solver/visibility/mesh.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -34,9 +34,11 @@ double grid_value(std::mt19937& rng, double lo, double hi) {
 
 WindowTriangle random_triangle(std::mt19937& rng, double size, int width, int height) {
   std::uniform_real_distribution<double> u(0, 1);
-  const double cx = grid_value(rng, -size / 2, width + size / 2), cy = grid_value(rng, -size / 2, height + size / 2);
+  const double cx = grid_value(rng, -size / 2, width + size / 2),
+               cy = grid_value(rng, -size / 2, height + size / 2);
   WindowTriangle t;
-  for (Vec3d& v : t.v) v = Vec3d(cx + grid_value(rng, -size, size), cy + grid_value(rng, -size, size), u(rng));
+  for (Vec3d& v : t.v)
+    v = Vec3d(cx + grid_value(rng, -size, size), cy + grid_value(rng, -size, size), u(rng));
   t.color = {static_cast<std::uint8_t>(rng() % 256), static_cast<std::uint8_t>(rng() % 256), 7};
   return t;
 }
@@ -59,9 +61,10 @@ Frame reference_frame(const std::vector<WindowTriangle>& tris, int w, int h, Rgb
   return f;
 }
 
-std::string scene_yaml(const std::string& api, const std::string& objects, const std::string& pixels,
-                       const std::string& extra = "") {
-  return "conventions: {api: " + api + "}\nproblems:\n  - id: p\n    kind: render\n    given:\n      scene:\n"
+std::string scene_yaml(const std::string& api, const std::string& objects,
+                       const std::string& pixels, const std::string& extra = "") {
+  return "conventions: {api: " + api +
+         "}\nproblems:\n  - id: p\n    kind: render\n    given:\n      scene:\n"
          "        viewport: {width: 64, height: 48}\n"
          "        camera: {eye: [0, 0, 10], center: [0, 0, 0], up: [0, 1, 0]}\n"
          "        perspective: {fovy: 60, aspect: 4/3, near: 1, far: 100}\n" +
@@ -82,9 +85,10 @@ TEST(Pipeline, DepthAtPixelCentreEqualsThePlaneMethod) {
     const std::vector<Fragment> frags = rasterize(t.setup);
     for (std::size_t f = 0; f < frags.size(); f += 3) {
       const int i = frags[f].i, j = frags[f].j;
-      const std::string given = fmt::format("{{triangle: [[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]], pixel: [{}, {}]}}",
-                                            w.v[0](0), w.v[0](1), w.v[0](2), w.v[1](0), w.v[1](1), w.v[1](2), w.v[2](0),
-                                            w.v[2](1), w.v[2](2), i + 0.5, j + 0.5);
+      const std::string given =
+          fmt::format("{{triangle: [[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]], pixel: [{}, {}]}}",
+                      w.v[0](0), w.v[0](1), w.v[0](2), w.v[1](0), w.v[1](1), w.v[1](2), w.v[2](0),
+                      w.v[2](1), w.v[2](2), i + 0.5, j + 0.5);
       const ProblemResult r = test::solve_yaml(test::one("depth_at_pixel", given), false);
       ASSERT_FALSE(r.error) << test::error_text(r);
       const double plane_z = r.answers.find("z")->numbers[0];
@@ -103,7 +107,8 @@ TEST(Pipeline, SpansEqualPerPixelCoverage) {
     for (int j = t.j_min - 1; j <= t.j_max + 1; ++j) {
       const Span s = span_on_row(t, j);
       for (int i = t.i_min - 1; i <= t.i_max + 1; ++i)
-        ASSERT_EQ(covers(t, i, j), i >= s.i0 && i <= s.i1) << "triangle " << n << " pixel " << i << "," << j;
+        ASSERT_EQ(covers(t, i, j), i >= s.i0 && i <= s.i1)
+            << "triangle " << n << " pixel " << i << "," << j;
     }
   }
 }
@@ -146,7 +151,8 @@ TEST(Pipeline, SharedEdgesCoverEachPixelExactlyOnce) {
       for (int i = 0; i < size; ++i) {
         const double xc = i + 0.5, yc = j + 0.5;
         const bool inside = xc > x0 && xc < x0 + cells * cell && yc > y0 && yc < y0 + cells * cell;
-        ASSERT_EQ(count[static_cast<std::size_t>(j * size + i)], inside ? 1 : 0) << "mesh " << mesh << " pixel " << i << "," << j;
+        ASSERT_EQ(count[static_cast<std::size_t>(j * size + i)], inside ? 1 : 0)
+            << "mesh " << mesh << " pixel " << i << "," << j;
       }
   }
 }
@@ -259,11 +265,13 @@ TEST(Scene, HierarchyComposesParentThenChild) {
   ASSERT_EQ(flat.triangles.size(), 3u);
   // M = T(10,0,0)·R_z(90°)·T(0,0,5k)·T(1,0,0): the child's origin lands at (10, 1, 5k).
   for (int k = 0; k < 3; ++k) {
-    EXPECT_TRUE(flat.triangles[k].v[0].isApprox(Vec3d(10, 1, 5.0 * k))) << flat.triangles[k].v[0].transpose();
+    EXPECT_TRUE(flat.triangles[k].v[0].isApprox(Vec3d(10, 1, 5.0 * k)))
+        << flat.triangles[k].v[0].transpose();
     EXPECT_TRUE(flat.triangles[k].v[1].isApprox(Vec3d(10, 2, 5.0 * k)));
     EXPECT_EQ(flat.triangles[k].fill, (Rgb{9, 9, 9}));
   }
-  EXPECT_EQ(flat.objects[static_cast<std::size_t>(flat.triangles[2].object)], "objects[0].children[0][2]");
+  EXPECT_EQ(flat.objects[static_cast<std::size_t>(flat.triangles[2].object)],
+            "objects[0].children[0][2]");
 }
 
 TEST(Scene, ProcessingLightsFromAboveShadeBoxTopsFully) {
@@ -273,7 +281,7 @@ TEST(Scene, ProcessingLightsFromAboveShadeBoxTopsFully) {
   top.fill = {0, 50, 0};
   DirectionalLight light;
   light.direction = Vec3d(0, 1, 0);
-  EXPECT_EQ(shade(top, true, light), (Rgb{0, 50, 0}));   // (128 + 128)/255 ≈ 1.004
+  EXPECT_EQ(shade(top, true, light), (Rgb{0, 50, 0}));  // (128 + 128)/255 ≈ 1.004
   WorldTriangle side = top;
   side.v = {Vec3d(1, -5, 1), Vec3d(1, 5, 1), Vec3d(1, 5, -1)};
   EXPECT_EQ(shade(side, true, light), (Rgb{0, 25, 0}));  // ambient only: 50·128/255
@@ -287,7 +295,8 @@ TEST(RenderKind, ProcessingWindowYPointsDown) {
   // A triangle below the centre in Processing's y-down world shows in the lower half.
   const std::string objects =
       "          - {triangle: [[-2, 1, 0], [2, 1, 0], [0, 3, 0]], fill: '#ff0000'}\n";
-  const ProblemResult r = test::solve_yaml(scene_yaml("processing", objects, "[[32, 34], [32, 13]]"));
+  const ProblemResult r =
+      test::solve_yaml(scene_yaml("processing", objects, "[[32, 34], [32, 13]]"));
   ASSERT_FALSE(r.error) << test::error_text(r);
   EXPECT_EQ(test::exact_text(r, "color"), "255, 0, 0, 0, 0, 0");
   const Value* obj = r.answers.find("object");
@@ -300,9 +309,12 @@ TEST(RenderKind, ProcessingWindowYPointsDown) {
 
 TEST(RenderKind, NearerTriangleWinsWhateverTheOrder) {
   const std::string objects =
-      "          - {name: far, triangle: [[-3, -3, -5], [3, -3, -5], [0, 3, -5]], fill: [0, 0, 255]}\n"
-      "          - {name: near, triangle: [[-3, -3, 0], [3, -3, 0], [0, 3, 0]], fill: [0, 255, 0]}\n"
-      "          - {name: hidden, triangle: [[-3, -3, -2], [3, -3, -2], [0, 3, -2]], fill: [255, 0, 0]}\n";
+      "          - {name: far, triangle: [[-3, -3, -5], [3, -3, -5], [0, 3, -5]], fill: [0, 0, "
+      "255]}\n"
+      "          - {name: near, triangle: [[-3, -3, 0], [3, -3, 0], [0, 3, 0]], fill: [0, 255, "
+      "0]}\n"
+      "          - {name: hidden, triangle: [[-3, -3, -2], [3, -3, -2], [0, 3, -2]], fill: [255, "
+      "0, 0]}\n";
   const ProblemResult r = test::solve_yaml(scene_yaml("opengl", objects, "[[32, 24]]"));
   ASSERT_FALSE(r.error) << test::error_text(r);
   EXPECT_EQ(test::exact_text(r, "color"), "0, 255, 0");
@@ -323,14 +335,23 @@ TEST(RenderKind, BadInputIsLocated) {
     std::string yaml, where;
   };
   const std::vector<Case> cases = {
-      {scene_yaml("opengl", "          - {triangle: [[-2, 1, 0], [2, 1, 0], [0, 3, 0]], fill: '#12345'}\n", "[[1, 1]]"),
+      {scene_yaml("opengl",
+                  "          - {triangle: [[-2, 1, 0], [2, 1, 0], [0, 3, 0]], fill: '#12345'}\n",
+                  "[[1, 1]]"),
        "objects[0].fill: expected a colour"},
-      {scene_yaml("opengl", good, "[[64, 1]]"), "pixels[0][0]: expected a pixel index from 0 to 63"},
-      {scene_yaml("opengl", "          - {box: [1, 2], fill: [0, 0, 0]}\n", "[[1, 1]]"), "objects[0].box"},
+      {scene_yaml("opengl", good, "[[64, 1]]"),
+       "pixels[0][0]: expected a pixel index from 0 to 63"},
+      {scene_yaml("opengl", "          - {box: [1, 2], fill: [0, 0, 0]}\n", "[[1, 1]]"),
+       "objects[0].box"},
       {scene_yaml("opengl", "          - {solid: cub}\n", "[[1, 1]]"), "objects[0].solid"},
-      {scene_yaml("opengl", "          - {triangle: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], fill: [0, 300, 0]}\n", "[[1, 1]]"),
+      {scene_yaml("opengl",
+                  "          - {triangle: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], fill: [0, 300, 0]}\n",
+                  "[[1, 1]]"),
        "objects[0].fill[1]: expected an integer from 0 to 255"},
-      {scene_yaml("opengl", "          - {mesh: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces: [[0, 1, 3]]}}\n", "[[1, 1]]"),
+      {scene_yaml("opengl",
+                  "          - {mesh: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces: [[0, 1, "
+                  "3]]}}\n",
+                  "[[1, 1]]"),
        "faces[0][2]: expected a vertex index from 0 to 2"},
       {scene_yaml("opengl", good, "[[1, 1]]", "        light: {direction: [0, 0, 0]}\n"),
        "light.direction: the zero vector is not a direction"},
@@ -383,7 +404,8 @@ std::string float_pipeline_winner(const Scene& s, int i, int window_row) {
   const std::vector<WindowTriangle> tris = geometry(s, flat);
   const PixelTrace t = trace_pixel(tris, i, raster_row(window_row, s.height, s.api), s.background);
   if (t.winner < 0) return "background";
-  const WorldTriangle& w = flat.triangles[static_cast<std::size_t>(tris[static_cast<std::size_t>(t.winner)].source)];
+  const WorldTriangle& w =
+      flat.triangles[static_cast<std::size_t>(tris[static_cast<std::size_t>(t.winner)].source)];
   return flat.objects[static_cast<std::size_t>(w.object)];
 }
 
@@ -404,18 +426,22 @@ TEST(RenderKind, HardCasesAreDecidedExactlyWhereFloatsCannot) {
     floats[r.id] = float_pipeline_winner(g.spec.scene, g.pixels[0][0], g.pixels[0][1]);
     bool said = false;
     for (const Step& st : r.derivation.steps())
-      said = said || st.note.find("xact arithmetic on the given numbers decided") != std::string::npos ||
+      said = said ||
+             st.note.find("xact arithmetic on the given numbers decided") != std::string::npos ||
              st.note.find("decided by exact arithmetic") != std::string::npos;
     EXPECT_TRUE(said) << r.id;
   }
-  const std::map<std::string, std::string> want = {
-      {"render-vertex-on-half-grid", "background"}, {"render-edge-through-centre", "t"},
-      {"render-face-edge-on", "background"},        {"render-face-1e-30-front", "s1"},
-      {"render-equal-depths", "p1"},                {"render-second-1e-30-nearer", "p2"}};
+  const std::map<std::string, std::string> want = {{"render-vertex-on-half-grid", "background"},
+                                                   {"render-edge-through-centre", "t"},
+                                                   {"render-face-edge-on", "background"},
+                                                   {"render-face-1e-30-front", "s1"},
+                                                   {"render-equal-depths", "p1"},
+                                                   {"render-second-1e-30-nearer", "p2"}};
   EXPECT_EQ(exact, want);
-  const std::pair<const char*, const char*> pairs[] = {{"render-vertex-on-half-grid", "render-edge-through-centre"},
-                                                       {"render-face-edge-on", "render-face-1e-30-front"},
-                                                       {"render-equal-depths", "render-second-1e-30-nearer"}};
+  const std::pair<const char*, const char*> pairs[] = {
+      {"render-vertex-on-half-grid", "render-edge-through-centre"},
+      {"render-face-edge-on", "render-face-1e-30-front"},
+      {"render-equal-depths", "render-second-1e-30-nearer"}};
   int wrong = 0;
   for (const auto& [a, b] : pairs) {
     EXPECT_EQ(floats[a], floats[b]) << a;  // the same doubles
@@ -437,12 +463,13 @@ TEST(RenderKind, ExactDecisionsAgreeWithTheFloatPipelineOnOrdinaryScenes) {
     for (int k = 0; k < 5; ++k) {
       objects += fmt::format("          - {{name: o{}, triangle: [", k);
       for (int v = 0; v < 3; ++v)
-        objects += fmt::format("{}[{}, {}, {}]", v ? ", " : "", coord(rng) / 1000.0, coord(rng) / 1000.0,
-                               depth(rng) / 1000.0);
-      objects += fmt::format("], fill: [{}, {}, {}]{}}}\n", channel(rng), channel(rng), channel(rng),
-                             k % 2 ? ", cull: back" : "");
+        objects += fmt::format("{}[{}, {}, {}]", v ? ", " : "", coord(rng) / 1000.0,
+                               coord(rng) / 1000.0, depth(rng) / 1000.0);
+      objects += fmt::format("], fill: [{}, {}, {}]{}}}\n", channel(rng), channel(rng),
+                             channel(rng), k % 2 ? ", cull: back" : "");
     }
-    const ProblemSet set = load_problem_set_from_string(scene_yaml(apis[n % 3], objects, "[[0, 0]]"), "s.yaml");
+    const ProblemSet set =
+        load_problem_set_from_string(scene_yaml(apis[n % 3], objects, "[[0, 0]]"), "s.yaml");
     ASSERT_TRUE(set.all_errors().empty()) << set.all_errors()[0].format();
     const RenderGiven& g = std::any_cast<const RenderGiven&>(set.problems[0].given);
     const Scene& s = g.spec.scene;
@@ -458,7 +485,8 @@ TEST(RenderKind, ExactDecisionsAgreeWithTheFloatPipelineOnOrdinaryScenes) {
         const PixelTrace e = certified_trace(cs, s, flat, i, j, exact_depths);
         ASSERT_EQ(f.winner < 0, e.winner < 0) << n << " " << i << " " << j;
         if (f.winner >= 0) {
-          EXPECT_EQ(tris[static_cast<std::size_t>(f.winner)].source, cs.pieces[static_cast<std::size_t>(e.winner)].source);
+          EXPECT_EQ(tris[static_cast<std::size_t>(f.winner)].source,
+                    cs.pieces[static_cast<std::size_t>(e.winner)].source);
         }
         EXPECT_NEAR(f.depth, e.depth, 1e-6);
         EXPECT_EQ(f.color, e.color);
@@ -474,7 +502,8 @@ TEST(RenderKind, ExactDecisionsAgreeWithTheFloatPipelineOnOrdinaryScenes) {
 // ---------------------------------------------------------------- frustum render
 
 int run_cli(const std::string& args) {
-  const int status = std::system((std::string(FRUSTUM_BINARY) + " " + args + " > /dev/null 2>&1").c_str());
+  const int status =
+      std::system((std::string(FRUSTUM_BINARY) + " " + args + " > /dev/null 2>&1").c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -486,7 +515,9 @@ std::string file_bytes(const std::string& path) {
 TEST(RenderCli, WritesPngAndScanlineGivesTheSameImage) {
   const std::string seed = test::source_path("problems/seeds/paperplane.yaml");
   const std::string dir = ::testing::TempDir();
-  ASSERT_EQ(run_cli("render " + seed + " -o " + dir + "z.png --depth " + dir + "d.png --size 160x120"), 0);
+  ASSERT_EQ(
+      run_cli("render " + seed + " -o " + dir + "z.png --depth " + dir + "d.png --size 160x120"),
+      0);
   ASSERT_EQ(run_cli("render " + seed + " -o " + dir + "s.png --size 160x120 --method scanline"), 0);
   const std::string z = file_bytes(dir + "z.png");
   ASSERT_GT(z.size(), 100u);

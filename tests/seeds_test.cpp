@@ -70,10 +70,10 @@ TEST(Seed003, BackfaceDiscriminantIsMinusTwoSoBack) {
   EXPECT_EQ(p.answers.find("facing")->word, "back");
 }
 
-const char* const kSeedSets[] = {
-    "000_projection_and_hidden_surfaces.yaml", "001_zbuffer_plane_method.yaml",
-    "002_transforms_and_view_volume.yaml", "003_polygons_backface.yaml",
-    "004_placing_and_projecting.yaml"};
+const char* const kSeedSets[] = {"000_projection_and_hidden_surfaces.yaml",
+                                 "001_zbuffer_plane_method.yaml",
+                                 "002_transforms_and_view_volume.yaml",
+                                 "003_polygons_backface.yaml", "004_placing_and_projecting.yaml"};
 
 TEST(Seed000, ProjectionPlaneIsMinus100Root3AndPPrime) {
   const SetResult r = solve_seed("000_projection_and_hidden_surfaces.yaml");
@@ -88,7 +88,8 @@ TEST(Seed000, NearPlaneMapsToMinusOneDespiteTheProse) {
   const ProblemResult& p = problem(r, "seed000-near-far-map");
   EXPECT_EQ(exact_text(p, "ndc"), "0, 0, -1");
   bool noted = false;
-  for (const Step& s : p.derivation.steps()) noted = noted || s.note.find("contradicts this matrix") != std::string::npos;
+  for (const Step& s : p.derivation.steps())
+    noted = noted || s.note.find("contradicts this matrix") != std::string::npos;
   EXPECT_TRUE(noted) << "the derivation notes, in neutral words, the prose that says otherwise";
 }
 
@@ -96,7 +97,8 @@ TEST(Seed002, NormalizedViewVolumeMapsTheBackCornerToOne) {
   const SetResult r = solve_seed("002_transforms_and_view_volume.yaml");
   const ProblemResult& p = problem(r, "seed002-view-volume");
   EXPECT_EQ(exact_text(p, "point"), "1/2, 1/2, 1");
-  EXPECT_EQ(exact_text(p, "perspective_matrix"), "1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 100/99, -1/99, 0, 0, 1, 0");
+  EXPECT_EQ(exact_text(p, "perspective_matrix"),
+            "1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 100/99, -1/99, 0, 0, 1, 0");
 }
 
 TEST(Seed004, RotationAboutOneOneOneCyclesTheAxes) {
@@ -105,8 +107,10 @@ TEST(Seed004, RotationAboutOneOneOneCyclesTheAxes) {
   EXPECT_EQ(exact_text(p, "points"), "0, 1, 0");
   bool noted = false;
   for (const ProblemResult& q : r.problems)
-    for (const Step& s : q.derivation.steps()) noted = noted || s.note.find("−b = t = n·(w/h)·tan(θ/2)") != std::string::npos;
-  EXPECT_TRUE(noted) << "the perspective derivation notes, in neutral words, where the aspect ratio belongs";
+    for (const Step& s : q.derivation.steps())
+      noted = noted || s.note.find("−b = t = n·(w/h)·tan(θ/2)") != std::string::npos;
+  EXPECT_TRUE(noted)
+      << "the perspective derivation notes, in neutral words, where the aspect ratio belongs";
 }
 
 TEST(Seeds, PublishedAnswersScoreFullMarks) {

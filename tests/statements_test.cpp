@@ -16,10 +16,10 @@
 #include "grader/statement_choice.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/problem/registry.hpp"
-#include "solver/problem/variants.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/input/yaml_emit.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/problem/variants.hpp"
 #include "test_util.hpp"
 
 namespace frustum {
@@ -339,7 +339,8 @@ TEST(Statements, GradescopeScoresPerStatement) {
     if (t["name"].get<std::string>().find(kId) != std::string::npos) {
       found = true;
       EXPECT_NEAR(t["score"].get<double>(), 2.0 / 3.0, 1e-9);
-      EXPECT_NE(t["output"].get<std::string>().find("記述 2 は誤り (×). 正しい (○) ではない (ステップ 2 参照)."),
+      EXPECT_NE(t["output"].get<std::string>().find(
+                    "記述 2 は誤り (×). 正しい (○) ではない (ステップ 2 参照)."),
                 std::string::npos)
           << t["output"];
     }

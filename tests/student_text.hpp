@@ -146,7 +146,8 @@ inline std::vector<StudentText> student_texts() {
       if (spec.info->solve_numeric)
         for (const Precision p : {Precision::Float, Precision::Double, Precision::LongDouble}) {
           const ProblemResult n = solve_problem(spec, set.file, true, p);
-          if (!n.error) add_steps(out, spec.id + " (" + std::string(to_string(p)) + ")", n.derivation.steps());
+          if (!n.error)
+            add_steps(out, spec.id + " (" + std::string(to_string(p)) + ")", n.derivation.steps());
         }
       for (const auto& [name, v] : r.answers.items())
         for (const std::string& w : v.shown().words)
@@ -175,9 +176,11 @@ inline std::vector<StudentText> student_texts() {
     if (e.path().extension() != ".yaml") continue;
     const ProblemSet set = load_problem_set(e.path().string());
     for (const ProblemSpec& spec : set.problems)
-      for (const Precision p : {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
+      for (const Precision p :
+           {Precision::Float, Precision::Double, Precision::LongDouble, Precision::Exact}) {
         const ProblemResult n = solve_problem(spec, set.file, true, p);
-        if (!n.error) add_steps(out, spec.id + " (" + std::string(to_string(p)) + ")", n.derivation.steps());
+        if (!n.error)
+          add_steps(out, spec.id + " (" + std::string(to_string(p)) + ")", n.derivation.steps());
       }
   }
   // The reviewed verdict corpus: every case graded, its feedback kept.

@@ -1,12 +1,6 @@
 // Helpers shared by the tests.
 #pragma once
 
-#include "solver/derivation/problem_result.hpp"
-#include "solver/problem/problem_set.hpp"
-#include "solver/problem/solve_set.hpp"
-#include "solver/core/exact.hpp"
-#include "solver/util/exact_format.hpp"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,6 +9,12 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "solver/core/exact.hpp"
+#include "solver/derivation/problem_result.hpp"
+#include "solver/problem/problem_set.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/util/exact_format.hpp"
 
 namespace frustum::test {
 
@@ -43,10 +43,11 @@ inline std::string exact_text(const ProblemResult& r, const std::string& answer)
 
 // A one-problem set: `extra` is inserted among the problem's fields (indented four spaces,
 // newline-terminated), `conventions` becomes the set's conventions mapping when not empty.
-inline std::string one(const std::string& kind, const std::string& given, const std::string& conventions = "",
-                       const std::string& extra = "") {
+inline std::string one(const std::string& kind, const std::string& given,
+                       const std::string& conventions = "", const std::string& extra = "") {
   const std::string head = conventions.empty() ? "" : "conventions: " + conventions + "\n";
-  return head + "problems:\n  - id: p\n    kind: " + kind + "\n" + extra + "    given: " + given + "\n";
+  return head + "problems:\n  - id: p\n    kind: " + kind + "\n" + extra + "    given: " + given +
+         "\n";
 }
 
 // Exact equality after canonical simplification.
@@ -73,13 +74,15 @@ inline void write_file(const std::filesystem::path& p, const std::string& text) 
 inline std::map<std::string, std::string> published_tree(const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
   std::map<std::string, std::string> files;
-  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::follow_directory_symlink);
+  for (auto it =
+           fs::recursive_directory_iterator(dir, fs::directory_options::follow_directory_symlink);
        it != fs::recursive_directory_iterator(); ++it) {
     if (it->path().filename() == ".frustum") {
       it.disable_recursion_pending();
       continue;
     }
-    if (it->is_regular_file()) files[fs::relative(it->path(), dir).string()] = read_file(it->path());
+    if (it->is_regular_file())
+      files[fs::relative(it->path(), dir).string()] = read_file(it->path());
   }
   return files;
 }

@@ -87,22 +87,26 @@ TEST(Typeset, KatexRendersEveryFormulaInStrictMode) {
 TEST(Typeset, HtmlPageTypesetsInChromiumAndScreenshots) {
   constexpr const char* kChromium = "/usr/bin/chromium";
   ASSERT_TRUE(std::filesystem::exists(kChromium)) << "tools/setup.sh installs chromium";
-  const SetResult set =
-      solve_set(load_problem_set(test::source_path("problems/seeds/004_placing_and_projecting.yaml")), true);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("frustum-html-" + std::to_string(getpid()));
+  const SetResult set = solve_set(
+      load_problem_set(test::source_path("problems/seeds/004_placing_and_projecting.yaml")), true);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("frustum-html-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir / "profile");
-  const std::string page = (dir / "seed004.html").string(), png = std::string(FRUSTUM_BINARY_DIR) + "/typeset-seed004.png";
+  const std::string page = (dir / "seed004.html").string(),
+                    png = std::string(FRUSTUM_BINARY_DIR) + "/typeset-seed004.png";
   std::ofstream(page) << render_html(set);
-  const std::string chromium = std::string("timeout 120 ") + kChromium +
-                               " --headless --no-sandbox --disable-gpu --disable-background-networking"
-                               " --disable-component-update --no-first-run --disable-dev-shm-usage --user-data-dir=" +
-                               (dir / "profile").string();
+  const std::string chromium =
+      std::string("timeout 120 ") + kChromium +
+      " --headless --no-sandbox --disable-gpu --disable-background-networking"
+      " --disable-component-update --no-first-run --disable-dev-shm-usage --user-data-dir=" +
+      (dir / "profile").string();
   const auto [dom, status] = run(chromium + " --dump-dom 'file://" + page + "' 2>/dev/null");
   EXPECT_NE(dom.find("data-math=\"yes\""), std::string::npos) << "the page's script did not run";
   EXPECT_NE(dom.find("class=\"katex-display\""), std::string::npos);
   EXPECT_EQ(dom.find("data-typeset=\"error\""), std::string::npos);
   std::filesystem::remove(png);
-  run(chromium + " --window-size=1000,1400 --screenshot=" + png + " 'file://" + page + "' 2>/dev/null");
+  run(chromium + " --window-size=1000,1400 --screenshot=" + png + " 'file://" + page +
+      "' 2>/dev/null");
   ASSERT_TRUE(std::filesystem::exists(png));
   EXPECT_GT(std::filesystem::file_size(png), 20000u) << "a typeset page is more than a blank image";
   std::filesystem::remove_all(dir);
@@ -110,16 +114,19 @@ TEST(Typeset, HtmlPageTypesetsInChromiumAndScreenshots) {
 
 // `solve --format latex` compiles with Debian's LuaLaTeX for every seed set.
 TEST(Typeset, LatexDocumentsCompileWithLualatex) {
-  ASSERT_TRUE(std::filesystem::exists("/usr/bin/lualatex")) << "tools/setup.sh installs texlive-luatex";
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("frustum-tex-" + std::to_string(getpid()));
+  ASSERT_TRUE(std::filesystem::exists("/usr/bin/lualatex"))
+      << "tools/setup.sh installs texlive-luatex";
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("frustum-tex-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir / "var");
   for (const std::string& file : test::bundled_sets()) {
     if (file.find("/seeds/") == std::string::npos) continue;
     const std::string tex = (dir / "set.tex").string();
     std::ofstream(tex) << render_latex(solve_set(load_problem_set(file), true));
     std::filesystem::remove(dir / "set.pdf");
-    const auto [log, status] = run("cd " + dir.string() + " && TEXMFVAR=" + (dir / "var").string() +
-                                   " timeout 300 lualatex -interaction=nonstopmode -halt-on-error set.tex 2>&1");
+    const auto [log, status] =
+        run("cd " + dir.string() + " && TEXMFVAR=" + (dir / "var").string() +
+            " timeout 300 lualatex -interaction=nonstopmode -halt-on-error set.tex 2>&1");
     EXPECT_EQ(status, 0) << file << "\n" << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
     EXPECT_TRUE(std::filesystem::exists(dir / "set.pdf")) << file;
   }

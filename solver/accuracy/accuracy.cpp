@@ -1,9 +1,5 @@
 #include "solver/accuracy/accuracy.hpp"
 
-#include "solver/derivation/svg.hpp"
-#include "solver/problem/rng.hpp"
-#include "solver/numeric/condition.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -13,6 +9,10 @@
 #include <map>
 #include <memory>
 #include <set>
+
+#include "solver/derivation/svg.hpp"
+#include "solver/numeric/condition.hpp"
+#include "solver/problem/rng.hpp"
 
 namespace frustum::bench {
 
@@ -38,7 +38,9 @@ struct Point3 {
   Eigen::Vector3d d() const { return {value(x), value(y), value(z)}; }
   std::string yaml() const { return "[" + x + ", " + y + ", " + z + "]"; }
 };
-Point3 point(Rng& rng, int lo, int hi) { return {decimal(rng, lo, hi), decimal(rng, lo, hi), decimal(rng, lo, hi)}; }
+Point3 point(Rng& rng, int lo, int hi) {
+  return {decimal(rng, lo, hi), decimal(rng, lo, hi), decimal(rng, lo, hi)};
+}
 
 std::string triangle_yaml(const std::array<Point3, 3>& t) {
   return "[" + t[0].yaml() + ", " + t[1].yaml() + ", " + t[2].yaml() + "]";
@@ -50,7 +52,8 @@ std::string draw_given(const std::string& kind, Rng& rng) {
     if (kind == "vectors") {
       const Point3 a = point(rng, -9, 9), b = point(rng, -9, 9);
       const Eigen::Vector3d x = a.d(), y = b.d();
-      const double s = x.cross(y).norm() / (x.norm() * y.norm()), c = x.dot(y) / (x.norm() * y.norm());
+      const double s = x.cross(y).norm() / (x.norm() * y.norm()),
+                   c = x.dot(y) / (x.norm() * y.norm());
       if (x.norm() > 1 && y.norm() > 1 && s > 0.2 && std::abs(c) > 0.1)
         return "{a: " + a.yaml() + ", b: " + b.yaml() + "}";
     } else if (kind == "normal" || kind == "plane" || kind == "backface") {
@@ -69,13 +72,17 @@ std::string draw_given(const std::string& kind, Rng& rng) {
     } else if (kind == "depth_at_pixel") {
       std::array<Point3, 3> t;
       for (Point3& q : t) q = {decimal(rng, 0, 20), decimal(rng, 0, 20), decimal(rng, 1, 20)};
-      const Eigen::Vector2d pixel(static_cast<double>(rng.integer(0, 20)), static_cast<double>(rng.integer(0, 20)));
+      const Eigen::Vector2d pixel(static_cast<double>(rng.integer(0, 20)),
+                                  static_cast<double>(rng.integer(0, 20)));
       if (depth_condition(t[0].d(), t[1].d(), t[2].d(), pixel).kappa_z < kWellConditioned)
-        return fmt::format("{{triangle: {}, pixel: [{}, {}]}}", triangle_yaml(t), pixel.x(), pixel.y());
+        return fmt::format("{{triangle: {}, pixel: [{}, {}]}}", triangle_yaml(t), pixel.x(),
+                           pixel.y());
     } else if (kind == "project_point") {
       const std::string projection = fmt::format(
-          "perspective: {{fovy: {}, aspect: {}, near: {}, far: {}}}, viewport: {{width: 640, height: 480}}",
-          rng.integer(30, 90), rng.chance(1, 2) ? "1" : "\"4/3\"", decimal(rng, 1, 2), rng.integer(50, 200));
+          "perspective: {{fovy: {}, aspect: {}, near: {}, far: {}}}, viewport: {{width: 640, "
+          "height: 480}}",
+          rng.integer(30, 90), rng.chance(1, 2) ? "1" : "\"4/3\"", decimal(rng, 1, 2),
+          rng.integer(50, 200));
       if (rng.chance(1, 3)) {
         const Point3 eye = {decimal(rng, -5, 5), decimal(rng, -5, 5), decimal(rng, 10, 20)};
         return "{point: " + point(rng, -3, 3).yaml() + ", camera: {eye: " + eye.yaml() +
@@ -86,14 +93,16 @@ std::string draw_given(const std::string& kind, Rng& rng) {
     } else if (kind == "transform") {
       const Point3 axis = point(rng, -3, 3);
       if (axis.d().norm() < 0.5) continue;
-      return fmt::format("{{dim: 3, steps: [{{translate: {}}}, {{rotate_z: {}}}, {{scale: [{}, {}, {}]}}, "
-                         "{{rotate: {{axis: {}, angle: {}}}}}], points: [{}, {}]}}",
-                         point(rng, -9, 9).yaml(), rng.integer(5, 85), decimal(rng, 1, 3), decimal(rng, 1, 3),
-                         decimal(rng, 1, 3), axis.yaml(), rng.integer(5, 85), point(rng, -9, 9).yaml(),
-                         point(rng, -9, 9).yaml());
+      return fmt::format(
+          "{{dim: 3, steps: [{{translate: {}}}, {{rotate_z: {}}}, {{scale: [{}, {}, {}]}}, "
+          "{{rotate: {{axis: {}, angle: {}}}}}], points: [{}, {}]}}",
+          point(rng, -9, 9).yaml(), rng.integer(5, 85), decimal(rng, 1, 3), decimal(rng, 1, 3),
+          decimal(rng, 1, 3), axis.yaml(), rng.integer(5, 85), point(rng, -9, 9).yaml(),
+          point(rng, -9, 9).yaml());
     } else if (kind == "viewport") {
-      return fmt::format("{{ndc: [{}, {}, {}], width: {}, height: {}}}", decimal(rng, -1, 1), decimal(rng, -1, 1),
-                         decimal(rng, -1, 1), rng.integer(100, 1920), rng.integer(100, 1080));
+      return fmt::format("{{ndc: [{}, {}, {}], width: {}, height: {}}}", decimal(rng, -1, 1),
+                         decimal(rng, -1, 1), decimal(rng, -1, 1), rng.integer(100, 1920),
+                         rng.integer(100, 1080));
     }
   }
   return "{}";
@@ -109,14 +118,16 @@ double median(std::vector<double> v) {
 }  // namespace
 
 std::vector<std::string> generated_kinds() {
-  return {"vectors", "normal", "plane", "depth_at_pixel", "backface", "project_point", "transform", "viewport"};
+  return {"vectors",  "normal",        "plane",     "depth_at_pixel",
+          "backface", "project_point", "transform", "viewport"};
 }
 
 ProblemSet generated_problems(const std::string& kind, int count, std::uint64_t seed) {
   Rng rng(seed ^ fnv1a64(kind));
   std::string yaml = "title: generated " + kind + "\nproblems:\n";
   for (int i = 0; i < count; ++i)
-    yaml += fmt::format("  - id: g{}\n    kind: {}\n    given: {}\n", i, kind, draw_given(kind, rng));
+    yaml +=
+        fmt::format("  - id: g{}\n    kind: {}\n    given: {}\n", i, kind, draw_given(kind, rng));
   return load_problem_set_from_string(yaml, "generated-" + kind + ".yaml");
 }
 
@@ -141,15 +152,17 @@ CaseError compare(const NumericResult& got, const NumericResult& exact) {
     // A backend that keeps exact values (the exact one) is measured on them, not on their
     // long double rounding (which would score it about 1e-20).
     const Value* g = got.answers.find(name);
-    e.error = std::max(e.error, g && g->exact.size() == want->exact.size() ? exact_relative_error(g->exact, want->exact)
-                                                                           : relative_error(*x, want->exact));
+    e.error = std::max(e.error, g && g->exact.size() == want->exact.size()
+                                    ? exact_relative_error(g->exact, want->exact)
+                                    : relative_error(*x, want->exact));
   }
   return e;
 }
 
 double exact_relative_error(const std::vector<Exact>& got, const std::vector<Exact>& exact) {
   bool equal = got.size() == exact.size();
-  for (std::size_t i = 0; equal && i < exact.size(); ++i) equal = canonical(got[i] - exact[i]).is_zero();
+  for (std::size_t i = 0; equal && i < exact.size(); ++i)
+    equal = canonical(got[i] - exact[i]).is_zero();
   if (equal) return 0.0;
   std::vector<long double> near;
   for (const Exact& x : got) near.push_back(from_exact<long double>(x));
@@ -202,7 +215,8 @@ std::vector<AccuracyRow> measure(const ProblemSet& set, const std::string& suite
     if (specs.empty()) continue;
     for (Precision precision : kAllPrecisions) {
       std::vector<std::unique_ptr<NumericSolver>> solvers;
-      for (const ProblemSpec* p : specs) solvers.push_back(p->info->solve_numeric(p->given, precision));
+      for (const ProblemSpec* p : specs)
+        solvers.push_back(p->info->solve_numeric(p->given, precision));
       using Clock = std::chrono::steady_clock;
       const auto start = Clock::now();
       long passes = 0;
@@ -210,9 +224,17 @@ std::vector<AccuracyRow> measure(const ProblemSet& set, const std::string& suite
       do {
         for (auto& s : solvers) s->run();
         ++passes;
-        elapsed = static_cast<double>(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count());
+        elapsed = static_cast<double>(
+            std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count());
       } while (elapsed < min_ns);
-      AccuracyRow row{suite, kind, precision, specs.size(), elapsed / (static_cast<double>(passes) * static_cast<double>(specs.size())), 0, 0, 0};
+      AccuracyRow row{suite,
+                      kind,
+                      precision,
+                      specs.size(),
+                      elapsed / (static_cast<double>(passes) * static_cast<double>(specs.size())),
+                      0,
+                      0,
+                      0};
       std::vector<double> errors;
       for (std::size_t i = 0; i < solvers.size(); ++i) {
         const CaseError e = compare(solvers[i]->result(), reference[i]);
@@ -239,11 +261,13 @@ std::string sci(double v) {
 
 std::string markdown_table(const std::vector<AccuracyRow>& rows) {
   std::string out =
-      "| suite | kind | backend | cases | ns/solve | median rel. error | max rel. error | wrong decisions |\n"
+      "| suite | kind | backend | cases | ns/solve | median rel. error | max rel. error | wrong "
+      "decisions |\n"
       "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
   for (const AccuracyRow& r : rows)
-    out += fmt::format("| {} | {} | {} | {} | {:.0f} | {} | {} | {} |\n", r.suite, r.kind, to_string(r.precision),
-                       r.cases, r.ns_per_solve, sci(r.median_error), sci(r.max_error), r.wrong);
+    out += fmt::format("| {} | {} | {} | {} | {:.0f} | {} | {} | {} |\n", r.suite, r.kind,
+                       to_string(r.precision), r.cases, r.ns_per_solve, sci(r.median_error),
+                       sci(r.max_error), r.wrong);
   return out;
 }
 
@@ -258,19 +282,24 @@ std::string speed_error_svg(const std::vector<AccuracyRow>& all, const std::stri
     x_lo = std::min(x_lo, r.ns_per_solve);
     x_hi = std::max(x_hi, r.ns_per_solve);
   }
-  const double lx0 = std::floor(std::log10(std::max(x_lo, 1.0))), lx1 = std::ceil(std::log10(std::max(x_hi, 10.0)));
+  const double lx0 = std::floor(std::log10(std::max(x_lo, 1.0))),
+               lx1 = std::ceil(std::log10(std::max(x_hi, 10.0)));
   const double ly0 = std::log10(kFloor), ly1 = 0;
   auto px = [&](double ns) {
-    return left + (std::log10(std::max(ns, 1.0)) - lx0) / std::max(lx1 - lx0, 1.0) * (width - left - right);
+    return left + (std::log10(std::max(ns, 1.0)) - lx0) / std::max(lx1 - lx0, 1.0) *
+                      (width - left - right);
   };
   auto py = [&](double e) {
-    return top + (ly1 - std::log10(std::min(std::max(e, kFloor), 1.0))) / (ly1 - ly0) * (height - top - bottom);
+    return top + (ly1 - std::log10(std::min(std::max(e, kFloor), 1.0))) / (ly1 - ly0) *
+                     (height - top - bottom);
   };
   Svg svg(width, height);
   svg.title("Frustum: speed against error (" + suite + " problems)");
-  svg.style(".axis{stroke:#333;stroke-width:1}.grid{stroke:#ddd;stroke-width:0.5}"
-            "text{font:11px sans-serif;fill:#222}.front{fill:none;stroke-width:1.5}");
-  const char* colors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  svg.style(
+      ".axis{stroke:#333;stroke-width:1}.grid{stroke:#ddd;stroke-width:0.5}"
+      "text{font:11px sans-serif;fill:#222}.front{fill:none;stroke-width:1.5}");
+  const char* colors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
+                          "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   for (double e = lx0; e <= lx1; ++e) {
     svg.line({px(std::pow(10, e)), top}, {px(std::pow(10, e)), height - bottom}, "grid");
     svg.text({px(std::pow(10, e)) - 10, height - bottom + 16}, fmt::format("1e{:.0f}", e), "");
@@ -282,7 +311,9 @@ std::string speed_error_svg(const std::vector<AccuracyRow>& all, const std::stri
   svg.line({left, height - bottom}, {width - right, height - bottom}, "axis");
   svg.line({left, top}, {left, height - bottom}, "axis");
   svg.text({left + 120, height - 18}, "nanoseconds per solve (numeric path, log scale)", "");
-  svg.text({left, 24}, "median relative error against exact (log scale); filled = Pareto front of its kind", "");
+  svg.text({left, 24},
+           "median relative error against exact (log scale); filled = Pareto front of its kind",
+           "");
   std::vector<std::string> kinds;
   for (const AccuracyRow& r : rows)
     if (std::find(kinds.begin(), kinds.end(), r.kind) == kinds.end()) kinds.push_back(r.kind);
@@ -295,13 +326,16 @@ std::string speed_error_svg(const std::vector<AccuracyRow>& all, const std::stri
     for (const AccuracyRow* r : mine) {
       bool dominated = false;
       for (const AccuracyRow* o : mine)
-        dominated = dominated || (o != r && o->ns_per_solve <= r->ns_per_solve && err(*o) <= err(*r) &&
-                                  (o->ns_per_solve < r->ns_per_solve || err(*o) < err(*r)));
+        dominated =
+            dominated || (o != r && o->ns_per_solve <= r->ns_per_solve && err(*o) <= err(*r) &&
+                          (o->ns_per_solve < r->ns_per_solve || err(*o) < err(*r)));
       if (!dominated) front.push_back(r);
     }
-    std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->ns_per_solve < b->ns_per_solve; });
+    std::sort(front.begin(), front.end(),
+              [](auto* a, auto* b) { return a->ns_per_solve < b->ns_per_solve; });
     std::vector<Eigen::Vector2d> line;
-    for (const AccuracyRow* r : front) line.push_back(Eigen::Vector2d(px(r->ns_per_solve), py(err(*r))));
+    for (const AccuracyRow* r : front)
+      line.push_back(Eigen::Vector2d(px(r->ns_per_solve), py(err(*r))));
     for (std::size_t i = 1; i < line.size(); ++i)
       svg.line(line[i - 1], line[i], "front", "stroke=\"" + color + "\"");
     for (const AccuracyRow* r : mine) {
@@ -310,22 +344,39 @@ std::string speed_error_svg(const std::vector<AccuracyRow>& all, const std::stri
       const std::string style = fmt::format("fill=\"{}\" stroke=\"{}\" stroke-width=\"1.5\"",
                                             on_front ? color : "white", color);
       const int shape = static_cast<int>(r->precision);
-      if (shape == 0) svg.circle(c, 4.5, "", style);
-      else if (shape == 1) svg.rect(c.x() - 4, c.y() - 4, 8, 8, "", style);
-      else if (shape == 2) svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5, c.y() + 4}, {c.x() - 5, c.y() + 4}}, "", style);
-      else svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5.5, c.y()}, {c.x(), c.y() + 5.5}, {c.x() - 5.5, c.y()}}, "", style);
+      if (shape == 0)
+        svg.circle(c, 4.5, "", style);
+      else if (shape == 1)
+        svg.rect(c.x() - 4, c.y() - 4, 8, 8, "", style);
+      else if (shape == 2)
+        svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5, c.y() + 4}, {c.x() - 5, c.y() + 4}}, "",
+                    style);
+      else
+        svg.polygon({{c.x(), c.y() - 5.5},
+                     {c.x() + 5.5, c.y()},
+                     {c.x(), c.y() + 5.5},
+                     {c.x() - 5.5, c.y()}},
+                    "", style);
     }
-    svg.rect(width - right + 14, top + 18.0 * static_cast<double>(k), 10, 10, "", "fill=\"" + color + "\"");
+    svg.rect(width - right + 14, top + 18.0 * static_cast<double>(k), 10, 10, "",
+             "fill=\"" + color + "\"");
     svg.text({width - right + 30, top + 9 + 18.0 * static_cast<double>(k)}, kinds[k], "");
   }
   const double legend = top + 18.0 * static_cast<double>(kinds.size()) + 20;
   for (int s = 0; s < 4; ++s) {
     const Eigen::Vector2d c(width - right + 19, legend + 18.0 * s);
     const std::string style = "fill=\"white\" stroke=\"#333\" stroke-width=\"1.5\"";
-    if (s == 0) svg.circle(c, 4.5, "", style);
-    else if (s == 1) svg.rect(c.x() - 4, c.y() - 4, 8, 8, "", style);
-    else if (s == 2) svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5, c.y() + 4}, {c.x() - 5, c.y() + 4}}, "", style);
-    else svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5.5, c.y()}, {c.x(), c.y() + 5.5}, {c.x() - 5.5, c.y()}}, "", style);
+    if (s == 0)
+      svg.circle(c, 4.5, "", style);
+    else if (s == 1)
+      svg.rect(c.x() - 4, c.y() - 4, 8, 8, "", style);
+    else if (s == 2)
+      svg.polygon({{c.x(), c.y() - 5.5}, {c.x() + 5, c.y() + 4}, {c.x() - 5, c.y() + 4}}, "",
+                  style);
+    else
+      svg.polygon(
+          {{c.x(), c.y() - 5.5}, {c.x() + 5.5, c.y()}, {c.x(), c.y() + 5.5}, {c.x() - 5.5, c.y()}},
+          "", style);
     svg.text({width - right + 30, legend + 4 + 18.0 * s}, shapes[s], "");
   }
   return svg.str();

@@ -4,12 +4,12 @@
 // suite (problems/hard). Returns data; app/bench_command.cpp writes the files.
 #pragma once
 
-#include "solver/problem/problem_set.hpp"
-#include "solver/problem/numeric_result.hpp"
-
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "solver/problem/numeric_result.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum::bench {
 
@@ -35,7 +35,8 @@ ProblemSet generated_problems(const std::string& kind, int count, std::uint64_t 
 
 // Times and measures every problem of `set` whose kind has a numeric path, per kind and
 // backend. Each backend's batch is repeated until it has run for about `min_ns` nanoseconds.
-std::vector<AccuracyRow> measure(const ProblemSet& set, const std::string& suite, double min_ns = 2e7);
+std::vector<AccuracyRow> measure(const ProblemSet& set, const std::string& suite,
+                                 double min_ns = 2e7);
 
 // One result against the exact backend's.
 struct CaseError {

@@ -1,15 +1,15 @@
 #include "solver/accuracy/hard_cases.hpp"
 
-#include "solver/geometry/facing.hpp"
-#include "solver/input/given_reader.hpp"
-#include "solver/problem/rng.hpp"
-#include "solver/viewing/projection.hpp"
-
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
 #include <limits>
+
+#include "solver/geometry/facing.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/rng.hpp"
+#include "solver/viewing/projection.hpp"
 
 namespace frustum::bench {
 
@@ -36,14 +36,15 @@ NormalMethods methods_in(const std::string& id, Precision p, const Polygon3<Exac
                          const Eigen::Matrix<long double, 3, 1>& exact_unit) {
   Polygon3<T> q;
   for (const Vec3<Exact>& v : points) q.push_back(rounded<T>(v));
-  return {id, p, angle_to(edge_pair_normal(q, 0), exact_unit), angle_to(best_edge_pair_normal(q), exact_unit),
-          angle_to(newell_normal(q), exact_unit)};
+  return {id, p, angle_to(edge_pair_normal(q, 0), exact_unit),
+          angle_to(best_edge_pair_normal(q), exact_unit), angle_to(newell_normal(q), exact_unit)};
 }
 
 template <typename T>
 double elapsed_ns(std::chrono::steady_clock::time_point start) {
   return static_cast<double>(
-      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start)
+          .count());
 }
 
 template <typename T>
@@ -60,21 +61,27 @@ FacingStudy facing_study_in(Precision p, int cases, std::uint64_t seed) {
   std::vector<Polygon3<T>> polys;
   std::vector<Vec3<T>> eyes, far_eyes;
   std::vector<int> exact_signs;
-  std::vector<Polygon3<Exact>> exact_polys;  // the inputs' exact values (those of the T coordinates)
+  std::vector<Polygon3<Exact>>
+      exact_polys;  // the inputs' exact values (those of the T coordinates)
   std::vector<Vec3<Exact>> exact_eyes, exact_far_eyes;
   for (int c = 0; c < cases; ++c) {
     Polygon3<Exact> poly;
-    for (int i = 0; i < 3; ++i) poly.push_back(Vec3<Exact>(coordinate(), coordinate(), coordinate()));
-    const Exact a = Exact(static_cast<long>(rng.integer(-8, 16))) / 8, b = Exact(static_cast<long>(rng.integer(-8, 16))) / 8;
+    for (int i = 0; i < 3; ++i)
+      poly.push_back(Vec3<Exact>(coordinate(), coordinate(), coordinate()));
+    const Exact a = Exact(static_cast<long>(rng.integer(-8, 16))) / 8,
+                b = Exact(static_cast<long>(rng.integer(-8, 16))) / 8;
     const Vec3<Exact> on_plane = poly[0] + a * (poly[1] - poly[0]) + b * (poly[2] - poly[0]);
     Polygon3<T> pt;
     for (const Vec3<Exact>& v : poly) pt.push_back(rounded<T>(v));
     Vec3<T> eye = rounded<T>(on_plane);
-    const int axis = static_cast<int>(rng.integer(0, 2)), steps = static_cast<int>(rng.integer(0, 3));
-    const T toward = rng.chance(1, 2) ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
+    const int axis = static_cast<int>(rng.integer(0, 2)),
+              steps = static_cast<int>(rng.integer(0, 3));
+    const T toward =
+        rng.chance(1, 2) ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
     for (int k = 0; k < steps; ++k) eye(axis) = std::nextafter(eye(axis), toward);
     Polygon3<Exact> pe;
-    for (const Vec3<T>& v : pt) pe.push_back(Vec3<Exact>(exact_of(v(0)), exact_of(v(1)), exact_of(v(2))));
+    for (const Vec3<T>& v : pt)
+      pe.push_back(Vec3<Exact>(exact_of(v(0)), exact_of(v(1)), exact_of(v(2))));
     const Vec3<Exact> ee(exact_of(eye(0)), exact_of(eye(1)), exact_of(eye(2)));
     exact_signs.push_back(exact_sign((ee - pe[0]).dot(newell_normal(pe))));
     polys.push_back(pt);
@@ -92,7 +99,8 @@ FacingStudy facing_study_in(Precision p, int cases, std::uint64_t seed) {
     s.exact_fallbacks += f.used_exact ? 1 : 0;
   }
   // Timings: the naive sign, and the adaptive predicate, on these cases and on easy ones.
-  const auto time = [&](const std::vector<Vec3<T>>& e, const std::vector<Vec3<Exact>>& ee, bool adaptive) {
+  const auto time = [&](const std::vector<Vec3<T>>& e, const std::vector<Vec3<Exact>>& ee,
+                        bool adaptive) {
     const auto start = std::chrono::steady_clock::now();
     long passes = 0;
     long checksum = 0;
@@ -107,7 +115,8 @@ FacingStudy facing_study_in(Precision p, int cases, std::uint64_t seed) {
       }
       ++passes;
     } while (elapsed_ns<T>(start) < 2e7);
-    const double ns = elapsed_ns<T>(start) / (static_cast<double>(passes) * static_cast<double>(polys.size()));
+    const double ns =
+        elapsed_ns<T>(start) / (static_cast<double>(passes) * static_cast<double>(polys.size()));
     return checksum == std::numeric_limits<long>::min() ? 0.0 : ns;  // keeps the loop observable
   };
   s.naive_ns = time(eyes, exact_eyes, false);
@@ -157,9 +166,12 @@ std::vector<NormalMethods> normal_methods(const ProblemSet& set) {
 
 FacingStudy facing_study(Precision p, int cases, std::uint64_t seed) {
   switch (p) {
-    case Precision::Float: return facing_study_in<float>(p, cases, seed);
-    case Precision::LongDouble: return facing_study_in<long double>(p, cases, seed);
-    default: return facing_study_in<double>(Precision::Double, cases, seed);
+    case Precision::Float:
+      return facing_study_in<float>(p, cases, seed);
+    case Precision::LongDouble:
+      return facing_study_in<long double>(p, cases, seed);
+    default:
+      return facing_study_in<double>(Precision::Double, cases, seed);
   }
 }
 
@@ -194,31 +206,42 @@ double smallest_separable_gap(DepthMapping m, double far_over_near, int pixels) 
 }
 
 std::string hard_case_report(const ProblemSet& hard, int facing_cases, std::uint64_t seed) {
-  std::string out = "### Normals of near-degenerate polygons (angle to the exact normal, radians)\n\n"
-                    "| problem | backend | naive e₀ × e₁ | best edge pair | Newell |\n| --- | --- | ---: | ---: | ---: |\n";
-  const auto angle = [](double a) { return a >= 1.5707 ? std::string("zero vector") : fmt::format("{:.1e}", a); };
+  std::string out =
+      "### Normals of near-degenerate polygons (angle to the exact normal, radians)\n\n"
+      "| problem | backend | naive e₀ × e₁ | best edge pair | Newell |\n| --- | --- | ---: | ---: "
+      "| ---: |\n";
+  const auto angle = [](double a) {
+    return a >= 1.5707 ? std::string("zero vector") : fmt::format("{:.1e}", a);
+  };
   for (const NormalMethods& m : normal_methods(hard))
     out += fmt::format("| {} | {} | {} | {} | {} |\n", m.id, to_string(m.precision), angle(m.naive),
                        angle(m.best_pair), angle(m.newell));
-  out += fmt::format("\n### Back-face signs with the eye 0–3 units in the last place from the plane ({} cases)\n\n"
-                     "| backend | naive sign wrong | adaptive sign wrong | exact fallbacks | naive ns | adaptive ns | "
-                     "naive ns (eye off the plane) | adaptive ns (eye off the plane) |\n"
-                     "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n",
-                     facing_cases);
+  out += fmt::format(
+      "\n### Back-face signs with the eye 0–3 units in the last place from the plane ({} cases)\n\n"
+      "| backend | naive sign wrong | adaptive sign wrong | exact fallbacks | naive ns | adaptive "
+      "ns | "
+      "naive ns (eye off the plane) | adaptive ns (eye off the plane) |\n"
+      "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+      facing_cases);
   for (Precision p : {Precision::Float, Precision::Double, Precision::LongDouble}) {
     const FacingStudy s = facing_study(p, facing_cases, seed);
-    out += fmt::format("| {} | {} ({:.1f}%) | {} | {} | {:.0f} | {:.0f} | {:.0f} | {:.0f} |\n", to_string(p),
-                       s.naive_wrong, 100.0 * s.naive_wrong / s.cases, s.adaptive_wrong, s.exact_fallbacks,
-                       s.naive_ns, s.adaptive_ns, s.naive_ns_generic, s.adaptive_ns_generic);
+    out += fmt::format("| {} | {} ({:.1f}%) | {} | {} | {:.0f} | {:.0f} | {:.0f} | {:.0f} |\n",
+                       to_string(p), s.naive_wrong, 100.0 * s.naive_wrong / s.cases,
+                       s.adaptive_wrong, s.exact_fallbacks, s.naive_ns, s.adaptive_ns,
+                       s.naive_ns_generic, s.adaptive_ns_generic);
   }
-  out += "\n### Depth precision: float depth buffer, two parallel planes, 1000 pixels from 2·near to far/2\n\n"
-         "| mapping | far/near | flips at gap 1e-2 | flips at gap 1e-3 | flips at gap 1e-4 | flips at gap 1e-5 | "
-         "smallest separable relative gap |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  out +=
+      "\n### Depth precision: float depth buffer, two parallel planes, 1000 pixels from 2·near to "
+      "far/2\n\n"
+      "| mapping | far/near | flips at gap 1e-2 | flips at gap 1e-3 | flips at gap 1e-4 | flips at "
+      "gap 1e-5 | "
+      "smallest separable relative gap |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for (DepthMapping m : {DepthMapping::OpenGL, DepthMapping::DirectX, DepthMapping::ReversedZ})
     for (double ratio : {1e3, 1e4, 1e5, 1e6})
       out += fmt::format("| {} | {:.0e} | {} | {} | {} | {} | {:.1e} |\n", to_string(m), ratio,
-                         depth_flips(m, ratio, 1e-2), depth_flips(m, ratio, 1e-3), depth_flips(m, ratio, 1e-4),
-                         depth_flips(m, ratio, 1e-5), smallest_separable_gap(m, ratio));
+                         depth_flips(m, ratio, 1e-2), depth_flips(m, ratio, 1e-3),
+                         depth_flips(m, ratio, 1e-4), depth_flips(m, ratio, 1e-5),
+                         smallest_separable_gap(m, ratio));
   return out;
 }
 

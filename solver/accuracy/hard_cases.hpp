@@ -3,11 +3,11 @@
 // face's plane, and depth-buffer precision (standard, DirectX [0, 1], reversed-Z).
 #pragma once
 
-#include "solver/problem/problem_set.hpp"
-#include "solver/numeric/precision.hpp"
-
 #include <string>
 #include <vector>
+
+#include "solver/numeric/precision.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum::bench {
 
@@ -29,7 +29,7 @@ struct FacingStudy {
   int naive_wrong = 0;     // computed sign ≠ exact sign of the same inputs
   int adaptive_wrong = 0;  // the filtered predicate with exact fallback (must be 0)
   int exact_fallbacks = 0;
-  double naive_ns = 0, adaptive_ns = 0;              // per test, on these near-plane cases
+  double naive_ns = 0, adaptive_ns = 0;                  // per test, on these near-plane cases
   double naive_ns_generic = 0, adaptive_ns_generic = 0;  // per test, eye well off the plane
 };
 FacingStudy facing_study(Precision p, int cases, std::uint64_t seed);

@@ -3,11 +3,11 @@
 // intermediate values small, so double and Exact share one implementation.
 #pragma once
 
+#include <string>
+
 #include "solver/core/matrix.hpp"
 #include "solver/core/scalar.hpp"
 #include "solver/viewing/conventions.hpp"
-
-#include <string>
 
 namespace frustum {
 

@@ -10,13 +10,20 @@ std::string outcode_string(unsigned code, int dims) {
 
 std::string outcode_bit_meaning(unsigned bit) {
   switch (bit) {
-    case outcode_bit(0, false): return "left (x < xmin)";
-    case outcode_bit(0, true): return "right (x > xmax)";
-    case outcode_bit(1, false): return "bottom (y < ymin)";
-    case outcode_bit(1, true): return "top (y > ymax)";
-    case outcode_bit(2, false): return "z < zmin";
-    case outcode_bit(2, true): return "z > zmax";
-    default: return "?";
+    case outcode_bit(0, false):
+      return "left (x < xmin)";
+    case outcode_bit(0, true):
+      return "right (x > xmax)";
+    case outcode_bit(1, false):
+      return "bottom (y < ymin)";
+    case outcode_bit(1, true):
+      return "top (y > ymax)";
+    case outcode_bit(2, false):
+      return "z < zmin";
+    case outcode_bit(2, true):
+      return "z > zmax";
+    default:
+      return "?";
   }
 }
 

@@ -10,12 +10,12 @@
 // intersection of the segment with that boundary.
 #pragma once
 
-#include "solver/clipping/clip_box.hpp"
-
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "solver/clipping/clip_box.hpp"
 
 namespace frustum {
 

@@ -8,17 +8,17 @@
 // space (−w ≤ x, y, z ≤ w and w ≥ ε, before any divide).
 #pragma once
 
-#include "solver/clipping/clip_box.hpp"
-
 #include <string>
 #include <vector>
+
+#include "solver/clipping/clip_box.hpp"
 
 namespace frustum {
 
 template <typename V>
 struct PolygonClipStage {
-  std::string plane;           // "left: x ≥ xmin", "x ≥ −w"
-  std::vector<V> vertices;     // the polygon after this stage
+  std::string plane;        // "left: x ≥ xmin", "x ≥ −w"
+  std::vector<V> vertices;  // the polygon after this stage
 };
 
 template <typename V>
@@ -100,10 +100,12 @@ PolygonClipResult<Vec4<T>> clip_polygon_homogeneous(const std::vector<Vec4<T>>& 
       const bool zero = a == 2 && !high && z_from_zero;
       current = clip_polygon_stage(
           current,
-          [&](const Vec4<T>& v) {
-            return high ? T(v(3) - v(a)) : zero ? T(v(a)) : T(v(a) + v(3));
-          },
-          [&](Vec4<T>& v) { v(a) = high ? v(3) : zero ? T(0) : T(-v(3)); });
+          [&](const Vec4<T>& v) { return high   ? T(v(3) - v(a))
+                                         : zero ? T(v(a))
+                                                : T(v(a) + v(3)); },
+          [&](Vec4<T>& v) { v(a) = high   ? v(3)
+                                   : zero ? T(0)
+                                          : T(-v(3)); });
       r.stages.push_back({zero ? std::string("z ≥ 0") : std::string(names[a][high]), current});
     }
   r.clipped = current;

@@ -1,8 +1,6 @@
 // Exact values: canonical form with simplified radicals, sign, and conversions.
 #include "solver/core/exact.hpp"
 
-#include "solver/core/work_budget.hpp"
-
 #include <cln/integer.h>
 #include <cln/rational.h>
 #include <cln/real.h>
@@ -15,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "solver/core/work_budget.hpp"
 
 namespace frustum {
 namespace {
@@ -327,7 +327,8 @@ ex rationalize_denominator(const ex& e, WorkBudget& budget) {
     if (!d.is_polynomial(s) || d.degree(s) != 1 || d.ldegree(s) < 0) break;
     const ex a = d.coeff(s, 0).expand(), b = d.coeff(s, 1).expand();
     const ex conjugate = (a - b * root).expand();
-    if (!budget.spend(product_cost(num, conjugate) + product_cost(a, a) + product_cost(b, b))) return e;
+    if (!budget.spend(product_cost(num, conjugate) + product_cost(a, a) + product_cost(b, b)))
+      return e;
     num = (num * conjugate).expand();
     den = (a * a - b * b * root * root).expand();
     changed = true;

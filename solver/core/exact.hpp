@@ -2,9 +2,9 @@
 // solver needs on them (canonical form, sign, conversion to double).
 #pragma once
 
-#include <Eigen/Core>
 #include <ginac/ginac.h>
 
+#include <Eigen/Core>
 #include <stdexcept>
 #include <string>
 

@@ -2,11 +2,10 @@
 // double, long double and Exact run the same code; the double aliases of the pipeline.
 #pragma once
 
-#include "solver/core/scalar.hpp"
-
 #include <Eigen/Dense>
-
 #include <vector>
+
+#include "solver/core/scalar.hpp"
 
 namespace frustum {
 

@@ -3,12 +3,11 @@
 // and cosine, magnitude, sign, angles, π, and stable lengths. Nothing here includes upward.
 #pragma once
 
-#include "solver/core/exact.hpp"
-
 #include <Eigen/Dense>
-
 #include <cmath>
 #include <type_traits>
+
+#include "solver/core/exact.hpp"
 
 namespace frustum {
 

@@ -4,8 +4,7 @@
 
 namespace frustum {
 
-Step& Derivation::add(std::string title, MathText formula, MathText substitution,
-                      MathText result) {
+Step& Derivation::add(std::string title, MathText formula, MathText substitution, MathText result) {
   Step s;
   s.title = std::move(title);
   s.formula = std::move(formula);

@@ -15,11 +15,11 @@ namespace frustum {
 struct Step {
   enum class Level { Info, Note, Warning };
 
-  std::string title;          // "Plane through A"
-  MathText formula;           // n·(p − A) = 0
-  MathText substitution;      // (1/√3, 1/√3, −1/√3)·(x, y, z − 6) = 0
-  MathText result;            // x + y − z = −6
-  std::string note;           // prose: a convention, a seed's slip, a warning
+  std::string title;      // "Plane through A"
+  MathText formula;       // n·(p − A) = 0
+  MathText substitution;  // (1/√3, 1/√3, −1/√3)·(x, y, z − 6) = 0
+  MathText result;        // x + y − z = −6
+  std::string note;       // prose: a convention, a seed's slip, a warning
   Level level = Level::Info;
   std::vector<std::string> answers;  // the answers this step produces ("plane")
   // The title and note as written for another language, where they quote an instructor's text

@@ -1,8 +1,8 @@
 #include "solver/derivation/math_text.hpp"
 
-#include "solver/util/exact_format.hpp"
-
 #include <algorithm>
+
+#include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
@@ -26,14 +26,27 @@ std::string latex_text(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '\\': out += "\\textbackslash{}"; break;
-      case '_': case '#': case '%': case '&': case '{': case '}': case '$':
+      case '\\':
+        out += "\\textbackslash{}";
+        break;
+      case '_':
+      case '#':
+      case '%':
+      case '&':
+      case '{':
+      case '}':
+      case '$':
         out += '\\';
         out += c;
         break;
-      case '^': out += "\\textasciicircum{}"; break;
-      case '~': out += "\\textasciitilde{}"; break;
-      default: out += c;
+      case '^':
+        out += "\\textasciicircum{}";
+        break;
+      case '~':
+        out += "\\textasciitilde{}";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -48,7 +61,8 @@ MathText word(std::string_view english) {
 MathText counts(const std::vector<std::pair<long, std::string>>& items) {
   MathText m;
   for (const auto& [n, what] : items)
-    m += (m.empty() ? MathText{} : math(", ", ",\\; ")) + math(std::to_string(n) + " ", std::to_string(n) + "\\,") + word(what);
+    m += (m.empty() ? MathText{} : math(", ", ",\\; ")) +
+         math(std::to_string(n) + " ", std::to_string(n) + "\\,") + word(what);
   return m;
 }
 
@@ -89,7 +103,9 @@ MathText exact(const Exact& e, bool with_approx) {
   return m;
 }
 
-MathText number(double v) { return math(unicode_minus(format_double(v)), latex_decimal(format_double(v))); }
+MathText number(double v) {
+  return math(unicode_minus(format_double(v)), latex_decimal(format_double(v)));
+}
 
 MathText vec(const std::vector<Exact>& v, bool with_approx) {
   MathText m = math("(", "\\left(");

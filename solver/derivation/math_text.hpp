@@ -2,12 +2,12 @@
 // terminal and JSON ("√3/3", "x + y − z = −6") and LaTeX for Markdown ("\frac{\sqrt{3}}{3}").
 #pragma once
 
-#include "solver/core/matrix.hpp"
-
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "solver/core/matrix.hpp"
 
 namespace frustum {
 
@@ -54,8 +54,7 @@ MathText matrix(const std::vector<std::vector<Exact>>& rows);
 // Σ coefᵢ·nameᵢ = rhs written as on paper: unit coefficients dropped, signs as " − ", zero
 // terms left out; an empty name is a constant term ("1 + 1 − z = −6").
 MathText linear_expression(const std::vector<std::pair<Exact, std::string>>& terms);
-MathText linear_equation(const std::vector<std::pair<Exact, std::string>>& terms,
-                         const Exact& rhs);
+MathText linear_equation(const std::vector<std::pair<Exact, std::string>>& terms, const Exact& rhs);
 
 // a x + b y + c z = d, with unit coefficients and signs written as on paper.
 MathText plane_equation(const Exact& a, const Exact& b, const Exact& c, const Exact& d);

@@ -61,7 +61,8 @@ constexpr Phrase kPhrases[] = {
      "у плоскости 4 коэффициента [a, b, c, d] уравнения a·x + b·y + c·z = d"},
     {"a plane has 4 coefficients", "平面の係数は 4 つです", "у плоскости 4 коэффициента"},
     {"read as one point", "1 つの点として読みました", "прочитано как одна точка"},
-    {"read as one point in homogeneous coordinates (w = 1)", "同次座標 (w = 1) の 1 つの点として読みました",
+    {"read as one point in homogeneous coordinates (w = 1)",
+     "同次座標 (w = 1) の 1 つの点として読みました",
      "прочитано как одна точка в однородных координатах (w = 1)"},
     {"read as points in homogeneous coordinates (w = 1)", "同次座標 (w = 1) の点として読みました",
      "прочитано как точки в однородных координатах (w = 1)"},
@@ -175,7 +176,8 @@ constexpr Phrase kPhrases[] = {
      "`{0}` нельзя вычислить как число"},
     {"'{0}' is not one of {1}", "`{0}` は次のいずれでもありません: `{1}`",
      "`{0}` — не одно из: `{1}`"},
-    {"'{0}' is not true or false (or {1} or {2})", "`{0}` は true でも false でも ({1} でも {2} でも) ありません",
+    {"'{0}' is not true or false (or {1} or {2})",
+     "`{0}` は true でも false でも ({1} でも {2} でも) ありません",
      "`{0}` — не true и не false (и не {1}, не {2})"},
     {"'{0}' is not true or false", "`{0}` は true でも false でもありません",
      "`{0}` — не true и не false"},
@@ -239,12 +241,16 @@ constexpr Phrase kPhrases[] = {
     {"Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
      "あなたの平面は原点を通っています. n·(p − A) = 0 から d = n·A であり, 0 ではありません.",
      "Ваша плоскость проходит через начало координат: из n·(p − A) = 0 следует d = n·A, а не 0."},
-    {"Your constant d has the wrong sign.", "定数 d の符号が逆です.", "У свободного члена d не тот знак."},
-    {"Here the plane is written a·x + b·y + c·z = d with d = n·{0}; a list [a, b, c, d] means the same "
+    {"Your constant d has the wrong sign.", "定数 d の符号が逆です.",
+     "У свободного члена d не тот знак."},
+    {"Here the plane is written a·x + b·y + c·z = d with d = n·{0}; a list [a, b, c, d] means the "
+     "same "
      "form, not a·x + b·y + c·z + d = 0.",
-     "ここでは平面を a·x + b·y + c·z = d (d = n·{0}) と書きます. リスト [a, b, c, d] も同じ形を表し, "
+     "ここでは平面を a·x + b·y + c·z = d (d = n·{0}) と書きます. リスト [a, b, c, d] "
+     "も同じ形を表し, "
      "a·x + b·y + c·z + d = 0 ではありません.",
-     "Здесь плоскость записывается как a·x + b·y + c·z = d, где d = n·{0}; список [a, b, c, d] означает "
+     "Здесь плоскость записывается как a·x + b·y + c·z = d, где d = n·{0}; список [a, b, c, d] "
+     "означает "
      "ту же форму, а не a·x + b·y + c·z + d = 0."},
     {"You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
      "w による除算が抜けています. NDC = (x_c, y_c, z_c) / w_c です.",
@@ -374,26 +380,35 @@ constexpr Phrase kPhrases[] = {
     {"You chose {0} of the {1} true statements and {2} of the {3} false ones.",
      "{1} 個の正しい記述のうち {0} 個と, {3} 個の誤った記述のうち {2} 個を選んだ.",
      "Выбрано верных утверждений: {0} из {1}, неверных: {2} из {3}."},
-    {"Each true statement chosen earns 1/{0} of the points; each false one chosen takes 1/{1} away.",
+    {"Each true statement chosen earns 1/{0} of the points; each false one chosen takes 1/{1} "
+     "away.",
      "正しい記述を 1 つ選ぶごとに配点の 1/{0} を得て, 誤った記述を 1 つ選ぶごとに 1/{1} を失う.",
-     "Каждое выбранное верное утверждение даёт 1/{0} баллов, каждое выбранное неверное отнимает 1/{1}."},
+     "Каждое выбранное верное утверждение даёт 1/{0} баллов, каждое выбранное неверное отнимает "
+     "1/{1}."},
     {"there is no statement {0}: the statements are numbered 1 to {1}",
-     "記述 {0} はない. 記述の番号は 1 から {1} まで", "утверждения {0} нет: утверждения пронумерованы от 1 до {1}"},
+     "記述 {0} はない. 記述の番号は 1 から {1} まで",
+     "утверждения {0} нет: утверждения пронумерованы от 1 до {1}"},
     {"there is no statement 0: the statements are numbered from 1",
      "記述 0 はない. 記述の番号は 1 から始まる", "утверждения 0 нет: утверждения нумеруются с 1"},
-    {"statement {0} is given twice", "記述 {0} が 2 回書かれている", "утверждение {0} указано дважды"},
-    {"{0} statements, but {1} true/false values: give one per statement, or the numbers of the true ones",
+    {"statement {0} is given twice", "記述 {0} が 2 回書かれている",
+     "утверждение {0} указано дважды"},
+    {"{0} statements, but {1} true/false values: give one per statement, or the numbers of the "
+     "true ones",
      "記述は {0} 個だが, 真偽の値は {1} 個. 記述ごとに 1 つ書くか, 正しい記述の番号を書くこと",
-     "утверждений {0}, а значений верно/неверно {1}: укажите по одному на утверждение или номера верных"},
+     "утверждений {0}, а значений верно/неверно {1}: укажите по одному на утверждение или номера "
+     "верных"},
     {"'{0}' is neither the number of a statement nor true or false",
      "`{0}` は記述の番号でも真偽の値でもない", "`{0}` — не номер утверждения и не верно/неверно"},
     {"the answer mixes statement numbers and true/false: write the numbers of the true statements, "
      "like [1, 3], or one true/false per statement, like [true, false, true]",
-     "記述の番号と真偽の値が混ざっている. 正しい記述の番号 (例: [1, 3]) か, 記述ごとの真偽 (例: [○, ×, ○]) "
+     "記述の番号と真偽の値が混ざっている. 正しい記述の番号 (例: [1, 3]) か, 記述ごとの真偽 (例: "
+     "[○, ×, ○]) "
      "のどちらかで書くこと",
-     "в ответе смешаны номера утверждений и верно/неверно: укажите номера верных утверждений, например "
+     "в ответе смешаны номера утверждений и верно/неверно: укажите номера верных утверждений, "
+     "например "
      "[1, 3], или по одному верно/неверно на утверждение, например [да, нет, да]"},
-    {"item {0} is not a statement number or true/false", "{0} 番目の項目は記述の番号でも真偽の値でもない",
+    {"item {0} is not a statement number or true/false",
+     "{0} 番目の項目は記述の番号でも真偽の値でもない",
      "элемент {0} — не номер утверждения и не верно/неверно"},
     {"item {0} is empty", "{0} 番目の項目が空", "элемент {0} пуст"},
     {"a mapping's keys are statement numbers 1, 2, …, like {1: true, 2: false}",
@@ -410,11 +425,14 @@ constexpr Phrase kPhrases[] = {
     {"right-handed matrix", "右手系の行列", "матрица правой системы"},
     {"You used the right-handed matrix (the eye looking down −z); in this course's left-handed "
      "coordinates the eye looks down +z, so the third column has the opposite sign (w′ = z).",
-     "右手系の行列 (視点は −z 方向を見る) を使っています. このコースの左手系の座標では視点は +z 方向を"
+     "右手系の行列 (視点は −z 方向を見る) を使っています. このコースの左手系の座標では視点は +z "
+     "方向を"
      "見るので, 第 3 列の符号が逆になります (w′ = z).",
-     "Вы использовали матрицу правой системы (глаз смотрит вдоль −z); в левой системе координат этого "
+     "Вы использовали матрицу правой системы (глаз смотрит вдоль −z); в левой системе координат "
+     "этого "
      "курса глаз смотрит вдоль +z, поэтому третий столбец имеет обратный знак (w′ = z)."},
-    {"You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, with the vertices "
+    {"You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, with the "
+     "vertices "
      "counter-clockwise seen from the front, the front normal is n = e₁ × e₀.",
      "右手系の式 e₀ × e₁ を計算しています. この左手系の座標では, 表から見て頂点が反時計回りなので, "
      "表向きの法線は n = e₁ × e₀ です.",
@@ -422,7 +440,8 @@ constexpr Phrase kPhrases[] = {
      "против часовой стрелки при взгляде с лицевой стороны, лицевая нормаль n = e₁ × e₀."},
     {"Your camera's z axis points away from the scene: in left-handed coordinates the camera looks "
      "down +z, so z = (center − eye)/‖center − eye‖ and x = up × z.",
-     "あなたのカメラの z 軸はシーンと反対を向いています. 左手系の座標ではカメラは +z 方向を見るので, "
+     "あなたのカメラの z 軸はシーンと反対を向いています. 左手系の座標ではカメラは +z "
+     "方向を見るので, "
      "z = (center − eye)/‖center − eye‖, x = up × z です.",
      "Ось z вашей камеры направлена от сцены: в левой системе координат камера смотрит вдоль +z, "
      "поэтому z = (center − eye)/‖center − eye‖ и x = up × z."},

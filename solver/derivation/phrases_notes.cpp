@@ -648,10 +648,13 @@ constexpr Phrase kPhrases[] = {
      "Ни один треугольник не покрывает центр этого пикселя."},
     {"Every decision (clipping, facing, snapping, the depth test) is exact: taken on the computed "
      "values when their error bound proves it, else by exact arithmetic on the given numbers.",
-     "判定 (クリッピング, 表裏, スナップ, 奥行き比較) はすべて厳密: 計算値の誤差限界が判定を保証するときは"
+     "判定 (クリッピング, 表裏, スナップ, 奥行き比較) はすべて厳密: "
+     "計算値の誤差限界が判定を保証するときは"
      "計算値で, そうでなければ与えられた数での厳密な計算で決める.",
-     "Каждое решение (отсечение, ориентация, привязка к сетке, тест глубины) точное: принимается по "
-     "вычисленным значениям, когда их оценка погрешности его гарантирует, иначе точной арифметикой над "
+     "Каждое решение (отсечение, ориентация, привязка к сетке, тест глубины) точное: принимается "
+     "по "
+     "вычисленным значениям, когда их оценка погрешности его гарантирует, иначе точной арифметикой "
+     "над "
      "заданными числами."},
     {"Exact arithmetic on the given numbers decided the clipping, facing or snapping of {0} "
      "triangle(s) that rounding could not settle.",
@@ -659,7 +662,8 @@ constexpr Phrase kPhrases[] = {
      "厳密な計算で決めた.",
      "Отсечение, ориентацию или привязку к сетке для треугольников ({0}), которые округление не "
      "позволяло определить, решила точная арифметика над заданными числами."},
-    {"The depth test was decided by exact arithmetic on the given numbers (the computed depths were "
+    {"The depth test was decided by exact arithmetic on the given numbers (the computed depths "
+     "were "
      "within rounding of each other).",
      "奥行き比較は与えられた数での厳密な計算で決めた (計算した奥行きの差が丸め誤差の範囲内だった).",
      "Тест глубины решён точной арифметикой над заданными числами (вычисленные глубины совпадали в "
@@ -765,11 +769,14 @@ constexpr Phrase kPhrases[] = {
      "a и b параллельны (a × b = 0): точки 0, a, b лежат на одной прямой и не задают плоскость, "
      "поэтому единичной нормали нет."},
     // Numeric backends (--precision): the Backend note, one sentence per line, and the warnings.
-    {"Answers computed in {0} ({1}, {2}-bit significand, unit roundoff {3}, about {4} decimal digits); "
+    {"Answers computed in {0} ({1}, {2}-bit significand, unit roundoff {3}, about {4} decimal "
+     "digits); "
      "values only, no derivation steps (--precision exact gives them).",
-     "{0} で計算した解答 (`{1}`, 仮数 {2} ビット, 単位丸め誤差 {3}, 10 進で約 {4} 桁). 値だけで, 導出の手順はない "
+     "{0} で計算した解答 (`{1}`, 仮数 {2} ビット, 単位丸め誤差 {3}, 10 進で約 {4} 桁). 値だけで, "
+     "導出の手順はない "
      "(`--precision exact` で手順が出る).",
-     "Ответы вычислены в {0} (`{1}`, мантисса {2} бит, единица округления {3}, около {4} десятичных "
+     "Ответы вычислены в {0} (`{1}`, мантисса {2} бит, единица округления {3}, около {4} "
+     "десятичных "
      "знаков); только значения, без шагов вывода (их даёт `--precision exact`)."},
     {"Answers computed in exact (GiNaC: rationals and radicals, no rounding anywhere).",
      "厳密計算 (`GiNaC`: 有理数と根号, 丸めは一切ない) で計算した解答.",
@@ -780,7 +787,8 @@ constexpr Phrase kPhrases[] = {
     {"The kind {0} has no numeric path; it was solved exactly ({1}).",
      "種類 `{0}` には数値計算の経路がないので, 厳密に解いた ({1}).",
      "У вида `{0}` нет численного пути; он решён точно ({1})."},
-    {"{0}: decided by exact arithmetic on the given numbers (the {1} computation could not settle it).",
+    {"{0}: decided by exact arithmetic on the given numbers (the {1} computation could not settle "
+     "it).",
      "{0}: 与えられた数の厳密計算で決めた ({1} の計算では決められなかった).",
      "{0}: решено точной арифметикой на данных числах (вычисление в {1} не смогло это решить)."},
     {"facing", "表裏", "ориентация"},
@@ -797,9 +805,11 @@ constexpr Phrase kPhrases[] = {
     {"plane = (n, n·p₀), not rescaled; distance = |n̂·p₀|.",
      "平面 = (n, n·p₀) (係数は約さない), 距離 = |n̂·p₀|.",
      "плоскость = (n, n·p₀) без масштабирования; расстояние = |n̂·p₀|."},
-    {"z = (d − a·xₛ − b·yₛ)/c (the plane method).", "z = (d − a·xₛ − b·yₛ)/c (平面の方程式による方法).",
+    {"z = (d − a·xₛ − b·yₛ)/c (the plane method).",
+     "z = (d − a·xₛ − b·yₛ)/c (平面の方程式による方法).",
      "z = (d − a·xₛ − b·yₛ)/c (метод плоскости)."},
-    {"z by barycentric interpolation (stable fallback).", "z は重心座標による補間で求めた (安定な代替法).",
+    {"z by barycentric interpolation (stable fallback).",
+     "z は重心座標による補間で求めた (安定な代替法).",
      "z найдено барицентрической интерполяцией (устойчивая замена)."},
     {"{0} is ill-conditioned ({1}): {2}; solve with --precision exact for the exact value.",
      "{0} は条件が悪い ({1}): {2}. 厳密な値は `--precision exact` で解くこと.",
@@ -809,41 +819,60 @@ constexpr Phrase kPhrases[] = {
     {"the normal's direction", "法線の向き", "направление нормали"},
     {"the plane's normal", "平面の法線", "нормаль плоскости"},
     {"z at this pixel", "この画素の z", "z в этом пикселе"},
-    {"w_c (and the NDC divided by it)", "w_c (と, それで割った NDC)", "w_c (и NDC, делённые на него)"},
-    {"the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)", "逆行列 (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)", "обратная матрица (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)"},
-    {"{0} keeps no correct digit", "{0} では正しい桁が残らない", "в {0} не остаётся ни одной верной цифры"},
+    {"w_c (and the NDC divided by it)", "w_c (と, それで割った NDC)",
+     "w_c (и NDC, делённые на него)"},
+    {"the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)", "逆行列 (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)",
+     "обратная матрица (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)"},
+    {"{0} keeps no correct digit", "{0} では正しい桁が残らない",
+     "в {0} не остаётся ни одной верной цифры"},
     {"{0} keeps about {1} of its {2} digits", "{0} では {2} 桁のうち約 {1} 桁が残る",
      "в {0} остаётся около {1} из {2} цифр"},
-    {"c ≈ 0 (κ_c ≈ {0}); the plane method would keep {1} digits of z, so z = Σ λᵢ zᵢ with λᵢ from the "
-     "edge functions at the pixel is used: for a pixel inside the triangle it stays within the vertices' "
+    {"c ≈ 0 (κ_c ≈ {0}); the plane method would keep {1} digits of z, so z = Σ λᵢ zᵢ with λᵢ from "
+     "the "
+     "edge functions at the pixel is used: for a pixel inside the triangle it stays within the "
+     "vertices' "
      "depths.",
-     "c ≈ 0 (κ_c ≈ {0}). 平面の方程式では z が {1} 桁しか残らないので, 画素での辺関数から求めた λᵢ による "
+     "c ≈ 0 (κ_c ≈ {0}). 平面の方程式では z が {1} 桁しか残らないので, 画素での辺関数から求めた λᵢ "
+     "による "
      "z = Σ λᵢ zᵢ を使う. 三角形の内側の画素ではこの値は頂点の奥行きの範囲内にある.",
-     "c ≈ 0 (κ_c ≈ {0}); метод плоскости сохранил бы {1} цифр z, поэтому используется z = Σ λᵢ zᵢ с λᵢ "
-     "из рёберных функций в пикселе: для пикселя внутри треугольника оно остаётся в пределах глубин "
+     "c ≈ 0 (κ_c ≈ {0}); метод плоскости сохранил бы {1} цифр z, поэтому используется z = Σ λᵢ zᵢ "
+     "с λᵢ "
+     "из рёберных функций в пикселе: для пикселя внутри треугольника оно остаётся в пределах "
+     "глубин "
      "вершин."},
     {"some inputs exceed the range of {0} and became infinite; the values computed from them are "
      "meaningless, and every discrete answer was decided on the exact inputs.",
-     "一部の入力は {0} の範囲を超えて無限大になった. それから計算した値は意味をもたないが, 離散的な答えはすべて"
+     "一部の入力は {0} の範囲を超えて無限大になった. それから計算した値は意味をもたないが, "
+     "離散的な答えはすべて"
      "厳密な入力で決めた.",
-     "некоторые входные данные выходят за диапазон {0} и стали бесконечными; вычисленные из них значения "
+     "некоторые входные данные выходят за диапазон {0} и стали бесконечными; вычисленные из них "
+     "значения "
      "бессмысленны, а каждый дискретный ответ решён по точным входным данным."},
-    {"some inputs are below the normal range of {0} and were rounded to subnormal numbers or to 0: the "
-     "values computed from them keep few or none of their digits, and every discrete answer was decided "
+    {"some inputs are below the normal range of {0} and were rounded to subnormal numbers or to 0: "
+     "the "
+     "values computed from them keep few or none of their digits, and every discrete answer was "
+     "decided "
      "on the exact inputs.",
-     "一部の入力は {0} の正規化数の範囲より小さく, 非正規化数か 0 に丸められた. それから計算した値には正しい桁が"
+     "一部の入力は {0} の正規化数の範囲より小さく, 非正規化数か 0 に丸められた. "
+     "それから計算した値には正しい桁が"
      "ほとんど残らないが, 離散的な答えはすべて厳密な入力で決めた.",
-     "некоторые входные данные меньше нормального диапазона {0} и округлены до субнормальных чисел или до 0: "
-     "вычисленные из них значения сохраняют мало верных цифр или ни одной, а каждый дискретный ответ решён "
+     "некоторые входные данные меньше нормального диапазона {0} и округлены до субнормальных чисел "
+     "или до 0: "
+     "вычисленные из них значения сохраняют мало верных цифр или ни одной, а каждый дискретный "
+     "ответ решён "
      "по точным входным данным."},
-    {"some values exceed the range of {0} and are infinite or not a number; the exact backend has no limit.",
+    {"some values exceed the range of {0} and are infinite or not a number; the exact backend has "
+     "no limit.",
      "一部の値は {0} の範囲を超え, 無限大か非数になった. 厳密計算には範囲の限界がない.",
-     "некоторые значения выходят за диапазон {0} и равны бесконечности или не являются числом; у точного "
+     "некоторые значения выходят за диапазон {0} и равны бесконечности или не являются числом; у "
+     "точного "
      "вычисления нет такого предела."},
-    {"some values are below the normal range of {0} (subnormal, or flushed to 0): they keep few or none of "
+    {"some values are below the normal range of {0} (subnormal, or flushed to 0): they keep few or "
+     "none of "
      "their digits.",
      "一部の値は {0} の正規化数の範囲より小さい (非正規化数か 0): 正しい桁はほとんど残らない.",
-     "некоторые значения меньше нормального диапазона {0} (субнормальные или обращены в 0): в них мало "
+     "некоторые значения меньше нормального диапазона {0} (субнормальные или обращены в 0): в них "
+     "мало "
      "верных цифр или нет ни одной."},
     // Text not split into sentences above.
     {"depth:", "奥行き:", "глубина:"},
@@ -851,40 +880,51 @@ constexpr Phrase kPhrases[] = {
     // Handedness as a course convention (issue 16).
     {"OpenGL, left-handed: eye space looking down +z, column vectors (p′ = M·p), NDC cube [−1, 1]³ "
      "with near → −1, window origin bottom-left",
-     "OpenGL, 左手系: 視点座標系は +z 方向を見る, 列ベクトル (p′ = M·p), 正規化視体積は立方体 [−1, 1]³ "
+     "OpenGL, 左手系: 視点座標系は +z 方向を見る, 列ベクトル (p′ = M·p), 正規化視体積は立方体 [−1, "
+     "1]³ "
      "(near → −1), ウィンドウの原点は左下",
-     "OpenGL, левая система: система координат вида с взглядом вдоль +z, столбцы-векторы (p′ = M·p), "
+     "OpenGL, левая система: система координат вида с взглядом вдоль +z, столбцы-векторы (p′ = "
+     "M·p), "
      "куб NDC [−1, 1]³ (near → −1), начало окна внизу слева"},
     {"OpenGL, left-handed: eye space looking down +z, column vectors (p′ = M·p), NDC cube [−1, 1]³ "
      "with near → −1, window origin bottom-left; angles in {0}",
-     "OpenGL, 左手系: 視点座標系は +z 方向を見る, 列ベクトル (p′ = M·p), 正規化視体積は立方体 [−1, 1]³ "
+     "OpenGL, 左手系: 視点座標系は +z 方向を見る, 列ベクトル (p′ = M·p), 正規化視体積は立方体 [−1, "
+     "1]³ "
      "(near → −1), ウィンドウの原点は左下; 角度の単位は{0}",
-     "OpenGL, левая система: система координат вида с взглядом вдоль +z, столбцы-векторы (p′ = M·p), "
+     "OpenGL, левая система: система координат вида с взглядом вдоль +z, столбцы-векторы (p′ = "
+     "M·p), "
      "куб NDC [−1, 1]³ (near → −1), начало окна внизу слева; углы в {0}"},
-    {"Processing, left-handed: eye space looking down +z, OpenGL's NDC cube [−1, 1]³, column vectors, "
+    {"Processing, left-handed: eye space looking down +z, OpenGL's NDC cube [−1, 1]³, column "
+     "vectors, "
      "window origin top-left with y pointing down",
      "Processing, 左手系: 視点座標系は +z 方向を見る, OpenGL の正規化視体積 [−1, 1]³, 列ベクトル, "
      "ウィンドウの原点は左上で y は下向き",
-     "Processing, левая система: система координат вида с взглядом вдоль +z, куб NDC [−1, 1]³ как в "
+     "Processing, левая система: система координат вида с взглядом вдоль +z, куб NDC [−1, 1]³ как "
+     "в "
      "OpenGL, столбцы-векторы, начало окна вверху слева, y направлена вниз"},
-    {"Processing, left-handed: eye space looking down +z, OpenGL's NDC cube [−1, 1]³, column vectors, "
+    {"Processing, left-handed: eye space looking down +z, OpenGL's NDC cube [−1, 1]³, column "
+     "vectors, "
      "window origin top-left with y pointing down; angles in {0}",
      "Processing, 左手系: 視点座標系は +z 方向を見る, OpenGL の正規化視体積 [−1, 1]³, 列ベクトル, "
      "ウィンドウの原点は左上で y は下向き; 角度の単位は{0}",
-     "Processing, левая система: система координат вида с взглядом вдоль +z, куб NDC [−1, 1]³ как в "
+     "Processing, левая система: система координат вида с взглядом вдоль +z, куб NDC [−1, 1]³ как "
+     "в "
      "OpenGL, столбцы-векторы, начало окна вверху слева, y направлена вниз; углы в {0}"},
     {"Left-handed coordinates", "左手系の座標", "Левая система координат"},
     {"Left-handed coordinates; angles in {0}", "左手系の座標; 角度の単位は{0}",
      "Левая система координат; углы в {0}"},
-    {"In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is the side of "
-     "e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite normal, that of the "
+    {"In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is the side "
+     "of "
+     "e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite normal, that of "
+     "the "
      "mirror image.",
      "左手系では p₀, p₁, p₂ が反時計回りに見える側は e₁ × e₀ = −(e₀ × e₁) の側である: 右手系の式 "
      "e₀ × e₁ は逆向きの法線, すなわち鏡像の法線を与える.",
      "В левой системе координат сторона, откуда p₀, p₁, p₂ идут против часовой стрелки, — это "
      "сторона e₁ × e₀ = −(e₀ × e₁): формула правой системы e₀ × e₁ даёт противоположную нормаль, "
      "нормаль зеркального образа."},
-    {"In left-handed coordinates the counter-clockwise side's normal is the right-handed sum with its "
+    {"In left-handed coordinates the counter-clockwise side's normal is the right-handed sum with "
+     "its "
      "sign changed (e₁ × e₀ for a triangle).",
      "左手系では反時計回りに見える側の法線は右手系の和の符号を変えたもの (三角形では e₁ × e₀).",
      "В левой системе координат нормаль стороны, откуда обход идёт против часовой стрелки, — это "
@@ -894,12 +934,14 @@ constexpr Phrase kPhrases[] = {
      "この座標は左手系である: AC × AB は A, B, C が反時計回りに見える側 (表) を向く.",
      "Эти координаты — левая система: AC × AB направлен в ту сторону, откуда A, B, C идут против "
      "часовой стрелки (лицевая сторона)."},
-    {"Read in a right-handed frame, the same numbers describe the mirror image, whose front normal is "
+    {"Read in a right-handed frame, the same numbers describe the mirror image, whose front normal "
+     "is "
      "AB × AC = −(AC × AB).",
      "右手系で読むと同じ数値は鏡像を表し, その表の法線は AB × AC = −(AC × AB) である.",
      "Прочитанные в правой системе, те же числа описывают зеркальный образ, лицевая нормаль "
      "которого AB × AC = −(AC × AB)."},
-    {"Read in right-handed coordinates the same numbers describe the mirror image: its normal e₀ × e₁ "
+    {"Read in right-handed coordinates the same numbers describe the mirror image: its normal e₀ × "
+     "e₁ "
      "is −n, D_f changes sign, and the eye would see the other side.",
      "右手系で読むと同じ数値は鏡像を表す: その法線 e₀ × e₁ は −n で, D_f の符号が変わり, "
      "視点からは反対側が見える.",
@@ -913,37 +955,52 @@ constexpr Phrase kPhrases[] = {
      "negated: V_right = diag(−1, 1, −1, 1)·V.",
      "同じ位置の右手系のカメラ (gluLookAt, −z 方向を見る) では x と z の行の符号が逆になる: "
      "V_right = diag(−1, 1, −1, 1)·V.",
-     "У камеры правой системы в том же месте (gluLookAt, взгляд вдоль −z) строки x и z меняют знак: "
+     "У камеры правой системы в том же месте (gluLookAt, взгляд вдоль −z) строки x и z меняют "
+     "знак: "
      "V_right = diag(−1, 1, −1, 1)·V."},
-    {"Left-handed, looking down +z: z = n maps to z_ndc = −1 and z = f to +1, so near and far are also "
+    {"Left-handed, looking down +z: z = n maps to z_ndc = −1 and z = f to +1, so near and far are "
+     "also "
      "the z coordinates of their planes.",
-     "左手系で +z 方向を見る: z = n は z_ndc = −1 に, z = f は +1 に写るので, near と far はそれぞれの"
+     "左手系で +z 方向を見る: z = n は z_ndc = −1 に, z = f は +1 に写るので, near と far "
+     "はそれぞれの"
      "平面の z 座標でもある.",
-     "Левая система, взгляд вдоль +z: z = n переходит в z_ndc = −1, а z = f — в +1, так что near и far "
+     "Левая система, взгляд вдоль +z: z = n переходит в z_ndc = −1, а z = f — в +1, так что near и "
+     "far "
      "— это и z-координаты их плоскостей."},
-    {"The right-handed matrix (looking down −z) is this one with its third column negated: the same "
+    {"The right-handed matrix (looking down −z) is this one with its third column negated: the "
+     "same "
      "view volume with the z axis reversed.",
-     "右手系の行列 (−z 方向を見る) はこの行列の第 3 列の符号を変えたもの: 同じ視体積で z 軸の向きだけが"
+     "右手系の行列 (−z 方向を見る) はこの行列の第 3 列の符号を変えたもの: 同じ視体積で z "
+     "軸の向きだけが"
      "逆である.",
-     "Матрица правой системы (взгляд вдоль −z) — эта же матрица с третьим столбцом с обратным знаком: "
+     "Матрица правой системы (взгляд вдоль −z) — эта же матрица с третьим столбцом с обратным "
+     "знаком: "
      "тот же видимый объём с обращённой осью z."},
-    {"Read in right-handed coordinates (gluLookAt and the right-handed projection on the same numbers), "
+    {"Read in right-handed coordinates (gluLookAt and the right-handed projection on the same "
+     "numbers), "
      "the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' x changes sign "
-     "between V and P, so for a view volume symmetric in x (l = −r) the picture is mirrored left to "
+     "between V and P, so for a view volume symmetric in x (l = −r) the picture is mirrored left "
+     "to "
      "right.",
      "右手系で読むと (同じ数値に gluLookAt と右手系の投影を使うと), 連鎖は代わりに "
-     "P_right·diag(−1, 1, 1, 1)·V_right になる: V と P の間で視点座標の x の符号が変わるので, x について"
+     "P_right·diag(−1, 1, 1, 1)·V_right になる: V と P の間で視点座標の x の符号が変わるので, x "
+     "について"
      "対称な視体積 (l = −r) では画像が左右反転する.",
      "В правой системе координат (gluLookAt и проекция правой системы на тех же числах) цепочка "
-     "вместо этого равна P_right·diag(−1, 1, 1, 1)·V_right: координата x вида меняет знак между V и P, "
+     "вместо этого равна P_right·diag(−1, 1, 1, 1)·V_right: координата x вида меняет знак между V "
+     "и P, "
      "поэтому для видимого объёма, симметричного по x (l = −r), изображение зеркально отражается "
      "слева направо."},
-    {"Mind the order of the cross product: projection coordinates (x, y on the screen, z the depth away "
-     "from the eye) are left-handed, as this course's eye space is, so the front normal of a triangle "
+    {"Mind the order of the cross product: projection coordinates (x, y on the screen, z the depth "
+     "away "
+     "from the eye) are left-handed, as this course's eye space is, so the front normal of a "
+     "triangle "
      "ABC is AC × AB (the order used by default).",
-     "外積の順序に注意: 投影座標系 (画面上の x, y と視点から奥へ向かう奥行き z) はこのコースの視点座標系と"
+     "外積の順序に注意: 投影座標系 (画面上の x, y と視点から奥へ向かう奥行き z) "
+     "はこのコースの視点座標系と"
      "同じく左手系なので, 三角形 ABC の表の法線は AC × AB (既定の順序) である.",
-     "Следите за порядком векторного произведения: координаты проекции (x, y на экране, z — глубина "
+     "Следите за порядком векторного произведения: координаты проекции (x, y на экране, z — "
+     "глубина "
      "от глаза) образуют левую систему, как и система координат вида в этом курсе, поэтому лицевая "
      "нормаль треугольника ABC — AC × AB (порядок по умолчанию)."},
 };

@@ -14,7 +14,7 @@
 namespace frustum {
 
 struct TextStyle {
-  bool color = false;  // ANSI colour: only when writing to a terminal
+  bool color = false;    // ANSI colour: only when writing to a terminal
   Lang lang = Lang::En;  // step titles and fixed phrases (i18n.hpp)
 };
 
@@ -47,8 +47,8 @@ std::string render_latex(const SetResult& set, Lang lang = Lang::En);
 
 // A number that round-trips: integral doubles become JSON integers (8, not 8.0).
 nlohmann::ordered_json number_json(double v);
-nlohmann::ordered_json value_json(const Value& v);   // "value"
-nlohmann::ordered_json exact_json(const Value& v);   // "exact" (null when not exact)
+nlohmann::ordered_json value_json(const Value& v);  // "value"
+nlohmann::ordered_json exact_json(const Value& v);  // "exact" (null when not exact)
 nlohmann::ordered_json steps_json(const std::vector<Step>& steps);
 // `text` and `title` in `lang` (the set's own when it does not give that language); `texts` and
 // `titles` map every language given ({"en": …, "ja": …}); `lang` is the set's own language.

@@ -110,9 +110,10 @@ json problem_json(const ProblemResult& p, Lang lang) {
     j["error"] = p.error->format();
     return j;
   }
-  j["conventions"] = {{"api", std::string(to_string(p.conventions.api))},
-                      {"angles", std::string(to_string(p.conventions.angles))},
-                      {"handedness", handedness_of(p.conventions) == Handedness::Left ? "left" : "right"}};
+  j["conventions"] = {
+      {"api", std::string(to_string(p.conventions.api))},
+      {"angles", std::string(to_string(p.conventions.angles))},
+      {"handedness", handedness_of(p.conventions) == Handedness::Left ? "left" : "right"}};
   json answers = json::object();
   for (const std::string& name : p.ask) {
     const Value* v = p.answers.find(name);

@@ -23,7 +23,8 @@ std::string indent_lines(const std::string& text, const std::string& indent) {
   std::string out;
   for (std::size_t i = 0; i < text.size(); ++i) {
     out += text[i];
-    if (text[i] == '\n' && i + 1 < text.size() && text[i + 1] != ' ' && text[i + 1] != '\n') out += indent;
+    if (text[i] == '\n' && i + 1 < text.size() && text[i + 1] != ' ' && text[i + 1] != '\n')
+      out += indent;
   }
   return out;
 }

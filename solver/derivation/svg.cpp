@@ -19,12 +19,23 @@ std::string svg_escape(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;  // valid in HTML too
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;  // valid in HTML too
+      default:
+        out += c;
     }
   }
   return out;
@@ -36,21 +47,24 @@ void Svg::style(std::string_view css) { css_ += css; }
 
 void Svg::title(std::string_view text) { title_ = svg_escape(text); }
 
-void Svg::open(std::string_view tag, std::string_view cls, std::string_view extra, std::string_view attrs) {
+void Svg::open(std::string_view tag, std::string_view cls, std::string_view extra,
+               std::string_view attrs) {
   body_ += std::string(static_cast<std::size_t>(2 * (depth_ + 1)), ' ') + "<" + std::string(tag);
   if (!cls.empty()) body_ += " class=\"" + std::string(cls) + "\"";
   body_ += std::string(attrs);
   if (!extra.empty()) body_ += " " + std::string(extra);
 }
 
-void Svg::line(const Eigen::Vector2d& a, const Eigen::Vector2d& b, std::string_view cls, std::string_view extra) {
+void Svg::line(const Eigen::Vector2d& a, const Eigen::Vector2d& b, std::string_view cls,
+               std::string_view extra) {
   open("line", cls, extra,
        fmt::format(" x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\"", svg_number(a.x()), svg_number(a.y()),
                    svg_number(b.x()), svg_number(b.y())));
   body_ += "/>\n";
 }
 
-void Svg::polygon(const std::vector<Eigen::Vector2d>& points, std::string_view cls, std::string_view extra) {
+void Svg::polygon(const std::vector<Eigen::Vector2d>& points, std::string_view cls,
+                  std::string_view extra) {
   std::string pts;
   for (const Eigen::Vector2d& p : points)
     pts += (pts.empty() ? "" : " ") + svg_number(p.x()) + "," + svg_number(p.y());
@@ -58,7 +72,8 @@ void Svg::polygon(const std::vector<Eigen::Vector2d>& points, std::string_view c
   body_ += "/>\n";
 }
 
-void Svg::rect(double x, double y, double w, double h, std::string_view cls, std::string_view extra) {
+void Svg::rect(double x, double y, double w, double h, std::string_view cls,
+               std::string_view extra) {
   open("rect", cls, extra,
        fmt::format(" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"", svg_number(x), svg_number(y),
                    svg_number(w), svg_number(h)));
@@ -67,12 +82,15 @@ void Svg::rect(double x, double y, double w, double h, std::string_view cls, std
 
 void Svg::circle(const Eigen::Vector2d& c, double r, std::string_view cls, std::string_view extra) {
   open("circle", cls, extra,
-       fmt::format(" cx=\"{}\" cy=\"{}\" r=\"{}\"", svg_number(c.x()), svg_number(c.y()), svg_number(r)));
+       fmt::format(" cx=\"{}\" cy=\"{}\" r=\"{}\"", svg_number(c.x()), svg_number(c.y()),
+                   svg_number(r)));
   body_ += "/>\n";
 }
 
-void Svg::text(const Eigen::Vector2d& at, std::string_view text, std::string_view cls, std::string_view extra) {
-  open("text", cls, extra, fmt::format(" x=\"{}\" y=\"{}\"", svg_number(at.x()), svg_number(at.y())));
+void Svg::text(const Eigen::Vector2d& at, std::string_view text, std::string_view cls,
+               std::string_view extra) {
+  open("text", cls, extra,
+       fmt::format(" x=\"{}\" y=\"{}\"", svg_number(at.x()), svg_number(at.y())));
   body_ += ">" + svg_escape(text) + "</text>\n";
 }
 
@@ -92,7 +110,8 @@ std::string Svg::str() const {
   if (depth_ != 0) throw std::logic_error("svg: a group is still open");
   std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   s += fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\">\n",
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} "
+      "{1}\">\n",
       svg_number(width_), svg_number(height_));
   if (!title_.empty()) s += "  <title>" + title_ + "</title>\n";
   if (!css_.empty()) s += "  <style>\n" + css_ + "  </style>\n";

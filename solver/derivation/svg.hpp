@@ -5,7 +5,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,8 +26,10 @@ class Svg {
             std::string_view extra = {});
   void polygon(const std::vector<Eigen::Vector2d>& points, std::string_view cls,
                std::string_view extra = {});
-  void rect(double x, double y, double w, double h, std::string_view cls, std::string_view extra = {});
-  void circle(const Eigen::Vector2d& c, double r, std::string_view cls, std::string_view extra = {});
+  void rect(double x, double y, double w, double h, std::string_view cls,
+            std::string_view extra = {});
+  void circle(const Eigen::Vector2d& c, double r, std::string_view cls,
+              std::string_view extra = {});
   // Text is escaped (&, <, >, ").
   void text(const Eigen::Vector2d& at, std::string_view text, std::string_view cls,
             std::string_view extra = {});
@@ -39,7 +40,8 @@ class Svg {
   std::string str() const;
 
  private:
-  void open(std::string_view tag, std::string_view cls, std::string_view extra, std::string_view attrs);
+  void open(std::string_view tag, std::string_view cls, std::string_view extra,
+            std::string_view attrs);
   double width_, height_;
   std::string title_, css_, body_;
   int depth_ = 0;  // open groups

@@ -111,7 +111,8 @@ MathText Value::shown() const {
     case Shape::Vector: {
       if (!exact.empty()) return vec(exact, true);
       MathText m = math("(");
-      for (std::size_t i = 0; i < numbers.size(); ++i) m += (i ? math(", ") : math("")) + number(numbers[i]);
+      for (std::size_t i = 0; i < numbers.size(); ++i)
+        m += (i ? math(", ") : math("")) + number(numbers[i]);
       return m + math(")");
     }
     case Shape::Matrix: {
@@ -123,11 +124,14 @@ MathText Value::shown() const {
         }
       return frustum::matrix(r);
     }
-    case Shape::Bool: return frustum::word(flag ? "true" : "false");
-    case Shape::Word: return frustum::word(word);
+    case Shape::Bool:
+      return frustum::word(flag ? "true" : "false");
+    case Shape::Word:
+      return frustum::word(word);
     case Shape::WordMap: {
       std::vector<MathText> parts;
-      for (const auto& [k, v] : entries) parts.push_back(frustum::word(k) + math(": ", "\\colon ") + frustum::word(v));
+      for (const auto& [k, v] : entries)
+        parts.push_back(frustum::word(k) + math(": ", "\\colon ") + frustum::word(v));
       return comma_joined(parts);
     }
     case Shape::WordList: {
@@ -136,7 +140,8 @@ MathText Value::shown() const {
       for (const auto& w : words) parts.push_back(frustum::word(w));
       return comma_joined(parts);
     }
-    case Shape::Null: return frustum::word("none");
+    case Shape::Null:
+      return frustum::word("none");
   }
   return {};
 }

@@ -2,13 +2,13 @@
 // both their exact form (when the inputs were exact) and their double.
 #pragma once
 
-#include "solver/derivation/math_text.hpp"
-#include "solver/core/matrix.hpp"
-
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "solver/core/matrix.hpp"
+#include "solver/derivation/math_text.hpp"
 
 namespace frustum {
 

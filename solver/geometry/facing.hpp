@@ -4,12 +4,12 @@
 // it for the hard-case study.
 #pragma once
 
+#include <limits>
+
+#include "solver/core/scalar.hpp"
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/geometry/zero_vector.hpp"
-#include "solver/core/scalar.hpp"
-
-#include <limits>
 
 namespace frustum {
 
@@ -64,11 +64,9 @@ T facing_discriminant(const Polygon3<T>& p, const Vec3<T>& eye) {
 // The part of facing() that runs when the cheap bound cannot prove the sign: the sharper
 // bound, then the exact sign. Out of line, so the common path stays a few instructions.
 template <typename T>
-[[gnu::noinline, gnu::cold]] SignDecision facing_near_plane(const Facing<T>& f, const Polygon3<T>& p,
-                                                 const Vec3<T>& eye,
-                                                 const Polygon3<Exact>& exact_points,
-                                                 const Vec3<Exact>& exact_eye,
-                                                 bool inputs_relative) {
+[[gnu::noinline, gnu::cold]] SignDecision facing_near_plane(
+    const Facing<T>& f, const Polygon3<T>& p, const Vec3<T>& eye,
+    const Polygon3<Exact>& exact_points, const Vec3<Exact>& exact_eye, bool inputs_relative) {
   return decide_sign(f.df, facing_error_bound(p, eye), inputs_relative,
                      [&] { return exact_sign(facing_discriminant(exact_points, exact_eye)); });
 }

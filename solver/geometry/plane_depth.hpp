@@ -2,14 +2,15 @@
 // left-handed projection coordinates), the plane n̂·(p − A) = 0 written ax + by + cz = d, and
 // z = (d − a·xₛ − b·yₛ)/c at the pixel. When the triangle is nearly edge-on (c ≈ 0) that formula
 // divides a cancelled numerator by a tiny c; the barycentric form z = Σ λᵢ zᵢ with λᵢ from the
-// 2D edge functions (predicates.hpp) at the pixel is then used instead: for a pixel inside the triangle it is a
-// convex combination, so z stays within the vertices' depths whatever the rounding.
+// 2D edge functions (predicates.hpp) at the pixel is then used instead: for a pixel inside the
+// triangle it is a convex combination, so z stays within the vertices' depths whatever the
+// rounding.
 #pragma once
 
-#include "solver/geometry/predicates.hpp"
-#include "solver/core/scalar.hpp"
-
 #include <array>
+
+#include "solver/core/scalar.hpp"
+#include "solver/geometry/predicates.hpp"
 
 namespace frustum {
 
@@ -22,7 +23,8 @@ struct PlaneDepth {
   bool barycentric = false;
 };
 
-// z at the pixel by barycentric interpolation: λ_A ∝ E(B, C, p), λ_B ∝ E(C, A, p), λ_C ∝ E(A, B, p).
+// z at the pixel by barycentric interpolation: λ_A ∝ E(B, C, p), λ_B ∝ E(C, A, p), λ_C ∝ E(A, B,
+// p).
 template <typename T>
 T barycentric_depth(const std::array<Vec3<T>, 3>& t, const Vec2<T>& p) {
   const T wa = edge_function<T>(t[1], t[2], p), wb = edge_function<T>(t[2], t[0], p),

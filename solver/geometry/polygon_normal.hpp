@@ -4,11 +4,11 @@
 // area-weighted normal) and the analysis below warns about the hard cases.
 #pragma once
 
-#include "solver/core/matrix.hpp"
-
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "solver/core/matrix.hpp"
 
 namespace frustum {
 
@@ -62,13 +62,13 @@ Vec3<T> best_edge_pair_normal(const Polygon3<T>& p) {
 
 // What can go wrong with a polygon's normal, found on the exact input.
 struct PolygonAnalysis {
-  bool degenerate = false;             // zero normal: all vertices collinear or coincident
-  std::vector<std::size_t> zero_edges; // e_i = 0 (repeated vertex)
-  std::size_t worst_pair = 0;          // edge pair with the smallest sine
-  double min_sine = 1.0;               // smallest |e_i × e_{i+1}| / (|e_i| |e_{i+1}|)
+  bool degenerate = false;              // zero normal: all vertices collinear or coincident
+  std::vector<std::size_t> zero_edges;  // e_i = 0 (repeated vertex)
+  std::size_t worst_pair = 0;           // edge pair with the smallest sine
+  double min_sine = 1.0;                // smallest |e_i × e_{i+1}| / (|e_i| |e_{i+1}|)
   bool planar = true;
-  std::size_t off_plane_vertex = 0;    // first vertex off the plane of the normal
-  double condition = 1.0;              // ≈ 1 / min_sine: digits lost in e_i × e_{i+1}
+  std::size_t off_plane_vertex = 0;  // first vertex off the plane of the normal
+  double condition = 1.0;            // ≈ 1 / min_sine: digits lost in e_i × e_{i+1}
 };
 
 // Below this sine the edge pair is nearly parallel and a float normal loses its digits.

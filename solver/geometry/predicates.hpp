@@ -8,12 +8,12 @@
 // absolute η besides the relative u) and overflow (infinity or NaN is "unknown").
 #pragma once
 
-#include "solver/numeric/ranged.hpp"
-#include "solver/core/scalar.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "solver/core/scalar.hpp"
+#include "solver/numeric/ranged.hpp"
 
 namespace frustum {
 

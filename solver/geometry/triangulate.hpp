@@ -35,7 +35,8 @@ std::vector<std::array<int, 3>> ear_clip(const std::vector<P>& points, Orient or
       for (std::size_t m = 0; m < p.size() && empty; ++m) {
         if (m == k || m == prev || m == next) continue;
         const P& q = at(p[m]);
-        if (orient(at(a), at(b), q) >= 0 && orient(at(b), at(c), q) >= 0 && orient(at(c), at(a), q) >= 0)
+        if (orient(at(a), at(b), q) >= 0 && orient(at(b), at(c), q) >= 0 &&
+            orient(at(c), at(a), q) >= 0)
           empty = false;
       }
       if (!empty) continue;

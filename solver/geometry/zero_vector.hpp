@@ -6,8 +6,8 @@
 // line) round to a tiny nonzero normal, and inputs flushed to 0 give a zero one.
 #pragma once
 
-#include "solver/geometry/predicates.hpp"
 #include "solver/core/matrix.hpp"
+#include "solver/geometry/predicates.hpp"
 
 namespace frustum {
 
@@ -15,7 +15,8 @@ namespace frustum {
 // (a_y b_z + a_z b_y, a_z b_x + a_x b_z, a_x b_y + a_y b_x).
 template <typename T>
 Vec3<T> cross_permanent(const Vec3<T>& a, const Vec3<T>& b) {
-  return Vec3<T>(a.y() * b.z() + a.z() * b.y(), a.z() * b.x() + a.x() * b.z(), a.x() * b.y() + a.y() * b.x());
+  return Vec3<T>(a.y() * b.z() + a.z() * b.y(), a.z() * b.x() + a.x() * b.z(),
+                 a.x() * b.y() + a.y() * b.x());
 }
 
 // The componentwise bound of a cross product computed from operands whose magnitudes are at
@@ -42,7 +43,8 @@ struct ZeroDecision {
 // `v` computed in T with the componentwise `bound`; `exact_is_zero()` runs only when no
 // component is proven nonzero (or an input left T's normal range: `inputs_relative` false).
 template <typename T, typename ExactIsZero>
-ZeroDecision decide_zero(const Vec3<T>& v, const Vec3<T>& bound, bool inputs_relative, ExactIsZero&& exact_is_zero) {
+ZeroDecision decide_zero(const Vec3<T>& v, const Vec3<T>& bound, bool inputs_relative,
+                         ExactIsZero&& exact_is_zero) {
   if constexpr (kIsExact<T>) {
     return {is_zero_vector(v), false};
   } else {

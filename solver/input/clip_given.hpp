@@ -3,12 +3,12 @@
 // API's NDC volume when absent: [−1, 1]³, or z ∈ [0, 1] under DirectX).
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "solver/clipping/clip_box.hpp"
 #include "solver/derivation/math_text.hpp"
 #include "solver/input/given_reader.hpp"
-
-#include <string>
-#include <vector>
 
 namespace frustum::clip_given {
 
@@ -16,7 +16,8 @@ namespace frustum::clip_given {
 inline int point_dims(GivenReader& r, const std::string& key) {
   const YAML::Node& root = r.node();
   const YAML::Node n = root[key];
-  if (n.IsDefined() && n.IsSequence() && (n.size() == 2 || n.size() == 3)) return static_cast<int>(n.size());
+  if (n.IsDefined() && n.IsSequence() && (n.size() == 2 || n.size() == 3))
+    return static_cast<int>(n.size());
   if (!r.has(key)) r.numbers(key, 2);  // "missing required field"
   r.fail(key, "expected a point of 2 or 3 numbers");
 }
@@ -39,8 +40,9 @@ ClipBox<Exact, N> read_box(GivenReader& r, const std::string& key) {
   }
   for (int a = 0; a < N; ++a)
     if (exact_sign(box.hi(a) - box.lo(a)) <= 0)
-      b.fail(lo_names[a], std::string(lo_names[a]) + " must be less than " + hi_names[a] + " (got " +
-                              exact(box.lo(a)).unicode + " ≥ " + exact(box.hi(a)).unicode + ")");
+      b.fail(lo_names[a], std::string(lo_names[a]) + " must be less than " + hi_names[a] +
+                              " (got " + exact(box.lo(a)).unicode + " ≥ " +
+                              exact(box.hi(a)).unicode + ")");
   b.finish();
   return box;
 }
@@ -67,10 +69,14 @@ inline Region read_region(GivenReader& r, int dims, const std::string& points_fi
   g.dims = dims;
   g.api = api;
   if (dims == 2) {
-    if (r.has("volume")) r.fail("volume", "the " + points_field + " are 2D: give a `window` {xmin, xmax, ymin, ymax}");
+    if (r.has("volume"))
+      r.fail("volume", "the " + points_field + " are 2D: give a `window` {xmin, xmax, ymin, ymax}");
     g.window = read_box<2>(r, "window");
   } else {
-    if (r.has("window")) r.fail("window", "the " + points_field + " are 3D: give a `volume` {xmin, xmax, ymin, ymax, zmin, zmax} (default: the NDC cube)");
+    if (r.has("window"))
+      r.fail("window", "the " + points_field +
+                           " are 3D: give a `volume` {xmin, xmax, ymin, ymax, zmin, zmax} "
+                           "(default: the NDC cube)");
     g.default_volume = !r.has("volume");
     g.volume = g.default_volume ? ndc_volume<Exact>(api) : read_box<3>(r, "volume");
   }
@@ -83,8 +89,8 @@ MathText box_text(const ClipBox<Exact, N>& b) {
   MathText m;
   for (int a = 0; a < N; ++a) {
     const std::string x = axis_name(a);
-    m += math(a ? ",  " : "", a ? ",\\; " : "") + math(x + "min = ", x + "_{\\min} = ") + exact(b.lo(a)) +
-         math(",  " + x + "max = ", ",\\; " + x + "_{\\max} = ") + exact(b.hi(a));
+    m += math(a ? ",  " : "", a ? ",\\; " : "") + math(x + "min = ", x + "_{\\min} = ") +
+         exact(b.lo(a)) + math(",  " + x + "max = ", ",\\; " + x + "_{\\max} = ") + exact(b.hi(a));
   }
   return m;
 }

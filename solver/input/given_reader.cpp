@@ -1,12 +1,12 @@
 #include "solver/input/given_reader.hpp"
 
+#include <algorithm>
+#include <cctype>
+
+#include "solver/core/work_budget.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/util/expression.hpp"
 #include "solver/util/suggest.hpp"
-#include "solver/core/work_budget.hpp"
-
-#include <algorithm>
-#include <cctype>
 
 namespace frustum {
 
@@ -34,17 +34,21 @@ bool names_non_finite(const std::string& text) {
   std::string t = lower(text);
   t.erase(std::remove(t.begin(), t.end(), ' '), t.end());
   if (!t.empty() && (t[0] == '+' || t[0] == '-')) t.erase(0, 1);
-  return t == ".nan" || t == "nan" || t == ".inf" || t == "inf" || t == "infinity" ||
-         t == "∞";
+  return t == ".nan" || t == "nan" || t == ".inf" || t == "inf" || t == "infinity" || t == "∞";
 }
 
 std::string describe_node(const YAML::Node& n) {
   switch (n.Type()) {
-    case YAML::NodeType::Sequence: return "a list of " + std::to_string(n.size());
-    case YAML::NodeType::Map: return "a mapping";
-    case YAML::NodeType::Null: return "nothing";
-    case YAML::NodeType::Scalar: return quote_excerpt(n.Scalar());
-    default: return "nothing";
+    case YAML::NodeType::Sequence:
+      return "a list of " + std::to_string(n.size());
+    case YAML::NodeType::Map:
+      return "a mapping";
+    case YAML::NodeType::Null:
+      return "nothing";
+    case YAML::NodeType::Scalar:
+      return quote_excerpt(n.Scalar());
+    default:
+      return "nothing";
   }
 }
 
@@ -78,7 +82,8 @@ Exact read_exact(const YAML::Node& n, const std::string& file, const std::string
   WorkBudget budget;
   const Exact e = canonical(*r.value, budget);
   if (budget.exceeded())
-    return fail(quote_excerpt(text) + " is too complex for exact solving (simplifying it takes more than " +
+    return fail(quote_excerpt(text) +
+                " is too complex for exact solving (simplifying it takes more than " +
                 std::to_string(static_cast<long>(budget.limit())) +
                 " steps): simplify it, or give it as a decimal");
   if (!is_real_constant(e)) return fail(quote_excerpt(text) + " is not a real number");
@@ -103,11 +108,14 @@ GivenReader::GivenReader(YAML::Node node, std::string file, std::string field,
 
 GivenReader::GivenReader(YAML::Node node, std::string file, std::string field,
                          std::vector<std::string> known_fields, std::shared_ptr<ExactInputs> exact)
-    : node_(std::move(node)), file_(std::move(file)), field_(std::move(field)),
-      known_(std::move(known_fields)), exact_(std::move(exact)) {
+    : node_(std::move(node)),
+      file_(std::move(file)),
+      field_(std::move(field)),
+      known_(std::move(known_fields)),
+      exact_(std::move(exact)) {
   if (!node_.IsDefined() || node_.IsNull())
-    fail_at(node_, field_, "missing: expected a mapping of " + std::to_string(known_.size()) +
-                               " possible fields");
+    fail_at(node_, field_,
+            "missing: expected a mapping of " + std::to_string(known_.size()) + " possible fields");
   if (!node_.IsMap()) fail_at(node_, field_, "expected a mapping, got " + describe_node(node_));
 }
 
@@ -164,10 +172,12 @@ Exact GivenReader::number_at(const YAML::Node& n, Field&& field) const {
     std::string list;
     for (const std::string& a : names) list += (list.empty() ? "" : ", ") + a;
     fail_at(n, field(),
-            quote_excerpt(n.Scalar()) + " brings the irrational values in this problem's given to " +
+            quote_excerpt(n.Scalar()) +
+                " brings the irrational values in this problem's given to " +
                 std::to_string(atoms.size()) + " (" + quote_excerpt(list) + "); at most " +
                 std::to_string(kMaxGivenAtoms) +
-                " keep exact solving fast (its work doubles with each new root): give some as decimals");
+                " keep exact solving fast (its work doubles with each new root): give some as "
+                "decimals");
   }
   exact_->atoms = std::move(atoms);
   return e;
@@ -180,8 +190,8 @@ Exact GivenReader::number(std::string_view key) {
 std::vector<Exact> GivenReader::numbers(std::string_view key, std::size_t count) {
   const YAML::Node n = require(key);
   if (!n.IsSequence() || n.size() != count)
-    fail_at(n, path(key), "expected a list of " + std::to_string(count) + " numbers, got " +
-                              describe_node(n));
+    fail_at(n, path(key),
+            "expected a list of " + std::to_string(count) + " numbers, got " + describe_node(n));
   std::vector<Exact> out;
   for (std::size_t i = 0; i < count; ++i)
     out.push_back(number_at(n[i], [&] { return path(key) + "[" + std::to_string(i) + "]"; }));
@@ -193,7 +203,8 @@ std::vector<Exact> GivenReader::numbers_at(std::string_view key, std::size_t i, 
   auto f = [&] { return path(key) + "[" + std::to_string(i) + "]"; };
   const YAML::Node n = list[i];
   if (!n.IsSequence() || n.size() != count)
-    fail_at(n, f(), "expected a list of " + std::to_string(count) + " numbers, got " + describe_node(n));
+    fail_at(n, f(),
+            "expected a list of " + std::to_string(count) + " numbers, got " + describe_node(n));
   std::vector<Exact> out;
   for (std::size_t k = 0; k < count; ++k)
     out.push_back(number_at(n[k], [&] { return f() + "[" + std::to_string(k) + "]"; }));
@@ -206,9 +217,8 @@ std::vector<Vec3<Exact>> GivenReader::points(std::string_view key, std::size_t m
   if (!n.IsSequence())
     fail_at(n, path(key), "expected a list of points [x, y, z], got " + describe_node(n));
   if (n.size() < min_count || n.size() > max_count) {
-    const std::string want = min_count == max_count
-                                 ? std::to_string(min_count)
-                                 : "at least " + std::to_string(min_count);
+    const std::string want = min_count == max_count ? std::to_string(min_count)
+                                                    : "at least " + std::to_string(min_count);
     fail_at(n, path(key), "expected " + want + " points, got " + std::to_string(n.size()));
   }
   std::vector<Vec3<Exact>> out;
@@ -217,7 +227,8 @@ std::vector<Vec3<Exact>> GivenReader::points(std::string_view key, std::size_t m
     const YAML::Node p = n[i];
     if (!p.IsSequence() || p.size() != 3)
       fail_at(p, f(), "expected a point [x, y, z], got " + describe_node(p));
-    out.emplace_back(number_at(p[0], [&] { return f() + "[0]"; }), number_at(p[1], [&] { return f() + "[1]"; }),
+    out.emplace_back(number_at(p[0], [&] { return f() + "[0]"; }),
+                     number_at(p[1], [&] { return f() + "[1]"; }),
                      number_at(p[2], [&] { return f() + "[2]"; }));
   }
   return out;
@@ -238,8 +249,8 @@ std::string GivenReader::word(std::string_view key, const std::vector<std::strin
 std::vector<std::string> GivenReader::words(std::string_view key, std::size_t count) {
   const YAML::Node n = require(key);
   if (!n.IsSequence() || n.size() != count)
-    fail_at(n, path(key), "expected a list of " + std::to_string(count) + " names, got " +
-                              describe_node(n));
+    fail_at(n, path(key),
+            "expected a list of " + std::to_string(count) + " names, got " + describe_node(n));
   std::vector<std::string> out;
   for (std::size_t i = 0; i < count; ++i) {
     if (!n[i].IsScalar())
@@ -255,14 +266,17 @@ GivenReader GivenReader::child(std::string_view key, std::vector<std::string> kn
   return out;
 }
 
-std::size_t GivenReader::list_size(std::string_view key, std::size_t min_count, std::size_t max_count) {
+std::size_t GivenReader::list_size(std::string_view key, std::size_t min_count,
+                                   std::size_t max_count) {
   const YAML::Node n = require(key);
   if (!n.IsSequence()) fail_at(n, path(key), "expected a list, got " + describe_node(n));
   if (n.size() < min_count)
-    fail_at(n, path(key), "expected at least " + std::to_string(min_count) + " items, got " +
-                              std::to_string(n.size()));
+    fail_at(n, path(key),
+            "expected at least " + std::to_string(min_count) + " items, got " +
+                std::to_string(n.size()));
   if (n.size() > max_count)
-    fail_at(n, path(key), "at most " + std::to_string(max_count) + " items, got " + std::to_string(n.size()));
+    fail_at(n, path(key),
+            "at most " + std::to_string(max_count) + " items, got " + std::to_string(n.size()));
   return n.size();
 }
 
@@ -300,7 +314,10 @@ Diagnostic GivenReader::locate(const std::string& p, const std::string& message)
   YAML::Node n = node_;
   std::size_t i = 0;
   while (i < p.size()) {
-    if (p[i] == '.') { ++i; continue; }
+    if (p[i] == '.') {
+      ++i;
+      continue;
+    }
     YAML::Node next;
     if (p[i] == '[') {
       const std::size_t close = p.find(']', i);

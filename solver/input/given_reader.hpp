@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "solver/derivation/i18n.hpp"
 #include "solver/core/matrix.hpp"
+#include "solver/derivation/i18n.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

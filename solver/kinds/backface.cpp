@@ -2,12 +2,12 @@
 // p0 = (1,0,0), p1 = (1,1,1), p2 = (0,1,2), eye = (0,1,0) → n = (1, −1, 1), v = (−1, 1, 0),
 // D_f = −2: back. The sign is decided exactly, never against a float epsilon.
 #include "solver/geometry/predicates.hpp"
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/numeric/condition.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_paths.hpp"
-#include "solver/problem/registry.hpp"
-#include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -36,9 +36,7 @@ struct Backface {
     return {r.points("points", 3), r.vector<3>("eye"), c.api, left_handed_columns(c)};
   }
 
-  static std::string facing_of(const Exact& df) {
-    return facing_word(exact_sign(df));
-  }
+  static std::string facing_of(const Exact& df) { return facing_word(exact_sign(df)); }
 
   // Error carried forward: D_f from the student's normal and view vector, facing from D_f.
   static Answers carry_forward(const Given& g, const Answers& student) {
@@ -72,11 +70,13 @@ struct Backface {
     reversed_v.set("df", Value::scalar(-df));
     reversed_v.set("facing", Value::category(facing_of(-df)));
     return {{"reversed cross product",
-             g.left_handed ? "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, "
-                             "with the vertices counter-clockwise seen from the front, the front normal is "
-                             "n = e₁ × e₀."
-                           : "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the front "
-                             "normal is n = e₀ × e₁.",
+             g.left_handed
+                 ? "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, "
+                   "with the vertices counter-clockwise seen from the front, the front normal is "
+                   "n = e₁ × e₀."
+                 : "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the "
+                   "front "
+                   "normal is n = e₀ × e₁.",
              g.left_handed ? "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)"
                            : "Normal (n = e₀ × e₁, counter-clockwise = front)",
              reversed_n},
@@ -109,16 +109,19 @@ struct Backface {
     const Vec3<Exact> v = g.eye - g.points[0];
     out.set("view", Value::vector(v));
     if (steps) {
-      steps->add("View vector from p₀ to the eye", math("v = p_eye − p₀", "\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0"),
-                 math("v = ", "\\mathbf{v} = ") + vec(g.eye) + math(" − ", " - ") + vec(g.points[0]),
-                 math("v = ", "\\mathbf{v} = ") + vec(v));
+      steps->add(
+          "View vector from p₀ to the eye",
+          math("v = p_eye − p₀", "\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0"),
+          math("v = ", "\\mathbf{v} = ") + vec(g.eye) + math(" − ", " - ") + vec(g.points[0]),
+          math("v = ", "\\mathbf{v} = ") + vec(v));
       steps->yields("view");
     }
     const Exact df = canonical(v.dot(n));
     out.set("df", Value::scalar(df));
     if (steps) {
       steps->add("Discriminant", math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
-                 math("D_f = ") + vec(v) + math("·", "\\cdot") + vec(n), math("D_f = ") + exact(df, true));
+                 math("D_f = ") + vec(v) + math("·", "\\cdot") + vec(n),
+                 math("D_f = ") + exact(df, true));
       steps->yields("df");
       std::vector<Eigen::Vector3d> pts;
       for (const Vec3<Exact>& q : g.points) pts.push_back(to_double(q));
@@ -139,23 +142,27 @@ struct Backface {
     const std::string facing = facing_word(sign);
     out.set("facing", Value::category(facing));
     if (steps) {
-      const std::string why = sign > 0   ? "D_f > 0: v and n make an acute angle, so the eye sees the front."
-                              : sign < 0 ? "D_f < 0: v and n make an obtuse angle, so the eye sees the back."
-                                         : "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.";
+      const std::string why =
+          sign > 0 ? "D_f > 0: v and n make an acute angle, so the eye sees the front."
+          : sign < 0
+              ? "D_f < 0: v and n make an obtuse angle, so the eye sees the back."
+              : "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.";
       steps->add("Front or back", {}, {}, word(facing)).note = why;
       steps->yields("facing");
       if (g.left_handed && sign != 0)
-        steps->note("The right-handed reading",
-                    "Read in right-handed coordinates the same numbers describe the mirror image: its "
-                    "normal e₀ × e₁ is −n, D_f changes sign, and the eye would see the other side. The "
-                    "handedness decides the answer.");
+        steps->note(
+            "The right-handed reading",
+            "Read in right-handed coordinates the same numbers describe the mirror image: its "
+            "normal e₀ × e₁ is −n, D_f changes sign, and the eye would see the other side. The "
+            "handedness decides the answer.");
     }
     return out;
   }
   // Default generator: an integer triangle and an eye in [−8, 8]³ well off its plane; hard:
   // the eye exactly in the plane (edge-on, D_f = 0). D_f is an integer for integer input.
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
-    const std::array<IVec3, 3> t = gen_triangle(rng, GenerateOptions{o.nice, false, o.conventions}, -5, 5);
+    const std::array<IVec3, 3> t =
+        gen_triangle(rng, GenerateOptions{o.nice, false, o.conventions}, -5, 5);
     const IVec3 eye = o.hard ? iadd(t[0], iadd(iscale(rng.integer(-2, 2), isub(t[1], t[0])),
                                                iscale(rng.integer(-2, 2), isub(t[2], t[0]))))
                              : gen_ivec3(rng, -8, 8);
@@ -166,13 +173,15 @@ struct Backface {
   }
 
   static std::string ill_conditioned(const Given& g, const Answers& a) {
-    if (triangle_shape(doubles(g.points)) < kMinTriangleShape) return "the polygon is nearly degenerate";
+    if (triangle_shape(doubles(g.points)) < kMinTriangleShape)
+      return "the polygon is nearly degenerate";
     const Value* n = a.find("normal");
     const Value* v = a.find("view");
     if (n && v) {
       const double s = sine_between(n->numbers, v->numbers);
       // |cos| < kMinSine, or a zero vector (sine_between gives 0): the eye grazes the plane.
-      if (s == 0 || 1 - s * s < kMinSine * kMinSine) return "the eye is nearly in the polygon's plane";
+      if (s == 0 || 1 - s * s < kMinSine * kMinSine)
+        return "the eye is nearly in the polygon's plane";
     }
     return "";
   }

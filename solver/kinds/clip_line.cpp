@@ -4,8 +4,8 @@
 // (y < ymin), 0010 right (x > xmax), 0001 left (x < xmin); 3D adds 100000 (z > zmax) and
 // 010000 (z < zmin) in front. A point on a boundary is inside.
 #include "solver/clipping/line_clip.hpp"
-#include "solver/problem/generate.hpp"
 #include "solver/input/clip_given.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 
 namespace frustum {
@@ -14,7 +14,8 @@ namespace {
 
 struct ClipLine {
   static constexpr const char* kName = "clip_line";
-  static constexpr const char* kSummary = "Cohen–Sutherland outcodes and clipping of a segment (2D or 3D)";
+  static constexpr const char* kSummary =
+      "Cohen–Sutherland outcodes and clipping of a segment (2D or 3D)";
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::vector<Exact> p, q;
@@ -41,11 +42,12 @@ struct ClipLine {
   }
 
   static std::string bits_legend(int dims) {
-    std::string s = dims == 3 ? "6-bit codes (the 2D codes with two bits for z added), most significant first: "
-                                "100000 z > zmax, 010000 z < zmin, 001000 top (y > ymax), 000100 bottom "
-                                "(y < ymin), 000010 right (x > xmax), 000001 left (x < xmin)."
-                              : "4-bit codes, most significant first: 1000 top (y > ymax), 0100 bottom "
-                                "(y < ymin), 0010 right (x > xmax), 0001 left (x < xmin).";
+    std::string s =
+        dims == 3 ? "6-bit codes (the 2D codes with two bits for z added), most significant first: "
+                    "100000 z > zmax, 010000 z < zmin, 001000 top (y > ymax), 000100 bottom "
+                    "(y < ymin), 000010 right (x > xmax), 000001 left (x < xmin)."
+                  : "4-bit codes, most significant first: 1000 top (y > ymax), 0100 bottom "
+                    "(y < ymin), 0010 right (x > xmax), 0001 left (x < xmin).";
     return s + " A point on a boundary is inside (bit 0).";
   }
 
@@ -62,31 +64,37 @@ struct ClipLine {
     out.set("accept", Value::boolean(r.trivial_accept));
     out.set("reject", Value::boolean(r.trivial_reject));
     if (steps) {
-      steps->add(g.region.title(),
-                 {}, {}, clip_given::box_text(box))
-          .note = bits_legend(N);
+      steps->add(g.region.title(), {}, {}, clip_given::box_text(box)).note = bits_legend(N);
       const auto code = [](unsigned c) {
         const std::string bits = outcode_string(c, N);
         return math(bits, "\\mathtt{" + bits + "}");
       };
       const auto outcode_of = [&](const std::string& who, bool moved = false) {
-        return math("outcode(" + who + (moved ? "′)" : ")"), "\\operatorname{outcode}(" + who + (moved ? "')" : ")"));
+        return math("outcode(" + who + (moved ? "′)" : ")"),
+                    "\\operatorname{outcode}(" + who + (moved ? "')" : ")"));
       };
-      const MathText op_or = math(" OR ", " \\mathbin{\\mathrm{OR}} "), op_and = math(" AND ", " \\mathbin{\\mathrm{AND}} ");
-      steps->add("Outcode of p", {}, math("p = ") + vec(g.p), outcode_of("p") + math(" = ") + code(r.code_p))
+      const MathText op_or = math(" OR ", " \\mathbin{\\mathrm{OR}} "),
+                     op_and = math(" AND ", " \\mathbin{\\mathrm{AND}} ");
+      steps
+          ->add("Outcode of p", {}, math("p = ") + vec(g.p),
+                outcode_of("p") + math(" = ") + code(r.code_p))
           .note = outcode_meaning(r.code_p);
       steps->yields("outcode_p");
-      steps->add("Outcode of q", {}, math("q = ") + vec(g.q), outcode_of("q") + math(" = ") + code(r.code_q))
+      steps
+          ->add("Outcode of q", {}, math("q = ") + vec(g.q),
+                outcode_of("q") + math(" = ") + code(r.code_q))
           .note = outcode_meaning(r.code_q);
       steps->yields("outcode_q");
-      steps->add("Trivial accept? (both codes 0)", outcode_of("p") + op_or + outcode_of("q") + math(" = ") + code(0),
+      steps->add("Trivial accept? (both codes 0)",
+                 outcode_of("p") + op_or + outcode_of("q") + math(" = ") + code(0),
                  code(r.code_p) + op_or + code(r.code_q) + math(" = ") + code(r.code_p | r.code_q),
                  word(r.trivial_accept ? "yes: the whole segment is inside" : "no"));
       steps->yields("accept");
-      steps->add("Trivial reject? (a common outside bit)",
-                 outcode_of("p") + op_and + outcode_of("q") + math(" ≠ ", " \\ne ") + code(0),
-                 code(r.code_p) + op_and + code(r.code_q) + math(" = ") + code(r.code_p & r.code_q),
-                 word(r.trivial_reject ? "yes: both endpoints are outside the same boundary" : "no"));
+      steps->add(
+          "Trivial reject? (a common outside bit)",
+          outcode_of("p") + op_and + outcode_of("q") + math(" ≠ ", " \\ne ") + code(0),
+          code(r.code_p) + op_and + code(r.code_q) + math(" = ") + code(r.code_p & r.code_q),
+          word(r.trivial_reject ? "yes: both endpoints are outside the same boundary" : "no"));
       steps->yields("reject");
       // The endpoints as the loop moves them: t is measured from the endpoint being moved (a)
       // towards the other one (b).
@@ -98,25 +106,31 @@ struct ClipLine {
         const bool high = it.bit == outcode_bit(axis, true);
         const std::string x = axis_name(axis);
         const std::string bound_name = x + (high ? "max" : "min");
-        const MathText bound = math(x + "_" + (high ? "max" : "min"), x + "_{\\" + (high ? "max" : "min") + "}");
+        const MathText bound =
+            math(x + "_" + (high ? "max" : "min"), x + "_{\\" + (high ? "max" : "min") + "}");
         const std::string who = it.endpoint == 0 ? "p" : "q", other = it.endpoint == 0 ? "q" : "p";
         const V& a = ends[static_cast<std::size_t>(it.endpoint)];
         const V& b = ends[static_cast<std::size_t>(1 - it.endpoint)];
         const Exact bound_value = high ? box.hi(axis) : box.lo(axis);
         const Exact t = canonical((bound_value - a(axis)) / (b(axis) - a(axis)));
-        steps->add("Iteration " + std::to_string(++n) + ": " + who + " (" + outcode_string(it.code_before, N) +
-                       ") is outside " + bound_name + " (bit " + outcode_string(it.bit, N) + "): move it to " + x +
-                       " = " + bound_name,
-                   math("t = (", "t = \\frac{") + bound + math(" − " + who + "_" + x + ") / (" + other + "_" + x + " − " + who + "_" + x + "),  " +
-                                                                   who + "′ = " + who + " + t·(" + other + " − " + who + ")",
-                                                               " - " + who + "_" + x + "}{" + other + "_" + x + " - " + who + "_" + x +
-                                                                   "},\\; " + who + "' = " + who + " + t\\,(" + other + " - " + who + ")"),
-                   math(who + " = ") + vec(a) + math(",  " + other + " = ", ",\\; " + other + " = ") + vec(b) +
-                       math(",  ", ",\\; ") + bound + math(" = ") + exact(bound_value) + math(",  t = ", ",\\; t = ") + exact(t, true),
-                   math(who + "′ = ", who + "' = ") + vec(it.after, true) + math(",  ", ",\\; ") + outcode_of(who, true) +
-                       math(" = ") + code(it.code_after))
-            .note = "t is the fraction of the way from " + who + " to " + other + " at which the segment crosses " + x +
-                    " = " + bound_name + ".";
+        steps
+            ->add(
+                "Iteration " + std::to_string(++n) + ": " + who + " (" +
+                    outcode_string(it.code_before, N) + ") is outside " + bound_name + " (bit " +
+                    outcode_string(it.bit, N) + "): move it to " + x + " = " + bound_name,
+                math("t = (", "t = \\frac{") + bound +
+                    math(" − " + who + "_" + x + ") / (" + other + "_" + x + " − " + who + "_" + x +
+                             "),  " + who + "′ = " + who + " + t·(" + other + " − " + who + ")",
+                         " - " + who + "_" + x + "}{" + other + "_" + x + " - " + who + "_" + x +
+                             "},\\; " + who + "' = " + who + " + t\\,(" + other + " - " + who +
+                             ")"),
+                math(who + " = ") + vec(a) + math(",  " + other + " = ", ",\\; " + other + " = ") +
+                    vec(b) + math(",  ", ",\\; ") + bound + math(" = ") + exact(bound_value) +
+                    math(",  t = ", ",\\; t = ") + exact(t, true),
+                math(who + "′ = ", who + "' = ") + vec(it.after, true) + math(",  ", ",\\; ") +
+                    outcode_of(who, true) + math(" = ") + code(it.code_after))
+            .note = "t is the fraction of the way from " + who + " to " + other +
+                    " at which the segment crosses " + x + " = " + bound_name + ".";
         ends[static_cast<std::size_t>(it.endpoint)] = it.after;
       }
     }
@@ -125,17 +139,21 @@ struct ClipLine {
       for (const V& e : *r.clipped) rows.emplace_back(e.data(), e.data() + N);
       out.set("clipped", Value::matrix(rows));
       if (steps) {
-        steps->add("Clipped segment", {}, {},
-                   math("p′ = ", "p' = ") + vec((*r.clipped)[0], true) + math(",  q′ = ", ",\\; q' = ") + vec((*r.clipped)[1], true))
-            .note = r.trivial_accept ? std::string("Trivially accepted: the segment is unchanged.") : "Both codes are now " + outcode_string(0, N) + ": accept.";
+        steps
+            ->add("Clipped segment", {}, {},
+                  math("p′ = ", "p' = ") + vec((*r.clipped)[0], true) +
+                      math(",  q′ = ", ",\\; q' = ") + vec((*r.clipped)[1], true))
+            .note = r.trivial_accept ? std::string("Trivially accepted: the segment is unchanged.")
+                                     : "Both codes are now " + outcode_string(0, N) + ": accept.";
         steps->yields("clipped");
       }
     } else {
       out.set("clipped", Value::null());
       if (steps) {
-        steps->add("Nothing is visible")
-            .note = r.trivial_reject ? "Trivially rejected: the segment lies outside one boundary."
-                                     : "After clipping, both endpoints share an outside bit: the segment misses the region.";
+        steps->add("Nothing is visible").note =
+            r.trivial_reject ? "Trivially rejected: the segment lies outside one boundary."
+                             : "After clipping, both endpoints share an outside bit: the segment "
+                               "misses the region.";
         steps->yields("clipped");
       }
     }
@@ -143,7 +161,8 @@ struct ClipLine {
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
-    return g.region.dims == 2 ? solve_in<2>(g, g.region.window, steps) : solve_in<3>(g, g.region.volume, steps);
+    return g.region.dims == 2 ? solve_in<2>(g, g.region.window, steps)
+                              : solve_in<3>(g, g.region.volume, steps);
   }
   // Default generator: three times in four a 2D segment with integer ends around an integer
   // window, else a 3D segment (halves) against the NDC cube; hard: a segment along the

@@ -4,8 +4,8 @@
 // plane is inside. The answer is the vertex list after the last stage, or null when fewer
 // than three vertices are left.
 #include "solver/clipping/polygon_clip.hpp"
-#include "solver/problem/generate.hpp"
 #include "solver/input/clip_given.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 
 namespace frustum {
@@ -14,7 +14,8 @@ namespace {
 
 struct ClipPolygon {
   static constexpr const char* kName = "clip_polygon";
-  static constexpr const char* kSummary = "Sutherland–Hodgman clipping of a polygon (2D window or 3D volume)";
+  static constexpr const char* kSummary =
+      "Sutherland–Hodgman clipping of a polygon (2D window or 3D volume)";
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr std::size_t kMaxVertices = 1000;
   struct Given {
@@ -40,7 +41,8 @@ struct ClipPolygon {
   static MathText vertex_list(const std::vector<Eigen::Matrix<Exact, N, 1>>& vs) {
     if (vs.empty()) return word("no vertices");
     MathText m;
-    for (std::size_t i = 0; i < vs.size(); ++i) m += math(i ? ", " : "", i ? ",\\; " : "") + vec(vs[i]);
+    for (std::size_t i = 0; i < vs.size(); ++i)
+      m += math(i ? ", " : "", i ? ",\\; " : "") + vec(vs[i]);
     return m;
   }
 
@@ -51,10 +53,14 @@ struct ClipPolygon {
     for (const auto& p : g.points) poly.push_back(Eigen::Map<const V>(p.data()));
     const PolygonClipResult<V> r = clip_polygon_box(poly, box);
     if (steps) {
-      steps->add(g.region.title(), {}, word("polygon") + math(": ", "\\colon ") + vertex_list(poly),
-                 clip_given::box_text(box))
-          .note = "Sutherland–Hodgman: clip against one boundary at a time; for each edge S → E keep E when it is "
-                  "inside (on the boundary counts as inside) and add the intersection where the edge crosses.";
+      steps
+          ->add(g.region.title(), {}, word("polygon") + math(": ", "\\colon ") + vertex_list(poly),
+                clip_given::box_text(box))
+          .note =
+          "Sutherland–Hodgman: clip against one boundary at a time; for each edge S → E keep E "
+          "when it is "
+          "inside (on the boundary counts as inside) and add the intersection where the edge "
+          "crosses.";
       for (const auto& s : r.stages)
         steps->add("Clip against " + s.plane, {}, {}, vertex_list(s.vertices));
     }
@@ -62,7 +68,8 @@ struct ClipPolygon {
     if (r.empty()) {
       out.set("clipped", Value::null());
       if (steps) {
-        steps->add("Nothing is left").note = "Fewer than three vertices remain: the polygon lies outside the region.";
+        steps->add("Nothing is left").note =
+            "Fewer than three vertices remain: the polygon lies outside the region.";
         steps->yields("clipped");
       }
       return out;
@@ -75,7 +82,8 @@ struct ClipPolygon {
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
-    return g.region.dims == 2 ? solve_in<2>(g, g.region.window, steps) : solve_in<3>(g, g.region.volume, steps);
+    return g.region.dims == 2 ? solve_in<2>(g, g.region.window, steps)
+                              : solve_in<3>(g, g.region.volume, steps);
   }
   // Default generator: an integer triangle or rectangle overlapping an integer window (drawn
   // again when wholly outside); hard: vertices on the window's edges.
@@ -84,7 +92,8 @@ struct ClipPolygon {
     const std::int64_t ymin = rng.integer(0, 2), ymax = ymin + rng.integer(3, 6);
     std::vector<std::vector<std::int64_t>> pts;
     if (o.hard) {
-      pts = {{xmin, rng.integer(ymin - 2, ymax + 2)}, {rng.integer(xmin + 1, xmax + 3), ymin},
+      pts = {{xmin, rng.integer(ymin - 2, ymax + 2)},
+             {rng.integer(xmin + 1, xmax + 3), ymin},
              {xmax, rng.integer(ymin + 1, ymax + 3)}};
     } else if (rng.chance(1, 3)) {
       const std::int64_t x0 = rng.integer(xmin - 3, xmax), y0 = rng.integer(ymin - 3, ymax);
@@ -93,7 +102,8 @@ struct ClipPolygon {
     } else {
       for (;;) {
         pts.clear();
-        for (int i = 0; i < 3; ++i) pts.push_back({rng.integer(xmin - 4, xmax + 4), rng.integer(ymin - 4, ymax + 4)});
+        for (int i = 0; i < 3; ++i)
+          pts.push_back({rng.integer(xmin - 4, xmax + 4), rng.integer(ymin - 4, ymax + 4)});
         const std::int64_t area2 = (pts[1][0] - pts[0][0]) * (pts[2][1] - pts[0][1]) -
                                    (pts[1][1] - pts[0][1]) * (pts[2][0] - pts[0][0]);
         if (area2 != 0) break;

@@ -2,17 +2,17 @@
 // coordinates, which are left-handed (seed 001's warning), so its front normal is AC × AB:
 // A(0,0,6), B(3,0,9), C(0,3,9) → n = (9, 9, −9), n̂ = (1/√3, 1/√3, −1/√3), x + y − z = −6,
 // and the pixel (1, 1) has z = 8.
+#include <algorithm>
+
 #include "solver/geometry/predicates.hpp"
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/numeric/condition.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_paths.hpp"
-#include "solver/problem/registry.hpp"
-#include "solver/numeric/condition.hpp"
-#include "solver/util/exact_format.hpp"
 #include "solver/util/diagnostic.hpp"
-
-#include <algorithm>
+#include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
@@ -20,7 +20,8 @@ namespace {
 
 struct DepthAtPixel {
   static constexpr const char* kName = "depth_at_pixel";
-  static constexpr const char* kSummary = "z of a pixel inside a projected triangle by the plane method";
+  static constexpr const char* kSummary =
+      "z of a pixel inside a projected triangle by the plane method";
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::array<Vec3<Exact>, 3> triangle;
@@ -74,7 +75,8 @@ struct DepthAtPixel {
     std::optional<Vec3<Exact>> n;
     if (const auto v = carried(student, "normal", 3)) n = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
     if (n) out.set("unit_normal", Value::vector(unit(*n)));
-    if (const auto v = carried(student, "unit_normal", 3)) n = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
+    if (const auto v = carried(student, "unit_normal", 3))
+      n = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
     std::optional<std::vector<Exact>> plane;
     if (n) {
       const std::array<Exact, 4> p = plane_through_a(g, *n);
@@ -89,27 +91,33 @@ struct DepthAtPixel {
 
   static std::vector<Misconception> misconceptions(const Given& g) {
     std::vector<Misconception> out;
-    const Vec3<Exact> n = named_edge(g.order.first, g.triangle).cross(named_edge(g.order.second, g.triangle));
+    const Vec3<Exact> n =
+        named_edge(g.order.first, g.triangle).cross(named_edge(g.order.second, g.triangle));
     Answers reversed;
     reversed.set("normal", Value::vector(Vec3<Exact>(-n)));
     reversed.set("unit_normal", Value::vector(unit(Vec3<Exact>(-n))));
     out.push_back({"reversed cross product",
-                   "You took " + g.order.second + " × " + g.order.first + ". The projection coordinates are "
-                   "left-handed, so the front normal here is " + g.order.first + " × " + g.order.second + ".",
+                   "You took " + g.order.second + " × " + g.order.first +
+                       ". The projection coordinates are "
+                       "left-handed, so the front normal here is " +
+                       g.order.first + " × " + g.order.second + ".",
                    "Normal", reversed});
     Answers unnormalized;
     unnormalized.set("unit_normal", Value::vector(n));
-    out.push_back({"unnormalised normal", "That is n itself: a unit normal is n divided by its length ‖n‖.",
-                   "Unit normal", unnormalized});
+    out.push_back({"unnormalised normal",
+                   "That is n itself: a unit normal is n divided by its length ‖n‖.", "Unit normal",
+                   unnormalized});
     const Vec3<Exact> u = unit(n);
     Answers origin;
     const std::array<Exact, 4> p0 = paper_plane(u, 0);
     origin.set("plane", plane_answer(p0));
-    if (const auto z = z_on(g, std::vector<Exact>(p0.begin(), p0.end()))) origin.set("z", Value::scalar(*z));
+    if (const auto z = z_on(g, std::vector<Exact>(p0.begin(), p0.end())))
+      origin.set("z", Value::scalar(*z));
     out.push_back({"plane through the origin",
                    "Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
                    "Plane through A with normal n̂", origin});
-    if (auto m = constant_sign_mistake(u, canonical(u.dot(g.triangle[0])), "A", "Plane through A with normal n̂")) {
+    if (auto m = constant_sign_mistake(u, canonical(u.dot(g.triangle[0])), "A",
+                                       "Plane through A with normal n̂")) {
       const Value* plane = m->answers.find("plane");
       if (const auto z = z_on(g, plane->exact)) m->answers.set("z", Value::scalar(*z));
       out.push_back(std::move(*m));
@@ -138,16 +146,18 @@ struct DepthAtPixel {
 
   static Answers solve(const Given& g, Derivation* steps) {
     if (steps)
-      steps->note("Projection coordinates are left-handed",
-                  g.order_given
-                      ? "Mind the order of the cross product; this problem uses " +
-                            g.order.first + " × " + g.order.second + "."
-                  : g.course_left_handed
-                      ? "Mind the order of the cross product: projection coordinates (x, y on the screen, z the "
-                        "depth away from the eye) are left-handed, as this course's eye space is, so the front "
-                        "normal of a triangle ABC is AC × AB (the order used by default)."
-                      : "Mind the order of the cross product: in a left-handed frame the front normal of a "
-                        "triangle ABC is AC × AB (the order used by default).");
+      steps->note(
+          "Projection coordinates are left-handed",
+          g.order_given ? "Mind the order of the cross product; this problem uses " +
+                              g.order.first + " × " + g.order.second + "."
+          : g.course_left_handed
+              ? "Mind the order of the cross product: projection coordinates (x, y on the screen, "
+                "z the "
+                "depth away from the eye) are left-handed, as this course's eye space is, so the "
+                "front "
+                "normal of a triangle ABC is AC × AB (the order used by default)."
+              : "Mind the order of the cross product: in a left-handed frame the front normal of a "
+                "triangle ABC is AC × AB (the order used by default).");
     const Vec3<Exact> n = cross_normal_with_steps(g.triangle, g.order, "triangle", steps);
     if (steps) steps->yields("normal");
     Answers out;
@@ -160,10 +170,10 @@ struct DepthAtPixel {
     const Value pv = plane_answer(plane);
     out.set("plane", pv);
     if (steps) {
-      steps->add("Plane through A with normal n̂",
-                 math("n̂·(p − A) = 0", "\\hat{\\mathbf{n}}\\cdot(\\mathbf{p} - \\overrightarrow{OA}) = 0"),
-                 vec(u) + math("·", "\\cdot") + offset_point(A) + math(" = 0"),
-                 pv.display);
+      steps->add(
+          "Plane through A with normal n̂",
+          math("n̂·(p − A) = 0", "\\hat{\\mathbf{n}}\\cdot(\\mathbf{p} - \\overrightarrow{OA}) = 0"),
+          vec(u) + math("·", "\\cdot") + offset_point(A) + math(" = 0"), pv.display);
       steps->yields("plane");
     }
     const Exact& a = plane[0];
@@ -173,17 +183,22 @@ struct DepthAtPixel {
     const Exact z = canonical((plane[3] - a * g.pixel(0) - b * g.pixel(1)) / c);
     out.set("z", Value::scalar(z));
     if (steps) {
-      steps->add("Depth at the pixel", math("z = (d − a·xₛ − b·yₛ) / c", "z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
+      steps->add("Depth at the pixel",
+                 math("z = (d − a·xₛ − b·yₛ) / c", "z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
                  linear_equation({{a * g.pixel(0), ""}, {b * g.pixel(1), ""}, {c, "z"}}, plane[3]),
                  math("z = ", "z_S = ") + exact(z, true));
       steps->yields("z");
-      const DepthCondition cond = depth_condition(to_double(g.triangle[0]), to_double(g.triangle[1]),
-                                                  to_double(g.triangle[2]), to_double(g.pixel));
+      const DepthCondition cond =
+          depth_condition(to_double(g.triangle[0]), to_double(g.triangle[1]),
+                          to_double(g.triangle[2]), to_double(g.pixel));
       if (cond.kappa_z > kIllConditioned)
         steps->warn("Nearly edge-on triangle",
-                    "c is small beside the terms it is computed from (κ_c ≈ " + format_approx(cond.kappa_c) +
-                        "), so z = (d − a·xₛ − b·yₛ)/c is ill-conditioned (" + digits_sentence(cond.kappa_z) +
-                        "). Computed in floating point with fewer than half its digits left, z is better found by "
+                    "c is small beside the terms it is computed from (κ_c ≈ " +
+                        format_approx(cond.kappa_c) +
+                        "), so z = (d − a·xₛ − b·yₛ)/c is ill-conditioned (" +
+                        digits_sentence(cond.kappa_z) +
+                        "). Computed in floating point with fewer than half its digits left, z is "
+                        "better found by "
                         "barycentric interpolation z = Σ λᵢ zᵢ.");
     }
     // Inside the closed triangle: the three edge orientations agree (zero = on an edge).
@@ -193,15 +208,20 @@ struct DepthAtPixel {
     const bool inside = inside_closed_triangle(s0, s1, s2);
     out.set("inside", Value::boolean(inside));
     if (steps) {
-      const auto sign_text = [](int s) { return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0"); };
-      steps->add("Is the pixel inside the projected triangle?",
-                 math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",
-                      "\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, y_S),\\; "
-                      "\\operatorname{sign} E_{CA}(x_S, y_S)"),
-                 sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
-                 word(inside ? "inside" : "outside"))
-          .note = inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."
-                         : "The signs differ, so the pixel is outside; the plane still gives its z.";
+      const auto sign_text = [](int s) {
+        return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0");
+      };
+      steps
+          ->add("Is the pixel inside the projected triangle?",
+                math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",
+                     "\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, "
+                     "y_S),\\; "
+                     "\\operatorname{sign} E_{CA}(x_S, y_S)"),
+                sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
+                word(inside ? "inside" : "outside"))
+          .note =
+          inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."
+                 : "The signs differ, so the pixel is outside; the plane still gives its z.";
       steps->yields("inside");
     }
     return out;
@@ -227,9 +247,11 @@ struct DepthAtPixel {
       const auto [y_lo, y_hi] = std::minmax({t[0][1], t[1][1], t[2][1]});
       for (std::int64_t x = x_lo; x <= x_hi; ++x)
         for (std::int64_t y = y_lo; y <= y_hi; ++y) {
-          const int s0 = orient(t[0], t[1], x, y), s1 = orient(t[1], t[2], x, y), s2 = orient(t[2], t[0], x, y);
+          const int s0 = orient(t[0], t[1], x, y), s1 = orient(t[1], t[2], x, y),
+                    s2 = orient(t[2], t[0], x, y);
           const bool strict = (s0 > 0 && s1 > 0 && s2 > 0) || (s0 < 0 && s1 < 0 && s2 < 0);
-          const bool edge = !strict && (s0 * s1 >= 0 && s1 * s2 >= 0 && s0 * s2 >= 0) && (s0 || s1 || s2);
+          const bool edge =
+              !strict && (s0 * s1 >= 0 && s1 * s2 >= 0 && s0 * s2 >= 0) && (s0 || s1 || s2);
           if (o.hard ? edge : strict) pixels.emplace_back(x, y);
         }
       if (pixels.empty()) continue;
@@ -248,7 +270,8 @@ struct DepthAtPixel {
     for (const Vec3<Exact>& v : g.triangle) xy.push_back({to_double(v(0)), to_double(v(1))});
     if (triangle_shape(xy) < kMinTriangleShape) return "the triangle is nearly edge-on";
     for (int i = 0; i < 3; ++i)
-      if (orient2d(g.triangle[i], g.triangle[(i + 1) % 3], g.pixel) == 0) return "the pixel is on an edge";
+      if (orient2d(g.triangle[i], g.triangle[(i + 1) % 3], g.pixel) == 0)
+        return "the pixel is on an edge";
     return "";
   }
 };

@@ -1,14 +1,14 @@
 // seeds 001, 003: the depth-sort (painter's) algorithm — centroids, depths, the back-to-front
 // order — and the pairs where it fails: cyclic overlap (三すくみ), interpenetration (貫通) and
 // concave polygons, decided exactly from the geometry over each pair's overlap on screen.
-#include "solver/problem/generate.hpp"
+#include <fmt/format.h>
+
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/depth_order.hpp"
 #include "solver/visibility/drawable.hpp"
-
-#include <fmt/format.h>
 
 namespace frustum {
 
@@ -16,7 +16,8 @@ namespace {
 
 struct DepthSort {
   static constexpr const char* kName = "depth_sort";
-  static constexpr const char* kSummary = "painter's algorithm: centroid order back to front, and its conflicts";
+  static constexpr const char* kSummary =
+      "painter's algorithm: centroid order back to front, and its conflicts";
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::vector<Polygon3<Exact>> polygons;
@@ -55,18 +56,22 @@ struct DepthSort {
       wrap["points"] = item;
       GivenReader one(wrap, r.file(), fmt::format("polygons[{}]", k), {"points"});
       if (!item.IsSequence() || item.size() < 3)
-        throw InputError(r.locate(fmt::format("polygons[{}]", k), "expected a polygon: a list of at least 3 points [x, y, z]"));
+        throw InputError(r.locate(fmt::format("polygons[{}]", k),
+                                  "expected a polygon: a list of at least 3 points [x, y, z]"));
       try {
         g.polygons.push_back(one.points("points", 3));
       } catch (const InputError& e) {
         Diagnostic d = e.diagnostic();
         const std::string prefix = fmt::format("polygons[{}].points", k);
-        if (d.field.rfind(prefix, 0) == 0) d.field = fmt::format("polygons[{}]", k) + d.field.substr(prefix.size());
+        if (d.field.rfind(prefix, 0) == 0)
+          d.field = fmt::format("polygons[{}]", k) + d.field.substr(prefix.size());
         throw InputError(r.locate(d.field, d.message));
       }
     }
-    if (r.has("eye")) g.viewer.eye = r.vector<3>("eye");
-    else g.viewer.view_direction = r.vector<3>("view_direction");
+    if (r.has("eye"))
+      g.viewer.eye = r.vector<3>("eye");
+    else
+      g.viewer.view_direction = r.vector<3>("view_direction");
     return g;
   }
 
@@ -96,57 +101,79 @@ struct DepthSort {
     const MathText sep = math(",  ", ",\\; ");
     MathText lines;
     for (std::size_t k = 0; k < n; ++k)
-      lines += (k ? sep : MathText{}) + math(fmt::format("g{} = ", k), fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
+      lines += (k ? sep : MathText{}) +
+               math(fmt::format("g{} = ", k), fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
                vec(res.centroids[k]);
-    steps->add("Centroids", math("g = (p₀ + p₁ + ⋯ + p_{n−1}) / n", "\\mathbf{g} = \\frac{1}{n}(\\mathbf{p}_0 + \\cdots + \\mathbf{p}_{n-1})"),
+    steps->add("Centroids",
+               math("g = (p₀ + p₁ + ⋯ + p_{n−1}) / n",
+                    "\\mathbf{g} = \\frac{1}{n}(\\mathbf{p}_0 + \\cdots + \\mathbf{p}_{n-1})"),
                {}, lines);
     steps->yields("centroids");
     MathText depths;
     for (std::size_t k = 0; k < n; ++k)
-      depths += (k ? sep : MathText{}) + math(fmt::format("depth{} = ", k), fmt::format("\\text{{depth}}_{{{}}} = ", k)) +
+      depths += (k ? sep : MathText{}) +
+                math(fmt::format("depth{} = ", k), fmt::format("\\text{{depth}}_{{{}}} = ", k)) +
                 exact(res.depths[k], true);
     if (g.viewer.eye)
-      steps->add("Depth: distance from the eye", math("depth = ‖g − p_eye‖", "\\text{depth} = \\lVert\\mathbf{g} - \\mathbf{p}_{\\text{eye}}\\rVert"),
-                 math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(*g.viewer.eye), depths)
+      steps
+          ->add("Depth: distance from the eye",
+                math("depth = ‖g − p_eye‖",
+                     "\\text{depth} = \\lVert\\mathbf{g} - \\mathbf{p}_{\\text{eye}}\\rVert"),
+                math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(*g.viewer.eye), depths)
           .note = "Larger depth = farther from the eye.";
     else
-      steps->add("Depth along the view direction", math("depth = g·v̂", "\\text{depth} = \\mathbf{g}\\cdot\\hat{\\mathbf{v}}"),
-                 math("v = ", "\\mathbf{v} = ") + vec(*g.viewer.view_direction), depths)
-          .note = "v is the direction the viewer looks (into the scene), so larger depth = farther "
-                  "(with v = (0, 0, −1), OpenGL's default view, depth = −z).";
+      steps
+          ->add("Depth along the view direction",
+                math("depth = g·v̂", "\\text{depth} = \\mathbf{g}\\cdot\\hat{\\mathbf{v}}"),
+                math("v = ", "\\mathbf{v} = ") + vec(*g.viewer.view_direction), depths)
+          .note =
+          "v is the direction the viewer looks (into the scene), so larger depth = farther "
+          "(with v = (0, 0, −1), OpenGL's default view, depth = −z).";
     steps->yields("depths");
     MathText seq;
-    for (const std::string& k : order) seq += (seq.empty() ? MathText{} : math(" → ", " \\to ")) + word(k);
-    steps->add("Draw back to front (farthest centroid first)", {}, {}, seq)
-        .note = "Equal depths keep the listed order.";
+    for (const std::string& k : order)
+      seq += (seq.empty() ? MathText{} : math(" → ", " \\to ")) + word(k);
+    steps->add("Draw back to front (farthest centroid first)", {}, {}, seq).note =
+        "Equal depths keep the listed order.";
     steps->yields("order");
 
     std::string pairs;
     for (const PairReport& p : res.overlapping) {
-      const std::string rel = p.order == PairOrder::FirstBehind    ? fmt::format("{} is behind {}", p.i, p.j)
-                              : p.order == PairOrder::SecondBehind ? fmt::format("{} is behind {}", p.j, p.i)
-                              : p.order == PairOrder::Interpenetrating ? std::string("nearer one changes: they interpenetrate")
-                              : p.order == PairOrder::WrapsAround      ? std::string("nearer one differs between parts: one wraps around the other")
-                                                                       : std::string("depths are equal (coplanar)");
-      pairs += fmt::format("\n{}: overlap on screen; over the overlap {}; plane tests: {} {} "
-                           "the plane of {}, {} {} the plane of {}{}",
-                           p.name(), rel, p.i,
-                           p.planes.i_behind_plane_j ? "entirely behind" : p.planes.i_front_plane_j ? "entirely in front of" : "on both sides of",
-                           p.j, p.j,
-                           p.planes.j_behind_plane_i ? "entirely behind" : p.planes.j_front_plane_i ? "entirely in front of" : "on both sides of",
-                           p.i, p.conflict ? " — CONFLICT: " + p.reason : " — the centroid order is right");
+      const std::string rel =
+          p.order == PairOrder::FirstBehind    ? fmt::format("{} is behind {}", p.i, p.j)
+          : p.order == PairOrder::SecondBehind ? fmt::format("{} is behind {}", p.j, p.i)
+          : p.order == PairOrder::Interpenetrating
+              ? std::string("nearer one changes: they interpenetrate")
+          : p.order == PairOrder::WrapsAround
+              ? std::string("nearer one differs between parts: one wraps around the other")
+              : std::string("depths are equal (coplanar)");
+      pairs += fmt::format(
+          "\n{}: overlap on screen; over the overlap {}; plane tests: {} {} "
+          "the plane of {}, {} {} the plane of {}{}",
+          p.name(), rel, p.i,
+          p.planes.i_behind_plane_j  ? "entirely behind"
+          : p.planes.i_front_plane_j ? "entirely in front of"
+                                     : "on both sides of",
+          p.j, p.j,
+          p.planes.j_behind_plane_i  ? "entirely behind"
+          : p.planes.j_front_plane_i ? "entirely in front of"
+                                     : "on both sides of",
+          p.i, p.conflict ? " — CONFLICT: " + p.reason : " — the centroid order is right");
     }
     MathText conflicts = word(res.conflicts.empty() ? "no conflicts" : "conflicts");
     for (std::size_t k = 0; k < res.conflicts.size(); ++k)
       conflicts += (k ? sep : math(": ", "\\colon ")) + word(res.conflicts[k]);
     Step& s = steps->add("Check each overlapping pair (Newell)", {}, {}, conflicts);
-    s.note = "Overlap is decided exactly by the " + res.projection +
-             " (each polygon cut into triangles on screen). Over each overlapping piece the depths "
-             "of the two planes are compared at the piece's corners (depth is affine there), which "
-             "gives the true order; Newell's plane tests are shown beside it. A pair conflicts when "
-             "the centroid order is wrong, they interpenetrate, one wraps around the other, or they "
-             "lie on a cycle (polygons have size, so one centroid cannot order them)." +
-             (res.overlapping.empty() ? std::string("\nNo two polygons overlap on screen: any order is right.") : pairs);
+    s.note =
+        "Overlap is decided exactly by the " + res.projection +
+        " (each polygon cut into triangles on screen). Over each overlapping piece the depths "
+        "of the two planes are compared at the piece's corners (depth is affine there), which "
+        "gives the true order; Newell's plane tests are shown beside it. A pair conflicts when "
+        "the centroid order is wrong, they interpenetrate, one wraps around the other, or they "
+        "lie on a cycle (polygons have size, so one centroid cannot order them)." +
+        (res.overlapping.empty()
+             ? std::string("\nNo two polygons overlap on screen: any order is right.")
+             : pairs);
     if (!res.edge_on.empty()) {
       std::string e;
       for (int k : res.edge_on) e += (e.empty() ? "" : ", ") + std::to_string(k);
@@ -160,7 +187,8 @@ struct DepthSort {
   // over the same area (interpenetrating: the centroid order cannot be right everywhere).
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
     YAML::Node polygons(YAML::NodeType::Sequence);
-    auto quad = [&](std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1, std::int64_t z0, std::int64_t z1) {
+    auto quad = [&](std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1,
+                    std::int64_t z0, std::int64_t z1) {
       polygons.push_back(gen_rows({{x0, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z0}}));
     };
     if (o.hard) {
@@ -182,8 +210,10 @@ struct DepthSort {
     polygons.SetStyle(YAML::EmitterStyle::Flow);
     YAML::Node g;
     g["polygons"] = polygons;
-    if (rng.chance(1, 3)) g["eye"] = gen_list({0, 0, 0});
-    else g["view_direction"] = gen_list({0, 0, -1});
+    if (rng.chance(1, 3))
+      g["eye"] = gen_list({0, 0, 0});
+    else
+      g["view_direction"] = gen_list({0, 0, -1});
     return g;
   }
 
@@ -192,7 +222,8 @@ struct DepthSort {
     if (!d) return "";
     for (std::size_t i = 0; i < d->numbers.size(); ++i)
       for (std::size_t j = i + 1; j < d->numbers.size(); ++j)
-        if (d->numbers[i] == d->numbers[j]) return "two centroids at the same depth (the order is ambiguous)";
+        if (d->numbers[i] == d->numbers[j])
+          return "two centroids at the same depth (the order is ambiguous)";
     return "";
   }
 };

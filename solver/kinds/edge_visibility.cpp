@@ -2,22 +2,22 @@
 // D_f = (p_eye − p_i)·n; each edge is visible (front–front), silhouette (front–back, 輪郭線)
 // or hidden (back–back). Back-face culling alone removes every hidden surface only for a
 // single closed convex polyhedron (the seed's (a)–(d) question).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <set>
+
 #include "solver/geometry/polygon_normal.hpp"
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
-#include "solver/steps/kind_steps.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/kind_steps.hpp"
 #include "solver/steps/scene_reader.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/viewing/transforms.hpp"
 #include "solver/visibility/drawable.hpp"
 #include "solver/visibility/edge_classes.hpp"
-
-#include <fmt/format.h>
-
-#include <algorithm>
-#include <set>
 
 namespace frustum {
 
@@ -65,7 +65,8 @@ struct EdgeVisibility {
       const std::vector<Exact> v = s.numbers(k, 3);
       t = {"translate " + vec(v).unicode, translate(v)};
     } else if (k == "scale") {
-      const std::vector<Exact> v = s.is_list(k) ? s.numbers(k, 3) : std::vector<Exact>(3, s.number(k));
+      const std::vector<Exact> v =
+          s.is_list(k) ? s.numbers(k, 3) : std::vector<Exact>(3, s.number(k));
       t = {"scale " + vec(v).unicode, scale(v)};
     } else if (k == "rotate_x" || k == "rotate_y" || k == "rotate_z") {
       const Exact a = read_angle(s, k, c.angles);
@@ -101,7 +102,8 @@ struct EdgeVisibility {
     if (r.has("transform")) {
       const std::size_t n = r.list_size("transform");
       for (std::size_t i = 0; i < n; ++i) {
-        GivenReader s = r.item("transform", i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate"});
+        GivenReader s = r.item(
+            "transform", i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate"});
         g.transform.push_back(read_step(s, c));
       }
     }
@@ -129,7 +131,9 @@ struct EdgeVisibility {
     MatX<Exact> m = MatX<Exact>::Identity(4, 4);
     for (const auto& [title, a] : g.transform) m = canonical(MatX<Exact>(a * m));
     const int det = filtered_sign(canonical(m.topLeftCorner(3, 3).determinant()));
-    if (det == 0) throw DomainError("transform", "the transform flattens space (det = 0): the solid has no volume");
+    if (det == 0)
+      throw DomainError("transform",
+                        "the transform flattens space (det = 0): the solid has no volume");
     for (Vec3<Exact>& v : mesh.vertices) {
       const std::vector<Exact> p = transform_point(m, std::vector<Exact>{v(0), v(1), v(2)});
       v = Vec3<Exact>(canonical(p[0]), canonical(p[1]), canonical(p[2]));
@@ -143,12 +147,14 @@ struct EdgeVisibility {
         product = fmt::format("A{}", i + 1) + (i ? "·" : "") + product;
         product_latex = fmt::format("A_{{{}}}", i + 1) + product_latex;
       }
-      Step& s = steps->add("Transform the solid (first step applied first)", math("M = " + product, "M = " + product_latex),
-                           {}, math("M = ") + matrix_text(m));
+      Step& s = steps->add("Transform the solid (first step applied first)",
+                           math("M = " + product, "M = " + product_latex), {},
+                           math("M = ") + matrix_text(m));
       s.note = order + ". Every vertex moves by P′ = M·P; faces keep their vertex lists.";
       if (det < 0)
-        s.note += " det M < 0 mirrors the solid, so every face's vertex order is reversed to stay "
-                  "counter-clockwise seen from outside.";
+        s.note +=
+            " det M < 0 mirrors the solid, so every face's vertex order is reversed to stay "
+            "counter-clockwise seen from outside.";
     }
     return mesh;
   }
@@ -164,20 +170,27 @@ struct EdgeVisibility {
     const Mesh mesh = transformed(g, steps);
     for (std::size_t f = 0; f < mesh.faces.size(); ++f)
       if (g.solid.empty() && analyse_polygon_degenerate(mesh, f))
-        throw DomainError(fmt::format("mesh.faces[{}]", f),
-                          "the face is degenerate: its vertices are collinear, so it has no normal");
+        throw DomainError(
+            fmt::format("mesh.faces[{}]", f),
+            "the face is degenerate: its vertices are collinear, so it has no normal");
     const MeshCheck check = check_mesh(mesh);
     if (!check.closed || !check.oriented)
-      throw DomainError(g.field, check.problem + " — front/back faces of a closed, consistently "
-                                                 "oriented polyhedron are needed to classify its edges");
+      throw DomainError(g.field, check.problem +
+                                     " — front/back faces of a closed, consistently "
+                                     "oriented polyhedron are needed to classify its edges");
     if (steps)
-      steps->add("Closed and consistently oriented", math("V − E + F", "V - E + F"), {},
-                 math(fmt::format("{} − {} + {} = {}", mesh.vertices.size(), check.edges.size(), mesh.faces.size(),
-                                  static_cast<long>(mesh.vertices.size()) - static_cast<long>(check.edges.size()) +
-                                      static_cast<long>(mesh.faces.size())),
-                      fmt::format("{} - {} + {} = {}", mesh.vertices.size(), check.edges.size(), mesh.faces.size(),
-                                  static_cast<long>(mesh.vertices.size()) - static_cast<long>(check.edges.size()) +
-                                      static_cast<long>(mesh.faces.size()))))
+      steps
+          ->add("Closed and consistently oriented", math("V − E + F", "V - E + F"), {},
+                math(fmt::format("{} − {} + {} = {}", mesh.vertices.size(), check.edges.size(),
+                                 mesh.faces.size(),
+                                 static_cast<long>(mesh.vertices.size()) -
+                                     static_cast<long>(check.edges.size()) +
+                                     static_cast<long>(mesh.faces.size())),
+                     fmt::format("{} - {} + {} = {}", mesh.vertices.size(), check.edges.size(),
+                                 mesh.faces.size(),
+                                 static_cast<long>(mesh.vertices.size()) -
+                                     static_cast<long>(check.edges.size()) +
+                                     static_cast<long>(mesh.faces.size()))))
           .note = "Every edge joins exactly two faces, which walk it in opposite directions.";
 
     // Front or back per face (seed 003).
@@ -197,20 +210,30 @@ struct EdgeVisibility {
     }
     out.set("faces", Value::word_map(faces));
     if (steps) {
-      Step& s = steps->add("Front or back per face",
-                           math("D_f = (p_eye − p_i)·n", "D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
-                           math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
-                           counts({{std::count_if(tests.begin(), tests.end(), [](const FaceTest& t) { return t.facing == Facing::Front; }), "front"},
-                                   {std::count_if(tests.begin(), tests.end(), [](const FaceTest& t) { return t.facing == Facing::Back; }), "back"},
-                                   {static_cast<long>(edge_on.size()), "edge-on"}}));
-      s.note = "D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
-               "counter-clockwise = front)." + table;
+      Step& s = steps->add(
+          "Front or back per face",
+          math("D_f = (p_eye − p_i)·n",
+               "D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
+          math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
+          counts({{std::count_if(tests.begin(), tests.end(),
+                                 [](const FaceTest& t) { return t.facing == Facing::Front; }),
+                   "front"},
+                  {std::count_if(tests.begin(), tests.end(),
+                                 [](const FaceTest& t) { return t.facing == Facing::Back; }),
+                   "back"},
+                  {static_cast<long>(edge_on.size()), "edge-on"}}));
+      s.note =
+          "D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
+          "counter-clockwise = front)." +
+          table;
       steps->yields("faces");
       if (!edge_on.empty())
-        steps->note("Edge-on faces",
-                    "Face(s) " + join(edge_on) + " have D_f = 0 exactly: the eye lies in their plane, "
-                    "so they cover no area on screen. They count as back for the edge classes, as "
-                    "back-face culling treats them.");
+        steps->note(
+            "Edge-on faces",
+            "Face(s) " + join(edge_on) +
+                " have D_f = 0 exactly: the eye lies in their plane, "
+                "so they cover no area on screen. They count as back for the edge classes, as "
+                "back-face culling treats them.");
     }
 
     // Edge classes A), B), C).
@@ -220,7 +243,10 @@ struct EdgeVisibility {
     for (std::size_t k = 0; k < classes.size(); ++k) {
       const std::string name = check.edges[k].name();
       edges.emplace_back(name, edge_class_word(classes[k]));
-      (classes[k] == EdgeClass::Silhouette ? silhouette : classes[k] == EdgeClass::Hidden ? hidden : visible).push_back(name);
+      (classes[k] == EdgeClass::Silhouette ? silhouette
+       : classes[k] == EdgeClass::Hidden   ? hidden
+                                           : visible)
+          .push_back(name);
     }
     out.set("edges", Value::word_map(edges));
     out.set("silhouette", Value::word_list(silhouette));
@@ -228,16 +254,21 @@ struct EdgeVisibility {
     if (steps) {
       std::vector<std::string> front_edges = visible;
       front_edges.insert(front_edges.end(), silhouette.begin(), silhouette.end());
-      steps->add("Edge classes",
-                 word("front") + math("–", "\\text{–}") + word("front") + math(": ", "\\colon ") + word("visible") +
-                     math(";  ", ";\\; ") + word("front") + math("–", "\\text{–}") + word("back") + math(": ", "\\colon ") +
-                     word("silhouette") + math(";  ", ";\\; ") + word("back") + math("–", "\\text{–}") + word("back") +
-                     math(": ", "\\colon ") + word("hidden"),
-                 {},
-                 counts({{static_cast<long>(visible.size()), "visible"}, {static_cast<long>(silhouette.size()), "silhouette"},
-                         {static_cast<long>(hidden.size()), "hidden"}}))
-          .note = "An edge is classified by the two faces that share it. Hidden-line "
-                  "drawing = the edges of the front faces (visible + silhouette): " + join(front_edges) + ".";
+      steps
+          ->add("Edge classes",
+                word("front") + math("–", "\\text{–}") + word("front") + math(": ", "\\colon ") +
+                    word("visible") + math(";  ", ";\\; ") + word("front") +
+                    math("–", "\\text{–}") + word("back") + math(": ", "\\colon ") +
+                    word("silhouette") + math(";  ", ";\\; ") + word("back") +
+                    math("–", "\\text{–}") + word("back") + math(": ", "\\colon ") + word("hidden"),
+                {},
+                counts({{static_cast<long>(visible.size()), "visible"},
+                        {static_cast<long>(silhouette.size()), "silhouette"},
+                        {static_cast<long>(hidden.size()), "hidden"}}))
+          .note =
+          "An edge is classified by the two faces that share it. Hidden-line "
+          "drawing = the edges of the front faces (visible + silhouette): " +
+          join(front_edges) + ".";
       steps->yields("edges");
     }
 
@@ -257,30 +288,37 @@ struct EdgeVisibility {
       Step& s = steps->add("Silhouette: the front–back edges", {}, {},
                            silhouette.empty() ? word("none") : word(join(silhouette)));
       if (loops.ok && !loops.loops.empty())
-        s.note = fmt::format("Chained by shared vertices: {} ({} loop{}).", loop_text, loops.loops.size(),
-                             loops.loops.size() == 1 ? "" : "s") +
-                 (convex ? " A convex polyhedron's silhouette is one closed loop, a convex polygon on screen." : "");
+        s.note = fmt::format("Chained by shared vertices: {} ({} loop{}).", loop_text,
+                             loops.loops.size(), loops.loops.size() == 1 ? "" : "s") +
+                 (convex ? " A convex polyhedron's silhouette is one closed loop, a convex polygon "
+                           "on screen."
+                         : "");
       else if (!loops.ok)
         s.note = "The silhouette edges do not chain into simple loops (the solid is not convex).";
       steps->yields("silhouette");
-      steps->add("Hidden edges: the back–back edges", {}, {}, hidden.empty() ? word("none") : word(join(hidden)))
+      steps
+          ->add("Hidden edges: the back–back edges", {}, {},
+                hidden.empty() ? word("none") : word(join(hidden)))
           .note = "Drawing only these shows the lines that should be hidden.";
       steps->yields("hidden");
-      steps->add("Convex?", math("n_f·(v − p_f) ≤ 0 for every vertex v and face f",
-                                 "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\text{ for every vertex } \\mathbf{v} \\text{ and face } f"),
-                 {}, word(convex ? "convex" : "not convex"))
+      steps
+          ->add("Convex?",
+                math("n_f·(v − p_f) ≤ 0 for every vertex v and face f",
+                     "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\text{ for every "
+                     "vertex } \\mathbf{v} \\text{ and face } f"),
+                {}, word(convex ? "convex" : "not convex"))
           .note = convex ? "Every vertex lies on the inner side of (or on) every face plane."
                          : "Not convex: " + witness + ".";
       steps->yields("convex");
     }
     out.set("backface_sufficient", Value::boolean(convex));
     if (steps) {
-      steps->add("Back-face culling alone?", {}, {}, word(convex ? "yes" : "no"))
-          .note = convex ? "A single closed convex polyhedron: no front face can hide another, so "
-                           "culling the back faces removes every hidden surface."
-                         : "Not convex: a front face can be hidden by another front face, so back-face "
-                           "culling alone is not enough (as for any concave polyhedron); a depth test is "
-                           "still needed.";
+      steps->add("Back-face culling alone?", {}, {}, word(convex ? "yes" : "no")).note =
+          convex ? "A single closed convex polyhedron: no front face can hide another, so "
+                   "culling the back faces removes every hidden surface."
+                 : "Not convex: a front face can be hidden by another front face, so back-face "
+                   "culling alone is not enough (as for any concave polyhedron); a depth test is "
+                   "still needed.";
       steps->yields("backface_sufficient");
     }
     return out;
@@ -293,8 +331,9 @@ struct EdgeVisibility {
     d.mesh = transformed(g, nullptr);
     const MeshCheck check = check_mesh(d.mesh);
     if (!check.closed || !check.oriented)
-      throw DomainError(g.field, check.problem + " — the hidden-line picture needs a closed, consistently "
-                                                 "oriented polyhedron");
+      throw DomainError(g.field, check.problem +
+                                     " — the hidden-line picture needs a closed, consistently "
+                                     "oriented polyhedron");
     d.viewer.eye = g.eye;
     return d;
   }
@@ -312,7 +351,8 @@ struct EdgeVisibility {
     IVec3 eye{};
     if (o.hard && rng.chance(1, 2)) {
       g["solid"] = gen_word("cube");
-      const IVec3 e = {rng.pick(std::vector<std::int64_t>{-1, 1}), rng.nonzero(-5, 5) * 2, rng.integer(-5, 5)};
+      const IVec3 e = {rng.pick(std::vector<std::int64_t>{-1, 1}), rng.nonzero(-5, 5) * 2,
+                       rng.integer(-5, 5)};
       const auto shift = rng.below(3);
       for (std::size_t i = 0; i < 3; ++i) eye[(i + shift) % 3] = e[i];
     } else if (o.hard) {

@@ -1,10 +1,10 @@
 // The view matrix of gluLookAt / Processing's camera() (seed 000: camera(eye, center, up)),
 // or DirectX's LookAtLH: rows are the camera's axes, the last column moves the eye to the
 // origin.
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
-#include "solver/steps/kind_steps.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/kind_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -24,23 +24,27 @@ struct LookAt {
   };
   static std::vector<std::string> given_fields() { return {"eye", "center", "up", "points"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"matrix", AnswerKind::Transform, {}, {}}, {"points", AnswerKind::Matrix, {"matrix"}, {}, "points", true}};
+    return {{"matrix", AnswerKind::Transform, {}, {}},
+            {"points", AnswerKind::Matrix, {"matrix"}, {}, "points", true}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
-    Given g{r.vector<3>("eye"), r.vector<3>("center"), r.vector<3>("up"), {}, c.api, left_handed_columns(c)};
+    Given g{r.vector<3>("eye"),    r.vector<3>("center"), r.vector<3>("up"), {}, c.api,
+            left_handed_columns(c)};
     if (r.has("points")) g.points = r.points("points", 1);
     return g;
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
-    const MatX<Exact> m = look_at_with_steps(g.eye, g.center, g.up, g.api, "", steps, g.left_handed);
+    const MatX<Exact> m =
+        look_at_with_steps(g.eye, g.center, g.up, g.api, "", steps, g.left_handed);
     Answers out;
     out.set("matrix", matrix_value(paper_form(m, g.api)));
     if (steps) steps->yields("matrix");
     std::vector<std::vector<Exact>> points;
     for (const Vec3<Exact>& p : g.points) points.push_back({p(0), p(1), p(2)});
-    out.set("points", transform_points_with_steps(m, points, "A point in view coordinates", "p", steps, g.api));
+    out.set("points", transform_points_with_steps(m, points, "A point in view coordinates", "p",
+                                                  steps, g.api));
     return out;
   }
   // The reversed basis: the camera's z axis along the view direction instead of against it (or
@@ -48,20 +52,23 @@ struct LookAt {
   // basis turns half a turn about up.
   static std::vector<Misconception> misconceptions(const Given& g) {
     Given reversed = g;
-    reversed.center = Vec3<Exact>(canonical(2 * g.eye(0) - g.center(0)), canonical(2 * g.eye(1) - g.center(1)),
-                                  canonical(2 * g.eye(2) - g.center(2)));
+    reversed.center =
+        Vec3<Exact>(canonical(2 * g.eye(0) - g.center(0)), canonical(2 * g.eye(1) - g.center(1)),
+                    canonical(2 * g.eye(2) - g.center(2)));
     try {
       const bool plus_z = g.api == Api::DirectX || g.left_handed;
       return {{"reversed look-at basis",
-               g.api == Api::DirectX
-                   ? "Your camera's z axis points away from the scene: DirectX's camera looks down +z, so "
-                     "z = (center − eye)/‖center − eye‖ and x = up × z."
+               g.api == Api::DirectX ? "Your camera's z axis points away from the scene: DirectX's "
+                                       "camera looks down +z, so "
+                                       "z = (center − eye)/‖center − eye‖ and x = up × z."
                : g.left_handed
-                   ? "Your camera's z axis points away from the scene: in left-handed coordinates the camera "
+                   ? "Your camera's z axis points away from the scene: in left-handed coordinates "
+                     "the camera "
                      "looks down +z, so z = (center − eye)/‖center − eye‖ and x = up × z."
                    : "Your camera's z axis points at the scene: the camera looks down −z, so "
                      "z = (eye − center)/‖eye − center‖ and x = up × z.",
-               plus_z ? "Camera axes (left-handed, looking down +z)" : "Camera axes (right-handed, looking down −z)",
+               plus_z ? "Camera axes (left-handed, looking down +z)"
+                      : "Camera axes (right-handed, looking down −z)",
                solve(reversed, nullptr)}};
     } catch (const std::exception&) {
       return {};
@@ -77,7 +84,8 @@ struct LookAt {
     if (o.hard) {
       d = {rng.integer(-1, 1), 12, rng.nonzero(-1, 1)};
     } else if (o.nice) {
-      const std::vector<IVec3> dirs = {{0, 0, 5}, {5, 0, 0}, {3, 0, 4}, {4, 0, 3}, {-3, 0, 4}, {0, 0, -5}, {-4, 0, -3}};
+      const std::vector<IVec3> dirs = {{0, 0, 5},  {5, 0, 0},  {3, 0, 4},  {4, 0, 3},
+                                       {-3, 0, 4}, {0, 0, -5}, {-4, 0, -3}};
       d = rng.pick(dirs);
     } else {
       do {

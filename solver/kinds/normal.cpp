@@ -1,10 +1,10 @@
 // The normal of a polygon (counter-clockwise = front, seed 003) or of a triangle ABC with an
 // explicit cross-product order (seed 001: AC × AB in left-handed projection coordinates).
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_paths.hpp"
-#include "solver/problem/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -16,14 +16,15 @@ struct Normal {
   static constexpr const char* kSummary = "the normal and unit normal of a polygon";
   static constexpr ConventionUse kUses{.api = false, .angles = false, .handedness = true};
   struct Given {
-    Polygon3<Exact> points;              // when given as a polygon
-    std::optional<CrossOrder> order;     // when given as A, B, C
-    bool left_handed = false;            // the course's coordinates (conventions: handedness)
+    Polygon3<Exact> points;           // when given as a polygon
+    std::optional<CrossOrder> order;  // when given as A, B, C
+    bool left_handed = false;         // the course's coordinates (conventions: handedness)
   };
   // Error carried forward: the unit normal of the student's own normal.
   static Answers carry_forward(const Given&, const Answers& student) {
     Answers out;
-    if (const auto n = carried(student, "normal", 3)) out.set("unit_normal", Value::vector(unit(Vec3<Exact>((*n)[0], (*n)[1], (*n)[2]))));
+    if (const auto n = carried(student, "normal", 3))
+      out.set("unit_normal", Value::vector(unit(Vec3<Exact>((*n)[0], (*n)[1], (*n)[2]))));
     return out;
   }
 
@@ -63,14 +64,16 @@ struct Normal {
       // Which side the normal points to depends on the frame's handedness: said here, as
       // depth_at_pixel says it for its left-handed projection coordinates.
       if (steps)
-        steps->note("Orientation", g.left_handed
-                                       ? "These coordinates are left-handed: AC × AB points to the side from which "
-                                         "A, B, C run counter-clockwise (the front). Read in a right-handed frame, "
-                                         "the same numbers describe the mirror image, whose front normal is "
-                                         "AB × AC = −(AC × AB)."
-                                       : "In a right-handed frame AB × AC points to the side from which A, B, C run "
-                                         "counter-clockwise; in a left-handed frame (such as projection coordinates) "
-                                         "that side's normal is AC × AB.");
+        steps->note(
+            "Orientation",
+            g.left_handed
+                ? "These coordinates are left-handed: AC × AB points to the side from which "
+                  "A, B, C run counter-clockwise (the front). Read in a right-handed frame, "
+                  "the same numbers describe the mirror image, whose front normal is "
+                  "AB × AC = −(AC × AB)."
+                : "In a right-handed frame AB × AC points to the side from which A, B, C run "
+                  "counter-clockwise; in a left-handed frame (such as projection coordinates) "
+                  "that side's normal is AC × AB.");
       n = cross_normal_with_steps({g.points[0], g.points[1], g.points[2]}, *g.order, "A", steps);
     } else {
       n = polygon_normal_with_steps(g.points, "points", steps, g.left_handed);
@@ -91,7 +94,9 @@ struct Normal {
   }
 
   static std::string ill_conditioned(const Given& g, const Answers&) {
-    return triangle_shape(doubles(g.points)) < kMinTriangleShape ? "the polygon is nearly degenerate" : "";
+    return triangle_shape(doubles(g.points)) < kMinTriangleShape
+               ? "the polygon is nearly degenerate"
+               : "";
   }
 };
 

@@ -1,10 +1,10 @@
 // The plane through three or more points, or through a point with a normal (seed 001:
 // n·(r − r₀) = 0 → ax + by + cz = d; the distance from the origin is |d| / ‖n‖).
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_paths.hpp"
-#include "solver/problem/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -13,7 +13,8 @@ namespace {
 
 struct Plane {
   static constexpr const char* kName = "plane";
-  static constexpr const char* kSummary = "the plane through points, or through a point with a normal";
+  static constexpr const char* kSummary =
+      "the plane through points, or through a point with a normal";
   static constexpr ConventionUse kUses{.api = false, .angles = false, .handedness = true};
   struct Given {
     Polygon3<Exact> points;  // empty when point + normal
@@ -63,7 +64,9 @@ struct Plane {
     if (plane) {
       const Exact len = canonical(norm(Vec3<Exact>((*plane)[0], (*plane)[1], (*plane)[2])));
       if (!len.is_zero())
-        out.set("distance", Value::scalar(canonical((exact_sign((*plane)[3]) < 0 ? Exact(-(*plane)[3]) : (*plane)[3]) / len)));
+        out.set("distance",
+                Value::scalar(canonical(
+                    (exact_sign((*plane)[3]) < 0 ? Exact(-(*plane)[3]) : (*plane)[3]) / len)));
     }
     return out;
   }
@@ -71,13 +74,16 @@ struct Plane {
   static std::vector<Misconception> misconceptions(const Given& g) {
     const Vec3<Exact> p0 = g.points.empty() ? g.point : g.points[0];
     const Vec3<Exact> n =
-        g.points.empty() ? g.normal : polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
-    const auto m = constant_sign_mistake(n, canonical(n.dot(p0)), "p₀", "Plane through p₀ with normal n");
+        g.points.empty() ? g.normal
+                         : polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
+    const auto m =
+        constant_sign_mistake(n, canonical(n.dot(p0)), "p₀", "Plane through p₀ with normal n");
     return m ? std::vector<Misconception>{*m} : std::vector<Misconception>{};
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
-    return plane_numeric(g.left_handed ? reversed_winding(g.points) : g.points, g.point, g.normal, p);
+    return plane_numeric(g.left_handed ? reversed_winding(g.points) : g.points, g.point, g.normal,
+                         p);
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
@@ -97,15 +103,19 @@ struct Plane {
     out.set("plane", pv);
     if (steps) {
       steps->add("Plane through p₀ with normal n",
-                 math("n·(p − p₀) = 0  ⇔  n·p = n·p₀", "\\mathbf{n}\\cdot(\\mathbf{p} - \\mathbf{p}_0) = 0 \\iff \\mathbf{n}\\cdot\\mathbf{p} = \\mathbf{n}\\cdot\\mathbf{p}_0"),
+                 math("n·(p − p₀) = 0  ⇔  n·p = n·p₀",
+                      "\\mathbf{n}\\cdot(\\mathbf{p} - \\mathbf{p}_0) = 0 \\iff "
+                      "\\mathbf{n}\\cdot\\mathbf{p} = \\mathbf{n}\\cdot\\mathbf{p}_0"),
                  plane_equation(n(0), n(1), n(2), d), pv.display);
       steps->yields("plane");
     }
     const Exact dist = canonical((exact_sign(d) < 0 ? Exact(-d) : d) / len);
     out.set("distance", Value::scalar(dist));
     if (steps) {
-      steps->add("Distance from the origin", math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
-                 math("dist = |", "\\text{dist} = \\frac{\\lvert ") + exact(d) + math("| / ", " \\rvert}{") + exact(len) + math("", "}"),
+      steps->add("Distance from the origin",
+                 math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
+                 math("dist = |", "\\text{dist} = \\frac{\\lvert ") + exact(d) +
+                     math("| / ", " \\rvert}{") + exact(len) + math("", "}"),
                  math("dist = ", "\\text{dist} = ") + exact(dist, true));
       steps->yields("distance");
     }

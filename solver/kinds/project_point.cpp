@@ -7,14 +7,14 @@
 
 #include <algorithm>
 
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/numeric/condition.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_paths.hpp"
-#include "solver/problem/registry.hpp"
 #include "solver/steps/transform_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
-#include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 
@@ -71,15 +71,18 @@ struct ProjectPoint {
     Answers out;
     std::optional<Vec3<Exact>> ndc;
     if (const auto c = carried(student, "clip", 4); c && exact_sign((*c)[3]) > 0) {
-      ndc = Vec3<Exact>(canonical((*c)[0] / (*c)[3]), canonical((*c)[1] / (*c)[3]), canonical((*c)[2] / (*c)[3]));
+      ndc = Vec3<Exact>(canonical((*c)[0] / (*c)[3]), canonical((*c)[1] / (*c)[3]),
+                        canonical((*c)[2] / (*c)[3]));
       out.set("ndc", Value::vector(*ndc));
     } else if (c) {
       out.set("inside", Value::boolean(false));  // w ≤ 0: behind the eye
     }
-    if (const Value* n = student.find("ndc"); n && n->exact.size() == 3) ndc = Vec3<Exact>(n->exact[0], n->exact[1], n->exact[2]);
+    if (const Value* n = student.find("ndc"); n && n->exact.size() == 3)
+      ndc = Vec3<Exact>(n->exact[0], n->exact[1], n->exact[2]);
     if (ndc) {
       const Vec3<Exact> w = viewport(*ndc, g.width, g.height, g.api);
-      out.set("window", Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
+      out.set("window",
+              Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
       out.set("inside", Value::boolean(ndc_inside(*ndc, g.api)));
     }
     return out;
@@ -91,7 +94,8 @@ struct ProjectPoint {
 
   static std::vector<Misconception> misconceptions(const Given& g) {
     std::vector<Misconception> out;
-    auto variant = [&](const std::string& name, const std::string& feedback, const std::string& step, Given changed) {
+    auto variant = [&](const std::string& name, const std::string& feedback,
+                       const std::string& step, Given changed) {
       try {
         out.push_back({name, feedback, step, solve(changed, nullptr)});
       } catch (const std::exception&) {
@@ -107,9 +111,11 @@ struct ProjectPoint {
         const Vec3<Exact> c(clip->exact[0], clip->exact[1], clip->exact[2]);
         nodiv.set("ndc", Value::vector(c));
         const Vec3<Exact> w = viewport(c, g.width, g.height, g.api);
-        nodiv.set("window", Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
+        nodiv.set("window",
+                  Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
         nodiv.set("inside", Value::boolean(ndc_inside(c, g.api)));
-        out.push_back({"missing perspective divide", "You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
+        out.push_back({"missing perspective divide",
+                       "You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
                        "Perspective divide", nodiv});
       }
     } catch (const std::exception&) {
@@ -194,17 +200,23 @@ struct ProjectPoint {
       const auto& [eye, center, up] = *g.camera;
       view = look_at_with_steps(eye, center, up, g.api, "camera.", steps, g.left_handed);
       p = moved(view, p);
-      if (steps) steps->add("World to view coordinates", math("p_view = V·p_world", "\\mathbf{p}_{\\text{view}} = V \\mathbf{p}_{\\text{world}}"), {},
-                            math("p_view = ", "\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
+      if (steps)
+        steps->add("World to view coordinates",
+                   math("p_view = V·p_world",
+                        "\\mathbf{p}_{\\text{view}} = V \\mathbf{p}_{\\text{world}}"),
+                   {}, math("p_view = ", "\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
     }
     // The lecture's names: P projects, V views, M places (v′ = (P·V·M)·v).
     const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps, "P");
     if (steps && g.left_handed && g.camera)
-      steps->note("The right-handed reading",
-                  "Read in right-handed coordinates (gluLookAt and the right-handed projection on the same "
-                  "numbers), the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' x "
-                  "changes sign between V and P, so for a view volume symmetric in x (l = −r) the picture is "
-                  "mirrored left to right.");
+      steps->note(
+          "The right-handed reading",
+          "Read in right-handed coordinates (gluLookAt and the right-handed projection on the same "
+          "numbers), the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' "
+          "x "
+          "changes sign between V and P, so for a view volume symmetric in x (l = −r) the picture "
+          "is "
+          "mirrored left to right.");
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> h(4);
     h << p(0), p(1), p(2), Exact(1);
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> clip = m * h;
@@ -235,11 +247,13 @@ struct ProjectPoint {
                      "w_c, and the NDC divided by it,");
       const double n = to_double(g.projection.volume.near), f = to_double(g.projection.volume.far);
       if (g.projection.type != ProjectionSpec::Type::Ortho && f / n >= kDepthRatioNote)
-        steps->note("Depth precision",
-                    fmt::format("far/near = {:.0e}: a float depth buffer in [0, 1] separates surfaces at "
-                                "this distance only when they are more than Δz ≈ {} apart (Δz ≈ 2⁻²⁴(f − n)z²/(f·n); "
-                                "a reversed-Z depth buffer keeps far more).",
-                                f / n, format_approx(float_depth_resolution(n, f, to_double(w)))));
+        steps->note(
+            "Depth precision",
+            fmt::format("far/near = {:.0e}: a float depth buffer in [0, 1] separates surfaces at "
+                        "this distance only when they are more than Δz ≈ {} apart (Δz ≈ 2⁻²⁴(f − "
+                        "n)z²/(f·n); "
+                        "a reversed-Z depth buffer keeps far more).",
+                        f / n, format_approx(float_depth_resolution(n, f, to_double(w)))));
     }
     // Inside the view volume: −w ≤ x, y ≤ w and −w ≤ z ≤ w (DirectX: 0 ≤ z ≤ w).
     bool inside = w_sign > 0;
@@ -263,8 +277,10 @@ struct ProjectPoint {
       const Vec3<Exact> window(canonical(win(0)), canonical(win(1)), canonical(win(2)));
       out.set("window", Value::vector(window));
       if (steps) {
-        steps->add("Perspective divide", math("ndc = (x_c, y_c, z_c) / w_c", "\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"), {},
-                   math("ndc = ", "\\text{ndc} = ") + vec(ndc, true));
+        steps->add(
+            "Perspective divide",
+            math("ndc = (x_c, y_c, z_c) / w_c", "\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"), {},
+            math("ndc = ", "\\text{ndc} = ") + vec(ndc, true));
         steps->yields("ndc");
         viewport_step(steps, g.api, g.width, g.height, window);
       }
@@ -272,10 +288,11 @@ struct ProjectPoint {
     out.set("inside", Value::boolean(inside));
     if (steps) {
       steps->add("Inside the view volume?",
-                 g.api == Api::DirectX ? math("−w_c ≤ x_c, y_c ≤ w_c,  0 ≤ z_c ≤ w_c,  w_c > 0",
-                                              "-w_c \\le x_c, y_c \\le w_c,\\; 0 \\le z_c \\le w_c,\\; w_c > 0")
-                                       : math("−w_c ≤ x_c, y_c, z_c ≤ w_c,  w_c > 0",
-                                              "-w_c \\le x_c, y_c, z_c \\le w_c,\\; w_c > 0"),
+                 g.api == Api::DirectX
+                     ? math("−w_c ≤ x_c, y_c ≤ w_c,  0 ≤ z_c ≤ w_c,  w_c > 0",
+                            "-w_c \\le x_c, y_c \\le w_c,\\; 0 \\le z_c \\le w_c,\\; w_c > 0")
+                     : math("−w_c ≤ x_c, y_c, z_c ≤ w_c,  w_c > 0",
+                            "-w_c \\le x_c, y_c, z_c \\le w_c,\\; w_c > 0"),
                  {}, word(inside ? "yes: the point is visible" : "no: clipping removes it"));
       steps->yields("inside");
     }
@@ -287,7 +304,8 @@ struct ProjectPoint {
   // camera {eye: (0, 0, k), center: 0, up: y}, half of those in an object's coordinates with a
   // model matrix (rotate_y by a right angle, then translate); nice: fovy 90°.
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
-    const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{{200, 200}, {400, 300}, {640, 480}, {800, 600}});
+    const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{
+        {200, 200}, {400, 300}, {640, 480}, {800, 600}});
     const std::int64_t near = rng.integer(1, 3);
     const std::int64_t far = near + rng.integer(20, 100);
     YAML::Node g, p, vp;
@@ -299,14 +317,18 @@ struct ProjectPoint {
       p["bottom"] = gen_number(-half);
       p["top"] = gen_number(half);
     } else {
-      p["fovy"] = gen_angle(o.nice ? 90 : rng.pick(std::vector<std::int64_t>{45, 60, 90}), o.conventions);
+      p["fovy"] =
+          gen_angle(o.nice ? 90 : rng.pick(std::vector<std::int64_t>{45, 60, 90}), o.conventions);
       p["aspect"] = gen_fraction(w, h);
     }
     p["near"] = gen_number(near);
     p["far"] = gen_number(far);
-    const Exact depth = o.hard ? Exact(GiNaC::numeric(near, rng.integer(2, 10))) : Exact(rng.integer(near + 1, far - 1));
-    const Exact x = depth * GiNaC::numeric(rng.integer(-2, 2), 4), y = depth * GiNaC::numeric(rng.integer(-2, 2), 4);
-    const int toward = o.conventions.api == Api::DirectX || left_handed_columns(o.conventions) ? 1 : -1;
+    const Exact depth = o.hard ? Exact(GiNaC::numeric(near, rng.integer(2, 10)))
+                               : Exact(rng.integer(near + 1, far - 1));
+    const Exact x = depth * GiNaC::numeric(rng.integer(-2, 2), 4),
+                y = depth * GiNaC::numeric(rng.integer(-2, 2), 4);
+    const int toward =
+        o.conventions.api == Api::DirectX || left_handed_columns(o.conventions) ? 1 : -1;
     if (!o.hard && rng.chance(1, 3)) {
       const std::int64_t k = rng.integer(2, 10);
       YAML::Node cam;
@@ -348,7 +370,9 @@ struct ProjectPoint {
 
   static std::string ill_conditioned(const Given&, const Answers& a) {
     const Value* clip = a.find("clip");
-    return clip && clip->numbers.size() == 4 && clip->numbers[3] <= 0 ? "the point is behind the eye" : "";
+    return clip && clip->numbers.size() == 4 && clip->numbers[3] <= 0
+               ? "the point is behind the eye"
+               : "";
   }
 };
 

@@ -1,6 +1,6 @@
 // The matrix of perspective(), frustum() or ortho() in the set's conventions (seeds 000, 004).
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/viewing_steps.hpp"
 
@@ -17,10 +17,13 @@ struct ProjectionMatrix {
   };
   static std::vector<std::string> given_fields() { return {"perspective", "frustum", "ortho"}; }
   static std::vector<AnswerSpec> answers() { return {{"matrix", AnswerKind::Transform, {}, {}}}; }
-  static Given parse(GivenReader& r, const Conventions& c) { return {read_projection(r, c), c.api}; }
+  static Given parse(GivenReader& r, const Conventions& c) {
+    return {read_projection(r, c), c.api};
+  }
   static Answers solve(const Given& g, Derivation* steps) {
     Answers out;
-    out.set("matrix", matrix_value(paper_form(projection_with_steps(g.projection, g.api, steps), g.api)));
+    out.set("matrix",
+            matrix_value(paper_form(projection_with_steps(g.projection, g.api, steps), g.api)));
     return out;
   }
   static std::vector<Misconception> misconceptions(const Given& g) {
@@ -29,7 +32,12 @@ struct ProjectionMatrix {
       try {
         Given changed = g;
         changed.projection = m.projection;
-        out.push_back({m.name, m.feedback, m.step.empty() ? (g.projection.type == ProjectionSpec::Type::Ortho ? "Orthographic projection matrix" : "Perspective projection matrix") : m.step, solve(changed, nullptr)});
+        out.push_back({m.name, m.feedback,
+                       m.step.empty() ? (g.projection.type == ProjectionSpec::Type::Ortho
+                                             ? "Orthographic projection matrix"
+                                             : "Perspective projection matrix")
+                                      : m.step,
+                       solve(changed, nullptr)});
       } catch (const std::exception&) {
         // A mistake that leads to no volume (near = far) cannot be matched.
       }
@@ -46,9 +54,11 @@ struct ProjectionMatrix {
     const YAML::Node n = o.hard ? gen_fraction(1, 100) : gen_number(near);
     const YAML::Node f = o.hard ? gen_number(1000) : gen_number(near + rng.integer(2, 60));
     if (which == 0) {
-      p["fovy"] = gen_angle(rng.pick(o.nice ? std::vector<std::int64_t>{60, 90} : std::vector<std::int64_t>{30, 45, 60, 90, 120}),
+      p["fovy"] = gen_angle(rng.pick(o.nice ? std::vector<std::int64_t>{60, 90}
+                                            : std::vector<std::int64_t>{30, 45, 60, 90, 120}),
                             o.conventions);
-      p["aspect"] = rng.pick(std::vector<YAML::Node>{gen_number(1), gen_fraction(4, 3), gen_fraction(16, 9), gen_number(2)});
+      p["aspect"] = rng.pick(std::vector<YAML::Node>{gen_number(1), gen_fraction(4, 3),
+                                                     gen_fraction(16, 9), gen_number(2)});
       p["near"] = n;
       p["far"] = f;
       g["perspective"] = p;

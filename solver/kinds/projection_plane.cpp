@@ -3,8 +3,8 @@
 // (Processing's default camera z); a point P in view coordinates projects to
 // P′ = P · (s / z_P) on it. Window 200×200, fov 60°: s = −100√3, and P(0, 100, −300) ↦
 // P′ = (0, 100√3/3, −100√3).
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -15,7 +15,8 @@ namespace {
 
 struct ProjectionPlane {
   static constexpr const char* kName = "projection_plane";
-  static constexpr const char* kSummary = "where the projection plane lies and where a point lands on it";
+  static constexpr const char* kSummary =
+      "where the projection plane lies and where a point lands on it";
   struct Given {
     Exact width, height, fov;
     Vec3<Exact> point;
@@ -23,7 +24,8 @@ struct ProjectionPlane {
   };
   static std::vector<std::string> given_fields() { return {"window", "fov", "point"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"plane_z", AnswerKind::Scalar, {}, {}}, {"projected", AnswerKind::Vector, {"plane_z"}, {}}};
+    return {{"plane_z", AnswerKind::Scalar, {}, {}},
+            {"projected", AnswerKind::Vector, {"plane_z"}, {}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
@@ -31,7 +33,8 @@ struct ProjectionPlane {
     const std::vector<Exact> window = r.numbers("window", 2);
     g.width = window[0];
     g.height = window[1];
-    if (exact_sign(g.width) <= 0 || exact_sign(g.height) <= 0) r.fail("window", "width and height must be positive");
+    if (exact_sign(g.width) <= 0 || exact_sign(g.height) <= 0)
+      r.fail("window", "width and height must be positive");
     g.fov = read_angle(r, "fov", c.angles);
     if (exact_sign(g.fov) <= 0 || exact_sign(g.fov - GiNaC::Pi) >= 0)
       r.fail("fov", "must be between 0° and 180° (exclusive)");
@@ -48,30 +51,35 @@ struct ProjectionPlane {
     Answers out;
     out.set("plane_z", Value::scalar(s));
     if (steps) {
-      steps->add("Distance of the projection plane",
-                 math(std::string(toward < 0 ? "s = −" : "s = ") + "(height/2) / tan(fov/2)",
-                      std::string(toward < 0 ? "s = -" : "s = ") + "\\frac{\\text{height}/2}{\\tan(\\text{fov}/2)}"),
-                 math("height = ", "\\text{height} = ") + exact(g.height) + math(",  fov = ", ",\\; \\text{fov} = ") +
-                     angle_text(g.fov, g.conventions.angles),
-                 math("s = ") + exact(s, true))
-          .note = "The plane on which the window's height exactly fills the vertical field of view; "
-                  "Processing puts its default camera at this distance. " +
-                  std::string(toward < 0 ? "Eye space looks down −z, so the plane is at negative z."
-                                         : "DirectX's eye space looks down +z.");
+      steps
+          ->add("Distance of the projection plane",
+                math(std::string(toward < 0 ? "s = −" : "s = ") + "(height/2) / tan(fov/2)",
+                     std::string(toward < 0 ? "s = -" : "s = ") +
+                         "\\frac{\\text{height}/2}{\\tan(\\text{fov}/2)}"),
+                math("height = ", "\\text{height} = ") + exact(g.height) +
+                    math(",  fov = ", ",\\; \\text{fov} = ") +
+                    angle_text(g.fov, g.conventions.angles),
+                math("s = ") + exact(s, true))
+          .note =
+          "The plane on which the window's height exactly fills the vertical field of view; "
+          "Processing puts its default camera at this distance. " +
+          std::string(toward < 0 ? "Eye space looks down −z, so the plane is at negative z."
+                                 : "DirectX's eye space looks down +z.");
       steps->yields("plane_z");
     }
     const int z_sign = exact_sign(g.point(2));
     if (z_sign != toward)
-      throw DomainError("point", z_sign == 0 ? "the point is in the eye's plane (z = 0): it has no projection"
-                                             : "the point is behind the eye: it has no projection");
+      throw DomainError(
+          "point", z_sign == 0 ? "the point is in the eye's plane (z = 0): it has no projection"
+                               : "the point is behind the eye: it has no projection");
     // Similar triangles: x′ : s = x : z (seed 000: x_n = x · n / (−z)).
     const Exact k = canonical(s / g.point(2));
     const Vec3<Exact> p(canonical(g.point(0) * k), canonical(g.point(1) * k), s);
     out.set("projected", Value::vector(p));
     if (steps) {
       steps->add("Similar triangles", math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
-                 math("P′ = ", "P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") + exact(s) +
-                     math(") / (", "}{") + exact(g.point(2)) + math(")", "}"),
+                 math("P′ = ", "P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") +
+                     exact(s) + math(") / (", "}{") + exact(g.point(2)) + math(")", "}"),
                  math("P′ = ", "P' = ") + vec(p, true));
       steps->yields("projected");
     }
@@ -80,13 +88,17 @@ struct ProjectionPlane {
   // Default generator: a window of 200×200, 400×300 or 640×480 pixels, fov 30°…90° (nice: 60°
   // or 90°; hard: 150°), and a point 100…400 in front of the eye.
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
-    const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{{200, 200}, {400, 300}, {640, 480}});
-    const std::int64_t fov = o.hard ? 150 : rng.pick(o.nice ? std::vector<std::int64_t>{60, 90} : std::vector<std::int64_t>{30, 45, 60, 90});
+    const auto [w, h] = rng.pick(
+        std::vector<std::pair<std::int64_t, std::int64_t>>{{200, 200}, {400, 300}, {640, 480}});
+    const std::int64_t fov = o.hard ? 150
+                                    : rng.pick(o.nice ? std::vector<std::int64_t>{60, 90}
+                                                      : std::vector<std::int64_t>{30, 45, 60, 90});
     const int toward = o.conventions.api == Api::DirectX ? 1 : -1;
     YAML::Node g;
     g["window"] = gen_list({w, h});
     g["fov"] = gen_angle(fov, o.conventions);
-    g["point"] = gen_list({10 * rng.integer(-10, 10), 10 * rng.integer(-10, 10), toward * 10 * rng.integer(10, 40)});
+    g["point"] = gen_list(
+        {10 * rng.integer(-10, 10), 10 * rng.integer(-10, 10), toward * 10 * rng.integer(10, 40)});
     return g;
   }
 };

@@ -2,17 +2,18 @@
 // which draws the whole image of the same scene.
 #pragma once
 
-#include "solver/steps/scene_reader.hpp"
-
 #include <array>
 #include <vector>
+
+#include "solver/steps/scene_reader.hpp"
 
 namespace frustum {
 
 struct RenderGiven {
   SceneSpec spec;
   Conventions conventions;
-  std::vector<std::array<int, 2>> pixels;  // [i, j] in the API's window (y-down APIs: j from the top)
+  std::vector<std::array<int, 2>>
+      pixels;  // [i, j] in the API's window (y-down APIs: j from the top)
 };
 
 }  // namespace frustum

@@ -2,13 +2,13 @@
 // the top-left fill rule (rasterizer.hpp). Pixel (i, j) has its centre at (i + ½, j + ½),
 // window y up; vertices are snapped to 1/256 pixel and the edge functions evaluated exactly.
 // `pixels` lists [i, j] sorted by j, then i.
-#include "solver/problem/generate.hpp"
+#include <map>
+
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/raster/rasterizer.hpp"
 #include "solver/util/diagnostic.hpp"
-
-#include <map>
 
 namespace frustum {
 
@@ -47,27 +47,35 @@ struct ScanConvert {
     const TriangleSetup t = setup_triangle_exact(g.triangle);
     const long box_w = t.i_max - t.i_min + 1, box_h = t.j_max - t.j_min + 1;
     if (box_w > kMaxBox || box_h > kMaxBox)
-      throw DomainError("triangle", "the triangle's bounding box spans " + std::to_string(box_w) + " × " +
-                                        std::to_string(box_h) + " pixels; scan_convert handles at most " +
+      throw DomainError("triangle", "the triangle's bounding box spans " + std::to_string(box_w) +
+                                        " × " + std::to_string(box_h) +
+                                        " pixels; scan_convert handles at most " +
                                         std::to_string(kMaxBox) + " × " + std::to_string(kMaxBox));
     const std::vector<Fragment> frags = rasterize(t);
     const char* names = "ABC";
     if (steps) {
       steps->note("Pixels and the fill rule",
-                  "Window y points up; pixel (i, j) has its centre at (i + ½, j + ½). Vertices are snapped to 1/256 "
-                  "pixel and the edge functions are evaluated exactly. Top-left rule: a centre exactly on an edge is "
-                  "covered only when the edge is a top edge (horizontal, interior below) or a left edge (interior to "
+                  "Window y points up; pixel (i, j) has its centre at (i + ½, j + ½). Vertices are "
+                  "snapped to 1/256 "
+                  "pixel and the edge functions are evaluated exactly. Top-left rule: a centre "
+                  "exactly on an edge is "
+                  "covered only when the edge is a top edge (horizontal, interior below) or a left "
+                  "edge (interior to "
                   "its right); on a bottom or right edge it is not.");
       if (t.snapped)
         steps->warn("Vertices snapped to the sub-pixel grid",
-                    "Some vertex is not a multiple of 1/256 pixel; it was rounded to the nearest one, as a GPU does.");
+                    "Some vertex is not a multiple of 1/256 pixel; it was rounded to the nearest "
+                    "one, as a GPU does.");
       if (t.reordered)
-        steps->note("Orientation", "The triangle ABC is clockwise; it is scanned as ACB (counter-clockwise) so the "
-                                   "interior has E > 0 on every edge. Scan conversion culls nothing.");
+        steps->note(
+            "Orientation",
+            "The triangle ABC is clockwise; it is scanned as ACB (counter-clockwise) so the "
+            "interior has E > 0 on every edge. Scan conversion culls nothing.");
     }
     if (t.degenerate) {
       if (steps) {
-        steps->warn("Degenerate triangle", "The three vertices are collinear (zero area): the triangle covers no pixels.");
+        steps->warn("Degenerate triangle",
+                    "The three vertices are collinear (zero area): the triangle covers no pixels.");
         steps->yields("pixels");
       }
       Answers out;
@@ -78,33 +86,40 @@ struct ScanConvert {
       for (int k = 0; k < 3; ++k) {
         const EdgeFunction& e = t.edge[k];
         const std::string from(1, names[t.order[(k + 1) % 3]]), to(1, names[t.order[(k + 2) % 3]]);
-        const std::string cls = e.top ? "top edge: centres on it are covered"
+        const std::string cls = e.top    ? "top edge: centres on it are covered"
                                 : e.left ? "left edge: centres on it are covered"
                                          : "bottom or right edge: centres on it are not covered";
-        steps->add("Edge function E_" + from + to,
-                   math("E(x, y) = (x_" + to + " − x_" + from + ")(y − y_" + from + ") − (y_" + to + " − y_" + from +
-                            ")(x − x_" + from + ")",
-                        "E_{" + from + to + "}(x, y) = (x_" + to + " - x_" + from + ")(y - y_" + from + ") - (y_" + to +
-                            " - y_" + from + ")(x - x_" + from + ")"),
-                   {},
-                   math("E_" + from + to + "(x, y) = ", "E_{" + from + to + "}(x, y) = ") +
-                       linear_expression({{pixels_of(e.a), "x"}, {pixels_of(e.b), "y"}, {pixels_of(e.c, 2), ""}}))
+        steps
+            ->add("Edge function E_" + from + to,
+                  math("E(x, y) = (x_" + to + " − x_" + from + ")(y − y_" + from + ") − (y_" + to +
+                           " − y_" + from + ")(x − x_" + from + ")",
+                       "E_{" + from + to + "}(x, y) = (x_" + to + " - x_" + from + ")(y - y_" +
+                           from + ") - (y_" + to + " - y_" + from + ")(x - x_" + from + ")"),
+                  {},
+                  math("E_" + from + to + "(x, y) = ", "E_{" + from + to + "}(x, y) = ") +
+                      linear_expression(
+                          {{pixels_of(e.a), "x"}, {pixels_of(e.b), "y"}, {pixels_of(e.c, 2), ""}}))
             .note = cls;
       }
-      steps->add("Bounding box of the pixel centres", {}, {},
-                 math("i = " + std::to_string(t.i_min) + " … " + std::to_string(t.i_max) + ",  j = " +
-                          std::to_string(t.j_min) + " … " + std::to_string(t.j_max),
-                      std::to_string(t.i_min) + " \\le i \\le " + std::to_string(t.i_max) + ",\\; " +
-                          std::to_string(t.j_min) + " \\le j \\le " + std::to_string(t.j_max)))
-          .note = "A pixel is covered when E > 0 on all three edges, or E = 0 on an edge that is top or left.";
+      steps
+          ->add("Bounding box of the pixel centres", {}, {},
+                math("i = " + std::to_string(t.i_min) + " … " + std::to_string(t.i_max) +
+                         ",  j = " + std::to_string(t.j_min) + " … " + std::to_string(t.j_max),
+                     std::to_string(t.i_min) + " \\le i \\le " + std::to_string(t.i_max) + ",\\; " +
+                         std::to_string(t.j_min) + " \\le j \\le " + std::to_string(t.j_max)))
+          .note =
+          "A pixel is covered when E > 0 on all three edges, or E = 0 on an edge that is top or "
+          "left.";
       std::map<int, std::string> rows;
-      for (const Fragment& f : frags) rows[f.j] += (rows[f.j].empty() ? "" : ", ") + std::to_string(f.i);
+      for (const Fragment& f : frags)
+        rows[f.j] += (rows[f.j].empty() ? "" : ", ") + std::to_string(f.i);
       MathText text;
       for (const auto& [j, is] : rows)
         text += (text.empty() ? MathText{} : math(";  ", ";\\quad ")) +
-                math("j = " + std::to_string(j) + ": i = " + is, "j = " + std::to_string(j) + "\\colon i = " + is);
-      steps->add("Covered pixels, row by row", {}, {}, text.empty() ? word("none") : text)
-          .note = std::to_string(frags.size()) + " pixel(s) covered.";
+                math("j = " + std::to_string(j) + ": i = " + is,
+                     "j = " + std::to_string(j) + "\\colon i = " + is);
+      steps->add("Covered pixels, row by row", {}, {}, text.empty() ? word("none") : text).note =
+          std::to_string(frags.size()) + " pixel(s) covered.";
       steps->yields("pixels");
     }
     std::vector<std::vector<Exact>> px;

@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "solver/input/given_reader.hpp"
-#include "solver/problem/registry.hpp"
 #include "solver/input/text_reader.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/util/words.hpp"
 
 namespace frustum {

@@ -1,15 +1,15 @@
 // Composite transforms in 2D and 3D homogeneous coordinates (seeds 002, 004): steps applied
 // in the listed order, so the composite of A₁, A₂, A₃ is M = A₃·A₂·A₁ and P′ = M·P.
-#include "solver/problem/generate.hpp"
+#include <fmt/format.h>
+
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_paths.hpp"
-#include "solver/problem/registry.hpp"
 #include "solver/steps/transform_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
-
-#include <fmt/format.h>
 
 namespace frustum {
 
@@ -17,7 +17,8 @@ namespace {
 
 struct Transform {
   static constexpr const char* kName = "transform";
-  static constexpr const char* kSummary = "the composite of translations, scalings, rotations and shears";
+  static constexpr const char* kSummary =
+      "the composite of translations, scalings, rotations and shears";
   struct Given {
     int dim = 3;
     std::vector<TransformStep> steps;
@@ -51,7 +52,8 @@ struct Transform {
     std::vector<Misconception> out;
     const auto composite = [&](const std::vector<MatX<Exact>>& steps, bool reversed) {
       MatX<Exact> m = MatX<Exact>::Identity(g.dim + 1, g.dim + 1);
-      for (const MatX<Exact>& s : steps) m = canonical(MatX<Exact>(reversed ? MatX<Exact>(m * s) : MatX<Exact>(s * m)));
+      for (const MatX<Exact>& s : steps)
+        m = canonical(MatX<Exact>(reversed ? MatX<Exact>(m * s) : MatX<Exact>(s * m)));
       Answers a;
       // In the problem's own convention: DirectX students write the row-vector form.
       a.set("matrix", matrix_value(paper_form(m, g.api)));
@@ -69,11 +71,13 @@ struct Transform {
     std::vector<MatX<Exact>> as_radians;
     for (const TransformStep& s : g.steps) {
       rotates = rotates || s.angle.has_value();
-      as_radians.push_back(s.angle && s.rotation ? s.rotation(canonical(*s.angle * 180 / GiNaC::Pi)) : s.matrix);
+      as_radians.push_back(s.angle && s.rotation ? s.rotation(canonical(*s.angle * 180 / GiNaC::Pi))
+                                                 : s.matrix);
     }
     if (rotates)
       out.push_back({"degrees taken as radians",
-                     "Your rotation uses the angle's number of degrees as radians (cos 90 instead of cos 90°).",
+                     "Your rotation uses the angle's number of degrees as radians (cos 90 instead "
+                     "of cos 90°).",
                      "Composite (first step applied first)", composite(as_radians, false)});
     return out;
   }
@@ -98,14 +102,16 @@ struct Transform {
     Answers out;
     out.set("matrix", matrix_value(paper_form(m, g.api)));
     if (steps) steps->yields("matrix");
-    out.set("points", transform_points_with_steps(m, g.points, "Transform a point", "P", steps, g.api));
+    out.set("points",
+            transform_points_with_steps(m, g.points, "Transform a point", "P", steps, g.api));
     // det M is the product of the steps' determinants (rotations and translations have 1).
     Exact det = 1;
     for (const TransformStep& s : g.steps) det *= s.det;
     det = canonical(det);
     if (det.is_zero()) {
       out.set("inverse", Value::null());
-      if (steps) steps->warn("No inverse", "det M = 0: the transform flattens space and cannot be undone.");
+      if (steps)
+        steps->warn("No inverse", "det M = 0: the transform flattens space and cannot be undone.");
     } else {
       // M⁻¹ = A₁⁻¹·A₂⁻¹·…·Aₙ⁻¹.
       MatX<Exact> inv = MatX<Exact>::Identity(size, size);
@@ -118,11 +124,14 @@ struct Transform {
           order += fmt::format("{}A{}⁻¹", k == 1 ? "" : "·", i);
           order_latex += fmt::format("A_{{{}}}^{{-1}}", i);
         }
-        steps->add("Inverse", math("M⁻¹ = " + order + " (M·M⁻¹ = I)",
-                                   "M^{-1} = " + order_latex + "\\;(M M^{-1} = I)"), {},
-                   math("M⁻¹ = ", "M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
-            .note = "Each step is undone on its own (a translation by its negative, a scaling by its "
-                    "reciprocal, a rotation by its transpose), in reverse order.";
+        steps
+            ->add("Inverse",
+                  math("M⁻¹ = " + order + " (M·M⁻¹ = I)",
+                       "M^{-1} = " + order_latex + "\\;(M M^{-1} = I)"),
+                  {}, math("M⁻¹ = ", "M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
+            .note =
+            "Each step is undone on its own (a translation by its negative, a scaling by its "
+            "reciprocal, a rotation by its transpose), in reverse order.";
         steps->yields("inverse");
       }
     }
@@ -133,8 +142,9 @@ struct Transform {
   // a 3D rotation about an oblique axis and a fractional scale.
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
     const int dim = rng.chance(1, 2) ? 2 : 3;
-    const std::vector<std::int64_t> angles = o.nice ? std::vector<std::int64_t>{90, 180, -90}
-                                                    : std::vector<std::int64_t>{30, 45, 60, 90, 120, 135, 150, -30, -45, -60};
+    const std::vector<std::int64_t> angles =
+        o.nice ? std::vector<std::int64_t>{90, 180, -90}
+               : std::vector<std::int64_t>{30, 45, 60, 90, 120, 135, 150, -30, -45, -60};
     YAML::Node steps(YAML::NodeType::Sequence);
     const auto count = rng.integer(2, 3);
     for (std::int64_t i = 0; i < count; ++i) {
@@ -159,11 +169,13 @@ struct Transform {
           s["rotate"] = gen_angle(a, o.conventions);
         } else if (which == 4) {
           YAML::Node r;
-          r["axis"] = gen_list(rng.pick(std::vector<std::vector<std::int64_t>>{{1, 1, 1}, {1, 2, 2}, {0, 1, 1}}));
+          r["axis"] = gen_list(
+              rng.pick(std::vector<std::vector<std::int64_t>>{{1, 1, 1}, {1, 2, 2}, {0, 1, 1}}));
           r["angle"] = gen_angle(a, o.conventions);
           s["rotate"] = r;
         } else {
-          s[rng.pick(std::vector<std::string>{"rotate_x", "rotate_y", "rotate_z"})] = gen_angle(a, o.conventions);
+          s[rng.pick(std::vector<std::string>{"rotate_x", "rotate_y", "rotate_z"})] =
+              gen_angle(a, o.conventions);
         }
       } else if (dim == 2) {
         s["shear"] = gen_list({rng.nonzero(-2, 2), 0});

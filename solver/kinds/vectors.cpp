@@ -1,10 +1,10 @@
 // seed 003 (review of dot and cross products): a = (2,0,1), b = (1,2,0) →
 // a × b = (−2, 1, 4), S = √21, sin θ = √21/5, n = (−2, 1, 4)/√21.
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_paths.hpp"
-#include "solver/problem/registry.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -70,15 +70,19 @@ struct Vectors {
     other_unit.set("angle", Value::scalar(degrees ? rad : canonical(rad * 180 / GiNaC::Pi)));
     Answers swapped;
     swapped.set("sin", Value::scalar(cos));
-    return {{"reversed cross product", "You computed b × a = −(a × b): the cross product is anti-commutative.",
+    return {{"reversed cross product",
+             "You computed b × a = −(a × b): the cross product is anti-commutative.",
              "Cross product", reversed},
-            {"triangle instead of parallelogram", "That is half the area: ‖a × b‖ is the parallelogram's area, "
-             "the triangle's is half of it.", "Area of the parallelogram", triangle},
+            {"triangle instead of parallelogram",
+             "That is half the area: ‖a × b‖ is the parallelogram's area, "
+             "the triangle's is half of it.",
+             "Area of the parallelogram", triangle},
             {degrees ? "radians instead of degrees" : "degrees instead of radians",
              degrees ? "Your angle is in radians; the problem asks for degrees."
                      : "Your angle is in degrees; the problem asks for radians.",
              "Angle", other_unit},
-            {"cos for sin", "That is cos θ = a·b/(‖a‖‖b‖); sin θ uses ‖a × b‖.", "Sine of the angle", swapped}};
+            {"cos for sin", "That is cos θ = a·b/(‖a‖‖b‖); sin θ uses ‖a × b‖.",
+             "Sine of the angle", swapped}};
   }
 
   // Grading scales (docs/grading.md §2): every product's terms are of size max|aᵢ|·max|bᵢ|;
@@ -110,9 +114,12 @@ struct Vectors {
     const Exact dot = canonical(a.dot(b));
     out.set("dot", Value::scalar(dot));
     if (steps) {
-      steps->add("Dot product", math("a·b = aₓbₓ + a_yb_y + a_zb_z", "\\mathbf{a}\\cdot\\mathbf{b} = a_x b_x + a_y b_y + a_z b_z"),
-                 math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + math("·", "\\cdot") + vec(b),
-                 math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + exact(dot));
+      steps->add(
+          "Dot product",
+          math("a·b = aₓbₓ + a_yb_y + a_zb_z",
+               "\\mathbf{a}\\cdot\\mathbf{b} = a_x b_x + a_y b_y + a_z b_z"),
+          math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + math("·", "\\cdot") + vec(b),
+          math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + exact(dot));
       steps->yields("dot");
     }
     // Cross product by the determinant rule.
@@ -122,54 +129,73 @@ struct Vectors {
     if (steps) {
       steps->add("Cross product",
                  math("a × b = (a_yb_z − a_zb_y, a_zbₓ − aₓb_z, aₓb_y − a_ybₓ)",
-                      "\\mathbf{a}\\times\\mathbf{b} = (a_y b_z - a_z b_y,\\; a_z b_x - a_x b_z,\\; a_x b_y - a_y b_x)"),
-                 math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) + math(" × ", " \\times ") + vec(b),
+                      "\\mathbf{a}\\times\\mathbf{b} = (a_y b_z - a_z b_y,\\; a_z b_x - a_x "
+                      "b_z,\\; a_x b_y - a_y b_x)"),
+                 math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) +
+                     math(" × ", " \\times ") + vec(b),
                  math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(cross));
       steps->yields("cross");
     }
     const Exact area = canonical(norm(cross));
     out.set("area", Value::scalar(area));
     if (steps) {
-      steps->add("Area of the parallelogram", math("S = ‖a × b‖", "S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"),
-                 {}, math("S = ") + exact(area, true));
+      steps->add("Area of the parallelogram",
+                 math("S = ‖a × b‖", "S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"), {},
+                 math("S = ") + exact(area, true));
       steps->yields("area");
     }
     const Exact sin = canonical(area / (len_a * len_b));
     out.set("sin", Value::scalar(sin));
     if (steps) {
-      steps->add("Sine of the angle", math("sin θ = ‖a × b‖ / (‖a‖ ‖b‖)", "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
-                 math("sin θ = ", "\\sin\\theta = \\frac{") + exact(area) + math(" / (", "}{") + exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
+      steps->add("Sine of the angle",
+                 math("sin θ = ‖a × b‖ / (‖a‖ ‖b‖)",
+                      "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} "
+                      "\\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
+                 math("sin θ = ", "\\sin\\theta = \\frac{") + exact(area) + math(" / (", "}{") +
+                     exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
                  math("sin θ = ", "\\sin\\theta = ") + exact(sin, true));
       steps->yields("sin");
     }
     const Exact cos = canonical(dot / (len_a * len_b));
     out.set("cos", Value::scalar(cos));
     if (steps) {
-      steps->add("Cosine of the angle", math("cos θ = a·b / (‖a‖ ‖b‖)", "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
-                 math("cos θ = ", "\\cos\\theta = \\frac{") + exact(dot) + math(" / (", "}{") + exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
-                 math("cos θ = ", "\\cos\\theta = ") + exact(cos, true));
+      steps->add(
+          "Cosine of the angle",
+          math("cos θ = a·b / (‖a‖ ‖b‖)",
+               "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
+               "\\lVert\\mathbf{b}\\rVert}"),
+          math("cos θ = ", "\\cos\\theta = \\frac{") + exact(dot) + math(" / (", "}{") +
+              exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
+          math("cos θ = ", "\\cos\\theta = ") + exact(cos, true));
       steps->yields("cos");
     }
     const Exact radians = canonical(exact_acos(cos));
-    const Exact angle = g.angles == AngleUnit::Degrees ? canonical(radians * 180 / GiNaC::Pi) : radians;
+    const Exact angle =
+        g.angles == AngleUnit::Degrees ? canonical(radians * 180 / GiNaC::Pi) : radians;
     out.set("angle", Value::scalar(angle));
     if (steps) {
       steps->add("Angle", math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
                  math("θ = ", "\\theta = ") + exact(angle, true) +
-                     math(g.angles == AngleUnit::Degrees ? "°" : " rad", g.angles == AngleUnit::Degrees ? "^\\circ" : "\\,\\text{rad}"));
+                     math(g.angles == AngleUnit::Degrees ? "°" : " rad",
+                          g.angles == AngleUnit::Degrees ? "^\\circ" : "\\,\\text{rad}"));
       steps->yields("angle");
     }
     if (area.is_zero()) {
       out.set("unit_normal", Value::null());
       if (steps)
-        steps->warn("No plane", "a and b are parallel (a × b = 0): the points 0, a, b are "
-                                "collinear and span no plane, so there is no unit normal.");
+        steps->warn("No plane",
+                    "a and b are parallel (a × b = 0): the points 0, a, b are "
+                    "collinear and span no plane, so there is no unit normal.");
     } else {
       const Vec3<Exact> n = unit(cross);
       out.set("unit_normal", Value::vector(n));
       if (steps) {
-        steps->add("Unit normal of the plane through 0, a, b", math("n = (a × b) / ‖a × b‖", "\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert}"),
-                   math("n = ", "\\mathbf{n} = \\frac{") + vec(cross) + math(" / ", "}{") + exact(area) + math("", "}"),
+        steps->add("Unit normal of the plane through 0, a, b",
+                   math("n = (a × b) / ‖a × b‖",
+                        "\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert "
+                        "\\mathbf{a}\\times\\mathbf{b} \\rVert}"),
+                   math("n = ", "\\mathbf{n} = \\frac{") + vec(cross) + math(" / ", "}{") +
+                       exact(area) + math("", "}"),
                    math("n = ", "\\mathbf{n} = ") + vec(n, true));
         steps->yields("unit_normal");
       }
@@ -182,7 +208,8 @@ struct Vectors {
     IVec3 a{}, b{};
     for (int attempt = 0; attempt < 2000; ++attempt) {
       a = gen_ivec3(rng, -4, 4);
-      b = o.hard ? iadd(iscale(rng.nonzero(-2, 2), a), gen_ivec3(rng, -1, 1)) : gen_ivec3(rng, -4, 4);
+      b = o.hard ? iadd(iscale(rng.nonzero(-2, 2), a), gen_ivec3(rng, -1, 1))
+                 : gen_ivec3(rng, -4, 4);
       const std::int64_t aa = idot(a, a), bb = idot(b, b), ab = idot(a, b);
       if (aa == 0 || bb == 0) continue;
       if (!o.hard && sine_between({double(a[0]), double(a[1]), double(a[2])},

@@ -2,8 +2,8 @@
 // plane at distance d with half-extents a, b; clipping planes z_min, z_max. First
 // S(d/(a·z_max), d/(b·z_max), 1/z_max) puts the back plane at z = 1 with x, y ∈ [−1, 1]; then
 // P(z̃_min), z̃_min = z_min/z_max, maps z̃_min → 0 and 1 → 1 after the divide by W′ = z.
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -21,7 +21,9 @@ struct ViewVolume {
     Vec3<Exact> point;
     Api api = Api::OpenGL;  // DirectX prints S and P in row-vector form (transposed)
   };
-  static std::vector<std::string> given_fields() { return {"d", "a", "b", "z_min", "z_max", "point"}; }
+  static std::vector<std::string> given_fields() {
+    return {"d", "a", "b", "z_min", "z_max", "point"};
+  }
   static std::vector<AnswerSpec> answers() {
     return {{"scale_matrix", AnswerKind::Transform, {}, {}},
             {"perspective_matrix", AnswerKind::Transform, {}, {}},
@@ -29,18 +31,23 @@ struct ViewVolume {
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
-    Given g{r.number("d"), r.number("a"), r.number("b"), r.number("z_min"), r.number("z_max"), {}, c.api};
+    Given g{r.number("d"), r.number("a"), r.number("b"), r.number("z_min"), r.number("z_max"), {},
+            c.api};
     for (const char* k : {"d", "a", "b"})
       if (exact_sign(r.number(k)) <= 0) r.fail(k, "must be positive");
-    if (exact_sign(g.z_min) <= 0) r.fail("z_min", "must be positive: the front clipping plane is in front of the eye");
+    if (exact_sign(g.z_min) <= 0)
+      r.fail("z_min", "must be positive: the front clipping plane is in front of the eye");
     if (exact_sign(g.z_max - g.z_min) <= 0) r.fail("z_max", "must be greater than z_min");
-    if (r.has("point")) g.point = r.vector<3>("point");
-    else g.point = Vec3<Exact>(0, 0, g.z_max);
+    if (r.has("point"))
+      g.point = r.vector<3>("point");
+    else
+      g.point = Vec3<Exact>(0, 0, g.z_max);
     return g;
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
-    const MatX<Exact> s = canonical(scale(std::vector<Exact>{g.d / (g.a * g.z_max), g.d / (g.b * g.z_max), 1 / g.z_max}));
+    const MatX<Exact> s = canonical(
+        scale(std::vector<Exact>{g.d / (g.a * g.z_max), g.d / (g.b * g.z_max), 1 / g.z_max}));
     const Exact zt = canonical(g.z_min / g.z_max);
     MatX<Exact> p = MatX<Exact>::Identity(4, 4);
     p(2, 2) = canonical(1 / (1 - zt));
@@ -52,43 +59,60 @@ struct ViewVolume {
     // OpenGL's (near → 0 here, −1 there), and a header saying otherwise would contradict step ②.
     if (steps)
       steps->note("The view volume and where it goes",
-                  "The eye looks down +z: the view volume runs from z = z_min to z = z_max, with half-widths a "
-                  "(in x) and b (in y) at distance d. S and P map it to 0 ≤ z ≤ 1 with near → 0 and far → 1, "
+                  "The eye looks down +z: the view volume runs from z = z_min to z = z_max, with "
+                  "half-widths a "
+                  "(in x) and b (in y) at distance d. S and P map it to 0 ≤ z ≤ 1 with near → 0 "
+                  "and far → 1, "
                   "and x, y to [−1, 1] (OpenGL's NDC cube instead sends near to −1).");
     out.set("scale_matrix", matrix_value(paper_form(s, g.api)));
     out.set("perspective_matrix", matrix_value(paper_form(p, g.api)));
     if (steps) {
-      steps->add("① Normalize the view volume", math("S(d/(a·z_max), d/(b·z_max), 1/z_max)",
-                                                     "S\\left(\\frac{d}{a z_{\\max}}, \\frac{d}{b z_{\\max}}, \\frac{1}{z_{\\max}}\\right)"),
-                 {}, math("S = ") + matrix_text(paper_form(s, g.api)))
+      steps
+          ->add("① Normalize the view volume",
+                math("S(d/(a·z_max), d/(b·z_max), 1/z_max)",
+                     "S\\left(\\frac{d}{a z_{\\max}}, \\frac{d}{b z_{\\max}}, "
+                     "\\frac{1}{z_{\\max}}\\right)"),
+                {}, math("S = ") + matrix_text(paper_form(s, g.api)))
           .note = "The back clipping plane moves to z = 1, where x and y span [−1, 1]." +
                   std::string(g.api == Api::DirectX ? " " + multiply_note(g.api) : "");
       steps->yields("scale_matrix");
-      steps->add("② Perspective of the normalized volume",
-                 g.api == Api::DirectX
-                     ? math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) 1; 0 0 −z̃/(1−z̃) 0]",
-                            "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
-                            "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & 1 \\\\ "
-                            "0 & 0 & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} & 0 \\end{bmatrix}")
-                     : math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) −z̃/(1−z̃); 0 0 1 0]",
-                            "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
-                            "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} \\\\ "
-                            "0 & 0 & 1 & 0 \\end{bmatrix}"),
-                 math("z̃_min = ", "\\tilde{z}_{\\min} = ") + exact(zt), math("P = ") + matrix_text(paper_form(p, g.api)))
+      steps
+          ->add("② Perspective of the normalized volume",
+                g.api == Api::DirectX
+                    ? math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) 1; 0 0 "
+                           "−z̃/(1−z̃) 0]",
+                           "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; "
+                           "P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
+                           "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & 1 \\\\ "
+                           "0 & 0 & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} & 0 "
+                           "\\end{bmatrix}")
+                    : math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) "
+                           "−z̃/(1−z̃); 0 0 1 0]",
+                           "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; "
+                           "P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
+                           "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & "
+                           "-\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} \\\\ "
+                           "0 & 0 & 1 & 0 \\end{bmatrix}"),
+                math("z̃_min = ", "\\tilde{z}_{\\min} = ") + exact(zt),
+                math("P = ") + matrix_text(paper_form(p, g.api)))
           .note = "X′ and Y′ are unchanged and W′ = z: the matrix is projective, not affine.";
       steps->yields("perspective_matrix");
     }
-    const std::vector<Exact> h = transform_point(MatX<Exact>(p * s), std::vector<Exact>{g.point(0), g.point(1), g.point(2)});
+    const std::vector<Exact> h =
+        transform_point(MatX<Exact>(p * s), std::vector<Exact>{g.point(0), g.point(1), g.point(2)});
     const std::vector<Exact> q = {canonical(h[0]), canonical(h[1]), canonical(h[2])};
     out.set("point", Value::vector(q));
     if (steps) {
       steps->add("A point through both, then the divide by W′",
                  g.api == Api::DirectX
                      ? math("(X′, Y′, Z′, W′) = p·S·P,  p′ = (X′, Y′, Z′)/W′",
-                            "(X', Y', Z', W') = \\mathbf{p} S P,\\; \\mathbf{p}' = \\frac{(X', Y', Z')}{W'}")
+                            "(X', Y', Z', W') = \\mathbf{p} S P,\\; \\mathbf{p}' = \\frac{(X', Y', "
+                            "Z')}{W'}")
                      : math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′",
-                            "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = \\frac{(X', Y', Z')}{W'}"),
-                 math("p = ", "\\mathbf{p} = ") + vec(g.point), math("p′ = ", "\\mathbf{p}' = ") + vec(q, true));
+                            "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = "
+                            "\\frac{(X', Y', Z')}{W'}"),
+                 math("p = ", "\\mathbf{p} = ") + vec(g.point),
+                 math("p′ = ", "\\mathbf{p}' = ") + vec(q, true));
       steps->yields("point");
     }
     return out;
@@ -106,9 +130,11 @@ struct ViewVolume {
     g["b"] = gen_number(b);
     g["z_min"] = gen_number(z_min);
     g["z_max"] = gen_number(z_max);
-    g["point"] = o.hard ? gen_list(std::vector<Exact>{xmax, ymax, Exact(z)})
-                        : gen_list(std::vector<Exact>{xmax * GiNaC::numeric(rng.integer(-4, 4), 4),
-                                                      ymax * GiNaC::numeric(rng.integer(-4, 4), 4), Exact(z)});
+    g["point"] =
+        o.hard
+            ? gen_list(std::vector<Exact>{xmax, ymax, Exact(z)})
+            : gen_list(std::vector<Exact>{xmax * GiNaC::numeric(rng.integer(-4, 4), 4),
+                                          ymax * GiNaC::numeric(rng.integer(-4, 4), 4), Exact(z)});
     return g;
   }
 

@@ -1,8 +1,8 @@
 // The viewport transform: NDC to window coordinates and depth in [0, 1] (seed 000 9.6).
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/numeric_paths.hpp"
 #include "solver/steps/viewing_steps.hpp"
 
 namespace frustum {
@@ -28,7 +28,9 @@ struct Viewport {
     return g;
   }
 
-  static AnswerScales scales(const Given& g, const Answers&) { return {{"window", window_scale(g.width, g.height)}}; }
+  static AnswerScales scales(const Given& g, const Answers&) {
+    return {{"window", window_scale(g.width, g.height)}};
+  }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
     return viewport_numeric(g.ndc, g.width, g.height, g.api, p);
@@ -45,12 +47,14 @@ struct Viewport {
   // Default generator: NDC in quarters of [−1, 1] (nice: halves; hard: on the cube's faces or
   // just outside, ±5/4) and a common screen size.
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
-    const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{{200, 200}, {400, 300}, {640, 480}, {800, 600}});
+    const auto [w, h] = rng.pick(std::vector<std::pair<std::int64_t, std::int64_t>>{
+        {200, 200}, {400, 300}, {640, 480}, {800, 600}});
     std::vector<Exact> ndc;
     for (int i = 0; i < 3; ++i)
-      ndc.push_back(o.hard ? Exact(GiNaC::numeric(rng.pick(std::vector<std::int64_t>{-5, -4, 4, 5}), 4))
-                           : o.nice ? Exact(GiNaC::numeric(rng.integer(-2, 2), 2))
-                                    : Exact(GiNaC::numeric(rng.integer(-4, 4), 4)));
+      ndc.push_back(
+          o.hard   ? Exact(GiNaC::numeric(rng.pick(std::vector<std::int64_t>{-5, -4, 4, 5}), 4))
+          : o.nice ? Exact(GiNaC::numeric(rng.integer(-2, 2), 2))
+                   : Exact(GiNaC::numeric(rng.integer(-4, 4), 4)));
     YAML::Node g;
     g["ndc"] = gen_list(ndc);
     g["width"] = gen_number(w);

@@ -5,15 +5,16 @@
 // into a fan of triangles from their first vertex; coverage follows the top-left rule with
 // pixel centres at (i + ½, j + ½), y up. Grids are reported top row (j = h − 1) first, as
 // drawn on paper; +∞ is written 1e30 in numbers and "inf" in the derivation.
-#include "solver/problem/generate.hpp"
-#include "solver/input/given_reader.hpp"
-#include "solver/problem/registry.hpp"
 #include "solver/raster/zbuffer.hpp"
-#include "solver/util/diagnostic.hpp"
 
 #include <fmt/format.h>
 
 #include <cctype>
+
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
@@ -21,11 +22,12 @@ namespace {
 
 struct ZBuffer {
   static constexpr const char* kName = "zbuffer";
-  static constexpr const char* kSummary = "frame and depth buffers of the Z-buffer algorithm on a small grid";
+  static constexpr const char* kSummary =
+      "frame and depth buffers of the Z-buffer algorithm on a small grid";
   static constexpr ConventionUse kUses{.api = false, .angles = false};
-  static constexpr int kMaxSize = 256;         // the largest grid: 256 × 256 pixels
-  static constexpr int kMaxShownSize = 32;     // larger grids are not written into the derivation
-  static constexpr double kInfinity = 1e30;    // +∞ in the numbers of `depth`
+  static constexpr int kMaxSize = 256;       // the largest grid: 256 × 256 pixels
+  static constexpr int kMaxShownSize = 32;   // larger grids are not written into the derivation
+  static constexpr double kInfinity = 1e30;  // +∞ in the numbers of `depth`
   static constexpr std::size_t kMaxPolygons = 1000;
   // Every polygon tests every pixel with exact depths, so the work is width × height ×
   // polygons; this bound keeps one problem to about a second (256 × 256 with one polygon,
@@ -60,11 +62,13 @@ struct ZBuffer {
   }
 
   static int read_dimension(GivenReader& r, const Exact& e, const std::string& name) {
-    if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_integer() || exact_sign(e) <= 0)
+    if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_integer() ||
+        exact_sign(e) <= 0)
       r.fail("size", "the " + name + " must be a positive integer");
     if (exact_sign(e - kMaxSize) > 0)
-      r.fail("size", "the grid may be at most " + std::to_string(kMaxSize) + " × " + std::to_string(kMaxSize) +
-                         " pixels (the zbuffer kind's limit); got " + name + " " + exact(e).unicode);
+      r.fail("size", "the grid may be at most " + std::to_string(kMaxSize) + " × " +
+                         std::to_string(kMaxSize) + " pixels (the zbuffer kind's limit); got " +
+                         name + " " + exact(e).unicode);
     return GiNaC::ex_to<GiNaC::numeric>(e).to_int();
   }
 
@@ -72,7 +76,11 @@ struct ZBuffer {
   static bool one_character(const std::string& s) {
     if (s.empty()) return false;
     const unsigned char c = static_cast<unsigned char>(s[0]);
-    const std::size_t len = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+    const std::size_t len = c < 0x80         ? 1
+                            : (c >> 5) == 6  ? 2
+                            : (c >> 4) == 14 ? 3
+                            : (c >> 3) == 30 ? 4
+                                             : 0;
     return len == s.size() && !(len == 1 && std::isspace(c));
   }
 
@@ -82,7 +90,8 @@ struct ZBuffer {
     g.width = read_dimension(r, size[0], "width");
     g.height = read_dimension(r, size[1], "height");
     const std::size_t n = r.list_size("polygons", 1);
-    if (n > kMaxPolygons) r.fail("polygons", "at most " + std::to_string(kMaxPolygons) + " polygons");
+    if (n > kMaxPolygons)
+      r.fail("polygons", "at most " + std::to_string(kMaxPolygons) + " polygons");
     if (static_cast<double>(g.width) * g.height * static_cast<double>(n) > kMaxPixelTests)
       r.fail("polygons", fmt::format("{} × {} pixels × {} polygons is more than the zbuffer kind's "
                                      "limit of {} pixel tests (256 × 256 with one polygon, 64 × 64 "
@@ -97,7 +106,8 @@ struct ZBuffer {
       if (!label.IsScalar()) it.fail("label", "expected one character such as \"1\"");
       p.label = label.Scalar();
       if (!one_character(p.label) || p.label == kBackground)
-        it.fail("label", "a label is one character other than \".\" (the background), got '" + p.label + "'");
+        it.fail("label", "a label is one character other than \".\" (the background), got '" +
+                             p.label + "'");
       p.points = it.points("points", 3);
       it.finish();
       g.polygons.push_back(std::move(p));
@@ -105,7 +115,9 @@ struct ZBuffer {
     return g;
   }
 
-  static std::string depth_text(const std::optional<Exact>& z) { return z ? exact(*z).unicode : "inf"; }
+  static std::string depth_text(const std::optional<Exact>& z) {
+    return z ? exact(*z).unicode : "inf";
+  }
 
   // The frame and depth grids as text, top row first, columns aligned.
   static std::string grids(const FrameBuffer& frame, const DepthBuffer<Exact>& depth) {
@@ -136,13 +148,19 @@ struct ZBuffer {
     DepthBuffer<Exact> depth(g.width, g.height, std::nullopt);
     const bool show = g.width <= kMaxShownSize && g.height <= kMaxShownSize;
     if (steps) {
-      steps->note("Pixels, orientation and the depth test",
-                  "Pixel (i, j) has its centre at (i + ½, j + ½), window y up; grids are written top row first. "
-                  "Coverage uses the top-left fill rule; convex polygons are split into a fan of triangles from "
-                  "their first vertex; z is interpolated linearly in x and y (the plane through the vertices). "
-                  "A pixel is overwritten when the polygon's z is smaller than Z(i, j); equal z keeps "
-                  "the earlier polygon.");
-      steps->add("Initialise", {}, {}, math("F(i, j) = “.”,  Z(i, j) = ∞", "F(i, j) = \\text{“.”},\\; Z(i, j) = \\infty"))
+      steps->note(
+          "Pixels, orientation and the depth test",
+          "Pixel (i, j) has its centre at (i + ½, j + ½), window y up; grids are written top row "
+          "first. "
+          "Coverage uses the top-left fill rule; convex polygons are split into a fan of triangles "
+          "from "
+          "their first vertex; z is interpolated linearly in x and y (the plane through the "
+          "vertices). "
+          "A pixel is overwritten when the polygon's z is smaller than Z(i, j); equal z keeps "
+          "the earlier polygon.");
+      steps
+          ->add("Initialise", {}, {},
+                math("F(i, j) = “.”,  Z(i, j) = ∞", "F(i, j) = \\text{“.”},\\; Z(i, j) = \\infty"))
           .note = show ? grids(frame, depth) : "(grids larger than 32 × 32 are not written out)";
     }
     std::vector<std::string> after;
@@ -166,7 +184,8 @@ struct ZBuffer {
         }
         if (t.degenerate) ++degenerate;
         const DrawCount n = draw_triangle<Exact>(
-            t, z, p.label, depth, frame, [](const Exact& a, const Exact& b) { return exact_sign(a - b) < 0; });
+            t, z, p.label, depth, frame,
+            [](const Exact& a, const Exact& b) { return exact_sign(a - b) < 0; });
         total.covered += n.covered;
         total.written += n.written;
       }
@@ -174,12 +193,15 @@ struct ZBuffer {
         if (cell) *cell = canonical(*cell);
       after.push_back(joined(frame_rows(frame)));
       if (steps) {
-        Step& s = steps->add("Polygon " + std::to_string(k + 1) + " (label " + p.label + ")", {}, {},
-                             counts({{total.covered, "pixel(s) covered"}, {total.written, "nearer than Z(i, j) and written"}}));
+        Step& s =
+            steps->add("Polygon " + std::to_string(k + 1) + " (label " + p.label + ")", {}, {},
+                       counts({{total.covered, "pixel(s) covered"},
+                               {total.written, "nearer than Z(i, j) and written"}}));
         s.note = show ? grids(frame, depth) : "";
         if (degenerate > 0)
           steps->warn("Degenerate polygon " + std::to_string(k + 1),
-                      std::to_string(degenerate) + " of its fan triangles have zero area in x, y and cover no pixels.");
+                      std::to_string(degenerate) +
+                          " of its fan triangles have zero area in x, y and cover no pixels.");
       }
     }
     Answers out;
@@ -197,7 +219,8 @@ struct ZBuffer {
     out.set("depth", d);
     out.set("steps", Value::word_list(after));
     if (steps) {
-      steps->add("Final frame buffer", {}, {}, word(joined(frame_rows(frame)))).note = "Rows top first, joined by “/”.";
+      steps->add("Final frame buffer", {}, {}, word(joined(frame_rows(frame)))).note =
+          "Rows top first, joined by “/”.";
       steps->yields("frame");
       steps->yields("depth");
       steps->yields("steps");

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -54,7 +53,8 @@ std::string digits_sentence(double kappa, Precision p) {
   const double d = trusted_digits(kappa, p);
   if (p == Precision::Exact) return "the exact backend keeps every digit";
   if (d < 0.5) return fmt::format("{} keeps no correct digit", to_string(p));
-  return fmt::format("{} keeps about {:.1f} of its {:.1f} digits", to_string(p), d, decimal_digits(p));
+  return fmt::format("{} keeps about {:.1f} of its {:.1f} digits", to_string(p), d,
+                     decimal_digits(p));
 }
 
 std::string digits_sentence(double kappa) { return digits_sentence(kappa, kappa, kappa, kappa); }
@@ -148,8 +148,9 @@ DepthCondition depth_condition(const Eigen::Vector3d& a_in, const Eigen::Vector3
   const Eigen::Vector3d u = b - a, v = c - a;
   const Eigen::Vector3d n = u.cross(v), terms = abs_cross(u, v);
   // Input rounding in the projected edges, as for a normal.
-  const double scale = std::max({a.head<2>().cwiseAbs().maxCoeff(), b.head<2>().cwiseAbs().maxCoeff(),
-                                 c.head<2>().cwiseAbs().maxCoeff()});
+  const double scale =
+      std::max({a.head<2>().cwiseAbs().maxCoeff(), b.head<2>().cwiseAbs().maxCoeff(),
+                c.head<2>().cwiseAbs().maxCoeff()});
   const double edges = u.head<2>().cwiseAbs().maxCoeff() + v.head<2>().cwiseAbs().maxCoeff();
   out.kappa_c = ratio(terms.z() + 2 * scale * edges, std::abs(n.z()));
   if (!std::isfinite(out.kappa_c)) {
@@ -160,7 +161,8 @@ DepthCondition depth_condition(const Eigen::Vector3d& a_in, const Eigen::Vector3
   const double correction = (std::abs(n.x() * dx) + std::abs(n.y() * dy)) / std::abs(n.z());
   const double z = a.z() - (n.x() * dx + n.y() * dy) / n.z();
   // Relative to the triangle's depths (what a z-buffer compares), not to z alone, which may be 0.
-  const double depth_scale = std::max({std::abs(z), std::abs(a.z()), std::abs(b.z()), std::abs(c.z())});
+  const double depth_scale =
+      std::max({std::abs(z), std::abs(a.z()), std::abs(b.z()), std::abs(c.z())});
   out.kappa_z = ratio(std::abs(a.z()) + correction * (1 + out.kappa_c), depth_scale);
   return out;
 }

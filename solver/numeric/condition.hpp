@@ -4,12 +4,11 @@
 // the (double-rounded) data: they warn, they never decide.
 #pragma once
 
-#include "solver/numeric/precision.hpp"
-
 #include <Eigen/Core>
-
 #include <string>
 #include <vector>
+
+#include "solver/numeric/precision.hpp"
 
 namespace frustum {
 

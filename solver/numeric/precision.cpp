@@ -9,10 +9,14 @@ namespace frustum {
 
 std::string_view to_string(Precision p) {
   switch (p) {
-    case Precision::Float: return "float";
-    case Precision::Double: return "double";
-    case Precision::LongDouble: return "long-double";
-    case Precision::Exact: break;
+    case Precision::Float:
+      return "float";
+    case Precision::Double:
+      return "double";
+    case Precision::LongDouble:
+      return "long-double";
+    case Precision::Exact:
+      break;
   }
   return "exact";
 }
@@ -28,10 +32,14 @@ namespace {
 
 int significand_bits(Precision p) {
   switch (p) {
-    case Precision::Float: return std::numeric_limits<float>::digits;
-    case Precision::Double: return std::numeric_limits<double>::digits;
-    case Precision::LongDouble: return std::numeric_limits<long double>::digits;
-    case Precision::Exact: break;
+    case Precision::Float:
+      return std::numeric_limits<float>::digits;
+    case Precision::Double:
+      return std::numeric_limits<double>::digits;
+    case Precision::LongDouble:
+      return std::numeric_limits<long double>::digits;
+    case Precision::Exact:
+      break;
   }
   return 0;
 }
@@ -48,13 +56,13 @@ double decimal_digits(Precision p) {
 }
 
 std::string describe(Precision p) {
-  if (p == Precision::Exact)
-    return "exact (GiNaC: rationals and radicals, no rounding anywhere)";
+  if (p == Precision::Exact) return "exact (GiNaC: rationals and radicals, no rounding anywhere)";
   const char* format = p == Precision::Float    ? "IEEE 754 binary32"
                        : p == Precision::Double ? "IEEE 754 binary64"
                                                 : "x87 80-bit extended";
-  return fmt::format("{} ({}, {}-bit significand, unit roundoff {:.1e}, about {:.1f} decimal digits)",
-                     to_string(p), format, significand_bits(p), unit_roundoff(p), decimal_digits(p));
+  return fmt::format(
+      "{} ({}, {}-bit significand, unit roundoff {:.1e}, about {:.1f} decimal digits)",
+      to_string(p), format, significand_bits(p), unit_roundoff(p), decimal_digits(p));
 }
 
 namespace {
@@ -124,7 +132,8 @@ Exact exact_of(long double v) {
   constexpr int kBits = std::numeric_limits<long double>::digits;
   const long double mantissa = std::ldexp(std::abs(fraction), kBits);  // an integer < 2^64
   const auto m = static_cast<unsigned long long>(mantissa);
-  const Exact e = GiNaC::numeric(static_cast<unsigned long>(m)) * GiNaC::numeric(2).power(exponent - kBits);
+  const Exact e =
+      GiNaC::numeric(static_cast<unsigned long>(m)) * GiNaC::numeric(2).power(exponent - kBits);
   return v < 0 ? Exact(-e) : e;
 }
 

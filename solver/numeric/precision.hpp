@@ -3,11 +3,11 @@
 // unit roundoff, and converts exact values to and from them.
 #pragma once
 
-#include "solver/core/exact.hpp"
-
 #include <optional>
 #include <string>
 #include <string_view>
+
+#include "solver/core/exact.hpp"
 
 namespace frustum {
 
@@ -16,7 +16,7 @@ enum class Precision { Float, Double, LongDouble, Exact };
 inline constexpr Precision kAllPrecisions[] = {Precision::Float, Precision::Double,
                                                Precision::LongDouble, Precision::Exact};
 
-std::string_view to_string(Precision p);           // "float", "double", "long-double", "exact"
+std::string_view to_string(Precision p);  // "float", "double", "long-double", "exact"
 std::optional<Precision> parse_precision(std::string_view text);
 // One sentence for the derivation: "double (IEEE 754 binary64, 53-bit significand, unit
 // roundoff 1.1e-16, about 15.9 decimal digits)".
@@ -32,10 +32,14 @@ double decimal_digits(Precision p);
 template <typename F>
 decltype(auto) with_scalar(Precision p, F&& f) {
   switch (p) {
-    case Precision::Float: return f.template operator()<float>();
-    case Precision::Double: return f.template operator()<double>();
-    case Precision::LongDouble: return f.template operator()<long double>();
-    case Precision::Exact: break;
+    case Precision::Float:
+      return f.template operator()<float>();
+    case Precision::Double:
+      return f.template operator()<double>();
+    case Precision::LongDouble:
+      return f.template operator()<long double>();
+    case Precision::Exact:
+      break;
   }
   return f.template operator()<Exact>();
 }
@@ -45,7 +49,9 @@ decltype(auto) with_scalar(Precision p, F&& f) {
 template <typename T>
 T from_exact(const Exact& e);
 template <>
-inline Exact from_exact<Exact>(const Exact& e) { return e; }
+inline Exact from_exact<Exact>(const Exact& e) {
+  return e;
+}
 template <>
 double from_exact<double>(const Exact& e);
 template <>

@@ -7,10 +7,10 @@
 // |value| > radius (predicates.hpp), else decided exactly.
 #pragma once
 
-#include "solver/core/scalar.hpp"
-
 #include <cmath>
 #include <limits>
+
+#include "solver/core/scalar.hpp"
 
 namespace frustum {
 

@@ -1,9 +1,9 @@
 #include "solver/problem/generate.hpp"
 
-#include "solver/util/exact_format.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
@@ -40,7 +40,8 @@ YAML::Node redraw(const YAML::Node& n, const std::string& key, Rng& rng) {
     return out;
   }
   if (!n.IsScalar() || !integer_literal(n.Scalar())) return YAML::Node(n.Scalar());
-  static const std::vector<std::string> kept = {"dim", "width", "height", "label", "faces", "pixels"};
+  static const std::vector<std::string> kept = {"dim",   "width", "height",
+                                                "label", "faces", "pixels"};
   if (std::find(kept.begin(), kept.end(), key) != kept.end()) return YAML::Node(n.Scalar());
   const std::int64_t v = std::stoll(n.Scalar());
   if (v == 0) return gen_number(0);
@@ -127,7 +128,9 @@ YAML::Node gen_window(std::int64_t xmin, std::int64_t xmax, std::int64_t ymin, s
   return w;
 }
 
-YAML::Node gen_fraction(std::int64_t num, std::int64_t den) { return gen_number(Exact(GiNaC::numeric(num, den))); }
+YAML::Node gen_fraction(std::int64_t num, std::int64_t den) {
+  return gen_number(Exact(GiNaC::numeric(num, den)));
+}
 
 YAML::Node gen_angle(std::int64_t degrees, const Conventions& c) {
   if (c.angles == AngleUnit::Degrees) return gen_number(degrees);
@@ -146,7 +149,9 @@ IVec3 iscale(std::int64_t k, const IVec3& a) { return {k * a[0], k * a[1], k * a
 IVec3 icross(const IVec3& a, const IVec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-std::int64_t idot(const IVec3& a, const IVec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+std::int64_t idot(const IVec3& a, const IVec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 bool is_square(std::int64_t v) {
   if (v < 0) return false;
@@ -164,7 +169,8 @@ YAML::Node gen_points(const std::vector<IVec3>& points) {
   return gen_rows(rows);
 }
 
-std::array<IVec3, 3> gen_triangle(Rng& rng, const GenerateOptions& o, std::int64_t lo, std::int64_t hi) {
+std::array<IVec3, 3> gen_triangle(Rng& rng, const GenerateOptions& o, std::int64_t lo,
+                                  std::int64_t hi) {
   constexpr int kTries = 2000;  // nice triangles are a few percent of all
   std::array<IVec3, 3> t{};
   for (int attempt = 0; attempt < kTries; ++attempt) {

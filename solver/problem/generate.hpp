@@ -4,11 +4,6 @@
 // by the kind's `parse`, exactly like a hand-written problem.
 #pragma once
 
-#include "solver/core/matrix.hpp"
-#include "solver/problem/rng.hpp"
-#include "solver/core/exact.hpp"
-#include "solver/viewing/conventions.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <array>
@@ -16,6 +11,11 @@
 #include <initializer_list>
 #include <string>
 #include <vector>
+
+#include "solver/core/exact.hpp"
+#include "solver/core/matrix.hpp"
+#include "solver/problem/rng.hpp"
+#include "solver/viewing/conventions.hpp"
 
 namespace frustum {
 
@@ -36,7 +36,9 @@ YAML::Node gen_number(std::int64_t v);
 // An exact number: an integer as is, otherwise its plain exact text ("1/2", "sqrt(3)").
 YAML::Node gen_number(const Exact& v);
 YAML::Node gen_list(const std::vector<std::int64_t>& v);
-inline YAML::Node gen_list(std::initializer_list<std::int64_t> v) { return gen_list(std::vector<std::int64_t>(v)); }
+inline YAML::Node gen_list(std::initializer_list<std::int64_t> v) {
+  return gen_list(std::vector<std::int64_t>(v));
+}
 YAML::Node gen_list(const std::vector<Exact>& v);
 YAML::Node gen_rows(const std::vector<std::vector<std::int64_t>>& rows);
 YAML::Node gen_word(const std::string& w);
@@ -69,7 +71,8 @@ bool is_square(std::int64_t v);
 std::vector<std::int64_t> to_list(const IVec3& v);
 // Three integer points in [lo, hi]³: well shaped (kMinTriangleShape), with an integer ‖n‖ when
 // nice (a rational unit normal), nearly collinear when hard.
-std::array<IVec3, 3> gen_triangle(Rng& rng, const GenerateOptions& o, std::int64_t lo, std::int64_t hi);
+std::array<IVec3, 3> gen_triangle(Rng& rng, const GenerateOptions& o, std::int64_t lo,
+                                  std::int64_t hi);
 YAML::Node gen_points(const std::vector<IVec3>& points);
 
 // ---- conditioning measures on doubles ----

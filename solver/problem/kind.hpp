@@ -3,11 +3,6 @@
 // registry (registry.hpp) lists them all.
 #pragma once
 
-#include "solver/derivation/derivation.hpp"
-#include "solver/derivation/value.hpp"
-#include "solver/problem/numeric_result.hpp"
-#include "solver/viewing/conventions.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -15,6 +10,11 @@
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/derivation/value.hpp"
+#include "solver/problem/numeric_result.hpp"
+#include "solver/viewing/conventions.hpp"
 
 namespace frustum {
 
@@ -38,14 +38,14 @@ enum class AnswerKind {
   PointSet,    // rows in any order (the pixels a triangle covers)
   Point,       // a point; homogeneous points up to w
   Bool,
-  Category,    // one word of a fixed list (front/back/edge_on; 表/裏)
-  WordMap,     // "i-j" → word
-  WordList,    // an unordered set of words (edge lists)
-  Sequence,    // an ordered list of words (a drawing order)
-  Polygon,     // vertex list up to cyclic rotation
-  BitString,   // outcodes
-  Statements   // which numbered statements are true: their numbers, or one true/false each;
-               // credit per statement (grader/statement_choice.hpp)
+  Category,   // one word of a fixed list (front/back/edge_on; 表/裏)
+  WordMap,    // "i-j" → word
+  WordList,   // an unordered set of words (edge lists)
+  Sequence,   // an ordered list of words (a drawing order)
+  Polygon,    // vertex list up to cyclic rotation
+  BitString,  // outcodes
+  Statements  // which numbered statements are true: their numbers, or one true/false each;
+              // credit per statement (grader/statement_choice.hpp)
 };
 
 // How finely a numeric answer is judged, per component (docs/grading.md §2): `magnitude` is
@@ -59,9 +59,11 @@ struct AnswerScale {
 };
 using AnswerScales = std::vector<std::pair<std::string, AnswerScale>>;
 // n components of one magnitude, each with the same thresholds.
-inline AnswerScale uniform_scale(std::size_t n, double magnitude, std::vector<double> thresholds = {}) {
-  return {std::vector<double>(n, magnitude),
-          thresholds.empty() ? std::vector<std::vector<double>>{} : std::vector<std::vector<double>>(n, thresholds)};
+inline AnswerScale uniform_scale(std::size_t n, double magnitude,
+                                 std::vector<double> thresholds = {}) {
+  return {std::vector<double>(n, magnitude), thresholds.empty()
+                                                 ? std::vector<std::vector<double>>{}
+                                                 : std::vector<std::vector<double>>(n, thresholds)};
 }
 // The largest |x| (0 when empty or absent): a vector's scale without squaring it.
 inline double largest(const std::vector<double>& v) {
@@ -76,7 +78,7 @@ struct AnswerSpec {
   AnswerKind kind;
   std::vector<std::string> depends_on;  // earlier answers it is computed from
   std::vector<std::string> words;       // Category: the allowed words
-  std::string needs_given = {};         // asked only when the problem gives this field (e.g. points)
+  std::string needs_given = {};  // asked only when the problem gives this field (e.g. points)
   // Matrix: each row is a point (transformed points), so one point may be written as a flat list
   // or a column, and points in homogeneous coordinates with w = 1.
   bool point_rows = false;
@@ -85,10 +87,10 @@ struct AnswerSpec {
 // A common mistake, as the answers it produces: the grader names it when a student's wrong
 // answer matches one of these.
 struct Misconception {
-  std::string name;       // "reversed cross product"
-  std::string feedback;   // what went wrong, for the student
-  std::string step;       // title of the derivation step where it goes wrong
-  Answers answers;        // the answers the mistake leads to
+  std::string name;      // "reversed cross product"
+  std::string feedback;  // what went wrong, for the student
+  std::string step;      // title of the derivation step where it goes wrong
+  Answers answers;       // the answers the mistake leads to
 };
 
 struct KindInfo {
@@ -148,14 +150,18 @@ KindInfo make_kind() {
       return K::carry_forward(std::any_cast<const G&>(g), a);
     };
   if constexpr (requires(const G& g) { K::misconceptions(g); })
-    k.misconceptions = [](const std::any& g) { return K::misconceptions(std::any_cast<const G&>(g)); };
+    k.misconceptions = [](const std::any& g) {
+      return K::misconceptions(std::any_cast<const G&>(g));
+    };
   if constexpr (requires(const G& g, const Answers& a) { K::scales(g, a); })
-    k.scales = [](const std::any& g, const Answers& a) { return K::scales(std::any_cast<const G&>(g), a); };
+    k.scales = [](const std::any& g, const Answers& a) {
+      return K::scales(std::any_cast<const G&>(g), a);
+    };
   if constexpr (requires(const G& g) { K::solve_numeric(g, Precision::Double); })
     k.solve_numeric = [](const std::any& g, Precision p) {
       return K::solve_numeric(std::any_cast<const G&>(g), p);
     };
-  if constexpr (requires(Rng& r, const GenerateOptions& o) { K::generate(r, o); })
+  if constexpr (requires(Rng & r, const GenerateOptions& o) { K::generate(r, o); })
     k.generate = [](Rng& r, const GenerateOptions& o) { return K::generate(r, o); };
   if constexpr (requires(const G& g, const Answers& a) { K::ill_conditioned(g, a); })
     k.ill_conditioned = [](const std::any& g, const Answers& a) {

@@ -3,16 +3,16 @@
 // ill-conditioning it found. Kinds build these from their templated cores with NumericOut.
 #pragma once
 
-#include "solver/derivation/value.hpp"
-#include "solver/numeric/precision.hpp"
-#include "solver/viewing/transforms.hpp"
-
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "solver/derivation/value.hpp"
+#include "solver/numeric/precision.hpp"
+#include "solver/viewing/transforms.hpp"
 
 namespace frustum {
 
@@ -99,7 +99,8 @@ class NumericOut {
     std::vector<T> row_major;
     for (int i = 0; i < m.rows(); ++i)
       for (int j = 0; j < m.cols(); ++j) row_major.push_back(m(i, j));
-    put(name, Value::Shape::Matrix, static_cast<int>(m.rows()), static_cast<int>(m.cols()), row_major);
+    put(name, Value::Shape::Matrix, static_cast<int>(m.rows()), static_cast<int>(m.cols()),
+        row_major);
   }
   void rows(const std::string& name, const std::vector<std::vector<T>>& rows) {
     std::vector<T> flat;
@@ -109,7 +110,9 @@ class NumericOut {
   }
   void null(const std::string& name) { r_.answers.set(name, Value::null()); }
   void boolean(const std::string& name, bool b) { r_.answers.set(name, Value::boolean(b)); }
-  void word(const std::string& name, const std::string& w) { r_.answers.set(name, Value::category(w)); }
+  void word(const std::string& name, const std::string& w) {
+    r_.answers.set(name, Value::category(w));
+  }
   void warn(std::string title, std::string text) {
     r_.warnings.push_back({std::move(title), std::move(text)});
   }
@@ -121,14 +124,18 @@ class NumericOut {
   // `discrete_exact`: the kind decides its discrete answers on the exact inputs (say so).
   void inputs(const InputRange& range, bool discrete_exact = true) {
     const std::string name(to_string(r_.precision));
-    const std::string decided = discrete_exact ? ", and every discrete answer was decided on the exact inputs." : ".";
+    const std::string decided =
+        discrete_exact ? ", and every discrete answer was decided on the exact inputs." : ".";
     if (range.overflow)
-      warn("Inputs overflow", "some inputs exceed the range of " + name +
-                                  " and became infinite; the values computed from them are meaningless" + decided);
+      warn("Inputs overflow",
+           "some inputs exceed the range of " + name +
+               " and became infinite; the values computed from them are meaningless" + decided);
     if (range.underflow)
-      warn("Inputs underflow", "some inputs are below the normal range of " + name +
-                                   " and were rounded to subnormal numbers or to 0: the values computed from "
-                                   "them keep few or none of their digits" + decided);
+      warn("Inputs underflow",
+           "some inputs are below the normal range of " + name +
+               " and were rounded to subnormal numbers or to 0: the values computed from "
+               "them keep few or none of their digits" +
+               decided);
   }
   // A discrete answer decided by the exact fallback (predicates.hpp), in neutral words.
   void exact_decision(const std::string& what) {
@@ -141,14 +148,15 @@ class NumericOut {
       warn("Overflow", "some values exceed the range of " + std::string(to_string(r_.precision)) +
                            " and are infinite or not a number; the exact backend has no limit.");
     if (underflow_)
-      warn("Underflow", "some values are below the normal range of " +
-                            std::string(to_string(r_.precision)) +
-                            " (subnormal, or flushed to 0): they keep few or none of their digits.");
+      warn("Underflow",
+           "some values are below the normal range of " + std::string(to_string(r_.precision)) +
+               " (subnormal, or flushed to 0): they keep few or none of their digits.");
     return std::move(r_);
   }
 
  private:
-  void put(const std::string& name, Value::Shape shape, int rows, int cols, const std::vector<T>& v) {
+  void put(const std::string& name, Value::Shape shape, int rows, int cols,
+           const std::vector<T>& v) {
     Value value;
     value.shape = shape;
     value.rows = rows;

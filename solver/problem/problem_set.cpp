@@ -4,9 +4,9 @@
 #include <set>
 
 #include "solver/input/given_reader.hpp"
-#include "solver/problem/registry.hpp"
 #include "solver/input/text_reader.hpp"
 #include "solver/input/yaml_document.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/util/suggest.hpp"
 
 namespace frustum {
@@ -16,10 +16,9 @@ namespace {
 const std::vector<std::string> kSetFields = {"title",       "lang",      "source",
                                              "conventions", "tolerance", "problems",
                                              "description", "grading",   "variants"};
-const std::vector<std::string> kProblemFields = {"id",     "kind",        "text",
-                                                 "given",  "ask",         "points",
-                                                 "vary",   "conventions", "tolerance",
-                                                 "nice",   "difficulty",  "grading"};
+const std::vector<std::string> kProblemFields = {"id",        "kind",   "text",       "given",
+                                                 "ask",       "points", "vary",       "conventions",
+                                                 "tolerance", "nice",   "difficulty", "grading"};
 
 [[noreturn]] void fail_at(const YAML::Node& n, const std::string& file, const std::string& field,
                           const std::string& message) {
@@ -59,7 +58,8 @@ double read_points(const YAML::Node& n, const std::string& file, const std::stri
 void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
                   std::set<std::string>& ids) {
   const std::string& file = set.file;
-  if (!p.IsMap()) fail_at(p, file, spec.field, "expected a problem (a mapping with id, kind, given)");
+  if (!p.IsMap())
+    fail_at(p, file, spec.field, "expected a problem (a mapping with id, kind, given)");
   check_keys(p, kProblemFields, file, spec.field);
   if (!p["id"].IsDefined()) fail_at(p, file, spec.field + ".id", "missing required field");
   spec.id = read_string(p["id"], file, spec.field + ".id");
@@ -77,8 +77,8 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
     spec.text = read_local_text(p["text"], file, spec.field + ".text", set.lang);
     spec.text_node = p["text"];
   }
-  spec.conventions = read_conventions(p["conventions"], file, spec.field + ".conventions",
-                                      set.conventions);
+  spec.conventions =
+      read_conventions(p["conventions"], file, spec.field + ".conventions", set.conventions);
   // Kinds that do not yet follow a left-handed course under OpenGL's or Processing's matrices
   // (their solids' windings, scene cameras and projection plane are right-handed): refused
   // rather than answered in the other handedness.
@@ -86,7 +86,8 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
       (spec.kind == "edge_visibility" || spec.kind == "render" || spec.kind == "projection_plane"))
     fail_at(p["conventions"].IsDefined() ? p["conventions"] : p["kind"], file,
             spec.field + ".conventions.handedness",
-            "the kind '" + spec.kind + "' is solved right-handed only (or left-handed with api: directx)");
+            "the kind '" + spec.kind +
+                "' is solved right-handed only (or left-handed with api: directx)");
   spec.tolerance = read_tolerance(p["tolerance"], file, spec.field + ".tolerance", set.tolerance);
   spec.grading = read_grading(p["grading"], file, spec.field + ".grading", set.grading);
 
@@ -95,7 +96,8 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   std::vector<std::string> answer_names, applicable;
   const YAML::Node given_node = p["given"];
   const auto gives = [&](const std::string& field) {
-    return field.empty() || (given_node.IsMap() && given_node[field].IsDefined() && !given_node[field].IsNull());
+    return field.empty() ||
+           (given_node.IsMap() && given_node[field].IsDefined() && !given_node[field].IsNull());
   };
   for (const AnswerSpec& a : spec.info->answers) {
     answer_names.push_back(a.name);
@@ -120,7 +122,8 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
                     did_you_mean(spec.ask[i], answer_names));
       else if (!gives(a->needs_given))
         fail_at(ask.IsSequence() ? ask[i] : ask, file, f,
-                "'" + spec.ask[i] + "' needs given." + a->needs_given + ", which this problem does not give");
+                "'" + spec.ask[i] + "' needs given." + a->needs_given +
+                    ", which this problem does not give");
     }
     if (spec.ask.empty()) fail_at(ask, file, f, "asks for nothing");
   } else {
@@ -145,7 +148,9 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
     for (auto it = per.begin(); it != per.end(); ++it) {
       const std::string k = it->first.as<std::string>();
       const std::string f = spec.field + ".tolerance.answers." + k;
-      if (!spec.info->answer(k)) fail_at(it->first, file, f, "not an answer of " + spec.kind + did_you_mean(k, answer_names));
+      if (!spec.info->answer(k))
+        fail_at(it->first, file, f,
+                "not an answer of " + spec.kind + did_you_mean(k, answer_names));
       spec.answer_tolerance[k] = read_tolerance(it->second, file, f, spec.tolerance);
     }
   // Variation (generate.hpp): `vary`, `nice: true`, `difficulty: normal|hard`.
@@ -155,7 +160,8 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
             spec.kind + " has nothing to vary: every variant keeps it as written");
   if (p["nice"].IsDefined()) {
     const std::string v = read_string(p["nice"], file, spec.field + ".nice");
-    if (v != "true" && v != "false") fail_at(p["nice"], file, spec.field + ".nice", "must be true or false");
+    if (v != "true" && v != "false")
+      fail_at(p["nice"], file, spec.field + ".nice", "must be true or false");
     spec.nice = v == "true";
   }
   if (p["difficulty"].IsDefined()) {
@@ -174,8 +180,8 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
 
 }  // namespace
 
-Conventions read_conventions(const YAML::Node& n, const std::string& file,
-                             const std::string& field, Conventions base) {
+Conventions read_conventions(const YAML::Node& n, const std::string& file, const std::string& field,
+                             Conventions base) {
   if (!n.IsDefined() || n.IsNull()) return base;
   if (!n.IsMap()) fail_at(n, file, field, "expected a mapping like {api: opengl, angles: degrees}");
   check_keys(n, {"api", "angles", "z_planes", "fov", "handedness"}, file, field);
@@ -192,16 +198,17 @@ Conventions read_conventions(const YAML::Node& n, const std::string& file,
     const std::string v = read_string(n["angles"], file, field + ".angles");
     const auto unit = parse_angle_unit(v);
     if (!unit)
-      fail_at(n["angles"], file, field + ".angles",
-              "'" + v + "' is not one of degrees, radians" +
-                  did_you_mean(v, {"degrees", "radians"}));
+      fail_at(
+          n["angles"], file, field + ".angles",
+          "'" + v + "' is not one of degrees, radians" + did_you_mean(v, {"degrees", "radians"}));
     base.angles = *unit;
   }
   if (n["z_planes"].IsDefined()) {
     const std::string v = read_string(n["z_planes"], file, field + ".z_planes");
     if (v != "distances" && v != "coordinates")
       fail_at(n["z_planes"], file, field + ".z_planes",
-              "'" + v + "' is not one of distances, coordinates" + did_you_mean(v, {"distances", "coordinates"}));
+              "'" + v + "' is not one of distances, coordinates" +
+                  did_you_mean(v, {"distances", "coordinates"}));
     base.z_planes = v == "coordinates" ? ZPlanes::Coordinates : ZPlanes::Distances;
   }
   if (n["fov"].IsDefined()) {
@@ -238,8 +245,9 @@ Tolerance read_tolerance(const YAML::Node& n, const std::string& file, const std
     if (!n[key].IsDefined()) return std::nullopt;
     const double v = read_nonnegative(n[key], file, field + "." + key);
     if (v != std::floor(v) || v > 17 || (std::string(key) == "sigfigs" && v < 1))
-      fail_at(n[key], file, field + "." + key, std::string("must be a whole number ") +
-                                                   (std::string(key) == "sigfigs" ? "from 1 to 17" : "from 0 to 17"));
+      fail_at(n[key], file, field + "." + key,
+              std::string("must be a whole number ") +
+                  (std::string(key) == "sigfigs" ? "from 1 to 17" : "from 0 to 17"));
     return static_cast<int>(v);
   };
   if (auto s = count("sigfigs")) base.sigfigs = s;
@@ -256,7 +264,8 @@ Grading read_grading(const YAML::Node& n, const std::string& file, const std::st
   check_keys(n, {"ecf", "partial", "linear_matrix"}, file, field);
   if (n["ecf"].IsDefined()) {
     base.ecf = read_nonnegative(n["ecf"], file, field + ".ecf");
-    if (base.ecf > 1) fail_at(n["ecf"], file, field + ".ecf", "is a fraction of the points, from 0 to 1");
+    if (base.ecf > 1)
+      fail_at(n["ecf"], file, field + ".ecf", "is a fraction of the points, from 0 to 1");
   }
   const auto flag = [&](const char* key, bool& out) {
     if (!n[key].IsDefined()) return;
@@ -337,7 +346,8 @@ ProblemSet load_problem_set_from(const YamlDocument& doc, const std::string& nam
       const std::string v = read_string(root["variants"], name, "variants");
       if (v != "per_student" && v != "fixed")
         fail_at(root["variants"], name, "variants",
-                "'" + v + "' is not one of per_student, fixed" + did_you_mean(v, {"per_student", "fixed"}));
+                "'" + v + "' is not one of per_student, fixed" +
+                    did_you_mean(v, {"per_student", "fixed"}));
       set.per_student = v == "per_student";
     }
     set.conventions = read_conventions(root["conventions"], name, "conventions", {});

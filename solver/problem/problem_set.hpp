@@ -51,9 +51,9 @@ struct Tolerance {
 };
 
 struct Grading {
-  double ecf = kEcfCreditDefault;              // 0 turns error carried forward off
-  bool partial = kPartialDefault;              // credit per component for vectors and matrices
-  bool linear_matrix = kLinearMatrixDefault;   // 3×3 accepted for a purely linear 3D transform
+  double ecf = kEcfCreditDefault;             // 0 turns error carried forward off
+  bool partial = kPartialDefault;             // credit per component for vectors and matrices
+  bool linear_matrix = kLinearMatrixDefault;  // 3×3 accepted for a purely linear 3D transform
 };
 
 struct ProblemSpec {
@@ -65,20 +65,20 @@ struct ProblemSpec {
   Tolerance tolerance;
   std::map<std::string, Tolerance> answer_tolerance;  // tolerance: {answers: {z: {...}}}
   Grading grading;
-  std::vector<std::string> ask;   // every answer of the kind when the file has no `ask`
-  std::optional<double> points;   // total weight; default 1 per asked answer
+  std::vector<std::string> ask;           // every answer of the kind when the file has no `ask`
+  std::optional<double> points;           // total weight; default 1 per asked answer
   std::map<std::string, double> weights;  // points: {normal: 1, z: 2}
-  SourceLocation where;           // the problem's mapping
-  std::string field;              // "problems[2]"
+  SourceLocation where;                   // the problem's mapping
+  std::string field;                      // "problems[2]"
   const KindInfo* info = nullptr;
-  std::any given;                 // the kind's parsed Given
+  std::any given;  // the kind's parsed Given
   // The answers found when a variant was drawn (variants.cpp: each draw is solved to be
   // checked), reused by solve_problem without steps instead of solving the same given again.
   std::shared_ptr<const Answers> drawn_answers;
   YAML::Node given_node;
-  YAML::Node vary;            // the `vary:` block (generate.hpp); undefined when absent
-  bool nice = false;          // nice: true — integer or simple exact answers
-  bool hard = false;          // difficulty: hard — near-degenerate cases on purpose
+  YAML::Node vary;    // the `vary:` block (generate.hpp); undefined when absent
+  bool nice = false;  // nice: true — integer or simple exact answers
+  bool hard = false;  // difficulty: hard — near-degenerate cases on purpose
   std::optional<Diagnostic> error;
 
   double max_score() const;
@@ -117,8 +117,8 @@ ProblemSet load_problem_set(const std::string& path);
 ProblemSet load_problem_set_from_string(const std::string& yaml, const std::string& name);
 
 // Reads `conventions:` / `tolerance:` mappings (also used by the answer loader).
-Conventions read_conventions(const YAML::Node& n, const std::string& file,
-                             const std::string& field, Conventions base);
+Conventions read_conventions(const YAML::Node& n, const std::string& file, const std::string& field,
+                             Conventions base);
 Tolerance read_tolerance(const YAML::Node& n, const std::string& file, const std::string& field,
                          Tolerance base);
 Grading read_grading(const YAML::Node& n, const std::string& file, const std::string& field,

@@ -2,10 +2,10 @@
 // static-initialisation tricks that a linker may drop).
 #pragma once
 
-#include "solver/problem/kind.hpp"
-
 #include <string>
 #include <vector>
+
+#include "solver/problem/kind.hpp"
 
 namespace frustum {
 

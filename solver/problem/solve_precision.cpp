@@ -9,23 +9,27 @@ namespace {
 
 std::string backend_note(Precision p) {
   return "Answers computed in " + describe(p) +
-         (p == Precision::Exact ? "." : "; values only, no derivation steps (--precision exact gives them).");
+         (p == Precision::Exact
+              ? "."
+              : "; values only, no derivation steps (--precision exact gives them).");
 }
 
 }  // namespace
 
 ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps,
                             Precision precision) {
-  const bool numeric = precision != Precision::Exact && !spec.error && spec.info &&
-                       spec.info->solve_numeric;
+  const bool numeric =
+      precision != Precision::Exact && !spec.error && spec.info && spec.info->solve_numeric;
   if (!numeric) {
     ProblemResult r = solve_problem(spec, file, with_steps);
     if (with_steps && !r.error) {
       if (precision == Precision::Exact)
         r.derivation.note("Backend", backend_note(precision));
       else
-        r.derivation.note("Backend", "The kind " + spec.kind + " has no numeric path; it was solved "
-                                     "exactly (" + describe(Precision::Exact) + ").");
+        r.derivation.note("Backend", "The kind " + spec.kind +
+                                         " has no numeric path; it was solved "
+                                         "exactly (" +
+                                         describe(Precision::Exact) + ").");
     }
     return r;
   }
@@ -63,15 +67,16 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
   return r;
 }
 
-SetResult solve_set(const ProblemSet& set, bool with_steps, const std::optional<std::string>& only_id,
-                    Precision precision) {
+SetResult solve_set(const ProblemSet& set, bool with_steps,
+                    const std::optional<std::string>& only_id, Precision precision) {
   if (precision == Precision::Exact && !with_steps) return solve_set(set, with_steps, only_id);
   // The selection and the set's errors as solve_set makes them, with no problem solved twice.
   ProblemSet none = set;
   none.problems.clear();
   SetResult out = solve_set(none, false);
   for (const ProblemSpec& p : set.problems)
-    if (!only_id || p.id == *only_id) out.problems.push_back(solve_problem(p, set.file, with_steps, precision));
+    if (!only_id || p.id == *only_id)
+      out.problems.push_back(solve_problem(p, set.file, with_steps, precision));
   if (only_id && out.problems.empty()) out = solve_set(set, false, only_id);
   return out;
 }

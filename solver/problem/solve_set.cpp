@@ -73,8 +73,8 @@ SetResult solve_set(const ProblemSet& set, bool with_steps,
     out.problems.push_back(solve_problem(p, set.file, with_steps));
   }
   if (only_id && out.problems.empty())
-    out.errors.push_back(Diagnostic{SourceLocation{set.file, 0, 0}, "id",
-                                    "no problem with id '" + *only_id + "'"});
+    out.errors.push_back(
+        Diagnostic{SourceLocation{set.file, 0, 0}, "id", "no problem with id '" + *only_id + "'"});
   return out;
 }
 

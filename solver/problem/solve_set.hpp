@@ -1,11 +1,11 @@
 // Solving loaded problems: each problem alone, so one failure never stops the rest.
 #pragma once
 
-#include "solver/derivation/problem_result.hpp"
-#include "solver/problem/problem_set.hpp"
-
 #include <optional>
 #include <string>
+
+#include "solver/derivation/problem_result.hpp"
+#include "solver/problem/problem_set.hpp"
 
 namespace frustum {
 

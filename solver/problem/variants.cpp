@@ -4,11 +4,11 @@
 #include <functional>
 #include <optional>
 
-#include "solver/problem/generate.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/input/yaml_emit.hpp"
+#include "solver/problem/generate.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/vary_spec.hpp"
-#include "solver/input/yaml_emit.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {

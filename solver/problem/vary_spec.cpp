@@ -1,11 +1,11 @@
 #include "solver/problem/vary_spec.hpp"
 
-#include "solver/problem/generate.hpp"
-#include "solver/input/given_reader.hpp"
-#include "solver/util/suggest.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/util/suggest.hpp"
 
 namespace frustum {
 
@@ -21,8 +21,8 @@ constexpr double kMaxRangeValues = 1e9;
 
 bool has_key(const YAML::Node& n, const char* key) { return n.IsMap() && n[key].IsDefined(); }
 
-void check_keys(const YAML::Node& spec, const std::vector<std::string>& known, const std::string& file,
-                const std::string& field) {
+void check_keys(const YAML::Node& spec, const std::vector<std::string>& known,
+                const std::string& file, const std::string& field) {
   for (auto it = spec.begin(); it != spec.end(); ++it) {
     const std::string k = it->first.as<std::string>();
     if (std::find(known.begin(), known.end(), k) == known.end())
@@ -56,7 +56,8 @@ Range read_range(const YAML::Node& spec, const std::string& file, const std::str
     steps = static_cast<double>(whole.to_long());
   } else {
     steps = std::floor(to_double(q) + 1e-12);
-    if (!(steps < kMaxRangeValues)) fail_at(r, file, field + ".range", "more than 10⁹ values: use a larger step");
+    if (!(steps < kMaxRangeValues))
+      fail_at(r, file, field + ".range", "more than 10⁹ values: use a larger step");
   }
   out.count = static_cast<std::uint64_t>(steps) + 1;
   return out;
@@ -79,7 +80,8 @@ void check_spec(const YAML::Node& spec, const std::string& file, const std::stri
         fail_at(spec["count"], file, field + ".count", "must be a whole number from 1 to 1000");
     }
   } else if (spec.IsSequence()) {
-    for (std::size_t i = 0; i < spec.size(); ++i) check_spec(spec[i], file, field + "[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < spec.size(); ++i)
+      check_spec(spec[i], file, field + "[" + std::to_string(i) + "]");
   } else if (spec.IsMap()) {
     for (auto it = spec.begin(); it != spec.end(); ++it)
       check_spec(it->second, file, field + "." + it->first.as<std::string>());
@@ -93,16 +95,19 @@ YAML::Node draw(const YAML::Node& spec, const YAML::Node& base, Rng& rng, const 
     const auto k = static_cast<long>(rng.below(r.count));
     return gen_number(Exact(r.lo + r.step * k));
   }
-  if (has_key(spec, "choices")) return clone_node(spec["choices"][static_cast<std::size_t>(rng.below(spec["choices"].size()))]);
+  if (has_key(spec, "choices"))
+    return clone_node(spec["choices"][static_cast<std::size_t>(rng.below(spec["choices"].size()))]);
   if (has_key(spec, "each")) {
     std::size_t count = base.IsSequence() ? base.size() : 0;
     if (spec["count"].IsDefined())
-      count = static_cast<std::size_t>(to_double(read_number(spec["count"], file, field + ".count")));
+      count =
+          static_cast<std::size_t>(to_double(read_number(spec["count"], file, field + ".count")));
     if (count == 0)
       fail_at(spec, file, field, "`each` needs a list in `given` to vary, or a `count`");
     YAML::Node out(YAML::NodeType::Sequence);
     for (std::size_t i = 0; i < count; ++i)
-      out.push_back(draw(spec["each"], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file,
+      out.push_back(draw(spec["each"],
+                         base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file,
                          field + ".each"));
     out.SetStyle(YAML::EmitterStyle::Flow);
     return out;
@@ -110,8 +115,8 @@ YAML::Node draw(const YAML::Node& spec, const YAML::Node& base, Rng& rng, const 
   if (spec.IsSequence()) {
     YAML::Node out(YAML::NodeType::Sequence);
     for (std::size_t i = 0; i < spec.size(); ++i)
-      out.push_back(draw(spec[i], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file,
-                         field + "[" + std::to_string(i) + "]"));
+      out.push_back(draw(spec[i], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(),
+                         rng, file, field + "[" + std::to_string(i) + "]"));
     out.SetStyle(YAML::EmitterStyle::Flow);
     return out;
   }
@@ -138,7 +143,8 @@ void check_vary(const YAML::Node& vary, const KindInfo& kind, const std::string&
                 const std::string& field) {
   if (vary_is_default(vary)) return;
   if (!vary.IsMap())
-    fail_at(vary, file, field, "expected a mapping of given fields to {range}, {choices} or {each}, or `default`");
+    fail_at(vary, file, field,
+            "expected a mapping of given fields to {range}, {choices} or {each}, or `default`");
   for (auto it = vary.begin(); it != vary.end(); ++it) {
     const std::string k = it->first.as<std::string>();
     if (std::find(kind.given_fields.begin(), kind.given_fields.end(), k) == kind.given_fields.end())
@@ -148,8 +154,8 @@ void check_vary(const YAML::Node& vary, const KindInfo& kind, const std::string&
   }
 }
 
-YAML::Node apply_vary(const YAML::Node& vary, const YAML::Node& base, Rng& rng, const std::string& file,
-                      const std::string& field) {
+YAML::Node apply_vary(const YAML::Node& vary, const YAML::Node& base, Rng& rng,
+                      const std::string& file, const std::string& field) {
   YAML::Node out = base.IsMap() ? clone_node(base) : YAML::Node(YAML::NodeType::Map);
   for (auto it = vary.begin(); it != vary.end(); ++it) {
     const std::string k = it->first.as<std::string>();

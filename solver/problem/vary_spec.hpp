@@ -10,12 +10,12 @@
 // `vary: default` uses the kind's default generator instead of the given's values.
 #pragma once
 
-#include "solver/problem/kind.hpp"
-#include "solver/problem/rng.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <string>
+
+#include "solver/problem/kind.hpp"
+#include "solver/problem/rng.hpp"
 
 namespace frustum {
 

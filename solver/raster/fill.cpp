@@ -20,14 +20,16 @@ struct Clamped {
 };
 
 Clamped clamp_box(const TriangleSetup& s, int width, int height) {
-  return {std::max(s.i_min, 0), std::min(s.i_max, width - 1), std::max(s.j_min, 0), std::min(s.j_max, height - 1)};
+  return {std::max(s.i_min, 0), std::min(s.i_max, width - 1), std::max(s.j_min, 0),
+          std::min(s.j_max, height - 1)};
 }
 
 }  // namespace
 
 RasterTriangle setup_raster(const WindowTriangle& w, int source) {
   RasterTriangle t;
-  setup_triangle({Vec2<double>(w.v[0](0), w.v[0](1)), Vec2<double>(w.v[1](0), w.v[1](1)), Vec2<double>(w.v[2](0), w.v[2](1))},
+  setup_triangle({Vec2<double>(w.v[0](0), w.v[0](1)), Vec2<double>(w.v[1](0), w.v[1](1)),
+                  Vec2<double>(w.v[2](0), w.v[2](1))},
                  t.setup);  // in place: no copy of the setup
   t.color = pack(w.color);
   t.source = source;
@@ -36,8 +38,10 @@ RasterTriangle setup_raster(const WindowTriangle& w, int source) {
   t.z0 = z[0];
   if (s.degenerate) return t;
   // The plane through the snapped vertices: A·dx + B·dy = dz at v1 and v2.
-  const double dx1 = static_cast<double>(s.v[1].x - s.v[0].x), dy1 = static_cast<double>(s.v[1].y - s.v[0].y);
-  const double dx2 = static_cast<double>(s.v[2].x - s.v[0].x), dy2 = static_cast<double>(s.v[2].y - s.v[0].y);
+  const double dx1 = static_cast<double>(s.v[1].x - s.v[0].x),
+               dy1 = static_cast<double>(s.v[1].y - s.v[0].y);
+  const double dx2 = static_cast<double>(s.v[2].x - s.v[0].x),
+               dy2 = static_cast<double>(s.v[2].y - s.v[0].y);
   const double dz1 = z[1] - z[0], dz2 = z[2] - z[0];
   const double area2 = static_cast<double>(s.area2);
   t.a = (dz1 * dy2 - dz2 * dy1) / area2;
@@ -66,7 +70,8 @@ Span span_on_row(const TriangleSetup& t, int j) {
 // On x86-64 with GCC, an AVX2 clone is chosen at load time where the CPU has it (4 doubles per
 // instruction in the span loop instead of 2). No FMA is enabled, so both clones compute the
 // same depths bit for bit as depth_at().
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
+    !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
 void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
@@ -129,7 +134,8 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
       fragments += i1 - i0 + 1;
       if (stats) {
         for (int i = i0; i <= i1; ++i) {
-          const float z = static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(i - i0) * kSubpixelScale));
+          const float z = static_cast<float>(
+              row_z + t.a * (dx0 + static_cast<double>(i - i0) * kSubpixelScale));
           written += z < d[i];
         }
       }
@@ -139,7 +145,8 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
       float* __restrict dr = d + i0;
       std::uint32_t* __restrict cr = col + i0;
       for (int k = 0; k < n; ++k) {
-        const float z = static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(k) * kSubpixelScale));
+        const float z =
+            static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(k) * kSubpixelScale));
         const float old = dr[k];
         const std::uint32_t keep = z < old ? 0u : ~0u;
         dr[k] = z < old ? z : old;
@@ -153,8 +160,8 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
   }
 }
 
-Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height, Rgb background,
-                     FillStats* stats) {
+Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,
+                     Rgb background, FillStats* stats) {
   Frame frame(width, height, background);
   for (std::size_t k = 0; k < triangles.size(); ++k)
     draw_triangle(setup_raster(triangles[k], static_cast<int>(k)), frame, stats);

@@ -11,11 +11,11 @@
 // the buffer is cleared to 1 (the far plane), so a fragment exactly on the far plane is not.
 #pragma once
 
+#include <cstdint>
+
 #include "solver/raster/pipeline.hpp"
 #include "solver/raster/rasterizer.hpp"
 #include "solver/raster/zbuffer.hpp"
-
-#include <cstdint>
 
 namespace frustum {
 
@@ -34,7 +34,7 @@ struct RasterTriangle {
   TriangleSetup setup;
   double z0 = 0, a = 0, b = 0;  // the depth plane, per 1/256 pixel, about vertex v[0]
   std::uint32_t color = 0;
-  int source = 0;                // index of the WindowTriangle
+  int source = 0;  // index of the WindowTriangle
 };
 
 // Setup: snap, edge functions, bounding box, depth plane.
@@ -73,8 +73,8 @@ struct FillStats {
 void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats = nullptr);
 
 // Setup + draw for every triangle, in order.
-Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height, Rgb background,
-                     FillStats* stats = nullptr);
+Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,
+                     Rgb background, FillStats* stats = nullptr);
 
 // Only what one pixel needs (the render kind): the triangles whose bounds hold the pixel
 // centre compete, in drawing order; no frame is allocated.
@@ -86,7 +86,7 @@ struct Competitor {
 struct PixelTrace {
   int i = 0, j = 0;  // raster pixel
   std::vector<Competitor> competitors;
-  int winner = -1;   // −1: the background
+  int winner = -1;  // −1: the background
   float depth = kDepthClear;
   Rgb color;
   // Records a competitor in drawing order; one that passed is the new winner.

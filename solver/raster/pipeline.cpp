@@ -1,10 +1,10 @@
 #include "solver/raster/pipeline.hpp"
 
-#include "solver/clipping/polygon_clip.hpp"
-#include "solver/viewing/projection.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "solver/clipping/polygon_clip.hpp"
+#include "solver/viewing/projection.hpp"
 
 namespace frustum {
 
@@ -18,7 +18,8 @@ Mat4d translation(const Vec3d& t) {
   return m;
 }
 
-std::string copy_name(const std::string& name, const SceneObject::Repeat& r, const std::array<int, 3>& at) {
+std::string copy_name(const std::string& name, const SceneObject::Repeat& r,
+                      const std::array<int, 3>& at) {
   std::string s;
   for (int a = 0; a < 3; ++a)
     if (r.from[a] != r.to[a]) s += (s.empty() ? "" : ",") + std::to_string(at[a]);
@@ -46,7 +47,8 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill
   }
   for (std::size_t k = 0; k < o.children.size(); ++k) {
     const SceneObject& child = o.children[k];
-    const std::string child_name = child.name.empty() ? name + ".children[" + std::to_string(k) + "]" : child.name;
+    const std::string child_name =
+        child.name.empty() ? name + ".children[" + std::to_string(k) + "]" : child.name;
     if (!child.repeat) {
       flatten_into(child, world_from_object, f, c, child_name, out);
       continue;
@@ -59,7 +61,8 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill
       for (int j = r.from[1]; j <= r.to[1]; ++j)
         for (int l = r.from[2]; l <= r.to[2]; ++l) {
           const Vec3d offset(i * r.step(0), j * r.step(1), l * r.step(2));
-          flatten_into(single, world_from_object * translation(offset), f, c, copy_name(child_name, r, {i, j, l}), out);
+          flatten_into(single, world_from_object * translation(offset), f, c,
+                       copy_name(child_name, r, {i, j, l}), out);
         }
   }
 }
@@ -77,7 +80,8 @@ FlatScene flatten(const Scene& scene) {
 }
 
 Mat4d eye_from_world(const Scene& scene) {
-  return to_mat4(look_at<double>(scene.camera.eye, scene.camera.center, scene.camera.up, scene.api));
+  return to_mat4(
+      look_at<double>(scene.camera.eye, scene.camera.center, scene.camera.up, scene.api));
 }
 
 Mat4d clip_from_world(const Scene& scene) { return scene.clip_from_eye * eye_from_world(scene); }
@@ -131,7 +135,8 @@ Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLig
   return {channel(t.fill.r), channel(t.fill.g), channel(t.fill.b)};
 }
 
-std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat, GeometryStats* stats) {
+std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat,
+                                     GeometryStats* stats) {
   GeometryStats s;
   std::vector<WindowTriangle> out;
   out.reserve(flat.triangles.size());
@@ -146,9 +151,12 @@ std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat, 
       ++s.outside;
       continue;
     }
-    if (polygon.size() != 3 || polygon[0] != clip[0] || polygon[1] != clip[1] || polygon[2] != clip[2]) ++s.clipped;
+    if (polygon.size() != 3 || polygon[0] != clip[0] || polygon[1] != clip[1] ||
+        polygon[2] != clip[2])
+      ++s.clipped;
     raster.clear();
-    for (const Vec4d& c : polygon) raster.push_back(to_raster(perspective_divide(c), scene.width, scene.height, scene.api));
+    for (const Vec4d& c : polygon)
+      raster.push_back(to_raster(perspective_divide(c), scene.width, scene.height, scene.api));
     const bool front = front_facing(raster_area2(raster), scene.api);
     if (!front && t.cull == Cull::Back) {
       ++s.culled;

@@ -10,10 +10,10 @@
 // pixel row j is raster row height − 1 − j.
 #pragma once
 
-#include "solver/raster/scene.hpp"
-
 #include <string>
 #include <vector>
+
+#include "solver/raster/scene.hpp"
 
 namespace frustum {
 
@@ -49,7 +49,9 @@ constexpr double kClipEpsilon = 1e-9;
 std::vector<Vec4d> clip_to_volume(const std::array<Vec4d, 3>& clip, Api api);
 
 // Stage: (x, y, z, w) → (x/w, y/w, z/w); w > 0 after clipping.
-inline Vec3d perspective_divide(const Vec4d& c) { return Vec3d(c(0) / c(3), c(1) / c(3), c(2) / c(3)); }
+inline Vec3d perspective_divide(const Vec4d& c) {
+  return Vec3d(c(0) / c(3), c(1) / c(3), c(2) / c(3));
+}
 
 // Whether the API's window has its origin top-left with y down.
 inline bool window_y_down(Api api) { return api != Api::OpenGL; }
@@ -73,16 +75,16 @@ Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLig
 struct WindowTriangle {
   std::array<Vec3d, 3> v;  // raster x, y (y up), window depth z
   Rgb color;
-  int source = 0;          // index into FlatScene::triangles
+  int source = 0;  // index into FlatScene::triangles
   bool front = true;
 };
 
 struct GeometryStats {
-  long triangles = 0;     // world triangles in
-  long outside = 0;       // clipped away entirely
-  long clipped = 0;       // cut by some plane of the view volume
-  long culled = 0;        // back faces removed
-  long window = 0;        // window triangles out (clipped polygons are fans)
+  long triangles = 0;  // world triangles in
+  long outside = 0;    // clipped away entirely
+  long clipped = 0;    // cut by some plane of the view volume
+  long culled = 0;     // back faces removed
+  long window = 0;     // window triangles out (clipped polygons are fans)
 };
 
 // Every stage above for every triangle, in drawing order.

@@ -1,8 +1,8 @@
 #include "solver/raster/rasterizer.hpp"
 
-#include "solver/util/diagnostic.hpp"
-
 #include <cmath>
+
+#include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
@@ -156,7 +156,8 @@ std::vector<Fragment> rasterize(const TriangleSetup& t, int width, int height) {
     for (int i = i0; i <= i1; ++i) {
       if (!covers(t, i, j)) continue;
       const FixedPoint2 p = pixel_centre(i, j);
-      out.push_back({i, j, {t.edge[0].at(p.x, p.y), t.edge[1].at(p.x, p.y), t.edge[2].at(p.x, p.y)}});
+      out.push_back(
+          {i, j, {t.edge[0].at(p.x, p.y), t.edge[1].at(p.x, p.y), t.edge[2].at(p.x, p.y)}});
     }
   return out;
 }

@@ -7,7 +7,8 @@
 //   centre is (i + ½, j + ½).
 // - Vertices are snapped to a grid of 1/2⁸ pixel (kSubpixelBits) and all coverage arithmetic
 //   is exact int64 on that grid, so a pixel's coverage never depends on rounding.
-// - Edge function of the edge a → b: E(p) = (b − a) × (p − a) = (bx − ax)(py − ay) − (by − ay)(px − ax).
+// - Edge function of the edge a → b: E(p) = (b − a) × (p − a) = (bx − ax)(py − ay) − (by − ay)(px −
+// ax).
 //   The triangle is taken counter-clockwise (a clockwise one is reordered: scan conversion does
 //   no culling), so its interior has E > 0 on all three edges.
 // - Top-left fill rule: a centre with E = 0 on an edge is covered only when that edge is a top
@@ -20,11 +21,11 @@
 //   vertex k). λₖ are exact ratios of integers.
 #pragma once
 
-#include "solver/core/matrix.hpp"
-
 #include <array>
 #include <cstdint>
 #include <vector>
+
+#include "solver/core/matrix.hpp"
 
 namespace frustum {
 
@@ -34,7 +35,9 @@ constexpr std::int64_t kSubpixelScale = std::int64_t{1} << kSubpixelBits;
 constexpr double kMaxWindowCoordinate = 1 << 20;
 
 // ⌊a / b⌋ and ⌈a / b⌉ for b > 0 (C++ division truncates towards zero).
-inline std::int64_t floor_div(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && (a < 0)); }
+inline std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+  return a / b - ((a % b != 0) && (a < 0));
+}
 inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); }
 
 // v rounded to the nearest 1/2⁸ pixel, in units of 1/2⁸ pixel (halves away from zero).
@@ -58,13 +61,13 @@ struct EdgeFunction {
 };
 
 struct TriangleSetup {
-  std::array<FixedPoint2, 3> v;    // counter-clockwise
-  std::array<int, 3> order;        // input index of v[k] (reordered when clockwise)
+  std::array<FixedPoint2, 3> v;      // counter-clockwise
+  std::array<int, 3> order;          // input index of v[k] (reordered when clockwise)
   std::array<EdgeFunction, 3> edge;  // edge[k] = v[k+1] → v[k+2], the edge opposite v[k]
-  std::int64_t area2 = 0;          // twice the area, in (1/2⁸ pixel)² units, ≥ 0
-  bool reordered = false;          // the input was clockwise
-  bool degenerate = false;         // area2 = 0: covers nothing
-  bool snapped = false;            // some vertex was not on the 1/2⁸ grid
+  std::int64_t area2 = 0;            // twice the area, in (1/2⁸ pixel)² units, ≥ 0
+  bool reordered = false;            // the input was clockwise
+  bool degenerate = false;           // area2 = 0: covers nothing
+  bool snapped = false;              // some vertex was not on the 1/2⁸ grid
   int i_min = 0, i_max = -1, j_min = 0, j_max = -1;  // pixels whose centres lie in the bounding box
 };
 
@@ -97,8 +100,7 @@ std::vector<Fragment> rasterize(const TriangleSetup& t, int width = 0, int heigh
 template <typename T>
 T interpolate(const TriangleSetup& t, const Fragment& f, const std::array<T, 3>& z_input) {
   T sum = T(0);
-  for (int k = 0; k < 3; ++k)
-    sum += z_input[t.order[k]] * T(f.e[k]);
+  for (int k = 0; k < 3; ++k) sum += z_input[t.order[k]] * T(f.e[k]);
   return sum / T(t.area2);
 }
 

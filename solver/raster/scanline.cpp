@@ -5,8 +5,9 @@
 
 namespace frustum {
 
-Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangles, int width, int height,
-                                     Rgb background, ScanlineStats* stats, Image<float>* depth_out) {
+Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangles, int width,
+                                     int height, Rgb background, ScanlineStats* stats,
+                                     Image<float>* depth_out) {
   Image<std::uint32_t> image(width, height, pack(background));
   if (depth_out) *depth_out = Image<float>(width, height, kDepthClear);
   ScanlineStats st;

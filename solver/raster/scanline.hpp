@@ -7,23 +7,23 @@
 // row (width floats) instead of width × height.
 #pragma once
 
-#include "solver/raster/fill.hpp"
-
 #include <cstddef>
+
+#include "solver/raster/fill.hpp"
 
 namespace frustum {
 
 struct ScanlineStats {
-  std::size_t row_depth_bytes = 0;     // the one-row depth buffer
-  std::size_t zbuffer_depth_bytes = 0; // what the full z-buffer would need
-  std::size_t active_max = 0;          // most triangles active on one row
-  long spans = 0;                      // non-empty row spans drawn
+  std::size_t row_depth_bytes = 0;      // the one-row depth buffer
+  std::size_t zbuffer_depth_bytes = 0;  // what the full z-buffer would need
+  std::size_t active_max = 0;           // most triangles active on one row
+  long spans = 0;                       // non-empty row spans drawn
 };
 
 // The colour image (raster rows); `depth_out`, when given, receives each row's final depths
 // (an output image, not working memory).
-Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangles, int width, int height,
-                                     Rgb background, ScanlineStats* stats = nullptr,
+Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangles, int width,
+                                     int height, Rgb background, ScanlineStats* stats = nullptr,
                                      Image<float>* depth_out = nullptr);
 
 }  // namespace frustum

@@ -4,14 +4,14 @@
 // from YAML only in solver/kinds/scene_reader.*.
 #pragma once
 
-#include "solver/core/matrix.hpp"
-#include "solver/viewing/conventions.hpp"
-
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "solver/core/matrix.hpp"
+#include "solver/viewing/conventions.hpp"
 
 namespace frustum {
 
@@ -37,8 +37,8 @@ struct DirectionalLight {
 // from their first vertex), its transform M_object, and children placed by
 // M_child_world = M_world · M_child. Fill and cull are inherited when unset.
 struct SceneObject {
-  std::string name;                        // "plane", "objects[2]"
-  Mat4d transform = Mat4d::Identity();     // parent_from_object, the composite of its steps
+  std::string name;                     // "plane", "objects[2]"
+  Mat4d transform = Mat4d::Identity();  // parent_from_object, the composite of its steps
   std::vector<Vec3d> vertices;
   std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from the front
   std::optional<Rgb> fill;
@@ -75,10 +75,10 @@ struct Scene {
   Mat4d clip_from_eye = Mat4d::Identity();  // the projection, column form
   int width = 0, height = 0;                // viewport in pixels
   Rgb background{0, 0, 0};
-  Rgb default_fill{255, 255, 255};          // Processing's default fill
+  Rgb default_fill{255, 255, 255};  // Processing's default fill
   std::optional<DirectionalLight> light;
   std::vector<SceneObject> objects;
-  bool scanline = false;                    // render with the scan-line method
+  bool scanline = false;  // render with the scan-line method
 };
 
 // Processing's box(w, h, d): centred at the origin, 12 triangles counter-clockwise seen from
@@ -88,7 +88,7 @@ SceneObject box_object(double w, double h, double d);
 template <typename T>
 std::vector<Vec3<T>> box_corners(const T& w, const T& h, const T& d) {
   // seed 003's cube numbering: 0..3 the top (y = +h/2), 4..7 the bottom; z = +d/2 the front.
-  static const int xyz[8][3] = {{-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1},
+  static const int xyz[8][3] = {{-1, 1, 1},  {1, 1, 1},  {1, 1, -1},  {-1, 1, -1},
                                 {-1, -1, 1}, {1, -1, 1}, {1, -1, -1}, {-1, -1, -1}};
   std::vector<Vec3<T>> out;
   for (const auto& v : xyz) out.emplace_back(T(v[0] * w / 2), T(v[1] * h / 2), T(v[2] * d / 2));

@@ -6,11 +6,11 @@
 // (i + ½, j + ½).
 #pragma once
 
-#include "solver/raster/rasterizer.hpp"
-
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "solver/raster/rasterizer.hpp"
 
 namespace frustum {
 
@@ -21,7 +21,9 @@ struct Image {
   std::vector<P> data;
   Image() = default;
   Image(int w, int h, const P& fill)
-      : width(w), height(h), data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
+      : width(w),
+        height(h),
+        data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
   P& at(int i, int j) { return data[static_cast<std::size_t>(j) * width + i]; }
   const P& at(int i, int j) const { return data[static_cast<std::size_t>(j) * width + i]; }
 };

@@ -1,15 +1,14 @@
 #include "solver/steps/kind_steps.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
-
-#include <fmt/format.h>
-
-#include <cmath>
 
 namespace frustum {
 
@@ -23,7 +22,8 @@ std::optional<std::vector<Exact>> carried(const Answers& student, const std::str
   return v->exact;
 }
 
-void warn_condition(Derivation* steps, double kappa, const std::string& title, const std::string& what) {
+void warn_condition(Derivation* steps, double kappa, const std::string& title,
+                    const std::string& what) {
   if (!steps || !(kappa > kIllConditioned)) return;
   steps->warn(title, what + " is ill-conditioned (" + digits_sentence(kappa) + ").");
 }
@@ -38,9 +38,7 @@ std::vector<Eigen::Vector3d> to_doubles(const Polygon3<Exact>& p) {
 
 }  // namespace
 
-std::string point_name(const std::string& stem, std::size_t i) {
-  return stem + std::to_string(i);
-}
+std::string point_name(const std::string& stem, std::size_t i) { return stem + std::to_string(i); }
 
 Value plane_answer(const std::array<Exact, 4>& plane) {
   Value v = Value::vector(std::vector<Exact>(plane.begin(), plane.end()));
@@ -49,14 +47,17 @@ Value plane_answer(const std::array<Exact, 4>& plane) {
 }
 
 std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
-                                                   const std::string& point, const std::string& step) {
+                                                   const std::string& point,
+                                                   const std::string& step) {
   if (canonical(d).is_zero()) return std::nullopt;
   Answers answers;
   answers.set("plane", plane_answer(paper_plane(n, canonical(-d))));
-  return Misconception{"constant on the wrong side",
-                       "Your constant d has the wrong sign. Here the plane is written a·x + b·y + c·z = d "
-                       "with d = n·" + point + "; a list [a, b, c, d] means the same form, not a·x + b·y + c·z + d = 0.",
-                       step, answers};
+  return Misconception{
+      "constant on the wrong side",
+      "Your constant d has the wrong sign. Here the plane is written a·x + b·y + c·z = d "
+      "with d = n·" +
+          point + "; a list [a, b, c, d] means the same form, not a·x + b·y + c·z + d = 0.",
+      step, answers};
 }
 
 Vec3<Exact> unit(const Vec3<Exact>& n) {
@@ -90,8 +91,9 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
                                       Derivation* steps, bool left_handed) {
   const PolygonAnalysis a = analyse_polygon(p);
   if (a.degenerate)
-    throw DomainError(field, "the polygon is degenerate: its vertices are collinear or "
-                             "coincident, so it has no normal");
+    throw DomainError(field,
+                      "the polygon is degenerate: its vertices are collinear or "
+                      "coincident, so it has no normal");
   Vec3<Exact> n;
   if (p.size() == 3) {
     const Vec3<Exact> e0 = edge(p, 0), e1 = edge(p, 1);
@@ -100,16 +102,21 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
     if (steps) {
       steps->add("Edge vectors",
                  math("e₀ = p₁ − p₀,  e₁ = p₂ − p₁",
-                      "\\mathbf{e}_0 = \\mathbf{p}_1 - \\mathbf{p}_0,\\; \\mathbf{e}_1 = \\mathbf{p}_2 - \\mathbf{p}_1"),
-                 {}, math("e₀ = ", "\\mathbf{e}_0 = ") + vec(e0) + math(",  e₁ = ", ",\\; \\mathbf{e}_1 = ") + vec(e1));
+                      "\\mathbf{e}_0 = \\mathbf{p}_1 - \\mathbf{p}_0,\\; \\mathbf{e}_1 = "
+                      "\\mathbf{p}_2 - \\mathbf{p}_1"),
+                 {},
+                 math("e₀ = ", "\\mathbf{e}_0 = ") + vec(e0) +
+                     math(",  e₁ = ", ",\\; \\mathbf{e}_1 = ") + vec(e1));
       if (left_handed)
-        steps->add("Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
-                   math("n = e₁ × e₀", "\\mathbf{n} = \\mathbf{e}_1 \\times \\mathbf{e}_0"),
-                   math("n = ", "\\mathbf{n} = ") + vec(e1) + math(" × ", " \\times ") + vec(e0),
-                   math("n = ", "\\mathbf{n} = ") + vec(n))
-            .note = "In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is "
-                    "the side of e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite "
-                    "normal, that of the mirror image.";
+        steps
+            ->add("Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
+                  math("n = e₁ × e₀", "\\mathbf{n} = \\mathbf{e}_1 \\times \\mathbf{e}_0"),
+                  math("n = ", "\\mathbf{n} = ") + vec(e1) + math(" × ", " \\times ") + vec(e0),
+                  math("n = ", "\\mathbf{n} = ") + vec(n))
+            .note =
+            "In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is "
+            "the side of e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite "
+            "normal, that of the mirror image.";
       else
         steps->add("Normal (n = e₀ × e₁, counter-clockwise = front)",
                    math("n = e₀ × e₁", "\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
@@ -121,20 +128,27 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
     if (left_handed) n = -n;
     for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
     if (steps && left_handed)
-      steps->add(fmt::format("Normal of the {}-gon by Newell's method, left-handed", p.size()),
-                 math("n = −Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
-                      "\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times (\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
-                 {}, math("n = ", "\\mathbf{n} = ") + vec(n))
-          .note = "In left-handed coordinates the counter-clockwise side's normal is the right-handed "
-                  "sum with its sign changed (e₁ × e₀ for a triangle).";
+      steps
+          ->add(fmt::format("Normal of the {}-gon by Newell's method, left-handed", p.size()),
+                math("n = −Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
+                     "\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
+                     "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
+                {}, math("n = ", "\\mathbf{n} = ") + vec(n))
+          .note =
+          "In left-handed coordinates the counter-clockwise side's normal is the right-handed "
+          "sum with its sign changed (e₁ × e₀ for a triangle).";
     else if (steps)
-      steps->add(fmt::format("Normal of the {}-gon by Newell's method", p.size()),
-                 math("n = Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
-                      "\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times (\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
-                 {}, math("n = ", "\\mathbf{n} = ") + vec(n))
-          .note = "Newell's method sums every edge pair, so it stays accurate when some edges "
-                  "are nearly parallel or nearly zero (where eᵢ × eᵢ₊₁ loses accuracy), and gives twice the "
-                  "vector area (the same direction as eᵢ × eᵢ₊₁ for a convex polygon).";
+      steps
+          ->add(fmt::format("Normal of the {}-gon by Newell's method", p.size()),
+                math("n = Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
+                     "\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
+                     "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
+                {}, math("n = ", "\\mathbf{n} = ") + vec(n))
+          .note =
+          "Newell's method sums every edge pair, so it stays accurate when some edges "
+          "are nearly parallel or nearly zero (where eᵢ × eᵢ₊₁ loses accuracy), and gives twice "
+          "the "
+          "vector area (the same direction as eᵢ × eᵢ₊₁ for a convex polygon).";
   }
   if (steps) {
     for (std::size_t i : a.zero_edges)
@@ -216,8 +230,10 @@ Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>
 }
 
 void refuse_edge_on_triangle(const std::string& field) {
-  throw DomainError(field, "the triangle is edge-on (c = 0 in ax + by + cz = d): its plane has no single z "
-                           "above a pixel");
+  throw DomainError(
+      field,
+      "the triangle is edge-on (c = 0 in ax + by + cz = d): its plane has no single z "
+      "above a pixel");
 }
 
 Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const CrossOrder& order,
@@ -232,14 +248,15 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
     auto edge_text = [&](const std::string& e, const Vec3<Exact>& value) {
       const std::string from(1, e[0]), to(1, e[1]);
       return math(e + " = " + to + " − " + from + " = ",
-                  "\\overrightarrow{" + e + "} = " + to + " - " + from + " = ") + vec(value);
+                  "\\overrightarrow{" + e + "} = " + to + " - " + from + " = ") +
+             vec(value);
     };
-    steps->add("Edge vectors", {}, {}, edge_text(order.first, u) + math(",  ", ",\\; ") +
-                                           edge_text(order.second, v));
+    steps->add("Edge vectors", {}, {},
+               edge_text(order.first, u) + math(",  ", ",\\; ") + edge_text(order.second, v));
     steps->add("Normal",
                math("n = " + order.first + " × " + order.second,
-                    "\\mathbf{n} = \\overrightarrow{" + order.first + "} \\times \\overrightarrow{" +
-                        order.second + "}"),
+                    "\\mathbf{n} = \\overrightarrow{" + order.first +
+                        "} \\times \\overrightarrow{" + order.second + "}"),
                math("n = ", "\\mathbf{n} = ") + vec(u) + math(" × ", " \\times ") + vec(v),
                math("n = ", "\\mathbf{n} = ") + vec(n));
     warn_condition(steps, normal_condition(to_doubles({abc[0], abc[1], abc[2]})),

@@ -2,14 +2,14 @@
 // scaled to the form written on paper.
 #pragma once
 
-#include "solver/derivation/derivation.hpp"
-#include "solver/core/matrix.hpp"
-#include "solver/problem/kind.hpp"
-
 #include <array>
 #include <optional>
-#include "solver/derivation/value.hpp"
 #include <string>
+
+#include "solver/core/matrix.hpp"
+#include "solver/derivation/derivation.hpp"
+#include "solver/derivation/value.hpp"
+#include "solver/problem/kind.hpp"
 
 namespace frustum {
 
@@ -38,7 +38,8 @@ Value plane_answer(const std::array<Exact, 4>& plane);
 // paper. Nothing when d = 0, where both forms are the same plane. `point` names the point the
 // plane passes through (d = n·A); `step` is the derivation step where it goes wrong.
 std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
-                                                   const std::string& point, const std::string& step);
+                                                   const std::string& point,
+                                                   const std::string& step);
 
 // Unit vector n/|n| (exact, canonical).
 Vec3<Exact> unit(const Vec3<Exact>& n);
@@ -53,7 +54,8 @@ std::optional<std::vector<Exact>> carried(const Answers& student, const std::str
 
 // A warning that an answer is ill-conditioned (κ above kIllConditioned in condition.hpp):
 // the condition estimate and the digits float, double and long double would keep.
-void warn_condition(Derivation* steps, double kappa, const std::string& title, const std::string& what);
+void warn_condition(Derivation* steps, double kappa, const std::string& title,
+                    const std::string& what);
 
 // "p0, p1, p2" style names.
 std::string point_name(const std::string& stem, std::size_t i);

@@ -1,16 +1,16 @@
 #include "solver/steps/numeric_paths.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
+
 #include "solver/geometry/facing.hpp"
 #include "solver/geometry/plane_depth.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/geometry/zero_vector.hpp"
-#include "solver/steps/kind_steps.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/numeric/ranged.hpp"
-
-#include <fmt/format.h>
-
-#include <cmath>
+#include "solver/steps/kind_steps.hpp"
 
 namespace frustum {
 
@@ -84,10 +84,11 @@ template <typename T>
 void warn_condition(NumericOut<T>& out, Precision p, double kappa, const std::string& title,
                     const std::string& what) {
   if (!(kappa > kIllConditioned) || p == Precision::Exact) return;
-  out.warn(title, fmt::format("{} is ill-conditioned ({}): {}; solve with --precision exact for "
-                              "the exact value.",
-                              what, std::isfinite(kappa) ? fmt::format("κ ≈ {:.1e}", kappa) : "κ = ∞",
-                              digits_sentence(kappa, p)));
+  out.warn(title,
+           fmt::format("{} is ill-conditioned ({}): {}; solve with --precision exact for "
+                       "the exact value.",
+                       what, std::isfinite(kappa) ? fmt::format("κ ≈ {:.1e}", kappa) : "κ = ∞",
+                       digits_sentence(kappa, p)));
 }
 
 // A polygon's normal in T: e₀ × e₁ for a triangle (seed 003), Newell's Σ dᵢ × dᵢ₊₁ (dᵢ = pᵢ − p₀)
@@ -120,8 +121,8 @@ inline NormalPair<Exact> exact_polygon_normal(const Polygon3<Exact>& p) {
 // to hold even its signs, so the exact one, rounded once, replaces it; the unit normal comes
 // from that, or from the exact normal itself when the rounded one is 0 or overflows.
 template <typename T, typename ExactNormal>
-void decide_normal_zero(NormalPair<T>& out, Vec3<T>& computed, const Vec3<T>& bound, bool inputs_relative,
-                        int scale, ExactNormal&& exact_normal) {
+void decide_normal_zero(NormalPair<T>& out, Vec3<T>& computed, const Vec3<T>& bound,
+                        bool inputs_relative, int scale, ExactNormal&& exact_normal) {
   std::optional<Vec3<Exact>> exact_n;
   const ZeroDecision z = decide_zero(computed, bound, inputs_relative, [&] {
     exact_n = exact_normal();
@@ -136,7 +137,7 @@ void decide_normal_zero(NormalPair<T>& out, Vec3<T>& computed, const Vec3<T>& bo
   if constexpr (!kIsExact<T>) {
     if (exact_n) {
       const Exact factor = GiNaC::pow(GiNaC::numeric(2), -scale);
-      for (int i = 0; i < 3; ++i) computed(i) = from_exact<T>((*exact_n)(i) * factor);
+      for (int i = 0; i < 3; ++i) computed(i) = from_exact<T>((*exact_n)(i)*factor);
       const T length = stable_norm(computed);
       if (!(length > T(0)) || !std::isfinite(length)) {
         const Exact exact_length = stable_norm(*exact_n);
@@ -149,7 +150,8 @@ void decide_normal_zero(NormalPair<T>& out, Vec3<T>& computed, const Vec3<T>& bo
 }
 
 template <typename T>
-NormalPair<T> polygon_normal(const Polygon3<T>& p, const Polygon3<Exact>& exact_points, bool inputs_relative) {
+NormalPair<T> polygon_normal(const Polygon3<T>& p, const Polygon3<Exact>& exact_points,
+                             bool inputs_relative) {
   if constexpr (kIsExact<T>) {
     return exact_polygon_normal(p);
   } else {
@@ -167,18 +169,22 @@ NormalPair<T> polygon_normal(const Polygon3<T>& p, const Polygon3<Exact>& exact_
     Vec3<T> ns = triangle ? Vec3<T>(d[1].cross(d[2] - d[1])) : newell_normal(d);
     // The bound on the scaled magnitudes: each offset dᵢ within |pᵢ| + |p₀|, e₁ = d₂ − d₁
     // within |p₂| + |p₁| + 2|p₀|.
-    auto magnitude = [&](std::size_t i) { return Vec3<T>((p[i].cwiseAbs() + p[0].cwiseAbs()) * std::ldexp(T(1), -k)); };
+    auto magnitude = [&](std::size_t i) {
+      return Vec3<T>((p[i].cwiseAbs() + p[0].cwiseAbs()) * std::ldexp(T(1), -k));
+    };
     Vec3<T> bound;
     if (triangle) {
       bound = cross_error_bound(magnitude(1), Vec3<T>(magnitude(2) + magnitude(1)), 3);
     } else {
       Vec3<T> terms = Vec3<T>::Zero();
-      for (std::size_t i = 1; i + 1 < p.size(); ++i) terms += cross_permanent(magnitude(i), magnitude(i + 1));
+      for (std::size_t i = 1; i + 1 < p.size(); ++i)
+        terms += cross_permanent(magnitude(i), magnitude(i + 1));
       const int m = static_cast<int>(p.size());
       bound = Rounding<T>::gamma(2 * m + 12) * terms +
               Vec3<T>::Constant(Rounding<T>::underflow(T(2 * (m - 2) + 4)));
     }
-    decide_normal_zero(out, ns, bound, inputs_relative, 2 * k, [&] { return exact_polygon_normal(exact_points).n; });
+    decide_normal_zero(out, ns, bound, inputs_relative, 2 * k,
+                       [&] { return exact_polygon_normal(exact_points).n; });
     if (out.zero) return out;  // the exact normal: 0
     for (int i = 0; i < 3; ++i) out.n(i) = scaled_by(ns(i), 2 * k, out.underflow);
     return out;
@@ -236,7 +242,8 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
       // Parallel or not is a discrete answer (the unit normal exists or not): a × b's bound
       // (each scaled component one rounding from its exact value) or else exactly.
       Vec3<T> bound = Vec3<T>::Zero();
-      if constexpr (!kIsExact<T>) bound = cross_error_bound(Vec3<T>(a.cwiseAbs()), Vec3<T>(b.cwiseAbs()), 1);
+      if constexpr (!kIsExact<T>)
+        bound = cross_error_bound(Vec3<T>(a.cwiseAbs()), Vec3<T>(b.cwiseAbs()), 1);
       decide_normal_zero(o.unit, cross, bound, in.range.relative(), ka + kb,
                          [&] { return Vec3<Exact>(in.exact_a.cross(in.exact_b)); });
       const T area = stable_norm(cross), la = stable_norm(a), lb = stable_norm(b);
@@ -295,15 +302,20 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
         return r;
       }
       const auto& o = *in.order;
-      r.n = Vec3<T>(in.points[o[1]] - in.points[o[0]]).cross(Vec3<T>(in.points[o[3]] - in.points[o[2]]));
+      r.n = Vec3<T>(in.points[o[1]] - in.points[o[0]])
+                .cross(Vec3<T>(in.points[o[3]] - in.points[o[2]]));
       Vec3<T> bound = Vec3<T>::Zero();
       if constexpr (!kIsExact<T>) {
-        auto magnitude = [&](int i, int j) { return Vec3<T>(in.points[i].cwiseAbs() + in.points[j].cwiseAbs()); };
+        auto magnitude = [&](int i, int j) {
+          return Vec3<T>(in.points[i].cwiseAbs() + in.points[j].cwiseAbs());
+        };
         bound = cross_error_bound(magnitude(o[1], o[0]), magnitude(o[3], o[2]), 2);
       }
-      const std::array<Vec3<Exact>, 3> abc{in.exact_points[0], in.exact_points[1], in.exact_points[2]};
+      const std::array<Vec3<Exact>, 3> abc{in.exact_points[0], in.exact_points[1],
+                                           in.exact_points[2]};
       decide_normal_zero(r, r.n, bound, in.range.relative(), 0, [&] {
-        return Vec3<Exact>(Vec3<Exact>(abc[o[1]] - abc[o[0]]).cross(Vec3<Exact>(abc[o[3]] - abc[o[2]])));
+        return Vec3<Exact>(
+            Vec3<Exact>(abc[o[1]] - abc[o[0]]).cross(Vec3<Exact>(abc[o[3]] - abc[o[2]])));
       });
       if (r.zero) cross_normal_with_steps(abc, *in.cross, "A", nullptr);
       return r;
@@ -324,8 +336,9 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
   });
 }
 
-std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, const Vec3<Exact>& point,
-                                             const Vec3<Exact>& normal, Precision p) {
+std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points,
+                                             const Vec3<Exact>& point, const Vec3<Exact>& normal,
+                                             Precision p) {
   const double kappa = points.empty() ? 1.0 : normal_condition(doubles(points));
   return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
     struct In {
@@ -384,8 +397,8 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
                                               to_double(triangle[2]), to_double(pixel));
   // Fall back to the barycentric form when the plane method would keep fewer than half of the
   // backend's digits (the exact backend never needs to).
-  const bool fallback = p != Precision::Exact &&
-                        trusted_digits(cond.kappa_z, p) < decimal_digits(p) / 2;
+  const bool fallback =
+      p != Precision::Exact && trusted_digits(cond.kappa_z, p) < decimal_digits(p) / 2;
   return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
     struct In {
       std::array<Vec3<T>, 3> t;
@@ -406,11 +419,12 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
       Out o;
       // Edge-on (c = 0) is a discrete answer too: c = ±E(A, B, C) over x and y, decided like the
       // edge signs; such a triangle is refused, as the exact solve refuses it (the same words).
-      const SignDecision c = edge_sign(in.t[0], in.t[1], Vec2<T>(in.t[2].x(), in.t[2].y()), in.exact_t[0],
-                                       in.exact_t[1], Vec2<Exact>(in.exact_t[2].x(), in.exact_t[2].y()),
-                                       in.range.relative());
+      const SignDecision c = edge_sign(
+          in.t[0], in.t[1], Vec2<T>(in.t[2].x(), in.t[2].y()), in.exact_t[0], in.exact_t[1],
+          Vec2<Exact>(in.exact_t[2].x(), in.exact_t[2].y()), in.range.relative());
       if (c.sign == 0) {
-        cross_normal_with_steps(in.exact_t, in.cross, "triangle", nullptr);  // refuses a collinear one
+        cross_normal_with_steps(in.exact_t, in.cross, "triangle",
+                                nullptr);  // refuses a collinear one
         refuse_edge_on_triangle("triangle");
       }
       const Vec3<T> first = in.t[in.order[1]] - in.t[in.order[0]];
@@ -435,18 +449,20 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
       out.inputs(in.range);
       out.vector("normal", r.normal);
       out.vector("unit_normal", r.unit_normal);
-      out.vector("plane", std::vector<T>{r.unit_normal(0), r.unit_normal(1), r.unit_normal(2), r.d});
+      out.vector("plane",
+                 std::vector<T>{r.unit_normal(0), r.unit_normal(1), r.unit_normal(2), r.d});
       out.scalar("z", r.z);
       out.boolean("inside", o.inside);
       out.note(r.barycentric ? "z by barycentric interpolation (stable fallback)"
                              : "z = (d − a·xₛ − b·yₛ)/c (the plane method)");
       if (o.inside_exact) out.exact_decision("inside");
       if (r.barycentric)
-        out.warn("Nearly edge-on triangle: barycentric fallback",
-                 fmt::format("c ≈ 0 (κ_c ≈ {:.1e}); the plane method would keep {:.1f} digits of z, "
-                             "so z = Σ λᵢ zᵢ with λᵢ from the edge functions at the pixel is used: for "
-                             "a pixel inside the triangle it stays within the vertices' depths.",
-                             cond.kappa_c, trusted_digits(cond.kappa_z, p)));
+        out.warn(
+            "Nearly edge-on triangle: barycentric fallback",
+            fmt::format("c ≈ 0 (κ_c ≈ {:.1e}); the plane method would keep {:.1f} digits of z, "
+                        "so z = Σ λᵢ zᵢ with λᵢ from the edge functions at the pixel is used: for "
+                        "a pixel inside the triangle it stays within the vertices' depths.",
+                        cond.kappa_c, trusted_digits(cond.kappa_z, p)));
       else
         warn_condition(out, p, cond.kappa_z, "Nearly edge-on triangle", "z at this pixel");
       return out.take();
@@ -460,14 +476,15 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
   });
 }
 
-std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, const Vec3<Exact>& eye,
-                                                Precision p) {
+std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points,
+                                                const Vec3<Exact>& eye, Precision p) {
   const double kappa = facing_condition(doubles(points), to_double(eye), p);
   return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
     struct In {
       Polygon3<T> points;
       Vec3<T> eye;
-      T fast_bound{};  // the filter's bound, computed once with the inputs (beside them: one cache line)
+      T fast_bound{};  // the filter's bound, computed once with the inputs (beside them: one cache
+                       // line)
       Polygon3<Exact> exact_points;  // for the exact fallback of the facing
       Vec3<Exact> exact_eye;
       InputRange range;
@@ -476,11 +493,12 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
       if constexpr (kIsExact<T>)
         return facing(in.points, in.eye, in.exact_points, in.exact_eye, true, T(0));
       else {
-        const Facing<T> f =
-            facing(in.points, in.eye, in.exact_points, in.exact_eye, in.range.relative(), in.fast_bound);
+        const Facing<T> f = facing(in.points, in.eye, in.exact_points, in.exact_eye,
+                                   in.range.relative(), in.fast_bound);
         // D_f exactly 0 may mean a degenerate polygon, which is refused as the exact solve
         // refuses it (the same words); checked only after an exact decision.
-        if (f.used_exact && f.sign == 0) polygon_normal_with_steps(in.exact_points, "points", nullptr);
+        if (f.used_exact && f.sign == 0)
+          polygon_normal_with_steps(in.exact_points, "points", nullptr);
         return f;
       }
     };
@@ -492,7 +510,8 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, c
       out.scalar("df", f.df);
       out.word("facing", facing_word(f.sign));
       warn_condition(out, p, kappa, "Eye nearly in the polygon's plane", "D_f");
-      out.note("facing: the sign of D_f, proven by its rounding-error bound or else computed exactly");
+      out.note(
+          "facing: the sign of D_f, proven by its rounding-error bound or else computed exactly");
       if (f.used_exact) out.exact_decision("facing");
       return out.take();
     };
@@ -526,7 +545,9 @@ auto map_inputs(const ProjectionInputs<Exact>& in, F f) {
   ProjectionInputs<R> out;
   out.point = vec(in.point);
   if (in.model) out.model = in.model->unaryExpr([&](const Exact& e) { return f(e); }).eval();
-  if (in.camera) out.camera = std::array<Vec3<R>, 3>{vec((*in.camera)[0]), vec((*in.camera)[1]), vec((*in.camera)[2])};
+  if (in.camera)
+    out.camera =
+        std::array<Vec3<R>, 3>{vec((*in.camera)[0]), vec((*in.camera)[1]), vec((*in.camera)[2])};
   out.type = in.type;
   const Volume<Exact>& v = in.volume;
   out.volume = {f(v.left), f(v.right), f(v.bottom), f(v.top), f(v.near), f(v.far)};
@@ -543,7 +564,9 @@ MatX<S> clip_from_world(const ProjectionInputs<S>& in) {
   if (in.type == ProjectionSpec::Type::Ortho) {
     m = ortho_matrix(in.volume, in.api);
   } else {
-    const Volume<S> v = in.fovy ? perspective_volume(*in.fovy, *in.aspect, in.volume.near, in.volume.far) : in.volume;
+    const Volume<S> v =
+        in.fovy ? perspective_volume(*in.fovy, *in.aspect, in.volume.near, in.volume.far)
+                : in.volume;
     m = frustum_matrix(v, in.api);
   }
   if (in.left_handed)
@@ -564,7 +587,8 @@ Vec4<S> clip_of(const MatX<S>& m, const Vec3<S>& point) {
 template <typename S>
 std::array<S, 7> volume_tests(const Vec4<S>& c, Api api) {
   const S& w = c(3);
-  return {w, S(c(0) + w), S(w - c(0)), S(c(1) + w), S(w - c(1)), api == Api::DirectX ? c(2) : S(c(2) + w),
+  return {w,           S(c(0) + w), S(w - c(0)),
+          S(c(1) + w), S(w - c(1)), api == Api::DirectX ? c(2) : S(c(2) + w),
           S(w - c(2))};
 }
 
@@ -590,7 +614,7 @@ std::unique_ptr<NumericSolver> project_point_numeric(
       ProjectionInputs<T> given;
       // The same inputs with their rounding error (unused by the exact backend).
       ProjectionInputs<std::conditional_t<kIsExact<T>, T, Ranged<T>>> ranged;
-      ProjectionInputs<Exact> exact;       // for the exact fallback of the decisions
+      ProjectionInputs<Exact> exact;  // for the exact fallback of the decisions
       T width, height;
       InputRange range;
     };
@@ -619,7 +643,9 @@ std::unique_ptr<NumericSolver> project_point_numeric(
         std::optional<std::array<Exact, 7>> exact;
         for (int k = 0; k < 7; ++k) {
           const SignDecision d = decide_sign(t[k], [&] {
-            if (!exact) exact = volume_tests(clip_of(clip_from_world(in.exact), in.exact.point), in.given.api);
+            if (!exact)
+              exact =
+                  volume_tests(clip_of(clip_from_world(in.exact), in.exact.point), in.given.api);
             return exact_sign((*exact)[k]);
           });
           sign[k] = d.sign;
@@ -655,13 +681,15 @@ std::unique_ptr<NumericSolver> project_point_numeric(
         row(i) = static_cast<double>(to_long_double(o.row3(i)));
         h(i) = static_cast<double>(to_long_double(o.homogeneous(i)));
       }
-      warn_condition(out, p, w_condition(row, h), "Point close to the eye's plane", "w_c (and the NDC divided by it)");
+      warn_condition(out, p, w_condition(row, h), "Point close to the eye's plane",
+                     "w_c (and the NDC divided by it)");
       return out.take();
     };
     In in{{}, {}, exact, from_exact<T>(width), from_exact<T>(height), {}};
     in.given = map_inputs(exact, [&](const Exact& e) { return conv<T>(e, &in.range); });
     if constexpr (!kIsExact<T>)
-      in.ranged = map_inputs(exact, [](const Exact& e) { return Ranged<T>::input(from_exact<T>(e)); });
+      in.ranged =
+          map_inputs(exact, [](const Exact& e) { return Ranged<T>::input(from_exact<T>(e)); });
     return prepare(std::move(in), core, report);
   });
 }
@@ -712,7 +740,8 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
         if constexpr (!kIsExact<T>) {
           const double kappa = static_cast<double>(o.m.cwiseAbs().rowwise().sum().maxCoeff() *
                                                    o.inverse.cwiseAbs().rowwise().sum().maxCoeff());
-          warn_condition(out, p, kappa, "Ill-conditioned matrix", "the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)");
+          warn_condition(out, p, kappa, "Ill-conditioned matrix",
+                         "the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)");
         }
         out.note(kIsExact<T> ? "inverse = A₁⁻¹·…·Aₙ⁻¹" : "inverse by LU with partial pivoting");
       }
@@ -744,7 +773,8 @@ std::unique_ptr<NumericSolver> viewport_numeric(const Vec3<Exact>& ndc, const Ex
       out.vector("window", w);
       return out.take();
     };
-    return prepare(In{conv<T>(ndc), from_exact<T>(width), from_exact<T>(height), api}, core, report);
+    return prepare(In{conv<T>(ndc), from_exact<T>(width), from_exact<T>(height), api}, core,
+                   report);
   });
 }
 

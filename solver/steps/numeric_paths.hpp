@@ -4,14 +4,14 @@
 // solver/geometry and solver/viewing; these adapters add the condition warnings.
 #pragma once
 
-#include "solver/steps/kind_steps.hpp"
-#include "solver/steps/viewing_steps.hpp"
-#include "solver/problem/numeric_result.hpp"
-
 #include <array>
 #include <memory>
 #include <optional>
 #include <vector>
+
+#include "solver/problem/numeric_result.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/steps/viewing_steps.hpp"
 
 namespace frustum {
 
@@ -21,13 +21,14 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
 std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
                                               const std::optional<CrossOrder>& order, Precision p);
 // points, or (when empty) point + normal.
-std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points, const Vec3<Exact>& point,
-                                             const Vec3<Exact>& normal, Precision p);
+std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points,
+                                             const Vec3<Exact>& point, const Vec3<Exact>& normal,
+                                             Precision p);
 std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exact>, 3>& triangle,
                                                       const Vec2<Exact>& pixel,
                                                       const CrossOrder& order, Precision p);
-std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points, const Vec3<Exact>& eye,
-                                                Precision p);
+std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points,
+                                                const Vec3<Exact>& eye, Precision p);
 // model: the composite model matrix M (column form), when the point is in model coordinates.
 std::unique_ptr<NumericSolver> project_point_numeric(
     const Vec3<Exact>& point, const std::optional<MatX<Exact>>& model,

@@ -1,20 +1,20 @@
 #include "solver/steps/scene_reader.hpp"
 
-#include "solver/input/given_reader.hpp"
-#include "solver/steps/transform_steps.hpp"
-#include "solver/util/diagnostic.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "solver/input/given_reader.hpp"
+#include "solver/steps/transform_steps.hpp"
+#include "solver/util/diagnostic.hpp"
+
 namespace frustum {
 
 namespace {
 
-const std::vector<std::string> kObjectFields = {"name", "triangle", "mesh", "box", "solid", "transform",
-                                                "fill", "cull", "repeat", "children"};
+const std::vector<std::string> kObjectFields = {
+    "name", "triangle", "mesh", "box", "solid", "transform", "fill", "cull", "repeat", "children"};
 
 template <typename M>
 Mat4d to_mat4d(const M& m) {
@@ -28,7 +28,8 @@ Vec3d to_vec3d(const Vec3<Exact>& v) { return to_double(v); }
 
 int read_int(GivenReader& r, const std::string& field, const Exact& e, long lo, long hi) {
   if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_integer() ||
-      GiNaC::ex_to<GiNaC::numeric>(e) < GiNaC::numeric(lo) || GiNaC::ex_to<GiNaC::numeric>(e) > GiNaC::numeric(hi))
+      GiNaC::ex_to<GiNaC::numeric>(e) < GiNaC::numeric(lo) ||
+      GiNaC::ex_to<GiNaC::numeric>(e) > GiNaC::numeric(hi))
     throw InputError(r.locate(field, fmt::format("expected an integer from {} to {}", lo, hi)));
   return static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(e).to_long());
 }
@@ -38,16 +39,22 @@ Rgb read_color(GivenReader& r, const std::string& key) {
   const YAML::Node n = r.node()[key];
   if (n.IsScalar() && !n.Scalar().empty() && n.Scalar()[0] == '#') {
     const std::string& s = n.Scalar();
-    const bool hex = s.size() == 7 && std::all_of(s.begin() + 1, s.end(), [](char ch) { return std::isxdigit(static_cast<unsigned char>(ch)); });
+    const bool hex = s.size() == 7 && std::all_of(s.begin() + 1, s.end(), [](char ch) {
+                       return std::isxdigit(static_cast<unsigned char>(ch));
+                     });
     if (!hex) r.fail(key, "expected a colour \"#rrggbb\", got '" + s + "'");
-    auto byte = [&](int at) { return static_cast<std::uint8_t>(std::stoi(s.substr(static_cast<std::size_t>(at), 2), nullptr, 16)); };
+    auto byte = [&](int at) {
+      return static_cast<std::uint8_t>(
+          std::stoi(s.substr(static_cast<std::size_t>(at), 2), nullptr, 16));
+    };
     return {byte(1), byte(3), byte(5)};
   }
   if (n.IsScalar()) {
     const auto g = static_cast<std::uint8_t>(read_int(r, key, r.number(key), 0, 255));
     return {g, g, g};
   }
-  if (!n.IsSequence() || n.size() != 3) r.fail(key, "expected a colour [r, g, b] (0–255), \"#rrggbb\" or a grey level");
+  if (!n.IsSequence() || n.size() != 3)
+    r.fail(key, "expected a colour [r, g, b] (0–255), \"#rrggbb\" or a grey level");
   const std::vector<Exact> v = r.numbers(key, 3);
   Rgb c;
   c.r = static_cast<std::uint8_t>(read_int(r, key + "[0]", v[0], 0, 255));
@@ -62,7 +69,8 @@ Mat4<Exact> read_steps(GivenReader& r, const std::string& key, const Conventions
   Mat4<Exact> m = Mat4<Exact>::Identity();
   const std::size_t n = r.list_size(key, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    GivenReader s = r.item(key, i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
+    GivenReader s = r.item(
+        key, i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
     m = Mat4<Exact>(read_transform_step(s, 3, c).matrix * m);
     for (Exact& e : m.reshaped()) e = canonical(e);
   }
@@ -80,8 +88,8 @@ void add_polygons(SceneObject& o, const Mesh& mesh, bool keep_exact) {
     for (std::size_t k = 1; k + 1 < f.size(); ++k) o.triangles.push_back({f[0], f[k], f[k + 1]});
 }
 
-SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long multiplier, long& triangles,
-                        bool keep_exact) {
+SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long multiplier,
+                        long& triangles, bool keep_exact) {
   SceneObject obj;
   if (o.has("name")) {
     const YAML::Node name = o.node()["name"];
@@ -89,7 +97,9 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
     obj.name = name.Scalar();
   }
   const int shapes = o.has("triangle") + o.has("mesh") + o.has("box") + o.has("solid");
-  if (shapes > 1) o.fail(o.has("triangle") ? "triangle" : "mesh", "give at most one of triangle, mesh, box and solid");
+  if (shapes > 1)
+    o.fail(o.has("triangle") ? "triangle" : "mesh",
+           "give at most one of triangle, mesh, box and solid");
   if (o.has("triangle")) {
     for (const Vec3<Exact>& p : o.points("triangle", 3, 3)) add_vertex(obj, p, keep_exact);
     obj.triangles.push_back({0, 1, 2});
@@ -127,12 +137,14 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
     if (keep_exact) obj.exact_transform = m;
   }
   if (o.has("fill")) obj.fill = read_color(o, "fill");
-  if (o.has("cull")) obj.cull = o.word("cull", {"none", "back"}) == "back" ? Cull::Back : Cull::None;
+  if (o.has("cull"))
+    obj.cull = o.word("cull", {"none", "back"}) == "back" ? Cull::Back : Cull::None;
   long copies = 1;
   if (o.has("repeat")) {
     GivenReader r = o.child("repeat", {"from", "to", "step"});
     SceneObject::Repeat rep;
-    const std::vector<Exact> from = r.numbers("from", 3), to = r.numbers("to", 3), step = r.numbers("step", 3);
+    const std::vector<Exact> from = r.numbers("from", 3), to = r.numbers("to", 3),
+                             step = r.numbers("step", 3);
     for (int a = 0; a < 3; ++a) {
       rep.from[a] = read_int(r, fmt::format("from[{}]", a), from[a], -100000, 100000);
       rep.to[a] = read_int(r, fmt::format("to[{}]", a), to[a], rep.from[a], 100000);
@@ -147,13 +159,16 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
   // each once overflowed `long` and the triangle limit let an unbounded scene through.
   long factor = 0, added = 0, total = 0;
   if (__builtin_mul_overflow(multiplier, copies, &factor) || factor > kMaxSceneTriangles)
-    o.fail("repeat", fmt::format("more than {} copies (counting the repeats it is nested in)", kMaxSceneTriangles));
+    o.fail("repeat", fmt::format("more than {} copies (counting the repeats it is nested in)",
+                                 kMaxSceneTriangles));
   if (__builtin_mul_overflow(factor, static_cast<long>(obj.triangles.size()), &added) ||
       __builtin_add_overflow(triangles, added, &total) || total > kMaxSceneTriangles)
-    o.fail(o.has("repeat") ? "repeat" : "children", fmt::format("the scene has more than {} triangles", kMaxSceneTriangles));
+    o.fail(o.has("repeat") ? "repeat" : "children",
+           fmt::format("the scene has more than {} triangles", kMaxSceneTriangles));
   triangles = total;
   if (o.has("children")) {
-    if (depth >= kMaxSceneDepth) o.fail("children", fmt::format("objects may nest at most {} levels deep", kMaxSceneDepth));
+    if (depth >= kMaxSceneDepth)
+      o.fail("children", fmt::format("objects may nest at most {} levels deep", kMaxSceneDepth));
     const std::size_t n = o.list_size("children");
     for (std::size_t k = 0; k < n; ++k) {
       GivenReader ch = o.item("children", k, kObjectFields);
@@ -167,7 +182,8 @@ SceneObject read_object(GivenReader& o, const Conventions& c, int depth, long mu
 }  // namespace
 
 std::vector<std::string> scene_fields() {
-  return {"viewport", "camera", "perspective", "frustum", "ortho", "background", "light", "method", "objects"};
+  return {"viewport",   "camera", "perspective", "frustum", "ortho",
+          "background", "light",  "method",      "objects"};
 }
 
 Mesh read_mesh(GivenReader& m, std::size_t min_vertices, std::size_t min_faces) {
@@ -187,8 +203,10 @@ Mesh read_mesh(GivenReader& m, std::size_t min_vertices, std::size_t min_faces) 
       const Exact v = read_number(face[k], m.file(), m.locate(field, "").field);
       // Compared exactly before any conversion: "2^64+1" once wrapped to vertex 1.
       if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_integer() ||
-          GiNaC::ex_to<GiNaC::numeric>(v) < 0 || GiNaC::ex_to<GiNaC::numeric>(v) >= GiNaC::numeric(n))
-        throw InputError(m.locate(field, fmt::format("expected a vertex index from 0 to {}", n - 1)));
+          GiNaC::ex_to<GiNaC::numeric>(v) < 0 ||
+          GiNaC::ex_to<GiNaC::numeric>(v) >= GiNaC::numeric(n))
+        throw InputError(
+            m.locate(field, fmt::format("expected a vertex index from 0 to {}", n - 1)));
       const int i = static_cast<int>(GiNaC::ex_to<GiNaC::numeric>(v).to_long());
       if (std::find(idx.begin(), idx.end(), i) != idx.end())
         throw InputError(m.locate(field, fmt::format("vertex {} appears twice in this face", i)));
@@ -201,7 +219,8 @@ Mesh read_mesh(GivenReader& m, std::size_t min_vertices, std::size_t min_faces) 
 }
 
 Mat4<Exact> exact_clip_from_world(const SceneSpec& spec, Api api, Derivation* steps) {
-  const MatX<Exact> view = look_at_with_steps(spec.eye, spec.center, spec.up, api, "scene.camera.", steps);
+  const MatX<Exact> view =
+      look_at_with_steps(spec.eye, spec.center, spec.up, api, "scene.camera.", steps);
   Mat4<Exact> m = projection_with_steps(spec.projection, api, steps) * view;
   for (Exact& e : m.reshaped()) e = canonical(e);
   return m;
@@ -216,7 +235,8 @@ SceneSpec read_scene(GivenReader& r, const Conventions& c, bool keep_exact) {
     s.width = read_int(v, "width", v.number("width"), 1, kMaxViewport);
     s.height = read_int(v, "height", v.number("height"), 1, kMaxViewport);
     if (static_cast<long>(s.width) * s.height > kMaxScenePixels)
-      v.fail("height", fmt::format("{} × {} pixels: at most {} in all", s.width, s.height, kMaxScenePixels));
+      v.fail("height",
+             fmt::format("{} × {} pixels: at most {} in all", s.width, s.height, kMaxScenePixels));
     v.finish();
   }
   {
@@ -241,7 +261,9 @@ SceneSpec read_scene(GivenReader& r, const Conventions& c, bool keep_exact) {
       GivenReader l = r.child("light", {"direction", "transform", "ambient", "diffuse"});
       if (l.has("direction")) light.direction = to_vec3d(l.vector<3>("direction"));
       if (light.direction.norm() == 0) l.fail("direction", "the zero vector is not a direction");
-      if (l.has("transform")) light.direction = to_mat4d(read_steps(l, "transform", c)).block<3, 3>(0, 0) * light.direction;
+      if (l.has("transform"))
+        light.direction =
+            to_mat4d(read_steps(l, "transform", c)).block<3, 3>(0, 0) * light.direction;
       if (l.has("ambient")) light.ambient = read_int(l, "ambient", l.number("ambient"), 0, 255);
       if (l.has("diffuse")) light.diffuse = read_int(l, "diffuse", l.number("diffuse"), 0, 255);
       l.finish();

@@ -18,12 +18,12 @@
 //         children: [...]                  # M_child_world = M_world · M_child
 #pragma once
 
-#include "solver/steps/viewing_steps.hpp"
-#include "solver/raster/scene.hpp"
-#include "solver/visibility/mesh.hpp"
-
 #include <string>
 #include <vector>
+
+#include "solver/raster/scene.hpp"
+#include "solver/steps/viewing_steps.hpp"
+#include "solver/visibility/mesh.hpp"
 
 namespace frustum {
 

@@ -45,8 +45,9 @@ void invert_step(TransformStep& t, const std::string& kind) {
 
 // c = cos θ and s = sin θ of a rotation, as substituted into its matrix.
 MathText cos_sin(const Exact& radians, AngleUnit unit) {
-  return math("θ = ", "\\theta = ") + angle_text(radians, unit) + math(",  c = cos θ = ", ",\\; c = \\cos\\theta = ") +
-         exact(GiNaC::cos(radians)) + math(",  s = sin θ = ", ",\\; s = \\sin\\theta = ") + exact(GiNaC::sin(radians));
+  return math("θ = ", "\\theta = ") + angle_text(radians, unit) +
+         math(",  c = cos θ = ", ",\\; c = \\cos\\theta = ") + exact(GiNaC::cos(radians)) +
+         math(",  s = sin θ = ", ",\\; s = \\sin\\theta = ") + exact(GiNaC::sin(radians));
 }
 
 // R_x, R_y or R_z in symbols (c = cos θ, s = sin θ), as in the lecture's homogeneous matrices.
@@ -55,20 +56,24 @@ MathText axis_rotation_formula(int axis) {
                                         "R_y = [c 0 s 0; 0 1 0 0; −s 0 c 0; 0 0 0 1]",
                                         "R_z = [c −s 0 0; s c 0 0; 0 0 1 0; 0 0 0 1]"};
   static const char* const latex[] = {
-      "R_x(\\theta) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ 0 & c & -s & 0 \\\\ 0 & s & c & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
-      "R_y(\\theta) = \\begin{bmatrix} c & 0 & s & 0 \\\\ 0 & 1 & 0 & 0 \\\\ -s & 0 & c & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}",
-      "R_z(\\theta) = \\begin{bmatrix} c & -s & 0 & 0 \\\\ s & c & 0 & 0 \\\\ 0 & 0 & 1 & 0 \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"};
+      "R_x(\\theta) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ 0 & c & -s & 0 \\\\ 0 & s & c & 0 \\\\ 0 "
+      "& 0 & 0 & 1 \\end{bmatrix}",
+      "R_y(\\theta) = \\begin{bmatrix} c & 0 & s & 0 \\\\ 0 & 1 & 0 & 0 \\\\ -s & 0 & c & 0 \\\\ 0 "
+      "& 0 & 0 & 1 \\end{bmatrix}",
+      "R_z(\\theta) = \\begin{bmatrix} c & -s & 0 & 0 \\\\ s & c & 0 & 0 \\\\ 0 & 0 & 1 & 0 \\\\ 0 "
+      "& 0 & 0 & 1 \\end{bmatrix}"};
   return math(unicode[axis], latex[axis]);
 }
 
 // Rotation by θ about the unit axis (x, y, z): Rodrigues' formula c·I + s·[u]ₓ + (1 − c)·u·uᵀ
 // written entry by entry.
 MathText axis_angle_formula() {
-  return math("R = [x²(1−c)+c, xy(1−c)−zs, xz(1−c)+ys, 0; yx(1−c)+zs, y²(1−c)+c, yz(1−c)−xs, 0; "
-              "xz(1−c)−ys, yz(1−c)+xs, z²(1−c)+c, 0; 0, 0, 0, 1]",
-              "R = \\begin{bmatrix} x^2(1-c)+c & xy(1-c)-zs & xz(1-c)+ys & 0 \\\\ "
-              "yx(1-c)+zs & y^2(1-c)+c & yz(1-c)-xs & 0 \\\\ xz(1-c)-ys & yz(1-c)+xs & z^2(1-c)+c & 0 \\\\ "
-              "0 & 0 & 0 & 1 \\end{bmatrix}");
+  return math(
+      "R = [x²(1−c)+c, xy(1−c)−zs, xz(1−c)+ys, 0; yx(1−c)+zs, y²(1−c)+c, yz(1−c)−xs, 0; "
+      "xz(1−c)−ys, yz(1−c)+xs, z²(1−c)+c, 0; 0, 0, 0, 1]",
+      "R = \\begin{bmatrix} x^2(1-c)+c & xy(1-c)-zs & xz(1-c)+ys & 0 \\\\ "
+      "yx(1-c)+zs & y^2(1-c)+c & yz(1-c)-xs & 0 \\\\ xz(1-c)-ys & yz(1-c)+xs & z^2(1-c)+c & 0 \\\\ "
+      "0 & 0 & 0 & 1 \\end{bmatrix}");
 }
 
 }  // namespace
@@ -103,8 +108,9 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
     if (dim == 2) {
       const Exact a = read_angle(s, k, c.angles);
       t = {"rotate " + angle_text(a, c.angles).unicode, rotate_2d(a), ""};
-      t.formula = math("R = [c −s 0; s c 0; 0 0 1]",
-                       "R(\\theta) = \\begin{bmatrix} c & -s & 0 \\\\ s & c & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}");
+      t.formula = math(
+          "R = [c −s 0; s c 0; 0 0 1]",
+          "R(\\theta) = \\begin{bmatrix} c & -s & 0 \\\\ s & c & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}");
       t.substitution = cos_sin(a, c.angles);
       t.angle = a;
       t.rotation = [](const Exact& b) { return rotate_2d(b); };
@@ -118,14 +124,18 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
       t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
            rotate_about(u, a), ""};
       t.formula = axis_angle_formula();
-      t.substitution = math("(x, y, z) = ", "(x, y, z) = ") + vec(u, true) + math(",  ", ",\\; ") + cos_sin(a, c.angles) +
-                       math(",  1 − c = ", ",\\; 1 - c = ") + exact(canonical(1 - GiNaC::cos(a)));
-      t.note = "Rodrigues' formula R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, written entry by entry, for the unit axis "
-               "u = (x, y, z).";
+      t.substitution = math("(x, y, z) = ", "(x, y, z) = ") + vec(u, true) + math(",  ", ",\\; ") +
+                       cos_sin(a, c.angles) + math(",  1 − c = ", ",\\; 1 - c = ") +
+                       exact(canonical(1 - GiNaC::cos(a)));
+      t.note =
+          "Rodrigues' formula R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, written entry by entry, for the "
+          "unit axis "
+          "u = (x, y, z).";
       t.angle = a;
       t.rotation = [u](const Exact& b) { return rotate_about(u, b); };
       if (!canonical(axis.dot(axis) - 1).is_zero())
-        t.note += " The axis is normalised first: (x, y, z) = " + vec(axis).unicode + " / " + exact(norm(axis)).unicode + ".";
+        t.note += " The axis is normalised first: (x, y, z) = " + vec(axis).unicode + " / " +
+                  exact(norm(axis)).unicode + ".";
     }
   } else if (k == "shear") {
     MatX<Exact> h = MatX<Exact>::Zero(dim, dim);
@@ -133,12 +143,14 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
       const std::vector<Exact> v = s.numbers(k, 2);
       h(0, 1) = v[0];
       h(1, 0) = v[1];
-      t.title = "shear x′ = x + " + exact(v[0]).unicode + "·y, y′ = y + " + exact(v[1]).unicode + "·x";
+      t.title =
+          "shear x′ = x + " + exact(v[0]).unicode + "·y, y′ = y + " + exact(v[1]).unicode + "·x";
     } else {
       GivenReader r = s.child(k, {"xy", "xz", "yx", "yz", "zx", "zy"});
       const std::string names = "xyz";
       for (const std::string f : {"xy", "xz", "yx", "yz", "zx", "zy"})
-        if (r.has(f)) h(static_cast<int>(names.find(f[0])), static_cast<int>(names.find(f[1]))) = r.number(f);
+        if (r.has(f))
+          h(static_cast<int>(names.find(f[0])), static_cast<int>(names.find(f[1]))) = r.number(f);
       r.finish();
       t.title = "shear (h_ij adds coordinate j to coordinate i)";
     }

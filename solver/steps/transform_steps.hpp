@@ -23,7 +23,7 @@ struct TransformStep {
   std::string note;
   MatX<Exact> inverse = {};  // empty when the step is singular (a zero scale factor)
   Exact det = 1;
-  MathText formula = {};       // the step's matrix in symbols (rotations: cos θ, sin θ; Rodrigues)
+  MathText formula = {};  // the step's matrix in symbols (rotations: cos θ, sin θ; Rodrigues)
   MathText substitution = {};  // the values put into it (c = cos θ, s = sin θ, the unit axis)
   // Rotations only: the angle (radians) and the step's matrix for another angle (the grader's
   // "degrees taken as radians").

@@ -14,7 +14,8 @@ Exact read_angle(GivenReader& r, const std::string& key, AngleUnit unit) {
 }
 
 MathText angle_text(const Exact& radians, AngleUnit unit) {
-  if (unit == AngleUnit::Degrees) return exact(canonical(radians * 180 / GiNaC::Pi)) + math("°", "^\\circ");
+  if (unit == AngleUnit::Degrees)
+    return exact(canonical(radians * 180 / GiNaC::Pi)) + math("°", "^\\circ");
   return exact(radians) + math(" rad", "\\,\\text{rad}");
 }
 
@@ -24,7 +25,8 @@ bool has_projection(const GivenReader& r) {
 
 namespace {
 
-void require_positive(GivenReader& r, const std::string& key, const Exact& v, const std::string& why) {
+void require_positive(GivenReader& r, const std::string& key, const Exact& v,
+                      const std::string& why) {
   if (exact_sign(v) <= 0) r.fail(key, "must be positive: " + why);
 }
 
@@ -32,9 +34,11 @@ void require_positive(GivenReader& r, const std::string& key, const Exact& v, co
 
 ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
   const int count = r.has("perspective") + r.has("frustum") + r.has("ortho");
-  if (count == 0) r.fail("perspective", "missing required field: give perspective, frustum or ortho");
-  if (count > 1) r.fail(r.has("perspective") ? "perspective" : "frustum",
-                        "give only one of perspective, frustum and ortho");
+  if (count == 0)
+    r.fail("perspective", "missing required field: give perspective, frustum or ortho");
+  if (count > 1)
+    r.fail(r.has("perspective") ? "perspective" : "frustum",
+           "give only one of perspective, frustum and ortho");
   ProjectionSpec p;
   p.unit = c.angles;
   p.left_handed = left_handed_columns(c);
@@ -73,16 +77,22 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
   }
   const bool frustum = r.has("frustum");
   p.type = frustum ? ProjectionSpec::Type::Frustum : ProjectionSpec::Type::Ortho;
-  GivenReader g = r.child(frustum ? "frustum" : "ortho", {"left", "right", "bottom", "top", "near", "far"});
-  p.volume = {g.number("left"), g.number("right"), g.number("bottom"), g.number("top"),
-              g.number("near"), g.number("far")};
+  GivenReader g =
+      r.child(frustum ? "frustum" : "ortho", {"left", "right", "bottom", "top", "near", "far"});
+  p.volume = {g.number("left"), g.number("right"), g.number("bottom"),
+              g.number("top"),  g.number("near"),  g.number("far")};
   // Looking down +z, near and far are the planes' z coordinates already.
-  p.z_coordinates = !frustum && c.z_planes == ZPlanes::Coordinates && c.api != Api::DirectX && !p.left_handed;
-  if (canonical(p.volume.right - p.volume.left).is_zero()) g.fail("right", "left = right: the view volume has no width");
-  if (canonical(p.volume.top - p.volume.bottom).is_zero()) g.fail("top", "bottom = top: the view volume has no height");
-  if (canonical(p.volume.far - p.volume.near).is_zero()) g.fail("far", "near = far: the view volume has no depth");
+  p.z_coordinates =
+      !frustum && c.z_planes == ZPlanes::Coordinates && c.api != Api::DirectX && !p.left_handed;
+  if (canonical(p.volume.right - p.volume.left).is_zero())
+    g.fail("right", "left = right: the view volume has no width");
+  if (canonical(p.volume.top - p.volume.bottom).is_zero())
+    g.fail("top", "bottom = top: the view volume has no height");
+  if (canonical(p.volume.far - p.volume.near).is_zero())
+    g.fail("far", "near = far: the view volume has no depth");
   if (frustum) {
-    require_positive(g, "near", p.volume.near, "a perspective needs the near plane in front of the eye");
+    require_positive(g, "near", p.volume.near,
+                     "a perspective needs the near plane in front of the eye");
     require_positive(g, "far", p.volume.far, "the far plane is in front of the eye");
   }
   g.finish();
@@ -103,7 +113,8 @@ std::vector<std::vector<Exact>> rows_of(const MatX<Exact>& m) {
   return rows;
 }
 
-Value transform_points_with_steps(const MatX<Exact>& m, const std::vector<std::vector<Exact>>& points,
+Value transform_points_with_steps(const MatX<Exact>& m,
+                                  const std::vector<std::vector<Exact>>& points,
                                   const std::string& title, const std::string& name,
                                   Derivation* steps, Api api) {
   if (points.empty()) return Value::null();
@@ -113,9 +124,11 @@ Value transform_points_with_steps(const MatX<Exact>& m, const std::vector<std::v
     for (Exact& x : moved.back()) x = canonical(x);
     if (steps)
       steps->add(title,
-                 api == Api::DirectX ? math(name + "′ = " + name + "·M", name + "' = " + name + " M")
-                                     : math(name + "′ = M·" + name, name + "' = M " + name),
-                 math(name + " = ") + vec(p), math(name + "′ = ", name + "' = ") + vec(moved.back(), true));
+                 api == Api::DirectX
+                     ? math(name + "′ = " + name + "·M", name + "' = " + name + " M")
+                     : math(name + "′ = M·" + name, name + "' = M " + name),
+                 math(name + " = ") + vec(p),
+                 math(name + "′ = ", name + "' = ") + vec(moved.back(), true));
   }
   if (steps) steps->yields("points");
   return Value::matrix(moved);
@@ -131,19 +144,24 @@ void viewport_step(Derivation* steps, Api api, const Exact& width, const Exact& 
   const bool y_up = api == Api::OpenGL;
   const MathText formula =
       math("x_w = (x + 1)/2·width,  ", "x_w = \\frac{x + 1}{2}\\cdot\\text{width},\\; ") +
-      (y_up ? math("y_w = (y + 1)/2·height,  ", "y_w = \\frac{y + 1}{2}\\cdot\\text{height},\\; ")
-            : math("y_w = (1 − y)/2·height,  ", "y_w = \\frac{1 - y}{2}\\cdot\\text{height},\\; ")) +
+      (y_up
+           ? math("y_w = (y + 1)/2·height,  ", "y_w = \\frac{y + 1}{2}\\cdot\\text{height},\\; ")
+           : math("y_w = (1 − y)/2·height,  ", "y_w = \\frac{1 - y}{2}\\cdot\\text{height},\\; ")) +
       (api == Api::DirectX ? math("depth = z", "\\text{depth} = z")
                            : math("depth = (z + 1)/2", "\\text{depth} = \\frac{z + 1}{2}"));
-  MathText given = ndc ? math("ndc = ", "\\text{ndc} = ") + vec(*ndc) + math(",  ", ",\\; ") : MathText{};
-  given += math("width = ", "\\text{width} = ") + exact(width) + math(",  height = ", ",\\; \\text{height} = ") + exact(height);
-  steps->add("Viewport", formula, given,
-             math("(x_w, y_w, depth) = ", "(x_w, y_w, \\text{depth}) = ") + vec(window, true))
-      .note = api == Api::OpenGL    ? "OpenGL's window origin is bottom-left, y up."
-              : api == Api::DirectX ? "DirectX's window origin is top-left, y down; NDC z is already in [0, 1]."
-                                    : "Processing's window origin is top-left with y down (its screenY); its "
-                                      "projection negated y for its y-down world, so world y and window y both "
-                                      "point down.";
+  MathText given =
+      ndc ? math("ndc = ", "\\text{ndc} = ") + vec(*ndc) + math(",  ", ",\\; ") : MathText{};
+  given += math("width = ", "\\text{width} = ") + exact(width) +
+           math(",  height = ", ",\\; \\text{height} = ") + exact(height);
+  steps
+      ->add("Viewport", formula, given,
+            math("(x_w, y_w, depth) = ", "(x_w, y_w, \\text{depth}) = ") + vec(window, true))
+      .note = api == Api::OpenGL ? "OpenGL's window origin is bottom-left, y up."
+              : api == Api::DirectX
+                  ? "DirectX's window origin is top-left, y down; NDC z is already in [0, 1]."
+                  : "Processing's window origin is top-left with y down (its screenY); its "
+                    "projection negated y for its y-down world, so world y and window y both "
+                    "point down.";
   steps->yields("window");
 }
 
@@ -162,7 +180,9 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
     throw DomainError(field + "center", "center = eye: the camera looks nowhere");
   const Vec3<Exact> side = forward.cross(up);
   if (canonical(side.dot(side)).is_zero())
-    throw DomainError(field + "up", "up is parallel to the view direction (or zero): the camera's roll is undefined");
+    throw DomainError(
+        field + "up",
+        "up is parallel to the view direction (or zero): the camera's roll is undefined");
   // A left-handed course takes LookAtLH's basis (DirectX's, in column form).
   const bool plus_z = api == Api::DirectX || left_handed;
   const MatX<Exact> m = canonical(look_at(eye, center, up, plus_z ? Api::DirectX : api));
@@ -172,60 +192,96 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
     Vec3<Exact> side = plus_z ? Vec3<Exact>(up.cross(f)) : Vec3<Exact>(f.cross(up));
     for (int i = 0; i < 3; ++i) side(i) = canonical(side(i));
     // Forward, side and up, as gluLookAt (or LookAtLH) computes them, then the translations.
-    steps->add("Viewing direction",
-               math("f = (center − eye)/‖center − eye‖", "\\mathbf{f} = \\frac{\\mathbf{c} - \\mathbf{e}}{\\lVert\\mathbf{c} - \\mathbf{e}\\rVert}"),
-               math("center − eye = ", "\\mathbf{c} - \\mathbf{e} = ") + vec(forward) +
-                   math(",  ‖center − eye‖ = ", ",\\; \\lVert\\mathbf{c} - \\mathbf{e}\\rVert = ") + exact(norm(forward), true),
-               math("f = ", "\\mathbf{f} = ") + vec(f, true))
-        .note = "eye = the camera's position (e), center = the point it looks at (c), up = the up vector.";
+    steps
+        ->add("Viewing direction",
+              math("f = (center − eye)/‖center − eye‖",
+                   "\\mathbf{f} = \\frac{\\mathbf{c} - \\mathbf{e}}{\\lVert\\mathbf{c} - "
+                   "\\mathbf{e}\\rVert}"),
+              math("center − eye = ", "\\mathbf{c} - \\mathbf{e} = ") + vec(forward) +
+                  math(",  ‖center − eye‖ = ", ",\\; \\lVert\\mathbf{c} - \\mathbf{e}\\rVert = ") +
+                  exact(norm(forward), true),
+              math("f = ", "\\mathbf{f} = ") + vec(f, true))
+        .note =
+        "eye = the camera's position (e), center = the point it looks at (c), up = the up vector.";
     if (plus_z) {
-      steps->add("Camera axes (left-handed, looking down +z)",
-                 math("z = f,  x = (up × z)/‖up × z‖,  y = z × x",
-                      "\\mathbf{z} = \\mathbf{f},\\; \\mathbf{x} = \\frac{\\mathbf{up}\\times\\mathbf{z}}{\\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert},\\; \\mathbf{y} = \\mathbf{z}\\times\\mathbf{x}"),
-                 math("up × z = ", "\\mathbf{up}\\times\\mathbf{z} = ") + vec(side, true) +
-                     math(",  ‖up × z‖ = ", ",\\; \\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert = ") + exact(norm(side), true),
-                 math("x = ", "\\mathbf{x} = ") + vec(row(0)) + math(",  y = ", ",\\; \\mathbf{y} = ") + vec(row(1)) +
-                     math(",  z = ", ",\\; \\mathbf{z} = ") + vec(row(2)));
-      steps->add("Translations", math("t = (−x·eye, −y·eye, −z·eye)",
-                                      "\\mathbf{t} = (-\\mathbf{x}\\cdot\\mathbf{e},\\, -\\mathbf{y}\\cdot\\mathbf{e},\\, -\\mathbf{z}\\cdot\\mathbf{e})"),
+      steps->add(
+          "Camera axes (left-handed, looking down +z)",
+          math("z = f,  x = (up × z)/‖up × z‖,  y = z × x",
+               "\\mathbf{z} = \\mathbf{f},\\; \\mathbf{x} = "
+               "\\frac{\\mathbf{up}\\times\\mathbf{z}}{\\lVert\\mathbf{up}\\times\\mathbf{z}"
+               "\\rVert},\\; \\mathbf{y} = \\mathbf{z}\\times\\mathbf{x}"),
+          math("up × z = ", "\\mathbf{up}\\times\\mathbf{z} = ") + vec(side, true) +
+              math(",  ‖up × z‖ = ", ",\\; \\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert = ") +
+              exact(norm(side), true),
+          math("x = ", "\\mathbf{x} = ") + vec(row(0)) + math(",  y = ", ",\\; \\mathbf{y} = ") +
+              vec(row(1)) + math(",  z = ", ",\\; \\mathbf{z} = ") + vec(row(2)));
+      steps->add("Translations",
+                 math("t = (−x·eye, −y·eye, −z·eye)",
+                      "\\mathbf{t} = (-\\mathbf{x}\\cdot\\mathbf{e},\\, "
+                      "-\\mathbf{y}\\cdot\\mathbf{e},\\, -\\mathbf{z}\\cdot\\mathbf{e})"),
                  math("eye = ", "\\mathbf{e} = ") + vec(eye),
-                 math("t = ", "\\mathbf{t} = ") + vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true));
+                 math("t = ", "\\mathbf{t} = ") +
+                     vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true));
       if (api == Api::DirectX)
-        steps->add("View matrix",
-                   math("V = [x_x y_x z_x 0; x_y y_y z_y 0; x_z y_z z_z 0; t_x t_y t_z 1] (p′ = p·V)",
-                        "V = \\begin{bmatrix} x_x & y_x & z_x & 0 \\\\ x_y & y_y & z_y & 0 \\\\ x_z & y_z & z_z & 0 \\\\ t_x & t_y & t_z & 1 \\end{bmatrix}"),
-                   {}, math("V = ") + matrix_text(paper_form(m, api)))
+        steps
+            ->add(
+                "View matrix",
+                math("V = [x_x y_x z_x 0; x_y y_y z_y 0; x_z y_z z_z 0; t_x t_y t_z 1] (p′ = p·V)",
+                     "V = \\begin{bmatrix} x_x & y_x & z_x & 0 \\\\ x_y & y_y & z_y & 0 \\\\ x_z & "
+                     "y_z & z_z & 0 \\\\ t_x & t_y & t_z & 1 \\end{bmatrix}"),
+                {}, math("V = ") + matrix_text(paper_form(m, api)))
             .note = multiply_note(api);
       else
-        steps->add("View matrix",
-                   math("V = [x_x x_y x_z t_x; y_x y_y y_z t_y; z_x z_y z_z t_z; 0 0 0 1]",
-                        "V = \\begin{bmatrix} x_x & x_y & x_z & t_x \\\\ y_x & y_y & y_z & t_y \\\\ z_x & z_y & z_z & t_z \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"),
-                   {}, math("V = ") + matrix_text(m))
-            .note = multiply_note(api) +
-                    " Left-handed, the camera looks down +z. A right-handed camera at the same place "
-                    "(gluLookAt, looking down −z) has the x and z rows negated: V_right = diag(−1, 1, −1, 1)·V.";
+        steps
+            ->add("View matrix",
+                  math("V = [x_x x_y x_z t_x; y_x y_y y_z t_y; z_x z_y z_z t_z; 0 0 0 1]",
+                       "V = \\begin{bmatrix} x_x & x_y & x_z & t_x \\\\ y_x & y_y & y_z & t_y \\\\ "
+                       "z_x & z_y & z_z & t_z \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"),
+                  {}, math("V = ") + matrix_text(m))
+            .note =
+            multiply_note(api) +
+            " Left-handed, the camera looks down +z. A right-handed camera at the same place "
+            "(gluLookAt, looking down −z) has the x and z rows negated: V_right = diag(−1, 1, −1, "
+            "1)·V.";
     } else {
-      steps->add("Side axis",
-                 math("s = (f × up)/‖f × up‖", "\\mathbf{s} = \\frac{\\mathbf{f}\\times\\mathbf{up}}{\\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert}"),
-                 math("f × up = ", "\\mathbf{f}\\times\\mathbf{up} = ") + vec(side, true) +
-                     math(",  ‖f × up‖ = ", ",\\; \\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert = ") + exact(norm(side), true),
-                 math("s = ", "\\mathbf{s} = ") + vec(row(0), true));
+      steps->add(
+          "Side axis",
+          math("s = (f × up)/‖f × up‖",
+               "\\mathbf{s} = "
+               "\\frac{\\mathbf{f}\\times\\mathbf{up}}{\\lVert\\mathbf{f}\\times\\mathbf{up}"
+               "\\rVert}"),
+          math("f × up = ", "\\mathbf{f}\\times\\mathbf{up} = ") + vec(side, true) +
+              math(",  ‖f × up‖ = ", ",\\; \\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert = ") +
+              exact(norm(side), true),
+          math("s = ", "\\mathbf{s} = ") + vec(row(0), true));
       steps->add("Camera axes (right-handed, looking down −z)",
-                 math("u = s × f,  the camera's z axis is −f", "\\mathbf{u} = \\mathbf{s}\\times\\mathbf{f},\\; \\mathbf{z}_{\\text{cam}} = -\\mathbf{f}"),
+                 math("u = s × f,  the camera's z axis is −f",
+                      "\\mathbf{u} = \\mathbf{s}\\times\\mathbf{f},\\; \\mathbf{z}_{\\text{cam}} = "
+                      "-\\mathbf{f}"),
                  {},
-                 math("u = ", "\\mathbf{u} = ") + vec(row(1), true) + math(",  −f = ", ",\\; -\\mathbf{f} = ") + vec(row(2), true));
-      steps->add("Translations", math("(−s·eye, −u·eye, f·eye)",
-                                      "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; \\mathbf{f}\\cdot\\mathbf{e}\\right)"),
-                 math("eye = ", "\\mathbf{e} = ") + vec(eye),
-                 math("(−s·eye, −u·eye, f·eye) = ", "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; \\mathbf{f}\\cdot\\mathbf{e}\\right) = ") +
-                     vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true))
-          .note = "Each row of V dots a point with one camera axis after moving the eye to the origin: "
-                  "s·(p − eye) = s·p − s·eye.";
-      steps->add("View matrix",
-                 math("V = [s_x s_y s_z −s·eye; u_x u_y u_z −u·eye; −f_x −f_y −f_z f·eye; 0 0 0 1]",
-                      "V = \\begin{bmatrix} s_x & s_y & s_z & -\\mathbf{s}\\cdot\\mathbf{e} \\\\ u_x & u_y & u_z & -\\mathbf{u}\\cdot\\mathbf{e} \\\\ "
-                      "-f_x & -f_y & -f_z & \\mathbf{f}\\cdot\\mathbf{e} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"),
-                 {}, math("V = ") + matrix_text(paper_form(m, api)))
+                 math("u = ", "\\mathbf{u} = ") + vec(row(1), true) +
+                     math(",  −f = ", ",\\; -\\mathbf{f} = ") + vec(row(2), true));
+      steps
+          ->add("Translations",
+                math("(−s·eye, −u·eye, f·eye)",
+                     "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; "
+                     "\\mathbf{f}\\cdot\\mathbf{e}\\right)"),
+                math("eye = ", "\\mathbf{e} = ") + vec(eye),
+                math("(−s·eye, −u·eye, f·eye) = ",
+                     "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; "
+                     "\\mathbf{f}\\cdot\\mathbf{e}\\right) = ") +
+                    vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true))
+          .note =
+          "Each row of V dots a point with one camera axis after moving the eye to the origin: "
+          "s·(p − eye) = s·p − s·eye.";
+      steps
+          ->add("View matrix",
+                math("V = [s_x s_y s_z −s·eye; u_x u_y u_z −u·eye; −f_x −f_y −f_z f·eye; 0 0 0 1]",
+                     "V = \\begin{bmatrix} s_x & s_y & s_z & -\\mathbf{s}\\cdot\\mathbf{e} \\\\ "
+                     "u_x & u_y & u_z & -\\mathbf{u}\\cdot\\mathbf{e} \\\\ "
+                     "-f_x & -f_y & -f_z & \\mathbf{f}\\cdot\\mathbf{e} \\\\ 0 & 0 & 0 & 1 "
+                     "\\end{bmatrix}"),
+                {}, math("V = ") + matrix_text(paper_form(m, api)))
           .note = multiply_note(api);
     }
   }
@@ -274,26 +330,31 @@ MathText projection_formula(bool ortho, Api api, bool left_handed, const std::st
   const std::string plus = left_handed ? "−" : "", latex_plus = left_handed ? "-" : "";
   const std::string suffix = left_handed ? "_LH" : "";
   if (ortho)
-    return math("ortho" + suffix + ": [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign + "2/(t−b) 0 −(t+b)/(t−b); 0 0 " +
-                    minus + "2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
-                name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " + latex_sign +
-                    "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & " + latex_minus +
+    return math("ortho" + suffix + ": [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
+                    "2/(t−b) 0 −(t+b)/(t−b); 0 0 " + minus + "2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
+                name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
+                    latex_sign + "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & " +
+                    latex_minus +
                     "\\frac{2}{f-n} & -\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
-  return math("frustum" + suffix + ": [2n/(r−l) 0 " + plus + "(r+l)/(r−l) 0; 0 " + sign + "2n/(t−b) " + plus +
-                  "(t+b)/(t−b) 0; 0 0 " + minus + "(f+n)/(f−n) −2fn/(f−n); 0 0 " + minus + "1 0]",
-              name + " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & " + latex_plus + "\\frac{r+l}{r-l} & 0 \\\\ 0 & " +
-                  latex_sign + "\\frac{2n}{t-b} & " + latex_plus + "\\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & " +
-                  latex_minus + "\\frac{f+n}{f-n} & -\\frac{2fn}{f-n} \\\\ 0 & 0 & " + latex_minus +
+  return math("frustum" + suffix + ": [2n/(r−l) 0 " + plus + "(r+l)/(r−l) 0; 0 " + sign +
+                  "2n/(t−b) " + plus + "(t+b)/(t−b) 0; 0 0 " + minus +
+                  "(f+n)/(f−n) −2fn/(f−n); 0 0 " + minus + "1 0]",
+              name + " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & " + latex_plus +
+                  "\\frac{r+l}{r-l} & 0 \\\\ 0 & " + latex_sign + "\\frac{2n}{t-b} & " +
+                  latex_plus + "\\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & " + latex_minus +
+                  "\\frac{f+n}{f-n} & -\\frac{2fn}{f-n} \\\\ 0 & 0 & " + latex_minus +
                   "1 & 0 \\end{bmatrix}");
 }
 
 // "l = −1,  r = 1, …" for the six planes of a view volume.
 MathText volume_text(const Volume<Exact>& v) {
-  const std::pair<const char*, const Exact*> planes[] = {{"l", &v.left}, {"r", &v.right}, {"b", &v.bottom},
-                                                         {"t", &v.top},  {"n", &v.near},  {"f", &v.far}};
+  const std::pair<const char*, const Exact*> planes[] = {{"l", &v.left},   {"r", &v.right},
+                                                         {"b", &v.bottom}, {"t", &v.top},
+                                                         {"n", &v.near},   {"f", &v.far}};
   MathText m;
   for (const auto& [name, value] : planes)
-    m += (m.empty() ? MathText{} : math(",  ", ",\\; ")) + math(std::string(name) + " = ") + exact(*value);
+    m += (m.empty() ? MathText{} : math(",  ", ",\\; ")) + math(std::string(name) + " = ") +
+         exact(*value);
   return m;
 }
 
@@ -326,7 +387,7 @@ void perspective_idea_steps(Api api, bool left_handed, const std::string& name, 
            : plus_z ? math("w′ = z  (" + name + "_4∗ = (0, 0, 1, 0))",
                            "w' = z \\quad (" + name + "_{4 \\ast} = (0, 0, 1, 0))")
                     : math("w′ = −z  (" + name + "_4∗ = (0, 0, −1, 0))",
-                         "w' = -z \\quad (" + name + "_{4 \\ast} = (0, 0, -1, 0))"),
+                           "w' = -z \\quad (" + name + "_{4 \\ast} = (0, 0, -1, 0))"),
            {},
            plus_z ? math("x_ndc = x′ / w′ = x′ / z",
                          "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{z}")
@@ -374,23 +435,30 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
         "r divided by the aspect ratio. perspective() takes the vertical angle fovy; both give the "
         "same frustum and the same matrix.";
   } else if (steps && p.type == ProjectionSpec::Type::Perspective) {
-    steps->add("The frustum of perspective(fovy, aspect, near, far)",
-               math("t = n·tan(fovy/2),  b = −t,  r = t·aspect,  l = −r",
-                    "t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l = -r"),
-               math("fovy = ", "\\text{fovy} = ") + angle_text(*p.fovy, p.unit) + math(",  aspect = ", ",\\; \\text{aspect} = ") +
-                   exact(*p.aspect) + math(",  n = ", ",\\; n = ") + exact(v.near),
-               math("t = ") + exact(v.top, true) + math(",  r = ", ",\\; r = ") + exact(v.right, true))
-        .note = "fovy is the vertical field of view: it sets the top t, and the aspect ratio width/height "
-                "widens the right edge r. Writing −b = t = n·(w/h)·tan(θ/2) instead puts the aspect ratio "
-                "on the vertical extent, which reads θ as a horizontal angle.";
+    steps
+        ->add(
+            "The frustum of perspective(fovy, aspect, near, far)",
+            math("t = n·tan(fovy/2),  b = −t,  r = t·aspect,  l = −r",
+                 "t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l "
+                 "= -r"),
+            math("fovy = ", "\\text{fovy} = ") + angle_text(*p.fovy, p.unit) +
+                math(",  aspect = ", ",\\; \\text{aspect} = ") + exact(*p.aspect) +
+                math(",  n = ", ",\\; n = ") + exact(v.near),
+            math("t = ") + exact(v.top, true) + math(",  r = ", ",\\; r = ") + exact(v.right, true))
+        .note =
+        "fovy is the vertical field of view: it sets the top t, and the aspect ratio width/height "
+        "widens the right edge r. Writing −b = t = n·(w/h)·tan(θ/2) instead puts the aspect ratio "
+        "on the vertical extent, which reads θ as a horizontal angle.";
   }
-  MatX<Exact> m = p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
+  MatX<Exact> m =
+      p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
   // Left-handed (the eye looks down +z): z ↦ −z before the right-handed matrix, so its third
   // column changes sign.
   if (p.left_handed)
     for (int i = 0; i < 4; ++i) m(i, 2) = -m(i, 2);
   m = canonical(m);
-  if (steps && p.type != ProjectionSpec::Type::Ortho) perspective_idea_steps(api, p.left_handed, name, *steps);
+  if (steps && p.type != ProjectionSpec::Type::Ortho)
+    perspective_idea_steps(api, p.left_handed, name, *steps);
   // The course's reading: z_min = near, z_max = far as coordinates map to −1 and +1, so the z row
   // is +2/(z_max − z_min), −(z_max + z_min)/(z_max − z_min); glOrtho's planes z = −n, −f negate
   // the first entry. Both map the same volume; only the direction of the z axis differs.
@@ -408,18 +476,27 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
     if (api == Api::Processing)
       s.note += " Processing negates the y row because its window's y axis points down.";
     if (p.left_handed)
-      s.note += " Left-handed, looking down +z: z = n maps to z_ndc = −1 and z = f to +1, so near and far are "
-                "also the z coordinates of their planes. The right-handed matrix (looking down −z) is this one "
-                "with its third column negated: the same view volume with the z axis reversed.";
+      s.note +=
+          " Left-handed, looking down +z: z = n maps to z_ndc = −1 and z = f to +1, so near and "
+          "far are "
+          "also the z coordinates of their planes. The right-handed matrix (looking down −z) is "
+          "this one "
+          "with its third column negated: the same view volume with the z axis reversed.";
     if (api == Api::OpenGL && !ortho && !p.left_handed)
-      s.note += " z = −n maps to z_ndc = −1 and z = −f to +1. (A sentence stating z = −n ↦ +1 contradicts "
-                "this matrix; the matrix decides.)";
+      s.note +=
+          " z = −n maps to z_ndc = −1 and z = −f to +1. (A sentence stating z = −n ↦ +1 "
+          "contradicts "
+          "this matrix; the matrix decides.)";
     if (api == Api::DirectX) s.note += " Looking down +z, z_ndc runs from 0 at near to 1 at far.";
     if (p.z_coordinates)
-      s.note += " Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: the z row "
-                "is +2/(z_max − z_min). OpenGL's glOrtho reads them as distances in front of an eye looking down "
-                "−z (the planes z = −n and z = −f), which gives −2/(f − n) there; the two matrices differ only "
-                "in the direction of the z axis.";
+      s.note +=
+          " Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: "
+          "the z row "
+          "is +2/(z_max − z_min). OpenGL's glOrtho reads them as distances in front of an eye "
+          "looking down "
+          "−z (the planes z = −n and z = −f), which gives −2/(f − n) there; the two matrices "
+          "differ only "
+          "in the direction of the z axis.";
     steps->yields("matrix");
   }
   return m;
@@ -446,7 +523,8 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
       ProjectionSpec radians = p;
       radians.fovy = as_degrees;
       radians.volume = perspective_volume(as_degrees, *p.aspect, p.volume.near, p.volume.far);
-      out.push_back({"degrees taken as radians", "Your numbers come from using the angle in degrees as if it were radians.",
+      out.push_back({"degrees taken as radians",
+                     "Your numbers come from using the angle in degrees as if it were radians.",
                      frustum_step, radians});
     }
     // fovx: the angle spans the width, so r = n·tan(θ/2) and t = r / aspect.
@@ -457,17 +535,19 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
     fovx.volume.top = canonical(t / *p.aspect);
     fovx.volume.bottom = canonical(-t / *p.aspect);
     out.push_back({"fovx for fovy",
-                   "You used the angle as the horizontal field of view; perspective() takes the vertical one (fovy).",
+                   "You used the angle as the horizontal field of view; perspective() takes the "
+                   "vertical one (fovy).",
                    frustum_step, fovx});
   }
   // A left-handed course's projection written with the right-handed matrix (looking down −z).
   if (p.left_handed) {
     ProjectionSpec right = p;
     right.left_handed = false;
-    out.push_back({"right-handed matrix",
-                   "You used the right-handed matrix (the eye looking down −z); in this course's left-handed "
-                   "coordinates the eye looks down +z, so the third column has the opposite sign (w′ = z).",
-                   "", right});
+    out.push_back(
+        {"right-handed matrix",
+         "You used the right-handed matrix (the eye looking down −z); in this course's left-handed "
+         "coordinates the eye looks down +z, so the third column has the opposite sign (w′ = z).",
+         "", right});
   }
   // near/far sign: the planes' z coordinates (−n, −f) put into the matrix instead of the
   // distances n, f.
@@ -475,7 +555,8 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
   signs.volume.near = canonical(-p.volume.near);
   signs.volume.far = canonical(-p.volume.far);
   out.push_back({"near/far sign",
-                 "near and far are distances in front of the eye (positive); you used the planes' z coordinates −n and −f.",
+                 "near and far are distances in front of the eye (positive); you used the planes' "
+                 "z coordinates −n and −f.",
                  "", signs});
   return out;
 }

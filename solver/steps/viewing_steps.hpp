@@ -3,13 +3,13 @@
 // and matrices shown as on paper.
 #pragma once
 
-#include "solver/problem/kind.hpp"
-#include "solver/derivation/derivation.hpp"
-#include "solver/derivation/value.hpp"
-#include "solver/viewing/projection.hpp"
-
 #include <optional>
 #include <string>
+
+#include "solver/derivation/derivation.hpp"
+#include "solver/derivation/value.hpp"
+#include "solver/problem/kind.hpp"
+#include "solver/viewing/projection.hpp"
 
 namespace frustum {
 
@@ -54,7 +54,8 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
 // Every point through M (with the divide by w), one step each, yielding "points" (written
 // P′ = P·M under DirectX's row vectors; M is the column form either way); the
 // answer value is the list of moved points (null when there are none).
-Value transform_points_with_steps(const MatX<Exact>& m, const std::vector<std::vector<Exact>>& points,
+Value transform_points_with_steps(const MatX<Exact>& m,
+                                  const std::vector<std::vector<Exact>>& points,
                                   const std::string& title, const std::string& name,
                                   Derivation* steps, Api api = Api::OpenGL);
 

@@ -1,14 +1,14 @@
 // Printing exact values the way they are written on paper, in three styles.
 #pragma once
 
-#include "solver/core/exact.hpp"
-
 #include <string>
+
+#include "solver/core/exact.hpp"
 
 namespace frustum {
 
 enum class MathStyle {
-  Plain,    // ASCII, machine-readable, re-parsable: "sqrt(3)/3", "-9*sqrt(3)", "100*sqrt(3)", "pi/6"
+  Plain,  // ASCII, machine-readable, re-parsable: "sqrt(3)/3", "-9*sqrt(3)", "100*sqrt(3)", "pi/6"
   Unicode,  // for the terminal: "√3/3", "−9√3", "100√3", "π/6", "−1/2"
   Latex     // for Markdown: "\frac{\sqrt{3}}{3}", "-9\sqrt{3}", "\frac{\pi}{6}"
 };

@@ -13,8 +13,6 @@
 // are errors), so "1 000" cannot silently become 0.
 #include "solver/util/expression.hpp"
 
-#include "solver/core/work_budget.hpp"
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -27,6 +25,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "solver/core/work_budget.hpp"
 
 namespace frustum {
 namespace {
@@ -146,7 +146,8 @@ std::vector<Glyph> decode_utf8(std::string_view text) {
       code = (code << 6) | (b & 0x3F);
     }
     // parse_yaml replaces invalid bytes with U+FFFD; name the cause, not the placeholder.
-    if (valid && code == 0xFFFD) fail("invalid UTF-8: a byte that is not text (shown as \uFFFD)", i);
+    if (valid && code == 0xFFFD)
+      fail("invalid UTF-8: a byte that is not text (shown as \uFFFD)", i);
     if (!valid) {
       std::ostringstream out;
       out << "invalid UTF-8: byte 0x" << std::uppercase << std::hex << std::setw(2)
@@ -985,7 +986,8 @@ std::optional<GiNaC::ex> parse_decimal_literal(std::string_view text) {
   std::string digits;
   long scale = 0;
   bool any = false;
-  for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true) digits += text[i];
+  for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true)
+    digits += text[i];
   if (i < n && text[i] == '.') {
     for (++i; i < n && std::isdigit(static_cast<unsigned char>(text[i])); ++i, any = true) {
       digits += text[i];
@@ -999,7 +1001,8 @@ std::optional<GiNaC::ex> parse_decimal_literal(std::string_view text) {
     if (i < n && (text[i] == '-' || text[i] == '+')) exp_negative = text[i++] == '-';
     long e = 0;
     bool exp_digits = false;
-    for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])) && e < 1000; ++i, exp_digits = true)
+    for (; i < n && std::isdigit(static_cast<unsigned char>(text[i])) && e < 1000;
+         ++i, exp_digits = true)
       e = e * 10 + (text[i] - '0');
     if (!exp_digits || e > 400) return std::nullopt;
     scale += exp_negative ? -e : e;
@@ -1010,8 +1013,10 @@ std::optional<GiNaC::ex> parse_decimal_literal(std::string_view text) {
   long small = 0;
   if (digits.size() <= 18)
     for (const char c : digits) small = small * 10 + (c - '0');
-  const GiNaC::numeric mantissa = digits.size() <= 18 ? GiNaC::numeric(small) : GiNaC::numeric(digits.c_str());
-  const GiNaC::numeric value = scale == 0 ? mantissa : mantissa * GiNaC::numeric(10).power(GiNaC::numeric(scale));
+  const GiNaC::numeric mantissa =
+      digits.size() <= 18 ? GiNaC::numeric(small) : GiNaC::numeric(digits.c_str());
+  const GiNaC::numeric value =
+      scale == 0 ? mantissa : mantissa * GiNaC::numeric(10).power(GiNaC::numeric(scale));
   return GiNaC::ex(negative ? -value : value);
 }
 

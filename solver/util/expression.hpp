@@ -16,10 +16,10 @@
 namespace frustum {
 
 // Named defaults; every limit can be overridden per call.
-inline constexpr std::size_t kMaxExpressionLength = 4096;   // bytes of input
-inline constexpr int kMaxExpressionDepth = 64;              // nested (), function calls, unary ops
-inline constexpr long kMaxExponent = 1024;                  // |integer exponent|
-inline constexpr std::size_t kMaxExactBits = 16384;         // bits of an exact power's result
+inline constexpr std::size_t kMaxExpressionLength = 4096;  // bytes of input
+inline constexpr int kMaxExpressionDepth = 64;             // nested (), function calls, unary ops
+inline constexpr long kMaxExponent = 1024;                 // |integer exponent|
+inline constexpr std::size_t kMaxExactBits = 16384;        // bits of an exact power's result
 
 struct ExpressionOptions {
   std::size_t max_length = kMaxExpressionLength;

@@ -4,9 +4,12 @@ namespace frustum {
 
 std::string_view to_string(Api api) {
   switch (api) {
-    case Api::OpenGL: return "opengl";
-    case Api::Processing: return "processing";
-    case Api::DirectX: return "directx";
+    case Api::OpenGL:
+      return "opengl";
+    case Api::Processing:
+      return "processing";
+    case Api::DirectX:
+      return "directx";
   }
   return "opengl";
 }
@@ -65,7 +68,8 @@ std::string describe(const Conventions& c, ConventionUse use) {
           "NDC z in [0, 1], window origin top-left with y pointing down";
       break;
   }
-  if (c.z_planes == ZPlanes::Coordinates) s += "; ortho's near and far are the z coordinates z_min, z_max";
+  if (c.z_planes == ZPlanes::Coordinates)
+    s += "; ortho's near and far are the z coordinates z_min, z_max";
   if (c.fov == FovAxis::Horizontal) s += "; the field of view is horizontal (fovx)";
   if (use.angles) s += "; angles in " + std::string(unit);
   return s;

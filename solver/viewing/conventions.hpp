@@ -9,7 +9,8 @@
 namespace frustum {
 
 enum class Api {
-  OpenGL,      // right-handed eye space looking down −z, NDC [−1,1]³, near → −1, window origin bottom-left
+  OpenGL,  // right-handed eye space looking down −z, NDC [−1,1]³, near → −1, window origin
+           // bottom-left
   Processing,  // OpenGL math, window origin top-left with y down, Processing's default camera
   DirectX      // left-handed, looking down +z, NDC z in [0,1], row vectors, window y down
 };
@@ -55,7 +56,7 @@ std::optional<AngleUnit> parse_angle_unit(std::string_view text);
 // Which conventions can change a kind's answers (issue 16: a derivation states a convention only
 // where it matters; a 2D clipping problem has no eye space to describe).
 struct ConventionUse {
-  bool api = true;     // handedness, viewing direction, NDC range, row/column vectors, window origin
+  bool api = true;  // handedness, viewing direction, NDC range, row/column vectors, window origin
   bool angles = true;  // degrees or radians
   // The handedness alone (for kinds with no API: a polygon's front normal), stated when left.
   bool handedness = false;

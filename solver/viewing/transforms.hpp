@@ -2,9 +2,9 @@
 // composite of steps A₁, A₂, A₃ (first applied first) is A₃·A₂·A₁ (seed 002).
 #pragma once
 
-#include "solver/core/matrix.hpp"
-
 #include <cmath>
+
+#include "solver/core/matrix.hpp"
 
 namespace frustum {
 

@@ -1,15 +1,15 @@
 #include "solver/visibility/depth_order.hpp"
 
-#include "solver/geometry/polygon_normal.hpp"
-#include "solver/geometry/triangulate.hpp"
-#include "solver/util/diagnostic.hpp"
-#include "solver/visibility/mesh.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+
+#include "solver/geometry/polygon_normal.hpp"
+#include "solver/geometry/triangulate.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "solver/visibility/mesh.hpp"
 
 namespace frustum {
 
@@ -36,7 +36,8 @@ int orient(const Pt& a, const Pt& b, const Pt& c) { return sign(cross2(b - a, c 
 std::vector<std::array<Pt, 3>> triangulate(const Poly2& p) {
   std::vector<std::array<Pt, 3>> out;
   for (const std::array<int, 3>& t : ear_clip(p, orient))
-    out.push_back({p[static_cast<std::size_t>(t[0])], p[static_cast<std::size_t>(t[1])], p[static_cast<std::size_t>(t[2])]});
+    out.push_back({p[static_cast<std::size_t>(t[0])], p[static_cast<std::size_t>(t[1])],
+                   p[static_cast<std::size_t>(t[2])]});
   return out;
 }
 
@@ -64,15 +65,17 @@ Poly2 clip_to_triangle(Poly2 subject, const std::array<Pt, 3>& clip) {
 
 // One polygon as the viewer sees it.
 struct Seen {
-  Poly2 screen;                            // projected vertices
+  Poly2 screen;                           // projected vertices
   std::vector<std::array<Pt, 3>> pieces;  // its triangles on screen (counter-clockwise)
-  std::array<Exact, 3> h;                  // h(s) = h0 + h1 s_x + h2 s_y: larger = farther
+  std::array<Exact, 3> h;                 // h(s) = h0 + h1 s_x + h2 s_y: larger = farther
   bool edge_on = false;
   Vec3<Exact> normal;
   Exact d;  // plane n·x = d
 };
 
-Exact eval(const std::array<Exact, 3>& h, const Pt& s) { return canonical(h[0] + h[1] * s(0) + h[2] * s(1)); }
+Exact eval(const std::array<Exact, 3>& h, const Pt& s) {
+  return canonical(h[0] + h[1] * s(0) + h[2] * s(1));
+}
 
 // An axis least aligned with v, so v × axis is far from zero.
 Vec3<Exact> helper_axis(const Vec3<Exact>& v) {
@@ -84,13 +87,16 @@ Vec3<Exact> helper_axis(const Vec3<Exact>& v) {
   return a;
 }
 
-Vec3<Exact> canon(const Vec3<Exact>& v) { return Vec3<Exact>(canonical(v(0)), canonical(v(1)), canonical(v(2))); }
+Vec3<Exact> canon(const Vec3<Exact>& v) {
+  return Vec3<Exact>(canonical(v(0)), canonical(v(1)), canonical(v(2)));
+}
 
 }  // namespace
 
 std::string PairReport::name() const { return fmt::format("{}-{}", i, j); }
 
-DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons, const DepthViewer& viewer) {
+DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons,
+                           const DepthViewer& viewer) {
   DepthSortResult r;
   const std::size_t n = polygons.size();
   const bool perspective = viewer.eye.has_value();
@@ -115,10 +121,12 @@ DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons, const D
     for (const Vec3<Exact>& g : r.centroids) mean += g;
     f = canon(mean / Exact(static_cast<long>(n)) - *viewer.eye);
     if (canonical(f.squaredNorm()).is_zero())
-      throw DomainError("eye", "the eye is at the centre of the scene: there is no direction to look in");
+      throw DomainError("eye",
+                        "the eye is at the centre of the scene: there is no direction to look in");
   } else {
     f = *viewer.view_direction;
-    if (canonical(f.squaredNorm()).is_zero()) throw DomainError("view_direction", "the zero vector is not a direction");
+    if (canonical(f.squaredNorm()).is_zero())
+      throw DomainError("view_direction", "the zero vector is not a direction");
     const Exact len = canonical(GiNaC::sqrt(canonical(f.squaredNorm())));
     for (const Vec3<Exact>& g : r.centroids) {
       key.push_back(canonical(g.dot(f)));
@@ -136,7 +144,8 @@ DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons, const D
   // (x − e)·f = 1: s = ((x − e)·u, (x − e)·w) / ((x − e)·f).
   const Vec3<Exact> u = canon(f.cross(helper_axis(f)));
   const Vec3<Exact> w = canon(f.cross(u));
-  const Exact uu = canonical(u.squaredNorm()), ww = canonical(w.squaredNorm()), ff = canonical(f.squaredNorm());
+  const Exact uu = canonical(u.squaredNorm()), ww = canonical(w.squaredNorm()),
+              ff = canonical(f.squaredNorm());
   r.projection = perspective
                      ? "perspective projection from the eye onto the plane perpendicular to the "
                        "direction from the eye to the mean centroid"
@@ -149,15 +158,18 @@ DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons, const D
     Vec3<Exact> nrm = newell_normal(p);
     s.normal = canon(nrm);
     if (canonical(s.normal.squaredNorm()).is_zero())
-      throw DomainError(fmt::format("polygons[{}]", k), "the polygon is degenerate: it has no normal");
+      throw DomainError(fmt::format("polygons[{}]", k),
+                        "the polygon is degenerate: it has no normal");
     s.d = canonical(s.normal.dot(p[0]));
     for (const Vec3<Exact>& x : p) {
       if (perspective) {
         const Vec3<Exact> rel = x - *viewer.eye;
         const Exact depth = canonical(rel.dot(f));
         if (sign(depth) <= 0)
-          throw DomainError("eye", fmt::format("a vertex of polygon {} is not in front of the eye (looking "
-                                               "toward the scene's mean centroid)", k));
+          throw DomainError(
+              "eye", fmt::format("a vertex of polygon {} is not in front of the eye (looking "
+                                 "toward the scene's mean centroid)",
+                                 k));
         s.screen.emplace_back(canonical(rel.dot(u) / depth), canonical(rel.dot(w) / depth));
       } else {
         s.screen.emplace_back(canonical(x.dot(u)), canonical(x.dot(w)));
@@ -231,11 +243,11 @@ DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons, const D
       PairReport p;
       p.i = static_cast<int>(i);
       p.j = static_cast<int>(j);
-      p.order = any_mixed         ? PairOrder::Interpenetrating
-                : i_far && j_far  ? PairOrder::WrapsAround
-                : i_far           ? PairOrder::FirstBehind
-                : j_far           ? PairOrder::SecondBehind
-                                  : PairOrder::Coplanar;
+      p.order = any_mixed        ? PairOrder::Interpenetrating
+                : i_far && j_far ? PairOrder::WrapsAround
+                : i_far          ? PairOrder::FirstBehind
+                : j_far          ? PairOrder::SecondBehind
+                                 : PairOrder::Coplanar;
       const int side_j = eye_side(seen[j], polygons[j]), side_i = eye_side(seen[i], polygons[i]);
       p.planes.i_behind_plane_j = side_j != 0 && all_on_side(polygons[i], seen[j], -side_j);
       p.planes.i_front_plane_j = side_j != 0 && all_on_side(polygons[i], seen[j], side_j);
@@ -261,21 +273,27 @@ DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons, const D
     const bool i_first = position[i] < position[j];
     p.cyclic = reach[i][j] && reach[j][i];
     if (p.order == PairOrder::Interpenetrating) {
-      p.reason = "they interpenetrate (貫通): over their overlap the nearer polygon changes inside "
-                 "one piece, so no order of whole polygons is right";
+      p.reason =
+          "they interpenetrate (貫通): over their overlap the nearer polygon changes inside "
+          "one piece, so no order of whole polygons is right";
     } else if (p.order == PairOrder::WrapsAround) {
-      p.reason = "one wraps around the other (a concave polygon): part of the overlap has one in "
-                 "front, part the other, so no order of whole polygons is right";
+      p.reason =
+          "one wraps around the other (a concave polygon): part of the overlap has one in "
+          "front, part the other, so no order of whole polygons is right";
     } else if (p.cyclic) {
-      p.reason = "they lie on a cycle of overlaps (三すくみ): each polygon must be drawn before the "
-                 "next, around the cycle, so no order of whole polygons is right";
-    } else if ((p.order == PairOrder::FirstBehind && !i_first) || (p.order == PairOrder::SecondBehind && i_first)) {
+      p.reason =
+          "they lie on a cycle of overlaps (三すくみ): each polygon must be drawn before the "
+          "next, around the cycle, so no order of whole polygons is right";
+    } else if ((p.order == PairOrder::FirstBehind && !i_first) ||
+               (p.order == PairOrder::SecondBehind && i_first)) {
       const int far = p.order == PairOrder::FirstBehind ? p.i : p.j;
       const int near = far == p.i ? p.j : p.i;
-      const bool tie = sign(key[static_cast<std::size_t>(near)] - key[static_cast<std::size_t>(far)]) == 0;
-      p.reason = fmt::format("over their overlap {} is nearer everywhere, but its centroid is {} {}'s, "
-                             "so the centroid order draws {} first and {} paints over it",
-                             near, tie ? "as far as" : "farther than", far, near, far);
+      const bool tie =
+          sign(key[static_cast<std::size_t>(near)] - key[static_cast<std::size_t>(far)]) == 0;
+      p.reason = fmt::format(
+          "over their overlap {} is nearer everywhere, but its centroid is {} {}'s, "
+          "so the centroid order draws {} first and {} paints over it",
+          near, tie ? "as far as" : "farther than", far, near, far);
     }
     p.conflict = !p.reason.empty();
     if (p.conflict) r.conflicts.push_back(p.name());

@@ -6,11 +6,11 @@
 // exists), or the pair lies on a cycle of "must be drawn before" (三すくみ).
 #pragma once
 
-#include "solver/core/matrix.hpp"
-
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "solver/core/matrix.hpp"
 
 namespace frustum {
 
@@ -45,18 +45,18 @@ struct PairReport {
   PlaneTests planes;
   bool cyclic = false;
   bool conflict = false;
-  std::string reason;  // why the pair conflicts (empty when it does not)
+  std::string reason;        // why the pair conflicts (empty when it does not)
   std::string name() const;  // "i-j"
 };
 
 struct DepthSortResult {
   std::vector<Vec3<Exact>> centroids;
-  std::vector<Exact> depths;    // larger = farther
-  std::vector<int> order;       // back to front (stable for equal depths)
+  std::vector<Exact> depths;            // larger = farther
+  std::vector<int> order;               // back to front (stable for equal depths)
   std::vector<PairReport> overlapping;  // every pair whose projections overlap (positive area)
-  std::vector<int> edge_on;     // polygons seen edge-on (no area on screen)
+  std::vector<int> edge_on;             // polygons seen edge-on (no area on screen)
   std::vector<std::string> conflicts;   // "i-j", sorted
-  std::string projection;       // how overlap was decided, in a sentence
+  std::string projection;               // how overlap was decided, in a sentence
 };
 
 // Throws DomainError naming "view_direction" (zero vector), "eye" (a vertex not in front of

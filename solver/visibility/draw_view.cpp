@@ -1,12 +1,12 @@
 #include "solver/visibility/draw_view.hpp"
 
-#include "solver/util/diagnostic.hpp"
-#include "solver/viewing/projection.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "solver/util/diagnostic.hpp"
+#include "solver/viewing/projection.hpp"
 
 namespace frustum {
 
@@ -43,10 +43,12 @@ DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api
     eye = to_double(*viewer.eye);
     forward = center - eye;
     if (forward.norm() == 0)
-      throw DomainError("eye", "the eye is at the centre of the scene: there is no direction to look in");
+      throw DomainError("eye",
+                        "the eye is at the centre of the scene: there is no direction to look in");
   } else {
     forward = to_double(*viewer.view_direction);
-    if (forward.norm() == 0) throw DomainError("view_direction", "the zero vector is not a direction");
+    if (forward.norm() == 0)
+      throw DomainError("view_direction", "the zero vector is not a direction");
     eye = center - forward;
   }
   Eigen::Vector3d up(0, 1, 0);
@@ -54,16 +56,17 @@ DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api
   if (std::abs(along_y) > kUpParallel) up = Eigen::Vector3d(0, 0, along_y < 0 ? -1 : 1);
   const MatX<double> m = look_at<double>(eye, center, up, api);
   d.view_from_world = m;
-  d.description = d.perspective
-                      ? fmt::format("perspective from the eye {} toward {}, up {}", point_text(eye),
-                                    point_text(center), point_text(up))
-                      : fmt::format("orthographic along {}, up {}", point_text(forward), point_text(up));
-  d.description += fmt::format(" ({}{})", to_string(api), api == Api::Processing ? ", window y down" : "");
+  d.description = d.perspective ? fmt::format("perspective from the eye {} toward {}, up {}",
+                                              point_text(eye), point_text(center), point_text(up))
+                                : fmt::format("orthographic along {}, up {}", point_text(forward),
+                                              point_text(up));
+  d.description +=
+      fmt::format(" ({}{})", to_string(api), api == Api::Processing ? ", window y down" : "");
   return d;
 }
 
-ScreenFit fit_screen(const std::vector<Eigen::Vector2d>& points, double x0, double y0, double w, double h,
-                     double margin) {
+ScreenFit fit_screen(const std::vector<Eigen::Vector2d>& points, double x0, double y0, double w,
+                     double h, double margin) {
   ScreenFit f;
   if (points.empty()) return f;
   Eigen::Vector2d lo = points[0], hi = points[0];

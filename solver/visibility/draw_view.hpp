@@ -6,12 +6,11 @@
 // Screen coordinates: x right, y up, unscaled (perspective: x_view/depth, y_view/depth).
 #pragma once
 
+#include <Eigen/Core>
+#include <string>
+
 #include "solver/viewing/conventions.hpp"
 #include "solver/visibility/depth_order.hpp"
-
-#include <Eigen/Core>
-
-#include <string>
 
 namespace frustum {
 
@@ -34,9 +33,11 @@ DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api
 // coordinates (y down).
 struct ScreenFit {
   double scale = 1, ox = 0, oy = 0;
-  Eigen::Vector2d operator()(const Eigen::Vector2d& s) const { return {ox + scale * s.x(), oy - scale * s.y()}; }
+  Eigen::Vector2d operator()(const Eigen::Vector2d& s) const {
+    return {ox + scale * s.x(), oy - scale * s.y()};
+  }
 };
-ScreenFit fit_screen(const std::vector<Eigen::Vector2d>& points, double x0, double y0, double w, double h,
-                     double margin);
+ScreenFit fit_screen(const std::vector<Eigen::Vector2d>& points, double x0, double y0, double w,
+                     double h, double margin);
 
 }  // namespace frustum

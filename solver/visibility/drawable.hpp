@@ -2,17 +2,17 @@
 // and which picture to make. A kind that can be drawn fills one (KindInfo::drawable).
 #pragma once
 
+#include <vector>
+
 #include "solver/visibility/depth_order.hpp"
 #include "solver/visibility/mesh.hpp"
-
-#include <vector>
 
 namespace frustum {
 
 struct Drawable {
   enum class Picture {
-    HiddenLines,       // a closed mesh: visible edges solid, silhouette bold, covered parts dashed
-    PainterVsZBuffer   // polygons: the painter's result next to the z-buffer's
+    HiddenLines,      // a closed mesh: visible edges solid, silhouette bold, covered parts dashed
+    PainterVsZBuffer  // polygons: the painter's result next to the z-buffer's
   };
   Picture picture = Picture::HiddenLines;
   Mesh mesh;                              // HiddenLines (already transformed)

@@ -1,8 +1,8 @@
 #include "solver/visibility/edge_classes.hpp"
 
-#include "solver/geometry/predicates.hpp"
-
 #include <map>
+
+#include "solver/geometry/predicates.hpp"
 
 namespace frustum {
 
@@ -12,9 +12,12 @@ const char* facing_word(Facing f) {
 
 const char* edge_class_word(EdgeClass c) {
   switch (c) {
-    case EdgeClass::Visible: return "visible";
-    case EdgeClass::Silhouette: return "silhouette";
-    case EdgeClass::Hidden: return "hidden";
+    case EdgeClass::Visible:
+      return "visible";
+    case EdgeClass::Silhouette:
+      return "silhouette";
+    case EdgeClass::Hidden:
+      return "hidden";
   }
   return "hidden";
 }
@@ -39,8 +42,11 @@ std::vector<EdgeClass> classify_edges(const std::vector<MeshEdge>& edges,
   for (const MeshEdge& e : edges) {
     int front = 0;
     for (const std::vector<int>* side : {&e.forward, &e.backward})
-      for (int f : *side) front += counts_as_front(faces[static_cast<std::size_t>(f)].facing) ? 1 : 0;
-    out.push_back(front == 2 ? EdgeClass::Visible : front == 1 ? EdgeClass::Silhouette : EdgeClass::Hidden);
+      for (int f : *side)
+        front += counts_as_front(faces[static_cast<std::size_t>(f)].facing) ? 1 : 0;
+    out.push_back(front == 2   ? EdgeClass::Visible
+                  : front == 1 ? EdgeClass::Silhouette
+                               : EdgeClass::Hidden);
   }
   return out;
 }

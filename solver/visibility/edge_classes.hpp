@@ -4,17 +4,17 @@
 // of the front faces, and the silhouette is one closed loop.
 #pragma once
 
-#include "solver/visibility/mesh.hpp"
-
 #include <string>
 #include <vector>
+
+#include "solver/visibility/mesh.hpp"
 
 namespace frustum {
 
 enum class Facing { Front, Back, EdgeOn };
 enum class EdgeClass { Visible, Silhouette, Hidden };
 
-const char* facing_word(Facing f);       // "front", "back", "edge_on"
+const char* facing_word(Facing f);         // "front", "back", "edge_on"
 const char* edge_class_word(EdgeClass c);  // "visible", "silhouette", "hidden"
 
 struct FaceTest {

@@ -1,10 +1,10 @@
 #include "solver/visibility/hidden_lines.hpp"
 
-#include "solver/geometry/predicates.hpp"
-#include "solver/geometry/triangulate.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "solver/geometry/predicates.hpp"
+#include "solver/geometry/triangulate.hpp"
 
 namespace frustum {
 
@@ -22,8 +22,10 @@ bool narrow(int sa, int sb, double ga, double gb, double& lo, double& hi) {
   if (sa > 0 && sb > 0) return true;
   if (sa <= 0 && sb <= 0) return false;
   const double cut = sa == 0 ? 0.0 : sb == 0 ? 1.0 : std::abs(ga) / (std::abs(ga) + std::abs(gb));
-  if (sa > 0) hi = std::min(hi, cut);
-  else lo = std::max(lo, cut);
+  if (sa > 0)
+    hi = std::min(hi, cut);
+  else
+    lo = std::max(lo, cut);
   return hi - lo > kMinSpan;
 }
 
@@ -46,14 +48,18 @@ std::vector<Occluder> face_triangles(const Mesh& m) {
     for (std::size_t k = 0; k < p.size(); ++k) order[k] = static_cast<int>(k);
     if (n(drop) < 0) std::reverse(order.begin(), order.end());
     std::vector<Eigen::Vector2d> flat;
-    for (int k : order) flat.emplace_back(p[static_cast<std::size_t>(k)](ax), p[static_cast<std::size_t>(k)](ay));
-    const auto orient = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    for (int k : order)
+      flat.emplace_back(p[static_cast<std::size_t>(k)](ax), p[static_cast<std::size_t>(k)](ay));
+    const auto orient = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                           const Eigen::Vector2d& c) {
       const double d = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
       return d > 0 ? 1 : d < 0 ? -1 : 0;
     };
     for (const std::array<int, 3>& t : ear_clip(flat, orient)) {
       Occluder o;
-      for (int k = 0; k < 3; ++k) o.v[static_cast<std::size_t>(k)] = p[static_cast<std::size_t>(order[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])])];
+      for (int k = 0; k < 3; ++k)
+        o.v[static_cast<std::size_t>(k)] = p[static_cast<std::size_t>(
+            order[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])])];
       o.face = static_cast<int>(f);
       out.push_back(o);
     }
@@ -70,8 +76,10 @@ std::vector<Interval> covered_by(const V3& a, const V3& b, const V3& eye, const 
   // X inside the three wedges through the eye and the triangle's edges.
   const std::array<std::array<const V3*, 2>, 3> wedges = {{{&p, &q}, {&q, &r}, {&r, &p}}};
   for (const auto& w : wedges) {
-    const int sa = sigma * orient3d_sign(eye, *w[0], *w[1], a), sb = sigma * orient3d_sign(eye, *w[0], *w[1], b);
-    if (!narrow(sa, sb, orient3d_value(eye, *w[0], *w[1], a), orient3d_value(eye, *w[0], *w[1], b), lo, hi))
+    const int sa = sigma * orient3d_sign(eye, *w[0], *w[1], a),
+              sb = sigma * orient3d_sign(eye, *w[0], *w[1], b);
+    if (!narrow(sa, sb, orient3d_value(eye, *w[0], *w[1], a), orient3d_value(eye, *w[0], *w[1], b),
+                lo, hi))
       return {};
   }
   // X strictly behind the triangle's plane, the eye in front.
@@ -86,8 +94,10 @@ std::vector<Interval> merge_intervals(std::vector<Interval> spans) {
   for (const Interval& s : spans) {
     const Interval c = {std::max(0.0, s.first), std::min(1.0, s.second)};
     if (c.second - c.first <= kMinSpan) continue;
-    if (!out.empty() && c.first <= out.back().second + kMinSpan) out.back().second = std::max(out.back().second, c.second);
-    else out.push_back(c);
+    if (!out.empty() && c.first <= out.back().second + kMinSpan)
+      out.back().second = std::max(out.back().second, c.second);
+    else
+      out.push_back(c);
   }
   return out;
 }
@@ -111,14 +121,17 @@ HiddenLines hidden_lines(const Mesh& m, const Vec3<Exact>& eye) {
     const V3 a = to_double(m.vertices[static_cast<std::size_t>(edges[k].i)]);
     const V3 b = to_double(m.vertices[static_cast<std::size_t>(edges[k].j)]);
     const auto own = [&](int f) {
-      return std::find(edges[k].forward.begin(), edges[k].forward.end(), f) != edges[k].forward.end() ||
-             std::find(edges[k].backward.begin(), edges[k].backward.end(), f) != edges[k].backward.end();
+      return std::find(edges[k].forward.begin(), edges[k].forward.end(), f) !=
+                 edges[k].forward.end() ||
+             std::find(edges[k].backward.begin(), edges[k].backward.end(), f) !=
+                 edges[k].backward.end();
     };
     std::vector<Interval> covered;
     for (const Occluder& o : occluders)
       if (!own(o.face))
         for (const Interval& s : covered_by(a, b, e, o)) covered.push_back(s);
-    // Alternate visible and covered spans from t = 0 to 1; a sliver at either end joins its neighbour.
+    // Alternate visible and covered spans from t = 0 to 1; a sliver at either end joins its
+    // neighbour.
     double t = 0;
     for (const Interval& c : merge_intervals(covered)) {
       const bool gap = c.first - t > kMinSpan;
@@ -126,8 +139,10 @@ HiddenLines hidden_lines(const Mesh& m, const Vec3<Exact>& eye) {
       lines.spans.push_back({gap ? c.first : t, c.second, false});
       t = c.second;
     }
-    if (1 - t > kMinSpan) lines.spans.push_back({t, 1, true});
-    else lines.spans.back().t1 = 1;
+    if (1 - t > kMinSpan)
+      lines.spans.push_back({t, 1, true});
+    else
+      lines.spans.back().t1 = 1;
     if (lines.spans.size() > 1) ++h.split_edges;
     h.edges.push_back(lines);
   }

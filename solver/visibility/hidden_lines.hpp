@@ -11,13 +11,12 @@
 // shorter than kMinSpan are dropped as rounding slivers.
 #pragma once
 
-#include "solver/visibility/edge_classes.hpp"
-
 #include <Eigen/Core>
-
 #include <array>
 #include <utility>
 #include <vector>
+
+#include "solver/visibility/edge_classes.hpp"
 
 namespace frustum {
 
@@ -46,7 +45,8 @@ struct EdgeSpan {
 struct EdgeLines {
   MeshEdge edge;
   EdgeClass cls = EdgeClass::Visible;
-  std::vector<EdgeSpan> spans;  // in order from vertex i (t = 0) to vertex j (t = 1), covering [0, 1]
+  std::vector<EdgeSpan>
+      spans;  // in order from vertex i (t = 0) to vertex j (t = 1), covering [0, 1]
   bool split() const { return spans.size() > 1; }
 };
 

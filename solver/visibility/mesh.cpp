@@ -1,7 +1,5 @@
 #include "solver/visibility/mesh.hpp"
 
-#include "solver/geometry/polygon_normal.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +7,8 @@
 #include <map>
 #include <set>
 #include <stdexcept>
+
+#include "solver/geometry/polygon_normal.hpp"
 
 namespace frustum {
 
@@ -38,9 +38,12 @@ std::vector<std::vector<int>> hull_faces(const std::vector<Vec3<Exact>>& exact_p
         std::vector<int> on;
         for (int k = 0; k < n; ++k) {
           const double s = normal.dot(p[k] - p[a]);
-          if (s > kEps) ++above;
-          else if (s < -kEps) ++below;
-          else on.push_back(k);
+          if (s > kEps)
+            ++above;
+          else if (s < -kEps)
+            ++below;
+          else
+            on.push_back(k);
         }
         if (above && below) continue;
         if (above) normal = -normal;  // outward: every other vertex below
@@ -87,7 +90,7 @@ Mesh make_solid(const std::string& name) {
   const Exact inv_phi = canonical(phi - 1);  // 1/φ = φ − 1 = (√5 − 1)/2
   if (name == "cube") {
     // seed 003's numbering: 0..3 the top (y = 1), 4..7 the bottom; z = 1 is the front.
-    const int xyz[8][3] = {{-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1},
+    const int xyz[8][3] = {{-1, 1, 1},  {1, 1, 1},  {1, 1, -1},  {-1, 1, -1},
                            {-1, -1, 1}, {1, -1, 1}, {1, -1, -1}, {-1, -1, -1}};
     for (const auto& v : xyz) m.vertices.emplace_back(Exact(v[0]), Exact(v[1]), Exact(v[2]));
     m.faces = {{0, 1, 2, 3}, {4, 7, 6, 5}, {1, 5, 6, 2}, {0, 3, 7, 4}, {0, 4, 5, 1}, {3, 2, 6, 7}};
@@ -158,19 +161,22 @@ MeshCheck check_mesh(const Mesh& m) {
       c.closed = false;
       c.bad_edge = e.name();
       c.problem = count == 1
-                      ? fmt::format("edge {} belongs to face {} only: the mesh is not closed", e.name(),
-                                    e.forward.empty() ? e.backward[0] : e.forward[0])
-                      : fmt::format("edge {} is shared by {} faces: the mesh is not a closed surface "
-                                    "(each edge must join exactly two faces)", e.name(), count);
+                      ? fmt::format("edge {} belongs to face {} only: the mesh is not closed",
+                                    e.name(), e.forward.empty() ? e.backward[0] : e.forward[0])
+                      : fmt::format(
+                            "edge {} is shared by {} faces: the mesh is not a closed surface "
+                            "(each edge must join exactly two faces)",
+                            e.name(), count);
       return c;
     }
     if (e.forward.size() != 1) {
       c.oriented = false;
       c.bad_edge = e.name();
       const std::vector<int>& two = e.forward.empty() ? e.backward : e.forward;
-      c.problem = fmt::format("faces {} and {} both walk edge {} in the same direction: the faces "
-                              "are not consistently oriented (counter-clockwise from outside)",
-                              two[0], two[1], e.name());
+      c.problem = fmt::format(
+          "faces {} and {} both walk edge {} in the same direction: the faces "
+          "are not consistently oriented (counter-clockwise from outside)",
+          two[0], two[1], e.name());
       return c;
     }
   }

@@ -3,11 +3,11 @@
 // closed and consistently oriented, and whether it is convex, all decided exactly.
 #pragma once
 
-#include "solver/core/matrix.hpp"
-
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "solver/core/matrix.hpp"
 
 namespace frustum {
 

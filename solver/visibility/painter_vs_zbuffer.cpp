@@ -1,9 +1,9 @@
 #include "solver/visibility/painter_vs_zbuffer.hpp"
 
-#include "solver/geometry/triangulate.hpp"
-
 #include <algorithm>
 #include <string>
+
+#include "solver/geometry/triangulate.hpp"
 
 namespace frustum {
 
@@ -23,8 +23,8 @@ struct Piece {
 
 }  // namespace
 
-PainterVsZBuffer painter_vs_zbuffer(const std::vector<Polygon3<Exact>>& polygons, const DepthViewer& viewer,
-                                    Api api, int size) {
+PainterVsZBuffer painter_vs_zbuffer(const std::vector<Polygon3<Exact>>& polygons,
+                                    const DepthViewer& viewer, Api api, int size) {
   size = std::clamp(size, kMinRaster, kMaxRaster);
   PainterVsZBuffer r;
   r.sort = depth_sort(polygons, viewer);  // also rejects a bad viewer
@@ -92,7 +92,8 @@ PainterVsZBuffer painter_vs_zbuffer(const std::vector<Polygon3<Exact>>& polygons
   DepthBuffer<double> unused(size, size, std::nullopt), z(size, size, std::nullopt);
   for (int k : r.sort.order)
     for (const Piece& p : pieces[static_cast<std::size_t>(k)])
-      draw_triangle(p.setup, p.z, std::to_string(k), unused, r.painter, [](double, double) { return true; });
+      draw_triangle(p.setup, p.z, std::to_string(k), unused, r.painter,
+                    [](double, double) { return true; });
   for (std::size_t k = 0; k < polygons.size(); ++k)
     for (const Piece& p : pieces[k]) draw_triangle(p.setup, p.z, std::to_string(k), z, r.zbuffer);
   for (int j = 0; j < size; ++j)

@@ -11,26 +11,28 @@
 // linear interpolation is exact, and smaller is nearer.
 #pragma once
 
-#include "solver/raster/zbuffer.hpp"
-#include "solver/visibility/draw_view.hpp"
-
 #include <utility>
 #include <vector>
+
+#include "solver/raster/zbuffer.hpp"
+#include "solver/visibility/draw_view.hpp"
 
 namespace frustum {
 
 inline constexpr int kPainterRasterDefault = 48;
 
 struct PainterVsZBuffer {
-  DepthSortResult sort;                        // centroids, order, conflicts
+  DepthSortResult sort;  // centroids, order, conflicts
   DrawView view;
-  std::vector<std::vector<Eigen::Vector2d>> window;  // each polygon's vertices in window coordinates
+  std::vector<std::vector<Eigen::Vector2d>>
+      window;                                  // each polygon's vertices in window coordinates
   FrameBuffer painter, zbuffer;                // labels "0", "1", …; "." background
   std::vector<std::pair<int, int>> differing;  // pixels (i, j) whose labels differ
 };
 
 // Throws DomainError as depth_sort does; size is clamped to [4, 512].
-PainterVsZBuffer painter_vs_zbuffer(const std::vector<Polygon3<Exact>>& polygons, const DepthViewer& viewer,
-                                    Api api, int size = kPainterRasterDefault);
+PainterVsZBuffer painter_vs_zbuffer(const std::vector<Polygon3<Exact>>& polygons,
+                                    const DepthViewer& viewer, Api api,
+                                    int size = kPainterRasterDefault);
 
 }  // namespace frustum

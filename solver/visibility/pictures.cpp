@@ -1,14 +1,14 @@
 #include "solver/visibility/pictures.hpp"
 
-#include "solver/derivation/svg.hpp"
-#include "solver/util/diagnostic.hpp"
-#include "solver/visibility/hidden_lines.hpp"
-#include "solver/visibility/painter_vs_zbuffer.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
+
+#include "solver/derivation/svg.hpp"
+#include "solver/util/diagnostic.hpp"
+#include "solver/visibility/hidden_lines.hpp"
+#include "solver/visibility/painter_vs_zbuffer.hpp"
 
 namespace frustum {
 
@@ -60,8 +60,10 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
   for (std::size_t k = 0; k < m.vertices.size(); ++k) {
     world.push_back(to_double(m.vertices[k]));
     if (view.depth(world.back()) <= 0)
-      throw DomainError("eye", fmt::format("vertex {} is not in front of the eye (looking toward the "
-                                           "centroid): the picture needs the eye outside the solid", k));
+      throw DomainError("eye",
+                        fmt::format("vertex {} is not in front of the eye (looking toward the "
+                                    "centroid): the picture needs the eye outside the solid",
+                                    k));
     screen.push_back(view.project(world.back()));
   }
   const HiddenLines h = hidden_lines(m, eye);
@@ -69,12 +71,13 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
 
   int counts[3] = {0, 0, 0};
   for (const EdgeLines& e : h.edges) ++counts[static_cast<int>(e.cls)];
-  const std::string summary = fmt::format("{} edges: {} visible, {} silhouette, {} hidden; {} split",
-                                          h.edges.size(), counts[0], counts[1], counts[2], h.split_edges);
+  const std::string summary =
+      fmt::format("{} edges: {} visible, {} silhouette, {} hidden; {} split", h.edges.size(),
+                  counts[0], counts[1], counts[2], h.split_edges);
 
-  const std::vector<std::string> lines = {o.title, view.description,
-                                          "solid: visible · bold: silhouette · dashed: hidden or covered",
-                                          summary + " where other faces cover them"};
+  const std::vector<std::string> lines = {
+      o.title, view.description, "solid: visible · bold: silhouette · dashed: hidden or covered",
+      summary + " where other faces cover them"};
   Svg svg(kCanvas, kCanvas + kCaptionLine * (static_cast<double>(lines.size()) + 1));
   svg.title(o.title.empty() ? "hidden lines" : o.title);
   svg.style(kLineCss);
@@ -82,10 +85,13 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
   for (bool visible : {false, true}) {
     svg.begin_group(visible ? "drawn" : "covered");
     for (const EdgeLines& e : h.edges) {
-      const Eigen::Vector3d a = world[static_cast<std::size_t>(e.edge.i)], b = world[static_cast<std::size_t>(e.edge.j)];
+      const Eigen::Vector3d a = world[static_cast<std::size_t>(e.edge.i)],
+                            b = world[static_cast<std::size_t>(e.edge.j)];
       for (const EdgeSpan& s : e.spans) {
         if (s.visible != visible) continue;
-        const char* cls = !s.visible ? "hidden" : e.cls == EdgeClass::Silhouette ? "silhouette" : "visible";
+        const char* cls = !s.visible                       ? "hidden"
+                          : e.cls == EdgeClass::Silhouette ? "silhouette"
+                                                           : "visible";
         // The span's end points in 3D, then projected (perspective keeps lines straight).
         svg.line(fit(view.project(a + s.t0 * (b - a))), fit(view.project(a + s.t1 * (b - a))), cls,
                  fmt::format("data-edge=\"{}\"", e.edge.name()));
@@ -100,7 +106,8 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
       for (int k : m.faces[f]) on_front[static_cast<std::size_t>(k)] = true;
   svg.begin_group("vertices");
   for (std::size_t k = 0; k < screen.size(); ++k)
-    svg.text(fit(screen[k]) + Eigen::Vector2d(4, -4), std::to_string(k), on_front[k] ? "vertex" : "vertex-back");
+    svg.text(fit(screen[k]) + Eigen::Vector2d(4, -4), std::to_string(k),
+             on_front[k] ? "vertex" : "vertex-back");
   svg.end_group();
   caption(svg, kCanvas + kCaptionLine / 2, lines);
   return {svg.str(), summary};
@@ -133,15 +140,19 @@ Picture painter_picture(const Drawable& d, const PictureOptions& o) {
   std::string conflicts;
   for (const std::string& c : r.sort.conflicts) conflicts += (conflicts.empty() ? "" : ", ") + c;
   const std::string summary =
-      fmt::format("painter (order {}) vs z-buffer at {}×{}: {} pixel{} differ; conflicts: {}", order, n, n,
-                  r.differing.size(), r.differing.size() == 1 ? "" : "s", conflicts.empty() ? "none" : conflicts);
+      fmt::format("painter (order {}) vs z-buffer at {}×{}: {} pixel{} differ; conflicts: {}",
+                  order, n, n, r.differing.size(), r.differing.size() == 1 ? "" : "s",
+                  conflicts.empty() ? "none" : conflicts);
   const std::vector<std::string> lines = {
       o.title, r.view.description,
-      fmt::format("painter: whole polygons back to front by centroid ({}); z-buffer: nearest per pixel", order),
-      fmt::format("{} of {} pixels differ (marked in red); conflicts: {}", r.differing.size(), n * n,
-                  conflicts.empty() ? "none" : conflicts)};
+      fmt::format(
+          "painter: whole polygons back to front by centroid ({}); z-buffer: nearest per pixel",
+          order),
+      fmt::format("{} of {} pixels differ (marked in red); conflicts: {}", r.differing.size(),
+                  n * n, conflicts.empty() ? "none" : conflicts)};
   const double top = 2 * kCaptionLine;
-  const double width = 2 * kPanel + 3 * kGap, height = top + kPanel + kCaptionLine * (static_cast<double>(lines.size()) + 1.5);
+  const double width = 2 * kPanel + 3 * kGap,
+               height = top + kPanel + kCaptionLine * (static_cast<double>(lines.size()) + 1.5);
   Svg svg(width, height);
   svg.title(o.title.empty() ? "painter vs z-buffer" : o.title);
   svg.style(kRasterCss);
@@ -165,8 +176,8 @@ Picture painter_picture(const Drawable& d, const PictureOptions& o) {
     }
     // A small square inside each differing pixel, so its colour stays visible.
     for (const auto& [i, j] : r.differing)
-      svg.rect(x0[p] + (i + kDiffInset) * cell, top + (n - 1 - j + kDiffInset) * cell, (1 - 2 * kDiffInset) * cell,
-               (1 - 2 * kDiffInset) * cell, "diff");
+      svg.rect(x0[p] + (i + kDiffInset) * cell, top + (n - 1 - j + kDiffInset) * cell,
+               (1 - 2 * kDiffInset) * cell, (1 - 2 * kDiffInset) * cell, "diff");
     svg.end_group();
   }
   caption(svg, top + kPanel + 1.5 * kCaptionLine, lines);

@@ -5,17 +5,17 @@
 // - the painter's result next to the z-buffer's, pixels where they differ outlined in red.
 #pragma once
 
-#include "solver/visibility/drawable.hpp"
-#include "solver/viewing/conventions.hpp"
-
 #include <string>
+
+#include "solver/viewing/conventions.hpp"
+#include "solver/visibility/drawable.hpp"
 
 namespace frustum {
 
 struct PictureOptions {
   Api api = Api::OpenGL;
-  std::string title;    // first caption line (e.g. the problem's id)
-  int raster = 48;      // painter vs z-buffer: window size in pixels
+  std::string title;  // first caption line (e.g. the problem's id)
+  int raster = 48;    // painter vs z-buffer: window size in pixels
 };
 
 struct Picture {
