@@ -20,8 +20,10 @@ run() {
   (cd "$out" && { "$bin" "$@" 2>"$name.err"; echo "exit $?"; } >"$name.out")
 }
 
+# The sets are copied in and named by relative paths, so messages that name them agree too.
+cp -r problems "$out/problems"
 run kinds kinds
-for set in "$PWD"/problems/{seeds,examples,hard}/*.yaml; do
+for set in problems/{seeds,examples,hard}/*.yaml; do
   base=$(basename "$(dirname "$set")")_$(basename "$set" .yaml)
   run "$base.check" check "$set"
   for format in text markdown json html latex; do

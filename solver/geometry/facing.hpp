@@ -6,6 +6,7 @@
 
 #include <limits>
 
+#include "solver/core/matrix.hpp"
 #include "solver/core/scalar.hpp"
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"

@@ -9,6 +9,7 @@
 
 #include <array>
 
+#include "solver/core/matrix.hpp"
 #include "solver/core/scalar.hpp"
 #include "solver/geometry/predicates.hpp"
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/core/matrix.hpp"
 #include "solver/core/scalar.hpp"
 #include "solver/numeric/ranged.hpp"
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/core/matrix.hpp"
 #include "solver/core/scalar.hpp"
 
 namespace frustum {
