@@ -1,18 +1,66 @@
 // seed 003: back-face test. D_f = (p_eye − p_i)·n; D_f > 0 front, D_f < 0 back, 0 edge-on.
 // p0 = (1,0,0), p1 = (1,1,1), p2 = (0,1,2), eye = (0,1,0) → n = (1, −1, 1), v = (−1, 1, 0),
 // D_f = −2: back. The sign is decided exactly, never against a float epsilon.
+#include "solver/geometry/facing.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
 namespace {
+
+std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points,
+                                                const Vec3<Exact>& eye, Precision p) {
+  const double kappa = facing_condition(double_points(points), to_double(eye), p);
+  return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+    struct In {
+      Polygon3<T> points;
+      Vec3<T> eye;
+      T fast_bound{};  // the filter's bound, computed once with the inputs (beside them: one cache
+                       // line)
+      Polygon3<Exact> exact_points;  // for the exact fallback of the facing
+      Vec3<Exact> exact_eye;
+      InputRange range;
+    };
+    auto core = [](const In& in) {
+      if constexpr (kIsExact<T>)
+        return facing(in.points, in.eye, in.exact_points, in.exact_eye, true, T(0));
+      else {
+        const Facing<T> f = facing(in.points, in.eye, in.exact_points, in.exact_eye,
+                                   in.range.relative(), in.fast_bound);
+        // D_f exactly 0 may mean a degenerate polygon, which is refused as the exact solve
+        // refuses it (the same words); checked only after an exact decision.
+        if (f.used_exact && f.sign == 0)
+          polygon_normal_with_steps(in.exact_points, "points", nullptr);
+        return f;
+      }
+    };
+    auto report = [p, kappa](const In& in, const Facing<T>& f) {
+      NumericOut<T> out(p);
+      out.inputs(in.range);
+      out.vector("normal", f.normal);
+      out.vector("view", f.view);
+      out.scalar("df", f.df);
+      out.word("facing", facing_word(f.sign));
+      warn_condition(out, p, kappa, "Eye nearly in the polygon's plane", "D_f");
+      out.note(
+          "facing: the sign of D_f, proven by its rounding-error bound or else computed exactly");
+      if (f.used_exact) out.exact_decision("facing");
+      return out.take();
+    };
+    In in{{}, {}, {}, points, eye, {}};
+    in.points = conv<T>(points, &in.range);
+    in.eye = conv<T>(eye, &in.range);
+    if constexpr (!kIsExact<T>) in.fast_bound = facing_error_bound_fast(in.points, in.eye);
+    return prepare(std::move(in), core, report);
+  });
+}
 
 struct Backface {
   static constexpr const char* kName = "backface";

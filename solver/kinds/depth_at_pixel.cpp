@@ -4,19 +4,106 @@
 // and the pixel (1, 1) has z = 8.
 #include <algorithm>
 
+#include "solver/geometry/plane_depth.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
 namespace {
+
+std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exact>, 3>& triangle,
+                                                      const Vec2<Exact>& pixel,
+                                                      const CrossOrder& order, Precision p) {
+  const DepthCondition cond = depth_condition(to_double(triangle[0]), to_double(triangle[1]),
+                                              to_double(triangle[2]), to_double(pixel));
+  // Fall back to the barycentric form when the plane method would keep fewer than half of the
+  // backend's digits (the exact backend never needs to).
+  const bool fallback =
+      p != Precision::Exact && trusted_digits(cond.kappa_z, p) < decimal_digits(p) / 2;
+  return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+    struct In {
+      std::array<Vec3<T>, 3> t;
+      Vec2<T> pixel;
+      std::array<int, 4> order;
+      bool barycentric;
+      std::array<Vec3<Exact>, 3> exact_t;  // for the exact fallback of `inside` and of c = 0
+      Vec2<Exact> exact_pixel;
+      InputRange range;
+      CrossOrder cross;
+    };
+    struct Out {
+      PlaneDepth<T> depth;
+      bool inside = false;
+      bool inside_exact = false;  // the exact fallback decided some edge sign
+    };
+    auto core = [](const In& in) {
+      Out o;
+      // Edge-on (c = 0) is a discrete answer too: c = ±E(A, B, C) over x and y, decided like the
+      // edge signs; such a triangle is refused, as the exact solve refuses it (the same words).
+      const SignDecision c = edge_sign(
+          in.t[0], in.t[1], Vec2<T>(in.t[2].x(), in.t[2].y()), in.exact_t[0], in.exact_t[1],
+          Vec2<Exact>(in.exact_t[2].x(), in.exact_t[2].y()), in.range.relative());
+      if (c.sign == 0) {
+        cross_normal_with_steps(in.exact_t, in.cross, "triangle",
+                                nullptr);  // refuses a collinear one
+        refuse_edge_on_triangle("triangle");
+      }
+      const Vec3<T> first = in.t[in.order[1]] - in.t[in.order[0]];
+      const Vec3<T> second = in.t[in.order[3]] - in.t[in.order[2]];
+      o.depth = plane_depth(in.t, first, second, in.pixel, in.barycentric);
+      // Inside the closed triangle: the three edge signs agree (0 = on an edge), each decided
+      // by the filtered predicate.
+      int s[3];
+      for (int k = 0; k < 3; ++k) {
+        const int j = (k + 1) % 3;
+        const SignDecision d = edge_sign(in.t[k], in.t[j], in.pixel, in.exact_t[k], in.exact_t[j],
+                                         in.exact_pixel, in.range.relative());
+        s[k] = d.sign;
+        o.inside_exact = o.inside_exact || d.exact;
+      }
+      o.inside = inside_closed_triangle(s[0], s[1], s[2]);
+      return o;
+    };
+    auto report = [p, cond](const In& in, const Out& o) {
+      const PlaneDepth<T>& r = o.depth;
+      NumericOut<T> out(p);
+      out.inputs(in.range);
+      out.vector("normal", r.normal);
+      out.vector("unit_normal", r.unit_normal);
+      out.vector("plane",
+                 std::vector<T>{r.unit_normal(0), r.unit_normal(1), r.unit_normal(2), r.d});
+      out.scalar("z", r.z);
+      out.boolean("inside", o.inside);
+      out.note(r.barycentric ? "z by barycentric interpolation (stable fallback)"
+                             : "z = (d − a·xₛ − b·yₛ)/c (the plane method)");
+      if (o.inside_exact) out.exact_decision("inside");
+      if (r.barycentric)
+        out.warn(
+            "Nearly edge-on triangle: barycentric fallback",
+            fmt::format("c ≈ 0 (κ_c ≈ {:.1e}); the plane method would keep {:.1f} digits of z, "
+                        "so z = Σ λᵢ zᵢ with λᵢ from the edge functions at the pixel is used: for "
+                        "a pixel inside the triangle it stays within the vertices' depths.",
+                        cond.kappa_c, trusted_digits(cond.kappa_z, p)));
+      else
+        warn_condition(out, p, cond.kappa_z, "Nearly edge-on triangle", "z at this pixel");
+      return out.take();
+    };
+    const std::array<int, 4> o{order.first[0] - 'A', order.first[1] - 'A', order.second[0] - 'A',
+                               order.second[1] - 'A'};
+    In in{{}, {}, o, fallback, triangle, pixel, {}, order};
+    for (int k = 0; k < 3; ++k) in.t[k] = conv<T>(triangle[k], &in.range);
+    in.pixel = conv<T>(pixel, &in.range);
+    return prepare(std::move(in), core, report);
+  });
+}
 
 struct DepthAtPixel {
   static constexpr const char* kName = "depth_at_pixel";

@@ -4,12 +4,66 @@
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
 namespace {
+
+std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
+                                              const std::optional<CrossOrder>& order, Precision p) {
+  const double kappa = normal_condition(double_points(points));
+  return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+    struct In {
+      Polygon3<T> points;
+      std::optional<std::array<int, 4>> order;  // first = X₀→Y₀, second = X₁→Y₁ (vertex indices)
+      InputRange range;
+      Polygon3<Exact> exact_points;  // for the exact zero test and the refusal
+      std::optional<CrossOrder> cross;
+    };
+    auto core = [](const In& in) {
+      NormalPair<T> r;
+      if (!in.order) {
+        r = polygon_normal(in.points, in.exact_points, in.range.relative());
+        // A degenerate polygon is refused, as the exact solve refuses it (the same words).
+        if (r.zero) polygon_normal_with_steps(in.exact_points, "points", nullptr);
+        return r;
+      }
+      const auto& o = *in.order;
+      r.n = Vec3<T>(in.points[o[1]] - in.points[o[0]])
+                .cross(Vec3<T>(in.points[o[3]] - in.points[o[2]]));
+      Vec3<T> bound = Vec3<T>::Zero();
+      if constexpr (!kIsExact<T>) {
+        auto magnitude = [&](int i, int j) {
+          return Vec3<T>(in.points[i].cwiseAbs() + in.points[j].cwiseAbs());
+        };
+        bound = cross_error_bound(magnitude(o[1], o[0]), magnitude(o[3], o[2]), 2);
+      }
+      const std::array<Vec3<Exact>, 3> abc{in.exact_points[0], in.exact_points[1],
+                                           in.exact_points[2]};
+      decide_normal_zero(r, r.n, bound, in.range.relative(), 0, [&] {
+        return Vec3<Exact>(
+            Vec3<Exact>(abc[o[1]] - abc[o[0]]).cross(Vec3<Exact>(abc[o[3]] - abc[o[2]])));
+      });
+      if (r.zero) cross_normal_with_steps(abc, *in.cross, "A", nullptr);
+      return r;
+    };
+    auto report = [p, kappa](const In& in, const NormalPair<T>& n) {
+      NumericOut<T> out(p);
+      out.inputs(in.range);
+      report_normal(out, n);
+      warn_condition(out, p, kappa, "Ill-conditioned normal", "the normal's direction");
+      return out.take();
+    };
+    In in{{}, std::nullopt, {}, points, order};
+    in.points = conv<T>(points, &in.range);
+    if (order)
+      in.order = std::array<int, 4>{order->first[0] - 'A', order->first[1] - 'A',
+                                    order->second[0] - 'A', order->second[1] - 'A'};
+    return prepare(std::move(in), core, report);
+  });
+}
 
 struct Normal {
   static constexpr const char* kName = "normal";

@@ -4,12 +4,66 @@
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
 namespace {
+
+std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points,
+                                             const Vec3<Exact>& point, const Vec3<Exact>& normal,
+                                             Precision p) {
+  const double kappa = points.empty() ? 1.0 : normal_condition(double_points(points));
+  return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+    struct In {
+      Polygon3<T> points;
+      Vec3<T> point, normal;
+      InputRange range;
+      Polygon3<Exact> exact_points;  // for the exact zero test and the refusal
+    };
+    struct Out {
+      NormalPair<T> n;
+      T d{}, distance{};
+    };
+    auto core = [](const In& in) {
+      Out o;
+      if (in.points.empty()) {
+        o.n.n = in.normal;
+        o.n.unit = in.normal / stable_norm(in.normal);
+        o.d = in.normal.dot(in.point);
+        o.distance = scalar_abs(T(o.n.unit.dot(in.point)));
+        return o;
+      }
+      o.n = polygon_normal(in.points, in.exact_points, in.range.relative());
+      // A degenerate polygon is refused, as the exact solve refuses it (the same words).
+      if (o.n.zero) polygon_normal_with_steps(in.exact_points, "points", nullptr);
+      o.d = o.n.n.dot(in.points[0]);
+      // dist = |n̂·p₀|, the same as |d|/‖n‖ without squaring ‖n‖.
+      if (!o.n.zero) o.distance = scalar_abs(T(o.n.unit.dot(in.points[0])));
+      return o;
+    };
+    auto report = [p, kappa](const In& in, const Out& o) {
+      NumericOut<T> out(p);
+      out.inputs(in.range);
+      report_normal(out, o.n);
+      out.vector("plane", std::vector<T>{o.n.n(0), o.n.n(1), o.n.n(2), o.d});
+      if (o.n.zero)
+        out.null("distance");
+      else
+        out.scalar("distance", o.distance);
+      warn_condition(out, p, kappa, "Ill-conditioned plane", "the plane's normal");
+      out.note("plane = (n, n·p₀), not rescaled; distance = |n̂·p₀|");
+      return out.take();
+    };
+    In in;
+    in.exact_points = points;
+    in.points = conv<T>(points, &in.range);
+    in.point = conv<T>(point, &in.range);
+    in.normal = conv<T>(normal, &in.range);
+    return prepare(std::move(in), core, report);
+  });
+}
 
 struct Plane {
   static constexpr const char* kName = "plane";

@@ -9,10 +9,11 @@
 
 #include "solver/input/given_reader.hpp"
 #include "solver/numeric/condition.hpp"
+#include "solver/numeric/ranged.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/steps/transform_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -21,6 +22,177 @@
 namespace frustum {
 
 namespace {
+
+// The inputs of project_point in scalar S (T, Ranged<T> for the decisions, Exact for their
+// fallback), and clip = P·V·M·p from them: one formula for all three.
+template <typename S>
+struct ProjectionInputs {
+  Vec3<S> point;
+  std::optional<MatX<S>> model;
+  std::optional<std::array<Vec3<S>, 3>> camera;
+  ProjectionSpec::Type type = ProjectionSpec::Type::Perspective;
+  Volume<S> volume;
+  std::optional<S> fovy, aspect;
+  Api api = Api::OpenGL;
+  bool left_handed = false;  // ProjectionSpec::left_handed: LookAtLH's basis, third column negated
+};
+
+// The exact inputs converted one by one by f (to T, to Ranged<T>).
+template <typename F>
+auto map_inputs(const ProjectionInputs<Exact>& in, F f) {
+  using R = decltype(f(std::declval<Exact>()));
+  auto vec = [&](const Vec3<Exact>& v) { return Vec3<R>(f(v(0)), f(v(1)), f(v(2))); };
+  ProjectionInputs<R> out;
+  out.point = vec(in.point);
+  if (in.model) out.model = in.model->unaryExpr([&](const Exact& e) { return f(e); }).eval();
+  if (in.camera)
+    out.camera =
+        std::array<Vec3<R>, 3>{vec((*in.camera)[0]), vec((*in.camera)[1]), vec((*in.camera)[2])};
+  out.type = in.type;
+  const Volume<Exact>& v = in.volume;
+  out.volume = {f(v.left), f(v.right), f(v.bottom), f(v.top), f(v.near), f(v.far)};
+  if (in.fovy) out.fovy = f(*in.fovy);
+  if (in.aspect) out.aspect = f(*in.aspect);
+  out.api = in.api;
+  out.left_handed = in.left_handed;
+  return out;
+}
+
+template <typename S>
+MatX<S> clip_from_world(const ProjectionInputs<S>& in) {
+  MatX<S> m;
+  if (in.type == ProjectionSpec::Type::Ortho) {
+    m = ortho_matrix(in.volume, in.api);
+  } else {
+    const Volume<S> v =
+        in.fovy ? perspective_volume(*in.fovy, *in.aspect, in.volume.near, in.volume.far)
+                : in.volume;
+    m = frustum_matrix(v, in.api);
+  }
+  if (in.left_handed)
+    for (int i = 0; i < 4; ++i) m(i, 2) = -m(i, 2);
+  const Api basis = in.left_handed ? Api::DirectX : in.api;
+  if (in.camera) m = MatX<S>(m * look_at((*in.camera)[0], (*in.camera)[1], (*in.camera)[2], basis));
+  if (in.model) m = MatX<S>(m * *in.model);
+  return m;
+}
+
+template <typename S>
+Vec4<S> clip_of(const MatX<S>& m, const Vec3<S>& point) {
+  return Vec4<S>(m * Vec4<S>(point(0), point(1), point(2), S(1)));
+}
+
+// The seven signs that decide where a clip point lies: w, then wᵢ ± xᵢ for the six planes
+// −w ≤ x, y ≤ w, −w ≤ z ≤ w (DirectX: 0 ≤ z ≤ w, so z itself).
+template <typename S>
+std::array<S, 7> volume_tests(const Vec4<S>& c, Api api) {
+  const S& w = c(3);
+  return {w,           S(c(0) + w), S(w - c(0)),
+          S(c(1) + w), S(w - c(1)), api == Api::DirectX ? c(2) : S(c(2) + w),
+          S(w - c(2))};
+}
+
+std::unique_ptr<NumericSolver> project_point_numeric(
+    const Vec3<Exact>& point, const std::optional<MatX<Exact>>& model,
+    const std::optional<std::array<Vec3<Exact>, 3>>& camera, const ProjectionSpec& projection,
+    const Exact& width, const Exact& height, Api api, Precision p) {
+  ProjectionInputs<Exact> exact;
+  exact.point = point;
+  exact.model = model;
+  exact.camera = camera;
+  exact.type = projection.type;
+  exact.volume = projection.volume;
+  if (projection.fovy && projection.aspect &&
+      !projection.fovx) {  // fovx: the volume already holds it
+    exact.fovy = *projection.fovy;
+    exact.aspect = *projection.aspect;
+  }
+  exact.api = api;
+  exact.left_handed = projection.left_handed;
+  return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+    struct In {
+      ProjectionInputs<T> given;
+      // The same inputs with their rounding error (unused by the exact backend).
+      ProjectionInputs<std::conditional_t<kIsExact<T>, T, Ranged<T>>> ranged;
+      ProjectionInputs<Exact> exact;  // for the exact fallback of the decisions
+      T width, height;
+      InputRange range;
+    };
+    struct Out {
+      Vec4<T> clip;
+      Vec3<T> ndc, window;
+      Vec4<T> row3, homogeneous;  // M's last row and the point, for the condition of w
+      int w_sign = 0;
+      bool inside = false;
+      bool exact_decided = false;
+    };
+    auto core = [](const In& in) {
+      Out o;
+      const MatX<T> m = clip_from_world(in.given);
+      o.homogeneous = Vec4<T>(in.given.point(0), in.given.point(1), in.given.point(2), T(1));
+      o.clip = clip_of(m, in.given.point);
+      o.row3 = m.row(3).transpose();
+      // The decisions: each sign proven on the ranged clip point, or computed exactly.
+      std::array<int, 7> sign{};
+      if constexpr (kIsExact<T>) {
+        const std::array<T, 7> t = volume_tests(o.clip, in.given.api);
+        for (int k = 0; k < 7; ++k) sign[k] = exact_sign(t[k]);
+      } else {
+        const std::array<Ranged<T>, 7> t =
+            volume_tests(clip_of(clip_from_world(in.ranged), in.ranged.point), in.given.api);
+        std::optional<std::array<Exact, 7>> exact;
+        for (int k = 0; k < 7; ++k) {
+          const SignDecision d = decide_sign(t[k], [&] {
+            if (!exact)
+              exact =
+                  volume_tests(clip_of(clip_from_world(in.exact), in.exact.point), in.given.api);
+            return exact_sign((*exact)[k]);
+          });
+          sign[k] = d.sign;
+          o.exact_decided = o.exact_decided || d.exact;
+        }
+      }
+      o.w_sign = sign[0];
+      o.inside = o.w_sign > 0;
+      for (int k = 1; k < 7; ++k) o.inside = o.inside && sign[k] >= 0;
+      if (o.w_sign > 0) {
+        o.ndc = o.clip.template head<3>() / o.clip(3);
+        o.window = viewport(o.ndc, in.width, in.height, in.given.api);
+      }
+      return o;
+    };
+    auto report = [p](const In& in, const Out& o) {
+      NumericOut<T> out(p);
+      out.inputs(in.range);
+      out.vector("clip", o.clip);
+      if (o.w_sign > 0) {
+        out.vector("ndc", o.ndc);
+        out.vector("window", o.window);
+      } else {
+        out.null("ndc");
+        out.null("window");
+        out.warn(o.w_sign == 0 ? "The point is in the eye's plane" : "The point is behind the eye",
+                 "w_c ≤ 0: no NDC or window position.");
+      }
+      out.boolean("inside", o.inside);
+      if (o.exact_decided) out.exact_decision("w_c > 0 and inside");
+      Eigen::Vector4d row, h;
+      for (int i = 0; i < 4; ++i) {
+        row(i) = static_cast<double>(to_long_double(o.row3(i)));
+        h(i) = static_cast<double>(to_long_double(o.homogeneous(i)));
+      }
+      warn_condition(out, p, w_condition(row, h), "Point close to the eye's plane",
+                     "w_c (and the NDC divided by it)");
+      return out.take();
+    };
+    In in{{}, {}, exact, from_exact<T>(width), from_exact<T>(height), {}};
+    in.given = map_inputs(exact, [&](const Exact& e) { return conv<T>(e, &in.range); });
+    if constexpr (!kIsExact<T>)
+      in.ranged =
+          map_inputs(exact, [](const Exact& e) { return Ranged<T>::input(from_exact<T>(e)); });
+    return prepare(std::move(in), core, report);
+  });
+}
 
 struct ProjectPoint {
   static constexpr const char* kName = "project_point";

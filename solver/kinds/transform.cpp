@@ -6,7 +6,7 @@
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/steps/transform_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -14,6 +14,71 @@
 namespace frustum {
 
 namespace {
+
+std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX<Exact>>& steps,
+                                                 const std::vector<MatX<Exact>>& inverses,
+                                                 bool invertible,
+                                                 const std::vector<std::vector<Exact>>& points,
+                                                 Api api, Precision p) {
+  return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+    struct In {
+      int size;
+      bool invertible;
+      std::vector<MatX<T>> steps, inverses;
+      std::vector<std::vector<T>> points;
+    };
+    struct Out {
+      MatX<T> m, inverse;
+      std::vector<std::vector<T>> moved;
+    };
+    auto core = [](const In& in) {
+      Out o;
+      o.m = MatX<T>::Identity(in.size, in.size);
+      for (const MatX<T>& s : in.steps) o.m = MatX<T>(s * o.m);
+      for (const std::vector<T>& q : in.points) o.moved.push_back(transform_point(o.m, q));
+      if (in.invertible) {
+        if constexpr (kIsExact<T>) {
+          // M⁻¹ = A₁⁻¹·…·Aₙ⁻¹, each step undone on its own.
+          o.inverse = MatX<T>::Identity(in.size, in.size);
+          for (const MatX<T>& s : in.inverses) o.inverse = MatX<T>(o.inverse * s);
+        } else {
+          o.inverse = o.m.partialPivLu().inverse();
+        }
+      }
+      return o;
+    };
+    auto report = [p, api](const In&, const Out& o) {
+      NumericOut<T> out(p);
+      out.matrix("matrix", paper_form(o.m, api));
+      if (o.moved.empty())
+        out.null("points");
+      else
+        out.rows("points", o.moved);
+      if (o.inverse.size() == 0) {
+        out.null("inverse");
+      } else {
+        out.matrix("inverse", paper_form(o.inverse, api));
+        if constexpr (!kIsExact<T>) {
+          const double kappa = static_cast<double>(o.m.cwiseAbs().rowwise().sum().maxCoeff() *
+                                                   o.inverse.cwiseAbs().rowwise().sum().maxCoeff());
+          warn_condition(out, p, kappa, "Ill-conditioned matrix",
+                         "the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)");
+        }
+        out.note(kIsExact<T> ? "inverse = A₁⁻¹·…·Aₙ⁻¹" : "inverse by LU with partial pivoting");
+      }
+      return out.take();
+    };
+    In in{dim + 1, invertible, {}, {}, {}};
+    for (const MatX<Exact>& s : steps) in.steps.push_back(conv<T>(s));
+    for (const MatX<Exact>& s : inverses) in.inverses.push_back(conv<T>(s));
+    for (const std::vector<Exact>& q : points) {
+      std::vector<T> v;
+      for (const Exact& x : q) v.push_back(from_exact<T>(x));
+      in.points.push_back(v);
+    }
+    return prepare(std::move(in), core, report);
+  });
+}
 
 struct Transform {
   static constexpr const char* kName = "transform";

@@ -4,12 +4,84 @@
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
 namespace {
+
+std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<Exact>& b,
+                                               AngleUnit unit, Precision p) {
+  return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+    struct In {
+      Vec3<T> a, b;
+      bool degrees;
+      InputRange range;
+      Vec3<Exact> exact_a, exact_b;  // for the exact parallel test
+    };
+    struct Out {
+      T dot{}, area{}, sin{}, cos{}, angle{};
+      Vec3<T> cross;
+      NormalPair<T> unit;  // unit.zero: a and b are parallel (a × b = 0)
+      bool underflow = false;
+    };
+    auto core = [](const In& in) {
+      Out o;
+      // Floating point: a and b scaled by powers of two first (exact), so that huge, tiny and
+      // subnormal components keep their digits; sin, cos, the angle and the unit normal do not
+      // depend on the scale, the products are scaled back (and may then overflow or underflow,
+      // as their true values would).
+      Vec3<T> a = in.a, b = in.b;
+      int ka = 0, kb = 0;
+      if constexpr (!kIsExact<T>) {
+        ka = power_of_two_scale(a);
+        kb = power_of_two_scale(b);
+      }
+      const T dot = a.dot(b);
+      Vec3<T> cross = a.cross(b);
+      // Parallel or not is a discrete answer (the unit normal exists or not): a × b's bound
+      // (each scaled component one rounding from its exact value) or else exactly.
+      Vec3<T> bound = Vec3<T>::Zero();
+      if constexpr (!kIsExact<T>)
+        bound = cross_error_bound(Vec3<T>(a.cwiseAbs()), Vec3<T>(b.cwiseAbs()), 1);
+      decide_normal_zero(o.unit, cross, bound, in.range.relative(), ka + kb,
+                         [&] { return Vec3<Exact>(in.exact_a.cross(in.exact_b)); });
+      const T area = stable_norm(cross), la = stable_norm(a), lb = stable_norm(b);
+      o.dot = scaled_by(dot, ka + kb, o.underflow);
+      for (int i = 0; i < 3; ++i) o.cross(i) = scaled_by(cross(i), ka + kb, o.underflow);
+      o.area = scaled_by(area, ka + kb, o.underflow);
+      o.sin = area / la / lb;
+      o.cos = dot / la / lb;
+      // θ = atan2(‖a × b‖, a·b): accurate at every angle, unlike arccos(cos θ) near 0 and π.
+      o.angle = scalar_angle(area, dot);
+      if (in.degrees) o.angle = o.angle * T(180) / scalar_pi(o.angle);
+      return o;
+    };
+    auto report = [p](const In& in, const Out& o) {
+      NumericOut<T> out(p);
+      out.inputs(in.range);
+      if (o.underflow) out.underflow();
+      out.scalar("dot", o.dot);
+      out.vector("cross", o.cross);
+      out.scalar("area", o.area);
+      out.scalar("sin", o.sin);
+      out.scalar("cos", o.cos);
+      out.scalar("angle", o.angle);
+      if (o.unit.exact_zero_test) out.exact_decision("whether a and b are parallel");
+      if (o.unit.zero)
+        out.null("unit_normal");
+      else
+        out.vector("unit_normal", o.unit.unit);
+      out.note("angle = atan2(‖a × b‖, a·b)");
+      return out.take();
+    };
+    In in{{}, {}, unit == AngleUnit::Degrees, {}, a, b};
+    in.a = conv<T>(a, &in.range);
+    in.b = conv<T>(b, &in.range);
+    return prepare(std::move(in), core, report);
+  });
+}
 
 struct Vectors {
   static constexpr const char* kName = "vectors";

@@ -2,12 +2,31 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
-#include "solver/steps/numeric_paths.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/steps/viewing_steps.hpp"
 
 namespace frustum {
 
 namespace {
+
+std::unique_ptr<NumericSolver> viewport_numeric(const Vec3<Exact>& ndc, const Exact& width,
+                                                const Exact& height, Api api, Precision p) {
+  return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+    struct In {
+      Vec3<T> ndc;
+      T width, height;
+      Api api;
+    };
+    auto core = [](const In& in) { return viewport(in.ndc, in.width, in.height, in.api); };
+    auto report = [p](const In&, const Vec3<T>& w) {
+      NumericOut<T> out(p);
+      out.vector("window", w);
+      return out.take();
+    };
+    return prepare(In{conv<T>(ndc), from_exact<T>(width), from_exact<T>(height), api}, core,
+                   report);
+  });
+}
 
 struct Viewport {
   static constexpr const char* kName = "viewport";
