@@ -10,7 +10,9 @@
 #include "solver/accuracy/hard_cases.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/problem/rng.hpp"
 #include "solver/problem/solve_precision.hpp"
+#include "solver/problem/variants.hpp"
 #include "test_util.hpp"
 
 namespace frustum {
@@ -214,6 +216,49 @@ TEST(NumericPaths, ExactBackendMatchesTheDerivation) {
               << kind << " " << spec.id << " " << name << "[" << i << "]";
         EXPECT_EQ(n->flag, v.flag) << kind << " " << name;
         EXPECT_EQ(n->word, v.word) << kind << " " << name;
+      }
+    }
+  }
+}
+
+// One formula per concept: depth_at_pixel's exact solve and numeric path compute the plane
+// depth (plane_depth.hpp) and the edge decisions (edge_sign) by the same templates. For many
+// drawn problems (every third hard: pixels on an edge) the double path's values are within
+// 10⁻⁸ (relative) of the exact solve's, its discrete answers (inside) are equal, and it refuses
+// exactly what the exact solve refuses.
+TEST(NumericPaths, DoublePathAgreesWithTheExactSolveOfEachUnifiedKind) {
+  for (const std::string kind : {"depth_at_pixel"}) {
+    const KindInfo& info = *builtin_kinds().find(kind);
+    for (int i = 0; i < 90; ++i) {
+      const ProblemSpec base = default_problem(info, i % 4 == 1, i % 3 == 2);
+      ProblemSet set;
+      set.file = "formula.yaml";
+      set.problems.push_back(
+          draw_problem(base, set.file, fnv1a64(kind + "/formula/" + std::to_string(i))));
+      const ProblemSpec& spec = set.problems[0];
+      ASSERT_FALSE(spec.error) << kind << " #" << i << ": " << spec.error->format();
+      const ProblemResult exact = solve_problem(spec, set.file, false);
+      const ProblemResult dbl = solve_problem(spec, set.file, false, Precision::Double);
+      ASSERT_EQ(bool(exact.error), bool(dbl.error)) << kind << " #" << i;
+      if (exact.error) {
+        EXPECT_EQ(dbl.error->message, exact.error->message) << kind << " #" << i;
+        continue;
+      }
+      for (const auto& [name, v] : exact.answers.items()) {
+        const Value* n = dbl.answers.find(name);
+        ASSERT_NE(n, nullptr) << kind << " " << name;
+        EXPECT_EQ(n->flag, v.flag) << kind << " #" << i << " " << name;
+        EXPECT_EQ(n->word, v.word) << kind << " #" << i << " " << name;
+        ASSERT_EQ(n->numbers.size(), v.numbers.size()) << kind << " " << name;
+        double big = 0;
+        std::size_t lead = 0;
+        for (std::size_t k = 0; k < v.numbers.size(); ++k)
+          if (std::abs(v.numbers[k]) > big) big = std::abs(v.numbers[lead = k]);
+        // The plane is compared up to scale: the solve writes it with integer coefficients.
+        const double scale = name == "plane" && big > 0 ? n->numbers[lead] / v.numbers[lead] : 1;
+        for (std::size_t k = 0; k < v.numbers.size(); ++k)
+          EXPECT_NEAR(n->numbers[k], scale * v.numbers[k], 1e-8 * std::abs(scale) * (big + 1))
+              << kind << " #" << i << " " << name << "[" << k << "]";
       }
     }
   }

@@ -33,19 +33,31 @@ T barycentric_depth(const std::array<Vec3<T>, 3>& t, const Vec2<T>& p) {
   return (wa * t[0](2) + wb * t[1](2) + wc * t[2](2)) / (wa + wb + wc);
 }
 
+// The plane through A with normal n: n, n̂ = n/‖n‖ and d = n̂·A (z is left unset).
+template <typename T>
+PlaneDepth<T> plane_through(const Vec3<T>& normal, const Vec3<T>& a) {
+  PlaneDepth<T> out;
+  out.normal = normal;
+  out.unit_normal = out.normal / stable_norm(out.normal);
+  out.d = out.unit_normal.dot(a);
+  return out;
+}
+
+// The plane method's z = (d − a·xₛ − b·yₛ)/c on the plane n̂·p = d (c = n̂_z must not be 0).
+template <typename T>
+T plane_method_z(const PlaneDepth<T>& plane, const Vec2<T>& pixel) {
+  const Vec3<T>& u = plane.unit_normal;
+  return (plane.d - u(0) * pixel(0) - u(1) * pixel(1)) / u(2);
+}
+
 // `first` and `second` are the edge vectors of the cross order (AC, AB for seed 001).
 // use_barycentric chooses the stable form for z; the caller decides it from the condition.
 template <typename T>
 PlaneDepth<T> plane_depth(const std::array<Vec3<T>, 3>& t, const Vec3<T>& first,
                           const Vec3<T>& second, const Vec2<T>& pixel, bool use_barycentric) {
-  PlaneDepth<T> out;
-  out.normal = first.cross(second);
-  out.unit_normal = out.normal / stable_norm(out.normal);
-  const Vec3<T>& u = out.unit_normal;
-  out.d = u.dot(t[0]);
+  PlaneDepth<T> out = plane_through<T>(first.cross(second), t[0]);
   out.barycentric = use_barycentric;
-  out.z = use_barycentric ? barycentric_depth(t, pixel)
-                          : (out.d - u(0) * pixel(0) - u(1) * pixel(1)) / u(2);
+  out.z = use_barycentric ? barycentric_depth(t, pixel) : plane_method_z(out, pixel);
   return out;
 }
 

@@ -19,6 +19,42 @@ namespace frustum {
 
 namespace {
 
+// The decisions of depth_at_pixel in any scalar, each by the filtered predicate of
+// predicates.hpp (the exact sign in the exact backend; `t` and `pixel` were rounded from
+// `exact_t` and `exact_pixel`), shared by the exact solve and the numeric path.
+
+// Whether the triangle is edge-on: c = ±E(A, B, C) over x and y (0: edge-on).
+template <typename T>
+SignDecision edge_on_sign(const std::array<Vec3<T>, 3>& t,
+                          const std::array<Vec3<Exact>, 3>& exact_t, bool inputs_relative) {
+  return edge_sign(t[0], t[1], Vec2<T>(t[2].x(), t[2].y()), exact_t[0], exact_t[1],
+                   Vec2<Exact>(exact_t[2].x(), exact_t[2].y()), inputs_relative);
+}
+
+// The signs of E_AB, E_BC, E_CA at the pixel, and whether it is inside the closed triangle (the
+// three signs agree, 0 = on an edge).
+struct PixelSides {
+  std::array<int, 3> sign{};
+  bool inside = false;
+  bool exact = false;  // the exact fallback decided some edge sign
+};
+
+template <typename T>
+PixelSides pixel_sides(const std::array<Vec3<T>, 3>& t, const Vec2<T>& pixel,
+                       const std::array<Vec3<Exact>, 3>& exact_t, const Vec2<Exact>& exact_pixel,
+                       bool inputs_relative) {
+  PixelSides out;
+  for (int k = 0; k < 3; ++k) {
+    const int j = (k + 1) % 3;
+    const SignDecision d =
+        edge_sign(t[k], t[j], pixel, exact_t[k], exact_t[j], exact_pixel, inputs_relative);
+    out.sign[k] = d.sign;
+    out.exact = out.exact || d.exact;
+  }
+  out.inside = inside_closed_triangle(out.sign[0], out.sign[1], out.sign[2]);
+  return out;
+}
+
 std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exact>, 3>& triangle,
                                                       const Vec2<Exact>& pixel,
                                                       const CrossOrder& order, Precision p) {
@@ -48,9 +84,7 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
       Out o;
       // Edge-on (c = 0) is a discrete answer too: c = ±E(A, B, C) over x and y, decided like the
       // edge signs; such a triangle is refused, as the exact solve refuses it (the same words).
-      const SignDecision c = edge_sign(
-          in.t[0], in.t[1], Vec2<T>(in.t[2].x(), in.t[2].y()), in.exact_t[0], in.exact_t[1],
-          Vec2<Exact>(in.exact_t[2].x(), in.exact_t[2].y()), in.range.relative());
+      const SignDecision c = edge_on_sign(in.t, in.exact_t, in.range.relative());
       if (c.sign == 0) {
         cross_normal_with_steps(in.exact_t, in.cross, "triangle",
                                 nullptr);  // refuses a collinear one
@@ -59,17 +93,10 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
       const Vec3<T> first = in.t[in.order[1]] - in.t[in.order[0]];
       const Vec3<T> second = in.t[in.order[3]] - in.t[in.order[2]];
       o.depth = plane_depth(in.t, first, second, in.pixel, in.barycentric);
-      // Inside the closed triangle: the three edge signs agree (0 = on an edge), each decided
-      // by the filtered predicate.
-      int s[3];
-      for (int k = 0; k < 3; ++k) {
-        const int j = (k + 1) % 3;
-        const SignDecision d = edge_sign(in.t[k], in.t[j], in.pixel, in.exact_t[k], in.exact_t[j],
-                                         in.exact_pixel, in.range.relative());
-        s[k] = d.sign;
-        o.inside_exact = o.inside_exact || d.exact;
-      }
-      o.inside = inside_closed_triangle(s[0], s[1], s[2]);
+      const PixelSides sides =
+          pixel_sides(in.t, in.pixel, in.exact_t, in.exact_pixel, in.range.relative());
+      o.inside = sides.inside;
+      o.inside_exact = sides.exact;
       return o;
     };
     auto report = [p, cond](const In& in, const Out& o) {
@@ -223,10 +250,6 @@ struct DepthAtPixel {
     return {{"z", uniform_scale(1, terms / std::abs(p[2]))}};
   }
 
-  static int orient2d(const Vec3<Exact>& a, const Vec3<Exact>& b, const Vec2<Exact>& p) {
-    return exact_sign(edge_function<Exact>(a, b, p));
-  }
-
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
     return depth_at_pixel_numeric(g.triangle, g.pixel, g.order, p);
   }
@@ -249,11 +272,16 @@ struct DepthAtPixel {
     if (steps) steps->yields("normal");
     Answers out;
     out.set("normal", Value::vector(n));
-    const Vec3<Exact> u = unit_normal_with_steps(n, steps);
+    // The plane method's values, by the template the numeric path uses; the steps show them.
+    const Vec3<Exact>& A = g.triangle[0];
+    PlaneDepth<Exact> r = plane_through(n, A);
+    for (int i = 0; i < 3; ++i) r.unit_normal(i) = canonical(r.unit_normal(i));
+    r.d = canonical(r.d);
+    const Vec3<Exact>& u = r.unit_normal;
+    record_unit_normal(n, u, steps);
     out.set("unit_normal", Value::vector(u));
     // Plane through A: n̂·(p − A) = 0, then cleared of its common factor.
-    const Vec3<Exact>& A = g.triangle[0];
-    const std::array<Exact, 4> plane = plane_through_a(g, u);
+    const std::array<Exact, 4> plane = paper_plane(u, r.d);
     const Value pv = plane_answer(plane);
     out.set("plane", pv);
     if (steps) {
@@ -266,8 +294,8 @@ struct DepthAtPixel {
     const Exact& a = plane[0];
     const Exact& b = plane[1];
     const Exact& c = plane[2];
-    if (c.is_zero()) refuse_edge_on_triangle("triangle");
-    const Exact z = canonical((plane[3] - a * g.pixel(0) - b * g.pixel(1)) / c);
+    if (edge_on_sign(g.triangle, g.triangle, true).sign == 0) refuse_edge_on_triangle("triangle");
+    const Exact z = canonical(plane_method_z(r, g.pixel));
     out.set("z", Value::scalar(z));
     if (steps) {
       steps->add("Depth at the pixel",
@@ -289,10 +317,9 @@ struct DepthAtPixel {
                         "barycentric interpolation z = Σ λᵢ zᵢ.");
     }
     // Inside the closed triangle: the three edge orientations agree (zero = on an edge).
-    const int s0 = orient2d(g.triangle[0], g.triangle[1], g.pixel);
-    const int s1 = orient2d(g.triangle[1], g.triangle[2], g.pixel);
-    const int s2 = orient2d(g.triangle[2], g.triangle[0], g.pixel);
-    const bool inside = inside_closed_triangle(s0, s1, s2);
+    const PixelSides sides = pixel_sides(g.triangle, g.pixel, g.triangle, g.pixel, true);
+    const int s0 = sides.sign[0], s1 = sides.sign[1], s2 = sides.sign[2];
+    const bool inside = sides.inside;
     out.set("inside", Value::boolean(inside));
     if (steps) {
       const auto sign_text = [](int s) {
@@ -356,9 +383,8 @@ struct DepthAtPixel {
     std::vector<std::vector<double>> xy;
     for (const Vec3<Exact>& v : g.triangle) xy.push_back({to_double(v(0)), to_double(v(1))});
     if (triangle_shape(xy) < kMinTriangleShape) return "the triangle is nearly edge-on";
-    for (int i = 0; i < 3; ++i)
-      if (orient2d(g.triangle[i], g.triangle[(i + 1) % 3], g.pixel) == 0)
-        return "the pixel is on an edge";
+    for (const int s : pixel_sides(g.triangle, g.pixel, g.triangle, g.pixel, true).sign)
+      if (s == 0) return "the pixel is on an edge";
     return "";
   }
 };

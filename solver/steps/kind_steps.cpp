@@ -69,6 +69,11 @@ Vec3<Exact> unit(const Vec3<Exact>& n) {
 
 Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps) {
   const Vec3<Exact> u = unit(n);
+  record_unit_normal(n, u, steps);
+  return u;
+}
+
+void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* steps) {
   if (steps) {
     steps->add("Unit normal",
                math("n̂ = n / ‖n‖,  ‖n‖ = √(nₓ² + n_y² + n_z²)",
@@ -78,7 +83,6 @@ Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps) {
                math("n̂ = ", "\\hat{\\mathbf{n}} = ") + vec(u, true));
     steps->yields("unit_normal");
   }
-  return u;
 }
 
 Polygon3<Exact> reversed_winding(const Polygon3<Exact>& p) {

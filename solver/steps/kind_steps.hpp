@@ -47,6 +47,9 @@ Vec3<Exact> unit(const Vec3<Exact>& n);
 // n̂ = n / ‖n‖ with its step (‖n‖ shown exactly, 9√3 ≈ 15.59), yielding "unit_normal".
 Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps);
 
+// The same step for a unit normal u = n/‖n‖ computed by the caller.
+void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* steps);
+
 // A student's earlier answer usable for error carried forward: present, exact, of the given
 // number of components, and not all zero (a zero normal makes later parts trivial).
 std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
