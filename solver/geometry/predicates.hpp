@@ -124,10 +124,19 @@ inline bool inside_closed_triangle(int s0, int s1, int s2) {
 
 // ---- Facing ----
 
-// The back-face answer of a sign of D_f (seed 003): > 0 front, < 0 back, 0 edge-on.
-inline const char* facing_word(int sign) {
-  return sign > 0 ? "front" : sign < 0 ? "back" : "edge_on";
+// The side of a face the eye sees, from the sign of D_f (seed 003): > 0 front, < 0 back,
+// 0 edge-on. The one mapping from a sign to a facing, and from a facing to its answer word.
+enum class FacingSide { Front, Back, EdgeOn };
+
+inline FacingSide facing_side(int sign) {
+  return sign > 0 ? FacingSide::Front : sign < 0 ? FacingSide::Back : FacingSide::EdgeOn;
 }
+
+inline const char* facing_word(FacingSide f) {
+  return f == FacingSide::Front ? "front" : f == FacingSide::Back ? "back" : "edge_on";
+}
+
+inline const char* facing_word(int sign) { return facing_word(facing_side(sign)); }
 
 // ---- orient3d (hidden lines) ----
 

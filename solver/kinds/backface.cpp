@@ -154,7 +154,11 @@ struct Backface {
     if (steps) steps->yields("normal");
     Answers out;
     out.set("normal", Value::vector(n));
-    const Vec3<Exact> v = g.eye - g.points[0];
+    // D_f and its sign by the template the numeric path uses (the winding it reads: the
+    // left-handed front normal e₁ × e₀ is the normal of the reversed polygon); the steps show them.
+    const Polygon3<Exact> wound = g.left_handed ? reversed_winding(g.points) : g.points;
+    const Facing<Exact> f = facing(wound, g.eye, wound, g.eye, true);
+    const Vec3<Exact>& v = f.view;
     out.set("view", Value::vector(v));
     if (steps) {
       steps->add(
@@ -164,7 +168,7 @@ struct Backface {
           math("v = ", "\\mathbf{v} = ") + vec(v));
       steps->yields("view");
     }
-    const Exact df = canonical(v.dot(n));
+    const Exact df = canonical(f.df);
     out.set("df", Value::scalar(df));
     if (steps) {
       steps->add("Discriminant", math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
@@ -186,16 +190,16 @@ struct Backface {
                                 facing_condition(pts, eye, Precision::LongDouble)) +
                 ").");
     }
-    const int sign = exact_sign(df);
-    const std::string facing = facing_word(sign);
-    out.set("facing", Value::category(facing));
+    const int sign = f.sign;
+    const std::string side = facing_word(sign);
+    out.set("facing", Value::category(side));
     if (steps) {
       const std::string why =
           sign > 0 ? "D_f > 0: v and n make an acute angle, so the eye sees the front."
           : sign < 0
               ? "D_f < 0: v and n make an obtuse angle, so the eye sees the back."
               : "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.";
-      steps->add("Front or back", {}, {}, word(facing)).note = why;
+      steps->add("Front or back", {}, {}, word(side)).note = why;
       steps->yields("facing");
       if (g.left_handed && sign != 0)
         steps->note(

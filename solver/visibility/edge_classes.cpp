@@ -6,10 +6,6 @@
 
 namespace frustum {
 
-const char* facing_word(Facing f) {
-  return facing_word(f == Facing::Front ? 1 : f == Facing::Back ? -1 : 0);  // predicates.hpp
-}
-
 const char* edge_class_word(EdgeClass c) {
   switch (c) {
     case EdgeClass::Visible:
@@ -30,7 +26,7 @@ std::vector<FaceTest> face_tests(const Mesh& m, const std::vector<Vec3<Exact>>& 
     FaceTest t;
     t.df = canonical((eye - p).dot(normals[f]));
     const int s = filtered_sign(t.df);
-    t.facing = s > 0 ? Facing::Front : s < 0 ? Facing::Back : Facing::EdgeOn;
+    t.facing = facing_side(s);
     out.push_back(t);
   }
   return out;

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "solver/geometry/predicates.hpp"
 #include "solver/visibility/mesh.hpp"
 
 namespace frustum {
 
-enum class Facing { Front, Back, EdgeOn };
+using Facing = FacingSide;  // facing_side(sign) and facing_word(f): predicates.hpp
 enum class EdgeClass { Visible, Silhouette, Hidden };
 
-const char* facing_word(Facing f);         // "front", "back", "edge_on"
 const char* edge_class_word(EdgeClass c);  // "visible", "silhouette", "hidden"
 
 struct FaceTest {
