@@ -34,6 +34,14 @@ Vec3<T> newell_normal(const Polygon3<T>& p) {
   return n;
 }
 
+// The polygon normal every path computes (the numeric backends, on offsets from p₀ scaled by a
+// power of two; the exact backend; the exact solve): e₀ × e₁ for a triangle (seed 003),
+// Newell's sum otherwise. The two agree for a triangle.
+template <typename T>
+Vec3<T> polygon_normal_formula(const Polygon3<T>& p) {
+  return p.size() == 3 ? edge_pair_normal(p, 0) : newell_normal(p);
+}
+
 // The edge pair whose cross product is computed most accurately: the smallest estimated
 // relative error (S·(‖e‖ + ‖f‖) + ‖e‖‖f‖) / ‖e × f‖, S the largest coordinate (rounding of the
 // vertices and of the products, both relative to the product's size). A near-zero edge or a

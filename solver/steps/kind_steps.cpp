@@ -98,11 +98,13 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
     throw DomainError(field,
                       "the polygon is degenerate: its vertices are collinear or "
                       "coincident, so it has no normal");
-  Vec3<Exact> n;
+  // The normal by the formula the numeric paths use, on the polygon in the winding they read
+  // (a left-handed front normal, e₁ × e₀ or −Newell's, is that of the reversed polygon); the
+  // steps show it.
+  Vec3<Exact> n = polygon_normal_formula(left_handed ? reversed_winding(p) : p);
+  for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
   if (p.size() == 3) {
     const Vec3<Exact> e0 = edge(p, 0), e1 = edge(p, 1);
-    n = left_handed ? Vec3<Exact>(e1.cross(e0)) : Vec3<Exact>(e0.cross(e1));
-    for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
     if (steps) {
       steps->add("Edge vectors",
                  math("e₀ = p₁ − p₀,  e₁ = p₂ − p₁",
@@ -128,9 +130,6 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
                    math("n = ", "\\mathbf{n} = ") + vec(n));
     }
   } else {
-    n = newell_normal(p);
-    if (left_handed) n = -n;
-    for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
     if (steps && left_handed)
       steps
           ->add(fmt::format("Normal of the {}-gon by Newell's method, left-handed", p.size()),

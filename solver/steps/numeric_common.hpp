@@ -114,7 +114,7 @@ struct NormalPair {
 // The exact normal of the formula polygon_normal uses (e₀ × e₁ = Newell's for a triangle).
 inline NormalPair<Exact> exact_polygon_normal(const Polygon3<Exact>& p) {
   NormalPair<Exact> out;
-  out.n = p.size() == 3 ? edge_pair_normal(p, 0) : newell_normal(p);
+  out.n = polygon_normal_formula(p);
   out.zero = is_zero_vector(out.n);
   if (!out.zero) out.unit = out.n / stable_norm(out.n);
   return out;
@@ -171,7 +171,7 @@ NormalPair<T> polygon_normal(const Polygon3<T>& p, const Polygon3<Exact>& exact_
     const int k = power_of_two_scale(largest);
     for (Vec3<T>& v : d)
       for (int i = 0; i < 3; ++i) v(i) = std::ldexp(v(i), -k);
-    Vec3<T> ns = triangle ? Vec3<T>(d[1].cross(d[2] - d[1])) : newell_normal(d);
+    Vec3<T> ns = polygon_normal_formula(d);  // d₀ = 0: e₀ × e₁ = d₁ × (d₂ − d₁)
     // The bound on the scaled magnitudes: each offset dᵢ within |pᵢ| + |p₀|, e₁ = d₂ − d₁
     // within |p₂| + |p₁| + 2|p₀|.
     auto magnitude = [&](std::size_t i) {
