@@ -123,8 +123,7 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
         warn_condition(out, p, cond.kappa_z, "Nearly edge-on triangle", "z at this pixel");
       return out.take();
     };
-    const std::array<int, 4> o{order.first[0] - 'A', order.first[1] - 'A', order.second[0] - 'A',
-                               order.second[1] - 'A'};
+    const std::array<int, 4> o = cross_indices(order);
     In in{{}, {}, o, fallback, triangle, pixel, {}, order};
     for (int k = 0; k < 3; ++k) in.t[k] = conv<T>(triangle[k], &in.range);
     in.pixel = conv<T>(pixel, &in.range);

@@ -31,8 +31,7 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
         return r;
       }
       const auto& o = *in.order;
-      r.n = Vec3<T>(in.points[o[1]] - in.points[o[0]])
-                .cross(Vec3<T>(in.points[o[3]] - in.points[o[2]]));
+      r.n = cross_order_normal<T>(in.points, o);
       Vec3<T> bound = Vec3<T>::Zero();
       if constexpr (!kIsExact<T>) {
         auto magnitude = [&](int i, int j) {
@@ -42,10 +41,8 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
       }
       const std::array<Vec3<Exact>, 3> abc{in.exact_points[0], in.exact_points[1],
                                            in.exact_points[2]};
-      decide_normal_zero(r, r.n, bound, in.range.relative(), 0, [&] {
-        return Vec3<Exact>(
-            Vec3<Exact>(abc[o[1]] - abc[o[0]]).cross(Vec3<Exact>(abc[o[3]] - abc[o[2]])));
-      });
+      decide_normal_zero(r, r.n, bound, in.range.relative(), 0,
+                         [&] { return cross_order_normal<Exact>(abc, o); });
       if (r.zero) cross_normal_with_steps(abc, *in.cross, "A", nullptr);
       return r;
     };
@@ -58,9 +55,7 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
     };
     In in{{}, std::nullopt, {}, points, order};
     in.points = conv<T>(points, &in.range);
-    if (order)
-      in.order = std::array<int, 4>{order->first[0] - 'A', order->first[1] - 'A',
-                                    order->second[0] - 'A', order->second[1] - 'A'};
+    if (order) in.order = cross_indices(*order);
     return prepare(std::move(in), core, report);
   });
 }

@@ -232,6 +232,10 @@ Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>
   return to - from;
 }
 
+std::array<int, 4> cross_indices(const CrossOrder& order) {
+  return {order.first[0] - 'A', order.first[1] - 'A', order.second[0] - 'A', order.second[1] - 'A'};
+}
+
 void refuse_edge_on_triangle(const std::string& field) {
   throw DomainError(
       field,
@@ -242,7 +246,7 @@ void refuse_edge_on_triangle(const std::string& field) {
 Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const CrossOrder& order,
                                     const std::string& field, Derivation* steps) {
   const Vec3<Exact> u = named_edge(order.first, abc), v = named_edge(order.second, abc);
-  Vec3<Exact> n = u.cross(v);
+  Vec3<Exact> n = cross_order_normal<Exact>(abc, cross_indices(order));
   for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
   if (canonical(n.dot(n)).is_zero())
     throw DomainError(field, "the points are collinear (" + order.first + " × " + order.second +

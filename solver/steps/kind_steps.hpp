@@ -81,6 +81,17 @@ CrossOrder read_cross(GivenReader& r, const std::string& key, CrossOrder fallbac
 // The edge vector XY = Y − X of triangle ABC.
 Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>& abc);
 
+// The vertex indices {X₀, Y₀, X₁, Y₁} of a cross order first = X₀Y₀, second = X₁Y₁.
+std::array<int, 4> cross_indices(const CrossOrder& order);
+
+// n = first × second of triangle ABC (first = Y₀ − X₀, second = Y₁ − X₁) in any scalar: the one
+// formula of the exact solve (cross_normal_with_steps) and of the numeric paths.
+template <typename T, typename Points>
+Vec3<T> cross_order_normal(const Points& abc, const std::array<int, 4>& o) {
+  const Vec3<T> first = abc[o[1]] - abc[o[0]], second = abc[o[3]] - abc[o[2]];
+  return first.cross(second);
+}
+
 // n = first × second with its steps ("AC = C − A = (0, 3, 3)" ...).
 // Refuses a triangle whose plane is parallel to the z axis (c = 0 in ax + by + cz = d): no single
 // depth above a pixel. Shared by the exact and numeric solves of depth_at_pixel.
