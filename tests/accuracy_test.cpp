@@ -224,12 +224,13 @@ TEST(NumericPaths, ExactBackendMatchesTheDerivation) {
 // One formula per concept: depth_at_pixel's exact solve and numeric path compute the plane
 // depth (plane_depth.hpp) and the edge decisions (edge_sign) by the same templates, and
 // backface's D_f and its facing (facing.hpp, facing_side) likewise, and normal and plane take
-// the polygon's normal from polygon_normal_formula. For many drawn problems (every third hard:
-// pixels on an edge, eyes in the polygon's plane, nearly collinear vertices) the double path's
+// the polygon's normal from polygon_normal_formula, and vectors its area, sin and cos from
+// vector_measures. For many drawn problems (every third hard: pixels on an edge, eyes in the
+// polygon's plane, nearly collinear vertices, nearly parallel vectors) the double path's
 // values are within 10⁻⁸ (relative) of the exact solve's, its discrete answers (inside, facing,
 // whether the unit normal exists) are equal, and it refuses exactly what the exact solve refuses.
 TEST(NumericPaths, DoublePathAgreesWithTheExactSolveOfEachUnifiedKind) {
-  for (const std::string kind : {"depth_at_pixel", "backface", "normal", "plane"}) {
+  for (const std::string kind : {"depth_at_pixel", "backface", "normal", "plane", "vectors"}) {
     const KindInfo& info = *builtin_kinds().find(kind);
     for (int i = 0; i < 90; ++i) {
       const ProblemSpec base = default_problem(info, i % 4 == 1, i % 3 == 2);

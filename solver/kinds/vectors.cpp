@@ -1,5 +1,6 @@
 // seed 003 (review of dot and cross products): a = (2,0,1), b = (1,2,0) →
 // a × b = (−2, 1, 4), S = √21, sin θ = √21/5, n = (−2, 1, 4)/√21.
+#include "solver/geometry/zero_vector.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -10,6 +11,27 @@
 namespace frustum {
 
 namespace {
+
+// The measures of a and b from their products, in any scalar: the parallelogram's area
+// ‖a × b‖, the lengths, sin θ = ‖a × b‖/(‖a‖‖b‖) and cos θ = a·b/(‖a‖‖b‖). The exact solve and
+// the numeric path (on a and b scaled by powers of two, which sin and cos do not see) both use
+// it. a and b must not be zero.
+template <typename T>
+struct VectorMeasures {
+  T area{}, length_a{}, length_b{}, sin{}, cos{};
+};
+
+template <typename T>
+VectorMeasures<T> vector_measures(const Vec3<T>& a, const Vec3<T>& b, const T& dot,
+                                  const Vec3<T>& cross) {
+  VectorMeasures<T> m;
+  m.area = stable_norm(cross);
+  m.length_a = stable_norm(a);
+  m.length_b = stable_norm(b);
+  m.sin = m.area / m.length_a / m.length_b;
+  m.cos = dot / m.length_a / m.length_b;
+  return m;
+}
 
 std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<Exact>& b,
                                                AngleUnit unit, Precision p) {
@@ -47,14 +69,15 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
         bound = cross_error_bound(Vec3<T>(a.cwiseAbs()), Vec3<T>(b.cwiseAbs()), 1);
       decide_normal_zero(o.unit, cross, bound, in.range.relative(), ka + kb,
                          [&] { return Vec3<Exact>(in.exact_a.cross(in.exact_b)); });
-      const T area = stable_norm(cross), la = stable_norm(a), lb = stable_norm(b);
+      const VectorMeasures<T> m = vector_measures<T>(a, b, dot, cross);
       o.dot = scaled_by(dot, ka + kb, o.underflow);
       for (int i = 0; i < 3; ++i) o.cross(i) = scaled_by(cross(i), ka + kb, o.underflow);
-      o.area = scaled_by(area, ka + kb, o.underflow);
-      o.sin = area / la / lb;
-      o.cos = dot / la / lb;
-      // θ = atan2(‖a × b‖, a·b): accurate at every angle, unlike arccos(cos θ) near 0 and π.
-      o.angle = scalar_angle(area, dot);
+      o.area = scaled_by(m.area, ka + kb, o.underflow);
+      o.sin = m.sin;
+      o.cos = m.cos;
+      // θ = atan2(‖a × b‖, a·b): accurate at every angle, unlike arccos(cos θ) near 0 and π
+      // (the exact solve writes arccos(cos θ): exact, it has no rounding to avoid).
+      o.angle = scalar_angle(m.area, dot);
       if (in.degrees) o.angle = o.angle * T(180) / scalar_pi(o.angle);
       return o;
     };
@@ -178,9 +201,8 @@ struct Vectors {
   static Answers solve(const Given& g, Derivation* steps) {
     const Vec3<Exact>& a = g.a;
     const Vec3<Exact>& b = g.b;
-    const Exact len_a = canonical(norm(a)), len_b = canonical(norm(b));
-    if (len_a.is_zero()) throw DomainError("a", "a is the zero vector: no angle or normal");
-    if (len_b.is_zero()) throw DomainError("b", "b is the zero vector: no angle or normal");
+    if (is_zero_vector(a)) throw DomainError("a", "a is the zero vector: no angle or normal");
+    if (is_zero_vector(b)) throw DomainError("b", "b is the zero vector: no angle or normal");
     Answers out;
     // Dot product: a·b = a_x b_x + a_y b_y + a_z b_z.
     const Exact dot = canonical(a.dot(b));
@@ -208,7 +230,10 @@ struct Vectors {
                  math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(cross));
       steps->yields("cross");
     }
-    const Exact area = canonical(norm(cross));
+    // The measures by the template the numeric path uses; the steps show them.
+    const VectorMeasures<Exact> m = vector_measures<Exact>(a, b, dot, cross);
+    const Exact len_a = canonical(m.length_a), len_b = canonical(m.length_b);
+    const Exact area = canonical(m.area);
     out.set("area", Value::scalar(area));
     if (steps) {
       steps->add("Area of the parallelogram",
@@ -216,7 +241,7 @@ struct Vectors {
                  math("S = ") + exact(area, true));
       steps->yields("area");
     }
-    const Exact sin = canonical(area / (len_a * len_b));
+    const Exact sin = canonical(m.sin);
     out.set("sin", Value::scalar(sin));
     if (steps) {
       steps->add("Sine of the angle",
@@ -228,7 +253,7 @@ struct Vectors {
                  math("sin θ = ", "\\sin\\theta = ") + exact(sin, true));
       steps->yields("sin");
     }
-    const Exact cos = canonical(dot / (len_a * len_b));
+    const Exact cos = canonical(m.cos);
     out.set("cos", Value::scalar(cos));
     if (steps) {
       steps->add(
