@@ -224,14 +224,17 @@ TEST(NumericPaths, ExactBackendMatchesTheDerivation) {
 // One formula per concept: depth_at_pixel's exact solve and numeric path compute the plane
 // depth (plane_depth.hpp) and the edge decisions (edge_sign) by the same templates, and
 // backface's D_f and its facing (facing.hpp, facing_side) likewise, and normal and plane take
-// the polygon's normal from polygon_normal_formula, and vectors its area, sin and cos from
-// vector_measures. For many drawn problems (every third hard: pixels on an edge, eyes in the
+// the polygon's normal from polygon_normal_formula, vectors its area, sin and cos from
+// vector_measures, and project_point its w > 0 and inside from the same seven sign tests
+// (volume_tests). For many drawn problems (every third hard: pixels on an edge, eyes in the
 // polygon's plane, nearly collinear vertices, nearly parallel vectors) the double path's
 // values are within 10⁻⁸ (relative) of the exact solve's, its discrete answers (inside, facing,
 // whether the unit normal exists) are equal, and it refuses exactly what the exact solve refuses.
 TEST(NumericPaths, DoublePathAgreesWithTheExactSolveOfEachUnifiedKind) {
-  for (const std::string kind : {"depth_at_pixel", "backface", "normal", "plane", "vectors"}) {
+  for (const std::string kind :
+       {"depth_at_pixel", "backface", "normal", "plane", "vectors", "project_point"}) {
     const KindInfo& info = *builtin_kinds().find(kind);
+    int solved = 0;  // problems both paths solved (not refused)
     for (int i = 0; i < 90; ++i) {
       const ProblemSpec base = default_problem(info, i % 4 == 1, i % 3 == 2);
       ProblemSet set;
@@ -247,6 +250,7 @@ TEST(NumericPaths, DoublePathAgreesWithTheExactSolveOfEachUnifiedKind) {
         EXPECT_EQ(dbl.error->message, exact.error->message) << kind << " #" << i;
         continue;
       }
+      ++solved;
       for (const auto& [name, v] : exact.answers.items()) {
         const Value* n = dbl.answers.find(name);
         ASSERT_NE(n, nullptr) << kind << " " << name;
@@ -264,6 +268,7 @@ TEST(NumericPaths, DoublePathAgreesWithTheExactSolveOfEachUnifiedKind) {
               << kind << " #" << i << " " << name << "[" << k << "]";
       }
     }
+    EXPECT_GT(solved, 60) << kind;
   }
 }
 

@@ -92,6 +92,22 @@ std::array<S, 7> volume_tests(const Vec4<S>& c, Api api) {
           S(w - c(2))};
 }
 
+// The seven signs of volume_tests computed exactly (the exact backend, the exact fallback of
+// the floating ones, and the exact solve).
+std::array<int, 7> exact_volume_signs(const Vec4<Exact>& clip, Api api) {
+  const std::array<Exact, 7> t = volume_tests(clip, api);
+  std::array<int, 7> sign{};
+  for (int k = 0; k < 7; ++k) sign[k] = exact_sign(t[k]);
+  return sign;
+}
+
+// Inside the view volume from the seven signs: w > 0 and every plane test ≥ 0.
+bool inside_volume(const std::array<int, 7>& sign) {
+  bool inside = sign[0] > 0;
+  for (int k = 1; k < 7; ++k) inside = inside && sign[k] >= 0;
+  return inside;
+}
+
 std::unique_ptr<NumericSolver> project_point_numeric(
     const Vec3<Exact>& point, const std::optional<MatX<Exact>>& model,
     const std::optional<std::array<Vec3<Exact>, 3>>& camera, const ProjectionSpec& projection,
@@ -135,26 +151,24 @@ std::unique_ptr<NumericSolver> project_point_numeric(
       // The decisions: each sign proven on the ranged clip point, or computed exactly.
       std::array<int, 7> sign{};
       if constexpr (kIsExact<T>) {
-        const std::array<T, 7> t = volume_tests(o.clip, in.given.api);
-        for (int k = 0; k < 7; ++k) sign[k] = exact_sign(t[k]);
+        sign = exact_volume_signs(o.clip, in.given.api);
       } else {
         const std::array<Ranged<T>, 7> t =
             volume_tests(clip_of(clip_from_world(in.ranged), in.ranged.point), in.given.api);
-        std::optional<std::array<Exact, 7>> exact;
+        std::optional<std::array<int, 7>> exact;
         for (int k = 0; k < 7; ++k) {
           const SignDecision d = decide_sign(t[k], [&] {
             if (!exact)
-              exact =
-                  volume_tests(clip_of(clip_from_world(in.exact), in.exact.point), in.given.api);
-            return exact_sign((*exact)[k]);
+              exact = exact_volume_signs(clip_of(clip_from_world(in.exact), in.exact.point),
+                                         in.given.api);
+            return (*exact)[k];
           });
           sign[k] = d.sign;
           o.exact_decided = o.exact_decided || d.exact;
         }
       }
       o.w_sign = sign[0];
-      o.inside = o.w_sign > 0;
-      for (int k = 1; k < 7; ++k) o.inside = o.inside && sign[k] >= 0;
+      o.inside = inside_volume(sign);
       if (o.w_sign > 0) {
         o.ndc = o.clip.template head<3>() / o.clip(3);
         o.window = viewport(o.ndc, in.width, in.height, in.given.api);
@@ -409,7 +423,11 @@ struct ProjectPoint {
       steps->yields("clip");
     }
     const Exact& w = clip(3);
-    const int w_sign = exact_sign(w);
+    // The decisions by the formulas the numeric path uses: the seven signs of w and of the
+    // plane tests −w ≤ x, y ≤ w, −w ≤ z ≤ w (DirectX: 0 ≤ z ≤ w), here computed exactly.
+    const std::array<int, 7> sign =
+        exact_volume_signs(Vec4<Exact>(clip(0), clip(1), clip(2), clip(3)), g.api);
+    const int w_sign = sign[0];
     if (steps && w_sign > 0) {
       // How far the point is from the eye's plane, relative to the terms of w.
       Eigen::Vector4d row, ph;
@@ -427,12 +445,8 @@ struct ProjectPoint {
                         "a reversed-Z depth buffer keeps far more).",
                         f / n, format_approx(float_depth_resolution(n, f, to_double(w)))));
     }
-    // Inside the view volume: −w ≤ x, y ≤ w and −w ≤ z ≤ w (DirectX: 0 ≤ z ≤ w).
-    bool inside = w_sign > 0;
-    for (int i = 0; i < 3 && inside; ++i) {
-      const Exact low = (i == 2 && g.api == Api::DirectX) ? Exact(0) : Exact(-w);
-      inside = exact_sign(clip(i) - low) >= 0 && exact_sign(w - clip(i)) >= 0;
-    }
+    // Inside the view volume: w > 0 and every plane test ≥ 0.
+    const bool inside = inside_volume(sign);
     if (w_sign <= 0) {
       out.set("ndc", Value::null());
       out.set("window", Value::null());
