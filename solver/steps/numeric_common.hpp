@@ -20,7 +20,6 @@
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/numeric_result.hpp"
 #include "solver/steps/kind_steps.hpp"
-#include "solver/steps/viewing_steps.hpp"
 
 namespace frustum {
 
