@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/core/exact.hpp"
 #include "solver/core/work_budget.hpp"
 
 namespace frustum {
@@ -38,8 +39,6 @@ using GiNaC::numeric;
 
 // 1e±400 spans every physical constant a problem needs; bigger powers of ten are typos.
 constexpr long kMaxDecimalExponent = 400;
-// GiNaC computes p/q powers of rationals as an exact q-th root of base^p.
-constexpr long kMaxRootIndex = 12;
 // expand() (here on divisors, and downstream) multiplies sums out; (a+b+c+d)^1000 or a
 // product of many sums would create more terms than memory holds.
 constexpr double kMaxExpandedTerms = 10'000;
@@ -412,13 +411,6 @@ struct Value {
   // the value ((√2)^4 -> 4, 2^(1/2)*2^(1/3) -> 2^(5/6)) leaves it valid.
   double height = 0;
 };
-
-bool has_symbol(const ex& e) {
-  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (is_a<GiNaC::symbol>(*it)) return true;
-  }
-  return false;
-}
 
 // log2(max(|numerator|, denominator)) of a rational, accurate for any size.
 double rational_height(const numeric& r) {
@@ -819,11 +811,11 @@ class Parser {
     const bool rational = is_a<numeric>(exponent.value);  // exact numerics are rational here
     const numeric exact_k = rational ? ex_to<numeric>(exponent.value) : numeric(0);
     const bool integer = rational && exact_k.is_integer();
-    if (rational && !integer && exact_k.denom() > kMaxRootIndex) {
+    if (rational && !integer && exact_k.denom() > kMaxParsedRootIndex) {
       std::ostringstream k_text;
       k_text << exact_k;
-      fail("roots beyond the " + std::to_string(kMaxRootIndex) + "th are not supported (exponent " +
-               k_text.str() + ")",
+      fail("roots beyond the " + std::to_string(kMaxParsedRootIndex) +
+               "th are not supported (exponent " + k_text.str() + ")",
            exponent_offset);
     }
 
