@@ -40,23 +40,11 @@ std::vector<std::string> read_roster(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".csv") {
-    const CsvTable table = parse_csv(text.str());
-    if (table.error)
-      throw InputError(
-          Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
-    if (table.rows.empty())
-      throw InputError(
-          Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
-    const std::vector<std::string>& header = table.rows[0].fields;
-    std::size_t col = header.size();
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      std::string h = header[i];
-      std::transform(h.begin(), h.end(), h.begin(),
-                     [](unsigned char c) { return std::tolower(c); });
-      if (h == "student") col = i;
-    }
-    if (col == header.size())
-      throw InputError(Diagnostic{SourceLocation{path, 1, 1}, "header", "no 'student' column"});
+    // A roster that names 'student' in more than one column takes its ids from the last.
+    const CsvRoster roster = parse_csv_roster(path, text.str());
+    require_student_column(path, roster);
+    const CsvTable& table = roster.table;
+    const std::size_t col = roster.student_columns.back();
     for (std::size_t r = 1; r < table.rows.size(); ++r) {
       const CsvRow& row = table.rows[r];
       if (col < row.fields.size() && !row.fields[col].empty())

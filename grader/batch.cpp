@@ -148,26 +148,21 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
   std::string text;
   if (const std::optional<Diagnostic> d = read_text_file(path, kMaxRosterBytes, text))
     throw InputError(*d);
-  const CsvTable table = parse_csv(text);
-  if (table.error)
-    throw InputError(
-        Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
-  if (table.rows.empty())
-    throw InputError(
-        Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
+  const CsvRoster roster = parse_csv_roster(path, text);
+  const CsvTable& table = roster.table;
   const std::vector<std::string>& header = table.rows[0].fields;
   const int header_line = table.rows[0].line;
-  int student_col = -1;
+  const int student_col =
+      roster.student_columns.empty() ? -1 : static_cast<int>(roster.student_columns[0]);
   std::vector<std::pair<std::string, std::string>> columns(header.size());  // problem id, answer
   for (std::size_t i = 0; i < header.size(); ++i) {
     const std::string h = header[i];
     const int column = static_cast<int>(i) + 1;
     if (lower(h) == "student") {
-      if (student_col >= 0)
+      if (static_cast<int>(i) != student_col)
         throw InputError(Diagnostic{
             SourceLocation{path, header_line, column}, "header",
             fmt::format("a second 'student' column (the first is column {})", student_col + 1)});
-      student_col = static_cast<int>(i);
       continue;
     }
     const std::size_t dot = h.rfind('.');
@@ -183,9 +178,7 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
             SourceLocation{path, header_line, column}, "header",
             fmt::format("column {} repeats column {} ({})", column, k + 1, quote_excerpt(h))});
   }
-  if (student_col < 0)
-    throw InputError(
-        Diagnostic{SourceLocation{path, header_line, 1}, "header", "no 'student' column"});
+  require_student_column(path, roster);
   std::vector<BatchEntry> out;
   for (std::size_t r = 1; r < table.rows.size(); ++r) {
     const CsvRow& row = table.rows[r];

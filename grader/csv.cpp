@@ -1,6 +1,9 @@
 #include "grader/csv.hpp"
 
+#include <cctype>
 #include <string_view>
+
+#include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
@@ -73,6 +76,31 @@ CsvTable parse_csv(const std::string& text) {
   }
   if (field_started || !row.fields.empty()) end_row();
   return table;
+}
+
+CsvRoster parse_csv_roster(const std::string& path, const std::string& text) {
+  CsvRoster roster;
+  roster.table = parse_csv(text);
+  const CsvTable& table = roster.table;
+  if (table.error)
+    throw InputError(
+        Diagnostic{SourceLocation{path, table.error_line, table.error_column}, "", *table.error});
+  if (table.rows.empty())
+    throw InputError(
+        Diagnostic{SourceLocation{path, 1, 1}, "", "empty CSV: expected a header row"});
+  const CsvRow& header = table.rows[0];
+  for (std::size_t i = 0; i < header.fields.size(); ++i) {
+    std::string h = header.fields[i];
+    for (char& c : h) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (h == "student") roster.student_columns.push_back(i);
+  }
+  return roster;
+}
+
+void require_student_column(const std::string& path, const CsvRoster& roster) {
+  if (roster.student_columns.empty())
+    throw InputError(Diagnostic{SourceLocation{path, roster.table.rows[0].line, 1}, "header",
+                                "no 'student' column"});
 }
 
 std::string csv_field(const std::string& field) {

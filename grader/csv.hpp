@@ -3,6 +3,7 @@
 // the gradebook.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,21 @@ struct CsvTable {
 
 // Reads a whole CSV text; a UTF-8 byte-order mark and CRLF line ends are accepted.
 CsvTable parse_csv(const std::string& text);
+
+// A roster in CSV: a header row that names a 'student' column, then one row per student
+// (class rosters of student ids for generate/grade --roster, and rosters of answers).
+struct CsvRoster {
+  CsvTable table;                            // rows[0] is the header
+  std::vector<std::size_t> student_columns;  // header fields named 'student' (any case)
+};
+
+// Parses `text`, the contents of the CSV file `path`. A CSV syntax error and a file without a
+// header row are InputErrors located in `path`.
+CsvRoster parse_csv_roster(const std::string& path, const std::string& text);
+
+// Throws the InputError for a roster whose header names no 'student' column (located at the
+// header), so that a caller checking other header fields first can report those first.
+void require_student_column(const std::string& path, const CsvRoster& roster);
 
 // One field, quoted when it needs to be; and a whole row ending in "\n", every field
 // neutralised (csv_neutralise) first.

@@ -116,11 +116,8 @@ std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
       out += " — " + tr("credit carried forward from your earlier answer", lang);
     out += "\n\n";
     if (!a.misconception.empty())
-      out += fmt::format(
-          "> **{}:** {}{}\n\n", tr("Common mistake", lang), tr(a.misconception, lang),
-          a.wrong_step.empty()
-              ? ""
-              : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
+      out +=
+          fmt::format("> **{}:** {}\n\n", tr("Common mistake", lang), misconception_text(a, lang));
     if (!a.feedback.empty()) out += markdown_escape(tr(a.feedback, lang)) + "\n\n";
     if (!a.derivation.empty())
       out += fmt::format("*{}:*\n\n", tr("How to get it", lang)) +
@@ -212,12 +209,9 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
               ? " — " + html_escape(tr("credit carried forward from your earlier answer", lang))
               : "");
       if (!a.misconception.empty())
-        out += fmt::format(
-            "<p class=\"mistake\"><b>{}:</b> {}{}</p>\n", html_escape(tr("Common mistake", lang)),
-            html_escape(tr(a.misconception, lang)),
-            a.wrong_step.empty() ? ""
-                                 : " (" + html_escape(tr("Where it goes wrong", lang)) + ": " +
-                                       html_escape(tr(a.wrong_step, lang)) + ")");
+        out += fmt::format("<p class=\"mistake\"><b>{}:</b> {}</p>\n",
+                           html_escape(tr("Common mistake", lang)),
+                           html_escape(misconception_text(a, lang)));
       if (!a.feedback.empty())
         out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(tr(a.feedback, lang)));
       if (!a.derivation.empty())

@@ -47,6 +47,13 @@ std::string mark(Verdict v, bool color) {
 
 }  // namespace
 
+std::string misconception_text(const AnswerGrade& a, Lang lang) {
+  return tr(a.misconception, lang) +
+         (a.wrong_step.empty()
+              ? ""
+              : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
+}
+
 // A score as a teacher writes it: at most two decimals, trailing zeros dropped (21.33, 2, 0.5).
 std::string score_text(double v) {
   std::string s = fmt::format("{:.2f}", v);
@@ -88,11 +95,8 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
                            tr(a.expected.shown(), lang).unicode);
       out += "\n";
       if (!a.misconception.empty())
-        out += fmt::format(
-            "      {}: {}{}\n", tr("Common mistake", lang), tr(a.misconception, lang),
-            a.wrong_step.empty()
-                ? ""
-                : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
+        out +=
+            fmt::format("      {}: {}\n", tr("Common mistake", lang), misconception_text(a, lang));
       if (!a.feedback.empty() && a.verdict != Verdict::Correct)
         out += "      " + tr(a.feedback, lang) + "\n";
       if (a.verdict != Verdict::Correct && !a.derivation.empty() &&

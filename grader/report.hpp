@@ -12,6 +12,9 @@ namespace frustum {
 
 // A score as a teacher writes it: at most two decimals, trailing zeros dropped (21.33, 2, 0.5).
 std::string score_text(double v);
+// An answer's common mistake as feedback states it, in `lang`: the misconception, then where
+// the derivation goes wrong when that is known ("… (Where it goes wrong: …)").
+std::string misconception_text(const AnswerGrade& a, Lang lang);
 std::string render_grade_text(const GradeReport& r, const TextStyle& style);
 nlohmann::ordered_json render_grade_json(const GradeReport& r);
 

@@ -30,8 +30,8 @@ constexpr std::uint64_t kFactorLimit = 1'000'000'000'000'000;  // 10^15
 constexpr std::uint64_t kTrialLimit = 100'000;
 // Above kFactorLimit only divisors below this are tried (radicands are at most kMaxRadicandBits).
 constexpr std::uint64_t kSmallPrimeLimit = 1'000;
-// Radicals beyond these sizes are left as GiNaC holds them (bounded work on hostile input).
-constexpr unsigned kMaxRootIndex = 64;
+// Radicals beyond this size (and beyond kMaxSimplifiedRootIndex) are left as GiNaC holds them
+// (bounded work on hostile input).
 constexpr std::uintptr_t kMaxRadicandBits = 4096;
 // canonical() repeats its pass until nothing changes; two passes suffice in practice.
 constexpr int kMaxCanonicalPasses = 4;
@@ -135,7 +135,7 @@ bool is_positive_rational(const ex& e) {
 bool is_proper_fraction_exponent(const ex& e) {
   if (!is_a<numeric>(e)) return false;
   const numeric& n = ex_to<numeric>(e);
-  return n.is_rational() && !n.is_integer() && n.denom() <= numeric(long(kMaxRootIndex));
+  return n.is_rational() && !n.is_integer() && n.denom() <= numeric(long(kMaxSimplifiedRootIndex));
 }
 
 // (a/b)^(p/r) = (a/b)^k * c * d^(1/r) / b with d r-th-power free, where p = k*r + s,
@@ -243,13 +243,6 @@ struct SimplifyRadicals : GiNaC::map_function {
     return mapped;
   }
 };
-
-bool has_symbol(const ex& e) {
-  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (is_a<GiNaC::symbol>(*it) || is_a<GiNaC::wildcard>(*it)) return true;
-  }
-  return false;
-}
 
 // GiNaC's working precision is a process-wide setting; restore it whatever happens.
 class DigitsGuard {
@@ -474,6 +467,13 @@ Exact canonical(const Exact& e, WorkBudget& budget) {
     }
   }
   return current;
+}
+
+bool has_symbol(const Exact& e) {
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (is_a<GiNaC::symbol>(*it) || is_a<GiNaC::wildcard>(*it)) return true;
+  }
+  return false;
 }
 
 bool is_real_constant(const Exact& e) {

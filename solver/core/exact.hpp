@@ -27,6 +27,19 @@ Exact canonical(const Exact& e, WorkBudget& budget);
 // True when e is a real number that contains no symbols (it may hold sqrt, pi, sin...).
 bool is_real_constant(const Exact& e);
 
+// True when e contains a symbol (a variable such as x) or a GiNaC wildcard anywhere.
+bool has_symbol(const Exact& e);
+
+// Roots are bounded in two places, for two different costs, so the bounds differ:
+// canonical() simplifies radicals up to this index and leaves larger ones as GiNaC holds them
+// (bounded work on whatever value reaches it) ...
+inline constexpr unsigned kMaxSimplifiedRootIndex = 64;
+// ... while the expression parser refuses p/q powers with q above this (GiNaC computes them as
+// an exact q-th root of base^p before canonical() sees them). Raising it would accept answers
+// that are refused today; lowering the other would leave values unsimplified that are
+// simplified today.
+inline constexpr long kMaxParsedRootIndex = 12;
+
 // Nearest double of a real constant; NaN when e is not one.
 double to_double(const Exact& e);
 

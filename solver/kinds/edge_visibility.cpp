@@ -13,6 +13,7 @@
 #include "solver/problem/registry.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/scene_reader.hpp"
+#include "solver/steps/transform_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/viewing/transforms.hpp"
@@ -35,7 +36,7 @@ struct EdgeVisibility {
     Mesh mesh;
     std::string solid;  // empty for a given mesh
     std::string field;  // "solid" or "mesh.faces": where a bad mesh is reported
-    std::vector<std::pair<std::string, MatX<Exact>>> transform;
+    std::vector<TransformStep> transform;
     Vec3<Exact> eye;
   };
   static std::vector<std::string> given_fields() { return {"mesh", "solid", "transform", "eye"}; }
@@ -53,40 +54,6 @@ struct EdgeVisibility {
     return frustum::read_mesh(m, 4, 4);
   }
 
-  // One step of the `transform` kind's format (3D): translate, scale, rotate_x/y/z, rotate.
-  static std::pair<std::string, MatX<Exact>> read_step(GivenReader& s, const Conventions& c) {
-    const std::vector<std::string> keys = s.keys();
-    if (keys.size() != 1)
-      s.fail(keys.empty() ? "translate" : keys[1],
-             "each step is one of translate, scale, rotate_x, rotate_y, rotate_z, rotate");
-    const std::string& k = keys[0];
-    std::pair<std::string, MatX<Exact>> t;
-    if (k == "translate") {
-      const std::vector<Exact> v = s.numbers(k, 3);
-      t = {"translate " + vec(v).unicode, translate(v)};
-    } else if (k == "scale") {
-      const std::vector<Exact> v =
-          s.is_list(k) ? s.numbers(k, 3) : std::vector<Exact>(3, s.number(k));
-      t = {"scale " + vec(v).unicode, scale(v)};
-    } else if (k == "rotate_x" || k == "rotate_y" || k == "rotate_z") {
-      const Exact a = read_angle(s, k, c.angles);
-      t = {k + " " + angle_text(a, c.angles).unicode, rotate_axis_index(k[7] - 'x', a)};
-    } else if (k == "rotate") {
-      GivenReader r = s.child(k, {"axis", "angle"});
-      const Vec3<Exact> axis = r.vector<3>("axis");
-      if (canonical(axis.dot(axis)).is_zero()) r.fail("axis", "the zero vector is not an axis");
-      const Exact a = read_angle(r, "angle", c.angles);
-      r.finish();
-      t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
-           rotate_about(unit(axis), a)};
-    } else {
-      s.fail(k, "unknown step: use translate, scale, rotate_x, rotate_y, rotate_z or rotate");
-    }
-    s.finish();
-    t.second = canonical(t.second);
-    return t;
-  }
-
   static Given parse(GivenReader& r, const Conventions& c) {
     Given g;
     if (r.has("mesh") == r.has("solid"))
@@ -99,14 +66,10 @@ struct EdgeVisibility {
       g.mesh = read_mesh(r);
       g.field = "mesh.faces";
     }
-    if (r.has("transform")) {
-      const std::size_t n = r.list_size("transform");
-      for (std::size_t i = 0; i < n; ++i) {
-        GivenReader s = r.item(
-            "transform", i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate"});
-        g.transform.push_back(read_step(s, c));
-      }
-    }
+    // The `transform` kind's steps in 3D, shear excepted.
+    if (r.has("transform"))
+      g.transform = read_transform_steps(r, "transform", 3, c,
+                                         {.max_count = kMaxGivenListItems, .shear = false});
     g.eye = r.vector<3>("eye");
     return g;
   }
@@ -129,7 +92,7 @@ struct EdgeVisibility {
     Mesh mesh = g.mesh;
     if (g.transform.empty()) return mesh;
     MatX<Exact> m = MatX<Exact>::Identity(4, 4);
-    for (const auto& [title, a] : g.transform) m = canonical(MatX<Exact>(a * m));
+    for (const TransformStep& a : g.transform) m = canonical(MatX<Exact>(a.matrix * m));
     const int det = filtered_sign(canonical(m.topLeftCorner(3, 3).determinant()));
     if (det == 0)
       throw DomainError("transform",
@@ -143,7 +106,7 @@ struct EdgeVisibility {
     if (steps) {
       std::string order, product, product_latex;
       for (std::size_t i = 0; i < g.transform.size(); ++i) {
-        order += fmt::format("{}A{}: {}", i ? "; " : "", i + 1, g.transform[i].first);
+        order += fmt::format("{}A{}: {}", i ? "; " : "", i + 1, g.transform[i].title);
         product = fmt::format("A{}", i + 1) + (i ? "·" : "") + product;
         product_latex = fmt::format("A_{{{}}}", i + 1) + product_latex;
       }

@@ -1,6 +1,5 @@
 #include "solver/problem/solve_precision.hpp"
 
-#include "solver/input/given_reader.hpp"
 #include "solver/problem/variants.hpp"
 
 namespace frustum {
@@ -33,16 +32,8 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
     }
     return r;
   }
-  ProblemResult r{
-      .id = spec.id,
-      .kind = spec.kind,
-      .text = spec.text.map([&](const std::string& t) { return fill_text(t, spec.given_node); }),
-      .conventions = spec.conventions,
-      .ask = spec.ask,
-      .answers = {},
-      .derivation = {},
-      .error = {}};
-  try {
+  ProblemResult r = unsolved_result(spec);
+  solve_located(spec, file, r, [&] {
     const NumericResult n = [&] {
       auto solver = spec.info->solve_numeric(spec.given, precision);
       solver->run();
@@ -58,12 +49,7 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
       r.derivation.note("Backend", text);
       for (const NumericWarning& w : n.warnings) r.derivation.warn(w.title, w.text);
     }
-  } catch (const DomainError& e) {
-    GivenReader reader(spec.given_node, file, spec.field + ".given", {});
-    r.error = reader.locate(e.field(), e.what());
-  } catch (const std::exception& e) {
-    r.error = Diagnostic{spec.where, spec.field, std::string("cannot solve: ") + e.what()};
-  }
+  });
   return r;
 }
 

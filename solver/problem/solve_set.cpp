@@ -9,13 +9,32 @@
 
 namespace frustum {
 
-ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps) {
+ProblemResult unsolved_result(const ProblemSpec& spec) {
   ProblemResult r;
   r.id = spec.id;
   r.kind = spec.kind;
   r.text = spec.text.map([&](const std::string& t) { return fill_text(t, spec.given_node); });
   r.conventions = spec.conventions;
   r.ask = spec.ask;
+  return r;
+}
+
+void solve_located(const ProblemSpec& spec, const std::string& file, ProblemResult& r,
+                   const std::function<void()>& solve) {
+  try {
+    solve();
+  } catch (const DomainError& e) {
+    GivenReader reader(spec.given_node, file, spec.field + ".given", {});
+    r.error = reader.locate(e.field(), e.what());
+  } catch (const InputError& e) {
+    r.error = e.diagnostic();
+  } catch (const std::exception& e) {
+    r.error = Diagnostic{spec.where, spec.field, std::string("cannot solve: ") + e.what()};
+  }
+}
+
+ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps) {
+  ProblemResult r = unsolved_result(spec);
   if (spec.error) {
     r.error = spec.error;
     return r;
@@ -31,7 +50,7 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
           spec.field + ".text" + (mapping ? "." + std::string(to_string(lang)) : ""), *bad};
       return r;
     }
-  try {
+  solve_located(spec, file, r, [&] {
     // The conventions line only where a convention can change the answers.
     if (const std::string c = describe(spec.conventions, spec.info->uses); with_steps && !c.empty())
       r.derivation.note("Conventions", c);
@@ -47,17 +66,10 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
                                "the answer '" + name +
                                    "' is beyond the range of a double (about ±1.8e308): scale "
                                    "the given numbers down"};
-          return r;
+          return;
         }
     r.answers = std::move(answers);
-  } catch (const DomainError& e) {
-    GivenReader reader(spec.given_node, file, spec.field + ".given", {});
-    r.error = reader.locate(e.field(), e.what());
-  } catch (const InputError& e) {
-    r.error = e.diagnostic();
-  } catch (const std::exception& e) {
-    r.error = Diagnostic{spec.where, spec.field, std::string("cannot solve: ") + e.what()};
-  }
+  });
   return r;
 }
 

@@ -1,6 +1,7 @@
 // Solving loaded problems: each problem alone, so one failure never stops the rest.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -8,6 +9,15 @@
 #include "solver/problem/problem_set.hpp"
 
 namespace frustum {
+
+// What every solving run fills in first: the problem's id, kind, text (placeholders filled
+// with the given values), conventions and what it asks; no answers and no error yet.
+ProblemResult unsolved_result(const ProblemSpec& spec);
+
+// Runs `solve`, turning what it throws into r.error: a DomainError located at its given
+// field, an InputError where it says, anything else as "cannot solve: …" at the problem.
+void solve_located(const ProblemSpec& spec, const std::string& file, ProblemResult& r,
+                   const std::function<void()>& solve);
 
 // Solves one problem; with_steps = false takes the fast path without derivation text.
 ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps);

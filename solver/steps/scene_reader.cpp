@@ -67,11 +67,9 @@ Rgb read_color(GivenReader& r, const std::string& key) {
 // doubles are its entries rounded once).
 Mat4<Exact> read_steps(GivenReader& r, const std::string& key, const Conventions& c) {
   Mat4<Exact> m = Mat4<Exact>::Identity();
-  const std::size_t n = r.list_size(key, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    GivenReader s = r.item(
-        key, i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
-    m = Mat4<Exact>(read_transform_step(s, 3, c).matrix * m);
+  for (const TransformStep& t :
+       read_transform_steps(r, key, 3, c, {.min_count = 0, .max_count = kMaxGivenListItems})) {
+    m = Mat4<Exact>(t.matrix * m);
     for (Exact& e : m.reshaped()) e = canonical(e);
   }
   return m;

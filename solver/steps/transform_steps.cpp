@@ -76,13 +76,26 @@ MathText axis_angle_formula() {
       "0 & 0 & 0 & 1 \\end{bmatrix}");
 }
 
+// The steps' keys, in the order messages list them.
+std::vector<std::string> step_keys(bool with_shear) {
+  std::vector<std::string> keys = {"translate", "scale",    "rotate_x",
+                                   "rotate_y",  "rotate_z", "rotate"};
+  if (with_shear) keys.push_back("shear");
+  return keys;
+}
+
 }  // namespace
 
-TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c) {
+TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c, bool with_shear) {
+  const std::vector<std::string> allowed = step_keys(with_shear);
+  std::string listed, choices;  // "translate, …, shear" and "translate, …, rotate or shear"
+  for (std::size_t i = 0; i < allowed.size(); ++i) {
+    listed += (i ? ", " : "") + allowed[i];
+    choices += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + allowed[i];
+  }
   const std::vector<std::string> keys = s.keys();
   if (keys.size() != 1)
-    s.fail(keys.empty() ? "translate" : keys[1],
-           "each step is one of translate, scale, rotate_x, rotate_y, rotate_z, rotate, shear");
+    s.fail(keys.empty() ? "translate" : keys[1], "each step is one of " + listed);
   const std::string& k = keys[0];
   TransformStep t;
   const std::size_t n = static_cast<std::size_t>(dim);
@@ -137,7 +150,7 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
         t.note += " The axis is normalised first: (x, y, z) = " + vec(axis).unicode + " / " +
                   exact(norm(axis)).unicode + ".";
     }
-  } else if (k == "shear") {
+  } else if (k == "shear" && with_shear) {
     MatX<Exact> h = MatX<Exact>::Zero(dim, dim);
     if (dim == 2) {
       const std::vector<Exact> v = s.numbers(k, 2);
@@ -156,7 +169,7 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c)
     }
     t.matrix = shear(h);
   } else {
-    s.fail(k, "unknown step: use translate, scale, rotate_x, rotate_y, rotate_z, rotate or shear");
+    s.fail(k, "unknown step: use " + choices);
   }
   s.finish();
   t.matrix = canonical(t.matrix);
@@ -173,13 +186,13 @@ std::string wrong_order_feedback(Api api) {
 }
 
 std::vector<TransformStep> read_transform_steps(GivenReader& r, const std::string& key, int dim,
-                                                const Conventions& c) {
+                                                const Conventions& c,
+                                                const TransformStepList& list) {
   std::vector<TransformStep> out;
-  const std::size_t n = r.list_size(key, 1, kMaxTransformSteps);
+  const std::size_t n = r.list_size(key, list.min_count, list.max_count);
   for (std::size_t i = 0; i < n; ++i) {
-    GivenReader s = r.item(
-        key, i, {"translate", "scale", "rotate_x", "rotate_y", "rotate_z", "rotate", "shear"});
-    out.push_back(read_transform_step(s, dim, c));
+    GivenReader s = r.item(key, i, step_keys(list.shear));
+    out.push_back(read_transform_step(s, dim, c, list.shear));
   }
   return out;
 }

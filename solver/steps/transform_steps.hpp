@@ -3,6 +3,7 @@
 // (transform, render's scene objects).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -10,12 +11,11 @@
 
 #include "solver/derivation/derivation.hpp"
 #include "solver/derivation/math_text.hpp"
+#include "solver/input/given_reader.hpp"
 #include "solver/viewing/conventions.hpp"
 #include "solver/viewing/transforms.hpp"
 
 namespace frustum {
-
-class GivenReader;
 
 struct TransformStep {
   std::string title;  // "translate (2, 3)"
@@ -31,17 +31,26 @@ struct TransformStep {
   std::function<MatX<Exact>(const Exact&)> rotation = nullptr;
 };
 
+// Which transform steps a kind accepts: how many, and whether shear is one of them.
+struct TransformStepList {
+  std::size_t min_count = 1, max_count = kMaxTransformSteps;
+  bool shear = true;
+};
+
 // Reads the one-key mapping `s` ({translate: [2, 3]}) of dimension dim (2 or 3); angles in
 // the conventions' unit. Throws InputError located at the bad field.
-TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c);
+TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
+                                  bool with_shear = true);
 
 // The feedback for a composite multiplied in the wrong order (the order the steps are applied
 // in, for column vectors; the reverse, for DirectX's row vectors).
 std::string wrong_order_feedback(Api api);
 
-// Reads the list `key` of such steps (1 to kMaxTransformSteps of them).
+// Reads the list `key` of such steps (by default 1 to kMaxTransformSteps of them, shear
+// included).
 std::vector<TransformStep> read_transform_steps(GivenReader& r, const std::string& key, int dim,
-                                                const Conventions& c);
+                                                const Conventions& c,
+                                                const TransformStepList& list = {});
 
 // The composite `name` = Aₙ·…·A₁ (column form: the step applied first stands rightmost), with
 // one derivation step per Aᵢ and one for the composite, titled `title` (DirectX prints every
