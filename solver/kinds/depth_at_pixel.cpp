@@ -2,6 +2,8 @@
 // coordinates, which are left-handed (seed 001's warning), so its front normal is AC × AB:
 // A(0,0,6), B(3,0,9), C(0,3,9) → n = (9, 9, −9), n̂ = (1/√3, 1/√3, −1/√3), x + y − z = −6,
 // and the pixel (1, 1) has z = 8.
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "solver/geometry/predicates.hpp"
@@ -9,6 +11,7 @@
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_paths.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -276,8 +279,29 @@ struct DepthAtPixel {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  using namespace accuracy;
+  std::array<Point3, 3> t;
+  for (Point3& q : t) q = {decimal(rng, 0, 20), decimal(rng, 0, 20), decimal(rng, 1, 20)};
+  const Eigen::Vector2d pixel(static_cast<double>(rng.integer(0, 20)),
+                              static_cast<double>(rng.integer(0, 20)));
+  if (depth_condition(t[0].d(), t[1].d(), t[2].d(), pixel).kappa_z < kWellConditioned)
+    return fmt::format("{{triangle: {}, pixel: [{}, {}]}}", triangle_yaml(t), pixel.x(), pixel.y());
+  return std::nullopt;
+}
+
 }  // namespace
 
-KindInfo depth_at_pixel_kind() { return make_kind<DepthAtPixel>(); }
+KindInfo depth_at_pixel_kind() {
+  KindInfo k = make_kind<DepthAtPixel>();
+  k.order = 40;
+  k.doc_given =
+      "`triangle` (projection coordinates), `pixel` [xs, ys], optional `cross` (default `[AC, "
+      "AB]`, seed 001)";
+  k.doc_answers = "`normal`, `unit_normal`, `plane`, `z`, `inside`";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum
