@@ -204,29 +204,8 @@ struct DepthAtPixel {
                         "better found by "
                         "barycentric interpolation z = Σ λᵢ zᵢ.");
     }
-    // Inside the closed triangle: the three edge orientations agree (zero = on an edge).
-    const int s0 = orient2d(g.triangle[0], g.triangle[1], g.pixel);
-    const int s1 = orient2d(g.triangle[1], g.triangle[2], g.pixel);
-    const int s2 = orient2d(g.triangle[2], g.triangle[0], g.pixel);
-    const bool inside = inside_closed_triangle(s0, s1, s2);
+    const bool inside = inside_triangle_with_steps(g.triangle, g.pixel, steps);
     out.set("inside", Value::boolean(inside));
-    if (steps) {
-      const auto sign_text = [](int s) {
-        return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0");
-      };
-      steps
-          ->add("Is the pixel inside the projected triangle?",
-                math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",
-                     "\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, "
-                     "y_S),\\; "
-                     "\\operatorname{sign} E_{CA}(x_S, y_S)"),
-                sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
-                word(inside ? "inside" : "outside"))
-          .note =
-          inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."
-                 : "The signs differ, so the pixel is outside; the plane still gives its z.";
-      steps->yields("inside");
-    }
     return out;
   }
   // Default generator: a triangle with x, y in [0, 8] and z in [1, 12] and a lattice pixel
