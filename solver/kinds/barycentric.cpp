@@ -5,12 +5,13 @@
 // depth_at_pixel's (x, y on the screen, z the depth): λ uses x and y only.
 // A(0,0,6), B(3,0,9), C(0,3,9), pixel (1, 1): E = (3, 3, 3), total 9, λ = (1/3, 1/3, 1/3),
 // z = 8 (the plane method's z).
-#include <algorithm>
+#include <cmath>
 
 #include "solver/geometry/predicates.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -77,6 +78,80 @@ struct Barycentric {
     return out;
   }
 
+  [[noreturn]] static void refuse_flat() {
+    throw DomainError("triangle",
+                      "the triangle's projection has no area (its x, y are on one line): no "
+                      "barycentric coordinates");
+  }
+
+  // The numeric path (`solve --precision`, `bench accuracy`): the same formulas in the
+  // backend's scalar; the signs of the edge functions (inside, and a flat triangle) by the
+  // filtered predicate with its exact fallback, as depth_at_pixel's numeric path decides them.
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+      struct In {
+        std::array<Vec3<T>, 3> t;
+        Vec2<T> pixel;
+        Given exact;
+        InputRange range;
+      };
+      struct Out {
+        Vec3<T> edges, lambda;
+        T total{}, z{};
+        bool inside = false, inside_exact = false;
+      };
+      auto core = [](const In& in) {
+        Out o;
+        const auto& t = in.t;
+        const auto& et = in.exact.triangle;
+        const bool relative = in.range.relative();
+        const Vec2<T> c(t[2](0), t[2](1));
+        const Vec2<Exact> ec(et[2](0), et[2](1));
+        if (edge_sign(t[0], t[1], c, et[0], et[1], ec, relative).sign == 0) refuse_flat();
+        o.total = edge_function<T>(t[0], t[1], c);
+        o.edges =
+            Vec3<T>(edge_function<T>(t[1], t[2], in.pixel), edge_function<T>(t[2], t[0], in.pixel),
+                    edge_function<T>(t[0], t[1], in.pixel));
+        o.lambda = Vec3<T>(o.edges(0) / o.total, o.edges(1) / o.total, o.edges(2) / o.total);
+        o.z = o.lambda(0) * t[0](2) + o.lambda(1) * t[1](2) + o.lambda(2) * t[2](2);
+        int s[3];
+        for (int k = 0; k < 3; ++k) {
+          const int j = (k + 1) % 3;
+          const SignDecision d =
+              edge_sign(t[k], t[j], in.pixel, et[k], et[j], in.exact.pixel, relative);
+          s[k] = d.sign;
+          o.inside_exact = o.inside_exact || d.exact;
+        }
+        o.inside = inside_closed_triangle(s[0], s[1], s[2]);
+        return o;
+      };
+      auto report = [p](const In& in, const Out& o) {
+        NumericOut<T> out(p);
+        out.inputs(in.range);
+        out.vector("edges", o.edges);
+        out.scalar("total", o.total);
+        out.vector("lambda", o.lambda);
+        out.boolean("inside", o.inside);
+        out.scalar("z", o.z);
+        if (o.inside_exact) out.exact_decision("inside");
+        return out.take();
+      };
+      In in{{}, {}, g, {}};
+      const auto to_t = [&](const Exact& e) {
+        const T v = from_exact<T>(e);
+        if constexpr (!kIsExact<T>) {
+          if (!std::isfinite(v)) in.range.overflow = true;
+          if (std::isfinite(v) && !converts_relatively(e, v)) in.range.underflow = true;
+        }
+        return v;
+      };
+      for (int k = 0; k < 3; ++k)
+        in.t[k] = Vec3<T>(to_t(g.triangle[k](0)), to_t(g.triangle[k](1)), to_t(g.triangle[k](2)));
+      in.pixel = Vec2<T>(to_t(g.pixel(0)), to_t(g.pixel(1)));
+      return prepare(std::move(in), core, report);
+    });
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     const Vec3<Exact> e = edges(g);
     const Exact t = total(g);
@@ -99,10 +174,7 @@ struct Barycentric {
                  {}, exact(t));
       steps->yields("total");
     }
-    if (t.is_zero())
-      throw DomainError("triangle",
-                        "the triangle's projection has no area (its x, y are on one line): no "
-                        "barycentric coordinates");
+    if (t.is_zero()) refuse_flat();
     const Vec3<Exact> lambda(canonical(e(0) / t), canonical(e(1) / t), canonical(e(2) / t));
     out.set("lambda", Value::vector(lambda));
     if (steps) {
@@ -143,6 +215,24 @@ struct Barycentric {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given): a well-shaped triangle with two-decimal
+// vertices and a lattice pixel well inside it (every λᵢ ≥ 0.05), so that λ and z are well
+// conditioned.
+std::optional<std::string> accuracy_given(Rng& rng) {
+  const accuracy::TriangleAndPixel d = accuracy::triangle_and_pixel(rng);
+  std::vector<Eigen::Vector2d> v;
+  for (const accuracy::Point3& q : d.triangle) v.push_back(q.d().head<2>());
+  if (triangle_shape({{v[0].x(), v[0].y()}, {v[1].x(), v[1].y()}, {v[2].x(), v[2].y()}}) <
+      kMinTriangleShape)
+    return std::nullopt;
+  const double total = edge_function<double>(v[0], v[1], v[2]);
+  for (const double edge :
+       {edge_function<double>(v[1], v[2], d.pixel), edge_function<double>(v[2], v[0], d.pixel),
+        edge_function<double>(v[0], v[1], d.pixel)})
+    if (edge / total < 0.05) return std::nullopt;
+  return d.yaml();
+}
+
 }  // namespace
 
 KindInfo barycentric_kind() {
@@ -152,6 +242,7 @@ KindInfo barycentric_kind() {
   k.doc_answers =
       "`edges` (E_BC, E_CA, E_AB at the pixel), `total` (E_AB(C), twice the signed area), "
       "`lambda` (λ₀, λ₁, λ₂), `inside`, `z` (Σλᵢzᵢ, the plane method's z)";
+  k.accuracy_given = accuracy_given;
   return k;
 }
 

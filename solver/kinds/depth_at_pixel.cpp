@@ -2,8 +2,6 @@
 // coordinates, which are left-handed (seed 001's warning), so its front normal is AC × AB:
 // A(0,0,6), B(3,0,9), C(0,3,9) → n = (9, 9, −9), n̂ = (1/√3, 1/√3, −1/√3), x + y − z = −6,
 // and the pixel (1, 1) has z = 8.
-#include <fmt/format.h>
-
 #include <algorithm>
 
 #include "solver/geometry/predicates.hpp"
@@ -260,13 +258,10 @@ struct DepthAtPixel {
 
 // The accuracy bench's draw (KindInfo::accuracy_given).
 std::optional<std::string> accuracy_given(Rng& rng) {
-  using namespace accuracy;
-  std::array<Point3, 3> t;
-  for (Point3& q : t) q = {decimal(rng, 0, 20), decimal(rng, 0, 20), decimal(rng, 1, 20)};
-  const Eigen::Vector2d pixel(static_cast<double>(rng.integer(0, 20)),
-                              static_cast<double>(rng.integer(0, 20)));
-  if (depth_condition(t[0].d(), t[1].d(), t[2].d(), pixel).kappa_z < kWellConditioned)
-    return fmt::format("{{triangle: {}, pixel: [{}, {}]}}", triangle_yaml(t), pixel.x(), pixel.y());
+  const accuracy::TriangleAndPixel d = accuracy::triangle_and_pixel(rng);
+  const auto& t = d.triangle;
+  if (depth_condition(t[0].d(), t[1].d(), t[2].d(), d.pixel).kappa_z < accuracy::kWellConditioned)
+    return d.yaml();
   return std::nullopt;
 }
 

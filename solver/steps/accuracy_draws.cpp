@@ -32,4 +32,17 @@ std::optional<std::array<Point3, 3>> well_conditioned_triangle(Rng& rng) {
   return t;
 }
 
+TriangleAndPixel triangle_and_pixel(Rng& rng) {
+  TriangleAndPixel d;
+  for (Point3& q : d.triangle) q = {decimal(rng, 0, 20), decimal(rng, 0, 20), decimal(rng, 1, 20)};
+  d.pixel = Eigen::Vector2d(static_cast<double>(rng.integer(0, 20)),
+                            static_cast<double>(rng.integer(0, 20)));
+  return d;
+}
+
+std::string TriangleAndPixel::yaml() const {
+  return fmt::format("{{triangle: {}, pixel: [{}, {}]}}", triangle_yaml(triangle), pixel.x(),
+                     pixel.y());
+}
+
 }  // namespace frustum::accuracy

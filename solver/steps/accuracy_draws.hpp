@@ -32,4 +32,13 @@ std::string triangle_yaml(const std::array<Point3, 3>& t);
 // nullopt to draw again.
 std::optional<std::array<Point3, 3>> well_conditioned_triangle(Rng& rng);
 
+// A triangle with x, y in [0, 20] and z in [1, 20] (two decimals) and a lattice pixel in
+// [0, 20]², drawn in that order (depth_at_pixel, barycentric).
+struct TriangleAndPixel {
+  std::array<Point3, 3> triangle;
+  Eigen::Vector2d pixel;
+  std::string yaml() const;  // {triangle: …, pixel: […]}
+};
+TriangleAndPixel triangle_and_pixel(Rng& rng);
+
 }  // namespace frustum::accuracy
