@@ -103,7 +103,11 @@ int run_check(const std::string& path, const Output& o) {
   return errors == 0 ? 0 : 1;
 }
 
-int run_kinds(const Output& o) {
+int run_kinds(const Output& o, bool markdown) {
+  if (markdown) {
+    o.out << kinds_table_markdown(builtin_kinds());
+    return 0;
+  }
   for (const KindInfo& k : builtin_kinds().all()) {
     o.out << k.name << " — " << k.summary << "\n    given:";
     for (const std::string& f : k.given_fields) o.out << " " << f;

@@ -45,7 +45,7 @@ struct GradeOptions {
       roster;  // --roster FILE: whose each file is; the class `generate --roster` drew
 };
 int run_grade(const GradeOptions& options, const Output& o);
-int run_kinds(const Output& o);
+int run_kinds(const Output& o, bool markdown = false);
 // frustum generate (app/generate_command.cpp): variants for `students`, or `count` variants
 // from `seed`, written with their answer keys under out_dir.
 struct GenerateCommand {

@@ -153,7 +153,12 @@ int main(int argc, char** argv) {
        "frustum grade SET.yaml ANSWERS.yaml --gradescope results.json --lang ja"}));
 
   auto* kinds = cli.add_subcommand("kinds", "List the problem kinds and their answers");
-  kinds->footer(examples({"frustum kinds"}));
+  std::string kinds_format = "text";
+  kinds
+      ->add_option("--format", kinds_format,
+                   "text, or markdown: the README's kinds table, generated from the kinds")
+      ->check(CLI::IsMember({"text", "markdown"}));
+  kinds->footer(examples({"frustum kinds", "frustum kinds --format markdown"}));
 
   frustum::app::GenerateCommand gen_opt;
   auto* generate =
@@ -286,7 +291,7 @@ int main(int argc, char** argv) {
       grade_opt.lang = *frustum::parse_lang(grade_lang);
       return frustum::app::run_grade(grade_opt, out);
     }
-    if (kinds->parsed()) return frustum::app::run_kinds(out);
+    if (kinds->parsed()) return frustum::app::run_kinds(out, kinds_format == "markdown");
     if (generate->parsed()) {
       if (gen_opt.students.empty() && !gen_opt.roster && !gen_opt.seed) {
         std::cerr << "generate: give --student ID, --roster FILE or --seed N [--count K]\n";

@@ -11,7 +11,7 @@
 #include <set>
 
 #include "solver/derivation/svg.hpp"
-#include "solver/numeric/condition.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/problem/rng.hpp"
 
 namespace frustum::bench {
@@ -19,92 +19,16 @@ namespace frustum::bench {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// A generated problem is redrawn until its condition estimate is below this.
-constexpr double kWellConditioned = 50;
 constexpr int kMaxDraws = 1000;
 // In the plot, errors of 0 (the exact backend) sit on a floor row below every measured error.
 constexpr double kFloor = 1e-22;
 
-// A decimal in [lo, hi] with two decimals, written exactly ("-3.25"): most are not binary
-// fractions, so rounding the inputs is part of what is measured.
-std::string decimal(Rng& rng, int lo, int hi) {
-  const std::int64_t k = rng.integer(lo * 100, hi * 100);
-  return fmt::format("{}{}.{:02d}", k < 0 ? "-" : "", std::abs(k) / 100, std::abs(k) % 100);
-}
-double value(const std::string& s) { return std::stod(s); }
-
-struct Point3 {
-  std::string x, y, z;
-  Eigen::Vector3d d() const { return {value(x), value(y), value(z)}; }
-  std::string yaml() const { return "[" + x + ", " + y + ", " + z + "]"; }
-};
-Point3 point(Rng& rng, int lo, int hi) {
-  return {decimal(rng, lo, hi), decimal(rng, lo, hi), decimal(rng, lo, hi)};
-}
-
-std::string triangle_yaml(const std::array<Point3, 3>& t) {
-  return "[" + t[0].yaml() + ", " + t[1].yaml() + ", " + t[2].yaml() + "]";
-}
-
-// One `given` mapping of a well-conditioned problem of the kind.
-std::string draw_given(const std::string& kind, Rng& rng) {
-  for (int attempt = 0; attempt < kMaxDraws; ++attempt) {
-    if (kind == "vectors") {
-      const Point3 a = point(rng, -9, 9), b = point(rng, -9, 9);
-      const Eigen::Vector3d x = a.d(), y = b.d();
-      const double s = x.cross(y).norm() / (x.norm() * y.norm()),
-                   c = x.dot(y) / (x.norm() * y.norm());
-      if (x.norm() > 1 && y.norm() > 1 && s > 0.2 && std::abs(c) > 0.1)
-        return "{a: " + a.yaml() + ", b: " + b.yaml() + "}";
-    } else if (kind == "normal" || kind == "plane" || kind == "backface") {
-      const std::array<Point3, 3> t = {point(rng, -9, 9), point(rng, -9, 9), point(rng, -9, 9)};
-      const std::vector<Eigen::Vector3d> p = {t[0].d(), t[1].d(), t[2].d()};
-      if (normal_condition(p) > kWellConditioned) continue;
-      if (kind == "normal") return "{points: " + triangle_yaml(t) + "}";
-      const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
-      if (kind == "plane") {
-        if (std::abs(n.normalized().dot(p[0])) > 0.5) return "{points: " + triangle_yaml(t) + "}";
-        continue;
-      }
-      const Point3 eye = point(rng, -20, 20);
-      if (facing_condition(p, eye.d()) < kWellConditioned)
-        return "{points: " + triangle_yaml(t) + ", eye: " + eye.yaml() + "}";
-    } else if (kind == "depth_at_pixel") {
-      std::array<Point3, 3> t;
-      for (Point3& q : t) q = {decimal(rng, 0, 20), decimal(rng, 0, 20), decimal(rng, 1, 20)};
-      const Eigen::Vector2d pixel(static_cast<double>(rng.integer(0, 20)),
-                                  static_cast<double>(rng.integer(0, 20)));
-      if (depth_condition(t[0].d(), t[1].d(), t[2].d(), pixel).kappa_z < kWellConditioned)
-        return fmt::format("{{triangle: {}, pixel: [{}, {}]}}", triangle_yaml(t), pixel.x(),
-                           pixel.y());
-    } else if (kind == "project_point") {
-      const std::string projection = fmt::format(
-          "perspective: {{fovy: {}, aspect: {}, near: {}, far: {}}}, viewport: {{width: 640, "
-          "height: 480}}",
-          rng.integer(30, 90), rng.chance(1, 2) ? "1" : "\"4/3\"", decimal(rng, 1, 2),
-          rng.integer(50, 200));
-      if (rng.chance(1, 3)) {
-        const Point3 eye = {decimal(rng, -5, 5), decimal(rng, -5, 5), decimal(rng, 10, 20)};
-        return "{point: " + point(rng, -3, 3).yaml() + ", camera: {eye: " + eye.yaml() +
-               ", center: [0, 0, 0], up: [0, 1, 0]}, " + projection + "}";
-      }
-      const Point3 p = {decimal(rng, -5, 5), decimal(rng, -5, 5), decimal(rng, -40, -3)};
-      return "{point: " + p.yaml() + ", " + projection + "}";
-    } else if (kind == "transform") {
-      const Point3 axis = point(rng, -3, 3);
-      if (axis.d().norm() < 0.5) continue;
-      return fmt::format(
-          "{{dim: 3, steps: [{{translate: {}}}, {{rotate_z: {}}}, {{scale: [{}, {}, {}]}}, "
-          "{{rotate: {{axis: {}, angle: {}}}}}], points: [{}, {}]}}",
-          point(rng, -9, 9).yaml(), rng.integer(5, 85), decimal(rng, 1, 3), decimal(rng, 1, 3),
-          decimal(rng, 1, 3), axis.yaml(), rng.integer(5, 85), point(rng, -9, 9).yaml(),
-          point(rng, -9, 9).yaml());
-    } else if (kind == "viewport") {
-      return fmt::format("{{ndc: [{}, {}, {}], width: {}, height: {}}}", decimal(rng, -1, 1),
-                         decimal(rng, -1, 1), decimal(rng, -1, 1), rng.integer(100, 1920),
-                         rng.integer(100, 1080));
-    }
-  }
+// One `given` mapping of a well-conditioned problem of the kind: its accuracy_given, drawn
+// again until it accepts a draw.
+std::string draw_given(const KindInfo* kind, Rng& rng) {
+  if (kind && kind->accuracy_given)
+    for (int attempt = 0; attempt < kMaxDraws; ++attempt)
+      if (std::optional<std::string> given = kind->accuracy_given(rng)) return *given;
   return "{}";
 }
 
@@ -118,16 +42,18 @@ double median(std::vector<double> v) {
 }  // namespace
 
 std::vector<std::string> generated_kinds() {
-  return {"vectors",  "normal",        "plane",     "depth_at_pixel",
-          "backface", "project_point", "transform", "viewport"};
+  std::vector<std::string> out;
+  for (const KindInfo& k : builtin_kinds().all())
+    if (k.solve_numeric && k.accuracy_given) out.push_back(k.name);
+  return out;
 }
 
 ProblemSet generated_problems(const std::string& kind, int count, std::uint64_t seed) {
   Rng rng(seed ^ fnv1a64(kind));
   std::string yaml = "title: generated " + kind + "\nproblems:\n";
   for (int i = 0; i < count; ++i)
-    yaml +=
-        fmt::format("  - id: g{}\n    kind: {}\n    given: {}\n", i, kind, draw_given(kind, rng));
+    yaml += fmt::format("  - id: g{}\n    kind: {}\n    given: {}\n", i, kind,
+                        draw_given(builtin_kinds().find(kind), rng));
   return load_problem_set_from_string(yaml, "generated-" + kind + ".yaml");
 }
 

@@ -26,7 +26,8 @@ struct AccuracyRow {
   std::size_t wrong = 0;  // cases with a wrong decision: a bool, word or null that differs
 };
 
-// The kinds the generator knows (every kind with a numeric path).
+// The kinds the generator knows: every kind with a numeric path and an accuracy generator
+// (KindInfo::accuracy_given, in its kind file), in the registry's order.
 std::vector<std::string> generated_kinds();
 
 // `count` well-conditioned problems of `kind`, drawn with splitmix64 from `seed`, as a

@@ -459,6 +459,10 @@ constexpr Phrase kPhrases[] = {
      "(2次元のウィンドウまたは3次元の視体積)",
      "отсечение многоугольника алгоритмом Сазерленда — Ходжмана (Sutherland–Hodgman): окном 2D или "
      "объёмом 3D"},
+    {"barycentric coordinates of a pixel in a projected triangle, and its interpolated z",
+     "投影された三角形での画素の重心座標と, 補間した z 値",
+     "барицентрические координаты пикселя в спроецированном треугольнике и интерполированное "
+     "значение z"},
     {"z of a pixel inside a projected triangle by the plane method",
      "平面の方程式による, 投影された三角形の内部の画素の z 値",
      "значение z пикселя внутри спроецированного треугольника методом уравнения плоскости"},

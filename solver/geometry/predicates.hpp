@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -120,6 +121,38 @@ SignDecision edge_sign(const Eigen::Matrix<T, NA, 1>& a, const Eigen::Matrix<T, 
 // A point is in the closed triangle when its three edge signs agree (0 = on an edge).
 inline bool inside_closed_triangle(int s0, int s1, int s2) {
   return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+}
+
+// Whether a triangle is edge-on seen along z: c = ±E(A, B, C) over x and y (0: edge-on).
+template <typename T>
+SignDecision edge_on_sign(const std::array<Vec3<T>, 3>& t,
+                          const std::array<Vec3<Exact>, 3>& exact_t, bool inputs_relative) {
+  return edge_sign(t[0], t[1], Vec2<T>(t[2].x(), t[2].y()), exact_t[0], exact_t[1],
+                   Vec2<Exact>(exact_t[2].x(), exact_t[2].y()), inputs_relative);
+}
+
+// The signs of E_AB, E_BC, E_CA at the pixel, and whether it is inside the closed triangle (the
+// three signs agree, 0 = on an edge).
+struct PixelSides {
+  std::array<int, 3> sign{};
+  bool inside = false;
+  bool exact = false;  // the exact fallback decided some edge sign
+};
+
+template <typename T>
+PixelSides pixel_sides(const std::array<Vec3<T>, 3>& t, const Vec2<T>& pixel,
+                       const std::array<Vec3<Exact>, 3>& exact_t, const Vec2<Exact>& exact_pixel,
+                       bool inputs_relative) {
+  PixelSides out;
+  for (int k = 0; k < 3; ++k) {
+    const int j = (k + 1) % 3;
+    const SignDecision d =
+        edge_sign(t[k], t[j], pixel, exact_t[k], exact_t[j], exact_pixel, inputs_relative);
+    out.sign[k] = d.sign;
+    out.exact = out.exact || d.exact;
+  }
+  out.inside = inside_closed_triangle(out.sign[0], out.sign[1], out.sign[2]);
+  return out;
 }
 
 // ---- Facing ----

@@ -7,6 +7,7 @@
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -239,8 +240,26 @@ struct Backface {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  using namespace accuracy;
+  const auto t = well_conditioned_triangle(rng);
+  if (!t) return std::nullopt;
+  const Point3 eye = point(rng, -20, 20);
+  if (facing_condition({(*t)[0].d(), (*t)[1].d(), (*t)[2].d()}, eye.d()) < kWellConditioned)
+    return "{points: " + triangle_yaml(*t) + ", eye: " + eye.yaml() + "}";
+  return std::nullopt;
+}
+
 }  // namespace
 
-KindInfo backface_kind() { return make_kind<Backface>(); }
+KindInfo backface_kind() {
+  KindInfo k = make_kind<Backface>();
+  k.order = 50;
+  k.doc_given = "`points`, `eye`";
+  k.doc_answers = "`normal`, `view` (p_eye − p₀), `df`, `facing` (`front`/`back`/`edge_on`)";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum

@@ -208,6 +208,13 @@ struct ClipLine {
 
 }  // namespace
 
-KindInfo clip_line_kind() { return make_kind<ClipLine>(); }
+KindInfo clip_line_kind() {
+  KindInfo k = make_kind<ClipLine>();
+  k.order = 130;
+  k.doc_given =
+      "`p`, `q`, `window` {xmin, xmax, ymin, ymax} (2D) or `volume` (3D, default the NDC cube)";
+  k.doc_answers = "`outcode_p`, `outcode_q`, `accept`, `reject`, `clipped`";
+  return k;
+}
 
 }  // namespace frustum

@@ -126,6 +126,12 @@ struct ClipPolygon {
 
 }  // namespace
 
-KindInfo clip_polygon_kind() { return make_kind<ClipPolygon>(); }
+KindInfo clip_polygon_kind() {
+  KindInfo k = make_kind<ClipPolygon>();
+  k.order = 140;
+  k.doc_given = "`points`, `window` or `volume`";
+  k.doc_answers = "`clipped`";
+  return k;
+}
 
 }  // namespace frustum

@@ -10,6 +10,7 @@
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -19,41 +20,8 @@ namespace frustum {
 
 namespace {
 
-// The decisions of depth_at_pixel in any scalar, each by the filtered predicate of
-// predicates.hpp (the exact sign in the exact backend; `t` and `pixel` were rounded from
-// `exact_t` and `exact_pixel`), shared by the exact solve and the numeric path.
-
-// Whether the triangle is edge-on: c = ±E(A, B, C) over x and y (0: edge-on).
-template <typename T>
-SignDecision edge_on_sign(const std::array<Vec3<T>, 3>& t,
-                          const std::array<Vec3<Exact>, 3>& exact_t, bool inputs_relative) {
-  return edge_sign(t[0], t[1], Vec2<T>(t[2].x(), t[2].y()), exact_t[0], exact_t[1],
-                   Vec2<Exact>(exact_t[2].x(), exact_t[2].y()), inputs_relative);
-}
-
-// The signs of E_AB, E_BC, E_CA at the pixel, and whether it is inside the closed triangle (the
-// three signs agree, 0 = on an edge).
-struct PixelSides {
-  std::array<int, 3> sign{};
-  bool inside = false;
-  bool exact = false;  // the exact fallback decided some edge sign
-};
-
-template <typename T>
-PixelSides pixel_sides(const std::array<Vec3<T>, 3>& t, const Vec2<T>& pixel,
-                       const std::array<Vec3<Exact>, 3>& exact_t, const Vec2<Exact>& exact_pixel,
-                       bool inputs_relative) {
-  PixelSides out;
-  for (int k = 0; k < 3; ++k) {
-    const int j = (k + 1) % 3;
-    const SignDecision d =
-        edge_sign(t[k], t[j], pixel, exact_t[k], exact_t[j], exact_pixel, inputs_relative);
-    out.sign[k] = d.sign;
-    out.exact = out.exact || d.exact;
-  }
-  out.inside = inside_closed_triangle(out.sign[0], out.sign[1], out.sign[2]);
-  return out;
-}
+// The decisions (edge-on, the pixel's edge signs) are geometry's edge_on_sign and pixel_sides,
+// shared by the exact solve, the numeric path and the barycentric kind.
 
 std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exact>, 3>& triangle,
                                                       const Vec2<Exact>& pixel,
@@ -315,28 +283,8 @@ struct DepthAtPixel {
                         "better found by "
                         "barycentric interpolation z = Σ λᵢ zᵢ.");
     }
-    // Inside the closed triangle: the three edge orientations agree (zero = on an edge).
-    const PixelSides sides = pixel_sides(g.triangle, g.pixel, g.triangle, g.pixel, true);
-    const int s0 = sides.sign[0], s1 = sides.sign[1], s2 = sides.sign[2];
-    const bool inside = sides.inside;
+    const bool inside = inside_triangle_with_steps(g.triangle, g.pixel, steps);
     out.set("inside", Value::boolean(inside));
-    if (steps) {
-      const auto sign_text = [](int s) {
-        return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0");
-      };
-      steps
-          ->add("Is the pixel inside the projected triangle?",
-                math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",
-                     "\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, "
-                     "y_S),\\; "
-                     "\\operatorname{sign} E_{CA}(x_S, y_S)"),
-                sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
-                word(inside ? "inside" : "outside"))
-          .note =
-          inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."
-                 : "The signs differ, so the pixel is outside; the plane still gives its z.";
-      steps->yields("inside");
-    }
     return out;
   }
   // Default generator: a triangle with x, y in [0, 8] and z in [1, 12] and a lattice pixel
@@ -388,8 +336,26 @@ struct DepthAtPixel {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  const accuracy::TriangleAndPixel d = accuracy::triangle_and_pixel(rng);
+  const auto& t = d.triangle;
+  if (depth_condition(t[0].d(), t[1].d(), t[2].d(), d.pixel).kappa_z < accuracy::kWellConditioned)
+    return d.yaml();
+  return std::nullopt;
+}
+
 }  // namespace
 
-KindInfo depth_at_pixel_kind() { return make_kind<DepthAtPixel>(); }
+KindInfo depth_at_pixel_kind() {
+  KindInfo k = make_kind<DepthAtPixel>();
+  k.order = 40;
+  k.doc_given =
+      "`triangle` (projection coordinates), `pixel` [xs, ys], optional `cross` (default `[AC, "
+      "AB]`, seed 001)";
+  k.doc_answers = "`normal`, `unit_normal`, `plane`, `z`, `inside`";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum

@@ -230,6 +230,12 @@ struct DepthSort {
 
 }  // namespace
 
-KindInfo depth_sort_kind() { return make_kind<DepthSort>(); }
+KindInfo depth_sort_kind() {
+  KindInfo k = make_kind<DepthSort>();
+  k.order = 180;
+  k.doc_given = "`polygons`, `eye` or `view_direction`";
+  k.doc_answers = "`centroids`, `depths`, `order`, `conflicts`";
+  return k;
+}
 
 }  // namespace frustum

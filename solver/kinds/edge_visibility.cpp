@@ -342,6 +342,12 @@ struct EdgeVisibility {
 
 }  // namespace
 
-KindInfo edge_visibility_kind() { return make_kind<EdgeVisibility>(); }
+KindInfo edge_visibility_kind() {
+  KindInfo k = make_kind<EdgeVisibility>();
+  k.order = 170;
+  k.doc_given = "`mesh` {`vertices`, `faces`} or `solid` (+ `transform`), `eye`";
+  k.doc_answers = "`faces`, `edges`, `silhouette`, `hidden`, `convex`, `backface_sufficient`";
+  return k;
+}
 
 }  // namespace frustum

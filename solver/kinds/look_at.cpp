@@ -113,6 +113,12 @@ struct LookAt {
 
 }  // namespace
 
-KindInfo look_at_kind() { return make_kind<LookAt>(); }
+KindInfo look_at_kind() {
+  KindInfo k = make_kind<LookAt>();
+  k.order = 70;
+  k.doc_given = "`eye`, `center`, `up`, optional `points`";
+  k.doc_answers = "`matrix`, `points`";
+  return k;
+}
 
 }  // namespace frustum

@@ -3,6 +3,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -149,8 +150,24 @@ struct Normal {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  const auto t = accuracy::well_conditioned_triangle(rng);
+  if (!t) return std::nullopt;
+  return "{points: " + accuracy::triangle_yaml(*t) + "}";
+}
+
 }  // namespace
 
-KindInfo normal_kind() { return make_kind<Normal>(); }
+KindInfo normal_kind() {
+  KindInfo k = make_kind<Normal>();
+  k.order = 20;
+  k.doc_given =
+      "`points` (counter-clockwise = front), or `A`, `B`, `C` with optional `cross: [AC, AB]` "
+      "(default `[AB, AC]`)";
+  k.doc_answers = "`normal`, `unit_normal`";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum

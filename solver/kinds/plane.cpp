@@ -3,6 +3,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -201,8 +202,26 @@ struct Plane {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  const auto t = accuracy::well_conditioned_triangle(rng);
+  if (!t) return std::nullopt;
+  const Eigen::Vector3d p0 = (*t)[0].d(), p1 = (*t)[1].d(), p2 = (*t)[2].d();
+  const Eigen::Vector3d n = (p1 - p0).cross(p2 - p0);
+  if (std::abs(n.normalized().dot(p0)) > 0.5)
+    return "{points: " + accuracy::triangle_yaml(*t) + "}";
+  return std::nullopt;
+}
+
 }  // namespace
 
-KindInfo plane_kind() { return make_kind<Plane>(); }
+KindInfo plane_kind() {
+  KindInfo k = make_kind<Plane>();
+  k.order = 30;
+  k.doc_given = "`points` (3+), or `point` + `normal`";
+  k.doc_answers = "`normal`, `unit_normal`, `plane` ([a, b, c, d] of ax + by + cz = d), `distance`";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum

@@ -12,6 +12,7 @@
 #include "solver/numeric/ranged.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/steps/transform_steps.hpp"
@@ -562,8 +563,35 @@ struct ProjectPoint {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  using namespace accuracy;
+  const std::string projection = fmt::format(
+      "perspective: {{fovy: {}, aspect: {}, near: {}, far: {}}}, viewport: {{width: 640, "
+      "height: 480}}",
+      rng.integer(30, 90), rng.chance(1, 2) ? "1" : "\"4/3\"", decimal(rng, 1, 2),
+      rng.integer(50, 200));
+  if (rng.chance(1, 3)) {
+    const Point3 eye = {decimal(rng, -5, 5), decimal(rng, -5, 5), decimal(rng, 10, 20)};
+    return "{point: " + point(rng, -3, 3).yaml() + ", camera: {eye: " + eye.yaml() +
+           ", center: [0, 0, 0], up: [0, 1, 0]}, " + projection + "}";
+  }
+  const Point3 p = {decimal(rng, -5, 5), decimal(rng, -5, 5), decimal(rng, -40, -3)};
+  return "{point: " + p.yaml() + ", " + projection + "}";
+}
+
 }  // namespace
 
-KindInfo project_point_kind() { return make_kind<ProjectPoint>(); }
+KindInfo project_point_kind() {
+  KindInfo k = make_kind<ProjectPoint>();
+  k.order = 90;
+  k.doc_given =
+      "`point` (view, or world with `camera` {eye, center, up}, or the object's own with `model`: "
+      "transform steps, first applied first, M = M_parent·M_object), a projection, `viewport` "
+      "{`width`, `height`}";
+  k.doc_answers = "`clip`, `ndc`, `window`, `inside`";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum

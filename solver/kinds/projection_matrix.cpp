@@ -78,6 +78,14 @@ struct ProjectionMatrix {
 
 }  // namespace
 
-KindInfo projection_matrix_kind() { return make_kind<ProjectionMatrix>(); }
+KindInfo projection_matrix_kind() {
+  KindInfo k = make_kind<ProjectionMatrix>();
+  k.order = 80;
+  k.doc_given =
+      "`perspective` {`fovy`, `aspect`, `near`, `far`}, `frustum` or `ortho` {`left`, `right`, "
+      "`bottom`, `top`, `near`, `far`}";
+  k.doc_answers = "`matrix`";
+  return k;
+}
 
 }  // namespace frustum

@@ -105,6 +105,12 @@ struct ProjectionPlane {
 
 }  // namespace
 
-KindInfo projection_plane_kind() { return make_kind<ProjectionPlane>(); }
+KindInfo projection_plane_kind() {
+  KindInfo k = make_kind<ProjectionPlane>();
+  k.order = 100;
+  k.doc_given = "`window` [w, h], `fov`, `point`";
+  k.doc_answers = "`plane_z`, `projected`";
+  return k;
+}
 
 }  // namespace frustum

@@ -264,6 +264,12 @@ struct Render {
 
 }  // namespace
 
-KindInfo render_kind() { return make_kind<Render>(); }
+KindInfo render_kind() {
+  KindInfo k = make_kind<Render>();
+  k.order = 190;
+  k.doc_given = "`scene`, `pixels`";
+  k.doc_answers = "`pixels` (colour and depth per queried pixel)";
+  return k;
+}
 
 }  // namespace frustum

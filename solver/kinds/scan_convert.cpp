@@ -159,6 +159,12 @@ struct ScanConvert {
 
 }  // namespace
 
-KindInfo scan_convert_kind() { return make_kind<ScanConvert>(); }
+KindInfo scan_convert_kind() {
+  KindInfo k = make_kind<ScanConvert>();
+  k.order = 150;
+  k.doc_given = "`triangle` (window coordinates)";
+  k.doc_answers = "`pixels`";
+  return k;
+}
 
 }  // namespace frustum

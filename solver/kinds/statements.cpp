@@ -151,6 +151,14 @@ struct Statements {
 
 }  // namespace
 
-KindInfo statements_kind() { return make_kind<Statements>(); }
+KindInfo statements_kind() {
+  KindInfo k = make_kind<Statements>();
+  k.order = 200;
+  k.doc_given =
+      "`statements`: a list of {`text`, `truth` (true/false, ○/×, yes/no, 正しい/誤り, "
+      "верно/неверно), optional `reason`} — the instructor's key";
+  k.doc_answers = "`true_statements`";
+  return k;
+}
 
 }  // namespace frustum

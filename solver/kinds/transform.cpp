@@ -5,6 +5,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/steps/transform_steps.hpp"
@@ -267,8 +268,30 @@ struct Transform {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  using namespace accuracy;
+  const Point3 axis = point(rng, -3, 3);
+  if (axis.d().norm() < 0.5) return std::nullopt;
+  return fmt::format(
+      "{{dim: 3, steps: [{{translate: {}}}, {{rotate_z: {}}}, {{scale: [{}, {}, {}]}}, "
+      "{{rotate: {{axis: {}, angle: {}}}}}], points: [{}, {}]}}",
+      point(rng, -9, 9).yaml(), rng.integer(5, 85), decimal(rng, 1, 3), decimal(rng, 1, 3),
+      decimal(rng, 1, 3), axis.yaml(), rng.integer(5, 85), point(rng, -9, 9).yaml(),
+      point(rng, -9, 9).yaml());
+}
+
 }  // namespace
 
-KindInfo transform_kind() { return make_kind<Transform>(); }
+KindInfo transform_kind() {
+  KindInfo k = make_kind<Transform>();
+  k.order = 60;
+  k.doc_given =
+      "`dim` (2/3), `steps` (`translate`, `scale`, `rotate_x/y/z`, `rotate` (2D angle or 3D "
+      "{`axis`, `angle`}), `shear`), `points`";
+  k.doc_answers = "`matrix` (first step applied first: M = A₃A₂A₁), `points`, `inverse`";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum

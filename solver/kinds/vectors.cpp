@@ -4,6 +4,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -327,8 +328,27 @@ struct Vectors {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  using namespace accuracy;
+  const Point3 a = point(rng, -9, 9), b = point(rng, -9, 9);
+  const Eigen::Vector3d x = a.d(), y = b.d();
+  const double s = x.cross(y).norm() / (x.norm() * y.norm()), c = x.dot(y) / (x.norm() * y.norm());
+  if (x.norm() > 1 && y.norm() > 1 && s > 0.2 && std::abs(c) > 0.1)
+    return "{a: " + a.yaml() + ", b: " + b.yaml() + "}";
+  return std::nullopt;
+}
+
 }  // namespace
 
-KindInfo vectors_kind() { return make_kind<Vectors>(); }
+KindInfo vectors_kind() {
+  KindInfo k = make_kind<Vectors>();
+  k.order = 10;
+  k.doc_given = "`a`, `b`";
+  k.doc_answers =
+      "`dot`, `cross`, `area`, `sin`, `cos`, `angle` (in the set's angle unit), `unit_normal`";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum

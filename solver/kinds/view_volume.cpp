@@ -145,6 +145,12 @@ struct ViewVolume {
 
 }  // namespace
 
-KindInfo view_volume_kind() { return make_kind<ViewVolume>(); }
+KindInfo view_volume_kind() {
+  KindInfo k = make_kind<ViewVolume>();
+  k.order = 110;
+  k.doc_given = "`d`, `a`, `b`, `z_min`, `z_max`, `point` (seed 002)";
+  k.doc_answers = "`scale_matrix`, `perspective_matrix`, `point`";
+  return k;
+}
 
 }  // namespace frustum

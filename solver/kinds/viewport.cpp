@@ -1,7 +1,10 @@
 // The viewport transform: NDC to window coordinates and depth in [0, 1] (seed 000 9.6).
+#include <fmt/format.h>
+
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/steps/viewing_steps.hpp"
 
@@ -82,8 +85,23 @@ struct Viewport {
   }
 };
 
+// The accuracy bench's draw (KindInfo::accuracy_given).
+std::optional<std::string> accuracy_given(Rng& rng) {
+  using accuracy::decimal;
+  return fmt::format("{{ndc: [{}, {}, {}], width: {}, height: {}}}", decimal(rng, -1, 1),
+                     decimal(rng, -1, 1), decimal(rng, -1, 1), rng.integer(100, 1920),
+                     rng.integer(100, 1080));
+}
+
 }  // namespace
 
-KindInfo viewport_kind() { return make_kind<Viewport>(); }
+KindInfo viewport_kind() {
+  KindInfo k = make_kind<Viewport>();
+  k.order = 120;
+  k.doc_given = "`ndc`, `width`, `height`";
+  k.doc_answers = "`window`";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
 
 }  // namespace frustum

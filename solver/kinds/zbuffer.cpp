@@ -255,6 +255,12 @@ struct ZBuffer {
 
 }  // namespace
 
-KindInfo zbuffer_kind() { return make_kind<ZBuffer>(); }
+KindInfo zbuffer_kind() {
+  KindInfo k = make_kind<ZBuffer>();
+  k.order = 160;
+  k.doc_given = "`size` [w, h] (at most 256 × 256), `polygons` (each with `label`)";
+  k.doc_answers = "`frame`, `depth`, `steps`";
+  return k;
+}
 
 }  // namespace frustum

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <any>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -128,6 +129,18 @@ struct KindInfo {
   // Nothing to draw (K::kFixed): the instructor's own statements and key. Variants keep such a
   // problem as written, and `vary:` on it is an error.
   bool fixed = false;
+
+  // Where the kind stands in `frustum kinds`, the README's table and every other listing of
+  // kinds (smaller first): set in the kind's `<name>_kind()`; the registry sorts by it.
+  int order = 0;
+  // The README's kinds table (Markdown): what `given` takes and what the answers are. The
+  // table is generated from these (kinds_table_markdown) and tests/kinds_table_test.cpp
+  // checks README.md against it.
+  std::string doc_given;
+  std::string doc_answers;
+  // Optional. One draw of a well-conditioned `given` for `frustum bench accuracy`, as a YAML
+  // flow mapping, or nullopt to draw again (kinds with solve_numeric only).
+  std::function<std::optional<std::string>(Rng&)> accuracy_given;
 
   const AnswerSpec* answer(const std::string& name) const;
 };

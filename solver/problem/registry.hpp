@@ -23,26 +23,11 @@ class Registry {
 // Every built-in kind.
 const Registry& builtin_kinds();
 
-// One function per kind file, called by builtin_kinds().
-KindInfo vectors_kind();
-KindInfo normal_kind();
-KindInfo plane_kind();
-KindInfo depth_at_pixel_kind();
-KindInfo backface_kind();
-KindInfo transform_kind();
-KindInfo look_at_kind();
-KindInfo projection_matrix_kind();
-KindInfo project_point_kind();
-KindInfo projection_plane_kind();
-KindInfo view_volume_kind();
-KindInfo viewport_kind();
-KindInfo clip_line_kind();
-KindInfo clip_polygon_kind();
-KindInfo scan_convert_kind();
-KindInfo zbuffer_kind();
-KindInfo edge_visibility_kind();
-KindInfo depth_sort_kind();
-KindInfo render_kind();
-KindInfo statements_kind();
+// Every solver/kinds/<name>.cpp defines `KindInfo <name>_kind()`; registry.cpp declares and
+// calls them all from the list CMake makes of those files (kinds_list.inc in the build tree),
+// in the order of KindInfo::order. A kind file without its function fails to link.
+
+// The README's kinds table (Markdown), one row per kind from KindInfo::doc_given/doc_answers.
+std::string kinds_table_markdown(const Registry& registry);
 
 }  // namespace frustum

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "solver/geometry/polygon_normal.hpp"
+#include "solver/geometry/predicates.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
@@ -270,6 +271,35 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
                    "Ill-conditioned normal", "The normal's direction");
   }
   return n;
+}
+
+}  // namespace frustum
+
+namespace frustum {
+
+bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
+                                const Vec2<Exact>& pixel, Derivation* steps) {
+  const PixelSides sides = pixel_sides(triangle, pixel, triangle, pixel, true);
+  const int s0 = sides.sign[0], s1 = sides.sign[1], s2 = sides.sign[2];
+  const bool inside = sides.inside;
+  if (steps) {
+    const auto sign_text = [](int s) {
+      return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0");
+    };
+    steps
+        ->add("Is the pixel inside the projected triangle?",
+              math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",
+                   "\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, "
+                   "y_S),\\; "
+                   "\\operatorname{sign} E_{CA}(x_S, y_S)"),
+              sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
+              word(inside ? "inside" : "outside"))
+        .note =
+        inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."
+               : "The signs differ, so the pixel is outside; the plane still gives its z.";
+    steps->yields("inside");
+  }
+  return inside;
 }
 
 }  // namespace frustum

@@ -26,6 +26,12 @@ Polygon3<Exact> reversed_winding(const Polygon3<Exact>& p);
 Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::string& field,
                                       Derivation* steps, bool left_handed = false);
 
+// Whether the pixel is inside the closed triangle, from the x, y of its vertices: the signs of
+// the edge functions E_AB, E_BC, E_CA at the pixel agree (0 = on an edge). Records the step
+// when `steps` is set (depth_at_pixel, barycentric).
+bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
+                                const Vec2<Exact>& pixel, Derivation* steps);
+
 // The plane n·p = d scaled the way a teacher writes it: integer coefficients without a common
 // factor when possible (x + y − z = −6), the orientation of n kept.
 std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d);

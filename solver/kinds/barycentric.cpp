@@ -1,0 +1,241 @@
+// Barycentric coordinates of a pixel in a projected triangle, the other way to z-buffer depth
+// than the plane method: the three edge functions at the pixel are twice the signed areas of
+// the triangles PBC, PCA, PAB, their sum is twice the signed area of ABC, λᵢ is each one's
+// share, and z = λ₀z_A + λ₁z_B + λ₂z_C. The triangle is in projection coordinates like
+// depth_at_pixel's (x, y on the screen, z the depth): λ uses x and y only.
+// A(0,0,6), B(3,0,9), C(0,3,9), pixel (1, 1): E = (3, 3, 3), total 9, λ = (1/3, 1/3, 1/3),
+// z = 8 (the plane method's z).
+#include <cmath>
+
+#include "solver/geometry/predicates.hpp"
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/accuracy_draws.hpp"
+#include "solver/steps/kind_steps.hpp"
+#include "solver/util/diagnostic.hpp"
+
+namespace frustum {
+
+namespace {
+
+struct Barycentric {
+  static constexpr const char* kName = "barycentric";
+  static constexpr const char* kSummary =
+      "barycentric coordinates of a pixel in a projected triangle, and its interpolated z";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
+  struct Given {
+    std::array<Vec3<Exact>, 3> triangle;
+    Vec2<Exact> pixel;
+  };
+  static std::vector<std::string> given_fields() { return {"triangle", "pixel"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{"edges", AnswerKind::Vector, {}, {}},
+            {"total", AnswerKind::Scalar, {}, {}},
+            {"lambda", AnswerKind::Vector, {"edges", "total"}, {}},
+            {"inside", AnswerKind::Bool, {"edges"}, {"inside", "outside"}},
+            {"z", AnswerKind::Scalar, {"lambda"}, {}}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions&) {
+    Given g;
+    const Polygon3<Exact> t = r.points("triangle", 3, 3);
+    g.triangle = {t[0], t[1], t[2]};
+    g.pixel = r.vector<2>("pixel");
+    return g;
+  }
+
+  // E_BC(P), E_CA(P), E_AB(P): the edge opposite each vertex, so that λᵢ belongs to vertex i.
+  static Vec3<Exact> edges(const Given& g) {
+    const auto& t = g.triangle;
+    return {canonical(edge_function<Exact>(t[1], t[2], g.pixel)),
+            canonical(edge_function<Exact>(t[2], t[0], g.pixel)),
+            canonical(edge_function<Exact>(t[0], t[1], g.pixel))};
+  }
+  static Exact total(const Given& g) {
+    const Vec2<Exact> c(g.triangle[2](0), g.triangle[2](1));
+    return canonical(edge_function<Exact>(g.triangle[0], g.triangle[1], c));
+  }
+  static Exact interpolated_z(const Given& g, const Vec3<Exact>& lambda) {
+    return canonical(lambda(0) * g.triangle[0](2) + lambda(1) * g.triangle[1](2) +
+                     lambda(2) * g.triangle[2](2));
+  }
+
+  // Error carried forward: λ from the student's edge values and total, z from their λ.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    std::optional<Vec3<Exact>> e;
+    if (const auto v = carried(student, "edges", 3)) e = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
+    Exact t = total(g);
+    if (const Value* s = student.find("total"); s && s->exact.size() == 1) t = s->exact[0];
+    std::optional<Vec3<Exact>> lambda;
+    if (e && !canonical(t).is_zero())
+      lambda = Vec3<Exact>(canonical((*e)(0) / t), canonical((*e)(1) / t), canonical((*e)(2) / t));
+    if (lambda) out.set("lambda", Value::vector(*lambda));
+    if (const auto v = carried(student, "lambda", 3))
+      lambda = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
+    if (lambda) out.set("z", Value::scalar(interpolated_z(g, *lambda)));
+    return out;
+  }
+
+  [[noreturn]] static void refuse_flat() {
+    throw DomainError("triangle",
+                      "the triangle's projection has no area (its x, y are on one line): no "
+                      "barycentric coordinates");
+  }
+
+  // The numeric path (`solve --precision`, `bench accuracy`): the same formulas in the
+  // backend's scalar; the signs of the edge functions (inside, and a flat triangle) by the
+  // filtered predicate with its exact fallback, as depth_at_pixel's numeric path decides them.
+  static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
+      struct In {
+        std::array<Vec3<T>, 3> t;
+        Vec2<T> pixel;
+        Given exact;
+        InputRange range;
+      };
+      struct Out {
+        Vec3<T> edges, lambda;
+        T total{}, z{};
+        bool inside = false, inside_exact = false;
+      };
+      auto core = [](const In& in) {
+        Out o;
+        const auto& t = in.t;
+        const auto& et = in.exact.triangle;
+        const bool relative = in.range.relative();
+        if (edge_on_sign(t, et, relative).sign == 0) refuse_flat();
+        o.total = edge_function<T>(t[0], t[1], Vec2<T>(t[2](0), t[2](1)));
+        o.edges =
+            Vec3<T>(edge_function<T>(t[1], t[2], in.pixel), edge_function<T>(t[2], t[0], in.pixel),
+                    edge_function<T>(t[0], t[1], in.pixel));
+        o.lambda = Vec3<T>(o.edges(0) / o.total, o.edges(1) / o.total, o.edges(2) / o.total);
+        o.z = o.lambda(0) * t[0](2) + o.lambda(1) * t[1](2) + o.lambda(2) * t[2](2);
+        const PixelSides sides = pixel_sides(t, in.pixel, et, in.exact.pixel, relative);
+        o.inside = sides.inside;
+        o.inside_exact = sides.exact;
+        return o;
+      };
+      auto report = [p](const In& in, const Out& o) {
+        NumericOut<T> out(p);
+        out.inputs(in.range);
+        out.vector("edges", o.edges);
+        out.scalar("total", o.total);
+        out.vector("lambda", o.lambda);
+        out.boolean("inside", o.inside);
+        out.scalar("z", o.z);
+        if (o.inside_exact) out.exact_decision("inside");
+        return out.take();
+      };
+      In in{{}, {}, g, {}};
+      const auto to_t = [&](const Exact& e) {
+        const T v = from_exact<T>(e);
+        if constexpr (!kIsExact<T>) {
+          if (!std::isfinite(v)) in.range.overflow = true;
+          if (std::isfinite(v) && !converts_relatively(e, v)) in.range.underflow = true;
+        }
+        return v;
+      };
+      for (int k = 0; k < 3; ++k)
+        in.t[k] = Vec3<T>(to_t(g.triangle[k](0)), to_t(g.triangle[k](1)), to_t(g.triangle[k](2)));
+      in.pixel = Vec2<T>(to_t(g.pixel(0)), to_t(g.pixel(1)));
+      return prepare(std::move(in), core, report);
+    });
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    const Vec3<Exact> e = edges(g);
+    const Exact t = total(g);
+    Answers out;
+    out.set("edges", Value::vector(e));
+    if (steps) {
+      steps->add("Edge functions at the pixel",
+                 math("E_BC(xₛ, yₛ), E_CA(xₛ, yₛ), E_AB(xₛ, yₛ) with E_PQ(x, y) = (x_Q − x_P)(y − "
+                      "y_P) − (y_Q − y_P)(x − x_P)",
+                      "E_{BC}(x_S, y_S),\\; E_{CA}(x_S, y_S),\\; E_{AB}(x_S, y_S),\\quad "
+                      "E_{PQ}(x, y) = (x_Q - x_P)(y - y_P) - (y_Q - y_P)(x - x_P)"),
+                 {}, vec(e));
+      steps->yields("edges");
+    }
+    out.set("total", Value::scalar(t));
+    if (steps) {
+      steps->add("Twice the signed area of the triangle",
+                 math("E_AB(x_C, y_C) = E_BC + E_CA + E_AB",
+                      "E_{AB}(x_C, y_C) = E_{BC} + E_{CA} + E_{AB}"),
+                 {}, exact(t));
+      steps->yields("total");
+    }
+    if (t.is_zero()) refuse_flat();
+    const Vec3<Exact> lambda(canonical(e(0) / t), canonical(e(1) / t), canonical(e(2) / t));
+    out.set("lambda", Value::vector(lambda));
+    if (steps) {
+      steps->add("Barycentric coordinates",
+                 math("λ₀ = E_BC / E_AB(C), λ₁ = E_CA / E_AB(C), λ₂ = E_AB / E_AB(C)",
+                      "\\lambda_0 = \\frac{E_{BC}}{E_{AB}(C)},\\; \\lambda_1 = "
+                      "\\frac{E_{CA}}{E_{AB}(C)},\\; \\lambda_2 = \\frac{E_{AB}}{E_{AB}(C)}"),
+                 {}, vec(lambda, true));
+      steps->yields("lambda");
+    }
+    // Inside the closed triangle, decided (and written) as depth_at_pixel decides it.
+    const bool inside = inside_triangle_with_steps(g.triangle, g.pixel, steps);
+    out.set("inside", Value::boolean(inside));
+    const Exact z = interpolated_z(g, lambda);
+    out.set("z", Value::scalar(z));
+    if (steps) {
+      steps->add("Depth by barycentric interpolation",
+                 math("z = λ₀z_A + λ₁z_B + λ₂z_C",
+                      "z_S = \\lambda_0 z_A + \\lambda_1 z_B + "
+                      "\\lambda_2 z_C"),
+                 {}, math("z = ", "z_S = ") + exact(z, true));
+      steps->yields("z");
+    }
+    return out;
+  }
+
+  // Default generator: depth_at_pixel's, the same exercise (a triangle with x, y in [0, 8] and
+  // z in [1, 12] and a lattice pixel strictly inside it; hard: on an edge).
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    return builtin_kinds().find("depth_at_pixel")->generate(rng, o);
+  }
+
+  static std::string ill_conditioned(const Given& g, const Answers&) {
+    std::vector<std::vector<double>> xy;
+    for (const Vec3<Exact>& v : g.triangle) xy.push_back({to_double(v(0)), to_double(v(1))});
+    if (triangle_shape(xy) < kMinTriangleShape) return "the triangle is nearly edge-on";
+    return "";
+  }
+};
+
+// The accuracy bench's draw (KindInfo::accuracy_given): a well-shaped triangle with two-decimal
+// vertices and a lattice pixel well inside it (every λᵢ ≥ 0.05), so that λ and z are well
+// conditioned.
+std::optional<std::string> accuracy_given(Rng& rng) {
+  const accuracy::TriangleAndPixel d = accuracy::triangle_and_pixel(rng);
+  std::vector<Eigen::Vector2d> v;
+  for (const accuracy::Point3& q : d.triangle) v.push_back(q.d().head<2>());
+  if (triangle_shape({{v[0].x(), v[0].y()}, {v[1].x(), v[1].y()}, {v[2].x(), v[2].y()}}) <
+      kMinTriangleShape)
+    return std::nullopt;
+  const double total = edge_function<double>(v[0], v[1], v[2]);
+  for (const double edge :
+       {edge_function<double>(v[1], v[2], d.pixel), edge_function<double>(v[2], v[0], d.pixel),
+        edge_function<double>(v[0], v[1], d.pixel)})
+    if (edge / total < 0.05) return std::nullopt;
+  return d.yaml();
+}
+
+}  // namespace
+
+KindInfo barycentric_kind() {
+  KindInfo k = make_kind<Barycentric>();
+  k.order = 45;
+  k.doc_given = "`triangle` (projection coordinates; λ from x, y), `pixel` [xs, ys]";
+  k.doc_answers =
+      "`edges` (E_BC, E_CA, E_AB at the pixel), `total` (E_AB(C), twice the signed area), "
+      "`lambda` (λ₀, λ₁, λ₂), `inside`, `z` (Σλᵢzᵢ, the plane method's z)";
+  k.accuracy_given = accuracy_given;
+  return k;
+}
+
+}  // namespace frustum
