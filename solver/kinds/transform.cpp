@@ -35,13 +35,13 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
     auto core = [](const In& in) {
       Out o;
       o.m = MatX<T>::Identity(in.size, in.size);
-      for (const MatX<T>& s : in.steps) o.m = MatX<T>(s * o.m);
+      for (const MatX<T>& s : in.steps) o.m = then_apply(o.m, s);
       for (const std::vector<T>& q : in.points) o.moved.push_back(transform_point(o.m, q));
       if (in.invertible) {
         if constexpr (kIsExact<T>) {
           // M⁻¹ = A₁⁻¹·…·Aₙ⁻¹, each step undone on its own.
           o.inverse = MatX<T>::Identity(in.size, in.size);
-          for (const MatX<T>& s : in.inverses) o.inverse = MatX<T>(o.inverse * s);
+          for (const MatX<T>& s : in.inverses) o.inverse = then_undo(o.inverse, s);
         } else {
           o.inverse = o.m.partialPivLu().inverse();
         }
@@ -118,8 +118,9 @@ struct Transform {
     std::vector<Misconception> out;
     const auto composite = [&](const std::vector<MatX<Exact>>& steps, bool reversed) {
       MatX<Exact> m = MatX<Exact>::Identity(g.dim + 1, g.dim + 1);
+      // The wrong order multiplies on the other side.
       for (const MatX<Exact>& s : steps)
-        m = canonical(MatX<Exact>(reversed ? MatX<Exact>(m * s) : MatX<Exact>(s * m)));
+        m = canonical(reversed ? then_apply(s, m) : then_apply(m, s));
       Answers a;
       // In the problem's own convention: DirectX students write the row-vector form.
       a.set("matrix", matrix_value(paper_form(m, g.api)));
@@ -181,7 +182,7 @@ struct Transform {
     } else {
       // M⁻¹ = A₁⁻¹·A₂⁻¹·…·Aₙ⁻¹.
       MatX<Exact> inv = MatX<Exact>::Identity(size, size);
-      for (const TransformStep& s : g.steps) inv = canonical(MatX<Exact>(inv * s.inverse));
+      for (const TransformStep& s : g.steps) inv = canonical(then_undo(inv, s.inverse));
       out.set("inverse", matrix_value(paper_form(inv, g.api)));
       if (steps) {
         std::string order, order_latex;

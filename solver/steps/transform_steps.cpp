@@ -204,7 +204,7 @@ MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim,
   MatX<Exact> m = MatX<Exact>::Identity(dim + 1, dim + 1);
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const TransformStep& s = steps[i];
-    m = canonical(MatX<Exact>(s.matrix * m));
+    m = canonical(then_apply(m, s.matrix));
     if (derivation) {
       // Row vectors: the symbolic forms are the column-vector ones, so only the values show.
       Step& st = derivation->add(

@@ -52,6 +52,19 @@ std::vector<TransformStep> read_transform_steps(GivenReader& r, const std::strin
                                                 const Conventions& c,
                                                 const TransformStepList& list = {});
 
+// Composing and undoing transforms, one formula for the exact solve and every numeric backend
+// (column vectors): the step applied next stands leftmost, M ← A·M, and its inverse rightmost,
+// M⁻¹ ← M⁻¹·A⁻¹. The exact solve keeps each product in canonical form for its derivation; the
+// numeric backends (the exact one included) keep the plain product, which is many times faster.
+template <typename T>
+MatX<T> then_apply(const MatX<T>& m, const MatX<T>& step) {
+  return MatX<T>(step * m);
+}
+template <typename T>
+MatX<T> then_undo(const MatX<T>& inverse, const MatX<T>& step_inverse) {
+  return MatX<T>(inverse * step_inverse);
+}
+
 // The composite `name` = Aₙ·…·A₁ (column form: the step applied first stands rightmost), with
 // one derivation step per Aᵢ and one for the composite, titled `title` (DirectX prints every
 // matrix in row-vector form, `name` = A₁·…·Aₙ).
