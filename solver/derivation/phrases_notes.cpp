@@ -552,6 +552,11 @@ constexpr Phrase kPhrases[] = {
     {"The signs differ, so the pixel is outside; the plane still gives its z.",
      "符号がそろっていないので画素は外側にある. それでも平面から z は求まる.",
      "Знаки различаются, поэтому пиксель снаружи; плоскость всё равно даёт его z."},
+    {"The signs differ, so the pixel is outside (some λᵢ is negative); the interpolation still "
+     "gives its z.",
+     "符号がそろっていないので画素は外側にある (負の λᵢ がある). それでも補間から z は求まる.",
+     "Знаки различаются, поэтому пиксель снаружи (некоторое λᵢ отрицательно); интерполяция всё "
+     "равно даёт его z."},
     {"Scan conversion culls nothing.", "走査変換では何も除去しない.",
      "Растеризация ничего не отбрасывает."},
     {"Window y points up; pixel (i, j) has its centre at (i + ½, j + ½).",

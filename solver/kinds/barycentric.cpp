@@ -178,7 +178,8 @@ struct Barycentric {
       steps->yields("lambda");
     }
     // Inside the closed triangle, decided (and written) as depth_at_pixel decides it.
-    const bool inside = inside_triangle_with_steps(g.triangle, g.pixel, steps);
+    const bool inside =
+        inside_triangle_with_steps(g.triangle, g.pixel, steps, ZFrom::Interpolation);
     out.set("inside", Value::boolean(inside));
     const Exact z = interpolated_z(g, lambda);
     out.set("z", Value::scalar(z));

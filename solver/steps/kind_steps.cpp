@@ -278,7 +278,7 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
 namespace frustum {
 
 bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
-                                const Vec2<Exact>& pixel, Derivation* steps) {
+                                const Vec2<Exact>& pixel, Derivation* steps, ZFrom z_from) {
   const PixelSides sides = pixel_sides(triangle, pixel, triangle, pixel, true);
   const int s0 = sides.sign[0], s1 = sides.sign[1], s2 = sides.sign[2];
   const bool inside = sides.inside;
@@ -296,7 +296,10 @@ bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
               word(inside ? "inside" : "outside"))
         .note =
         inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."
-               : "The signs differ, so the pixel is outside; the plane still gives its z.";
+        : z_from == ZFrom::Plane
+            ? "The signs differ, so the pixel is outside; the plane still gives its z."
+            : "The signs differ, so the pixel is outside (some λᵢ is negative); the interpolation "
+              "still gives its z.";
     steps->yields("inside");
   }
   return inside;

@@ -28,9 +28,12 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
 
 // Whether the pixel is inside the closed triangle, from the x, y of its vertices: the signs of
 // the edge functions E_AB, E_BC, E_CA at the pixel agree (0 = on an edge). Records the step
-// when `steps` is set (depth_at_pixel, barycentric).
+// when `steps` is set (depth_at_pixel, barycentric); `z_from` names what still gives an outside
+// pixel its z in the note (the plane, or the interpolation).
+enum class ZFrom { Plane, Interpolation };
 bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
-                                const Vec2<Exact>& pixel, Derivation* steps);
+                                const Vec2<Exact>& pixel, Derivation* steps,
+                                ZFrom z_from = ZFrom::Plane);
 
 // The plane n·p = d scaled the way a teacher writes it: integer coefficients without a common
 // factor when possible (x + y − z = −6), the orientation of n kept.
