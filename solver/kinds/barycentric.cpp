@@ -13,6 +13,7 @@
 #include "solver/problem/registry.hpp"
 #include "solver/steps/accuracy_draws.hpp"
 #include "solver/steps/kind_steps.hpp"
+#include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -45,20 +46,34 @@ struct Barycentric {
     return g;
   }
 
-  // E_BC(P), E_CA(P), E_AB(P): the edge opposite each vertex, so that λᵢ belongs to vertex i.
-  static Vec3<Exact> edges(const Given& g) {
-    const auto& t = g.triangle;
-    return {canonical(edge_function<Exact>(t[1], t[2], g.pixel)),
-            canonical(edge_function<Exact>(t[2], t[0], g.pixel)),
-            canonical(edge_function<Exact>(t[0], t[1], g.pixel))};
+  // The formulas, once for the exact solve and every numeric backend. E_BC(P), E_CA(P), E_AB(P):
+  // the edge opposite each vertex, so that λᵢ belongs to vertex i; the total E_AB(C) is twice
+  // the signed area; λᵢ = Eᵢ / total; z = Σ λᵢ zᵢ.
+  template <typename T>
+  static Vec3<T> edges_of(const std::array<Vec3<T>, 3>& t, const Vec2<T>& pixel) {
+    return {edge_function<T>(t[1], t[2], pixel), edge_function<T>(t[2], t[0], pixel),
+            edge_function<T>(t[0], t[1], pixel)};
   }
-  static Exact total(const Given& g) {
-    const Vec2<Exact> c(g.triangle[2](0), g.triangle[2](1));
-    return canonical(edge_function<Exact>(g.triangle[0], g.triangle[1], c));
+  template <typename T>
+  static T total_of(const std::array<Vec3<T>, 3>& t) {
+    return edge_function<T>(t[0], t[1], Vec2<T>(t[2](0), t[2](1)));
   }
+  template <typename T>
+  static Vec3<T> lambda_of(const Vec3<T>& e, const T& total) {
+    return {T(e(0) / total), T(e(1) / total), T(e(2) / total)};
+  }
+  template <typename T>
+  static T z_of(const std::array<Vec3<T>, 3>& t, const Vec3<T>& lambda) {
+    return lambda(0) * t[0](2) + lambda(1) * t[1](2) + lambda(2) * t[2](2);
+  }
+  // Their exact values in canonical form.
+  static Vec3<Exact> canonical_vec(const Vec3<Exact>& v) {
+    return {canonical(v(0)), canonical(v(1)), canonical(v(2))};
+  }
+  static Vec3<Exact> edges(const Given& g) { return canonical_vec(edges_of(g.triangle, g.pixel)); }
+  static Exact total(const Given& g) { return canonical(total_of(g.triangle)); }
   static Exact interpolated_z(const Given& g, const Vec3<Exact>& lambda) {
-    return canonical(lambda(0) * g.triangle[0](2) + lambda(1) * g.triangle[1](2) +
-                     lambda(2) * g.triangle[2](2));
+    return canonical(z_of(g.triangle, lambda));
   }
 
   // Error carried forward: λ from the student's edge values and total, z from their λ.
@@ -69,8 +84,7 @@ struct Barycentric {
     Exact t = total(g);
     if (const Value* s = student.find("total"); s && s->exact.size() == 1) t = s->exact[0];
     std::optional<Vec3<Exact>> lambda;
-    if (e && !canonical(t).is_zero())
-      lambda = Vec3<Exact>(canonical((*e)(0) / t), canonical((*e)(1) / t), canonical((*e)(2) / t));
+    if (e && !canonical(t).is_zero()) lambda = canonical_vec(lambda_of(*e, t));
     if (lambda) out.set("lambda", Value::vector(*lambda));
     if (const auto v = carried(student, "lambda", 3))
       lambda = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
@@ -106,12 +120,10 @@ struct Barycentric {
         const auto& et = in.exact.triangle;
         const bool relative = in.range.relative();
         if (edge_on_sign(t, et, relative).sign == 0) refuse_flat();
-        o.total = edge_function<T>(t[0], t[1], Vec2<T>(t[2](0), t[2](1)));
-        o.edges =
-            Vec3<T>(edge_function<T>(t[1], t[2], in.pixel), edge_function<T>(t[2], t[0], in.pixel),
-                    edge_function<T>(t[0], t[1], in.pixel));
-        o.lambda = Vec3<T>(o.edges(0) / o.total, o.edges(1) / o.total, o.edges(2) / o.total);
-        o.z = o.lambda(0) * t[0](2) + o.lambda(1) * t[1](2) + o.lambda(2) * t[2](2);
+        o.total = total_of(t);
+        o.edges = edges_of(t, in.pixel);
+        o.lambda = lambda_of(o.edges, o.total);
+        o.z = z_of(t, o.lambda);
         const PixelSides sides = pixel_sides(t, in.pixel, et, in.exact.pixel, relative);
         o.inside = sides.inside;
         o.inside_exact = sides.exact;
@@ -129,17 +141,8 @@ struct Barycentric {
         return out.take();
       };
       In in{{}, {}, g, {}};
-      const auto to_t = [&](const Exact& e) {
-        const T v = from_exact<T>(e);
-        if constexpr (!kIsExact<T>) {
-          if (!std::isfinite(v)) in.range.overflow = true;
-          if (std::isfinite(v) && !converts_relatively(e, v)) in.range.underflow = true;
-        }
-        return v;
-      };
-      for (int k = 0; k < 3; ++k)
-        in.t[k] = Vec3<T>(to_t(g.triangle[k](0)), to_t(g.triangle[k](1)), to_t(g.triangle[k](2)));
-      in.pixel = Vec2<T>(to_t(g.pixel(0)), to_t(g.pixel(1)));
+      for (int k = 0; k < 3; ++k) in.t[k] = conv<T>(g.triangle[k], &in.range);
+      in.pixel = conv<T>(g.pixel, &in.range);
       return prepare(std::move(in), core, report);
     });
   }
@@ -167,7 +170,7 @@ struct Barycentric {
       steps->yields("total");
     }
     if (t.is_zero()) refuse_flat();
-    const Vec3<Exact> lambda(canonical(e(0) / t), canonical(e(1) / t), canonical(e(2) / t));
+    const Vec3<Exact> lambda = canonical_vec(lambda_of(e, t));
     out.set("lambda", Value::vector(lambda));
     if (steps) {
       steps->add("Barycentric coordinates",
@@ -218,11 +221,10 @@ std::optional<std::string> accuracy_given(Rng& rng) {
   if (triangle_shape({{v[0].x(), v[0].y()}, {v[1].x(), v[1].y()}, {v[2].x(), v[2].y()}}) <
       kMinTriangleShape)
     return std::nullopt;
-  const double total = edge_function<double>(v[0], v[1], v[2]);
-  for (const double edge :
-       {edge_function<double>(v[1], v[2], d.pixel), edge_function<double>(v[2], v[0], d.pixel),
-        edge_function<double>(v[0], v[1], d.pixel)})
-    if (edge / total < 0.05) return std::nullopt;
+  const std::array<Vec3<double>, 3> t = {d.triangle[0].d(), d.triangle[1].d(), d.triangle[2].d()};
+  const Vec3<double> lambda =
+      Barycentric::lambda_of(Barycentric::edges_of(t, d.pixel), Barycentric::total_of(t));
+  if (lambda.minCoeff() < 0.05) return std::nullopt;
   return d.yaml();
 }
 
