@@ -41,7 +41,7 @@ std::string lower(std::string s) {
 }
 
 // The student id written in an answers file, without grading it (through the same bounded,
-// strict reader as grading).
+// strict reader as grading, which stops at the id).
 std::string student_in(const std::string& yaml, const std::string& name) {
   return top_scalar(yaml, name, "student").value_or("");
 }

@@ -438,7 +438,7 @@ TEST(Batch, IdsReadByThreadsAreTheSameEntries) {
     test::write_file(dir / fmt::format("f{:02d}.yaml", i),
                      i % 7 == 3 ? std::string("student: [not, an, id]\nanswers: {}\n")
                      : i % 5 == 1
-                         ? std::string("student: s1\nstudent: s2\n")  // refused: no id
+                         ? std::string("student: s1\nstudent: s2\n")  // the first id
                          : fmt::format("student: s{}\nanswers: {{zbuf: {{z: 8}}}}\n", i % 11));
   fs::create_directories(dir / "f99.yaml");  // a directory named like a file: not read
   const auto text = [](const std::vector<BatchEntry>& entries) {
@@ -449,7 +449,8 @@ TEST(Batch, IdsReadByThreadsAreTheSameEntries) {
     return out;
   };
   const std::string one = text(collect_submissions(dir.string(), kMaxSubmissionBytes, nullptr, 1));
-  EXPECT_NE(one.find("f01.yaml|f01||-|"), std::string::npos) << one;   // refused: the file's name
+  // The id is read up to its value: the second `student:` is the grading's error to report.
+  EXPECT_NE(one.find("f01.yaml|s1|s1|-|"), std::string::npos) << one;
   EXPECT_NE(one.find("f03.yaml|f03||-|"), std::string::npos) << one;   // not an id: the file's name
   EXPECT_NE(one.find("f02.yaml|s2|s2|-|"), std::string::npos) << one;  // read from the file
   EXPECT_NE(one.find("also claims student 's2'"), std::string::npos) << one;  // f02 and f13

@@ -132,6 +132,8 @@ struct Refusal {
   YAML::Mark mark;
   std::string message;
 };
+// Stops a top_scalar pass once the value is read.
+struct Taken {};
 
 // The one pass over the parser's events: builds the document's nodes as YAML::Load does
 // (yaml-cpp's NodeBuilder, with the same marks, tags and styles) and, before each node is
@@ -143,8 +145,9 @@ struct Refusal {
 //
 // Without `build`, nothing is built: the pass then also refuses what parse_yaml's walk of the
 // built tree (check_tree) refuses — a key that is a list or a mapping, an alias inside its own
-// anchor's node (a cycle) — so that it accepts exactly the documents parse_yaml accepts, and
-// keeps the scalar under `key` in the top mapping (root[key], the first such key).
+// anchor's node (a cycle) — so that up to where it stops it accepts exactly what parse_yaml
+// accepts, and keeps the scalar under `key` in the top mapping (root[key], the first such key);
+// it stops (throws Taken) as soon as that value is read.
 class StrictBuilder : public YAML::EventHandler {
  public:
   StrictBuilder() : memory_(std::make_shared<YAML::detail::memory_holder>()) {}
@@ -277,6 +280,7 @@ class StrictBuilder : public YAML::EventHandler {
     } else if (taking_) {
       taking_ = false;
       if (scalar) value_ = *scalar;
+      throw Taken{};  // the rest of the text is the grading's to read
     }
   }
   YAML::detail::node& create(const YAML::Mark& mark, YAML::anchor_t anchor) {
@@ -440,6 +444,8 @@ std::optional<std::string> top_scalar(const std::string& text, const std::string
   bool any = false;
   try {
     if (run_checked(repaired, name, check, any) || !any) return std::nullopt;
+  } catch (const Taken&) {
+    return check.top_scalar();
   } catch (const std::exception&) {
     return std::nullopt;
   } catch (const Refusal&) {

@@ -31,9 +31,12 @@ struct YamlDocument {
 // written twice in one mapping (yaml-cpp keeps the first silently), a second document after
 // `---`, text in UTF-16 or UTF-32, and documents that expand to more than kMaxYamlNodes nodes.
 YamlDocument parse_yaml(const std::string& text, const std::string& name);
-// parse_yaml(text, name).root[key].Scalar() for a document parse_yaml accepts whose top
-// mapping has a scalar under `key`, else nothing; decided without building the document's
-// nodes (about a quarter less work: a class's student ids are read this way).
+// The scalar the text states under `key` in its top mapping, read without building nodes and
+// without reading past it: for a document parse_yaml accepts, parse_yaml(text,
+// name).root[key].Scalar() when that is a scalar, else nothing. A text that parse_yaml refuses
+// still states the value when everything up to it is valid (`student: s1` above a broken
+// answer): a class's student ids are read this way, so that a broken file's error row is filed
+// under the student it names, at the cost of scanning only the file's first lines.
 std::optional<std::string> top_scalar(const std::string& text, const std::string& name,
                                       const std::string& key);
 // Reads the file first with read_text_file (kMaxYamlFileBytes).
