@@ -244,8 +244,8 @@ TEST(Language, BooleanKeyIsPrintedInTheStudentsLanguageAndAcceptedBack) {
   }
 }
 
-// Problems in the students' languages (issue 16): the seed and example sets give every text a
-// student reads — titles, problem texts, statements and reasons — in Japanese and Russian, so
+// Problems in the students' languages (issue 16): the seed, example and hard sets give every text
+// a student reads — titles, problem texts, statements and reasons — in Japanese and Russian, so
 // no English reaches a student reading them in another language (the same check as the steps').
 TEST(Language, NoEnglishProblemTextReachesAJapaneseOrRussianStudent) {
   const std::vector<test::InstructorText> texts = test::instructor_texts();

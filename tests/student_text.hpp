@@ -209,8 +209,8 @@ inline std::vector<StudentText> student_texts() {
 }
 
 // Problems in the students' languages (issue 16): what the instructor wrote for students in the
-// seed and example sets — titles, problem texts with their placeholders filled, statements and
-// reasons quoted in steps — as a student reading each language sees it.
+// seed, example and hard sets — titles, problem texts with their placeholders filled, statements
+// and reasons quoted in steps — as a student reading each language sees it.
 struct InstructorText {
   std::string where;
   std::map<Lang, std::string> shown;
@@ -224,7 +224,6 @@ inline std::vector<InstructorText> instructor_texts() {
     return m;
   };
   for (const std::string& file : bundled_sets()) {
-    if (file.find("/problems/hard/") != std::string::npos) continue;  // instructors' stress tests
     const SetResult r = solve_set(load_problem_set(file), true);
     if (!r.title.empty())
       out.push_back({file + " title", each([&](Lang l) { return r.title.in(l); })});
