@@ -99,6 +99,14 @@ TEST(Expression, DecimalsMatchTheirFractions) {
   expect_value("999999999999999999", numeric("999999999999999999"));
   expect_value("9999999999999999999", numeric("9999999999999999999"));
   expect_value("-1234567890.12345678", numeric("-123456789012345678") / numeric(10).power(8));
+  // Around the 18 decimal places of the one-rational shortcut (n / 10^k, k ≤ 18).
+  expect_value("0.123456789012345678", numeric("123456789012345678") / numeric(10).power(18));
+  expect_value("0.000000000000000001", numeric(1) / numeric(10).power(18));
+  expect_value("1e-18", numeric(1) / numeric(10).power(18));
+  expect_value("123456789012345678e-19", numeric("123456789012345678") / numeric(10).power(19));
+  expect_value("0.0000000000000000001", numeric(1) / numeric(10).power(19));
+  expect_value("12.5e3", 12500);
+  expect_value("-0.50", numeric(-1, 2));
 }
 
 TEST(Expression, FractionsAreExact) {

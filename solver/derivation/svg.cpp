@@ -17,8 +17,14 @@ std::string svg_number(double v) {
 
 std::string svg_escape(std::string_view text) {
   std::string out;
-  for (char c : text) {
-    switch (c) {
+  out.reserve(text.size() + text.size() / 8);
+  // Runs without a special character are copied whole (feedback pages escape a lot of text).
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t special = text.find_first_of("&<>\"'", start);
+    const std::size_t end = special == std::string_view::npos ? text.size() : special;
+    out.append(text.substr(start, end - start));
+    if (end == text.size()) break;
+    switch (text[end]) {
       case '&':
         out += "&amp;";
         break;
@@ -31,12 +37,10 @@ std::string svg_escape(std::string_view text) {
       case '"':
         out += "&quot;";
         break;
-      case '\'':
-        out += "&#39;";
-        break;  // valid in HTML too
       default:
-        out += c;
+        out += "&#39;";  // valid in HTML too
     }
+    start = end + 1;
   }
   return out;
 }

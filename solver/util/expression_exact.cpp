@@ -1,7 +1,9 @@
 // From parsed pieces to exact values: GiNaC's evaluation with its exceptions turned into
 // located errors, numeric approximation of constants, and plain decimal literals read as
 // the exact rationals they denote.
+#include <array>
 #include <cctype>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -30,6 +32,18 @@ void require_real(const ex& e, std::size_t offset, const std::string& hint) {
 // A plain decimal literal ("-12", "0.57735", "1.5e-3") as the exact rational it denotes,
 // without the lexer and parser: most numbers in problem sets and answers are these.
 // Anything else (or an exponent beyond ±400) is left to the parser.
+namespace {
+constexpr std::array<long, 19> kPowersOfTen = [] {
+  std::array<long, 19> p{};
+  long v = 1;
+  for (long& x : p) {
+    x = v;
+    v = v <= std::numeric_limits<long>::max() / 10 ? v * 10 : v;
+  }
+  return p;
+}();
+}  // namespace
+
 std::optional<GiNaC::ex> parse_decimal_literal(std::string_view text) {
   std::size_t i = 0;
   const std::size_t n = text.size();
@@ -68,8 +82,13 @@ std::optional<GiNaC::ex> parse_decimal_literal(std::string_view text) {
     for (const char c : digits) small = small * 10 + (c - '0');
   const GiNaC::numeric mantissa =
       digits.size() <= 18 ? GiNaC::numeric(small) : GiNaC::numeric(digits.c_str());
+  // A decimal of at most 18 digits after the point is small / 10^k, one rational (a class's
+  // answers are mostly such decimals: no power is computed for them).
   const GiNaC::numeric value =
-      scale == 0 ? mantissa : mantissa * GiNaC::numeric(10).power(GiNaC::numeric(scale));
+      scale == 0 ? mantissa
+      : digits.size() <= 18 && scale < 0 && scale >= -18
+          ? GiNaC::numeric(small, kPowersOfTen[static_cast<std::size_t>(-scale)])
+          : mantissa * GiNaC::numeric(10).power(GiNaC::numeric(scale));
   return GiNaC::ex(negative ? -value : value);
 }
 
