@@ -22,70 +22,17 @@ namespace {
 // Names that stay as they are in every language: APIs and their functions and parameters,
 // algorithms named after people, and the operators written in formulas.
 const std::set<std::string>& names() {
-  static const std::set<std::string> n = {"OpenGL",
-                                          "DirectX",
-                                          "Processing",
-                                          "Newell",
-                                          "Cohen",
-                                          "Sutherland",
-                                          "Hodgman",
-                                          "Rodrigues",
-                                          "NDC",
-                                          "perspective",
-                                          "frustum",
-                                          "ortho",
-                                          "camera",
-                                          "lookAt",
-                                          "gluLookAt",
-                                          "glOrtho",
-                                          "glFrustum",
-                                          "fovy",
-                                          "fovx",
-                                          "aspect",
-                                          "near",
-                                          "far",
-                                          "eye",
-                                          "center",
-                                          "up",
-                                          "width",
-                                          "height",
-                                          "screenY",
-                                          "tan",
-                                          "sin",
-                                          "sign",
-                                          "cos",
-                                          "atan",
-                                          "sqrt",
-                                          "diag",
-                                          "min",
-                                          "max",
-                                          "OR",
-                                          "AND",
-                                          "xy",
-                                          "yz",
-                                          "xz",
-                                          "ny",
-                                          "nx",
-                                          "nz",
-                                          "xmin",
-                                          "xmax",
-                                          "ymin",
-                                          "ymax",
-                                          "zmin",
-                                          "zmax",
-                                          "inf",
-                                          "float",
-                                          "double",
-                                          "long",
-                                          "lights",
-                                          "screenY",
-                                          "GPU",
-                                          "true",
-                                          "false",
-                                          "Direct3D",
-                                          "FrontCounterClockwise",
-                                          "XMMatrixTranslation",
-                                          "translate"};
+  static const std::set<std::string> n = {
+      "OpenGL", "DirectX", "Processing", "Newell", "Cohen", "Sutherland", "Hodgman", "Rodrigues",
+      "NDC", "perspective", "frustum", "ortho", "camera", "lookAt", "gluLookAt", "glOrtho",
+      "glFrustum", "fovy", "fovx", "aspect", "near", "far", "eye", "center", "up", "width",
+      "height", "screenY", "tan", "sin", "sign", "cos", "atan", "sqrt", "diag", "min", "max", "OR",
+      "AND", "xy", "yz", "xz", "ny", "nx", "nz", "xmin", "xmax", "ymin", "ymax", "zmin", "zmax",
+      "inf", "float", "double", "long", "lights", "screenY", "GPU", "true", "false", "Direct3D",
+      "FrontCounterClockwise", "XMMatrixTranslation", "OrthoOffCenterLH", "PerspectiveOffCenterLH",
+      "translate",
+      // Names of functions and quantities inside formulas.
+      "acos", "arccos", "rad", "outcode", "ndc", "clip", "dist", "depth", "fov", "nf"};
   return n;
 }
 
@@ -120,6 +67,8 @@ std::vector<std::string> english_words(const std::string& text) {
     if (token.size() <= 3 &&
         token.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ") == std::string::npos)
       continue;
+    // Products of coordinates and of c = cos θ, s = sin θ in a formula (xy, zs).
+    if (token.size() <= 3 && token.find_first_not_of("xyzcs") == std::string::npos) continue;
     if (!names().count(token)) out.push_back(token);
   }
   return out;
@@ -272,6 +221,39 @@ TEST(Language, KindSummariesAreTranslated) {
     for (const Lang lang : {Lang::Ja, Lang::Ru})
       EXPECT_EQ(english_words(tr(kind.summary, lang)), std::vector<std::string>{})
           << kind.name << " " << to_string(lang) << ": " << tr(kind.summary, lang);
+}
+
+}  // namespace
+}  // namespace frustum
+
+namespace frustum {
+namespace {
+
+// The formulas, substitutions and results of every derivation a Japanese or Russian student
+// reads: their words are translated (MathText::words), and no English is written into the
+// mathematics itself ("for every vertex v", "the camera's z axis").
+TEST(Language, NoEnglishWordInTheMathematicsOfAJapaneseOrRussianDerivation) {
+  std::map<std::string, std::string> failures;  // shown formula → where
+  std::size_t formulas = 0;
+  for (const ProblemSet& set : test::student_text_sets()) {
+    const SolvedSet solved = solve_for_grading(set);
+    for (std::size_t i = 0; i < set.problems.size(); ++i) {
+      if (solved.results[i].error) continue;
+      for (const Step& s : solved.results[i].derivation.steps())
+        for (const MathText* m : {&s.formula, &s.substitution, &s.result})
+          for (const Lang lang : {Lang::Ja, Lang::Ru}) {
+            ++formulas;
+            const std::string shown = tr(*m, lang).unicode;
+            if (!english_words(shown).empty())
+              failures.emplace(shown, set.problems[i].id + " (" + s.title + ")");
+          }
+    }
+  }
+  EXPECT_GT(formulas, 1000u);
+  int n = 0;
+  for (const auto& [shown, where] : failures)
+    if (++n <= 40) ADD_FAILURE() << where << ": \"" << english_words(shown)[0] << "\" in " << shown;
+  EXPECT_EQ(failures.size(), 0u);
 }
 
 }  // namespace

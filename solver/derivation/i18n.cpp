@@ -214,7 +214,12 @@ std::string tr(std::string_view english, Lang lang) {
 MathText tr(const MathText& m, Lang lang) {
   if (lang == Lang::En || m.words.empty()) return m;
   MathText out = m;
-  for (const std::string& w : m.words) {
+  // Longer words first: "window triangles" is one phrase, not "window" and a translated
+  // "triangles".
+  std::vector<std::string> words = m.words;
+  std::stable_sort(words.begin(), words.end(),
+                   [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  for (const std::string& w : words) {
     const std::string t = tr(w, lang);
     if (t == w) continue;
     for (std::size_t at = 0; (at = out.unicode.find(w, at)) != std::string::npos;) {

@@ -154,7 +154,7 @@ struct Barycentric {
     out.set("edges", Value::vector(e));
     if (steps) {
       steps->add("Edge functions at the pixel",
-                 math("E_BC(xₛ, yₛ), E_CA(xₛ, yₛ), E_AB(xₛ, yₛ) with E_PQ(x, y) = (x_Q − x_P)(y − "
+                 math("E_BC(xₛ, yₛ), E_CA(xₛ, yₛ), E_AB(xₛ, yₛ);  E_PQ(x, y) = (x_Q − x_P)(y − "
                       "y_P) − (y_Q − y_P)(x − x_P)",
                       "E_{BC}(x_S, y_S),\\; E_{CA}(x_S, y_S),\\; E_{AB}(x_S, y_S),\\quad "
                       "E_{PQ}(x, y) = (x_Q - x_P)(y - y_P) - (y_Q - y_P)(x - x_P)"),

@@ -266,9 +266,9 @@ struct EdgeVisibility {
       steps->yields("hidden");
       steps
           ->add("Convex?",
-                math("n_f·(v − p_f) ≤ 0 for every vertex v and face f",
-                     "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\text{ for every "
-                     "vertex } \\mathbf{v} \\text{ and face } f"),
+                math("n_f·(v − p_f) ≤ 0  ∀ v, f",
+                     "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\quad "
+                     "\\forall\\, \\mathbf{v}, f"),
                 {}, word(convex ? "convex" : "not convex"))
           .note = convex ? "Every vertex lies on the inner side of (or on) every face plane."
                          : "Not convex: " + witness + ".";

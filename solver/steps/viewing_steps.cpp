@@ -255,7 +255,7 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
               exact(norm(side), true),
           math("s = ", "\\mathbf{s} = ") + vec(row(0), true));
       steps->add("Camera axes (right-handed, looking down −z)",
-                 math("u = s × f,  the camera's z axis is −f",
+                 math("u = s × f,  z_cam = −f",
                       "\\mathbf{u} = \\mathbf{s}\\times\\mathbf{f},\\; \\mathbf{z}_{\\text{cam}} = "
                       "-\\mathbf{f}"),
                  {},
