@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <random>
 
 #include "grader/grade.hpp"
@@ -270,6 +271,63 @@ TEST(Handedness, DeclarationErrorsNameTheField) {
       error_of(kLeft, "projection_plane", "{window: [200, 200], fov: 60, point: [0, 100, -300]}")
           .find("right-handed only"),
       std::string::npos);
+  EXPECT_EQ(error_of(kLeft, "edge_visibility", "{solid: cube, eye: [3, 4, 5]}"), "");
+}
+
+// edge_visibility in a left-handed OpenGL course: counter-clockwise from outside is still front,
+// so the front normal is e₁ × e₀. A named solid is listed counter-clockwise from outside in that
+// frame, so its faces, edges and convexity are those of the same solid read right-handed; a
+// mesh of the instructor's is read the course's way: the right-handed listing of the cube,
+// given to a left-handed course, is the cube turned inside out (every face flipped), and its
+// listing reversed is the cube again.
+TEST(Handedness, EdgeVisibilityFollowsALeftHandedCourse) {
+  const auto words = [](const ProblemResult& r, const std::string& name) {
+    std::map<std::string, std::string> m;
+    for (const auto& [k, w] : r.answers.find(name)->entries) m[k] = w;
+    return m;
+  };
+  std::mt19937 rng(18);
+  std::uniform_int_distribution<int> coord(-9, 9);
+  int checked = 0;
+  for (const char* solid : {"tetrahedron", "cube", "octahedron", "dodecahedron", "icosahedron"})
+    for (int i = 0; i < 6; ++i) {
+      std::array<int, 3> eye{coord(rng), coord(rng), coord(rng)};
+      if (eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2] < 25) continue;
+      const std::string given = std::string("{solid: ") + solid + ", eye: " + point_text(eye) + "}";
+      const ProblemResult right = solve_one(kRight, "edge_visibility", given);
+      const ProblemResult left = solve_one(kLeft, "edge_visibility", given);
+      ASSERT_FALSE(right.error || left.error) << given;
+      EXPECT_EQ(words(left, "faces"), words(right, "faces")) << given;
+      EXPECT_EQ(words(left, "edges"), words(right, "edges")) << given;
+      EXPECT_TRUE(left.answers.find("convex")->flag) << given;
+      ++checked;
+    }
+  EXPECT_GT(checked, 20);
+
+  const std::string vertices =
+      "[[-1,1,1],[1,1,1],[1,1,-1],[-1,1,-1],[-1,-1,1],[1,-1,1],[1,-1,-1],[-1,-1,-1]]";
+  const std::string ccw_right = "[[0,1,2,3],[7,6,5,4],[4,5,1,0],[5,6,2,1],[6,7,3,2],[7,4,0,3]]";
+  const std::string ccw_left = "[[0,3,2,1],[7,4,5,6],[4,0,1,5],[5,1,2,6],[6,2,3,7],[7,3,0,4]]";
+  const auto mesh = [&](const std::string& faces) {
+    return "{mesh: {vertices: " + vertices + ", faces: " + faces + "}, eye: [3, 4, 5]}";
+  };
+  const ProblemResult right = solve_one(kRight, "edge_visibility", mesh(ccw_right));
+  const ProblemResult left = solve_one(kLeft, "edge_visibility", mesh(ccw_left));
+  const ProblemResult inside_out = solve_one(kLeft, "edge_visibility", mesh(ccw_right));
+  ASSERT_FALSE(right.error || left.error || inside_out.error) << test::error_text(inside_out);
+  EXPECT_EQ(words(left, "faces"), words(right, "faces"));
+  EXPECT_EQ(words(left, "edges"), words(right, "edges"));
+  int front = 0;
+  for (const auto& [face, w] : words(right, "faces")) {
+    front += w == "front";
+    EXPECT_EQ(words(inside_out, "faces")[face], w == "front" ? "back" : "front") << face;
+  }
+  EXPECT_EQ(front, 3);  // seen from (3, 4, 5): the faces x = 1, y = 1, z = 1
+  // The derivation says which normal a left-handed course takes, and the faces as given.
+  const std::string text = render_problem_markdown(left, Lang::En);
+  EXPECT_NE(text.find("n = e₁ × e₀"), std::string::npos) << text;
+  EXPECT_NE(text.find("face 0 [0 3 2 1]"), std::string::npos) << text;
+  EXPECT_NE(render_problem_markdown(left, Lang::Ja).find("e₁ × e₀ である"), std::string::npos);
 }
 
 // JSON states the handedness each problem was solved in: the declared one, else the API's own.

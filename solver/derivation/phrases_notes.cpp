@@ -421,6 +421,13 @@ constexpr Phrase kPhrases[] = {
     {"Every vertex moves by P′ = M·P; faces keep their vertex lists.",
      "各頂点は P′ = M·P で移り, 面の頂点リストは変わらない.",
      "Каждая вершина переходит по P′ = M·P; грани сохраняют свои списки вершин."},
+    {"The faces are listed counter-clockwise seen from outside in this left-handed frame, where "
+     "e₀ × e₁ points inward: each face's outward (front) normal is n = e₁ × e₀.",
+     "この左手系では各面の頂点は外側から見て反時計回りに並べられ, e₀ × e₁ は内側を向く. "
+     "各面の外向き(表側)の法線は n = e₁ × e₀ である.",
+     "В этой левой системе координат вершины каждой грани перечислены против часовой стрелки "
+     "при взгляде снаружи, и e₀ × e₁ направлен внутрь: внешняя (лицевая) нормаль каждой грани — "
+     "n = e₁ × e₀."},
     {"In DirectX's left-handed coordinates the same formula n = e₀ × e₁ points to the side from "
      "which the vertices "
      "appear clockwise — Direct3D's default front face (FrontCounterClockwise = false).",

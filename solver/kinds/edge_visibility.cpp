@@ -31,13 +31,17 @@ struct EdgeVisibility {
   static constexpr const char* kName = "edge_visibility";
   static constexpr const char* kSummary =
       "front/back faces and visible, silhouette and hidden edges of a polyhedron";
-  static constexpr ConventionUse kUses{.api = false, .angles = true};
+  static constexpr ConventionUse kUses{.api = false, .angles = true, .handedness = true};
   struct Given {
     Mesh mesh;
     std::string solid;  // empty for a given mesh
     std::string field;  // "solid" or "mesh.faces": where a bad mesh is reported
     std::vector<TransformStep> transform;
     Vec3<Exact> eye;
+    // A left-handed course under OpenGL's or Processing's winding (counter-clockwise from
+    // outside = front): the front normal is n = e₁ × e₀, as in the backface kind. A named
+    // solid is listed counter-clockwise from outside in that frame (its faces reversed).
+    bool left_handed = false;
   };
   static std::vector<std::string> given_fields() { return {"mesh", "solid", "transform", "eye"}; }
   static std::vector<AnswerSpec> answers() {
@@ -71,7 +75,22 @@ struct EdgeVisibility {
       g.transform = read_transform_steps(r, "transform", 3, c,
                                          {.max_count = kMaxGivenListItems, .shear = false});
     g.eye = r.vector<3>("eye");
+    g.left_handed = left_handed_columns(c);
+    if (g.left_handed && !g.solid.empty()) g.mesh = reversed_faces(g.mesh);
     return g;
+  }
+
+  // Each face walked the other way from the same first vertex (a b c d → a d c b).
+  static Mesh reversed_faces(Mesh m) {
+    for (std::vector<int>& f : m.faces)
+      if (!f.empty()) std::reverse(f.begin() + 1, f.end());
+    return m;
+  }
+
+  // The mesh the computations read: its faces wound so that the usual n = e₀ × e₁ (Newell)
+  // is the front normal — in a left-handed course, each face's vertex order reversed.
+  static Mesh right_handed_winding(const Given& g, const Mesh& shown) {
+    return g.left_handed ? reversed_faces(shown) : shown;
   }
 
   static std::string face_text(const std::vector<int>& face) {
@@ -130,7 +149,13 @@ struct EdgeVisibility {
         text += " φ = (1 + √5)/2 is kept exact.";
       steps->note("The solid", text);
     }
-    const Mesh mesh = transformed(g, steps);
+    const Mesh shown = transformed(g, steps);
+    const Mesh mesh = right_handed_winding(g, shown);
+    if (steps && g.left_handed)
+      steps->note("Winding in a left-handed frame",
+                  "The faces are listed counter-clockwise seen from outside in this "
+                  "left-handed frame, where e₀ × e₁ points inward: each face's outward (front) "
+                  "normal is n = e₁ × e₀.");
     for (std::size_t f = 0; f < mesh.faces.size(); ++f)
       if (g.solid.empty() && analyse_polygon_degenerate(mesh, f))
         throw DomainError(
@@ -167,7 +192,7 @@ struct EdgeVisibility {
       faces.emplace_back(std::to_string(f), facing_word(tests[f].facing));
       if (tests[f].facing == Facing::EdgeOn) edge_on.push_back(std::to_string(f));
       if (f < kMaxTableFaces)
-        table += fmt::format("\nface {} [{}]: n = {}, D_f = {} → {}", f, face_text(mesh.faces[f]),
+        table += fmt::format("\nface {} [{}]: n = {}, D_f = {} → {}", f, face_text(shown.faces[f]),
                              vec(normals[f]).unicode, exact(tests[f].df, true).unicode,
                              facing_word(tests[f].facing));
     }
@@ -291,7 +316,8 @@ struct EdgeVisibility {
   static Drawable drawable(const Given& g) {
     Drawable d;
     d.picture = Drawable::Picture::HiddenLines;
-    d.mesh = transformed(g, nullptr);
+    d.mesh = right_handed_winding(g, transformed(g, nullptr));
+    d.left_handed = g.left_handed;
     const MeshCheck check = check_mesh(d.mesh);
     if (!check.closed || !check.oriented)
       throw DomainError(g.field, check.problem +

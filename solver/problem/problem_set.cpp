@@ -83,7 +83,7 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   // (their solids' windings, scene cameras and projection plane are right-handed): refused
   // rather than answered in the other handedness.
   if (left_handed_columns(spec.conventions) &&
-      (spec.kind == "edge_visibility" || spec.kind == "render" || spec.kind == "projection_plane"))
+      (spec.kind == "render" || spec.kind == "projection_plane"))
     fail_at(p["conventions"].IsDefined() ? p["conventions"] : p["kind"], file,
             spec.field + ".conventions.handedness",
             "the kind '" + spec.kind +

@@ -23,7 +23,7 @@ std::string point_text(const Eigen::Vector3d& p) {
 
 double DrawView::depth(const Eigen::Vector3d& world) const {
   const Eigen::Vector4d v = view_from_world * world.homogeneous();
-  return api == Api::DirectX ? v.z() : -v.z();  // DirectX looks down +z, the others down −z
+  return left_handed ? v.z() : -v.z();  // left-handed views look down +z, the others down −z
 }
 
 Eigen::Vector2d DrawView::project(const Eigen::Vector3d& world) const {
@@ -34,9 +34,11 @@ Eigen::Vector2d DrawView::project(const Eigen::Vector3d& world) const {
   return s;
 }
 
-DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api api) {
+DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api api,
+                   bool left_handed) {
   DrawView d;
   d.api = api;
+  d.left_handed = left_handed || api == Api::DirectX;
   d.perspective = viewer.eye.has_value();
   Eigen::Vector3d eye, forward;
   if (d.perspective) {
@@ -54,14 +56,15 @@ DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api
   Eigen::Vector3d up(0, 1, 0);
   const double along_y = forward.normalized().y();
   if (std::abs(along_y) > kUpParallel) up = Eigen::Vector3d(0, 0, along_y < 0 ? -1 : 1);
-  const MatX<double> m = look_at<double>(eye, center, up, api);
+  const MatX<double> m = look_at<double>(eye, center, up, d.left_handed ? Api::DirectX : api);
   d.view_from_world = m;
   d.description = d.perspective ? fmt::format("perspective from the eye {} toward {}, up {}",
                                               point_text(eye), point_text(center), point_text(up))
                                 : fmt::format("orthographic along {}, up {}", point_text(forward),
                                               point_text(up));
-  d.description +=
-      fmt::format(" ({}{})", to_string(api), api == Api::Processing ? ", window y down" : "");
+  d.description += fmt::format(" ({}{}{})", to_string(api),
+                               left_handed && api != Api::DirectX ? ", left-handed" : "",
+                               api == Api::Processing ? ", window y down" : "");
   return d;
 }
 

@@ -1,8 +1,9 @@
 // The camera of `frustum draw`: what the problem's viewer sees. With an eye, a perspective
 // view from the eye toward a centre (the scene's centroid); with a view direction, an
 // orthographic view along it. Up is +y, or ∓z when looking straight down/up the y axis. The
-// camera is look_at in the problem's api (DirectX: left-handed), so the picture is the one
-// that api shows; Processing's window y points down, so its pictures are flipped vertically.
+// camera is look_at in the problem's api (DirectX: left-handed; `left_handed`: a left-handed
+// course under another api, LookAtLH's basis), so the picture is the one that frame shows;
+// Processing's window y points down, so its pictures are flipped vertically.
 // Screen coordinates: x right, y up, unscaled (perspective: x_view/depth, y_view/depth).
 #pragma once
 
@@ -17,6 +18,7 @@ namespace frustum {
 struct DrawView {
   bool perspective = true;
   Api api = Api::OpenGL;
+  bool left_handed = false;  // looking down +z (DirectX, or a left-handed course)
   Eigen::Matrix4d view_from_world = Eigen::Matrix4d::Identity();
   std::string description;  // one sentence for the picture's caption
 
@@ -27,7 +29,8 @@ struct DrawView {
 };
 
 // Throws DomainError("eye") when the eye is at the centre, or "view_direction" when it is zero.
-DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api api);
+DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api api,
+                   bool left_handed = false);
 
 // Fits screen points into a w × h canvas with a margin, keeping the aspect ratio; maps to SVG
 // coordinates (y down).

@@ -18,6 +18,9 @@ struct Drawable {
   Mesh mesh;                              // HiddenLines (already transformed)
   std::vector<Polygon3<Exact>> polygons;  // PainterVsZBuffer
   DepthViewer viewer;                     // HiddenLines: always an eye
+  // The course's frame is left-handed under OpenGL's or Processing's matrices: the camera is
+  // the left-handed look-at (LookAtLH's basis), so the picture is what that frame shows.
+  bool left_handed = false;
 };
 
 }  // namespace frustum

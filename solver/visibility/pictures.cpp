@@ -53,7 +53,7 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   for (const Vec3<Exact>& v : m.vertices) center += to_double(v);
   center /= static_cast<double>(std::max<std::size_t>(1, m.vertices.size()));
-  const DrawView view = draw_view(d.viewer, center, o.api);
+  const DrawView view = draw_view(d.viewer, center, o.api, d.left_handed);
 
   std::vector<Eigen::Vector3d> world;
   std::vector<Eigen::Vector2d> screen;
