@@ -267,10 +267,9 @@ TEST(Handedness, DeclarationErrorsNameTheField) {
       error_of("{api: directx, handedness: right}", "normal", tri).find("conventions.handedness"),
       std::string::npos);
   EXPECT_EQ(error_of("{api: directx, handedness: left}", "normal", tri), "");
-  EXPECT_NE(
-      error_of(kLeft, "projection_plane", "{window: [200, 200], fov: 60, point: [0, 100, -300]}")
-          .find("right-handed only"),
-      std::string::npos);
+  EXPECT_EQ(
+      error_of(kLeft, "projection_plane", "{window: [200, 200], fov: 60, point: [0, 100, 300]}"),
+      "");
   EXPECT_EQ(error_of(kLeft, "edge_visibility", "{solid: cube, eye: [3, 4, 5]}"), "");
 }
 
@@ -328,6 +327,46 @@ TEST(Handedness, EdgeVisibilityFollowsALeftHandedCourse) {
   EXPECT_NE(text.find("n = e₁ × e₀"), std::string::npos) << text;
   EXPECT_NE(text.find("face 0 [0 3 2 1]"), std::string::npos) << text;
   EXPECT_NE(render_problem_markdown(left, Lang::Ja).find("e₁ × e₀ である"), std::string::npos);
+}
+
+// projection_plane in a left-handed course: the eye looks down +z, so the plane is at +s and a
+// point in front of the eye has z > 0; the answers are the right-handed ones mirrored in z (the
+// seed's window 200 × 200, fov 60°: s = 100√3, P(0, 100, 300) ↦ (0, 100√3/3, 100√3)).
+TEST(Handedness, ProjectionPlaneLooksDownPlusZInALeftHandedCourse) {
+  const ProblemResult right =
+      solve_one(kRight, "projection_plane", "{window: [200, 200], fov: 60, point: [0, 100, -300]}");
+  const ProblemResult left =
+      solve_one(kLeft, "projection_plane", "{window: [200, 200], fov: 60, point: [0, 100, 300]}");
+  ASSERT_FALSE(right.error || left.error) << test::error_text(left);
+  EXPECT_EQ(test::exact_text(right, "plane_z"), "-100*sqrt(3)");
+  EXPECT_EQ(test::exact_text(left, "plane_z"), "100*sqrt(3)");
+  EXPECT_EQ(test::exact_text(left, "projected"), "0, 100*sqrt(3)/3, 100*sqrt(3)");
+  // Property: any point and window, mirrored in z, gives the mirrored answer.
+  std::mt19937 rng(19);
+  std::uniform_int_distribution<int> c(-40, 40), depth(1, 40);
+  for (int i = 0; i < 30; ++i) {
+    const std::array<int, 3> p{10 * c(rng), 10 * c(rng), 10 * depth(rng)};
+    const std::string window = i % 2 ? "[640, 480]" : "[400, 300]";
+    const std::string fov = std::to_string(30 + 15 * (i % 4));
+    const ProblemResult r = solve_one(
+        kRight, "projection_plane",
+        "{window: " + window + ", fov: " + fov + ", point: " + point_text(mirrored(p)) + "}");
+    const ProblemResult l =
+        solve_one(kLeft, "projection_plane",
+                  "{window: " + window + ", fov: " + fov + ", point: " + point_text(p) + "}");
+    ASSERT_FALSE(r.error || l.error);
+    const std::vector<double>& a = numbers(r, "projected");
+    const std::vector<double>& b = numbers(l, "projected");
+    EXPECT_DOUBLE_EQ(b[0], a[0]);
+    EXPECT_DOUBLE_EQ(b[1], a[1]);
+    EXPECT_DOUBLE_EQ(b[2], -a[2]);
+  }
+  // A point behind a left-handed eye (z < 0) has no projection.
+  EXPECT_TRUE(
+      solve_one(kLeft, "projection_plane", "{window: [200, 200], fov: 60, point: [0, 100, -300]}")
+          .error);
+  EXPECT_NE(render_problem_markdown(left, Lang::Ru).find("левой системе координат курса"),
+            std::string::npos);
 }
 
 // JSON states the handedness each problem was solved in: the declared one, else the API's own.

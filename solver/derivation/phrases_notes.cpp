@@ -142,6 +142,10 @@ constexpr Phrase kPhrases[] = {
      "При взгляде вдоль +z z_ndc меняется от 0 на near до 1 на far."},
     {"DirectX's eye space looks down +z.", "DirectX の視点座標系は +z 方向を見る.",
      "В DirectX пространство вида смотрит вдоль +z."},
+    {"The course's left-handed eye space looks down +z, so the plane is at positive z.",
+     "この講義の左手系の視点座標系は +z 方向を見るので, この平面は正の z にある.",
+     "В левой системе координат курса пространство вида смотрит вдоль +z, поэтому плоскость "
+     "лежит при положительном z."},
     {"Eye space looks down −z, so the plane is at negative z.",
      "視点座標系は −z 方向を見るので, この平面は負の z にある.",
      "Пространство вида смотрит вдоль −z, поэтому плоскость лежит при отрицательном z."},

@@ -156,11 +156,20 @@ struct EdgeVisibility {
                   "The faces are listed counter-clockwise seen from outside in this "
                   "left-handed frame, where e₀ × e₁ points inward: each face's outward (front) "
                   "normal is n = e₁ × e₀.");
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-      if (g.solid.empty() && analyse_polygon_degenerate(mesh, f))
+    for (std::size_t f = 0; f < mesh.faces.size() && g.solid.empty(); ++f) {
+      const PolygonAnalysis a = analyse_face(mesh, f);
+      if (a.degenerate)
         throw DomainError(
             fmt::format("mesh.faces[{}]", f),
             "the face is degenerate: its vertices are collinear, so it has no normal");
+      // Front or back is a property of a plane: a face whose vertices are not in one plane
+      // has none (its Newell normal would answer anyway).
+      if (!a.planar)
+        throw DomainError(fmt::format("mesh.faces[{}]", f),
+                          fmt::format("the face is not planar: vertex {} is off the plane of the "
+                                      "face's other vertices",
+                                      mesh.faces[f][a.off_plane_vertex]));
+    }
     const MeshCheck check = check_mesh(mesh);
     if (!check.closed || !check.oriented)
       throw DomainError(g.field, check.problem +
@@ -327,10 +336,10 @@ struct EdgeVisibility {
     return d;
   }
 
-  static bool analyse_polygon_degenerate(const Mesh& m, std::size_t f) {
+  static PolygonAnalysis analyse_face(const Mesh& m, std::size_t f) {
     Polygon3<Exact> p;
     for (int k : m.faces[f]) p.push_back(m.vertices[static_cast<std::size_t>(k)]);
-    return analyse_polygon(p).degenerate;
+    return analyse_polygon(p);
   }
   // Default generator: one of the five solids seen from an integer eye at distance ≥ 5 (outside
   // every solid); hard: the eye in a face's plane (cube face x = ±1 or octahedron face

@@ -13,6 +13,9 @@ namespace frustum {
 
 namespace {
 
+// +1 when eye space looks down +z (left-handed: DirectX, or a course that declares it), else −1.
+int looking_down(const Conventions& c) { return handedness_of(c) == Handedness::Left ? 1 : -1; }
+
 struct ProjectionPlane {
   static constexpr const char* kName = "projection_plane";
   static constexpr const char* kSummary =
@@ -44,8 +47,9 @@ struct ProjectionPlane {
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
-    // OpenGL and Processing eye space looks down −z; DirectX looks down +z.
-    const int toward = g.conventions.api == Api::DirectX ? 1 : -1;
+    // OpenGL and Processing eye space looks down −z; DirectX, and a left-handed course under
+    // OpenGL's or Processing's matrices, look down +z.
+    const int toward = looking_down(g.conventions);
     const Exact half = g.fov / 2;
     const Exact s = canonical(toward * (g.height / 2) * GiNaC::cos(half) / GiNaC::sin(half));
     Answers out;
@@ -64,7 +68,10 @@ struct ProjectionPlane {
           "The plane on which the window's height exactly fills the vertical field of view; "
           "Processing puts its default camera at this distance. " +
           std::string(toward < 0 ? "Eye space looks down −z, so the plane is at negative z."
-                                 : "DirectX's eye space looks down +z.");
+                      : g.conventions.api == Api::DirectX
+                          ? "DirectX's eye space looks down +z."
+                          : "The course's left-handed eye space looks down +z, so the plane is "
+                            "at positive z.");
       steps->yields("plane_z");
     }
     const int z_sign = exact_sign(g.point(2));
@@ -93,7 +100,7 @@ struct ProjectionPlane {
     const std::int64_t fov = o.hard ? 150
                                     : rng.pick(o.nice ? std::vector<std::int64_t>{60, 90}
                                                       : std::vector<std::int64_t>{30, 45, 60, 90});
-    const int toward = o.conventions.api == Api::DirectX ? 1 : -1;
+    const int toward = looking_down(o.conventions);
     YAML::Node g;
     g["window"] = gen_list({w, h});
     g["fov"] = gen_angle(fov, o.conventions);

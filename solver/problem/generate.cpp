@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "solver/util/exact_format.hpp"
 
@@ -23,7 +25,40 @@ bool number_literal(const std::string& s) {
   return s.find_first_of("0123456789") != std::string::npos || s.find("pi") != std::string::npos;
 }
 
+// A mesh's vertices drawn again as one solid: every vertex moved by the same map
+// v ↦ (a·x + p, b·y + q, c·z + r) with a, b, c in {1, 2} and p, q, r in [−2, 2], so faces stay
+// planar, the solid keeps its orientation (a, b, c > 0) and convex stays convex. Vertices that
+// are not all integers stay as they are.
+std::optional<YAML::Node> redraw_vertices(const YAML::Node& n, Rng& rng) {
+  std::vector<std::vector<std::int64_t>> v;
+  for (const YAML::Node& vertex : n) {
+    if (!vertex.IsSequence() || vertex.size() != 3) return std::nullopt;
+    std::vector<std::int64_t> p;
+    for (const YAML::Node& c : vertex) {
+      if (!c.IsScalar() || !integer_literal(c.Scalar())) return std::nullopt;
+      p.push_back(std::stoll(c.Scalar()));
+    }
+    v.push_back(p);
+  }
+  std::int64_t scale[3], shift[3];
+  for (int i = 0; i < 3; ++i) {
+    scale[i] = rng.integer(1, 2);
+    shift[i] = rng.integer(-2, 2);
+  }
+  YAML::Node out(YAML::NodeType::Sequence);
+  for (const std::vector<std::int64_t>& p : v) {
+    YAML::Node q(YAML::NodeType::Sequence);
+    for (int i = 0; i < 3; ++i) q.push_back(gen_number(scale[i] * p[i] + shift[i]));
+    q.SetStyle(YAML::EmitterStyle::Flow);
+    out.push_back(q);
+  }
+  out.SetStyle(YAML::EmitterStyle::Flow);
+  return out;
+}
+
 YAML::Node redraw(const YAML::Node& n, const std::string& key, Rng& rng) {
+  if (key == "vertices" && n.IsSequence())
+    if (std::optional<YAML::Node> moved = redraw_vertices(n, rng)) return *moved;
   if (n.IsMap()) {
     YAML::Node out(YAML::NodeType::Map);
     for (auto it = n.begin(); it != n.end(); ++it) {

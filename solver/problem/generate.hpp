@@ -56,7 +56,8 @@ std::string given_shape(const YAML::Node& given);
 // The given with its values drawn again and its shape kept: a non-zero integer moves within
 // about half its size keeping its sign, an angle (fovy, fov, angle, rotate…) becomes another
 // common angle of the same sign; zeros, fractions, words, sizes and indices (dim, width, height,
-// faces, pixels) stay.
+// faces, pixels) stay. A mesh's integer `vertices` move together (one axis-aligned scale by 1 or 2
+// and one shift), so its faces stay planar and the solid keeps its shape class.
 YAML::Node redraw_values(const YAML::Node& given, Rng& rng);
 
 // ---- integer vectors for drawing ----

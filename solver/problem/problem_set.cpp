@@ -79,11 +79,10 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   }
   spec.conventions =
       read_conventions(p["conventions"], file, spec.field + ".conventions", set.conventions);
-  // Kinds that do not yet follow a left-handed course under OpenGL's or Processing's matrices
-  // (their solids' windings, scene cameras and projection plane are right-handed): refused
-  // rather than answered in the other handedness.
-  if (left_handed_columns(spec.conventions) &&
-      (spec.kind == "render" || spec.kind == "projection_plane"))
+  // The render kind does not yet follow a left-handed course under OpenGL's or Processing's
+  // matrices (its scene camera and culling are right-handed): refused rather than answered in
+  // the other handedness.
+  if (left_handed_columns(spec.conventions) && spec.kind == "render")
     fail_at(p["conventions"].IsDefined() ? p["conventions"] : p["kind"], file,
             spec.field + ".conventions.handedness",
             "the kind '" + spec.kind +
