@@ -33,7 +33,9 @@ struct FlatScene {
 
 // The hierarchy walked depth first (objects in file order, children after their parent,
 // copies of a repeat in index order): world_from_object = world_from_parent · M_object.
-FlatScene flatten(const Scene& scene);
+// Without `names`, FlatScene::objects stays empty (WorldTriangle::object still counts the
+// objects): a million copies' names would take more memory than their triangles.
+FlatScene flatten(const Scene& scene, bool names = true);
 
 Mat4d eye_from_world(const Scene& scene);   // the camera (look_at in the API)
 Mat4d clip_from_world(const Scene& scene);  // projection · camera
@@ -46,6 +48,8 @@ inline Vec4d to_clip(const Mat4d& clip_from_world, const Vec3d& p) {
 // Stage: Sutherland–Hodgman against w ≥ ε and the six planes −w ≤ x, y ≤ w, −w ≤ z ≤ w
 // (DirectX 0 ≤ z ≤ w). Fewer than 3 vertices: nothing is visible.
 constexpr double kClipEpsilon = 1e-9;
+// Trivially inside: all three vertices within every plane (nothing to clip).
+bool inside_volume(const std::array<Vec4d, 3>& clip, Api api);
 std::vector<Vec4d> clip_to_volume(const std::array<Vec4d, 3>& clip, Api api);
 
 // Stage: (x, y, z, w) → (x/w, y/w, z/w); w > 0 after clipping.
