@@ -127,12 +127,12 @@ int run_render(const RenderOptions& opt, const Output& o) {
   const Scene& scene = std::get<Scene>(loaded);
   const auto start = std::chrono::steady_clock::now();
   GeometryStats gs;
-  // The world triangles are freed once in window space (the memory peak is here).
-  const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
   Image<std::uint32_t> color;
   Image<float> depth;
   std::string method;
   if (scene.scanline) {
+    // The world triangles are freed once in window space.
+    const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
     ScanlineStats st;
     color = render_scanline(tris, scene.width, scene.height, scene.background, &st,
                             opt.depth ? &depth : nullptr);
@@ -142,7 +142,7 @@ int run_render(const RenderOptions& opt, const Output& o) {
         st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
   } else {
     FillStats fs;
-    Frame frame = render_zbuffer(tris, scene.width, scene.height, scene.background, &fs);
+    Frame frame = render_zbuffer(scene, &gs, &fs);
     color = std::move(frame.color);
     depth = std::move(frame.depth);
     method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",

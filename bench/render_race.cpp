@@ -5,10 +5,10 @@
 // - Frustum: exactly `frustum render SCENE -o DIR/frustum.png [--size] [--id]` (run_render, the
 //   command's own library call).
 // - llvmpipe: the same reader (load_render_scene: parsing costs the same) and the same hierarchy
-//   walk (flatten: the model transforms, in double, as an application would fill its vertex
-//   buffer), then the view and projection matrices to fixed-function GL, which transforms,
-//   clips, lights (Processing's lights() as GL_LIGHT0, two-sided, flat), maps to the viewport
-//   and rasterizes into a depth-tested frame; glReadPixels, and the same PNG writer
+//   walk (for_each_world_triangle: the model transforms, in double, filling a float vertex
+//   buffer as an application would), then the view and projection matrices to fixed-function GL,
+//   which transforms, clips, lights (Processing's lights() as GL_LIGHT0, two-sided, flat), maps to
+//   the viewport and rasterizes into a depth-tested frame; glReadPixels, and the same PNG writer
 //   (write_color_png). The context is made once, before the runs.
 // LP_NUM_THREADS is left as the caller set it (unset: Mesa's default, one per core). Frustum's
 // render runs on one thread. In the same run: the bandwidth ceiling (bandwidth_ceiling.hpp) and
@@ -98,28 +98,25 @@ struct Batch {
 // The llvmpipe side, start to end; returns the image as read back (raster rows, y up).
 const Image<std::uint32_t>& render_llvmpipe(const app::RenderOptions& opt, Llvmpipe& gl) {
   const Scene scene = load(opt);
-  const FlatScene flat = flatten(scene, false);  // as run_render
   // The vertex buffer: world positions, and face normals (n = (v1 − v0) × (v2 − v0), the
-  // side shade() lights) when there is a light.
+  // side shade() lights) when there is a light, filled by Frustum's hierarchy walk.
   const bool lit = scene.light.has_value();
   std::vector<float> xyz, normals;
   std::vector<Batch> batches;
-  xyz.reserve(flat.triangles.size() * 9);
-  if (lit) normals.reserve(flat.triangles.size() * 9);
-  for (const WorldTriangle& t : flat.triangles) {
+  for_each_world_triangle(scene, [&](const WorldTriangle& t) {
     if (batches.empty() || batches.back().fill != t.fill || batches.back().cull != t.cull)
       batches.push_back({static_cast<GLint>(xyz.size() / 3), 0, t.fill, t.cull});
     batches.back().count += 3;
     for (const Vec3d& v : t.v)
       xyz.insert(xyz.end(),
                  {static_cast<float>(v(0)), static_cast<float>(v(1)), static_cast<float>(v(2))});
-    if (!lit) continue;
+    if (!lit) return;
     Vec3d n = (t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]);
     if (n.norm() > 0) n.normalize();
     for (int k = 0; k < 3; ++k)
       normals.insert(normals.end(), {static_cast<float>(n(0)), static_cast<float>(n(1)),
                                      static_cast<float>(n(2))});
-  }
+  });
 
   glViewport(0, 0, scene.width, scene.height);
   glMatrixMode(GL_PROJECTION);

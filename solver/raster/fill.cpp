@@ -168,6 +168,20 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
   return frame;
 }
 
+Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStats* stats) {
+  Frame frame(scene.width, scene.height, scene.background);
+  GeometryStage stage(scene);
+  std::vector<WindowTriangle> window;  // one world triangle's, reused
+  int source = 0, drawn = 0;
+  for_each_world_triangle(scene, [&](const WorldTriangle& t) {
+    window.clear();
+    stage.add(t, source++, window);
+    for (const WindowTriangle& w : window) draw_triangle(setup_raster(w, drawn++), frame, stats);
+  });
+  if (geometry_stats) *geometry_stats = stage.stats;
+  return frame;
+}
+
 PixelTrace trace_pixel(const std::vector<WindowTriangle>& triangles, int i, int j, Rgb background) {
   PixelTrace p;
   p.i = i;
