@@ -198,6 +198,14 @@ long differing_pixels(const Image<std::uint32_t>& a, const Image<std::uint32_t>&
   return n;
 }
 
+// Threads of this process (the application's and llvmpipe's).
+long process_threads() {
+  long n = 0;
+  for ([[maybe_unused]] const auto& task : std::filesystem::directory_iterator("/proc/self/task"))
+    ++n;
+  return n;
+}
+
 // Pixels per second of the ceiling loop: the best of `passes` passes.
 double ceiling_rate(int passes) {
   Frame frame(kCeilingWidth, kCeilingHeight, {});
@@ -300,6 +308,7 @@ int race(int argc, char** argv) {
       run_frustum();
     }
   }
+  const long threads = process_threads();
   const long pixels = static_cast<long>(ours.color.data.size());
   const long differ = differing_pixels(ours.color, *theirs);
   const double speedup = median(llvmpipe_times.wall) / median(frustum_times.wall);
@@ -316,19 +325,23 @@ int race(int argc, char** argv) {
     std::cout << fmt::format(
         R"({{"scene": "{}", "width": {}, "height": {}, "triangles": {}, "reps": {}, )"
         R"("lp_num_threads": "{}", "sides": [{}, {}], "fill_pixels_per_s": {:.6g}, )"
-        R"("ceiling_pixels_per_s": {:.6g}, "differing_pixels": {}, "pixels": {}}})"
+        R"("ceiling_pixels_per_s": {:.6g}, "differing_pixels": {}, "pixels": {}, )"
+        R"("process_threads": {}}})"
         "\n",
         std::filesystem::path(opt.file).filename().string(), scene.width, scene.height,
         gs.triangles, reps, lp_threads, side("frustum", "1", frustum_times),
-        side("llvmpipe", lp_threads, llvmpipe_times), fill_rate, ceiling, differ, pixels);
+        side("llvmpipe", lp_threads, llvmpipe_times), fill_rate, ceiling, differ, pixels, threads);
   } else {
     std::cout << fmt::format(
         "{}: {} × {}, {} triangles ({} drawn after clipping and culling); {} runs a side, "
         "interleaved\n",
         opt.file, scene.width, scene.height, gs.triangles, gs.window, reps);
-    std::cout << fmt::format("LP_NUM_THREADS={}{}; Frustum's render is single-threaded{}\n",
-                             lp_threads, lp_env ? "" : " (Mesa's default: one per core)",
-                             lp_threads == "1" ? "" : ": this is not N threads against N");
+    std::cout << fmt::format(
+        "LP_NUM_THREADS={}{}; Frustum's render is single-threaded{}; this process runs {} "
+        "threads after llvmpipe's runs (the application's own and llvmpipe's, which rasterize "
+        "beside it)\n",
+        lp_threads, lp_env ? "" : " (Mesa's default: one per core)",
+        lp_threads == "1" ? "" : ": this is not N threads against N", threads);
     std::cout << "side      threads  wall min / median / max (s)  CPU median (s)\n";
     auto row = [](const char* name, const std::string& threads, const Times& t) {
       return fmt::format("{:<9} {:>7}  {:>8.3f} / {:.3f} / {:.3f}  {:>14.3f}\n", name, threads,
