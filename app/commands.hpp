@@ -87,6 +87,7 @@ struct RenderOptions {
   std::optional<std::pair<int, int>> size;  // --size WxH
   std::optional<std::string> id;            // the render problem of a set
   std::optional<std::string> method;        // zbuffer | scanline
+  int threads = 1;                          // ≥ 2: the geometry beside the fill (z-buffer)
 };
 int run_render(const RenderOptions& options, const Output& o);
 // The scene `frustum render` draws (--size and --method applied), or the exit status after

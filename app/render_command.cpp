@@ -1,5 +1,5 @@
 // frustum render FILE.yaml -o image.png [--depth depth.png] [--size WxH] [--id ID]
-//                [--method zbuffer|scanline]
+//                [--method zbuffer|scanline] [--threads N]
 // FILE is a scene file (top-level `scene:` and optional `conventions:`) or a problem set, whose
 // render problem is the one named by --id (default: the first of kind render).
 #include <fmt/format.h>
@@ -142,7 +142,7 @@ int run_render(const RenderOptions& opt, const Output& o) {
         st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
   } else {
     FillStats fs;
-    Frame frame = render_zbuffer(scene, &gs, &fs);
+    Frame frame = render_zbuffer(scene, &gs, &fs, opt.threads);
     color = std::move(frame.color);
     depth = std::move(frame.depth);
     method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",

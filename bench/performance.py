@@ -305,9 +305,9 @@ def main():
             "transform → clip → raster → PNG on both sides, runs interleaved. Frustum runs what `frustum render` "
             "runs; llvmpipe (OSMesa, fixed-function GL) gets the scene from the same reader and the same hierarchy "
             "walk (model transforms), then the view and projection matrices, transforms, clips, lights and "
-            "rasterizes into a depth-tested frame, and its pixels go through the same PNG writer. Frustum's render "
-            f"is single-threaded, so the rows with {ncpu} llvmpipe threads are not N against N. CPU time is the "
-            "process's (llvmpipe's threads included).\n")
+            "rasterizes into a depth-tested frame, and its pixels go through the same PNG writer. Frustum renders "
+            "with `--threads` = LP_NUM_THREADS and uses at most two (the geometry beside the fill). CPU time is "
+            "the process's (llvmpipe's threads included).\n")
         say("| scene | side | threads | wall min / median / max (s) | CPU (s) |")
         say("| --- | --- | ---: | ---: | ---: |")
         for r in races:

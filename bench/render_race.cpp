@@ -10,11 +10,11 @@
 //   which transforms, clips, lights (Processing's lights() as GL_LIGHT0, two-sided, flat), maps to
 //   the viewport and rasterizes into a depth-tested frame; glReadPixels, and the same PNG writer
 //   (write_color_png). The context is made once, before the runs.
-// LP_NUM_THREADS is left as the caller set it (unset: Mesa's default, one per core). Frustum's
-// render runs on one thread. In the same run: the bandwidth ceiling (bandwidth_ceiling.hpp) and
-// the fraction of it that Frustum's fill reaches on this scene, and how many pixels of the two
-// images differ (by more than 2 levels in a channel); --max-differ F fails (exit 1) when more
-// than the fraction F of the pixels do.
+// LP_NUM_THREADS is left as the caller set it (unset: Mesa's default, one per core), and Frustum
+// renders with as many threads (`--threads`; it uses at most two). In the same run: the bandwidth
+// ceiling (bandwidth_ceiling.hpp) and the fraction of it that Frustum's fill reaches on this scene,
+// and how many pixels of the two images differ (by more than 2 levels in a channel); --max-differ F
+// fails (exit 1) when more than the fraction F of the pixels do.
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 #include <fmt/format.h>
@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include "app/commands.hpp"
 #include "bench/bandwidth_ceiling.hpp"
@@ -261,6 +262,12 @@ int race(int argc, char** argv) {
   const std::string llvmpipe_png = (std::filesystem::path(out_dir) / "llvmpipe.png").string();
   const char* lp_env = std::getenv("LP_NUM_THREADS");
   const std::string lp_threads = lp_env ? lp_env : "unset";
+  // Frustum gets as many threads as llvmpipe (unset: one per core, Mesa's default); its render
+  // uses at most two (the geometry beside the fill).
+  const int asked = lp_env ? std::max(1, std::atoi(lp_env))
+                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  opt.threads = asked;
+  const std::string frustum_threads = std::to_string(std::min(asked, 2));
 
   // Untimed: the frame size, the context, Frustum's own image for the comparison, the fill alone.
   const Scene scene = load(opt);
@@ -329,7 +336,7 @@ int race(int argc, char** argv) {
         R"("process_threads": {}}})"
         "\n",
         std::filesystem::path(opt.file).filename().string(), scene.width, scene.height,
-        gs.triangles, reps, lp_threads, side("frustum", "1", frustum_times),
+        gs.triangles, reps, lp_threads, side("frustum", frustum_threads, frustum_times),
         side("llvmpipe", lp_threads, llvmpipe_times), fill_rate, ceiling, differ, pixels, threads);
   } else {
     std::cout << fmt::format(
@@ -337,18 +344,19 @@ int race(int argc, char** argv) {
         "interleaved\n",
         opt.file, scene.width, scene.height, gs.triangles, gs.window, reps);
     std::cout << fmt::format(
-        "LP_NUM_THREADS={}{}; Frustum's render is single-threaded{}; this process runs {} "
-        "threads after llvmpipe's runs (the application's own and llvmpipe's, which rasterize "
-        "beside it)\n",
-        lp_threads, lp_env ? "" : " (Mesa's default: one per core)",
-        lp_threads == "1" ? "" : ": this is not N threads against N", threads);
+        "LP_NUM_THREADS={}{}; Frustum renders with --threads {}, which uses {} (the geometry "
+        "beside the fill){}; this process runs {} threads after llvmpipe's runs (the "
+        "application's own and llvmpipe's, which rasterize beside it)\n",
+        lp_threads, lp_env ? "" : " (Mesa's default: one per core)", asked, frustum_threads,
+        asked > 2 ? ": not N threads against N" : "", threads);
     std::cout << "side      threads  wall min / median / max (s)  CPU median (s)\n";
     auto row = [](const char* name, const std::string& threads, const Times& t) {
       return fmt::format("{:<9} {:>7}  {:>8.3f} / {:.3f} / {:.3f}  {:>14.3f}\n", name, threads,
                          *std::min_element(t.wall.begin(), t.wall.end()), median(t.wall),
                          *std::max_element(t.wall.begin(), t.wall.end()), median(t.cpu));
     };
-    std::cout << row("frustum", "1", frustum_times) << row("llvmpipe", lp_threads, llvmpipe_times);
+    std::cout << row("frustum", frustum_threads, frustum_times)
+              << row("llvmpipe", lp_threads, llvmpipe_times);
     std::cout << fmt::format(
         "Frustum is {:.2f}× llvmpipe's speed in wall time (median), {:.2f}× in CPU time\n", speedup,
         cpu_ratio);

@@ -416,6 +416,16 @@ TEST(RenderKind, StreamedZBufferEqualsTheStagesOneAfterTheOther) {
   EXPECT_EQ(streamed_gs.window, gs.window);
   EXPECT_EQ(streamed_fs.fragments, fs.fragments);
   EXPECT_EQ(streamed_fs.written, fs.written);
+  // The geometry on a thread of its own, handing chunks to the fill: the same frame.
+  for (const int threads : {2, 4}) {
+    GeometryStats threaded_gs;
+    FillStats threaded_fs;
+    const Frame threaded = render_zbuffer(scene, &threaded_gs, &threaded_fs, threads);
+    EXPECT_EQ(threaded.color.data, z.color.data);
+    EXPECT_EQ(threaded.depth.data, z.depth.data);
+    EXPECT_EQ(threaded_gs.window, gs.window);
+    EXPECT_EQ(threaded_fs.written, fs.written);
+  }
   // Without names the walk yields the same triangles, and counts the same objects.
   const FlatScene named = flatten(scene), unnamed = flatten(scene, false);
   ASSERT_EQ(named.triangles.size(), unnamed.triangles.size());
