@@ -176,7 +176,7 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 namespace {
 
 // Window triangles from the geometry thread to the fill, in drawing order, at most kInFlight
-// chunks at a time; drained chunks go back to the producer (no allocation once warm).
+// chunks at a time; drawn chunks go back to the producer (no allocation once warm).
 class ChunkQueue {
  public:
   static constexpr std::size_t kChunk = 1024, kInFlight = 8;
@@ -203,19 +203,17 @@ class ChunkQueue {
     closed_ = true;
     changed_.notify_all();
   }
-  // The next chunk; false once the producer has closed and every chunk is out.
-  bool pop(std::vector<WindowTriangle>& chunk) {
+  // The next chunk in place of `chunk` (drawn: it goes back to the producer); false once the
+  // producer has closed and every chunk is out.
+  bool next(std::vector<WindowTriangle>& chunk) {
     std::unique_lock lock(mutex_);
+    if (chunk.capacity() > 0) empty_.push_back(std::move(chunk));
     changed_.wait(lock, [&] { return !full_.empty() || closed_; });
     if (full_.empty()) return false;
     chunk = std::move(full_.front());
     full_.pop_front();
     changed_.notify_all();
     return true;
-  }
-  void recycle(std::vector<WindowTriangle>&& chunk) {
-    const std::lock_guard lock(mutex_);
-    empty_.push_back(std::move(chunk));
   }
 
  private:
@@ -259,10 +257,8 @@ Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStat
       queue.close();
     });
     std::vector<WindowTriangle> chunk;
-    while (queue.pop(chunk)) {
+    while (queue.next(chunk))
       for (const WindowTriangle& w : chunk) draw_triangle(setup_raster(w, drawn++), frame, stats);
-      queue.recycle(std::move(chunk));
-    }
     geometry_thread.join();
     if (error) std::rethrow_exception(error);
   }
