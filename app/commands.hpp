@@ -5,10 +5,13 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "solver/derivation/i18n.hpp"
 #include "solver/numeric/precision.hpp"
+#include "solver/raster/scene.hpp"
+#include "solver/raster/zbuffer.hpp"
 
 namespace frustum::app {
 
@@ -84,8 +87,14 @@ struct RenderOptions {
   std::optional<std::pair<int, int>> size;  // --size WxH
   std::optional<std::string> id;            // the render problem of a set
   std::optional<std::string> method;        // zbuffer | scanline
+  int threads = 1;                          // ≥ 2: the geometry beside the fill (z-buffer)
 };
 int run_render(const RenderOptions& options, const Output& o);
+// The scene `frustum render` draws (--size and --method applied), or the exit status after
+// printing why not; and its PNG writer (raster rows, y up). bench/render_race.cpp races the
+// same steps through llvmpipe.
+std::variant<Scene, int> load_render_scene(const RenderOptions& options, const Output& o);
+bool write_color_png(const std::string& path, const Image<std::uint32_t>& image);
 // `frustum bench accuracy`: speed against error of every numeric path and backend, on generated
 // and hard cases (every *.yaml in hard_dir); writes accuracy_results.md and the plots into out_dir
 // (bench_command.cpp).

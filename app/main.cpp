@@ -273,6 +273,11 @@ int main(int argc, char** argv) {
       ->add_option("--method", render_opt.method,
                    "zbuffer or scanline (default: the scene's method)")
       ->check(CLI::IsMember({"zbuffer", "scanline"}));
+  render
+      ->add_option("--threads", render_opt.threads,
+                   "2 or more: the geometry on a thread of its own beside the z-buffer's fill "
+                   "(the same image; default 1)")
+      ->check(CLI::Range(1, 1024));
   render->footer(examples(
       {"frustum render problems/seeds/paperplane.yaml -o paperplane.png --depth depth.png"}));
 

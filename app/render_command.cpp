@@ -1,5 +1,5 @@
 // frustum render FILE.yaml -o image.png [--depth depth.png] [--size WxH] [--id ID]
-//                [--method zbuffer|scanline]
+//                [--method zbuffer|scanline] [--threads N]
 // FILE is a scene file (top-level `scene:` and optional `conventions:`) or a problem set, whose
 // render problem is the one named by --id (default: the first of kind render).
 #include <fmt/format.h>
@@ -67,15 +67,6 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
   }
 }
 
-// Raster rows (y up) to PNG rows (top first).
-bool write_color_png(const std::string& path, const Image<std::uint32_t>& img) {
-  std::vector<std::uint32_t> rows(img.data.size());
-  for (int r = 0; r < img.height; ++r)
-    std::copy_n(&img.at(0, img.height - 1 - r), img.width,
-                rows.begin() + static_cast<long>(r) * img.width);
-  return stbi_write_png(path.c_str(), img.width, img.height, 4, rows.data(), img.width * 4) != 0;
-}
-
 // Depth as grey: the covered depths' range [min, max] stretched to white (near) … dark grey
 // (far); the background (depth 1, nothing drawn) black.
 bool write_depth_png(const std::string& path, const Image<float>& depth) {
@@ -99,7 +90,7 @@ bool write_depth_png(const std::string& path, const Image<float>& depth) {
 
 }  // namespace
 
-int run_render(const RenderOptions& opt, const Output& o) {
+std::variant<Scene, int> load_render_scene(const RenderOptions& opt, const Output& o) {
   std::optional<Scene> loaded = load_scene(opt, o);
   if (!loaded) return 1;
   Scene& scene = *loaded;
@@ -118,14 +109,30 @@ int run_render(const RenderOptions& opt, const Output& o) {
     scene.width = w;
     scene.height = h;
   }
+  return std::move(scene);
+}
+
+// Raster rows (y up) to PNG rows (top first).
+bool write_color_png(const std::string& path, const Image<std::uint32_t>& img) {
+  std::vector<std::uint32_t> rows(img.data.size());
+  for (int r = 0; r < img.height; ++r)
+    std::copy_n(&img.at(0, img.height - 1 - r), img.width,
+                rows.begin() + static_cast<long>(r) * img.width);
+  return stbi_write_png(path.c_str(), img.width, img.height, 4, rows.data(), img.width * 4) != 0;
+}
+
+int run_render(const RenderOptions& opt, const Output& o) {
+  std::variant<Scene, int> loaded = load_render_scene(opt, o);
+  if (const int* status = std::get_if<int>(&loaded)) return *status;
+  const Scene& scene = std::get<Scene>(loaded);
   const auto start = std::chrono::steady_clock::now();
-  const FlatScene flat = flatten(scene);
   GeometryStats gs;
-  const std::vector<WindowTriangle> tris = geometry(scene, flat, &gs);
   Image<std::uint32_t> color;
   Image<float> depth;
   std::string method;
   if (scene.scanline) {
+    // The world triangles are freed once in window space.
+    const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
     ScanlineStats st;
     color = render_scanline(tris, scene.width, scene.height, scene.background, &st,
                             opt.depth ? &depth : nullptr);
@@ -135,7 +142,7 @@ int run_render(const RenderOptions& opt, const Output& o) {
         st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
   } else {
     FillStats fs;
-    Frame frame = render_zbuffer(tris, scene.width, scene.height, scene.background, &fs);
+    Frame frame = render_zbuffer(scene, &gs, &fs, opt.threads);
     color = std::move(frame.color);
     depth = std::move(frame.depth);
     method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",

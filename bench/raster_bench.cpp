@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "bench/bandwidth_ceiling.hpp"
 #include "solver/raster/fill.hpp"
 
 #ifdef FRUSTUM_HAVE_OSMESA
@@ -19,7 +20,7 @@
 namespace frustum {
 namespace {
 
-constexpr int kWidth = 1920, kHeight = 1080;
+constexpr int kWidth = kCeilingWidth, kHeight = kCeilingHeight;
 constexpr int kSmallCount = 100000, kLargeCount = 100;
 
 // Triangle k carries colour k + 1 (24 bits), so an image says which triangle won each pixel.
@@ -104,25 +105,8 @@ void BM_Frustum(benchmark::State& state) {
   }
   report(state, small);
 }
-// The bandwidth ceiling fill is measured against, on the same buffers: every pixel of the
-// frame depth-tested against a plane and written (read depth, write depth and colour: 12 bytes
-// per fragment), a loop the compiler vectorises with nothing else in it. Fill's pixels/s over
-// this one's is the fraction of the ceiling it reaches (tools/performance.sh prints it).
-__attribute__((target_clones("avx2", "default"))) void depth_pass(float* depth,
-                                                                  std::uint32_t* color, float z0,
-                                                                  float dz, std::uint32_t id) {
-  for (int y = 0; y < kHeight; ++y) {
-    float* d = depth + static_cast<std::size_t>(y) * kWidth;
-    std::uint32_t* c = color + static_cast<std::size_t>(y) * kWidth;
-    for (int x = 0; x < kWidth; ++x) {  // kWidth is a multiple of every vector width: no epilogue
-      const float z = z0 + dz * static_cast<float>(x);
-      const bool pass = z < d[x];
-      d[x] = pass ? z : d[x];
-      c[x] = pass ? id : c[x];
-    }
-  }
-}
-
+// The bandwidth ceiling (bandwidth_ceiling.hpp) on the same buffers; tools/performance.sh prints
+// fill's fraction of it.
 void BM_BandwidthCeiling(benchmark::State& state) {
   Frame frame(kWidth, kHeight, {});
   std::uint32_t pass = 0;

@@ -395,6 +395,45 @@ TEST(RenderKind, ScanlineImageOfThePaperplaneEqualsTheZBuffer) {
   EXPECT_GT(plane, 200);  // the white plane is drawn, lit from above
 }
 
+// `frustum render` streams each world triangle through geometry into the frame: the same
+// colours, depths and statistics as the stages run one after the other over whole arrays
+// (the paper plane clips 240 triangles and drops 1,894 outside the volume).
+TEST(RenderKind, StreamedZBufferEqualsTheStagesOneAfterTheOther) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/paperplane.yaml"));
+  ASSERT_FALSE(set.problems.empty());
+  const Scene& scene = std::any_cast<const RenderGiven&>(set.problems[0].given).spec.scene;
+  GeometryStats gs, streamed_gs;
+  FillStats fs, streamed_fs;
+  const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene), &gs);
+  const Frame z = render_zbuffer(tris, scene.width, scene.height, scene.background, &fs);
+  const Frame streamed = render_zbuffer(scene, &streamed_gs, &streamed_fs);
+  EXPECT_EQ(streamed.color.data, z.color.data);
+  EXPECT_EQ(streamed.depth.data, z.depth.data);
+  EXPECT_GT(gs.clipped, 0);
+  EXPECT_GT(gs.outside, 0);
+  EXPECT_EQ(streamed_gs.clipped, gs.clipped);
+  EXPECT_EQ(streamed_gs.outside, gs.outside);
+  EXPECT_EQ(streamed_gs.window, gs.window);
+  EXPECT_EQ(streamed_fs.fragments, fs.fragments);
+  EXPECT_EQ(streamed_fs.written, fs.written);
+  // The geometry on a thread of its own, handing chunks to the fill: the same frame.
+  for (const int threads : {2, 4}) {
+    GeometryStats threaded_gs;
+    FillStats threaded_fs;
+    const Frame threaded = render_zbuffer(scene, &threaded_gs, &threaded_fs, threads);
+    EXPECT_EQ(threaded.color.data, z.color.data);
+    EXPECT_EQ(threaded.depth.data, z.depth.data);
+    EXPECT_EQ(threaded_gs.window, gs.window);
+    EXPECT_EQ(threaded_fs.written, fs.written);
+  }
+  // Without names the walk yields the same triangles, and counts the same objects.
+  const FlatScene named = flatten(scene), unnamed = flatten(scene, false);
+  ASSERT_EQ(named.triangles.size(), unnamed.triangles.size());
+  EXPECT_TRUE(unnamed.objects.empty());
+  EXPECT_EQ(unnamed.triangles.back().object, named.triangles.back().object);
+  EXPECT_EQ(unnamed.triangles.back().v, named.triangles.back().v);
+}
+
 // ---------------------------------------------------------------- exact decisions (issue 14)
 
 // What the float pipeline (geometry() and trace_pixel() on doubles, no exact fallback) shows

@@ -1,7 +1,7 @@
 #!/bin/bash
 # Regenerates docs/performance.md from one run on this machine: builds frustum and frustum_bench
-# (Release), then runs bench/performance.py, which measures every figure the page shows (CPU
-# model, date and load included). Needs python3-numpy and python3-yaml (tools/packages/test.txt).
+# (Release; with OSMesa frustum_race too), then runs bench/performance.py, which measures every
+# figure the page shows (CPU model, date and load included). Needs python3-numpy and python3-yaml (tools/packages/test.txt).
 #
 #   tools/performance.sh            sizes up to generate 10 000, grade 1 000, render 1 M (~10 min)
 #   tools/performance.sh --full     also generate 100 000, grade 10 000, render 10 M
@@ -12,4 +12,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . tools/bench_build.sh
 exec /usr/bin/python3 bench/performance.py --frustum "$BUILD/frustum" --bench "$BUILD/frustum_bench" \
-  --repo . --reps "${REPS:-3}" "$@"
+  --race "$BUILD/frustum_race" --repo . --reps "${REPS:-3}" "$@"

@@ -1,7 +1,12 @@
 #include "solver/raster/fill.hpp"
 
 #include <algorithm>
+#include <condition_variable>
+#include <deque>
+#include <exception>
 #include <limits>
+#include <mutex>
+#include <thread>
 
 namespace frustum {
 
@@ -165,6 +170,99 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
   Frame frame(width, height, background);
   for (std::size_t k = 0; k < triangles.size(); ++k)
     draw_triangle(setup_raster(triangles[k], static_cast<int>(k)), frame, stats);
+  return frame;
+}
+
+namespace {
+
+// Window triangles from the geometry thread to the fill, in drawing order, at most kInFlight
+// chunks at a time; drawn chunks go back to the producer (no allocation once warm).
+class ChunkQueue {
+ public:
+  static constexpr std::size_t kChunk = 1024, kInFlight = 8;
+  std::vector<WindowTriangle> take() {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return full_.size() < kInFlight; });
+    if (empty_.empty()) {
+      std::vector<WindowTriangle> chunk;
+      chunk.reserve(kChunk);
+      return chunk;
+    }
+    std::vector<WindowTriangle> chunk = std::move(empty_.back());
+    empty_.pop_back();
+    chunk.clear();
+    return chunk;
+  }
+  void push(std::vector<WindowTriangle>&& chunk) {
+    const std::lock_guard lock(mutex_);
+    full_.push_back(std::move(chunk));
+    changed_.notify_all();
+  }
+  void close() {
+    const std::lock_guard lock(mutex_);
+    closed_ = true;
+    changed_.notify_all();
+  }
+  // The next chunk in place of `chunk` (drawn: it goes back to the producer); false once the
+  // producer has closed and every chunk is out.
+  bool next(std::vector<WindowTriangle>& chunk) {
+    std::unique_lock lock(mutex_);
+    if (chunk.capacity() > 0) empty_.push_back(std::move(chunk));
+    changed_.wait(lock, [&] { return !full_.empty() || closed_; });
+    if (full_.empty()) return false;
+    chunk = std::move(full_.front());
+    full_.pop_front();
+    changed_.notify_all();
+    return true;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::vector<WindowTriangle>> full_;
+  std::vector<std::vector<WindowTriangle>> empty_;
+  bool closed_ = false;
+};
+
+}  // namespace
+
+Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStats* stats,
+                     int threads) {
+  Frame frame(scene.width, scene.height, scene.background);
+  GeometryStage stage(scene);
+  int source = 0, drawn = 0;
+  if (threads < 2) {
+    std::vector<WindowTriangle> window;  // one world triangle's, reused
+    for_each_world_triangle(scene, [&](const WorldTriangle& t) {
+      window.clear();
+      stage.add(t, source++, window);
+      for (const WindowTriangle& w : window) draw_triangle(setup_raster(w, drawn++), frame, stats);
+    });
+  } else {
+    ChunkQueue queue;
+    std::exception_ptr error;
+    std::thread geometry_thread([&] {
+      try {
+        std::vector<WindowTriangle> chunk = queue.take();
+        for_each_world_triangle(scene, [&](const WorldTriangle& t) {
+          stage.add(t, source++, chunk);
+          if (chunk.size() < ChunkQueue::kChunk) return;
+          queue.push(std::move(chunk));
+          chunk = queue.take();
+        });
+        if (!chunk.empty()) queue.push(std::move(chunk));
+      } catch (...) {
+        error = std::current_exception();
+      }
+      queue.close();
+    });
+    std::vector<WindowTriangle> chunk;
+    while (queue.next(chunk))
+      for (const WindowTriangle& w : chunk) draw_triangle(setup_raster(w, drawn++), frame, stats);
+    geometry_thread.join();
+    if (error) std::rethrow_exception(error);
+  }
+  if (geometry_stats) *geometry_stats = stage.stats;
   return frame;
 }
 

@@ -75,6 +75,14 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats = nul
 // Setup + draw for every triangle, in order.
 Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,
                      Rgb background, FillStats* stats = nullptr);
+// The whole pipeline streamed (`frustum render`): each world triangle, as the hierarchy walk
+// yields it, through the geometry stage and into the frame; neither the world nor the window
+// triangles are kept. The same frame as render_zbuffer(geometry(scene, flatten(scene)), …).
+// threads ≥ 2: the walk and the geometry run on a thread of their own, handing window
+// triangles to the fill (on the caller's thread, in drawing order) in small chunks; the frame
+// is the same bit for bit.
+Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
+                     FillStats* stats = nullptr, int threads = 1);
 
 // Only what one pixel needs (the render kind): the triangles whose bounds hold the pixel
 // centre compete, in drawing order; no frame is allocated.

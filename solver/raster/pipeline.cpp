@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "solver/clipping/polygon_clip.hpp"
 #include "solver/viewing/projection.hpp"
@@ -26,13 +27,33 @@ std::string copy_name(const std::string& name, const SceneObject::Repeat& r,
   return name + "[" + s + "]";
 }
 
+// World triangles and objects under `o` (itself included), copies of repeats counted.
+std::pair<std::size_t, std::size_t> flat_size(const SceneObject& o) {
+  std::pair<std::size_t, std::size_t> n{o.triangles.size(), 1};
+  for (const SceneObject& child : o.children) {
+    const auto [t, objects] = flat_size(child);
+    const auto copies = static_cast<std::size_t>(child.repeat ? child.repeat->count() : 1);
+    n.first += copies * t;
+    n.second += copies * objects;
+  }
+  return n;
+}
+
+// The walk's output: every world triangle to `visit`, and the objects' names when `names`.
+struct FlatSink {
+  const std::function<void(const WorldTriangle&)>& visit;
+  std::vector<std::string>* names = nullptr;
+  int objects = 0;
+};
+
+// `name` is null when names are not kept.
 void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill, Cull cull,
-                  const std::string& name, FlatScene& out) {
+                  const std::string* name, FlatSink& out) {
   const Rgb f = o.fill.value_or(fill);
   const Cull c = o.cull.value_or(cull);
   const Mat4d world_from_object = world_from_parent * o.transform;
-  const int index = static_cast<int>(out.objects.size());
-  out.objects.push_back(name);
+  const int index = out.objects++;
+  if (name) out.names->push_back(*name);
   for (std::size_t k = 0; k < o.triangles.size(); ++k) {
     WorldTriangle t;
     for (int v = 0; v < 3; ++v) {
@@ -43,39 +64,66 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill
     t.cull = c;
     t.object = index;
     t.face = static_cast<int>(k);
-    out.triangles.push_back(t);
+    out.visit(t);
   }
+  std::string child_name;
   for (std::size_t k = 0; k < o.children.size(); ++k) {
     const SceneObject& child = o.children[k];
-    const std::string child_name =
-        child.name.empty() ? name + ".children[" + std::to_string(k) + "]" : child.name;
+    if (name)
+      child_name = child.name.empty() ? *name + ".children[" + std::to_string(k) + "]" : child.name;
+    const std::string* child_name_or_null = name ? &child_name : nullptr;
     if (!child.repeat) {
-      flatten_into(child, world_from_object, f, c, child_name, out);
+      flatten_into(child, world_from_object, f, c, child_name_or_null, out);
       continue;
     }
     // Copies: world_from_object · T(index · step) · M_child.
     const SceneObject::Repeat& r = *child.repeat;
     SceneObject single = child;
     single.repeat.reset();
+    std::string copy;
     for (int i = r.from[0]; i <= r.to[0]; ++i)
       for (int j = r.from[1]; j <= r.to[1]; ++j)
         for (int l = r.from[2]; l <= r.to[2]; ++l) {
           const Vec3d offset(i * r.step(0), j * r.step(1), l * r.step(2));
+          if (name) copy = copy_name(child_name, r, {i, j, l});
           flatten_into(single, world_from_object * translation(offset), f, c,
-                       copy_name(child_name, r, {i, j, l}), out);
+                       name ? &copy : nullptr, out);
         }
   }
 }
 
-}  // namespace
-
-FlatScene flatten(const Scene& scene) {
-  FlatScene out;
-  SceneObject root;  // the scene's objects are the children of the world
+// The scene's objects as the children of the world.
+SceneObject world_object(const Scene& scene) {
+  SceneObject root;
   root.children = scene.objects;
   for (std::size_t k = 0; k < root.children.size(); ++k)
     if (root.children[k].name.empty()) root.children[k].name = "objects[" + std::to_string(k) + "]";
-  flatten_into(root, Mat4d::Identity(), scene.default_fill, Cull::None, "world", out);
+  return root;
+}
+
+}  // namespace
+
+void for_each_world_triangle(const Scene& scene,
+                             const std::function<void(const WorldTriangle&)>& visit) {
+  FlatSink sink{visit};
+  flatten_into(world_object(scene), Mat4d::Identity(), scene.default_fill, Cull::None, nullptr,
+               sink);
+}
+
+FlatScene flatten(const Scene& scene, bool names) {
+  FlatScene out;
+  const SceneObject root = world_object(scene);
+  // Sized once: a million triangles are 88 MB, which doubling would copy and fault in again.
+  const auto [triangles, objects] = flat_size(root);
+  out.triangles.reserve(triangles);
+  if (names) out.objects.reserve(objects);
+  const std::function<void(const WorldTriangle&)> keep = [&](const WorldTriangle& t) {
+    out.triangles.push_back(t);
+  };
+  FlatSink sink{keep, names ? &out.objects : nullptr};
+  const std::string world = "world";
+  flatten_into(root, Mat4d::Identity(), scene.default_fill, Cull::None, names ? &world : nullptr,
+               sink);
   return out;
 }
 
@@ -86,18 +134,22 @@ Mat4d eye_from_world(const Scene& scene) {
 
 Mat4d clip_from_world(const Scene& scene) { return scene.clip_from_eye * eye_from_world(scene); }
 
-std::vector<Vec4d> clip_to_volume(const std::array<Vec4d, 3>& clip, Api api) {
-  // Trivially inside: all three vertices within every plane (the common case, no copying).
-  const double eps = kClipEpsilon;
+bool inside_volume(const std::array<Vec4d, 3>& clip, Api api) {
   const bool zero = api == Api::DirectX;
   bool inside = true;
   for (const Vec4d& c : clip) {
     const double w = c(3);
-    inside = inside && w >= eps && std::abs(c(0)) <= w && std::abs(c(1)) <= w && c(2) <= w &&
-             (zero ? c(2) >= 0 : c(2) >= -w);
+    inside = inside && w >= kClipEpsilon && std::abs(c(0)) <= w && std::abs(c(1)) <= w &&
+             c(2) <= w && (zero ? c(2) >= 0 : c(2) >= -w);
   }
-  if (inside) return {clip[0], clip[1], clip[2]};
-  return clip_polygon_homogeneous<double>({clip[0], clip[1], clip[2]}, eps, zero).clipped;
+  return inside;
+}
+
+std::vector<Vec4d> clip_to_volume(const std::array<Vec4d, 3>& clip, Api api) {
+  if (inside_volume(clip, api)) return {clip[0], clip[1], clip[2]};
+  return clip_polygon_homogeneous<double>({clip[0], clip[1], clip[2]}, kClipEpsilon,
+                                          api == Api::DirectX)
+      .clipped;
 }
 
 Vec3d to_raster(const Vec3d& ndc, int width, int height, Api api) {
@@ -135,41 +187,51 @@ Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLig
   return {channel(t.fill.r), channel(t.fill.g), channel(t.fill.b)};
 }
 
+GeometryStage::GeometryStage(const Scene& scene)
+    : scene_(scene), clip_from_world_(clip_from_world(scene)) {}
+
+void GeometryStage::add(const WorldTriangle& t, int source, std::vector<WindowTriangle>& out) {
+  GeometryStats& s = stats;
+  ++s.triangles;
+  const Mat4d& m = clip_from_world_;
+  const std::array<Vec4d, 3> clip{to_clip(m, t.v[0]), to_clip(m, t.v[1]), to_clip(m, t.v[2])};
+  // Inside (the common case): the triangle itself, with no allocation.
+  if (inside_volume(clip, scene_.api)) {
+    polygon_.assign(clip.begin(), clip.end());
+  } else {
+    polygon_ = clip_to_volume(clip, scene_.api);
+    if (polygon_.size() < 3) {
+      ++s.outside;
+      return;
+    }
+    if (polygon_.size() != 3 || polygon_[0] != clip[0] || polygon_[1] != clip[1] ||
+        polygon_[2] != clip[2])
+      ++s.clipped;
+  }
+  raster_.clear();
+  for (const Vec4d& c : polygon_)
+    raster_.push_back(to_raster(perspective_divide(c), scene_.width, scene_.height, scene_.api));
+  const bool front = front_facing(raster_area2(raster_), scene_.api);
+  if (!front && t.cull == Cull::Back) {
+    ++s.culled;
+    return;
+  }
+  const Rgb color = shade(t, front, scene_.light);
+  // A clipped polygon is convex: a fan from its first vertex.
+  for (std::size_t v = 1; v + 1 < raster_.size(); ++v) {
+    out.push_back({{raster_[0], raster_[v], raster_[v + 1]}, color, source, front});
+    ++s.window;
+  }
+}
+
 std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat,
                                      GeometryStats* stats) {
-  GeometryStats s;
   std::vector<WindowTriangle> out;
   out.reserve(flat.triangles.size());
-  const Mat4d m = clip_from_world(scene);
-  std::vector<Vec3d> raster;
-  for (std::size_t k = 0; k < flat.triangles.size(); ++k) {
-    const WorldTriangle& t = flat.triangles[k];
-    ++s.triangles;
-    const std::array<Vec4d, 3> clip{to_clip(m, t.v[0]), to_clip(m, t.v[1]), to_clip(m, t.v[2])};
-    const std::vector<Vec4d> polygon = clip_to_volume(clip, scene.api);
-    if (polygon.size() < 3) {
-      ++s.outside;
-      continue;
-    }
-    if (polygon.size() != 3 || polygon[0] != clip[0] || polygon[1] != clip[1] ||
-        polygon[2] != clip[2])
-      ++s.clipped;
-    raster.clear();
-    for (const Vec4d& c : polygon)
-      raster.push_back(to_raster(perspective_divide(c), scene.width, scene.height, scene.api));
-    const bool front = front_facing(raster_area2(raster), scene.api);
-    if (!front && t.cull == Cull::Back) {
-      ++s.culled;
-      continue;
-    }
-    const Rgb color = shade(t, front, scene.light);
-    // A clipped polygon is convex: a fan from its first vertex.
-    for (std::size_t v = 1; v + 1 < raster.size(); ++v) {
-      out.push_back({{raster[0], raster[v], raster[v + 1]}, color, static_cast<int>(k), front});
-      ++s.window;
-    }
-  }
-  if (stats) *stats = s;
+  GeometryStage stage(scene);
+  for (std::size_t k = 0; k < flat.triangles.size(); ++k)
+    stage.add(flat.triangles[k], static_cast<int>(k), out);
+  if (stats) *stats = stage.stats;
   return out;
 }
 

@@ -10,6 +10,7 @@
 // pixel row j is raster row height − 1 − j.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,12 @@ struct FlatScene {
 
 // The hierarchy walked depth first (objects in file order, children after their parent,
 // copies of a repeat in index order): world_from_object = world_from_parent · M_object.
-FlatScene flatten(const Scene& scene);
+// Without `names`, FlatScene::objects stays empty (WorldTriangle::object still counts the
+// objects): a million copies' names would take more memory than their triangles.
+FlatScene flatten(const Scene& scene, bool names = true);
+// The same walk, each world triangle handed to `visit` in order and none kept.
+void for_each_world_triangle(const Scene& scene,
+                             const std::function<void(const WorldTriangle&)>& visit);
 
 Mat4d eye_from_world(const Scene& scene);   // the camera (look_at in the API)
 Mat4d clip_from_world(const Scene& scene);  // projection · camera
@@ -46,6 +52,8 @@ inline Vec4d to_clip(const Mat4d& clip_from_world, const Vec3d& p) {
 // Stage: Sutherland–Hodgman against w ≥ ε and the six planes −w ≤ x, y ≤ w, −w ≤ z ≤ w
 // (DirectX 0 ≤ z ≤ w). Fewer than 3 vertices: nothing is visible.
 constexpr double kClipEpsilon = 1e-9;
+// Trivially inside: all three vertices within every plane (nothing to clip).
+bool inside_volume(const std::array<Vec4d, 3>& clip, Api api);
 std::vector<Vec4d> clip_to_volume(const std::array<Vec4d, 3>& clip, Api api);
 
 // Stage: (x, y, z, w) → (x/w, y/w, z/w); w > 0 after clipping.
@@ -85,6 +93,21 @@ struct GeometryStats {
   long clipped = 0;    // cut by some plane of the view volume
   long culled = 0;     // back faces removed
   long window = 0;     // window triangles out (clipped polygons are fans)
+};
+
+// Every stage above for one world triangle at a time: its window triangles (a fan when it was
+// clipped) appended to `out`, `source` their index of the world triangle.
+class GeometryStage {
+ public:
+  explicit GeometryStage(const Scene& scene);
+  void add(const WorldTriangle& t, int source, std::vector<WindowTriangle>& out);
+  GeometryStats stats;
+
+ private:
+  const Scene& scene_;
+  Mat4d clip_from_world_;
+  std::vector<Vec4d> polygon_;  // reused: no allocation per triangle
+  std::vector<Vec3d> raster_;
 };
 
 // Every stage above for every triangle, in drawing order.
