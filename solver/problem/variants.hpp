@@ -48,6 +48,12 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
 // kind's default generator): for self-tests and benchmarks.
 ProblemSpec default_problem(const KindInfo& kind, bool nice = false, bool hard = false);
 
+// The errors of problems that variants draw anew (every one that can be drawn with vary_all)
+// whose text states a given value literally in a way that cannot be tied to one field
+// (text_literals.hpp): such a variant would print a stale value. Located at the text of the
+// language, naming the problem and the literal. `generate` refuses the set, `check` reports them.
+std::vector<Diagnostic> stale_text_errors(const ProblemSet& set, bool vary_all);
+
 // The student's variant of the set: every varying problem drawn for that student. A set that
 // does not vary is returned as it is; a varying set with an empty student id gets an error.
 // This is the hook that grading (single and batch) calls before grade().
