@@ -46,6 +46,8 @@ TEST(TextLiteralsTest, ScalarsAfterEqualsOrWithDegrees) {
                 .text,
             "perspective({perspective.fovy}°, {perspective.aspect}, {perspective.near}, "
             "{perspective.far})");
+  // A result after a computation is not a field's value.
+  EXPECT_EQ(templ("x = 0.7/0.7 = 1", g).text, "x = 0.7/0.7 = 1");
   // The same angle three times for three fields: tied in order.
   EXPECT_EQ(templ("R_x(30°), R_y(30°) and R_z(30°)",
                   "{steps: [{rotate_x: 30}, {rotate_y: 30}, {rotate_z: 30}]}")
@@ -77,6 +79,15 @@ TEST(TextLiteralsTest, OtherNumbersAreLeftAlone) {
   EXPECT_FALSE(t.error) << *t.error;
   EXPECT_EQ(t.text, text);
   EXPECT_EQ(templ("no numbers", g).text, "no numbers");
+  // A list inside brackets that do not close around it is numbering, not a point ...
+  const char* polygon = "{polygons: [{label: 1, points: [[1, 2, 3], [4, 2, 3], [4, 5, 3]]}]}";
+  EXPECT_EQ(templ("(1, 2, 3 の順と同じ結果になるか)", polygon).text,
+            "(1, 2, 3 の順と同じ結果になるか)");
+  // ... but the last arguments of a call are named fields.
+  EXPECT_EQ(templ("perspective(PI/3, width/height, 10, 10000)",
+                  "{perspective: {fovy: 60, aspect: 1, near: 10, far: 10000}}")
+                .text,
+            "perspective(PI/3, width/height, {perspective.near}, {perspective.far})");
   EXPECT_EQ(templ("A(0,0,6)", "{solid: cube}").text, "A(0,0,6)");
 }
 

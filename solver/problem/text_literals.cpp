@@ -218,23 +218,28 @@ Separator run_separator(const std::string& s, std::size_t from, std::size_t to) 
   return i == to ? sep : Separator::None;
 }
 
-// Whether the numbers [begin, end) are written in brackets: (1, 2), [0, 4].
-bool bracketed(const std::string& s, std::size_t begin, std::size_t end) {
+// How the numbers [begin, end) are bracketed: (1, 2) and [0, 4] on both sides, the last
+// arguments of perspective(PI/3, width/height, 10, 10000) on one.
+enum class Brackets { None, One, Both };
+
+Brackets brackets(const std::string& s, std::size_t begin, std::size_t end) {
   if (at(s, end, kDegree)) end += std::strlen(kDegree);
   while (begin > 0 && s[begin - 1] == ' ') --begin;
   while (end < s.size() && s[end] == ' ') ++end;
-  // Either end: the last arguments of perspective(PI/3, width/height, 10, 10000) too.
-  return (begin > 0 && (s[begin - 1] == '(' || s[begin - 1] == '[')) ||
-         (end < s.size() && (s[end] == ')' || s[end] == ']'));
+  const bool open = begin > 0 && (s[begin - 1] == '(' || s[begin - 1] == '[');
+  const bool close = end < s.size() && (s[end] == ')' || s[end] == ']');
+  return open && close ? Brackets::Both : open || close ? Brackets::One : Brackets::None;
 }
 
-// The name before "=" ending at s[end) (spaces skipped), or nullopt when there is no "=".
+// The name before "=" ending at s[begin) (spaces skipped), or nullopt when there is no "=" or
+// a number stands before it.
 std::optional<std::string> equals_name(const std::string& s, std::size_t begin) {
   std::size_t i = begin;
   while (i > 0 && s[i - 1] == ' ') --i;
   if (i == 0 || s[i - 1] != '=') return std::nullopt;
   --i;
   while (i > 0 && s[i - 1] == ' ') --i;
+  if (i > 0 && ascii_digit(s[i - 1])) return std::nullopt;  // 0.7/0.7 = 1: a result, no name
   std::size_t j = i;
   while (j > 0 && ascii_word(s[j - 1])) --j;
   return s.substr(j, i - j);
@@ -331,10 +336,17 @@ TemplatedText template_literals(const std::string& text, const YAML::Node& given
                         (sep = run_separator(text, t[j].end, t[j + 1].begin)) != Separator::None;
          ++j)
       sizes = sizes && sep == Separator::Times;
-    if (j > i && !sizes && !bracketed(text, t[i].begin, t[j].end)) j = i;
+    const Brackets b = brackets(text, t[i].begin, t[j].end);
+    if (j > i && !sizes && b == Brackets::None) j = i;
     Mention m{i, j, {}};
     if (j > i) {
       m.candidates = run_candidates(g, t, i, j);
+      // Half-bracketed, a run states named fields only ("(1, 2, 3 の順" is no point).
+      if (!sizes && b == Brackets::One)
+        std::erase_if(m.candidates, [&](const Window& w) {
+          return std::any_of(w.begin(), w.end(),
+                             [&](std::size_t leaf) { return g.leaves[leaf].key.empty(); });
+        });
       bool all_given = true, unit_only = true;  // unit_only: only 0 and ±1
       for (std::size_t k = i; k <= j; ++k) {
         unit_only = unit_only && (t[k].value.is_zero() || abs(t[k].value) == 1);
@@ -344,7 +356,7 @@ TemplatedText template_literals(const std::string& text, const YAML::Node& given
       // The origin, a unit axis, [0, 1]: constants, unless exactly one field holds them.
       if (unit_only && m.candidates.size() != 1) m.candidates.clear();
       // A bracketed point of given values that no field holds: stale in a variant.
-      if (m.candidates.empty() && all_given && !unit_only && !sizes) {
+      if (m.candidates.empty() && all_given && !unit_only && b == Brackets::Both) {
         out.error = "the literal \"" + literal_text(text, t, m) +
                     "\" states values of the given but not one of its fields: write "
                     "placeholders for the values a variant draws ({name} of a given field)";

@@ -440,18 +440,22 @@ std::optional<std::string> box_text(const YAML::Node& at) {
 // nullopt with `why` otherwise.
 std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given,
                                              std::string& why) {
-  YAML::Node at = YAML::Clone(given);
+  // Walked by reset() and const look-ups: assigning a node would write through to the given,
+  // and cloning it for every placeholder made filling a text cost a copy of the given each.
+  YAML::Node at;
+  at.reset(given);
   std::size_t start = 0;
   while (true) {
     const std::size_t dot = name.find('.', start);
     const std::string part =
         name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (at.IsMap() && !part.empty() && at[part].IsDefined()) {
-      at = at[part];
-    } else if (at.IsSequence() && !part.empty() &&
+    const YAML::Node& here = at;
+    if (here.IsMap() && !part.empty() && here[part].IsDefined()) {
+      at.reset(here[part]);
+    } else if (here.IsSequence() && !part.empty() &&
                part.find_first_not_of("0123456789") == std::string::npos && part.size() < 6 &&
-               std::stoul(part) < at.size()) {
-      at = at[std::stoul(part)];
+               std::stoul(part) < here.size()) {
+      at.reset(here[std::stoul(part)]);
     } else {
       why = "names no field of the given";
       return std::nullopt;
