@@ -79,6 +79,7 @@ TEST(TextLiteralsTest, OtherNumbersAreLeftAlone) {
   EXPECT_FALSE(t.error) << *t.error;
   EXPECT_EQ(t.text, text);
   EXPECT_EQ(templ("no numbers", g).text, "no numbers");
+  EXPECT_EQ(templ("(1e99999, 2)", "{p: [1, 2]}").text, "(1e99999, 2)");
   // A list inside brackets that do not close around it is numbering, not a point ...
   const char* polygon = "{polygons: [{label: 1, points: [[1, 2, 3], [4, 2, 3], [4, 5, 3]]}]}";
   EXPECT_EQ(templ("(1, 2, 3 の順と同じ結果になるか)", polygon).text,

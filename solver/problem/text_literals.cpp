@@ -65,6 +65,8 @@ bool power_at(const std::string& s, std::size_t i) {
   return false;
 }
 
+constexpr long kMaxExponent = 1000;
+
 numeric pow10(long k) { return GiNaC::pow(numeric(10), numeric(k)); }
 
 // A number written at s[i] (no sign): its value and where it ends.
@@ -95,6 +97,8 @@ std::optional<std::pair<numeric, std::size_t>> unsigned_number(const std::string
       j = k;
     }
   }
+  // Beyond any value a given holds (1e-310 is the smallest bundled), and 10^99999 is costly.
+  if (scale < -kMaxExponent || scale > kMaxExponent) return std::nullopt;
   value *= pow10(scale);
   if (scale == 0 && j < s.size()) {
     if (const auto v = vulgar_at(s, j))  // 4½
@@ -173,7 +177,7 @@ std::vector<Token> tokens(const std::string& s) {
     const bool free_before = !ascii_word(before) && before != '.' && before != '^' &&
                              before != '/' && !(signed_ && (before == ')' || before == ']'));
     const auto n = free_before ? unsigned_number(s, digits) : std::nullopt;
-    if (!n || (digits != start && !free_before)) {
+    if (!n) {
       // Skip this character (whole UTF-8 sequence) and, after a word character, the word.
       if (ascii_word(s[i]) || s[i] == '.') {
         while (i < s.size() && (ascii_word(s[i]) || s[i] == '.')) ++i;

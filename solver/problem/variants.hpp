@@ -89,8 +89,8 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
 // The variant as a complete problem set in YAML: the source's fields in their order, `vary`,
 // `nice`, `difficulty` and `variants` removed, each `given` replaced by the drawn one, and
 // `{field}` in a problem's text replaced by that given field's value (the variant's text: the
-// literal given values it states were made placeholders when it was drawn, text_literals.hpp). `header` is written as
-// comment lines first.
+// literal given values it states were made placeholders when it was drawn, text_literals.hpp).
+// `header` is written as comment lines first.
 std::string emit_variant_set(const YAML::Node& source_root, const ProblemSet& variant,
                              const std::string& header);
 // `header` as YAML comment lines ("# " before each line, "#" for an empty one).
