@@ -10,6 +10,7 @@
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_precision.hpp"
 #include "solver/problem/solve_set.hpp"
+#include "solver/problem/variants.hpp"
 
 namespace frustum::app {
 
@@ -94,6 +95,12 @@ int run_check(const std::string& path, const Output& o) {
         o.out << p.error->format() << "\n";
         ++here;
       }
+    // A varied problem whose text states a given value that its variants cannot restate: an
+    // error, as `generate` and per-student grading refuse it.
+    for (const Diagnostic& d : stale_text_errors(set, false)) {
+      o.out << d.format() << "\n";
+      ++here;
+    }
     if (here == 0)
       o.out << file << ": " << set.problems.size() << " problem"
             << (set.problems.size() == 1 ? "" : "s") << ", no errors\n";

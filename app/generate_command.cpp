@@ -94,6 +94,11 @@ int run_generate(const GenerateCommand& g, const Output& o) {
     if (unsolvable) return 1;
   }
   const bool vary_all = !set_varies(set);
+  // A text stating a given value that no field explains would be stale in every variant.
+  if (const std::vector<Diagnostic> stale = stale_text_errors(set, vary_all); !stale.empty()) {
+    for (const Diagnostic& d : stale) o.err << d.format() << "\n";
+    return 1;
+  }
   if (vary_all)
     o.err << g.set
           << ": no problem has `vary` and the set does not say `variants: per_student`, so every "

@@ -1,5 +1,6 @@
 // The `frustum` command line, run as a user would.
 #include <sys/wait.h>
+#include <yaml-cpp/yaml.h>
 
 #include <array>
 #include <cstdio>
@@ -129,6 +130,38 @@ TEST(Cli, GenerateRefusesWhatCheckRefusesBeforeWritingAnything) {
             std::string::npos)
       << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir + "/placeholder_set-s1.yaml"));
+}
+
+// The seen case (issue 16 item 8): a variant's text printed the written triangle while its given
+// and key were drawn anew. Now the text states the drawn values, and a literal that cannot be
+// tied to one field is refused by check and generate, naming the problem, language and literal.
+TEST(Cli, AVariantsTextStatesItsDrawnValuesOrTheSetIsRefused) {
+  const std::string dir = ::testing::TempDir() + "/gen-literals";
+  const CliRun g =
+      run("generate " + seed("001_zbuffer_plane_method.yaml") + " --seed 1 --count 1 -o " + dir);
+  ASSERT_EQ(g.status, 0) << g.out;
+  const YAML::Node v = YAML::LoadFile(dir + "/001_zbuffer_plane_method-seed1-0.yaml");
+  const YAML::Node a = v["problems"][0]["given"]["A"];
+  const std::string point = "A(" + a[0].Scalar() + "," + a[1].Scalar() + "," + a[2].Scalar() + ")";
+  for (const char* lang : {"en", "ja", "ru"})
+    EXPECT_NE(v["problems"][0]["text"][lang].Scalar().find(point), std::string::npos)
+        << lang << ": " << v["problems"][0]["text"][lang].Scalar();
+
+  const std::string path = ::testing::TempDir() + "/twins_set.yaml";
+  std::ofstream(path) << "variants: per_student\nproblems:\n"
+                         "  - id: twins\n    kind: vectors\n"
+                         "    text: {en: \"a = (1, 2, 3)\", ja: \"(1, 2, 3)\"}\n"
+                         "    given: {a: [1, 2, 3], b: [1, 2, 3]}\n";
+  const CliRun c = run("check " + path);
+  EXPECT_EQ(c.status, 1) << c.out;
+  EXPECT_NE(c.out.find("twins_set.yaml:5:16: problems[0].text.en: problem twins (en): the literal "
+                       "\"(1, 2, 3)\" could state any of several values"),
+            std::string::npos)
+      << c.out;
+  const CliRun r = run("generate " + path + " --student s1 -o " + dir);
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("problem twins (en)"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/twins_set-s1.yaml"));
 }
 
 TEST(Cli, GenerateStopsWhenAProblemRunsOutOfVariants) {

@@ -5,9 +5,11 @@
 #include <optional>
 
 #include "solver/input/given_reader.hpp"
+#include "solver/input/text_reader.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/solve_set.hpp"
+#include "solver/problem/text_literals.hpp"
 #include "solver/problem/vary_spec.hpp"
 #include "solver/util/exact_format.hpp"
 
@@ -189,6 +191,55 @@ ProblemSpec default_problem(const KindInfo& kind, bool nice, bool hard) {
 
 namespace {
 
+// The problem's texts, in every language, with the given's literal values turned into the
+// placeholders they state; the first literal that cannot be tied is an error at its text.
+std::optional<Diagnostic> template_texts(ProblemSpec& p, const std::string& file) {
+  if (p.error || p.text.empty()) return std::nullopt;
+  std::optional<Diagnostic> error;
+  const auto templated = [&](Lang lang, const std::string& text) {
+    TemplatedText t = template_literals(text, p.given_node);
+    if (t.error && !error) {
+      const bool mapping = p.text_node.IsMap();
+      const YAML::Node at = local_text_node(p.text_node, lang, p.text.lang);
+      error =
+          Diagnostic{mapping ? location_of(at, file) : p.where,
+                     p.field + ".text" + (mapping ? "." + std::string(to_string(lang)) : ""),
+                     "problem " + p.id + " (" + std::string(to_string(lang)) + "): " + *t.error +
+                         "; a variant draws new values, and its text would state the old ones"};
+    }
+    return t.text;
+  };
+  LocalText out{p.text.lang, templated(p.text.lang, p.text.text), {}};
+  for (const auto& [lang, text] : p.text.translations)
+    out.translations.emplace(lang, templated(lang, text));
+  if (!error) p.text = std::move(out);
+  return error;
+}
+
+// The set as variants draw it: each problem drawn anew has its texts templated (template_texts),
+// or the error of a literal that cannot be tied.
+ProblemSet prepare_for_drawing(const ProblemSet& set, bool vary_all) {
+  ProblemSet out = set;
+  for (ProblemSpec& p : out.problems)
+    if (drawn_anew(set, p, vary_all))
+      if (std::optional<Diagnostic> e = template_texts(p, set.file)) p.error = std::move(e);
+  return out;
+}
+
+}  // namespace
+
+std::vector<Diagnostic> stale_text_errors(const ProblemSet& set, bool vary_all) {
+  std::vector<Diagnostic> out;
+  for (const ProblemSpec& base : set.problems) {
+    if (!drawn_anew(set, base, vary_all)) continue;
+    ProblemSpec p = base;
+    if (std::optional<Diagnostic> e = template_texts(p, set.file)) out.push_back(std::move(*e));
+  }
+  return out;
+}
+
+namespace {
+
 // `avoid` (when given) holds, per problem, the givens (emit_flow text) of earlier variants.
 ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std::string& student,
                         bool vary_all, const std::vector<std::set<std::string>>* avoid) {
@@ -212,13 +263,16 @@ ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std
 
 }  // namespace
 
-ProblemSet variant_for_student(const ProblemSet& set, const std::string& student, bool vary_all) {
-  return make_variant(set, "student:" + student, student, vary_all, nullptr);
+ProblemSet variant_for_student(const ProblemSet& source, const std::string& student,
+                               bool vary_all) {
+  return make_variant(prepare_for_drawing(source, vary_all), "student:" + student, student,
+                      vary_all, nullptr);
 }
 
-std::vector<ProblemSet> variants_for_class(const ProblemSet& set,
+std::vector<ProblemSet> variants_for_class(const ProblemSet& source,
                                            const std::vector<std::string>& students,
                                            bool vary_all) {
+  const ProblemSet set = prepare_for_drawing(source, vary_all);
   std::vector<std::set<std::string>> taken(
       set.problems.size());  // per problem: the givens drawn so far
   // The given of each varying problem as text ("" for fixed or failed ones), to compare draws.
@@ -272,8 +326,9 @@ ProblemSet variant_for(const ProblemSet& set, const std::string& student) {
   return variant_for_student(set, student, false);
 }
 
-void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all,
-                                const std::function<void(int, ProblemSet&&)>& take) {
+void for_each_variant_from_seed(const ProblemSet& source, std::uint64_t seed, int count,
+                                bool vary_all, const std::function<void(int, ProblemSet&&)>& take) {
+  const ProblemSet set = prepare_for_drawing(source, vary_all);
   // Per problem, the givens drawn so far: each variant is checked against it in O(log n)
   // (rebuilding it from every earlier variant made --count quadratic).
   std::vector<std::set<std::string>> taken(set.problems.size());
@@ -385,18 +440,22 @@ std::optional<std::string> box_text(const YAML::Node& at) {
 // nullopt with `why` otherwise.
 std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given,
                                              std::string& why) {
-  YAML::Node at = YAML::Clone(given);
+  // Walked by reset() and const look-ups: assigning a node would write through to the given,
+  // and cloning it for every placeholder made filling a text cost a copy of the given each.
+  YAML::Node at;
+  at.reset(given);
   std::size_t start = 0;
   while (true) {
     const std::size_t dot = name.find('.', start);
     const std::string part =
         name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (at.IsMap() && !part.empty() && at[part].IsDefined()) {
-      at = at[part];
-    } else if (at.IsSequence() && !part.empty() &&
+    const YAML::Node& here = at;
+    if (here.IsMap() && !part.empty() && here[part].IsDefined()) {
+      at.reset(here[part]);
+    } else if (here.IsSequence() && !part.empty() &&
                part.find_first_not_of("0123456789") == std::string::npos && part.size() < 6 &&
-               std::stoul(part) < at.size()) {
-      at = at[std::stoul(part)];
+               std::stoul(part) < here.size()) {
+      at.reset(here[std::stoul(part)]);
     } else {
       why = "names no field of the given";
       return std::nullopt;
@@ -487,15 +546,20 @@ std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant,
           for (auto g = given.begin(); g != given.end(); ++g)
             out += "      " + emit_flow(g->first) + ": " + emit_flow(g->second) + "\n";
         } else if (name == "text" && f->second.IsScalar()) {
-          out += "text: " + emit_scalar(fill_text(f->second.Scalar(), given), true) + "\n";
+          const std::string& text = spec ? spec->text.text : f->second.Scalar();
+          out += "text: " + emit_scalar(fill_text(text, given), true) + "\n";
         } else if (name == "text" && f->second.IsMap()) {
-          // Every language the set gives, each with the drawn values.
+          // Every language the set gives, each with the drawn values (the variant's text: its
+          // literal values turned into placeholders when it was drawn).
           out += "text:\n";
-          for (auto l = f->second.begin(); l != f->second.end(); ++l)
+          for (auto l = f->second.begin(); l != f->second.end(); ++l) {
+            const std::optional<Lang> lang = parse_lang(l->first.as<std::string>());
+            const std::string text = spec && lang           ? spec->text.in(*lang)
+                                     : l->second.IsScalar() ? l->second.Scalar()
+                                                            : "";
             out += "      " + emit_flow(l->first) + ": " +
-                   emit_scalar(l->second.IsScalar() ? fill_text(l->second.Scalar(), given) : "",
-                               true) +
-                   "\n";
+                   emit_scalar(fill_text(text, given), true) + "\n";
+          }
         } else {
           out += emit_scalar(name) + ": " + emit_flow(f->second) + "\n";
         }

@@ -48,6 +48,12 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
 // kind's default generator): for self-tests and benchmarks.
 ProblemSpec default_problem(const KindInfo& kind, bool nice = false, bool hard = false);
 
+// The errors of problems that variants draw anew (every one that can be drawn with vary_all)
+// whose text states a given value literally in a way that cannot be tied to one field
+// (text_literals.hpp): such a variant would print a stale value. Located at the text of the
+// language, naming the problem and the literal. `generate` refuses the set, `check` reports them.
+std::vector<Diagnostic> stale_text_errors(const ProblemSet& set, bool vary_all);
+
 // The student's variant of the set: every varying problem drawn for that student. A set that
 // does not vary is returned as it is; a varying set with an empty student id gets an error.
 // This is the hook that grading (single and batch) calls before grade().
@@ -82,8 +88,9 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
 
 // The variant as a complete problem set in YAML: the source's fields in their order, `vary`,
 // `nice`, `difficulty` and `variants` removed, each `given` replaced by the drawn one, and
-// `{field}` in a problem's text replaced by that given field's value. `header` is written as
-// comment lines first.
+// `{field}` in a problem's text replaced by that given field's value (the variant's text: the
+// literal given values it states were made placeholders when it was drawn, text_literals.hpp).
+// `header` is written as comment lines first.
 std::string emit_variant_set(const YAML::Node& source_root, const ProblemSet& variant,
                              const std::string& header);
 // `header` as YAML comment lines ("# " before each line, "#" for an empty one).
