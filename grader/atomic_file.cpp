@@ -111,8 +111,18 @@ FileBatch::~FileBatch() {
 }
 
 void FileBatch::stage(const std::string& path, const std::string& content) {
-  pending_.push_back({write_temporary(path, content, false), path});
+  adopt(write_staged(path, content), path);
 }
+
+std::string FileBatch::write_staged(const std::string& path, const std::string& content) {
+  return write_temporary(path, content, false);
+}
+
+void FileBatch::adopt(const std::string& temporary, const std::string& path) {
+  pending_.push_back({temporary, path});
+}
+
+void FileBatch::discard(const std::string& temporary) { ::unlink(temporary.c_str()); }
 
 void FileBatch::commit() {
   if (pending_.empty()) return;
