@@ -405,7 +405,13 @@ int run_generate(const GenerateCommand& g, const Output& o) {
             arrived[next].reset();
           }
         },
-        64u << 20, jobs);
+        64u << 20, jobs, [&] { return stopped || failed; });
+    // Once stopped, what arrived beyond a share that was not run is never taken: its files go.
+    for (std::optional<IsolatedResult>& result : arrived)
+      if (result && result->status == IsolatedResult::Status::Ok) try {
+          discard(decode(result->output));
+        } catch (const std::exception&) {
+        }
   } else {
     if (g.seed)
       for_each_variant_from_seed(set, *g.seed, g.count, vary_all, [&](int i, ProblemSet&& drawn) {

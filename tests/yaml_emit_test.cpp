@@ -36,9 +36,10 @@ TEST(YamlEmit, QuotesWhatYaml11And12ReadDifferently) {
 // numbers that need quotes still get them.
 TEST(YamlEmit, NumbersAndExactValuesArePlainUnlessAReaderDisagrees) {
   for (int i = -1000; i <= 1000; ++i) EXPECT_EQ(emit_scalar(std::to_string(i)), std::to_string(i));
-  for (const char* s : {"+7", "1/2", "-sqrt(3)/3", "2*sqrt(6)/3", "pi/4", "(1)"})
+  for (const char* s : {"+7", "1/2", "-sqrt(3)/3", "2*sqrt(6)/3", "pi/4", "(1)", "AC", "kind",
+                        "seed001-plane", "yesterday", "Nothing", "x1.5", "nullable", "e3"})
     EXPECT_EQ(emit_scalar(s), s);
-  for (const char* s : {"007", "-010", "+0_1", "1e3", "0o17", "yes", "-", "1:30"})
+  for (const char* s : {"007", "-010", "+0_1", "1e3", "0o17", "yes", "-", "1:30", "Off", "N"})
     EXPECT_EQ(emit_scalar(s), std::string("\"") + s + "\"") << s;
 }
 
