@@ -288,13 +288,22 @@ int run_generate(const GenerateCommand& g, const Output& o) {
     }
     return true;
   };
-  const auto take_here = [&](Named&& v) {
+  // `reuse` (when given) holds a worker's temporary files for this variant, written again here
+  // (removing and creating files costs more than rewriting them).
+  const auto take_here = [&](Named&& v, Record* reuse = nullptr) {
     if (failed) return;
     const Rendered r = render(g, doc, v);
+    const auto stage_one = [&](std::string* temporary, const std::string& path,
+                               const std::string& text) {
+      if (!temporary || temporary->empty()) return files.stage(path, text);
+      FileBatch::rewrite_staged(*temporary, path, text);
+      files.adopt(*temporary, path);
+      temporary->clear();
+    };
     const bool staged =
         take(v.name, r, [&](const std::string& set_path, const std::string& key_path) {
-          files.stage(set_path, r.set_text);
-          files.stage(key_path, r.key_text);
+          stage_one(reuse ? &reuse->set_temporary : nullptr, set_path, r.set_text);
+          stage_one(reuse ? &reuse->key_temporary : nullptr, key_path, r.key_text);
         });
     if (staged && paper) variants.push_back(std::move(v));
   };
@@ -386,13 +395,13 @@ int run_generate(const GenerateCommand& g, const Output& o) {
           discard(r);
         return;
       }
-      discard(r);
       if (g.seed) {
-        take_here({name_of(i), name_of(i), seeds->draw(static_cast<int>(i))});
+        take_here({name_of(i), name_of(i), seeds->draw(static_cast<int>(i))}, &r);
         stopped = seeds->exhausted();
       } else {
-        take_here({name_of(i), students[i], classes->draw(students[i])});
+        take_here({name_of(i), students[i], classes->draw(students[i])}, &r);
       }
+      discard(r);  // what was not written again
     };
     std::error_code ec;
     fs::create_directories(fs::path(variant_key_file(g.out_dir, g.set, "x")).parent_path(), ec);

@@ -32,6 +32,9 @@ class FileBatch {
   // owns it until it is adopted), adopt() stages it as stage() would have, and discard()
   // removes one that will not be adopted.
   static std::string write_staged(const std::string& path, const std::string& content);
+  // Replaces what a temporary file from write_staged() holds (`path`: its target, for errors).
+  static void rewrite_staged(const std::string& temporary, const std::string& path,
+                             const std::string& content);
   void adopt(const std::string& temporary, const std::string& path);
   static void discard(const std::string& temporary);
   std::size_t staged() const { return pending_.size(); }
