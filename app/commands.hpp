@@ -57,6 +57,7 @@ struct GenerateCommand {
   std::optional<std::string> roster;  // --roster: a CSV with a student column, or one id per line
   std::optional<std::uint64_t> seed;
   int count = 1;
+  std::size_t jobs = 0;  // worker processes drawing --count or --roster variants (0: one per core)
   std::string out_dir = ".";
   std::string format = "yaml";  // also latex (exam sheets + answer key) or pdf (compiled)
   Lang lang = Lang::En;         // the exam sheets' texts (the set's own where not given)

@@ -1,17 +1,21 @@
-// `frustum generate SET.yaml --student ID... | --seed N --count K [-o DIR]`: per-student or
+// `frustum generate SET.yaml --student ID... | --seed N --count K [-o DIR] [-j N]`: per-student or
 // seeded variants of a problem set, each written as a complete problem set with its answer key
 // (DIR/STEM-NAME.yaml and DIR/answers/STEM-NAME.yaml).
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <optional>
 #include <ostream>
+#include <thread>
 #include <unordered_map>
 
 #include "app/commands.hpp"
 #include "app/variant_files.hpp"
 #include "grader/atomic_file.hpp"
+#include "grader/isolate.hpp"
 #include "grader/paper.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/rng.hpp"
@@ -24,6 +28,10 @@ namespace {
 
 // Variant files made durable per sync (two files per variant).
 constexpr std::size_t kFilesPerSync = 8192;
+// With fewer variants than this, -j does not pay for its processes: they are drawn here.
+constexpr std::size_t kMinParallelVariants = 64;
+// A worker's time for one variant (one that finds no acceptable draw takes the longest).
+constexpr double kVariantSeconds = 600;
 
 struct Named {
   std::string name;     // file name part
@@ -72,6 +80,128 @@ int write_paper(const GenerateCommand& g, const ProblemSet& set, const std::vect
   return status;
 }
 
+// One variant's files as text, or why it has none: what a worker process hands back, less
+// the texts themselves (it writes them to temporary files beside their targets).
+struct Rendered {
+  std::string variant_errors;  // stderr lines: the variant has a problem that was not drawn
+  std::string unsolved;        // stderr lines: a problem of the key could not be solved
+  std::uint64_t body_hash = 0;
+  int draw = 1;
+  std::string set_text, key_text;
+};
+
+Rendered render(const GenerateCommand& g, const YamlDocument& doc, const Named& v) {
+  namespace fs = std::filesystem;
+  Rendered out;
+  if (!v.variant.all_errors().empty()) {
+    for (const Diagnostic& d : v.variant.all_errors())
+      out.variant_errors += v.name + ": " + d.format() + "\n";
+    return out;
+  }
+  const std::string stem = fs::path(g.set).stem().string();
+  const std::string source = fs::path(g.set).filename().string();
+  const std::string who =
+      g.seed ? fmt::format("variant {} of seed {}", v.name, *g.seed) : "student " + v.student;
+  const std::string set_file = stem + "-" + v.name + ".yaml";
+  out.draw = v.variant.variant ? v.variant.variant->draw : 1;
+  const std::string redraw_note =
+      out.draw > 1 ? fmt::format(
+                         "\nDraw {}: the earlier draws repeated another student's problem. Grade "
+                         "this student "
+                         "against this file: frustum grade {} ANSWERS --variants {}",
+                         out.draw, source, g.out_dir)
+                   : "";
+  const std::string body = emit_variant_set(doc.root, v.variant, "");
+  out.body_hash = fnv1a64(body);
+  const std::string seed = fmt::format("{:016x}", v.variant.variant ? v.variant.variant->seed : 0);
+  out.set_text = comment_lines(fmt::format("Variant of {} for {} (seed {}), drawn by `frustum "
+                                           "generate`.\nAnswer key: answers/{}{}",
+                                           source, who, seed, set_file, redraw_note)) +
+                 body;
+  std::vector<Diagnostic> unsolved;
+  out.key_text = emit_answer_key(
+      v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed),
+      &unsolved);
+  // A key without the problem would be a lost result: nothing is written.
+  for (const Diagnostic& d : unsolved) out.unsolved += v.name + ": " + d.format() + "\n";
+  return out;
+}
+
+// ---- a worker's record of one variant, sent through the pipe ----
+
+void put(std::string& out, const std::string& text) {
+  const std::uint64_t size = text.size();
+  out.append(reinterpret_cast<const char*>(&size), sizeof size);
+  out += text;
+}
+
+std::string get(const std::string& in, std::size_t& at) {
+  std::uint64_t size = 0;
+  if (in.size() - at < sizeof size) throw std::runtime_error("truncated worker record");
+  std::memcpy(&size, in.data() + at, sizeof size);
+  at += sizeof size;
+  if (in.size() - at < size) throw std::runtime_error("truncated worker record");
+  std::string text = in.substr(at, size);
+  at += size;
+  return text;
+}
+
+// What the parent needs of a variant a worker drew: its givens (to check it against every
+// earlier variant), its messages, and the temporary files holding its texts.
+struct Record {
+  VariantGivens givens;
+  Rendered rendered;                         // without its texts
+  std::string set_temporary, key_temporary;  // empty: not written
+  std::string write_error;                   // the worker could not write its files
+};
+
+std::string encode(const Record& r) {
+  std::string out;
+  put(out, std::to_string(r.givens.given.size()));
+  put(out, r.givens.complete ? "1" : "0");
+  for (std::size_t p = 0; p < r.givens.given.size(); ++p) {
+    put(out, r.givens.given[p] ? "1" + *r.givens.given[p] : "0");
+    put(out, std::to_string(r.givens.repeated[p].size()));
+    for (const std::string& text : r.givens.repeated[p]) put(out, text);
+  }
+  put(out, r.rendered.variant_errors);
+  put(out, r.rendered.unsolved);
+  put(out, std::to_string(r.rendered.body_hash));
+  put(out, std::to_string(r.rendered.draw));
+  put(out, r.set_temporary);
+  put(out, r.key_temporary);
+  put(out, r.write_error);
+  return out;
+}
+
+Record decode(const std::string& in) {
+  Record r;
+  std::size_t at = 0;
+  const std::size_t problems = std::stoul(get(in, at));
+  r.givens.complete = get(in, at) == "1";
+  r.givens.given.resize(problems);
+  r.givens.repeated.resize(problems);
+  for (std::size_t p = 0; p < problems; ++p) {
+    const std::string given = get(in, at);
+    if (!given.empty() && given[0] == '1') r.givens.given[p] = given.substr(1);
+    const std::size_t repeated = std::stoul(get(in, at));
+    for (std::size_t k = 0; k < repeated; ++k) r.givens.repeated[p].push_back(get(in, at));
+  }
+  r.rendered.variant_errors = get(in, at);
+  r.rendered.unsolved = get(in, at);
+  r.rendered.body_hash = std::stoull(get(in, at));
+  r.rendered.draw = std::stoi(get(in, at));
+  r.set_temporary = get(in, at);
+  r.key_temporary = get(in, at);
+  r.write_error = get(in, at);
+  return r;
+}
+
+void discard(const Record& r) {
+  if (!r.set_temporary.empty()) FileBatch::discard(r.set_temporary);
+  if (!r.key_temporary.empty()) FileBatch::discard(r.key_temporary);
+}
+
 }  // namespace
 
 int run_generate(const GenerateCommand& g, const Output& o) {
@@ -105,8 +235,6 @@ int run_generate(const GenerateCommand& g, const Output& o) {
           << "problem is drawn by its kind's default generator; grade against the generated files "
              "(or add "
           << "`variants: per_student` to grade against " << g.set << " itself)\n";
-  const std::string stem = fs::path(g.set).stem().string();
-  const std::string source = fs::path(g.set).filename().string();
   std::vector<std::string> students = g.students;
   if (g.roster) {
     try {
@@ -133,70 +261,182 @@ int run_generate(const GenerateCommand& g, const Output& o) {
     for (const std::string& line : written) o.out << line << "\n";
     written.clear();
   };
-  const auto take = [&](Named&& v) {
-    if (failed) return;
-    if (!v.variant.all_errors().empty()) {
-      for (const Diagnostic& d : v.variant.all_errors())
-        o.err << v.name << ": " << d.format() << "\n";
+  // A variant's messages and files, in variant order; `stage` puts its two files in the batch
+  // (writing them, or adopting what a worker wrote) and false when there are none.
+  const auto take = [&](const std::string& name, const Rendered& r,
+                        const std::function<void(const std::string&, const std::string&)>& stage) {
+    if (failed) return false;
+    if (!r.variant_errors.empty()) {
+      o.err << r.variant_errors;
       status = 1;
-      return;
+      return false;
     }
-    const std::string who =
-        g.seed ? fmt::format("variant {} of seed {}", v.name, *g.seed) : "student " + v.student;
-    const std::string set_file = stem + "-" + v.name + ".yaml";
-    const int draw = v.variant.variant ? v.variant.variant->draw : 1;
-    const std::string redraw_note =
-        draw > 1 ? fmt::format(
-                       "\nDraw {}: the earlier draws repeated another student's problem. Grade "
-                       "this student "
-                       "against this file: frustum grade {} ANSWERS --variants {}",
-                       draw, source, g.out_dir)
-                 : "";
-    redrawn = redrawn || draw > 1;
-    const std::string body = emit_variant_set(doc.root, v.variant, "");
-    if (const auto [it, fresh] = seen.emplace(fnv1a64(body), v.name); !fresh)
-      o.err << "warning: " << v.name << " has the same variant as " << it->second
+    redrawn = redrawn || r.draw > 1;
+    if (const auto [it, fresh] = seen.emplace(r.body_hash, name); !fresh)
+      o.err << "warning: " << name << " has the same variant as " << it->second
             << " (the ranges leave few choices)\n";
-    const std::string seed =
-        fmt::format("{:016x}", v.variant.variant ? v.variant.variant->seed : 0);
-    const std::string set_text =
-        comment_lines(fmt::format("Variant of {} for {} (seed {}), drawn by `frustum "
-                                  "generate`.\nAnswer key: answers/{}{}",
-                                  source, who, seed, set_file, redraw_note)) +
-        body;
-    std::vector<Diagnostic> unsolved;
-    const std::string key_text = emit_answer_key(
-        v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed),
-        &unsolved);
-    if (!unsolved
-             .empty()) {  // a key without the problem would be a lost result: nothing is written
-      for (const Diagnostic& d : unsolved) o.err << v.name << ": " << d.format() << "\n";
+    if (!r.unsolved.empty()) {
+      o.err << r.unsolved;
       status = 1;
-      return;
+      return false;
     }
     try {
-      const std::string set_path = variant_file(g.out_dir, g.set, v.name);
-      const std::string key_path = variant_key_file(g.out_dir, g.set, v.name);
-      files.stage(set_path, set_text);
-      files.stage(key_path, key_text);
+      const std::string set_path = variant_file(g.out_dir, g.set, name);
+      const std::string key_path = variant_key_file(g.out_dir, g.set, name);
+      stage(set_path, key_path);
       written.push_back(set_path + "  " + key_path);
       if (files.staged() >= kFilesPerSync) flush();
     } catch (const std::exception& e) {
       o.err << "error: " << e.what() << "\n";
       failed = true;
-      return;
+      return false;
     }
-    if (paper) variants.push_back(std::move(v));
+    return true;
   };
-  if (g.seed)
-    for_each_variant_from_seed(set, *g.seed, g.count, vary_all, [&](int i, ProblemSet&& drawn) {
-      const std::string name = fmt::format("seed{}-{}", *g.seed, i);
-      take({name, name, std::move(drawn)});
-    });
-  // The class together: pairwise distinct, redrawing a student whose variant repeats another's.
-  std::vector<ProblemSet> class_variants = variants_for_class(set, students, vary_all);
-  for (std::size_t i = 0; i < students.size(); ++i)
-    take({variant_name(students[i]), students[i], std::move(class_variants[i])});
+  // `reuse` (when given) holds a worker's temporary files for this variant, written again here
+  // (removing and creating files costs more than rewriting them).
+  const auto take_here = [&](Named&& v, Record* reuse = nullptr) {
+    if (failed) return;
+    const Rendered r = render(g, doc, v);
+    const auto stage_one = [&](std::string* temporary, const std::string& path,
+                               const std::string& text) {
+      if (!temporary || temporary->empty()) return files.stage(path, text);
+      FileBatch::rewrite_staged(*temporary, path, text);
+      files.adopt(*temporary, path);
+      temporary->clear();
+    };
+    const bool staged =
+        take(v.name, r, [&](const std::string& set_path, const std::string& key_path) {
+          stage_one(reuse ? &reuse->set_temporary : nullptr, set_path, r.set_text);
+          stage_one(reuse ? &reuse->key_temporary : nullptr, key_path, r.key_text);
+        });
+    if (staged && paper) variants.push_back(std::move(v));
+  };
+  const auto seed_name = [&](std::size_t i) { return fmt::format("seed{}-{}", *g.seed, i); };
+  const std::size_t items = g.seed ? static_cast<std::size_t>(g.count) : students.size();
+  const std::size_t jobs = std::min<std::size_t>(
+      g.jobs ? g.jobs : std::max(1u, std::thread::hardware_concurrency()), items);
+  if (jobs > 1 && !paper && items >= kMinParallelVariants) {
+    // Worker processes (GiNaC is not thread-safe) draw, solve and write contiguous shares; each
+    // knows only its own share's givens, so this process takes their variants in order and
+    // draws again, itself, any that repeats an earlier share's given (SeedVariants::take):
+    // the files are those of one process whatever -j is.
+    std::optional<SeedVariants> seeds, seeds_apart;
+    std::optional<ClassVariants> classes, classes_apart;
+    if (g.seed) {
+      seeds.emplace(set, *g.seed, g.count, vary_all);
+      seeds_apart.emplace(set, *g.seed, g.count, vary_all);
+    } else {
+      classes.emplace(set, vary_all);
+      classes_apart.emplace(set, vary_all);
+    }
+    const auto name_of = [&](std::size_t i) {
+      return g.seed ? seed_name(i) : variant_name(students[i]);
+    };
+    const auto work = [&](std::size_t i) {
+      Record r;
+      if (g.seed && seeds_apart->exhausted()) {
+        // This share's ranges are used up: the rest is left to this process's own draws,
+        // which stop where the ranges are used up.
+        r.givens.complete = false;
+        return encode(r);
+      }
+      const Named v{name_of(i), g.seed ? name_of(i) : students[i],
+                    g.seed ? seeds_apart->draw(static_cast<int>(i), &r.givens)
+                           : classes_apart->first_draw(students[i], &r.givens)};
+      Rendered rendered = render(g, doc, v);
+      try {
+        if (rendered.variant_errors.empty() && rendered.unsolved.empty()) {
+          r.set_temporary =
+              FileBatch::write_staged(variant_file(g.out_dir, g.set, v.name), rendered.set_text);
+          r.key_temporary = FileBatch::write_staged(variant_key_file(g.out_dir, g.set, v.name),
+                                                    rendered.key_text);
+        }
+      } catch (const std::exception& e) {
+        discard(r);
+        r.set_temporary.clear();
+        r.key_temporary.clear();
+        r.write_error = e.what();
+      }
+      r.rendered = std::move(rendered);
+      r.rendered.set_text.clear();
+      r.rendered.key_text.clear();
+      return encode(r);
+    };
+    std::vector<std::optional<IsolatedResult>> arrived(items);
+    std::size_t next = 0;
+    bool stopped = false;  // a seed's ranges are used up: no variant after it
+    const auto settle = [&](std::size_t i, IsolatedResult& result) {
+      if (result.status != IsolatedResult::Status::Ok) {
+        o.err << "error: " << name_of(i) << ": " << result.error << "\n";
+        status = 1;
+        return;
+      }
+      Record r;
+      try {
+        r = decode(result.output);
+      } catch (const std::exception& e) {
+        o.err << "error: " << name_of(i) << ": " << e.what() << "\n";
+        status = 1;
+        return;
+      }
+      if (stopped || failed) {
+        discard(r);
+        return;
+      }
+      if (!r.write_error.empty()) {
+        o.err << "error: " << r.write_error << "\n";
+        failed = true;
+        return;
+      }
+      if (g.seed ? seeds->take(r.givens) : classes->take(r.givens)) {
+        if (!take(name_of(i), r.rendered,
+                  [&](const std::string& set_path, const std::string& key_path) {
+                    files.adopt(r.set_temporary, set_path);
+                    r.set_temporary.clear();
+                    files.adopt(r.key_temporary, key_path);
+                    r.key_temporary.clear();
+                  }))
+          discard(r);
+        return;
+      }
+      if (g.seed) {
+        take_here({name_of(i), name_of(i), seeds->draw(static_cast<int>(i))}, &r);
+        stopped = seeds->exhausted();
+      } else {
+        take_here({name_of(i), students[i], classes->draw(students[i])}, &r);
+      }
+      discard(r);  // what was not written again
+    };
+    std::error_code ec;
+    fs::create_directories(fs::path(variant_key_file(g.out_dir, g.set, "x")).parent_path(), ec);
+    run_isolated_each(
+        items, work, kVariantSeconds,
+        [&](std::size_t i, IsolatedResult& result) {
+          arrived[i] = std::move(result);
+          for (; next < items && arrived[next]; ++next) {
+            settle(next, *arrived[next]);
+            arrived[next].reset();
+          }
+        },
+        64u << 20, jobs, [&] { return stopped || failed; });
+    // Once stopped, what arrived beyond a share that was not run is never taken: its files go.
+    for (std::optional<IsolatedResult>& result : arrived)
+      if (result && result->status == IsolatedResult::Status::Ok) try {
+          discard(decode(result->output));
+        } catch (const std::exception&) {
+        }
+  } else {
+    if (g.seed)
+      for_each_variant_from_seed(set, *g.seed, g.count, vary_all, [&](int i, ProblemSet&& drawn) {
+        const std::string name = seed_name(static_cast<std::size_t>(i));
+        take_here({name, name, std::move(drawn)});
+      });
+    // The class together: pairwise distinct, redrawing a student whose variant repeats another's.
+    std::vector<ProblemSet> class_variants = variants_for_class(set, students, vary_all);
+    for (std::size_t i = 0; i < students.size(); ++i)
+      take_here({variant_name(students[i]), students[i], std::move(class_variants[i])});
+  }
   try {
     if (!failed) flush();
   } catch (const std::exception& e) {

@@ -180,6 +180,10 @@ int main(int argc, char** argv) {
           ->check(CLI::ExistingFile);
   gen_seed->excludes(gen_student);
   gen_seed->excludes(gen_roster);
+  generate
+      ->add_option("-j,--jobs", gen_opt.jobs,
+                   "--count, --roster: variants drawn at once (default: one per core)")
+      ->check(CLI::Range(1, 1024));
   generate->add_option("-o,--out", gen_opt.out_dir,
                        "Directory for the sets; keys go in its answers/ (default .)");
   generate

@@ -111,8 +111,34 @@ FileBatch::~FileBatch() {
 }
 
 void FileBatch::stage(const std::string& path, const std::string& content) {
-  pending_.push_back({write_temporary(path, content, false), path});
+  adopt(write_staged(path, content), path);
 }
+
+std::string FileBatch::write_staged(const std::string& path, const std::string& content) {
+  return write_temporary(path, content, false);
+}
+
+void FileBatch::rewrite_staged(const std::string& temporary, const std::string& path,
+                               const std::string& content) {
+  // Written over, then cut to size: truncating to nothing first would free the file's blocks
+  // only to take them again.
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) fail(path, "cannot write its temporary file");
+  try {
+    write_all(fd, content, path);
+    if (::ftruncate(fd, static_cast<off_t>(content.size())) != 0) fail(path, "cannot write");
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  if (::close(fd) != 0) fail(path, "cannot close");
+}
+
+void FileBatch::adopt(const std::string& temporary, const std::string& path) {
+  pending_.push_back({temporary, path});
+}
+
+void FileBatch::discard(const std::string& temporary) { ::unlink(temporary.c_str()); }
 
 void FileBatch::commit() {
   if (pending_.empty()) return;

@@ -27,6 +27,16 @@ class FileBatch {
   // Creates missing parent directories. Throws std::runtime_error naming the path on failure.
   void stage(const std::string& path, const std::string& content);
   void commit();
+  // stage() in two halves, so that another process can write what this one commits:
+  // write_staged() writes the temporary file beside `path` and returns its name (the caller
+  // owns it until it is adopted), adopt() stages it as stage() would have, and discard()
+  // removes one that will not be adopted.
+  static std::string write_staged(const std::string& path, const std::string& content);
+  // Replaces what a temporary file from write_staged() holds (`path`: its target, for errors).
+  static void rewrite_staged(const std::string& temporary, const std::string& path,
+                             const std::string& content);
+  void adopt(const std::string& temporary, const std::string& path);
+  static void discard(const std::string& temporary);
   std::size_t staged() const { return pending_.size(); }
 
  private:

@@ -2,17 +2,20 @@
 
 #include <fmt/format.h>
 #include <poll.h>
+#include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <new>
 
 namespace frustum {
 
@@ -68,11 +71,27 @@ struct Lane {
 std::vector<IsolatedResult> run_isolated_each(
     std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
     const std::function<void(std::size_t, IsolatedResult&)>& on_result, std::size_t max_output,
-    std::size_t jobs) {
+    std::size_t jobs, const std::function<bool()>& stop) {
   std::vector<IsolatedResult> results(count);
+  // Set when `stop` says so; shared with the children, which look at it before each item.
+  std::atomic<bool>* stopping = nullptr;
+  if (stop) {
+    void* shared = mmap(nullptr, sizeof(std::atomic<bool>), PROT_READ | PROT_WRITE,
+                        MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+    if (shared != MAP_FAILED) stopping = new (shared) std::atomic<bool>(false);
+  }
+  bool stopped_by_caller = false;
   const auto finish = [&](std::size_t i, IsolatedResult r) {
     if (on_result) on_result(i, r);
     results[i] = std::move(r);
+    if (stop && !stopped_by_caller && stop()) {
+      stopped_by_caller = true;
+      if (stopping) stopping->store(true);
+    }
+  };
+  // The items of a share never started once the caller stopped the run.
+  const auto not_run = [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) results[i].error = "not run";
   };
   const auto limit =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
@@ -99,6 +118,7 @@ std::vector<IsolatedResult> run_isolated_each(
       for (const Lane& other : lanes)
         if (other.fd >= 0) close(other.fd);
       for (std::size_t i = lane.next; i < lane.end; ++i) {
+        if (stopping && stopping->load()) break;
         std::string text;
         char status = 'O';
         try {
@@ -135,6 +155,11 @@ std::vector<IsolatedResult> run_isolated_each(
     }
     lane.pid = -1;
     if (lane.next >= lane.end) return;
+    if (stopped_by_caller) {  // the child stopped before its next item, as asked
+      not_run(lane.next, lane.end);
+      lane.next = lane.end;
+      return;
+    }
     IsolatedResult r;
     if (stop == Stop::Timeout) {
       r.status = IsolatedResult::Status::Timeout;
@@ -184,8 +209,17 @@ std::vector<IsolatedResult> run_isolated_each(
     std::vector<pollfd> polls;
     std::vector<Lane*> polled;
     for (Lane& lane : lanes) {
+      if (lane.fd < 0 && lane.next < lane.end && stopped_by_caller) {
+        not_run(lane.next, lane.end);
+        lane.next = lane.end;
+      }
       if (lane.fd < 0 && lane.next < lane.end && !start(lane))
         while (lane.next < lane.end) {
+          if (stopped_by_caller) {
+            not_run(lane.next, lane.end);
+            lane.next = lane.end;
+            break;
+          }
           const std::size_t i = lane.next++;
           finish(i, run_in_process([&] { return work(i); }));
         }
@@ -227,6 +261,7 @@ std::vector<IsolatedResult> run_isolated_each(
       if (lane.fd >= 0 && Clock::now() >= lane.deadline) stopped(lane, Stop::Timeout);
     }
   }
+  if (stopping) munmap(stopping, sizeof(std::atomic<bool>));
   return results;
 }
 

@@ -30,9 +30,13 @@ IsolatedResult run_isolated(const std::function<std::string()>& work, double sec
 // that item alone is marked and a fresh child carries on with the next of that share.
 // `on_result` (optional) is called in this process after each item, in each share's order
 // (shares interleave); what it moves out of the result (the output) is not kept.
+// `stop` (optional) is asked after each on_result: once it says true, each child finishes the
+// item it is on (its result is handed over as usual) and starts no other; the items never
+// started are left Failed ("not run") without an on_result call.
 std::vector<IsolatedResult> run_isolated_each(
     std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
     const std::function<void(std::size_t index, IsolatedResult&)>& on_result = {},
-    std::size_t max_output = 64u << 20, std::size_t jobs = 1);
+    std::size_t max_output = 64u << 20, std::size_t jobs = 1,
+    const std::function<bool()>& stop = {});
 
 }  // namespace frustum

@@ -111,6 +111,28 @@ TEST(Isolate, SlowAndCrashingItemsCostOnlyTheirOwnResult) {
   EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
 }
 
+// Stopped by the caller: every item started is handed over, none is started after.
+TEST(Isolate, AStoppedRunStartsNoFurtherItem) {
+  std::vector<std::size_t> seen;
+  const auto results = run_isolated_each(
+      200,
+      [](std::size_t i) -> std::string {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        return "item " + std::to_string(i);
+      },
+      10, [&](std::size_t i, const IsolatedResult&) { seen.push_back(i); }, 64u << 20, 2,
+      [&] { return seen.size() >= 3; });
+  ASSERT_EQ(results.size(), 200u);
+  EXPECT_LT(seen.size(), 100u);  // each child finishes the item it is on (4 s of items a share)
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const bool handed = std::find(seen.begin(), seen.end(), i) != seen.end();
+    EXPECT_EQ(results[i].status == IsolatedResult::Status::Ok, handed) << i;
+    if (!handed) {
+      EXPECT_EQ(results[i].error, "not run") << i;
+    }
+  }
+}
+
 TEST(Isolate, SharesInParallelKeepEachItemsOwnResult) {
   std::vector<std::size_t> seen;
   const auto results = run_isolated_each(

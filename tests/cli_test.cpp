@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "test_util.hpp"
@@ -181,6 +182,78 @@ TEST(Cli, GenerateStopsWhenAProblemRunsOutOfVariants) {
       << r.out;
   EXPECT_TRUE(std::filesystem::exists(dir + "/narrow_set-seed1-1.yaml"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/narrow_set-seed1-3.yaml"));
+}
+
+// Every file under dir (path relative to dir → content).
+std::map<std::string, std::string> files_under(const std::string& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) {
+      std::ifstream in(e.path(), std::ios::binary);
+      out[std::filesystem::relative(e.path(), dir).string()] =
+          std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    }
+  return out;
+}
+
+// `generate ARGS -j J` into a fresh directory: its status, output and files, the directory's
+// name written DIR (a redrawn student's file names it).
+struct Generated {
+  int status;
+  std::string out;
+  std::map<std::string, std::string> files;
+};
+Generated generate_with_jobs(const std::string& args, int jobs, const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "/" + name + "-j" + std::to_string(jobs);
+  std::filesystem::remove_all(dir);
+  const CliRun r = run("generate " + args + " -j " + std::to_string(jobs) + " -o " + dir);
+  const auto named = [&](std::string text) {
+    for (std::size_t at; (at = text.find(dir)) != std::string::npos;)
+      text.replace(at, dir.size(), "DIR");
+    return text;
+  };
+  Generated out{r.status, named(r.out), {}};
+  if (std::filesystem::exists(dir))
+    for (const auto& [path, text] : files_under(dir)) out.files[path] = named(text);
+  return out;
+}
+
+void expect_same_whatever_jobs(const std::string& args, const std::string& name) {
+  const Generated one = generate_with_jobs(args, 1, name);
+  EXPECT_FALSE(one.files.empty()) << one.out;
+  for (const int jobs : {2, 3}) {
+    const Generated more = generate_with_jobs(args, jobs, name);
+    EXPECT_EQ(more.status, one.status) << jobs;
+    EXPECT_EQ(more.out, one.out) << jobs;
+    EXPECT_EQ(more.files.size(), one.files.size()) << jobs;
+    EXPECT_TRUE(more.files == one.files) << "the files of -j " << jobs << " differ from -j 1";
+  }
+}
+
+TEST(Cli, GenerateWritesTheSameFilesWhateverJobs) {
+  expect_same_whatever_jobs(seed("001_zbuffer_plane_method.yaml") + " --seed 1 --count 200",
+                            "gen-jobs-seed001");
+}
+
+// 120 pixels for 100 variants: the later shares' own draws mostly repeat an earlier share's, so
+// nearly every variant there is drawn again by the parent, as one process would have drawn it.
+TEST(Cli, GenerateKeepsVariantsDistinctAcrossShares) {
+  const std::string path = ::testing::TempDir() + "/crowded_set.yaml";
+  std::ofstream(path)
+      << "title: crowded\nproblems:\n"
+         "  - id: z\n    kind: depth_at_pixel\n"
+         "    given: {triangle: [[0, 0, 6], [40, 0, 9], [0, 40, 9]], pixel: [1, 1]}\n"
+         "    vary: {pixel: [{range: [1, 12]}, {range: [1, 10]}]}\n";
+  expect_same_whatever_jobs(path + " --seed 4 --count 100", "gen-jobs-crowded");
+  // Used up: the same stop at the same variant, the same files before it.
+  expect_same_whatever_jobs(path + " --seed 4 --count 200", "gen-jobs-used-up");
+  // A class: redrawn students (#2, #3…) exactly as one process redraws them.
+  const std::string roster = ::testing::TempDir() + "/crowded_roster.txt";
+  {
+    std::ofstream out(roster);
+    for (int i = 0; i < 110; ++i) out << "s" << i << "\n";
+  }
+  expect_same_whatever_jobs(path + " --roster " + roster, "gen-jobs-class");
 }
 
 TEST(Cli, BadUsageIsAnErrorNotACrash) {

@@ -52,6 +52,8 @@ TEST(Placeholders, FilledAsStudentsReadThemUnknownAndMappingsRefused) {
 }
 
 TEST(VariantShape, ShapeIgnoresValuesButNotStructure) {
+  // The text itself: keys sorted, every item followed by a comma, numbers as #, words quoted.
+  EXPECT_EQ(given_shape(YAML::Load("{b: [1, x, sqrt(2)], a: {c: ~}}")), "{a:{c:~,},b:[#,'x',#,],}");
   EXPECT_EQ(given_shape(YAML::Load("{dim: 2, steps: [{rotate: 90}], points: [[1, 0]]}")),
             given_shape(YAML::Load("{points: [[3, -2]], steps: [{rotate: 45}], dim: 2}")));
   EXPECT_NE(given_shape(YAML::Load("{steps: [{rotate: 90}]}")),

@@ -32,6 +32,17 @@ TEST(YamlEmit, QuotesWhatYaml11And12ReadDifferently) {
     EXPECT_EQ(emit_scalar(s), s) << s;
 }
 
+// Integers and exact values are written plain without trying the readers' patterns; the
+// numbers that need quotes still get them.
+TEST(YamlEmit, NumbersAndExactValuesArePlainUnlessAReaderDisagrees) {
+  for (int i = -1000; i <= 1000; ++i) EXPECT_EQ(emit_scalar(std::to_string(i)), std::to_string(i));
+  for (const char* s : {"+7", "1/2", "-sqrt(3)/3", "2*sqrt(6)/3", "pi/4", "(1)", "AC", "kind",
+                        "seed001-plane", "yesterday", "Nothing", "x1.5", "nullable", "e3"})
+    EXPECT_EQ(emit_scalar(s), s);
+  for (const char* s : {"007", "-010", "+0_1", "1e3", "0o17", "yes", "-", "1:30", "Off", "N"})
+    EXPECT_EQ(emit_scalar(s), std::string("\"") + s + "\"") << s;
+}
+
 TEST(YamlEmit, StringNodesStayStrings) {
   // A bit string or a word is a string whatever it looks like.
   EXPECT_EQ(emit_flow(string_node("1000")), "\"1000\"");

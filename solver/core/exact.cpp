@@ -244,6 +244,19 @@ struct SimplifyRadicals : GiNaC::map_function {
   }
 };
 
+// c·k^(p/q) with c ≠ 0 and k > 0 rational (a unit vector's component, a length; c = 1 for a
+// root alone): a real constant whose sign is c's.
+bool rational_times_root(const ex& e, numeric& c) {
+  const bool product = is_a<GiNaC::mul>(e) && e.nops() == 2 && is_a<numeric>(e.op(1)) &&
+                       ex_to<numeric>(e.op(1)).is_rational();
+  const ex& root = product ? e.op(0) : e;
+  if (!is_a<GiNaC::power>(root) || !is_positive_rational(root.op(0)) ||
+      !is_a<numeric>(root.op(1)) || !ex_to<numeric>(root.op(1)).is_rational())
+    return false;
+  c = product ? ex_to<numeric>(e.op(1)) : numeric(1);
+  return true;
+}
+
 // GiNaC's working precision is a process-wide setting; restore it whatever happens.
 class DigitsGuard {
  public:
@@ -439,9 +452,38 @@ bool simplify_pass(ex& current, WorkBudget& budget) {
   return true;
 }
 
+// The canonical form of c·k^(±1/2) (c rational, k a positive integer below kFactorLimit), the
+// shape of most unit vectors and lengths, straight from k's square part: c·s·√r or c·s·√r / k
+// for k = s²·r. canonical(e, budget) reaches the same value by its passes (exact_test compares
+// the two); false for any other shape.
+bool canonical_simple_root(const ex& e, ex& out) {
+  numeric c = 1;
+  ex root = e;
+  if (is_a<GiNaC::mul>(e)) {
+    if (e.nops() != 2 || !is_a<numeric>(e.op(1))) return false;
+    c = ex_to<numeric>(e.op(1));
+    root = e.op(0);
+    if (!c.is_rational()) return false;
+  }
+  if (!is_a<GiNaC::power>(root) || !is_a<numeric>(root.op(0)) || !is_a<numeric>(root.op(1)))
+    return false;
+  const numeric& k = ex_to<numeric>(root.op(0));
+  const numeric& exponent = ex_to<numeric>(root.op(1));
+  const bool inverse = exponent.is_equal(numeric(-1, 2));
+  if (!(inverse || exponent.is_equal(numeric(1, 2))) || !k.is_pos_integer() ||
+      k >= numeric(static_cast<long>(kFactorLimit)))
+    return false;
+  const RootSplit split = split_root(to_cl_i(k), 2);
+  numeric whole = c * numeric(cln::cl_N(split.coeff));
+  if (inverse) whole = whole / k;
+  out = make_radical(whole, split.radicand, 2);
+  return true;
+}
+
 }  // namespace
 
 Exact canonical(const Exact& e) {
+  if (ex simple; canonical_simple_root(e, simple)) return simple;
   WorkBudget budget;
   return canonical(e, budget);
 }
@@ -493,7 +535,8 @@ double to_double(const Exact& e) {
   // the double is the nearest one.
   if (is_a<numeric>(e) && ex_to<numeric>(e).is_real() && ex_to<numeric>(e).is_rational())
     return rational_to_double(ex_to<numeric>(e));
-  if (!is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
+  if (numeric c; !rational_times_root(e, c) && !is_real_constant(e))
+    return std::numeric_limits<double>::quiet_NaN();
   try {
     const DigitsGuard guard(40);
     numeric value;
@@ -520,6 +563,9 @@ int exact_sign(const Exact& e) {
     const numeric& n = ex_to<numeric>(e);
     return n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
   }
+  // A root of a rational times a rational: the coefficient's sign, without evaluating the root
+  // (what the general route below concludes from the factors' signs).
+  if (numeric c; rational_times_root(e, c)) return c.is_positive() ? 1 : -1;
   if (!is_real_constant(e)) throw std::domain_error("exact_sign: not a real constant");
   // Products and powers by their factors' signs: no cancellation there, so √2·10⁻³⁰⁰ is
   // decided however small it is, and only sums are refined numerically.

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <regex>
+#include <string_view>
 
 namespace frustum {
 
@@ -59,9 +60,31 @@ const Reader& yaml12() {
   return r;
 }
 
+// Scalars both readers take alike without trying their expressions (most of what a variant and
+// its key write): a decimal integer without leading zeros is the same int to both; a '/' or a
+// parenthesis (1/2, -sqrt(3)/3) is in no pattern of either; and a scalar that starts with a
+// letter can only be a boolean or a null word (the numbers start with a sign, a digit or a dot),
+// so anything else that starts with one (AC, kind, seed001-plane) is a string to both.
+bool readers_agree_plainly(const std::string& s) {
+  if (s.find_first_of("/()") != std::string::npos) return true;
+  if ((s[0] >= 'a' && s[0] <= 'z') || (s[0] >= 'A' && s[0] <= 'Z')) {
+    static constexpr std::string_view kWords[] = {
+        "y",  "Y",    "yes",  "Yes",  "YES",   "n",     "N",     "no", "No",
+        "NO", "true", "True", "TRUE", "false", "False", "FALSE", "on", "On",
+        "ON", "off",  "Off",  "OFF",  "null",  "Null",  "NULL"};
+    for (const std::string_view w : kWords)
+      if (s == w) return false;
+    return true;
+  }
+  const std::size_t start = s[0] == '-' || s[0] == '+' ? 1 : 0;
+  if (start == s.size() || (s[start] == '0' && s.size() > start + 1)) return false;
+  return s.find_first_not_of("0123456789", start) == std::string::npos;
+}
+
 // The two read the scalar as different things (yes: a boolean or a string; 1e3: a string or a
 // float), or as integers of different values (0010 is octal 8 in YAML 1.1 and 10 in 1.2).
 bool readers_disagree(const std::string& s) {
+  if (!s.empty() && readers_agree_plainly(s)) return false;
   const Resolved a = yaml11().resolve(s), b = yaml12().resolve(s);
   if (a != b) return true;
   static const std::regex leading_zero("[-+]?0[0-9_]+");

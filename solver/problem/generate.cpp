@@ -92,23 +92,46 @@ YAML::Node redraw(const YAML::Node& n, const std::string& key, Rng& rng) {
 
 }  // namespace
 
-std::string given_shape(const YAML::Node& n) {
+namespace {
+
+// given_shape written onto the end of `out` (every draw of a written exercise's default variant
+// compares up to kShapeTries of these, so lists are written in place rather than joined).
+void append_shape(const YAML::Node& n, std::string& out) {
   if (n.IsMap()) {
     std::vector<std::string> parts;
-    for (auto it = n.begin(); it != n.end(); ++it)
-      parts.push_back(it->first.as<std::string>() + ":" + given_shape(it->second));
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      std::string part = it->first.as<std::string>() + ":";
+      append_shape(it->second, part);
+      parts.push_back(std::move(part));
+    }
     std::sort(parts.begin(), parts.end());
-    std::string out = "{";
-    for (const std::string& p : parts) out += p + ",";
-    return out + "}";
+    out += '{';
+    for (const std::string& p : parts) (out += p) += ',';
+    out += '}';
+  } else if (n.IsSequence()) {
+    out += '[';
+    for (const YAML::Node& item : n) {
+      append_shape(item, out);
+      out += ',';
+    }
+    out += ']';
+  } else if (n.IsScalar()) {
+    const std::string& text = n.Scalar();
+    if (number_literal(text))
+      out += '#';
+    else
+      ((out += '\'') += text) += '\'';
+  } else {
+    out += '~';
   }
-  if (n.IsSequence()) {
-    std::string out = "[";
-    for (const YAML::Node& item : n) out += given_shape(item) + ",";
-    return out + "]";
-  }
-  if (n.IsScalar()) return number_literal(n.Scalar()) ? "#" : "'" + n.Scalar() + "'";
-  return "~";
+}
+
+}  // namespace
+
+std::string given_shape(const YAML::Node& n) {
+  std::string out;
+  append_shape(n, out);
+  return out;
 }
 
 YAML::Node redraw_values(const YAML::Node& given, Rng& rng) { return redraw(given, "", rng); }

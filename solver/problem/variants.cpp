@@ -92,7 +92,8 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
 }
 
 ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::uint64_t seed,
-                         const std::set<std::string>& avoid, std::string* given_text) {
+                         const std::set<std::string>& avoid, std::string* given_text,
+                         std::vector<std::string>* repeated) {
   // yaml-cpp's Node::operator= writes through to every copy of a node (the base set's too):
   // nodes of a copied ProblemSpec are rebound with reset(), and specs are never assigned.
   ProblemSpec spec = base;
@@ -134,6 +135,7 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
                              : apply_vary(base.vary, base.given_node, rng, file, vary_field);
       const std::string text = emit_flow(given);
       if (avoid.count(text)) {
+        if (repeated) repeated->push_back(text);
         last = "the same as another variant";
         continue;
       }
@@ -240,14 +242,19 @@ std::vector<Diagnostic> stale_text_errors(const ProblemSet& set, bool vary_all) 
 
 namespace {
 
-// `avoid` (when given) holds, per problem, the givens (emit_flow text) of earlier variants.
+// `avoid` (when given) holds, per problem, the givens (emit_flow text) of earlier variants;
+// `givens` (when given) receives the variant's own (VariantGivens).
 ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std::string& student,
-                        bool vary_all, const std::vector<std::set<std::string>>* avoid) {
+                        bool vary_all, const std::vector<std::set<std::string>>* avoid,
+                        VariantGivens* givens = nullptr) {
   ProblemSet out = set;
   out.per_student = false;
   const std::uint64_t seed = variant_seed(set_key(set), who);
   out.variant = VariantInfo{student, seed};
   out.problems.clear();
+  if (givens)
+    *givens = {std::vector<std::optional<std::string>>(set.problems.size()),
+               std::vector<std::vector<std::string>>(set.problems.size()), true};
   static const std::set<std::string> kNone;
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const ProblemSpec& base = set.problems[i];
@@ -255,10 +262,21 @@ ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std
       out.problems.push_back(base);
       continue;
     }
-    out.problems.push_back(
-        draw_problem(base, set.file, problem_seed(seed, base.id), avoid ? (*avoid)[i] : kNone));
+    std::string text;
+    out.problems.push_back(draw_problem(base, set.file, problem_seed(seed, base.id),
+                                        avoid ? (*avoid)[i] : kNone, &text,
+                                        givens ? &givens->repeated[i] : nullptr));
+    if (!givens) continue;
+    if (!out.problems.back().error)
+      givens->given[i] = std::move(text);
+    else if (!base.error)
+      givens->complete = false;
   }
   return out;
+}
+
+std::string seed_who(std::uint64_t seed, int i) {
+  return "seed:" + std::to_string(seed) + ":" + std::to_string(i);
 }
 
 }  // namespace
@@ -269,48 +287,49 @@ ProblemSet variant_for_student(const ProblemSet& source, const std::string& stud
                       vary_all, nullptr);
 }
 
-std::vector<ProblemSet> variants_for_class(const ProblemSet& source,
+ClassVariants::ClassVariants(const ProblemSet& set, bool vary_all)
+    : set_(prepare_for_drawing(set, vary_all)), vary_all_(vary_all), taken_(set.problems.size()) {}
+
+ProblemSet ClassVariants::first_draw(const std::string& student, VariantGivens* givens) const {
+  return make_variant(set_, "student:" + student, student, vary_all_, nullptr, givens);
+}
+
+bool ClassVariants::take(const VariantGivens& givens) {
+  // An empty text is no given to compare (as variants_for_class always had it).
+  const auto drawn = [&](std::size_t i) { return givens.given[i] && !givens.given[i]->empty(); };
+  for (std::size_t i = 0; i < givens.given.size(); ++i)
+    if (drawn(i) && taken_[i].count(*givens.given[i])) return false;
+  for (std::size_t i = 0; i < givens.given.size(); ++i)
+    if (drawn(i)) taken_[i].insert(*givens.given[i]);
+  return true;
+}
+
+ProblemSet ClassVariants::draw(const std::string& student) {
+  for (int draw = 1; draw <= kMaxDrawAttempts; ++draw) {
+    const std::string who = "student:" + student + (draw == 1 ? "" : "#" + std::to_string(draw));
+    VariantGivens givens;
+    ProblemSet v = make_variant(set_, who, student, vary_all_, nullptr, &givens);
+    if (!take(givens)) continue;
+    v.variant->draw = draw;
+    return v;
+  }
+  ProblemSet out = set_;
+  out.per_student = false;
+  out.variant = VariantInfo{student, 0, kMaxDrawAttempts};
+  out.errors.push_back(Diagnostic{SourceLocation{set_.file, 0, 0}, "student",
+                                  "no variant for " + student +
+                                      " that differs from every earlier student's in " +
+                                      std::to_string(kMaxDrawAttempts) +
+                                      " draws: the ranges hold fewer variants than the class"});
+  return out;
+}
+
+std::vector<ProblemSet> variants_for_class(const ProblemSet& set,
                                            const std::vector<std::string>& students,
                                            bool vary_all) {
-  const ProblemSet set = prepare_for_drawing(source, vary_all);
-  std::vector<std::set<std::string>> taken(
-      set.problems.size());  // per problem: the givens drawn so far
-  // The given of each varying problem as text ("" for fixed or failed ones), to compare draws.
-  const auto givens = [&](const ProblemSet& v) {
-    std::vector<std::string> texts(v.problems.size());
-    for (std::size_t i = 0; i < v.problems.size(); ++i)
-      if (!v.problems[i].error && drawn_anew(set, set.problems[i], vary_all))
-        texts[i] = emit_flow(v.problems[i].given_node);
-    return texts;
-  };
+  ClassVariants drawn(set, vary_all);
   std::vector<ProblemSet> out;
-  for (const std::string& student : students) {
-    std::optional<ProblemSet> chosen;
-    for (int draw = 1; draw <= kMaxDrawAttempts && !chosen; ++draw) {
-      const std::string who = "student:" + student + (draw == 1 ? "" : "#" + std::to_string(draw));
-      ProblemSet v = make_variant(set, who, student, vary_all, nullptr);
-      const std::vector<std::string> texts = givens(v);
-      bool repeats = false;
-      for (std::size_t i = 0; i < texts.size() && !repeats; ++i)
-        repeats = !texts[i].empty() && taken[i].count(texts[i]);
-      if (repeats) continue;
-      for (std::size_t i = 0; i < texts.size(); ++i)
-        if (!texts[i].empty()) taken[i].insert(texts[i]);
-      v.variant->draw = draw;
-      chosen = std::move(v);
-    }
-    if (!chosen) {
-      chosen = set;
-      chosen->per_student = false;
-      chosen->variant = VariantInfo{student, 0, kMaxDrawAttempts};
-      chosen->errors.push_back(Diagnostic{
-          SourceLocation{set.file, 0, 0}, "student",
-          "no variant for " + student + " that differs from every earlier student's in " +
-              std::to_string(kMaxDrawAttempts) +
-              " draws: the ranges hold fewer variants than the class"});
-    }
-    out.push_back(std::move(*chosen));
-  }
+  for (const std::string& student : students) out.push_back(drawn.draw(student));
   return out;
 }
 
@@ -326,32 +345,50 @@ ProblemSet variant_for(const ProblemSet& set, const std::string& student) {
   return variant_for_student(set, student, false);
 }
 
-void for_each_variant_from_seed(const ProblemSet& source, std::uint64_t seed, int count,
-                                bool vary_all, const std::function<void(int, ProblemSet&&)>& take) {
-  const ProblemSet set = prepare_for_drawing(source, vary_all);
-  // Per problem, the givens drawn so far: each variant is checked against it in O(log n)
-  // (rebuilding it from every earlier variant made --count quadratic).
-  std::vector<std::set<std::string>> taken(set.problems.size());
-  for (int i = 0; i < count; ++i) {
-    const std::string who = "seed:" + std::to_string(seed) + ":" + std::to_string(i);
-    ProblemSet v = make_variant(set, who, "", vary_all, &taken);
-    // A problem that found no new variant in all its draws has (nearly) used up its ranges:
-    // the later variants would each spend every draw and fail alike, so the run stops here.
-    bool exhausted = false;
-    for (std::size_t p = 0; p < v.problems.size(); ++p) {
-      if (!v.problems[p].error && drawn_anew(set, set.problems[p], vary_all)) {
-        taken[p].insert(emit_flow(v.problems[p].given_node));
-      } else if (v.problems[p].error && !set.problems[p].error) {
-        v.problems[p].error->message += "; stopped at variant " + std::to_string(i + 1) + " of " +
-                                        std::to_string(count) + " (" +
-                                        std::to_string(taken[p].size()) +
-                                        " distinct variants of this problem were drawn)";
-        exhausted = true;
-      }
+SeedVariants::SeedVariants(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all)
+    : set_(prepare_for_drawing(set, vary_all)),
+      seed_(seed),
+      count_(count),
+      vary_all_(vary_all),
+      taken_(set.problems.size()) {}
+
+ProblemSet SeedVariants::draw(int i, VariantGivens* givens) {
+  VariantGivens own;
+  VariantGivens& g = givens ? *givens : own;
+  ProblemSet v = make_variant(set_, seed_who(seed_, i), "", vary_all_, &taken_, &g);
+  // A problem that found no new variant in all its draws has (nearly) used up its ranges:
+  // the later variants would each spend every draw and fail alike, so the run stops here.
+  for (std::size_t p = 0; p < v.problems.size(); ++p) {
+    if (g.given[p]) {
+      taken_[p].insert(*g.given[p]);
+    } else if (v.problems[p].error && !set_.problems[p].error) {
+      v.problems[p].error->message +=
+          "; stopped at variant " + std::to_string(i + 1) + " of " + std::to_string(count_) + " (" +
+          std::to_string(taken_[p].size()) + " distinct variants of this problem were drawn)";
+      exhausted_ = true;
     }
-    take(i, std::move(v));
-    if (exhausted) return;
   }
+  return v;
+}
+
+bool SeedVariants::take(const VariantGivens& givens) {
+  if (!givens.complete || givens.given.size() != taken_.size()) return false;
+  for (std::size_t p = 0; p < taken_.size(); ++p) {
+    if (givens.given[p] && taken_[p].count(*givens.given[p])) return false;
+    for (const std::string& text : givens.repeated[p])
+      if (!taken_[p].count(text)) return false;
+  }
+  for (std::size_t p = 0; p < taken_.size(); ++p)
+    if (givens.given[p]) taken_[p].insert(*givens.given[p]);
+  return true;
+}
+
+void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all,
+                                const std::function<void(int, ProblemSet&&)>& take) {
+  // Each variant is checked against the givens drawn so far in O(log n) (rebuilding them from
+  // every earlier variant made --count quadratic).
+  SeedVariants drawn(set, seed, count, vary_all);
+  for (int i = 0; i < count && !drawn.exhausted(); ++i) take(i, drawn.draw(i));
 }
 
 std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t seed, int count,

@@ -39,10 +39,11 @@ std::uint64_t variant_seed(const std::string& key, const std::string& who);
 std::uint64_t problem_seed(std::uint64_t variant_seed, const std::string& problem_id);
 
 // One drawn problem: `base` with a new given (parsed and solvable), or with `error` set.
-// `avoid` holds the givens (as emit_flow text) of other variants; `given_text` receives this one's.
+// `avoid` holds the givens (as emit_flow text) of other variants; `given_text` receives this one's,
+// and `repeated` (when given) each draw refused because `avoid` holds it.
 ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::uint64_t seed,
-                         const std::set<std::string>& avoid = {},
-                         std::string* given_text = nullptr);
+                         const std::set<std::string>& avoid = {}, std::string* given_text = nullptr,
+                         std::vector<std::string>* repeated = nullptr);
 
 // A problem "p" of the kind asking every answer, with no `vary` (so draw_problem uses the
 // kind's default generator): for self-tests and benchmarks.
@@ -68,6 +69,60 @@ std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t 
 // Stops after the first variant in which a problem could not be drawn (its ranges used up).
 void for_each_variant_from_seed(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all,
                                 const std::function<void(int, ProblemSet&&)>& take);
+
+// A variant's givens as seen by the pairwise-distinct rule, so that variants drawn apart (in
+// other processes, each knowing fewer earlier variants) can be checked against all of them:
+// per problem, the text of the drawn given (none when the problem is not drawn anew or found no
+// variant), and the draws refused because they repeated a given known where they were drawn.
+struct VariantGivens {
+  std::vector<std::optional<std::string>> given;
+  std::vector<std::vector<std::string>> repeated;
+  bool complete = true;  // every problem drawn anew found a variant
+};
+
+// The variants of for_each_variant_from_seed one at a time, with the givens drawn so far.
+class SeedVariants {
+ public:
+  SeedVariants(const ProblemSet& set, std::uint64_t seed, int count, bool vary_all);
+  // Variant i drawn against the givens held here, which then hold its own (and `givens`, when
+  // given, receives them). A problem that found no new variant carries an error saying where
+  // the run stops, and exhausted() is true from then on.
+  ProblemSet draw(int i, VariantGivens* givens = nullptr);
+  // Whether a variant drawn apart, against fewer earlier givens, is the one draw() would give
+  // here — every draw it refused as a repeat repeats a given held here and none of its givens
+  // does (the draws themselves do not depend on what is avoided) — and if so holds its givens.
+  // False: draw it here instead.
+  bool take(const VariantGivens& givens);
+  bool exhausted() const { return exhausted_; }
+
+ private:
+  ProblemSet set_;  // texts templated for drawing (literal values → placeholders)
+  std::uint64_t seed_;
+  int count_;
+  bool vary_all_;
+  std::vector<std::set<std::string>> taken_;  // per problem: the givens drawn so far
+  bool exhausted_ = false;
+};
+
+// The variants of variants_for_class one student at a time, with the givens drawn so far.
+class ClassVariants {
+ public:
+  ClassVariants(const ProblemSet& set, bool vary_all);
+  // The student's first draw, independent of every other student's (`givens` receives its
+  // givens): what take() checks.
+  ProblemSet first_draw(const std::string& student, VariantGivens* givens = nullptr) const;
+  // The student's variant against the givens held here, which then hold its own.
+  ProblemSet draw(const std::string& student);
+  // Whether a first draw made apart repeats no given held here; if so its givens are held.
+  // False: draw() the student here.
+  bool take(const VariantGivens& givens);
+
+ private:
+  ProblemSet set_;  // texts templated for drawing (literal values → placeholders)
+  bool vary_all_;
+  std::vector<std::set<std::string>> taken_;
+};
+
 // The student's variant, with vary_all as above.
 ProblemSet variant_for_student(const ProblemSet& set, const std::string& student, bool vary_all);
 // The variants of a class, in roster order, pairwise distinct in every varying problem. A
