@@ -151,7 +151,10 @@ def main():
     # worker (-j 1) and with the default (one per core). Each timed run writes into a directory
     # of its own, removed with the rest at the end: this VM's ext4 has no journal, and creating
     # files soon after thousands were deleted scans the recently deleted inodes.
-    gen_set = os.path.join(args.repo, "problems/seeds/001_zbuffer_plane_method.yaml")
+    # The lecture's plane-method exercise with ranges wide enough for 100 000 distinct variants
+    # (problems/seeds/001's own redraw holds about 13 500, and generate then stops with an error).
+    gen_set = os.path.join(work, "gen-set.yaml")
+    subprocess.run([PY, WORKLOADS, "gen-set", gen_set], check=True)
     gen_sizes = ([100, 1000, 10000] + ([100000] if args.full else [])) if want("generate") else []
     gen_ncpu = os.cpu_count() or 1
     gen_runs = itertools.count()
@@ -169,8 +172,8 @@ def main():
                 gen_100k[label] = st
         if rows:
             gen_tables.append(scaling_table(
-                f"`frustum generate 001_zbuffer_plane_method.yaml --seed 1 --count N` ({label}; 3 problems, "
-                "exact keys)", "variants", rows))
+                f"`frustum generate gen-set.yaml --seed 1 --count N` ({label}; bench/workloads.py `gen-set`: "
+                "the plane-method exercise, 3 problems, exact keys)", "variants", rows))
     gen_table = "\n".join(gen_tables)
 
     # Grade: a class of N students × 20 problems × 3 numeric answers, every output written.

@@ -3,6 +3,8 @@
 Python + NumPy peer that grades the same class files.
 
   workloads.py class-set SET.yaml                 20 depth_at_pixel problems × 3 answers
+  workloads.py gen-set SET.yaml                   the plane-method exercise with ranges wide enough
+                                                  for 100 000 distinct variants (for `generate`)
   workloads.py class DIR KEY.json N               N answer files (KEY.json: `frustum solve --format json`)
   workloads.py peer SET.yaml KEY.json DIR OUT.csv the NumPy peer: parse every file, grade, write a gradebook
   workloads.py scene FILE N                       a render scene of about N small triangles
@@ -22,6 +24,28 @@ def class_set(path):
         s += (f"  - id: p{i}\n    kind: depth_at_pixel\n    given:\n"
               f"      triangle: [[0, 0, {6 + i % 3}], [{3 + i % 4}, 0, 9], [0, 3, 9]]\n"
               f"      pixel: [1, 1]\n    ask: [normal, plane, z]\n")
+    with open(path, "w") as f:
+        f.write(s)
+
+
+def gen_set(path):
+    # The plane-method exercise of the lecture (unit normal, plane, z at a pixel), each problem
+    # drawing its triangle's coordinates from ranges wide enough for a 100 000-variant run (the
+    # lecture's own set, with the default redraw, holds about 13 500 distinct variants).
+    coord = "{range: [-20, 20]}"
+    depth = "{range: [1, 40]}"
+    tri = f"[[{coord}, {coord}, {depth}], [{coord}, {coord}, {depth}], [{coord}, {coord}, {depth}]]"
+    s = ("title: \"Generate benchmark: the plane method\"\nproblems:\n"
+         "  - id: unit-normal\n    kind: normal\n"
+         "    given: {A: [0, 0, 6], B: [3, 0, 9], C: [0, 3, 9], cross: [AC, AB]}\n"
+         f"    vary: {{A: [{coord}, {coord}, {depth}], B: [{coord}, {coord}, {depth}], "
+         f"C: [{coord}, {coord}, {depth}]}}\n"
+         "    ask: [normal, unit_normal]\n")
+    for pid, ask in (("plane", "[plane]"), ("pixel-z", "[normal, unit_normal, plane, z, inside]")):
+        s += (f"  - id: {pid}\n    kind: depth_at_pixel\n"
+              "    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}\n"
+              f"    vary: {{triangle: {tri}, pixel: [{{range: [-5, 5]}}, {{range: [-5, 5]}}]}}\n"
+              f"    ask: {ask}\n")
     with open(path, "w") as f:
         f.write(s)
 
@@ -124,6 +148,8 @@ if __name__ == "__main__":
     cmd, args = sys.argv[1], sys.argv[2:]
     if cmd == "class-set":
         class_set(args[0])
+    elif cmd == "gen-set":
+        gen_set(args[0])
     elif cmd == "class":
         write_class(args[0], args[1], int(args[2]))
     elif cmd == "peer":
