@@ -52,11 +52,6 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
   try {
     GivenReader root(doc.root, opt.file, "", {"title", "conventions", "scene"});
     const Conventions c = read_conventions(doc.root["conventions"], opt.file, "conventions", {});
-    // As the render kind in a set: the scene pipeline is not left-handed under OpenGL's matrices.
-    if (left_handed_columns(c))
-      root.fail("conventions",
-                "handedness: left is solved with api: directx only in a scene (OpenGL and "
-                "Processing scenes are right-handed)");
     GivenReader s = root.child("scene", scene_fields());
     Scene scene = read_scene(s, c).scene;
     root.finish();

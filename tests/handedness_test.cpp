@@ -385,17 +385,30 @@ TEST(Handedness, JsonStatesTheHandednessUsed) {
   }
 }
 
-// A scene file for `frustum render` declaring a left-handed OpenGL course is refused with its
-// location, as the render kind is in a set; DirectX's own left-handedness renders.
-TEST(Handedness, RenderCommandRefusesALeftHandedOpenGLScene) {
+// A scene in a left-handed OpenGL or Processing course renders through LookAtLH's basis and the
+// projection with its third column negated: the picture is the right-handed picture of the scene
+// mirrored in z (every vertex, the camera and the light), pixel for pixel — culling
+// (counter-clockwise = front in the window) included. DirectX's own left-handedness renders too.
+TEST(Handedness, RenderOfALeftHandedSceneIsTheRightHandedRenderOfItsMirror) {
   const std::string dir = ::testing::TempDir();
-  const auto write = [&](const std::string& name, const std::string& conventions) {
-    std::ofstream(dir + name)
-        << "conventions: " << conventions
-        << "\nscene:\n  viewport: {width: 8, height: 8}\n"
-           "  camera: {eye: [0, 0, 5], center: [0, 0, 0], up: [0, 1, 0]}\n"
-           "  perspective: {fovy: 60, aspect: 1, near: 1, far: 10}\n"
-           "  objects:\n    - triangle: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]\n";
+  const auto scene = [&](const std::string& name, const std::string& conventions, int s) {
+    const auto p = [&](int x, int y, int z) {
+      return "[" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(s * z) +
+             "]";
+    };
+    std::ofstream(dir + name) << "conventions: " << conventions
+                              << "\nscene:\n  viewport: {width: 48, height: 40}\n"
+                              << "  camera: {eye: " << p(2, 3, 9) << ", center: " << p(0, 0, 0)
+                              << ", up: " << p(0, 1, 1)
+                              << "}\n  perspective: {fovy: 60, aspect: 1.2, near: 1, far: 30}\n"
+                              << "  light: {direction: " << p(1, -2, -3) << "}\n"
+                              << "  objects:\n"
+                              << "    - {triangle: [" << p(-3, -2, 0) << ", " << p(3, -2, 1) << ", "
+                              << p(0, 3, -1) << "], fill: [200, 40, 40]}\n"
+                              << "    - {triangle: [" << p(-2, 2, 2) << ", " << p(0, -3, 2) << ", "
+                              << p(2, 2, 3) << "], fill: [40, 200, 40], cull: back}\n"
+                              << "    - {triangle: [" << p(-2, -1, 3) << ", " << p(2, 0, 4) << ", "
+                              << p(-1, 2, 4) << "], fill: [40, 40, 200], cull: back}\n";
     return dir + name;
   };
   const auto run = [](const std::string& args) {
@@ -407,12 +420,42 @@ TEST(Handedness, RenderCommandRefusesALeftHandedOpenGLScene) {
     pclose(p);
     return out;
   };
-  const std::string left = run("render " + write("lh.yaml", kLeft) + " -o " + dir + "lh.png");
-  EXPECT_NE(left.find("lh.yaml:1:"), std::string::npos) << left;
-  EXPECT_NE(left.find("handedness: left"), std::string::npos) << left;
+  for (const std::string api : {"opengl", "processing"}) {
+    const std::string left =
+        run("render " + scene("lh.yaml", "{api: " + api + ", handedness: left}", 1) + " -o " + dir +
+            "lh.png");
+    const std::string right =
+        run("render " + scene("rh.yaml", "{api: " + api + "}", -1) + " -o " + dir + "rh.png");
+    EXPECT_NE(left.find("drawn"), std::string::npos) << left;
+    EXPECT_NE(right.find("drawn"), std::string::npos) << right;
+    const std::string a = test::read_file(dir + "lh.png"), b = test::read_file(dir + "rh.png");
+    ASSERT_FALSE(a.empty());
+    EXPECT_EQ(a, b) << api
+                    << ": the left-handed picture differs from the mirrored right-handed one";
+    // And it is not the right-handed picture of the same numbers (the test would be vacuous).
+    run("render " + scene("rs.yaml", "{api: " + api + "}", 1) + " -o " + dir + "rs.png");
+    EXPECT_NE(a, test::read_file(dir + "rs.png")) << api;
+  }
   const std::string dx =
-      run("render " + write("dx.yaml", "{api: directx}") + " -o " + dir + "dx.png");
-  EXPECT_NE(dx.find("1 drawn"), std::string::npos) << dx;
+      run("render " + scene("dx.yaml", "{api: directx}", 1) + " -o " + dir + "dx.png");
+  EXPECT_NE(dx.find("drawn"), std::string::npos) << dx;
+  // The render kind in a set (exact decisions included) answers the same pixels.
+  const auto given = [](int s) {
+    const auto z = [&](int v) { return std::to_string(s * v); };
+    return "{scene: {viewport: {width: 48, height: 40}, camera: {eye: [2, 3, " + z(9) +
+           "], center: [0, 0, 0], up: [0, 1, " + z(1) +
+           "]}, perspective: {fovy: 60, aspect: 1.2, near: 1, far: 30}, light: {direction: [1, "
+           "-2, " +
+           z(-3) + "]}, objects: [{triangle: [[-3, -2, 0], [3, -2, " + z(1) + "], [0, 3, " + z(-1) +
+           "]], fill: [200, 40, 40]}, {triangle: [[-2, 2, " + z(2) + "], [0, -3, " + z(2) +
+           "], [2, 2, " + z(3) +
+           "]], fill: [40, 200, 40], cull: back}]}, pixels: [[24, 20], [20, 18], [30, 25]]}";
+  };
+  const ProblemResult left = solve_one(kLeft, "render", given(1));
+  const ProblemResult right = solve_one(kRight, "render", given(-1));
+  ASSERT_FALSE(left.error || right.error) << test::error_text(left);
+  EXPECT_EQ(numbers(left, "pixels"), numbers(right, "pixels"));
+  EXPECT_EQ(numbers(left, "pixels")[0], 196);  // lit, drawn: the first triangle's front
 }
 
 }  // namespace

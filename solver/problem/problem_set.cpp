@@ -79,14 +79,6 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
   }
   spec.conventions =
       read_conventions(p["conventions"], file, spec.field + ".conventions", set.conventions);
-  // The render kind does not yet follow a left-handed course under OpenGL's or Processing's
-  // matrices (its scene camera and culling are right-handed): refused rather than answered in
-  // the other handedness.
-  if (left_handed_columns(spec.conventions) && spec.kind == "render")
-    fail_at(p["conventions"].IsDefined() ? p["conventions"] : p["kind"], file,
-            spec.field + ".conventions.handedness",
-            "the kind '" + spec.kind +
-                "' is solved right-handed only (or left-handed with api: directx)");
   spec.tolerance = read_tolerance(p["tolerance"], file, spec.field + ".tolerance", set.tolerance);
   spec.grading = read_grading(p["grading"], file, spec.field + ".grading", set.grading);
 

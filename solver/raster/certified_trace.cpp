@@ -288,7 +288,7 @@ CertifiedScene certified_geometry(const Scene& scene, const FlatScene& flat,
       ++st.culled;
       continue;
     }
-    const Rgb color = shade(t, out->front, scene.light);
+    const Rgb color = shade(t, out->front, scene.light, scene.left_handed);
     for (std::size_t v = 1; v + 1 < out->snapped.size(); ++v) {
       CertifiedPiece p;
       setup_fixed({out->snapped[0], out->snapped[v], out->snapped[v + 1]}, p.setup);

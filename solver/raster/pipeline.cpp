@@ -128,8 +128,8 @@ FlatScene flatten(const Scene& scene, bool names) {
 }
 
 Mat4d eye_from_world(const Scene& scene) {
-  return to_mat4(
-      look_at<double>(scene.camera.eye, scene.camera.center, scene.camera.up, scene.api));
+  return to_mat4(look_at<double>(scene.camera.eye, scene.camera.center, scene.camera.up,
+                                 scene.left_handed ? Api::DirectX : scene.api));
 }
 
 Mat4d clip_from_world(const Scene& scene) { return scene.clip_from_eye * eye_from_world(scene); }
@@ -170,14 +170,15 @@ double raster_area2(const std::vector<Vec3d>& p) {
 
 bool front_facing(double area2, Api api) { return api == Api::OpenGL ? area2 > 0 : area2 < 0; }
 
-Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLight>& light) {
+Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLight>& light,
+          bool left_handed) {
   if (!light) return t.fill;
   Vec3d n = (t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]);
   const double len = n.norm();
   double ndotl = 0;
   if (len > 0 && light->direction.norm() > 0) {
     n /= len;
-    if (!front) n = -n;  // two-sided: the side the viewer sees
+    if (!front != left_handed) n = -n;  // two-sided: the side the viewer sees
     ndotl = std::max(0.0, n.dot(-light->direction.normalized()));
   }
   const double k = (light->ambient + light->diffuse * ndotl) / 255.0;
@@ -216,7 +217,7 @@ void GeometryStage::add(const WorldTriangle& t, int source, std::vector<WindowTr
     ++s.culled;
     return;
   }
-  const Rgb color = shade(t, front, scene_.light);
+  const Rgb color = shade(t, front, scene_.light, scene_.left_handed);
   // A clipped polygon is convex: a fan from its first vertex.
   for (std::size_t v = 1; v + 1 < raster_.size(); ++v) {
     out.push_back({{raster_[0], raster_[v], raster_[v + 1]}, color, source, front});

@@ -77,7 +77,10 @@ double raster_area2(const std::vector<Vec3d>& polygon);
 bool front_facing(double raster_area2, Api api);
 
 // Stage: flat two-sided shading (scene.hpp's DirectionalLight). Without a light, the fill.
-Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLight>& light);
+// `left_handed` (Scene::left_handed): counter-clockwise = front in a left-handed frame, so the
+// front normal is e₁ × e₀.
+Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLight>& light,
+          bool left_handed = false);
 
 // A raster-space triangle ready to rasterize.
 struct WindowTriangle {

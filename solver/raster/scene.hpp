@@ -71,6 +71,10 @@ struct Camera {
 
 struct Scene {
   Api api = Api::OpenGL;
+  // A left-handed course under OpenGL's or Processing's matrices: the camera takes LookAtLH's
+  // basis (looking down +z) and clip_from_eye is the projection with its third column negated;
+  // NDC, window and culling (counter-clockwise = front) stay the api's.
+  bool left_handed = false;
   Camera camera;
   Mat4d clip_from_eye = Mat4d::Identity();  // the projection, column form
   int width = 0, height = 0;                // viewport in pixels

@@ -217,8 +217,8 @@ Mesh read_mesh(GivenReader& m, std::size_t min_vertices, std::size_t min_faces) 
 }
 
 Mat4<Exact> exact_clip_from_world(const SceneSpec& spec, Api api, Derivation* steps) {
-  const MatX<Exact> view =
-      look_at_with_steps(spec.eye, spec.center, spec.up, api, "scene.camera.", steps);
+  const MatX<Exact> view = look_at_with_steps(spec.eye, spec.center, spec.up, api, "scene.camera.",
+                                              steps, spec.scene.left_handed);
   Mat4<Exact> m = projection_with_steps(spec.projection, api, steps) * view;
   for (Exact& e : m.reshaped()) e = canonical(e);
   return m;
@@ -228,6 +228,7 @@ SceneSpec read_scene(GivenReader& r, const Conventions& c, bool keep_exact) {
   SceneSpec spec;
   Scene& s = spec.scene;
   s.api = c.api;
+  s.left_handed = left_handed_columns(c);
   {
     GivenReader v = r.child("viewport", {"width", "height"});
     s.width = read_int(v, "width", v.number("width"), 1, kMaxViewport);
@@ -244,7 +245,7 @@ SceneSpec read_scene(GivenReader& r, const Conventions& c, bool keep_exact) {
     spec.up = cam.vector<3>("up");
     cam.finish();
     try {
-      look_at_with_steps(spec.eye, spec.center, spec.up, c.api, "camera.", nullptr);
+      look_at_with_steps(spec.eye, spec.center, spec.up, c.api, "camera.", nullptr, s.left_handed);
     } catch (const DomainError& e) {
       throw InputError(r.locate(e.field(), e.what()));
     }
