@@ -63,8 +63,8 @@ int write_paper(const GenerateCommand& g, const ProblemSet& set, const std::vect
       o.out << tex << "\n";
       continue;
     }
-    // Japanese text needs LuaLaTeX (latex_preamble says so in the first line).
-    const std::string engine = text.rfind("% Japanese", 0) == 0 ? "lualatex" : "pdflatex";
+    // Japanese and Russian text need LuaLaTeX (latex_preamble says so in the first line).
+    const std::string engine = text.rfind("% LuaLaTeX", 0) == 0 ? "lualatex" : "pdflatex";
     const std::string command = fmt::format(
         "{} -interaction=nonstopmode -halt-on-error -output-directory '{}' '{}' > '{}' 2>&1",
         engine, g.out_dir, tex, (fs::path(g.out_dir) / (name + ".build.log")).string());

@@ -80,6 +80,8 @@ char32_t next(std::string_view s, std::size_t& i) {
   return cp;
 }
 
+bool is_cyrillic(char32_t c) { return c >= 0x0400 && c <= 0x04FF; }
+
 bool is_cjk(char32_t c) {
   return (c >= 0x3000 && c <= 0x30FF) || (c >= 0x3400 && c <= 0x9FFF) ||
          (c >= 0xFF00 && c <= 0xFFEF) || (c >= 0xF900 && c <= 0xFAFF);
@@ -89,7 +91,7 @@ bool is_cjk(char32_t c) {
 // shown as their code point (\unknownchar{2A01} prints [U+2A01]) so nothing vanishes unseen.
 void append_unicode(std::string& out, std::string_view s, std::size_t start, std::size_t end,
                     char32_t cp) {
-  if (unicode_latex().count(cp) || is_cjk(cp))
+  if (unicode_latex().count(cp) || is_cjk(cp) || is_cyrillic(cp))
     out.append(s.substr(start, end - start));
   else
     out += fmt::format("\\unknownchar{{{:04X}}}", static_cast<unsigned>(cp));
@@ -100,6 +102,12 @@ void append_unicode(std::string& out, std::string_view s, std::size_t start, std
 bool has_cjk(std::string_view text) {
   for (std::size_t i = 0; i < text.size();)
     if (is_cjk(next(text, i))) return true;
+  return false;
+}
+
+bool has_cyrillic(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();)
+    if (is_cyrillic(next(text, i))) return true;
   return false;
 }
 
@@ -168,12 +176,25 @@ std::string latex_math(std::string_view latex) {
   return out;
 }
 
-std::string latex_preamble(bool cjk) {
+std::string latex_preamble(bool cjk, bool cyrillic) {
   std::string out;
+  // Cyrillic in DejaVu (fonts-dejavu-core): Latin Modern, LuaLaTeX's default, has none.
+  const std::string cyrillic_fonts =
+      cyrillic ? "\\usepackage{fontspec}\n\\setmainfont{DejaVu Serif}\n"
+                 "\\setsansfont{DejaVu Sans}\n\\setmonofont{DejaVu Sans Mono}\n"
+               : "";
   if (cjk) {
     out =
-        "% Japanese text: compile with lualatex (Debian: texlive-luatex, texlive-lang-japanese).\n"
-        "\\documentclass[a4paper,11pt]{article}\n\\usepackage{luatexja}\n";
+        "% LuaLaTeX: Japanese text — compile with lualatex (Debian: texlive-luatex, "
+        "texlive-lang-japanese).\n"
+        "\\documentclass[a4paper,11pt]{article}\n" +
+        cyrillic_fonts + "\\usepackage{luatexja}\n";
+  } else if (cyrillic) {
+    out =
+        "% LuaLaTeX: Russian text — compile with lualatex (Debian: texlive-luatex, "
+        "fonts-dejavu-core).\n"
+        "\\documentclass[a4paper,11pt]{article}\n" +
+        cyrillic_fonts;
   } else {
     out =
         "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\\usepackage[T1]{"

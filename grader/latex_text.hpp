@@ -1,7 +1,8 @@
 // Text for pdflatex: special characters escaped in prose, and the Unicode that derivations use
 // (−, ·, ×, √, π, ′, ₀…₉, ⁻¹, ‖, ≈, ∞ …) mapped to LaTeX by declarations in the preamble.
-// Characters outside that table and outside CJK are shown as [U+XXXX] (a document with Japanese
-// needs LuaLaTeX with luatexja; the caller chooses latex_preamble(true) when has_cjk).
+// Characters outside that table, CJK and Cyrillic are shown as [U+XXXX] (a document with
+// Japanese needs LuaLaTeX with luatexja, one with Russian LuaLaTeX with a Cyrillic font; the
+// caller chooses latex_preamble(has_cjk, has_cyrillic)).
 #pragma once
 
 #include <string>
@@ -14,9 +15,12 @@ std::string latex_prose(std::string_view text);
 // Math already in LaTeX (a MathText's latex): kept, with unmapped characters replaced.
 std::string latex_math(std::string_view latex);
 // \documentclass … \begin{document}: pdflatex with inputenc and the Unicode declarations, or
-// LuaLaTeX with luatexja when `cjk` (texlive-lang-japanese).
-std::string latex_preamble(bool cjk);
+// LuaLaTeX — with luatexja when `cjk` (texlive-lang-japanese), with fontspec and DejaVu (which
+// has Cyrillic) when `cyrillic`. A LuaLaTeX preamble's first line starts "% LuaLaTeX".
+std::string latex_preamble(bool cjk, bool cyrillic = false);
 // Whether the text holds Chinese or Japanese characters (kana, CJK ideographs, full-width forms).
 bool has_cjk(std::string_view text);
+// Whether the text holds Cyrillic letters (U+0400–U+04FF).
+bool has_cyrillic(std::string_view text);
 
 }  // namespace frustum

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "grader/latex_text.hpp"
 #include "grader/paper_figures.hpp"
 #include "grader/quiz_items.hpp"
+#include "solver/derivation/i18n.hpp"
 #include "solver/problem/solve_set.hpp"
 
 namespace frustum {
@@ -15,9 +17,11 @@ namespace frustum {
 namespace {
 
 // The whole document: LuaLaTeX with luatexja as soon as any Japanese appears (a problem's text,
-// or a step's gloss such as 輪郭線), pdflatex otherwise.
+// or a step's gloss such as 輪郭線), with a Cyrillic font as soon as any Russian does, pdflatex
+// otherwise.
 std::string document(const std::string& body) {
-  return latex_preamble(has_cjk(body)) + "\\begin{document}\n" + body + "\\end{document}\n";
+  return latex_preamble(has_cjk(body), has_cyrillic(body)) + "\\begin{document}\n" + body +
+         "\\end{document}\n";
 }
 
 // A derivation's math in LaTeX; a "formula" that is really words (reject: both endpoints are
@@ -32,14 +36,29 @@ std::string math_or_words(const std::string& latex) {
   return words ? "\\text{" + latex_prose(latex) + "}" : latex_math(latex);
 }
 
-std::string points_text(double points) {
+// "2 points", "2 点", "2 балла" (Russian: 1 балл, 2–4 балла, 5 баллов; a fraction: балла).
+std::string points_text(double points, Lang lang) {
+  if (lang == Lang::Ja) return fmt::format("{:g} 点", points);
+  if (lang == Lang::Ru) {
+    const long n = std::lround(points);
+    const char* form = "балла";
+    if (static_cast<double>(n) == points) {
+      const long last = n % 10, tens = n % 100;
+      form = tens >= 11 && tens <= 14 ? "баллов"
+             : last == 1              ? "балл"
+             : last >= 2 && last <= 4 ? "балла"
+                                      : "баллов";
+    }
+    return fmt::format("{:g} {}", points, form);
+  }
   return fmt::format("{:g} point{}", points, points == 1 ? "" : "s");
 }
 
-std::string sheet_head(const std::string& title, const PaperSheet& s, const char* what) {
+std::string sheet_head(const std::string& title, const PaperSheet& s, const char* what, Lang lang) {
   return fmt::format(
-      "\\section*{{{} --- {}}}\n\\textbf{{{}}} \\hfill Name: \\rule{{5cm}}{{0.4pt}}\n\n",
-      latex_prose(title), what, latex_prose(s.student));
+      "\\section*{{{} --- {}}}\n\\textbf{{{}}} \\hfill {}: \\rule{{5cm}}{{0.4pt}}\n\n",
+      latex_prose(title), latex_prose(tr(what, lang)), latex_prose(s.student),
+      latex_prose(tr("Name", lang)));
 }
 
 }  // namespace
@@ -50,12 +69,12 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
   for (std::size_t k = 0; k < sheets.size(); ++k) {
     const PaperSheet& s = sheets[k];
     if (k) out += "\\clearpage\n";
-    out += sheet_head(title, s, "exam");
+    out += sheet_head(title, s, "exam", lang);
     int n = 0;
     for (const ProblemSpec& p : s.set.problems) {
       if (p.error || !p.info) continue;
       out += fmt::format("\\subsection*{{{}. \\normalfont\\small({})}}\n", ++n,
-                         points_text(p.max_score()));
+                         latex_prose(points_text(p.max_score(), lang)));
       out += latex_prose(question_text(s.set, p, lang)) + "\n\n";
       // An empty itemize does not compile (a statements problem shows no given).
       if (const std::vector<std::string> lines = given_lines(p); !lines.empty()) {
@@ -85,7 +104,7 @@ std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::s
   for (std::size_t k = 0; k < sheets.size(); ++k) {
     const PaperSheet& s = sheets[k];
     if (k) out += "\\clearpage\n";
-    out += sheet_head(title, s, "answer key");
+    out += sheet_head(title, s, "answer key", lang);
     int n = 0;
     for (const ProblemSpec& p : s.set.problems) {
       if (p.error || !p.info) continue;
@@ -97,15 +116,15 @@ std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::s
       }
       for (const std::string& name : p.ask)
         if (const Value* v = r.answers.find(name))
-          out +=
-              fmt::format("\\texttt{{{}}} ({}): \\(\\displaystyle {}\\)\\par\n", latex_prose(name),
-                          points_text(p.answer_points(name)), latex_math(v->shown().latex));
+          out += fmt::format("\\texttt{{{}}} ({}): \\(\\displaystyle {}\\)\\par\n",
+                             latex_prose(name), points_text(p.answer_points(name), lang),
+                             latex_math(tr(v->shown(), lang).latex));
       std::string steps;
       for (const Step& step : r.derivation.steps()) {
         if (step.formula.empty() && step.substitution.empty() && step.result.empty()) continue;
         steps += "\\item " + latex_prose(title_in(step, lang));
         for (const MathText* m : {&step.formula, &step.substitution, &step.result})
-          if (!m->latex.empty()) steps += "\\\\ \\(" + math_or_words(m->latex) + "\\)";
+          if (!m->latex.empty()) steps += "\\\\ \\(" + math_or_words(tr(*m, lang).latex) + "\\)";
         steps += "\n";
       }
       if (!steps.empty()) out += "\\begin{enumerate}\\small\n" + steps + "\\end{enumerate}\n";

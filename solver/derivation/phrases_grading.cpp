@@ -11,6 +11,10 @@ constexpr Phrase kPhrases[] = {
     {"Student", "学生", "Студент"},
     {"Source", "出典", "Источник"},
     {"Score", "得点", "Баллы"},
+    // Exam sheets and answer keys on paper.
+    {"exam", "試験", "контрольная работа"},
+    {"answer key", "解答", "ответы"},
+    {"Name", "氏名", "Имя"},
     {"Problem", "問題", "Задача"},
     {"Answer", "解答", "Ответ"},
     {"Answers", "解答", "Ответы"},

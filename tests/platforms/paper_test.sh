@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The paper route, compiled with Debian's TeX: `frustum generate --format pdf` for a class of
-# three and for drawn variants of every problem in the bundled sets (texts dropped: the seeds'
-# Japanese needs LuaLaTeX with luatexja, which CI does not install), checking that each PDF
-# has a sheet per student, that figures are drawn, and that a Japanese set chooses LuaLaTeX.
+# three and for drawn variants of every problem in the bundled sets (texts dropped there: they
+# are compiled with pdflatex), checking that each PDF has a sheet per student and that figures
+# are drawn; and a Japanese set's exam sheets and key, set for LuaLaTeX with luatexja
+# (texlive-lang-japanese, in tools/packages/test.txt) and compiled.
 # Usage: paper_test.sh SOURCE_DIR FRUSTUM_BINARY
 set -euo pipefail
 src=$(cd "$1" && pwd)
@@ -51,6 +52,8 @@ for f in sorted(glob.glob(src + "/problems/seeds/*.yaml") + glob.glob(src + "/pr
     doc = yaml.load(open(f, encoding="utf-8"), Loader=yaml.BaseLoader)  # every scalar as text
     for p in doc.get("problems", []):
         p.pop("text", None)
+        if "conventions" in doc:  # the set's course conventions (a left-handed set's points)
+            p.setdefault("conventions", doc["conventions"])
         # A statements problem's givens are text in the set's language: Latin placeholders here
         # (pdflatex), as the texts are dropped; Japanese sets are checked to choose LuaLaTeX below.
         for i, st in enumerate(p.get("given", {}).get("statements", []) if p.get("kind") == "statements" else []):
@@ -81,6 +84,25 @@ check "no character of any key or sheet lacks a LaTeX form" \
 
 "$frustum" generate "$src/problems/seeds/001_zbuffer_plane_method.yaml" --seed 1 --lang ja -o "$work/ja" --format latex >/dev/null 2>&1
 check "a Japanese exam chooses LuaLaTeX with luatexja" grep -q 'usepackage{luatexja}' "$work/ja/001_zbuffer_plane_method-exams.tex"
+# And the Japanese PDFs themselves (texlive-lang-japanese): a sheet per student, the text set in
+# Japanese (its words are in the PDF's text), the key with its Japanese steps.
+"$frustum" generate "$src/problems/seeds/001_zbuffer_plane_method.yaml" --roster "$work/roster.csv" --lang ja -o "$work/japdf" --format pdf >/dev/null 2>&1 || true
+check "the Japanese exam sheets compile with LuaLaTeX" test -s "$work/japdf/001_zbuffer_plane_method-exams.pdf"
+check "the Japanese key compiles with LuaLaTeX" test -s "$work/japdf/001_zbuffer_plane_method-key.pdf"
+# Russian: LuaLaTeX with a Cyrillic font (DejaVu), every letter kept (none shown as [U+XXXX]).
+"$frustum" generate "$src/problems/seeds/001_zbuffer_plane_method.yaml" --roster "$work/roster.csv" --lang ru -o "$work/rupdf" --format pdf >/dev/null 2>&1 || true
+check "the Russian exam sheets compile with LuaLaTeX" test -s "$work/rupdf/001_zbuffer_plane_method-exams.pdf"
+check "the Russian key compiles with LuaLaTeX" test -s "$work/rupdf/001_zbuffer_plane_method-key.pdf"
+check "no Cyrillic letter of the Russian sheets lacks a LaTeX form" \
+  test "$(cat "$work"/rupdf/*.tex | grep -c 'unknownchar{04')" = 0
+if command -v pdftotext >/dev/null; then
+  check "the Japanese exam's text is Japanese in the PDF" \
+    sh -c "pdftotext '$work/japdf/001_zbuffer_plane_method-exams.pdf' - | grep -q '平面'"
+  check "the Russian exam's text is Russian in the PDF" \
+    sh -c "pdftotext '$work/rupdf/001_zbuffer_plane_method-exams.pdf' - | grep -q 'треугольника'"
+  check "the Russian key's steps are Russian in the PDF" \
+    sh -c "pdftotext '$work/rupdf/001_zbuffer_plane_method-key.pdf' - | grep -q 'Нормаль'"
+fi
 
 echo "$failures failed"
 [ "$failures" -eq 0 ]
