@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <tuple>
+#include <vector>
 
 #include "solver/problem/variants.hpp"
 #include "typeset_corpus.hpp"
@@ -84,11 +86,13 @@ TEST(TextLiteralsTest, OtherNumbersAreLeftAlone) {
   const char* polygon = "{polygons: [{label: 1, points: [[1, 2, 3], [4, 2, 3], [4, 5, 3]]}]}";
   EXPECT_EQ(templ("(1, 2, 3 の順と同じ結果になるか)", polygon).text,
             "(1, 2, 3 の順と同じ結果になるか)");
-  // ... but the last arguments of a call are named fields.
+  // ... but the last arguments of a call are named fields (and PI/3 the field of view, in
+  // radians: AnglesWrittenAsMultiplesOfPi).
   EXPECT_EQ(templ("perspective(PI/3, width/height, 10, 10000)",
                   "{perspective: {fovy: 60, aspect: 1, near: 10, far: 10000}}")
                 .text,
-            "perspective(PI/3, width/height, {perspective.near}, {perspective.far})");
+            "perspective({perspective.fovy|PI}, width/height, {perspective.near}, "
+            "{perspective.far})");
   EXPECT_EQ(templ("A(0,0,6)", "{solid: cube}").text, "A(0,0,6)");
 }
 
@@ -127,6 +131,39 @@ problems:
 )yaml";
 
 // The seen case: a variant's text states its own values, in every language.
+// An angle the text writes in radians as Processing does (perspective(PI/3, …) for fovy: 60):
+// tied to {field|PI}, which prints the drawn degrees as a multiple of π in the same style.
+TEST(TextLiteralsTest, AnglesWrittenAsMultiplesOfPi) {
+  const char* g = "{perspective: {fovy: 60, aspect: 1, near: 10, far: 100}}";
+  const TemplatedText t = templ("perspective(PI/3, width/height, 10, 100)", g);
+  EXPECT_FALSE(t.error) << *t.error;
+  EXPECT_EQ(t.text,
+            "perspective({perspective.fovy|PI}, width/height, {perspective.near}, "
+            "{perspective.far})");
+  EXPECT_EQ(templ("a field of view of π/3", g).text,
+            "a field of view of {perspective.fovy|\u03c0}");
+  for (const auto& [degrees, pi, shown] :
+       std::vector<std::tuple<int, std::string, std::string>>{{60, "PI", "PI/3"},
+                                                              {90, "PI", "PI/2"},
+                                                              {120, "PI", "2*PI/3"},
+                                                              {180, "PI", "PI"},
+                                                              {-45, "PI", "-PI/4"},
+                                                              {150, "\u03c0", "5\u03c0/6"},
+                                                              {0, "PI", "0"}}) {
+    const YAML::Node drawn = YAML::Load("{perspective: {fovy: " + std::to_string(degrees) + "}}");
+    EXPECT_EQ(fill_text("{perspective.fovy|" + pi + "}", drawn), shown) << degrees;
+  }
+  EXPECT_EQ(templ("rotate 2*PI/3 about z", "{rotate_z: 120}").text, "rotate {rotate_z|PI} about z");
+  // Not an angle of the given, or not a multiple of π on its own: left as written.
+  EXPECT_EQ(templ("HALF_PI and PIXEL and PI/4", g).text, "HALF_PI and PIXEL and PI/4");
+  EXPECT_EQ(templ("PI/3 of a window", "{window: [60, 60]}").text, "PI/3 of a window");
+  // Two angles of that size: which one it states is the instructor's to write.
+  EXPECT_TRUE(templ("PI/2", "{rotate_x: 90, rotate_y: 90}").error);
+  // A placeholder of an angle that is not whole degrees cannot print as a multiple of π.
+  EXPECT_TRUE(placeholder_error("{a|PI}", YAML::Load("{a: 'pi/3'}")));
+  EXPECT_FALSE(placeholder_error("{a|PI}", YAML::Load("{a: 30}")));
+}
+
 TEST(TextLiteralsTest, VariantTextStatesDrawnValues) {
   ProblemSet set = load_problem_set_from_string(kStale, "set.yaml");
   const std::vector<Diagnostic> stale = stale_text_errors(set, false);

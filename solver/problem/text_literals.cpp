@@ -321,6 +321,87 @@ std::string placeholders(const Given& g, const Window& w) {
   return out;
 }
 
+// Fields that hold an angle in degrees (as the default redraw reads them).
+bool angle_key(const std::string& k) {
+  return k == "fovy" || k == "fov" || k == "fovx" || k == "angle" || k.rfind("rotate", 0) == 0;
+}
+
+constexpr const char* kPi = "\u03c0";
+
+// Processing's PI/3 (or π/3, 2*PI/3, PI) at s[i]: the multiple of π (p/q), its symbol, where it
+// ends; a word around it (HALF_PI, PIXEL) is no angle.
+struct Radians {
+  long p = 1, q = 1;
+  std::string symbol;
+  std::size_t end = 0;
+};
+std::optional<Radians> radians_at(const std::string& s, std::size_t i) {
+  if (i > 0 && (ascii_word(s[i - 1]) || s[i - 1] == '.' || s[i - 1] == '*' || s[i - 1] == '/'))
+    return std::nullopt;
+  Radians r;
+  std::size_t j = i;
+  std::string digits;
+  while (j < s.size() && ascii_digit(s[j]) && digits.size() < 4) digits += s[j++];
+  if (!digits.empty()) {
+    if (j < s.size() && s[j] == '*') ++j;
+    r.p = std::stol(digits);
+  }
+  if (at(s, j, "PI")) {
+    r.symbol = "PI";
+    j += 2;
+  } else if (at(s, j, kPi)) {
+    r.symbol = kPi;
+    j += std::strlen(kPi);
+  } else {
+    return std::nullopt;
+  }
+  if (j + 1 < s.size() && s[j] == '/' && ascii_digit(s[j + 1])) {
+    std::string den;
+    for (++j; j < s.size() && ascii_digit(s[j]) && den.size() < 4; ++j) den += s[j];
+    r.q = std::stol(den);
+  }
+  if ((j < s.size() && (ascii_word(s[j]) || s[j] == '.' || s[j] == '/')) || r.p == 0 || r.q == 0)
+    return std::nullopt;
+  r.end = j;
+  return r;
+}
+
+// An angle field written in radians as a multiple of π (perspective(PI/3, …) for fovy: 60) is
+// tied to {field|PI} (or {field|π}) when exactly one angle field holds that many degrees.
+std::optional<std::string> tie_radians(std::string& text, const Given& g, int& tied) {
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] == '{') {  // a placeholder already: left as it is
+      const std::size_t close = text.find('}', i);
+      i = close == std::string::npos ? text.size() : close + 1;
+      continue;
+    }
+    const std::optional<Radians> r = radians_at(text, i);
+    if (!r) {
+      ++i;
+      continue;
+    }
+    const numeric degrees = numeric(180 * r->p, r->q);
+    std::vector<std::size_t> fields;
+    for (std::size_t l = 0; l < g.leaves.size(); ++l)
+      if (angle_key(g.leaves[l].key) && g.leaves[l].value == degrees) fields.push_back(l);
+    if (fields.size() > 1)
+      return "the literal \"" + text.substr(i, r->end - i) +
+             "\" could state any of several angles of the given ({" + g.leaves[fields[0]].path +
+             "} or {" + g.leaves[fields[1]].path + "}): write the placeholder it means instead ({" +
+             g.leaves[fields[0]].path + "|" + r->symbol + "} prints it as a multiple of " +
+             r->symbol + ")";
+    if (fields.size() == 1) {
+      const std::string placeholder = "{" + g.leaves[fields[0]].path + "|" + r->symbol + "}";
+      text.replace(i, r->end - i, placeholder);
+      i += placeholder.size();
+      ++tied;
+      continue;
+    }
+    i = r->end;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 TemplatedText template_literals(const std::string& text, const YAML::Node& given) {
@@ -419,6 +500,7 @@ TemplatedText template_literals(const std::string& text, const YAML::Node& given
     }
     ++out.tied;
   }
+  out.error = tie_radians(out.text, g, out.tied);
   return out;
 }
 

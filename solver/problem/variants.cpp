@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <numeric>
 #include <optional>
 
 #include "solver/input/given_reader.hpp"
@@ -472,11 +473,40 @@ std::optional<std::string> box_text(const YAML::Node& at) {
   return out;
 }
 
+// `degrees` in radians as a multiple of `pi` (PI or π): 60 → PI/3, 120 → 2*PI/3 (2π/3).
+std::string radians_text(long degrees, const std::string& pi) {
+  if (degrees == 0) return "0";
+  const long g = std::gcd(std::abs(degrees), 180L);
+  const long p = degrees / g, q = 180 / g;
+  const std::string times = pi == "PI" ? "*" : "";
+  std::string out = p == 1 ? pi : p == -1 ? "-" + pi : std::to_string(p) + times + pi;
+  return q == 1 ? out : out + "/" + std::to_string(q);
+}
+
 // The value a placeholder names ({eye}, {perspective.fovy}, {points.0}), as students read it:
 // a number as written, a list of numbers as a point (1, 2, 3), a window as [0, 4] × [0, 3];
 // nullopt with `why` otherwise.
 std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given,
                                              std::string& why) {
+  // {field|PI}, {field|π}: a whole number of degrees written as a multiple of π in radians, as
+  // Processing's perspective(PI/3, …) writes a field of view of 60°.
+  for (const char* sym : {"PI", "\u03c0"})
+    if (const std::string suffix = std::string("|") + sym;
+        name.size() > suffix.size() && name.ends_with(suffix)) {
+      const std::optional<std::string> degrees =
+          placeholder_value(name.substr(0, name.size() - suffix.size()), given, why);
+      if (!degrees) return std::nullopt;
+      const std::string& d = *degrees;
+      const bool whole =
+          !d.empty() && d.size() < 10 &&
+          d.find_first_not_of("0123456789", d[0] == '-' ? 1 : 0) == std::string::npos && d != "-";
+      if (!whole) {
+        why =
+            "is not a whole number of degrees, to be written as a multiple of " + std::string(sym);
+        return std::nullopt;
+      }
+      return radians_text(std::stol(d), sym);
+    }
   // Walked by reset() and const look-ups: assigning a node would write through to the given,
   // and cloning it for every placeholder made filling a text cost a copy of the given each.
   YAML::Node at;
