@@ -258,3 +258,31 @@ TEST(Language, NoEnglishWordInTheMathematicsOfAJapaneseOrRussianDerivation) {
 
 }  // namespace
 }  // namespace frustum
+
+namespace frustum {
+namespace {
+
+// Counted words agree with their number: Russian 1 треугольник, 2 треугольника, 5 треугольников
+// (11–14 take the many form; 21 the one form), in Unicode and in LaTeX; English 1 triangle.
+TEST(Language, RussianCountsAgreeWithTheirNumbers) {
+  const MathText m = counts({{1, "triangles"},
+                             {2, "front"},
+                             {5, "hidden"},
+                             {21, "back"},
+                             {12, "visible"},
+                             {3, "window triangles"},
+                             {0, "back faces culled"}});
+  EXPECT_EQ(tr(m, Lang::Ru).unicode,
+            "1 треугольник, 2 лицевые, 5 невидимых, 21 обратная, 12 видимых, 3 треугольника в "
+            "окне, 0 нелицевых граней отброшено");
+  EXPECT_NE(tr(m, Lang::Ru).latex.find("2\\,\\text{лицевые}"), std::string::npos)
+      << tr(m, Lang::Ru).latex;
+  EXPECT_EQ(tr(m, Lang::En).unicode,
+            "1 triangle, 2 front, 5 hidden, 21 back, 12 visible, 3 window triangles, 0 back faces "
+            "culled");
+  EXPECT_EQ(tr(counts({{1, "back faces culled"}, {11, "triangles"}}), Lang::En).unicode,
+            "1 back face culled, 11 triangles");
+}
+
+}  // namespace
+}  // namespace frustum

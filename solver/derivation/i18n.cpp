@@ -211,9 +211,64 @@ std::string tr(std::string_view english, Lang lang) {
   return out;
 }
 
+namespace {
+
+// "N word", the word agreeing with N — English 1 triangle, 2 triangles; Russian 1 треугольник,
+// 2 треугольника, 5 треугольников: each counted word of `m` right after a number and a space
+// (LaTeX: N\,\text{word}).
+void agree_counts(MathText& m, Lang lang) {
+  const auto form = [lang](const CountForms& c, const std::string& digits) {
+    if (lang == Lang::En) return digits == "1" ? c.en_one : c.en;
+    const long n = std::stol(digits.substr(std::max<std::size_t>(digits.size(), 2) - 2));
+    const long last = n % 10, tens = n % 100;
+    if (tens >= 11 && tens <= 14) return c.many;
+    return last == 1 ? c.one : last >= 2 && last <= 4 ? c.few : c.many;
+  };
+  const auto digits_before = [](const std::string& s, std::size_t at) {
+    std::size_t i = at;
+    while (i > 0 && s[i - 1] >= '0' && s[i - 1] <= '9') --i;
+    return s.substr(i, at - i);
+  };
+  // Longer words first: "0 back faces culled" is one phrase, not "0 back".
+  std::vector<std::string> words = m.words;
+  std::stable_sort(words.begin(), words.end(),
+                   [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  for (const std::string& w : words)
+    for (const CountForms& c : count_forms()) {
+      if (c.en != w) continue;
+      const std::string unicode_word = " " + w, latex_word = "\\,\\text{" + latex_text(w) + "}";
+      for (std::size_t at = 0; (at = m.unicode.find(unicode_word, at)) != std::string::npos;) {
+        const std::string n = digits_before(m.unicode, at);
+        const std::size_t end = at + unicode_word.size();
+        const bool whole = end >= m.unicode.size() || !is_word(m.unicode[end]);
+        if (n.empty() || !whole) {
+          at = end;
+          continue;
+        }
+        const std::string to = " " + std::string(form(c, n));
+        m.unicode.replace(at, unicode_word.size(), to);
+        at += to.size();
+      }
+      for (std::size_t at = 0; (at = m.latex.find(latex_word, at)) != std::string::npos;) {
+        const std::string n = digits_before(m.latex, at);
+        if (n.empty()) {
+          at += latex_word.size();
+          continue;
+        }
+        const std::string to = "\\,\\text{" + latex_text(form(c, n)) + "}";
+        m.latex.replace(at, latex_word.size(), to);
+        at += to.size();
+      }
+    }
+}
+
+}  // namespace
+
 MathText tr(const MathText& m, Lang lang) {
-  if (lang == Lang::En || m.words.empty()) return m;
+  if (m.words.empty()) return m;
   MathText out = m;
+  if (lang != Lang::Ja) agree_counts(out, lang);
+  if (lang == Lang::En) return out;
   // Longer words first: "window triangles" is one phrase, not "window" and a translated
   // "triangles".
   std::vector<std::string> words = m.words;

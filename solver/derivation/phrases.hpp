@@ -18,4 +18,12 @@ std::span<const Phrase> step_phrases();     // step titles and words in formulas
 std::span<const Phrase> note_phrases();     // the notes under steps, conventions, warnings
 std::span<const Phrase> grading_phrases();  // the grader's interface, verdicts and feedback
 
+// A word counted by a number in a formula ("3 front" → "3 лицевые"): its English singular (for
+// 1), and the three forms Russian agreement takes: one (1, 21, 31 …), few (2–4, 22–24 …) and
+// many (0, 5–20, 25–30 …).
+struct CountForms {
+  std::string_view en, en_one, one, few, many;
+};
+std::span<const CountForms> count_forms();
+
 }  // namespace frustum

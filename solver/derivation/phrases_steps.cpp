@@ -260,8 +260,25 @@ constexpr Phrase kPhrases[] = {
     {"The right-handed reading", "右手系で読むと", "Прочтение в правой системе"},
 };
 
+// Counted words: faces (грань, feminine), edges (ребро, neuter), triangles.
+constexpr CountForms kCounts[] = {
+    {"triangles", "triangle", "треугольник", "треугольника", "треугольников"},
+    {"window triangles", "window triangle", "треугольник в окне", "треугольника в окне",
+     "треугольников в окне"},
+    {"clipped", "clipped", "отсечён", "отсечены", "отсечено"},
+    {"back faces culled", "back face culled", "нелицевая грань отброшена",
+     "нелицевые грани отброшены", "нелицевых граней отброшено"},
+    {"front", "front", "лицевая", "лицевые", "лицевых"},
+    {"back", "back", "обратная", "обратные", "обратных"},
+    {"visible", "visible", "видимое", "видимых", "видимых"},
+    {"silhouette", "silhouette", "контурное", "контурных", "контурных"},
+    {"hidden", "hidden", "невидимое", "невидимых", "невидимых"},
+};
+
 }  // namespace
 
 std::span<const Phrase> step_phrases() { return kPhrases; }
+
+std::span<const CountForms> count_forms() { return kCounts; }
 
 }  // namespace frustum
