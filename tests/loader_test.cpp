@@ -191,3 +191,24 @@ TEST(Loader, HostileExpressionsInGivenAreRefusedQuickly) {
 
 }  // namespace
 }  // namespace frustum
+
+namespace frustum {
+namespace {
+
+// A problem without `given` (or with `given:` empty) is a located error that says what the kind
+// reads — it was "internal error: invalid node", also with `vary: default`.
+TEST(Loader, AProblemWithoutGivenSaysWhatTheKindReads) {
+  for (const char* tail : {"", "    vary: default\n", "    given:\n"}) {
+    const ProblemSet set = load_problem_set_from_string(
+        std::string("problems:\n  - id: p\n    kind: normal\n") + tail, "g.yaml");
+    const std::vector<Diagnostic> errors = set.all_errors();
+    ASSERT_EQ(errors.size(), 1u) << tail;
+    EXPECT_EQ(errors[0].format(),
+              "g.yaml:2:5: problems[0].given: missing: a problem gives its data under `given:` "
+              "(normal reads points, A, B, C, cross)")
+        << tail;
+  }
+}
+
+}  // namespace
+}  // namespace frustum

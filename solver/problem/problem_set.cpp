@@ -162,6 +162,13 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
               "'" + v + "' is not one of normal, hard" + did_you_mean(v, {"normal", "hard"}));
     spec.hard = v == "hard";
   }
+  if (const YAML::Node given = p["given"]; !given.IsDefined() || given.IsNull()) {
+    std::string fields;
+    for (const std::string& f : spec.info->given_fields) fields += (fields.empty() ? "" : ", ") + f;
+    fail_at(p, file, spec.field + ".given",
+            "missing: a problem gives its data under `given:` (" + spec.kind + " reads " + fields +
+                ")");
+  }
   spec.given_node = p["given"];
   GivenReader reader(p["given"], file, spec.field + ".given", spec.info->given_fields);
   reader.set_text_lang(set.lang);
