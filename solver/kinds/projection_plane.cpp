@@ -71,7 +71,9 @@ struct ProjectionPlane {
                       : g.conventions.api == Api::DirectX
                           ? "DirectX's eye space looks down +z."
                           : "The course's left-handed eye space looks down +z, so the plane is "
-                            "at positive z.");
+                            "at positive z. Read right-handed (looking down −z), the same "
+                            "picture has the plane at z = −s and every point's z negated: x′ and "
+                            "y′ are the same in both readings.");
       steps->yields("plane_z");
     }
     const int z_sign = exact_sign(g.point(2));
