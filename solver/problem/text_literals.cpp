@@ -490,13 +490,15 @@ TemplatedText template_literals(const std::string& text, const YAML::Node& given
     }
     tie[k] = m.candidates[seen[m.candidates]++];
   }
-  // Each number of a tied literal becomes its field's placeholder, right to left.
+  // Each number of a tied literal becomes its field's placeholder, right to left; in a text that
+  // writes its minus signs as U+2212, one that prints them so ({A.0|−}).
+  const std::string style = text.find(kMinus) != std::string::npos ? "|" + std::string(kMinus) : "";
   for (auto it = tie.rbegin(); it != tie.rend(); ++it) {
     const Mention& m = mentions[it->first];
     for (std::size_t j = m.last + 1; j-- > m.first;) {
       const Token& token = t[j];
       out.text.replace(token.begin, token.end - token.begin,
-                       "{" + g.leaves[it->second[j - m.first]].path + "}");
+                       "{" + g.leaves[it->second[j - m.first]].path + style + "}");
     }
     ++out.tied;
   }

@@ -473,6 +473,17 @@ std::optional<std::string> box_text(const YAML::Node& at) {
   return out;
 }
 
+// A value's minus signs (at its start, or after "(" or ", " in a point) as U+2212, for a text
+// whose author writes them so: a variant's values then read like the rest of its text.
+std::string typographic_minus(const std::string& v) {
+  std::string out;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const bool starts = k == 0 || v[k - 1] == '(' || (k >= 2 && v.compare(k - 2, 2, ", ") == 0);
+    out += v[k] == '-' && starts ? std::string("\u2212") : std::string(1, v[k]);
+  }
+  return out;
+}
+
 // `degrees` in radians as a multiple of `pi` (PI or π): 60 → PI/3, 120 → 2*PI/3 (2π/3).
 std::string radians_text(long degrees, const std::string& pi) {
   if (degrees == 0) return "0";
@@ -488,6 +499,13 @@ std::string radians_text(long degrees, const std::string& pi) {
 // nullopt with `why` otherwise.
 std::optional<std::string> placeholder_value(const std::string& name, const YAML::Node& given,
                                              std::string& why) {
+  // {field|−}: the value with its minus signs as U+2212 (a literal its author wrote so).
+  if (const std::string minus = "|\u2212"; name.size() > minus.size() && name.ends_with(minus)) {
+    std::optional<std::string> v =
+        placeholder_value(name.substr(0, name.size() - minus.size()), given, why);
+    if (v) v = typographic_minus(*v);
+    return v;
+  }
   // {field|PI}, {field|π}: a whole number of degrees written as a multiple of π in radians, as
   // Processing's perspective(PI/3, …) writes a field of view of 60°.
   for (const char* sym : {"PI", "\u03c0"})
@@ -567,9 +585,11 @@ void for_each_placeholder(const std::string& text, F f) {
 std::string fill_text(const std::string& text, const YAML::Node& given) {
   std::string out;
   std::size_t i = 0;
+  const bool unicode_minus = text.find("\u2212") != std::string::npos;
   for_each_placeholder(text, [&](std::size_t open, std::size_t close, const std::string& name) {
     std::string why;
-    const std::optional<std::string> v = placeholder_value(name, given, why);
+    std::optional<std::string> v = placeholder_value(name, given, why);
+    if (v && unicode_minus) v = typographic_minus(*v);
     out += text.substr(i, open - i) + (v ? *v : text.substr(open, close - open + 1));
     i = close + 1;
   });
