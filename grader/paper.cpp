@@ -43,11 +43,8 @@ std::string points_text(double points, Lang lang) {
     const long n = std::lround(points);
     const char* form = "балла";
     if (static_cast<double>(n) == points) {
-      const long last = n % 10, tens = n % 100;
-      form = tens >= 11 && tens <= 14 ? "баллов"
-             : last == 1              ? "балл"
-             : last >= 2 && last <= 4 ? "балла"
-                                      : "баллов";
+      const RuForm f = russian_form(n);
+      form = f == RuForm::One ? "балл" : f == RuForm::Few ? "балла" : "баллов";
     }
     return fmt::format("{:g} {}", points, form);
   }

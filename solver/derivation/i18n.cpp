@@ -1,6 +1,7 @@
 #include "solver/derivation/i18n.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -213,27 +214,31 @@ std::string tr(std::string_view english, Lang lang) {
 
 namespace {
 
+// Longer words first: "0 back faces culled" is one phrase, not "0 back"; "window triangles" is
+// not "window" and a translated "triangles".
+std::vector<std::string> longest_first(const MathText& m) {
+  std::vector<std::string> words = m.words;
+  std::stable_sort(words.begin(), words.end(),
+                   [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+  return words;
+}
+
 // "N word", the word agreeing with N — English 1 triangle, 2 triangles; Russian 1 треугольник,
 // 2 треугольника, 5 треугольников: each counted word of `m` right after a number and a space
 // (LaTeX: N\,\text{word}).
 void agree_counts(MathText& m, Lang lang) {
   const auto form = [lang](const CountForms& c, const std::string& digits) {
     if (lang == Lang::En) return digits == "1" ? c.en_one : c.en;
-    const long n = std::stol(digits.substr(std::max<std::size_t>(digits.size(), 2) - 2));
-    const long last = n % 10, tens = n % 100;
-    if (tens >= 11 && tens <= 14) return c.many;
-    return last == 1 ? c.one : last >= 2 && last <= 4 ? c.few : c.many;
+    const RuForm f =
+        russian_form(std::stol(digits.substr(std::max<std::size_t>(digits.size(), 2) - 2)));
+    return f == RuForm::One ? c.one : f == RuForm::Few ? c.few : c.many;
   };
   const auto digits_before = [](const std::string& s, std::size_t at) {
     std::size_t i = at;
     while (i > 0 && s[i - 1] >= '0' && s[i - 1] <= '9') --i;
     return s.substr(i, at - i);
   };
-  // Longer words first: "0 back faces culled" is one phrase, not "0 back".
-  std::vector<std::string> words = m.words;
-  std::stable_sort(words.begin(), words.end(),
-                   [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
-  for (const std::string& w : words)
+  for (const std::string& w : longest_first(m))
     for (const CountForms& c : count_forms()) {
       if (c.en != w) continue;
       const std::string unicode_word = " " + w, latex_word = "\\,\\text{" + latex_text(w) + "}";
@@ -264,17 +269,18 @@ void agree_counts(MathText& m, Lang lang) {
 
 }  // namespace
 
+RuForm russian_form(long n) {
+  const long last = std::abs(n) % 10, tens = std::abs(n) % 100;
+  if (tens >= 11 && tens <= 14) return RuForm::Many;
+  return last == 1 ? RuForm::One : last >= 2 && last <= 4 ? RuForm::Few : RuForm::Many;
+}
+
 MathText tr(const MathText& m, Lang lang) {
   if (m.words.empty()) return m;
   MathText out = m;
   if (lang != Lang::Ja) agree_counts(out, lang);
   if (lang == Lang::En) return out;
-  // Longer words first: "window triangles" is one phrase, not "window" and a translated
-  // "triangles".
-  std::vector<std::string> words = m.words;
-  std::stable_sort(words.begin(), words.end(),
-                   [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
-  for (const std::string& w : words) {
+  for (const std::string& w : longest_first(m)) {
     const std::string t = tr(w, lang);
     if (t == w) continue;
     for (std::size_t at = 0; (at = out.unicode.find(w, at)) != std::string::npos;) {

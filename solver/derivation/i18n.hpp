@@ -26,4 +26,9 @@ std::string tr(std::string_view english, Lang lang);
 // formulas themselves unchanged.
 MathText tr(const MathText& m, Lang lang);
 
+// Which of its three forms a Russian word takes after the whole number n: one (1, 21, 31 …),
+// few (2–4, 22–24 …) or many (0, 5–20, 25–30 …; 11–14 always).
+enum class RuForm { One, Few, Many };
+RuForm russian_form(long n);
+
 }  // namespace frustum
