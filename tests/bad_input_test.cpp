@@ -213,10 +213,11 @@ TEST(BadInput, AnswerFilesGiveTheirMessageAndTheRestGrades) {
   }
 }
 
-TEST(BadInput, YamlEscapesThatYamlCppDecodesToStrayBytesStillMakeValidJson) {
-  // yaml-cpp decodes the YAML escapes \N (NEL) and \_ (no-break space) to the single bytes
-  // 0x85 and 0xA0, not UTF-8; a message quoting such a key once aborted `grade --format json`
-  // (found by fuzz_grade with a fixed seed). The JSON now carries U+FFFD there.
+TEST(BadInput, YamlEscapesForNelAndNoBreakSpaceAreCharactersInValidJson) {
+  // The YAML escapes \N (NEL) and \_ (no-break space) are the characters U+0085 and U+00A0.
+  // yaml-cpp once decoded them to the single bytes 0x85 and 0xA0, not UTF-8, and a message
+  // quoting such a key aborted `grade --format json` (found by fuzz_grade with a fixed seed);
+  // libyaml decodes them to UTF-8, and the JSON carries the characters.
   const ProblemSet set =
       load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
   const GradeReport r =
@@ -225,11 +226,11 @@ TEST(BadInput, YamlEscapesThatYamlCppDecodesToStrayBytesStillMakeValidJson) {
                      "\"nb\\_sp\": 2\n",
                      "nel.yaml"));
   ASSERT_EQ(r.errors.size(), 2u) << listing(r.errors);
-  EXPECT_EQ(r.errors[0].field, "bad\x85key");  // the stray byte as yaml-cpp gives it
+  EXPECT_EQ(r.errors[0].field, "bad\u0085key");
   const std::string text = json_text(render_grade_json(r));
   const nlohmann::json back = nlohmann::json::parse(text);  // valid UTF-8 all through
-  EXPECT_NE(back["errors"][0].get<std::string>().find("bad\uFFFDkey"), std::string::npos) << text;
-  EXPECT_NE(text.find("nb\uFFFDsp"), std::string::npos) << text;
+  EXPECT_NE(back["errors"][0].get<std::string>().find("bad\u0085key"), std::string::npos) << text;
+  EXPECT_NE(back["errors"][1].get<std::string>().find("nb\u00A0sp"), std::string::npos) << text;
   // The answers that could be read are still graded.
   EXPECT_EQ(find_answer(r, "seed001-pixel-z.z")->verdict, Verdict::Correct);
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -15,21 +16,40 @@
 namespace frustum {
 namespace {
 
-// Type, tag, style, mark and text of every node, recursively ("" when alike, else where not).
-std::string difference(const YAML::Node& a, const YAML::Node& b, const std::string& at = "root") {
+// yaml-cpp's column (bytes from the line's start) in characters, as libyaml counts it.
+int character_column(const std::string& text, const YAML::Mark& m) {
+  if (m.line < 0 || m.column < 0) return m.column;  // a node without a place (an empty document)
+  std::size_t start = 0;
+  for (int line = 0; line < m.line && start < text.size(); ++line)
+    start = std::min(text.size(), text.find('\n', start) + 1);
+  int column = 0;
+  for (std::size_t i = start; i < std::min(text.size(), start + static_cast<std::size_t>(m.column));
+       ++i)
+    if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) ++column;
+  return column;
+}
+
+// Type, tag, style, mark and text of every node, recursively ("" when alike, else where not),
+// between yaml-cpp's YAML::Load (a) and parse_yaml (b), which reads with libyaml. Marks count
+// characters in b (yaml-cpp counts bytes), and an empty value (a null that is not written) is
+// marked where it would start, after its key or dash, not at the next token as yaml-cpp marks
+// it: never on a later line.
+std::string difference(const std::string& text, const YAML::Node& a, const YAML::Node& b,
+                       const std::string& at = "root") {
   if (a.Type() != b.Type() || a.Tag() != b.Tag() || a.Style() != b.Style())
     return at + ": type, tag or style";
-  if (a.Mark().line != b.Mark().line || a.Mark().column != b.Mark().column ||
-      a.Mark().pos != b.Mark().pos)
+  const bool unwritten = a.IsNull() && b.Mark().line <= a.Mark().line;
+  if (!unwritten &&
+      (a.Mark().line != b.Mark().line || character_column(text, a.Mark()) != b.Mark().column))
     return at + ": mark";
   if (a.IsScalar()) return a.Scalar() == b.Scalar() ? "" : at + ": text";
   if (a.size() != b.size()) return at + ": size";
   std::size_t k = 0;
   for (auto i = a.begin(), j = b.begin(); i != a.end(); ++i, ++j, ++k) {
     const std::string where = at + "." + std::to_string(k);
-    const std::string d = a.IsSequence() ? difference(*i, *j, where)
-                                         : difference(i->first, j->first, where + ".key") +
-                                               difference(i->second, j->second, where);
+    const std::string d = a.IsSequence() ? difference(text, *i, *j, where)
+                                         : difference(text, i->first, j->first, where + ".key") +
+                                               difference(text, i->second, j->second, where);
     if (!d.empty()) return d;
   }
   return "";
@@ -45,7 +65,7 @@ TEST(YamlDocument, OnePassBuildsTheTreeYamlLoadBuildsForEveryShippedFile) {
       const YamlDocument doc = parse_yaml(text, e.path().string());
       if (doc.error || doc.invalid_utf8) continue;
       ++compared;
-      EXPECT_EQ(difference(YAML::Load(text), doc.root), "") << e.path();
+      EXPECT_EQ(difference(text, YAML::Load(text), doc.root), "") << e.path();
     }
   EXPECT_GT(compared, 100u);
 }
@@ -57,11 +77,54 @@ TEST(YamlDocument, AnchorsAliasesAndStylesAsYamlLoadReadsThem) {
         "# nothing\n"}) {
     const YamlDocument doc = parse_yaml(text, "t.yaml");
     ASSERT_FALSE(doc.error) << text;
-    EXPECT_EQ(difference(YAML::Load(text), doc.root), "") << text;
+    EXPECT_EQ(difference(text, YAML::Load(text), doc.root), "") << text;
+  }
+  // What students and instructors write: text in any script, empty values, comments, block
+  // and flow styles mixed, folded and literal text, quoted keys, an anchor named again.
+  for (const std::string text :
+       {"student: Иванов\nanswers:\n  p1: {normal: [1/√3, −1/√3, 1/√3], z: 8}  # 注\n",
+        "a:\n  - [1, 2]\n  - x:\n    y: 2\n  -\n  - ~\n",
+        "t: >\n  folded\n  text\n\nu: |-\n  kept\n", "\"q k\": 'it''s'\n? complex\n: value\n",
+        "a: &x 1\nb: &x 2\nc: *x\n", "p: plain text\n  over two lines\nq: \"quoted\n  over two\"\n",
+        "e: 🙂 ✓\nf: Zバッファ\n", "- a\n- - b\n  - c\n-   d: 1\n    e: 2\n",
+        "x: !!int 3\ny: !local v\nz: !<verbatim> w\n"}) {
+    const YamlDocument doc = parse_yaml(text, "t.yaml");
+    ASSERT_FALSE(doc.error) << text << doc.error->format();
+    EXPECT_EQ(difference(text, YAML::Load(text), doc.root), "") << text;
   }
   // The alias is the anchored node itself (yaml-cpp shares it), as Load gives.
   const YamlDocument doc = parse_yaml("a: &x [1, 2]\nb: *x\n", "t.yaml");
   EXPECT_TRUE(doc.root["a"].is(doc.root["b"]));
+}
+
+TEST(YamlDocument, ControlCharactersAreReadAsReplacementCharacters) {
+  // YAML text may not hold control characters other than tab and line breaks: a form feed or an
+  // escape pasted into an answer is replaced (and named), and the rest of the file is read.
+  const YamlDocument doc = parse_yaml("student: s1\nz: 8\x0c\nw: \x1b[1m\n", "t.yaml");
+  ASSERT_FALSE(doc.error);
+  ASSERT_TRUE(doc.invalid_utf8);
+  EXPECT_EQ(doc.invalid_utf8->format(),
+            "t.yaml:2:5: character U+000C (a control character) is not read as text; it and any "
+            "like it are read as U+FFFD");
+  EXPECT_EQ(doc.root["student"].Scalar(), "s1");
+  EXPECT_EQ(doc.root["z"].Scalar(), "8\uFFFD");
+  EXPECT_EQ(doc.root["w"].Scalar(), "\uFFFD[1m");
+  // NEL and the Unicode line and paragraph separators would end the line for the YAML 1.1
+  // reader although no editor shows a break: the value stays one value, the character replaced.
+  const YamlDocument nel = parse_yaml("a: x\u0085y\nb: p\u2028q\u2029r\n", "t.yaml");
+  ASSERT_FALSE(nel.error) << nel.error->format();
+  ASSERT_TRUE(nel.invalid_utf8);
+  EXPECT_NE(
+      nel.invalid_utf8->format().find("t.yaml:1:5: character U+0085 (an invisible line break)"),
+      std::string::npos);
+  EXPECT_EQ(nel.root["a"].Scalar(), "x\uFFFDy");
+  EXPECT_EQ(nel.root["b"].Scalar(), "p\uFFFDq\uFFFDr");
+  // Tab, CR LF and the no-break space are text.
+  const YamlDocument kept = parse_yaml("a: \"x\ty\"\r\nb: c\u00A0d\n", "t.yaml");
+  ASSERT_FALSE(kept.error) << kept.error->format();
+  EXPECT_FALSE(kept.invalid_utf8);
+  EXPECT_EQ(kept.root["a"].Scalar(), "x\ty");
+  EXPECT_EQ(kept.root["b"].Scalar(), "c\u00A0d");
 }
 
 TEST(YamlDocument, StrictChecksRunWhileBuilding) {
@@ -75,7 +138,8 @@ TEST(YamlDocument, StrictChecksRunWhileBuilding) {
   EXPECT_EQ(error("a: 1\na: 2\nb: [\n"),
             "t.yaml:2:1: duplicate key 'a' (first on line 1): a mapping names each key once");
   EXPECT_EQ(error("b: [\na: 1\na: 2\n"),
-            "t.yaml:3:2: invalid YAML: end of sequence flow not found");
+            "t.yaml:3:2: invalid YAML: did not find expected \',\' or \']\' (while parsing a flow "
+            "sequence that starts at line 1, column 4)");
   EXPECT_EQ(error("a: 1\n---\nb: 2\n"),
             "t.yaml:2:1: a second YAML document (after '---'): a file holds one document");
   // Ten aliases of ten aliases … of ten values: refused at the bound, before it is built.

@@ -3,8 +3,8 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/exceptions.h>
 #include <yaml-cpp/node/detail/memory.h>
 #include <yaml-cpp/node/detail/node.h>
 
@@ -14,9 +14,10 @@
 #include <map>
 #include <memory>
 #include <set>
-#include <sstream>
 #include <utility>
 #include <vector>
+
+#include "solver/input/yaml_events.hpp"
 
 namespace frustum {
 
@@ -44,15 +45,47 @@ std::size_t utf8_length(const std::string& text, std::size_t i) {
   return size;
 }
 
-// The text with every byte that does not start a valid character replaced by U+FFFD.
+// The code point of the valid n-byte character at text[i].
+char32_t code_point(const std::string& text, std::size_t i, std::size_t n) {
+  const auto b = [&](std::size_t k) {
+    return static_cast<char32_t>(static_cast<unsigned char>(text[k]));
+  };
+  if (n == 1) return b(i);
+  char32_t c = b(i) & (0xFF >> (n + 1));
+  for (std::size_t k = 1; k < n; ++k) c = (c << 6) | (b(i + k) & 0x3F);
+  return c;
+}
+
+// NEL, LINE SEPARATOR and PARAGRAPH SEPARATOR: line breaks to the YAML 1.1 reader (libyaml),
+// ordinary characters to YAML 1.2 and invisible in most editors (a NEL is what a Windows "…"
+// becomes when its file is converted as Latin-1), so a value holding one would be cut in two.
+bool invisible_break(char32_t c) { return c == 0x85 || c == 0x2028 || c == 0x2029; }
+
+// A character read as text: YAML allows it (YAML 1.1 §5.1, as libyaml checks it: no control
+// character other than tab, line feed and carriage return, no U+FFFE or U+FFFF) and it is not
+// an invisible line break.
+bool yaml_character(char32_t c) {
+  return !invisible_break(c) && (c == 0x09 || c == 0x0A || c == 0x0D || (c >= 0x20 && c <= 0x7E) ||
+                                 (c >= 0xA0 && c <= 0xD7FF) || (c >= 0xE000 && c <= 0xFFFD) ||
+                                 (c >= 0x10000 && c <= 0x10FFFF));
+}
+
+// Length of the character at text[i] when it is valid UTF-8 that YAML allows, else 0.
+std::size_t text_length(const std::string& text, std::size_t i) {
+  const std::size_t n = utf8_length(text, i);
+  return n > 0 && yaml_character(code_point(text, i, n)) ? n : 0;
+}
+
+// The text with every byte that does not start a valid character, and every character not read
+// as text (yaml_character), replaced by U+FFFD.
 std::string valid_utf8(const std::string& text) {
   std::string out;
   out.reserve(text.size() + 16);
   for (std::size_t k = 0; k < text.size();) {
     const std::size_t n = utf8_length(text, k);
-    if (n == 0) {
+    if (n == 0 || !yaml_character(code_point(text, k, n))) {
       out += "\xEF\xBF\xBD";
-      ++k;
+      k += n == 0 ? 1 : n;
     } else {
       out.append(text, k, n);
       k += n;
@@ -61,11 +94,13 @@ std::string valid_utf8(const std::string& text) {
   return out;
 }
 
-// Replaces every byte that does not start a valid character by U+FFFD, so that everything
-// read from the document is text (JSON output, terminals); names the first one.
+// Replaces every byte that does not start a valid character, every control character YAML does
+// not allow (a form feed, an escape) and every invisible line break by U+FFFD, so that everything
+// read from the document is text (JSON output, terminals) and the rest of the file is still read;
+// names the first one.
 std::optional<Diagnostic> repair_utf8(std::string& text, const std::string& name) {
   std::size_t i = 0;
-  while (i < text.size() && utf8_length(text, i) > 0) i += utf8_length(text, i);
+  while (i < text.size() && text_length(text, i) > 0) i += text_length(text, i);
   if (i == text.size()) return std::nullopt;
   int line = 1, column = 1;
   for (std::size_t k = 0; k < i; k += utf8_length(text, k)) {
@@ -74,12 +109,22 @@ std::optional<Diagnostic> repair_utf8(std::string& text, const std::string& name
     else
       ++column;
   }
-  char hex[8];
-  std::snprintf(hex, sizeof hex, "0x%02X",
-                static_cast<unsigned>(static_cast<unsigned char>(text[i])));
-  Diagnostic d{SourceLocation{name, line, column}, "",
-               std::string("invalid UTF-8: byte ") + hex +
-                   " is not text; it and any like it are read as U+FFFD (save the file as UTF-8)"};
+  std::string message;
+  if (const std::size_t n = utf8_length(text, i); n > 0) {
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "U+%04X", static_cast<unsigned>(code_point(text, i, n)));
+    message = std::string("character ") + hex +
+              (invisible_break(code_point(text, i, n)) ? " (an invisible line break)"
+                                                       : " (a control character)") +
+              " is not read as text; it and any like it are read as U+FFFD";
+  } else {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X",
+                  static_cast<unsigned>(static_cast<unsigned char>(text[i])));
+    message = std::string("invalid UTF-8: byte ") + hex +
+              " is not text; it and any like it are read as U+FFFD (save the file as UTF-8)";
+  }
+  Diagnostic d{SourceLocation{name, line, column}, "", message};
   text = valid_utf8(text);
   return d;
 }
@@ -136,10 +181,11 @@ struct Refusal {
 struct Taken {};
 
 // The one pass over the parser's events: builds the document's nodes as YAML::Load does
-// (yaml-cpp's NodeBuilder, with the same marks, tags and styles) and, before each node is
-// built, counts the nodes with aliases expanded and checks that no mapping names a key twice.
-// Refusing while parsing keeps the bound on memory (a document of millions of nodes stops at
-// the limit) without scanning the text a second time: the scan is most of yaml-cpp's cost.
+// (yaml-cpp's NodeBuilder, with the same tags and styles; marks count characters) and, before each
+// node is built, counts the nodes with aliases expanded and checks that no mapping names a key
+// twice. Refusing while parsing keeps the bound on memory (a document of millions of nodes stops at
+// the limit) without scanning the text a second time. The events come from libyaml
+// (read_first_document), reported as yaml-cpp's own parser reports them.
 // Nodes are made through yaml-cpp's installed detail API (memory_holder, detail::node); the
 // finished root becomes a YAML::Node through a sequence iterator, the public way to wrap one.
 //
@@ -342,51 +388,19 @@ class StrictBuilder : public YAML::EventHandler {
   std::vector<Anchored> anchors_seen_;  // by anchor − 1 (without build)
 };
 
-// Runs the first document through `builder`; then looks for a second document, which is the
-// error returned. False in `any` when there was no document. Throws Refusal, or yaml-cpp's
-// exception for invalid YAML.
+// Runs the first document through `builder`; a second document is the error returned. False
+// in `any` when there was no document. Throws Refusal, or yaml-cpp's exceptions for invalid
+// YAML (read_first_document).
 std::optional<Diagnostic> run_checked(const std::string& text, const std::string& name,
                                       StrictBuilder& builder, bool& any) {
-  std::istringstream in(text);
-  YAML::Parser parser(in);
-  any = parser.HandleNextDocument(builder);
-  if (!any) return std::nullopt;
-  // A second document: where it starts is where the first one's `---` or `...` ends.
-  struct FirstEvent : YAML::EventHandler {
-    std::optional<YAML::Mark> mark;
-    void note(const YAML::Mark& m) {
-      if (!mark) mark = m;
-    }
-    void OnDocumentStart(const YAML::Mark& m) override { note(m); }
-    void OnDocumentEnd() override {}
-    void OnNull(const YAML::Mark& m, YAML::anchor_t) override { note(m); }
-    void OnAlias(const YAML::Mark& m, YAML::anchor_t) override { note(m); }
-    void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t,
-                  const std::string&) override {
-      note(m);
-    }
-    void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t,
-                         YAML::EmitterStyle::value) override {
-      note(m);
-    }
-    void OnSequenceEnd() override {}
-    void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t,
-                    YAML::EmitterStyle::value) override {
-      note(m);
-    }
-    void OnMapEnd() override {}
-  } second;
-  try {
-    if (parser.HandleNextDocument(second) && second.mark) {
-      const YAML::Mark& m = *second.mark;
-      return Diagnostic{
-          SourceLocation{name, m.line >= 0 ? m.line + 1 : 0, m.line >= 0 ? m.column + 1 : 0}, "",
-          "a second YAML document (after '---'): a file holds one document"};
-    }
-  } catch (const std::exception&) {
-    // Text after the first document that is not YAML: only the first document is read.
-  }
-  return std::nullopt;
+  const FirstDocument read = read_first_document(text, builder);
+  any = read.any;
+  if (!read.second) return std::nullopt;
+  // Where the second document starts is where the first one's `---` or `...` ends.
+  const YAML::Mark& m = *read.second;
+  return Diagnostic{
+      SourceLocation{name, m.line >= 0 ? m.line + 1 : 0, m.line >= 0 ? m.column + 1 : 0}, "",
+      "a second YAML document (after '---'): a file holds one document"};
 }
 
 // Parses the first document into `root` and checks it in one pass (StrictBuilder); a second
@@ -420,10 +434,6 @@ YamlDocument parse_yaml(const std::string& text, const std::string& name) {
                                           r.mark.line >= 0 ? r.mark.column + 1 : 0},
                            "", r.message};
     return doc;
-  } catch (const YAML::DeepRecursion& e) {
-    doc.error = Diagnostic{
-        SourceLocation{name, e.mark.line + 1, e.mark.column + 1}, "",
-        "invalid YAML: nested too deeply (the limit is " + std::to_string(e.depth()) + " levels)"};
   } catch (const YAML::ParserException& e) {
     doc.error =
         Diagnostic{SourceLocation{name, e.mark.line + 1, e.mark.column + 1}, "",
