@@ -61,22 +61,37 @@ std::string markdown_escape(std::string_view text) {
   // At the start of a line these would make a heading, a list or a quote.
   if (!text.empty() && std::string_view("#-+>").find(text[0]) != std::string_view::npos)
     out += '\\';
+  out.reserve(out.size() + text.size() + text.size() / 8);
   for (const char c : text) {
     const unsigned char u = static_cast<unsigned char>(c);
-    if (c == '\n' || c == '\r' || c == '\t')
-      out += ' ';
-    else if (u < 0x20 || u == 0x7F)
-      continue;
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '&')
-      out += "&amp;";
-    else if (std::string_view("\\`*_[]|").find(c) != std::string_view::npos)
-      out += std::string("\\") + c;
-    else
-      out += c;
+    switch (c) {
+      case '\n':
+      case '\r':
+      case '\t':
+        out += ' ';
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '\\':
+      case '`':
+      case '*':
+      case '_':
+      case '[':
+      case ']':
+      case '|':
+        out += '\\';
+        out += c;
+        break;
+      default:
+        if (u >= 0x20 && u != 0x7F) out += c;  // other control characters are dropped
+    }
   }
   return out;
 }

@@ -100,7 +100,16 @@ std::string valid_utf8(const std::string& text) {
 // names the first one.
 std::optional<Diagnostic> repair_utf8(std::string& text, const std::string& name) {
   std::size_t i = 0;
-  while (i < text.size() && text_length(text, i) > 0) i += text_length(text, i);
+  while (i < text.size()) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7F) {  // printable ASCII, most of any file
+      ++i;
+      continue;
+    }
+    const std::size_t n = text_length(text, i);
+    if (n == 0) break;
+    i += n;
+  }
   if (i == text.size()) return std::nullopt;
   int line = 1, column = 1;
   for (std::size_t k = 0; k < i; k += utf8_length(text, k)) {
