@@ -71,13 +71,9 @@ std::string markdown_escape(std::string_view text) {
         out += ' ';
         break;
       case '<':
-        out += "&lt;";
-        break;
       case '>':
-        out += "&gt;";
-        break;
       case '&':
-        out += "&amp;";
+        out += xml_entity(c);
         break;
       case '\\':
       case '`':

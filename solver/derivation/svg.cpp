@@ -15,6 +15,23 @@ std::string svg_number(double v) {
   return s == "-0" ? "0" : s;
 }
 
+std::string_view xml_entity(char c) {
+  switch (c) {
+    case '&':
+      return "&amp;";
+    case '<':
+      return "&lt;";
+    case '>':
+      return "&gt;";
+    case '"':
+      return "&quot;";
+    case '\'':
+      return "&#39;";  // valid in HTML too
+    default:
+      return {};
+  }
+}
+
 std::string svg_escape(std::string_view text) {
   std::string out;
   out.reserve(text.size() + text.size() / 8);
@@ -27,22 +44,7 @@ std::string svg_escape(std::string_view text) {
       ++end;
     out.append(text.substr(start, end - start));
     if (end == text.size()) break;
-    switch (text[end]) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += "&#39;";  // valid in HTML too
-    }
+    out += xml_entity(text[end]);
     start = end + 1;
   }
   return out;

@@ -49,6 +49,9 @@ class Svg {
 
 // A coordinate for an SVG attribute: at most two decimals, no trailing zeros ("12.5", "3").
 std::string svg_number(double v);
+// The entity that stands for c in XML and HTML text and attributes (&amp; &lt; &gt; &quot;
+// &#39;), or nothing for any other character.
+std::string_view xml_entity(char c);
 // &, <, >, " and ' as entities (XML and HTML alike).
 std::string svg_escape(std::string_view text);
 
