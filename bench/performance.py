@@ -61,6 +61,21 @@ def repeat(cmd, reps, before=None, **kw):
             "cpu": statistics.median(r[1] for r in runs), "mb": max(r[2] for r in runs), "reps": reps}
 
 
+def interleaved(cmds, reps):
+    """cmds: name → function of the run's number giving a command. Runs them in turn, rep after
+    rep, so that each sees the same load (the machine drifts within minutes); stats by name."""
+    runs = {name: [] for name in cmds}
+    for k in range(reps):
+        for name, cmd in cmds.items():
+            runs[name].append(timed(cmd(k)))
+    out = {}
+    for name, rs in runs.items():
+        walls = sorted(r[0] for r in rs)
+        out[name] = {"min": walls[0], "median": statistics.median(walls), "max": walls[-1],
+                     "cpu": statistics.median(r[1] for r in rs), "mb": max(r[2] for r in rs), "reps": reps}
+    return out
+
+
 def fmt_s(x):
     return f"{x:.2f}" if x >= 0.1 else f"{x:.3f}"
 
@@ -105,7 +120,8 @@ def grading_race(say, one, j_all, peer, sizes, ncpu):
         "isolated child processes (one per `-j` share, a fresh one after a timeout or crash), the outputs "
         "published by one rename after one sync; the peer "
         "(bench/workloads.py `peer`) reads the same YAML files with PyYAML's C loader, grades with NumPy "
-        "and writes only a gradebook.\n")
+        "and writes only a gradebook. Frustum reads YAML with the same C library (libyaml). The three run "
+        "in turn, rep after rep, so that each sees the same load.\n")
     say("| | wall min / median / max (s) | CPU (s) | peak MB |")
     say("| --- | ---: | ---: | ---: |")
     for name, st in ((f"Frustum `-j 1`", one), (f"Frustum `-j {ncpu}`", j_all), ("Python + NumPy peer", peer)):
@@ -201,17 +217,21 @@ def main():
                                 "Markdown + HTML + Gradescope per student)", "students", rows)
     subs = os.path.join(work, "class1000")
     ncpu = os.cpu_count() or 1
-    out = os.path.join(work, f"grades1000-j{ncpu}-{R - 1}")
     j_all = peer = one = None
     sizes = {}
     if want("grade"):
-        j_all = repeat(lambda k: [F, "grade", cls_set, subs, "-o",
-                                  os.path.join(work, f"grades1000-j{ncpu}-{k}"), "-j", str(ncpu)], R)
+        # The three sides of the race in turn, rep after rep (same load for each).
+        race = interleaved({
+            "one": lambda k: [F, "grade", cls_set, subs, "-o", os.path.join(work, f"race1000-j1-{k}"), "-j", "1"],
+            "all": lambda k: [F, "grade", cls_set, subs, "-o", os.path.join(work, f"grades1000-j{ncpu}-{k}"),
+                              "-j", str(ncpu)],
+            "peer": lambda k: [PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, f"peer{k}.csv")],
+        }, max(R, 5))
+        one, j_all, peer = race["one"], race["all"], race["peer"]
+        out = os.path.join(work, f"grades1000-j{ncpu}-{max(R, 5) - 1}")
         for d in ("feedback", "gradescope", "katex"):
             p = os.path.join(out, d)
             sizes[d] = sum(os.path.getsize(os.path.join(r, x)) for r, _, xs in os.walk(p, followlinks=True) for x in xs)
-        peer = repeat([PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, "peer.csv")], R)
-        one = by_size[1000]
 
     # Render: a grid of small triangles through the whole pipeline, to a PNG.
     render_sizes = ([100000, 1000000] + ([10000000] if args.full else [])) if want("render") else []
