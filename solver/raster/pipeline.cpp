@@ -27,6 +27,24 @@ std::string copy_name(const std::string& name, const SceneObject::Repeat& r,
   return name + "[" + s + "]";
 }
 
+// A factor that an identity leaves unchanged bit for bit: finite, with no −0 entry. Each entry
+// of I·B (or A·I) is then one entry of B plus ±0 terms, which is that entry exactly.
+bool identity_keeps(const Mat4d& m) {
+  for (int k = 0; k < 16; ++k) {
+    const double v = m.data()[k];
+    if (!std::isfinite(v) || (v == 0 && std::signbit(v))) return false;
+  }
+  return true;
+}
+
+// a · b, without the 64 products when a factor is exactly the identity (a repeat of a million
+// copies composes two matrices per copy): the same matrix as the product, bit for bit.
+Mat4d compose(const Mat4d& a, const Mat4d& b) {
+  if (b == Mat4d::Identity() && identity_keeps(a)) return a;
+  if (a == Mat4d::Identity() && identity_keeps(b)) return b;
+  return a * b;
+}
+
 // World triangles and objects under `o` (itself included), copies of repeats counted.
 std::pair<std::size_t, std::size_t> flat_size(const SceneObject& o) {
   std::pair<std::size_t, std::size_t> n{o.triangles.size(), 1};
@@ -51,7 +69,7 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill
                   const std::string* name, FlatSink& out) {
   const Rgb f = o.fill.value_or(fill);
   const Cull c = o.cull.value_or(cull);
-  const Mat4d world_from_object = world_from_parent * o.transform;
+  const Mat4d world_from_object = compose(world_from_parent, o.transform);
   const int index = out.objects++;
   if (name) out.names->push_back(*name);
   for (std::size_t k = 0; k < o.triangles.size(); ++k) {
@@ -86,7 +104,7 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill
         for (int l = r.from[2]; l <= r.to[2]; ++l) {
           const Vec3d offset(i * r.step(0), j * r.step(1), l * r.step(2));
           if (name) copy = copy_name(child_name, r, {i, j, l});
-          flatten_into(single, world_from_object * translation(offset), f, c,
+          flatten_into(single, compose(world_from_object, translation(offset)), f, c,
                        name ? &copy : nullptr, out);
         }
   }
