@@ -149,6 +149,17 @@ void SpanWalker::next() {
   }
 }
 
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+namespace {
+__attribute__((target("avx"))) void vzeroupper() { __builtin_ia32_vzeroupper(); }
+}  // namespace
+void clear_upper_vector_state() {
+  if (__builtin_cpu_supports("avx")) vzeroupper();
+}
+#else
+void clear_upper_vector_state() {}
+#endif
+
 // On x86-64 with GCC, an AVX2 clone is chosen at load time where the CPU has it (4 doubles per
 // instruction in the span loop instead of 2). No FMA is enabled, so both clones compute the
 // same depths bit for bit as depth_at().
@@ -236,6 +247,7 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
     stats->fragments += fragments;
     stats->written += written;
   }
+  clear_upper_vector_state();
 }
 
 Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,
