@@ -113,26 +113,6 @@ TEST(Pipeline, SpansEqualPerPixelCoverage) {
   }
 }
 
-TEST(Pipeline, SpanWalkerStepsTheSameSpansAsSpanOnRow) {
-  // Small, large and far-off triangles (coordinates up to 2^19 pixels), slivers among them:
-  // the walker's division-free steps give span_on_row's span on every row of the box.
-  std::mt19937 rng(12);
-  const double sizes[] = {2, 9, 40, 700, 300000};
-  for (int n = 0; n < 3000; ++n) {
-    const double size = sizes[n % 5];
-    WindowTriangle w = random_triangle(rng, size, 60, 60);
-    if (n % 7 == 0) w.v[2] = w.v[0] + (w.v[1] - w.v[0]) * 0.5 + Vec3d(0.01, -0.02, 0);  // sliver
-    const TriangleSetup t = setup_raster(w).setup;
-    const int j0 = t.j_min, j1 = std::min(t.j_max, t.j_min + 3000);
-    SpanWalker walk(t, j0);
-    for (int j = j0; j <= j1; ++j, walk.next()) {
-      const Span a = span_on_row(t, j), b = walk.row();
-      ASSERT_EQ(a.i0, b.i0) << "triangle " << n << " row " << j;
-      ASSERT_EQ(a.i1, b.i1) << "triangle " << n << " row " << j;
-    }
-  }
-}
-
 TEST(Pipeline, SharedEdgesCoverEachPixelExactlyOnce) {
   // Random triangulated grids (jittered interior vertices, random diagonals): every pixel
   // centre inside the outer rectangle is covered by exactly one triangle.

@@ -7,17 +7,15 @@
 #include <limits>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 
 namespace frustum {
 
 namespace {
 
 // Boxes at most this wide are filled pixel by pixel with incremental edge functions; wider
-// ones row by row from spans (SpanWalker: up to six divisions per triangle, then a few
-// additions per row, instead of a test per pixel). Slivers (1 M small triangles) have boxes
-// of up to ~20 pixels, so the threshold keeps them on the per-pixel path; both paths write
-// the same fragments with the same depths.
-constexpr int kSmallBox = 32;
+// ones row by row from spans (three divisions per row instead of a test per pixel).
+constexpr int kSmallBox = 16;
 
 // Edge k covers a centre when E ≥ bias: E > 0, or E = 0 on a top or left edge.
 std::int64_t bias(const EdgeFunction& e) { return e.top_left() ? 0 : 1; }
@@ -73,80 +71,6 @@ Span span_on_row(const TriangleSetup& t, int j) {
     }
   }
   return {static_cast<int>(lo), static_cast<int>(hi)};
-}
-
-SpanWalker::SpanWalker(const TriangleSetup& t, int j0) {
-  if (t.degenerate) return;
-  empty_ = false;
-  i_min_ = t.i_min;
-  i_max_ = t.i_max;
-  const std::int64_t yc = pixel_centre(0, j0).y;
-  for (int k = 0; k < 3; ++k) {
-    const EdgeFunction& e = t.edge[k];
-    Bound& b = bound_[k];
-    // span_on_row's need = bias − (b·yc + c) falls by step = b·2⁸ a row.
-    const std::int64_t need = bias(e) - (e.b * yc + e.c), step = e.b * kSubpixelScale;
-    if (e.a > 0) {
-      // need = q·a − r: q = ⌈need / a⌉; need − step = (q − dq)·a − (r + dr).
-      b.kind = 1;
-      b.divisor = e.a;
-      b.q = ceil_div(need, e.a);
-      b.r = b.q * e.a - need;
-      b.dq = floor_div(step, e.a);
-      b.dr = step - b.dq * e.a;
-    } else if (e.a < 0) {
-      // −need = q·|a| + r: q = ⌊−need / |a|⌋; −need + step = (q + dq)·|a| + (r + dr).
-      b.kind = -1;
-      b.divisor = -e.a;
-      b.q = floor_div(-need, b.divisor);
-      b.r = -need - b.q * b.divisor;
-      b.dq = floor_div(step, b.divisor);
-      b.dr = step - b.dq * b.divisor;
-    } else {
-      b.kind = 0;
-      b.q = need;
-      b.dq = step;
-    }
-  }
-}
-
-Span SpanWalker::row() const {
-  if (empty_) return {};
-  // ⌈x / 2⁸⌉ and ⌊x / 2⁸⌋ as shifts (arithmetic: C++20), as ceil_div and floor_div give.
-  const std::int64_t half = kSubpixelScale / 2;
-  std::int64_t lo = i_min_, hi = i_max_;
-  for (const Bound& b : bound_) {
-    if (b.kind > 0) {
-      lo = std::max(lo, -((half - b.q) >> kSubpixelBits));
-    } else if (b.kind < 0) {
-      hi = std::min(hi, (b.q - half) >> kSubpixelBits);
-    } else if (b.q > 0) {
-      return {};
-    }
-  }
-  return {static_cast<int>(lo), static_cast<int>(hi)};
-}
-
-void SpanWalker::next() {
-  for (Bound& b : bound_) {
-    if (b.kind > 0) {
-      b.q -= b.dq;
-      b.r += b.dr;
-      if (b.r >= b.divisor) {
-        b.q -= 1;
-        b.r -= b.divisor;
-      }
-    } else if (b.kind < 0) {
-      b.q += b.dq;
-      b.r += b.dr;
-      if (b.r >= b.divisor) {
-        b.q += 1;
-        b.r -= b.divisor;
-      }
-    } else {
-      b.q -= b.dq;
-    }
-  }
 }
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
@@ -215,32 +139,40 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
       for (int k = 0; k < 3; ++k) row[k] += step_y[k];
     }
   } else {
-    SpanWalker walk(s, box.j0);
-    for (int j = box.j0; j <= box.j1; ++j, walk.next()) {
-      const Span sp = walk.row();
+    for (int j = box.j0; j <= box.j1; ++j) {
+      const Span sp = span_on_row(s, j);
       const int i0 = std::max(sp.i0, box.i0), i1 = std::min(sp.i1, box.i1);
       if (i0 > i1) continue;
       const std::size_t base = static_cast<std::size_t>(j) * static_cast<std::size_t>(width);
       const double row_z = t.z0 + t.b * static_cast<double>(pixel_centre(0, j).y - y0);
       const double dx0 = static_cast<double>(pixel_centre(i0, 0).x - x0);
-      const int n = i1 - i0 + 1;
-      fragments += n;
+      float* d = depth + base;
+      std::uint32_t* col = color + base;
+      fragments += i1 - i0 + 1;
       // Branch-free: both buffers are read and written unconditionally (min for the depth, a
-      // mask for the colour), so the compiler vectorises the row, the count of writes with it.
-      float* __restrict dr = depth + base + i0;
-      std::uint32_t* __restrict cr = color + base + i0;
-      int row_written = 0;
-      for (int k = 0; k < n; ++k) {
-        const float z =
-            static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(k) * kSubpixelScale));
-        const float old = dr[k];
-        const bool pass = z < old;
-        row_written += pass;
-        const std::uint32_t keep = pass ? 0u : ~0u;
-        dr[k] = pass ? z : old;
-        cr[k] = (cr[k] & keep) | (c & ~keep);
-      }
-      written += row_written;
+      // mask for the colour), so the compiler vectorises the row; the writes are counted in
+      // the same loop when stats are asked for (a reduction the loop otherwise goes without).
+      const int n = i1 - i0 + 1;
+      auto span = [&](auto count) {
+        float* __restrict dr = d + i0;
+        std::uint32_t* __restrict cr = col + i0;
+        int row_written = 0;
+        for (int k = 0; k < n; ++k) {
+          const float z =
+              static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(k) * kSubpixelScale));
+          const float old = dr[k];
+          const bool pass = z < old;
+          if constexpr (count) row_written += pass;
+          const std::uint32_t keep = pass ? 0u : ~0u;
+          dr[k] = pass ? z : old;
+          cr[k] = (cr[k] & keep) | (c & ~keep);
+        }
+        written += row_written;
+      };
+      if (stats)
+        span(std::true_type{});
+      else
+        span(std::false_type{});
     }
   }
   if (stats) {

@@ -56,28 +56,6 @@ struct Span {
 };
 Span span_on_row(const TriangleSetup& t, int j);
 
-// span_on_row() for rows j0, j0 + 1, … without a division per row: each edge's bound is a
-// quotient ⌈need / a⌉ (or ⌊…⌋) whose numerator changes by b·2⁸ from one row to the next, so
-// the quotient is stepped exactly with its remainder (one division per edge, at the start).
-// The same spans as span_on_row() on every row of the setup's bounding box.
-class SpanWalker {
- public:
-  SpanWalker(const TriangleSetup& t, int j0);
-  Span row() const;  // the current row's span
-  void next();       // on to the row above
-
- private:
-  struct Bound {
-    std::int64_t q = 0, r = 0;    // quotient and remainder (0 ≤ r < divisor)
-    std::int64_t dq = 0, dr = 0;  // their change per row (0 ≤ dr < divisor)
-    std::int64_t divisor = 1;
-    int kind = 0;  // +1: a > 0 (a lower bound on i), −1: a < 0 (an upper bound), 0: a = 0
-  };
-  std::array<Bound, 3> bound_;
-  std::int64_t i_min_ = 0, i_max_ = -1;
-  bool empty_ = true;  // degenerate
-};
-
 struct Frame {
   Image<std::uint32_t> color;  // raster rows, j = 0 the bottom
   Image<float> depth;
