@@ -2,6 +2,8 @@
 
 #include <cstddef>
 
+#include "solver/raster/fill.hpp"
+
 namespace frustum {
 
 __attribute__((target_clones("avx2", "default"))) void depth_pass(float* depth,
@@ -18,6 +20,7 @@ __attribute__((target_clones("avx2", "default"))) void depth_pass(float* depth,
       c[x] = pass ? id : c[x];
     }
   }
+  clear_upper_vector_state();  // the AVX2 clone's registers (fill.hpp)
 }
 
 }  // namespace frustum

@@ -7,6 +7,7 @@
 #include <limits>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 
 namespace frustum {
 
@@ -71,6 +72,17 @@ Span span_on_row(const TriangleSetup& t, int j) {
   }
   return {static_cast<int>(lo), static_cast<int>(hi)};
 }
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+namespace {
+__attribute__((target("avx"))) void vzeroupper() { __builtin_ia32_vzeroupper(); }
+}  // namespace
+void clear_upper_vector_state() {
+  if (__builtin_cpu_supports("avx")) vzeroupper();
+}
+#else
+void clear_upper_vector_state() {}
+#endif
 
 // On x86-64 with GCC, an AVX2 clone is chosen at load time where the CPU has it (4 doubles per
 // instruction in the span loop instead of 2). No FMA is enabled, so both clones compute the
@@ -137,32 +149,37 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
       float* d = depth + base;
       std::uint32_t* col = color + base;
       fragments += i1 - i0 + 1;
-      if (stats) {
-        for (int i = i0; i <= i1; ++i) {
-          const float z = static_cast<float>(
-              row_z + t.a * (dx0 + static_cast<double>(i - i0) * kSubpixelScale));
-          written += z < d[i];
-        }
-      }
       // Branch-free: both buffers are read and written unconditionally (min for the depth, a
-      // mask for the colour), so the compiler vectorises the row.
+      // mask for the colour), so the compiler vectorises the row; the writes are counted in
+      // the same loop when stats are asked for (a reduction the loop otherwise goes without).
       const int n = i1 - i0 + 1;
-      float* __restrict dr = d + i0;
-      std::uint32_t* __restrict cr = col + i0;
-      for (int k = 0; k < n; ++k) {
-        const float z =
-            static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(k) * kSubpixelScale));
-        const float old = dr[k];
-        const std::uint32_t keep = z < old ? 0u : ~0u;
-        dr[k] = z < old ? z : old;
-        cr[k] = (cr[k] & keep) | (c & ~keep);
-      }
+      auto span = [&](auto count) {
+        float* __restrict dr = d + i0;
+        std::uint32_t* __restrict cr = col + i0;
+        int row_written = 0;
+        for (int k = 0; k < n; ++k) {
+          const float z =
+              static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(k) * kSubpixelScale));
+          const float old = dr[k];
+          const bool pass = z < old;
+          if constexpr (count) row_written += pass;
+          const std::uint32_t keep = pass ? 0u : ~0u;
+          dr[k] = pass ? z : old;
+          cr[k] = (cr[k] & keep) | (c & ~keep);
+        }
+        written += row_written;
+      };
+      if (stats)
+        span(std::true_type{});
+      else
+        span(std::false_type{});
     }
   }
   if (stats) {
     stats->fragments += fragments;
     stats->written += written;
   }
+  clear_upper_vector_state();
 }
 
 Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,

@@ -27,6 +27,25 @@ std::string copy_name(const std::string& name, const SceneObject::Repeat& r,
   return name + "[" + s + "]";
 }
 
+// A factor that an identity leaves unchanged bit for bit: finite, with no −0 entry. Each entry
+// of I·B (or A·I) is then one entry of B plus ±0 terms, which is that entry exactly.
+bool identity_keeps(const Mat4d& m) {
+  for (int k = 0; k < 16; ++k) {
+    const double v = m.data()[k];
+    if (!std::isfinite(v) || (v == 0 && std::signbit(v))) return false;
+  }
+  return true;
+}
+
+// a · b, without the 64 products when a factor is exactly the identity (a repeat of a million
+// copies composes two matrices per copy): the same matrix as the product, bit for bit.
+bool is_identity(const Mat4d& m) { return m == Mat4d::Identity(); }  // ±0 off the diagonal
+Mat4d compose(const Mat4d& a, const Mat4d& b) {
+  if (is_identity(b) && identity_keeps(a)) return a;
+  if (is_identity(a) && identity_keeps(b)) return b;
+  return a * b;
+}
+
 // World triangles and objects under `o` (itself included), copies of repeats counted.
 std::pair<std::size_t, std::size_t> flat_size(const SceneObject& o) {
   std::pair<std::size_t, std::size_t> n{o.triangles.size(), 1};
@@ -46,12 +65,11 @@ struct FlatSink {
   int objects = 0;
 };
 
-// `name` is null when names are not kept.
-void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill, Cull cull,
+// `name` is null when names are not kept; world_from_object = world_from_parent · M_object.
+void flatten_into(const SceneObject& o, const Mat4d& world_from_object, Rgb fill, Cull cull,
                   const std::string* name, FlatSink& out) {
   const Rgb f = o.fill.value_or(fill);
   const Cull c = o.cull.value_or(cull);
-  const Mat4d world_from_object = world_from_parent * o.transform;
   const int index = out.objects++;
   if (name) out.names->push_back(*name);
   for (std::size_t k = 0; k < o.triangles.size(); ++k) {
@@ -73,7 +91,8 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill
       child_name = child.name.empty() ? *name + ".children[" + std::to_string(k) + "]" : child.name;
     const std::string* child_name_or_null = name ? &child_name : nullptr;
     if (!child.repeat) {
-      flatten_into(child, world_from_object, f, c, child_name_or_null, out);
+      flatten_into(child, compose(world_from_object, child.transform), f, c, child_name_or_null,
+                   out);
       continue;
     }
     // Copies: world_from_object · T(index · step) · M_child.
@@ -81,13 +100,20 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_parent, Rgb fill
     SceneObject single = child;
     single.repeat.reset();
     std::string copy;
+    // Neither the parent nor the copy moves anything: each copy's matrix is T(offset) itself
+    // (compose's rule, decided once for the repeat instead of twice per copy).
+    const bool translation_only = is_identity(world_from_object) && is_identity(single.transform);
     for (int i = r.from[0]; i <= r.to[0]; ++i)
       for (int j = r.from[1]; j <= r.to[1]; ++j)
         for (int l = r.from[2]; l <= r.to[2]; ++l) {
           const Vec3d offset(i * r.step(0), j * r.step(1), l * r.step(2));
           if (name) copy = copy_name(child_name, r, {i, j, l});
-          flatten_into(single, world_from_object * translation(offset), f, c,
-                       name ? &copy : nullptr, out);
+          const Mat4d t = translation(offset);
+          flatten_into(single,
+                       translation_only && identity_keeps(t)
+                           ? t
+                           : compose(compose(world_from_object, t), single.transform),
+                       f, c, name ? &copy : nullptr, out);
         }
   }
 }
@@ -106,8 +132,9 @@ SceneObject world_object(const Scene& scene) {
 void for_each_world_triangle(const Scene& scene,
                              const std::function<void(const WorldTriangle&)>& visit) {
   FlatSink sink{visit};
-  flatten_into(world_object(scene), Mat4d::Identity(), scene.default_fill, Cull::None, nullptr,
-               sink);
+  const SceneObject root = world_object(scene);
+  flatten_into(root, compose(Mat4d::Identity(), root.transform), scene.default_fill, Cull::None,
+               nullptr, sink);
 }
 
 FlatScene flatten(const Scene& scene, bool names) {
@@ -122,8 +149,8 @@ FlatScene flatten(const Scene& scene, bool names) {
   };
   FlatSink sink{keep, names ? &out.objects : nullptr};
   const std::string world = "world";
-  flatten_into(root, Mat4d::Identity(), scene.default_fill, Cull::None, names ? &world : nullptr,
-               sink);
+  flatten_into(root, compose(Mat4d::Identity(), root.transform), scene.default_fill, Cull::None,
+               names ? &world : nullptr, sink);
   return out;
 }
 

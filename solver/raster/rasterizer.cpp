@@ -34,11 +34,6 @@ std::int64_t to_fixed(double v) {
   return t;
 }
 
-FixedPoint2 pixel_centre(int i, int j) {
-  const std::int64_t half = kSubpixelScale / 2;
-  return {std::int64_t{i} * kSubpixelScale + half, std::int64_t{j} * kSubpixelScale + half};
-}
-
 TriangleSetup setup_triangle(const std::array<Vec2<double>, 3>& window) {
   TriangleSetup t;
   setup_triangle(window, t);

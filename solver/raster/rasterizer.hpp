@@ -82,7 +82,10 @@ TriangleSetup setup_triangle_exact(const std::array<Vec2<Exact>, 3>& window);
 void setup_fixed(const std::array<FixedPoint2, 3>& snapped, TriangleSetup& t);
 
 // Fixed-point centre of pixel (i, j): ((i + ½)·2⁸, (j + ½)·2⁸).
-FixedPoint2 pixel_centre(int i, int j);
+inline FixedPoint2 pixel_centre(int i, int j) {
+  const std::int64_t half = kSubpixelScale / 2;
+  return {std::int64_t{i} * kSubpixelScale + half, std::int64_t{j} * kSubpixelScale + half};
+}
 
 // Whether the centre of pixel (i, j) is covered (top-left rule).
 bool covers(const TriangleSetup& t, int i, int j);
