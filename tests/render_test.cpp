@@ -4,6 +4,7 @@
 #include "solver/kinds/render.hpp"
 
 #include <fmt/format.h>
+#include <png.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -15,6 +16,7 @@
 #include <random>
 #include <set>
 
+#include "app/commands.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/raster/certified_trace.hpp"
@@ -565,6 +567,38 @@ TEST(RenderCli, WritesPngAndScanlineGivesTheSameImage) {
   EXPECT_EQ(file_bytes(dir + "d.png").substr(1, 3), "PNG");
   EXPECT_EQ(run_cli("render " + seed + " -o " + dir + "x.png --id nope"), 1);
   EXPECT_EQ(run_cli("render " + seed + " -o " + dir + "x.png --size 0x5"), 2);
+}
+
+// The PNG holds the frame pixel for pixel: decoded by libpng's own reader, row r of the file is
+// the frame's row height − 1 − r (raster rows go up, a PNG's down), every channel of every pixel
+// (each pixel distinct here, alpha included).
+TEST(RenderCli, PngHoldsTheFramePixelForPixel) {
+  Image<std::uint32_t> img;
+  img.width = 37;
+  img.height = 23;
+  img.data.resize(static_cast<std::size_t>(img.width) * img.height);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      img.at(x, y) = static_cast<std::uint32_t>(x * 7) | static_cast<std::uint32_t>(y * 11) << 8 |
+                     static_cast<std::uint32_t>((x * y) & 0xFF) << 16 |
+                     static_cast<std::uint32_t>(255 - x) << 24;
+  const std::string path = ::testing::TempDir() + "frame.png";
+  ASSERT_TRUE(app::write_color_png(path, img));
+  png_image read{};
+  read.version = PNG_IMAGE_VERSION;
+  ASSERT_TRUE(png_image_begin_read_from_file(&read, path.c_str()));
+  read.format = PNG_FORMAT_RGBA;
+  ASSERT_EQ(read.width, 37u);
+  ASSERT_EQ(read.height, 23u);
+  std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(read));
+  ASSERT_TRUE(png_image_finish_read(&read, nullptr, pixels.data(), 0, nullptr));
+  for (int r = 0; r < img.height; ++r)
+    for (int x = 0; x < img.width; ++x) {
+      const std::uint32_t want = img.at(x, img.height - 1 - r);
+      const std::uint8_t* got = &pixels[(static_cast<std::size_t>(r) * img.width + x) * 4];
+      for (int c = 0; c < 4; ++c)
+        ASSERT_EQ(got[c], (want >> (8 * c)) & 0xFF) << "row " << r << " x " << x << " c " << c;
+    }
 }
 
 }  // namespace
