@@ -199,7 +199,7 @@ struct ClipLine {
     return g;
   }
 
-  static std::string ill_conditioned(const Given& g, const Answers&) {
+  static std::string ill_conditioned(const Given& g) {
     for (std::size_t i = 0; i < g.p.size(); ++i)
       if (!canonical(g.p[i] - g.q[i]).is_zero()) return "";
     return "p and q coincide";

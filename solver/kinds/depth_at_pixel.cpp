@@ -326,7 +326,7 @@ struct DepthAtPixel {
     return g;
   }
 
-  static std::string ill_conditioned(const Given& g, const Answers&) {
+  static std::string ill_conditioned(const Given& g) {
     std::vector<std::vector<double>> xy;
     for (const Vec3<Exact>& v : g.triangle) xy.push_back({to_double(v(0)), to_double(v(1))});
     if (triangle_shape(xy) < kMinTriangleShape) return "the triangle is nearly edge-on";

@@ -104,7 +104,7 @@ struct LookAt {
     return g;
   }
 
-  static std::string ill_conditioned(const Given& g, const Answers&) {
+  static std::string ill_conditioned(const Given& g) {
     return sine_between(doubles(Vec3<Exact>(g.center - g.eye)), doubles(g.up)) < kMinSine
                ? "up is nearly parallel to the view direction"
                : "";

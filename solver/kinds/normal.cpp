@@ -143,7 +143,7 @@ struct Normal {
     return g;
   }
 
-  static std::string ill_conditioned(const Given& g, const Answers&) {
+  static std::string ill_conditioned(const Given& g) {
     return triangle_shape(doubles(g.points)) < kMinTriangleShape
                ? "the polygon is nearly degenerate"
                : "";

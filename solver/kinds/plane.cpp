@@ -195,7 +195,7 @@ struct Plane {
     return g;
   }
 
-  static std::string ill_conditioned(const Given& g, const Answers&) {
+  static std::string ill_conditioned(const Given& g) {
     return !g.points.empty() && triangle_shape(doubles(g.points)) < kMinTriangleShape
                ? "the points are nearly collinear"
                : "";

@@ -323,7 +323,7 @@ struct Vectors {
     return g;
   }
 
-  static std::string ill_conditioned(const Given& g, const Answers&) {
+  static std::string ill_conditioned(const Given& g) {
     return sine_between(doubles(g.a), doubles(g.b)) < kMinSine ? "a and b are nearly parallel" : "";
   }
 };

@@ -138,7 +138,7 @@ struct ViewVolume {
     return g;
   }
 
-  static std::string ill_conditioned(const Given& g, const Answers&) {
+  static std::string ill_conditioned(const Given& g) {
     return exact_sign(g.point(2)) <= 0 ? "the point is behind the eye" : "";
   }
 };

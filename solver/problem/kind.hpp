@@ -121,6 +121,9 @@ struct KindInfo {
   // Optional. Why a solved variant is ill-conditioned ("" when it is fine): a near-degenerate
   // triangle, the eye in a face's plane, a point behind the eye. Such draws are redrawn.
   std::function<std::string(const std::any& given, const Answers& answers)> ill_conditioned;
+  // ill_conditioned reads the given alone (K::ill_conditioned(given)): a draw can be refused
+  // before it is solved.
+  bool ill_conditioned_given_only = false;
   // Optional. The geometry `frustum draw` pictures (hidden lines, painter vs z-buffer).
   std::function<Drawable(const std::any& given)> drawable;
   // The conventions the answers depend on, stated in the derivation's first step (K::kUses;
@@ -180,6 +183,12 @@ KindInfo make_kind() {
     k.ill_conditioned = [](const std::any& g, const Answers& a) {
       return K::ill_conditioned(std::any_cast<const G&>(g), a);
     };
+  if constexpr (requires(const G& g) { K::ill_conditioned(g); }) {
+    k.ill_conditioned = [](const std::any& g, const Answers&) {
+      return K::ill_conditioned(std::any_cast<const G&>(g));
+    };
+    k.ill_conditioned_given_only = true;
+  }
   if constexpr (requires(const G& g) { K::drawable(g); })
     k.drawable = [](const std::any& g) { return K::drawable(std::any_cast<const G&>(g)); };
   if constexpr (requires { K::kUses; }) k.uses = K::kUses;

@@ -19,6 +19,8 @@
 
 namespace frustum {
 
+class VaryPlan;  // vary_spec.hpp
+
 // Largest `points` of one problem or answer: far beyond any course's weights, and small enough
 // that a set's total and a class's sums stay finite doubles.
 inline constexpr double kMaxPoints = 1'000'000;
@@ -76,7 +78,9 @@ struct ProblemSpec {
   // checked), reused by solve_problem without steps instead of solving the same given again.
   std::shared_ptr<const Answers> drawn_answers;
   YAML::Node given_node;
-  YAML::Node vary;    // the `vary:` block (generate.hpp); undefined when absent
+  YAML::Node vary;  // the `vary:` block (generate.hpp); undefined when absent
+  // `vary` read once for drawing (set by the variants of a set); null: read at each draw.
+  std::shared_ptr<const VaryPlan> vary_plan;
   bool nice = false;  // nice: true — integer or simple exact answers
   bool hard = false;  // difficulty: hard — near-degenerate cases on purpose
   std::optional<Diagnostic> error;

@@ -99,13 +99,16 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
   // nodes of a copied ProblemSpec are rebound with reset(), and specs are never assigned.
   ProblemSpec spec = base;
   spec.vary.reset();
+  spec.vary_plan.reset();
   spec.drawn_answers.reset();
   if (base.error || !base.info) return spec;
   const KindInfo& kind = *base.info;
   const bool use_default = !has_vary(base) || vary_is_default(base.vary);
   const std::string vary_field = base.field + ".vary";
+  std::shared_ptr<const VaryPlan> plan = use_default ? nullptr : base.vary_plan;
   try {
-    if (!use_default) check_vary(base.vary, kind, file, vary_field);
+    if (!use_default && !plan)
+      plan = std::make_shared<const VaryPlan>(base.vary, kind, file, vary_field);
   } catch (const InputError& e) {
     spec.error = e.diagnostic();
     return spec;
@@ -131,9 +134,7 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
   };
   for (int attempt = 0; attempt < kMaxDrawAttempts; ++attempt) {
     try {
-      YAML::Node given = use_default
-                             ? default_given(attempt)
-                             : apply_vary(base.vary, base.given_node, rng, file, vary_field);
+      YAML::Node given = use_default ? default_given(attempt) : plan->draw(base.given_node, rng);
       const std::string text = emit_flow(given);
       if (avoid.count(text)) {
         if (repeated) repeated->push_back(text);
@@ -143,6 +144,14 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
       GivenReader reader(given, file, base.field + ".given", kind.given_fields);
       std::any parsed = kind.parse(reader, base.conventions);
       reader.finish();
+      // A check of the given alone refuses before solving: such a draw is refused below too,
+      // whatever solving finds, so the same draw is taken. The last attempt is checked in the
+      // order below, for the reason it reports.
+      if (!base.hard && kind.ill_conditioned && kind.ill_conditioned_given_only &&
+          attempt + 1 < kMaxDrawAttempts) {
+        last = kind.ill_conditioned(parsed, Answers{});
+        if (!last.empty()) continue;
+      }
       Answers answers = kind.solve(parsed, nullptr);
       // An empty list (no pixel covered) cannot be written as an answer: redrawn even when hard.
       last.clear();
@@ -220,12 +229,19 @@ std::optional<Diagnostic> template_texts(ProblemSpec& p, const std::string& file
 }
 
 // The set as variants draw it: each problem drawn anew has its texts templated (template_texts),
-// or the error of a literal that cannot be tied.
+// or the error of a literal that cannot be tied, and its `vary` read once (VaryPlan).
 ProblemSet prepare_for_drawing(const ProblemSet& set, bool vary_all) {
   ProblemSet out = set;
-  for (ProblemSpec& p : out.problems)
-    if (drawn_anew(set, p, vary_all))
-      if (std::optional<Diagnostic> e = template_texts(p, set.file)) p.error = std::move(e);
+  for (ProblemSpec& p : out.problems) {
+    if (!drawn_anew(set, p, vary_all)) continue;
+    if (std::optional<Diagnostic> e = template_texts(p, set.file)) p.error = std::move(e);
+    // `vary` read once for every variant; a block in error is left to draw_problem to report.
+    if (!p.error && p.info && has_vary(p) && !vary_is_default(p.vary)) try {
+        p.vary_plan =
+            std::make_shared<const VaryPlan>(p.vary, *p.info, set.file, p.field + ".vary");
+      } catch (const InputError&) {
+      }
+  }
   return out;
 }
 

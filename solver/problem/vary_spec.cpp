@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
 
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
@@ -162,6 +165,138 @@ YAML::Node apply_vary(const YAML::Node& vary, const YAML::Node& base, Rng& rng,
     out[k] = draw(it->second, base.IsMap() ? base[k] : YAML::Node(), rng, file, field + "." + k);
   }
   return out;
+}
+
+// One entry of a `vary` block as draw() reads it, read once.
+struct VaryPlan::Spec {
+  enum class Type { Range, Choices, Each, List, Map, Value } type = Type::Value;
+  YAML::Node node;    // the entry (choices: the list)
+  std::string field;  // for the error of an `each` with nothing to count
+  Exact lo, step;     // range: lo + k·step, k in [0, count)
+  std::uint64_t count = 0;
+  // A range of integers small enough to draw in std::int64_t (its values print alike).
+  std::optional<std::int64_t> int_lo, int_step;
+  std::optional<std::size_t> each_count;  // each: `count`
+  std::vector<Spec> items;                // list: its items; each: its one item; map: its values
+  std::vector<std::string> keys;          // map: its keys
+};
+
+namespace {
+
+// The rationals of an integer range that fit, with every value lo + k·step, in std::int64_t.
+constexpr long kMaxIntegerRangeEnd = 1L << 31;
+
+std::optional<std::int64_t> small_integer(const Exact& e) {
+  if (!GiNaC::is_a<GiNaC::numeric>(e)) return std::nullopt;
+  const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+  if (!n.is_integer() || GiNaC::abs(n) >= GiNaC::numeric(kMaxIntegerRangeEnd)) return std::nullopt;
+  return n.to_long();
+}
+
+// What draw() does with `spec`, decided once (the same order of tests).
+VaryPlan::Spec plan_spec(const YAML::Node& spec, const std::string& file,
+                         const std::string& field) {
+  VaryPlan::Spec out;
+  out.node.reset(spec);  // reset, not =: assigning a node writes through to the block
+  out.field = field;
+  using Type = VaryPlan::Spec::Type;
+  if (has_key(spec, "range")) {
+    out.type = Type::Range;
+    const Range r = read_range(spec, file, field);
+    out.lo = r.lo;
+    out.step = r.step;
+    out.count = r.count;
+    out.int_lo = small_integer(r.lo);
+    out.int_step = small_integer(r.step);
+  } else if (has_key(spec, "choices")) {
+    out.type = Type::Choices;
+    out.node.reset(spec["choices"]);
+  } else if (has_key(spec, "each")) {
+    out.type = Type::Each;
+    if (spec["count"].IsDefined())
+      out.each_count =
+          static_cast<std::size_t>(to_double(read_number(spec["count"], file, field + ".count")));
+    out.items.push_back(plan_spec(spec["each"], file, field + ".each"));
+  } else if (spec.IsSequence()) {
+    out.type = Type::List;
+    for (std::size_t i = 0; i < spec.size(); ++i)
+      out.items.push_back(plan_spec(spec[i], file, field + "[" + std::to_string(i) + "]"));
+  } else if (spec.IsMap()) {
+    out.type = Type::Map;
+    for (auto it = spec.begin(); it != spec.end(); ++it) {
+      out.keys.push_back(it->first.as<std::string>());
+      out.items.push_back(plan_spec(it->second, file, field + "." + out.keys.back()));
+    }
+  }
+  return out;
+}
+
+YAML::Node draw_planned(const VaryPlan::Spec& s, const YAML::Node& base, Rng& rng,
+                        const std::string& file) {
+  using Type = VaryPlan::Spec::Type;
+  switch (s.type) {
+    case Type::Range: {
+      const std::uint64_t k = rng.below(s.count);
+      // |lo|, |step| < 2³¹ and k < 10⁹ + 1: no overflow.
+      if (s.int_lo && s.int_step)
+        return gen_number(*s.int_lo + *s.int_step * static_cast<std::int64_t>(k));
+      return gen_number(Exact(s.lo + s.step * static_cast<long>(k)));
+    }
+    case Type::Choices:
+      return clone_node(s.node[static_cast<std::size_t>(rng.below(s.node.size()))]);
+    case Type::Each: {
+      const std::size_t count = s.each_count ? *s.each_count : base.IsSequence() ? base.size() : 0;
+      if (count == 0)
+        fail_at(s.node, file, s.field, "`each` needs a list in `given` to vary, or a `count`");
+      YAML::Node out(YAML::NodeType::Sequence);
+      for (std::size_t i = 0; i < count; ++i)
+        out.push_back(draw_planned(
+            s.items[0], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file));
+      out.SetStyle(YAML::EmitterStyle::Flow);
+      return out;
+    }
+    case Type::List: {
+      YAML::Node out(YAML::NodeType::Sequence);
+      for (std::size_t i = 0; i < s.items.size(); ++i)
+        out.push_back(draw_planned(
+            s.items[i], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file));
+      out.SetStyle(YAML::EmitterStyle::Flow);
+      return out;
+    }
+    case Type::Map: {
+      YAML::Node out = base.IsMap() ? clone_node(base) : YAML::Node(YAML::NodeType::Map);
+      for (std::size_t i = 0; i < s.items.size(); ++i)
+        out[s.keys[i]] =
+            draw_planned(s.items[i], base.IsMap() ? base[s.keys[i]] : YAML::Node(), rng, file);
+      return out;
+    }
+    case Type::Value:
+      break;
+  }
+  return clone_node(s.node);
+}
+
+}  // namespace
+
+VaryPlan::VaryPlan(const YAML::Node& vary, const KindInfo& kind, const std::string& file,
+                   const std::string& field)
+    : file_(file) {
+  check_vary(vary, kind, file, field);
+  // The block is a mapping of given fields (check_vary), drawn as apply_vary draws it even
+  // when a field's name is one of range, choices or each.
+  Spec root;
+  root.type = Spec::Type::Map;
+  for (auto it = vary.begin(); it != vary.end(); ++it) {
+    root.keys.push_back(it->first.as<std::string>());
+    root.items.push_back(plan_spec(it->second, file, field + "." + root.keys.back()));
+  }
+  root_ = std::make_unique<const Spec>(std::move(root));
+}
+
+VaryPlan::~VaryPlan() = default;
+
+YAML::Node VaryPlan::draw(const YAML::Node& base, Rng& rng) const {
+  return draw_planned(*root_, base, rng, file_);
 }
 
 }  // namespace frustum

@@ -12,6 +12,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <memory>
 #include <string>
 
 #include "solver/problem/kind.hpp"
@@ -30,6 +31,25 @@ bool vary_is_default(const YAML::Node& vary);
 // A new given: `base` with the varied fields drawn from `rng` (base is not modified).
 YAML::Node apply_vary(const YAML::Node& vary, const YAML::Node& base, Rng& rng,
                       const std::string& file, const std::string& field);
+
+// A `vary` block read once (check_vary's checks, its ranges as numbers), then drawn from for
+// every variant: draw() gives what apply_vary gives for the same block, given and generator
+// state, and leaves the generator in the same state, without reading the block again.
+class VaryPlan {
+ public:
+  struct Spec;  // one entry of the block (vary_spec.cpp)
+  // Throws InputError as check_vary does.
+  VaryPlan(const YAML::Node& vary, const KindInfo& kind, const std::string& file,
+           const std::string& field);
+  ~VaryPlan();
+  VaryPlan(const VaryPlan&) = delete;
+  VaryPlan& operator=(const VaryPlan&) = delete;
+  YAML::Node draw(const YAML::Node& base, Rng& rng) const;
+
+ private:
+  std::string file_;
+  std::unique_ptr<const Spec> root_;
+};
 
 // Deep copy of a YAML node (yaml-cpp nodes share by reference).
 YAML::Node clone_node(const YAML::Node& n);

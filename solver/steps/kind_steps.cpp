@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
@@ -178,20 +179,75 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
   return n;
 }
 
-std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d) {
+namespace {
+
+// x = q·R with q rational and R = 1 or a power of a positive rational (√3, as the components of
+// a unit normal n/‖n‖ and d = n̂·A are once canonical): q and R.
+bool rational_multiple(const Exact& x, GiNaC::numeric& q, Exact& root) {
+  const auto rational = [](const Exact& e) {
+    return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational();
+  };
+  if (rational(x)) {
+    q = GiNaC::ex_to<GiNaC::numeric>(x);
+    root = 1;
+    return true;
+  }
+  const bool product = GiNaC::is_a<GiNaC::mul>(x) && x.nops() == 2 && rational(x.op(1));
+  const Exact& r = product ? x.op(0) : x;
+  if (!GiNaC::is_a<GiNaC::power>(r) || !rational(r.op(0)) || !rational(r.op(1)) ||
+      !GiNaC::ex_to<GiNaC::numeric>(r.op(0)).is_positive())
+    return false;
+  q = product ? GiNaC::ex_to<GiNaC::numeric>(x.op(1)) : GiNaC::numeric(1);
+  root = r;
+  return true;
+}
+
+// c[i] / |c[first]| for i = 0..3, each canonical, or nullopt when one is not rational. When
+// every non-zero c[i] is a rational multiple of the same positive root, the quotient is the
+// ratio of the rationals (what canonical() of the quotient gives), found without dividing
+// expressions.
+std::optional<std::array<Exact, 4>> rational_ratios(const std::array<Exact, 4>& c, int first,
+                                                    bool by_quotients) {
+  std::array<Exact, 4> r;
+  if (!by_quotients) {
+    std::array<GiNaC::numeric, 4> q;
+    std::optional<Exact> common;
+    bool shared = true;
+    for (int i = 0; i < 4 && shared; ++i) {
+      Exact root;
+      shared = rational_multiple(c[i], q[i], root);
+      if (shared && !q[i].is_zero()) {
+        if (!common) common = root;
+        shared = common->is_equal(root);
+      }
+    }
+    if (shared) {
+      const GiNaC::numeric lead = GiNaC::abs(q[first]);
+      for (int i = 0; i < 4; ++i) r[i] = q[i] / lead;
+      return r;
+    }
+  }
+  const Exact lead = exact_sign(c[first]) < 0 ? Exact(-c[first]) : c[first];
+  for (int i = 0; i < 4; ++i) {
+    r[i] = canonical(c[i] / lead);
+    if (!GiNaC::is_a<GiNaC::numeric>(r[i]) || !GiNaC::ex_to<GiNaC::numeric>(r[i]).is_rational())
+      return std::nullopt;
+  }
+  return r;
+}
+
+}  // namespace
+
+std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d, bool by_quotients) {
   std::array<Exact, 4> c = {canonical(n(0)), canonical(n(1)), canonical(n(2)), canonical(d)};
   // Divide by the first non-zero coefficient's magnitude; if everything is then rational,
   // clear denominators and common factors.
   int first = 0;
   while (first < 3 && c[first].is_zero()) ++first;
   if (first == 3) return c;
-  const Exact lead = exact_sign(c[first]) < 0 ? Exact(-c[first]) : c[first];
-  std::array<Exact, 4> r;
-  for (int i = 0; i < 4; ++i) {
-    r[i] = canonical(c[i] / lead);
-    if (!GiNaC::is_a<GiNaC::numeric>(r[i]) || !GiNaC::ex_to<GiNaC::numeric>(r[i]).is_rational())
-      return c;
-  }
+  std::optional<std::array<Exact, 4>> ratios = rational_ratios(c, first, by_quotients);
+  if (!ratios) return c;
+  std::array<Exact, 4>& r = *ratios;
   GiNaC::numeric denominators = 1, numerators = 0;
   for (const Exact& x : r) {
     const GiNaC::numeric q = GiNaC::ex_to<GiNaC::numeric>(x);

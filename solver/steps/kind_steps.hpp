@@ -36,8 +36,9 @@ bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
                                 ZFrom z_from = ZFrom::Plane);
 
 // The plane n·p = d scaled the way a teacher writes it: integer coefficients without a common
-// factor when possible (x + y − z = −6), the orientation of n kept.
-std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d);
+// factor when possible (x + y − z = −6), the orientation of n kept. by_quotients: the plain
+// reading, canonical() of every coefficient over the first (the reference of its fast path).
+std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d, bool by_quotients = false);
 
 // A plane as an answer: [a, b, c, d] of ax + by + cz = d, shown as its equation.
 Value plane_answer(const std::array<Exact, 4>& plane);
