@@ -23,7 +23,9 @@ std::string file_name_for(const std::string& id) {
   std::string out;
   for (std::size_t i = 0; i < id.size(); ++i) {
     const unsigned char c = static_cast<unsigned char>(id[i]);
-    const bool keep = std::isalnum(c) || c == '-' || c == '_' || (c == '.' && i > 0);
+    // Not first: a '.' (a hidden file, ".."), a '-' (read as an option by a shell command, and
+    // guarded as a formula in the gradebook's `file` column, which then named no file).
+    const bool keep = std::isalnum(c) || c == '_' || ((c == '.' || c == '-') && i > 0);
     out += keep ? std::string(1, static_cast<char>(c)) : fmt::format("%{:02X}", c);
   }
   if (out.empty()) return "%";

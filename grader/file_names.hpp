@@ -8,7 +8,7 @@
 
 namespace frustum {
 
-// Letters, digits, '-' and '_' kept, '.' kept except first; every other byte written %HH
+// Letters, digits and '_' kept, '.' and '-' kept except first; every other byte written %HH
 // ("a/b" → "a%2Fb", "a_b" stays), so different ids give different names. Names longer than
 // 120 bytes are cut and end in "~" and a hash of the whole id. Never empty.
 std::string file_name_for(const std::string& id);

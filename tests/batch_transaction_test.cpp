@@ -57,6 +57,8 @@ TEST(FileNames, DifferentIdsNeverShareAName) {
   EXPECT_EQ(file_name_for("a_b"), "a_b");
   EXPECT_EQ(file_name_for(".."), "%2E.");
   EXPECT_EQ(file_name_for(""), "%");
+  EXPECT_EQ(file_name_for("--"), "%2D-");  // no name starts with '-' (an option, a formula)
+  EXPECT_EQ(file_name_for("a-b"), "a-b");
   // Property: random ids over a hostile alphabet map to distinct names.
   std::mt19937 rng(15);
   const std::string alphabet = "aA_-./%~ \x1b\xc3\xa9=";
@@ -69,6 +71,7 @@ TEST(FileNames, DifferentIdsNeverShareAName) {
     EXPECT_TRUE(names.insert(name).second) << "'" << id << "' shares " << name;
     EXPECT_EQ(name.find('/'), std::string::npos);
     EXPECT_NE(name[0], '.');
+    EXPECT_NE(name[0], '-');
   }
   // Within a batch, repeats and case-only differences get their own names.
   EXPECT_EQ(unique_file_names({"a-2", "a", "a", "A"}),
@@ -99,6 +102,32 @@ TEST(BatchTransaction, IdsThatMapToOneNameEachKeepTheirOwnFeedback) {
   ASSERT_EQ(book.rows.size(), 4u);
   EXPECT_EQ(book.rows[0].fields.back(), "file");
   EXPECT_EQ(book.rows[3].fields.back(), "a~2");
+  fs::remove_all(dir);
+}
+
+TEST(BatchTransaction, TheGradebookFileColumnNamesAFeedbackPageForEveryId) {
+  // Found by fuzz_batch: student "--" had the page --.md, but the gradebook guards a cell that
+  // starts with '-' against being read as a formula and wrote '-- in the `file` column, which
+  // named no page. No file name starts with '-' now, so the column is the name as it is.
+  const fs::path dir = scratch("dash");
+  fs::create_directories(dir / "in");
+  const std::vector<std::string> ids = {"--", "-x", "=1+1", "@a", "+b", "-5"};
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    test::write_file(dir / "in" / (std::to_string(i) + ".yaml"),
+                     "student: \"" + ids[i] + "\"\nanswers:\n  zbuf: {z: 8}\n");
+  BatchOptions o;
+  o.out_dir = (dir / "out").string();
+  const BatchResult r = grade_batch(load_problem_set_from_string(kSet, "set.yaml"),
+                                    collect_submissions((dir / "in").string()), o);
+  ASSERT_EQ(r.rows.size(), ids.size());
+  const CsvTable book = parse_csv(test::read_file(dir / "out" / "gradebook.csv"));
+  ASSERT_FALSE(book.error);
+  ASSERT_EQ(book.rows.size(), ids.size() + 1);
+  for (std::size_t k = 1; k < book.rows.size(); ++k) {
+    const std::string& file = book.rows[k].fields.back();
+    EXPECT_TRUE(fs::exists(dir / "out" / "feedback" / (file + ".md"))) << file;
+    EXPECT_TRUE(fs::exists(dir / "out" / "feedback" / (file + ".html"))) << file;
+  }
   fs::remove_all(dir);
 }
 
