@@ -135,11 +135,9 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
 YAML::Node cell_value(const std::string& cell) {
   const std::size_t start = cell.find_first_not_of(" \t");
   if (start != std::string::npos && cell[start] == '[') {
-    try {
-      const YAML::Node n = YAML::Load(cell);
-      if (n.IsSequence()) return n;
-    } catch (const std::exception&) {
-    }
+    // Read as every YAML file is read (parse_yaml: libyaml, bounded, strict).
+    const YamlDocument doc = parse_yaml(cell, "");
+    if (!doc.error && doc.root.IsSequence()) return doc.root;
   }
   return YAML::Node(cell);
 }
