@@ -49,6 +49,13 @@ def timed(cmd, cwd=None, env=None):
     return float(wall), float(user) + float(system), int(rss) / 1024.0
 
 
+def summary(runs):
+    """Wall min / median / max, median CPU and peak memory of timed() runs."""
+    walls = sorted(r[0] for r in runs)
+    return {"min": walls[0], "median": statistics.median(walls), "max": walls[-1],
+            "cpu": statistics.median(r[1] for r in runs), "mb": max(r[2] for r in runs), "reps": len(runs)}
+
+
 def repeat(cmd, reps, before=None, **kw):
     """cmd: a command, or a function of the run's number giving one (each run its own output)."""
     runs = []
@@ -56,9 +63,7 @@ def repeat(cmd, reps, before=None, **kw):
         if before:
             before()
         runs.append(timed(cmd(k) if callable(cmd) else cmd, **kw))
-    walls = sorted(r[0] for r in runs)
-    return {"min": walls[0], "median": statistics.median(walls), "max": walls[-1],
-            "cpu": statistics.median(r[1] for r in runs), "mb": max(r[2] for r in runs), "reps": reps}
+    return summary(runs)
 
 
 def interleaved(cmds, reps):
@@ -68,12 +73,7 @@ def interleaved(cmds, reps):
     for k in range(reps):
         for name, cmd in cmds.items():
             runs[name].append(timed(cmd(k)))
-    out = {}
-    for name, rs in runs.items():
-        walls = sorted(r[0] for r in rs)
-        out[name] = {"min": walls[0], "median": statistics.median(walls), "max": walls[-1],
-                     "cpu": statistics.median(r[1] for r in rs), "mb": max(r[2] for r in rs), "reps": reps}
-    return out
+    return {name: summary(rs) for name, rs in runs.items()}
 
 
 def fmt_s(x):

@@ -21,7 +21,8 @@ struct FirstDocument {
 // Reports the first document of `text` (UTF-8) to `handler` event by event, as yaml-cpp's
 // YAML::Parser::HandleNextDocument does: the same events, tags ("?" for an untagged plain node,
 // "!" for a quoted scalar), nulls (an empty node, or a plain ~, null, Null or NULL), anchors
-// numbered 1, 2, … in order, styles and 0-based marks. libyaml scans the text: it reads the
+// numbered 1, 2, … in order, styles and 0-based marks (columns in characters, where yaml-cpp
+// counts bytes; an empty value marked after its key). libyaml scans the text: it reads the
 // same YAML several times faster than yaml-cpp's scanner, which was most of the cost of reading
 // a class's answer files. Then looks for the start of a second document; text after the first
 // document that is not YAML does not count as one.
