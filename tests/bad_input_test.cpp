@@ -213,6 +213,26 @@ TEST(BadInput, AnswerFilesGiveTheirMessageAndTheRestGrades) {
   }
 }
 
+TEST(BadInput, InvisibleSpacingAfterAnAnswerLeavesItsVerdict) {
+  // A form feed or a Unicode line separator pasted after a right answer: the answer is still
+  // right (the character is read as a space and named once), an escape character is not text.
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const GradeReport ok = grade(
+      set,
+      load_submission_from_string(
+          "student: s1\nanswers:\n  seed001-pixel-z: {z: 8\x0c, plane: \"x + y - z = -6\u2028\"}\n",
+          "ff.yaml"));
+  EXPECT_EQ(find_answer(ok, "seed001-pixel-z.z")->verdict, Verdict::Correct);
+  EXPECT_EQ(find_answer(ok, "seed001-pixel-z.plane")->verdict, Verdict::Correct);
+  ASSERT_EQ(ok.errors.size(), 1u) << listing(ok.errors);
+  EXPECT_NE(ok.errors[0].message.find("U+000C"), std::string::npos);
+  const GradeReport bad =
+      grade(set, load_submission_from_string(
+                     "student: s1\nanswers:\n  seed001-pixel-z: {z: 8\x1b}\n", "esc.yaml"));
+  EXPECT_NE(find_answer(bad, "seed001-pixel-z.z")->verdict, Verdict::Correct);
+}
+
 TEST(BadInput, YamlEscapesForNelAndNoBreakSpaceAreCharactersInValidJson) {
   // The YAML escapes \N (NEL) and \_ (no-break space) are the characters U+0085 and U+00A0.
   // yaml-cpp once decoded them to the single bytes 0x85 and 0xA0, not UTF-8, and a message

@@ -61,6 +61,11 @@ char32_t code_point(const std::string& text, std::size_t i, std::size_t n) {
 // becomes when its file is converted as Latin-1), so a value holding one would be cut in two.
 bool invisible_break(char32_t c) { return c == 0x85 || c == 0x2028 || c == 0x2029; }
 
+// Characters that space text out but that YAML does not read as text: the invisible line breaks
+// and the vertical tab and form feed. Read as a space, so that an answer written "8" followed by
+// one of them is still the number 8.
+bool read_as_space(char32_t c) { return invisible_break(c) || c == 0x0B || c == 0x0C; }
+
 // A character read as text: YAML allows it (YAML 1.1 §5.1, as libyaml checks it: no control
 // character other than tab, line feed and carriage return, no U+FFFE or U+FFFF) and it is not
 // an invisible line break.
@@ -77,14 +82,14 @@ std::size_t text_length(const std::string& text, std::size_t i) {
 }
 
 // The text with every byte that does not start a valid character, and every character not read
-// as text (yaml_character), replaced by U+FFFD.
+// as text (yaml_character), replaced by U+FFFD, or by a space when it spaces text (read_as_space).
 std::string valid_utf8(const std::string& text) {
   std::string out;
   out.reserve(text.size() + 16);
   for (std::size_t k = 0; k < text.size();) {
     const std::size_t n = utf8_length(text, k);
     if (n == 0 || !yaml_character(code_point(text, k, n))) {
-      out += "\xEF\xBF\xBD";
+      out += n > 0 && read_as_space(code_point(text, k, n)) ? " " : "\xEF\xBF\xBD";
       k += n == 0 ? 1 : n;
     } else {
       out.append(text, k, n);
@@ -123,9 +128,11 @@ std::optional<Diagnostic> repair_utf8(std::string& text, const std::string& name
     char hex[16];
     std::snprintf(hex, sizeof hex, "U+%04X", static_cast<unsigned>(code_point(text, i, n)));
     message = std::string("character ") + hex +
-              (invisible_break(code_point(text, i, n)) ? " (an invisible line break)"
-                                                       : " (a control character)") +
-              " is not read as text; it and any like it are read as U+FFFD";
+              (read_as_space(code_point(text, i, n))
+                   ? " (invisible spacing YAML does not read as text) is read as a space, and any "
+                     "like it"
+                   : " (a control character) is not read as text; it and any like it are read as "
+                     "U+FFFD");
   } else {
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X",
