@@ -165,7 +165,7 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   std::vector<BatchEntry> entries;
   std::vector<Diagnostic> not_graded;  // other files and folders beside the answers
   try {
-    entries = collect_submissions(g.answers, kMaxSubmissionBytes, &not_graded, g.jobs);
+    entries = collect_submissions(g.answers, kMaxSubmissionBytes, &not_graded);
     if (g.roster) entries = apply_roster(std::move(entries), read_roster(*g.roster), *g.roster);
   } catch (const InputError& e) {
     o.err << "error: " << terminal_text(e.diagnostic().format()) << "\n";

@@ -49,14 +49,14 @@ struct BatchEntry {
 // handed in is passed over in silence.
 // Throws InputError for a path that is neither, an unreadable directory, or a CSV without a
 // `student` column (located in the CSV: line and column).
-// The files of a directory are read and their ids parsed by `jobs` threads (0: one per core),
-// each a contiguous share; the entries are the same whatever the number. The id is what a file
+// The files of a directory are read and their ids parsed one after another, in the calling
+// thread (so that grade_batch's children are forked from a single-threaded process). The id is
+// what a file
 // states under `student:`, read up to that value only (top_scalar): a file whose answers below
 // it are broken is still that student's (an error row under their id).
 std::vector<BatchEntry> collect_submissions(const std::string& path,
                                             std::size_t max_bytes = kMaxSubmissionBytes,
-                                            std::vector<Diagnostic>* not_graded = nullptr,
-                                            std::size_t jobs = 1);
+                                            std::vector<Diagnostic>* not_graded = nullptr);
 
 // The roster is the authority for who a file belongs to: the answers of roster id R are the
 // file file_name_for(R).yaml (or .yml) in the directory, whatever its `student:` says (a file

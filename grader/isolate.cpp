@@ -16,6 +16,7 @@
 #include <cstring>
 #include <exception>
 #include <new>
+#include <optional>
 
 namespace frustum {
 
@@ -34,16 +35,51 @@ bool write_all(int fd, const char* p, std::size_t size) {
   return true;
 }
 
-// One item's frame on the pipe: 8-byte little-endian length, a status byte ('O' ok, 'E' the
-// work threw), then the text.
-bool write_frame(int fd, char status, const std::string& text) {
-  const std::uint64_t size = text.size() + 1;
-  unsigned char header[9];
-  for (int i = 0; i < 8; ++i) header[i] = static_cast<unsigned char>(size >> (8 * i));
-  header[8] = static_cast<unsigned char>(status);
-  return write_all(fd, reinterpret_cast<const char*>(header), 9) &&
+// One item's frame on the pipe: the 8-byte little-endian length of what follows it, the item's
+// 8-byte little-endian index, a status byte ('O' ok, 'E' the work threw), then the text.
+constexpr std::size_t kFrameHeader = 17;
+bool write_frame(int fd, std::size_t item, char status, const std::string& text) {
+  const std::uint64_t size = text.size() + 9;
+  unsigned char header[kFrameHeader];
+  for (int i = 0; i < 8; ++i) {
+    header[i] = static_cast<unsigned char>(size >> (8 * i));
+    header[8 + i] = static_cast<unsigned char>(std::uint64_t(item) >> (8 * i));
+  }
+  header[16] = static_cast<unsigned char>(status);
+  return write_all(fd, reinterpret_cast<const char*>(header), kFrameHeader) &&
          write_all(fd, text.data(), text.size());
 }
+
+std::uint64_t little_endian(const char* p) {
+  std::uint64_t v = 0;
+  for (int i = 0; i < 8; ++i) v |= std::uint64_t(static_cast<unsigned char>(p[i])) << (8 * i);
+  return v;
+}
+
+// What the parent and its children share (one anonymous shared mapping): the caller's stop, the
+// next item not yet taken (Shares::Dynamic) and, for each child, the item it took last.
+struct Board {
+  std::atomic<bool> stopping{false};
+  std::atomic<std::size_t> next{0};
+  // One slot per lane, placed right after the board in the mapping.
+  std::atomic<std::size_t>& current(std::size_t lane) {
+    return reinterpret_cast<std::atomic<std::size_t>*>(this + 1)[lane];
+  }
+
+  static constexpr std::size_t kNone = ~std::size_t(0);
+  static Board* make(std::size_t lanes) {
+    const std::size_t bytes = sizeof(Board) + sizeof(std::atomic<std::size_t>) * lanes;
+    void* shared = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+    if (shared == MAP_FAILED) return nullptr;
+    Board* b = new (shared) Board;
+    auto* slots = reinterpret_cast<std::atomic<std::size_t>*>(b + 1);
+    for (std::size_t j = 0; j < lanes; ++j) new (&slots[j]) std::atomic<std::size_t>(kNone);
+    return b;
+  }
+  static void release(Board* b, std::size_t lanes) {
+    if (b) munmap(b, sizeof(Board) + sizeof(std::atomic<std::size_t>) * lanes);
+  }
+};
 
 IsolatedResult run_in_process(const std::function<std::string()>& work) {
   IsolatedResult r;
@@ -71,40 +107,50 @@ struct Lane {
 std::vector<IsolatedResult> run_isolated_each(
     std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
     const std::function<void(std::size_t, IsolatedResult&)>& on_result, std::size_t max_output,
-    std::size_t jobs, const std::function<bool()>& stop) {
+    std::size_t jobs, const std::function<bool()>& stop, Shares shares) {
   std::vector<IsolatedResult> results(count);
-  // Set when `stop` says so; shared with the children, which look at it before each item.
-  std::atomic<bool>* stopping = nullptr;
-  if (stop) {
-    void* shared = mmap(nullptr, sizeof(std::atomic<bool>), PROT_READ | PROT_WRITE,
-                        MAP_SHARED | MAP_ANONYMOUS, -1, 0);
-    if (shared != MAP_FAILED) stopping = new (shared) std::atomic<bool>(false);
-  }
+  std::vector<char> handed(count, 0);  // the items whose result is in
+  jobs = std::max<std::size_t>(1, std::min(jobs, count));
+  Board* board = Board::make(jobs);
+  // Without the shared board, items cannot be taken one at a time: contiguous shares instead.
+  const bool dynamic = shares == Shares::Dynamic && board;
   bool stopped_by_caller = false;
   const auto finish = [&](std::size_t i, IsolatedResult r) {
+    handed[i] = 1;
     if (on_result) on_result(i, r);
     results[i] = std::move(r);
     if (stop && !stopped_by_caller && stop()) {
       stopped_by_caller = true;
-      if (stopping) stopping->store(true);
+      if (board) board->stopping.store(true);
     }
-  };
-  // The items of a share never started once the caller stopped the run.
-  const auto not_run = [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i < to; ++i) results[i].error = "not run";
   };
   const auto limit =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
   // Contiguous shares, one per child: item i always lands in the same share for a given count
-  // and jobs, so a rerun repeats every child's work item for item.
-  jobs = std::max<std::size_t>(1, std::min(jobs, count));
+  // and jobs, so a rerun repeats every child's work item for item. Dynamic: every child takes
+  // the next item nobody has taken (lane.next and lane.end are then unused).
   std::vector<Lane> lanes(jobs);
   for (std::size_t j = 0; j < jobs; ++j) {
-    lanes[j].next = count * j / jobs;
-    lanes[j].end = count * (j + 1) / jobs;
+    lanes[j].next = dynamic ? 0 : count * j / jobs;
+    lanes[j].end = dynamic ? 0 : count * (j + 1) / jobs;
   }
-  // Starts a child on the rest of the lane's share; false when no child could be made.
-  const auto start = [&](Lane& lane) {
+  // The lane's next item to work on, or nothing when its share (or the class) is done.
+  const auto take = [&](Lane& lane, std::size_t j) -> std::optional<std::size_t> {
+    if (board && board->stopping.load()) return std::nullopt;
+    if (!dynamic)
+      return lane.next < lane.end ? std::optional<std::size_t>(lane.next) : std::nullopt;
+    const std::size_t i = board->next.fetch_add(1);
+    if (i >= count) return std::nullopt;
+    board->current(j).store(i);
+    return i;
+  };
+  const auto work_left = [&](const Lane& lane) {
+    if (stopped_by_caller) return false;
+    return dynamic ? board->next.load() < count : lane.next < lane.end;
+  };
+  // Starts a child on the rest of the lane's work; false when no child could be made.
+  const auto start = [&](Lane& lane, std::size_t j) {
+    if (board) board->current(j).store(Board::kNone);
     int fds[2];
     const pid_t parent = getpid();
     const pid_t pid = pipe(fds) == 0 ? fork() : -1;
@@ -117,12 +163,11 @@ std::vector<IsolatedResult> run_isolated_each(
       close(fds[0]);
       for (const Lane& other : lanes)
         if (other.fd >= 0) close(other.fd);
-      for (std::size_t i = lane.next; i < lane.end; ++i) {
-        if (stopping && stopping->load()) break;
+      while (const std::optional<std::size_t> i = take(lane, j)) {
         std::string text;
         char status = 'O';
         try {
-          text = work(i);
+          text = work(*i);
         } catch (const std::exception& e) {
           status = 'E';
           text = e.what();
@@ -130,7 +175,8 @@ std::vector<IsolatedResult> run_isolated_each(
           status = 'E';
           text = "unknown error";
         }
-        if (!write_frame(fds[1], status, text)) _exit(3);
+        if (!write_frame(fds[1], *i, status, text)) _exit(3);
+        ++lane.next;  // this process's copy of the lane
       }
       close(fds[1]);
       _exit(0);
@@ -146,7 +192,7 @@ std::vector<IsolatedResult> run_isolated_each(
   // The child stopped (stop says why): the item it was on gets the reason, a fresh child
   // carries on after it.
   enum class Stop { Timeout, TooBig, Eof };
-  const auto stopped = [&](Lane& lane, Stop stop) {
+  const auto stopped = [&](Lane& lane, std::size_t j, Stop stop) {
     close(lane.fd);
     lane.fd = -1;
     if (stop != Stop::Eof) kill(lane.pid, SIGKILL);
@@ -154,12 +200,18 @@ std::vector<IsolatedResult> run_isolated_each(
     while (waitpid(lane.pid, &status, 0) < 0 && errno == EINTR) {
     }
     lane.pid = -1;
-    if (lane.next >= lane.end) return;
-    if (stopped_by_caller) {  // the child stopped before its next item, as asked
-      not_run(lane.next, lane.end);
-      lane.next = lane.end;
-      return;
-    }
+    // The item the child was on: the one whose result it was sending, else the next of its
+    // share or the last it took.
+    std::size_t on = Board::kNone;
+    if (lane.data.size() - lane.offset >= kFrameHeader)
+      on = little_endian(lane.data.data() + lane.offset + 8);
+    else if (!dynamic && lane.next < lane.end)
+      on = lane.next;
+    else if (dynamic)
+      on = board->current(j).load();
+    if (on >= count || handed[on]) return;
+    if (stopped_by_caller && stop == Stop::Eof && !WIFSIGNALED(status) && WEXITSTATUS(status) == 0)
+      return;  // the child stopped before its next item, as asked
     IsolatedResult r;
     if (stop == Stop::Timeout) {
       r.status = IsolatedResult::Status::Timeout;
@@ -175,26 +227,34 @@ std::vector<IsolatedResult> run_isolated_each(
       r.error =
           fmt::format("the grader stopped without a result (exit status {})", WEXITSTATUS(status));
     }
-    finish(lane.next++, std::move(r));
+    if (!dynamic) ++lane.next;
+    finish(on, std::move(r));
   };
   // Hands over every complete frame the lane holds.
   const auto drain = [&](Lane& lane) {
-    while (lane.data.size() - lane.offset >= 9 && lane.next < lane.end) {
-      std::uint64_t size = 0;
-      for (int i = 0; i < 8; ++i)
-        size |= std::uint64_t(static_cast<unsigned char>(lane.data[lane.offset + i])) << (8 * i);
+    while (lane.data.size() - lane.offset >= kFrameHeader) {
+      const std::uint64_t size = little_endian(lane.data.data() + lane.offset);
       if (lane.data.size() - lane.offset - 8 < size) break;
+      const std::size_t i = little_endian(lane.data.data() + lane.offset + 8);
       IsolatedResult r;
-      const char status = lane.data[lane.offset + 8];
-      std::string text = lane.data.substr(lane.offset + 9, size - 1);
+      const char status = lane.data[lane.offset + 16];
+      std::string text = lane.data.substr(lane.offset + kFrameHeader, size - 9);
       if (status == 'O') {
         r.status = IsolatedResult::Status::Ok;
         r.output = std::move(text);
       } else {
         r.error = std::move(text);
       }
+      // A result for an item the child was not given: the child is killed, and the item it
+      // was on fails as a crash when its pipe closes.
+      if (i >= count || handed[i] || (!dynamic && i != lane.next)) {
+        kill(lane.pid, SIGKILL);
+        lane.offset = lane.data.size();
+        break;
+      }
       lane.offset += 8 + size;
-      finish(lane.next++, std::move(r));
+      if (!dynamic) ++lane.next;
+      finish(i, std::move(r));
       lane.deadline = Clock::now() + limit;
     }
     if (lane.offset > (1u << 20)) {
@@ -207,61 +267,74 @@ std::vector<IsolatedResult> run_isolated_each(
     // Every lane with work left has a child (a lane whose child cannot be made works here,
     // without a time limit).
     std::vector<pollfd> polls;
-    std::vector<Lane*> polled;
-    for (Lane& lane : lanes) {
-      if (lane.fd < 0 && lane.next < lane.end && stopped_by_caller) {
-        not_run(lane.next, lane.end);
-        lane.next = lane.end;
-      }
-      if (lane.fd < 0 && lane.next < lane.end && !start(lane))
-        while (lane.next < lane.end) {
-          if (stopped_by_caller) {
-            not_run(lane.next, lane.end);
-            lane.next = lane.end;
-            break;
-          }
-          const std::size_t i = lane.next++;
-          finish(i, run_in_process([&] { return work(i); }));
+    std::vector<std::size_t> polled;
+    for (std::size_t j = 0; j < lanes.size(); ++j) {
+      Lane& lane = lanes[j];
+      if (lane.fd < 0 && work_left(lane) && !start(lane, j))
+        while (work_left(lane)) {
+          const std::optional<std::size_t> i = take(lane, j);
+          if (!i) break;
+          if (!dynamic) ++lane.next;
+          finish(*i, run_in_process([&] { return work(*i); }));
         }
       if (lane.fd >= 0) {
         polls.push_back({lane.fd, POLLIN, 0});
-        polled.push_back(&lane);
+        polled.push_back(j);
       }
     }
     if (polls.empty()) break;
     long long wait_ms = 1000;
-    for (const Lane* lane : polled)
+    for (const std::size_t j : polled)
       wait_ms = std::min<long long>(wait_ms, std::chrono::duration_cast<std::chrono::milliseconds>(
-                                                 lane->deadline - Clock::now())
+                                                 lanes[j].deadline - Clock::now())
                                                  .count());
     const int ready =
         poll(polls.data(), polls.size(), static_cast<int>(std::max<long long>(wait_ms, 0)));
     if (ready < 0) continue;  // EINTR: poll again
     for (std::size_t k = 0; k < polls.size(); ++k) {
-      Lane& lane = *polled[k];
+      const std::size_t j = polled[k];
+      Lane& lane = lanes[j];
       if (ready > 0 && (polls[k].revents & (POLLIN | POLLHUP | POLLERR))) {
         const ssize_t n = read(lane.fd, buffer, sizeof buffer);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) {
           drain(lane);
-          stopped(lane, Stop::Eof);
+          stopped(lane, j, Stop::Eof);
           continue;
         }
         lane.data.append(buffer, static_cast<std::size_t>(n));
         drain(lane);
-        if (lane.next >= lane.end) {
-          stopped(lane, Stop::Eof);
+        if (!dynamic && lane.next >= lane.end) {
+          stopped(lane, j, Stop::Eof);
           continue;
         }
         if (lane.data.size() - lane.offset > max_output) {
-          stopped(lane, Stop::TooBig);
+          stopped(lane, j, Stop::TooBig);
           continue;
         }
       }
-      if (lane.fd >= 0 && Clock::now() >= lane.deadline) stopped(lane, Stop::Timeout);
+      if (lane.fd >= 0 && Clock::now() >= lane.deadline) stopped(lane, j, Stop::Timeout);
     }
   }
-  if (stopping) munmap(stopping, sizeof(std::atomic<bool>));
+  Board::release(board, jobs);
+  // Items without a result: never started once the caller stopped, or (Dynamic) taken by a
+  // child killed in the instant between taking an item and saying so — those run again, alone.
+  std::vector<std::size_t> left;
+  for (std::size_t i = 0; i < count; ++i)
+    if (!handed[i]) {
+      if (stopped_by_caller)
+        results[i].error = "not run";
+      else
+        left.push_back(i);
+    }
+  if (!left.empty()) {
+    run_isolated_each(
+        left.size(), [&](std::size_t k) { return work(left[k]); }, seconds,
+        [&](std::size_t k, IsolatedResult& r) { finish(left[k], std::move(r)); }, max_output, 1,
+        [&] { return stopped_by_caller; });
+    for (const std::size_t i : left)
+      if (!handed[i]) results[i].error = "not run";
+  }
   return results;
 }
 

@@ -23,13 +23,24 @@ struct IsolatedResult {
 IsolatedResult run_isolated(const std::function<std::string()>& work, double seconds,
                             std::size_t max_output = 64u << 20);
 
+// How run_isolated_each hands items to its `jobs` children.
+enum class Shares {
+  // Cut into `jobs` contiguous shares, one per child: item i lands in the same child for a given
+  // count and jobs (a caller that relies on each child seeing only its own share's items).
+  Contiguous,
+  // Each child takes the next item nobody has taken yet: the children finish together however
+  // uneven the items or the machine's load (a caller whose items are independent).
+  Dynamic,
+};
+
 // Runs work(0) … work(count − 1) in child processes, each item under its own time limit, and
-// returns one result per item in order. The items are cut into `jobs` contiguous shares; one
-// child per share works through it and streams each result back as it finishes (so a class
-// costs one fork per share, not one per student); when an item times out or crashes its child,
-// that item alone is marked and a fresh child carries on with the next of that share.
-// `on_result` (optional) is called in this process after each item, in each share's order
-// (shares interleave); what it moves out of the result (the output) is not kept.
+// returns one result per item in order. `jobs` children share the items (`shares` says how) and
+// stream each result back as it finishes (so a class costs one fork per child, not one per
+// student); when an item times out or crashes its child, that item alone is marked and a fresh
+// child carries on.
+// `on_result` (optional) is called in this process after each item: in each share's order
+// (shares interleave) when Contiguous, in the order items finish when Dynamic; what it moves out
+// of the result (the output) is not kept.
 // `stop` (optional) is asked after each on_result: once it says true, each child finishes the
 // item it is on (its result is handed over as usual) and starts no other; the items never
 // started are left Failed ("not run") without an on_result call.
@@ -37,6 +48,6 @@ std::vector<IsolatedResult> run_isolated_each(
     std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
     const std::function<void(std::size_t index, IsolatedResult&)>& on_result = {},
     std::size_t max_output = 64u << 20, std::size_t jobs = 1,
-    const std::function<bool()>& stop = {});
+    const std::function<bool()>& stop = {}, Shares shares = Shares::Contiguous);
 
 }  // namespace frustum
