@@ -6,7 +6,10 @@ Python + NumPy peer that grades the same class files.
   workloads.py gen-set SET.yaml                   the plane-method exercise with ranges wide enough
                                                   for 100 000 distinct variants (for `generate`)
   workloads.py class DIR KEY.json N               N answer files (KEY.json: `frustum solve --format json`)
-  workloads.py peer SET.yaml KEY.json DIR OUT.csv the NumPy peer: parse every file, grade, write a gradebook
+  workloads.py peer SET.yaml KEY.json DIR OUT.csv [c|python]
+                                                  the NumPy peer: parse every file, grade, write a gradebook;
+                                                  its YAML read by PyYAML's C loader (c, the default) or by
+                                                  its own Python loader (python: what yaml.safe_load gives)
   workloads.py scene FILE N                       a render scene of about N small triangles
   workloads.py mesh FILE N                        an edge_visibility problem: a closed torus of about N faces
 """
@@ -71,13 +74,17 @@ def write_class(directory, key_json, n):
             f.write("\n".join(lines) + "\n")
 
 
-def peer(key_json, directory, out_csv):
+def peer(key_json, directory, out_csv, loader_name="c"):
     # What a course's own script would do: read each file, compare in bulk with NumPy
     # (normal up to a positive multiple, plane up to a non-zero multiple, z with rtol 1e-2),
-    # write one gradebook line per student.
+    # write one gradebook line per student. yaml.safe_load, the call a plain script makes, uses
+    # the Python loader; the C loader (libyaml, which Frustum uses too) must be asked for.
     import numpy as np
     import yaml
-    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    if loader_name == "python":
+        loader = yaml.SafeLoader
+    else:
+        loader = yaml.CSafeLoader  # python3-yaml is built with libyaml on Debian
     key = key_of(key_json)
     ids = list(key)
     kn = np.array([key[i]["normal"] for i in ids], float)
@@ -153,7 +160,7 @@ if __name__ == "__main__":
     elif cmd == "class":
         write_class(args[0], args[1], int(args[2]))
     elif cmd == "peer":
-        peer(args[1], args[2], args[3])
+        peer(args[1], args[2], args[3], *(args[4:5] or ["c"]))
     elif cmd == "scene":
         scene(args[0], int(args[1]))
     elif cmd == "mesh":
