@@ -10,15 +10,17 @@
 #include <string>
 #include <vector>
 
+#include "solver/raster/large_buffer.hpp"
 #include "solver/raster/rasterizer.hpp"
 
 namespace frustum {
 
-// A width × height grid of pixels, (i, j) with j = 0 the bottom row.
+// A width × height grid of pixels, (i, j) with j = 0 the bottom row (a large grid on huge
+// pages where the kernel offers them: large_buffer.hpp).
 template <typename P>
 struct Image {
   int width = 0, height = 0;
-  std::vector<P> data;
+  std::vector<P, LargeBufferAllocator<P>> data;
   Image() = default;
   Image(int w, int h, const P& fill)
       : width(w),
