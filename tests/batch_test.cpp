@@ -189,6 +189,36 @@ TEST(Isolate, DynamicSharesGiveTheRestToTheFreeChild) {
   fs::remove_all(marker.parent_path());
 }
 
+// A child runs ahead while this process is busy: its results wait in a pipe of 1 MiB (the
+// default 64 KiB stalled generate's children while it synced and renamed a group of files). The
+// first result's handler waits until the last item is done, which the child reaches only if
+// 200 kB of results fit in the pipe.
+TEST(Isolate, AChildRunsAheadWhileTheParentIsBusy) {
+  std::ifstream limit("/proc/sys/fs/pipe-max-size");
+  long max_pipe = 0;
+  limit >> max_pipe;
+  if (max_pipe < (1 << 20)) GTEST_SKIP() << "pipes are limited to " << max_pipe << " bytes here";
+  const fs::path marker = scratch("ahead") / "last-done";
+  bool waited_for_nothing = false;
+  const auto results = run_isolated_each(
+      500,
+      [&](std::size_t i) -> std::string {
+        if (i == 499) test::write_file(marker, "done");
+        return std::string(400, 'a' + static_cast<char>(i % 26));
+      },
+      60,
+      [&](std::size_t i, const IsolatedResult&) {
+        if (i != 0) return;
+        for (int k = 0; k < 500 && !fs::exists(marker); ++k)
+          std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        waited_for_nothing = !fs::exists(marker);
+      });
+  EXPECT_FALSE(waited_for_nothing) << "the child stopped before its last item";
+  for (std::size_t i = 0; i < 500; ++i)
+    ASSERT_EQ(results[i].output, std::string(400, 'a' + static_cast<char>(i % 26))) << i;
+  fs::remove_all(marker.parent_path());
+}
+
 // A class of five: right, wrong, broken YAML, empty, and too big.
 fs::path make_class(const fs::path& dir) {
   const fs::path in = dir / "in";
