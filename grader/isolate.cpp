@@ -101,6 +101,7 @@ struct Lane {
   int fd = -1;
   std::string data;
   std::size_t offset = 0;  // start of the frame being read
+  bool broken = false;     // the child sent a frame it had no item for: what follows is not read
   Clock::time_point deadline;
 };
 
@@ -192,6 +193,7 @@ std::vector<IsolatedResult> run_isolated_each(
     lane.fd = fds[0];
     lane.data.clear();
     lane.offset = 0;
+    lane.broken = false;
     lane.deadline = Clock::now() + limit;
     return true;
   };
@@ -209,7 +211,7 @@ std::vector<IsolatedResult> run_isolated_each(
     // The item the child was on: the one whose result it was sending, else the next of its
     // share or the last it took.
     std::size_t on = Board::kNone;
-    if (lane.data.size() - lane.offset >= kFrameHeader)
+    if (!lane.broken && lane.data.size() - lane.offset >= kFrameHeader)
       on = little_endian(lane.data.data() + lane.offset + 8);
     else if (!dynamic && lane.next < lane.end)
       on = lane.next;
@@ -238,7 +240,7 @@ std::vector<IsolatedResult> run_isolated_each(
   };
   // Hands over every complete frame the lane holds.
   const auto drain = [&](Lane& lane) {
-    while (lane.data.size() - lane.offset >= kFrameHeader) {
+    while (!lane.broken && lane.data.size() - lane.offset >= kFrameHeader) {
       const std::uint64_t size = little_endian(lane.data.data() + lane.offset);
       if (lane.data.size() - lane.offset - 8 < size) break;
       const std::size_t i = little_endian(lane.data.data() + lane.offset + 8);
@@ -255,7 +257,7 @@ std::vector<IsolatedResult> run_isolated_each(
       // was on fails as a crash when its pipe closes.
       if (i >= count || handed[i] || (!dynamic && i != lane.next)) {
         kill(lane.pid, SIGKILL);
-        lane.offset = lane.data.size();
+        lane.broken = true;
         break;
       }
       lane.offset += 8 + size;
