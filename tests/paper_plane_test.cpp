@@ -4,9 +4,11 @@
 // zero coefficients and planes mixing roots, where the fast path must step aside.
 #include <gtest/gtest.h>
 
+#include "solver/geometry/plane_depth.hpp"
 #include "solver/problem/rng.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/util/exact_format.hpp"
+#include "test_util.hpp"
 
 namespace frustum {
 namespace {
@@ -47,6 +49,44 @@ TEST(PaperPlane, FastPathAgreesWithTheQuotients) {
                 small(-2, 2));
     expect_same(Vec3<Exact>(small(1, 3), GiNaC::sqrt(Exact(8)) * small(-2, 2), 1), small(0, 2));
   }
+}
+
+// depth_at_pixel's exact z is found on the plane scaled by ‖n‖ (rationals only) when n, A and the
+// pixel are rational: it must be the z of the plane method's own reading, canonical() of
+// (d − n̂ₓxₛ − n̂_y yₛ)/n̂_z with n̂ = n/‖n‖ and d = n̂·A, over many triangles and pixels (rational
+// ones with fractions, and a pixel with a root, where the scaled plane steps aside).
+TEST(PaperPlane, ExactDepthOnTheScaledPlaneIsThePlaneMethodsZ) {
+  Rng rng(1811);
+  const auto small = [&](std::int64_t lo, std::int64_t hi) { return Exact(rng.integer(lo, hi)); };
+  int solved = 0;
+  for (int k = 0; k < 400; ++k) {
+    std::array<Vec3<Exact>, 3> t;
+    for (Vec3<Exact>& v : t)
+      v = Vec3<Exact>(small(-20, 20), small(-20, 20),
+                      small(1, 40) / (k % 3 == 0 ? small(1, 5) : 1));
+    Vec2<Exact> pixel(small(-5, 5) / small(1, 3), small(-5, 5));
+    if (k % 10 == 0) pixel(1) = GiNaC::sqrt(Exact(2));
+    const Vec3<Exact> n = (t[2] - t[0]).cross(t[1] - t[0]);  // AC × AB, the default order
+    if (n(2).is_zero()) continue;
+    const Exact plain = canonical(plane_method_z(plane_through(n, t[0]), pixel));
+    std::string given = "{triangle: [";
+    for (const Vec3<Exact>& v : t)
+      given += "[" + format_exact(v(0), MathStyle::Plain) + ", " +
+               format_exact(v(1), MathStyle::Plain) + ", " + format_exact(v(2), MathStyle::Plain) +
+               "], ";
+    given += "], pixel: [" + format_exact(pixel(0), MathStyle::Plain) + ", " +
+             format_exact(pixel(1), MathStyle::Plain) + "]}";
+    const ProblemResult r =
+        test::solve_yaml(test::one("depth_at_pixel", given, "", "    ask: [z]\n"), false);
+    if (r.error) continue;  // edge-on in the plane of the screen: refused, as it should be
+    ++solved;
+    const Value* z = r.answers.find("z");
+    ASSERT_TRUE(z && z->exact.size() == 1) << given;
+    EXPECT_TRUE(z->exact[0].is_equal(plain))
+        << given << ": " << format_exact(z->exact[0], MathStyle::Plain) << " vs "
+        << format_exact(plain, MathStyle::Plain);
+  }
+  EXPECT_GT(solved, 300);
 }
 
 }  // namespace

@@ -23,6 +23,23 @@ namespace {
 // The decisions (edge-on, the pixel's edge signs) are geometry's edge_on_sign and pixel_sides,
 // shared by the exact solve, the numeric path and the barycentric kind.
 
+// The plane on which the exact solve evaluates plane_method_z: n̂·p = d itself or, when the
+// normal n, the point A and the pixel are rational, the same plane scaled by ‖n‖ (n·p = n·A).
+// z = (d − a·xₛ − b·yₛ)/c does not change with the plane's scale, so z is the same rational,
+// found by dividing rationals instead of clearing the square roots of n̂ and d.
+PlaneDepth<Exact> rational_plane(const PlaneDepth<Exact>& unit, const Vec3<Exact>& n,
+                                 const Vec3<Exact>& a, const Vec2<Exact>& pixel) {
+  const auto rational = [](const Exact& e) {
+    return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational();
+  };
+  for (int i = 0; i < 3; ++i)
+    if (!rational(n(i)) || !rational(a(i)) || (i < 2 && !rational(pixel(i)))) return unit;
+  PlaneDepth<Exact> scaled = unit;
+  scaled.unit_normal = n;
+  scaled.d = n.dot(a);
+  return scaled;
+}
+
 std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exact>, 3>& triangle,
                                                       const Vec2<Exact>& pixel,
                                                       const CrossOrder& order, Precision p) {
@@ -262,7 +279,7 @@ struct DepthAtPixel {
     const Exact& b = plane[1];
     const Exact& c = plane[2];
     if (edge_on_sign(g.triangle, g.triangle, true).sign == 0) refuse_edge_on_triangle("triangle");
-    const Exact z = canonical(plane_method_z(r, g.pixel));
+    const Exact z = canonical(plane_method_z(rational_plane(r, n, A, g.pixel), g.pixel));
     out.set("z", Value::scalar(z));
     if (steps) {
       steps->add("Depth at the pixel",
