@@ -50,15 +50,21 @@ namespace {
 // returns its name. Nothing is left behind on failure.
 std::string write_temporary(const std::string& path, const std::string& content, bool sync) {
   const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-  if (ec) throw std::runtime_error(path + ": cannot create its directory: " + ec.message());
-  std::string tmp =
+  const std::string pattern =
       (target.has_parent_path() ? target.parent_path() / ("." + target.filename().string())
                                 : fs::path("." + target.filename().string()))
           .string() +
       ".XXXXXX";
-  const int fd = mkstemp(tmp.data());
+  std::string tmp = pattern;
+  int fd = mkstemp(tmp.data());
+  if (fd < 0 && errno == ENOENT && target.has_parent_path()) {
+    // The directory is made when it is missing, not looked up before every file.
+    std::error_code ec;
+    fs::create_directories(target.parent_path(), ec);
+    if (ec) throw std::runtime_error(path + ": cannot create its directory: " + ec.message());
+    tmp = pattern;
+    fd = mkstemp(tmp.data());
+  }
   if (fd < 0) fail(path, "cannot create a temporary file");
   try {
     write_all(fd, content, path);
