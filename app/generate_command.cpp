@@ -253,12 +253,20 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   // A variant's text (its FNV-1a hash: bodies are not kept) → the first variant that has it.
   std::unordered_map<std::uint64_t, std::string> seen;
   // Written in groups, each made durable by one sync (FileBatch); paths are printed once their
-  // group is in place.
+  // group is in place. A group is synced and renamed by a child process while this one goes on
+  // taking variants (the workers' results would otherwise wait in their pipes).
   FileBatch files;
-  std::vector<std::string> written;
+  std::vector<std::string> written;     // staged since the last group
+  std::vector<std::string> committing;  // the group being put in place
+  const auto group_done = [&] {
+    files.wait_commit();
+    for (const std::string& line : committing) o.out << line << "\n";
+    committing.clear();
+  };
   const auto flush = [&] {
-    files.commit();
-    for (const std::string& line : written) o.out << line << "\n";
+    group_done();
+    files.commit_in_background();
+    committing = std::move(written);
     written.clear();
   };
   // A variant's messages and files, in variant order; `stage` puts its two files in the batch
@@ -438,7 +446,10 @@ int run_generate(const GenerateCommand& g, const Output& o) {
       take_here({variant_name(students[i]), students[i], std::move(class_variants[i])});
   }
   try {
-    if (!failed) flush();
+    if (!failed) {
+      flush();
+      group_done();
+    }
   } catch (const std::exception& e) {
     o.err << "error: " << e.what() << "\n";
     failed = true;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -113,7 +114,61 @@ void write_file_atomically(const std::string& path, const std::string& content) 
 }
 
 FileBatch::~FileBatch() {
+  try {
+    wait_commit();
+  } catch (const std::exception&) {  // already reported by the caller's own wait, or moot
+  }
   for (const Pending& p : pending_) ::unlink(p.temporary.c_str());
+}
+
+void FileBatch::commit_in_background() {
+  wait_commit();
+  if (pending_.empty()) return;
+  int fds[2];
+  const pid_t pid = ::pipe2(fds, O_CLOEXEC) == 0 ? ::fork() : -1;
+  if (pid < 0) {
+    commit();
+    return;
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    int status = 0;
+    try {
+      commit();
+    } catch (const std::exception& e) {
+      const std::string message = e.what();
+      (void)!::write(fds[1], message.data(), message.size());
+      for (const Pending& p : pending_) ::unlink(p.temporary.c_str());
+      status = 1;
+    }
+    ::_exit(status);
+  }
+  ::close(fds[1]);
+  committer_ = pid;
+  committer_fd_ = fds[0];
+  pending_.clear();  // the child's to rename now
+}
+
+void FileBatch::wait_commit() {
+  if (committer_ < 0) return;
+  std::string message;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(committer_fd_, buffer, sizeof buffer)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    message.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(committer_fd_);
+  int status = 0;
+  while (::waitpid(committer_, &status, 0) < 0 && errno == EINTR) {
+  }
+  committer_ = -1;
+  committer_fd_ = -1;
+  if (!message.empty()) throw std::runtime_error(message);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error(
+        "the files of a group could not be put in place (the process that "
+        "renames them stopped)");
 }
 
 void FileBatch::stage(const std::string& path, const std::string& content) {
@@ -147,6 +202,7 @@ void FileBatch::adopt(const std::string& temporary, const std::string& path) {
 void FileBatch::discard(const std::string& temporary) { ::unlink(temporary.c_str()); }
 
 void FileBatch::commit() {
+  wait_commit();
   if (pending_.empty()) return;
   std::vector<std::string> dirs;
   for (const Pending& p : pending_)

@@ -39,11 +39,21 @@ class FileBatch {
   static void discard(const std::string& temporary);
   std::size_t staged() const { return pending_.size(); }
 
+  // commit() of what is staged now, done by a child process while this one carries on (generate
+  // keeps taking its workers' results while a group of files is synced and renamed); staging
+  // starts again empty. wait_commit() waits for it and throws its error, as commit() would have.
+  // One at a time: commit_in_background() first waits for the one before, and so does commit().
+  // Where no process can be made, the commit is done here. The destructor waits for it too.
+  void commit_in_background();
+  void wait_commit();
+
  private:
   struct Pending {
     std::string temporary, target;
   };
   std::vector<Pending> pending_;
+  int committer_ = -1;     // the process committing in the background (a pid), or -1
+  int committer_fd_ = -1;  // its error message, read when it ends
 };
 
 // A batch's outputs under `dir`, published all at once. Layout:

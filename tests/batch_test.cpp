@@ -88,6 +88,62 @@ TEST(AtomicFile, WritesTheWholeFileAndLeavesNoTemporaryBehind) {
   fs::remove_all(dir);
 }
 
+// Hidden files (the temporary files of staged outputs) left in a directory.
+std::vector<std::string> hidden_files(const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir))
+    if (e.path().filename().string().rfind('.', 0) == 0) out.push_back(e.path().string());
+  return out;
+}
+
+// A group committed in the background (generate's groups of files): in place once waited for,
+// while the next group is staged meanwhile and stays out of sight until its own commit.
+TEST(FileBatch, AGroupCommittedInTheBackgroundIsInPlaceOnceWaitedFor) {
+  const fs::path dir = scratch("background");
+  FileBatch files;
+  for (int i = 0; i < 50; ++i)
+    files.stage((dir / "a" / fmt::format("f{}.txt", i)).string(), fmt::format("first {}", i));
+  files.commit_in_background();
+  EXPECT_EQ(files.staged(), 0u);
+  for (int i = 0; i < 50; ++i)
+    files.stage((dir / "b" / fmt::format("f{}.txt", i)).string(), fmt::format("second {}", i));
+  files.wait_commit();
+  for (int i = 0; i < 50; ++i) {
+    EXPECT_EQ(test::read_file(dir / "a" / fmt::format("f{}.txt", i)), fmt::format("first {}", i));
+    EXPECT_FALSE(fs::exists(dir / "b" / fmt::format("f{}.txt", i)));
+  }
+  EXPECT_TRUE(hidden_files(dir / "a").empty());
+  files.commit_in_background();
+  files.commit();  // waits for the group in flight first
+  for (int i = 0; i < 50; ++i)
+    EXPECT_EQ(test::read_file(dir / "b" / fmt::format("f{}.txt", i)), fmt::format("second {}", i));
+  EXPECT_TRUE(hidden_files(dir).empty());
+  fs::remove_all(dir);
+}
+
+// A background commit that cannot put a file in place: its error (naming the file) comes back
+// from wait_commit(), as commit() would have thrown it, and no temporary file is left.
+TEST(FileBatch, ABackgroundCommitThatFailsReportsItsErrorAndLeavesNoTemporaryFile) {
+  const fs::path dir = scratch("background-fails");
+  FileBatch files;
+  for (int i = 0; i < 5; ++i)
+    files.stage((dir / fmt::format("f{}.txt", i)).string(), fmt::format("file {}", i));
+  // A directory where one file is to go: the rename over it fails.
+  fs::create_directories(dir / "f2.txt");
+  test::write_file(dir / "f2.txt" / "inside", "in the way");
+  files.commit_in_background();
+  try {
+    files.wait_commit();
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("f2.txt: cannot rename into place"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(hidden_files(dir).empty()) << hidden_files(dir)[0];
+  files.commit();  // nothing is left to commit, nothing is thrown again
+  fs::remove_all(dir);
+}
+
 TEST(Isolate, SlowAndCrashingItemsCostOnlyTheirOwnResult) {
   std::vector<std::size_t> seen;
   const auto results = run_isolated_each(
