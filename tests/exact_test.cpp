@@ -200,36 +200,6 @@ TEST(Exact, CanonicalSquareRootsOfRationalsSquareBack) {
   }
 }
 
-// canonical() builds its radicals held (make_radical), as GiNaC's evaluation would leave them:
-// each is the same expression as GiNaC's own evaluated power (equal, same hash, same printing),
-// and arithmetic on it evaluates as on GiNaC's (√k·√k = k, √k·√m merged by canonical()).
-TEST(Exact, CanonicalRadicalsAreGinacsOwnEvaluatedPowers) {
-  for (long k = 2; k < 3000; ++k)
-    for (const long index : {2L, 3L, 4L, 6L}) {
-      const ex c = canonical(root(k, index));
-      // c = coeff · d^(1/r) with d the part left under the root: rebuild it with GiNaC.
-      ex evaluated = c;
-      if (GiNaC::is_a<GiNaC::mul>(c) || GiNaC::is_a<GiNaC::power>(c)) {
-        ex rebuilt = 1;
-        for (std::size_t i = 0; i < (GiNaC::is_a<GiNaC::mul>(c) ? c.nops() : 1); ++i) {
-          const ex f = GiNaC::is_a<GiNaC::mul>(c) ? c.op(i) : c;
-          rebuilt *= GiNaC::is_a<GiNaC::power>(f) ? GiNaC::pow(f.op(0).eval(), f.op(1).eval()) : f;
-        }
-        evaluated = rebuilt;
-      }
-      ASSERT_TRUE(c.is_equal(evaluated))
-          << k << "^(1/" << index << "): " << c << " vs " << evaluated;
-      ASSERT_EQ(c.gethash(), evaluated.gethash()) << c;
-      std::ostringstream a, b;
-      a << c;
-      b << evaluated;
-      ASSERT_EQ(a.str(), b.str());
-      ASSERT_TRUE(GiNaC::pow(c, index).expand().is_equal(ex(k))) << c;
-    }
-  EXPECT_TRUE(canonical(sqrt_of(6) * sqrt_of(10)).is_equal(2 * sqrt_of(15)));
-  EXPECT_TRUE((canonical(sqrt_of(7)) * canonical(sqrt_of(7))).is_equal(ex(7)));
-}
-
 TEST(Exact, CanonicalCubeRootsOfRationalsCubeBack) {
   std::mt19937 rng(7);
   std::uniform_int_distribution<long> pick(1, 3000);

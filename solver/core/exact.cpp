@@ -119,15 +119,11 @@ void reduce_index(cln::cl_I& radicand, unsigned& index) {
   }
 }
 
-// coeff * radicand^(1/index) as a GiNaC value (radicand >= 1). Once reduce_index has made the
-// radicand no perfect power of any divisor of the index, GiNaC's evaluation of the power would
-// only find again that its root is not rational and leave it as it is: the power is built held,
-// as evaluated, without computing that root a second time (exact_test checks that the two are
-// the same expression).
+// coeff * radicand^(1/index) as a GiNaC value (radicand >= 1).
 ex make_radical(const numeric& coeff, cln::cl_I radicand, unsigned index) {
   reduce_index(radicand, index);
   if (radicand == 1 || index == 1) return coeff * numeric(cln::cl_N(radicand));
-  return coeff * ex(GiNaC::power(numeric(cln::cl_N(radicand)), numeric(1, long(index))).hold());
+  return coeff * GiNaC::pow(ex(numeric(cln::cl_N(radicand))), ex(numeric(1, long(index))));
 }
 
 bool is_positive_rational(const ex& e) {
