@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "solver/core/work_budget.hpp"
+#include "solver/util/expression.hpp"
 
 namespace frustum {
 namespace {
@@ -279,6 +280,37 @@ TEST(Exact, CanonicalProvesNestedRadicalZeros) {
   EXPECT_EQ(exact_sign(a - tiny), -1);
   // A nested radical that is not zero keeps its form.
   EXPECT_FALSE(canonical(GiNaC::sqrt(5 + 2 * sqrt_of(6)) - sqrt_of(2)).is_zero());
+}
+
+// The zero proof eliminates each square root by the product of the values at ±√ (no Sylvester
+// determinant): √(a + b + 2√(ab)) = √a + √b is proven for many a, b, also scaled; 10⁻⁴⁰ away
+// it is not zero and the sign is right. And the answer a fuzzer found
+// (whose proof by GiNaC's resultant took seconds) is a non-zero value of the right sign.
+TEST(Exact, CanonicalProvesDenestedZerosOverManyRadicands) {
+  std::mt19937 rng(1812);
+  std::uniform_int_distribution<long> pick(2, 60);
+  const ex tiny = GiNaC::pow(ex(10), -40);
+  for (int i = 0; i < 60; ++i) {
+    const long a = pick(rng), b = pick(rng), c = pick(rng);
+    const ex nested = GiNaC::sqrt(ex(a + b) + 2 * GiNaC::sqrt(ex(a * b)));
+    const ex zero = nested - sqrt_of(a) - sqrt_of(b);
+    EXPECT_TRUE(canonical(zero).is_zero()) << zero;
+    EXPECT_TRUE(canonical(zero * c / 7).is_zero()) << zero;
+    EXPECT_EQ(exact_sign(zero + tiny), 1) << zero;
+    EXPECT_EQ(exact_sign(zero - tiny), -1) << zero;
+    EXPECT_FALSE(canonical(nested - sqrt_of(a)).is_zero()) << zero;
+  }
+  const ExpressionResult found = parse_expression(
+      "16/(sqrt(27+16*23)+8/(4-29)-(10)^5)/((sqrt(6))^4*(sqrt(22/11+sqrt("
+      "4444444444444444444444444444444444444444444444427))/(sqrt(30+21/12)+sqrt(22*6)))^3+(10))^2");
+  ASSERT_TRUE(found);
+  const ex value = canonical(*found.value);
+  EXPECT_FALSE(value.is_zero());
+  // 16/(… − 10⁵)/(…)², the square about 10⁷⁰: a negative value near 10⁻⁷³, small enough
+  // beside its terms that the zero proof is tried.
+  EXPECT_EQ(exact_sign(value), -1);
+  EXPECT_LT(to_double(value), 0);
+  EXPECT_NEAR(to_double(value), to_double(*found.value), 1e-12 * std::abs(to_double(value)));
 }
 
 // A zero no simplification proves (sin² + cos² − 1 of an angle GiNaC keeps symbolic) is

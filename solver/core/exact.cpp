@@ -344,9 +344,11 @@ ex rationalize_denominator(const ex& e, WorkBudget& budget) {
 
 // ---- Zero of nested square roots (GiNaC does not denest √(5 + 2√6) = √2 + √3) ----
 
-// Square roots nested this deep in number, or polynomials of this degree, are not attempted.
+// Square roots nested this deep in number, or polynomials of this degree or this many terms,
+// are not attempted.
 constexpr std::size_t kMaxZeroProofRadicals = 6;
 constexpr int kMaxZeroProofDegree = 64;
+constexpr std::size_t kMaxZeroProofTerms = 4000;
 
 bool is_half_power(const ex& e) {
   if (!is_a<GiNaC::power>(e) || !is_a<numeric>(e.op(1))) return false;
@@ -392,6 +394,25 @@ struct RootsToSymbols : GiNaC::map_function {
 // y₁² − b₁) ∈ Q[x]. When R(x) = xᵏ·S(x) with k ≥ 1, every non-zero root of S has
 // |x| ≥ |s₀|/(|s₀| + max|sᵢ|) (Cauchy's bound on the reversed polynomial); N evaluated well
 // inside that bound is therefore 0. False when unproven (too many roots, other radicals).
+// The resultant of r and a·y² − b in y, up to a factor free of the other symbols' roots: r
+// reduced modulo y² = b/a is U + V·y, and the product of its values at y = ±√(b/a), cleared of
+// a's powers, is a·U'² − b·V'² (U' = a^m·U, V' = a^m·V, m = ⌊deg r / 2⌋). It vanishes wherever r
+// does at either root, so the value N stays a root in x. A few products, where GiNaC's resultant
+// takes the determinant of a Sylvester matrix, whose elimination swelled to seconds on some
+// answers depending on the order GiNaC keeps terms in (a fuzzer's find).
+ex eliminate_square_root(const ex& r, const GiNaC::symbol& y, const ex& a, const ex& b) {
+  const int n = r.degree(y);
+  const int m = n / 2;
+  ex u = 0, v = 0;
+  for (int k = 0; k <= n; ++k) {
+    const ex c = r.coeff(y, k);
+    if (c.is_zero()) continue;
+    const int half = k / 2;  // y^k = (b/a)^half · y^(k mod 2)
+    (k % 2 == 0 ? u : v) += c * GiNaC::pow(b, half) * GiNaC::pow(a, m - half);
+  }
+  return (a * u * u - b * v * v).expand();
+}
+
 bool proven_zero(const Exact& e) {
   {
     // Cheap on ordinary values: one evaluation shows most are far from 0.
@@ -415,8 +436,8 @@ bool proven_zero(const Exact& e) {
   for (std::size_t i = to_symbols.roots.size(); i-- > 0;) {
     const auto& [base, y] = to_symbols.roots[i];
     const ex parts = base.normal().numer_denom();
-    const ex relation = (parts.op(1) * y * y - parts.op(0)).expand();
-    r = GiNaC::resultant(r, relation, y).expand();
+    if (is_a<GiNaC::add>(r) && r.nops() > kMaxZeroProofTerms) return false;
+    r = eliminate_square_root(r, y, parts.op(1), parts.op(0));
     if (!r.is_polynomial(x) || r.degree(x) > kMaxZeroProofDegree) return false;
   }
   for (const auto& [base, y] : to_symbols.roots)
