@@ -313,6 +313,60 @@ TEST(Exact, CanonicalProvesDenestedZerosOverManyRadicands) {
   EXPECT_NEAR(to_double(value), to_double(*found.value), 1e-12 * std::abs(to_double(value)));
 }
 
+// Values are evaluated with each shared subexpression once: the same doubles as GiNaC's own
+// evalf() (to a few units in the last place), over random expressions that share parts, hold
+// negative bases under integer powers, roots, π and functions; and real stays real.
+TEST(Exact, SharedEvaluationIsGinacsEvalf) {
+  std::mt19937 rng(1913);
+  std::uniform_int_distribution<int> pick(0, 7);
+  std::uniform_int_distribution<long> small(-9, 9);
+  for (int round = 0; round < 300; ++round) {
+    std::vector<ex> parts = {ex(small(rng)) / 7, sqrt_of(1 + std::abs(small(rng))), GiNaC::Pi,
+                             ex(-5) / 2};
+    for (int step = 0; step < 12; ++step) {
+      const ex& a = parts[std::uniform_int_distribution<std::size_t>(0, parts.size() - 1)(rng)];
+      const ex& b = parts[std::uniform_int_distribution<std::size_t>(0, parts.size() - 1)(rng)];
+      switch (pick(rng)) {
+        case 0:
+          parts.push_back(a + b);
+          break;
+        case 1:
+          parts.push_back(a * b);
+          break;
+        case 2:
+          parts.push_back(GiNaC::pow(a, 2));
+          break;
+        case 3:
+          parts.push_back(GiNaC::pow(a, 3) - b);
+          break;
+        case 4:
+          parts.push_back(GiNaC::sqrt(GiNaC::pow(a, 2) + 1) + b);
+          break;
+        case 5:
+          parts.push_back(GiNaC::sin(a) + b / 3);
+          break;
+        case 6:
+          parts.push_back((a + 2) * (b - 1) + a);
+          break;
+        default:
+          parts.push_back(1 / (GiNaC::pow(a, 2) + 1) + b);
+          break;
+      }
+    }
+    const ex& e = parts.back();
+    const long saved = GiNaC::Digits;
+    GiNaC::Digits = 40;
+    const ex plain = e.evalf();
+    GiNaC::Digits = saved;
+    ASSERT_TRUE(GiNaC::is_a<numeric>(plain)) << e;
+    const numeric& p = GiNaC::ex_to<numeric>(plain);
+    if (!p.is_real()) continue;
+    EXPECT_TRUE(is_real_constant(e)) << e;
+    const double want = p.to_double();
+    EXPECT_NEAR(to_double(e), want, 4e-16 * std::max(1.0, std::abs(want))) << e;
+  }
+}
+
 // A zero no simplification proves (sin² + cos² − 1 of an angle GiNaC keeps symbolic) is
 // refused, never decided by the sign of the noise at the last precision; a value 10⁻²⁰⁰
 // away from it is decided by refinement.
