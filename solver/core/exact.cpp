@@ -294,10 +294,11 @@ class SharedEvalf : public GiNaC::map_function {
   std::unordered_map<const GiNaC::basic*, std::pair<ex, ex>> memo_;
 };
 
-// A real numeric approximation of e at the current precision, if there is one.
-bool evaluate_real(const ex& e, numeric& value) {
-  SharedEvalf evalf;
-  const ex v = evalf(e);
+// A real numeric approximation of e at the current precision, if there is one. `evalf` (when
+// given) carries what was evaluated over several calls at the same precision.
+bool evaluate_real(const ex& e, numeric& value, SharedEvalf* evalf = nullptr) {
+  SharedEvalf own;
+  const ex v = (evalf ? *evalf : own)(e);
   if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return false;
   value = ex_to<numeric>(v);
   return true;
@@ -444,10 +445,11 @@ bool proven_zero(const Exact& e) {
     // Cheap on ordinary values: one evaluation shows most are far from 0.
     const DigitsGuard guard(kSignDigits[0]);
     numeric approx, scale = 1;
-    if (!evaluate_real(e, approx)) return false;
+    SharedEvalf evalf;  // the terms' parts were evaluated with the whole
+    if (!evaluate_real(e, approx, &evalf)) return false;
     for (std::size_t i = 0; i < e.nops(); ++i) {
       numeric term;
-      if (evaluate_real(e.op(i), term)) scale += GiNaC::abs(term);
+      if (evaluate_real(e.op(i), term, &evalf)) scale += GiNaC::abs(term);
     }
     if (GiNaC::abs(approx) > scale / numeric(10).power(kSignDigits[0] / 2)) return false;
   }
@@ -537,7 +539,7 @@ Exact canonical(const Exact& e) {
 
 Exact canonical(const Exact& e, WorkBudget& budget) {
   // A rational is already canonical (most typed answers and most inputs are).
-  if (is_a<numeric>(e) && ex_to<numeric>(e).is_rational()) return e;
+  if (is_rational(e)) return e;
   if (!budget.spend(exact_size(e).work + normal_cost(e))) return e;
   ex current = e.expand().normal();
   for (int pass = 0; pass < kMaxCanonicalPasses; ++pass) {
@@ -564,6 +566,8 @@ bool has_symbol(const Exact& e) {
   }
   return false;
 }
+
+bool is_rational(const Exact& e) { return is_a<numeric>(e) && ex_to<numeric>(e).is_rational(); }
 
 bool is_real_constant(const Exact& e) {
   if (is_a<numeric>(e)) return ex_to<numeric>(e).is_real();
@@ -595,7 +599,7 @@ double to_double(const Exact& e) {
 }
 
 GiNaC::numeric rational_near(const Exact& e) {
-  if (is_a<numeric>(e) && ex_to<numeric>(e).is_rational()) return ex_to<numeric>(e);
+  if (is_rational(e)) return ex_to<numeric>(e);
   if (!is_real_constant(e)) throw std::domain_error("rational_near: not a real constant");
   const DigitsGuard guard(40);
   numeric value;

@@ -27,6 +27,9 @@ Exact canonical(const Exact& e, WorkBudget& budget);
 // True when e is a real number that contains no symbols (it may hold sqrt, pi, sin...).
 bool is_real_constant(const Exact& e);
 
+// True when e is a rational number (a GiNaC numeric that is rational).
+bool is_rational(const Exact& e);
+
 // True when e contains a symbol (a variable such as x) or a GiNaC wildcard anywhere.
 bool has_symbol(const Exact& e);
 

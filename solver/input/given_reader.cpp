@@ -55,7 +55,7 @@ std::string describe_node(const YAML::Node& n) {
 // The irrational values e is built from, nested ones included: √(2 + √3) holds √(2 + √3) and
 // √3. Rationals, and sums and products of atoms, are not atoms.
 void collect_atoms(const Exact& e, std::set<Exact, GiNaC::ex_is_less>& atoms) {
-  if (GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational()) return;
+  if (is_rational(e)) return;
   const bool whole_power = GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
                            GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer();
   if (!GiNaC::is_a<GiNaC::add>(e) && !GiNaC::is_a<GiNaC::mul>(e) && !whole_power) atoms.insert(e);

@@ -29,11 +29,8 @@ namespace {
 // found by dividing rationals instead of clearing the square roots of n̂ and d.
 PlaneDepth<Exact> rational_plane(const PlaneDepth<Exact>& unit, const Vec3<Exact>& n,
                                  const Vec3<Exact>& a, const Vec2<Exact>& pixel) {
-  const auto rational = [](const Exact& e) {
-    return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational();
-  };
   for (int i = 0; i < 3; ++i)
-    if (!rational(n(i)) || !rational(a(i)) || (i < 2 && !rational(pixel(i)))) return unit;
+    if (!is_rational(n(i)) || !is_rational(a(i)) || (i < 2 && !is_rational(pixel(i)))) return unit;
   PlaneDepth<Exact> scaled = unit;
   scaled.unit_normal = n;
   scaled.d = n.dot(a);

@@ -184,17 +184,14 @@ namespace {
 // x = q·R with q rational and R = 1 or a power of a positive rational (√3, as the components of
 // a unit normal n/‖n‖ and d = n̂·A are once canonical): q and R.
 bool rational_multiple(const Exact& x, GiNaC::numeric& q, Exact& root) {
-  const auto rational = [](const Exact& e) {
-    return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational();
-  };
-  if (rational(x)) {
+  if (is_rational(x)) {
     q = GiNaC::ex_to<GiNaC::numeric>(x);
     root = 1;
     return true;
   }
-  const bool product = GiNaC::is_a<GiNaC::mul>(x) && x.nops() == 2 && rational(x.op(1));
+  const bool product = GiNaC::is_a<GiNaC::mul>(x) && x.nops() == 2 && is_rational(x.op(1));
   const Exact& r = product ? x.op(0) : x;
-  if (!GiNaC::is_a<GiNaC::power>(r) || !rational(r.op(0)) || !rational(r.op(1)) ||
+  if (!GiNaC::is_a<GiNaC::power>(r) || !is_rational(r.op(0)) || !is_rational(r.op(1)) ||
       !GiNaC::ex_to<GiNaC::numeric>(r.op(0)).is_positive())
     return false;
   q = product ? GiNaC::ex_to<GiNaC::numeric>(x.op(1)) : GiNaC::numeric(1);
@@ -230,8 +227,7 @@ std::optional<std::array<Exact, 4>> rational_ratios(const std::array<Exact, 4>& 
   const Exact lead = exact_sign(c[first]) < 0 ? Exact(-c[first]) : c[first];
   for (int i = 0; i < 4; ++i) {
     r[i] = canonical(c[i] / lead);
-    if (!GiNaC::is_a<GiNaC::numeric>(r[i]) || !GiNaC::ex_to<GiNaC::numeric>(r[i]).is_rational())
-      return std::nullopt;
+    if (!is_rational(r[i])) return std::nullopt;
   }
   return r;
 }
