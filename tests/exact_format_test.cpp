@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,23 @@ TEST(ExactFormat, Numbers) {
   expect_formats({0, "0", "0", "0"});
   expect_formats({numeric(1, 3), "1/3", "1/3", "\\frac{1}{3}"});
   expect_formats({numeric(-2, 3), "-2/3", "−2/3", "-\\frac{2}{3}"});
+}
+
+// Integers that fit in a machine word are written without GiNaC's printer: the same digits as
+// GiNaC prints, at the word's edges and beyond them, in numbers, fractions and coefficients.
+TEST(ExactFormat, IntegersAtTheWordsEdgesPrintAsGinacPrintsThem) {
+  const numeric two62 = numeric(2).power(62), two63 = numeric(2).power(63);
+  for (const numeric& n : {numeric(0), numeric(-1), two62 - 1, two62, -two62, -two62 + 1, two63 - 1,
+                           two63, -two63, numeric(10).power(30), -numeric(10).power(30)}) {
+    std::ostringstream ginac;
+    ginac << ex(n);
+    EXPECT_EQ(format_exact(n, MathStyle::Plain), ginac.str());
+    std::ostringstream fraction;
+    fraction << ex(n) << "/13";
+    if (!n.is_zero()) {  // 13 divides none of them
+      EXPECT_EQ(format_exact(ex(n) / 13, MathStyle::Plain), fraction.str());
+    }
+  }
 }
 
 TEST(ExactFormat, SquareRoots) {

@@ -234,6 +234,37 @@ TEST(Exact, ToDouble) {
       std::isnan(to_double(ex(GiNaC::I))));  // ex: GiNaC::to_double(numeric) would win by ADL
 }
 
+// to_double of c·k^(±1/2) (c, k rational) comes from an integer square root to 2^-128; it must
+// be the nearest double, as GiNaC's evaluation to 60 digits rounds it, for small and huge
+// radicands and coefficients, subnormal results included.
+TEST(Exact, SquareRootMultiplesConvertToTheNearestDouble) {
+  std::mt19937 rng(20261201);  // fixed seed: reproducible property loop
+  std::uniform_int_distribution<long> small(1, 100000), part(-100000, 100000);
+  int checked = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const numeric k =
+        i % 4 == 3 ? numeric(small(rng)) * numeric(10).power(40 + i % 200) + numeric(small(rng))
+                   : numeric(small(rng), i % 2 ? small(rng) : 1);
+    numeric c(part(rng), small(rng));
+    if (i % 5 == 4) c = c * numeric(10).power(-(i % 300));
+    if (c.is_zero()) continue;
+    for (const ex& e : {ex(c) * GiNaC::sqrt(ex(k)), ex(c) / GiNaC::sqrt(ex(k))}) {
+      const long digits = GiNaC::Digits;
+      GiNaC::Digits = 60;
+      const numeric reference = GiNaC::ex_to<numeric>(e.evalf());
+      GiNaC::Digits = digits;
+      // CLN's conversion flushes subnormals to 0: below 2^-1022 the nearest multiple of 2^-1074.
+      const double expected =
+          std::abs(reference.to_double()) >= std::numeric_limits<double>::min()
+              ? reference.to_double()
+              : std::ldexp(std::nearbyint((reference * numeric(2).power(1074)).to_double()), -1074);
+      EXPECT_EQ(to_double(e), expected) << e;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 7000);
+}
+
 TEST(Exact, ExactSignOfRationals) {
   EXPECT_EQ(exact_sign(ex(numeric(-1, 3))), -1);
   EXPECT_EQ(exact_sign(ex(0)), 0);

@@ -11,6 +11,29 @@ namespace {
 
 Vec3<Exact> ev(long x, long y, long z) { return Vec3<Exact>(x, y, z); }
 
+// exact_edge_sign computes rational inputs with GiNaC's numbers directly; it must give
+// exact_sign of the edge function built as an expression, for integers, fractions, huge values,
+// collinear points (0) and inputs with a root (which take the expression route).
+TEST(Geometry, ExactEdgeSignOfRationalsIsTheExpressionsSign) {
+  std::mt19937 rng(9001);
+  std::uniform_int_distribution<long> small(-40, 40), den(1, 12);
+  int zeros = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const auto value = [&] {
+      Exact v = Exact(small(rng)) / den(rng);
+      if (k % 5 == 4) v = v * GiNaC::pow(Exact(10), 30) + 1;
+      return v;
+    };
+    Vec2<Exact> a(value(), value()), b(value(), value()), p(value(), value());
+    if (k % 4 == 1) p = a + (b - a) * (Exact(small(rng)) / den(rng));  // on the line through a, b
+    if (k % 50 == 7) p(0) = GiNaC::sqrt(Exact(2)) * small(rng);
+    const int expected = exact_sign(edge_function<Exact>(a, b, p));
+    ASSERT_EQ(exact_edge_sign(a, b, p), expected) << a << " " << b << " " << p;
+    zeros += expected == 0;
+  }
+  EXPECT_GT(zeros, 500);
+}
+
 TEST(Geometry, NewellEqualsEdgePairForTriangles) {
   std::mt19937 rng(42);
   std::uniform_int_distribution<int> d(-50, 50);

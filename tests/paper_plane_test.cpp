@@ -51,6 +51,32 @@ TEST(PaperPlane, FastPathAgreesWithTheQuotients) {
   }
 }
 
+// unit() builds nᵢ/‖n‖ of a rational vector from ‖n‖ = c·√r directly (nᵢ/(c·r)·√r); it must be
+// the canonical form of each quotient, printed the same, for integer and fractional vectors,
+// zeros among the components and lengths that are rational (3, 4, 0) or not.
+TEST(PaperPlane, UnitVectorOfARationalVectorIsEachQuotientCanonical) {
+  Rng rng(4477);
+  const auto small = [&](std::int64_t lo, std::int64_t hi) { return Exact(rng.integer(lo, hi)); };
+  std::vector<Vec3<Exact>> vectors = {{3, 4, 0}, {2, 3, 6}, {0, 0, -5}, {1, 1, 1}};
+  for (int k = 0; k < 3000; ++k) {
+    Vec3<Exact> n(small(-30, 30), small(-30, 30), small(-30, 30));
+    if (k % 3 == 1) n = n / small(1, 9);
+    if (k % 7 == 2) n(k % 3) = 0;
+    vectors.push_back(n);
+  }
+  for (const Vec3<Exact>& n : vectors) {
+    if (n.isZero()) continue;
+    const Vec3<Exact> u = unit(n);
+    const Exact length = canonical(norm(n));
+    for (int i = 0; i < 3; ++i) {
+      const Exact quotient = canonical(n(i) / length);
+      ASSERT_TRUE(u(i).is_equal(quotient)) << format_exact(u(i), MathStyle::Plain) << " vs "
+                                           << format_exact(quotient, MathStyle::Plain);
+      ASSERT_EQ(format_exact(u(i), MathStyle::Plain), format_exact(quotient, MathStyle::Plain));
+    }
+  }
+}
+
 // depth_at_pixel's exact z is found on the plane scaled by ‖n‖ (rationals only) when n, A and the
 // pixel are rational: it must be the z of the plane method's own reading, canonical() of
 // (d − n̂ₓxₛ − n̂_y yₛ)/n̂_z with n̂ = n/‖n‖ and d = n̂·A, over many triangles and pixels (rational

@@ -523,6 +523,11 @@ bool canonical_simple_root(const ex& e, ex& out) {
       k >= numeric(static_cast<long>(kFactorLimit)))
     return false;
   const RootSplit split = split_root(to_cl_i(k), 2);
+  // c·√k with k square-free is already canonical: e itself, not built again.
+  if (!inverse && split.coeff == 1) {
+    out = e;
+    return true;
+  }
   numeric whole = c * numeric(cln::cl_N(split.coeff));
   if (inverse) whole = whole / k;
   out = make_radical(whole, split.radicand, 2);
@@ -569,6 +574,22 @@ bool has_symbol(const Exact& e) {
 
 bool is_rational(const Exact& e) { return is_a<numeric>(e) && ex_to<numeric>(e).is_rational(); }
 
+bool rational_times_square_root(const Exact& e, numeric& c, Exact& root) {
+  if (is_rational(e)) {
+    c = ex_to<numeric>(e);
+    root = 1;
+    return true;
+  }
+  const bool product = is_a<GiNaC::mul>(e) && e.nops() == 2 && is_rational(e.op(1));
+  const ex& r = product ? e.op(0) : e;
+  if (!is_a<GiNaC::power>(r) || !is_a<numeric>(r.op(0)) ||
+      !ex_to<numeric>(r.op(0)).is_pos_integer() || !r.op(1).is_equal(numeric(1, 2)))
+    return false;
+  c = product ? ex_to<numeric>(e.op(1)) : numeric(1);
+  root = r;
+  return true;
+}
+
 bool is_real_constant(const Exact& e) {
   if (is_a<numeric>(e)) return ex_to<numeric>(e).is_real();
   if (has_symbol(e)) return false;
@@ -581,13 +602,40 @@ bool is_real_constant(const Exact& e) {
   }
 }
 
+namespace {
+
+// c·k^(±1/2) for c and k = a/b rational (a unit vector's component, a length) to within a
+// relative 2⁻¹²⁸, as a rational: √k = √(ab)/b and √(ab) = ⌊√(ab·4^m)⌋/2^m with ab·4^m ≥ 2²⁵⁶.
+// The same accuracy as the evaluation to 40 digits below, without evaluating a tree.
+bool square_root_multiple(const ex& e, const numeric& c, numeric& value) {
+  const ex& root = is_a<GiNaC::mul>(e) ? e.op(0) : e;
+  const numeric& exponent = ex_to<numeric>(root.op(1));
+  const bool inverse = exponent.is_equal(numeric(-1, 2));
+  if (!inverse && !exponent.is_equal(numeric(1, 2))) return false;
+  const numeric& k = ex_to<numeric>(root.op(0));
+  const cln::cl_I a = to_cl_i(k.numer()), b = to_cl_i(k.denom());
+  const cln::cl_I n = a * b;
+  const std::uintptr_t bits = cln::integer_length(n);
+  if (bits > kMaxRadicandBits) return false;
+  const std::uintptr_t m = bits >= 256 ? 0 : (256 - bits + 1) / 2;
+  cln::cl_I r;
+  cln::isqrt(n << (2 * m), &r);
+  const cln::cl_I den = (inverse ? a : b) << m;
+  value = c * numeric(cln::cl_N(r)) / numeric(cln::cl_N(den));
+  return true;
+}
+
+}  // namespace
+
 double to_double(const Exact& e) {
   // Rationals convert exactly rounded; anything else is evaluated with digits to spare so
   // the double is the nearest one.
   if (is_a<numeric>(e) && ex_to<numeric>(e).is_real() && ex_to<numeric>(e).is_rational())
     return rational_to_double(ex_to<numeric>(e));
-  if (numeric c; !rational_times_root(e, c) && !is_real_constant(e))
-    return std::numeric_limits<double>::quiet_NaN();
+  numeric c;
+  const bool root = rational_times_root(e, c);
+  if (numeric value; root && square_root_multiple(e, c, value)) return rational_to_double(value);
+  if (!root && !is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
   try {
     const DigitsGuard guard(40);
     numeric value;

@@ -29,6 +29,9 @@ bool is_real_constant(const Exact& e);
 
 // True when e is a rational number (a GiNaC numeric that is rational).
 bool is_rational(const Exact& e);
+// e = c·√r with c rational and r an integer > 1 (canonical()'s form of a square root), or e = c
+// rational (then root = 1): c and √r itself.
+bool rational_times_square_root(const Exact& e, GiNaC::numeric& c, Exact& root);
 
 // True when e contains a symbol (a variable such as x) or a GiNaC wildcard anywhere.
 bool has_symbol(const Exact& e);

@@ -104,6 +104,25 @@ T edge_function_bound(const A& a, const B& b, const P& p) {
   return Rounding<T>::gamma(9) * permanent + Rounding<T>::underflow(T(4));
 }
 
+// The exact sign of E(a, b, p). When the six coordinates are rational (most exercises' inputs)
+// the same formula runs on GiNaC's rational numbers themselves, without building and
+// simplifying expressions: the same value, a tenth of the work.
+struct RationalXY {
+  std::array<GiNaC::numeric, 2> c;
+  const GiNaC::numeric& operator()(int i) const { return c[static_cast<std::size_t>(i)]; }
+};
+template <typename A, typename B, typename P>
+int exact_edge_sign(const A& a, const B& b, const P& p) {
+  if (is_rational(a(0)) && is_rational(a(1)) && is_rational(b(0)) && is_rational(b(1)) &&
+      is_rational(p(0)) && is_rational(p(1))) {
+    const auto xy = [](const auto& v) {
+      return RationalXY{{GiNaC::ex_to<GiNaC::numeric>(v(0)), GiNaC::ex_to<GiNaC::numeric>(v(1))}};
+    };
+    return edge_function<GiNaC::numeric>(xy(a), xy(b), xy(p)).csgn();
+  }
+  return exact_sign(edge_function<Exact>(a, b, p));
+}
+
 // The sign of E(a, b, p) for inputs in T whose exact values are ea, eb, ep.
 template <typename T, int NA, int NP>
 SignDecision edge_sign(const Eigen::Matrix<T, NA, 1>& a, const Eigen::Matrix<T, NA, 1>& b,
@@ -111,10 +130,10 @@ SignDecision edge_sign(const Eigen::Matrix<T, NA, 1>& a, const Eigen::Matrix<T, 
                        const Eigen::Matrix<Exact, NA, 1>& eb, const Eigen::Matrix<Exact, NP, 1>& ep,
                        bool inputs_relative) {
   if constexpr (kIsExact<T>) {
-    return {exact_sign(edge_function<Exact>(a, b, p)), false};
+    return {exact_edge_sign(a, b, p), false};
   } else {
     return decide_sign(edge_function<T>(a, b, p), edge_function_bound<T>(a, b, p), inputs_relative,
-                       [&] { return exact_sign(edge_function<Exact>(ea, eb, ep)); });
+                       [&] { return exact_edge_sign(ea, eb, ep); });
   }
 }
 

@@ -253,11 +253,13 @@ struct DepthAtPixel {
     if (steps) steps->yields("normal");
     Answers out;
     out.set("normal", Value::vector(n));
-    // The plane method's values, by the template the numeric path uses; the steps show them.
+    // The plane method's values (plane_depth.hpp's n̂ = n/‖n‖, d = n̂·A and plane_method_z, the
+    // template the numeric path uses); the steps show them.
     const Vec3<Exact>& A = g.triangle[0];
-    PlaneDepth<Exact> r = plane_through(n, A);
-    for (int i = 0; i < 3; ++i) r.unit_normal(i) = canonical(r.unit_normal(i));
-    r.d = canonical(r.d);
+    PlaneDepth<Exact> r;
+    r.normal = n;
+    r.unit_normal = unit(n);  // plane_through's n/‖n‖, in canonical form
+    r.d = canonical(r.unit_normal.dot(A));
     const Vec3<Exact>& u = r.unit_normal;
     record_unit_normal(n, u, steps);
     out.set("unit_normal", Value::vector(u));

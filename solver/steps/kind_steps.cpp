@@ -65,6 +65,18 @@ std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const E
 Vec3<Exact> unit(const Vec3<Exact>& n) {
   const Exact len = canonical(norm(n));
   Vec3<Exact> u;
+  // A rational vector's length, canonical, is c·√r (c rational, r a square-free integer) or
+  // rational: then nᵢ/‖n‖ = nᵢ/(c·r)·√r, the canonical form itself, with the one √r reused
+  // instead of each quotient simplified again.
+  GiNaC::numeric c;
+  Exact root;
+  if (is_rational(n(0)) && is_rational(n(1)) && is_rational(n(2)) && !len.is_zero() &&
+      rational_times_square_root(len, c, root)) {
+    const GiNaC::numeric scale =
+        root.is_equal(1) ? c : c * GiNaC::ex_to<GiNaC::numeric>(root.op(0));
+    for (int i = 0; i < 3; ++i) u(i) = GiNaC::ex_to<GiNaC::numeric>(n(i)) / scale * root;
+    return u;
+  }
   for (int i = 0; i < 3; ++i) u(i) = canonical(n(i) / len);
   return u;
 }

@@ -1,6 +1,7 @@
 // Printing exact values as on paper: "9*sqrt(3)", "√3/3", "\frac{\sqrt{3}}{3}".
 #include "solver/util/exact_format.hpp"
 
+#include <cln/integer.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -27,8 +28,14 @@ std::string superscript(long n) {
   return out;
 }
 
-// GiNaC prints a numeric or constant through its stream operator.
+// GiNaC prints a numeric or constant through its stream operator; an integer that fits in a
+// machine word is written straight away, in the same digits.
 std::string ginac_text(const ex& e) {
+  if (is_a<numeric>(e)) {
+    const numeric& n = ex_to<numeric>(e);
+    if (n.is_integer() && cln::integer_length(cln::the<cln::cl_I>(n.to_cl_N())) < 63)
+      return std::to_string(n.to_long());
+  }
   std::ostringstream out;
   out << e;
   return out.str();
