@@ -264,10 +264,30 @@ YAML::Node draw_planned(const VaryPlan::Spec& s, const YAML::Node& base, Rng& rn
       return out;
     }
     case Type::Map: {
-      YAML::Node out = base.IsMap() ? clone_node(base) : YAML::Node(YAML::NodeType::Map);
+      // Drawn in the plan's order (the same random draws as ever), then placed: the base's fields
+      // in their order, each drawn or (when not varied) copied, then the drawn fields the base
+      // lacks. A varied field is not copied only to be replaced.
+      std::vector<YAML::Node> drawn;
+      drawn.reserve(s.items.size());
       for (std::size_t i = 0; i < s.items.size(); ++i)
-        out[s.keys[i]] =
-            draw_planned(s.items[i], base.IsMap() ? base[s.keys[i]] : YAML::Node(), rng, file);
+        drawn.push_back(
+            draw_planned(s.items[i], base.IsMap() ? base[s.keys[i]] : YAML::Node(), rng, file));
+      YAML::Node out(YAML::NodeType::Map);
+      std::vector<bool> placed(s.items.size(), false);
+      if (base.IsMap())
+        for (auto it = base.begin(); it != base.end(); ++it) {
+          const std::string key = it->first.Scalar();
+          const auto varied = std::find(s.keys.begin(), s.keys.end(), key);
+          if (varied == s.keys.end()) {
+            out[key] = clone_node(it->second);
+            continue;
+          }
+          const auto i = static_cast<std::size_t>(varied - s.keys.begin());
+          out[key] = drawn[i];
+          placed[i] = true;
+        }
+      for (std::size_t i = 0; i < s.items.size(); ++i)
+        if (!placed[i]) out[s.keys[i]] = drawn[i];
       return out;
     }
     case Type::Value:
