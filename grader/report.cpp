@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {
@@ -56,6 +58,8 @@ std::string misconception_text(const AnswerGrade& a, Lang lang) {
 
 // A score as a teacher writes it: at most two decimals, trailing zeros dropped (21.33, 2, 0.5).
 std::string score_text(double v) {
+  // Whole marks (most scores) need no decimal formatting.
+  if (std::abs(v) < 1e15 && v == std::trunc(v)) return std::to_string(static_cast<long long>(v));
   std::string s = fmt::format("{:.2f}", v);
   while (s.back() == '0') s.pop_back();
   if (s.back() == '.') s.pop_back();

@@ -1,4 +1,6 @@
 // Grading: verdicts, equivalences, unparseable and missing answers, and the JSON report.
+#include <fmt/format.h>
+
 #include "grader/feedback.hpp"
 #include "grader/report.hpp"
 #include "test_util.hpp"
@@ -31,6 +33,20 @@ const AnswerGrade& answer(const GradeReport& r, const std::string& id, const std
       for (const AnswerGrade& a : p.answers)
         if (a.name == name) return a;
   throw std::runtime_error("no answer " + id + "." + name);
+}
+
+// Scores as a teacher writes them: whole marks straight from the integer, others to two
+// decimals with trailing zeros dropped, the same text either way.
+TEST(Grader, ScoreTextIsTwoDecimalsWithoutTrailingZeros) {
+  for (const double v : {0.0, -0.0, 1.0, 20.0, -3.0, 60.0, 123456789012.0})
+    EXPECT_EQ(score_text(v), fmt::format("{:.0f}", v == 0 ? 0.0 : v)) << v;
+  EXPECT_EQ(score_text(0.5), "0.5");
+  EXPECT_EQ(score_text(2.0 / 3.0), "0.67");
+  EXPECT_EQ(score_text(21.333333), "21.33");
+  EXPECT_EQ(score_text(0.1 + 0.2), "0.3");
+  EXPECT_EQ(score_text(1.999), "2");
+  EXPECT_EQ(score_text(-0.001), "0");
+  EXPECT_EQ(score_text(1e20), "100000000000000000000");
 }
 
 TEST(Grader, EquivalentFormsAreCorrect) {
