@@ -63,6 +63,22 @@ Frame reference_frame(const std::vector<WindowTriangle>& tris, int w, int h, Rgb
   return f;
 }
 
+// The z-buffer's frame of `tris` equals the naive reference's, bit for bit; its stats.
+FillStats expect_reference_frame(const std::vector<WindowTriangle>& tris, int w, int h, Rgb bg) {
+  const Frame ref = reference_frame(tris, w, h, bg);
+  FillStats fs;
+  const Frame z = render_zbuffer(tris, w, h, bg, &fs);
+  EXPECT_EQ(z.color.data, ref.color.data);
+  EXPECT_EQ(z.depth.data, ref.depth.data);
+  return fs;
+}
+
+// w made a sliver: its third vertex within `jitter` pixels (across x) of the segment v0 v1.
+void make_sliver(std::mt19937& rng, WindowTriangle& w, double jitter) {
+  const Vec3d d = w.v[1] - w.v[0];
+  w.v[2] = w.v[0] + d * grid_value(rng, 0, 1) + Vec3d(grid_value(rng, -jitter, jitter), 0, 0);
+}
+
 std::string scene_yaml(const std::string& api, const std::string& objects,
                        const std::string& pixels, const std::string& extra = "") {
   return "conventions: {api: " + api +
@@ -115,6 +131,32 @@ TEST(Pipeline, SpansEqualPerPixelCoverage) {
   }
 }
 
+// RowSpans steps each edge's bound from row to row with additions; every row must be the span
+// span_on_row computes with divisions, for small, large and thin triangles, horizontal and
+// vertical edges, and coordinates far from the origin.
+TEST(Pipeline, SteppedSpansEqualSpansRowByRow) {
+  std::mt19937 rng(12);
+  long rows = 0;
+  for (int n = 0; n < 4000; ++n) {
+    WindowTriangle w = random_triangle(rng, n % 3 == 0 ? 3 : (n % 3 == 1 ? 40 : 400), 500, 500);
+    if (n % 4 == 1) make_sliver(rng, w, 0.5);
+    if (n % 7 == 2) w.v[1](1) = w.v[0](1);   // a horizontal edge
+    if (n % 11 == 3) w.v[2](0) = w.v[0](0);  // a vertical edge
+    if (n % 13 == 4)
+      for (Vec3d& v : w.v) v += Vec3d(900000, -700000, 0);
+    const TriangleSetup t = setup_raster(w).setup;
+    if (t.degenerate) continue;
+    RowSpans spans(t, t.j_min);
+    for (int j = t.j_min; j <= t.j_max; ++j, ++rows) {
+      const Span a = spans.next(), b = span_on_row(t, j);
+      ASSERT_TRUE(a.i0 > a.i1 ? b.i0 > b.i1 : a.i0 == b.i0 && a.i1 == b.i1)
+          << "triangle " << n << " row " << j << ": " << a.i0 << ".." << a.i1 << " vs " << b.i0
+          << ".." << b.i1;
+    }
+  }
+  EXPECT_GT(rows, 100000);
+}
+
 TEST(Pipeline, SharedEdgesCoverEachPixelExactlyOnce) {
   // Random triangulated grids (jittered interior vertices, random diagonals): every pixel
   // centre inside the outer rectangle is covered by exactly one triangle.
@@ -164,12 +206,8 @@ TEST(Pipeline, ZBufferEqualsTheNaiveReferenceAndScanline) {
   std::vector<WindowTriangle> tris;
   for (int n = 0; n < 300; ++n) tris.push_back(random_triangle(rng, n % 3 ? 4 : 30, 90, 70));
   const Rgb bg{1, 2, 3};
+  EXPECT_GT(expect_reference_frame(tris, 90, 70, bg).written, 1000);
   const Frame ref = reference_frame(tris, 90, 70, bg);
-  FillStats fs;
-  const Frame z = render_zbuffer(tris, 90, 70, bg, &fs);
-  EXPECT_EQ(z.color.data, ref.color.data);
-  EXPECT_EQ(z.depth.data, ref.depth.data);
-  EXPECT_GT(fs.written, 1000);
   ScanlineStats st;
   Image<float> depth;
   const Image<std::uint32_t> s = render_scanline(tris, 90, 70, bg, &st, &depth);
@@ -184,6 +222,20 @@ TEST(Pipeline, ZBufferEqualsTheNaiveReferenceAndScanline) {
     EXPECT_EQ(pack(t.color), ref.color.at(i, j));
     EXPECT_EQ(t.depth, ref.depth.at(i, j));
   }
+}
+
+// Thin triangles (many rows, a pixel or none on each) and tiny ones take the fill's other paths
+// (stepped spans, the plain loop for short spans, the test of every pixel of a small box): the
+// frame must still be the naive reference's, bit for bit.
+TEST(Pipeline, ThinAndTinyTrianglesFillAsTheNaiveReference) {
+  std::mt19937 rng(31);
+  std::vector<WindowTriangle> tris;
+  for (int n = 0; n < 600; ++n) {
+    WindowTriangle w = random_triangle(rng, n % 2 ? 1.5 : 25, 120, 90);
+    if (n % 3 == 0) make_sliver(rng, w, 0.6);
+    tris.push_back(w);
+  }
+  EXPECT_GT(expect_reference_frame(tris, 120, 90, {9, 8, 7}).written, 2000);
 }
 
 TEST(Pipeline, ClippingKeepsEveryVertexInFrontOfTheEye) {

@@ -13,9 +13,13 @@ namespace frustum {
 
 namespace {
 
-// Boxes at most this wide are filled pixel by pixel with incremental edge functions; wider
-// ones row by row from spans (three divisions per row instead of a test per pixel).
-constexpr int kSmallBox = 16;
+// Boxes of at most this many pixels are filled pixel by pixel with incremental edge functions;
+// larger ones row by row from spans (RowSpans: six divisions a triangle and a few additions a
+// row, instead of a test of every pixel of the box, which for a thin triangle is mostly a test
+// of pixels it does not cover).
+constexpr long kSmallBoxPixels = 8;
+// Spans at most this long are filled by the plain loop, without the vector loop's set-up.
+constexpr int kShortSpan = 4;
 
 // Edge k covers a centre when E ≥ bias: E > 0, or E = 0 on a top or left edge.
 std::int64_t bias(const EdgeFunction& e) { return e.top_left() ? 0 : 1; }
@@ -84,13 +88,44 @@ void clear_upper_vector_state() {
 void clear_upper_vector_state() {}
 #endif
 
-// On x86-64 with GCC, an AVX2 clone is chosen at load time where the CPU has it (4 doubles per
-// instruction in the span loop instead of 2). No FMA is enabled, so both clones compute the
-// same depths bit for bit as depth_at().
+namespace {
+
+// One row's span i0 … i0 + n − 1 through the depth test, branch-free: both buffers are read and
+// written unconditionally (min for the depth, a mask for the colour), so the compiler vectorises
+// it; the writes are counted in the same loop only when asked (a reduction the loop otherwise
+// goes without). On x86-64 with GCC, an AVX2 clone is chosen at load time where the CPU has it
+// (4 doubles per instruction instead of 2). No FMA is enabled, so both clones compute the same
+// depths bit for bit as depth_at().
+template <bool kCount>
+int fill_span(float* __restrict depth, std::uint32_t* __restrict color, int n, double row_z,
+              double a, double dx0, std::uint32_t c) {
+  int written = 0;
+  for (int k = 0; k < n; ++k) {
+    const float z = static_cast<float>(row_z + a * (dx0 + static_cast<double>(k) * kSubpixelScale));
+    const float old = depth[k];
+    const bool pass = z < old;
+    if constexpr (kCount) written += pass;
+    const std::uint32_t keep = pass ? 0u : ~0u;
+    depth[k] = pass ? z : old;
+    color[k] = (color[k] & keep) | (c & ~keep);
+  }
+  return written;
+}
+
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
     !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default")))
 #endif
+int fill_long_span(float* depth, std::uint32_t* color, int n, double row_z, double a, double dx0,
+                   std::uint32_t c, bool count) {
+  const int written = count ? fill_span<true>(depth, color, n, row_z, a, dx0, c)
+                            : fill_span<false>(depth, color, n, row_z, a, dx0, c);
+  clear_upper_vector_state();
+  return written;
+}
+
+}  // namespace
+
 void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
   const TriangleSetup& s = t.setup;
   if (stats) ++stats->triangles;
@@ -103,7 +138,7 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
   float* depth = frame.depth.data.data();
   std::uint32_t* color = frame.color.data.data();
   const std::uint32_t c = t.color;
-  if (box.i1 - box.i0 < kSmallBox) {
+  if (static_cast<long>(box.i1 - box.i0 + 1) * (box.j1 - box.j0 + 1) <= kSmallBoxPixels) {
     // Incremental edge functions: E(i + 1, j) = E(i, j) + a·256, E(i, j + 1) = E(i, j) + b·256.
     const FixedPoint2 p = pixel_centre(box.i0, box.j0);
     std::int64_t row[3], step_x[3], step_y[3];
@@ -139,8 +174,9 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
       for (int k = 0; k < 3; ++k) row[k] += step_y[k];
     }
   } else {
+    RowSpans spans(s, box.j0);
     for (int j = box.j0; j <= box.j1; ++j) {
-      const Span sp = span_on_row(s, j);
+      const Span sp = spans.next();
       const int i0 = std::max(sp.i0, box.i0), i1 = std::min(sp.i1, box.i1);
       if (i0 > i1) continue;
       const std::size_t base = static_cast<std::size_t>(j) * static_cast<std::size_t>(width);
@@ -149,37 +185,27 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
       float* d = depth + base;
       std::uint32_t* col = color + base;
       fragments += i1 - i0 + 1;
-      // Branch-free: both buffers are read and written unconditionally (min for the depth, a
-      // mask for the colour), so the compiler vectorises the row; the writes are counted in
-      // the same loop when stats are asked for (a reduction the loop otherwise goes without).
       const int n = i1 - i0 + 1;
-      auto span = [&](auto count) {
-        float* __restrict dr = d + i0;
-        std::uint32_t* __restrict cr = col + i0;
-        int row_written = 0;
-        for (int k = 0; k < n; ++k) {
-          const float z =
-              static_cast<float>(row_z + t.a * (dx0 + static_cast<double>(k) * kSubpixelScale));
-          const float old = dr[k];
-          const bool pass = z < old;
-          if constexpr (count) row_written += pass;
-          const std::uint32_t keep = pass ? 0u : ~0u;
-          dr[k] = pass ? z : old;
-          cr[k] = (cr[k] & keep) | (c & ~keep);
+      if (n > kShortSpan) {
+        written += fill_long_span(d + i0, col + i0, n, row_z, t.a, dx0, c, stats != nullptr);
+        continue;
+      }
+      // A few pixels (a thin triangle's rows): the plain loop, the same depths.
+      double dx = dx0;
+      for (int i = i0; i <= i1; ++i, dx += kSubpixelScale) {
+        const float z = static_cast<float>(row_z + t.a * dx);
+        if (z < d[i]) {
+          d[i] = z;
+          col[i] = c;
+          ++written;
         }
-        written += row_written;
-      };
-      if (stats)
-        span(std::true_type{});
-      else
-        span(std::false_type{});
+      }
     }
   }
   if (stats) {
     stats->fragments += fragments;
     stats->written += written;
   }
-  clear_upper_vector_state();
 }
 
 Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,

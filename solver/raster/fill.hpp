@@ -11,7 +11,9 @@
 // the buffer is cleared to 1 (the far plane), so a fragment exactly on the far plane is not.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 
 #include "solver/raster/pipeline.hpp"
 #include "solver/raster/rasterizer.hpp"
@@ -56,6 +58,64 @@ struct Span {
 };
 Span span_on_row(const TriangleSetup& t, int j);
 
+// The spans of rows j, j + 1, … of one triangle in turn, each what span_on_row gives. An edge
+// function is linear in y, so each edge's bound on a row is the one before plus a fixed
+// quotient with the remainder carried: after the first row, a row costs a few additions instead
+// of three divisions (a thin triangle has many rows and few pixels on each). For the rows
+// j_min … j_max of a triangle that is not degenerate.
+class RowSpans {
+ public:
+  RowSpans(const TriangleSetup& t, int j)
+      : lo_(t.i_min), hi_(t.i_max), e0_(t.edge[0], j), e1_(t.edge[1], j), e2_(t.edge[2], j) {}
+  // The current row's span (within the triangle's box, like span_on_row's); then the next row.
+  Span next() {
+    std::int64_t lo = lo_, hi = hi_;
+    e0_.bound(lo, hi);
+    e1_.bound(lo, hi);
+    e2_.bound(lo, hi);
+    return {static_cast<int>(lo), static_cast<int>(std::max(hi, lo - 1))};
+  }
+
+ private:
+  // One edge. N = b·y_c + c − bias: the edge's value at x = 0 on the current row's centre line,
+  // less the fill rule's bias, kept as ⌊N/|a|⌋ = f with remainder r (|a| = 1 for a horizontal
+  // edge: f = N); N grows by b·2⁸ a row, which is step_f·|a| + step_r.
+  struct Edge {
+    std::int64_t f, r, divisor, step_f, step_r;
+    int side;  // +1: a > 0, a lower bound on i; −1: a < 0, an upper bound; 0: a = 0
+    Edge(const EdgeFunction& e, int j) {
+      side = e.a > 0 ? 1 : (e.a < 0 ? -1 : 0);
+      divisor = e.a == 0 ? 1 : (e.a > 0 ? e.a : -e.a);
+      const std::int64_t n = e.b * pixel_centre(0, j).y + e.c - (e.top_left() ? 0 : 1);
+      f = floor_div(n, divisor);
+      r = n - f * divisor;
+      const std::int64_t step = e.b * kSubpixelScale;
+      step_f = floor_div(step, divisor);
+      step_r = step - step_f * divisor;
+    }
+    // The centre x = i·2⁸ + 2⁷ is inside the edge when a·x + N ≥ 0: for a > 0 when
+    // i ≥ ⌈(−⌊N/a⌋ − 2⁷)/2⁸⌉ = −⌊(f + 2⁷)/2⁸⌋; for a < 0 when i ≤ ⌊(⌊N/|a|⌋ − 2⁷)/2⁸⌋ =
+    // ⌊(f − 2⁷)/2⁸⌋; for a = 0 on the whole row when N ≥ 0, else nowhere (⌊x/2⁸⌋ = x >> 8).
+    // Then one row down.
+    void bound(std::int64_t& lo, std::int64_t& hi) {
+      constexpr std::int64_t half = kSubpixelScale / 2;
+      if (side > 0)
+        lo = std::max(lo, -((f + half) >> kSubpixelBits));
+      else if (side < 0)
+        hi = std::min(hi, (f - half) >> kSubpixelBits);
+      else if (f < 0)
+        hi = std::numeric_limits<int>::min();
+      // Branch-free: whether the remainder carries is as good as random from row to row.
+      r += step_r;
+      const bool carry = r >= divisor;
+      r = carry ? r - divisor : r;
+      f += step_f + carry;
+    }
+  };
+  std::int64_t lo_, hi_;
+  Edge e0_, e1_, e2_;
+};
+
 struct Frame {
   Image<std::uint32_t> color;  // raster rows, j = 0 the bottom
   Image<float> depth;
@@ -72,7 +132,7 @@ struct FillStats {
 // vzeroupper where the CPU has AVX (nothing elsewhere). GCC 12 can return from the AVX2 clone
 // of a vectorised loop (target_clones) with the upper halves of the vector registers still in
 // use, and every SSE instruction after it then runs slower: zlib compressing the frame to PNG
-// took 31 ms instead of 11 ms after a render. draw_triangle() calls it before it returns.
+// took 31 ms instead of 11 ms after a render. The fill calls it after each vectorised span.
 void clear_upper_vector_state();
 
 // The z-buffer's inner loop for one triangle.
