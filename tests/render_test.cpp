@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <bit>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -300,6 +301,53 @@ TEST(Scene, FrontFacesPointAtTheEyeInEveryApi) {
         ASSERT_GT((t.v[1] - t.v[0]).cross(t.v[2] - t.v[0]).dot(eye - t.v[0]), 0) << to_string(api);
       }
     }
+  }
+}
+
+// A copy of a repeat that only moves is placed as p + offset: it must be T(offset)·p bit for bit,
+// the sign of a zero included (vertices and steps that cancel, −0 coordinates, negative steps),
+// and its names, fills and faces as the walk gives them.
+TEST(Scene, TranslatedCopiesAreTheTranslationsProductBitForBit) {
+  std::mt19937 rng(77);
+  std::uniform_int_distribution<int> pick(-4, 4);
+  for (int trial = 0; trial < 40; ++trial) {
+    Scene s;
+    SceneObject o;
+    for (int v = 0; v < 6; ++v) {
+      Vec3d p(pick(rng) * 0.25, pick(rng) * 0.5, pick(rng) * 0.125);
+      if (v == 5) p = Vec3d(-0.0, 0.0, -0.0);
+      o.vertices.push_back(p);
+    }
+    o.triangles = {{0, 1, 2}, {3, 4, 5}};
+    o.fill = Rgb{1, 2, 3};
+    const Vec3d step(pick(rng) * 0.25, pick(rng) * 0.5, trial % 2 ? -0.125 : 0.125);
+    o.repeat = SceneObject::Repeat{{-2, -1, 0}, {2, 1, 2}, step};
+    s.objects.push_back(o);
+    const FlatScene flat = flatten(s);
+    ASSERT_EQ(flat.triangles.size(), 2u * 5 * 3 * 3);
+    std::size_t n = 0;
+    for (int i = -2; i <= 2; ++i)
+      for (int j = -1; j <= 1; ++j)
+        for (int l = 0; l <= 2; ++l) {
+          Mat4d t = Mat4d::Identity();
+          t.block<3, 1>(0, 3) = Vec3d(i * step(0), j * step(1), l * step(2));
+          for (std::size_t f = 0; f < 2; ++f, ++n) {
+            const WorldTriangle& w = flat.triangles[n];
+            EXPECT_EQ(w.face, static_cast<int>(f));
+            EXPECT_EQ(w.fill, (Rgb{1, 2, 3}));
+            for (int v = 0; v < 3; ++v) {
+              const Vec3d& p = o.vertices[static_cast<std::size_t>(o.triangles[f][v])];
+              const Vec3d expected = (t * Vec4d(p(0), p(1), p(2), 1.0)).head<3>();
+              for (int a = 0; a < 3; ++a)
+                ASSERT_EQ(std::bit_cast<std::uint64_t>(w.v[v](a)),
+                          std::bit_cast<std::uint64_t>(expected(a)))
+                    << "copy " << i << "," << j << "," << l << " vertex " << v << " axis " << a
+                    << ": " << w.v[v](a) << " vs " << expected(a);
+            }
+          }
+          EXPECT_EQ(flat.objects[static_cast<std::size_t>(flat.triangles[n - 1].object)],
+                    fmt::format("objects[0][{},{},{}]", i, j, l));
+        }
   }
 }
 

@@ -37,6 +37,12 @@ bool identity_keeps(const Mat4d& m) {
   return true;
 }
 
+bool finite_without_negative_zero(const Vec3d& v) {
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(v(k)) || (v(k) == 0 && std::signbit(v(k)))) return false;
+  return true;
+}
+
 // a · b, without the 64 products when a factor is exactly the identity (a repeat of a million
 // copies composes two matrices per copy): the same matrix as the product, bit for bit.
 bool is_identity(const Mat4d& m) { return m == Mat4d::Identity(); }  // ±0 off the diagonal
@@ -65,25 +71,41 @@ struct FlatSink {
   int objects = 0;
 };
 
-// `name` is null when names are not kept; world_from_object = world_from_parent · M_object.
-void flatten_into(const SceneObject& o, const Mat4d& world_from_object, Rgb fill, Cull cull,
-                  const std::string* name, FlatSink& out) {
-  const Rgb f = o.fill.value_or(fill);
-  const Cull c = o.cull.value_or(cull);
+Vec3d transformed(const Mat4d& m, const Vec3d& p) {
+  return (m * Vec4d(p(0), p(1), p(2), 1.0)).head<3>();
+}
+
+// Object o's own triangles in the world, each vertex placed by `place`; o counts as an object.
+template <typename Place>
+void emit_triangles(const SceneObject& o, Rgb f, Cull c, const std::string* name, FlatSink& out,
+                    const Place& place) {
   const int index = out.objects++;
   if (name) out.names->push_back(*name);
   for (std::size_t k = 0; k < o.triangles.size(); ++k) {
     WorldTriangle t;
-    for (int v = 0; v < 3; ++v) {
-      const Vec3d& p = o.vertices[static_cast<std::size_t>(o.triangles[k][v])];
-      t.v[v] = (world_from_object * Vec4d(p(0), p(1), p(2), 1.0)).head<3>();
-    }
+    for (int v = 0; v < 3; ++v)
+      t.v[v] = place(o.vertices[static_cast<std::size_t>(o.triangles[k][v])]);
     t.fill = f;
     t.cull = c;
     t.object = index;
     t.face = static_cast<int>(k);
     out.visit(t);
   }
+}
+
+// p moved by the translation T(offset), offset finite without −0: the same doubles as T·p.
+// T·p's row is 1·x + 0·y + 0·z + t, in whatever order: the ±0 terms leave a sum that is not
+// zero as it is, so it is x + t rounded once; and a zero sum includes t (+0 or not zero), so it
+// is +0, as x + t is.
+Vec3d translated(const Vec3d& offset, const Vec3d& p) { return p + offset; }
+
+// `name` is null when names are not kept; world_from_object = world_from_parent · M_object.
+void flatten_into(const SceneObject& o, const Mat4d& world_from_object, Rgb fill, Cull cull,
+                  const std::string* name, FlatSink& out) {
+  const Rgb f = o.fill.value_or(fill);
+  const Cull c = o.cull.value_or(cull);
+  emit_triangles(o, f, c, name, out,
+                 [&](const Vec3d& p) { return transformed(world_from_object, p); });
   std::string child_name;
   for (std::size_t k = 0; k < o.children.size(); ++k) {
     const SceneObject& child = o.children[k];
@@ -103,11 +125,20 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_object, Rgb fill
     // Neither the parent nor the copy moves anything: each copy's matrix is T(offset) itself
     // (compose's rule, decided once for the repeat instead of twice per copy).
     const bool translation_only = is_identity(world_from_object) && is_identity(single.transform);
+    const Rgb own_fill = single.fill.value_or(f);
+    const Cull own_cull = single.cull.value_or(c);
     for (int i = r.from[0]; i <= r.to[0]; ++i)
       for (int j = r.from[1]; j <= r.to[1]; ++j)
         for (int l = r.from[2]; l <= r.to[2]; ++l) {
           const Vec3d offset(i * r.step(0), j * r.step(1), l * r.step(2));
           if (name) copy = copy_name(child_name, r, {i, j, l});
+          if (translation_only && single.children.empty() && finite_without_negative_zero(offset)) {
+            // A copy that only moves (most repeats; identity_keeps(T(offset)) holds): each vertex
+            // plus the offset.
+            emit_triangles(single, own_fill, own_cull, name ? &copy : nullptr, out,
+                           [&](const Vec3d& p) { return translated(offset, p); });
+            continue;
+          }
           const Mat4d t = translation(offset);
           flatten_into(single,
                        translation_only && identity_keeps(t)
