@@ -246,15 +246,16 @@ struct SimplifyRadicals : GiNaC::map_function {
 };
 
 // c·k^(p/q) with c ≠ 0 and k > 0 rational (a unit vector's component, a length; c = 1 for a
-// root alone): a real constant whose sign is c's.
-bool rational_times_root(const ex& e, numeric& c) {
+// root alone): a real constant whose sign is c's. `root` (when given) is set to k^(p/q).
+bool rational_times_root(const ex& e, numeric& c, ex* root = nullptr) {
   const bool product = is_a<GiNaC::mul>(e) && e.nops() == 2 && is_a<numeric>(e.op(1)) &&
                        ex_to<numeric>(e.op(1)).is_rational();
-  const ex& root = product ? e.op(0) : e;
-  if (!is_a<GiNaC::power>(root) || !is_positive_rational(root.op(0)) ||
-      !is_a<numeric>(root.op(1)) || !ex_to<numeric>(root.op(1)).is_rational())
+  const ex r = product ? e.op(0) : e;
+  if (!is_a<GiNaC::power>(r) || !is_positive_rational(r.op(0)) || !is_a<numeric>(r.op(1)) ||
+      !ex_to<numeric>(r.op(1)).is_rational())
     return false;
   c = product ? ex_to<numeric>(e.op(1)) : numeric(1);
+  if (root) *root = r;
   return true;
 }
 
@@ -580,14 +581,8 @@ bool rational_times_square_root(const Exact& e, numeric& c, Exact& root) {
     root = 1;
     return true;
   }
-  const bool product = is_a<GiNaC::mul>(e) && e.nops() == 2 && is_rational(e.op(1));
-  const ex& r = product ? e.op(0) : e;
-  if (!is_a<GiNaC::power>(r) || !is_a<numeric>(r.op(0)) ||
-      !ex_to<numeric>(r.op(0)).is_pos_integer() || !r.op(1).is_equal(numeric(1, 2)))
-    return false;
-  c = product ? ex_to<numeric>(e.op(1)) : numeric(1);
-  root = r;
-  return true;
+  return rational_times_root(e, c, &root) && ex_to<numeric>(root.op(0)).is_pos_integer() &&
+         root.op(1).is_equal(numeric(1, 2));
 }
 
 bool is_real_constant(const Exact& e) {
@@ -604,11 +599,10 @@ bool is_real_constant(const Exact& e) {
 
 namespace {
 
-// c·k^(±1/2) for c and k = a/b rational (a unit vector's component, a length) to within a
-// relative 2⁻¹²⁸, as a rational: √k = √(ab)/b and √(ab) = ⌊√(ab·4^m)⌋/2^m with ab·4^m ≥ 2²⁵⁶.
-// The same accuracy as the evaluation to 40 digits below, without evaluating a tree.
-bool square_root_multiple(const ex& e, const numeric& c, numeric& value) {
-  const ex& root = is_a<GiNaC::mul>(e) ? e.op(0) : e;
+// c·root with root = k^(±1/2), c and k = a/b rational (a unit vector's component, a length), to
+// within a relative 2⁻¹²⁸, as a rational: √k = √(ab)/b and √(ab) = ⌊√(ab·4^m)⌋/2^m with ab·4^m ≥
+// 2²⁵⁶. The same accuracy as the evaluation to 40 digits below, without evaluating a tree.
+bool square_root_multiple(const ex& root, const numeric& c, numeric& value) {
   const numeric& exponent = ex_to<numeric>(root.op(1));
   const bool inverse = exponent.is_equal(numeric(-1, 2));
   if (!inverse && !exponent.is_equal(numeric(1, 2))) return false;
@@ -633,9 +627,11 @@ double to_double(const Exact& e) {
   if (is_a<numeric>(e) && ex_to<numeric>(e).is_real() && ex_to<numeric>(e).is_rational())
     return rational_to_double(ex_to<numeric>(e));
   numeric c;
-  const bool root = rational_times_root(e, c);
-  if (numeric value; root && square_root_multiple(e, c, value)) return rational_to_double(value);
-  if (!root && !is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
+  ex root;
+  const bool multiple = rational_times_root(e, c, &root);
+  if (numeric value; multiple && square_root_multiple(root, c, value))
+    return rational_to_double(value);
+  if (!multiple && !is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
   try {
     const DigitsGuard guard(40);
     numeric value;

@@ -21,9 +21,6 @@ constexpr long kSmallBoxPixels = 8;
 // Spans at most this long are filled by the plain loop, without the vector loop's set-up.
 constexpr int kShortSpan = 4;
 
-// Edge k covers a centre when E ≥ bias: E > 0, or E = 0 on a top or left edge.
-std::int64_t bias(const EdgeFunction& e) { return e.top_left() ? 0 : 1; }
-
 struct Clamped {
   int i0, i1, j0, j1;
   bool empty() const { return i0 > i1 || j0 > j1; }
@@ -65,7 +62,7 @@ Span span_on_row(const TriangleSetup& t, int j) {
   std::int64_t lo = t.i_min, hi = t.i_max;
   for (const EdgeFunction& e : t.edge) {
     // a·xc + R ≥ bias with R = b·yc + c.
-    const std::int64_t need = bias(e) - (e.b * yc + e.c);
+    const std::int64_t need = fill_bias(e) - (e.b * yc + e.c);
     if (e.a > 0) {
       lo = std::max(lo, ceil_div(ceil_div(need, e.a) - half, kSubpixelScale));
     } else if (e.a < 0) {
@@ -144,7 +141,7 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
     std::int64_t row[3], step_x[3], step_y[3];
     for (int k = 0; k < 3; ++k) {
       const EdgeFunction& e = s.edge[k];
-      row[k] = e.at(p.x, p.y) - bias(e);
+      row[k] = e.at(p.x, p.y) - fill_bias(e);
       step_x[k] = e.a * kSubpixelScale;
       step_y[k] = e.b * kSubpixelScale;
     }

@@ -58,6 +58,9 @@ struct Span {
 };
 Span span_on_row(const TriangleSetup& t, int j);
 
+// An edge covers a centre when E ≥ fill_bias: E > 0, or E = 0 on a top or left edge.
+inline std::int64_t fill_bias(const EdgeFunction& e) { return e.top_left() ? 0 : 1; }
+
 // The spans of rows j, j + 1, … of one triangle in turn, each what span_on_row gives. An edge
 // function is linear in y, so each edge's bound on a row is the one before plus a fixed
 // quotient with the remainder carried: after the first row, a row costs a few additions instead
@@ -86,7 +89,7 @@ class RowSpans {
     Edge(const EdgeFunction& e, int j) {
       side = e.a > 0 ? 1 : (e.a < 0 ? -1 : 0);
       divisor = e.a == 0 ? 1 : (e.a > 0 ? e.a : -e.a);
-      const std::int64_t n = e.b * pixel_centre(0, j).y + e.c - (e.top_left() ? 0 : 1);
+      const std::int64_t n = e.b * pixel_centre(0, j).y + e.c - fill_bias(e);
       f = floor_div(n, divisor);
       r = n - f * divisor;
       const std::int64_t step = e.b * kSubpixelScale;
