@@ -13,6 +13,10 @@
 #include "solver/raster/scene.hpp"
 #include "solver/raster/zbuffer.hpp"
 
+namespace frustum {
+struct Frame;
+}
+
 namespace frustum::app {
 
 enum class Format { Text, Markdown, Json, Html, Latex };
@@ -90,12 +94,13 @@ struct RenderOptions {
   std::optional<std::string> method;        // zbuffer | scanline
   int threads = 1;                          // ≥ 2: the geometry beside the fill (z-buffer)
 };
-int run_render(const RenderOptions& options, const Output& o);
+// target: a frame the caller keeps from one render to the next, reused when the size is the
+// same (bench/render_race.cpp, as llvmpipe's context keeps its framebuffer); none: a new one.
+int run_render(const RenderOptions& options, const Output& o, Frame* target = nullptr);
 // The scene `frustum render` draws (--size and --method applied), or the exit status after
-// printing why not; and its PNG writer (raster rows, y up). bench/render_race.cpp races the
+// printing why not; its PNG writer is app/png_writer.hpp. bench/render_race.cpp races the
 // same steps through llvmpipe.
 std::variant<Scene, int> load_render_scene(const RenderOptions& options, const Output& o);
-bool write_color_png(const std::string& path, const Image<std::uint32_t>& image);
 // `frustum bench accuracy`: speed against error of every numeric path and backend, on generated
 // and hard cases (every *.yaml in hard_dir); writes accuracy_results.md and the plots into out_dir
 // (bench_command.cpp).

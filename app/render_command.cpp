@@ -3,8 +3,6 @@
 // FILE is a scene file (top-level `scene:` and optional `conventions:`) or a problem set, whose
 // render problem is the one named by --id (default: the first of kind render).
 #include <fmt/format.h>
-#include <png.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <chrono>
@@ -12,6 +10,7 @@
 #include <ostream>
 
 #include "app/commands.hpp"
+#include "app/png_writer.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/kinds/render.hpp"
@@ -64,41 +63,6 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
   }
 }
 
-// One PNG, 8 bits a channel, from rows given top first. Flat-shaded frames are long runs of
-// equal pixels: the Sub filter turns a run into zeros and zlib's run-length strategy finds
-// them in one pass (at a tenth of the time of a full deflate search, and smaller files than
-// stb's writer). Plain data only between setjmp and png_write_end: libpng reports an error
-// by longjmp.
-bool write_png_rows(const std::string& path, int width, int height, int color_type,
-                    const png_byte* const* rows) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) return false;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info) {
-    png_destroy_write_struct(&png, nullptr);
-    std::fclose(file);
-    return false;
-  }
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    std::fclose(file);
-    return false;
-  }
-  png_init_io(png, file);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
-               color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
-  png_set_compression_strategy(png, Z_RLE);
-  png_set_compression_level(png, 1);
-  png_write_info(png, info);
-  png_write_rows(png, const_cast<png_bytepp>(rows), static_cast<png_uint_32>(height));
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
-  return std::fclose(file) == 0;
-}
-
 // Depth as grey: the covered depths' range [min, max] stretched to white (near) … dark grey
 // (far); the background (depth 1, nothing drawn) black.
 bool write_depth_png(const std::string& path, const Image<float>& depth) {
@@ -147,49 +111,38 @@ std::variant<Scene, int> load_render_scene(const RenderOptions& opt, const Outpu
   return std::move(scene);
 }
 
-// Raster rows (y up) to PNG rows (top first), in place: rows handed to the writer bottom first.
-bool write_color_png(const std::string& path, const Image<std::uint32_t>& img) {
-  std::vector<const png_byte*> rows(static_cast<std::size_t>(img.height));
-  for (int r = 0; r < img.height; ++r)
-    rows[static_cast<std::size_t>(r)] =
-        reinterpret_cast<const png_byte*>(&img.at(0, img.height - 1 - r));
-  return write_png_rows(path, img.width, img.height, PNG_COLOR_TYPE_RGBA, rows.data());
-}
-
-int run_render(const RenderOptions& opt, const Output& o) {
+int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
   std::variant<Scene, int> loaded = load_render_scene(opt, o);
   if (const int* status = std::get_if<int>(&loaded)) return *status;
   const Scene& scene = std::get<Scene>(loaded);
   const auto start = std::chrono::steady_clock::now();
   GeometryStats gs;
-  Image<std::uint32_t> color;
-  Image<float> depth;
+  Frame own;  // the frame when the caller keeps none; the scan-line method's image
+  Frame& frame = target ? *target : own;
   std::string method;
   if (scene.scanline) {
     // The world triangles are freed once in window space.
     const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
     ScanlineStats st;
-    color = render_scanline(tris, scene.width, scene.height, scene.background, &st,
-                            opt.depth ? &depth : nullptr);
+    frame.color = render_scanline(tris, scene.width, scene.height, scene.background, &st,
+                                  opt.depth ? &frame.depth : nullptr);
     method = fmt::format(
         "scan-line: one row of depth ({} bytes) instead of the z-buffer's {} bytes; at most {} "
         "triangles active on a row, {} spans",
         st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
   } else {
     FillStats fs;
-    Frame frame = render_zbuffer(scene, &gs, &fs, opt.threads);
-    color = std::move(frame.color);
-    depth = std::move(frame.depth);
+    render_zbuffer(scene, frame, &gs, &fs, opt.threads);
     method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",
-                         depth.data.size() * sizeof(float), fs.fragments, fs.written);
+                         frame.depth.data.size() * sizeof(float), fs.fragments, fs.written);
   }
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!write_color_png(opt.output, color)) {
+  if (!write_color_png(opt.output, frame.color)) {
     o.err << opt.output << ": cannot write the image\n";
     return 1;
   }
-  if (opt.depth && !write_depth_png(*opt.depth, depth)) {
+  if (opt.depth && !write_depth_png(*opt.depth, frame.depth)) {
     o.err << *opt.depth << ": cannot write the depth image\n";
     return 1;
   }

@@ -18,6 +18,7 @@
 #include <set>
 
 #include "app/commands.hpp"
+#include "app/png_writer.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/raster/certified_trace.hpp"
@@ -536,6 +537,40 @@ TEST(RenderKind, StreamedZBufferEqualsTheStagesOneAfterTheOther) {
   EXPECT_EQ(unnamed.triangles.back().v, named.triangles.back().v);
 }
 
+// A render target kept from one frame to the next (as a GL context keeps its framebuffer): each
+// render into it clears it first, and a new size reallocates it, so every frame is the one a
+// fresh target gets, whatever was drawn into it before.
+TEST(RenderKind, AReusedRenderTargetGivesTheFramesOfFreshOnes) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/paperplane.yaml"));
+  ASSERT_FALSE(set.problems.empty());
+  const Scene& plane = std::any_cast<const RenderGiven&>(set.problems[0].given).spec.scene;
+  Scene small = plane, dark = plane;
+  small.width = plane.width / 2 + 3;
+  small.height = plane.height / 3 + 1;
+  dark.background = Rgb{7, 9, 11};
+  Frame target;
+  for (const Scene* s : std::vector<const Scene*>{&plane, &small, &dark, &plane, &small}) {
+    FillStats reused, fresh;
+    render_zbuffer(*s, target, nullptr, &reused);
+    const Frame expected = render_zbuffer(*s, nullptr, &fresh);
+    EXPECT_EQ(target.color.width, s->width);
+    EXPECT_EQ(target.color.height, s->height);
+    EXPECT_EQ(target.depth.width, s->width);
+    EXPECT_EQ(target.color.data, expected.color.data);
+    EXPECT_EQ(target.depth.data, expected.depth.data);
+    EXPECT_EQ(reused.written, fresh.written);
+    EXPECT_GT(fresh.written, 0);
+  }
+  // The dark background shows where nothing is drawn, and only in the dark scene's frame.
+  const auto dark_pixels = [&] {
+    return std::count(target.color.data.begin(), target.color.data.end(), pack(Rgb{7, 9, 11}));
+  };
+  render_zbuffer(dark, target);
+  EXPECT_GT(dark_pixels(), 1000);
+  render_zbuffer(plane, target);
+  EXPECT_EQ(dark_pixels(), 0);
+}
+
 // ---------------------------------------------------------------- exact decisions (issue 14)
 
 // What the float pipeline (geometry() and trace_pixel() on doubles, no exact fallback) shows
@@ -669,6 +704,43 @@ TEST(RenderCli, WritesPngAndScanlineGivesTheSameImage) {
   EXPECT_EQ(run_cli("render " + seed + " -o " + dir + "x.png --size 0x5"), 2);
 }
 
+// Writes the frame with `frustum render`'s writer, reads it back with libpng's own reader and
+// checks every channel of every pixel: row r of the file is the frame's row height − 1 − r
+// (raster rows go up, a PNG's down). Returns the file's colour type (−1 after a failure).
+int png_round_trip(const Image<std::uint32_t>& img, const std::string& name) {
+  const std::string path = ::testing::TempDir() + name;
+  if (!app::write_color_png(path, img)) {
+    ADD_FAILURE() << path << ": not written";
+    return -1;
+  }
+  png_image read{};
+  read.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&read, path.c_str())) {
+    ADD_FAILURE() << path << ": not read";
+    return -1;
+  }
+  read.format = PNG_FORMAT_RGBA;
+  EXPECT_EQ(read.width, static_cast<png_uint_32>(img.width));
+  EXPECT_EQ(read.height, static_cast<png_uint_32>(img.height));
+  std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(read));
+  if (!png_image_finish_read(&read, nullptr, pixels.data(), 0, nullptr)) {
+    ADD_FAILURE() << path << ": not decoded";
+    return -1;
+  }
+  for (int r = 0; r < img.height; ++r)
+    for (int x = 0; x < img.width; ++x) {
+      const std::uint32_t want = img.at(x, img.height - 1 - r);
+      const std::uint8_t* got = &pixels[(static_cast<std::size_t>(r) * img.width + x) * 4];
+      for (int c = 0; c < 4; ++c)
+        if (got[c] != ((want >> (8 * c)) & 0xFF)) {
+          ADD_FAILURE() << path << ": row " << r << " x " << x << " channel " << c;
+          return -1;
+        }
+    }
+  // The IHDR chunk's colour type, byte 25 of the file.
+  return static_cast<unsigned char>(file_bytes(path).at(25));
+}
+
 // The PNG holds the frame pixel for pixel: decoded by libpng's own reader, row r of the file is
 // the frame's row height − 1 − r (raster rows go up, a PNG's down), every channel of every pixel
 // (each pixel distinct here, alpha included).
@@ -682,23 +754,61 @@ TEST(RenderCli, PngHoldsTheFramePixelForPixel) {
       img.at(x, y) = static_cast<std::uint32_t>(x * 7) | static_cast<std::uint32_t>(y * 11) << 8 |
                      static_cast<std::uint32_t>((x * y) & 0xFF) << 16 |
                      static_cast<std::uint32_t>(255 - x) << 24;
-  const std::string path = ::testing::TempDir() + "frame.png";
-  ASSERT_TRUE(app::write_color_png(path, img));
-  png_image read{};
-  read.version = PNG_IMAGE_VERSION;
-  ASSERT_TRUE(png_image_begin_read_from_file(&read, path.c_str()));
-  read.format = PNG_FORMAT_RGBA;
-  ASSERT_EQ(read.width, 37u);
-  ASSERT_EQ(read.height, 23u);
-  std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(read));
-  ASSERT_TRUE(png_image_finish_read(&read, nullptr, pixels.data(), 0, nullptr));
-  for (int r = 0; r < img.height; ++r)
-    for (int x = 0; x < img.width; ++x) {
-      const std::uint32_t want = img.at(x, img.height - 1 - r);
-      const std::uint8_t* got = &pixels[(static_cast<std::size_t>(r) * img.width + x) * 4];
-      for (int c = 0; c < 4; ++c)
-        ASSERT_EQ(got[c], (want >> (8 * c)) & 0xFF) << "row " << r << " x " << x << " c " << c;
+  EXPECT_EQ(png_round_trip(img, "frame.png"), PNG_COLOR_TYPE_RGBA);
+}
+
+// A frame of at most 256 opaque colours is written as a palette image (1, 2, 4 or 8 bits a
+// pixel: at most 2, 4, 16 or 256 colours), any other as RGBA; each holds the frame pixel for
+// pixel. Runs and scattered pixels, on rows of 301 pixels (the last byte of a packed row partly
+// padding), and every palette size on either side of a bit depth's limit.
+TEST(RenderCli, FewOpaqueColoursMakeAPaletteImageWithTheSamePixels) {
+  for (const int colours : {1, 2, 3, 4, 5, 16, 17, 255, 256, 257, 4000}) {
+    Image<std::uint32_t> img;
+    img.width = 301;
+    img.height = 67;
+    img.data.resize(static_cast<std::size_t>(img.width) * img.height);
+    std::mt19937 rng(static_cast<unsigned>(colours));
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        // Runs of equal pixels, scattered pixels, and in the 14 bottom raster rows (the file's
+        // last) every colour in turn, so that all of them appear.
+        const int k = y >= img.height - 14 ? (y * img.width + x) % colours
+                      : x % 41 < 40        ? static_cast<int>(rng() % colours)
+                                           : (y + x) % colours;
+        img.at(x, y) = pack(Rgb{static_cast<std::uint8_t>(k * 37), static_cast<std::uint8_t>(k),
+                                static_cast<std::uint8_t>(k >> 8)});
+        if (y < img.height - 14 && x > 0 && x % 7 != 0) img.at(x, y) = img.at(x - 1, y);
+      }
+    std::set<std::uint32_t> used(img.data.begin(), img.data.end());
+    ASSERT_EQ(static_cast<int>(used.size()), colours);
+    app::IndexedImage indexed;
+    EXPECT_EQ(app::index_colors(img, indexed), colours <= 256) << colours;
+    if (colours <= 256) {
+      EXPECT_EQ(static_cast<int>(indexed.palette.size()), colours);
+      EXPECT_EQ(indexed.palette[0], img.at(0, img.height - 1));  // the top row's first pixel
+      EXPECT_EQ(indexed.indices[0], 0);
     }
+    const std::string name = fmt::format("c{}.png", colours);
+    EXPECT_EQ(png_round_trip(img, name),
+              colours <= 256 ? PNG_COLOR_TYPE_PALETTE : PNG_COLOR_TYPE_RGBA)
+        << colours;
+    // The IHDR's bit depth, byte 24 of the file.
+    const int bits = colours <= 2 ? 1 : colours <= 4 ? 2 : colours <= 16 ? 4 : 8;
+    EXPECT_EQ(static_cast<int>(file_bytes(::testing::TempDir() + name).at(24)), bits) << colours;
+  }
+  // One pixel not opaque among few colours: RGBA, so that its alpha is kept.
+  Image<std::uint32_t> img(40, 30, pack(Rgb{1, 2, 3}));
+  img.at(5, 6) &= 0x7fffffffu;
+  EXPECT_EQ(png_round_trip(img, "alpha.png"), PNG_COLOR_TYPE_RGBA);
+}
+
+// The paper plane (a lit, flat-shaded scene) is a palette image of the rendered frame.
+TEST(RenderCli, ThePaperPlaneIsAPaletteImageOfItsFrame) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/paperplane.yaml"));
+  ASSERT_FALSE(set.problems.empty());
+  const Scene& scene = std::any_cast<const RenderGiven&>(set.problems[0].given).spec.scene;
+  const Frame frame = render_zbuffer(scene);
+  EXPECT_EQ(png_round_trip(frame.color, "plane.png"), PNG_COLOR_TYPE_PALETTE);
 }
 
 }  // namespace

@@ -268,7 +268,14 @@ class ChunkQueue {
 
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStats* stats,
                      int threads) {
-  Frame frame(scene.width, scene.height, scene.background);
+  Frame frame;
+  render_zbuffer(scene, frame, geometry_stats, stats, threads);
+  return frame;
+}
+
+void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
+                    FillStats* stats, int threads) {
+  frame.reset(scene.width, scene.height, scene.background);
   GeometryStage stage(scene);
   int source = 0, drawn = 0;
   if (threads < 2) {
@@ -303,7 +310,6 @@ Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStat
     if (error) std::rethrow_exception(error);
   }
   if (geometry_stats) *geometry_stats = stage.stats;
-  return frame;
 }
 
 PixelTrace trace_pixel(const std::vector<WindowTriangle>& triangles, int i, int j, Rgb background) {

@@ -122,8 +122,24 @@ class RowSpans {
 struct Frame {
   Image<std::uint32_t> color;  // raster rows, j = 0 the bottom
   Image<float> depth;
+  Frame() = default;
   Frame(int width, int height, Rgb background)
       : color(width, height, pack(background)), depth(width, height, kDepthClear) {}
+  // Cleared to the background and the far depth. A frame kept from one render to the next (a
+  // render target, as a GL context keeps its framebuffer) reuses its buffers when the size is
+  // the same: a fresh 1920 × 1080 frame costs the kernel 16 MB of zeroed pages first.
+  void reset(int width, int height, Rgb background) {
+    reset(color, width, height, pack(background));
+    reset(depth, width, height, kDepthClear);
+  }
+
+ private:
+  template <typename P>
+  static void reset(Image<P>& image, int width, int height, P value) {
+    image.width = width;
+    image.height = height;
+    image.data.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), value);
+  }
 };
 
 struct FillStats {
@@ -152,6 +168,9 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 // is the same bit for bit.
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
                      FillStats* stats = nullptr, int threads = 1);
+// The same into a render target the caller keeps (reset to the scene's size and background).
+void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_stats = nullptr,
+                    FillStats* stats = nullptr, int threads = 1);
 
 // Only what one pixel needs (the render kind): the triangles whose bounds hold the pixel
 // centre compete, in drawing order; no frame is allocated.
