@@ -358,9 +358,10 @@ def main():
         say("## Rendering end to end against llvmpipe (frustum_race)\n")
         say("`LP_NUM_THREADS=N ./build/frustum_race SCENE --size 1920x1080` (bench/render_race.cpp): scene file → "
             "transform → clip → raster → PNG on both sides, runs interleaved. Frustum runs what `frustum render` "
-            "runs; llvmpipe (OSMesa, fixed-function GL) gets the scene from the same reader and the same hierarchy "
+            "runs, into a frame it keeps from run to run as llvmpipe's context keeps its framebuffer; llvmpipe (OSMesa, fixed-function GL) gets the scene from the same reader and the same hierarchy "
             "walk (model transforms), then the view and projection matrices, transforms, clips, lights and "
-            "rasterizes into a depth-tested frame, and its pixels go through the same PNG writer. Frustum renders "
+            "rasterizes into a depth-tested frame, and its pixels go through the same PNG writer (a palette image "
+            "when the frame has at most 256 colours, as both frames here do). Frustum renders "
             "with `--threads` = LP_NUM_THREADS and uses at most two (the geometry beside the fill). CPU time is "
             "the process's (llvmpipe's threads included).\n")
         say("| scene | side | threads | wall min / median / max (s) | CPU (s) |")
