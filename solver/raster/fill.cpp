@@ -20,6 +20,7 @@ namespace {
 constexpr long kSmallBoxPixels = 8;
 // Spans at most this long are filled by the plain loop, without the vector loop's set-up.
 constexpr int kShortSpan = 4;
+constexpr int kPrefetchRows = 4;
 
 struct Clamped {
   int i0, i1, j0, j1;
@@ -184,6 +185,14 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
       fragments += i1 - i0 + 1;
       const int n = i1 - i0 + 1;
       if (n > kShortSpan) {
+        // The same columns kPrefetchRows rows on, where the span will most likely be then.
+        if (j + kPrefetchRows <= box.j1) {
+          const std::size_t ahead = base + kPrefetchRows * static_cast<std::size_t>(width);
+          for (int i = i0; i <= i1; i += 16) {
+            __builtin_prefetch(depth + ahead + i, 1);
+            __builtin_prefetch(color + ahead + i, 1);
+          }
+        }
         written += fill_long_span(d + i0, col + i0, n, row_z, t.a, dx0, c, stats != nullptr);
         continue;
       }
