@@ -18,6 +18,7 @@
 #include <exception>
 #include <new>
 #include <optional>
+#include <thread>
 
 namespace frustum {
 
@@ -40,6 +41,11 @@ bool write_all(int fd, const char* p, std::size_t size) {
 // 8-byte little-endian index, a status byte ('O' ok, 'E' the work threw), then the text.
 constexpr std::size_t kFrameHeader = 17;
 constexpr int kPipeBytes = 1 << 20;
+// After a round that read results, this process waits this long before it polls again, so that
+// the children's results (small, and buffered by the pipes meanwhile) are taken many at a time:
+// woken for each one, as it was, 20,000 variants cost 46,000 context switches and a fifth more
+// CPU time with two children than with one. A time limit is still checked every round.
+constexpr auto kCoalesce = std::chrono::milliseconds(1);
 bool write_frame(int fd, std::size_t item, char status, const std::string& text) {
   const std::uint64_t size = text.size() + 9;
   unsigned char header[kFrameHeader];
@@ -299,6 +305,7 @@ std::vector<IsolatedResult> run_isolated_each(
     const int ready =
         poll(polls.data(), polls.size(), static_cast<int>(std::max<long long>(wait_ms, 0)));
     if (ready < 0) continue;  // EINTR: poll again
+    bool read_some = false;
     for (std::size_t k = 0; k < polls.size(); ++k) {
       const std::size_t j = polled[k];
       Lane& lane = lanes[j];
@@ -311,6 +318,7 @@ std::vector<IsolatedResult> run_isolated_each(
           continue;
         }
         lane.data.append(buffer, static_cast<std::size_t>(n));
+        read_some = true;
         drain(lane);
         if (!dynamic && lane.next >= lane.end) {
           stopped(lane, j, Stop::Eof);
@@ -323,6 +331,9 @@ std::vector<IsolatedResult> run_isolated_each(
       }
       if (lane.fd >= 0 && Clock::now() >= lane.deadline) stopped(lane, j, Stop::Timeout);
     }
+    if (read_some &&
+        std::any_of(lanes.begin(), lanes.end(), [](const Lane& l) { return l.fd >= 0; }))
+      std::this_thread::sleep_for(kCoalesce);
   }
   Board::release(board, jobs);
   // Items without a result: never started once the caller stopped, or (Dynamic) taken by a
