@@ -131,7 +131,7 @@ bool index_colors(const Image<std::uint32_t>& image, IndexedImage& out) {
       const std::uint32_t* q = p + 1;
       while (end - q >= 8) {
         std::uint32_t differ = 0;
-        for (int k = 0; k < 8; ++k) differ |= q[k] ^ c;
+        for (int m = 0; m < 8; ++m) differ |= q[m] ^ c;
         if (differ != 0) break;
         q += 8;
       }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "solver/raster/zbuffer.hpp"
 
@@ -17,9 +18,10 @@ bool write_png_rows(const std::string& path, int width, int height, int color_ty
                     const png_byte* const* rows);
 
 // A frame (raster rows, y up; packed as fill.hpp's pack()) as a PNG, top row first. A frame of
-// at most 256 colours, all opaque — every flat-shaded frame of a scene with few materials and
-// lights — is written as an 8-bit palette image: the same pixels in a quarter of the bytes to
-// compress. Any other frame is written as 8-bit RGBA.
+// at most 256 colours, all opaque — every flat-shaded frame of a scene with few fills — is
+// written as a palette image of 1, 2, 4 or 8 bits a pixel (at most 2, 4, 16 or 256 colours):
+// the same pixels in a quarter to a thirty-second of the bytes to compress. Any other frame is
+// written as 8-bit RGBA.
 bool write_color_png(const std::string& path, const Image<std::uint32_t>& image);
 
 // What write_color_png chooses: the palette (at most 256 opaque colours, in the order of their
