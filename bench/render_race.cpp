@@ -287,8 +287,7 @@ int race(int argc, char** argv) {
   Frame frame(scene.width, scene.height, scene.background);
   double fill_best = 1e30;
   for (int k = 0; k < kMeasurePasses; ++k) {
-    std::fill(frame.depth.data.begin(), frame.depth.data.end(), kDepthClear);
-    std::fill(frame.color.data.begin(), frame.color.data.end(), pack(scene.background));
+    frame.reset(scene.width, scene.height, scene.background);
     const auto t0 = std::chrono::steady_clock::now();
     for (std::size_t t = 0; t < tris.size(); ++t)
       draw_triangle(setup_raster(tris[t], static_cast<int>(t)), frame);

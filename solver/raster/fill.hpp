@@ -129,16 +129,8 @@ struct Frame {
   // render target, as a GL context keeps its framebuffer) reuses its buffers when the size is
   // the same: a fresh 1920 × 1080 frame costs the kernel 16 MB of zeroed pages first.
   void reset(int width, int height, Rgb background) {
-    reset(color, width, height, pack(background));
-    reset(depth, width, height, kDepthClear);
-  }
-
- private:
-  template <typename P>
-  static void reset(Image<P>& image, int width, int height, P value) {
-    image.width = width;
-    image.height = height;
-    image.data.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), value);
+    color.assign(width, height, pack(background));
+    depth.assign(width, height, kDepthClear);
   }
 };
 

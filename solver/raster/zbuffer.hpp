@@ -26,6 +26,12 @@ struct Image {
       : width(w),
         height(h),
         data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
+  // w × h pixels of `fill`, in the buffer it has when the size is the same.
+  void assign(int w, int h, const P& fill) {
+    width = w;
+    height = h;
+    data.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill);
+  }
   P& at(int i, int j) { return data[static_cast<std::size_t>(j) * width + i]; }
   const P& at(int i, int j) const { return data[static_cast<std::size_t>(j) * width + i]; }
 };
