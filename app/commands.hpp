@@ -92,7 +92,7 @@ struct RenderOptions {
   std::optional<std::pair<int, int>> size;  // --size WxH
   std::optional<std::string> id;            // the render problem of a set
   std::optional<std::string> method;        // zbuffer | scanline
-  int threads = 1;                          // ≥ 2: the geometry beside the fill (z-buffer)
+  int threads = 1;  // ≥ 2: fill.hpp's render_zbuffer (and the PNG's colour scan) share the work
 };
 // target: a frame the caller keeps from one render to the next, reused when the size is the
 // same (bench/render_race.cpp, as llvmpipe's context keeps its framebuffer); none: a new one.

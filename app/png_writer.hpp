@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/frame_palette.hpp"
 #include "solver/raster/zbuffer.hpp"
 
 namespace frustum::app {
@@ -21,16 +22,8 @@ bool write_png_rows(const std::string& path, int width, int height, int color_ty
 // at most 256 colours, all opaque — every flat-shaded frame of a scene with few fills — is
 // written as a palette image of 1, 2, 4 or 8 bits a pixel (at most 2, 4, 16 or 256 colours):
 // the same pixels in a quarter to a thirty-second of the bytes to compress. Any other frame is
-// written as 8-bit RGBA.
-bool write_color_png(const std::string& path, const Image<std::uint32_t>& image);
-
-// What write_color_png chooses: the palette (at most 256 opaque colours, in the order of their
-// first appearance from the top row down) and each pixel's index into it, top row first; or
-// false when the frame has more colours or a colour that is not opaque.
-struct IndexedImage {
-  std::vector<std::uint32_t> palette;  // packed colours
-  std::vector<std::uint8_t> indices;   // width × height, top row first
-};
-bool index_colors(const Image<std::uint32_t>& image, IndexedImage& out);
+// written as 8-bit RGBA (frame_palette.hpp finds the palette; `threads` scan parts of the frame
+// side by side, and the file is the same whatever their number).
+bool write_color_png(const std::string& path, const Image<std::uint32_t>& image, int threads = 1);
 
 }  // namespace frustum::app

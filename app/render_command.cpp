@@ -138,7 +138,7 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
   }
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!write_color_png(opt.output, frame.color)) {
+  if (!write_color_png(opt.output, frame.color, opt.threads)) {
     o.err << opt.output << ": cannot write the image\n";
     return 1;
   }

@@ -13,7 +13,8 @@
 //   the viewport and rasterizes into a depth-tested frame; glReadPixels, and the same PNG writer
 //   (write_color_png). The context is made once, before the runs.
 // LP_NUM_THREADS is left as the caller set it (unset: Mesa's default, one per core), and Frustum
-// renders with as many threads (`--threads`; it uses at most two). In the same run: the bandwidth
+// renders with as many threads (`--threads`: all of them on a modelled scene, at most two on a
+// scene of more than fill.hpp's kBandedTriangles). In the same run: the bandwidth
 // ceiling (bandwidth_ceiling.hpp) and the fraction of it that Frustum's fill reaches on this scene,
 // and how many pixels of the two images differ (by more than 2 levels in a channel); --max-differ F
 // fails (exit 1) when more than the fraction F of the pixels do.
@@ -180,7 +181,7 @@ const Image<std::uint32_t>& render_llvmpipe(const app::RenderOptions& opt, Llvmp
   }
   glFinish();
   glReadPixels(0, 0, scene.width, scene.height, GL_RGBA, GL_UNSIGNED_BYTE, gl.frame.data.data());
-  if (!app::write_color_png(opt.output, gl.frame)) {
+  if (!app::write_color_png(opt.output, gl.frame, opt.threads)) {
     std::cerr << opt.output << ": cannot write the image\n";
     std::exit(2);
   }
@@ -268,15 +269,16 @@ int race(int argc, char** argv) {
   const std::string llvmpipe_png = (std::filesystem::path(out_dir) / "llvmpipe.png").string();
   const char* lp_env = std::getenv("LP_NUM_THREADS");
   const std::string lp_threads = lp_env ? lp_env : "unset";
-  // Frustum gets as many threads as llvmpipe (unset: one per core, Mesa's default); its render
-  // uses at most two (the geometry beside the fill).
+  // Frustum gets as many threads as llvmpipe (unset: one per core, Mesa's default); on a scene of
+  // more than kBandedTriangles its render uses at most two (the geometry beside the fill).
   const int asked = lp_env ? std::max(1, std::atoi(lp_env))
                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   opt.threads = asked;
-  const std::string frustum_threads = std::to_string(std::min(asked, 2));
 
   // Untimed: the frame size, the context, Frustum's own image for the comparison, the fill alone.
   const Scene scene = load(opt);
+  const int used = zbuffer_threads(scene, asked);
+  const std::string frustum_threads = std::to_string(used);
   Llvmpipe gl(scene.width, scene.height);
   GeometryStats gs;
   const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
@@ -360,9 +362,10 @@ int race(int argc, char** argv) {
         "after llvmpipe's runs (the application's own and llvmpipe's, which rasterize beside "
         "it)\n",
         lp_threads, lp_env ? "" : " (Mesa's default: one per core)", asked,
-        asked == 1 ? " (one thread)"
-                   : fmt::format(", which uses 2 threads (the geometry beside the fill){}",
-                                 asked > 2 ? ": not N threads against N" : ""),
+        asked == 1      ? std::string(" (one thread)")
+        : used == asked ? fmt::format(" (geometry and fill shared by {} threads)", used)
+                        : fmt::format(", which uses 2 threads (the geometry beside the fill): not "
+                                      "N threads against N"),
         threads);
     std::cout << "side      threads  wall min / median / max (s)  CPU median (s)\n";
     auto row = [](const char* name, const std::string& threads, const Times& t) {

@@ -326,6 +326,7 @@ TEST(Scene, TranslatedCopiesAreTheTranslationsProductBitForBit) {
     s.objects.push_back(o);
     const FlatScene flat = flatten(s);
     ASSERT_EQ(flat.triangles.size(), 2u * 5 * 3 * 3);
+    EXPECT_EQ(world_triangle_count(s), flat.triangles.size());
     std::size_t n = 0;
     for (int i = -2; i <= 2; ++i)
       for (int j = -1; j <= 1; ++j)
@@ -366,6 +367,11 @@ TEST(Scene, HierarchyComposesParentThenChild) {
   s.objects.push_back(parent);
   const FlatScene flat = flatten(s);
   ASSERT_EQ(flat.triangles.size(), 3u);
+  // Counted without the walk: the parent's none, the child's one triangle three times.
+  EXPECT_EQ(world_triangle_count(s), 3u);
+  s.objects.push_back(child);  // and once more at the top level, three copies again
+  EXPECT_EQ(world_triangle_count(s), 6u);
+  EXPECT_EQ(flatten(s).triangles.size(), 6u);
   // M = T(10,0,0)·R_z(90°)·T(0,0,5k)·T(1,0,0): the child's origin lands at (10, 1, 5k).
   for (int k = 0; k < 3; ++k) {
     EXPECT_TRUE(flat.triangles[k].v[0].isApprox(Vec3d(10, 1, 5.0 * k)))
@@ -519,7 +525,9 @@ TEST(RenderKind, StreamedZBufferEqualsTheStagesOneAfterTheOther) {
   EXPECT_EQ(streamed_gs.window, gs.window);
   EXPECT_EQ(streamed_fs.fragments, fs.fragments);
   EXPECT_EQ(streamed_fs.written, fs.written);
-  // The geometry on a thread of its own, handing chunks to the fill: the same frame.
+  // With threads, the scene (5,296 world triangles) set up whole and filled band by band, the
+  // threads taking bands in turn: the same frame.
+  ASSERT_EQ(world_triangle_count(scene), flatten(scene).triangles.size());
   for (const int threads : {2, 4}) {
     GeometryStats threaded_gs;
     FillStats threaded_fs;
@@ -549,9 +557,11 @@ TEST(RenderKind, AReusedRenderTargetGivesTheFramesOfFreshOnes) {
   small.height = plane.height / 3 + 1;
   dark.background = Rgb{7, 9, 11};
   Frame target;
+  int turn = 0;
   for (const Scene* s : std::vector<const Scene*>{&plane, &small, &dark, &plane, &small}) {
     FillStats reused, fresh;
-    render_zbuffer(*s, target, nullptr, &reused);
+    // One thread and two in turn (two fill the target band by band, clearing each band).
+    render_zbuffer(*s, target, nullptr, &reused, 1 + turn++ % 2);
     const Frame expected = render_zbuffer(*s, nullptr, &fresh);
     EXPECT_EQ(target.color.width, s->width);
     EXPECT_EQ(target.color.height, s->height);
@@ -707,11 +717,17 @@ TEST(RenderCli, WritesPngAndScanlineGivesTheSameImage) {
 // Writes the frame with `frustum render`'s writer, reads it back with libpng's own reader and
 // checks every channel of every pixel: row r of the file is the frame's row height − 1 − r
 // (raster rows go up, a PNG's down). Returns the file's colour type (−1 after a failure).
+// Written again with the frame scanned by 2 and 3 threads: the same bytes.
 int png_round_trip(const Image<std::uint32_t>& img, const std::string& name) {
   const std::string path = ::testing::TempDir() + name;
   if (!app::write_color_png(path, img)) {
     ADD_FAILURE() << path << ": not written";
     return -1;
+  }
+  for (const int threads : {2, 3}) {
+    const std::string again = ::testing::TempDir() + std::to_string(threads) + name;
+    EXPECT_TRUE(app::write_color_png(again, img, threads));
+    EXPECT_EQ(file_bytes(again), file_bytes(path)) << threads << " threads";
   }
   png_image read{};
   read.version = PNG_IMAGE_VERSION;
@@ -760,12 +776,13 @@ TEST(RenderCli, PngHoldsTheFramePixelForPixel) {
 // A frame of at most 256 opaque colours is written as a palette image (1, 2, 4 or 8 bits a
 // pixel: at most 2, 4, 16 or 256 colours), any other as RGBA; each holds the frame pixel for
 // pixel. Runs and scattered pixels, on rows of 301 pixels (the last byte of a packed row partly
-// padding), and every palette size on either side of a bit depth's limit.
+// padding), and every palette size on either side of a bit depth's limit; 200 rows, so that two
+// or three threads each scan a part (a colour may first appear in any part).
 TEST(RenderCli, FewOpaqueColoursMakeAPaletteImageWithTheSamePixels) {
   for (const int colours : {1, 2, 3, 4, 5, 16, 17, 255, 256, 257, 4000}) {
     Image<std::uint32_t> img;
     img.width = 301;
-    img.height = 67;
+    img.height = 200;
     img.data.resize(static_cast<std::size_t>(img.width) * img.height);
     std::mt19937 rng(static_cast<unsigned>(colours));
     for (int y = 0; y < img.height; ++y)

@@ -132,6 +132,11 @@ struct Frame {
     color.assign(width, height, pack(background));
     depth.assign(width, height, kDepthClear);
   }
+  // Sized without clearing: the caller writes every pixel (fill_in_bands clears band by band).
+  void resize(int width, int height) {
+    color.resize(width, height);
+    depth.resize(width, height);
+  }
 };
 
 struct FillStats {
@@ -148,6 +153,10 @@ void clear_upper_vector_state();
 
 // The z-buffer's inner loop for one triangle.
 void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats = nullptr);
+// Only its pixels on rows j_lo … j_hi (a band of the frame), each exactly as draw_triangle
+// gives it; counts the band's fragments and writes, not the triangle.
+void draw_triangle_rows(const RasterTriangle& t, Frame& frame, int j_lo, int j_hi,
+                        FillStats* stats = nullptr);
 
 // Setup + draw for every triangle, in order.
 Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,
@@ -155,12 +164,17 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 // The whole pipeline streamed (`frustum render`): each world triangle, as the hierarchy walk
 // yields it, through the geometry stage and into the frame; neither the world nor the window
 // triangles are kept. The same frame as render_zbuffer(geometry(scene, flatten(scene)), …).
-// threads ≥ 2: the walk and the geometry run on a thread of their own, handing window
-// triangles to the fill (on the caller's thread, in drawing order) in small chunks; the frame
-// is the same bit for bit.
+// threads ≥ 2: a scene of at most kBandedTriangles world triangles (a modelled scene) goes
+// through the geometry in parts side by side and is filled band by band by every thread
+// (banded_fill.hpp); a larger one streams, the walk and the geometry on a thread of their own
+// handing window triangles to the fill (on the caller's thread, in drawing order) in small
+// chunks. Either way the frame is the same bit for bit.
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
                      FillStats* stats = nullptr, int threads = 1);
 // The same into a render target the caller keeps (reset to the scene's size and background).
+// How many threads it keeps busy: all it is given for a modelled scene, at most two otherwise.
+int zbuffer_threads(const Scene& scene, int threads);
+inline constexpr std::size_t kBandedTriangles = std::size_t(1) << 15;
 void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_stats = nullptr,
                     FillStats* stats = nullptr, int threads = 1);
 

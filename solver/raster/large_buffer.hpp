@@ -10,6 +10,8 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <type_traits>
+#include <utility>
 
 namespace frustum {
 
@@ -38,6 +40,17 @@ struct LargeBufferAllocator {
       ::operator delete(p, std::align_val_t(alignof(T)));
     else
       std::free(p);
+  }
+  // resize() leaves new pixels default-initialised (indeterminate for numbers), so that a
+  // frame whose every pixel is written next (fill_in_bands clears each band itself) is not
+  // written twice; construction from a value is as usual.
+  template <typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
   template <typename U>
   bool operator==(const LargeBufferAllocator<U>&) const noexcept {

@@ -160,6 +160,13 @@ SceneObject world_object(const Scene& scene) {
 
 }  // namespace
 
+std::size_t world_triangle_count(const Scene& scene) {
+  std::size_t n = 0;
+  for (const SceneObject& o : scene.objects)
+    n += static_cast<std::size_t>(o.repeat ? o.repeat->count() : 1) * flat_size(o).first;
+  return n;
+}
+
 void for_each_world_triangle(const Scene& scene,
                              const std::function<void(const WorldTriangle&)>& visit) {
   FlatSink sink{visit};

@@ -37,6 +37,8 @@ struct FlatScene {
 // Without `names`, FlatScene::objects stays empty (WorldTriangle::object still counts the
 // objects): a million copies' names would take more memory than their triangles.
 FlatScene flatten(const Scene& scene, bool names = true);
+// How many world triangles the walk yields (every copy of a repeat counted), without walking.
+std::size_t world_triangle_count(const Scene& scene);
 // The same walk, each world triangle handed to `visit` in order and none kept.
 void for_each_world_triangle(const Scene& scene,
                              const std::function<void(const WorldTriangle&)>& visit);

@@ -32,6 +32,13 @@ struct Image {
     height = h;
     data.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill);
   }
+  // w × h pixels; those the buffer did not hold are left to the caller to write (numbers are
+  // not initialised).
+  void resize(int w, int h) {
+    width = w;
+    height = h;
+    data.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  }
   P& at(int i, int j) { return data[static_cast<std::size_t>(j) * width + i]; }
   const P& at(int i, int j) const { return data[static_cast<std::size_t>(j) * width + i]; }
 };

@@ -1,0 +1,126 @@
+#include "solver/raster/banded_fill.hpp"
+
+#include <algorithm>
+#include <atomic>
+
+#include "solver/util/side_by_side.hpp"
+
+namespace frustum {
+
+namespace {
+
+// Fewer world triangles than this to a thread are not worth its start.
+constexpr std::size_t kMinTrianglesPerPart = 512;
+
+// Bins as one array (a counting sort by band): band b's triangles are
+// index[start[b]] … index[start[b + 1] − 1], in drawing order.
+struct Bins {
+  std::vector<int> start, index;
+};
+
+Bins bin_by_band(const std::vector<RasterTriangle>& triangles, int width, int height, int bands) {
+  Bins bins;
+  bins.start.assign(static_cast<std::size_t>(bands) + 1, 0);
+  // The bands a triangle's box spans inside the frame, or none (degenerate, off the frame).
+  const auto span = [&](const RasterTriangle& t, int& b0, int& b1) {
+    const TriangleSetup& s = t.setup;
+    if (s.degenerate || s.i_max < 0 || s.i_min >= width || s.i_min > s.i_max) return false;
+    const int j0 = std::max(s.j_min, 0), j1 = std::min(s.j_max, height - 1);
+    if (j0 > j1) return false;
+    b0 = j0 / kBandRows;
+    b1 = j1 / kBandRows;
+    return true;
+  };
+  int b0 = 0, b1 = 0;
+  for (const RasterTriangle& t : triangles)
+    if (span(t, b0, b1))
+      for (int b = b0; b <= b1; ++b) ++bins.start[static_cast<std::size_t>(b) + 1];
+  for (int b = 0; b < bands; ++b) bins.start[b + 1] += bins.start[b];
+  bins.index.resize(static_cast<std::size_t>(bins.start[bands]));
+  std::vector<int> next(bins.start.begin(), bins.start.end() - 1);
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+    if (span(triangles[k], b0, b1))
+      for (int b = b0; b <= b1; ++b) bins.index[next[b]++] = static_cast<int>(k);
+  return bins;
+}
+
+}  // namespace
+
+void fill_in_bands(const std::vector<RasterTriangle>& triangles, Frame& frame, int width,
+                   int height, Rgb background, FillStats* stats, int threads) {
+  frame.resize(width, height);
+  const int bands = (height + kBandRows - 1) / kBandRows;
+  const Bins bins = bin_by_band(triangles, width, height, bands);
+  const std::uint32_t clear_color = pack(background);
+  std::atomic<int> next_band{0};
+  const auto worker = [&](FillStats& counts) {
+    FillStats* counted = stats ? &counts : nullptr;  // counting costs the span loop a reduction
+    for (int b; (b = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) {
+      const int j0 = b * kBandRows, j1 = std::min(height, j0 + kBandRows) - 1;
+      const std::size_t first = static_cast<std::size_t>(j0) * static_cast<std::size_t>(width),
+                        last = static_cast<std::size_t>(j1 + 1) * static_cast<std::size_t>(width);
+      std::fill(frame.color.data.begin() + first, frame.color.data.begin() + last, clear_color);
+      std::fill(frame.depth.data.begin() + first, frame.depth.data.begin() + last, kDepthClear);
+      for (int k = bins.start[b]; k < bins.start[b + 1]; ++k)
+        draw_triangle_rows(triangles[bins.index[k]], frame, j0, j1, counted);
+    }
+  };
+  const int workers = std::max(1, std::min(threads, bands));
+  std::vector<FillStats> counts(static_cast<std::size_t>(workers));
+  side_by_side(workers, [&](int k) { worker(counts[static_cast<std::size_t>(k)]); });
+  if (stats) {
+    stats->triangles += static_cast<long>(triangles.size());
+    for (const FillStats& c : counts) {
+      stats->fragments += c.fragments;
+      stats->written += c.written;
+    }
+  }
+}
+
+void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
+                     FillStats* stats, int threads) {
+  // The world triangles walked here (the walk copies the scene's objects, exact coordinates
+  // included, whose reference counts are not atomic: not a walk per thread), then in `parts`
+  // contiguous ranges, each through a geometry stage and set up on a thread of its own, and
+  // joined in drawing order.
+  const FlatScene flat = flatten(scene, false);
+  const std::size_t count = flat.triangles.size();
+  const int parts = static_cast<int>(
+      std::clamp<std::size_t>(count / kMinTrianglesPerPart, 1, static_cast<std::size_t>(threads)));
+  std::vector<std::vector<RasterTriangle>> setups(static_cast<std::size_t>(parts));
+  std::vector<GeometryStage> stages;  // made here: each reads the scene only once made
+  for (int k = 0; k < parts; ++k) stages.emplace_back(scene);
+  side_by_side(parts, [&](int k) {
+    const std::size_t lo = count * static_cast<std::size_t>(k) / static_cast<std::size_t>(parts),
+                      hi =
+                          count * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(parts);
+    GeometryStage& stage = stages[static_cast<std::size_t>(k)];
+    std::vector<WindowTriangle> window;  // one world triangle's, reused
+    std::vector<RasterTriangle>& out = setups[static_cast<std::size_t>(k)];
+    out.reserve(hi - lo);
+    for (std::size_t source = lo; source < hi; ++source) {
+      window.clear();
+      stage.add(flat.triangles[source], static_cast<int>(source), window);
+      for (const WindowTriangle& w : window) out.push_back(setup_raster(w));
+    }
+  });
+  std::vector<RasterTriangle> all = std::move(setups[0]);
+  for (int k = 1; k < parts; ++k)
+    all.insert(all.end(), setups[static_cast<std::size_t>(k)].begin(),
+               setups[static_cast<std::size_t>(k)].end());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k].source = static_cast<int>(k);
+  fill_in_bands(all, frame, scene.width, scene.height, scene.background, stats, threads);
+  if (geometry_stats) {
+    *geometry_stats = GeometryStats{};
+    for (const GeometryStage& stage : stages) {
+      const GeometryStats& g = stage.stats;
+      geometry_stats->triangles += g.triangles;
+      geometry_stats->outside += g.outside;
+      geometry_stats->clipped += g.clipped;
+      geometry_stats->culled += g.culled;
+      geometry_stats->window += g.window;
+    }
+  }
+}
+
+}  // namespace frustum
