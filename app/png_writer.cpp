@@ -2,11 +2,13 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <vector>
 
 #include "app/frame_palette.hpp"
+#include "solver/util/side_by_side.hpp"
 
 namespace frustum::app {
 
@@ -17,8 +19,12 @@ namespace {
 // the PNG specification recommends for them. zlib's run-length strategy then finds the runs in
 // one pass, at a tenth of the time of a full deflate search. Plain data only between setjmp and
 // png_write_end: libpng reports an error by longjmp.
+// `rows` are compressed by libpng; or, with `idat`, the image data is that zlib stream, already
+// compressed, written as the one IDAT chunk (libpng still writes the signature, IHDR, PLTE, the
+// chunks' CRCs and IEND).
 bool write_png(const std::string& path, int width, int height, int color_type, int bit_depth,
-               const png_byte* const* rows, const std::vector<std::uint32_t>* palette) {
+               const png_byte* const* rows, const std::vector<std::uint32_t>* palette,
+               const std::vector<unsigned char>* idat = nullptr) {
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) return false;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -54,10 +60,73 @@ bool write_png(const std::string& path, int width, int height, int color_type, i
   png_set_compression_strategy(png, Z_RLE);
   png_set_compression_level(png, 1);
   png_write_info(png, info);
-  png_write_rows(png, const_cast<png_bytepp>(rows), static_cast<png_uint_32>(height));
-  png_write_end(png, nullptr);
+  if (idat) {
+    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"), idat->data(), idat->size());
+    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
+  } else {
+    png_write_rows(png, const_cast<png_bytepp>(rows), static_cast<png_uint_32>(height));
+    png_write_end(png, nullptr);
+  }
   png_destroy_write_struct(&png, &info);
   return std::fclose(file) == 0;
+}
+
+// A palette frame's image data as one zlib stream, made of pieces of kRowsPerPiece rows that
+// are packed and compressed independently — side by side with `threads` — and joined: the zlib
+// header, each piece's raw deflate data (every piece but the last ends on a byte boundary with a
+// sync flush), and the Adler-32 of all the rows, combined from the pieces'. The run-length
+// strategy only ever refers back one byte, so a piece loses nothing by not seeing the rows
+// before it, and the stream is the same whatever the number of threads. Empty on a zlib error.
+constexpr int kRowsPerPiece = 64;
+
+std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int threads) {
+  const auto stride = static_cast<std::size_t>((runs.width * bits + 7) / 8) + 1;  // + filter byte
+  const int pieces = std::max(1, (runs.height + kRowsPerPiece - 1) / kRowsPerPiece);
+  struct Piece {
+    std::vector<unsigned char> out;
+    uLong adler = 0, length = 0;
+    bool ok = false;
+  };
+  std::vector<Piece> piece(static_cast<std::size_t>(pieces));
+  const auto compress = [&](int k) {
+    Piece& p = piece[static_cast<std::size_t>(k)];
+    const int r0 = k * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
+    std::vector<unsigned char> raw(stride * static_cast<std::size_t>(r1 - r0));
+    for (int r = r0; r < r1; ++r) {
+      unsigned char* row = raw.data() + stride * static_cast<std::size_t>(r - r0);
+      row[0] = 0;  // filter type None: a palette row's runs are already repeated bytes
+      pack_row(runs, r, bits, row + 1);
+    }
+    p.length = static_cast<uLong>(raw.size());
+    p.adler = adler32(adler32(0L, Z_NULL, 0), raw.data(), static_cast<uInt>(raw.size()));
+    z_stream z{};
+    if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK) return;
+    p.out.resize(deflateBound(&z, p.length) + 16);  // + a sync flush's empty block
+    z.next_in = raw.data();
+    z.avail_in = static_cast<uInt>(raw.size());
+    z.next_out = p.out.data();
+    z.avail_out = static_cast<uInt>(p.out.size());
+    const bool last = k == pieces - 1;
+    const int rc = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
+    p.ok = (last ? rc == Z_STREAM_END : rc == Z_OK && z.avail_out > 0) && z.avail_in == 0;
+    p.out.resize(z.total_out);
+    deflateEnd(&z);
+  };
+  const int parts = std::max(1, std::min(threads, pieces));
+  side_by_side(parts, [&](int part) {
+    for (int k = pieces * part / parts; k < pieces * (part + 1) / parts; ++k) compress(k);
+  });
+  // CMF 0x78: deflate with a 32 KB window; FLG 0x01: the fastest level, 0x7801 divisible by 31.
+  std::vector<unsigned char> stream = {0x78, 0x01};
+  uLong adler = adler32(0L, Z_NULL, 0);
+  for (const Piece& p : piece) {
+    if (!p.ok) return {};
+    stream.insert(stream.end(), p.out.begin(), p.out.end());
+    adler = adler32_combine(adler, p.adler, static_cast<z_off_t>(p.length));
+  }
+  for (int shift = 24; shift >= 0; shift -= 8)
+    stream.push_back(static_cast<unsigned char>((adler >> shift) & 0xff));
+  return stream;
 }
 
 }  // namespace
@@ -73,16 +142,12 @@ bool write_color_png(const std::string& path, const Image<std::uint32_t>& img, i
   FrameRuns runs;
   if (frame_runs(img, runs, threads)) {
     // A palette of at most 16 colours packs 2, 4 or 8 pixels into a byte: fewer bytes to
-    // compress. Each row is packed from its runs.
+    // compress. Each row is packed from its runs, and the rows compressed in pieces.
     const int bits = palette_bit_depth(runs.palette.size());
-    const auto stride = static_cast<std::size_t>((img.width * bits + 7) / 8);
-    std::vector<std::uint8_t> packed(stride * height);
-    for (std::size_t r = 0; r < height; ++r) {
-      pack_row(runs, static_cast<int>(r), bits, packed.data() + r * stride);
-      rows[r] = packed.data() + r * stride;
-    }
-    return write_png(path, img.width, img.height, PNG_COLOR_TYPE_PALETTE, bits, rows.data(),
-                     &runs.palette);
+    const std::vector<unsigned char> idat = compress_rows(runs, bits, threads);
+    if (!idat.empty())
+      return write_png(path, img.width, img.height, PNG_COLOR_TYPE_PALETTE, bits, nullptr,
+                       &runs.palette, &idat);
   }
   // Raster rows (y up) to PNG rows (top first), in place: rows handed to the writer bottom first.
   for (std::size_t r = 0; r < height; ++r)

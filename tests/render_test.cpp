@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <png.h>
 #include <sys/wait.h>
+#include <zlib.h>
 
 #include <array>
 #include <bit>
@@ -714,6 +715,33 @@ TEST(RenderCli, WritesPngAndScanlineGivesTheSameImage) {
   EXPECT_EQ(run_cli("render " + seed + " -o " + dir + "x.png --size 0x5"), 2);
 }
 
+// The file as zlib reads it, independently of libpng: every chunk's CRC, and the image data
+// (the IDAT chunks joined) inflated with its Adler-32 checked. Returns the inflated length, or
+// −1 when a check fails or it is longer than `capacity`.
+long inflated_image_data(const std::string& bytes, std::size_t capacity) {
+  std::string idat;
+  for (std::size_t at = 8; at + 12 <= bytes.size();) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(bytes[k]); };
+    const std::size_t n = std::size_t{byte(at)} << 24 | std::size_t{byte(at + 1)} << 16 |
+                          std::size_t{byte(at + 2)} << 8 | byte(at + 3);
+    if (at + 12 + n > bytes.size()) return -1;
+    const std::string type_and_body = bytes.substr(at + 4, 4 + n);
+    const uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(type_and_body.data()),
+                            static_cast<uInt>(type_and_body.size()));
+    uLong stored = 0;
+    for (int k = 0; k < 4; ++k) stored = stored << 8 | byte(at + 8 + n + k);
+    if (crc != stored) return -1;
+    if (type_and_body.compare(0, 4, "IDAT") == 0) idat += type_and_body.substr(4);
+    at += 12 + n;
+  }
+  std::vector<Bytef> out(capacity);
+  uLongf length = out.size();
+  if (uncompress(out.data(), &length, reinterpret_cast<const Bytef*>(idat.data()),
+                 static_cast<uLong>(idat.size())) != Z_OK)
+    return -1;
+  return static_cast<long>(length);
+}
+
 // Writes the frame with `frustum render`'s writer, reads it back with libpng's own reader and
 // checks every channel of every pixel: row r of the file is the frame's row height − 1 − r
 // (raster rows go up, a PNG's down). Returns the file's colour type (−1 after a failure).
@@ -753,8 +781,15 @@ int png_round_trip(const Image<std::uint32_t>& img, const std::string& name) {
           return -1;
         }
     }
+  // zlib's own reading: the CRCs and the Adler-32 hold, and the data is one filter byte and
+  // the row's samples per row.
+  const std::string bytes = file_bytes(path);
+  const int bits = static_cast<unsigned char>(bytes.at(24));
+  const int channels = static_cast<unsigned char>(bytes.at(25)) == PNG_COLOR_TYPE_RGBA ? 4 : 1;
+  const long expected = static_cast<long>(img.height) * (1 + (img.width * channels * bits + 7) / 8);
+  EXPECT_EQ(inflated_image_data(bytes, static_cast<std::size_t>(expected) + 1), expected) << path;
   // The IHDR chunk's colour type, byte 25 of the file.
-  return static_cast<unsigned char>(file_bytes(path).at(25));
+  return static_cast<unsigned char>(bytes.at(25));
 }
 
 // The PNG holds the frame pixel for pixel: decoded by libpng's own reader, row r of the file is
@@ -812,6 +847,13 @@ TEST(RenderCli, FewOpaqueColoursMakeAPaletteImageWithTheSamePixels) {
     // The IHDR's bit depth, byte 24 of the file.
     const int bits = colours <= 2 ? 1 : colours <= 4 ? 2 : colours <= 16 ? 4 : 8;
     EXPECT_EQ(static_cast<int>(file_bytes(::testing::TempDir() + name).at(24)), bits) << colours;
+  }
+  // Heights about a piece of the compressed stream (64 rows) and a single row.
+  for (const int height : {1, 63, 64, 65, 129}) {
+    Image<std::uint32_t> img(45, height, pack(Rgb{9, 8, 7}));
+    for (int y = 0; y < height; ++y)
+      img.at((y * 7) % 45, y) = pack(Rgb{200, 100, static_cast<std::uint8_t>(y % 2 ? 50 : 0)});
+    EXPECT_EQ(png_round_trip(img, fmt::format("h{}.png", height)), PNG_COLOR_TYPE_PALETTE);
   }
   // One pixel not opaque among few colours: RGBA, so that its alpha is kept.
   Image<std::uint32_t> img(40, 30, pack(Rgb{1, 2, 3}));
