@@ -546,6 +546,46 @@ TEST(RenderKind, StreamedZBufferEqualsTheStagesOneAfterTheOther) {
   EXPECT_EQ(unnamed.triangles.back().v, named.triangles.back().v);
 }
 
+// A scene of more world triangles than a modelled one (kBandedTriangles) streams: with threads,
+// the walk, the geometry and the set-up on a thread of their own handing chunks to the fill.
+// Boxes in a grid, some cut by the near plane and some off to the sides: the same frame, depths
+// and statistics as on one thread, and as the stages run one after the other.
+TEST(RenderKind, ALargeSceneStreamedWithThreadsGivesTheFrameOfOneThread) {
+  Scene s;
+  s.width = 96;
+  s.height = 64;
+  s.camera = {Vec3d(0.3, 2.5, 4), Vec3d(0, 0, -20), Vec3d(0, 1, 0)};
+  s.clip_from_eye = Mat4d(frustum_matrix(perspective_volume(1.2, 1.5, 1.0, 80.0), Api::OpenGL));
+  s.light = DirectionalLight{};
+  SceneObject box = box_object(0.8, 0.6, 0.7);
+  box.fill = Rgb{90, 160, 220};
+  box.repeat = SceneObject::Repeat{{-40, 0, -70}, {40, 0, 0}, Vec3d(1.0, 0, 1.0)};
+  s.objects.push_back(box);
+  ASSERT_GT(world_triangle_count(s), kBandedTriangles);
+  EXPECT_EQ(zbuffer_threads(s, 4), 2);
+  GeometryStats gs, one_gs;
+  FillStats fs, one_fs;
+  const std::vector<WindowTriangle> tris = geometry(s, flatten(s, false), &gs);
+  const Frame staged = render_zbuffer(tris, s.width, s.height, s.background, &fs);
+  const Frame one = render_zbuffer(s, &one_gs, &one_fs, 1);
+  EXPECT_GT(gs.clipped, 0);
+  EXPECT_GT(gs.outside, 0);
+  EXPECT_GT(fs.written, 1000);
+  EXPECT_EQ(one.color.data, staged.color.data);
+  EXPECT_EQ(one.depth.data, staged.depth.data);
+  for (const int threads : {2, 3}) {
+    GeometryStats threaded_gs;
+    FillStats threaded_fs;
+    const Frame threaded = render_zbuffer(s, &threaded_gs, &threaded_fs, threads);
+    EXPECT_EQ(threaded.color.data, staged.color.data) << threads;
+    EXPECT_EQ(threaded.depth.data, staged.depth.data) << threads;
+    EXPECT_EQ(threaded_gs.window, gs.window);
+    EXPECT_EQ(threaded_gs.clipped, gs.clipped);
+    EXPECT_EQ(threaded_fs.fragments, fs.fragments);
+    EXPECT_EQ(threaded_fs.written, fs.written);
+  }
+}
+
 // A render target kept from one frame to the next (as a GL context keeps its framebuffer): each
 // render into it clears it first, and a new size reallocates it, so every frame is the one a
 // fresh target gets, whatever was drawn into it before.

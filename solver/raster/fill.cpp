@@ -233,25 +233,26 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 
 namespace {
 
-// Window triangles from the geometry thread to the fill, in drawing order, at most kInFlight
+// Set-up triangles from the geometry thread to the fill, in drawing order, at most kInFlight
 // chunks at a time; drawn chunks go back to the producer (no allocation once warm).
 class ChunkQueue {
  public:
+  using Chunk = std::vector<RasterTriangle>;
   static constexpr std::size_t kChunk = 1024, kInFlight = 8;
-  std::vector<WindowTriangle> take() {
+  Chunk take() {
     std::unique_lock lock(mutex_);
     changed_.wait(lock, [&] { return full_.size() < kInFlight; });
     if (empty_.empty()) {
-      std::vector<WindowTriangle> chunk;
+      Chunk chunk;
       chunk.reserve(kChunk);
       return chunk;
     }
-    std::vector<WindowTriangle> chunk = std::move(empty_.back());
+    Chunk chunk = std::move(empty_.back());
     empty_.pop_back();
     chunk.clear();
     return chunk;
   }
-  void push(std::vector<WindowTriangle>&& chunk) {
+  void push(Chunk&& chunk) {
     const std::lock_guard lock(mutex_);
     full_.push_back(std::move(chunk));
     changed_.notify_all();
@@ -263,7 +264,7 @@ class ChunkQueue {
   }
   // The next chunk in place of `chunk` (drawn: it goes back to the producer); false once the
   // producer has closed and every chunk is out.
-  bool next(std::vector<WindowTriangle>& chunk) {
+  bool next(Chunk& chunk) {
     std::unique_lock lock(mutex_);
     if (chunk.capacity() > 0) empty_.push_back(std::move(chunk));
     changed_.wait(lock, [&] { return !full_.empty() || closed_; });
@@ -277,8 +278,8 @@ class ChunkQueue {
  private:
   std::mutex mutex_;
   std::condition_variable changed_;
-  std::deque<std::vector<WindowTriangle>> full_;
-  std::vector<std::vector<WindowTriangle>> empty_;
+  std::deque<Chunk> full_;
+  std::vector<Chunk> empty_;
   bool closed_ = false;
 };
 
@@ -321,11 +322,16 @@ void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_st
   } else {
     ChunkQueue queue;
     std::exception_ptr error;
+    // The set-up goes with the geometry: the fill's thread draws and does nothing else, so
+    // that the two threads' shares of a scene of small triangles are about even.
     std::thread geometry_thread([&] {
       try {
-        std::vector<WindowTriangle> chunk = queue.take();
+        ChunkQueue::Chunk chunk = queue.take();
+        std::vector<WindowTriangle> window;  // one world triangle's, reused
         for_each_world_triangle(scene, [&](const WorldTriangle& t) {
-          stage.add(t, source++, chunk);
+          window.clear();
+          stage.add(t, source++, window);
+          for (const WindowTriangle& w : window) chunk.push_back(setup_raster(w, drawn++));
           if (chunk.size() < ChunkQueue::kChunk) return;
           queue.push(std::move(chunk));
           chunk = queue.take();
@@ -336,9 +342,9 @@ void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_st
       }
       queue.close();
     });
-    std::vector<WindowTriangle> chunk;
+    ChunkQueue::Chunk chunk;
     while (queue.next(chunk))
-      for (const WindowTriangle& w : chunk) draw_triangle(setup_raster(w, drawn++), frame, stats);
+      for (const RasterTriangle& t : chunk) draw_triangle(t, frame, stats);
     geometry_thread.join();
     if (error) std::rethrow_exception(error);
   }

@@ -166,9 +166,9 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 // triangles are kept. The same frame as render_zbuffer(geometry(scene, flatten(scene)), …).
 // threads ≥ 2: a scene of at most kBandedTriangles world triangles (a modelled scene) goes
 // through the geometry in parts side by side and is filled band by band by every thread
-// (banded_fill.hpp); a larger one streams, the walk and the geometry on a thread of their own
-// handing window triangles to the fill (on the caller's thread, in drawing order) in small
-// chunks. Either way the frame is the same bit for bit.
+// (banded_fill.hpp); a larger one streams, the walk, the geometry and the set-up on a thread of
+// their own handing set-up triangles to the fill (on the caller's thread, in drawing order) in
+// small chunks. Either way the frame is the same bit for bit.
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
                      FillStats* stats = nullptr, int threads = 1);
 // The same into a render target the caller keeps (reset to the scene's size and background).
