@@ -192,6 +192,13 @@ TEST(HomogeneousClip, NeverProducesVerticesWithWAtOrBelowZero) {
     for (int k = 0; k < 3; ++k) tri.emplace_back(u(rng), u(rng), u(rng), uw(rng));
     const auto r = clip_polygon_homogeneous(tri, eps);
     EXPECT_EQ(r.stages.size(), 7u);
+    // The renderer's variant, which keeps no stages: the same polygon, bit for bit, in both
+    // conventions of z.
+    for (const bool z_from_zero : {false, true}) {
+      const auto plain = clip_polygon_homogeneous<double, false>(tri, eps, z_from_zero);
+      EXPECT_TRUE(plain.stages.empty());
+      ASSERT_EQ(plain.clipped, clip_polygon_homogeneous(tri, eps, z_from_zero).clipped) << c;
+    }
     for (const auto& s : r.stages)
       for (const auto& v : s.vertices) ASSERT_GE(v(3), eps) << "case " << c << " at " << s.plane;
     for (const auto& v : r.clipped)

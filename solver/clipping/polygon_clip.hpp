@@ -86,14 +86,16 @@ PolygonClipResult<Eigen::Matrix<T, N, 1>> clip_polygon_box(
 // Homogeneous clip space, before the perspective divide: first w ≥ ε (so no later vertex has
 // w ≤ 0: every later vertex is a convex combination of vertices with w ≥ ε), then
 // x ≥ −w, x ≤ w, y ≥ −w, y ≤ w, z ≥ −w (0 ≤ z with `z_from_zero`, DirectX), z ≤ w.
-template <typename T>
+// Without kStages only the clipped polygon is kept (the renderer's path: the same arithmetic,
+// none of the stages' names and copies).
+template <typename T, bool kStages = true>
 PolygonClipResult<Vec4<T>> clip_polygon_homogeneous(const std::vector<Vec4<T>>& polygon,
                                                     const T& epsilon, bool z_from_zero = false) {
   PolygonClipResult<Vec4<T>> r;
   std::vector<Vec4<T>> current = clip_polygon_stage(
       polygon, [&](const Vec4<T>& v) { return T(v(3) - epsilon); },
       [&](Vec4<T>& v) { v(3) = epsilon; });
-  r.stages.push_back({"w ≥ ε", current});
+  if constexpr (kStages) r.stages.push_back({"w ≥ ε", current});
   static const char* names[3][2] = {{"x ≥ −w", "x ≤ w"}, {"y ≥ −w", "y ≤ w"}, {"z ≥ −w", "z ≤ w"}};
   for (int a = 0; a < 3; ++a)
     for (int high = 0; high < 2; ++high) {
@@ -106,9 +108,10 @@ PolygonClipResult<Vec4<T>> clip_polygon_homogeneous(const std::vector<Vec4<T>>& 
           [&](Vec4<T>& v) { v(a) = high   ? v(3)
                                    : zero ? T(0)
                                           : T(-v(3)); });
-      r.stages.push_back({zero ? std::string("z ≥ 0") : std::string(names[a][high]), current});
+      if constexpr (kStages)
+        r.stages.push_back({zero ? std::string("z ≥ 0") : std::string(names[a][high]), current});
     }
-  r.clipped = current;
+  r.clipped = std::move(current);
   return r;
 }
 

@@ -212,8 +212,8 @@ bool inside_volume(const std::array<Vec4d, 3>& clip, Api api) {
 
 std::vector<Vec4d> clip_to_volume(const std::array<Vec4d, 3>& clip, Api api) {
   if (inside_volume(clip, api)) return {clip[0], clip[1], clip[2]};
-  return clip_polygon_homogeneous<double>({clip[0], clip[1], clip[2]}, kClipEpsilon,
-                                          api == Api::DirectX)
+  return clip_polygon_homogeneous<double, false>({clip[0], clip[1], clip[2]}, kClipEpsilon,
+                                                 api == Api::DirectX)
       .clipped;
 }
 
