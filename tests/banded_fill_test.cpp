@@ -7,9 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
+
+#include "solver/util/side_by_side.hpp"
 
 namespace frustum {
 namespace {
@@ -89,6 +94,27 @@ TEST(BandedFill, ARowRangeDrawsOnlyItsRowsAndTheRangesAddUp) {
   EXPECT_EQ(split.written, all.written);
   EXPECT_EQ(parts.color.data, whole.color.data);
   EXPECT_EQ(parts.depth.data, whole.depth.data);
+}
+
+// Parts side by side: every part runs once whatever the threads, and an exception on a part's
+// thread reaches the caller (the lowest part's) after every part has ended.
+TEST(SideBySide, EveryPartRunsOnceAndAnErrorReachesTheCaller) {
+  for (const int parts : {1, 2, 5}) {
+    std::vector<int> ran(static_cast<std::size_t>(parts), 0);
+    side_by_side(parts, [&](int k) { ++ran[static_cast<std::size_t>(k)]; });
+    EXPECT_EQ(ran, std::vector<int>(static_cast<std::size_t>(parts), 1));
+  }
+  std::atomic<int> ended{0};
+  try {
+    side_by_side(4, [&](int k) {
+      ++ended;
+      if (k >= 2) throw std::runtime_error("part " + std::to_string(k));
+    });
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "part 2");
+  }
+  EXPECT_EQ(ended.load(), 4);
 }
 
 }  // namespace

@@ -4,28 +4,40 @@
 // number of parts that ran at once. No state outlives the call.
 #pragma once
 
+#include <exception>
 #include <system_error>
 #include <thread>
 #include <vector>
 
 namespace frustum {
 
-// Calls work(k) once for every k in 0 … parts − 1 and returns when all have returned. `work`
-// must not throw (catch inside it and keep the error with the part).
+// Calls work(k) once for every k in 0 … parts − 1 and returns when all have returned. An
+// exception from a part is rethrown here once every part has ended (the lowest part's, when
+// several threw), never lost on its thread.
 template <typename Work>
 void side_by_side(int parts, const Work& work) {
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(parts > 0 ? parts : 0));
+  const auto run = [&](int k) {
+    try {
+      work(k);
+    } catch (...) {
+      errors[static_cast<std::size_t>(k)] = std::current_exception();
+    }
+  };
   std::vector<std::thread> pool;
   int started = 1;
   for (; started < parts; ++started) {
     try {
-      pool.emplace_back([&work, started] { work(started); });
+      pool.emplace_back(run, started);
     } catch (const std::system_error&) {
       break;
     }
   }
-  work(0);
-  for (int k = started; k < parts; ++k) work(k);
+  run(0);
+  for (int k = started; k < parts; ++k) run(k);
   for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
 }
 
 }  // namespace frustum
