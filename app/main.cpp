@@ -278,10 +278,11 @@ int main(int argc, char** argv) {
                    "zbuffer or scanline (default: the scene's method)")
       ->check(CLI::IsMember({"zbuffer", "scanline"}));
   render
-      ->add_option("--threads", render_opt.threads,
-                   "2 or more: a modelled scene's geometry and fill shared by that many threads, "
-                   "a larger scene's geometry on a thread beside the fill (the same image; "
-                   "default 1)")
+      ->add_option(
+          "--threads", render_opt.threads,
+          "2 or more: a modelled scene's geometry and fill shared by that many threads, "
+          "a larger scene's geometry and set-up on a thread beside the fill (the same image; "
+          "default 1)")
       ->check(CLI::Range(1, 1024));
   render->footer(examples(
       {"frustum render problems/seeds/paperplane.yaml -o paperplane.png --depth depth.png"}));

@@ -270,7 +270,8 @@ int race(int argc, char** argv) {
   const char* lp_env = std::getenv("LP_NUM_THREADS");
   const std::string lp_threads = lp_env ? lp_env : "unset";
   // Frustum gets as many threads as llvmpipe (unset: one per core, Mesa's default); on a scene of
-  // more than kBandedTriangles its render uses at most two (the geometry beside the fill).
+  // more than kBandedTriangles its render uses at most two (the geometry and set-up beside the
+  // fill).
   const int asked = lp_env ? std::max(1, std::atoi(lp_env))
                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   opt.threads = asked;
@@ -362,10 +363,11 @@ int race(int argc, char** argv) {
         "after llvmpipe's runs (the application's own and llvmpipe's, which rasterize beside "
         "it)\n",
         lp_threads, lp_env ? "" : " (Mesa's default: one per core)", asked,
-        asked == 1      ? std::string(" (one thread)")
-        : used == asked ? fmt::format(" (geometry and fill shared by {} threads)", used)
-                        : fmt::format(", which uses 2 threads (the geometry beside the fill): not "
-                                      "N threads against N"),
+        asked == 1 ? std::string(" (one thread)")
+        : used == asked
+            ? fmt::format(" (geometry and fill shared by {} threads)", used)
+            : fmt::format(", which uses 2 threads (the geometry and set-up beside the fill): not "
+                          "N threads against N"),
         threads);
     std::cout << "side      threads  wall min / median / max (s)  CPU median (s)\n";
     auto row = [](const char* name, const std::string& threads, const Times& t) {
