@@ -52,7 +52,7 @@ bool write_png(const std::string& path, int width, int height, int color_type, i
                PNG_FILTER_TYPE_DEFAULT);
   if (palette) {
     png_set_PLTE(png, info, colors.data(), static_cast<int>(palette->size()));
-    // The indices come from the palette (index_colors): libpng's check of every one of them
+    // The indices come from the palette (frame_runs): libpng's check of every one of them
     // against its size would be a third of the writing.
     png_set_check_for_invalid_index(png, 0);
   }
@@ -137,8 +137,6 @@ bool write_png_rows(const std::string& path, int width, int height, int color_ty
 }
 
 bool write_color_png(const std::string& path, const Image<std::uint32_t>& img, int threads) {
-  const auto height = static_cast<std::size_t>(img.height);
-  std::vector<const png_byte*> rows(height);
   FrameRuns runs;
   if (frame_runs(img, runs, threads)) {
     // A palette of at most 16 colours packs 2, 4 or 8 pixels into a byte: fewer bytes to
@@ -150,6 +148,8 @@ bool write_color_png(const std::string& path, const Image<std::uint32_t>& img, i
                        &runs.palette, &idat);
   }
   // Raster rows (y up) to PNG rows (top first), in place: rows handed to the writer bottom first.
+  const auto height = static_cast<std::size_t>(img.height);
+  std::vector<const png_byte*> rows(height);
   for (std::size_t r = 0; r < height; ++r)
     rows[r] = reinterpret_cast<const png_byte*>(&img.at(0, img.height - 1 - static_cast<int>(r)));
   return write_png(path, img.width, img.height, PNG_COLOR_TYPE_RGBA, 8, rows.data(), nullptr);

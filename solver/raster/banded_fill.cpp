@@ -51,16 +51,12 @@ void fill_in_bands(const std::vector<RasterTriangle>& triangles, Frame& frame, i
   frame.resize(width, height);
   const int bands = (height + kBandRows - 1) / kBandRows;
   const Bins bins = bin_by_band(triangles, width, height, bands);
-  const std::uint32_t clear_color = pack(background);
   std::atomic<int> next_band{0};
   const auto worker = [&](FillStats& counts) {
     FillStats* counted = stats ? &counts : nullptr;  // counting costs the span loop a reduction
     for (int b; (b = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) {
       const int j0 = b * kBandRows, j1 = std::min(height, j0 + kBandRows) - 1;
-      const std::size_t first = static_cast<std::size_t>(j0) * static_cast<std::size_t>(width),
-                        last = static_cast<std::size_t>(j1 + 1) * static_cast<std::size_t>(width);
-      std::fill(frame.color.data.begin() + first, frame.color.data.begin() + last, clear_color);
-      std::fill(frame.depth.data.begin() + first, frame.depth.data.begin() + last, kDepthClear);
+      frame.clear_rows(j0, j1, background);
       for (int k = bins.start[b]; k < bins.start[b + 1]; ++k)
         draw_triangle_rows(triangles[bins.index[k]], frame, j0, j1, counted);
     }
@@ -70,10 +66,7 @@ void fill_in_bands(const std::vector<RasterTriangle>& triangles, Frame& frame, i
   side_by_side(workers, [&](int k) { worker(counts[static_cast<std::size_t>(k)]); });
   if (stats) {
     stats->triangles += static_cast<long>(triangles.size());
-    for (const FillStats& c : counts) {
-      stats->fragments += c.fragments;
-      stats->written += c.written;
-    }
+    for (const FillStats& c : counts) *stats += c;
   }
 }
 
@@ -112,14 +105,7 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
   fill_in_bands(all, frame, scene.width, scene.height, scene.background, stats, threads);
   if (geometry_stats) {
     *geometry_stats = GeometryStats{};
-    for (const GeometryStage& stage : stages) {
-      const GeometryStats& g = stage.stats;
-      geometry_stats->triangles += g.triangles;
-      geometry_stats->outside += g.outside;
-      geometry_stats->clipped += g.clipped;
-      geometry_stats->culled += g.culled;
-      geometry_stats->window += g.window;
-    }
+    for (const GeometryStage& stage : stages) *geometry_stats += stage.stats;
   }
 }
 

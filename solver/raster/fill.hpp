@@ -129,13 +129,20 @@ struct Frame {
   // render target, as a GL context keeps its framebuffer) reuses its buffers when the size is
   // the same: a fresh 1920 × 1080 frame costs the kernel 16 MB of zeroed pages first.
   void reset(int width, int height, Rgb background) {
-    color.assign(width, height, pack(background));
-    depth.assign(width, height, kDepthClear);
+    resize(width, height);
+    clear_rows(0, height - 1, background);
   }
   // Sized without clearing: the caller writes every pixel (fill_in_bands clears band by band).
   void resize(int width, int height) {
     color.resize(width, height);
     depth.resize(width, height);
+  }
+  // Rows j0 … j1 cleared to the background and the far depth.
+  void clear_rows(int j0, int j1, Rgb background) {
+    const auto first = static_cast<std::ptrdiff_t>(j0) * color.width,
+               last = static_cast<std::ptrdiff_t>(j1 + 1) * color.width;
+    std::fill(color.data.begin() + first, color.data.begin() + last, pack(background));
+    std::fill(depth.data.begin() + first, depth.data.begin() + last, kDepthClear);
   }
 };
 
@@ -143,6 +150,12 @@ struct FillStats {
   long triangles = 0;
   long fragments = 0;  // covered pixels inside the frame
   long written = 0;    // passed the depth test
+  FillStats& operator+=(const FillStats& o) {
+    triangles += o.triangles;
+    fragments += o.fragments;
+    written += o.written;
+    return *this;
+  }
 };
 
 // vzeroupper where the CPU has AVX (nothing elsewhere). GCC 12 can return from the AVX2 clone
@@ -172,11 +185,13 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
                      FillStats* stats = nullptr, int threads = 1);
 // The same into a render target the caller keeps (reset to the scene's size and background).
-// How many threads it keeps busy: all it is given for a modelled scene, at most two otherwise.
-int zbuffer_threads(const Scene& scene, int threads);
-inline constexpr std::size_t kBandedTriangles = std::size_t(1) << 15;
 void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_stats = nullptr,
                     FillStats* stats = nullptr, int threads = 1);
+// How many threads render_zbuffer keeps busy: all it is given for a modelled scene (at most
+// kBandedTriangles world triangles: banded_fill.hpp, 320 B a triangle set up), at most two
+// otherwise.
+inline constexpr std::size_t kBandedTriangles = std::size_t(1) << 15;
+int zbuffer_threads(const Scene& scene, int threads);
 
 // Only what one pixel needs (the render kind): the triangles whose bounds hold the pixel
 // centre compete, in drawing order; no frame is allocated.

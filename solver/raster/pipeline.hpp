@@ -98,6 +98,14 @@ struct GeometryStats {
   long clipped = 0;    // cut by some plane of the view volume
   long culled = 0;     // back faces removed
   long window = 0;     // window triangles out (clipped polygons are fans)
+  GeometryStats& operator+=(const GeometryStats& o) {
+    triangles += o.triangles;
+    outside += o.outside;
+    clipped += o.clipped;
+    culled += o.culled;
+    window += o.window;
+    return *this;
+  }
 };
 
 // Every stage above for one world triangle at a time: its window triangles (a fan when it was

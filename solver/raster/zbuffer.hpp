@@ -26,12 +26,6 @@ struct Image {
       : width(w),
         height(h),
         data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
-  // w × h pixels of `fill`, in the buffer it has when the size is the same.
-  void assign(int w, int h, const P& fill) {
-    width = w;
-    height = h;
-    data.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill);
-  }
   // w × h pixels; those the buffer did not hold are left to the caller to write (numbers are
   // not initialised).
   void resize(int w, int h) {
