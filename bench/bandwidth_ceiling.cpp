@@ -3,6 +3,7 @@
 #include <cstddef>
 
 #include "solver/raster/fill.hpp"
+#include "solver/raster/span_fill.hpp"
 
 namespace frustum {
 
@@ -20,7 +21,7 @@ __attribute__((target_clones("avx2", "default"))) void depth_pass(float* depth,
       c[x] = pass ? id : c[x];
     }
   }
-  clear_upper_vector_state();  // the AVX2 clone's registers (fill.hpp)
+  clear_upper_vector_state();  // the AVX2 clone's registers (span_fill.hpp)
 }
 
 }  // namespace frustum

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "solver/raster/banded_fill.hpp"
+#include "solver/raster/span_fill.hpp"
 
 namespace frustum {
 
@@ -20,8 +21,6 @@ namespace {
 // row, instead of a test of every pixel of the box, which for a thin triangle is mostly a test
 // of pixels it does not cover).
 constexpr long kSmallBoxPixels = 8;
-// Spans at most this long are filled by the plain loop, without the vector loop's set-up.
-constexpr int kShortSpan = 4;
 constexpr int kPrefetchRows = 4;
 
 struct Clamped {
@@ -76,55 +75,6 @@ Span span_on_row(const TriangleSetup& t, int j) {
   }
   return {static_cast<int>(lo), static_cast<int>(hi)};
 }
-
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-namespace {
-__attribute__((target("avx"))) void vzeroupper() { __builtin_ia32_vzeroupper(); }
-}  // namespace
-void clear_upper_vector_state() {
-  if (__builtin_cpu_supports("avx")) vzeroupper();
-}
-#else
-void clear_upper_vector_state() {}
-#endif
-
-namespace {
-
-// One row's span i0 … i0 + n − 1 through the depth test, branch-free: both buffers are read and
-// written unconditionally (min for the depth, a mask for the colour), so the compiler vectorises
-// it; the writes are counted in the same loop only when asked (a reduction the loop otherwise
-// goes without). On x86-64 with GCC, an AVX2 clone is chosen at load time where the CPU has it
-// (4 doubles per instruction instead of 2). No FMA is enabled, so both clones compute the same
-// depths bit for bit as depth_at().
-template <bool kCount>
-int fill_span(float* __restrict depth, std::uint32_t* __restrict color, int n, double row_z,
-              double a, double dx0, std::uint32_t c) {
-  int written = 0;
-  for (int k = 0; k < n; ++k) {
-    const float z = static_cast<float>(row_z + a * (dx0 + static_cast<double>(k) * kSubpixelScale));
-    const float old = depth[k];
-    const bool pass = z < old;
-    if constexpr (kCount) written += pass;
-    const std::uint32_t keep = pass ? 0u : ~0u;
-    depth[k] = pass ? z : old;
-    color[k] = (color[k] & keep) | (c & ~keep);
-  }
-  return written;
-}
-
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
-    !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-int fill_long_span(float* depth, std::uint32_t* color, int n, double row_z, double a, double dx0,
-                   std::uint32_t c, bool count) {
-  const int written = count ? fill_span<true>(depth, color, n, row_z, a, dx0, c)
-                            : fill_span<false>(depth, color, n, row_z, a, dx0, c);
-  clear_upper_vector_state();
-  return written;
-}
-
-}  // namespace
 
 void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats) {
   if (stats) ++stats->triangles;
@@ -193,28 +143,15 @@ void draw_triangle_rows(const RasterTriangle& t, Frame& frame, int j_lo, int j_h
       std::uint32_t* col = color + base;
       fragments += i1 - i0 + 1;
       const int n = i1 - i0 + 1;
-      if (n > kShortSpan) {
-        // The same columns kPrefetchRows rows on, where the span will most likely be then.
-        if (j + kPrefetchRows <= box.j1) {
-          const std::size_t ahead = base + kPrefetchRows * static_cast<std::size_t>(width);
-          for (int i = i0; i <= i1; i += 16) {
-            __builtin_prefetch(depth + ahead + i, 1);
-            __builtin_prefetch(color + ahead + i, 1);
-          }
-        }
-        written += fill_long_span(d + i0, col + i0, n, row_z, t.a, dx0, c, stats != nullptr);
-        continue;
-      }
-      // A few pixels (a thin triangle's rows): the plain loop, the same depths.
-      double dx = dx0;
-      for (int i = i0; i <= i1; ++i, dx += kSubpixelScale) {
-        const float z = static_cast<float>(row_z + t.a * dx);
-        if (z < d[i]) {
-          d[i] = z;
-          col[i] = c;
-          ++written;
+      // The same columns kPrefetchRows rows on, where the span will most likely be then.
+      if (j + kPrefetchRows <= box.j1) {
+        const std::size_t ahead = base + kPrefetchRows * static_cast<std::size_t>(width);
+        for (int i = i0; i <= i1; i += 16) {
+          __builtin_prefetch(depth + ahead + i, 1);
+          __builtin_prefetch(color + ahead + i, 1);
         }
       }
+      written += fill_span(d + i0, col + i0, n, row_z, t.a, dx0, c, stats != nullptr);
     }
   }
   if (stats) {

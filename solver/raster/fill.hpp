@@ -158,12 +158,6 @@ struct FillStats {
   }
 };
 
-// vzeroupper where the CPU has AVX (nothing elsewhere). GCC 12 can return from the AVX2 clone
-// of a vectorised loop (target_clones) with the upper halves of the vector registers still in
-// use, and every SSE instruction after it then runs slower: zlib compressing the frame to PNG
-// took 31 ms instead of 11 ms after a render. The fill calls it after each vectorised span.
-void clear_upper_vector_state();
-
 // The z-buffer's inner loop for one triangle.
 void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats = nullptr);
 // Only its pixels on rows j_lo … j_hi (a band of the frame), each exactly as draw_triangle
