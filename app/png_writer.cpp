@@ -82,44 +82,51 @@ constexpr int kRowsPerPiece = 64;
 std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int threads) {
   const auto stride = static_cast<std::size_t>((runs.width * bits + 7) / 8) + 1;  // + filter byte
   const int pieces = std::max(1, (runs.height + kRowsPerPiece - 1) / kRowsPerPiece);
-  struct Piece {
+  const int parts = std::max(1, std::min(threads, pieces));
+  // A part's consecutive pieces, each compressed on its own, one after the other into `out`,
+  // with one deflate state (reset for each piece) and one row buffer: allocated once a part.
+  struct Part {
     std::vector<unsigned char> out;
     uLong adler = 0, length = 0;
     bool ok = false;
   };
-  std::vector<Piece> piece(static_cast<std::size_t>(pieces));
-  const auto compress = [&](int k) {
-    Piece& p = piece[static_cast<std::size_t>(k)];
-    const int r0 = k * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
-    std::vector<unsigned char> raw(stride * static_cast<std::size_t>(r1 - r0));
-    for (int r = r0; r < r1; ++r) {
-      unsigned char* row = raw.data() + stride * static_cast<std::size_t>(r - r0);
-      row[0] = 0;  // filter type None: a palette row's runs are already repeated bytes
-      pack_row(runs, r, bits, row + 1);
-    }
-    p.length = static_cast<uLong>(raw.size());
-    p.adler = adler32(adler32(0L, Z_NULL, 0), raw.data(), static_cast<uInt>(raw.size()));
+  std::vector<Part> part(static_cast<std::size_t>(parts));
+  side_by_side(parts, [&](int k) {
+    Part& p = part[static_cast<std::size_t>(k)];
+    const int first = pieces * k / parts, last = pieces * (k + 1) / parts;
     z_stream z{};
     if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK) return;
-    p.out.resize(deflateBound(&z, p.length) + 16);  // + a sync flush's empty block
-    z.next_in = raw.data();
-    z.avail_in = static_cast<uInt>(raw.size());
-    z.next_out = p.out.data();
-    z.avail_out = static_cast<uInt>(p.out.size());
-    const bool last = k == pieces - 1;
-    const int rc = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
-    p.ok = (last ? rc == Z_STREAM_END : rc == Z_OK && z.avail_out > 0) && z.avail_in == 0;
-    p.out.resize(z.total_out);
+    std::vector<unsigned char> raw(stride * kRowsPerPiece);
+    p.adler = adler32(0L, Z_NULL, 0);
+    p.ok = true;
+    for (int piece = first; piece < last && p.ok; ++piece) {
+      const int r0 = piece * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
+      const std::size_t size = stride * static_cast<std::size_t>(r1 - r0);
+      for (int r = r0; r < r1; ++r) {
+        unsigned char* row = raw.data() + stride * static_cast<std::size_t>(r - r0);
+        row[0] = 0;  // filter type None: a palette row's runs are already repeated bytes
+        pack_row(runs, r, bits, row + 1);
+      }
+      p.adler = adler32(p.adler, raw.data(), static_cast<uInt>(size));
+      p.length += static_cast<uLong>(size);
+      const std::size_t at = p.out.size();
+      p.out.resize(at + deflateBound(&z, static_cast<uLong>(size)) + 16);  // + a sync flush
+      z.next_in = raw.data();
+      z.avail_in = static_cast<uInt>(size);
+      z.next_out = p.out.data() + at;
+      z.avail_out = static_cast<uInt>(p.out.size() - at);
+      const bool end = piece == pieces - 1;
+      const int rc = deflate(&z, end ? Z_FINISH : Z_SYNC_FLUSH);
+      p.ok = (end ? rc == Z_STREAM_END : rc == Z_OK && z.avail_out > 0) && z.avail_in == 0;
+      p.out.resize(p.out.size() - z.avail_out);
+      if (deflateReset(&z) != Z_OK) p.ok = false;
+    }
     deflateEnd(&z);
-  };
-  const int parts = std::max(1, std::min(threads, pieces));
-  side_by_side(parts, [&](int part) {
-    for (int k = pieces * part / parts; k < pieces * (part + 1) / parts; ++k) compress(k);
   });
   // CMF 0x78: deflate with a 32 KB window; FLG 0x01: the fastest level, 0x7801 divisible by 31.
   std::vector<unsigned char> stream = {0x78, 0x01};
   uLong adler = adler32(0L, Z_NULL, 0);
-  for (const Piece& p : piece) {
+  for (const Part& p : part) {
     if (!p.ok) return {};
     stream.insert(stream.end(), p.out.begin(), p.out.end());
     adler = adler32_combine(adler, p.adler, static_cast<z_off_t>(p.length));
