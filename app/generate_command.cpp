@@ -325,10 +325,13 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   const std::size_t jobs = std::min<std::size_t>(
       g.jobs ? g.jobs : std::max(1u, std::thread::hardware_concurrency()), items);
   if (jobs > 1 && !paper && items >= kMinParallelVariants) {
-    // Worker processes (GiNaC is not thread-safe) draw, solve and write contiguous shares; each
-    // knows only its own share's givens, so this process takes their variants in order and
-    // draws again, itself, any that repeats an earlier share's given (SeedVariants::take):
-    // the files are those of one process whatever -j is.
+    // Worker processes (GiNaC is not thread-safe) draw, solve and write the variants, each
+    // taking the next that nobody has taken (so that they finish together, and the variants
+    // arrive nearly in order: their groups are synced and renamed while the workers go on).
+    // A worker knows only the givens of the variants it drew itself, all earlier than the one it
+    // draws, so this process takes their variants in order and draws again, itself, any that
+    // repeats a given it did not know (SeedVariants::take): the files are those of one process
+    // whatever -j is.
     std::optional<SeedVariants> seeds, seeds_apart;
     std::optional<ClassVariants> classes, classes_apart;
     if (g.seed) {
@@ -427,7 +430,7 @@ int run_generate(const GenerateCommand& g, const Output& o) {
             arrived[next].reset();
           }
         },
-        64u << 20, jobs, [&] { return stopped || failed; });
+        64u << 20, jobs, [&] { return stopped || failed; }, Shares::Dynamic);
     // Once stopped, what arrived beyond a share that was not run is never taken: its files go.
     for (std::optional<IsolatedResult>& result : arrived)
       if (result && result->status == IsolatedResult::Status::Ok) try {
