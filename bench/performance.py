@@ -14,6 +14,7 @@ import itertools
 import json
 import os
 import platform
+import shlex
 import shutil
 import statistics
 import subprocess
@@ -111,7 +112,7 @@ def scaling_table(title, unit, rows):
     return f"### {title}\n\n" + "\n".join(out) + f"\n\n{verdict}.\n"
 
 
-def grading_race(say, one, j_all, peer, plain, sizes, ncpu):
+def grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair=None):
     say("## Class grading against a Python + NumPy script\n")
     say("1,000 students × 20 problems × 3 numeric answers. Frustum writes everything (gradebook, Markdown, "
         f"HTML pages — {sizes['feedback'] / 1e6:.0f} MB of feedback in all, the pages linking one shared copy of "
@@ -126,8 +127,11 @@ def grading_race(say, one, j_all, peer, plain, sizes, ncpu):
         "in turn, rep after rep, so that each sees the same load.\n")
     say("| | wall min / median / max (s) | CPU (s) | peak MB |")
     say("| --- | ---: | ---: | ---: |")
-    for name, st in ((f"Frustum `-j 1`", one), (f"Frustum `-j {ncpu}`", j_all),
-                     ("Python + NumPy peer, `yaml.safe_load`", plain), ("Python + NumPy peer, C loader", peer)):
+    sides = [(f"Frustum `-j 1`", one), (f"Frustum `-j {ncpu}`", j_all)]
+    if pair:
+        sides.append((f"{ncpu} × Frustum `-j 1` at once (each its own output)", pair))
+    sides += [("Python + NumPy peer, `yaml.safe_load`", plain), ("Python + NumPy peer, C loader", peer)]
+    for name, st in sides:
         say(f"| {name} | {fmt_s(st['min'])} / {fmt_s(st['median'])} / {fmt_s(st['max'])} | {fmt_s(st['cpu'])} | "
             f"{st['mb']:.0f} |")
     say(f"\nFrustum `-j 1` against the plain peer: **{plain['median'] / one['median']:.2f}× faster** in median wall "
@@ -138,7 +142,13 @@ def grading_race(say, one, j_all, peer, plain, sizes, ncpu):
         f"{j_all['cpu']:.2f} s of CPU time in all against {one['cpu']:.2f} s (the same work shared out; when the "
         f"load average above exceeds the {ncpu} cores, the other cores are busy with other work and the "
         "wall-time speed-up says little). "
-        "Targets: ≤ 1 s with one core, ≥ 3× faster than the peer, ≥ 1.8× with two cores. "
+        + (f"{ncpu} independent `-j 1` runs at once took {fmt_s(pair['median'])} s, "
+           f"{pair['median'] / one['median']:.2f}× the time of one alone, for {ncpu}× the work: the cores of "
+           f"this machine share its cache and memory, so {ncpu} processes at once give at most "
+           f"**{ncpu * one['median'] / pair['median']:.2f}×** one's throughput on this work — the ceiling "
+           f"for `-j {ncpu}`, which reached {100 * (one['median'] / j_all['median']) / (ncpu * one['median'] / pair['median']):.0f} % "
+           "of it. " if pair else "")
+        + "Targets: ≤ 1 s with one core, ≥ 3× faster than the peer, ≥ 1.8× with two cores. "
         f"A feedback file (Markdown or HTML) is {sizes['feedback'] / 2000 / 1e3:.0f} kB on average; wall time "
         "beyond CPU time is waiting (the disk, the one sync, the other processes on the machine).\n")
 
@@ -234,8 +244,16 @@ def main():
             "peer": lambda k: [PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, f"peer{k}.csv")],
             "plain": lambda k: [PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, f"plain{k}.csv"),
                                 "python"],
+            # Two `-j 1` runs at once, each with its own output: what the cores give two
+            # independent processes (they share the last-level cache and the memory bus), the
+            # most that `-j N` can get out of them on this machine.
+            **({"pair": lambda k: ["/bin/sh", "-c", " & ".join(
+                f"{shlex.quote(F)} grade {shlex.quote(cls_set)} {shlex.quote(subs)} -o "
+                f"{shlex.quote(os.path.join(work, f'pair1000-{k}-{side}'))} -j 1 > /dev/null"
+                for side in range(ncpu)) + "; wait"]} if ncpu >= 2 else {}),
         }, max(R, 5))
         one, j_all, peer, plain = race["one"], race["all"], race["peer"], race["plain"]
+        pair = race.get("pair")
         out = os.path.join(work, f"grades1000-j{ncpu}-{max(R, 5) - 1}")
         for d in ("feedback", "gradescope", "katex"):
             p = os.path.join(out, d)
@@ -285,8 +303,8 @@ def main():
         scene = os.path.join(work, "race1000000.yaml")
         subprocess.run([PY, WORKLOADS, "scene", scene, "1000000"], check=True)
         # Runs a side: a 15 ms render's median over 3 runs moves with every hiccup of a shared
-        # machine, so the paper plane gets 31 (half a second a side), the 1 M scene 5.
-        for path, reps in ((scene, max(R, 5)), (os.path.join(args.repo, "problems/seeds/paperplane.yaml"), max(R, 31))):
+        # machine, so the paper plane gets 31 (half a second a side), the 1 M scene 9.
+        for path, reps in ((scene, max(R, 9)), (os.path.join(args.repo, "problems/seeds/paperplane.yaml"), max(R, 31))):
             for threads in sorted({1, ncpu}):
                 env = dict(os.environ, LP_NUM_THREADS=str(threads))
                 res = subprocess.run([args.race, path, "--size", "1920x1080", "--reps", str(reps), "--json",
@@ -308,10 +326,12 @@ def main():
         "compare figures within this page, not across runs")
     say(f"- each size repeated {R}× (the largest once); wall time min / median / max, CPU time (user + system) "
         "median, peak resident memory")
-    say("- every run writes a new output directory, and the outputs are deleted only after the last run: "
-        "on ext4 without a journal (this kind of VM), creating thousands of files within a minute of "
-        "deleting thousands makes the kernel scan the recently deleted inodes for each new file, which "
-        "can double a run's time and measures the file system, not Frustum")
+    say(f"- outputs under {os.path.dirname(work)} (`TMPDIR`), a new directory for every run, deleted only after "
+        "the last run: on ext4 without a journal (this kind of VM) the kernel looks for a new file's inode in "
+        "its directory's block group past every inode freed there in the last minutes, so in a directory "
+        "whose group saw thousands of files deleted a run can take several times as long — that measures "
+        "the file system's history, not Frustum (a directory made at the top of the file system starts in a "
+        "fresh group)")
     skipped = [x for x in SECTIONS if not want(x)]
     if skipped:
         say(f"- this run measured only {', '.join(args.only)} (`--only`); {', '.join(skipped)} were not rerun: their "
@@ -333,7 +353,7 @@ def main():
         say("`generate --count 100000` is run by `tools/performance.sh --full`.\n")
 
     if one:
-        grading_race(say, one, j_all, peer, plain, sizes, ncpu)
+        grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair)
     if bench_rows:
         say("## Rasterization against llvmpipe (frustum_bench, triangles in window coordinates)\n")
         say("`LP_NUM_THREADS=N ./build/frustum_bench --benchmark_filter='BM_(BandwidthCeiling|Setup|Frustum|Llvmpipe)'`, "

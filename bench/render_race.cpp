@@ -362,8 +362,10 @@ int race(int argc, char** argv) {
         "it)\n",
         lp_threads, lp_env ? "" : " (Mesa's default: one per core)", asked,
         asked == 1 ? std::string(" (one thread)")
-        : used == asked
+        : world_triangle_count(scene) <= kBandedTriangles
             ? fmt::format(" (geometry and fill shared by {} threads)", used)
+        : used == asked
+            ? fmt::format(" (the geometry and set-up on one thread, the fill on the other)")
             : fmt::format(", which uses 2 threads (the geometry and set-up beside the fill): not "
                           "N threads against N"),
         threads);
