@@ -347,7 +347,7 @@ int run_generate(const GenerateCommand& g, const Output& o) {
     const auto work = [&](std::size_t i) {
       Record r;
       if (g.seed && seeds_apart->exhausted()) {
-        // This share's ranges are used up: the rest is left to this process's own draws,
+        // This worker found the ranges used up: the rest is left to this process's own draws,
         // which stop where the ranges are used up.
         r.givens.complete = false;
         return encode(r);
