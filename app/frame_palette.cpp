@@ -8,6 +8,7 @@
 #include <immintrin.h>
 #endif
 
+#include "solver/raster/span_fill.hpp"
 #include "solver/util/side_by_side.hpp"
 
 namespace frustum::app {
@@ -68,7 +69,7 @@ __attribute__((target("avx2"))) const std::uint32_t* run_end_avx2(const std::uin
   while (p < end && *p == c) ++p;
   return p;
 }
-const bool kAvx2 = __builtin_cpu_supports("avx2");
+const bool kAvx2 = cpu_has_avx2();
 #endif
 
 // Rows [r0, r1) of the file (top first) into `part`: its own palette, runs and row starts
