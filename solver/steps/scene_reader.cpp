@@ -245,7 +245,7 @@ SceneSpec read_scene(GivenReader& r, const Conventions& c, bool keep_exact) {
     spec.up = cam.vector<3>("up");
     cam.finish();
     try {
-      look_at_with_steps(spec.eye, spec.center, spec.up, c.api, "camera.", nullptr, s.left_handed);
+      check_camera(spec.eye, spec.center, spec.up, "camera.");
     } catch (const DomainError& e) {
       throw InputError(r.locate(e.field(), e.what()));
     }

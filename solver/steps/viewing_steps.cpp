@@ -172,9 +172,8 @@ std::string multiply_note(Api api) {
              : "Column vectors, p′ = M·p.";
 }
 
-MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center,
-                               const Vec3<Exact>& up, Api api, const std::string& field,
-                               Derivation* steps, bool left_handed) {
+void check_camera(const Vec3<Exact>& eye, const Vec3<Exact>& center, const Vec3<Exact>& up,
+                  const std::string& field) {
   const Vec3<Exact> forward = center - eye;
   if (canonical(forward.dot(forward)).is_zero())
     throw DomainError(field + "center", "center = eye: the camera looks nowhere");
@@ -183,6 +182,13 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
     throw DomainError(
         field + "up",
         "up is parallel to the view direction (or zero): the camera's roll is undefined");
+}
+
+MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center,
+                               const Vec3<Exact>& up, Api api, const std::string& field,
+                               Derivation* steps, bool left_handed) {
+  check_camera(eye, center, up, field);
+  const Vec3<Exact> forward = center - eye;
   // A left-handed course takes LookAtLH's basis (DirectX's, in column form).
   const bool plus_z = api == Api::DirectX || left_handed;
   const MatX<Exact> m = canonical(look_at(eye, center, up, plus_z ? Api::DirectX : api));

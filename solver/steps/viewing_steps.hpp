@@ -44,6 +44,11 @@ bool has_projection(const GivenReader& r);
 MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps,
                                   const std::string& name = "M");
 
+// Throws DomainError naming field + "center" (center = eye) or field + "up" (up parallel to the
+// view direction, or zero): a camera with no view matrix. Exact, and cheaper than the matrix.
+void check_camera(const Vec3<Exact>& eye, const Vec3<Exact>& center, const Vec3<Exact>& up,
+                  const std::string& field);
+
 // The view matrix of a camera (column form) with its steps; throws DomainError naming
 // field + "center" or field + "up" on a degenerate camera. `left_handed` (a left-handed course
 // under OpenGL's or Processing's column vectors): LookAtLH's basis, looking down +z.
