@@ -143,11 +143,11 @@ def grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair=None):
         f"load average above exceeds the {ncpu} cores, the other cores are busy with other work and the "
         "wall-time speed-up says little). "
         + (f"{ncpu} independent `-j 1` runs at once took {fmt_s(pair['median'])} s, "
-           f"{pair['median'] / one['median']:.2f}× the time of one alone, for {ncpu}× the work: the cores of "
-           f"this machine share its cache and memory, so {ncpu} processes at once give at most "
-           f"**{ncpu * one['median'] / pair['median']:.2f}×** one's throughput on this work — the ceiling "
-           f"for `-j {ncpu}`, which reached {100 * (one['median'] / j_all['median']) / (ncpu * one['median'] / pair['median']):.0f} % "
-           "of it. " if pair else "")
+           f"{pair['median'] / one['median']:.2f}× the time of one alone, for {ncpu}× the work: on this work "
+           f"the {ncpu} cores of this machine, which share its cache and memory, give {ncpu} processes "
+           f"**{ncpu * one['median'] / pair['median']:.2f}×** the throughput of one (each run with its own "
+           f"start and its own sync); `-j {ncpu}` got {one['median'] / j_all['median']:.2f}× out of them. "
+           if pair else "")
         + "Targets: ≤ 1 s with one core, ≥ 3× faster than the peer, ≥ 1.8× with two cores. "
         f"A feedback file (Markdown or HTML) is {sizes['feedback'] / 2000 / 1e3:.0f} kB on average; wall time "
         "beyond CPU time is waiting (the disk, the one sync, the other processes on the machine).\n")
