@@ -327,11 +327,10 @@ def main():
     say(f"- each size repeated {R}× (the largest once); wall time min / median / max, CPU time (user + system) "
         "median, peak resident memory")
     say(f"- outputs under {os.path.dirname(work)} (`TMPDIR`), a new directory for every run, deleted only after "
-        "the last run: on ext4 without a journal (this kind of VM) the kernel looks for a new file's inode in "
-        "its directory's block group past every inode freed there in the last minutes, so in a directory "
-        "whose group saw thousands of files deleted a run can take several times as long — that measures "
-        "the file system's history, not Frustum (a directory made at the top of the file system starts in a "
-        "fresh group)")
+        "the last run: on ext4 without a journal (this kind of VM) the kernel looks for a new file's inode "
+        "past every inode freed nearby in the last five minutes, so within five minutes of thousands of "
+        "files deleted (an earlier run of this script deletes 300,000) a run can take several times as "
+        "long — that measures the file system's history, not Frustum; leave five minutes between runs")
     skipped = [x for x in SECTIONS if not want(x)]
     if skipped:
         say(f"- this run measured only {', '.join(args.only)} (`--only`); {', '.join(skipped)} were not rerun: their "
