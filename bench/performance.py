@@ -329,7 +329,7 @@ def main():
     say(f"- outputs under {os.path.dirname(work)} (`TMPDIR`), a new directory for every run, deleted only after "
         "the last run: on ext4 without a journal (this kind of VM) the kernel looks for a new file's inode "
         "past every inode freed nearby in the last five minutes, so within five minutes of thousands of "
-        "files deleted (an earlier run of this script deletes 300,000) a run can take several times as "
+        "files deleted (an earlier run of this script deletes hundreds of thousands at its end) a run can take several times as "
         "long — that measures the file system's history, not Frustum; leave five minutes between runs")
     skipped = [x for x in SECTIONS if not want(x)]
     if skipped:
