@@ -4,11 +4,6 @@
 #include <array>
 #include <cstring>
 
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
-
-#include "solver/raster/span_fill.hpp"
 #include "solver/util/side_by_side.hpp"
 
 namespace frustum::app {
@@ -39,9 +34,14 @@ class ColorIndex {
   std::array<std::uint8_t, 1u << kBits> values_{};
 };
 
-// Where the run of `c` that starts before p ends: the portable loop, 16 pixels at a time, then
-// pixel by pixel.
-const std::uint32_t* run_end(const std::uint32_t* p, const std::uint32_t* end, std::uint32_t c) {
+// Where the run of `c` that starts before p ends: 16 pixels at a time (two vector compares with
+// AVX2, chosen at load time where the CPU has it), then pixel by pixel.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && \
+    !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+const std::uint32_t*
+long_run_end(const std::uint32_t* p, const std::uint32_t* end, std::uint32_t c) {
   while (end - p >= 16) {
     std::uint32_t differ = 0;
     for (int m = 0; m < 16; ++m) differ |= p[m] ^ c;
@@ -52,31 +52,17 @@ const std::uint32_t* run_end(const std::uint32_t* p, const std::uint32_t* end, s
   return p;
 }
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define FRUSTUM_X86_VECTOR 1
-// The same with AVX2: eight pixels compared at a time, and where one differs, the first that
-// does is the lowest clear bit of the comparison's mask, found without a pixel-by-pixel loop.
-__attribute__((target("avx2"))) const std::uint32_t* run_end_avx2(const std::uint32_t* p,
-                                                                  const std::uint32_t* end,
-                                                                  std::uint32_t c) {
-  const __m256i vc = _mm256_set1_epi32(static_cast<int>(c));
-  for (; end - p >= 8; p += 8) {
-    const __m256i same =
-        _mm256_cmpeq_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)), vc);
-    const auto mask = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(same)));
-    if (mask != 0xffu) return p + __builtin_ctz(~mask);
-  }
-  while (p < end && *p == c) ++p;
-  return p;
+const std::uint32_t* run_end(const std::uint32_t* p, const std::uint32_t* end, std::uint32_t c) {
+  // A run of one or two pixels (an edge, a noisy image) without the call.
+  if (p == end || *p != c) return p;
+  ++p;
+  if (p == end || *p != c) return p;
+  return long_run_end(p + 1, end, c);
 }
-const bool kAvx2 = cpu_has_avx2();
-#endif
 
 // Rows [r0, r1) of the file (top first) into `part`: its own palette, runs and row starts
-// (relative to its own runs). `end_of` is run_end or its AVX2 twin.
-template <class RunEnd>
-[[gnu::always_inline]] inline bool scan_rows(const Image<std::uint32_t>& image, int r0, int r1,
-                                             FrameRuns& part, RunEnd end_of) {
+// (relative to its own runs).
+bool scan_rows(const Image<std::uint32_t>& image, int r0, int r1, FrameRuns& part) {
   ColorIndex index;
   const auto width = static_cast<std::size_t>(image.width);
   part.row_start.push_back(0);
@@ -88,33 +74,13 @@ template <class RunEnd>
       if (c >> 24 != 0xff) return false;
       const int k = index.find_or_add(c, part.palette);
       if (k < 0) return false;
-      const std::uint32_t* const q = end_of(p + 1, end, c);
+      const std::uint32_t* const q = run_end(p + 1, end, c);
       part.runs.push_back(static_cast<std::uint32_t>(q - p) << 8 | static_cast<std::uint32_t>(k));
       p = q;
     }
     part.row_start.push_back(part.runs.size());
   }
   return true;
-}
-
-#if FRUSTUM_X86_VECTOR
-// The scan compiled for AVX2 as a whole, so that run_end_avx2 is inlined into it.
-__attribute__((target("avx2"))) bool scan_rows_avx2(const Image<std::uint32_t>& image, int r0,
-                                                    int r1, FrameRuns& part) {
-  const bool fits = scan_rows(
-      image, r0, r1, part,
-      [](const std::uint32_t* p, const std::uint32_t* end, std::uint32_t c)
-          __attribute__((target("avx2"))) { return run_end_avx2(p, end, c); });
-  _mm256_zeroupper();
-  return fits;
-}
-#endif
-
-bool scan_rows(const Image<std::uint32_t>& image, int r0, int r1, FrameRuns& part) {
-#if FRUSTUM_X86_VECTOR
-  if (kAvx2) return scan_rows_avx2(image, r0, r1, part);
-#endif
-  return scan_rows(image, r0, r1, part, run_end);
 }
 
 }  // namespace

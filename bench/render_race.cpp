@@ -362,7 +362,7 @@ int race(int argc, char** argv) {
         "it)\n",
         lp_threads, lp_env ? "" : " (Mesa's default: one per core)", asked,
         asked == 1 ? std::string(" (one thread)")
-        : world_triangle_count(scene) <= kBandedTriangles
+        : zbuffer_banded(scene, asked)
             ? fmt::format(" (geometry and fill shared by {} threads)", used)
         : used == asked
             ? fmt::format(" (the geometry and set-up on one thread, the fill on the other)")

@@ -229,24 +229,20 @@ Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStat
   return frame;
 }
 
-namespace {
-
 // With threads, a scene of at most kBandedTriangles world triangles is set up whole and filled
 // band by band (banded_fill.hpp); a larger one streams through the fill with the geometry and the
 // set-up on a thread of their own.
-bool banded(const Scene& scene, int threads) {
+bool zbuffer_banded(const Scene& scene, int threads) {
   return threads >= 2 && world_triangle_count(scene) <= kBandedTriangles;
 }
 
-}  // namespace
-
 int zbuffer_threads(const Scene& scene, int threads) {
-  return banded(scene, threads) ? threads : std::min(threads, 2);
+  return zbuffer_banded(scene, threads) ? threads : std::min(threads, 2);
 }
 
 void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
                     FillStats* stats, int threads) {
-  if (banded(scene, threads)) {
+  if (zbuffer_banded(scene, threads)) {
     // A modelled scene with threads to share: the geometry in parts side by side, then the
     // frame filled band by band (on one thread this is no faster than the stream below: a
     // 1920 × 1080 frame stays in this machine's last-level cache).

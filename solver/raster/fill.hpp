@@ -142,13 +142,13 @@ struct Frame {
   // others copied from it (memcpy moves a vector at a time; GCC's -O2 stores a fill of a
   // non-zero 32-bit value one pixel at a time, four times as many stores).
   void clear_rows(int j0, int j1, Rgb background) {
-    clear_rows(color, j0, j1, pack(background));
-    clear_rows(depth, j0, j1, kDepthClear);
+    fill_rows(color, j0, j1, pack(background));
+    fill_rows(depth, j0, j1, kDepthClear);
   }
 
  private:
   template <typename P>
-  static void clear_rows(Image<P>& image, int j0, int j1, P value) {
+  static void fill_rows(Image<P>& image, int j0, int j1, P value) {
     if (j0 > j1) return;
     const auto width = static_cast<std::size_t>(image.width);
     P* const first = image.data.data() + static_cast<std::size_t>(j0) * width;
@@ -193,10 +193,13 @@ Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr
 // The same into a render target the caller keeps (reset to the scene's size and background).
 void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_stats = nullptr,
                     FillStats* stats = nullptr, int threads = 1);
-// How many threads render_zbuffer keeps busy: all it is given for a modelled scene (at most
-// kBandedTriangles world triangles: banded_fill.hpp, 320 B a triangle set up), at most two
-// otherwise.
+// Whether render_zbuffer with `threads` sets a modelled scene up whole and fills it band by band
+// (at least two threads, at most kBandedTriangles world triangles: banded_fill.hpp, 320 B a
+// triangle set up) rather than streaming it.
 inline constexpr std::size_t kBandedTriangles = std::size_t(1) << 15;
+bool zbuffer_banded(const Scene& scene, int threads);
+// How many threads render_zbuffer keeps busy: all it is given when banded, at most two
+// otherwise.
 int zbuffer_threads(const Scene& scene, int threads);
 
 // Only what one pixel needs (the render kind): the triangles whose bounds hold the pixel

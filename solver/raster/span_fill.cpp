@@ -76,6 +76,12 @@ __attribute__((target("avx2"))) int avx2(float* depth, std::uint32_t* color, int
   return written;
 }
 
+// Chosen once, by a static initializer: __builtin_cpu_init first, since it may run before
+// libgcc's own detection.
+bool cpu_has_avx2() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2");
+}
 const bool kAvx2 = cpu_has_avx2();
 #endif
 
@@ -93,15 +99,6 @@ int fill_span(float* depth, std::uint32_t* color, int n, double row_z, double a,
   if (kAvx2) return avx2(depth, color, n, row_z, a, dx0, c, count);
 #endif
   return fill_span_portable(depth, color, n, row_z, a, dx0, c, count);
-}
-
-bool cpu_has_avx2() {
-#if FRUSTUM_X86_VECTOR
-  __builtin_cpu_init();  // a static initializer may run before libgcc's own detection
-  return __builtin_cpu_supports("avx2");
-#else
-  return false;
-#endif
 }
 
 bool fill_span_vectorised() {

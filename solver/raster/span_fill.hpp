@@ -19,9 +19,6 @@ int fill_span(float* depth, std::uint32_t* color, int n, double row_z, double a,
 // The portable loop alone (the tests compare the two).
 int fill_span_portable(float* depth, std::uint32_t* color, int n, double row_z, double a,
                        double dx0, std::uint32_t c, bool count);
-// Whether this x86-64 CPU has AVX2 (false elsewhere): the vector paths here and in the PNG
-// writer's scan (app/frame_palette.cpp) are chosen by it, once per process.
-bool cpu_has_avx2();
 // Whether fill_span takes the vector path on this CPU.
 bool fill_span_vectorised();
 
