@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/file.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -118,57 +119,139 @@ FileBatch::~FileBatch() {
     wait_commit();
   } catch (const std::exception&) {  // already reported by the caller's own wait, or moot
   }
+  end_committer();
   for (const Pending& p : pending_) ::unlink(p.temporary.c_str());
 }
 
-void FileBatch::commit_in_background() {
-  wait_commit();
-  if (pending_.empty()) return;
-  int fds[2];
-  const pid_t pid = ::pipe2(fds, O_CLOEXEC) == 0 ? ::fork() : -1;
-  if (pid < 0) {
-    commit();
-    return;
+namespace {
+
+// The committing child's messages go through a socket pair: a write to a child that has ended
+// is then an error (MSG_NOSIGNAL), where a pipe would end this process with SIGPIPE.
+bool send_all(int fd, const std::string& data) {
+  std::size_t sent = 0;
+  while (sent < data.size()) {
+    const ssize_t n = ::send(fd, data.data() + sent, data.size() - sent, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    sent += static_cast<std::size_t>(n);
   }
-  if (pid == 0) {
-    ::close(fds[0]);
-    int status = 0;
-    try {
-      commit();
-    } catch (const std::exception& e) {
-      const std::string message = e.what();
-      (void)!::write(fds[1], message.data(), message.size());
-      for (const Pending& p : pending_) ::unlink(p.temporary.c_str());
-      status = 1;
-    }
-    ::_exit(status);
-  }
-  ::close(fds[1]);
-  committer_ = pid;
-  committer_fd_ = fds[0];
-  pending_.clear();  // the child's to rename now
+  return true;
 }
 
-void FileBatch::wait_commit() {
-  if (committer_ < 0) return;
-  std::string message;
-  char buffer[4096];
-  for (ssize_t n; (n = ::read(committer_fd_, buffer, sizeof buffer)) != 0;) {
+bool read_exact(int fd, char* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::read(fd, data, size);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    message.append(buffer, static_cast<std::size_t>(n));
+    if (n <= 0) return false;
+    data += n;
+    size -= static_cast<std::size_t>(n);
   }
+  return true;
+}
+
+// Lengths in this machine's byte order: both ends are this program on this machine.
+void put_length(std::string& out, std::uint64_t n) {
+  out.append(reinterpret_cast<const char*>(&n), sizeof n);
+}
+
+bool read_length(int fd, std::uint64_t& n) {
+  return read_exact(fd, reinterpret_cast<char*>(&n), sizeof n);
+}
+
+bool read_text(int fd, std::string& text) {
+  std::uint64_t n = 0;
+  if (!read_length(fd, n) || n > (std::uint64_t(1) << 32)) return false;
+  text.resize(n);
+  return read_exact(fd, text.data(), n);
+}
+
+}  // namespace
+
+void FileBatch::serve_commits(int fd) {
+  // A group: its count, then each file's temporary name and target. A count of 0 ends the
+  // child, as does the end of the stream (this process gone).
+  for (;;) {
+    std::uint64_t count = 0;
+    if (!read_length(fd, count) || count == 0) ::_exit(0);
+    std::vector<Pending> group(count);
+    for (Pending& p : group)
+      if (!read_text(fd, p.temporary) || !read_text(fd, p.target)) ::_exit(0);
+    std::string message;
+    try {
+      commit_pending(group);
+    } catch (const std::exception& e) {
+      message = e.what();
+    } catch (...) {
+      message = "the files of a group could not be put in place";
+    }
+    for (const Pending& p : group) ::unlink(p.temporary.c_str());  // those not put in place
+    std::string reply;
+    put_length(reply, message.size());
+    reply += message;
+    if (!send_all(fd, reply)) ::_exit(0);
+  }
+}
+
+void FileBatch::end_committer() {
+  if (committer_ < 0) return;
+  std::string quit;
+  put_length(quit, 0);
+  (void)send_all(committer_fd_, quit);
   ::close(committer_fd_);
   int status = 0;
   while (::waitpid(committer_, &status, 0) < 0 && errno == EINTR) {
   }
   committer_ = -1;
   committer_fd_ = -1;
-  if (!message.empty()) throw std::runtime_error(message);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+}
+
+void FileBatch::commit_in_background() {
+  wait_commit();
+  if (pending_.empty()) return;
+  if (committer_ < 0) {
+    int fds[2];
+    const pid_t pid =
+        ::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) == 0 ? ::fork() : -1;
+    if (pid < 0) {
+      commit();
+      return;
+    }
+    if (pid == 0) {
+      ::close(fds[0]);
+      serve_commits(fds[1]);
+    }
+    ::close(fds[1]);
+    committer_ = pid;
+    committer_fd_ = fds[0];
+  }
+  std::string request;
+  put_length(request, pending_.size());
+  for (const Pending& p : pending_) {
+    put_length(request, p.temporary.size());
+    request += p.temporary;
+    put_length(request, p.target.size());
+    request += p.target;
+  }
+  if (!send_all(committer_fd_, request)) {  // the child has ended: the group is committed here
+    end_committer();
+    commit();
+    return;
+  }
+  committing_ = true;
+  pending_.clear();  // the child's to rename now
+}
+
+void FileBatch::wait_commit() {
+  if (!committing_) return;
+  committing_ = false;
+  std::string message;
+  if (!read_text(committer_fd_, message)) {
+    end_committer();
     throw std::runtime_error(
         "the files of a group could not be put in place (the process that "
         "renames them stopped)");
+  }
+  if (!message.empty()) throw std::runtime_error(message);
 }
 
 void FileBatch::stage(const std::string& path, const std::string& content) {
@@ -203,15 +286,21 @@ void FileBatch::discard(const std::string& temporary) { ::unlink(temporary.c_str
 
 void FileBatch::commit() {
   wait_commit();
-  if (pending_.empty()) return;
+  commit_pending(pending_);
+}
+
+// Syncs, then renames each file over its target, taking it off `pending` (what is left there
+// on an error has not been put in place).
+void FileBatch::commit_pending(std::vector<Pending>& pending) {
+  if (pending.empty()) return;
   std::vector<std::string> dirs;
-  for (const Pending& p : pending_)
+  for (const Pending& p : pending)
     if (std::find(dirs.begin(), dirs.end(), parent_of(p.target)) == dirs.end())
       dirs.push_back(parent_of(p.target));
   for (const std::string& d : dirs) sync_file_system(d);  // one sync per file system in practice
-  while (!pending_.empty()) {
-    const Pending p = std::move(pending_.back());
-    pending_.pop_back();
+  while (!pending.empty()) {
+    const Pending p = std::move(pending.back());
+    pending.pop_back();
     rename_into_place(p.temporary, p.target);
   }
   for (const std::string& d : dirs) sync_directory(d);

@@ -144,6 +144,48 @@ TEST(FileBatch, ABackgroundCommitThatFailsReportsItsErrorAndLeavesNoTemporaryFil
   fs::remove_all(dir);
 }
 
+// Many groups in turn through the one committing child: a group that fails reports its own
+// error and leaves no temporary file, and the groups after it are still put in place; a group
+// still in flight when the batch ends is waited for, not lost.
+TEST(FileBatch, GroupsAfterAFailedGroupAreStillPutInPlace) {
+  const fs::path dir = scratch("many-groups");
+  {
+    FileBatch files;
+    for (int g = 0; g < 6; ++g) {
+      for (int i = 0; i < 20; ++i)
+        files.stage((dir / fmt::format("g{}", g) / fmt::format("f{}.txt", i)).string(),
+                    fmt::format("group {} file {}", g, i));
+      if (g == 2) {  // a directory where one file of this group is to go
+        fs::create_directories(dir / "g2" / "f7.txt");
+        test::write_file(dir / "g2" / "f7.txt" / "inside", "in the way");
+      }
+      files.commit_in_background();
+      if (g == 5) break;  // left in flight for the destructor
+      if (g == 2) {
+        try {
+          files.wait_commit();
+          ADD_FAILURE() << "no error for group 2";
+        } catch (const std::runtime_error& e) {
+          EXPECT_NE(std::string(e.what()).find("f7.txt: cannot rename into place"),
+                    std::string::npos)
+              << e.what();
+        }
+      } else {
+        files.wait_commit();
+        for (int i = 0; i < 20; ++i)
+          EXPECT_EQ(test::read_file(dir / fmt::format("g{}", g) / fmt::format("f{}.txt", i)),
+                    fmt::format("group {} file {}", g, i));
+      }
+      EXPECT_TRUE(hidden_files(dir / fmt::format("g{}", g)).empty()) << g;
+    }
+  }
+  for (int i = 0; i < 20; ++i)
+    EXPECT_EQ(test::read_file(dir / "g5" / fmt::format("f{}.txt", i)),
+              fmt::format("group 5 file {}", i));
+  EXPECT_TRUE(hidden_files(dir / "g5").empty());
+  fs::remove_all(dir);
+}
+
 TEST(Isolate, SlowAndCrashingItemsCostOnlyTheirOwnResult) {
   std::vector<std::size_t> seen;
   const auto results = run_isolated_each(

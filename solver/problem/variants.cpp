@@ -93,7 +93,7 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
 }
 
 ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::uint64_t seed,
-                         const std::set<std::string>& avoid, std::string* given_text,
+                         const GivenTexts& avoid, std::string* given_text,
                          std::vector<std::string>* repeated) {
   // yaml-cpp's Node::operator= writes through to every copy of a node (the base set's too):
   // nodes of a copied ProblemSpec are rebound with reset(), and specs are never assigned.
@@ -262,7 +262,7 @@ namespace {
 // `avoid` (when given) holds, per problem, the givens (emit_flow text) of earlier variants;
 // `givens` (when given) receives the variant's own (VariantGivens).
 ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std::string& student,
-                        bool vary_all, const std::vector<std::set<std::string>>* avoid,
+                        bool vary_all, const std::vector<GivenTexts>* avoid,
                         VariantGivens* givens = nullptr) {
   ProblemSet out = set;
   out.per_student = false;
@@ -272,7 +272,7 @@ ProblemSet make_variant(const ProblemSet& set, const std::string& who, const std
   if (givens)
     *givens = {std::vector<std::optional<std::string>>(set.problems.size()),
                std::vector<std::vector<std::string>>(set.problems.size()), true};
-  static const std::set<std::string> kNone;
+  static const GivenTexts kNone;
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const ProblemSpec& base = set.problems[i];
     if (!drawn_anew(set, base, vary_all)) {

@@ -15,8 +15,8 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
-#include <set>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "solver/derivation/value.hpp"
@@ -38,11 +38,15 @@ std::uint64_t variant_seed(const std::string& key, const std::string& who);
 // Seed of one problem of that variant: the same hash continued with US and the problem id.
 std::uint64_t problem_seed(std::uint64_t variant_seed, const std::string& problem_id);
 
+// Givens as emit_flow text, held to refuse repeats: only looked up and added to (a hash set: a
+// 100,000-variant run looks each draw up among up to 100,000 texts, in the workers and here).
+using GivenTexts = std::unordered_set<std::string>;
+
 // One drawn problem: `base` with a new given (parsed and solvable), or with `error` set.
 // `avoid` holds the givens (as emit_flow text) of other variants; `given_text` receives this one's,
 // and `repeated` (when given) each draw refused because `avoid` holds it.
 ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::uint64_t seed,
-                         const std::set<std::string>& avoid = {}, std::string* given_text = nullptr,
+                         const GivenTexts& avoid = {}, std::string* given_text = nullptr,
                          std::vector<std::string>* repeated = nullptr);
 
 // A problem "p" of the kind asking every answer, with no `vary` (so draw_problem uses the
@@ -100,7 +104,7 @@ class SeedVariants {
   std::uint64_t seed_;
   int count_;
   bool vary_all_;
-  std::vector<std::set<std::string>> taken_;  // per problem: the givens drawn so far
+  std::vector<GivenTexts> taken_;  // per problem: the givens drawn so far
   bool exhausted_ = false;
 };
 
@@ -120,7 +124,7 @@ class ClassVariants {
  private:
   ProblemSet set_;  // texts templated for drawing (literal values → placeholders)
   bool vary_all_;
-  std::vector<std::set<std::string>> taken_;
+  std::vector<GivenTexts> taken_;
 };
 
 // The student's variant, with vary_all as above.
