@@ -324,6 +324,8 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   const std::size_t items = g.seed ? static_cast<std::size_t>(g.count) : students.size();
   const std::size_t jobs = std::min<std::size_t>(
       g.jobs ? g.jobs : std::max(1u, std::thread::hardware_concurrency()), items);
+  // More than one group: the process that commits them is made now, while this one is small.
+  if (!paper && 2 * items > kFilesPerSync) files.start_committer();
   if (jobs > 1 && !paper && items >= kMinParallelVariants) {
     // Worker processes (GiNaC is not thread-safe) draw, solve and write the variants, each
     // taking the next that nobody has taken (so that they finish together, and the variants

@@ -205,24 +205,32 @@ void FileBatch::end_committer() {
   committer_fd_ = -1;
 }
 
+bool FileBatch::start_committer() {
+  if (committer_ >= 0) return true;
+  int fds[2];
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) return false;
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return false;
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    serve_commits(fds[1]);
+  }
+  ::close(fds[1]);
+  committer_ = pid;
+  committer_fd_ = fds[0];
+  return true;
+}
+
 void FileBatch::commit_in_background() {
   wait_commit();
   if (pending_.empty()) return;
-  if (committer_ < 0) {
-    int fds[2];
-    const pid_t pid =
-        ::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) == 0 ? ::fork() : -1;
-    if (pid < 0) {
-      commit();
-      return;
-    }
-    if (pid == 0) {
-      ::close(fds[0]);
-      serve_commits(fds[1]);
-    }
-    ::close(fds[1]);
-    committer_ = pid;
-    committer_fd_ = fds[0];
+  if (!start_committer()) {
+    commit();
+    return;
   }
   std::string request;
   put_length(request, pending_.size());

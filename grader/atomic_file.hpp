@@ -49,6 +49,10 @@ class FileBatch {
   // is done here. The destructor waits for the last group and ends the child.
   void commit_in_background();
   void wait_commit();
+  // Makes the committing child now, while this process is small (commit_in_background()
+  // otherwise makes it at the first group): each page this process writes after the fork is
+  // copied once, so the fewer it has then, the less it copies. False where none can be made.
+  bool start_committer();
 
  private:
   struct Pending {

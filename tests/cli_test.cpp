@@ -2,6 +2,7 @@
 #include <sys/wait.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -233,6 +234,28 @@ void expect_same_whatever_jobs(const std::string& args, const std::string& name)
 TEST(Cli, GenerateWritesTheSameFilesWhateverJobs) {
   expect_same_whatever_jobs(seed("001_zbuffer_plane_method.yaml") + " --seed 1 --count 200",
                             "gen-jobs-seed001");
+}
+
+// More files than one sync takes (8,192): the groups are put in place by one committing
+// process while the workers go on, and every path printed is in place, whatever -j is.
+TEST(Cli, GenerateOfManyGroupsWritesTheSameFilesWhateverJobs) {
+  const std::string path = ::testing::TempDir() + "/many_groups_set.yaml";
+  const std::string coord = "{range: [-20, 20]}", depth = "{range: [1, 40]}";
+  const std::string point = "[" + coord + ", " + coord + ", " + depth + "]";
+  std::ofstream(path) << "title: many groups\nproblems:\n"
+                         "  - id: n\n    kind: normal\n"
+                         "    given: {A: [0, 0, 6], B: [3, 0, 9], C: [0, 3, 9], cross: [AC, AB]}\n"
+                         "    vary: {A: "
+                      << point << ", B: " << point << ", C: " << point
+                      << "}\n    ask: [normal, unit_normal]\n";
+  const Generated one = generate_with_jobs(path + " --seed 2 --count 4200", 1, "gen-groups");
+  ASSERT_EQ(one.status, 0) << one.out;
+  EXPECT_EQ(one.files.size(), 8400u);  // every variant and its key, no temporary file left
+  EXPECT_EQ(std::count(one.out.begin(), one.out.end(), '\n'), 4200) << one.out.substr(0, 400);
+  const Generated two = generate_with_jobs(path + " --seed 2 --count 4200", 2, "gen-groups");
+  EXPECT_EQ(two.status, 0);
+  EXPECT_EQ(two.out, one.out);
+  EXPECT_TRUE(two.files == one.files) << "the files of -j 2 differ from -j 1";
 }
 
 // 120 pixels for 100 variants: the later shares' own draws mostly repeat an earlier share's, so
