@@ -43,10 +43,11 @@ class FileBatch {
   // keeps taking its workers' results while a group of files is synced and renamed); staging
   // starts again empty. wait_commit() waits for it and throws its error, as commit() would have.
   // One at a time: commit_in_background() first waits for the one before, and so does commit().
-  // One child commits every group, made at the first: a process made per group cost this one
-  // a copy-on-write fault, and a TLB flush of the other core, on each page it wrote after
-  // each fork (a third of its CPU time in generate). Where no process can be made, the commit
-  // is done here. The destructor waits for the last group and ends the child.
+  // One child commits every group, made at the first (or by start_committer()): a process made
+  // per group cost this one a copy-on-write fault, and a TLB flush of the other core, on each
+  // page it wrote after each fork (a third of its CPU time in generate). Where no process can
+  // be made, the commit is done here. The destructor waits for the last group and ends the
+  // child.
   void commit_in_background();
   void wait_commit();
   // Makes the committing child now, while this process is small (commit_in_background()
