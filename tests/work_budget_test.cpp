@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -103,6 +104,53 @@ TEST(WorkBudget, FuzzedNestedRootsStayWithinTheBudgetAndKeepTheirValue) {
     const double before = to_double(*r.value), after = to_double(c);
     EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << text;
   }
+}
+
+TEST(WorkBudget, FuzzedSlowInputsKeepTheirValueInAFormThatIsCheapToEvaluate) {
+  // Every input the fuzzer found slow (fuzz/corpus/fuzz_expression/slow-*, timeout-*): the
+  // canonical form keeps the value and stays a small tree, so evaluating it stays cheap. One of
+  // them, nested fractions over sums with π and roots, once came back from canonical() as a
+  // tree of 1.2 million nodes (its normal() underpriced 17 times, its expand() repeating the
+  // common denominator under each of 488 terms), and evaluating it took longer than the
+  // canonical form itself.
+  int checked = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(test::source_path("fuzz/corpus/fuzz_expression"))) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("slow-", 0) != 0 && name.rfind("timeout-", 0) != 0) continue;
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const ExpressionResult r = parse_expression(text);
+    if (!r) continue;  // refused by the parser's own limits
+    ++checked;
+    WorkBudget budget;
+    const ex c = canonical(*r.value, budget);
+    EXPECT_LE(tree_nodes(c), kMaxExactNodes) << name;
+    const double before = to_double(*r.value), after = to_double(c);
+    EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << name;
+  }
+  EXPECT_GE(checked, 10);
+}
+
+TEST(WorkBudget, NormalisingIsPricedByItsCommonDenominator) {
+  // The same sum of fractions over one denominator and over six: normal() multiplies every
+  // numerator by the other denominators, and its price says so.
+  const ex one = value_of("1/(1+sqrt(2)+pi)+2/(1+sqrt(2)+pi)+3/(1+sqrt(2)+pi)").expand();
+  const ex six = value_of(
+                     "1/(1+sqrt(2)+pi)+1/(1+sqrt(3)+pi)+1/(1+sqrt(5)+pi)+1/(1+sqrt(7)+pi)+"
+                     "1/(1+sqrt(11)+pi)+1/(1+sqrt(13)+pi)")
+                     .expand();
+  EXPECT_GE(normal_cost(six), 20 * normal_cost(one));
+  // A value with no sum in a denominator is priced as before: nodes times (1 + atoms).
+  const GiNaC::symbol x("x"), y("y");
+  EXPECT_DOUBLE_EQ(normal_cost(x + y), 3 * 3);
+}
+
+TEST(WorkBudget, TreeNodesCountSharedSubexpressionsWhereverTheyOccur) {
+  const ex d = value_of("1+sqrt(2)+sqrt(3)");  // 1 + 2·(power, 2 numbers) = 1 + 1 + 2·3 = 8
+  EXPECT_DOUBLE_EQ(tree_nodes(d), 8);
+  const ex twice = GiNaC::pow(d, -1) + 2 * GiNaC::pow(d, -1) * GiNaC::symbol("x");
+  EXPECT_GT(tree_nodes(twice), 2 * tree_nodes(d));
 }
 
 }  // namespace

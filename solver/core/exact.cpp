@@ -492,6 +492,11 @@ bool proven_zero(const Exact& e) {
   return GiNaC::abs(value) * 10 < separation;
 }
 
+// False, with the budget marked exceeded, when x is too large a tree to keep (kMaxExactNodes).
+bool small_enough(const ex& x, WorkBudget& budget) {
+  return tree_nodes(x) <= kMaxExactNodes || budget.spend(std::numeric_limits<double>::infinity());
+}
+
 // One pass of canonical(): radicals simplified, fractions collected, the sum flattened.
 bool simplify_pass(ex& current, WorkBudget& budget) {
   if (!budget.spend(normal_cost(current))) return false;
@@ -546,11 +551,16 @@ Exact canonical(const Exact& e) {
 Exact canonical(const Exact& e, WorkBudget& budget) {
   // A rational is already canonical (most typed answers and most inputs are).
   if (is_rational(e)) return e;
-  if (!budget.spend(exact_size(e).work + normal_cost(e))) return e;
-  ex current = e.expand().normal();
+  // Every step is priced before it runs, and its result is kept only while it is a small
+  // enough tree: otherwise the last form kept is returned (at worst e itself).
+  if (!budget.spend(exact_size(e).work)) return e;
+  const ex expanded = e.expand();
+  if (!small_enough(expanded, budget) || !budget.spend(normal_cost(expanded))) return e;
+  ex current = expanded.normal();
+  if (!small_enough(current, budget)) return e;
   for (int pass = 0; pass < kMaxCanonicalPasses; ++pass) {
     ex next = current;
-    if (!simplify_pass(next, budget)) return current;
+    if (!simplify_pass(next, budget) || !small_enough(next, budget)) return current;
     if (next.is_equal(current)) break;
     current = next;
   }
@@ -560,7 +570,9 @@ Exact canonical(const Exact& e, WorkBudget& budget) {
     if (!rationalized.is_equal(current)) {
       if (!budget.spend(exact_size(rationalized).work)) return current;
       rationalized = rationalized.expand();
-      if (simplify_pass(rationalized, budget)) current = rationalized;
+      if (small_enough(rationalized, budget) && simplify_pass(rationalized, budget) &&
+          small_enough(rationalized, budget))
+        current = rationalized;
     }
   }
   return current;

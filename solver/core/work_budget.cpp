@@ -104,8 +104,9 @@ class SizeOf {
 };
 
 // What walking, multiplying and normalising e costs: its nodes written out as a tree (each
-// shared subexpression counted wherever it occurs, but visited once), its largest number, and
-// its distinct irrational atoms (the variables of the polynomials normal() takes gcds of).
+// shared subexpression counted wherever it occurs, but visited once), its largest number, its
+// distinct irrational atoms (the variables of the polynomials normal() takes gcds of) and its
+// distinct denominators that are sums (the factors of the common denominator normal() builds).
 class Shape {
  public:
   explicit Shape(const ex& e) { nodes_ = visit(e); }
@@ -117,6 +118,14 @@ class Shape {
     return words * words;
   }
   double atoms() const { return static_cast<double>(atoms_.size()); }
+  // The product of the terms of e's distinct sum denominators: a bound on the terms of the
+  // common denominator that normal() multiplies every numerator by.
+  double denominator_terms() const {
+    double product = 1;
+    for (const auto& [denominator, terms] : denominators_)
+      product = std::min(product * terms, kSaturated);
+    return product;
+  }
 
  private:
   double visit(const ex& e) {
@@ -131,6 +140,9 @@ class Shape {
                  ex_to<numeric>(e.op(1)).is_integer())) {
       atoms_.emplace(e, 0.0);
     }
+    if (is_a<GiNaC::power>(e) && is_a<GiNaC::add>(e.op(0)) && is_a<numeric>(e.op(1)) &&
+        ex_to<numeric>(e.op(1)).is_negative())
+      denominators_.emplace(e.op(0), static_cast<double>(e.op(0).nops()));
     double n = 1;
     for (std::size_t i = 0; i < e.nops(); ++i) n = std::min(n + visit(e.op(i)), kSaturated);
     memo_.emplace(e, n);
@@ -139,6 +151,7 @@ class Shape {
 
   ExMap<double> memo_;
   ExMap<double> atoms_;
+  ExMap<double> denominators_;
   long max_bits_ = 0;
   double nodes_ = 0;
 };
@@ -169,7 +182,9 @@ double product_cost(const ex& a, const ex& b) {
 
 double normal_cost(const ex& e) {
   const Shape s(e);
-  return s.nodes() * s.word_factor() * (1 + s.atoms());
+  return s.nodes() * s.word_factor() * (1 + s.atoms()) * std::sqrt(s.denominator_terms());
 }
+
+double tree_nodes(const ex& e) { return Shape(e).nodes(); }
 
 }  // namespace frustum

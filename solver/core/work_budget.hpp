@@ -54,10 +54,24 @@ double term_count(const GiNaC::ex& expanded);
 // times W² for the W-word numbers in them (rationalising makes numbers of thousands of digits).
 double product_cost(const GiNaC::ex& a, const GiNaC::ex& b);
 
-// Price of e.normal() (with the expand() around it): N·W²·(1 + A). normal() takes gcds of
+// Price of e.normal() (with the expand() around it): N·W²·(1 + A)·√D. normal() takes gcds of
 // polynomials whose variables are e's A distinct irrational atoms; measured, that cost grows
 // with A far faster than expand()'s (a 200-term value with 1 000-digit numbers and five
-// fourth roots ran for minutes).
+// fourth roots ran for minutes). It brings every fraction over a common denominator, D the
+// product of the terms of e's distinct sum denominators: nested fractions over sums with π and
+// ten roots (a fuzzer's find) took 60–100 ms at N·W²·(1 + A) ≈ 5 000, 17 times this price
+// without √D; √D matches three such shapes measured (1, 5 and 6 such denominators) within 2×.
 double normal_cost(const GiNaC::ex& e);
+
+// Nodes of e written out as a tree, each shared subexpression counted wherever it occurs
+// (saturating): what evaluating, walking or printing e costs. expand() of n/d repeats d under
+// every term of n, so a value whose shared graph is small can be a million nodes as a tree.
+double tree_nodes(const GiNaC::ex& e);
+
+// The most tree nodes a value canonical() hands back may have. Larger forms are not kept: the
+// value stays in its last smaller form (at worst as given), with the budget marked exceeded,
+// so what callers do next (evaluate it, test its sign, print it) stays cheap. The largest
+// canonical form of a bundled problem or test has far fewer (docs/reliability.md).
+inline constexpr double kMaxExactNodes = 50'000;
 
 }  // namespace frustum
