@@ -27,10 +27,7 @@ targets=("$@")
 all_targets=(fuzz_loader fuzz_expression fuzz_grade fuzz_batch fuzz_csv_roster fuzz_scene)
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_COMPILER=clang++ -DFRUSTUM_FUZZ=ON -DFRUSTUM_TESTS=OFF "${launcher[@]}" >/dev/null
+. tools/sanitized_build.sh  # build-fuzz/, shared with tools/sanitize.sh
 cmake --build build-fuzz --parallel "$(nproc)" --target "${targets[@]}"
 
 # fuzz_grade reads one digit (which seed set) then the answer file.
