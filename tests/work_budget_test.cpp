@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -130,6 +131,62 @@ TEST(WorkBudget, FuzzedSlowInputsKeepTheirValueInAFormThatIsCheapToEvaluate) {
     EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << name;
   }
   EXPECT_GE(checked, 10);
+}
+
+// Nested fractions over sums of π, square roots and integers: the shape of the fuzzer's slow
+// finds, drawn at random.
+std::string random_fraction(std::mt19937& rng, int depth) {
+  const auto pick = [&rng](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  const auto integer = [&] { return std::to_string(1 + pick(30)); };
+  if (depth == 0) {
+    switch (pick(4)) {
+      case 0:
+        return integer();
+      case 1:
+        return "sqrt(" + std::to_string(2 + pick(200)) + ")";
+      case 2:
+        return "(" + integer() + "*pi+" + integer() + ")";
+      default:
+        return "(sqrt(" + integer() + "/" + integer() + ")-" + integer() + ")";
+    }
+  }
+  const std::string a = random_fraction(rng, depth - 1), b = random_fraction(rng, depth - 1);
+  switch (pick(4)) {
+    case 0:
+      return "(" + a + "+" + b + ")";
+    case 1:
+      return integer() + "/(" + a + "+" + b + ")";
+    case 2:
+      return "(" + a + ")^2/(" + b + "+" + integer() + ")";
+    default:
+      return "(" + a + "-" + b + ")^3/" + integer();
+  }
+}
+
+TEST(WorkBudget, RandomNestedFractionsKeepTheirValueInASmallTree) {
+  // Property over many such values: the canonical form keeps the value, stays within the
+  // budget and stays a tree small enough to evaluate cheaply (kMaxExactNodes).
+  std::mt19937 rng(20261202);
+  int exceeded = 0, parsed = 0;
+  for (int i = 0; i < 60; ++i) {
+    const std::string text = random_fraction(rng, 1 + i % 4);
+    const ExpressionResult r = parse_expression(text);
+    if (!r) {  // refused by the parser's own limits, with a reason
+      EXPECT_FALSE(r.error.empty()) << text;
+      continue;
+    }
+    ++parsed;
+    WorkBudget budget;
+    const ex c = canonical(*r.value, budget);
+    exceeded += budget.exceeded();
+    EXPECT_LE(budget.used(), budget.limit()) << text;
+    EXPECT_LE(tree_nodes(c), kMaxExactNodes) << text;
+    ASSERT_TRUE(is_real_constant(c)) << text;
+    const double before = to_double(*r.value), after = to_double(c);
+    EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << text;
+  }
+  EXPECT_GE(parsed, 40);
+  EXPECT_GT(exceeded, 0);  // the draw reaches the budget, so the property is tested there too
 }
 
 TEST(WorkBudget, NormalisingIsPricedByItsCommonDenominator) {
