@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -90,45 +89,34 @@ TEST(WorkBudget, BudgetsBelongToOneCall) {
   EXPECT_FALSE(fresh.exceeded());
 }
 
-TEST(WorkBudget, FuzzedNestedRootsStayWithinTheBudgetAndKeepTheirValue) {
-  // Inputs that took 1 to 17 s (fuzz/corpus/fuzz_expression/slow-*): the value survives.
-  for (int i = 1; i <= 6; ++i) {
-    std::ifstream in(
-        test::source_path("fuzz/corpus/fuzz_expression/slow-nested-roots-" + std::to_string(i)));
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    ASSERT_FALSE(text.empty()) << i;
-    const ExpressionResult r = parse_expression(text);
-    if (!r) continue;  // refused by the parser's own limits
-    WorkBudget budget;
-    const ex c = canonical(*r.value, budget);
-    EXPECT_LE(budget.used(), budget.limit()) << text;
-    const double before = to_double(*r.value), after = to_double(c);
-    EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << text;
-  }
+// canonical(original) as `c` kept the value (to within 10⁻⁹, relative).
+void expect_same_value(const ex& original, const ex& c, const std::string& what) {
+  const double before = to_double(original), after = to_double(c);
+  EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << what;
 }
 
-TEST(WorkBudget, FuzzedSlowInputsKeepTheirValueInAFormThatIsCheapToEvaluate) {
-  // Every input the fuzzer found slow (fuzz/corpus/fuzz_expression/slow-*, timeout-*): the
-  // canonical form keeps the value and stays a small tree, so evaluating it stays cheap. One of
-  // them, nested fractions over sums with π and roots, once came back from canonical() as a
-  // tree of 1.2 million nodes (its normal() underpriced 17 times, its expand() repeating the
-  // common denominator under each of 488 terms), and evaluating it took longer than the
-  // canonical form itself.
+TEST(WorkBudget, FuzzedSlowInputsStayWithinTheBudgetKeepTheirValueAndStaySmall) {
+  // Every input the fuzzer found slow (fuzz/corpus/fuzz_expression/slow-*, timeout-*; nested
+  // roots took 1 to 17 s): the canonical form is reached within the budget, keeps the value
+  // and stays a small tree, so evaluating it stays cheap. One of them, nested fractions over
+  // sums with π and roots, once came back as a tree of 1.2 million nodes (its normal()
+  // underpriced 17 times, its expand() repeating the common denominator under each of 488
+  // terms), and evaluating it took longer than the canonical form itself.
   int checked = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(test::source_path("fuzz/corpus/fuzz_expression"))) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("slow-", 0) != 0 && name.rfind("timeout-", 0) != 0) continue;
-    std::ifstream in(entry.path());
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text = test::read_file(entry.path());
+    ASSERT_FALSE(text.empty()) << name;
     const ExpressionResult r = parse_expression(text);
     if (!r) continue;  // refused by the parser's own limits
     ++checked;
     WorkBudget budget;
     const ex c = canonical(*r.value, budget);
+    EXPECT_LE(budget.used(), budget.limit()) << name;
     EXPECT_LE(tree_nodes(c), kMaxExactNodes) << name;
-    const double before = to_double(*r.value), after = to_double(c);
-    EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << name;
+    expect_same_value(*r.value, c, name);
   }
   EXPECT_GE(checked, 10);
 }
@@ -182,8 +170,7 @@ TEST(WorkBudget, RandomNestedFractionsKeepTheirValueInASmallTree) {
     EXPECT_LE(budget.used(), budget.limit()) << text;
     EXPECT_LE(tree_nodes(c), kMaxExactNodes) << text;
     ASSERT_TRUE(is_real_constant(c)) << text;
-    const double before = to_double(*r.value), after = to_double(c);
-    EXPECT_NEAR(after, before, 1e-9 * std::max(1.0, std::abs(before))) << text;
+    expect_same_value(*r.value, c, text);
   }
   EXPECT_GE(parsed, 40);
   EXPECT_GT(exceeded, 0);  // the draw reaches the budget, so the property is tested there too
@@ -204,7 +191,8 @@ TEST(WorkBudget, NormalisingIsPricedByItsCommonDenominator) {
 }
 
 TEST(WorkBudget, TreeNodesCountSharedSubexpressionsWhereverTheyOccur) {
-  const ex d = value_of("1+sqrt(2)+sqrt(3)");  // 1 + 2·(power, 2 numbers) = 1 + 1 + 2·3 = 8
+  // The sum, the 1, and two powers of a base and an exponent each: 1 + 1 + 2·3 = 8.
+  const ex d = value_of("1+sqrt(2)+sqrt(3)");
   EXPECT_DOUBLE_EQ(tree_nodes(d), 8);
   const ex twice = GiNaC::pow(d, -1) + 2 * GiNaC::pow(d, -1) * GiNaC::symbol("x");
   EXPECT_GT(tree_nodes(twice), 2 * tree_nodes(d));

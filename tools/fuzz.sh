@@ -69,7 +69,8 @@ for t in "${targets[@]}"; do
   log="build-fuzz/$t.log"
   touch "$log.start"
   if ! "build-fuzz/fuzz/$t" "build-fuzz/corpus/$t" "fuzz/corpus/$t" "${extra[@]}" \
-        -max_total_time="$seconds" -timeout="$timeout" -report_slow_units=$((timeout / 2)) -rss_limit_mb=2048 -max_len=262144 \
+        -max_total_time="$seconds" -timeout="$timeout" -report_slow_units=$((timeout / 2)) \
+        -rss_limit_mb=2048 -max_len=262144 \
         -print_final_stats=1 -artifact_prefix="build-fuzz/artifacts/$t-" "${seed_arg[@]}" >"$log" 2>&1; then
     echo "fuzz: $t FAILED (see $log and build-fuzz/artifacts/)"
     grep -E "^==[0-9]+==ERROR|^SUMMARY|ALARM|Test unit written" "$log" | head -5 || true
@@ -80,8 +81,9 @@ for t in "${targets[@]}"; do
   # Findings are crashes, leaks, out-of-memory and timeouts; a slow unit (over half the limit)
   # is only counted. A timeout is re-run alone: on a starved machine an input can pass
   # the limit without hanging, and the row says how long it took by itself.
-  findings=$(find build-fuzz/artifacts -newer "$log.start" \( -name "$t-crash-*" -o -name "$t-leak-*" \
-             -o -name "$t-oom-*" -o -name "$t-timeout-*" \) 2>/dev/null | wc -l)
+  found=$(find build-fuzz/artifacts -newer "$log.start" \( -name "$t-crash-*" -o -name "$t-leak-*" \
+          -o -name "$t-oom-*" -o -name "$t-timeout-*" \) 2>/dev/null)
+  findings=$(printf '%s' "$found" | grep -c . || true)
   slow=$(find build-fuzz/artifacts -newer "$log.start" -name "$t-slow-unit-*" 2>/dev/null | wc -l)
   alone=""
   while IFS= read -r unit; do
@@ -95,9 +97,9 @@ for t in "${targets[@]}"; do
   done < <(find build-fuzz/artifacts -newer "$log.start" -name "$t-timeout-*" 2>/dev/null)
   # Each finding on the console as base64 (its first 3000 bytes): CI keeps only its log.
   while IFS= read -r unit; do
+    [ -n "$unit" ] || continue
     echo "fuzz: $t finding $(basename "$unit") ($(wc -c < "$unit") bytes, base64): $(head -c 3000 "$unit" | base64 -w0)"
-  done < <(find build-fuzz/artifacts -newer "$log.start" \( -name "$t-crash-*" -o -name "$t-leak-*" \
-             -o -name "$t-oom-*" -o -name "$t-timeout-*" \) 2>/dev/null)
+  done <<< "$found"
   [ -n "$alone" ] && echo "fuzz: $t timeouts re-run alone: ${alone%; }"
   [ "$slow" -gt 0 ] && findings+=" (and $slow slow units)"
   [ -n "$alone" ] && findings+=" (timeouts re-run alone: ${alone%; })"
