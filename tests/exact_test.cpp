@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "solver/core/rational_power.hpp"
 #include "solver/core/work_budget.hpp"
 #include "solver/util/expression.hpp"
 
@@ -199,6 +200,56 @@ TEST(Exact, CanonicalSquareRootsOfRationalsSquareBack) {
       EXPECT_TRUE(is_square_free(d.to_long())) << c;
     }
   }
+}
+
+// Square parts of radicands whose prime factors are large: trial division stops at the cube
+// root, and what is left (a prime, a product of two primes or a prime's square) is told apart.
+TEST(Exact, SquareRootsOfProductsOfLargePrimes) {
+  const long p = 99991, q = 99989, r = 1009, t = 1013, u = 1019;  // primes
+  struct Case {
+    long radicand, coefficient, rest;  // √radicand = coefficient·√rest
+  };
+  for (const Case& c :
+       {Case{p * p, p, 1}, Case{p * q, 1, p * q}, Case{2 * p * p, p, 2},
+        Case{r * t * u, 1, r * t * u}, Case{r * r * t, r, t}, Case{r * t * t * u, t, r * u},
+        Case{8 * q * q, 2 * q, 2}, Case{r * r * r * r, r * r, 1}, Case{97 * 97 * 89, 97, 89}}) {
+    const ex got = canonical(sqrt_of(c.radicand));
+    const ex expected = c.rest == 1 ? ex(c.coefficient) : c.coefficient * sqrt_of(c.rest);
+    EXPECT_TRUE(got.is_equal(expected)) << c.radicand << " -> " << got;
+    // The same through the passes, which split the radicand by a different route.
+    WorkBudget budget;
+    EXPECT_TRUE(canonical(2 * sqrt_of(c.radicand) - sqrt_of(c.radicand), budget).is_equal(expected))
+        << c.radicand;
+  }
+  // Cube roots: a prime's square left after trial division is no cube.
+  EXPECT_TRUE(canonical(root(p * p, 3)).is_equal(root(p * p, 3)));
+  EXPECT_TRUE(canonical(root(8L * r * r, 3)).is_equal(2 * root(r * r, 3)));
+}
+
+// rational_power reads c·k^q out of a product as GiNaC stores it, and nothing else.
+TEST(Exact, RationalPowerReadsTheStoredFactor) {
+  RationalPower parts;
+  ASSERT_TRUE(rational_power(ex(numeric(-3, 7)) * sqrt_of(5), parts));
+  EXPECT_EQ(parts.c, numeric(-3, 7));
+  EXPECT_EQ(parts.base, numeric(5));
+  EXPECT_EQ(parts.exponent, numeric(1, 2));
+  ASSERT_TRUE(rational_power(root(6, 3), parts));
+  EXPECT_EQ(parts.c, numeric(1));
+  EXPECT_EQ(parts.base, numeric(6));
+  EXPECT_EQ(parts.exponent, numeric(1, 3));
+  ASSERT_TRUE(rational_power(2 / sqrt_of(3), parts));  // GiNaC holds it as 2/3·√3
+  EXPECT_EQ(parts.c, numeric(2, 3));
+  EXPECT_EQ(parts.base, numeric(3));
+  EXPECT_EQ(parts.exponent, numeric(1, 2));
+  ASSERT_TRUE(rational_power(ex(5) * GiNaC::sqrt(ex(numeric(2, 3))), parts));
+  EXPECT_TRUE(
+      (parts.c * parts.base.power(parts.exponent) - numeric(5) * numeric(2, 3).power(numeric(1, 2)))
+          .is_zero());
+  const GiNaC::symbol x("x");
+  for (const ex& e :
+       {ex(numeric(1, 2)), sqrt_of(2) + 1, sqrt_of(2) * sqrt_of(3), 3 * x, GiNaC::sqrt(ex(x)),
+        2 * GiNaC::Pi, sqrt_of(2) * GiNaC::Pi, ex(numeric(1, 3)) * GiNaC::sqrt(sqrt_of(2) + 1)})
+    EXPECT_FALSE(rational_power(e, parts)) << e;
 }
 
 TEST(Exact, CanonicalCubeRootsOfRationalsCubeBack) {

@@ -5,6 +5,7 @@
 #include <cln/rational.h>
 #include <cln/real.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -15,6 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "solver/core/rational_power.hpp"
 #include "solver/core/work_budget.hpp"
 
 namespace frustum {
@@ -83,8 +85,9 @@ RootSplit split_root(const cln::cl_I& m, unsigned index) {
   std::uint64_t n = cln::cl_I_to_UQ(m);
   cln::cl_I coeff = 1;
   cln::cl_I radicand = 1;
+  // Trial division up to the cube root: what is left then has at most two prime factors.
   std::uint64_t p = 2;
-  for (; p <= kTrialLimit && p * p <= n; p += (p == 2 ? 1 : 2)) {
+  for (; p <= kTrialLimit && p * p * p <= n; p += (p == 2 ? 1 : 2)) {
     unsigned count = 0;
     while (n % p == 0) {
       n /= p;
@@ -95,11 +98,11 @@ RootSplit split_root(const cln::cl_I& m, unsigned index) {
     radicand *= int_power(cln::cl_I(p), count % index);
   }
   if (n > 1) {
-    // Either n is prime (p^2 > n) or n < 10^15 has only prime factors > 10^5, so it is
+    // Every prime factor of n is at least p, and p^3 > n (or p > 10^5 and n < 10^15), so n is
     // q, q*r or q^2: only a square can still be taken out.
     cln::cl_I rest(n);
     cln::cl_I root;
-    if (p * p <= n && index == 2 && cln::sqrtp(rest, &root)) {
+    if (index == 2 && cln::sqrtp(rest, &root)) {
       coeff *= root;
     } else {
       radicand *= rest;
@@ -246,16 +249,11 @@ struct SimplifyRadicals : GiNaC::map_function {
 };
 
 // c·k^(p/q) with c ≠ 0 and k > 0 rational (a unit vector's component, a length; c = 1 for a
-// root alone): a real constant whose sign is c's. `root` (when given) is set to k^(p/q).
-bool rational_times_root(const ex& e, numeric& c, ex* root = nullptr) {
-  const bool product = is_a<GiNaC::mul>(e) && e.nops() == 2 && is_a<numeric>(e.op(1)) &&
-                       ex_to<numeric>(e.op(1)).is_rational();
-  const ex r = product ? e.op(0) : e;
-  if (!is_a<GiNaC::power>(r) || !is_positive_rational(r.op(0)) || !is_a<numeric>(r.op(1)) ||
-      !ex_to<numeric>(r.op(1)).is_rational())
-    return false;
-  c = product ? ex_to<numeric>(e.op(1)) : numeric(1);
-  if (root) *root = r;
+// root alone): a real constant whose sign is c's.
+bool rational_times_root(const ex& e, numeric& c) {
+  RationalPower parts;
+  if (!rational_power(e, parts)) return false;
+  c = parts.c;
   return true;
 }
 
@@ -512,21 +510,13 @@ bool simplify_pass(ex& current, WorkBudget& budget) {
 // for k = s²·r. canonical(e, budget) reaches the same value by its passes (exact_test compares
 // the two); false for any other shape.
 bool canonical_simple_root(const ex& e, ex& out) {
-  numeric c = 1;
-  ex root = e;
-  if (is_a<GiNaC::mul>(e)) {
-    if (e.nops() != 2 || !is_a<numeric>(e.op(1))) return false;
-    c = ex_to<numeric>(e.op(1));
-    root = e.op(0);
-    if (!c.is_rational()) return false;
-  }
-  if (!is_a<GiNaC::power>(root) || !is_a<numeric>(root.op(0)) || !is_a<numeric>(root.op(1)))
-    return false;
-  const numeric& k = ex_to<numeric>(root.op(0));
-  const numeric& exponent = ex_to<numeric>(root.op(1));
-  const bool inverse = exponent.is_equal(numeric(-1, 2));
-  if (!(inverse || exponent.is_equal(numeric(1, 2))) || !k.is_pos_integer() ||
-      k >= numeric(static_cast<long>(kFactorLimit)))
+  RationalPower parts;
+  if (!rational_power(e, parts)) return false;
+  const numeric& c = parts.c;
+  const numeric& k = parts.base;
+  const int root_sign = square_root_sign(parts.exponent);
+  const bool inverse = root_sign < 0;
+  if (root_sign == 0 || !k.is_pos_integer() || k >= numeric(static_cast<long>(kFactorLimit)))
     return false;
   const RootSplit split = split_root(to_cl_i(k), 2);
   // c·√k with k square-free is already canonical: e itself, not built again.
@@ -593,8 +583,13 @@ bool rational_times_square_root(const Exact& e, numeric& c, Exact& root) {
     root = 1;
     return true;
   }
-  return rational_times_root(e, c, &root) && ex_to<numeric>(root.op(0)).is_pos_integer() &&
-         root.op(1).is_equal(numeric(1, 2));
+  RationalPower parts;
+  if (!rational_power(e, parts) || !parts.base.is_pos_integer() ||
+      square_root_sign(parts.exponent) != 1)
+    return false;
+  c = parts.c;
+  root = is_a<GiNaC::power>(e) ? e : GiNaC::pow(ex(parts.base), ex(parts.exponent));
+  return true;
 }
 
 bool is_real_constant(const Exact& e) {
@@ -614,11 +609,39 @@ namespace {
 // c·root with root = k^(±1/2), c and k = a/b rational (a unit vector's component, a length), to
 // within a relative 2⁻¹²⁸, as a rational: √k = √(ab)/b and √(ab) = ⌊√(ab·4^m)⌋/2^m with ab·4^m ≥
 // 2²⁵⁶. The same accuracy as the evaluation to 40 digits below, without evaluating a tree.
-bool square_root_multiple(const ex& root, const numeric& c, numeric& value) {
-  const numeric& exponent = ex_to<numeric>(root.op(1));
-  const bool inverse = exponent.is_equal(numeric(-1, 2));
-  if (!inverse && !exponent.is_equal(numeric(1, 2))) return false;
-  const numeric& k = ex_to<numeric>(root.op(0));
+// num/den (den > 0) rounded to the nearest double (ties to even) when that is a normal
+// double, without reducing the fraction: a quotient of 55 or 56 bits, its last bit set when
+// the division leaves a remainder, so that the one rounding to 53 bits is the right one.
+bool quotient_to_double(const cln::cl_I& num, const cln::cl_I& den, double& out) {
+  if (cln::zerop(num)) {
+    out = 0;
+    return true;
+  }
+  const cln::cl_I magnitude = cln::abs(num);
+  const long shift = 55 - (static_cast<long>(cln::integer_length(magnitude)) -
+                           static_cast<long>(cln::integer_length(den)));
+  const cln::cl_I scaled_num = shift > 0 ? magnitude << shift : magnitude;
+  const cln::cl_I scaled_den = shift < 0 ? den << -shift : den;
+  const cln::cl_I_div_t division = cln::floor2(scaled_num, scaled_den);
+  std::uint64_t q = cln::cl_I_to_UQ(division.quotient);
+  if (!cln::zerop(division.remainder)) q |= 1;
+  // 2^54 <= q < 2^57 and the quotient is q·2^-shift: normal when its exponent is above -1022.
+  if (64 - std::countl_zero(q) - 1 - shift < -1021) return false;
+  const double rounded = std::ldexp(static_cast<double>(q), static_cast<int>(-shift));
+  if (!std::isfinite(rounded)) return false;
+  out = cln::minusp(num) ? -rounded : rounded;
+  return true;
+}
+
+// c·root with root = k^(±1/2), c and k = a/b rational (a unit vector's component, a length), to
+// within a relative 2⁻¹²⁸, as the quotient of two integers: √k = √(ab)/b and √(ab) =
+// ⌊√(ab·4^m)⌋/2^m with ab·4^m ≥ 2²⁵⁶. The same accuracy as the evaluation to 40 digits below,
+// without evaluating a tree.
+bool square_root_multiple(const RationalPower& e, cln::cl_I& num, cln::cl_I& den) {
+  const int root_sign = square_root_sign(e.exponent);
+  const bool inverse = root_sign < 0;
+  if (root_sign == 0) return false;
+  const numeric& k = e.base;
   const cln::cl_I a = to_cl_i(k.numer()), b = to_cl_i(k.denom());
   const cln::cl_I n = a * b;
   const std::uintptr_t bits = cln::integer_length(n);
@@ -626,8 +649,8 @@ bool square_root_multiple(const ex& root, const numeric& c, numeric& value) {
   const std::uintptr_t m = bits >= 256 ? 0 : (256 - bits + 1) / 2;
   cln::cl_I r;
   cln::isqrt(n << (2 * m), &r);
-  const cln::cl_I den = (inverse ? a : b) << m;
-  value = c * numeric(cln::cl_N(r)) / numeric(cln::cl_N(den));
+  num = to_cl_i(e.c.numer()) * r;
+  den = to_cl_i(e.c.denom()) * ((inverse ? a : b) << m);
   return true;
 }
 
@@ -638,11 +661,12 @@ double to_double(const Exact& e) {
   // the double is the nearest one.
   if (is_a<numeric>(e) && ex_to<numeric>(e).is_real() && ex_to<numeric>(e).is_rational())
     return rational_to_double(ex_to<numeric>(e));
-  numeric c;
-  ex root;
-  const bool multiple = rational_times_root(e, c, &root);
-  if (numeric value; multiple && square_root_multiple(root, c, value))
-    return rational_to_double(value);
+  RationalPower parts;
+  const bool multiple = rational_power(e, parts);
+  if (cln::cl_I num, den; multiple && square_root_multiple(parts, num, den)) {
+    if (double value; quotient_to_double(num, den, value)) return value;
+    return rational_to_double(numeric(cln::cl_N(num)) / numeric(cln::cl_N(den)));
+  }
   if (!multiple && !is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
   try {
     const DigitsGuard guard(40);

@@ -139,27 +139,50 @@ YAML::Node string_node(const std::string& s) {
   return n;
 }
 
-std::string emit_flow(const YAML::Node& n) {
+namespace {
+
+// emit_flow's text appended to `out`: children are visited by iterator (indexing a yaml-cpp
+// node by position builds a new node handle each time) and written in place.
+void append_flow(const YAML::Node& n, std::string& out) {
   switch (n.Type()) {
     case YAML::NodeType::Scalar:
-      return emit_scalar(n.Scalar(), n.Tag() == "!");
+      out += emit_scalar(n.Scalar(), n.Tag() == "!");
+      return;
     case YAML::NodeType::Sequence: {
-      std::string out = "[";
-      for (std::size_t i = 0; i < n.size(); ++i) out += (i ? ", " : "") + emit_flow(n[i]);
-      return out + "]";
-    }
-    case YAML::NodeType::Map: {
-      std::string out = "{";
+      out += '[';
       bool first = true;
-      for (auto it = n.begin(); it != n.end(); ++it) {
-        out += (first ? "" : ", ") + emit_flow(it->first) + ": " + emit_flow(it->second);
+      for (const YAML::Node& item : n) {
+        if (!first) out += ", ";
+        append_flow(item, out);
         first = false;
       }
-      return out + "}";
+      out += ']';
+      return;
+    }
+    case YAML::NodeType::Map: {
+      out += '{';
+      bool first = true;
+      for (auto it = n.begin(); it != n.end(); ++it) {
+        if (!first) out += ", ";
+        append_flow(it->first, out);
+        out += ": ";
+        append_flow(it->second, out);
+        first = false;
+      }
+      out += '}';
+      return;
     }
     default:
-      return "null";
+      out += "null";
   }
+}
+
+}  // namespace
+
+std::string emit_flow(const YAML::Node& n) {
+  std::string out;
+  append_flow(n, out);
+  return out;
 }
 
 }  // namespace frustum

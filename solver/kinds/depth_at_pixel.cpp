@@ -4,6 +4,7 @@
 // and the pixel (1, 1) has z = 8.
 #include <algorithm>
 
+#include "solver/core/exact_vector.hpp"
 #include "solver/geometry/plane_depth.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/input/given_reader.hpp"
@@ -157,7 +158,7 @@ struct DepthAtPixel {
   // The plane through A with normal n, as written on paper, and z at the pixel (nullopt when
   // the plane is edge-on).
   static std::array<Exact, 4> plane_through_a(const Given& g, const Vec3<Exact>& n) {
-    return paper_plane(n, canonical(n.dot(g.triangle[0])));
+    return paper_plane(n, canonical_dot(n, g.triangle[0]));
   }
   static std::optional<Exact> z_on(const Given& g, const std::vector<Exact>& plane) {
     if (canonical(plane[2]).is_zero()) return std::nullopt;
@@ -211,7 +212,7 @@ struct DepthAtPixel {
     out.push_back({"plane through the origin",
                    "Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
                    "Plane through A with normal n̂", origin});
-    if (auto m = constant_sign_mistake(u, canonical(u.dot(g.triangle[0])), "A",
+    if (auto m = constant_sign_mistake(u, canonical_dot(u, g.triangle[0]), "A",
                                        "Plane through A with normal n̂")) {
       const Value* plane = m->answers.find("plane");
       if (const auto z = z_on(g, plane->exact)) m->answers.set("z", Value::scalar(*z));
@@ -259,7 +260,7 @@ struct DepthAtPixel {
     PlaneDepth<Exact> r;
     r.normal = n;
     r.unit_normal = unit(n);  // plane_through's n/‖n‖, in canonical form
-    r.d = canonical(r.unit_normal.dot(A));
+    r.d = canonical_dot(r.unit_normal, A);
     const Vec3<Exact>& u = r.unit_normal;
     record_unit_normal(n, u, steps);
     out.set("unit_normal", Value::vector(u));

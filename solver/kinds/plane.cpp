@@ -1,5 +1,6 @@
 // The plane through three or more points, or through a point with a normal (seed 001:
 // n·(r − r₀) = 0 → ax + by + cz = d; the distance from the origin is |d| / ‖n‖).
+#include "solver/core/exact_vector.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -111,7 +112,7 @@ struct Plane {
     if (const auto n = carried(student, "normal", 3)) {
       const Vec3<Exact> v((*n)[0], (*n)[1], (*n)[2]);
       out.set("unit_normal", Value::vector(unit(v)));
-      const std::array<Exact, 4> p = paper_plane(v, canonical(v.dot(p0)));
+      const std::array<Exact, 4> p = paper_plane(v, canonical_dot(v, p0));
       out.set("plane", Value::vector(std::vector<Exact>(p.begin(), p.end())));
       plane = std::vector<Exact>(p.begin(), p.end());
     }
@@ -132,7 +133,7 @@ struct Plane {
         g.points.empty() ? g.normal
                          : polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
     const auto m =
-        constant_sign_mistake(n, canonical(n.dot(p0)), "p₀", "Plane through p₀ with normal n");
+        constant_sign_mistake(n, canonical_dot(n, p0), "p₀", "Plane through p₀ with normal n");
     return m ? std::vector<Misconception>{*m} : std::vector<Misconception>{};
   }
 
@@ -153,7 +154,7 @@ struct Plane {
     out.set("normal", Value::vector(n));
     out.set("unit_normal", Value::vector(unit_normal_with_steps(n, steps)));
     const Exact len = canonical(norm(n));
-    const Exact d = canonical(n.dot(p0));
+    const Exact d = canonical_dot(n, p0);
     const Value pv = plane_answer(paper_plane(n, d));
     out.set("plane", pv);
     if (steps) {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <optional>
 
+#include "solver/core/exact_vector.hpp"
+#include "solver/core/rational_power.hpp"
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/numeric/condition.hpp"
@@ -63,7 +65,7 @@ std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const E
 }
 
 Vec3<Exact> unit(const Vec3<Exact>& n) {
-  const Exact len = canonical(norm(n));
+  const Exact len = canonical_norm(n);
   Vec3<Exact> u;
   // A rational vector's length, canonical, is c·√r (c rational, r a square-free integer) or
   // rational: then nᵢ/‖n‖ = nᵢ/(c·r)·√r, the canonical form itself, with the one √r reused
@@ -193,21 +195,26 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
 
 namespace {
 
+// R = k^p (k > 0 and p rational), or 1 (k = p = 1).
+struct Radical {
+  GiNaC::numeric base = 1, exponent = 1;
+  bool operator==(const Radical& o) const {
+    return base.is_equal(o.base) && exponent.is_equal(o.exponent);
+  }
+};
+
 // x = q·R with q rational and R = 1 or a power of a positive rational (√3, as the components of
 // a unit normal n/‖n‖ and d = n̂·A are once canonical): q and R.
-bool rational_multiple(const Exact& x, GiNaC::numeric& q, Exact& root) {
+bool rational_multiple(const Exact& x, GiNaC::numeric& q, Radical& root) {
   if (is_rational(x)) {
     q = GiNaC::ex_to<GiNaC::numeric>(x);
-    root = 1;
+    root = {};
     return true;
   }
-  const bool product = GiNaC::is_a<GiNaC::mul>(x) && x.nops() == 2 && is_rational(x.op(1));
-  const Exact& r = product ? x.op(0) : x;
-  if (!GiNaC::is_a<GiNaC::power>(r) || !is_rational(r.op(0)) || !is_rational(r.op(1)) ||
-      !GiNaC::ex_to<GiNaC::numeric>(r.op(0)).is_positive())
-    return false;
-  q = product ? GiNaC::ex_to<GiNaC::numeric>(x.op(1)) : GiNaC::numeric(1);
-  root = r;
+  RationalPower parts;
+  if (!rational_power(x, parts)) return false;
+  q = parts.c;
+  root = {parts.base, parts.exponent};
   return true;
 }
 
@@ -220,14 +227,14 @@ std::optional<std::array<Exact, 4>> rational_ratios(const std::array<Exact, 4>& 
   std::array<Exact, 4> r;
   if (!by_quotients) {
     std::array<GiNaC::numeric, 4> q;
-    std::optional<Exact> common;
+    std::optional<Radical> common;
     bool shared = true;
     for (int i = 0; i < 4 && shared; ++i) {
-      Exact root;
+      Radical root;
       shared = rational_multiple(c[i], q[i], root);
       if (shared && !q[i].is_zero()) {
         if (!common) common = root;
-        shared = common->is_equal(root);
+        shared = *common == root;
       }
     }
     if (shared) {

@@ -1,0 +1,24 @@
+// c·k^q with c, k and q rational, k > 0 and q not an integer: the shape of a unit vector's
+// component, a length, a square root. GiNaC's product reads its stored factor k^q back
+// (mul::op) by building a new power and evaluating it again, which tests k for an exact root on
+// every read; rational_power reads the factor as the product stores it.
+#pragma once
+
+#include <ginac/ginac.h>
+
+namespace frustum {
+
+struct RationalPower {
+  GiNaC::numeric c;         // the rational coefficient (1 for a power alone)
+  GiNaC::numeric base;      // k > 0
+  GiNaC::numeric exponent;  // q
+};
+
+// e as c·k^q (a power alone, or a product of exactly one such power and a rational), else
+// false. e is evaluated, as every GiNaC expression is once built.
+bool rational_power(const GiNaC::ex& e, RationalPower& out);
+
+// +1 when q = 1/2, -1 when q = -1/2, else 0 (read off q without building either number).
+int square_root_sign(const GiNaC::numeric& q);
+
+}  // namespace frustum
