@@ -6,10 +6,12 @@
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -48,29 +50,48 @@ constexpr const char* kStateDir = ".frustum";
 
 namespace {
 
-// Writes `content` to a fresh temporary file beside `path` (mode 0644, synced when `sync`);
-// returns its name. Nothing is left behind on failure.
+// Creates a fresh file `pattern` + a suffix, exclusively, with mode 0644 (less what the umask
+// takes away, as for any file a program writes): the suffix mixes the process, the clock and the
+// attempt, and a name already taken is passed over. No permissions are set afterwards.
+int create_temporary(const std::string& pattern, std::string& name) {
+  constexpr int kAttempts = 100;
+  const std::uint64_t process = static_cast<std::uint64_t>(::getpid());
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    timespec now{};
+    ::clock_gettime(CLOCK_MONOTONIC, &now);
+    std::uint64_t mix = (process << 40) ^ static_cast<std::uint64_t>(now.tv_nsec) ^
+                        (static_cast<std::uint64_t>(now.tv_sec) << 30) ^
+                        (static_cast<std::uint64_t>(attempt) * 0x9e3779b97f4a7c15ULL);
+    mix ^= mix >> 29;
+    name = pattern + fmt::format("{:012x}", mix & 0xffffffffffffULL);
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+  errno = EEXIST;
+  return -1;
+}
+
+// Writes `content` to a fresh temporary file beside `path` (synced when `sync`); returns its
+// name. Nothing is left behind on failure.
 std::string write_temporary(const std::string& path, const std::string& content, bool sync) {
   const fs::path target(path);
   const std::string pattern =
       (target.has_parent_path() ? target.parent_path() / ("." + target.filename().string())
                                 : fs::path("." + target.filename().string()))
           .string() +
-      ".XXXXXX";
-  std::string tmp = pattern;
-  int fd = mkstemp(tmp.data());
+      ".";
+  std::string tmp;
+  int fd = create_temporary(pattern, tmp);
   if (fd < 0 && errno == ENOENT && target.has_parent_path()) {
     // The directory is made when it is missing, not looked up before every file.
     std::error_code ec;
     fs::create_directories(target.parent_path(), ec);
     if (ec) throw std::runtime_error(path + ": cannot create its directory: " + ec.message());
-    tmp = pattern;
-    fd = mkstemp(tmp.data());
+    fd = create_temporary(pattern, tmp);
   }
   if (fd < 0) fail(path, "cannot create a temporary file");
   try {
     write_all(fd, content, path);
-    if (fchmod(fd, 0644) != 0) fail(path, "cannot set permissions");
     if (sync && fsync(fd) != 0) fail(path, "cannot flush");
   } catch (...) {
     ::close(fd);
@@ -167,15 +188,67 @@ bool read_text(int fd, std::string& text) {
 
 }  // namespace
 
+namespace {
+
+// The committer's end of the socket, read in large blocks: a group of 8,192 files arrives as
+// one message, which unbuffered reads would take in four system calls per file.
+class BufferedReader {
+ public:
+  explicit BufferedReader(int fd) : fd_(fd) {}
+
+  bool read_exact(char* data, std::size_t size) {
+    while (size > 0) {
+      if (at_ == buffer_.size() && !fill()) return false;
+      const std::size_t n = std::min(size, buffer_.size() - at_);
+      std::memcpy(data, buffer_.data() + at_, n);
+      at_ += n;
+      data += n;
+      size -= n;
+    }
+    return true;
+  }
+
+  bool read_length(std::uint64_t& n) { return read_exact(reinterpret_cast<char*>(&n), sizeof n); }
+
+  bool read_text(std::string& text) {
+    std::uint64_t n = 0;
+    if (!read_length(n) || n > (std::uint64_t(1) << 32)) return false;
+    text.resize(n);
+    return read_exact(text.data(), n);
+  }
+
+ private:
+  static constexpr std::size_t kBlock = 1 << 16;
+
+  bool fill() {
+    buffer_.resize(kBlock);
+    for (;;) {
+      const ssize_t n = ::read(fd_, buffer_.data(), kBlock);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return false;
+      buffer_.resize(static_cast<std::size_t>(n));
+      at_ = 0;
+      return true;
+    }
+  }
+
+  int fd_;
+  std::string buffer_;
+  std::size_t at_ = 0;
+};
+
+}  // namespace
+
 void FileBatch::serve_commits(int fd) {
   // A group: its count, then each file's temporary name and target. A count of 0 ends the
   // child, as does the end of the stream (this process gone).
+  BufferedReader in(fd);
   for (;;) {
     std::uint64_t count = 0;
-    if (!read_length(fd, count) || count == 0) ::_exit(0);
+    if (!in.read_length(count) || count == 0) ::_exit(0);
     std::vector<Pending> group(count);
     for (Pending& p : group)
-      if (!read_text(fd, p.temporary) || !read_text(fd, p.target)) ::_exit(0);
+      if (!in.read_text(p.temporary) || !in.read_text(p.target)) ::_exit(0);
     std::string message;
     try {
       commit_pending(group);

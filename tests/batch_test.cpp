@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <sys/single_threaded.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -118,6 +119,50 @@ TEST(FileBatch, AGroupCommittedInTheBackgroundIsInPlaceOnceWaitedFor) {
   for (int i = 0; i < 50; ++i)
     EXPECT_EQ(test::read_file(dir / "b" / fmt::format("f{}.txt", i)), fmt::format("second {}", i));
   EXPECT_TRUE(hidden_files(dir).empty());
+  fs::remove_all(dir);
+}
+
+// Groups larger than the committer's read block (names of every length up to 200 bytes, so
+// that messages split anywhere) arrive whole, one group after another.
+TEST(FileBatch, LargeGroupsThroughTheCommitterArriveWhole) {
+  const fs::path dir = scratch("large-groups");
+  FileBatch files;
+  files.start_committer();
+  std::vector<fs::path> written;
+  for (int group = 0; group < 3; ++group) {
+    for (int i = 0; i < 1500; ++i) {
+      const fs::path path = dir / fmt::format("g{}-{}-{}.txt", group, i,
+                                              std::string(static_cast<std::size_t>(i % 190), 'x'));
+      files.stage(path.string(), fmt::format("{} {}", group, i));
+      written.push_back(path);
+    }
+    files.commit_in_background();
+    files.wait_commit();
+  }
+  for (std::size_t k = 0; k < written.size(); ++k)
+    EXPECT_EQ(test::read_file(written[k]), fmt::format("{} {}", k / 1500, k % 1500)) << written[k];
+  EXPECT_TRUE(hidden_files(dir).empty());
+  fs::remove_all(dir);
+}
+
+// Written files are readable by everyone unless the umask says otherwise, as any file a program
+// creates: 0644 less the umask.
+TEST(FileBatch, FilesTakeTheUsualModeLessTheUmask) {
+  const fs::path dir = scratch("modes");
+  for (const mode_t mask : {mode_t{022}, mode_t{027}, mode_t{077}}) {
+    const mode_t saved = ::umask(mask);
+    const fs::path path = dir / fmt::format("m{:o}.txt", mask);
+    FileBatch files;
+    files.stage(path.string(), "x");
+    files.commit();
+    write_file_atomically((dir / fmt::format("w{:o}.txt", mask)).string(), "y");
+    ::umask(saved);
+    for (const fs::path& p : {path, dir / fmt::format("w{:o}.txt", mask)}) {
+      struct stat st {};
+      ASSERT_EQ(::stat(p.c_str(), &st), 0) << p;
+      EXPECT_EQ(st.st_mode & 0777, 0644 & ~mask) << p;
+    }
+  }
   fs::remove_all(dir);
 }
 

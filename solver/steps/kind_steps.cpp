@@ -320,7 +320,7 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
   const Vec3<Exact> u = named_edge(order.first, abc), v = named_edge(order.second, abc);
   Vec3<Exact> n = cross_order_normal<Exact>(abc, cross_indices(order));
   for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
-  if (canonical(n.dot(n)).is_zero())
+  if (canonical_dot(n, n).is_zero())
     throw DomainError(field, "the points are collinear (" + order.first + " × " + order.second +
                                  " = 0): the triangle has no normal");
   if (steps) {
