@@ -418,25 +418,26 @@ std::vector<ProblemSet> variants_from_seed(const ProblemSet& set, std::uint64_t 
 
 YAML::Node answer_node(const Value& v) {
   auto number = [&](std::size_t i) {
-    return YAML::Node(i < v.exact.size() ? format_exact(canonical(v.exact[i]), MathStyle::Plain)
-                                         : format_double(v.numbers[i]));
+    return i < v.exact.size() ? format_exact(canonical(v.exact[i]), MathStyle::Plain)
+                              : format_double(v.numbers[i]);
   };
+  // Items are made in place in their list's memory (a node pushed is merged into it).
   YAML::Node n;
   switch (v.shape) {
     case Value::Shape::Null:
       return YAML::Node("none");
     case Value::Shape::Scalar:
-      return number(0);
+      return YAML::Node(number(0));
     case Value::Shape::Vector:
       n = YAML::Node(YAML::NodeType::Sequence);
-      for (std::size_t i = 0; i < v.numbers.size(); ++i) n.push_back(number(i));
+      for (std::size_t i = 0; i < v.numbers.size(); ++i) n[i] = number(i);
       return n;
     case Value::Shape::Matrix:
       n = YAML::Node(YAML::NodeType::Sequence);
       for (int r = 0; r < v.rows; ++r) {
         YAML::Node row(YAML::NodeType::Sequence);
         for (int c = 0; c < v.cols; ++c)
-          row.push_back(number(static_cast<std::size_t>(r * v.cols + c)));
+          row[static_cast<std::size_t>(c)] = number(static_cast<std::size_t>(r * v.cols + c));
         n.push_back(row);
       }
       return n;

@@ -231,17 +231,35 @@ VaryPlan::Spec plan_spec(const YAML::Node& spec, const std::string& file,
   return out;
 }
 
+// A range's draw, as the text of its number.
+std::string draw_number(const VaryPlan::Spec& s, Rng& rng) {
+  const std::uint64_t k = rng.below(s.count);
+  // |lo|, |step| < 2³¹ and k < 10⁹ + 1: no overflow.
+  if (s.int_lo && s.int_step)
+    return std::to_string(*s.int_lo + *s.int_step * static_cast<std::int64_t>(k));
+  return gen_number(Exact(s.lo + s.step * static_cast<long>(k))).Scalar();
+}
+
+YAML::Node draw_planned(const VaryPlan::Spec& s, const YAML::Node& base, Rng& rng,
+                        const std::string& file);
+
+// Appends item's draw to the sequence `out`. A number is made in place, in out's own memory:
+// a node made apart and pushed is merged into it, which costs more than the draw.
+void append_draw(YAML::Node& out, const VaryPlan::Spec& item, const YAML::Node& base, Rng& rng,
+                 const std::string& file) {
+  if (item.type == VaryPlan::Spec::Type::Range) {
+    out[out.size()] = draw_number(item, rng);
+    return;
+  }
+  out.push_back(draw_planned(item, base, rng, file));
+}
+
 YAML::Node draw_planned(const VaryPlan::Spec& s, const YAML::Node& base, Rng& rng,
                         const std::string& file) {
   using Type = VaryPlan::Spec::Type;
   switch (s.type) {
-    case Type::Range: {
-      const std::uint64_t k = rng.below(s.count);
-      // |lo|, |step| < 2³¹ and k < 10⁹ + 1: no overflow.
-      if (s.int_lo && s.int_step)
-        return gen_number(*s.int_lo + *s.int_step * static_cast<std::int64_t>(k));
-      return gen_number(Exact(s.lo + s.step * static_cast<long>(k)));
-    }
+    case Type::Range:
+      return YAML::Node(draw_number(s, rng));
     case Type::Choices:
       return clone_node(s.node[static_cast<std::size_t>(rng.below(s.node.size()))]);
     case Type::Each: {
@@ -250,16 +268,16 @@ YAML::Node draw_planned(const VaryPlan::Spec& s, const YAML::Node& base, Rng& rn
         fail_at(s.node, file, s.field, "`each` needs a list in `given` to vary, or a `count`");
       YAML::Node out(YAML::NodeType::Sequence);
       for (std::size_t i = 0; i < count; ++i)
-        out.push_back(draw_planned(
-            s.items[0], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file));
+        append_draw(out, s.items[0], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(),
+                    rng, file);
       out.SetStyle(YAML::EmitterStyle::Flow);
       return out;
     }
     case Type::List: {
       YAML::Node out(YAML::NodeType::Sequence);
       for (std::size_t i = 0; i < s.items.size(); ++i)
-        out.push_back(draw_planned(
-            s.items[i], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(), rng, file));
+        append_draw(out, s.items[i], base.IsSequence() && i < base.size() ? base[i] : YAML::Node(),
+                    rng, file);
       out.SetStyle(YAML::EmitterStyle::Flow);
       return out;
     }
