@@ -317,13 +317,13 @@ void refuse_edge_on_triangle(const std::string& field) {
 
 Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const CrossOrder& order,
                                     const std::string& field, Derivation* steps) {
-  const Vec3<Exact> u = named_edge(order.first, abc), v = named_edge(order.second, abc);
   Vec3<Exact> n = cross_order_normal<Exact>(abc, cross_indices(order));
   for (int i = 0; i < 3; ++i) n(i) = canonical(n(i));
   if (canonical_dot(n, n).is_zero())
     throw DomainError(field, "the points are collinear (" + order.first + " × " + order.second +
                                  " = 0): the triangle has no normal");
   if (steps) {
+    const Vec3<Exact> u = named_edge(order.first, abc), v = named_edge(order.second, abc);
     auto edge_text = [&](const std::string& e, const Vec3<Exact>& value) {
       const std::string from(1, e[0]), to(1, e[1]);
       return math(e + " = " + to + " − " + from + " = ",
