@@ -248,15 +248,6 @@ struct SimplifyRadicals : GiNaC::map_function {
   }
 };
 
-// c·k^(p/q) with c ≠ 0 and k > 0 rational (a unit vector's component, a length; c = 1 for a
-// root alone): a real constant whose sign is c's.
-bool rational_times_root(const ex& e, numeric& c) {
-  RationalPower parts;
-  if (!rational_power(e, parts)) return false;
-  c = parts.c;
-  return true;
-}
-
 // GiNaC's working precision is a process-wide setting; restore it whatever happens.
 class DigitsGuard {
  public:
@@ -696,7 +687,7 @@ int exact_sign(const Exact& e) {
   }
   // A root of a rational times a rational: the coefficient's sign, without evaluating the root
   // (what the general route below concludes from the factors' signs).
-  if (numeric c; rational_times_root(e, c)) return c.is_positive() ? 1 : -1;
+  if (RationalPower parts; rational_power(e, parts)) return parts.c.is_positive() ? 1 : -1;
   if (!is_real_constant(e)) throw std::domain_error("exact_sign: not a real constant");
   // Products and powers by their factors' signs: no cancellation there, so √2·10⁻³⁰⁰ is
   // decided however small it is, and only sums are refined numerically.

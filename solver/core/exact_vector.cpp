@@ -6,32 +6,6 @@
 
 namespace frustum {
 
-namespace {
-
-// x = q·R with q rational and R = k^p (k > 0, p rational), or R = 1 (no radical).
-struct RationalMultiple {
-  GiNaC::numeric q;
-  std::optional<RationalPower> radical;  // its c is 1
-};
-
-bool rational_multiple(const Exact& x, RationalMultiple& out) {
-  if (is_rational(x)) {
-    out = {GiNaC::ex_to<GiNaC::numeric>(x), std::nullopt};
-    return true;
-  }
-  RationalPower parts;
-  if (!rational_power(x, parts)) return false;
-  out = {parts.c, RationalPower{1, parts.base, parts.exponent}};
-  return true;
-}
-
-bool same_radical(const std::optional<RationalPower>& a, const std::optional<RationalPower>& b) {
-  if (!a || !b) return !a && !b;
-  return a->base.is_equal(b->base) && a->exponent.is_equal(b->exponent);
-}
-
-}  // namespace
-
 Exact canonical_dot(const Vec3<Exact>& a, const Vec3<Exact>& b) {
   GiNaC::numeric sum = 0;
   std::optional<std::optional<RationalPower>> common;  // the radical of the non-zero terms

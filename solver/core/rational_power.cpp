@@ -51,6 +51,22 @@ bool rational_power(const GiNaC::ex& e, RationalPower& out) {
   return true;
 }
 
+bool rational_multiple(const GiNaC::ex& x, RationalMultiple& out) {
+  if (GiNaC::is_exactly_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_rational()) {
+    out = {GiNaC::ex_to<GiNaC::numeric>(x), std::nullopt};
+    return true;
+  }
+  RationalPower parts;
+  if (!rational_power(x, parts)) return false;
+  out = {parts.c, RationalPower{1, parts.base, parts.exponent}};
+  return true;
+}
+
+bool same_radical(const std::optional<RationalPower>& a, const std::optional<RationalPower>& b) {
+  if (!a || !b) return !a && !b;
+  return a->base.is_equal(b->base) && a->exponent.is_equal(b->exponent);
+}
+
 int square_root_sign(const GiNaC::numeric& q) {
   if (!q.is_rational() || q.is_integer()) return 0;
   const cln::cl_RA r = cln::the<cln::cl_RA>(q.to_cl_N());

@@ -6,6 +6,8 @@
 
 #include <ginac/ginac.h>
 
+#include <optional>
+
 namespace frustum {
 
 struct RationalPower {
@@ -17,6 +19,17 @@ struct RationalPower {
 // e as c·k^q (a power alone, or a product of exactly one such power and a rational), else
 // false. e is evaluated, as every GiNaC expression is once built.
 bool rational_power(const GiNaC::ex& e, RationalPower& out);
+
+// x = q·R with q rational and R = k^p (a RationalPower whose c is 1), or R = 1 (no radical):
+// the components of a unit normal n/‖n‖ and d = n̂·A once canonical.
+struct RationalMultiple {
+  GiNaC::numeric q;
+  std::optional<RationalPower> radical;
+};
+bool rational_multiple(const GiNaC::ex& x, RationalMultiple& out);
+
+// Whether two radicals (nullopt: none) are the same k^p.
+bool same_radical(const std::optional<RationalPower>& a, const std::optional<RationalPower>& b);
 
 // +1 when q = 1/2, -1 when q = -1/2, else 0 (read off q without building either number).
 int square_root_sign(const GiNaC::numeric& q);

@@ -195,29 +195,6 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
 
 namespace {
 
-// R = k^p (k > 0 and p rational), or 1 (k = p = 1).
-struct Radical {
-  GiNaC::numeric base = 1, exponent = 1;
-  bool operator==(const Radical& o) const {
-    return base.is_equal(o.base) && exponent.is_equal(o.exponent);
-  }
-};
-
-// x = q·R with q rational and R = 1 or a power of a positive rational (√3, as the components of
-// a unit normal n/‖n‖ and d = n̂·A are once canonical): q and R.
-bool rational_multiple(const Exact& x, GiNaC::numeric& q, Radical& root) {
-  if (is_rational(x)) {
-    q = GiNaC::ex_to<GiNaC::numeric>(x);
-    root = {};
-    return true;
-  }
-  RationalPower parts;
-  if (!rational_power(x, parts)) return false;
-  q = parts.c;
-  root = {parts.base, parts.exponent};
-  return true;
-}
-
 // c[i] / |c[first]| for i = 0..3, each canonical, or nullopt when one is not rational. When
 // every non-zero c[i] is a rational multiple of the same positive root, the quotient is the
 // ratio of the rationals (what canonical() of the quotient gives), found without dividing
@@ -227,14 +204,15 @@ std::optional<std::array<Exact, 4>> rational_ratios(const std::array<Exact, 4>& 
   std::array<Exact, 4> r;
   if (!by_quotients) {
     std::array<GiNaC::numeric, 4> q;
-    std::optional<Radical> common;
+    std::optional<std::optional<RationalPower>> common;
     bool shared = true;
     for (int i = 0; i < 4 && shared; ++i) {
-      Radical root;
-      shared = rational_multiple(c[i], q[i], root);
+      RationalMultiple m;
+      shared = rational_multiple(c[i], m);
+      q[i] = m.q;
       if (shared && !q[i].is_zero()) {
-        if (!common) common = root;
-        shared = *common == root;
+        if (!common) common = m.radical;
+        shared = same_radical(*common, m.radical);
       }
     }
     if (shared) {
