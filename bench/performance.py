@@ -119,7 +119,7 @@ def grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair=None):
         f"KaTeX and its fonts in `katex/`, {sizes['katex'] / 1e6:.1f} MB — and Gradescope files, "
         f"{sizes['gradescope'] / 1e6:.0f} MB), the students graded in "
         "isolated child processes (with `-j N`, N children, each taking the next student nobody has taken; a "
-        "fresh one after a timeout or crash), the outputs published by one rename after one sync. The peer "
+        "fresh one after a timeout or crash), the outputs written to disk as the class is graded (a write-back after each eighth) and published by one rename after one final sync. The peer "
         "(bench/workloads.py `peer`) reads the same YAML files, grades with NumPy and writes only a gradebook; "
         "it runs twice: as a plain script reads YAML (`yaml.safe_load`, PyYAML's Python loader — the peer "
         "the issue measured, 2.4–2.7 s against Frustum's 3.3–3.7 s then) and with PyYAML's C loader "
@@ -150,7 +150,7 @@ def grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair=None):
            if pair else "")
         + "Targets: ≤ 1 s with one core, ≥ 3× faster than the peer, ≥ 1.8× with two cores. "
         f"A feedback file (Markdown or HTML) is {sizes['feedback'] / 2000 / 1e3:.0f} kB on average; wall time "
-        "beyond CPU time is waiting (the disk, the one sync, the other processes on the machine).\n")
+        "beyond CPU time is waiting (the disk, the final sync, the other processes on the machine).\n")
 
 
 def main():

@@ -422,6 +422,8 @@ OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> n
   run_ = (state / ("run-" + std::to_string(next))).string();
   fs::create_directories(run_, ec);
   if (ec) throw std::runtime_error(run_ + ": cannot create: " + ec.message());
+  run_fd_ = ::open(run_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (run_fd_ < 0) fail(run_, "cannot open");
   for (const std::string& name : names_)
     if (fs::path(name).extension().empty()) fs::create_directories(fs::path(run_) / name, ec);
 }
@@ -429,6 +431,7 @@ OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> n
 OutputTransaction::~OutputTransaction() {
   std::error_code ec;
   if (!committed_ && !run_.empty()) fs::remove_all(run_, ec);
+  if (run_fd_ >= 0) ::close(run_fd_);
   if (lock_fd_ >= 0) ::close(lock_fd_);
 }
 
@@ -460,10 +463,16 @@ std::string OutputTransaction::published_path(const std::string& relative) const
   return (fs::path(dir_) / relative).string();
 }
 
+void OutputTransaction::write_back() {
+  if (::syncfs(run_fd_) != 0 && write_back_error_ == 0) write_back_error_ = errno;
+}
+
 void OutputTransaction::commit() {
   const fs::path state = fs::path(dir_) / kStateDir;
-  // One sync for the whole run (its files and directories), not one per file.
-  sync_file_system(run_);
+  // One sync for the whole run (its files and directories), not one per file; what write_back()
+  // met counts as this sync's error.
+  if (::syncfs(run_fd_) != 0) fail(run_, "cannot flush");
+  if (write_back_error_ != 0) fail(run_, "cannot flush", write_back_error_);
   // Each published name is a fixed symlink into `current`. A real file or directory there (an
   // older Frustum wrote them in place) is moved into the old run's place first.
   std::error_code no_current;

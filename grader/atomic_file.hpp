@@ -92,6 +92,11 @@ class OutputTransaction {
   void write(const std::string& relative, const std::string& content);
   // Takes back a file of this run (none there is fine).
   void remove(const std::string& relative);
+  // Has the disk write what this run holds so far, and waits for it: called while other
+  // processes go on writing (a batch's children grade while the parent waits here), it leaves
+  // commit()'s sync only what came after, instead of the whole run at the end. Not a point of
+  // durability: an error is kept and thrown by commit().
+  void write_back();
   void commit();
 
   // Where a published file can be read: dir/relative.
@@ -102,6 +107,10 @@ class OutputTransaction {
   std::vector<std::string> names_;
   std::string run_;  // dir/.frustum/run-N being written
   int lock_fd_ = -1;
+  // The run's directory, open from the start: every sync goes through it, so that a write error
+  // the disk reports at any time after the run began reaches commit().
+  int run_fd_ = -1;
+  int write_back_error_ = 0;  // what write_back() met (errno), thrown by commit()
   bool committed_ = false;
 };
 

@@ -209,6 +209,10 @@ void relocate(Diagnostic& d, const BatchEntry& e) {
   d.where = SourceLocation{e.csv_file, 0, 0};
 }
 
+// Classes of this many students or more are written back to disk in kWriteBacks steps.
+constexpr std::size_t kWriteBackClass = 64;
+constexpr std::size_t kWriteBacks = 8;
+
 std::string number_text(double v) { return format_approx(v, 6); }
 
 // The shared copy of KaTeX in the output directory, beside feedback/.
@@ -407,7 +411,14 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
                  r.error);
     }
     if (!e.note.empty()) row.message = e.note + (row.message.empty() ? "" : "; " + row.message);
-    if (options.on_progress) options.on_progress(++done, entries.size(), e.student);
+    ++done;
+    // The disk writes the class's files while the children grade, after each eighth of the
+    // class: the one sync before publishing then has only the last eighth left, not the whole
+    // class with every core idle. This process only waits there; the children go on.
+    if (entries.size() >= kWriteBackClass && done < entries.size() &&
+        done * kWriteBacks / entries.size() != (done - 1) * kWriteBacks / entries.size())
+      out.write_back();
+    if (options.on_progress) options.on_progress(done, entries.size(), e.student);
   };
   const std::size_t jobs =
       options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());

@@ -186,32 +186,45 @@ void expect_consistent(const fs::path& out) {
   }
 }
 
+// A batch of the first `students` files of `in`, each student taking `student_ms` at least (so
+// that the kill lands while students are being graded), killed after `kill_ms`.
+struct SlowBatch {
+  std::size_t jobs = 1;
+  std::size_t students = 0;
+  int student_ms = 0;
+};
+void kill_batch(const ProblemSet& set, const fs::path& in, const std::string& out,
+                const SlowBatch& slow, int kill_ms) {
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    BatchOptions o;
+    o.out_dir = out;
+    o.jobs = slow.jobs;
+    o.set_for = [&](const ProblemSet& s, const std::string&, std::string&) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(slow.student_ms));
+      return s;
+    };
+    std::vector<BatchEntry> entries = collect_submissions(in.string());
+    entries.resize(std::min(entries.size(), slow.students));
+    grade_batch(set, entries, o);
+    _exit(0);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(kill_ms));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+}
+
 TEST(BatchTransaction, AKillAtAnyMomentLeavesConsistentOutputsAndNoGradingChild) {
   const fs::path dir = scratch("kill");
   const fs::path in = make_class(dir, 12);
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   const std::string out = (dir / "out").string();
   for (int round = 0; round < 6; ++round) {
-    const pid_t pid = fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      BatchOptions o;
-      o.out_dir = out;
-      // Slow enough that the kill lands while students are being graded.
-      o.set_for = [](const ProblemSet& s, const std::string&, std::string&) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        return s;
-      };
-      // Every other run grades a different class size, so the outputs differ between runs.
-      std::vector<BatchEntry> entries = collect_submissions(in.string());
-      if (round % 2) entries.resize(7);
-      grade_batch(set, entries, o);
-      _exit(0);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(40 + 45 * round));
-    kill(pid, SIGKILL);
-    int status = 0;
-    waitpid(pid, &status, 0);
+    // Every other run grades a different class size, so the outputs differ between runs.
+    kill_batch(set, in, out, {.jobs = 1, .students = round % 2 ? 7u : 12u, .student_ms = 20},
+               40 + 45 * round);
     expect_consistent(out);
     // The killed batch's grading child held the lock too: a new batch gets it within a moment
     // only because that child died with its parent.
@@ -235,6 +248,70 @@ TEST(BatchTransaction, AKillAtAnyMomentLeavesConsistentOutputsAndNoGradingChild)
   for (const auto& e : fs::directory_iterator(dir / "out" / ".frustum"))
     runs += e.path().filename().string().rfind("run-", 0) == 0;
   EXPECT_EQ(runs, 1);
+  fs::remove_all(dir);
+}
+
+// write_back() has the disk write what is there so far; it publishes nothing. Files written
+// after it, and a file taken back after it, are published as commit() finds them; a run that is
+// written back but never committed leaves the published outputs as they were.
+TEST(BatchTransaction, WritingBackEarlyPublishesNothingAndLosesNothing) {
+  const fs::path dir = scratch("write_back");
+  const std::string out = (dir / "out").string();
+  {
+    OutputTransaction t(out, {"gradebook.csv", "feedback"});
+    t.write("feedback/a.md", "first\n");
+    t.write("feedback/gone.md", "taken back\n");
+    t.write_back();
+    EXPECT_FALSE(fs::exists(dir / "out" / "feedback")) << "write_back() published the run";
+    t.remove("feedback/gone.md");
+    t.write("feedback/a.md", "second\n");  // rewritten after the write-back
+    t.write("feedback/b.md", "after\n");
+    t.write("gradebook.csv", "student\na\nb\n");
+    t.write_back();
+    t.commit();
+  }
+  EXPECT_EQ(test::read_file(dir / "out" / "feedback" / "a.md"), "second\n");
+  EXPECT_EQ(test::read_file(dir / "out" / "feedback" / "b.md"), "after\n");
+  EXPECT_FALSE(fs::exists(dir / "out" / "feedback" / "gone.md"));
+  {
+    OutputTransaction t(out, {"gradebook.csv", "feedback"});
+    t.write("feedback/a.md", "never published\n");
+    t.write("gradebook.csv", "student\n");
+    t.write_back();
+  }  // no commit()
+  EXPECT_EQ(test::read_file(dir / "out" / "feedback" / "a.md"), "second\n");
+  EXPECT_EQ(test::read_file(dir / "out" / "gradebook.csv"), "student\na\nb\n");
+  int runs = 0;
+  for (const auto& e : fs::directory_iterator(dir / "out" / ".frustum"))
+    runs += e.path().filename().string().rfind("run-", 0) == 0;
+  EXPECT_EQ(runs, 1) << "the uncommitted run was left behind";
+  fs::remove_all(dir);
+}
+
+// A class large enough to be written back to disk while it is graded (64 students or more):
+// killed at any moment it leaves consistent outputs, and a whole run publishes every student.
+TEST(BatchTransaction, AClassWrittenBackWhileGradedStaysConsistentWhenKilled) {
+  const fs::path dir = scratch("write_back_kill");
+  const fs::path in = make_class(dir, 80);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  const std::string out = (dir / "out").string();
+  for (int round = 0; round < 4; ++round) {
+    kill_batch(set, in, out, {.jobs = 2, .students = round % 2 ? 70u : 80u, .student_ms = 3},
+               30 + 40 * round);
+    expect_consistent(out);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));  // the children die with it
+  }
+  BatchOptions o;
+  o.out_dir = out;
+  o.jobs = 2;
+  const BatchResult r = grade_batch(set, collect_submissions(in.string()), o);
+  ASSERT_EQ(r.rows.size(), 80u);
+  expect_consistent(out);
+  const CsvTable book = parse_csv(test::read_file(dir / "out" / "gradebook.csv"));
+  EXPECT_EQ(book.rows.size(), 81u);
+  for (int i = 0; i < 80; ++i)
+    EXPECT_TRUE(fs::exists(dir / "out" / "gradescope" / ("s" + std::to_string(100 + i) + ".json")))
+        << i;
   fs::remove_all(dir);
 }
 
