@@ -684,6 +684,37 @@ TEST(Batch, IdsAreReadUpToTheirValue) {
   fs::remove_all(dir);
 }
 
+// A file saved as some Windows editors save UTF-8 (a byte-order mark, CR LF line ends) is the
+// same answers: the same id, score and feedback as the plain file. With the mark, every line
+// after `student:` was once lost, and the student was marked as having no answers.
+TEST(Batch, AnswersSavedWithAByteOrderMarkGradeLikeThePlainFile) {
+  const fs::path dir = scratch("bom");
+  const std::string answers = "student: s1\nanswers:\n  zbuf: {z: 8}\n";
+  std::string windows = "\xEF\xBB\xBF";
+  for (const char c : answers) windows += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  fs::create_directories(dir / "plain");
+  fs::create_directories(dir / "windows");
+  test::write_file(dir / "plain" / "a.yaml", answers);
+  test::write_file(dir / "windows" / "a.yaml", windows);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  std::vector<BatchRow> rows;
+  std::vector<std::string> feedback;
+  for (const char* side : {"plain", "windows"}) {
+    BatchOptions o;
+    o.out_dir = (dir / (std::string(side) + "-out")).string();
+    const BatchResult r = grade_batch(set, collect_submissions((dir / side).string()), o);
+    ASSERT_EQ(r.rows.size(), 1u) << side;
+    rows.push_back(r.rows[0]);
+    feedback.push_back(test::read_file(dir / (std::string(side) + "-out") / "feedback" / "s1.md"));
+  }
+  EXPECT_EQ(rows[1].student, "s1");
+  EXPECT_EQ(rows[1].status, "graded") << rows[1].message;
+  EXPECT_GT(rows[0].score, 0);
+  EXPECT_EQ(rows[1].score, rows[0].score);
+  EXPECT_EQ(feedback[1], feedback[0]);
+  fs::remove_all(dir);
+}
+
 // issue 18: reading a class leaves the process single-threaded, so the children grade_batch forks
 // count shared references without atomic instructions (with threads here, -j 2 cost a quarter
 // more CPU per student than -j 1). ctest runs each test in a process of its own.

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 
 namespace frustum {
 
@@ -19,7 +20,7 @@ YAML::Mark mark_of(const yaml_mark_t& m) {
 }
 
 // Where byte `offset` of the text is (libyaml names a reader problem by its offset only).
-YAML::Mark mark_at(const std::string& text, std::size_t offset) {
+YAML::Mark mark_at(std::string_view text, std::size_t offset) {
   YAML::Mark out;
   out.pos = static_cast<int>(offset);
   for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
@@ -33,13 +34,24 @@ YAML::Mark mark_at(const std::string& text, std::size_t offset) {
   return out;
 }
 
+// The text without its byte-order mark: the parser is told the encoding, and so does not look
+// for the mark; it would read it as a character of the first line, put the first key in column 2
+// and end the top mapping at the next line (everything after the first line of a file saved
+// with the mark, as some Windows editors save UTF-8, would be lost). Columns count from after
+// the mark, as an editor shows them.
+std::string_view without_mark(const std::string& text) {
+  std::string_view v(text);
+  if (v.substr(0, 3) == "\xEF\xBB\xBF") v.remove_prefix(3);
+  return v;
+}
+
 // One libyaml parser over the text, freed however the reading ends.
 class Parser {
  public:
-  explicit Parser(const std::string& text) : text_(text) {
+  explicit Parser(const std::string& text) : text_(without_mark(text)) {
     if (!yaml_parser_initialize(&parser_)) throw std::bad_alloc();
-    yaml_parser_set_input_string(&parser_, reinterpret_cast<const unsigned char*>(text.data()),
-                                 text.size());
+    yaml_parser_set_input_string(&parser_, reinterpret_cast<const unsigned char*>(text_.data()),
+                                 text_.size());
     yaml_parser_set_encoding(&parser_, YAML_UTF8_ENCODING);
   }
   ~Parser() { yaml_parser_delete(&parser_); }
@@ -61,7 +73,7 @@ class Parser {
   }
 
  private:
-  const std::string& text_;
+  std::string_view text_;
   yaml_parser_t parser_;
 };
 
