@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <optional>
+#include <random>
 #include <string>
 
 #include "test_util.hpp"
@@ -263,6 +264,62 @@ TEST(YamlDocument, TopScalarStopsAtTheValue) {
   EXPECT_EQ(id("student: [s1]\nbroken: [\n"), std::nullopt);
   EXPECT_EQ(id("student:\nbroken: [\n"), std::nullopt);
   EXPECT_EQ(id("\xFF\xFEs\0"), std::nullopt);
+}
+
+// A first line `student: s00042` is read without the parser when what follows makes the parser's
+// answer certain: over first lines and next lines built from pieces that sit on either side of
+// that line (spaces and tabs, quotes, comments, YAML's nulls, continuation lines, control
+// characters, line ends), the id is the parser's. A byte-order mark in front sends the same text
+// through the parser, which skips the mark.
+TEST(YamlDocument, TopScalarOfAPlainFirstLineIsTheParsersValue) {
+  const std::vector<std::string> keys = {"student", "Student", "student ", "studentx", "a-b"};
+  const std::vector<std::string> colons = {": ", ":  ", ":", ":\t", ": \t", " : "};
+  const std::vector<std::string> words = {"s00042", "null",  "Null",     "NULL",      "~",   "true",
+                                          "12",     "-1",    ".inf",     "a.b@c+d-e", "x#y", "a:b",
+                                          "'q'",    "\"q\"", "\xc3\xa9", "a\x01",     "",    "_x",
+                                          "a b",    "@a",    "a,b",      "[a]"};
+  const std::vector<std::string> trails = {"", " ", "  ", "\t", " #c", "#c", " \x01"};
+  const std::vector<std::string> ends = {"\n", "\r\n", "\r", "", "\n\n", "\x85"};
+  const std::vector<std::string> nexts = {"",
+                                          "answers:",
+                                          "answers: {p: [1, \n",
+                                          "  cont\n",
+                                          "\tx\n",
+                                          "#c\n",
+                                          "- a\n",
+                                          "1a: 2\n",
+                                          "a:b\n",
+                                          "a :\n",
+                                          "abc\n",
+                                          "abc\n\tx\n",
+                                          "_k: v\n",
+                                          "answers:\n  p: 1\n",
+                                          "k:\t1\n",
+                                          "student: b\n",
+                                          "x: [\n",
+                                          "k:\x01\n",
+                                          "k: \xff\n",
+                                          "a: 1\na: 2\n",
+                                          "{a: 1}: 2\n",
+                                          "---\nb\n",
+                                          "...\n",
+                                          "k:"};
+  std::mt19937 rng(42);
+  const auto pick = [&](const std::vector<std::string>& v) { return v[rng() % v.size()]; };
+  int fast = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const std::string text = pick(keys) + pick(colons) + pick(words) + pick(trails) + pick(ends) +
+                             pick(nexts) + (rng() % 2 ? "" : pick(nexts));
+    const std::optional<std::string> id = top_scalar(text, "t.yaml", "student");
+    EXPECT_EQ(id, top_scalar("\xEF\xBB\xBF" + text, "t.yaml", "student"))
+        << "text: " << ::testing::PrintToString(text);
+    fast += id.has_value();
+  }
+  EXPECT_GT(fast, 1000);  // the pieces do make plain first lines
+  EXPECT_EQ(top_scalar("student: s00042\nanswers:\n  p: 1\n", "t.yaml", "student"), "s00042");
+  EXPECT_EQ(top_scalar("student: s1\r\nanswers: {p: [1, \n", "t.yaml", "student"), "s1");
+  EXPECT_EQ(top_scalar("student: null\n", "t.yaml", "student"), std::nullopt);
+  EXPECT_EQ(top_scalar("student: a\n  b\n", "t.yaml", "student"), "a b");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <yaml-cpp/node/detail/memory.h>
 #include <yaml-cpp/node/detail/node.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -461,8 +462,54 @@ YamlDocument parse_yaml(const std::string& text, const std::string& name) {
   return doc;
 }
 
+namespace {
+
+bool name_character(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+// The value of the common first line `key: word` (a class's `student: s00042`), read without the
+// parser when what follows makes the parser's answer certain: the word is a plain scalar of
+// letters, digits and `_ . @ + -` (not YAML's null), the line ends (spaces, then a line feed
+// or the end of the text), and the next line is the end of the text or starts another key
+// (`name:`) at the left margin, which ends the word and cannot be a continuation of it. The
+// parser would read exactly this word: the text up to here is printable ASCII, and it stops
+// after the next line's key. Anything else is left to the parser (nothing).
+std::optional<std::string> plain_first_line(const std::string& text, const std::string& key) {
+  const std::size_t n = text.size();
+  if (key.empty() || !std::all_of(key.begin(), key.end(), name_character)) return std::nullopt;
+  if (text.compare(0, key.size(), key) != 0 || n < key.size() + 3 || text[key.size()] != ':' ||
+      text[key.size() + 1] != ' ')
+    return std::nullopt;
+  std::size_t i = key.size() + 1;
+  while (i < n && text[i] == ' ') ++i;
+  const std::size_t start = i;
+  const auto word_character = [](char c) {
+    return name_character(c) || c == '.' || c == '@' || c == '+' || c == '-';
+  };
+  while (i < n && word_character(text[i])) ++i;
+  if (i == start || !name_character(text[start])) return std::nullopt;
+  std::string word = text.substr(start, i - start);
+  if (word == "null" || word == "Null" || word == "NULL") return std::nullopt;
+  while (i < n && text[i] == ' ') ++i;
+  if (i == n) return word;
+  if (text[i] == '\r') ++i;
+  if (i == n || text[i] != '\n') return std::nullopt;
+  if (++i == n) return word;
+  const std::size_t next = i;
+  while (i < n && name_character(text[i])) ++i;
+  if (i == next || (text[next] >= '0' && text[next] <= '9') || i == n || text[i] != ':')
+    return std::nullopt;
+  if (i + 1 < n && text[i + 1] != ' ' && text[i + 1] != '\n' && text[i + 1] != '\r')
+    return std::nullopt;
+  return word;
+}
+
+}  // namespace
+
 std::optional<std::string> top_scalar(const std::string& text, const std::string& name,
                                       const std::string& key) {
+  if (std::optional<std::string> word = plain_first_line(text, key)) return word;
   if (wide_encoding(text)) return std::nullopt;
   std::string repaired = text;
   repair_utf8(repaired, name);
