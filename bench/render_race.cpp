@@ -12,6 +12,9 @@
 //   which transforms, clips, lights (Processing's lights() as GL_LIGHT0, two-sided, flat), maps to
 //   the viewport and rasterizes into a depth-tested frame; glReadPixels, and the same PNG writer
 //   (write_color_png). The context is made once, before the runs.
+// The process allocates with mimalloc, as the `frustum` binary does (CMakeLists.txt), for both
+// sides: with glibc's malloc, the memory llvmpipe's run gave back was taken again page by page by
+// Frustum's next render.
 // LP_NUM_THREADS is left as the caller set it (unset: Mesa's default, one per core), and Frustum
 // renders with as many threads (`--threads`: all of them on a modelled scene, at most two on a
 // scene of more than fill.hpp's kBandedTriangles). In the same run: the bandwidth
