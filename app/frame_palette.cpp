@@ -85,7 +85,7 @@ bool scan_rows(const Image<std::uint32_t>& image, int r0, int r1, FrameRuns& par
 
 }  // namespace
 
-bool frame_runs(const Image<std::uint32_t>& image, FrameRuns& out, int threads) {
+bool frame_runs(const Image<std::uint32_t>& image, FrameRuns& out, int threads, ThreadTeam* team) {
   out = FrameRuns{};
   out.width = image.width;
   out.height = image.height;
@@ -94,9 +94,13 @@ bool frame_runs(const Image<std::uint32_t>& image, FrameRuns& out, int threads) 
   const int parts = std::max(1, std::min(threads, image.height / 64));
   std::vector<FrameRuns> part(static_cast<std::size_t>(parts));
   std::vector<char> fits(static_cast<std::size_t>(parts), 0);
-  side_by_side(parts, [&](int k) {
-    fits[k] = scan_rows(image, image.height * k / parts, image.height * (k + 1) / parts, part[k]);
-  });
+  side_by_side(
+      parts,
+      [&](int k) {
+        fits[k] =
+            scan_rows(image, image.height * k / parts, image.height * (k + 1) / parts, part[k]);
+      },
+      team);
   if (std::find(fits.begin(), fits.end(), 0) != fits.end()) return false;
   // One palette in order of first appearance: part 0's, then each later part's new colours;
   // each part's indices mapped onto it.

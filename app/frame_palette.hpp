@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "solver/raster/zbuffer.hpp"
+#include "solver/util/thread_team.hpp"
 
 namespace frustum::app {
 
@@ -22,8 +23,9 @@ struct FrameRuns {
 
 // The frame's runs (raster rows, y up: the top row is the last), or false when it has more than
 // 256 colours or a colour that is not opaque. `threads` scan parts of the frame side by side; the
-// result is the same whatever their number.
-bool frame_runs(const Image<std::uint32_t>& image, FrameRuns& out, int threads = 1);
+// result is the same whatever their number (with a team, on its threads).
+bool frame_runs(const Image<std::uint32_t>& image, FrameRuns& out, int threads = 1,
+                ThreadTeam* team = nullptr);
 
 // The fewest bits a sample that hold every index of a palette of this size: 1, 2, 4 or 8.
 int palette_bit_depth(std::size_t colours);

@@ -79,7 +79,8 @@ bool write_png(const std::string& path, int width, int height, int color_type, i
 // before it, and the stream is the same whatever the number of threads. Empty on a zlib error.
 constexpr int kRowsPerPiece = 64;
 
-std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int threads) {
+std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int threads,
+                                         ThreadTeam* team) {
   const auto stride = static_cast<std::size_t>((runs.width * bits + 7) / 8) + 1;  // + filter byte
   const int pieces = std::max(1, (runs.height + kRowsPerPiece - 1) / kRowsPerPiece);
   const int parts = std::max(1, std::min(threads, pieces));
@@ -91,38 +92,41 @@ std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int th
     bool ok = false;
   };
   std::vector<Part> part(static_cast<std::size_t>(parts));
-  side_by_side(parts, [&](int k) {
-    Part& p = part[static_cast<std::size_t>(k)];
-    const int first = pieces * k / parts, last = pieces * (k + 1) / parts;
-    z_stream z{};
-    if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK) return;
-    std::vector<unsigned char> raw(stride * kRowsPerPiece);
-    p.adler = adler32(0L, Z_NULL, 0);
-    p.ok = true;
-    for (int piece = first; piece < last && p.ok; ++piece) {
-      const int r0 = piece * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
-      const std::size_t size = stride * static_cast<std::size_t>(r1 - r0);
-      for (int r = r0; r < r1; ++r) {
-        unsigned char* row = raw.data() + stride * static_cast<std::size_t>(r - r0);
-        row[0] = 0;  // filter type None: a palette row's runs are already repeated bytes
-        pack_row(runs, r, bits, row + 1);
-      }
-      p.adler = adler32(p.adler, raw.data(), static_cast<uInt>(size));
-      p.length += static_cast<uLong>(size);
-      const std::size_t at = p.out.size();
-      p.out.resize(at + deflateBound(&z, static_cast<uLong>(size)) + 16);  // + a sync flush
-      z.next_in = raw.data();
-      z.avail_in = static_cast<uInt>(size);
-      z.next_out = p.out.data() + at;
-      z.avail_out = static_cast<uInt>(p.out.size() - at);
-      const bool end = piece == pieces - 1;
-      const int rc = deflate(&z, end ? Z_FINISH : Z_SYNC_FLUSH);
-      p.ok = (end ? rc == Z_STREAM_END : rc == Z_OK && z.avail_out > 0) && z.avail_in == 0;
-      p.out.resize(p.out.size() - z.avail_out);
-      if (deflateReset(&z) != Z_OK) p.ok = false;
-    }
-    deflateEnd(&z);
-  });
+  side_by_side(
+      parts,
+      [&](int k) {
+        Part& p = part[static_cast<std::size_t>(k)];
+        const int first = pieces * k / parts, last = pieces * (k + 1) / parts;
+        z_stream z{};
+        if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK) return;
+        std::vector<unsigned char> raw(stride * kRowsPerPiece);
+        p.adler = adler32(0L, Z_NULL, 0);
+        p.ok = true;
+        for (int piece = first; piece < last && p.ok; ++piece) {
+          const int r0 = piece * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
+          const std::size_t size = stride * static_cast<std::size_t>(r1 - r0);
+          for (int r = r0; r < r1; ++r) {
+            unsigned char* row = raw.data() + stride * static_cast<std::size_t>(r - r0);
+            row[0] = 0;  // filter type None: a palette row's runs are already repeated bytes
+            pack_row(runs, r, bits, row + 1);
+          }
+          p.adler = adler32(p.adler, raw.data(), static_cast<uInt>(size));
+          p.length += static_cast<uLong>(size);
+          const std::size_t at = p.out.size();
+          p.out.resize(at + deflateBound(&z, static_cast<uLong>(size)) + 16);  // + a sync flush
+          z.next_in = raw.data();
+          z.avail_in = static_cast<uInt>(size);
+          z.next_out = p.out.data() + at;
+          z.avail_out = static_cast<uInt>(p.out.size() - at);
+          const bool end = piece == pieces - 1;
+          const int rc = deflate(&z, end ? Z_FINISH : Z_SYNC_FLUSH);
+          p.ok = (end ? rc == Z_STREAM_END : rc == Z_OK && z.avail_out > 0) && z.avail_in == 0;
+          p.out.resize(p.out.size() - z.avail_out);
+          if (deflateReset(&z) != Z_OK) p.ok = false;
+        }
+        deflateEnd(&z);
+      },
+      team);
   // CMF 0x78: deflate with a 32 KB window; FLG 0x01: the fastest level, 0x7801 divisible by 31.
   std::vector<unsigned char> stream = {0x78, 0x01};
   uLong adler = adler32(0L, Z_NULL, 0);
@@ -143,13 +147,14 @@ bool write_png_rows(const std::string& path, int width, int height, int color_ty
   return write_png(path, width, height, color_type, 8, rows, nullptr);
 }
 
-bool write_color_png(const std::string& path, const Image<std::uint32_t>& img, int threads) {
+bool write_color_png(const std::string& path, const Image<std::uint32_t>& img, int threads,
+                     ThreadTeam* team) {
   FrameRuns runs;
-  if (frame_runs(img, runs, threads)) {
+  if (frame_runs(img, runs, threads, team)) {
     // A palette of at most 16 colours packs 2, 4 or 8 pixels into a byte: fewer bytes to
     // compress. Each row is packed from its runs, and the rows compressed in pieces.
     const int bits = palette_bit_depth(runs.palette.size());
-    const std::vector<unsigned char> idat = compress_rows(runs, bits, threads);
+    const std::vector<unsigned char> idat = compress_rows(runs, bits, threads, team);
     if (!idat.empty())
       return write_png(path, img.width, img.height, PNG_COLOR_TYPE_PALETTE, bits, nullptr,
                        &runs.palette, &idat);

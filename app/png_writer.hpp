@@ -23,7 +23,8 @@ bool write_png_rows(const std::string& path, int width, int height, int color_ty
 // written as a palette image of 1, 2, 4 or 8 bits a pixel (at most 2, 4, 16 or 256 colours):
 // the same pixels in a quarter to a thirty-second of the bytes to compress. Any other frame is
 // written as 8-bit RGBA (frame_palette.hpp finds the palette; `threads` scan parts of the frame
-// side by side, and the file is the same whatever their number).
-bool write_color_png(const std::string& path, const Image<std::uint32_t>& image, int threads = 1);
+// side by side — with a team, on its threads — and the file is the same whatever their number).
+bool write_color_png(const std::string& path, const Image<std::uint32_t>& image, int threads = 1,
+                     ThreadTeam* team = nullptr);
 
 }  // namespace frustum::app

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <ostream>
 
 #include "app/commands.hpp"
@@ -112,6 +113,11 @@ std::variant<Scene, int> load_render_scene(const RenderOptions& opt, const Outpu
 }
 
 int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
+  // The threads the render and the PNG share, started while the scene is read: one start for
+  // the render's four rounds of work in parts (geometry, fill, the PNG's scan and compression).
+  std::optional<ThreadTeam> team;
+  if (opt.threads >= 2) team.emplace(opt.threads);
+  ThreadTeam* const helpers = team ? &*team : nullptr;
   std::variant<Scene, int> loaded = load_render_scene(opt, o);
   if (const int* status = std::get_if<int>(&loaded)) return *status;
   const Scene& scene = std::get<Scene>(loaded);
@@ -132,13 +138,13 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
         st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
   } else {
     FillStats fs;
-    render_zbuffer(scene, frame, &gs, &fs, opt.threads);
+    render_zbuffer(scene, frame, &gs, &fs, opt.threads, helpers);
     method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",
                          frame.depth.data.size() * sizeof(float), fs.fragments, fs.written);
   }
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!write_color_png(opt.output, frame.color, opt.threads)) {
+  if (!write_color_png(opt.output, frame.color, opt.threads, helpers)) {
     o.err << opt.output << ": cannot write the image\n";
     return 1;
   }

@@ -31,6 +31,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -105,6 +106,9 @@ struct Batch {
 
 // The llvmpipe side, start to end; returns the image as read back (raster rows, y up).
 const Image<std::uint32_t>& render_llvmpipe(const app::RenderOptions& opt, Llvmpipe& gl) {
+  // The PNG writer's threads, started while the scene is read, as `frustum render` starts them.
+  std::optional<ThreadTeam> team;
+  if (opt.threads >= 2) team.emplace(opt.threads);
   const Scene scene = load(opt);
   // The vertex buffer: world positions, and face normals (n = (v1 − v0) × (v2 − v0), the
   // side shade() lights) when there is a light, filled by Frustum's hierarchy walk.
@@ -184,7 +188,7 @@ const Image<std::uint32_t>& render_llvmpipe(const app::RenderOptions& opt, Llvmp
   }
   glFinish();
   glReadPixels(0, 0, scene.width, scene.height, GL_RGBA, GL_UNSIGNED_BYTE, gl.frame.data.data());
-  if (!app::write_color_png(opt.output, gl.frame, opt.threads)) {
+  if (!app::write_color_png(opt.output, gl.frame, opt.threads, team ? &*team : nullptr)) {
     std::cerr << opt.output << ": cannot write the image\n";
     std::exit(2);
   }

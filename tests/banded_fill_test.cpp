@@ -10,11 +10,14 @@
 #include <atomic>
 #include <cmath>
 #include <random>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "solver/util/side_by_side.hpp"
+#include "solver/util/thread_team.hpp"
 
 namespace frustum {
 namespace {
@@ -52,12 +55,15 @@ TEST(BandedFill, EqualsClearingAndDrawingInOrderForAnyThreadsAndBands) {
     FillStats drawn;
     for (const RasterTriangle& t : setups) draw_triangle(t, expected, &drawn);
     ASSERT_GT(drawn.written, 0);
-    for (const int threads : {1, 2, 3, 8}) {
+    ThreadTeam team(3);  // kept from frame to frame, as a render keeps it for its rounds
+    for (const int threads : {1, 2, 3, 8, -2, -3, -8}) {
       // A frame that held something else, larger, then smaller: every pixel is written again.
       Frame banded(width + 5, height + 40, Rgb{200, 0, 0});
       banded.depth.data.assign(banded.depth.data.size(), -1.0f);
       FillStats counted;
-      fill_in_bands(setups, banded, width, height, background, &counted, threads);
+      // Negative: that many threads, on the team's (3) where there are enough of them.
+      fill_in_bands(setups, banded, width, height, background, &counted, std::abs(threads),
+                    threads < 0 ? &team : nullptr);
       SCOPED_TRACE(testing::Message() << width << " × " << height << ", " << threads << " threads");
       ASSERT_EQ(banded.color.width, width);
       ASSERT_EQ(banded.depth.height, height);
@@ -115,6 +121,51 @@ TEST(SideBySide, EveryPartRunsOnceAndAnErrorReachesTheCaller) {
     EXPECT_STREQ(e.what(), "part 2");
   }
   EXPECT_EQ(ended.load(), 4);
+}
+
+// A team's threads run round after round: every part once a round, on as many different threads
+// as the team has (more parts than threads: the rest on the caller's), none after the round
+// returns; an error reaches the caller and the team goes on; a team that is ended joins its
+// threads.
+TEST(ThreadTeam, EveryPartOfEveryRoundRunsOnceOnTheTeamsThreads) {
+  for (const int size : {1, 2, 4}) {
+    ThreadTeam team(size);
+    ASSERT_EQ(team.threads(), size);
+    for (int round = 0; round < 300; ++round) {
+      const int parts = 1 + round % 6;
+      std::vector<int> ran(static_cast<std::size_t>(parts), 0);
+      std::vector<std::thread::id> on(static_cast<std::size_t>(parts));
+      side_by_side(
+          parts,
+          [&](int k) {
+            ++ran[static_cast<std::size_t>(k)];
+            on[static_cast<std::size_t>(k)] = std::this_thread::get_id();
+          },
+          &team);
+      ASSERT_EQ(ran, std::vector<int>(static_cast<std::size_t>(parts), 1)) << "round " << round;
+      EXPECT_EQ(on[0], std::this_thread::get_id());
+      const std::set<std::thread::id> threads(on.begin(), on.end());
+      EXPECT_EQ(static_cast<int>(threads.size()), std::min(parts, size)) << "round " << round;
+    }
+    std::atomic<int> ended{0};
+    try {
+      side_by_side(
+          std::max(size, 2),
+          [&](int k) {
+            ++ended;
+            if (k == 1) throw std::runtime_error("part 1");
+          },
+          &team);
+      ADD_FAILURE() << "no exception";
+    } catch (const std::runtime_error& e) {
+      EXPECT_STREQ(e.what(), "part 1");
+    }
+    EXPECT_EQ(ended.load(), std::max(size, 2));
+    int after = 0;
+    side_by_side(
+        size, [&](int) { ++after; }, &team);  // the team still works
+    EXPECT_EQ(after, size);
+  }
 }
 
 }  // namespace

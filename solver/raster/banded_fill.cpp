@@ -52,7 +52,7 @@ Bins bin_by_band(const Parts& parts, int width, int height, int bands) {
 }
 
 void fill_parts_in_bands(const Parts& parts, Frame& frame, int width, int height, Rgb background,
-                         FillStats* stats, int threads) {
+                         FillStats* stats, int threads, ThreadTeam* team) {
   frame.resize(width, height);
   const int bands = (height + kBandRows - 1) / kBandRows;
   const Bins bins = bin_by_band(parts, width, height, bands);
@@ -68,7 +68,8 @@ void fill_parts_in_bands(const Parts& parts, Frame& frame, int width, int height
   };
   const int workers = std::max(1, std::min(threads, bands));
   std::vector<FillStats> counts(static_cast<std::size_t>(workers));
-  side_by_side(workers, [&](int k) { worker(counts[static_cast<std::size_t>(k)]); });
+  side_by_side(
+      workers, [&](int k) { worker(counts[static_cast<std::size_t>(k)]); }, team);
   if (stats) {
     for (const std::span<const RasterTriangle> part : parts)
       stats->triangles += static_cast<long>(part.size());
@@ -79,12 +80,12 @@ void fill_parts_in_bands(const Parts& parts, Frame& frame, int width, int height
 }  // namespace
 
 void fill_in_bands(const std::vector<RasterTriangle>& triangles, Frame& frame, int width,
-                   int height, Rgb background, FillStats* stats, int threads) {
-  fill_parts_in_bands(Parts{triangles}, frame, width, height, background, stats, threads);
+                   int height, Rgb background, FillStats* stats, int threads, ThreadTeam* team) {
+  fill_parts_in_bands(Parts{triangles}, frame, width, height, background, stats, threads, team);
 }
 
 void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
-                     FillStats* stats, int threads) {
+                     FillStats* stats, int threads, ThreadTeam* team) {
   // The world triangles walked here (the walk copies the scene's objects, exact coordinates
   // included, whose reference counts are not atomic: not a walk per thread), then in `parts`
   // contiguous ranges, each through a geometry stage and set up on a thread of its own, and
@@ -96,27 +97,31 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
   std::vector<std::vector<RasterTriangle>> setups(static_cast<std::size_t>(parts));
   std::vector<GeometryStage> stages;  // made here: each reads the scene only once made
   for (int k = 0; k < parts; ++k) stages.emplace_back(scene);
-  side_by_side(parts, [&](int k) {
-    const std::size_t lo = count * static_cast<std::size_t>(k) / static_cast<std::size_t>(parts),
-                      hi =
-                          count * static_cast<std::size_t>(k + 1) / static_cast<std::size_t>(parts);
-    GeometryStage& stage = stages[static_cast<std::size_t>(k)];
-    std::vector<WindowTriangle> window;  // one world triangle's, reused
-    std::vector<RasterTriangle>& out = setups[static_cast<std::size_t>(k)];
-    out.reserve(hi - lo);
-    for (std::size_t source = lo; source < hi; ++source) {
-      window.clear();
-      stage.add(flat.triangles[source], static_cast<int>(source), window);
-      for (const WindowTriangle& w : window) out.push_back(setup_raster(w));
-    }
-  });
+  side_by_side(
+      parts,
+      [&](int k) {
+        const std::size_t lo =
+                              count * static_cast<std::size_t>(k) / static_cast<std::size_t>(parts),
+                          hi = count * static_cast<std::size_t>(k + 1) /
+                               static_cast<std::size_t>(parts);
+        GeometryStage& stage = stages[static_cast<std::size_t>(k)];
+        std::vector<WindowTriangle> window;  // one world triangle's, reused
+        std::vector<RasterTriangle>& out = setups[static_cast<std::size_t>(k)];
+        out.reserve(hi - lo);
+        for (std::size_t source = lo; source < hi; ++source) {
+          window.clear();
+          stage.add(flat.triangles[source], static_cast<int>(source), window);
+          for (const WindowTriangle& w : window) out.push_back(setup_raster(w));
+        }
+      },
+      team);
   // Numbered in drawing order across the parts, then filled from the parts as they are (no
   // copy into one array: a megabyte of fresh memory for the paper plane's 3,520).
   int source = 0;
   for (std::vector<RasterTriangle>& part : setups)
     for (RasterTriangle& t : part) t.source = source++;
   fill_parts_in_bands(Parts(setups.begin(), setups.end()), frame, scene.width, scene.height,
-                      scene.background, stats, threads);
+                      scene.background, stats, threads, team);
   if (geometry_stats) {
     *geometry_stats = GeometryStats{};
     for (const GeometryStage& stage : stages) *geometry_stats += stage.stats;

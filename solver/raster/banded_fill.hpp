@@ -8,12 +8,14 @@
 // of once to clear it and again for every triangle that covers a part of it. `threads` workers
 // take the bands in turn as they finish one. A pixel belongs to one band, and a band's triangles
 // are drawn in order, so the frame is the same bit for bit as clearing it and drawing every
-// triangle in order with draw_triangle, whatever the number of threads.
+// triangle in order with draw_triangle, whatever the number of threads. With a team
+// (thread_team.hpp), its threads do the work instead of threads started for it.
 #pragma once
 
 #include <vector>
 
 #include "solver/raster/fill.hpp"
+#include "solver/util/thread_team.hpp"
 
 namespace frustum {
 
@@ -22,13 +24,14 @@ inline constexpr int kBandRows = 32;
 // `frame` is sized to width × height and every pixel written: the background and the far depth,
 // then the triangles. Counts as draw_triangle would (every triangle, fragments, writes).
 void fill_in_bands(const std::vector<RasterTriangle>& triangles, Frame& frame, int width,
-                   int height, Rgb background, FillStats* stats = nullptr, int threads = 1);
+                   int height, Rgb background, FillStats* stats = nullptr, int threads = 1,
+                   ThreadTeam* team = nullptr);
 
 // The whole z-buffer render of a scene (fill.hpp's render_zbuffer with threads, for a scene of
 // few enough triangles): the world triangles split into contiguous parts, each part through the
 // geometry stage and set up on a thread of its own, joined in drawing order, then the frame filled
 // band by band. The same frame and statistics as render_zbuffer on one thread.
 void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_stats = nullptr,
-                     FillStats* stats = nullptr, int threads = 1);
+                     FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr);
 
 }  // namespace frustum

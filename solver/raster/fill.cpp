@@ -241,12 +241,12 @@ int zbuffer_threads(const Scene& scene, int threads) {
 }
 
 void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
-                    FillStats* stats, int threads) {
+                    FillStats* stats, int threads, ThreadTeam* team) {
   if (zbuffer_banded(scene, threads)) {
     // A modelled scene with threads to share: the geometry in parts side by side, then the
     // frame filled band by band (on one thread this is no faster than the stream below: a
     // 1920 × 1080 frame stays in this machine's last-level cache).
-    render_in_bands(scene, frame, geometry_stats, stats, threads);
+    render_in_bands(scene, frame, geometry_stats, stats, threads, team);
     return;
   }
   GeometryStage stage(scene);

@@ -19,6 +19,7 @@
 #include "solver/raster/pipeline.hpp"
 #include "solver/raster/rasterizer.hpp"
 #include "solver/raster/zbuffer.hpp"
+#include "solver/util/thread_team.hpp"
 
 namespace frustum {
 
@@ -191,8 +192,9 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
                      FillStats* stats = nullptr, int threads = 1);
 // The same into a render target the caller keeps (reset to the scene's size and background).
+// With a team (thread_team.hpp), a banded render's parts run on its threads.
 void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_stats = nullptr,
-                    FillStats* stats = nullptr, int threads = 1);
+                    FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr);
 // Whether render_zbuffer with `threads` sets a modelled scene up whole and fills it band by band
 // (at least two threads, at most kBandedTriangles world triangles: banded_fill.hpp, 320 B a
 // triangle set up) rather than streaming it.

@@ -5,17 +5,21 @@
 #pragma once
 
 #include <exception>
+#include <functional>
 #include <system_error>
 #include <thread>
 #include <vector>
+
+#include "solver/util/thread_team.hpp"
 
 namespace frustum {
 
 // Calls work(k) once for every k in 0 … parts − 1 and returns when all have returned. An
 // exception from a part is rethrown here once every part has ended (the lowest part's, when
-// several threw), never lost on its thread.
+// several threw), never lost on its thread. With a team (thread_team.hpp), the parts run on its
+// threads instead of threads started for them.
 template <typename Work>
-void side_by_side(int parts, const Work& work) {
+void side_by_side(int parts, const Work& work, ThreadTeam* team = nullptr) {
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(parts > 0 ? parts : 0));
   const auto run = [&](int k) {
     try {
@@ -24,6 +28,12 @@ void side_by_side(int parts, const Work& work) {
       errors[static_cast<std::size_t>(k)] = std::current_exception();
     }
   };
+  if (team && parts > 1) {
+    team->run(parts, std::function<void(int)>(run));
+    for (const std::exception_ptr& e : errors)
+      if (e) std::rethrow_exception(e);
+    return;
+  }
   std::vector<std::thread> pool;
   int started = 1;
   for (; started < parts; ++started) {
