@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstring>
 
 #include "solver/util/side_by_side.hpp"
@@ -90,15 +91,18 @@ bool frame_runs(const Image<std::uint32_t>& image, FrameRuns& out, int threads, 
   out.width = image.width;
   out.height = image.height;
   if (image.width >= (1 << 24)) return false;  // a run's length must fit 24 bits
-  // Parts of whole rows, scanned side by side, each with its own palette.
-  const int parts = std::max(1, std::min(threads, image.height / 64));
+  // Parts of whole rows, each scanned with its own palette; with threads, four parts a thread,
+  // taken in turn as the threads finish one (a frame's rows are not alike).
+  const int parts = threads <= 1 ? 1 : std::max(1, std::min(image.height / 64, 4 * threads));
   std::vector<FrameRuns> part(static_cast<std::size_t>(parts));
   std::vector<char> fits(static_cast<std::size_t>(parts), 0);
+  std::atomic<int> next{0};
   side_by_side(
-      parts,
-      [&](int k) {
-        fits[k] =
-            scan_rows(image, image.height * k / parts, image.height * (k + 1) / parts, part[k]);
+      std::min(threads, parts),
+      [&](int) {
+        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < parts;)
+          fits[k] =
+              scan_rows(image, image.height * k / parts, image.height * (k + 1) / parts, part[k]);
       },
       team);
   if (std::find(fits.begin(), fits.end(), 0) != fits.end()) return false;

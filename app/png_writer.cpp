@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdio>
 #include <vector>
 
@@ -83,42 +84,41 @@ std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int th
                                          ThreadTeam* team) {
   const auto stride = static_cast<std::size_t>((runs.width * bits + 7) / 8) + 1;  // + filter byte
   const int pieces = std::max(1, (runs.height + kRowsPerPiece - 1) / kRowsPerPiece);
-  const int parts = std::max(1, std::min(threads, pieces));
-  // A part's consecutive pieces, each compressed on its own, one after the other into `out`,
-  // with one deflate state (reset for each piece) and one row buffer: allocated once a part.
-  struct Part {
+  const int workers = std::max(1, std::min(threads, pieces));
+  // Each piece compressed on its own into its own buffer. The workers take the pieces in turn as
+  // they finish one (a frame's rows are not alike: the paper plane's upper half took twice as
+  // long as its lower half), each with one deflate state (reset for each piece) and one row
+  // buffer.
+  struct Piece {
     std::vector<unsigned char> out;
     uLong adler = 0, length = 0;
     bool ok = false;
   };
-  std::vector<Part> part(static_cast<std::size_t>(parts));
+  std::vector<Piece> piece(static_cast<std::size_t>(pieces));
+  std::atomic<int> next{0};
   side_by_side(
-      parts,
-      [&](int k) {
-        Part& p = part[static_cast<std::size_t>(k)];
-        const int first = pieces * k / parts, last = pieces * (k + 1) / parts;
+      workers,
+      [&](int) {
         z_stream z{};
         if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK) return;
         std::vector<unsigned char> raw(stride * kRowsPerPiece);
-        p.adler = adler32(0L, Z_NULL, 0);
-        p.ok = true;
-        for (int piece = first; piece < last && p.ok; ++piece) {
-          const int r0 = piece * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
+        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < pieces;) {
+          Piece& p = piece[static_cast<std::size_t>(k)];
+          const int r0 = k * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
           const std::size_t size = stride * static_cast<std::size_t>(r1 - r0);
           for (int r = r0; r < r1; ++r) {
             unsigned char* row = raw.data() + stride * static_cast<std::size_t>(r - r0);
             row[0] = 0;  // filter type None: a palette row's runs are already repeated bytes
             pack_row(runs, r, bits, row + 1);
           }
-          p.adler = adler32(p.adler, raw.data(), static_cast<uInt>(size));
-          p.length += static_cast<uLong>(size);
-          const std::size_t at = p.out.size();
-          p.out.resize(at + deflateBound(&z, static_cast<uLong>(size)) + 16);  // + a sync flush
+          p.adler = adler32(adler32(0L, Z_NULL, 0), raw.data(), static_cast<uInt>(size));
+          p.length = static_cast<uLong>(size);
+          p.out.resize(deflateBound(&z, static_cast<uLong>(size)) + 16);  // + a sync flush
           z.next_in = raw.data();
           z.avail_in = static_cast<uInt>(size);
-          z.next_out = p.out.data() + at;
-          z.avail_out = static_cast<uInt>(p.out.size() - at);
-          const bool end = piece == pieces - 1;
+          z.next_out = p.out.data();
+          z.avail_out = static_cast<uInt>(p.out.size());
+          const bool end = k == pieces - 1;
           const int rc = deflate(&z, end ? Z_FINISH : Z_SYNC_FLUSH);
           p.ok = (end ? rc == Z_STREAM_END : rc == Z_OK && z.avail_out > 0) && z.avail_in == 0;
           p.out.resize(p.out.size() - z.avail_out);
@@ -130,7 +130,7 @@ std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int th
   // CMF 0x78: deflate with a 32 KB window; FLG 0x01: the fastest level, 0x7801 divisible by 31.
   std::vector<unsigned char> stream = {0x78, 0x01};
   uLong adler = adler32(0L, Z_NULL, 0);
-  for (const Part& p : part) {
+  for (const Piece& p : piece) {
     if (!p.ok) return {};
     stream.insert(stream.end(), p.out.begin(), p.out.end());
     adler = adler32_combine(adler, p.adler, static_cast<z_off_t>(p.length));

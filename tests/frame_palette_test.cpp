@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <random>
 
 #include "solver/raster/fill.hpp"
@@ -37,9 +38,10 @@ TEST(FramePalette, PartsScannedSideBySideGiveTheOnePaletteAndTheSameRuns) {
   const std::vector<std::uint32_t> order = {colour(0), colour(1), colour(4),
                                             colour(3), colour(2), colour(5)};
   EXPECT_EQ(one.palette, order);
-  for (const int threads : {2, 3}) {
+  ThreadTeam team(3);
+  for (const int threads : {2, 3, 8, -2, -3, -8}) {  // negative: on the team's threads
     FrameRuns parts;
-    ASSERT_TRUE(frame_runs(img, parts, threads));
+    ASSERT_TRUE(frame_runs(img, parts, std::abs(threads), threads < 0 ? &team : nullptr));
     EXPECT_EQ(parts.palette, one.palette) << threads;
     EXPECT_EQ(parts.runs, one.runs) << threads;
     EXPECT_EQ(parts.row_start, one.row_start) << threads;

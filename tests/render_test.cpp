@@ -785,16 +785,17 @@ long inflated_image_data(const std::string& bytes, std::size_t capacity) {
 // Writes the frame with `frustum render`'s writer, reads it back with libpng's own reader and
 // checks every channel of every pixel: row r of the file is the frame's row height − 1 − r
 // (raster rows go up, a PNG's down). Returns the file's colour type (−1 after a failure).
-// Written again with the frame scanned by 2 and 3 threads: the same bytes.
+// Written again with the frame scanned by 2, 3 and 8 threads, started or a team's: the same bytes.
 int png_round_trip(const Image<std::uint32_t>& img, const std::string& name) {
   const std::string path = ::testing::TempDir() + name;
   if (!app::write_color_png(path, img)) {
     ADD_FAILURE() << path << ": not written";
     return -1;
   }
-  for (const int threads : {2, 3}) {
+  ThreadTeam team(3);
+  for (const int threads : {2, 3, 8, -2, -3, -8}) {  // negative: on the team's threads
     const std::string again = ::testing::TempDir() + std::to_string(threads) + name;
-    EXPECT_TRUE(app::write_color_png(again, img, threads));
+    EXPECT_TRUE(app::write_color_png(again, img, std::abs(threads), threads < 0 ? &team : nullptr));
     EXPECT_EQ(file_bytes(again), file_bytes(path)) << threads << " threads";
   }
   png_image read{};
