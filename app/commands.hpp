@@ -94,6 +94,8 @@ struct RenderOptions {
   std::optional<std::string> method;        // zbuffer | scanline
   int threads = 1;  // ≥ 2: fill.hpp's render_zbuffer (and the PNG's colour scan) share the work
 };
+// The most threads a render starts (--threads allows up to 1024): more would only wait.
+inline constexpr int kMaxRenderThreads = 64;
 // target: a frame the caller keeps from one render to the next, reused when the size is the
 // same (bench/render_race.cpp, as llvmpipe's context keeps its framebuffer); none: a new one.
 int run_render(const RenderOptions& options, const Output& o, Frame* target = nullptr);

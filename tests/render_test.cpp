@@ -529,14 +529,19 @@ TEST(RenderKind, StreamedZBufferEqualsTheStagesOneAfterTheOther) {
   // With threads, the scene (5,296 world triangles) set up whole and filled band by band, the
   // threads taking bands in turn: the same frame.
   ASSERT_EQ(world_triangle_count(scene), flatten(scene).triangles.size());
-  for (const int threads : {2, 4}) {
+  // Also on a team of threads kept from one render to the next (as `frustum render` keeps one
+  // for a render and its PNG), with as many threads as asked for, fewer, or more.
+  ThreadTeam team(3);
+  for (const int threads : {2, 4, -2, -3, -5}) {  // negative: that many, on the team
     GeometryStats threaded_gs;
     FillStats threaded_fs;
-    const Frame threaded = render_zbuffer(scene, &threaded_gs, &threaded_fs, threads);
-    EXPECT_EQ(threaded.color.data, z.color.data);
-    EXPECT_EQ(threaded.depth.data, z.depth.data);
-    EXPECT_EQ(threaded_gs.window, gs.window);
-    EXPECT_EQ(threaded_fs.written, fs.written);
+    Frame threaded;
+    render_zbuffer(scene, threaded, &threaded_gs, &threaded_fs, std::abs(threads),
+                   threads < 0 ? &team : nullptr);
+    EXPECT_EQ(threaded.color.data, z.color.data) << threads;
+    EXPECT_EQ(threaded.depth.data, z.depth.data) << threads;
+    EXPECT_EQ(threaded_gs.window, gs.window) << threads;
+    EXPECT_EQ(threaded_fs.written, fs.written) << threads;
   }
   // Without names the walk yields the same triangles, and counts the same objects.
   const FlatScene named = flatten(scene), unnamed = flatten(scene, false);

@@ -92,8 +92,11 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
   // joined in drawing order.
   const FlatScene flat = flatten(scene, false);
   const std::size_t count = flat.triangles.size();
+  // Contiguous parts, one a thread: no more than the team has (a team's extra parts would run
+  // one after another on the caller's thread).
+  const int usable = team ? std::min(threads, team->threads()) : threads;
   const int parts = static_cast<int>(
-      std::clamp<std::size_t>(count / kMinTrianglesPerPart, 1, static_cast<std::size_t>(threads)));
+      std::clamp<std::size_t>(count / kMinTrianglesPerPart, 1, static_cast<std::size_t>(usable)));
   std::vector<std::vector<RasterTriangle>> setups(static_cast<std::size_t>(parts));
   std::vector<GeometryStage> stages;  // made here: each reads the scene only once made
   for (int k = 0; k < parts; ++k) stages.emplace_back(scene);
