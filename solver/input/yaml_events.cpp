@@ -128,11 +128,13 @@ FirstDocument read_first_document(const std::string& text, YAML::EventHandler& h
   const auto tag_of = [](const yaml_char_t* tag, bool plain) {
     return tag ? text_of(tag) : std::string(plain ? "?" : "!");
   };
+  YAML::Mark first;  // where the document's first node is
   for (;;) {
     event.read(parser);
     const yaml_event_t& e = event.e;
     const YAML::Mark mark = mark_of(e.start_mark);
     if (!started) {
+      first = mark;
       handler.OnDocumentStart(mark);  // yaml-cpp marks the document where its first node is
       started = true;
     }
@@ -191,8 +193,19 @@ FirstDocument read_first_document(const std::string& text, YAML::EventHandler& h
         try {
           event.read(parser);
           if (event.e.type == YAML_DOCUMENT_START_EVENT) out.second = mark_of(event.e.start_mark);
-        } catch (const YAML::ParserException&) {
-          // Text after the first document that is not YAML: only the first document is read.
+        } catch (const YAML::ParserException& after) {
+          // Text after the document that starts no other one: a line indented less than the
+          // document's first line ends the document there (a space before the first key, a
+          // byte-order mark read as a character). Never dropped in silence: yaml-cpp's Load
+          // kept the document above and lost the rest (a student's answers below `student:`).
+          if (after.mark.line > first.line && after.mark.column < first.column)
+            throw YAML::ParserException(
+                after.mark,
+                "this line is indented less than the first line (column " +
+                    std::to_string(first.column + 1) +
+                    "), which ends the document before it; indent the top-level keys alike");
+          throw YAML::ParserException(after.mark,
+                                      "text after the end of the document: " + after.msg);
         }
         return out;
       }

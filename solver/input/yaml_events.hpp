@@ -25,7 +25,8 @@ struct FirstDocument {
 // counts bytes; an empty value marked after its key). libyaml scans the text: it reads the
 // same YAML several times faster than yaml-cpp's scanner, which was most of the cost of reading
 // a class's answer files. Then looks for the start of a second document; text after the first
-// document that is not YAML does not count as one.
+// document that starts none is refused (a line indented less than the document's first line,
+// which ended the document: its lines are never dropped in silence).
 //
 // Throws YAML::ParserException for text that is not YAML (libyaml's problem and its context,
 // e.g. "did not find expected key (while parsing a block mapping that starts at line 2,
