@@ -12,6 +12,7 @@
 #include "solver/numeric/precision.hpp"
 #include "solver/raster/scene.hpp"
 #include "solver/raster/zbuffer.hpp"
+#include "solver/util/thread_team.hpp"
 
 namespace frustum {
 struct Frame;
@@ -94,8 +95,10 @@ struct RenderOptions {
   std::optional<std::string> method;        // zbuffer | scanline
   int threads = 1;  // ≥ 2: fill.hpp's render_zbuffer (and the PNG's colour scan) share the work
 };
-// The most threads a render starts (--threads allows up to 1024): more would only wait.
-inline constexpr int kMaxRenderThreads = 64;
+// The threads a render with --threads N shares between its steps and its PNG writer, started
+// now (so that they start while the scene is read): none for one thread, at most 64 (--threads
+// allows 1024; a 1920 × 1080 frame has 34 bands to fill and 17 pieces to compress).
+std::optional<ThreadTeam> render_team(int threads);
 // target: a frame the caller keeps from one render to the next, reused when the size is the
 // same (bench/render_race.cpp, as llvmpipe's context keeps its framebuffer); none: a new one.
 int run_render(const RenderOptions& options, const Output& o, Frame* target = nullptr);

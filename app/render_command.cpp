@@ -112,12 +112,15 @@ std::variant<Scene, int> load_render_scene(const RenderOptions& opt, const Outpu
   return std::move(scene);
 }
 
+std::optional<ThreadTeam> render_team(int threads) {
+  if (threads < 2) return std::nullopt;
+  return std::optional<ThreadTeam>(std::in_place, std::min(threads, 64));
+}
+
 int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
-  // The threads the render and the PNG share, started while the scene is read: one start for
-  // the render's four rounds of work in parts (geometry, fill, the PNG's scan and compression).
-  // At most kMaxRenderThreads: a 1920 × 1080 frame has 34 bands and 17 pieces to compress.
-  std::optional<ThreadTeam> team;
-  if (opt.threads >= 2) team.emplace(std::min(opt.threads, kMaxRenderThreads));
+  // One start for the render's four rounds of work in parts (geometry, fill, the PNG's scan and
+  // compression), while the scene is read.
+  std::optional<ThreadTeam> team = render_team(opt.threads);
   ThreadTeam* const helpers = team ? &*team : nullptr;
   std::variant<Scene, int> loaded = load_render_scene(opt, o);
   if (const int* status = std::get_if<int>(&loaded)) return *status;

@@ -107,8 +107,7 @@ struct Batch {
 // The llvmpipe side, start to end; returns the image as read back (raster rows, y up).
 const Image<std::uint32_t>& render_llvmpipe(const app::RenderOptions& opt, Llvmpipe& gl) {
   // The PNG writer's threads, started while the scene is read, as `frustum render` starts them.
-  std::optional<ThreadTeam> team;
-  if (opt.threads >= 2) team.emplace(std::min(opt.threads, app::kMaxRenderThreads));
+  std::optional<ThreadTeam> team = app::render_team(opt.threads);
   const Scene scene = load(opt);
   // The vertex buffer: world positions, and face normals (n = (v1 − v0) × (v2 − v0), the
   // side shade() lights) when there is a light, filled by Frustum's hierarchy walk.

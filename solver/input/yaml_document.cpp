@@ -490,7 +490,7 @@ std::optional<std::string> plain_first_line(const std::string& text, const std::
   while (i < n && word_character(text[i])) ++i;
   if (i == start || !name_character(text[start])) return std::nullopt;
   std::string word = text.substr(start, i - start);
-  if (word == "null" || word == "Null" || word == "NULL") return std::nullopt;
+  if (null_scalar(word)) return std::nullopt;
   while (i < n && text[i] == ' ') ++i;
   if (i == n) return word;
   if (text[i] == '\r') ++i;

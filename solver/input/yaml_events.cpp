@@ -93,11 +93,6 @@ struct Event {
 
 std::string text_of(const yaml_char_t* s) { return s ? reinterpret_cast<const char*>(s) : ""; }
 
-// yaml-cpp's null: a plain, untagged ~, null, Null, NULL or nothing.
-bool null_scalar(const std::string& value) {
-  return value.empty() || value == "~" || value == "null" || value == "Null" || value == "NULL";
-}
-
 YAML::EmitterStyle::value style_of(bool flow, bool block) {
   return flow    ? YAML::EmitterStyle::Flow
          : block ? YAML::EmitterStyle::Block
@@ -105,6 +100,10 @@ YAML::EmitterStyle::value style_of(bool flow, bool block) {
 }
 
 }  // namespace
+
+bool null_scalar(std::string_view value) {
+  return value.empty() || value == "~" || value == "null" || value == "Null" || value == "NULL";
+}
 
 FirstDocument read_first_document(const std::string& text, YAML::EventHandler& handler) {
   Parser parser(text);

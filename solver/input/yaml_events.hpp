@@ -6,12 +6,16 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace frustum {
 
 // Collections nested deeper than this are refused (yaml-cpp's own parser stops at 500 levels;
 // the same limit keeps every later walk of the tree shallow).
 inline constexpr int kMaxYamlDepth = 500;
+
+// yaml-cpp's null, for a plain untagged scalar: ~, null, Null, NULL or nothing.
+bool null_scalar(std::string_view value);
 
 struct FirstDocument {
   bool any = false;                  // the text holds a document
