@@ -388,8 +388,8 @@ def main():
             "with `--threads` = LP_NUM_THREADS: the paper plane's geometry and fill shared by that many threads, "
             "the 1 M scene's geometry and set-up on a thread beside the fill (at most two). The PNG writer scans the frame's "
             "colours with as many threads on both sides. The race's process allocates with mimalloc, as the "
-            "`frustum` binary does (both sides share it; with glibc's malloc, each Frustum run after an llvmpipe run "
-            "took 115 fresh pages where it otherwise takes 8, 2 ms of a 6 ms render with two threads). CPU time is "
+            "`frustum` binary does (both sides share it; with glibc's malloc, Frustum's render after an llvmpipe run "
+            "faulted in afresh the memory llvmpipe had given back: performance-notes.md). CPU time is "
             "the process's (llvmpipe's threads included).\n")
         say("| scene | side | threads | wall min / median / max (s) | CPU (s) |")
         say("| --- | --- | ---: | ---: | ---: |")
