@@ -161,10 +161,10 @@ TEST(ThreadTeam, EveryPartOfEveryRoundRunsOnceOnTheTeamsThreads) {
       EXPECT_STREQ(e.what(), "part 1");
     }
     EXPECT_EQ(ended.load(), std::max(size, 2));
-    int after = 0;
+    std::atomic<int> after{0};  // counted on every thread of the team
     side_by_side(
         size, [&](int) { ++after; }, &team);  // the team still works
-    EXPECT_EQ(after, size);
+    EXPECT_EQ(after.load(), size);
   }
 }
 
