@@ -280,9 +280,9 @@ int main(int argc, char** argv) {
   render
       ->add_option(
           "--threads", render_opt.threads,
-          "2 or more: a modelled scene's geometry and fill shared by that many threads, "
-          "a larger scene's geometry and set-up on a thread beside the fill (the same image; "
-          "default 1)")
+          "2 or more: the render shared by that many threads (a modelled scene's geometry "
+          "in parts, then the frame in bands; a larger scene streamed, each thread drawing "
+          "strips of rows), the same image; default 1")
       ->check(CLI::Range(1, 1024));
   render->footer(examples(
       {"frustum render problems/seeds/paperplane.yaml -o paperplane.png --depth depth.png"}));

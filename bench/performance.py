@@ -386,7 +386,7 @@ def main():
             "rasterizes into a depth-tested frame, and its pixels go through the same PNG writer (a palette image "
             "when the frame has at most 256 colours, as both frames here do). Frustum renders "
             "with `--threads` = LP_NUM_THREADS: the paper plane's geometry and fill shared by that many threads, "
-            "the 1 M scene's geometry and set-up on a thread beside the fill (at most two). The PNG writer scans the frame's "
+            "the 1 M scene streamed by as many threads, each drawing its strips of rows. The PNG writer scans the frame's "
             "colours with as many threads on both sides. The race's process allocates with mimalloc, as the "
             "`frustum` binary does (both sides share it; with glibc's malloc, Frustum's render after an llvmpipe run "
             "faulted in afresh the memory llvmpipe had given back: performance-notes.md). CPU time is "

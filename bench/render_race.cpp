@@ -270,17 +270,14 @@ int race(int argc, char** argv) {
   const std::string llvmpipe_png = (std::filesystem::path(out_dir) / "llvmpipe.png").string();
   const char* lp_env = std::getenv("LP_NUM_THREADS");
   const std::string lp_threads = lp_env ? lp_env : "unset";
-  // Frustum gets as many threads as llvmpipe (unset: one per core, Mesa's default); on a scene of
-  // more than kBandedTriangles its render uses at most two (the geometry and set-up beside the
-  // fill).
+  // Frustum gets as many threads as llvmpipe (unset: one per core, Mesa's default).
   const int asked = lp_env ? std::max(1, std::atoi(lp_env))
                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   opt.threads = asked;
 
   // Untimed: the frame size, the context, Frustum's own image for the comparison, the fill alone.
   const Scene scene = load(opt);
-  const int used = zbuffer_threads(scene, asked);
-  const std::string frustum_threads = std::to_string(used);
+  const std::string frustum_threads = std::to_string(asked);
   Llvmpipe gl(scene.width, scene.height);
   GeometryStats gs;
   const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
@@ -369,11 +366,8 @@ int race(int argc, char** argv) {
         lp_threads, lp_env ? "" : " (Mesa's default: one per core)", asked,
         asked == 1 ? std::string(" (one thread)")
         : zbuffer_banded(scene, asked)
-            ? fmt::format(" (geometry and fill shared by {} threads)", used)
-        : used == asked
-            ? fmt::format(" (the geometry and set-up on one thread, the fill on the other)")
-            : fmt::format(", which uses 2 threads (the geometry and set-up beside the fill): not "
-                          "N threads against N"),
+            ? fmt::format(" (the geometry in {} parts, then the frame in bands)", asked)
+            : fmt::format(" (streamed by {} threads, each drawing its strips of rows)", asked),
         threads);
     std::cout << "side      threads  wall min / median / max (s)  CPU median (s)\n";
     auto row = [](const char* name, const std::string& threads, const Times& t) {

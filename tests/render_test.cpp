@@ -25,6 +25,8 @@
 #include "solver/raster/certified_trace.hpp"
 #include "solver/raster/fill.hpp"
 #include "solver/raster/scanline.hpp"
+#include "solver/raster/striped_render.hpp"
+#include "solver/util/side_by_side.hpp"
 #include "solver/visibility/mesh.hpp"
 #include "test_util.hpp"
 
@@ -552,9 +554,10 @@ TEST(RenderKind, StreamedZBufferEqualsTheStagesOneAfterTheOther) {
 }
 
 // A scene of more world triangles than a modelled one (kBandedTriangles) streams: with threads,
-// the walk, the geometry and the set-up on a thread of their own handing chunks to the fill.
-// Boxes in a grid, some cut by the near plane and some off to the sides: the same frame, depths
-// and statistics as on one thread, and as the stages run one after the other.
+// each walks the scene and draws its own strips of rows. Boxes in a grid, some cut by the near
+// plane and some off to the sides: the same frame, depths and statistics as on one thread, and
+// as the stages run one after the other, for any number of threads, on a team or not, and for
+// frames whose height is not a multiple of the strips'.
 TEST(RenderKind, ALargeSceneStreamedWithThreadsGivesTheFrameOfOneThread) {
   Scene s;
   s.width = 96;
@@ -567,27 +570,82 @@ TEST(RenderKind, ALargeSceneStreamedWithThreadsGivesTheFrameOfOneThread) {
   box.repeat = SceneObject::Repeat{{-40, 0, -70}, {40, 0, 0}, Vec3d(1.0, 0, 1.0)};
   s.objects.push_back(box);
   ASSERT_GT(world_triangle_count(s), kBandedTriangles);
-  EXPECT_EQ(zbuffer_threads(s, 4), 2);
-  GeometryStats gs, one_gs;
-  FillStats fs, one_fs;
-  const std::vector<WindowTriangle> tris = geometry(s, flatten(s, false), &gs);
-  const Frame staged = render_zbuffer(tris, s.width, s.height, s.background, &fs);
-  const Frame one = render_zbuffer(s, &one_gs, &one_fs, 1);
-  EXPECT_GT(gs.clipped, 0);
-  EXPECT_GT(gs.outside, 0);
-  EXPECT_GT(fs.written, 1000);
-  EXPECT_EQ(one.color.data, staged.color.data);
-  EXPECT_EQ(one.depth.data, staged.depth.data);
-  for (const int threads : {2, 3}) {
-    GeometryStats threaded_gs;
-    FillStats threaded_fs;
-    const Frame threaded = render_zbuffer(s, &threaded_gs, &threaded_fs, threads);
-    EXPECT_EQ(threaded.color.data, staged.color.data) << threads;
-    EXPECT_EQ(threaded.depth.data, staged.depth.data) << threads;
-    EXPECT_EQ(threaded_gs.window, gs.window);
-    EXPECT_EQ(threaded_gs.clipped, gs.clipped);
-    EXPECT_EQ(threaded_fs.fragments, fs.fragments);
-    EXPECT_EQ(threaded_fs.written, fs.written);
+  ThreadTeam team(3);
+  for (const int height : {64, 61, 7}) {
+    s.height = height;
+    GeometryStats gs, one_gs;
+    FillStats fs, one_fs;
+    const std::vector<WindowTriangle> tris = geometry(s, flatten(s, false), &gs);
+    const Frame staged = render_zbuffer(tris, s.width, s.height, s.background, &fs);
+    const Frame one = render_zbuffer(s, &one_gs, &one_fs, 1);
+    EXPECT_GT(gs.clipped, 0);
+    EXPECT_GT(gs.outside, 0);
+    EXPECT_GT(fs.written, 30 * height);
+    EXPECT_EQ(one.color.data, staged.color.data);
+    EXPECT_EQ(one.depth.data, staged.depth.data);
+    for (const int threads : {2, 3, 4, 7, -2, -3, -5}) {  // negative: that many, on the team
+      GeometryStats threaded_gs;
+      FillStats threaded_fs;
+      Frame threaded;
+      render_zbuffer(s, threaded, &threaded_gs, &threaded_fs, std::abs(threads),
+                     threads < 0 ? &team : nullptr);
+      EXPECT_EQ(threaded.color.data, staged.color.data) << threads << " " << height;
+      EXPECT_EQ(threaded.depth.data, staged.depth.data) << threads << " " << height;
+      EXPECT_EQ(threaded_gs.triangles, gs.triangles);
+      EXPECT_EQ(threaded_gs.window, gs.window);
+      EXPECT_EQ(threaded_gs.clipped, gs.clipped);
+      EXPECT_EQ(threaded_gs.outside, gs.outside);
+      EXPECT_EQ(threaded_gs.culled, gs.culled);
+      EXPECT_EQ(threaded_fs.triangles, fs.triangles);
+      EXPECT_EQ(threaded_fs.fragments, fs.fragments);
+      EXPECT_EQ(threaded_fs.written, fs.written);
+    }
+  }
+}
+
+// Strips: about four a thread, between 8 and 64 rows, so that every thread has a share of any
+// frame and few small triangles straddle two.
+TEST(RenderKind, StripsGiveEveryThreadAShareOfTheFrame) {
+  EXPECT_EQ(strip_rows(1080, 1), 64);
+  EXPECT_EQ(strip_rows(1080, 2), 64);
+  EXPECT_EQ(strip_rows(1080, 8), 33);
+  EXPECT_EQ(strip_rows(1080, 64), 8);
+  EXPECT_EQ(strip_rows(7, 2), 8);
+  for (const int height : {7, 100, 1080, 4320})
+    for (const int threads : {2, 3, 8}) {
+      const int rows = strip_rows(height, threads);
+      const int strips = (height + rows - 1) / rows;
+      if (height >= 4 * threads * kMinStripRows) {
+        EXPECT_GE(strips, 2 * threads) << height;
+      }
+    }
+}
+
+// The hierarchy walk copies nothing of the scene (not the exact coordinates a scene read for the
+// render kind keeps, whose reference counts are not atomic): threads walking one scene side by
+// side each get every world triangle, in order, as one walk does.
+TEST(RenderKind, ThreadsWalkOneSceneSideBySide) {
+  const ProblemSet set = load_problem_set(test::source_path("problems/seeds/paperplane.yaml"));
+  ASSERT_FALSE(set.problems.empty());
+  const Scene& plane = std::any_cast<const RenderGiven&>(set.problems[0].given).spec.scene;
+  ASSERT_FALSE(plane.objects.empty());
+  const FlatScene flat = flatten(plane, false);
+  ASSERT_GT(flat.triangles.size(), 1000u);
+  std::vector<std::vector<WorldTriangle>> walked(4);
+  side_by_side(4, [&](int k) {
+    for (int round = 0; round < 20; ++round) {
+      std::vector<WorldTriangle>& mine = walked[static_cast<std::size_t>(k)];
+      mine.clear();
+      for_each_world_triangle(plane, [&](const WorldTriangle& t) { mine.push_back(t); });
+    }
+  });
+  for (const std::vector<WorldTriangle>& mine : walked) {
+    ASSERT_EQ(mine.size(), flat.triangles.size());
+    for (std::size_t t = 0; t < mine.size(); ++t) {
+      EXPECT_EQ(mine[t].v, flat.triangles[t].v) << t;
+      EXPECT_EQ(mine[t].object, flat.triangles[t].object) << t;
+      EXPECT_EQ(mine[t].face, flat.triangles[t].face) << t;
+    }
   }
 }
 

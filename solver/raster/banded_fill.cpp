@@ -20,6 +20,15 @@ struct Bins {
   std::vector<const RasterTriangle*> index;
 };
 
+// A thread's part of the geometry: its stage and its set-up triangles, on cache lines of their
+// own. The stage's counts and the vector's end change at every triangle, and two threads that
+// write one cache line pass it back and forth between their cores at every write.
+struct alignas(128) Part {
+  explicit Part(const Scene& scene) : stage(scene) {}
+  GeometryStage stage;
+  std::vector<RasterTriangle> triangles;
+};
+
 // Triangles in drawing order: one part after another (render_in_bands's, set up side by side).
 using Parts = std::vector<std::span<const RasterTriangle>>;
 
@@ -58,13 +67,17 @@ void fill_parts_in_bands(const Parts& parts, Frame& frame, int width, int height
   const Bins bins = bin_by_band(parts, width, height, bands);
   std::atomic<int> next_band{0};
   const auto worker = [&](FillStats& counts) {
-    FillStats* counted = stats ? &counts : nullptr;  // counting costs the span loop a reduction
+    // Counted on this thread's stack and stored once: the workers' counts side by side in one
+    // array share a cache line, which the cores would pass back and forth at every triangle.
+    FillStats mine;
+    FillStats* counted = stats ? &mine : nullptr;  // counting costs the span loop a reduction
     for (int b; (b = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) {
       const int j0 = b * kBandRows, j1 = std::min(height, j0 + kBandRows) - 1;
       frame.clear_rows(j0, j1, background);
       for (int k = bins.start[b]; k < bins.start[b + 1]; ++k)
         draw_triangle_rows(*bins.index[k], frame, j0, j1, counted);
     }
+    counts = mine;
   };
   const int workers = std::max(1, std::min(threads, bands));
   std::vector<FillStats> counts(static_cast<std::size_t>(workers));
@@ -97,9 +110,9 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
   const int usable = team ? std::min(threads, team->threads()) : threads;
   const int parts = static_cast<int>(
       std::clamp<std::size_t>(count / kMinTrianglesPerPart, 1, static_cast<std::size_t>(usable)));
-  std::vector<std::vector<RasterTriangle>> setups(static_cast<std::size_t>(parts));
-  std::vector<GeometryStage> stages;  // made here: each reads the scene only once made
-  for (int k = 0; k < parts; ++k) stages.emplace_back(scene);
+  std::vector<Part> setups;  // made here: each stage reads the scene only once made
+  setups.reserve(static_cast<std::size_t>(parts));
+  for (int k = 0; k < parts; ++k) setups.emplace_back(scene);
   side_by_side(
       parts,
       [&](int k) {
@@ -107,9 +120,9 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
                               count * static_cast<std::size_t>(k) / static_cast<std::size_t>(parts),
                           hi = count * static_cast<std::size_t>(k + 1) /
                                static_cast<std::size_t>(parts);
-        GeometryStage& stage = stages[static_cast<std::size_t>(k)];
+        GeometryStage& stage = setups[static_cast<std::size_t>(k)].stage;
         std::vector<WindowTriangle> window;  // one world triangle's, reused
-        std::vector<RasterTriangle>& out = setups[static_cast<std::size_t>(k)];
+        std::vector<RasterTriangle>& out = setups[static_cast<std::size_t>(k)].triangles;
         out.reserve(hi - lo);
         for (std::size_t source = lo; source < hi; ++source) {
           window.clear();
@@ -121,13 +134,16 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
   // Numbered in drawing order across the parts, then filled from the parts as they are (no
   // copy into one array: a megabyte of fresh memory for the paper plane's 3,520).
   int source = 0;
-  for (std::vector<RasterTriangle>& part : setups)
-    for (RasterTriangle& t : part) t.source = source++;
-  fill_parts_in_bands(Parts(setups.begin(), setups.end()), frame, scene.width, scene.height,
-                      scene.background, stats, threads, team);
+  Parts filled;
+  for (Part& part : setups) {
+    for (RasterTriangle& t : part.triangles) t.source = source++;
+    filled.emplace_back(part.triangles);
+  }
+  fill_parts_in_bands(filled, frame, scene.width, scene.height, scene.background, stats, threads,
+                      team);
   if (geometry_stats) {
     *geometry_stats = GeometryStats{};
-    for (const GeometryStage& stage : stages) *geometry_stats += stage.stats;
+    for (const Part& part : setups) *geometry_stats += part.stage.stats;
   }
 }
 

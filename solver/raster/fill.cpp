@@ -1,16 +1,12 @@
 #include "solver/raster/fill.hpp"
 
 #include <algorithm>
-#include <condition_variable>
-#include <deque>
-#include <exception>
 #include <limits>
-#include <mutex>
-#include <thread>
 #include <type_traits>
 
 #include "solver/raster/banded_fill.hpp"
 #include "solver/raster/span_fill.hpp"
+#include "solver/raster/striped_render.hpp"
 
 namespace frustum {
 
@@ -168,60 +164,6 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
   return frame;
 }
 
-namespace {
-
-// Set-up triangles from the geometry thread to the fill, in drawing order, at most kInFlight
-// chunks at a time; drawn chunks go back to the producer (no allocation once warm).
-class ChunkQueue {
- public:
-  using Chunk = std::vector<RasterTriangle>;
-  static constexpr std::size_t kChunk = 1024, kInFlight = 8;
-  Chunk take() {
-    std::unique_lock lock(mutex_);
-    changed_.wait(lock, [&] { return full_.size() < kInFlight; });
-    if (empty_.empty()) {
-      Chunk chunk;
-      chunk.reserve(kChunk);
-      return chunk;
-    }
-    Chunk chunk = std::move(empty_.back());
-    empty_.pop_back();
-    chunk.clear();
-    return chunk;
-  }
-  void push(Chunk&& chunk) {
-    const std::lock_guard lock(mutex_);
-    full_.push_back(std::move(chunk));
-    changed_.notify_all();
-  }
-  void close() {
-    const std::lock_guard lock(mutex_);
-    closed_ = true;
-    changed_.notify_all();
-  }
-  // The next chunk in place of `chunk` (drawn: it goes back to the producer); false once the
-  // producer has closed and every chunk is out.
-  bool next(Chunk& chunk) {
-    std::unique_lock lock(mutex_);
-    if (chunk.capacity() > 0) empty_.push_back(std::move(chunk));
-    changed_.wait(lock, [&] { return !full_.empty() || closed_; });
-    if (full_.empty()) return false;
-    chunk = std::move(full_.front());
-    full_.pop_front();
-    changed_.notify_all();
-    return true;
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  std::deque<Chunk> full_;
-  std::vector<Chunk> empty_;
-  bool closed_ = false;
-};
-
-}  // namespace
-
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStats* stats,
                      int threads) {
   Frame frame;
@@ -230,14 +172,10 @@ Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStat
 }
 
 // With threads, a scene of at most kBandedTriangles world triangles is set up whole and filled
-// band by band (banded_fill.hpp); a larger one streams through the fill with the geometry and the
-// set-up on a thread of their own.
+// band by band (banded_fill.hpp); a larger one streams, every thread drawing its strips of rows
+// (striped_render.hpp).
 bool zbuffer_banded(const Scene& scene, int threads) {
   return threads >= 2 && world_triangle_count(scene) <= kBandedTriangles;
-}
-
-int zbuffer_threads(const Scene& scene, int threads) {
-  return zbuffer_banded(scene, threads) ? threads : std::min(threads, 2);
 }
 
 void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
@@ -249,45 +187,19 @@ void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_st
     render_in_bands(scene, frame, geometry_stats, stats, threads, team);
     return;
   }
+  if (threads >= 2) {
+    render_in_strips(scene, frame, geometry_stats, stats, threads, team);
+    return;
+  }
   GeometryStage stage(scene);
   int source = 0, drawn = 0;
   frame.reset(scene.width, scene.height, scene.background);
-  if (threads < 2) {
-    std::vector<WindowTriangle> window;  // one world triangle's, reused
-    for_each_world_triangle(scene, [&](const WorldTriangle& t) {
-      window.clear();
-      stage.add(t, source++, window);
-      for (const WindowTriangle& w : window) draw_triangle(setup_raster(w, drawn++), frame, stats);
-    });
-  } else {
-    ChunkQueue queue;
-    std::exception_ptr error;
-    // The set-up goes with the geometry: the fill's thread draws and does nothing else, so
-    // that the two threads' shares of a scene of small triangles are about even.
-    std::thread geometry_thread([&] {
-      try {
-        ChunkQueue::Chunk chunk = queue.take();
-        std::vector<WindowTriangle> window;  // one world triangle's, reused
-        for_each_world_triangle(scene, [&](const WorldTriangle& t) {
-          window.clear();
-          stage.add(t, source++, window);
-          for (const WindowTriangle& w : window) chunk.push_back(setup_raster(w, drawn++));
-          if (chunk.size() < ChunkQueue::kChunk) return;
-          queue.push(std::move(chunk));
-          chunk = queue.take();
-        });
-        if (!chunk.empty()) queue.push(std::move(chunk));
-      } catch (...) {
-        error = std::current_exception();
-      }
-      queue.close();
-    });
-    ChunkQueue::Chunk chunk;
-    while (queue.next(chunk))
-      for (const RasterTriangle& t : chunk) draw_triangle(t, frame, stats);
-    geometry_thread.join();
-    if (error) std::rethrow_exception(error);
-  }
+  std::vector<WindowTriangle> window;  // one world triangle's, reused
+  for_each_world_triangle(scene, [&](const WorldTriangle& t) {
+    window.clear();
+    stage.add(t, source++, window);
+    for (const WindowTriangle& w : window) draw_triangle(setup_raster(w, drawn++), frame, stats);
+  });
   if (geometry_stats) *geometry_stats = stage.stats;
 }
 

@@ -186,13 +186,12 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 // triangles are kept. The same frame as render_zbuffer(geometry(scene, flatten(scene)), …).
 // threads ≥ 2: a scene of at most kBandedTriangles world triangles (a modelled scene) goes
 // through the geometry in parts side by side and is filled band by band by every thread
-// (banded_fill.hpp); a larger one streams, the walk, the geometry and the set-up on a thread of
-// their own handing set-up triangles to the fill (on the caller's thread, in drawing order) in
-// small chunks. Either way the frame is the same bit for bit.
+// (banded_fill.hpp); a larger one streams on every thread, each walking the scene and drawing
+// its own strips of rows (striped_render.hpp). Either way the frame is the same bit for bit.
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
                      FillStats* stats = nullptr, int threads = 1);
 // The same into a render target the caller keeps (reset to the scene's size and background).
-// With a team (thread_team.hpp), a banded render's parts run on its threads.
+// With a team (thread_team.hpp), the threaded render's parts run on its threads.
 void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_stats = nullptr,
                     FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr);
 // Whether render_zbuffer with `threads` sets a modelled scene up whole and fills it band by band
@@ -200,9 +199,6 @@ void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_s
 // triangle set up) rather than streaming it.
 inline constexpr std::size_t kBandedTriangles = std::size_t(1) << 15;
 bool zbuffer_banded(const Scene& scene, int threads);
-// How many threads render_zbuffer keeps busy: all it is given when banded, at most two
-// otherwise.
-int zbuffer_threads(const Scene& scene, int threads);
 
 // Only what one pixel needs (the render kind): the triangles whose bounds hold the pixel
 // centre compete, in drawing order; no frame is allocated.

@@ -99,18 +99,33 @@ void emit_triangles(const SceneObject& o, Rgb f, Cull c, const std::string* name
 // is +0, as x + t is.
 Vec3d translated(const Vec3d& offset, const Vec3d& p) { return p + offset; }
 
+void flatten_children(const std::vector<SceneObject>& children, const Mat4d& world_from_object,
+                      Rgb f, Cull c, const std::string* name, bool top, FlatSink& out);
+
 // `name` is null when names are not kept; world_from_object = world_from_parent · M_object.
+// The walk reads the scene and copies none of it: the exact coordinates a scene object keeps
+// (GiNaC's, whose reference counts are not atomic) are never touched, so threads may walk one
+// scene side by side.
 void flatten_into(const SceneObject& o, const Mat4d& world_from_object, Rgb fill, Cull cull,
                   const std::string* name, FlatSink& out) {
   const Rgb f = o.fill.value_or(fill);
   const Cull c = o.cull.value_or(cull);
   emit_triangles(o, f, c, name, out,
                  [&](const Vec3d& p) { return transformed(world_from_object, p); });
+  flatten_children(o.children, world_from_object, f, c, name, false, out);
+}
+
+// The children of an object (`top`: the scene's objects, children of the world, whose unnamed
+// ones are "objects[k]"); a repeated child once per copy (its own repeat is not read below it).
+void flatten_children(const std::vector<SceneObject>& children, const Mat4d& world_from_object,
+                      Rgb f, Cull c, const std::string* name, bool top, FlatSink& out) {
   std::string child_name;
-  for (std::size_t k = 0; k < o.children.size(); ++k) {
-    const SceneObject& child = o.children[k];
+  for (std::size_t k = 0; k < children.size(); ++k) {
+    const SceneObject& child = children[k];
     if (name)
-      child_name = child.name.empty() ? *name + ".children[" + std::to_string(k) + "]" : child.name;
+      child_name = !child.name.empty() ? child.name
+                   : top               ? "objects[" + std::to_string(k) + "]"
+                                       : *name + ".children[" + std::to_string(k) + "]";
     const std::string* child_name_or_null = name ? &child_name : nullptr;
     if (!child.repeat) {
       flatten_into(child, compose(world_from_object, child.transform), f, c, child_name_or_null,
@@ -119,43 +134,40 @@ void flatten_into(const SceneObject& o, const Mat4d& world_from_object, Rgb fill
     }
     // Copies: world_from_object · T(index · step) · M_child.
     const SceneObject::Repeat& r = *child.repeat;
-    SceneObject single = child;
-    single.repeat.reset();
     std::string copy;
     // Neither the parent nor the copy moves anything: each copy's matrix is T(offset) itself
     // (compose's rule, decided once for the repeat instead of twice per copy).
-    const bool translation_only = is_identity(world_from_object) && is_identity(single.transform);
-    const Rgb own_fill = single.fill.value_or(f);
-    const Cull own_cull = single.cull.value_or(c);
+    const bool translation_only = is_identity(world_from_object) && is_identity(child.transform);
+    const Rgb own_fill = child.fill.value_or(f);
+    const Cull own_cull = child.cull.value_or(c);
     for (int i = r.from[0]; i <= r.to[0]; ++i)
       for (int j = r.from[1]; j <= r.to[1]; ++j)
         for (int l = r.from[2]; l <= r.to[2]; ++l) {
           const Vec3d offset(i * r.step(0), j * r.step(1), l * r.step(2));
           if (name) copy = copy_name(child_name, r, {i, j, l});
-          if (translation_only && single.children.empty() && finite_without_negative_zero(offset)) {
+          if (translation_only && child.children.empty() && finite_without_negative_zero(offset)) {
             // A copy that only moves (most repeats; identity_keeps(T(offset)) holds): each vertex
             // plus the offset.
-            emit_triangles(single, own_fill, own_cull, name ? &copy : nullptr, out,
+            emit_triangles(child, own_fill, own_cull, name ? &copy : nullptr, out,
                            [&](const Vec3d& p) { return translated(offset, p); });
             continue;
           }
           const Mat4d t = translation(offset);
-          flatten_into(single,
+          flatten_into(child,
                        translation_only && identity_keeps(t)
                            ? t
-                           : compose(compose(world_from_object, t), single.transform),
+                           : compose(compose(world_from_object, t), child.transform),
                        f, c, name ? &copy : nullptr, out);
         }
   }
 }
 
-// The scene's objects as the children of the world.
-SceneObject world_object(const Scene& scene) {
-  SceneObject root;
-  root.children = scene.objects;
-  for (std::size_t k = 0; k < root.children.size(); ++k)
-    if (root.children[k].name.empty()) root.children[k].name = "objects[" + std::to_string(k) + "]";
-  return root;
+// The world: an object of no triangles whose children are the scene's objects.
+void flatten_scene(const Scene& scene, const std::string* name, FlatSink& out) {
+  ++out.objects;
+  if (name) out.names->push_back(*name);
+  flatten_children(scene.objects, Mat4d::Identity(), scene.default_fill, Cull::None, name, true,
+                   out);
 }
 
 }  // namespace
@@ -170,16 +182,19 @@ std::size_t world_triangle_count(const Scene& scene) {
 void for_each_world_triangle(const Scene& scene,
                              const std::function<void(const WorldTriangle&)>& visit) {
   FlatSink sink{visit};
-  const SceneObject root = world_object(scene);
-  flatten_into(root, compose(Mat4d::Identity(), root.transform), scene.default_fill, Cull::None,
-               nullptr, sink);
+  flatten_scene(scene, nullptr, sink);
 }
 
 FlatScene flatten(const Scene& scene, bool names) {
   FlatScene out;
-  const SceneObject root = world_object(scene);
   // Sized once: a million triangles are 88 MB, which doubling would copy and fault in again.
-  const auto [triangles, objects] = flat_size(root);
+  std::size_t triangles = 0, objects = 1;  // the world counts as an object
+  for (const SceneObject& o : scene.objects) {
+    const auto [t, n] = flat_size(o);
+    const auto copies = static_cast<std::size_t>(o.repeat ? o.repeat->count() : 1);
+    triangles += copies * t;
+    objects += copies * n;
+  }
   out.triangles.reserve(triangles);
   if (names) out.objects.reserve(objects);
   const std::function<void(const WorldTriangle&)> keep = [&](const WorldTriangle& t) {
@@ -187,8 +202,7 @@ FlatScene flatten(const Scene& scene, bool names) {
   };
   FlatSink sink{keep, names ? &out.objects : nullptr};
   const std::string world = "world";
-  flatten_into(root, compose(Mat4d::Identity(), root.transform), scene.default_fill, Cull::None,
-               names ? &world : nullptr, sink);
+  flatten_scene(scene, names ? &world : nullptr, sink);
   return out;
 }
 

@@ -39,7 +39,9 @@ struct FlatScene {
 FlatScene flatten(const Scene& scene, bool names = true);
 // How many world triangles the walk yields (every copy of a repeat counted), without walking.
 std::size_t world_triangle_count(const Scene& scene);
-// The same walk, each world triangle handed to `visit` in order and none kept.
+// The same walk, each world triangle handed to `visit` in order and none kept. The walk only
+// reads the scene (it copies no object, and so none of the exact coordinates an object may keep,
+// whose reference counts are not atomic): threads may walk one scene side by side.
 void for_each_world_triangle(const Scene& scene,
                              const std::function<void(const WorldTriangle&)>& visit);
 
