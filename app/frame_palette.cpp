@@ -100,9 +100,14 @@ bool frame_runs(const Image<std::uint32_t>& image, FrameRuns& out, int threads, 
   side_by_side(
       std::min(threads, parts),
       [&](int) {
-        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < parts;)
+        // Scanned into a part on this thread's stack and moved into place once: the parts side
+        // by side in one array share cache lines, and a run's push writes its vector's end.
+        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < parts;) {
+          FrameRuns scanned;
           fits[k] =
-              scan_rows(image, image.height * k / parts, image.height * (k + 1) / parts, part[k]);
+              scan_rows(image, image.height * k / parts, image.height * (k + 1) / parts, scanned);
+          part[k] = std::move(scanned);
+        }
       },
       team);
   if (std::find(fits.begin(), fits.end(), 0) != fits.end()) return false;
