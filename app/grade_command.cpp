@@ -192,9 +192,26 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
       o.err << progress_bar(done, total, who) << std::flush;
       if (done == total) o.err << "\n";
     };
-  BatchResult r;
+  // The rows as they come, in the class's order: counted, and the few with something to say
+  // kept for after the batch; none of the class's rows is held (memory flat in its size).
+  std::size_t rows = 0, graded = 0;
+  double sum = 0;
+  std::vector<std::string> said;
+  options.keep_rows = false;
+  options.on_row = [&](const BatchRow& row) {
+    ++rows;
+    if (row.status == "graded") {
+      ++graded;
+      sum += row.max_score > 0 ? row.score / row.max_score : 0;
+    }
+    // Not graded, or graded with a note (the file and the roster disagree, two files claim one
+    // student).
+    if (row.status != "graded" || !row.message.empty())
+      said.push_back(
+          fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message));
+  };
   try {
-    r = grade_batch(set, entries, options);
+    grade_batch(set, entries, options);
   } catch (const std::exception& e) {
     if (o.progress) o.err << "\n";
     o.err << "error: " << terminal_text(e.what()) << "\n"
@@ -202,29 +219,14 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
           << " are as they were\n";
     return 1;
   }
-  std::size_t graded = 0;
-  double sum = 0;
-  for (const BatchRow& row : r.rows) {
-    if (row.status == "graded") {
-      ++graded;
-      sum += row.max_score > 0 ? row.score / row.max_score : 0;
-      if (!row.message.empty())  // the file and the roster disagree, or two files claim one student
-        o.err << terminal_text(fmt::format("{}: {} ({}): {}", row.source, row.status, row.student,
-                                           row.message))
-              << "\n";
-    } else {
-      o.err << terminal_text(
-                   fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message))
-            << "\n";
-    }
-  }
+  for (const std::string& line : said) o.err << terminal_text(line) << "\n";
   o.out << fmt::format(
       "Graded {} of {} submissions{}; wrote {}/gradebook.csv, feedback/ and gradescope/\n", graded,
-      r.rows.size(), graded ? fmt::format(" (mean {:.1f}%)", 100.0 * sum / double(graded)) : "",
+      rows, graded ? fmt::format(" (mean {:.1f}%)", 100.0 * sum / double(graded)) : "",
       options.out_dir);
   for (const Diagnostic& d : not_graded) o.err << "warning: " << terminal_text(d.format()) << "\n";
   for (const Diagnostic& d : set.all_errors()) o.err << terminal_text(d.format()) << "\n";
-  return graded == r.rows.size() && set.all_errors().empty() ? 0 : 1;
+  return graded == rows && set.all_errors().empty() ? 0 : 1;
 }
 
 }  // namespace

@@ -436,12 +436,20 @@ OutputTransaction::~OutputTransaction() {
 }
 
 void OutputTransaction::write(const std::string& relative, const std::string& content) {
+  put(relative, content, O_TRUNC);
+}
+
+void OutputTransaction::append(const std::string& relative, const std::string& content) {
+  put(relative, content, O_APPEND);
+}
+
+void OutputTransaction::put(const std::string& relative, const std::string& content, int flags) {
   const fs::path path = fs::path(run_) / relative;
-  int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | flags | O_CLOEXEC, 0644);
   if (fd < 0 && errno == ENOENT) {  // a file in a subdirectory of a name ("katex/fonts/…")
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
-    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | flags | O_CLOEXEC, 0644);
   }
   if (fd < 0) fail(published_path(relative), "cannot create");
   try {

@@ -90,6 +90,8 @@ class OutputTransaction {
   // `relative` is under one of `names` ("feedback/s1.md", "gradebook.csv", "katex/fonts/f.woff2";
   // subdirectories are made as needed).
   void write(const std::string& relative, const std::string& content);
+  // Adds `content` at the end of a file of this run (made when there is none).
+  void append(const std::string& relative, const std::string& content);
   // Takes back a file of this run (none there is fine).
   void remove(const std::string& relative);
   // Has the disk write what this run holds so far, and waits for it: called while other
@@ -112,6 +114,7 @@ class OutputTransaction {
   int run_fd_ = -1;
   int write_back_error_ = 0;  // what write_back() met (errno), thrown by commit()
   bool committed_ = false;
+  void put(const std::string& relative, const std::string& content, int flags);
 };
 
 }  // namespace frustum

@@ -19,6 +19,7 @@
 #include "grader/csv.hpp"
 #include "grader/feedback.hpp"
 #include "grader/file_names.hpp"
+#include "grader/gradebook.hpp"
 #include "grader/gradescope.hpp"
 #include "grader/isolate.hpp"
 #include "grader/report.hpp"
@@ -91,13 +92,20 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
                                 "cannot list the directory: " + ec.message()});
   std::sort(files.begin(), files.end());
   std::vector<BatchEntry> out(files.size());
+  std::string text;  // each file's, in turn: kept only as its length and digest
   for (std::size_t i = 0; i < files.size(); ++i) {
     BatchEntry& b = out[i];
     b.source = files[i].string();
-    if (const std::optional<Diagnostic> d = read_text_file(b.source, max_bytes, b.yaml))
+    text.clear();
+    if (const std::optional<Diagnostic> d = read_text_file(b.source, max_bytes, text))
       b.error = d->message;
-    b.claimed = b.error ? std::string() : student_in(b.yaml, b.source);
+    b.claimed = b.error ? std::string() : student_in(text, b.source);
     b.student = b.claimed.empty() ? files[i].stem().string() : b.claimed;
+    if (!b.error) {
+      b.read_when_graded = true;
+      b.length = text.size();
+      b.digest = text_digest(text);
+    }
   }
   note_shared_students(out);
   if (not_graded) {
@@ -213,12 +221,25 @@ void relocate(Diagnostic& d, const BatchEntry& e) {
 constexpr std::size_t kWriteBackClass = 64;
 constexpr std::size_t kWriteBacks = 8;
 
-std::string number_text(double v) { return format_approx(v, 6); }
-
 // The shared copy of KaTeX in the output directory, beside feedback/.
 constexpr const char* kKatexDir = "katex";
 
 }  // namespace
+
+std::uint64_t text_digest(std::string_view text) { return std::hash<std::string_view>{}(text); }
+
+std::string submission_text(const BatchEntry& e) {
+  if (!e.read_when_graded) return e.yaml;
+  std::string text;
+  if (const std::optional<Diagnostic> d =
+          read_text_file(e.source, std::max(kMaxSubmissionBytes, e.length), text))
+    throw std::runtime_error(d->message);
+  if (text.size() != e.length || text_digest(text) != e.digest)
+    throw std::runtime_error(
+        "the file changed while the class was being graded (its id was read from other text): "
+        "grade the class again");
+  return text;
+}
 
 std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t max_bytes,
                                             std::vector<Diagnostic>* not_graded) {
@@ -270,25 +291,6 @@ std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries,
   return out;
 }
 
-std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& rows) {
-  std::vector<std::string> header = {"student", "score", "max_score", "percent", "status"};
-  for (const ProblemSpec& p : set.problems) header.push_back(p.id);
-  header.insert(header.end(), {"source", "message", "file"});
-  std::string out = csv_row(header);
-  for (const BatchRow& r : rows) {
-    std::vector<std::string> f = {
-        r.student, number_text(r.score), number_text(r.max_score),
-        r.max_score > 0 ? fmt::format("{:.1f}", 100.0 * r.score / r.max_score) : "", r.status};
-    for (std::size_t i = 0; i < set.problems.size(); ++i)
-      f.push_back(i < r.problem_scores.size() ? number_text(r.problem_scores[i]) : "");
-    f.push_back(r.source);
-    f.push_back(r.message);
-    f.push_back(r.feedback_stem);
-    out += csv_row(f);
-  }
-  return out;
-}
-
 BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries,
                         const BatchOptions& options) {
   BatchResult result;
@@ -314,7 +316,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   const auto work = [&](std::size_t i) -> std::string {
     const BatchEntry& e = entries[i];
     if (e.error) throw std::runtime_error(*e.error);
-    Submission sub = load_submission_from_string(e.yaml, e.source);
+    Submission sub = load_submission_from_string(submission_text(e), e.source);
     for (Diagnostic& d : sub.errors) relocate(d, e);
     // A file that could not be read is reported as such, not as a file without `student:`.
     if (options.set_for && !sub.answers.IsDefined() && !sub.errors.empty())
@@ -356,33 +358,30 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   };
   double max_score = 0;
   for (const ProblemSpec& p : set.problems) max_score += p.max_score();
-  // Rows and written files by submission, so that their order is the class's whatever order
-  // the shares finish in.
-  std::vector<BatchRow> rows(entries.size());
-  std::vector<std::vector<std::string>> files(entries.size() + 1);
-  std::size_t file_slot = entries.size();  // the submission whose files are being written
-  const auto write = [&](const std::string& relative, const std::string& text) {
-    out.write(relative, text);
-    files[file_slot].push_back(out.published_path(relative));
-  };
+  // Rows in the class's order whatever order the children finish them in, written to the
+  // gradebook as they come (the class's rows are not all held: BatchOptions::keep_rows).
+  GradebookStream gradebook(set, out, "gradebook.csv", [&](BatchRow&& row) {
+    if (options.on_row) options.on_row(row);
+    if (options.keep_rows) result.rows.push_back(std::move(row));
+  });
   const auto failed_row = [&](BatchRow& row, std::string status, const std::string& reason) {
     row.status = std::move(status);
     row.message = reason;
     row.score = 0;
     row.problem_scores.clear();
     out.remove("feedback/" + row.feedback_stem + ".html");  // a child stopped after writing it
-    write("feedback/" + row.feedback_stem + ".md",
-          fmt::format("# {}\n\nThis submission could not be graded: {}\n",
-                      markdown_escape(row.student), markdown_escape(reason)));
-    write("gradescope/" + row.feedback_stem + ".json",
-          json_text(gradescope_failure(reason)) + "\n");
+    out.write("feedback/" + row.feedback_stem + ".md",
+              fmt::format("# {}\n\nThis submission could not be graded: {}\n",
+                          markdown_escape(row.student), markdown_escape(reason)));
+    out.write("gradescope/" + row.feedback_stem + ".json",
+              json_text(gradescope_failure(reason)) + "\n");
   };
-  for (const auto& [relative, bytes] : katex) write(std::string(kKatexDir) + "/" + relative, bytes);
+  for (const auto& [relative, bytes] : katex)
+    out.write(std::string(kKatexDir) + "/" + relative, bytes);
   std::size_t done = 0;
   const auto on_result = [&](std::size_t i, IsolatedResult& r) {
     const BatchEntry& e = entries[i];
-    file_slot = i;
-    BatchRow& row = rows[i];
+    BatchRow row;
     row.student = e.student;
     row.source = e.source;
     row.feedback_stem = stems[i];
@@ -398,8 +397,6 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
         row.max_score = j.at("max_score").get<double>();
         for (const auto& s : j.at("problem_scores")) row.problem_scores.push_back(s.get<double>());
         row.message = j.at("message").get<std::string>();
-        for (const char* f : {"feedback/{}.md", "feedback/{}.html", "gradescope/{}.json"})
-          files[i].push_back(out.published_path(fmt::format(fmt::runtime(f), stems[i])));
       } catch (const nlohmann::json::exception& x) {
         failed_row(row, "error", std::string("the grader's result could not be read: ") + x.what());
       }
@@ -411,6 +408,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
                  r.error);
     }
     if (!e.note.empty()) row.message = e.note + (row.message.empty() ? "" : "; " + row.message);
+    gradebook.add(i, std::move(row));
     ++done;
     // The disk writes the class's files while the children grade, after each eighth of the
     // class: the one sync before publishing then has only the last eighth left, not the whole
@@ -426,11 +424,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   // finish together on a loaded machine (rows and files are kept by student, not by arrival).
   run_isolated_each(entries.size(), work, options.timeout_seconds, on_result, 64u << 20, jobs, {},
                     Shares::Dynamic);
-  result.rows = std::move(rows);
-  file_slot = entries.size();
-  write("gradebook.csv", gradebook_csv(set, result.rows));
-  for (std::vector<std::string>& f : files)
-    result.files_written.insert(result.files_written.end(), f.begin(), f.end());
+  gradebook.finish();
   out.commit();
   return result;
 }

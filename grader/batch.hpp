@@ -6,10 +6,12 @@
 // error row; the batch always finishes and the gradebook lists every submission.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "grader/grade.hpp"
@@ -25,10 +27,18 @@ constexpr std::size_t kMaxRosterBytes = 64u << 20;  // a CSV roster of answers
 
 // One submission, before grading.
 struct BatchEntry {
-  std::string source;                // the file, or "roster.csv row 12"
-  std::string student;               // from the answers, the CSV, or the file name
-  std::string claimed;               // the id the answers file states ("" if none or unreadable)
-  std::string yaml;                  // the answers as YAML text (CSV rows are converted)
+  std::string source;   // the file, or "roster.csv row 12"
+  std::string student;  // from the answers, the CSV, or the file name
+  std::string claimed;  // the id the answers file states ("" if none or unreadable)
+  std::string yaml;     // the answers as YAML text (CSV rows are converted)
+  // A file of a directory is not kept in memory (a class's files would all be, and memory would
+  // grow with the size of the answers, not only with the class): `yaml` stays empty, and the
+  // file is read again when it is graded. `length` and `digest` are those of the text its id
+  // was read from; a file that no longer has them is an error row (it changed while the class
+  // was graded), never graded under an id read from other text.
+  bool read_when_graded = false;
+  std::size_t length = 0;
+  std::uint64_t digest = 0;
   std::optional<std::string> error;  // could not be read at all (too big, unreadable)
   // A CSV row: where each answer ("answers.ID.NAME") was in the CSV (line, column), so that
   // messages point at the cell, not at the YAML the row was converted to.
@@ -39,6 +49,12 @@ struct BatchEntry {
   bool from_roster = false;
   std::string note;
 };
+
+// The digest BatchEntry keeps of a file's text (a change detector, not a cryptographic hash).
+std::uint64_t text_digest(std::string_view text);
+// A submission's answers text: `yaml`, or the file read again (read_when_graded); throws
+// std::runtime_error when it cannot be read or is not the text its id was read from.
+std::string submission_text(const BatchEntry& e);
 
 // Answer files (*.yaml, *.yml) directly in a directory, in name order; or the rows of a CSV
 // whose header has `student` and one column per answer named `problem-id.answer`. A file that
@@ -67,6 +83,17 @@ std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries,
                                      const std::vector<std::string>& roster,
                                      const std::string& roster_file);
 
+struct BatchRow {
+  std::string student;
+  std::string source;
+  std::string status;   // graded, error, timeout, crashed
+  std::string message;  // why it is not graded, or the first problem with the answers file
+  double score = 0;
+  double max_score = 0;
+  std::vector<double> problem_scores;  // in the set's order (graded rows)
+  std::string feedback_stem;           // feedback/<stem>.md|.html, gradescope/<stem>.json
+};
+
 struct BatchOptions {
   std::string out_dir = "grades";
   double timeout_seconds = kBatchTimeoutDefault;
@@ -79,22 +106,15 @@ struct BatchOptions {
       set_for;
   // Called after each submission: how many are done, of how many, and whose it was.
   std::function<void(std::size_t done, std::size_t total, const std::string& student)> on_progress;
-};
-
-struct BatchRow {
-  std::string student;
-  std::string source;
-  std::string status;   // graded, error, timeout, crashed
-  std::string message;  // why it is not graded, or the first problem with the answers file
-  double score = 0;
-  double max_score = 0;
-  std::vector<double> problem_scores;  // in the set's order (graded rows)
-  std::string feedback_stem;           // feedback/<stem>.md|.html, gradescope/<stem>.json
+  // Each row once it is final, in the class's order (the gradebook's), while the class is graded.
+  std::function<void(const BatchRow&)> on_row;
+  // Whether BatchResult::rows keeps every row. A caller that takes the rows through on_row and
+  // keeps none holds memory that does not grow with the class but for its list of files.
+  bool keep_rows = true;
 };
 
 struct BatchResult {
-  std::vector<BatchRow> rows;  // in input order
-  std::vector<std::string> files_written;
+  std::vector<BatchRow> rows;  // in input order (when BatchOptions::keep_rows)
 };
 
 // Grades and writes every output under options.out_dir as one transaction (OutputTransaction:
@@ -107,8 +127,5 @@ struct BatchResult {
 // full); the previous outputs are then unchanged.
 BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries,
                         const BatchOptions& options);
-
-// The gradebook's CSV text (header + one row per submission).
-std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& rows);
 
 }  // namespace frustum

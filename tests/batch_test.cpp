@@ -15,6 +15,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <regex>
 #include <sstream>
 #include <thread>
@@ -22,6 +23,7 @@
 #include "grader/atomic_file.hpp"
 #include "grader/csv.hpp"
 #include "grader/feedback.hpp"
+#include "grader/gradebook.hpp"
 #include "grader/gradescope.hpp"
 #include "grader/isolate.hpp"
 #include "grader/report.hpp"
@@ -726,6 +728,119 @@ TEST(Batch, ReadingAClassLeavesTheProcessSingleThreaded) {
                      fmt::format("student: s{}\nanswers: {{zbuf: {{z: 8}}}}\n", i));
   EXPECT_EQ(collect_submissions(dir.string()).size(), 40u);
   EXPECT_TRUE(__libc_single_threaded);
+  fs::remove_all(dir);
+}
+
+// A class's files are not held in memory while it is graded: each is read again when graded. A
+// file changed after its id was read (another student's answers pasted in, a new id) is an error
+// row that says so, never graded under the id read before; a file removed is an error row; the
+// others are graded as ever.
+TEST(Batch, AFileChangedWhileTheClassIsGradedIsAnErrorRowNotAnotherStudentsGrade) {
+  const fs::path dir = scratch("changed");
+  const fs::path in = make_class(dir);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  const std::vector<BatchEntry> entries = collect_submissions(in.string());
+  ASSERT_EQ(entries.size(), 5u);
+  for (const BatchEntry& e : entries) {
+    EXPECT_TRUE(e.yaml.empty()) << e.source;  // not kept
+    EXPECT_EQ(e.read_when_graded, !e.error) << e.source;
+  }
+  BatchOptions options;
+  options.out_dir = (dir / "before").string();
+  const BatchResult before = grade_batch(set, entries, options);
+  // b_wrong.yaml now holds a's right answers under a's id; the same length or not, it is refused.
+  test::write_file(in / "b_wrong.yaml", test::read_file(in / "a_right.yaml"));
+  fs::remove(in / "c_broken.yaml");
+  options.out_dir = (dir / "after").string();
+  const BatchResult after = grade_batch(set, entries, options);
+  ASSERT_EQ(after.rows.size(), 5u);
+  EXPECT_EQ(after.rows[0].status, "graded");
+  EXPECT_DOUBLE_EQ(after.rows[0].score, before.rows[0].score);
+  EXPECT_EQ(after.rows[1].student, "s002");
+  EXPECT_EQ(after.rows[1].status, "error");
+  EXPECT_DOUBLE_EQ(after.rows[1].score, 0);
+  EXPECT_NE(after.rows[1].message.find("changed while the class was being graded"),
+            std::string::npos)
+      << after.rows[1].message;
+  EXPECT_EQ(after.rows[2].status, "error");
+  EXPECT_EQ(before.rows[1].status, "graded");
+  EXPECT_GT(before.rows[1].score, 0);
+  // The same text again (even rewritten) grades as before.
+  test::write_file(in / "b_wrong.yaml",
+                   "student: s002\nanswers:\n  zbuf: {normal: [-1, -1, 1], plane: [1, 1, -1, -6], "
+                   "z: 9}\n");
+  options.out_dir = (dir / "again").string();
+  const BatchResult again = grade_batch(set, entries, options);
+  EXPECT_EQ(again.rows[1].status, "graded");
+  EXPECT_DOUBLE_EQ(again.rows[1].score, before.rows[1].score);
+  fs::remove_all(dir);
+}
+
+// The gradebook is written as rows come, in the class's order whatever order they come in:
+// the same bytes as the whole text made at once, every row passed on once, in order.
+TEST(Batch, GradebookRowsComingInAnyOrderAreWrittenInTheClassOrder) {
+  const fs::path dir = scratch("stream");
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  std::mt19937 rng(7);
+  for (const std::size_t n : {0u, 1u, 7u, 3000u}) {
+    std::vector<BatchRow> rows(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      rows[i].student = fmt::format("s{:05}", i);
+      rows[i].status = i % 7 == 3 ? "error" : "graded";
+      rows[i].score = static_cast<double>(i % 6);
+      rows[i].max_score = 5;
+      rows[i].problem_scores = {static_cast<double>(i % 3), 1.5};
+      rows[i].message = i % 11 == 0 ? "a note, with \"quotes\"\nand a line break" : "";
+      rows[i].source = fmt::format("in/{}.yaml", i);
+      rows[i].feedback_stem = rows[i].student;
+    }
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    // Nearly in order, as children taking students in turn finish them, and some far out.
+    for (std::size_t i = 0; i + 1 < n; i += 2)
+      if (rng() % 2) std::swap(order[i], order[i + 1]);
+    if (n > 100) std::swap(order[5], order[n - 5]);
+    const fs::path out_dir = dir / fmt::format("out{}", n);
+    std::vector<std::string> passed;
+    {
+      OutputTransaction out(out_dir.string(), {"gradebook.csv"});
+      GradebookStream book(set, out, "gradebook.csv",
+                           [&](BatchRow&& row) { passed.push_back(row.student); });
+      for (const std::size_t i : order) book.add(i, rows[i]);
+      book.finish();
+      out.commit();
+    }
+    EXPECT_EQ(test::read_file(out_dir / "gradebook.csv"), gradebook_csv(set, rows)) << n;
+    ASSERT_EQ(passed.size(), n);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(passed[i], rows[i].student);
+  }
+  fs::remove_all(dir);
+}
+
+// A caller that takes the rows as they come keeps none: the same rows, in order, and the same
+// outputs as a batch that keeps them.
+TEST(Batch, RowsComeInOrderAndNeedNotBeKept) {
+  const fs::path dir = scratch("onrow");
+  const fs::path in = make_class(dir);
+  const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
+  BatchOptions options;
+  options.jobs = 3;
+  options.out_dir = (dir / "kept").string();
+  const BatchResult kept = grade_batch(set, collect_submissions(in.string()), options);
+  std::vector<BatchRow> passed;
+  options.keep_rows = false;
+  options.on_row = [&](const BatchRow& row) { passed.push_back(row); };
+  options.out_dir = (dir / "passed").string();
+  const BatchResult none = grade_batch(set, collect_submissions(in.string()), options);
+  EXPECT_TRUE(none.rows.empty());
+  ASSERT_EQ(passed.size(), kept.rows.size());
+  for (std::size_t i = 0; i < passed.size(); ++i) {
+    EXPECT_EQ(passed[i].student, kept.rows[i].student);
+    EXPECT_EQ(passed[i].status, kept.rows[i].status);
+    EXPECT_EQ(passed[i].score, kept.rows[i].score);
+    EXPECT_EQ(passed[i].message, kept.rows[i].message);
+  }
+  EXPECT_TRUE(test::published_tree(dir / "kept") == test::published_tree(dir / "passed"));
   fs::remove_all(dir);
 }
 
