@@ -17,6 +17,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <tuple>
 
 #include "app/commands.hpp"
 #include "app/png_writer.hpp"
@@ -557,22 +558,29 @@ TEST(RenderKind, StreamedZBufferEqualsTheStagesOneAfterTheOther) {
 // each walks the scene and draws its own strips of rows. Boxes in a grid, some cut by the near
 // plane and some off to the sides: the same frame, depths and statistics as on one thread, and
 // as the stages run one after the other, for any number of threads, on a team or not, and for
-// frames whose height is not a multiple of the strips'.
+// frames whose height is not a multiple of the strips', in every API's conventions (y-down
+// windows included), back faces culled or not.
 TEST(RenderKind, ALargeSceneStreamedWithThreadsGivesTheFrameOfOneThread) {
-  Scene s;
-  s.width = 96;
-  s.height = 64;
-  s.camera = {Vec3d(0.3, 2.5, 4), Vec3d(0, 0, -20), Vec3d(0, 1, 0)};
-  s.clip_from_eye = Mat4d(frustum_matrix(perspective_volume(1.2, 1.5, 1.0, 80.0), Api::OpenGL));
-  s.light = DirectionalLight{};
-  SceneObject box = box_object(0.8, 0.6, 0.7);
-  box.fill = Rgb{90, 160, 220};
-  box.repeat = SceneObject::Repeat{{-40, 0, -70}, {40, 0, 0}, Vec3d(1.0, 0, 1.0)};
-  s.objects.push_back(box);
-  ASSERT_GT(world_triangle_count(s), kBandedTriangles);
   ThreadTeam team(3);
-  for (const int height : {64, 61, 7}) {
+  for (const auto& [api, height, cull] :
+       std::vector<std::tuple<Api, int, Cull>>{{Api::OpenGL, 64, Cull::None},
+                                               {Api::OpenGL, 61, Cull::Back},
+                                               {Api::OpenGL, 7, Cull::None},
+                                               {Api::Processing, 61, Cull::Back},
+                                               {Api::DirectX, 53, Cull::None}}) {
+    Scene s;
+    s.api = api;
+    s.width = 96;
     s.height = height;
+    s.camera = {Vec3d(0.3, 2.5, 4), Vec3d(0, 0, -20), Vec3d(0, 1, 0)};
+    s.clip_from_eye = Mat4d(frustum_matrix(perspective_volume(1.2, 1.5, 1.0, 80.0), api));
+    s.light = DirectionalLight{};
+    SceneObject box = box_object(0.8, 0.6, 0.7);
+    box.fill = Rgb{90, 160, 220};
+    box.cull = cull;
+    box.repeat = SceneObject::Repeat{{-40, 0, -70}, {40, 0, 0}, Vec3d(1.0, 0, 1.0)};
+    s.objects.push_back(box);
+    ASSERT_GT(world_triangle_count(s), kBandedTriangles);
     GeometryStats gs, one_gs;
     FillStats fs, one_fs;
     const std::vector<WindowTriangle> tris = geometry(s, flatten(s, false), &gs);
@@ -591,6 +599,7 @@ TEST(RenderKind, ALargeSceneStreamedWithThreadsGivesTheFrameOfOneThread) {
                      threads < 0 ? &team : nullptr);
       EXPECT_EQ(threaded.color.data, staged.color.data) << threads << " " << height;
       EXPECT_EQ(threaded.depth.data, staged.depth.data) << threads << " " << height;
+      EXPECT_EQ(threaded_gs.culled > 0, cull == Cull::Back);
       EXPECT_EQ(threaded_gs.triangles, gs.triangles);
       EXPECT_EQ(threaded_gs.window, gs.window);
       EXPECT_EQ(threaded_gs.clipped, gs.clipped);
