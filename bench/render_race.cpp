@@ -16,8 +16,8 @@
 // sides: with glibc's malloc, the memory llvmpipe's run gave back was taken again page by page by
 // Frustum's next render.
 // LP_NUM_THREADS is left as the caller set it (unset: Mesa's default, one per core), and Frustum
-// renders with as many threads (`--threads`: all of them on a modelled scene, at most two on a
-// scene of more than fill.hpp's kBandedTriangles). In the same run: the bandwidth
+// renders with as many threads (`--threads`: a modelled scene's geometry in parts and its frame in
+// bands, a larger scene streamed by every thread in strips of rows). In the same run: the bandwidth
 // ceiling (bandwidth_ceiling.hpp) and the fraction of it that Frustum's fill reaches on this scene,
 // and how many pixels of the two images differ (by more than 2 levels in a channel); --max-differ F
 // fails (exit 1) when more than the fraction F of the pixels do.
