@@ -21,8 +21,9 @@ std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& ro
 
 // Rows come in the order the children finish them and are written in the class's order: a row
 // that arrives before its turn waits for the ones before it (with students taken in turn by the
-// children, a few at most), so the memory held is that of the rows waiting and of a buffer, not
-// the class's. Each row, once written, goes to `written` (in the class's order).
+// children, a few; behind a slow submission, the rows graded within its time limit), so the
+// memory held is that of the rows waiting and of a buffer, not the class's. Each row, once
+// written, goes to `written` (in the class's order).
 class GradebookStream {
  public:
   GradebookStream(const ProblemSet& set, OutputTransaction& out, std::string relative,
