@@ -52,14 +52,15 @@ Mat4d compose(const Mat4d& a, const Mat4d& b) {
   return a * b;
 }
 
-// World triangles and objects under `o` (itself included), copies of repeats counted.
-std::pair<std::size_t, std::size_t> flat_size(const SceneObject& o) {
-  std::pair<std::size_t, std::size_t> n{o.triangles.size(), 1};
-  for (const SceneObject& child : o.children) {
-    const auto [t, objects] = flat_size(child);
+// World triangles and objects under `children` (each child included), copies of repeats
+// counted.
+std::pair<std::size_t, std::size_t> flat_size(const std::vector<SceneObject>& children) {
+  std::pair<std::size_t, std::size_t> n{0, 0};
+  for (const SceneObject& child : children) {
+    const auto [t, objects] = flat_size(child.children);
     const auto copies = static_cast<std::size_t>(child.repeat ? child.repeat->count() : 1);
-    n.first += copies * t;
-    n.second += copies * objects;
+    n.first += copies * (child.triangles.size() + t);
+    n.second += copies * (1 + objects);
   }
   return n;
 }
@@ -172,12 +173,7 @@ void flatten_scene(const Scene& scene, const std::string* name, FlatSink& out) {
 
 }  // namespace
 
-std::size_t world_triangle_count(const Scene& scene) {
-  std::size_t n = 0;
-  for (const SceneObject& o : scene.objects)
-    n += static_cast<std::size_t>(o.repeat ? o.repeat->count() : 1) * flat_size(o).first;
-  return n;
-}
+std::size_t world_triangle_count(const Scene& scene) { return flat_size(scene.objects).first; }
 
 void for_each_world_triangle(const Scene& scene,
                              const std::function<void(const WorldTriangle&)>& visit) {
@@ -188,15 +184,9 @@ void for_each_world_triangle(const Scene& scene,
 FlatScene flatten(const Scene& scene, bool names) {
   FlatScene out;
   // Sized once: a million triangles are 88 MB, which doubling would copy and fault in again.
-  std::size_t triangles = 0, objects = 1;  // the world counts as an object
-  for (const SceneObject& o : scene.objects) {
-    const auto [t, n] = flat_size(o);
-    const auto copies = static_cast<std::size_t>(o.repeat ? o.repeat->count() : 1);
-    triangles += copies * t;
-    objects += copies * n;
-  }
+  const auto [triangles, objects] = flat_size(scene.objects);
   out.triangles.reserve(triangles);
-  if (names) out.objects.reserve(objects);
+  if (names) out.objects.reserve(objects + 1);  // the world counts as an object
   const std::function<void(const WorldTriangle&)> keep = [&](const WorldTriangle& t) {
     out.triangles.push_back(t);
   };
