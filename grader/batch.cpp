@@ -236,8 +236,8 @@ std::string submission_text(const BatchEntry& e) {
     throw std::runtime_error(d->message);
   if (text.size() != e.length || text_digest(text) != e.digest)
     throw std::runtime_error(
-        "the file changed while the class was being graded (its id was read from other text): "
-        "grade the class again");
+        "the answers file changed while the class was being graded, so it was not graded; "
+        "grading the class again grades the file as it is now");
   return text;
 }
 
