@@ -217,10 +217,6 @@ void relocate(Diagnostic& d, const BatchEntry& e) {
   d.where = SourceLocation{e.csv_file, 0, 0};
 }
 
-// Classes of this many students or more are written back to disk in kWriteBacks steps.
-constexpr std::size_t kWriteBackClass = 64;
-constexpr std::size_t kWriteBacks = 8;
-
 // The shared copy of KaTeX in the output directory, beside feedback/.
 constexpr const char* kKatexDir = "katex";
 
@@ -289,6 +285,16 @@ std::vector<BatchEntry> apply_roster(std::vector<BatchEntry> entries,
       out.push_back(std::move(e));
     }
   return out;
+}
+
+bool write_back_due(std::size_t done, std::size_t n) {
+  if (n < kWriteBackClass || done == 0 || done >= n) return false;
+  // Each eighth of the class.
+  if (done * kWriteBacks / n != (done - 1) * kWriteBacks / n) return true;
+  // Fewer than n/16, n/32 and n/64 rows left, for the first time.
+  for (std::size_t part = 2 * kWriteBacks; part <= kLastWriteBack; part *= 2)
+    if ((n - done) * part < n && (n - done + 1) * part >= n) return true;
+  return false;
 }
 
 BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries,
@@ -410,12 +416,10 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
     if (!e.note.empty()) row.message = e.note + (row.message.empty() ? "" : "; " + row.message);
     gradebook.add(i, std::move(row));
     ++done;
-    // The disk writes the class's files while the children grade, after each eighth of the
-    // class: the one sync before publishing then has only the last eighth left, not the whole
+    // The disk writes the class's files while the children grade (write_back_due): the one
+    // sync before publishing then has only the last few students' files left, not the whole
     // class with every core idle. This process only waits there; the children go on.
-    if (entries.size() >= kWriteBackClass && done < entries.size() &&
-        done * kWriteBacks / entries.size() != (done - 1) * kWriteBacks / entries.size())
-      out.write_back();
+    if (write_back_due(done, entries.size())) out.write_back();
     if (options.on_progress) options.on_progress(done, entries.size(), e.student);
   };
   const std::size_t jobs =

@@ -290,6 +290,32 @@ TEST(BatchTransaction, WritingBackEarlyPublishesNothingAndLosesNothing) {
 
 // A class large enough to be written back to disk while it is graded (64 students or more):
 // killed at any moment it leaves consistent outputs, and a whole run publishes every student.
+// The points of write-back of a class: each eighth, then the first rows that leave fewer than a
+// sixteenth, a thirty-second and a sixty-fourth of the class; none for a small class, none at
+// the last row (the sync before publishing is that one).
+TEST(BatchTransaction, AClassIsWrittenBackAtEachEighthAndThenCloserToItsEnd) {
+  const auto points = [](std::size_t n) {
+    std::vector<std::size_t> at;
+    for (std::size_t done = 0; done <= n + 1; ++done)
+      if (write_back_due(done, n)) at.push_back(done);
+    return at;
+  };
+  EXPECT_EQ(points(1000),
+            (std::vector<std::size_t>{125, 250, 375, 500, 625, 750, 875, 938, 969, 985}));
+  EXPECT_EQ(points(64), (std::vector<std::size_t>{8, 16, 24, 32, 40, 48, 56, 61, 63}));
+  EXPECT_TRUE(points(63).empty());
+  EXPECT_TRUE(points(1).empty());
+  // Every class: at most eleven points, strictly before the last row, the last one leaving
+  // at most a sixty-fourth of the class (rounded up) to the final sync.
+  for (std::size_t n = kWriteBackClass; n <= 5000; n += 7) {
+    const std::vector<std::size_t> at = points(n);
+    ASSERT_FALSE(at.empty()) << n;
+    EXPECT_LE(at.size(), 11u) << n;
+    EXPECT_LT(at.back(), n) << n;
+    EXPECT_LE((n - at.back()) * kLastWriteBack, n + kLastWriteBack) << n;
+  }
+}
+
 TEST(BatchTransaction, AClassWrittenBackWhileGradedStaysConsistentWhenKilled) {
   const fs::path dir = scratch("write_back_kill");
   const fs::path in = make_class(dir, 80);

@@ -285,6 +285,31 @@ TEST(Cli, BadUsageIsAnErrorNotACrash) {
   EXPECT_NE(run("solve " + seed("001_zbuffer_plane_method.yaml") + " --format pdf").status, 0);
 }
 
+// Output that cannot be written (standard output on a full disk) is an error, not status 0 with
+// the output cut short; what the command prints on standard error says so.
+TEST(Cli, OutputThatCannotBeWrittenIsAnError) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full here";
+  for (const std::string& args :
+       {"solve " + seed("001_zbuffer_plane_method.yaml"), std::string("--version"),
+        "solve " + seed("001_zbuffer_plane_method.yaml") + " --format html"}) {
+    const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1 >/dev/full";
+    FILE* p = popen(cmd.c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    std::string err;
+    std::array<char, 4096> buf;
+    while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) err.append(buf.data(), n);
+    const int status = pclose(p);
+    ASSERT_TRUE(WIFEXITED(status)) << args;
+    EXPECT_EQ(WEXITSTATUS(status), 1) << args;
+    EXPECT_NE(err.find("standard output could not be written in full"), std::string::npos)
+        << args << ": " << err;
+  }
+  // Written in full, the same commands end with status 0 and nothing on standard error.
+  const CliRun ok = run("solve " + seed("001_zbuffer_plane_method.yaml") + " >/dev/null");
+  EXPECT_EQ(ok.status, 0);
+  EXPECT_EQ(ok.out, "");
+}
+
 // --version, help and `check` print on standard output only.
 
 TEST(Cli, VersionPrintsTheProjectVersion) {
