@@ -112,22 +112,27 @@ def scaling_table(title, unit, rows):
     return f"### {title}\n\n" + "\n".join(out) + f"\n\n{verdict}.\n"
 
 
-def grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair=None):
+def grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair=None, core=None):
     say("## Class grading against a Python + NumPy script\n")
     say("1,000 students × 20 problems × 3 numeric answers. Frustum writes everything (gradebook, Markdown, "
         f"HTML pages — {sizes['feedback'] / 1e6:.0f} MB of feedback in all, the pages linking one shared copy of "
         f"KaTeX and its fonts in `katex/`, {sizes['katex'] / 1e6:.1f} MB — and Gradescope files, "
         f"{sizes['gradescope'] / 1e6:.0f} MB), the students graded in "
         "isolated child processes (with `-j N`, N children, each taking the next student nobody has taken; a "
-        "fresh one after a timeout or crash), the outputs written to disk as the class is graded (a write-back after each eighth) and published by one rename after one final sync. The peer "
+        "fresh one after a timeout or crash), the outputs written to disk as the class is graded (a write-back after "
+        "each eighth, then when a sixteenth, a thirty-second and a sixty-fourth of the class are left) and published by "
+        "one rename after one final sync. The peer "
         "(bench/workloads.py `peer`) reads the same YAML files, grades with NumPy and writes only a gradebook; "
         "it runs twice: as a plain script reads YAML (`yaml.safe_load`, PyYAML's Python loader — the peer "
         "the issue measured, 2.4–2.7 s against Frustum's 3.3–3.7 s then) and with PyYAML's C loader "
-        "(libyaml, which Frustum uses too), the fastest a Python script can read these files. The four run "
+        "(libyaml, which Frustum uses too), the fastest a Python script can read these files. All of them run "
         "in turn, rep after rep, so that each sees the same load.\n")
     say("| | wall min / median / max (s) | CPU (s) | peak MB |")
     say("| --- | ---: | ---: | ---: |")
-    sides = [(f"Frustum `-j 1`", one), (f"Frustum `-j {ncpu}`", j_all)]
+    sides = [(f"Frustum `-j 1`", one)]
+    if core:
+        sides.append((f"Frustum `-j 1` held to one core (`taskset -c 0`)", core))
+    sides.append((f"Frustum `-j {ncpu}`", j_all))
     if pair:
         sides.append((f"{ncpu} × Frustum `-j 1` at once (each its own output)", pair))
     sides += [("Python + NumPy peer, `yaml.safe_load`", plain), ("Python + NumPy peer, C loader", peer)]
@@ -142,6 +147,9 @@ def grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair=None):
         f"{j_all['cpu']:.2f} s of CPU time in all against {one['cpu']:.2f} s (the same work shared out; when the "
         f"load average above exceeds the {ncpu} cores, the other cores are busy with other work and the "
         "wall-time speed-up says little). "
+        + (f"Held to one core, `-j 1` took {fmt_s(core['median'])} s: `-j {ncpu}` is "
+           f"**{core['median'] / j_all['median']:.2f}×** faster than one core (unheld, `-j 1` has its parent "
+           "process and the kernel's write-back on the other core while its child grades). " if core else "")
         + (f"{ncpu} independent `-j 1` runs at once took {fmt_s(pair['median'])} s, "
            f"{pair['median'] / one['median']:.2f}× the time of one alone, for {ncpu}× the work: on this work "
            f"the {ncpu} cores of this machine, which share its cache and memory, give {ncpu} processes "
@@ -233,7 +241,7 @@ def main():
                                 "Markdown + HTML + Gradescope per student)", "students", rows)
     subs = os.path.join(work, "class1000")
     ncpu = os.cpu_count() or 1
-    j_all = peer = plain = one = None
+    j_all = peer = plain = one = pair = core = None
     sizes = {}
     if want("grade"):
         # The three sides of the race in turn, rep after rep (same load for each).
@@ -247,6 +255,11 @@ def main():
             # Two `-j 1` runs at once, each with its own output: what the cores give two
             # independent processes (they share the last-level cache and the memory bus), the
             # most that `-j N` can get out of them on this machine.
+            # `-j 1` held to one core (taskset): the issue's "one core"; unheld, the kernel's
+            # write-back and the parent process run on the other core while the child grades.
+            **({"core": lambda k: ["taskset", "-c", "0", F, "grade", cls_set, subs, "-o",
+                                   os.path.join(work, f"core1000-j1-{k}"), "-j", "1"]}
+               if ncpu >= 2 and shutil.which("taskset") else {}),
             **({"pair": lambda k: ["/bin/sh", "-c", " & ".join(
                 f"{shlex.quote(F)} grade {shlex.quote(cls_set)} {shlex.quote(subs)} -o "
                 f"{shlex.quote(os.path.join(work, f'pair1000-{k}-{side}'))} -j 1 > /dev/null"
@@ -254,6 +267,7 @@ def main():
         }, max(R, 5))
         one, j_all, peer, plain = race["one"], race["all"], race["peer"], race["plain"]
         pair = race.get("pair")
+        core = race.get("core")
         out = os.path.join(work, f"grades1000-j{ncpu}-{max(R, 5) - 1}")
         for d in ("feedback", "gradescope", "katex"):
             p = os.path.join(out, d)
@@ -353,7 +367,7 @@ def main():
         say("`generate --count 100000` is run by `tools/performance.sh --full`.\n")
 
     if one:
-        grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair)
+        grading_race(say, one, j_all, peer, plain, sizes, ncpu, pair, core)
     if bench_rows:
         say("## Rasterization against llvmpipe (frustum_bench, triangles in window coordinates)\n")
         say("`LP_NUM_THREADS=N ./build/frustum_bench --benchmark_filter='BM_(BandwidthCeiling|Setup|Frustum|Llvmpipe)'`, "
