@@ -40,10 +40,6 @@ std::string examples(std::initializer_list<const char*> lines) {
   return s;
 }
 
-}  // namespace
-
-namespace {
-
 int run_command(int argc, char** argv) {
   using frustum::app::Format;
   CLI::App cli{"Frustum: solves, explains and grades exercises on the 3D graphics pipeline",

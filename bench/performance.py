@@ -244,7 +244,7 @@ def main():
     j_all = peer = plain = one = pair = core = None
     sizes = {}
     if want("grade"):
-        # The three sides of the race in turn, rep after rep (same load for each).
+        # The sides of the race in turn, rep after rep (same load for each).
         race = interleaved({
             "one": lambda k: [F, "grade", cls_set, subs, "-o", os.path.join(work, f"race1000-j1-{k}"), "-j", "1"],
             "all": lambda k: [F, "grade", cls_set, subs, "-o", os.path.join(work, f"grades1000-j{ncpu}-{k}"),
@@ -252,14 +252,14 @@ def main():
             "peer": lambda k: [PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, f"peer{k}.csv")],
             "plain": lambda k: [PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, f"plain{k}.csv"),
                                 "python"],
-            # Two `-j 1` runs at once, each with its own output: what the cores give two
-            # independent processes (they share the last-level cache and the memory bus), the
-            # most that `-j N` can get out of them on this machine.
             # `-j 1` held to one core (taskset): the issue's "one core"; unheld, the kernel's
             # write-back and the parent process run on the other core while the child grades.
             **({"core": lambda k: ["taskset", "-c", "0", F, "grade", cls_set, subs, "-o",
                                    os.path.join(work, f"core1000-j1-{k}"), "-j", "1"]}
                if ncpu >= 2 and shutil.which("taskset") else {}),
+            # Two `-j 1` runs at once, each with its own output: what the cores give two
+            # independent processes (they share the last-level cache and the memory bus), the
+            # most that `-j N` can get out of them on this machine.
             **({"pair": lambda k: ["/bin/sh", "-c", " & ".join(
                 f"{shlex.quote(F)} grade {shlex.quote(cls_set)} {shlex.quote(subs)} -o "
                 f"{shlex.quote(os.path.join(work, f'pair1000-{k}-{side}'))} -j 1 > /dev/null"

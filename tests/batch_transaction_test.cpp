@@ -288,8 +288,6 @@ TEST(BatchTransaction, WritingBackEarlyPublishesNothingAndLosesNothing) {
   fs::remove_all(dir);
 }
 
-// A class large enough to be written back to disk while it is graded (64 students or more):
-// killed at any moment it leaves consistent outputs, and a whole run publishes every student.
 // The points of write-back of a class: each eighth, then the first rows that leave fewer than a
 // sixteenth, a thirty-second and a sixty-fourth of the class; none for a small class, none at
 // the last row (the sync before publishing is that one).
@@ -316,6 +314,8 @@ TEST(BatchTransaction, AClassIsWrittenBackAtEachEighthAndThenCloserToItsEnd) {
   }
 }
 
+// A class large enough to be written back to disk while it is graded (64 students or more):
+// killed at any moment it leaves consistent outputs, and a whole run publishes every student.
 TEST(BatchTransaction, AClassWrittenBackWhileGradedStaysConsistentWhenKilled) {
   const fs::path dir = scratch("write_back_kill");
   const fs::path in = make_class(dir, 80);

@@ -20,16 +20,20 @@ struct CliRun {
   std::string out;
 };
 
-// Standard output and, unless `with_stderr` is false, standard error.
-CliRun run(const std::string& args, bool with_stderr = true) {
-  const std::string cmd =
-      std::string(FRUSTUM_BINARY) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
+// A shell command line's exit status and what it prints on the pipe (-1: no normal exit).
+CliRun run_shell(const std::string& cmd) {
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
   while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
   const int status = pclose(p);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+// Standard output and, unless `with_stderr` is false, standard error.
+CliRun run(const std::string& args, bool with_stderr = true) {
+  return run_shell(std::string(FRUSTUM_BINARY) + " " + args +
+                   (with_stderr ? " 2>&1" : " 2>/dev/null"));
 }
 
 CliRun stdout_of(const std::string& args) { return run(args, false); }
@@ -292,17 +296,11 @@ TEST(Cli, OutputThatCannotBeWrittenIsAnError) {
   for (const std::string& args :
        {"solve " + seed("001_zbuffer_plane_method.yaml"), std::string("--version"),
         "solve " + seed("001_zbuffer_plane_method.yaml") + " --format html"}) {
-    const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1 >/dev/full";
-    FILE* p = popen(cmd.c_str(), "r");
-    ASSERT_NE(p, nullptr);
-    std::string err;
-    std::array<char, 4096> buf;
-    while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) err.append(buf.data(), n);
-    const int status = pclose(p);
-    ASSERT_TRUE(WIFEXITED(status)) << args;
-    EXPECT_EQ(WEXITSTATUS(status), 1) << args;
-    EXPECT_NE(err.find("standard output could not be written in full"), std::string::npos)
-        << args << ": " << err;
+    // Standard error to the pipe, standard output to the full device.
+    const CliRun r = run_shell(std::string(FRUSTUM_BINARY) + " " + args + " 2>&1 >/dev/full");
+    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_NE(r.out.find("standard output could not be written in full"), std::string::npos)
+        << args << ": " << r.out;
   }
   // Written in full, the same commands end with status 0 and nothing on standard error.
   const CliRun ok = run("solve " + seed("001_zbuffer_plane_method.yaml") + " >/dev/null");
