@@ -16,37 +16,11 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "grader/file_io.hpp"
+
 namespace frustum {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-[[noreturn]] void fail(const std::string& path, const std::string& what, int error = errno) {
-  throw std::runtime_error(path + ": " + what + ": " + std::strerror(error));
-}
-
-void write_all(int fd, const std::string& content, const std::string& path) {
-  std::size_t written = 0;
-  while (written < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + written, content.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) fail(path, "cannot write");
-    written += static_cast<std::size_t>(n);
-  }
-}
-
-// Flushes a directory's entries (a rename inside it) to disk.
-void sync_directory(const std::string& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
-constexpr const char* kStateDir = ".frustum";
-
-}  // namespace
 
 namespace {
 
@@ -385,135 +359,6 @@ void FileBatch::commit_pending(std::vector<Pending>& pending) {
     rename_into_place(p.temporary, p.target);
   }
   for (const std::string& d : dirs) sync_directory(d);
-}
-
-OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> names)
-    : dir_(std::move(dir)), names_(std::move(names)) {
-  const fs::path state = fs::path(dir_) / kStateDir;
-  std::error_code ec;
-  fs::create_directories(state, ec);
-  if (ec) throw std::runtime_error(dir_ + ": cannot create the output directory: " + ec.message());
-  const std::string lock = (state / "lock").string();
-  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0) fail(lock, "cannot open the lock file");
-  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-    char pid[32] = {};
-    const ssize_t n = ::pread(lock_fd_, pid, sizeof pid - 1, 0);
-    ::close(lock_fd_);
-    lock_fd_ = -1;
-    throw std::runtime_error(
-        dir_ + ": another batch is writing here" +
-        (n > 0 ? fmt::format(" (process {})", std::string(pid, static_cast<std::size_t>(n)))
-               : std::string()) +
-        "; wait for it to finish or choose another output directory");
-  }
-  const std::string me = std::to_string(::getpid());
-  if (::ftruncate(lock_fd_, 0) == 0) (void)::pwrite(lock_fd_, me.data(), me.size(), 0);
-  // What a killed run left: every run directory but the published one.
-  std::error_code read_ec;
-  const fs::path current = fs::read_symlink(state / "current", read_ec);
-  unsigned long next = 1;
-  for (const fs::directory_entry& e : fs::directory_iterator(state, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind("run-", 0) != 0) continue;
-    next = std::max(next, std::strtoul(name.c_str() + 4, nullptr, 10) + 1);
-    if (read_ec || e.path().filename() != current.filename()) fs::remove_all(e.path(), ec);
-  }
-  run_ = (state / ("run-" + std::to_string(next))).string();
-  fs::create_directories(run_, ec);
-  if (ec) throw std::runtime_error(run_ + ": cannot create: " + ec.message());
-  run_fd_ = ::open(run_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (run_fd_ < 0) fail(run_, "cannot open");
-  for (const std::string& name : names_)
-    if (fs::path(name).extension().empty()) fs::create_directories(fs::path(run_) / name, ec);
-}
-
-OutputTransaction::~OutputTransaction() {
-  std::error_code ec;
-  if (!committed_ && !run_.empty()) fs::remove_all(run_, ec);
-  if (run_fd_ >= 0) ::close(run_fd_);
-  if (lock_fd_ >= 0) ::close(lock_fd_);
-}
-
-void OutputTransaction::write(const std::string& relative, const std::string& content) {
-  put(relative, content, O_TRUNC);
-}
-
-void OutputTransaction::append(const std::string& relative, const std::string& content) {
-  put(relative, content, O_APPEND);
-}
-
-void OutputTransaction::put(const std::string& relative, const std::string& content, int flags) {
-  const fs::path path = fs::path(run_) / relative;
-  int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | flags | O_CLOEXEC, 0644);
-  if (fd < 0 && errno == ENOENT) {  // a file in a subdirectory of a name ("katex/fonts/…")
-    std::error_code ec;
-    fs::create_directories(path.parent_path(), ec);
-    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | flags | O_CLOEXEC, 0644);
-  }
-  if (fd < 0) fail(published_path(relative), "cannot create");
-  try {
-    write_all(fd, content, published_path(relative));
-  } catch (...) {
-    ::close(fd);
-    throw;
-  }
-  if (::close(fd) != 0) fail(published_path(relative), "cannot close");
-}
-
-void OutputTransaction::remove(const std::string& relative) {
-  const std::string path = (fs::path(run_) / relative).string();
-  if (::unlink(path.c_str()) != 0 && errno != ENOENT)
-    fail(published_path(relative), "cannot remove");
-}
-
-std::string OutputTransaction::published_path(const std::string& relative) const {
-  return (fs::path(dir_) / relative).string();
-}
-
-void OutputTransaction::write_back() {
-  if (::syncfs(run_fd_) != 0 && write_back_error_ == 0) write_back_error_ = errno;
-}
-
-void OutputTransaction::commit() {
-  const fs::path state = fs::path(dir_) / kStateDir;
-  // One sync for the whole run (its files and directories), not one per file; what write_back()
-  // met counts as this sync's error.
-  if (::syncfs(run_fd_) != 0) fail(run_, "cannot flush");
-  if (write_back_error_ != 0) fail(run_, "cannot flush", write_back_error_);
-  // Each published name is a fixed symlink into `current`. A real file or directory there (an
-  // older Frustum wrote them in place) is moved into the old run's place first.
-  std::error_code no_current;
-  const std::string old_run = fs::read_symlink(state / "current", no_current).string();
-  for (const std::string& name : names_) {
-    const fs::path link = fs::path(dir_) / name;
-    const fs::path target = fs::path(kStateDir) / "current" / name;
-    std::error_code ec;
-    const fs::file_status st = fs::symlink_status(link, ec);
-    if (fs::is_symlink(st) && fs::read_symlink(link, ec) == target) continue;
-    if (fs::exists(st)) {
-      const fs::path aside = state / ("replaced-" + name);
-      fs::remove_all(aside, ec);
-      fs::rename(link, aside, ec);
-      if (ec) throw std::runtime_error(link.string() + ": cannot replace: " + ec.message());
-    }
-    fs::create_symlink(target, link, ec);
-    if (ec) throw std::runtime_error(link.string() + ": cannot create: " + ec.message());
-  }
-  // The one step that publishes: a new symlink renamed over `current`.
-  const fs::path fresh = state / "current.new";
-  std::error_code ec;
-  fs::remove(fresh, ec);
-  fs::create_symlink(fs::path(run_).filename(), fresh, ec);
-  if (ec) throw std::runtime_error(fresh.string() + ": cannot create: " + ec.message());
-  if (std::rename(fresh.c_str(), (state / "current").c_str()) != 0)
-    fail((state / "current").string(), "cannot publish");
-  sync_directory(state.string());
-  committed_ = true;
-  // Only now is the previous run unreferenced.
-  if (!old_run.empty() && old_run != fs::path(run_).filename().string())
-    fs::remove_all(state / old_run, ec);
-  for (const std::string& name : names_) fs::remove_all(state / ("replaced-" + name), ec);
 }
 
 }  // namespace frustum

@@ -1,6 +1,6 @@
 // Writing outputs so that a reader never sees half of them: one file through a temporary file
-// renamed over the target, and a whole set of outputs (a batch's gradebook, feedback pages and
-// Gradescope results) through a transaction published by one rename.
+// renamed over the target, and many files made durable by one sync (FileBatch). A batch's whole
+// set of outputs is published by one rename: OutputTransaction (output_transaction.hpp).
 #pragma once
 
 #include <string>
@@ -66,55 +66,6 @@ class FileBatch {
   int committer_ = -1;       // the process committing in the background (a pid), or -1
   int committer_fd_ = -1;    // its socket: groups to it, for each group its error message back
   bool committing_ = false;  // a group was sent and its reply not yet read
-};
-
-// A batch's outputs under `dir`, published all at once. Layout:
-//   dir/.frustum/lock            held (flock) while a batch writes here
-//   dir/.frustum/run-N/...       the outputs of run N
-//   dir/.frustum/current         symlink to the published run-N (replaced by one rename)
-//   dir/NAME                     symlink to .frustum/current/NAME, for each published NAME
-// begin() takes the lock (a second batch on the same directory is refused), clears what a
-// killed run left, and opens a fresh run directory; write() puts files in it; commit() syncs
-// them and swaps `current` in one rename, then removes the previous run. A kill at any moment
-// leaves the previous complete outputs (or none), never a mix. Without commit() (an exception,
-// a full disk) the destructor removes the new run and the published outputs stay as they were.
-// The lock is released when the process ends, however it ends.
-class OutputTransaction {
- public:
-  // Throws std::runtime_error with a sentence for a person (not writable, locked by pid N).
-  explicit OutputTransaction(std::string dir, std::vector<std::string> names);
-  ~OutputTransaction();
-  OutputTransaction(const OutputTransaction&) = delete;
-  OutputTransaction& operator=(const OutputTransaction&) = delete;
-
-  // `relative` is under one of `names` ("feedback/s1.md", "gradebook.csv", "katex/fonts/f.woff2";
-  // subdirectories are made as needed).
-  void write(const std::string& relative, const std::string& content);
-  // Adds `content` at the end of a file of this run (made when there is none).
-  void append(const std::string& relative, const std::string& content);
-  // Takes back a file of this run (none there is fine).
-  void remove(const std::string& relative);
-  // Has the disk write what this run holds so far, and waits for it: called while other
-  // processes go on writing (a batch's children grade while the parent waits here), it leaves
-  // commit()'s sync only what came after, instead of the whole run at the end. Not a point of
-  // durability: an error is kept and thrown by commit().
-  void write_back();
-  void commit();
-
-  // Where a published file can be read: dir/relative.
-  std::string published_path(const std::string& relative) const;
-
- private:
-  std::string dir_;
-  std::vector<std::string> names_;
-  std::string run_;  // dir/.frustum/run-N being written
-  int lock_fd_ = -1;
-  // The run's directory, open from the start: every sync goes through it, so that a write error
-  // the disk reports at any time after the run began reaches commit().
-  int run_fd_ = -1;
-  int write_back_error_ = 0;  // what write_back() met (errno), thrown by commit()
-  bool committed_ = false;
-  void put(const std::string& relative, const std::string& content, int flags);
 };
 
 }  // namespace frustum

@@ -13,15 +13,16 @@
 #include <set>
 #include <sstream>
 #include <thread>
+#include <unordered_set>
 #include <utility>
 
-#include "grader/atomic_file.hpp"
 #include "grader/csv.hpp"
 #include "grader/feedback.hpp"
 #include "grader/file_names.hpp"
 #include "grader/gradebook.hpp"
 #include "grader/gradescope.hpp"
 #include "grader/isolate.hpp"
+#include "grader/output_transaction.hpp"
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/input/yaml_document.hpp"
@@ -310,7 +311,14 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   const std::vector<std::pair<std::string, std::string>> katex = katex_files();
   std::vector<std::string> names = {"gradebook.csv", "feedback", "gradescope"};
   if (!katex.empty()) names.push_back(kKatexDir);
-  OutputTransaction out(options.out_dir, names);
+  // Every file the run may write, so that grading the class again writes over the run before
+  // (OutputTransaction) instead of deleting one run's files and creating another's.
+  std::unordered_set<std::string> files{"gradebook.csv"};
+  for (const std::string& stem : stems)
+    files.insert(
+        {"feedback/" + stem + ".md", "feedback/" + stem + ".html", "gradescope/" + stem + ".json"});
+  for (const auto& [relative, bytes] : katex) files.insert(std::string(kKatexDir) + "/" + relative);
+  OutputTransaction out(options.out_dir, names, std::move(files));
   // A set that does not vary per student is solved once, here: every child inherits it.
   std::optional<SolvedSet> solved;
   if (!options.set_for) solved = solve_for_grading(set);

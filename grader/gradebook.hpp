@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "grader/atomic_file.hpp"
 #include "grader/batch.hpp"
+#include "grader/output_transaction.hpp"
 
 namespace frustum {
 

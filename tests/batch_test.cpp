@@ -26,6 +26,7 @@
 #include "grader/gradebook.hpp"
 #include "grader/gradescope.hpp"
 #include "grader/isolate.hpp"
+#include "grader/output_transaction.hpp"
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "test_util.hpp"

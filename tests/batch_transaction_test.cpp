@@ -14,12 +14,12 @@
 #include <sstream>
 #include <thread>
 
-#include "grader/atomic_file.hpp"
 #include "grader/batch.hpp"
 #include "grader/csv.hpp"
 #include "grader/feedback.hpp"
 #include "grader/file_names.hpp"
 #include "grader/gradescope.hpp"
+#include "grader/output_transaction.hpp"
 #include "test_util.hpp"
 
 namespace frustum {
@@ -34,13 +34,7 @@ const char* kSet = R"(problems:
     ask: [z]
 )";
 
-fs::path scratch(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() /
-                     ("frustum_txn_" + name + "_" + std::to_string(getpid()) + "_" +
-                      std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
-  fs::create_directories(p);
-  return p;
-}
+fs::path scratch(const std::string& name) { return test::scratch_dir("txn_" + name); }
 
 fs::path make_class(const fs::path& dir, int students) {
   const fs::path in = dir / "in";
@@ -239,15 +233,20 @@ TEST(BatchTransaction, AKillAtAnyMomentLeavesConsistentOutputsAndNoGradingChild)
     }
     EXPECT_FALSE(locked) << "round " << round << ": the grading child outlived its parent";
   }
-  // A last complete run publishes, and leaves one run directory.
+  // A last complete run publishes, and leaves its own run directory and the one it replaced
+  // (kept for the next run to be written into), none of what the killed runs left.
+  std::error_code none;
+  const fs::path before = fs::read_symlink(dir / "out" / ".frustum" / "current", none);
   BatchOptions o;
   o.out_dir = out;
   grade_batch(set, collect_submissions(in.string()), o);
   expect_consistent(out);
-  int runs = 0;
+  std::set<std::string> runs;
   for (const auto& e : fs::directory_iterator(dir / "out" / ".frustum"))
-    runs += e.path().filename().string().rfind("run-", 0) == 0;
-  EXPECT_EQ(runs, 1);
+    if (e.path().filename().string().rfind("run-", 0) == 0) runs.insert(e.path().filename());
+  std::set<std::string> expected{fs::read_symlink(dir / "out" / ".frustum" / "current")};
+  if (!before.empty()) expected.insert(before.string());
+  EXPECT_EQ(runs, expected);
   fs::remove_all(dir);
 }
 

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -57,6 +59,17 @@ inline std::string error_text(const ProblemResult& r) {
   return r.error ? r.error->format() : std::string();
 }
 
+// A fresh directory under the system's temporary directory, named after `name`, this process
+// and the clock (tests that run at once never share one).
+inline std::filesystem::path scratch_dir(const std::string& name) {
+  const std::filesystem::path p =
+      std::filesystem::temp_directory_path() /
+      ("frustum_" + name + "_" + std::to_string(::getpid()) + "_" +
+       std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+  std::filesystem::create_directories(p);
+  return p;
+}
+
 // A file's bytes ("" when it cannot be read).
 inline std::string read_file(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -82,7 +95,7 @@ inline std::map<std::string, std::string> published_tree(const std::filesystem::
       continue;
     }
     if (it->is_regular_file())
-      files[fs::relative(it->path(), dir).string()] = read_file(it->path());
+      files[it->path().lexically_relative(dir).string()] = read_file(it->path());
   }
   return files;
 }
