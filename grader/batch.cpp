@@ -300,6 +300,8 @@ bool write_back_due(std::size_t done, std::size_t n) {
 
 BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& entries,
                         const BatchOptions& options) {
+  // The children, once done, end while the class is published; waited for last of all.
+  Reaper reaper;
   BatchResult result;
   // File names, one per student and never shared (two files claiming one id both get theirs).
   std::vector<std::string> ids;
@@ -435,7 +437,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   // Students are independent: each child takes the next student not yet taken, so the children
   // finish together on a loaded machine (rows and files are kept by student, not by arrival).
   run_isolated_each(entries.size(), work, options.timeout_seconds, on_result, 64u << 20, jobs, {},
-                    Shares::Dynamic);
+                    Shares::Dynamic, &reaper);
   gradebook.finish();
   out.commit();
   return result;

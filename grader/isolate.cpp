@@ -123,7 +123,7 @@ struct Lane {
 std::vector<IsolatedResult> run_isolated_each(
     std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
     const std::function<void(std::size_t, IsolatedResult&)>& on_result, std::size_t max_output,
-    std::size_t jobs, const std::function<bool()>& stop, Shares shares) {
+    std::size_t jobs, const std::function<bool()>& stop, Shares shares, Reaper* reaper) {
   std::vector<IsolatedResult> results(count);
   std::vector<char> handed(count, 0);  // the items whose result is in
   jobs = std::max<std::size_t>(1, std::min(jobs, count));
@@ -219,10 +219,6 @@ std::vector<IsolatedResult> run_isolated_each(
     close(lane.fd);
     lane.fd = -1;
     if (stop != Stop::Eof) kill(lane.pid, SIGKILL);
-    int status = 0;
-    while (waitpid(lane.pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    lane.pid = -1;
     // The item the child was on: the one whose result it was sending, else the next of its
     // share or the last it took.
     std::size_t on = Board::kNone;
@@ -232,7 +228,19 @@ std::vector<IsolatedResult> run_isolated_each(
       on = lane.next;
     else if (dynamic)
       on = board->current(j).load();
-    if (on >= count || handed[on]) return;
+    const bool owed = on < count && !handed[on];
+    // A child that closed its pipe owing nothing is waited for by the reaper: it is unmapping
+    // its memory, and its exit status says nothing about any item.
+    if (stop == Stop::Eof && !owed && reaper) {
+      reaper->adopt(lane.pid);
+      lane.pid = -1;
+      return;
+    }
+    int status = 0;
+    while (waitpid(lane.pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    lane.pid = -1;
+    if (!owed) return;
     if (stopped_by_caller && stop == Stop::Eof && !WIFSIGNALED(status) && WEXITSTATUS(status) == 0)
       return;  // the child stopped before its next item, as asked
     IsolatedResult r;
@@ -366,11 +374,17 @@ std::vector<IsolatedResult> run_isolated_each(
     run_isolated_each(
         left.size(), [&](std::size_t k) { return work(left[k]); }, seconds,
         [&](std::size_t k, IsolatedResult& r) { finish(left[k], std::move(r)); }, max_output, 1,
-        [&] { return stopped_by_caller; });
+        [&] { return stopped_by_caller; }, Shares::Contiguous, reaper);
     for (const std::size_t i : left)
       if (!handed[i]) results[i].error = "not run";
   }
   return results;
+}
+
+Reaper::~Reaper() {
+  for (const int pid : pids_)
+    while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
 }
 
 IsolatedResult run_isolated(const std::function<std::string()>& work, double seconds,

@@ -33,6 +33,21 @@ enum class Shares {
   Dynamic,
 };
 
+// Child processes that ended their work and are still exiting (the kernel unmapping what they
+// used takes milliseconds): the destructor waits for them, so that whoever made them goes on
+// with its own work meanwhile (grade_batch publishes the class while its children end).
+class Reaper {
+ public:
+  Reaper() = default;
+  ~Reaper();
+  Reaper(const Reaper&) = delete;
+  Reaper& operator=(const Reaper&) = delete;
+  void adopt(int pid) { pids_.push_back(pid); }
+
+ private:
+  std::vector<int> pids_;
+};
+
 // Runs work(0) … work(count − 1) in child processes, each item under its own time limit, and
 // returns one result per item in order. `jobs` children share the items (`shares` says how) and
 // stream each result back as it finishes (so a class costs one fork per child, not one per
@@ -44,10 +59,13 @@ enum class Shares {
 // `stop` (optional) is asked after each on_result: once it says true, each child finishes the
 // item it is on (its result is handed over as usual) and starts no other; the items never
 // started are left Failed ("not run") without an on_result call.
+// `reaper` (optional) is handed the children that end with nothing owed, instead of waiting
+// here for each to exit; without one, every child has exited when this returns.
 std::vector<IsolatedResult> run_isolated_each(
     std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
     const std::function<void(std::size_t index, IsolatedResult&)>& on_result = {},
     std::size_t max_output = 64u << 20, std::size_t jobs = 1,
-    const std::function<bool()>& stop = {}, Shares shares = Shares::Contiguous);
+    const std::function<bool()>& stop = {}, Shares shares = Shares::Contiguous,
+    Reaper* reaper = nullptr);
 
 }  // namespace frustum

@@ -312,6 +312,44 @@ TEST(Isolate, SharesInParallelKeepEachItemsOwnResult) {
   }
 }
 
+// With a reaper, the children that end owing nothing are left to it (still there when
+// run_isolated_each returns, gone once the reaper is); a child that crashes on an item is still
+// waited for at once, so that its item says how it ended.
+TEST(Isolate, AReaperWaitsForTheChildrenThatOweNothing) {
+  for (const Shares shares : {Shares::Contiguous, Shares::Dynamic}) {
+    std::vector<IsolatedResult> results;
+    {
+      Reaper reaper;
+      results = run_isolated_each(
+          12,
+          [](std::size_t i) -> std::string {
+            if (i == 4) std::raise(SIGSEGV);
+            return "item " + std::to_string(i);
+          },
+          10, {}, 64u << 20, 3, {}, shares, &reaper);
+      EXPECT_NE(waitpid(-1, nullptr, WNOHANG), -1) << "every child was waited for already";
+    }
+    errno = 0;
+    EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1);
+    EXPECT_EQ(errno, ECHILD) << "a child was left behind";
+    ASSERT_EQ(results.size(), 12u);
+    for (std::size_t i = 0; i < 12; ++i) {
+      if (i == 4) {
+        EXPECT_EQ(results[i].status, IsolatedResult::Status::Crashed);
+        continue;
+      }
+      EXPECT_EQ(results[i].status, IsolatedResult::Status::Ok) << i;
+      EXPECT_EQ(results[i].output, "item " + std::to_string(i));
+    }
+  }
+  // Without one, no child is left when run_isolated_each returns.
+  run_isolated_each(
+      6, [](std::size_t i) { return std::to_string(i); }, 10, {}, 64u << 20, 2);
+  errno = 0;
+  EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1);
+  EXPECT_EQ(errno, ECHILD);
+}
+
 // Dynamic shares: while one child is held on a long item, the other takes every other item
 // (contiguous shares would leave items 1–9 queued behind item 0 in its child). Item 0 is held
 // until item 19 is done, so the test does not depend on timing.
