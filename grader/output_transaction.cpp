@@ -179,7 +179,7 @@ void OutputTransaction::append(const std::string& relative, const std::string& c
 // name's own one or two parts, not every directory above the run, for each of a class's files.
 // A symlink is not followed.
 int OutputTransaction::open_file(const std::string& relative, int flags) const {
-  const int how = O_WRONLY | O_CREAT | O_NOFOLLOW | O_CLOEXEC | flags;
+  const int how = O_WRONLY | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | flags;
   int fd = ::openat(run_fd_, relative.c_str(), how, 0644);
   if (fd < 0 && errno == ENOENT) {  // a file in a subdirectory of a name ("katex/fonts/…")
     std::error_code ec;
@@ -194,13 +194,23 @@ void OutputTransaction::put(const std::string& relative, const std::string& cont
   // In a kept run, a file is written over where it lies (overwrite): truncating it would free
   // its blocks, and ext4 mounted with `discard` waits for the disk to discard them, file by file.
   const bool in_place = reused_ && flags == O_TRUNC;
-  int fd = open_file(relative, in_place ? 0 : flags);
+  int fd = -1;
+  if (in_place) {
+    // A file of the kept run that cannot be opened for writing (made read-only by hand, or a
+    // directory, symlink or pipe put there since) gives way to a new file.
+    fd = ::openat(run_fd_, relative.c_str(), O_WRONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0 && errno != ENOENT) {
+      std::error_code ec;
+      fs::remove_all(fs::path(run_) / relative, ec);
+    }
+  }
+  if (fd < 0) fd = open_file(relative, in_place ? 0 : flags);
   try {
     struct stat st {};
     if (in_place && ::fstat(fd, &st) != 0) fail(published_path(relative), "cannot read");
-    if (in_place && st.st_nlink > 1) {
-      // A file also linked elsewhere (a copy made with hard links) keeps what it holds there:
-      // this run's file is a new one.
+    if (in_place && (st.st_nlink > 1 || !S_ISREG(st.st_mode))) {
+      // A file also linked elsewhere (a copy made with hard links) keeps what it holds there,
+      // and what is not a plain file is not written to: this run's file is a new one.
       ::close(fd);
       fd = -1;
       if (::unlinkat(run_fd_, relative.c_str(), 0) != 0)

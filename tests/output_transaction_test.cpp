@@ -126,6 +126,31 @@ TEST(OutputTransaction, LinksIntoTheKeptRunAreNotWrittenThrough) {
   publish(out, {{"feedback/a.md", "new a\n"}, {"feedback/b.md", "new b\n"}});
   EXPECT_EQ(test::read_file(out / "feedback" / "a.md"), "new a\n");
   EXPECT_EQ(test::read_file(out / "feedback" / "b.md"), "new b\n");
+  // A pipe and a directory put where files were, after the run began (the transaction made,
+  // nothing written yet): replaced by files, the pipe never opened for writing (that would wait
+  // for a reader).
+  {
+    publish(out, {{"feedback/a.md", "4\n"}, {"feedback/b.md", "4\n"}});
+    std::unordered_set<std::string> names{"feedback/a.md", "feedback/b.md"};
+    OutputTransaction t(out.string(), {"feedback"}, names);
+    ASSERT_TRUE(t.reused());
+    fs::path run;  // the run being written: the highest number
+    for (const auto& e : fs::directory_iterator(out / ".frustum"))
+      if (e.path().filename().string().rfind("run-", 0) == 0 &&
+          (run.empty() || std::stoi(e.path().filename().string().substr(4)) >
+                              std::stoi(run.filename().string().substr(4))))
+        run = e.path();
+    ASSERT_TRUE(fs::exists(run / "feedback" / "a.md")) << run;
+    fs::remove(run / "feedback" / "a.md");
+    ASSERT_EQ(::mkfifo((run / "feedback" / "a.md").c_str(), 0644), 0);
+    fs::remove(run / "feedback" / "b.md");
+    fs::create_directories(run / "feedback" / "b.md" / "inside");
+    t.write("feedback/a.md", "5 a\n");
+    t.write("feedback/b.md", "5 b\n");
+    t.commit();
+  }
+  EXPECT_EQ(test::read_file(out / "feedback" / "a.md"), "5 a\n");
+  EXPECT_EQ(test::read_file(out / "feedback" / "b.md"), "5 b\n");
   EXPECT_EQ(test::read_file(dir / "backup-a.md"), "kept a\n");
   EXPECT_EQ(test::read_file(dir / "elsewhere.md"), "not ours\n");
   EXPECT_FALSE(fs::is_symlink(out / ".frustum" / "run-3" / "feedback" / "b.md"));
