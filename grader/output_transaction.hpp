@@ -42,7 +42,8 @@ class OutputTransaction {
   // `relative` is under one of `names` ("feedback/s1.md", "gradebook.csv", "katex/fonts/f.woff2";
   // subdirectories are made as needed).
   void write(const std::string& relative, const std::string& content);
-  // Adds `content` at the end of a file of this run (made when there is none).
+  // Adds `content` at the end of a file of this run (made when there is none). In a kept run the
+  // file may hold the earlier run's text: write() it first (the gradebook starts empty so).
   void append(const std::string& relative, const std::string& content);
   // Takes back a file of this run (none there is fine).
   void remove(const std::string& relative);
