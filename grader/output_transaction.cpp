@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 
 #include "grader/file_io.hpp"
@@ -47,11 +49,21 @@ std::unordered_set<std::string> directories_of(const std::unordered_set<std::str
   return dirs;
 }
 
-// Leaves in the kept run `dir` (the part `prefix` of it) only the files this run may write and
-// the directories they lie in: anything else, and anything that is neither a plain file nor a
-// directory (a symlink there would be followed when the file is written), is removed.
-void keep_only(const fs::path& dir, const std::string& prefix,
-               const std::unordered_set<std::string>& files,
+// A run's file names as sorted hashes: what commit() compares the replaced run with, held
+// through the batch in a few pages instead of a set of strings.
+std::vector<std::uint64_t> name_hashes(const std::unordered_set<std::string>& files) {
+  std::vector<std::uint64_t> hashes;
+  hashes.reserve(files.size());
+  for (const std::string& f : files) hashes.push_back(std::hash<std::string>{}(f));
+  std::sort(hashes.begin(), hashes.end());
+  return hashes;
+}
+
+// Leaves in the run `dir` (the part `prefix` of it) only the files `keep` says this run may
+// write and the directories they lie in: anything else, and anything that is neither a plain
+// file nor a directory (a symlink there would be followed when the file is written), is removed.
+template <typename Keep>
+void keep_only(const fs::path& dir, const std::string& prefix, const Keep& keep,
                const std::unordered_set<std::string>& dirs) {
   std::error_code ec;
   std::vector<fs::path> removed;
@@ -62,8 +74,8 @@ void keep_only(const fs::path& dir, const std::string& prefix,
     if (it->is_symlink())
       removed.push_back(it->path());
     else if (it->is_directory() && dirs.count(relative))
-      keep_only(it->path(), relative, files, dirs);
-    else if (!(it->is_regular_file() && files.count(relative)))
+      keep_only(it->path(), relative, keep, dirs);
+    else if (!(it->is_regular_file() && keep(relative)))
       removed.push_back(it->path());
   }
   for (const fs::path& p : removed) fs::remove_all(p, ec);
@@ -145,11 +157,18 @@ OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> n
   }
   for (const fs::path& p : left) fs::remove_all(p, ec);
   run_ = (state / ("run-" + std::to_string(next))).string();
+  if (files) {
+    dirs_ = directories_of(*files, names_);
+    file_hashes_ = name_hashes(*files);
+    pruned_ = true;
+  }
   if (kept && files) {
     // The kept run becomes this one: renamed, then cleared of what this run does not write.
     fs::rename(kept->second, run_, ec);
     reused_ = !ec;
-    if (reused_) keep_only(run_, "", *files, directories_of(*files, names_));
+    if (reused_)
+      keep_only(
+          run_, "", [&](const std::string& f) { return files->count(f) > 0; }, dirs_);
   }
   if (kept && !reused_) fs::remove_all(kept->second, ec);
   fs::create_directories(run_, ec);
@@ -268,8 +287,9 @@ void OutputTransaction::commit() {
   }
   // The one step that publishes: a new symlink renamed over `current`. The run it replaces is
   // kept, for the next run to be written into.
-  const fs::path fresh = state / "current.new";
   std::error_code ec;
+  const fs::path replaced = fs::read_symlink(state / "current", ec);
+  const fs::path fresh = state / "current.new";
   fs::remove(fresh, ec);
   fs::create_symlink(fs::path(run_).filename(), fresh, ec);
   if (ec) throw std::runtime_error(fresh.string() + ": cannot create: " + ec.message());
@@ -278,6 +298,17 @@ void OutputTransaction::commit() {
   sync_directory(state.string());
   committed_ = true;
   for (const std::string& name : names_) fs::remove_all(state / ("replaced-" + name), ec);
+  // The replaced run keeps only the files this run also has: the feedback of a student no
+  // longer in the class (another section graded into the same directory) does not stay behind
+  // in a directory that is shared or archived as a whole.
+  if (pruned_ && !replaced.empty() && replaced.filename() != fs::path(run_).filename())
+    keep_only(
+        state / replaced.filename(), "",
+        [&](const std::string& f) {
+          return std::binary_search(file_hashes_.begin(), file_hashes_.end(),
+                                    std::hash<std::string>{}(f));
+        },
+        dirs_);
 }
 
 }  // namespace frustum

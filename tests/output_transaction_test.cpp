@@ -111,6 +111,28 @@ TEST(OutputTransaction, WhatTheKeptRunHeldBeyondThisRunsFilesIsNotPublished) {
   fs::remove_all(dir);
 }
 
+// Another section graded into the same directory: the run it replaces keeps only the files the
+// new run has too, so the first section's pages do not stay behind under .frustum/.
+TEST(OutputTransaction, TheReplacedRunKeepsOnlyTheFilesTheNewRunHas) {
+  const fs::path dir = scratch("sections");
+  const fs::path out = dir / "out";
+  publish(out, {{"gradebook.csv", "a,b\n"},
+                {"feedback/a.md", "a\n"},
+                {"feedback/b.md", "b\n"},
+                {"feedback/sub/c.md", "c\n"}});
+  const fs::path first = out / ".frustum" / fs::read_symlink(out / ".frustum" / "current");
+  publish(out, {{"gradebook.csv", "a\n"}, {"feedback/a.md", "a again\n"}});
+  EXPECT_EQ(test::read_file(first / "feedback" / "a.md"), "a\n");  // the previous grading of a
+  EXPECT_FALSE(fs::exists(first / "feedback" / "b.md"));
+  EXPECT_FALSE(fs::exists(first / "feedback" / "sub"));
+  // A run that does not name its files leaves the run it replaces whole (and the next run that
+  // names its files writes over it after clearing it).
+  publish(out, {{"gradebook.csv", "z\n"}, {"feedback/z.md", "z\n"}}, false);
+  const fs::path second = out / ".frustum" / "run-2";
+  EXPECT_EQ(test::read_file(second / "feedback" / "a.md"), "a again\n");
+  fs::remove_all(dir);
+}
+
 // A file of the kept run that is also linked elsewhere (a copy made with `cp -al`) keeps its
 // content there; a symlink put in the kept run is not followed.
 TEST(OutputTransaction, LinksIntoTheKeptRunAreNotWrittenThrough) {
@@ -210,11 +232,13 @@ TEST(OutputTransaction, GradingAgainPublishesWhatAFreshGradingPublishes) {
     inodes.emplace_back();
     for (const auto& [file, _] : again) inodes.back()[file] = inode_of(fs::canonical(out / file));
     // Written in place: a file has the inode it had when the kept run (two rounds before) was
-    // published.
+    // published, if the round between had that file too (else it was cleared from the kept run
+    // when the round between was published).
     if (round < 2) continue;
     int same = 0, compared = 0;
     for (const auto& [file, inode] : inodes[round - 2])
-      if (const auto it = inodes[round].find(file); it != inodes[round].end()) {
+      if (const auto it = inodes[round].find(file);
+          it != inodes[round].end() && inodes[round - 1].count(file)) {
         ++compared;
         same += it->second == inode;
       }
