@@ -49,8 +49,9 @@ std::unordered_set<std::string> directories_of(const std::unordered_set<std::str
   return dirs;
 }
 
-// A run's file names as sorted hashes: what commit() compares the replaced run with, held
-// through the batch in a few pages instead of a set of strings.
+// A run's file names as sorted hashes (has_file): what the kept run and, once published, the
+// replaced run are cleared against, held through the batch in a few pages instead of a set of
+// strings.
 std::vector<std::uint64_t> name_hashes(const std::unordered_set<std::string>& files) {
   std::vector<std::uint64_t> hashes;
   hashes.reserve(files.size());
@@ -144,8 +145,8 @@ OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> n
   std::vector<fs::path> left;
   for (const fs::directory_entry& e : fs::directory_iterator(state, ec)) {
     const std::string name = e.path().filename().string();
-    const std::optional<unsigned long> n = run_number(name);
     if (name.rfind("run-", 0) != 0) continue;
+    const std::optional<unsigned long> n = run_number(name);
     if (n) next = std::max(next, *n + 1);
     if (!read_ec && e.path().filename() == current.filename()) continue;
     if (n && !e.is_symlink() && e.is_directory() && (!kept || *n > kept->first)) {
@@ -160,15 +161,15 @@ OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> n
   if (files) {
     dirs_ = directories_of(*files, names_);
     file_hashes_ = name_hashes(*files);
-    pruned_ = true;
+    files_named_ = true;
   }
-  if (kept && files) {
+  if (kept && files_named_) {
     // The kept run becomes this one: renamed, then cleared of what this run does not write.
     fs::rename(kept->second, run_, ec);
     reused_ = !ec;
     if (reused_)
       keep_only(
-          run_, "", [&](const std::string& f) { return files->count(f) > 0; }, dirs_);
+          run_, "", [this](const std::string& f) { return has_file(f); }, dirs_);
   }
   if (kept && !reused_) fs::remove_all(kept->second, ec);
   fs::create_directories(run_, ec);
@@ -301,14 +302,15 @@ void OutputTransaction::commit() {
   // The replaced run keeps only the files this run also has: the feedback of a student no
   // longer in the class (another section graded into the same directory) does not stay behind
   // in a directory that is shared or archived as a whole.
-  if (pruned_ && !replaced.empty() && replaced.filename() != fs::path(run_).filename())
+  if (files_named_ && !replaced.empty() && replaced.filename() != fs::path(run_).filename())
     keep_only(
-        state / replaced.filename(), "",
-        [&](const std::string& f) {
-          return std::binary_search(file_hashes_.begin(), file_hashes_.end(),
-                                    std::hash<std::string>{}(f));
-        },
+        state / replaced.filename(), "", [this](const std::string& f) { return has_file(f); },
         dirs_);
+}
+
+bool OutputTransaction::has_file(const std::string& relative) const {
+  return std::binary_search(file_hashes_.begin(), file_hashes_.end(),
+                            std::hash<std::string>{}(relative));
 }
 
 }  // namespace frustum

@@ -74,10 +74,12 @@ class OutputTransaction {
   bool committed_ = false;
   bool reused_ = false;
   // With the run's files named: their directories, and the names as sorted hashes, to clear the
-  // replaced run of what this run does not have once it is published.
-  bool pruned_ = false;
+  // kept run (before writing) and the replaced run (once published) of what this run does not
+  // have.
+  bool files_named_ = false;
   std::unordered_set<std::string> dirs_;
   std::vector<std::uint64_t> file_hashes_;
+  bool has_file(const std::string& relative) const;
   void put(const std::string& relative, const std::string& content, int flags);
   int open_file(const std::string& relative, int flags) const;
   void overwrite(int fd, const std::string& relative, const std::string& content);
