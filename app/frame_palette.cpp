@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cstring>
 
 #include "solver/util/side_by_side.hpp"
@@ -96,13 +95,12 @@ bool frame_runs(const Image<std::uint32_t>& image, FrameRuns& out, int threads, 
   const int parts = threads <= 1 ? 1 : std::max(1, std::min(image.height / 64, 4 * threads));
   std::vector<FrameRuns> part(static_cast<std::size_t>(parts));
   std::vector<char> fits(static_cast<std::size_t>(parts), 0);
-  std::atomic<int> next{0};
-  side_by_side(
-      std::min(threads, parts),
-      [&](int) {
+  in_turn(
+      std::min(threads, parts), parts,
+      [&](int, const auto& next) {
         // Scanned into a part on this thread's stack and moved into place once: the parts side
         // by side in one array share cache lines, and a run's push writes its vector's end.
-        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < parts;) {
+        for (int k; (k = next()) >= 0;) {
           FrameRuns scanned;
           fits[k] =
               scan_rows(image, image.height * k / parts, image.height * (k + 1) / parts, scanned);

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cstdio>
 #include <vector>
 
@@ -95,14 +94,13 @@ std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int th
     bool ok = false;
   };
   std::vector<Piece> piece(static_cast<std::size_t>(pieces));
-  std::atomic<int> next{0};
-  side_by_side(
-      workers,
-      [&](int) {
+  in_turn(
+      workers, pieces,
+      [&](int, const auto& next) {
         z_stream z{};
         if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_RLE) != Z_OK) return;
         std::vector<unsigned char> raw(stride * kRowsPerPiece);
-        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < pieces;) {
+        for (int k; (k = next()) >= 0;) {
           Piece& p = piece[static_cast<std::size_t>(k)];
           const int r0 = k * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
           const std::size_t size = stride * static_cast<std::size_t>(r1 - r0);

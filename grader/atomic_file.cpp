@@ -149,28 +149,16 @@ void put_length(std::string& out, std::uint64_t n) {
   out.append(reinterpret_cast<const char*>(&n), sizeof n);
 }
 
-bool read_length(int fd, std::uint64_t& n) {
-  return read_exact(fd, reinterpret_cast<char*>(&n), sizeof n);
-}
-
-bool read_text(int fd, std::string& text) {
-  std::uint64_t n = 0;
-  if (!read_length(fd, n) || n > (std::uint64_t(1) << 32)) return false;
-  text.resize(n);
-  return read_exact(fd, text.data(), n);
-}
-
-}  // namespace
-
-namespace {
-
-// The committer's end of the socket, read in large blocks: a group of 8,192 files arrives as
-// one message, which unbuffered reads would take in four system calls per file.
-class BufferedReader {
+// Lengths and texts from the socket. Buffered at the committer's end, read in large blocks: a
+// group of 8,192 files arrives as one message, which unbuffered reads would take in four system
+// calls per file. Unbuffered at this process's end, which reads one reply at a time and nothing
+// past it.
+class MessageReader {
  public:
-  explicit BufferedReader(int fd) : fd_(fd) {}
+  MessageReader(int fd, bool buffered) : fd_(fd), buffered_(buffered) {}
 
   bool read_exact(char* data, std::size_t size) {
+    if (!buffered_) return frustum::read_exact(fd_, data, size);
     while (size > 0) {
       if (at_ == buffer_.size() && !fill()) return false;
       const std::size_t n = std::min(size, buffer_.size() - at_);
@@ -207,6 +195,7 @@ class BufferedReader {
   }
 
   int fd_;
+  bool buffered_;
   std::string buffer_;
   std::size_t at_ = 0;
 };
@@ -216,7 +205,7 @@ class BufferedReader {
 void FileBatch::serve_commits(int fd) {
   // A group: its count, then each file's temporary name and target. A count of 0 ends the
   // child, as does the end of the stream (this process gone).
-  BufferedReader in(fd);
+  MessageReader in(fd, true);
   for (;;) {
     std::uint64_t count = 0;
     if (!in.read_length(count) || count == 0) ::_exit(0);
@@ -300,7 +289,7 @@ void FileBatch::wait_commit() {
   if (!committing_) return;
   committing_ = false;
   std::string message;
-  if (!read_text(committer_fd_, message)) {
+  if (!MessageReader(committer_fd_, false).read_text(message)) {
     end_committer();
     throw std::runtime_error(
         "the files of a group could not be put in place (the process that "

@@ -50,15 +50,6 @@ problems:
     ask: [df, facing]
 )Y";
 
-// A fresh scratch directory per test.
-fs::path scratch(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("frustum-batch-" + name + "-" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 TEST(Csv, ReadsQuotesDoubledQuotesLineBreaksAndCrlf) {
   const CsvTable t = parse_csv(
       "\xEF\xBB\xBFstudent,zbuf.plane\r\ns1,\"x + y - z = -6\"\r\n"
@@ -81,7 +72,7 @@ TEST(Csv, WritingAndReadingRoundTrips) {
 }
 
 TEST(AtomicFile, WritesTheWholeFileAndLeavesNoTemporaryBehind) {
-  const fs::path dir = scratch("atomic");
+  const fs::path dir = test::scratch_dir("batch-atomic");
   const fs::path target = dir / "sub" / "out.txt";
   write_file_atomically(target.string(), "first");
   write_file_atomically(target.string(), std::string(1 << 20, 'x'));
@@ -103,7 +94,7 @@ std::vector<std::string> hidden_files(const fs::path& dir) {
 // A group committed in the background (generate's groups of files): in place once waited for,
 // while the next group is staged meanwhile and stays out of sight until its own commit.
 TEST(FileBatch, AGroupCommittedInTheBackgroundIsInPlaceOnceWaitedFor) {
-  const fs::path dir = scratch("background");
+  const fs::path dir = test::scratch_dir("batch-background");
   FileBatch files;
   for (int i = 0; i < 50; ++i)
     files.stage((dir / "a" / fmt::format("f{}.txt", i)).string(), fmt::format("first {}", i));
@@ -128,7 +119,7 @@ TEST(FileBatch, AGroupCommittedInTheBackgroundIsInPlaceOnceWaitedFor) {
 // Groups larger than the committer's read block (names of every length up to 200 bytes, so
 // that messages split anywhere) arrive whole, one group after another.
 TEST(FileBatch, LargeGroupsThroughTheCommitterArriveWhole) {
-  const fs::path dir = scratch("large-groups");
+  const fs::path dir = test::scratch_dir("batch-large-groups");
   FileBatch files;
   files.start_committer();
   std::vector<fs::path> written;
@@ -151,7 +142,7 @@ TEST(FileBatch, LargeGroupsThroughTheCommitterArriveWhole) {
 // Written files are readable by everyone unless the umask says otherwise, as any file a program
 // creates: 0644 less the umask.
 TEST(FileBatch, FilesTakeTheUsualModeLessTheUmask) {
-  const fs::path dir = scratch("modes");
+  const fs::path dir = test::scratch_dir("batch-modes");
   for (const mode_t mask : {mode_t{022}, mode_t{027}, mode_t{077}}) {
     const mode_t saved = ::umask(mask);
     const fs::path path = dir / fmt::format("m{:o}.txt", mask);
@@ -172,7 +163,7 @@ TEST(FileBatch, FilesTakeTheUsualModeLessTheUmask) {
 // A background commit that cannot put a file in place: its error (naming the file) comes back
 // from wait_commit(), as commit() would have thrown it, and no temporary file is left.
 TEST(FileBatch, ABackgroundCommitThatFailsReportsItsErrorAndLeavesNoTemporaryFile) {
-  const fs::path dir = scratch("background-fails");
+  const fs::path dir = test::scratch_dir("batch-background-fails");
   FileBatch files;
   for (int i = 0; i < 5; ++i)
     files.stage((dir / fmt::format("f{}.txt", i)).string(), fmt::format("file {}", i));
@@ -196,7 +187,7 @@ TEST(FileBatch, ABackgroundCommitThatFailsReportsItsErrorAndLeavesNoTemporaryFil
 // error and leaves no temporary file, and the groups after it are still put in place; a group
 // still in flight when the batch ends is waited for, not lost.
 TEST(FileBatch, GroupsAfterAFailedGroupAreStillPutInPlace) {
-  const fs::path dir = scratch("many-groups");
+  const fs::path dir = test::scratch_dir("batch-many-groups");
   {
     FileBatch files;
     for (int g = 0; g < 6; ++g) {
@@ -354,7 +345,7 @@ TEST(Isolate, AReaperWaitsForTheChildrenThatOweNothing) {
 // (contiguous shares would leave items 1–9 queued behind item 0 in its child). Item 0 is held
 // until item 19 is done, so the test does not depend on timing.
 TEST(Isolate, DynamicSharesGiveTheRestToTheFreeChild) {
-  const fs::path marker = scratch("dynamic") / "item19-done";
+  const fs::path marker = test::scratch_dir("batch-dynamic") / "item19-done";
   fs::remove(marker);
   const auto results = run_isolated_each(
       20,
@@ -382,7 +373,7 @@ TEST(Isolate, AChildRunsAheadWhileTheParentIsBusy) {
   long max_pipe = 0;
   limit >> max_pipe;
   if (max_pipe < (1 << 20)) GTEST_SKIP() << "pipes are limited to " << max_pipe << " bytes here";
-  const fs::path marker = scratch("ahead") / "last-done";
+  const fs::path marker = test::scratch_dir("batch-ahead") / "last-done";
   bool waited_for_nothing = false;
   const auto results = run_isolated_each(
       500,
@@ -423,7 +414,7 @@ fs::path make_class(const fs::path& dir) {
 }
 
 TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
-  const fs::path dir = scratch("class");
+  const fs::path dir = test::scratch_dir("batch-class");
   const fs::path in = make_class(dir);
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   BatchOptions options;
@@ -501,7 +492,7 @@ TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
 }
 
 TEST(Batch, ASecondRunGivesByteIdenticalOutputs) {
-  const fs::path dir = scratch("twice");
+  const fs::path dir = test::scratch_dir("batch-twice");
   const fs::path in = make_class(dir);
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   BatchOptions options;
@@ -520,7 +511,7 @@ TEST(Batch, ASecondRunGivesByteIdenticalOutputs) {
 }
 
 TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
-  const fs::path dir = scratch("jobs");
+  const fs::path dir = test::scratch_dir("batch-jobs");
   const fs::path in = make_class(dir);
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   BatchOptions options;
@@ -550,7 +541,7 @@ TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
 }
 
 TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
-  const fs::path dir = scratch("csv");
+  const fs::path dir = test::scratch_dir("batch-csv");
   test::write_file(dir / "roster.csv",
                    "student,zbuf.normal,zbuf.plane,zbuf.z,bf.df,bf.facing\n"
                    "s001,\"[1, 1, -1]\",x + y - z = -6,8,-2,back\n"
@@ -576,7 +567,7 @@ TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
 // Nothing handed in is passed over in silence: two files claiming one student both say so, and
 // other files and folders beside the answers are listed as not graded (hidden ones are not).
 TEST(Batch, SharedClaimsAndOtherFilesAreReportedNotSilent) {
-  const fs::path dir = scratch("claims");
+  const fs::path dir = test::scratch_dir("batch-claims");
   test::write_file(dir / "a.yaml", "student: ann\nanswers: {zbuf: {z: 8}}\n");
   test::write_file(dir / "b.yml", "student: ann\nanswers: {zbuf: {z: 9}}\n");
   test::write_file(dir / "c.yaml", "student: cy\nanswers: {zbuf: {z: 8}}\n");
@@ -672,7 +663,7 @@ namespace {
 
 // tools/gradescope/run_autograder in a stand-in for Gradescope's /autograder tree.
 TEST(Gradescope, AutograderScriptWritesResultsJson) {
-  const fs::path ag = scratch("autograder");
+  const fs::path ag = test::scratch_dir("batch-autograder");
   fs::create_directories(ag / "source" / "build");
   fs::create_directories(ag / "submission");
   fs::create_symlink(FRUSTUM_BINARY, ag / "source" / "build" / "frustum");
@@ -704,7 +695,7 @@ TEST(Gradescope, AutograderScriptWritesResultsJson) {
 // issue 18: the ids of a directory's files: read up to the value, taken from the file's name when
 // there is none, unreadable files and shared claims noted.
 TEST(Batch, IdsAreReadUpToTheirValue) {
-  const fs::path dir = scratch("ids");
+  const fs::path dir = test::scratch_dir("batch-ids");
   for (int i = 0; i < 23; ++i)
     test::write_file(dir / fmt::format("f{:02d}.yaml", i),
                      i % 7 == 3 ? std::string("student: [not, an, id]\nanswers: {}\n")
@@ -729,7 +720,7 @@ TEST(Batch, IdsAreReadUpToTheirValue) {
 // same answers: the same id, score and feedback as the plain file. With the mark, every line
 // after `student:` was once lost, and the student was marked as having no answers.
 TEST(Batch, AnswersSavedWithAByteOrderMarkGradeLikeThePlainFile) {
-  const fs::path dir = scratch("bom");
+  const fs::path dir = test::scratch_dir("batch-bom");
   const std::string answers = "student: s1\nanswers:\n  zbuf: {z: 8}\n";
   std::string windows = "\xEF\xBB\xBF";
   for (const char c : answers) windows += c == '\n' ? std::string("\r\n") : std::string(1, c);
@@ -761,7 +752,7 @@ TEST(Batch, AnswersSavedWithAByteOrderMarkGradeLikeThePlainFile) {
 // more CPU per student than -j 1). ctest runs each test in a process of its own.
 TEST(Batch, ReadingAClassLeavesTheProcessSingleThreaded) {
   ASSERT_TRUE(__libc_single_threaded) << "run this test in a process of its own";
-  const fs::path dir = scratch("single");
+  const fs::path dir = test::scratch_dir("batch-single");
   for (int i = 0; i < 40; ++i)
     test::write_file(dir / fmt::format("f{:02d}.yaml", i),
                      fmt::format("student: s{}\nanswers: {{zbuf: {{z: 8}}}}\n", i));
@@ -775,7 +766,7 @@ TEST(Batch, ReadingAClassLeavesTheProcessSingleThreaded) {
 // row that says so, never graded under the id read before; a file removed is an error row; the
 // others are graded as ever.
 TEST(Batch, AFileChangedWhileTheClassIsGradedIsAnErrorRowNotAnotherStudentsGrade) {
-  const fs::path dir = scratch("changed");
+  const fs::path dir = test::scratch_dir("batch-changed");
   const fs::path in = make_class(dir);
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   const std::vector<BatchEntry> entries = collect_submissions(in.string());
@@ -818,7 +809,7 @@ TEST(Batch, AFileChangedWhileTheClassIsGradedIsAnErrorRowNotAnotherStudentsGrade
 // The gradebook is written as rows come, in the class's order whatever order they come in:
 // the same bytes as the whole text made at once, every row passed on once, in order.
 TEST(Batch, GradebookRowsComingInAnyOrderAreWrittenInTheClassOrder) {
-  const fs::path dir = scratch("stream");
+  const fs::path dir = test::scratch_dir("batch-stream");
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   std::mt19937 rng(7);
   for (const std::size_t n : {0u, 1u, 7u, 3000u}) {
@@ -859,7 +850,7 @@ TEST(Batch, GradebookRowsComingInAnyOrderAreWrittenInTheClassOrder) {
 // A caller that takes the rows as they come keeps none: the same rows, in order, and the same
 // outputs as a batch that keeps them.
 TEST(Batch, RowsComeInOrderAndNeedNotBeKept) {
-  const fs::path dir = scratch("onrow");
+  const fs::path dir = test::scratch_dir("batch-onrow");
   const fs::path in = make_class(dir);
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   BatchOptions options;

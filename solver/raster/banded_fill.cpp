@@ -1,7 +1,6 @@
 #include "solver/raster/banded_fill.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <span>
 
 #include "solver/util/side_by_side.hpp"
@@ -65,24 +64,25 @@ void fill_parts_in_bands(const Parts& parts, Frame& frame, int width, int height
   frame.resize(width, height);
   const int bands = (height + kBandRows - 1) / kBandRows;
   const Bins bins = bin_by_band(parts, width, height, bands);
-  std::atomic<int> next_band{0};
-  const auto worker = [&](FillStats& counts) {
-    // Counted on this thread's stack and stored once: the workers' counts side by side in one
-    // array share a cache line, which the cores would pass back and forth at every triangle.
-    FillStats mine;
-    FillStats* counted = stats ? &mine : nullptr;  // counting costs the span loop a reduction
-    for (int b; (b = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) {
-      const int j0 = b * kBandRows, j1 = std::min(height, j0 + kBandRows) - 1;
-      frame.clear_rows(j0, j1, background);
-      for (int k = bins.start[b]; k < bins.start[b + 1]; ++k)
-        draw_triangle_rows(*bins.index[k], frame, j0, j1, counted);
-    }
-    counts = mine;
-  };
   const int workers = std::max(1, std::min(threads, bands));
   std::vector<FillStats> counts(static_cast<std::size_t>(workers));
-  side_by_side(
-      workers, [&](int k) { worker(counts[static_cast<std::size_t>(k)]); }, team);
+  in_turn(
+      workers, bands,
+      [&](int w, const auto& next) {
+        // Counted on this thread's stack and stored once: the workers' counts side by side in
+        // one array share a cache line, which the cores would pass back and forth at every
+        // triangle.
+        FillStats mine;
+        FillStats* counted = stats ? &mine : nullptr;  // counting costs the span loop a reduction
+        for (int b; (b = next()) >= 0;) {
+          const int j0 = b * kBandRows, j1 = std::min(height, j0 + kBandRows) - 1;
+          frame.clear_rows(j0, j1, background);
+          for (int k = bins.start[b]; k < bins.start[b + 1]; ++k)
+            draw_triangle_rows(*bins.index[k], frame, j0, j1, counted);
+        }
+        counts[static_cast<std::size_t>(w)] = mine;
+      },
+      team);
   if (stats) {
     for (const std::span<const RasterTriangle> part : parts)
       stats->triangles += static_cast<long>(part.size());

@@ -4,6 +4,7 @@
 // number of parts that ran at once. No state outlives the call.
 #pragma once
 
+#include <atomic>
 #include <exception>
 #include <functional>
 #include <system_error>
@@ -48,6 +49,22 @@ void side_by_side(int parts, const Work& work, ThreadTeam* team = nullptr) {
   for (std::thread& t : pool) t.join();
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+// Items 0 … items − 1 shared by `workers` side by side, each worker taking the next item not yet
+// taken as it finishes one (for items of uneven cost: a frame's rows are not alike). work(w, next)
+// runs once on each worker w; next() gives it its next item, or −1 when none is left, so that
+// what a worker keeps from one item to the next (a compressor, a buffer, its counts) lives in
+// work's own frame.
+template <typename Work>
+void in_turn(int workers, int items, const Work& work, ThreadTeam* team = nullptr) {
+  std::atomic<int> taken{0};
+  const auto next = [&]() {
+    const int k = taken.fetch_add(1, std::memory_order_relaxed);
+    return k < items ? k : -1;
+  };
+  side_by_side(
+      workers, [&](int w) { work(w, next); }, team);
 }
 
 }  // namespace frustum
