@@ -46,7 +46,8 @@ std::string ident_of(const std::string& stem) {
 }
 
 int export_set(const ExportOptions& e, const Output& o) {
-  const ProblemSet set = load_problem_set(e.input);
+  const YamlDocument doc = load_yaml_file(e.input);
+  const ProblemSet set = load_problem_set(doc, e.input);
   if (!set.all_errors().empty()) {
     for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
     return 1;
@@ -65,8 +66,7 @@ int export_set(const ExportOptions& e, const Output& o) {
     PrairieLearnOptions options;
     options.image = e.image;
     options.lang = e.lang;
-    for (const auto& [dir, content] :
-         export_prairielearn(load_yaml_file(e.input).root, set, variants, stem, options))
+    for (const auto& [dir, content] : export_prairielearn(doc.root, set, variants, stem, options))
       for (const auto& [name, text] : content) files[dir + "/" + name] = text;
   } else {
     std::vector<QuizVariant> quiz;

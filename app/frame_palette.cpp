@@ -157,6 +157,40 @@ void pack_row(const FrameRuns& runs, int r, int bits, std::uint8_t* out) {
   }
 }
 
+std::uint32_t adler32_packed_row(std::uint32_t adler, const FrameRuns& runs, int r, int bits,
+                                 const std::uint8_t* packed) {
+  constexpr std::uint64_t kBase = 65521;  // the largest prime below 2¹⁶
+  // Reduced modulo kBase before each run and at the row's end only: a row has at most 2²⁴ bytes,
+  // so between reductions a stays below 2³³ and b below 2⁵⁷.
+  std::uint64_t a = adler & 0xffff, b = adler >> 16;
+  const auto one = [&](std::uint64_t v) {
+    a += v;
+    b += a;
+  };
+  const auto repeated = [&](std::uint64_t v, std::uint64_t n) {  // n < 2²⁴
+    a %= kBase;
+    b %= kBase;
+    b += n * a + v * ((n * (n + 1) / 2) % kBase);
+    a += n * v;
+  };
+  const auto per_byte = static_cast<std::size_t>(8 / bits);
+  const auto bytes = static_cast<std::size_t>((runs.width * bits + 7) / 8);
+  one(0);                         // the filter byte
+  std::size_t x = 0, summed = 0;  // the run's first pixel; the bytes summed so far
+  for (std::size_t k = runs.row_start[r]; k < runs.row_start[r + 1]; ++k) {
+    const std::size_t n = runs.runs[k] >> 8;
+    const std::size_t first = (x + per_byte - 1) / per_byte, end = (x + n) / per_byte;
+    if (end > first) {  // bytes first … end − 1 hold this run's pixels only
+      for (; summed < first; ++summed) one(packed[summed]);
+      repeated(packed[first], end - first);
+      summed = end;
+    }
+    x += n;
+  }
+  for (; summed < bytes; ++summed) one(packed[summed]);
+  return static_cast<std::uint32_t>((b % kBase) << 16 | (a % kBase));
+}
+
 bool index_colors(const Image<std::uint32_t>& image, IndexedImage& out) {
   FrameRuns runs;
   if (!frame_runs(image, runs)) return false;

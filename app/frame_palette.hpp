@@ -34,6 +34,13 @@ int palette_bit_depth(std::size_t colours);
 // byte, the last byte padded with zero bits; (width · bits + 7) / 8 bytes.
 void pack_row(const FrameRuns& runs, int r, int bits, std::uint8_t* out);
 
+// zlib's Adler-32 `adler` carried over row r as the image data holds it: the filter byte 0, then
+// the bytes pack_row wrote to `packed`. The bytes inside one run are one repeated value, whose
+// sums have closed forms (a + n·v, and b + n·a + v·n(n + 1)/2), so a row costs a few operations
+// a run (each run's first and last byte, which may be shared, one by one) instead of one a byte.
+std::uint32_t adler32_packed_row(std::uint32_t adler, const FrameRuns& runs, int r, int bits,
+                                 const std::uint8_t* packed);
+
 // Each pixel's index (top row first), as an image viewer would number the palette.
 struct IndexedImage {
   std::vector<std::uint32_t> palette;  // packed colours

@@ -207,7 +207,7 @@ void discard(const Record& r) {
 int run_generate(const GenerateCommand& g, const Output& o) {
   namespace fs = std::filesystem;
   const YamlDocument doc = load_yaml_file(g.set);
-  const ProblemSet set = load_problem_set(g.set);
+  const ProblemSet set = load_problem_set(doc, g.set);
   if (!set.all_errors().empty()) {
     for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
     return 1;

@@ -1,5 +1,8 @@
 #include "app/png_writer.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -22,11 +25,19 @@ namespace {
 // `rows` are compressed by libpng; or, with `idat`, the image data is that zlib stream, already
 // compressed, written as the one IDAT chunk (libpng still writes the signature, IHDR, PLTE, the
 // chunks' CRCs and IEND).
+// The file is written over from its start and then cut to the new length, not emptied first:
+// emptying a file gives its blocks back to the disk at once (on a file system mounted with
+// `discard`, a synchronous trim of each block, longer than writing the whole image).
 bool write_png(const std::string& path, int width, int height, int color_type, int bit_depth,
                const png_byte* const* rows, const std::vector<std::uint32_t>* palette,
                const std::vector<unsigned char>* idat = nullptr) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) return false;
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
+  if (fd < 0) return false;
+  std::FILE* file = ::fdopen(fd, "wb");  // no O_TRUNC: fdopen keeps the file as it is
+  if (!file) {
+    ::close(fd);
+    return false;
+  }
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!info) {
@@ -68,7 +79,13 @@ bool write_png(const std::string& path, int width, int height, int color_type, i
     png_write_end(png, nullptr);
   }
   png_destroy_write_struct(&png, &info);
-  return std::fclose(file) == 0;
+  // What is left of a longer image that was there before is cut off.
+  bool ok = std::fflush(file) == 0;
+  const off_t length = ok ? ::ftello(file) : -1;
+  struct stat st {};
+  ok = ok && length >= 0 && ::fstat(fd, &st) == 0 &&
+       (st.st_size <= length || ::ftruncate(fd, length) == 0);
+  return std::fclose(file) == 0 && ok;
 }
 
 // A palette frame's image data as one zlib stream, made of pieces of kRowsPerPiece rows that
@@ -104,12 +121,14 @@ std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int th
           Piece& p = piece[static_cast<std::size_t>(k)];
           const int r0 = k * kRowsPerPiece, r1 = std::min(runs.height, r0 + kRowsPerPiece);
           const std::size_t size = stride * static_cast<std::size_t>(r1 - r0);
+          std::uint32_t adler = 1;  // of no bytes
           for (int r = r0; r < r1; ++r) {
             unsigned char* row = raw.data() + stride * static_cast<std::size_t>(r - r0);
             row[0] = 0;  // filter type None: a palette row's runs are already repeated bytes
             pack_row(runs, r, bits, row + 1);
+            adler = adler32_packed_row(adler, runs, r, bits, row + 1);
           }
-          p.adler = adler32(adler32(0L, Z_NULL, 0), raw.data(), static_cast<uInt>(size));
+          p.adler = adler;
           p.length = static_cast<uLong>(size);
           p.out.resize(deflateBound(&z, static_cast<uLong>(size)) + 16);  // + a sync flush
           z.next_in = raw.data();

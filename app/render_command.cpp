@@ -32,7 +32,7 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
     return std::nullopt;
   }
   if (doc.root.IsMap() && doc.root["problems"].IsDefined()) {
-    const ProblemSet set = load_problem_set(opt.file);
+    const ProblemSet set = load_problem_set(doc, opt.file);  // the file read and parsed once
     for (const Diagnostic& d : set.errors) o.err << d.format() << "\n";
     for (const ProblemSpec& p : set.problems) {
       if (opt.id ? p.id != *opt.id : p.kind != "render") continue;

@@ -12,6 +12,7 @@
 #include <bit>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -857,9 +858,16 @@ long inflated_image_data(const std::string& bytes, std::size_t capacity) {
 // Writes the frame with `frustum render`'s writer, reads it back with libpng's own reader and
 // checks every channel of every pixel: row r of the file is the frame's row height − 1 − r
 // (raster rows go up, a PNG's down). Returns the file's colour type (−1 after a failure).
-// Written again with the frame scanned by 2, 3 and 8 threads, started or a team's: the same bytes.
+// Written again with the frame scanned by 2, 3 and 8 threads, started or a team's, into new
+// files: the same bytes. The first file is written over a longer one (the writer writes over a
+// file in place and cuts it to length): nothing of the older file is left after the image.
 int png_round_trip(const Image<std::uint32_t>& img, const std::string& name) {
   const std::string path = ::testing::TempDir() + name;
+  std::filesystem::remove(path);
+  {
+    std::ofstream older(path, std::ios::binary);
+    older << std::string(std::size_t(1) << 20, '\xAB');
+  }
   if (!app::write_color_png(path, img)) {
     ADD_FAILURE() << path << ": not written";
     return -1;
@@ -867,6 +875,7 @@ int png_round_trip(const Image<std::uint32_t>& img, const std::string& name) {
   ThreadTeam team(3);
   for (const int threads : {2, 3, 8, -2, -3, -8}) {  // negative: on the team's threads
     const std::string again = ::testing::TempDir() + std::to_string(threads) + name;
+    std::filesystem::remove(again);
     EXPECT_TRUE(app::write_color_png(again, img, std::abs(threads), threads < 0 ? &team : nullptr));
     EXPECT_EQ(file_bytes(again), file_bytes(path)) << threads << " threads";
   }
@@ -972,6 +981,60 @@ TEST(RenderCli, FewOpaqueColoursMakeAPaletteImageWithTheSamePixels) {
   Image<std::uint32_t> img(40, 30, pack(Rgb{1, 2, 3}));
   img.at(5, 6) &= 0x7fffffffu;
   EXPECT_EQ(png_round_trip(img, "alpha.png"), PNG_COLOR_TYPE_RGBA);
+}
+
+// The image data's Adler-32 taken from the rows' runs is zlib's over the bytes: rows of every bit
+// depth, widths that end a byte part-way, runs from one pixel to the whole row, and runs that
+// begin and end inside a byte (a byte shared by two or more runs).
+TEST(RenderCli, TheChecksumFromTheRunsIsZlibsOverTheBytes) {
+  std::mt19937 rng(7);
+  for (const int colours : {2, 3, 4, 5, 16, 17, 256})
+    for (const int width : {1, 7, 8, 9, 301, 1920}) {
+      Image<std::uint32_t> img(width, 40, 0);
+      for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < width;) {
+          // Short runs on some rows, long ones on others, one colour on the last row.
+          const int n = y == 0 ? width : 1 + static_cast<int>(rng() % (y % 3 == 0 ? 3 : 600));
+          const auto k = static_cast<std::uint8_t>(rng() % colours);
+          for (int i = x; i < std::min(width, x + n); ++i)
+            img.at(i, y) = pack(Rgb{k, static_cast<std::uint8_t>(k / 3), 1});
+          x += n;
+        }
+      app::FrameRuns runs;
+      ASSERT_TRUE(app::frame_runs(img, runs));
+      const int bits = app::palette_bit_depth(runs.palette.size());
+      std::vector<std::uint8_t> row(1 + static_cast<std::size_t>((width * bits + 7) / 8));
+      uLong zlib = adler32(0L, Z_NULL, 0);
+      std::uint32_t ours = 1;
+      for (int r = 0; r < img.height; ++r) {
+        row[0] = 0;
+        app::pack_row(runs, r, bits, row.data() + 1);
+        zlib = adler32(zlib, row.data(), static_cast<uInt>(row.size()));
+        ours = app::adler32_packed_row(ours, runs, r, bits, row.data() + 1);
+        ASSERT_EQ(ours, zlib) << colours << " colours, width " << width << ", row " << r;
+      }
+    }
+  // Rows of 2²⁰ pixels: of one colour (the closed forms' products), and of 256 colours changing
+  // at every pixel (2²⁰ bytes summed one by one before the row's reduction) — within 64 bits.
+  for (const int colours : {1, 256}) {
+    Image<std::uint32_t> wide(1 << 20, 2, 0);
+    for (int x = 0; x < wide.width; ++x)
+      for (int y = 0; y < 2; ++y)
+        wide.at(x, y) = pack(Rgb{static_cast<std::uint8_t>(x % colours + y), 255, 255});
+    app::FrameRuns runs;
+    ASSERT_TRUE(app::frame_runs(wide, runs));
+    const int bits = app::palette_bit_depth(runs.palette.size());
+    std::vector<std::uint8_t> row(1 + static_cast<std::size_t>(wide.width) * bits / 8);
+    uLong zlib = adler32(0L, Z_NULL, 0);
+    std::uint32_t ours = 1;
+    for (int r = 0; r < 2; ++r) {
+      row[0] = 0;
+      app::pack_row(runs, r, bits, row.data() + 1);
+      zlib = adler32(zlib, row.data(), static_cast<uInt>(row.size()));
+      ours = app::adler32_packed_row(ours, runs, r, bits, row.data() + 1);
+    }
+    EXPECT_EQ(ours, zlib) << colours << " colours";
+  }
 }
 
 // The paper plane (a lit, flat-shaded scene) is a palette image of the rendered frame.

@@ -310,9 +310,7 @@ std::vector<Diagnostic> ProblemSet::all_errors() const {
   return out;
 }
 
-namespace {
-
-ProblemSet load_problem_set_from(const YamlDocument& doc, const std::string& name) {
+ProblemSet load_problem_set(const YamlDocument& doc, const std::string& name) {
   ProblemSet set;
   set.file = name;
   if (doc.error) {
@@ -382,14 +380,12 @@ ProblemSet load_problem_set_from(const YamlDocument& doc, const std::string& nam
   return set;
 }
 
-}  // namespace
-
 ProblemSet load_problem_set_from_string(const std::string& yaml, const std::string& name) {
-  return load_problem_set_from(parse_yaml(yaml, name), name);
+  return load_problem_set(parse_yaml(yaml, name), name);
 }
 
 ProblemSet load_problem_set(const std::string& path) {
-  return load_problem_set_from(load_yaml_file(path), path);
+  return load_problem_set(load_yaml_file(path), path);
 }
 
 }  // namespace frustum

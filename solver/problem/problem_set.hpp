@@ -19,7 +19,8 @@
 
 namespace frustum {
 
-class VaryPlan;  // vary_spec.hpp
+class VaryPlan;       // vary_spec.hpp
+struct YamlDocument;  // yaml_document.hpp
 
 // Largest `points` of one problem or answer: far beyond any course's weights, and small enough
 // that a set's total and a class's sums stay finite doubles.
@@ -117,6 +118,8 @@ struct ProblemSet {
 };
 
 ProblemSet load_problem_set(const std::string& path);
+// From a file already read and parsed (load_yaml_file): `name` stands for the file in messages.
+ProblemSet load_problem_set(const YamlDocument& doc, const std::string& name);
 // `name` stands for the file in messages.
 ProblemSet load_problem_set_from_string(const std::string& yaml, const std::string& name);
 
