@@ -1,7 +1,6 @@
 #include "app/png_writer.hpp"
 
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
 
@@ -79,12 +78,8 @@ bool write_png(const std::string& path, int width, int height, int color_type, i
     png_write_end(png, nullptr);
   }
   png_destroy_write_struct(&png, &info);
-  // What is left of a longer image that was there before is cut off.
-  bool ok = std::fflush(file) == 0;
-  const off_t length = ok ? ::ftello(file) : -1;
-  struct stat st {};
-  ok = ok && length >= 0 && ::fstat(fd, &st) == 0 &&
-       (st.st_size <= length || ::ftruncate(fd, length) == 0);
+  // Cut to the image's length: what was left of a longer file that was there before goes.
+  const bool ok = std::fflush(file) == 0 && ::ftruncate(fd, ::ftello(file)) == 0;
   return std::fclose(file) == 0 && ok;
 }
 

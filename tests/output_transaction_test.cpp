@@ -91,13 +91,17 @@ TEST(OutputTransaction, AFileWrittenOverInPlaceHoldsExactlyItsNewContent) {
   fs::remove_all(dir);
 }
 
+// A first grading of students a and b (b's page in a subdirectory too), graded again below
+// with fewer files.
+const std::map<std::string, std::string> kTwoStudents = {{"gradebook.csv", "a,b\n"},
+                                                         {"feedback/a.md", "a\n"},
+                                                         {"feedback/b.md", "b\n"},
+                                                         {"feedback/sub/c.md", "c\n"}};
+
 TEST(OutputTransaction, WhatTheKeptRunHeldBeyondThisRunsFilesIsNotPublished) {
   const fs::path dir = scratch("stale");
   const fs::path out = dir / "out";
-  publish(out, {{"gradebook.csv", "a,b\n"},
-                {"feedback/a.md", "a\n"},
-                {"feedback/b.md", "b\n"},
-                {"feedback/sub/c.md", "c\n"}});
+  publish(out, kTwoStudents);
   publish(out, {{"gradebook.csv", "a\n"}, {"feedback/a.md", "a\n"}});
   // Something else put into the kept run by hand.
   const fs::path kept = out / ".frustum" / "run-1";
@@ -116,10 +120,7 @@ TEST(OutputTransaction, WhatTheKeptRunHeldBeyondThisRunsFilesIsNotPublished) {
 TEST(OutputTransaction, TheReplacedRunKeepsOnlyTheFilesTheNewRunHas) {
   const fs::path dir = scratch("sections");
   const fs::path out = dir / "out";
-  publish(out, {{"gradebook.csv", "a,b\n"},
-                {"feedback/a.md", "a\n"},
-                {"feedback/b.md", "b\n"},
-                {"feedback/sub/c.md", "c\n"}});
+  publish(out, kTwoStudents);
   const fs::path first = out / ".frustum" / fs::read_symlink(out / ".frustum" / "current");
   publish(out, {{"gradebook.csv", "a\n"}, {"feedback/a.md", "a again\n"}});
   EXPECT_EQ(test::read_file(first / "feedback" / "a.md"), "a\n");  // the previous grading of a
