@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "grader/statement_choice.hpp"
+#include "solver/core/exact.hpp"
 #include "solver/core/work_budget.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/util/expression.hpp"
@@ -66,7 +67,9 @@ Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget)
     error = quote_excerpt(text) + " is not a finite number";
     return 0;
   }
-  const ExpressionResult r = parse_expression(text);
+  ExpressionOptions options;
+  options.degree_sign = true;
+  const ExpressionResult r = parse_expression(text, options);
   if (!r) {
     error = "cannot read " + quote_excerpt(text) + ": " + r.error;
     return 0;
@@ -82,9 +85,18 @@ Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget)
   return std::isfinite(v) ? exact_from_double(v) : Exact(0);
 }
 
+// One bracket pair around the whole text: "(1, 2)", not "(0, 3), (1, 2)".
 bool wrapped(const std::string& s) {
-  return s.size() >= 2 &&
-         ((s.front() == '(' && s.back() == ')') || (s.front() == '[' && s.back() == ']'));
+  if (s.size() < 2 ||
+      !((s.front() == '(' && s.back() == ')') || (s.front() == '[' && s.back() == ']')))
+    return false;
+  int depth = 0;
+  for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+    if (s[i] == '(' || s[i] == '[') ++depth;
+    if (s[i] == ')' || s[i] == ']') --depth;
+    if (depth == 0) return false;  // the first bracket closed before the end
+  }
+  return true;
 }
 
 std::string trimmed(std::string s) {
@@ -167,6 +179,7 @@ Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
   ExpressionOptions opts;
   for (const char* name : {"x", "y", "z"}) opts.symbols.emplace(name, GiNaC::symbol(name));
   opts.allow_equation = true;
+  opts.degree_sign = true;
   const ExpressionResult r = parse_expression(text, opts);
   if (!r) {
     out.error = "cannot read the plane " + quote_excerpt(text) + ": " + r.error;
@@ -282,7 +295,7 @@ std::string raw_text(const YAML::Node& node) {
   return s;
 }
 
-ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
+ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleUnit angles) {
   ParsedAnswer p;
   WorkBudget budget;  // one for the whole answer, shared by its numbers
   p.raw = raw_text(node);
@@ -312,11 +325,15 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
         return p;
       }
       std::string error;
-      const Exact v = parse_one(node.Scalar(), error, budget);
+      Exact v = parse_one(node.Scalar(), error, budget);
       if (!error.empty()) {
         p.error = error;
         return p;
       }
+      // "66.42°" read 66.42·π/180: an angle asked in degrees is that many degrees.
+      if (spec.angle && angles == AngleUnit::Degrees &&
+          node.Scalar().find("°") != std::string::npos)
+        v = canonical(v * 180 / GiNaC::Pi, budget);
       p.value = Value::scalar(v);
       break;
     }
@@ -418,6 +435,13 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
       std::vector<std::string> words;
       if (node.IsSequence()) {
         for (std::size_t i = 0; i < node.size(); ++i) {
+          // A pair written as a list of its two ends: [0, 3] is the edge 0-3.
+          const YAML::Node& item = node[i];
+          if (spec.unordered_pairs && item.IsSequence() && item.size() == 2 && item[0].IsScalar() &&
+              item[1].IsScalar()) {
+            words.push_back(trimmed(item[0].Scalar()) + "-" + trimmed(item[1].Scalar()));
+            continue;
+          }
           if (!node[i].IsScalar()) {
             p.error = "item " + std::to_string(i + 1) + " is not a word";
             return p;
@@ -425,7 +449,10 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec) {
           words.push_back(trimmed(node[i].Scalar()));  // labels keep their case ("A.B")
         }
       } else if (node.IsScalar()) {
-        for (std::string w : split_list(node.Scalar())) {
+        // Pairs written as bracketed tuples: "(0, 3), (1, 2)".
+        const std::vector<std::string> rows =
+            spec.unordered_pairs ? split_rows(node.Scalar()) : std::vector<std::string>{};
+        for (std::string w : rows.empty() ? split_list(node.Scalar()) : rows) {
           w = trimmed(w);
           if (!w.empty()) words.push_back(w);
         }

@@ -8,6 +8,7 @@
 
 #include "solver/derivation/value.hpp"
 #include "solver/problem/kind.hpp"
+#include "solver/viewing/conventions.hpp"
 
 namespace frustum {
 
@@ -19,7 +20,9 @@ struct ParsedAnswer {
   Value value;
 };
 
-ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec);
+// `angles`: the set's unit, in which an angle answer (AnswerSpec::angle) written with a degree
+// sign is given.
+ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleUnit angles);
 
 // The text of a student's answer as written (scalars as is, lists as [a, b, c]).
 std::string raw_text(const YAML::Node& node);

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <set>
 
+#include "grader/list_items.hpp"
 #include "grader/statement_choice.hpp"
 #include "solver/util/exact_format.hpp"
 
@@ -329,13 +331,33 @@ std::vector<std::string> folded(const std::vector<std::string>& words,
   return out;
 }
 
+// The student's list items as meant (list_items.hpp): split where one text separates them, and
+// unordered pairs in the key's spelling.
+std::vector<std::string> items_read(const Value& got, const Value& expected, const AnswerRules& r) {
+  std::vector<std::string> items = items_as_written(got.words, expected.words);
+  if (r.spec->unordered_pairs)
+    for (std::string& item : items) item = pair_as_in_key(item, expected.words);
+  return items;
+}
+
+// A word map's keys ("1-0": an edge) in the key's spelling when they are unordered pairs.
+Value keys_read(const Value& got, const Value& expected, const AnswerRules& r) {
+  if (!r.spec->unordered_pairs) return got;
+  std::vector<std::string> keys;
+  for (const auto& [k, w] : expected.entries) keys.push_back(k);
+  Value out = got;
+  for (auto& [k, w] : out.entries) k = pair_as_in_key(k, keys);
+  return out;
+}
+
 // Word maps (faces, edges): credit per entry, corrected for the best constant answer ("every
 // face front"), which shows no work.
 Comparison compare_word_map(const Value& expected, const Value& got) {
+  // Each entry of the key counts once, however often the student wrote it.
   std::size_t right = 0;
   for (const auto& [k, w] : expected.entries)
-    for (const auto& [gk, gw] : got.entries)
-      if (gk == k && gw == w) ++right;
+    right += std::any_of(got.entries.begin(), got.entries.end(),
+                         [&](const auto& e) { return e.first == k && e.second == w; });
   const std::size_t n = expected.entries.size();
   if (right == n && got.entries.size() == right) return correct("");
   std::size_t best_constant = 0;
@@ -454,12 +476,14 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
     }
     case AnswerKind::WordList: {
       std::vector<std::string> a = folded(expected.words, expected.words),
-                               b = folded(got.words, expected.words);
+                               b = folded(items_read(got, expected, r), expected.words);
       std::sort(a.begin(), a.end());
       std::sort(b.begin(), b.end());
       if (a == b) return correct("the same set (order does not matter)");
-      std::size_t common = 0;
-      for (const std::string& w : b) common += std::binary_search(a.begin(), a.end(), w);
+      // An item written twice counts once: the rest is "that should not be there".
+      std::vector<std::string> both;
+      std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+      const std::size_t common = both.size();
       if (common > 0 && !a.empty())
         return {Verdict::Partial,
                 static_cast<double>(common) / static_cast<double>(std::max(a.size(), b.size())),
@@ -470,7 +494,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
     }
     case AnswerKind::Sequence: {
       const std::vector<std::string> a = folded(expected.words, expected.words),
-                                     b = folded(got.words, expected.words);
+                                     b = folded(items_read(got, expected, r), expected.words);
       if (a == b) return correct("");
       std::vector<std::string> sa = a, sb = b;
       std::sort(sa.begin(), sa.end());
@@ -478,7 +502,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       return incorrect(sa == sb ? "the right items in the wrong order" : "");
     }
     case AnswerKind::WordMap:
-      return compare_word_map(expected, got);
+      return compare_word_map(expected, keys_read(got, expected, r));
     case AnswerKind::Statements:
       return compare_statement_choice(expected, got);
     case AnswerKind::Polygon: {

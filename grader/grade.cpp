@@ -121,7 +121,7 @@ class ProblemGrader {
     for (std::size_t i = 0; i < spec_.ask.size(); ++i) {
       const YAML::Node given = student.IsMap() ? student[spec_.ask[i]] : YAML::Node();
       if (!given.IsDefined() || given.IsNull()) continue;
-      parsed_[i] = parse_answer(given, *spec_.info->answer(spec_.ask[i]));
+      parsed_[i] = parse_answer(given, *spec_.info->answer(spec_.ask[i]), spec_.conventions.angles);
       if (parsed_[i].ok) answers_.set(spec_.ask[i], parsed_[i].value);
     }
   }

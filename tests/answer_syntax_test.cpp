@@ -118,7 +118,7 @@ TEST(AnswerSyntax, EveryExampleInTheReadmeParses) {
       if (node.IsMap() && node.size() == 1 && example.find(": ") != std::string::npos &&
           example[0] != '{')
         node = node.begin()->second;  // "z: 8" → 8
-      const ParsedAnswer p = parse_answer(node, *spec);
+      const ParsedAnswer p = parse_answer(node, *spec, AngleUnit::Degrees);
       EXPECT_TRUE(p.ok) << r.type << ": `" << example << "`: " << p.error;
       ++examples;
     }

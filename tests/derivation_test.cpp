@@ -82,5 +82,28 @@ TEST(Derivation, ErrorsReplaceAnswersInJson) {
   EXPECT_FALSE(j["problems"][0].contains("answers"));
 }
 
+// A polygon that only meets the window's boundary leaves no area: the derivation says it
+// touches, not that it lies outside; one wholly outside is said to be outside.
+TEST(Derivation, APolygonThatOnlyTouchesTheWindowIsNotCalledOutside) {
+  const auto last_note = [](const char* yaml) {
+    const ProblemResult r = test::solve_yaml(yaml);
+    EXPECT_FALSE(r.error) << yaml;
+    EXPECT_EQ(r.answers.find("clipped")->shape, Value::Shape::Null);
+    return r.derivation.steps().back().note;
+  };
+  for (const char* touching : {
+           R"(problems:
+  - {id: corner, kind: clip_polygon, given: {points: [[3, 3], [4, 3], [4, 4]], window: {xmin: 0, xmax: 3, ymin: 0, ymax: 3}}})",
+           R"(problems:
+  - {id: edge, kind: clip_polygon, given: {points: [[3, 1], [5, 1], [5, 2], [3, 2]], window: {xmin: 0, xmax: 3, ymin: 0, ymax: 3}}})"}) {
+    const std::string note = last_note(touching);
+    EXPECT_NE(note.find("only touches"), std::string::npos) << note;
+    EXPECT_EQ(note.find("outside"), std::string::npos) << note;
+  }
+  const std::string outside = last_note(R"(problems:
+  - {id: far, kind: clip_polygon, given: {points: [[5, 5], [6, 5], [6, 6]], window: {xmin: 0, xmax: 3, ymin: 0, ymax: 3}}})");
+  EXPECT_NE(outside.find("lies outside the region"), std::string::npos) << outside;
+}
+
 }  // namespace
 }  // namespace frustum

@@ -511,5 +511,27 @@ TEST(Exact, EigenCrossProductOfExactVectors) {
   EXPECT_TRUE(canonical(GiNaC::sqrt(n.dot(n))).is_equal(9 * sqrt_of(3)));
 }
 
+// A real constant whose evaluation at 40 digits leaves the reals or cancels to 0 (arccos of a
+// value just below 1) is evaluated again with more digits: real, and its double right.
+TEST(Exact, NearlyParallelAnglesEvaluateWithDigitsToSpare) {
+  for (const int k : {20, 30, 60, 150, 300}) {
+    const ex offset = GiNaC::pow(ex(10), -k);
+    // cos θ of a = (1, 0, 0), b = (1, 10^-k, 0): 1/√(1 + 10^-2k), θ ≈ 10^-k radians.
+    const ex cos = canonical(1 / GiNaC::sqrt(1 + offset * offset));
+    const ex angle = canonical(GiNaC::acos(cos));
+    EXPECT_TRUE(is_real_constant(angle)) << k;
+    const double radians = to_double(angle);
+    EXPECT_NEAR(radians / std::pow(10.0, -k), 1.0, 1e-14) << k << ": " << radians;
+    const double degrees = to_double(canonical(angle * 180 / GiNaC::Pi));
+    EXPECT_NEAR(degrees / (std::pow(10.0, -k) * 180 / std::numbers::pi), 1.0, 1e-14) << k;
+    // The same just below π (anti-parallel).
+    const double opposite = to_double(canonical(GiNaC::acos(-cos)));
+    EXPECT_NEAR(opposite, std::numbers::pi, 1e-15) << k;
+  }
+  // Not real at any precision: still not real.
+  EXPECT_FALSE(is_real_constant(GiNaC::acos(ex(numeric(3, 2)))));
+  EXPECT_TRUE(std::isnan(to_double(GiNaC::acos(ex(numeric(3, 2))))));
+}
+
 }  // namespace
 }  // namespace frustum

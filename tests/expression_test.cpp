@@ -508,5 +508,26 @@ TEST(Expression, RandomInputNeverThrows) {
   EXPECT_LT(seconds_since(start), 60.0);  // a hang guard, not a benchmark
 }
 
+// Students write angles with the degree sign: x° is x·π/180, exactly, wherever a factor may
+// stand. A problem's givens keep their angles as numbers in the set's unit.
+TEST(Expression, DegreeSignIsPiOver180WhereAllowed) {
+  ExpressionOptions degrees = with_xyz();
+  degrees.degree_sign = true;
+  expect_value("cos(60°)", numeric(1, 2), degrees);
+  expect_value("sin(30°)", numeric(1, 2), degrees);
+  expect_value("tan(45°)", 1, degrees);
+  expect_value("30°", GiNaC::Pi / 6, degrees);
+  expect_value("-90°", -GiNaC::Pi / 2, degrees);
+  expect_value("(90 - 23.58)°", numeric(6642, 100) * GiNaC::Pi / 180, degrees);
+  expect_value("2·45°", GiNaC::Pi / 2, degrees);
+  expect_value("1/tan(45°)", 1, degrees);
+  expect_value("cos(30°)^2 + sin(30°)^2", 1, degrees);
+  expect_error("°", "expected a number", degrees);
+  expect_error("cos(°30)", "expected a number", degrees);
+  const ExpressionResult given = expect_error("cos(30°)", "unsupported character '°'");
+  EXPECT_NE(given.error.find("in the set's unit"), std::string::npos) << given.error;
+  EXPECT_EQ(given.offset, 6u);
+}
+
 }  // namespace
 }  // namespace frustum

@@ -294,6 +294,43 @@ bool evaluate_real(const ex& e, numeric& value, SharedEvalf* evalf = nullptr) {
   return true;
 }
 
+// A real constant (not a number already) evaluated until two precisions agree: first with 40
+// digits and 80, then with twice as many each time while the two leave the reals or differ in
+// their first 24 digits. arccos(1/√(1 + 10⁻⁶⁰)) rounds its argument to 1 or above at 40 digits
+// (0 or not real) and at 80 digits is only partly cancelled; at 160 and 320 it is 10⁻³⁰ both
+// times. False when no precision up to kMaxEvaluationDigits gives a real; if the reals never
+// agree, the last is taken (a value that cancels below every precision, such as a sum that is 0
+// but not simplified to 0).
+constexpr long kFirstEvaluationDigits = 40;
+constexpr long kMaxEvaluationDigits = 5120;
+
+bool evaluate_real_with_digits_to_spare(const ex& e, numeric& value) {
+  const numeric agreement("1e-24");
+  std::optional<numeric> previous;
+  bool real = false;
+  for (long digits = kFirstEvaluationDigits; digits <= kMaxEvaluationDigits; digits *= 2) {
+    try {
+      const DigitsGuard guard(digits);
+      numeric current;
+      if (!evaluate_real(e, current)) {
+        previous.reset();
+        continue;
+      }
+      real = true;
+      value = current;
+      // Two zeros may be a cancellation that more digits undo: they do not count as agreeing.
+      if (previous && !current.is_zero() &&
+          GiNaC::abs(current - *previous) <= agreement * GiNaC::abs(current))
+        return true;
+      previous = current;
+    } catch (const std::exception&) {
+      // A pole or a domain error at this precision: more digits may settle it.
+      previous.reset();
+    }
+  }
+  return real;
+}
+
 // Nearest double of a rational, subnormals included (CLN's conversion flushes them to zero):
 // below 2^-1022 the doubles are the multiples of 2^-1074, so round q·2^1074 to an integer,
 // ties to even.
@@ -587,12 +624,14 @@ bool is_real_constant(const Exact& e) {
   if (is_a<numeric>(e)) return ex_to<numeric>(e).is_real();
   if (has_symbol(e)) return false;
   if (is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e) || is_a<GiNaC::matrix>(e)) return false;
+  numeric value;
   try {
-    numeric value;
-    return evaluate_real(e, value);
+    if (evaluate_real(e, value)) return true;
   } catch (const std::exception&) {
-    return false;
+    // Settled with more digits below.
   }
+  // Rounding at the default precision can leave the reals (arccos of a value just below 1).
+  return evaluate_real_with_digits_to_spare(e, value);
 }
 
 namespace {
@@ -659,22 +698,17 @@ double to_double(const Exact& e) {
     return rational_to_double(numeric(cln::cl_N(num)) / numeric(cln::cl_N(den)));
   }
   if (!multiple && !is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
-  try {
-    const DigitsGuard guard(40);
-    numeric value;
-    if (!evaluate_real(e, value)) return std::numeric_limits<double>::quiet_NaN();
-    return value.to_double();
-  } catch (const std::exception&) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
+  numeric value;
+  return evaluate_real_with_digits_to_spare(e, value) ? value.to_double()
+                                                      : std::numeric_limits<double>::quiet_NaN();
 }
 
 GiNaC::numeric rational_near(const Exact& e) {
   if (is_rational(e)) return ex_to<numeric>(e);
   if (!is_real_constant(e)) throw std::domain_error("rational_near: not a real constant");
-  const DigitsGuard guard(40);
   numeric value;
-  if (!evaluate_real(e, value)) throw std::domain_error("rational_near: not real");
+  if (!evaluate_real_with_digits_to_spare(e, value))
+    throw std::domain_error("rational_near: not real");
   if (value.is_rational()) return value;
   // A CLN float is a dyadic rational: take it exactly.
   return numeric(cln::rational(cln::the<cln::cl_R>(value.to_cl_N())));

@@ -68,8 +68,12 @@ struct ClipPolygon {
     if (r.empty()) {
       out.set("clipped", Value::null());
       if (steps) {
+        // One or two vertices left: the polygon meets the region's boundary only.
         steps->add("Nothing is left").note =
-            "Fewer than three vertices remain: the polygon lies outside the region.";
+            r.clipped.empty() ? "No vertex remains: the polygon lies outside the region."
+                              : "Fewer than three vertices remain: the polygon only touches the "
+                                "region's boundary (at a point or along an edge), which encloses "
+                                "no area.";
         steps->yields("clipped");
       }
       return out;

@@ -41,7 +41,11 @@ struct DepthSort {
     return {{"centroids", AnswerKind::Matrix, {}, {}},
             {"depths", AnswerKind::Vector, {"centroids"}, {}},
             {"order", AnswerKind::Sequence, {"depths"}, {}},
-            {"conflicts", AnswerKind::WordList, {"order"}, {}}};
+            // Two polygons whose order needs a further test: "1-0" is the pair 0-1.
+            {.name = "conflicts",
+             .kind = AnswerKind::WordList,
+             .depends_on = {"order"},
+             .unordered_pairs = true}};
   }
 
   static Given parse(GivenReader& r, const Conventions&) {

@@ -46,9 +46,20 @@ struct EdgeVisibility {
   static std::vector<std::string> given_fields() { return {"mesh", "solid", "transform", "eye"}; }
   static std::vector<AnswerSpec> answers() {
     return {{"faces", AnswerKind::WordMap, {}, {"front", "back", "edge_on"}},
-            {"edges", AnswerKind::WordMap, {"faces"}, {"visible", "silhouette", "hidden"}},
-            {"silhouette", AnswerKind::WordList, {"edges"}, {}},
-            {"hidden", AnswerKind::WordList, {"edges"}, {}},
+            // An edge is an unordered pair of vertices: "1-0" is the edge 0-1.
+            {.name = "edges",
+             .kind = AnswerKind::WordMap,
+             .depends_on = {"faces"},
+             .words = {"visible", "silhouette", "hidden"},
+             .unordered_pairs = true},
+            {.name = "silhouette",
+             .kind = AnswerKind::WordList,
+             .depends_on = {"edges"},
+             .unordered_pairs = true},
+            {.name = "hidden",
+             .kind = AnswerKind::WordList,
+             .depends_on = {"edges"},
+             .unordered_pairs = true},
             {"convex", AnswerKind::Bool, {}, {"convex", "not convex"}},
             {"backface_sufficient", AnswerKind::Bool, {"convex"}, {}}};
   }

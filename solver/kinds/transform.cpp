@@ -2,6 +2,8 @@
 // in the listed order, so the composite of A₁, A₂, A₃ is M = A₃·A₂·A₁ and P′ = M·P.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -116,36 +118,56 @@ struct Transform {
 
   static std::vector<Misconception> misconceptions(const Given& g) {
     std::vector<Misconception> out;
-    const auto composite = [&](const std::vector<MatX<Exact>>& steps, bool reversed) {
+    const auto product = [&](const std::vector<MatX<Exact>>& steps, bool reversed) {
       MatX<Exact> m = MatX<Exact>::Identity(g.dim + 1, g.dim + 1);
       // The wrong order multiplies on the other side.
       for (const MatX<Exact>& s : steps)
         m = canonical(reversed ? then_apply(s, m) : then_apply(m, s));
+      return m;
+    };
+    // The answers a mistake leads to: its matrix, the points moved by it and its inverse (the
+    // steps' inverses undone in the opposite order; none when a step is singular).
+    const auto composite = [&](const std::vector<MatX<Exact>>& steps,
+                               std::vector<MatX<Exact>> inverses, bool reversed) {
+      const MatX<Exact> m = product(steps, reversed);
       Answers a;
       // In the problem's own convention: DirectX students write the row-vector form.
       a.set("matrix", matrix_value(paper_form(m, g.api)));
       if (!g.points.empty())
         a.set("points", transform_points_with_steps(m, g.points, "", "P", nullptr, g.api));
+      const bool singular = std::any_of(inverses.begin(), inverses.end(),
+                                        [](const MatX<Exact>& i) { return i.size() == 0; });
+      if (!singular) {
+        std::reverse(inverses.begin(), inverses.end());
+        a.set("inverse", matrix_value(paper_form(product(inverses, reversed), g.api)));
+      }
       return a;
     };
-    std::vector<MatX<Exact>> matrices;
-    for (const TransformStep& s : g.steps) matrices.push_back(s.matrix);
+    std::vector<MatX<Exact>> matrices, inverses;
+    for (const TransformStep& s : g.steps) {
+      matrices.push_back(s.matrix);
+      inverses.push_back(s.inverse);
+    }
     if (g.steps.size() >= 2)
       out.push_back({"composition in the wrong order", wrong_order_feedback(g.api),
-                     "Composite (first step applied first)", composite(matrices, true)});
-    // Degrees taken as radians: every rotation by the angle's number of degrees, in radians.
+                     "Composite (first step applied first)", composite(matrices, inverses, true)});
+    // Degrees taken as radians: every rotation by the angle's number of degrees, in radians
+    // (undone by the rotation by minus that many radians).
     bool rotates = false;
-    std::vector<MatX<Exact>> as_radians;
+    std::vector<MatX<Exact>> as_radians, as_radians_undone;
     for (const TransformStep& s : g.steps) {
       rotates = rotates || s.angle.has_value();
-      as_radians.push_back(s.angle && s.rotation ? s.rotation(canonical(*s.angle * 180 / GiNaC::Pi))
-                                                 : s.matrix);
+      const bool turned = s.angle && s.rotation;
+      const Exact radians = turned ? canonical(*s.angle * 180 / GiNaC::Pi) : Exact(0);
+      as_radians.push_back(turned ? s.rotation(radians) : s.matrix);
+      as_radians_undone.push_back(turned ? s.rotation(canonical(-radians)) : s.inverse);
     }
     if (rotates)
       out.push_back({"degrees taken as radians",
                      "Your rotation uses the angle's number of degrees as radians (cos 90 instead "
                      "of cos 90°).",
-                     "Composite (first step applied first)", composite(as_radians, false)});
+                     "Composite (first step applied first)",
+                     composite(as_radians, as_radians_undone, false)});
     return out;
   }
 

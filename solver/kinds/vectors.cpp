@@ -123,7 +123,7 @@ struct Vectors {
             {"area", AnswerKind::Scalar, {"cross"}, {}},
             {"sin", AnswerKind::Scalar, {"area"}, {}},
             {"cos", AnswerKind::Scalar, {"dot"}, {}},
-            {"angle", AnswerKind::Scalar, {"cos"}, {}},
+            {.name = "angle", .kind = AnswerKind::Scalar, .depends_on = {"cos"}, .angle = true},
             {"unit_normal", AnswerKind::UnitVector, {"cross"}, {}}};
   }
 
@@ -275,7 +275,7 @@ struct Vectors {
       steps->add("Angle", math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
                  math("θ = ", "\\theta = ") + exact(angle, true) +
                      math(g.angles == AngleUnit::Degrees ? "°" : " rad",
-                          g.angles == AngleUnit::Degrees ? "^\\circ" : "\\,\\text{rad}"));
+                          g.angles == AngleUnit::Degrees ? "{}^\\circ" : "\\,\\text{rad}"));
       steps->yields("angle");
     }
     if (area.is_zero()) {

@@ -77,12 +77,17 @@ inline double largest(const Value* v) { return v ? largest(v->numbers) : 0.0; }
 struct AnswerSpec {
   std::string name;
   AnswerKind kind;
-  std::vector<std::string> depends_on;  // earlier answers it is computed from
-  std::vector<std::string> words;       // Category: the allowed words
+  std::vector<std::string> depends_on = {};  // earlier answers it is computed from
+  std::vector<std::string> words = {};       // Category: the allowed words
   std::string needs_given = {};  // asked only when the problem gives this field (e.g. points)
   // Matrix: each row is a point (transformed points), so one point may be written as a flat list
   // or a column, and points in homogeneous coordinates with w = 1.
   bool point_rows = false;
+  // WordList, WordMap keys: items are unordered pairs "a-b" (an edge, two polygons in conflict),
+  // so "b-a" is the same item.
+  bool unordered_pairs = false;
+  // Scalar: an angle in the set's unit (`angles:`); "66.42°" is read as degrees whatever it is.
+  bool angle = false;
 };
 
 // A common mistake, as the answers it produces: the grader names it when a student's wrong

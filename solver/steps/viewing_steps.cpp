@@ -15,7 +15,7 @@ Exact read_angle(GivenReader& r, const std::string& key, AngleUnit unit) {
 
 MathText angle_text(const Exact& radians, AngleUnit unit) {
   if (unit == AngleUnit::Degrees)
-    return exact(canonical(radians * 180 / GiNaC::Pi)) + math("°", "^\\circ");
+    return exact(canonical(radians * 180 / GiNaC::Pi)) + math("°", "{}^\\circ");
   return exact(radians) + math(" rad", "\\,\\text{rad}");
 }
 

@@ -31,6 +31,9 @@ struct ExpressionOptions {
   std::map<std::string, GiNaC::symbol> symbols;
   // Accept one top-level "lhs = rhs"; the result is then lhs - rhs.
   bool allow_equation = false;
+  // Accept the degree sign after a factor: "30°" is 30·π/180, so cos(30°) = cos(π/6) (students'
+  // answers). Off for a problem's givens, whose angles are numbers in the set's unit.
+  bool degree_sign = false;
 };
 
 struct ExpressionResult {

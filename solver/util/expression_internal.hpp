@@ -45,6 +45,7 @@ enum class TokenKind {
   kSuperscript,  // ², ³, ⁻¹ ...: an exponent already
   kRoot,         // √
   kPi,           // π
+  kDegree,       // °: read only where ExpressionOptions::degree_sign allows it
   kOpen,
   kClose,
   kEquals,

@@ -135,6 +135,7 @@ constexpr char32_t kSuperscriptMinus = 0x207B;
 constexpr char32_t kRootSign = 0x221A;
 constexpr char32_t kPiSign = 0x03C0;
 constexpr char32_t kInfinitySign = 0x221E;
+constexpr char32_t kDegreeSign = 0x00B0;
 
 bool is_digit(char32_t c) { return c >= U'0' && c <= U'9'; }
 bool is_letter(char32_t c) { return (c >= U'a' && c <= U'z') || (c >= U'A' && c <= U'Z'); }
@@ -287,6 +288,8 @@ class Lexer {
         return make(TokenKind::kRoot, first);
       case kPiSign:
         return make(TokenKind::kPi, first);
+      case kDegreeSign:
+        return make(TokenKind::kDegree, first);
       default:
         break;
     }

@@ -160,6 +160,17 @@ class Parser {
       const Token& sup = advance();
       base = raise(base, Value{sup.number}, sup.offset, sup.offset);
     }
+    if (peek().kind == TokenKind::kDegree) {
+      const Token& degree = advance();
+      if (!options_.degree_sign)
+        fail("unsupported character " + quote(degree) + " (U+00B0) at byte " +
+                 std::to_string(degree.offset) + ": give the angle as a number in the set's unit",
+             degree.offset);
+      Value per_degree{numeric(1, 180)};
+      settle(per_degree);
+      base = combine(combine(base, per_degree, TokenKind::kTimes, degree.offset), Value{GiNaC::Pi},
+                     TokenKind::kTimes, degree.offset);
+    }
     if (peek().kind != TokenKind::kPower) return base;
     const Token& caret = advance();
     // Each step of a right-associative chain 2^2^2^... is one level deeper.
