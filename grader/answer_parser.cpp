@@ -295,6 +295,25 @@ std::string raw_text(const YAML::Node& node) {
   return s;
 }
 
+namespace {
+
+ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, AngleUnit angles,
+                                ParsedAnswer p, WorkBudget& budget);
+
+// What follows "NAME =" when a text answer starts with the answer's own name and holds one '='.
+std::optional<std::string> value_after_own_name(const YAML::Node& node, const AnswerSpec& spec) {
+  if (!node.IsScalar() || spec.kind == AnswerKind::Plane) return std::nullopt;
+  const std::string& text = node.Scalar();
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || text.find('=', eq + 1) != std::string::npos) return std::nullopt;
+  if (trim_lower(text.substr(0, eq)) != trim_lower(spec.name)) return std::nullopt;
+  const std::string rest = trimmed(text.substr(eq + 1));
+  if (rest.empty()) return std::nullopt;
+  return rest;
+}
+
+}  // namespace
+
 ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleUnit angles) {
   ParsedAnswer p;
   WorkBudget budget;  // one for the whole answer, shared by its numbers
@@ -318,6 +337,17 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleU
     p.ok = true;
     return p;
   }
+  // "z = 8" for the answer z: the answer's own name on the left of one '=' is dropped (not
+  // for a plane, which may be an equation such as "z = 8 - x - y").
+  if (const std::optional<std::string> rest = value_after_own_name(node, spec))
+    return parse_answer_value(YAML::Node(*rest), spec, angles, std::move(p), budget);
+  return parse_answer_value(node, spec, angles, std::move(p), budget);
+}
+
+namespace {
+
+ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, AngleUnit angles,
+                                ParsedAnswer p, WorkBudget& budget) {
   switch (spec.kind) {
     case AnswerKind::Scalar: {
       if (!node.IsScalar()) {
@@ -499,5 +529,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleU
   p.ok = true;
   return p;
 }
+
+}  // namespace
 
 }  // namespace frustum
