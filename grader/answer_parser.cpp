@@ -1,5 +1,7 @@
 #include "grader/answer_parser.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -504,7 +506,10 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
     }
     case AnswerKind::WordMap: {
       if (!node.IsMap()) {
-        p.error = "expected a mapping like {\"0-1\": visible}";
+        // The example in this answer's own terms: a face or an edge, and one of its words.
+        p.error = fmt::format("expected a mapping like {{\"{}\": {}}}",
+                              spec.unordered_pairs ? "0-1" : "0",
+                              spec.words.empty() ? "visible" : spec.words.front());
         return p;
       }
       std::vector<std::pair<std::string, std::string>> entries;
