@@ -199,6 +199,8 @@ constexpr Phrase kPhrases[] = {
     {"vertex {0}: {1}", "頂点 {0}: {1}", "вершина {0}: {1}"},
     {"row {0}: {1}", "行 {0}: {1}", "строка {0}: {1}"},
     {"expected a list", "リストが必要です", "ожидался список"},
+    {"expected a mapping like {0}", "{0} のような対応付けが必要です",
+     "ожидалось сопоставление вида {0}"},
     {"expected one number", "数が一つ必要です", "ожидалось одно число"},
     {"expected one word", "語が一つ必要です", "ожидалось одно слово"},
     {"expected true or false", "true か false が必要です", "ожидалось true или false"},
