@@ -114,6 +114,15 @@ constexpr Phrase kPhrases[] = {
      "Нормаль {0}-угольника методом Newell"},
     {"Normal", "法線", "Нормаль"},
     {"Nothing is left", "何も残らない", "Ничего не остаётся"},
+    {"No vertex remains: the polygon lies outside the region.",
+     "頂点は一つも残らない: 多角形は領域の外にある.",
+     "Не остаётся ни одной вершины: многоугольник лежит вне области."},
+    {"Fewer than three vertices remain: the polygon only touches the region's boundary (at a "
+     "point or along an edge), which encloses no area.",
+     "残る頂点は 3 つ未満: 多角形は領域の境界に (1 点または 1 辺で) 接するだけで, 面積をもつ部分は"
+     "ない.",
+     "Остаётся меньше трёх вершин: многоугольник лишь касается границы области (в точке или по "
+     "ребру), а это не ограничивает никакой площади."},
     {"Nothing is visible", "何も見えない", "Ничего не видно"},
     {"Orientation", "向き", "Ориентация"},
     {"Orthographic projection matrix", "平行投影の行列", "Матрица ортографической проекции"},
@@ -212,6 +221,7 @@ constexpr Phrase kPhrases[] = {
     {"colour", "色", "цвет"},
     {"conflicts", "矛盾", "конфликты"},
     {"no conflicts", "矛盾なし", "конфликтов нет"},
+    {"no vertices", "頂点なし", "вершин нет"},
     {"convex", "凸", "выпуклый"},
     {"not convex", "凸でない", "невыпуклый"},
     {"depth", "奥行き", "глубина"},
