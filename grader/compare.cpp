@@ -355,9 +355,9 @@ Value keys_read(const Value& got, const Value& expected, const AnswerRules& r) {
 Comparison compare_word_map(const Value& expected, const Value& got) {
   // Each entry of the key counts once, however often the student wrote it.
   std::size_t right = 0;
-  for (const auto& [k, w] : expected.entries)
+  for (const auto& entry : expected.entries)  // (clang 14 cannot capture a structured binding)
     right += std::any_of(got.entries.begin(), got.entries.end(),
-                         [&](const auto& e) { return e.first == k && e.second == w; });
+                         [&](const auto& e) { return e == entry; });
   const std::size_t n = expected.entries.size();
   if (right == n && got.entries.size() == right) return correct("");
   std::size_t best_constant = 0;
