@@ -29,6 +29,7 @@
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/util/expression.hpp"
+#include "solver/util/words.hpp"
 
 namespace frustum {
 
@@ -36,11 +37,6 @@ namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
 
 namespace {
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 // The student id written in an answers file, without grading it (through the same bounded,
 // strict reader as grading, which stops at the id).
@@ -78,7 +74,7 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
   std::error_code ec;
   fs::directory_iterator it(dir, ec), end;
   for (; !ec && it != end; it.increment(ec)) {
-    const std::string ext = lower(it->path().extension().string());
+    const std::string ext = ascii_lower(it->path().extension().string());
     std::error_code type_ec;  // a symlink loop is an entry that cannot be read, not an abort
     const bool directory = it->is_directory(type_ec);
     if ((ext == ".yaml" || ext == ".yml") && !directory)
@@ -143,7 +139,7 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
   for (std::size_t i = 0; i < header.size(); ++i) {
     const std::string h = header[i];
     const int column = static_cast<int>(i) + 1;
-    if (lower(h) == "student") {
+    if (ascii_lower(h) == "student") {
       if (static_cast<int>(i) != student_col)
         throw InputError(Diagnostic{
             SourceLocation{path, header_line, column}, "header",
@@ -242,7 +238,7 @@ std::vector<BatchEntry> collect_submissions(const std::string& path, std::size_t
                                             std::vector<Diagnostic>* not_graded) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) return from_directory(path, max_bytes, not_graded);
-  if (lower(fs::path(path).extension().string()) == ".csv") return from_csv(path, max_bytes);
+  if (ascii_lower(fs::path(path).extension().string()) == ".csv") return from_csv(path, max_bytes);
   throw InputError(
       Diagnostic{SourceLocation{path, 0, 0}, "",
                  "expected an answers file (.yaml), a directory of them, or a CSV roster"});

@@ -11,6 +11,7 @@
 #include "grader/list_items.hpp"
 #include "grader/statement_choice.hpp"
 #include "solver/util/exact_format.hpp"
+#include "solver/util/words.hpp"
 
 namespace frustum {
 
@@ -313,21 +314,15 @@ Comparison compare_components(const Value& expected, const Value& got, const Ans
   return incorrect("");
 }
 
-std::string lower(std::string s) {
-  for (char& c : s)
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  return s;
-}
-
 // Words compared without case ("Background" is background), unless the expected words differ
 // only by case (labels "a" and "A" of two polygons).
 std::vector<std::string> folded(const std::vector<std::string>& words,
                                 const std::vector<std::string>& expected) {
   std::set<std::string> exact(expected.begin(), expected.end()), lowered;
-  for (const std::string& w : exact) lowered.insert(lower(w));
+  for (const std::string& w : exact) lowered.insert(ascii_lower(w));
   if (lowered.size() < exact.size()) return words;
   std::vector<std::string> out;
-  for (const std::string& w : words) out.push_back(lower(w));
+  for (const std::string& w : words) out.push_back(ascii_lower(w));
   return out;
 }
 

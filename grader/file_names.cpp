@@ -6,16 +6,13 @@
 #include <cstdint>
 #include <set>
 
+#include "solver/util/words.hpp"
+
 namespace frustum {
 
 namespace {
 
 constexpr std::size_t kMaxNameBytes = 120;  // file systems allow 255; room for suffixes
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 }  // namespace
 
@@ -48,7 +45,8 @@ std::vector<std::string> unique_file_names(const std::vector<std::string>& ids) 
   for (const std::string& id : ids) {
     const std::string base = file_name_for(id);
     std::string name = base;
-    for (int n = 2; !taken.insert(lower(name)).second; ++n) name = fmt::format("{}~{}", base, n);
+    for (int n = 2; !taken.insert(ascii_lower(name)).second; ++n)
+      name = fmt::format("{}~{}", base, n);
     out.push_back(name);
   }
   return out;

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string_view>
 
+#include "solver/util/words.hpp"
+
 namespace frustum {
 
 namespace {
@@ -104,11 +106,6 @@ std::optional<Pair> pair_of(const std::string& written) {
   return std::nullopt;
 }
 
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
 }  // namespace
 
 std::vector<std::string> items_as_written(const std::vector<std::string>& got,
@@ -131,7 +128,7 @@ std::string pair_as_in_key(const std::string& item, const std::vector<std::strin
   // The key's spelling, the ends compared as written, then without regard to case.
   for (const bool fold : {false, true}) {
     const auto same = [fold](const std::string& x, const std::string& y) {
-      return fold ? lower(x) == lower(y) : x == y;
+      return fold ? ascii_lower(x) == ascii_lower(y) : x == y;
     };
     for (const std::string& k : key) {
       const std::optional<Pair> q = pair_of(k);

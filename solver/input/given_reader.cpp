@@ -7,6 +7,7 @@
 #include "solver/util/exact_format.hpp"
 #include "solver/util/expression.hpp"
 #include "solver/util/suggest.hpp"
+#include "solver/util/words.hpp"
 
 namespace frustum {
 
@@ -24,14 +25,8 @@ SourceLocation location_of(const YAML::Node& node, const std::string& file) {
 
 namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
 bool names_non_finite(const std::string& text) {
-  std::string t = lower(text);
+  std::string t = ascii_lower(text);
   t.erase(std::remove(t.begin(), t.end(), ' '), t.end());
   if (!t.empty() && (t[0] == '+' || t[0] == '-')) t.erase(0, 1);
   return t == ".nan" || t == "nan" || t == ".inf" || t == "inf" || t == "infinity" || t == "∞";
@@ -74,7 +69,7 @@ Exact read_exact(const YAML::Node& n, const std::string& file, const std::string
   if (!n.IsScalar()) return fail("expected a number, got " + describe_node(n));
   const std::string& text = n.Scalar();
   if (names_non_finite(text)) return fail(quote_excerpt(text) + " is not a finite number");
-  const std::string l = lower(text);
+  const std::string l = ascii_lower(text);
   if (l == "true" || l == "false" || l == "yes" || l == "no")
     return fail("expected a number, got " + quote_excerpt(text));
   const ExpressionResult r = parse_expression(text);

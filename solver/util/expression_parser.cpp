@@ -23,6 +23,7 @@
 #include "solver/core/work_budget.hpp"
 #include "solver/util/expression.hpp"
 #include "solver/util/expression_internal.hpp"
+#include "solver/util/words.hpp"
 
 namespace frustum {
 namespace expression_internal {
@@ -49,17 +50,9 @@ constexpr FunctionName kFunctions[] = {
     {"log", Function::kLog},   {"ln", Function::kLog},    {"abs", Function::kAbs},
 };
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) {
-    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
-  }
-  return out;
-}
-
 // Built-in names are case-insensitive (students write Pi, SQRT); variables are not.
 std::optional<Function> find_function(std::string_view name) {
-  const std::string key = lower(name);
+  const std::string key = ascii_lower(name);
   for (const FunctionName& f : kFunctions) {
     if (f.name == key) return f.function;
   }
@@ -252,7 +245,7 @@ class Parser {
     if (const auto it = options_.symbols.find(t.name); it != options_.symbols.end()) {
       return Value{it->second};
     }
-    const std::string key = lower(t.name);
+    const std::string key = ascii_lower(t.name);
     if (key == "pi") return Value{GiNaC::Pi};
     if (function) {
       fail(quote(t) + " needs its argument in brackets, e.g. " + t.name + "(3)", t.offset);
