@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "grader/atomic_file.hpp"
 #include "grader/isolate.hpp"
 #include "grader/paper.hpp"
+#include "grader/run_program.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/rng.hpp"
 #include "solver/problem/solve_set.hpp"
@@ -32,12 +34,55 @@ constexpr std::size_t kFilesPerSync = 8192;
 constexpr std::size_t kMinParallelVariants = 64;
 // A worker's time for one variant (one that finds no acceptable draw takes the longest).
 constexpr double kVariantSeconds = 600;
+// A LaTeX compiler's time for one document of exam sheets or keys.
+constexpr double kLatexSeconds = 300;
 
 struct Named {
   std::string name;     // file name part
   std::string student;  // the answer key's student:
   ProblemSet variant;
 };
+
+// A LaTeX document compiled to `pdf`, the compiler's output in `log`; "" when it worked, else
+// why not. The compiler runs from an argument vector in a private directory beside the PDF on a
+// fixed file name, so neither a shell nor TeX ever reads the set's or the directory's name (a set
+// saved as `w';touch x;'.yaml` or `O'Brien.yaml` is only a name), and with \write18 off.
+std::string compile_latex(const std::string& engine, const std::string& text,
+                          const std::filesystem::path& pdf, const std::string& log) {
+  namespace fs = std::filesystem;
+  std::string work = (pdf.parent_path().empty() ? fs::path(".") : pdf.parent_path()).string() +
+                     "/.frustum-latex-XXXXXX";
+  if (!::mkdtemp(work.data()))
+    return std::string("cannot make a directory: ") + std::strerror(errno);
+  struct Cleanup {
+    std::string dir;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } cleanup{work};
+  try {
+    write_file_atomically(work + "/sheet.tex", text);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  RunOptions options;
+  options.cwd = work;
+  options.out = OutputTo::File;
+  options.err = OutputTo::File;
+  options.log_file = fs::absolute(log).string();
+  options.seconds = kLatexSeconds;
+  std::error_code ec;
+  const ProgramRun run = run_program(
+      {engine, "-no-shell-escape", "-interaction=nonstopmode", "-halt-on-error", "sheet.tex"},
+      options);
+  fs::rename(fs::path(work) / "sheet.log", fs::path(pdf).replace_extension(".log"), ec);
+  if (!run.started) return run.start_error;
+  if (run.timed_out) return fmt::format("stopped after {:g} s", kLatexSeconds);
+  if (run.status != 0) return fmt::format("exit status {}", run.status);
+  fs::rename(fs::path(work) / "sheet.pdf", pdf, ec);
+  return ec ? pdf.string() + ": " + ec.message() : "";
+}
 
 // The paper route: DIR/STEM-exams.tex and DIR/STEM-key.tex, compiled to PDF with --format pdf.
 int write_paper(const GenerateCommand& g, const ProblemSet& set, const std::vector<Named>& variants,
@@ -65,12 +110,11 @@ int write_paper(const GenerateCommand& g, const ProblemSet& set, const std::vect
     }
     // Japanese and Russian text need LuaLaTeX (latex_preamble says so in the first line).
     const std::string engine = text.rfind("% LuaLaTeX", 0) == 0 ? "lualatex" : "pdflatex";
-    const std::string command = fmt::format(
-        "{} -interaction=nonstopmode -halt-on-error -output-directory '{}' '{}' > '{}' 2>&1",
-        engine, g.out_dir, tex, (fs::path(g.out_dir) / (name + ".build.log")).string());
-    if (std::system(command.c_str()) != 0) {
-      o.err << "error: " << engine << " could not compile " << tex << " (see " << name
-            << ".build.log in " << g.out_dir
+    const std::string log = (fs::path(g.out_dir) / (name + ".build.log")).string();
+    const std::string why = compile_latex(engine, text, fs::path(g.out_dir) / (name + ".pdf"), log);
+    if (!why.empty()) {
+      o.err << "error: " << engine << " could not compile " << tex << ": " << why << " (see "
+            << name << ".build.log in " << g.out_dir
             << "; Debian: apt-get install texlive-latex-recommended texlive-pictures)\n";
       status = 1;
       continue;

@@ -26,9 +26,15 @@ namespace {
 // The sets of a class as `frustum generate --roster` drew them (redraws included), by student.
 using ClassVariants = std::map<std::string, ProblemSet>;
 
+// A set that does not vary is every student's set: the roster then says only whose each file
+// is. (Variants that `generate` drew from such a set are graded against its files, --variants.)
 ClassVariants class_variants(const ProblemSet& set, const std::vector<std::string>& roster) {
   ClassVariants out;
-  const std::vector<ProblemSet> drawn = variants_for_class(set, roster, !set_varies(set));
+  if (!set_varies(set)) {
+    for (const std::string& student : roster) out.emplace(student, set);
+    return out;
+  }
+  const std::vector<ProblemSet> drawn = variants_for_class(set, roster, false);
   for (std::size_t i = 0; i < roster.size(); ++i) out.emplace(roster[i], drawn[i]);
   return out;
 }
@@ -58,12 +64,14 @@ const char* kRedrawHint =
     "the roster it "
     "was generated from (--roster ROSTER)";
 
-// Grading a class of a varying set without --variants or --roster is safe only when no student
-// of it can have been drawn again by `generate --roster`: the first redraw of a class always
-// comes from two students whose variants from their ids share a problem. When two submissions
-// do, which of them (and who after them) was redrawn depends on the roster, so the whole class
-// is refused rather than graded against a guess. Returns why ("" when safe).
-std::string redraw_risk(const ProblemSet& set, const std::vector<BatchEntry>& entries) {
+// A class of a varying set graded without --variants or --roster: each student is graded against
+// the variant drawn from their own id (as `generate --student` draws it), so each result depends
+// on that student's file alone. When two students' variants from their ids share a problem and the
+// class was generated together (`generate --roster`), one of them was drawn again, and which
+// depends on the roster: those pairs are named to the instructor (never in a student's result).
+std::vector<std::string> shared_draws(const ProblemSet& set,
+                                      const std::vector<BatchEntry>& entries) {
+  std::vector<std::string> said;
   std::map<std::string, std::string> first;  // problem id + given → the first student with it
   for (const BatchEntry& e : entries) {
     if (e.student.empty() || e.error) continue;
@@ -73,15 +81,15 @@ std::string redraw_risk(const ProblemSet& set, const std::vector<BatchEntry>& en
       if (!problem_varies(set, set.problems[i]) || p.error) continue;
       const auto [it, fresh] = first.emplace(p.id + "\x1f" + emit_flow(p.given_node), e.student);
       if (!fresh && it->second != e.student)
-        return fmt::format(
-            "the variants of {} and {} drawn from their ids share problem {}: if the class was "
-            "generated with `frustum generate --roster`, students were drawn again and which "
-            "depends "
-            "on the roster, so no one is graded against a guess: {}",
-            it->second, e.student, p.id, kRedrawHint);
+        said.push_back(fmt::format(
+            "the variants of {} and {} drawn from their ids share problem {}; each was graded "
+            "against the variant from their own id, which is right if the class was generated "
+            "with `frustum generate --student`; if it was generated with --roster, one of them "
+            "was drawn again: {}",
+            it->second, e.student, p.id, kRedrawHint));
     }
   }
-  return "";
+  return said;
 }
 
 // The set a student is graded against: with --variants, the file `frustum generate` wrote for
@@ -178,13 +186,11 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   options.lang = g.lang;
   std::optional<ClassVariants> roster;
   if (!read_class(set, g, o, roster)) return 1;
-  std::string risk;
-  if (!g.roster && !g.variants && set_varies(set)) {
-    risk = redraw_risk(set, entries);
-  }
+  const std::vector<std::string> shared = !g.roster && !g.variants && set_varies(set)
+                                              ? shared_draws(set, entries)
+                                              : std::vector<std::string>{};
   if (set_varies(set) || g.variants || roster)
     options.set_for = [&](const ProblemSet& s, const std::string& student, std::string& variant) {
-      if (!risk.empty()) return refused(s, s.file, risk);
       return set_for_student(s, g, roster ? &*roster : nullptr, student, variant);
     };
   if (o.progress)
@@ -210,8 +216,9 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
       said.push_back(
           fmt::format("{}: {} ({}): {}", row.source, row.status, row.student, row.message));
   };
+  BatchResult result;
   try {
-    grade_batch(set, entries, options);
+    result = grade_batch(set, entries, options);
   } catch (const std::exception& e) {
     if (o.progress) o.err << "\n";
     o.err << "error: " << terminal_text(e.what()) << "\n"
@@ -225,6 +232,10 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
       rows, graded ? fmt::format(" (mean {:.1f}%)", 100.0 * sum / double(graded)) : "",
       options.out_dir);
   for (const Diagnostic& d : not_graded) o.err << "warning: " << terminal_text(d.format()) << "\n";
+  for (const std::string& line : shared) o.err << "warning: " << terminal_text(line) << "\n";
+  for (const auto& [from, to] : result.set_aside)
+    o.err << "note: " << terminal_text(from) << " was not written by Frustum: moved to "
+          << terminal_text(to) << " (nothing of yours is deleted)\n";
   for (const Diagnostic& d : set.all_errors()) o.err << terminal_text(d.format()) << "\n";
   return graded == rows && set.all_errors().empty() ? 0 : 1;
 }

@@ -14,7 +14,6 @@ import itertools
 import json
 import os
 import platform
-import shlex
 import shutil
 import statistics
 import subprocess
@@ -276,10 +275,9 @@ def main():
             # Two `-j 1` runs at once, each with its own output: what the cores give two
             # independent processes (they share the last-level cache and the memory bus), the
             # most that `-j N` can get out of them on this machine.
-            **({"pair": lambda k: ["/bin/sh", "-c", " & ".join(
-                f"{shlex.quote(F)} grade {shlex.quote(cls_set)} {shlex.quote(subs)} -o "
-                f"{shlex.quote(os.path.join(work, f'pair1000-{k}-{side}'))} -j 1 > /dev/null"
-                for side in range(ncpu)) + "; wait"]} if ncpu >= 2 else {}),
+            **({"pair": lambda k: [PY, WORKLOADS, "together", json.dumps([
+                [F, "grade", cls_set, subs, "-o", os.path.join(work, f"pair1000-{k}-{side}"), "-j", "1"]
+                for side in range(ncpu)])]} if ncpu >= 2 else {}),
         }, max(R, 5))
         one, j_all, peer, plain = race["one"], race["all"], race["peer"], race["plain"]
         pair = race.get("pair")

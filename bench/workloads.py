@@ -10,6 +10,8 @@ Python + NumPy peer that grades the same class files.
                                                   the NumPy peer: parse every file, grade, write a gradebook;
                                                   its YAML read by PyYAML's C loader (c, the default) or by
                                                   its own Python loader (python: what yaml.safe_load gives)
+  workloads.py together JSON                      runs the argument vectors of a JSON list at once
+                                                  (no shell), each one's output discarded
   workloads.py scene FILE N                       a render scene of about N small triangles
   workloads.py mesh FILE N                        an edge_visibility problem: a closed torus of about N faces
 """
@@ -151,6 +153,15 @@ def mesh(path, n):
         f.write("      eye: [2, -9, 7]\n    ask: [faces, edges]\n")
 
 
+def together(commands):
+    """Runs the commands (argument vectors, no shell) at once, their output discarded, and
+    fails unless every one succeeds."""
+    import subprocess
+    running = [subprocess.Popen(c, stdout=subprocess.DEVNULL) for c in commands]
+    if any(p.wait() != 0 for p in running):
+        sys.exit("a command run together failed")
+
+
 if __name__ == "__main__":
     cmd, args = sys.argv[1], sys.argv[2:]
     if cmd == "class-set":
@@ -165,5 +176,7 @@ if __name__ == "__main__":
         scene(args[0], int(args[1]))
     elif cmd == "mesh":
         mesh(args[0], int(args[1]))
+    elif cmd == "together":  # together JSON: a list of argument vectors
+        together(__import__("json").loads(args[0]))
     else:
         sys.exit(__doc__)

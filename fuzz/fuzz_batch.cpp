@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "fuzz/records.hpp"
 #include "grader/batch.hpp"
 #include "grader/csv.hpp"
 
@@ -47,14 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!mkdtemp(root_template)) return 0;
   const fs::path root(root_template), in = root / "class";
   fs::create_directories(in);
-  std::vector<std::string> records(1);
-  for (std::size_t i = 0; i < size; ++i) {
-    if (data[i] == 0)
-      records.emplace_back();
-    else
-      records.back() += static_cast<char>(data[i]);
-  }
-  if (records.size() > 24) records.resize(24);
+  const std::vector<std::string> records = frustum::fuzz::records(data, size, 24);
   for (std::size_t i = 0; i < records.size(); ++i) {
     const std::string& r = records[i];
     const fs::path p = in / name_of(i);

@@ -436,6 +436,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
                     Shares::Dynamic, &reaper);
   gradebook.finish();
   out.commit();
+  result.set_aside = out.set_aside();
   return result;
 }
 

@@ -115,6 +115,9 @@ struct BatchOptions {
 
 struct BatchResult {
   std::vector<BatchRow> rows;  // in input order (when BatchOptions::keep_rows)
+  // Files and directories in the output directory that Frustum did not write, moved to
+  // out_dir/set-aside/ instead of being deleted: (where they were, where they are now).
+  std::vector<std::pair<std::string, std::string>> set_aside;
 };
 
 // Classes of kWriteBackClass students or more are written back to disk while they are graded

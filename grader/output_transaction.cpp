@@ -25,6 +25,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kStateDir = ".frustum";
+constexpr const char* kSetAsideDir = "set-aside";
 
 // The number of a run directory ("run-7" → 7), or nothing for another name.
 std::optional<unsigned long> run_number(const std::string& name) {
@@ -60,26 +61,70 @@ std::vector<std::uint64_t> name_hashes(const std::unordered_set<std::string>& fi
   return hashes;
 }
 
-// Leaves in the run `dir` (the part `prefix` of it) only the files `keep` says this run may
-// write and the directories they lie in: anything else, and anything that is neither a plain
-// file nor a directory (a symlink there would be followed when the file is written), is removed.
-template <typename Keep>
-void keep_only(const fs::path& dir, const std::string& prefix, const Keep& keep,
-               const std::unordered_set<std::string>& dirs) {
+// Where a published run's record of its files is kept: dir/.frustum/files-N for run-N.
+fs::path record_of(const fs::path& run) {
+  return run.parent_path() / ("files-" + run.filename().string().substr(4));
+}
+
+// The sorted name hashes a run recorded (empty when it has no record: an older Frustum's run).
+std::vector<std::uint64_t> read_record(const fs::path& run) {
+  std::vector<std::uint64_t> hashes;
   std::error_code ec;
-  std::vector<fs::path> removed;
+  const std::uintmax_t size = fs::file_size(record_of(run), ec);
+  if (ec || size % sizeof(std::uint64_t) != 0) return hashes;
+  hashes.resize(size / sizeof(std::uint64_t));
+  const int fd = ::open(record_of(run).c_str(), O_RDONLY | O_CLOEXEC);
+  const ssize_t n = fd < 0 ? -1 : ::read(fd, hashes.data(), size);
+  if (fd >= 0) ::close(fd);
+  if (n != static_cast<ssize_t>(size)) hashes.clear();
+  std::sort(hashes.begin(), hashes.end());
+  return hashes;
+}
+
+// Walks the run `dir` (the part `prefix` of it): a plain file that `keep` says this run writes,
+// and the directories in `dirs`, stay; every other entry goes to `drop` (files, symlinks, and
+// what is neither; a directory not in `dirs` is walked with nothing kept, then removed if empty).
+// A symlink is never followed.
+using Keep = std::function<bool(const std::string&)>;
+using Drop = std::function<void(const fs::path&, const std::string&)>;
+
+void keep_only(const fs::path& dir, const std::string& prefix, const Keep& keep,
+               const std::unordered_set<std::string>& dirs, const Drop& drop) {
+  std::error_code ec;
+  std::vector<std::pair<fs::path, std::string>> dropped, walked;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     const std::string relative = prefix.empty() ? name : prefix + "/" + name;
     // The type from the directory listing, a symlink not followed.
-    if (it->is_symlink())
-      removed.push_back(it->path());
-    else if (it->is_directory() && dirs.count(relative))
-      keep_only(it->path(), relative, keep, dirs);
-    else if (!(it->is_regular_file() && keep(relative)))
-      removed.push_back(it->path());
+    if (!it->is_symlink() && it->is_directory())
+      walked.emplace_back(it->path(), relative);
+    else if (it->is_symlink() || !(it->is_regular_file() && keep(relative)))
+      dropped.emplace_back(it->path(), relative);
   }
-  for (const fs::path& p : removed) fs::remove_all(p, ec);
+  for (const auto& [path, relative] : dropped) drop(path, relative);
+  static const Keep nothing = [](const std::string&) { return false; };
+  for (const auto& [path, relative] : walked) {
+    const bool kept = dirs.count(relative) > 0;
+    keep_only(path, relative, kept ? keep : nothing, dirs, drop);
+    if (!kept) fs::remove(path, ec);  // only when empty: what was moved aside is gone from it
+  }
+}
+
+// Writes a run's record: the sorted name hashes of the files it may write.
+void write_record(const fs::path& run, const std::vector<std::uint64_t>& hashes) {
+  const std::string record = record_of(run).string();
+  const int fd = ::open(record.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail(record, "cannot create");
+  try {
+    write_all(fd,
+              std::string(reinterpret_cast<const char*>(hashes.data()),
+                          hashes.size() * sizeof(std::uint64_t)),
+              record);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  if (::close(fd) != 0) fail(record, "cannot close");
 }
 
 // Writes `content` over the file `fd` from its start, the last block in full (zeros after the
@@ -156,7 +201,19 @@ OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> n
       left.push_back(e.path());
     }
   }
-  for (const fs::path& p : left) fs::remove_all(p, ec);
+  for (const fs::path& p : left) {
+    // A run that was never published holds only what Frustum wrote; one that was (its record
+    // is there) may hold what was put in through the published names.
+    if (fs::exists(record_of(p), ec)) clear_run(p, [](const std::string&) { return false; });
+    fs::remove_all(p, ec);
+    fs::remove(record_of(p), ec);
+  }
+  // Records of runs that are no longer there.
+  for (const fs::directory_entry& e : fs::directory_iterator(state, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("files-", 0) == 0 && !fs::exists(state / ("run-" + name.substr(6)), ec))
+      fs::remove(e.path(), ec);
+  }
   run_ = (state / ("run-" + std::to_string(next))).string();
   if (files) {
     dirs_ = directories_of(*files, names_);
@@ -164,16 +221,28 @@ OutputTransaction::OutputTransaction(std::string dir, std::vector<std::string> n
     files_named_ = true;
   }
   if (kept && files_named_) {
-    // The kept run becomes this one: renamed, then cleared of what this run does not write.
+    // The kept run is cleared of what this run does not write (what Frustum did not write there
+    // moved aside), then becomes this one; its record is of both runs' files until this one is
+    // published (a kill in between leaves a run whose every file is recorded).
+    std::vector<std::uint64_t> both = read_record(kept->second);
+    clear_run(kept->second, [this](const std::string& f) { return has_file(f); });
     fs::rename(kept->second, run_, ec);
     reused_ = !ec;
-    if (reused_)
-      keep_only(
-          run_, "", [this](const std::string& f) { return has_file(f); }, dirs_);
+    if (reused_) {
+      both.insert(both.end(), file_hashes_.begin(), file_hashes_.end());
+      std::sort(both.begin(), both.end());
+      write_record(run_, both);
+      fs::remove(record_of(kept->second), ec);
+    }
   }
-  if (kept && !reused_) fs::remove_all(kept->second, ec);
+  if (kept && !reused_) {
+    clear_run(kept->second, [](const std::string&) { return false; });
+    fs::remove_all(kept->second, ec);
+    fs::remove(record_of(kept->second), ec);
+  }
   fs::create_directories(run_, ec);
   if (ec) throw std::runtime_error(run_ + ": cannot create: " + ec.message());
+  if (files_named_ && !reused_) write_record(run_, file_hashes_);
   run_fd_ = ::open(run_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (run_fd_ < 0) fail(run_, "cannot open");
   for (const std::string& name : names_)
@@ -189,10 +258,12 @@ OutputTransaction::~OutputTransaction() {
 
 void OutputTransaction::write(const std::string& relative, const std::string& content) {
   put(relative, content, O_TRUNC);
+  if (!files_named_) written_.push_back(std::hash<std::string>{}(relative));
 }
 
 void OutputTransaction::append(const std::string& relative, const std::string& content) {
   put(relative, content, O_APPEND);
+  if (!files_named_) written_.push_back(std::hash<std::string>{}(relative));
 }
 
 // Opened from the run's directory, not by the whole path: the kernel then looks up only the
@@ -267,22 +338,22 @@ void OutputTransaction::commit() {
   const fs::path state = fs::path(dir_) / kStateDir;
   // One sync for the whole run (its files and directories), not one per file; what write_back()
   // met counts as this sync's error.
-  if (::syncfs(run_fd_) != 0) fail(run_, "cannot flush");
   if (write_back_error_ != 0) fail(run_, "cannot flush", write_back_error_);
-  // Each published name is a fixed symlink into `current`. A real file or directory there (an
-  // older Frustum wrote them in place) is moved into the old run's place first.
+  // Without the files named up front, the record is of what this process wrote.
+  if (!files_named_) {
+    std::sort(written_.begin(), written_.end());
+    write_record(run_, written_);
+  }
+  if (::syncfs(run_fd_) != 0) fail(run_, "cannot flush");
+  // Each published name is a fixed symlink into `current`. Anything else there (a file written
+  // by hand, or by an older Frustum that wrote in place) is moved aside first, never deleted.
   for (const std::string& name : names_) {
     const fs::path link = fs::path(dir_) / name;
     const fs::path target = fs::path(kStateDir) / "current" / name;
     std::error_code ec;
     const fs::file_status st = fs::symlink_status(link, ec);
     if (fs::is_symlink(st) && fs::read_symlink(link, ec) == target) continue;
-    if (fs::exists(st)) {
-      const fs::path aside = state / ("replaced-" + name);
-      fs::remove_all(aside, ec);
-      fs::rename(link, aside, ec);
-      if (ec) throw std::runtime_error(link.string() + ": cannot replace: " + ec.message());
-    }
+    if (fs::exists(st) || fs::is_symlink(st)) move_aside(link, name);
     fs::create_symlink(target, link, ec);
     if (ec) throw std::runtime_error(link.string() + ": cannot create: " + ec.message());
   }
@@ -298,14 +369,38 @@ void OutputTransaction::commit() {
     fail((state / "current").string(), "cannot publish");
   sync_directory(state.string());
   committed_ = true;
-  for (const std::string& name : names_) fs::remove_all(state / ("replaced-" + name), ec);
   // The replaced run keeps only the files this run also has: the feedback of a student no
   // longer in the class (another section graded into the same directory) does not stay behind
   // in a directory that is shared or archived as a whole.
   if (files_named_ && !replaced.empty() && replaced.filename() != fs::path(run_).filename())
-    keep_only(
-        state / replaced.filename(), "", [this](const std::string& f) { return has_file(f); },
-        dirs_);
+    clear_run(state / replaced.filename(), [this](const std::string& f) { return has_file(f); });
+}
+
+void OutputTransaction::clear_run(const fs::path& run,
+                                  const std::function<bool(const std::string&)>& keep) {
+  const std::vector<std::uint64_t> wrote = read_record(run);
+  keep_only(run, "", keep, dirs_, [&](const fs::path& path, const std::string& relative) {
+    std::error_code ec;
+    if (std::binary_search(wrote.begin(), wrote.end(), std::hash<std::string>{}(relative)))
+      fs::remove_all(path, ec);
+    else
+      move_aside(path, relative);
+  });
+}
+
+void OutputTransaction::move_aside(const fs::path& path, const std::string& relative) {
+  const fs::path base = fs::path(dir_) / kSetAsideDir / relative;
+  fs::path to = base;
+  std::error_code ec;
+  for (int n = 2; fs::exists(fs::symlink_status(to, ec)); ++n)
+    to = base.parent_path() /
+         (base.stem().string() + "~" + std::to_string(n) + base.extension().string());
+  fs::create_directories(to.parent_path(), ec);
+  fs::rename(path, to, ec);
+  if (ec)
+    throw std::runtime_error(path.string() + " was not written by Frustum and cannot be moved to " +
+                             to.string() + ": " + ec.message() + "; nothing was deleted");
+  set_aside_.emplace_back((fs::path(dir_) / relative).string(), to.string());
 }
 
 bool OutputTransaction::has_file(const std::string& relative) const {

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -31,6 +33,12 @@ namespace frustum {
 // mounted with `discard`, and without a journal every file created within minutes of a deletion
 // made the kernel pass over the recently freed inodes (a regrade took twice a first grading).
 // Without `files`, a fresh run directory is made and the kept run removed.
+//
+// Nothing Frustum did not write is deleted. Each published run records which files it wrote
+// (dir/.frustum/files-N: their names' hashes); when a run is cleared, what it holds beyond them
+// (notes put into dir/feedback/ by hand) is moved to dir/set-aside/ (same relative path, `~2`…
+// when taken), and so is a real file or directory found at a published name (a gradebook.csv
+// written there by hand). set_aside() lists each such move for the caller to say.
 class OutputTransaction {
  public:
   // `names`: what is published (a name without an extension is a directory). `files`: every
@@ -61,6 +69,8 @@ class OutputTransaction {
   std::string published_path(const std::string& relative) const;
   // Whether this run is written into the kept run (files overwritten in place).
   bool reused() const { return reused_; }
+  // Files and directories Frustum did not write, moved out of the way: (from, to), both under dir.
+  const std::vector<std::pair<std::string, std::string>>& set_aside() const { return set_aside_; }
 
  private:
   std::string dir_;
@@ -79,7 +89,15 @@ class OutputTransaction {
   bool files_named_ = false;
   std::unordered_set<std::string> dirs_;
   std::vector<std::uint64_t> file_hashes_;
+  std::vector<std::pair<std::string, std::string>> set_aside_;
+  std::vector<std::uint64_t> written_;  // without `files`: the names write() and append() wrote
   bool has_file(const std::string& relative) const;
+  // Moves `path` (a run's `relative`, or a published name) to dir/set-aside/relative.
+  void move_aside(const std::filesystem::path& path, const std::string& relative);
+  // Leaves in the run directory `run` only what `keep` says this run writes; what the run's own
+  // record says Frustum wrote there is removed, anything else moved aside.
+  void clear_run(const std::filesystem::path& run,
+                 const std::function<bool(const std::string&)>& keep);
   void put(const std::string& relative, const std::string& content, int flags);
   int open_file(const std::string& relative, int flags) const;
   void overwrite(int fd, const std::string& relative, const std::string& content);

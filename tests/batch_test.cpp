@@ -670,17 +670,21 @@ TEST(Gradescope, AutograderScriptWritesResultsJson) {
   fs::create_symlink(test::source_path("problems"), ag / "source" / "problems");
   test::write_file(ag / "source" / "autograder.conf",
                    "SET=problems/seeds/001_zbuffer_plane_method.yaml\nLANG_FEEDBACK=ja\n");
-  const std::string run = "AUTOGRADER_ROOT=" + ag.string() + " bash " +
-                          test::source_path("tools/gradescope/run_autograder") + " >/dev/null 2>&1";
+  RunOptions in_root;
+  in_root.environment = {"AUTOGRADER_ROOT=" + ag.string()};
+  const auto run = [&] {
+    return run_program({"bash", test::source_path("tools/gradescope/run_autograder")}, in_root)
+        .status;
+  };
   // No answers file: a zero score that says why.
-  ASSERT_EQ(std::system(run.c_str()), 0);
+  ASSERT_EQ(run(), 0);
   auto results = nlohmann::json::parse(test::read_file(ag / "results" / "results.json"));
   EXPECT_EQ(results["score"], 0);
   EXPECT_NE(results["output"].get<std::string>().find("No answers file"), std::string::npos);
   // The published answers: full marks, one test per problem, feedback in Japanese.
   fs::copy_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml"),
                 ag / "submission" / "answers.yaml");
-  ASSERT_EQ(std::system(run.c_str()), 0);
+  ASSERT_EQ(run(), 0);
   results = nlohmann::json::parse(test::read_file(ag / "results" / "results.json"));
   EXPECT_EQ(results["score"], 8);
   ASSERT_EQ(results["tests"].size(), 3u);

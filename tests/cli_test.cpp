@@ -1,5 +1,4 @@
 // The `frustum` command line, run as a user would.
-#include <sys/wait.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -20,20 +19,10 @@ struct CliRun {
   std::string out;
 };
 
-// A shell command line's exit status and what it prints on the pipe (-1: no normal exit).
-CliRun run_shell(const std::string& cmd) {
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-// Standard output and, unless `with_stderr` is false, standard error.
+// Standard output and, unless `with_stderr` is false, standard error (-1: no normal exit).
 CliRun run(const std::string& args, bool with_stderr = true) {
-  return run_shell(std::string(FRUSTUM_BINARY) + " " + args +
-                   (with_stderr ? " 2>&1" : " 2>/dev/null"));
+  const ProgramRun r = test::frustum_run(args, with_stderr);
+  return {r.status, r.output};
 }
 
 CliRun stdout_of(const std::string& args) { return run(args, false); }
@@ -93,6 +82,29 @@ TEST(Cli, GradeTextShowsTheDerivationUnderAWrongAnswer) {
   EXPECT_NE(r.out.find("z: incorrect"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("How to get it"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Depth at the pixel"), std::string::npos) << r.out;
+}
+
+// A gradebook the instructor keeps in the output directory is moved aside, said, never deleted.
+TEST(Cli, GradingIntoADirectoryWithTheInstructorsFilesSetsThemAside) {
+  const std::filesystem::path dir = test::scratch_dir("cli_set_aside");
+  std::filesystem::create_directories(dir / "class");
+  std::filesystem::copy_file(
+      test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml"),
+      dir / "class" / "s.yaml");
+  std::filesystem::create_directories(dir / "out");
+  test::write_file(dir / "out" / "gradebook.csv", "my own marks\n");
+  const CliRun r = run("grade " + seed("001_zbuffer_plane_method.yaml") + " " +
+                       (dir / "class").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("note: " + (dir / "out" / "gradebook.csv").string() +
+                       " was not written by Frustum: moved to " +
+                       (dir / "out" / "set-aside" / "gradebook.csv").string()),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(test::read_file(dir / "out" / "set-aside" / "gradebook.csv"), "my own marks\n");
+  EXPECT_NE(test::read_file(dir / "out" / "gradebook.csv").find("seed001-published,8,8"),
+            std::string::npos);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Cli, AnUnreadableAnswersFileIsOneErrorNotEveryProblemMissing) {
@@ -297,13 +309,21 @@ TEST(Cli, OutputThatCannotBeWrittenIsAnError) {
        {"solve " + seed("001_zbuffer_plane_method.yaml"), std::string("--version"),
         "solve " + seed("001_zbuffer_plane_method.yaml") + " --format html"}) {
     // Standard error to the pipe, standard output to the full device.
-    const CliRun r = run_shell(std::string(FRUSTUM_BINARY) + " " + args + " 2>&1 >/dev/full");
+    RunOptions full;
+    full.out = OutputTo::File;
+    full.log_file = "/dev/full";
+    const ProgramRun p = test::frustum_run(test::words(args), true, full);
+    const CliRun r{p.status, p.output};
     EXPECT_EQ(r.status, 1) << args;
     EXPECT_NE(r.out.find("standard output could not be written in full"), std::string::npos)
         << args << ": " << r.out;
   }
   // Written in full, the same commands end with status 0 and nothing on standard error.
-  const CliRun ok = run("solve " + seed("001_zbuffer_plane_method.yaml") + " >/dev/null");
+  RunOptions quiet;
+  quiet.out = OutputTo::Null;
+  const ProgramRun q =
+      test::frustum_run({"solve", seed("001_zbuffer_plane_method.yaml")}, true, quiet);
+  const CliRun ok{q.status, q.output};
   EXPECT_EQ(ok.status, 0);
   EXPECT_EQ(ok.out, "");
 }

@@ -38,19 +38,16 @@ std::string dump_dom(const fs::path& page) {
   const fs::path profile =
       fs::temp_directory_path() / ("frustum-chromium-" + std::to_string(getpid()));
   fs::create_directories(profile);
-  const std::string command =
-      std::string("timeout 120 ") + kChromium +
-      " --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-      "--disable-background-networking"
-      " --disable-component-update --disable-sync --disable-dev-shm-usage --user-data-dir=" +
-      profile.string() + " --dump-dom 'file://" + page.string() + "' 2>/dev/null";
-  std::string out;
-  if (FILE* p = popen(command.c_str(), "r")) {
-    std::array<char, 4096> buf;
-    std::size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-    pclose(p);
-  }
+  RunOptions quiet;
+  quiet.err = OutputTo::Null;
+  quiet.seconds = 120;
+  const std::string out =
+      run_program({kChromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                   "--no-first-run", "--disable-background-networking",
+                   "--disable-component-update", "--disable-sync", "--disable-dev-shm-usage",
+                   "--user-data-dir=" + profile.string(), "--dump-dom", "file://" + page.string()},
+                  quiet)
+          .output;
   fs::remove_all(profile);
   return out;
 }

@@ -420,14 +420,11 @@ TEST(Vary, GradingRegeneratesTheStudentsVariant) {
 
 // ---------------------------------------------------------------- the command line
 
+// Its output (stdout and stderr); `status` is the exit status (-1: no normal exit).
 std::string run_cli(const std::string& args, int& status) {
-  const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (p && std::fgets(buf, sizeof buf, p)) out += buf;
-  status = p ? pclose(p) : -1;
-  return out;
+  const ProgramRun r = test::frustum_run(args);
+  status = r.status;
+  return r.output;
 }
 
 TEST(GenerateCli, WritesReproducibleSetsWhoseKeysGradeFullMarks) {
@@ -526,9 +523,7 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
       run_cli("grade " + set + " " + dir + "/zed.yaml --variants " + dir + "/gen", status);
   EXPECT_NE(status, 0);
   EXPECT_NE(none.find("no generated set for student zed"), std::string::npos) << none;
-  // issue 13: the same roster regenerates the class, redraws included; without --variants or
-  // --roster, a class in which two students' variants from their ids collide (so someone was
-  // redrawn) is refused, never graded against another draw.
+  // The same roster regenerates the class, redraws included.
   const std::string by_roster = run_cli("grade " + set + " " + dir + "/answers --roster " + dir +
                                             "/roster.csv -o " + dir + "/grades3",
                                         status);
@@ -542,13 +537,30 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
         status);
     EXPECT_NE(alone.find(": 1 / 1"), std::string::npos) << alone;
   }
+  // Without either, each student is graded against the variant drawn from their own id, whoever
+  // else is in the class: every row is the row of that student's file graded alone. The pairs whose
+  // id variants share a problem are named to the instructor, with how to grade a roster class.
   const std::string guessed =
       run_cli("grade " + set + " " + dir + "/answers -o " + dir + "/grades4", status);
-  EXPECT_NE(status, 0);
+  EXPECT_EQ(status, 0) << guessed;
+  EXPECT_NE(guessed.find("share problem v"), std::string::npos) << guessed;
+  EXPECT_NE(guessed.find("--roster"), std::string::npos) << guessed;
   const std::string book4 = test::read_file(dir + "/grades4/gradebook.csv");
-  EXPECT_NE(book4.find("--variants"), std::string::npos) << book4;
-  for (const std::string s : {"ana", "ben", "cy", "dee"})
-    EXPECT_NE(book4.find(s + ",0,1,0.0,error"), std::string::npos) << s << "\n" << book4;
+  // A student's row up to the file's path (the one column that differs when graded alone).
+  const auto row_of = [](const std::string& book, const std::string& student) {
+    const std::size_t at = book.find("\n" + student + ",");
+    if (at == std::string::npos) return std::string("<no row>");
+    const std::string row = book.substr(at + 1, book.find('\n', at + 1) - at - 1);
+    return row.substr(0, row.find(",/"));
+  };
+  for (const std::string s : {"ana", "ben", "cy", "dee"}) {
+    const std::string alone_dir = dir + "/alone-" + s;
+    std::filesystem::create_directories(alone_dir);
+    std::filesystem::copy_file(dir + "/answers/" + s + ".yaml", alone_dir + "/" + s + ".yaml");
+    run_cli("grade " + set + " " + alone_dir + " -o " + alone_dir + "/out", status);
+    EXPECT_EQ(row_of(book4, s), row_of(test::read_file(alone_dir + "/out/gradebook.csv"), s));
+    EXPECT_NE(row_of(book4, s).find(",graded,"), std::string::npos) << book4;
+  }
   // A student alone without either is graded against the id's draw, and the report says how to
   // grade a roster-generated class.
   const std::string single = run_cli("grade " + set + " " + dir + "/answers/ana.yaml", status);
@@ -559,6 +571,36 @@ TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
       run_cli("generate " + set + " --roster " + dir + "/twice.txt -o " + dir + "/t", status);
   EXPECT_NE(status, 0);
   EXPECT_NE(twice.find("twice.txt:4:1"), std::string::npos) << twice;
+}
+
+// A set that does not vary is every student's set: with --roster (which then says only whose each
+// file is) the published answers grade full marks for everyone, never against a drawn variant.
+TEST(GenerateCli, ARosterOnASetThatDoesNotVaryGradesEveryoneAgainstTheSet) {
+  const std::string dir = ::testing::TempDir() + "frustum_roster_fixed";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir + "/answers");
+  const std::string set = test::source_path("problems/seeds/001_zbuffer_plane_method.yaml");
+  std::string published =
+      test::read_file(test::source_path("problems/seeds/answers/001_zbuffer_plane_method.yaml"));
+  const std::string claim = "student: seed001-published";
+  ASSERT_NE(published.find(claim), std::string::npos);
+  for (const std::string s : {"ana", "ben"})
+    test::write_file(
+        dir + "/answers/" + s + ".yaml",
+        std::string(published).replace(published.find(claim), claim.size(), "student: " + s));
+  std::ofstream(dir + "/roster.csv") << "student\nana\nben\n";
+  int status = 0;
+  const std::string out = run_cli(
+      "grade " + set + " " + dir + "/answers --roster " + dir + "/roster.csv -o " + dir + "/grades",
+      status);
+  EXPECT_EQ(status, 0) << out;
+  const std::string book = test::read_file(dir + "/grades/gradebook.csv");
+  for (const std::string s : {"ana", "ben"})
+    EXPECT_NE(book.find(s + ",8,8,100"), std::string::npos) << book;
+  const std::string one = run_cli(
+      "grade " + set + " " + dir + "/answers/ana.yaml --roster " + dir + "/roster.csv", status);
+  EXPECT_EQ(status, 0) << one;
+  EXPECT_NE(one.find(": 8 / 8"), std::string::npos) << one;
 }
 
 // ---------------------------------------------------------------- self-test of every kind

@@ -411,15 +411,7 @@ TEST(Handedness, RenderOfALeftHandedSceneIsTheRightHandedRenderOfItsMirror) {
                               << p(-1, 2, 4) << "], fill: [40, 40, 200], cull: back}\n";
     return dir + name;
   };
-  const auto run = [](const std::string& args) {
-    const std::string cmd = std::string(FRUSTUM_BINARY) + " " + args + " 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buf;
-    while (const std::size_t n = fread(buf.data(), 1, buf.size(), p)) out.append(buf.data(), n);
-    pclose(p);
-    return out;
-  };
+  const auto run = [](const std::string& args) { return test::frustum_run(args).output; };
   for (const std::string api : {"opengl", "processing"}) {
     const std::string left =
         run("render " + scene("lh.yaml", "{api: " + api + ", handedness: left}", 1) + " -o " + dir +

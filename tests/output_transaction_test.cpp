@@ -11,6 +11,8 @@
 #include <chrono>
 #include <filesystem>
 #include <string>
+#include <unordered_set>
+#include <vector>
 
 #include "grader/batch.hpp"
 #include "solver/problem/problem_set.hpp"
@@ -108,10 +110,58 @@ TEST(OutputTransaction, WhatTheKeptRunHeldBeyondThisRunsFilesIsNotPublished) {
   test::write_file(kept / "notes.txt", "x");
   fs::create_directories(kept / "feedback" / "b.md.d");
   publish(out, {{"gradebook.csv", "a\n"}, {"feedback/a.md", "again\n"}});
+  // The students' files of the first grading are gone; what Frustum did not write is set aside.
   EXPECT_EQ(
       test::published_tree(out),
-      (std::map<std::string, std::string>{{"feedback/a.md", "again\n"}, {"gradebook.csv", "a\n"}}));
+      (std::map<std::string, std::string>{
+          {"feedback/a.md", "again\n"}, {"gradebook.csv", "a\n"}, {"set-aside/notes.txt", "x"}}));
   EXPECT_FALSE(fs::exists(out / ".frustum" / "run-3" / "notes.txt"));
+  fs::remove_all(dir);
+}
+
+// Nothing Frustum did not write is deleted: a gradebook and notes that were in the output
+// directory before the first grading, and notes put into the published feedback/ by hand, are
+// moved to set-aside/ (each said), whatever gradings follow; Frustum's own files of a student no
+// longer in the class are deleted.
+TEST(OutputTransaction, FilesFrustumDidNotWriteAreSetAsideNeverDeleted) {
+  const fs::path dir = scratch("instructor");
+  const fs::path out = dir / "out";
+  fs::create_directories(out / "feedback");
+  test::write_file(out / "gradebook.csv", "my own marks\n");
+  test::write_file(out / "feedback" / "notes.txt", "talk to b\n");
+  test::write_file(out / "README.txt", "beside the outputs: never touched\n");
+  std::vector<std::pair<std::string, std::string>> said;
+  const auto grade = [&](const std::map<std::string, std::string>& files) {
+    std::unordered_set<std::string> names;
+    for (const auto& [name, text] : files) names.insert(name);
+    OutputTransaction t(out.string(), {"gradebook.csv", "feedback"}, names);
+    for (const auto& [name, text] : files) t.write(name, text);
+    t.commit();
+    said.insert(said.end(), t.set_aside().begin(), t.set_aside().end());
+  };
+  grade(kTwoStudents);
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_EQ(said[0], std::pair((out / "gradebook.csv").string(),
+                               (out / "set-aside" / "gradebook.csv").string()));
+  EXPECT_EQ(said[1],
+            std::pair((out / "feedback").string(), (out / "set-aside" / "feedback").string()));
+  // Notes written through the published directory, then three more gradings with fewer students.
+  test::write_file(out / "feedback" / "later.txt", "written by hand\n");
+  for (int i = 0; i < 3; ++i) grade({{"gradebook.csv", "a\n"}, {"feedback/a.md", "a\n"}});
+  EXPECT_EQ(said.size(), 3u);
+  EXPECT_EQ(test::published_tree(out), (std::map<std::string, std::string>{
+                                           {"README.txt", "beside the outputs: never touched\n"},
+                                           {"feedback/a.md", "a\n"},
+                                           {"gradebook.csv", "a\n"},
+                                           {"set-aside/feedback/later.txt", "written by hand\n"},
+                                           {"set-aside/feedback/notes.txt", "talk to b\n"},
+                                           {"set-aside/gradebook.csv", "my own marks\n"}}));
+  // A second file of the same name set aside later keeps the first: gradebook~2.csv.
+  fs::remove(out / "gradebook.csv");
+  test::write_file(out / "gradebook.csv", "marks again\n");
+  grade({{"gradebook.csv", "a\n"}});
+  EXPECT_EQ(test::read_file(out / "set-aside" / "gradebook~2.csv"), "marks again\n");
+  EXPECT_EQ(test::read_file(out / "set-aside" / "gradebook.csv"), "my own marks\n");
   fs::remove_all(dir);
 }
 

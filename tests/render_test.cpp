@@ -801,11 +801,7 @@ TEST(RenderKind, ExactDecisionsAgreeWithTheFloatPipelineOnOrdinaryScenes) {
 
 // ---------------------------------------------------------------- frustum render
 
-int run_cli(const std::string& args) {
-  const int status =
-      std::system((std::string(FRUSTUM_BINARY) + " " + args + " > /dev/null 2>&1").c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+int run_cli(const std::string& args) { return test::frustum_run(args).status; }
 
 std::string file_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "grader/run_program.hpp"
 #include "solver/core/exact.hpp"
 #include "solver/derivation/problem_result.hpp"
 #include "solver/problem/problem_set.hpp"
@@ -19,6 +20,26 @@
 #include "solver/util/exact_format.hpp"
 
 namespace frustum::test {
+
+// A test's command line split at white space: an argument vector, never read by a shell (a test
+// whose argument holds a space builds the vector itself).
+inline std::vector<std::string> words(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+// `frustum` with these arguments; stdout and (unless `with_stderr` is false) stderr captured.
+inline ProgramRun frustum_run(std::vector<std::string> args, bool with_stderr = true,
+                              RunOptions options = {}) {
+  args.insert(args.begin(), FRUSTUM_BINARY);
+  if (!with_stderr) options.err = OutputTo::Null;
+  return run_program(args, options);
+}
+inline ProgramRun frustum_run(const std::string& args, bool with_stderr = true) {
+  return frustum_run(words(args), with_stderr);
+}
 
 inline std::string source_path(const std::string& relative) {
   return std::string(FRUSTUM_SOURCE_DIR) + "/" + relative;

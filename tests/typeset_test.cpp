@@ -47,17 +47,28 @@ TEST(Typeset, EveryFormulaOfEveryKindIsLatexWithoutWordsOrUnicode) {
 constexpr const char* kKatex = "/usr/share/javascript/katex/katex.js";  // Debian's libjs-katex
 constexpr const char* kNode = "/usr/bin/node";
 
-// Runs a command and returns what it printed and its exit status.
-std::pair<std::string, int> run(const std::string& command) {
-  std::string out;
-  int status = -1;
-  if (FILE* p = popen(command.c_str(), "r")) {
-    std::array<char, 4096> buf;
-    std::size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-    status = pclose(p);
-  }
-  return {out, status};
+// Runs a program and returns what it printed (stderr too unless `options` says otherwise) and its
+// exit status.
+std::pair<std::string, int> run(const std::vector<std::string>& argv, RunOptions options = {}) {
+  const ProgramRun r = run_program(argv, options);
+  return {r.output, r.status};
+}
+
+// Chromium, headless, with its profile in `profile`, on the page; `more` before the URL.
+std::vector<std::string> chromium(const std::string& profile, const std::string& page,
+                                  std::vector<std::string> more) {
+  std::vector<std::string> argv = {"/usr/bin/chromium",
+                                   "--headless",
+                                   "--no-sandbox",
+                                   "--disable-gpu",
+                                   "--disable-background-networking",
+                                   "--disable-component-update",
+                                   "--no-first-run",
+                                   "--disable-dev-shm-usage",
+                                   "--user-data-dir=" + profile};
+  argv.insert(argv.end(), more.begin(), more.end());
+  argv.push_back("file://" + page);
+  return argv;
 }
 
 TEST(Typeset, KatexRendersEveryFormulaInStrictMode) {
@@ -74,8 +85,7 @@ TEST(Typeset, KatexRendersEveryFormulaInStrictMode) {
   std::ofstream(file)
       << nlohmann::json(std::vector<std::string>(unique.begin(), unique.end())).dump();
   const auto [out, status] =
-      run(std::string(kNode) + " " + test::source_path("tests/katex/render_all.js") + " " + kKatex +
-          " " + file + " 2>&1");
+      run({kNode, test::source_path("tests/katex/render_all.js"), kKatex, file});
   std::filesystem::remove(file);
   EXPECT_EQ(status, 0) << out.substr(0, 6000);
   EXPECT_NE(out.find(std::to_string(unique.size()) + " formulas, 0 failed"), std::string::npos)
@@ -95,18 +105,16 @@ TEST(Typeset, HtmlPageTypesetsInChromiumAndScreenshots) {
   const std::string page = (dir / "seed004.html").string(),
                     png = std::string(FRUSTUM_BINARY_DIR) + "/typeset-seed004.png";
   std::ofstream(page) << render_html(set);
-  const std::string chromium =
-      std::string("timeout 120 ") + kChromium +
-      " --headless --no-sandbox --disable-gpu --disable-background-networking"
-      " --disable-component-update --no-first-run --disable-dev-shm-usage --user-data-dir=" +
-      (dir / "profile").string();
-  const auto [dom, status] = run(chromium + " --dump-dom 'file://" + page + "' 2>/dev/null");
+  RunOptions quiet;
+  quiet.err = OutputTo::Null;
+  quiet.seconds = 120;
+  const std::string profile = (dir / "profile").string();
+  const auto [dom, status] = run(chromium(profile, page, {"--dump-dom"}), quiet);
   EXPECT_NE(dom.find("data-math=\"yes\""), std::string::npos) << "the page's script did not run";
   EXPECT_NE(dom.find("class=\"katex-display\""), std::string::npos);
   EXPECT_EQ(dom.find("data-typeset=\"error\""), std::string::npos);
   std::filesystem::remove(png);
-  run(chromium + " --window-size=1000,1400 --screenshot=" + png + " 'file://" + page +
-      "' 2>/dev/null");
+  run(chromium(profile, page, {"--window-size=1000,1400", "--screenshot=" + png}), quiet);
   ASSERT_TRUE(std::filesystem::exists(png));
   EXPECT_GT(std::filesystem::file_size(png), 20000u) << "a typeset page is more than a blank image";
   std::filesystem::remove_all(dir);
@@ -124,9 +132,12 @@ TEST(Typeset, LatexDocumentsCompileWithLualatex) {
     const std::string tex = (dir / "set.tex").string();
     std::ofstream(tex) << render_latex(solve_set(load_problem_set(file), true));
     std::filesystem::remove(dir / "set.pdf");
+    RunOptions in_dir;
+    in_dir.cwd = dir.string();
+    in_dir.environment = {"TEXMFVAR=" + (dir / "var").string()};
+    in_dir.seconds = 300;
     const auto [log, status] =
-        run("cd " + dir.string() + " && TEXMFVAR=" + (dir / "var").string() +
-            " timeout 300 lualatex -interaction=nonstopmode -halt-on-error set.tex 2>&1");
+        run({"lualatex", "-interaction=nonstopmode", "-halt-on-error", "set.tex"}, in_dir);
     EXPECT_EQ(status, 0) << file << "\n" << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
     EXPECT_TRUE(std::filesystem::exists(dir / "set.pdf")) << file;
   }

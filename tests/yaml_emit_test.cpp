@@ -68,18 +68,26 @@ TEST(YamlEmit, OutcodesInAnswerKeysReadTheSameInPyYaml) {
         << "title: outcodes\nproblems:\n  - id: c\n    kind: clip_line\n"
            "    given: {p: [-2, 5], q: [3, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}\n";
   }
-  const std::string generate = std::string(FRUSTUM_BINARY) + " generate " +
-                               (dir / "clip.yaml").string() + " --seed 5 --count 60 -o " +
-                               (dir / "gen").string() + " >/dev/null 2>&1";
-  ASSERT_EQ(std::system(generate.c_str()), 0);
+  ASSERT_EQ(test::frustum_run({"generate", (dir / "clip.yaml").string(), "--seed", "5", "--count",
+                               "60", "-o", (dir / "gen").string()})
+                .status,
+            0);
   // PyYAML's reading of every key, one "file outcode_p outcode_q" line each.
-  const std::string python =
-      "python3 -c 'import sys, yaml, glob, os\n"
-      "for f in sorted(glob.glob(sys.argv[1] + \"/*.yaml\")):\n"
-      "    a = yaml.safe_load(open(f))[\"answers\"][\"c\"]\n"
-      "    print(os.path.basename(f), repr(a[\"outcode_p\"]), repr(a[\"outcode_q\"]))' " +
-      (dir / "gen" / "answers").string() + " > " + (dir / "pyyaml.txt").string();
-  ASSERT_EQ(std::system(python.c_str()), 0) << "python3-yaml is in tools/packages/test.txt";
+  RunOptions to_file;
+  to_file.out = OutputTo::File;
+  to_file.err = OutputTo::Inherit;
+  to_file.log_file = (dir / "pyyaml.txt").string();
+  ASSERT_EQ(run_program({"python3", "-c",
+                         "import sys, yaml, glob, os\n"
+                         "for f in sorted(glob.glob(sys.argv[1] + \"/*.yaml\")):\n"
+                         "    a = yaml.safe_load(open(f))[\"answers\"][\"c\"]\n"
+                         "    print(os.path.basename(f), repr(a[\"outcode_p\"]), "
+                         "repr(a[\"outcode_q\"]))",
+                         (dir / "gen" / "answers").string()},
+                        to_file)
+                .status,
+            0)
+      << "python3-yaml is in tools/packages/test.txt";
   std::ifstream in(dir / "pyyaml.txt");
   std::string file, p, q;
   int keys = 0, leading_zero = 0;

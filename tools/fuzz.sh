@@ -24,7 +24,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-all_targets=(fuzz_loader fuzz_expression fuzz_grade fuzz_batch fuzz_csv_roster fuzz_scene)
+all_targets=(fuzz_loader fuzz_expression fuzz_grade fuzz_batch fuzz_csv_roster fuzz_scene fuzz_neighbours)
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
 . tools/sanitized_build.sh  # build-fuzz/, shared with tools/sanitize.sh
@@ -55,10 +55,10 @@ seed_arg=()
 status=0
 for t in "${targets[@]}"; do
   extra=()
-  # fuzz_batch forks a grading child per student for two batches per input (about twenty
+  # fuzz_batch and fuzz_neighbours fork grading children for two batches per input (about twenty
   # processes under ASan): its inputs get six times the time of a single-process target.
   timeout=${FUZZ_TIMEOUT:-10}
-  [ "$t" = fuzz_batch ] && timeout=$((timeout * 6))
+  [ "$t" = fuzz_batch ] || [ "$t" = fuzz_neighbours ] && timeout=$((timeout * 6))
   case "$t" in
     fuzz_loader) extra=(problems/seeds problems/examples) ;;
     fuzz_grade) extra=("$seeds/fuzz_grade") ;;

@@ -95,13 +95,28 @@ check "the Russian exam sheets compile with LuaLaTeX" test -s "$work/rupdf/001_z
 check "the Russian key compiles with LuaLaTeX" test -s "$work/rupdf/001_zbuffer_plane_method-key.pdf"
 check "no Cyrillic letter of the Russian sheets lacks a LaTeX form" \
   test "$(cat "$work"/rupdf/*.tex | grep -c 'unknownchar{04')" = 0
+# A set's file name is only a name: one that would close a shell quote and run a command, and an
+# apostrophe, compile as any other (the compiler runs from an argument vector, on a fixed name).
+mkdir -p "$work/names"
+cp "$src/problems/seeds/001_zbuffer_plane_method.yaml" "$work/names/w';touch HACKED;'.yaml"
+cp "$src/problems/seeds/001_zbuffer_plane_method.yaml" "$work/names/O'Brien.yaml"
+for name in "w';touch HACKED;'" "O'Brien"; do
+  (cd "$work/names" && "$frustum" generate "$name.yaml" --seed 1 --count 2 -o "out $name" --format pdf >/dev/null 2>&1) || true
+  check "a set named $name compiles to PDF" test -s "$work/names/out $name/$name-exams.pdf"
+done
+check "no command in a file name ran" test ! -e "$work/names/HACKED"
+check "no compiler directory is left behind" test -z "$(find "$work/names" -name '.frustum-latex-*')"
+pdf_has() {  # pdf_has PDF WORD: the PDF's extracted text holds WORD (read whole: no SIGPIPE)
+  local text
+  text=$(pdftotext "$1" -) && grep -q -- "$2" <<<"$text"
+}
 if command -v pdftotext >/dev/null; then
   check "the Japanese exam's text is Japanese in the PDF" \
-    sh -c "pdftotext '$work/japdf/001_zbuffer_plane_method-exams.pdf' - | grep -q '平面'"
+    pdf_has "$work/japdf/001_zbuffer_plane_method-exams.pdf" '平面'
   check "the Russian exam's text is Russian in the PDF" \
-    sh -c "pdftotext '$work/rupdf/001_zbuffer_plane_method-exams.pdf' - | grep -q 'треугольника'"
+    pdf_has "$work/rupdf/001_zbuffer_plane_method-exams.pdf" 'треугольника'
   check "the Russian key's steps are Russian in the PDF" \
-    sh -c "pdftotext '$work/rupdf/001_zbuffer_plane_method-key.pdf' - | grep -q 'Нормаль'"
+    pdf_has "$work/rupdf/001_zbuffer_plane_method-key.pdf" 'Нормаль'
 fi
 
 echo "$failures failed"
