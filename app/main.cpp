@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/number_options.hpp"
 
 namespace {
 
@@ -32,6 +33,17 @@ CLI::Validator choice(std::vector<std::pair<std::string, T>> words) {
         return "'" + input + "' is not one of " + list;
       },
       "{" + list + "}");
+}
+
+// A seed: every value of 64 bits, and nothing beyond (CLI11 took -1 and 2^64 for 2^64 - 1).
+CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& input) -> std::string {
+        const auto n = frustum::app::parse_whole_number(input, lo, hi);
+        const std::string* why = std::get_if<std::string>(&n);
+        return why ? *why : std::string();
+      },
+      "");
 }
 
 std::string examples(std::initializer_list<const char*> lines) {
@@ -170,7 +182,8 @@ int run_command(int argc, char** argv) {
   auto* gen_student =
       generate->add_option("--student", gen_opt.students, "Student id(s): one variant each");
   auto* gen_seed =
-      generate->add_option("--seed", gen_opt.seed, "Seed of --count variants (pairwise distinct)");
+      generate->add_option("--seed", gen_opt.seed, "Seed of --count variants (pairwise distinct)")
+          ->check(whole_number(0, UINT64_MAX));
   generate->add_option("--count", gen_opt.count, "How many variants from --seed (default 1)")
       ->check(CLI::Range(1, 100000))
       ->needs(gen_seed);
@@ -219,7 +232,8 @@ int run_command(int argc, char** argv) {
   exp->add_option("--count", export_opt.count,
                   "Variants to draw (default 1: the set itself when nothing varies)")
       ->check(CLI::Range(1, 1000));
-  exp->add_option("--seed", export_opt.seed, "Seed of the variants (default 1)");
+  exp->add_option("--seed", export_opt.seed, "Seed of the variants (default 1)")
+      ->check(whole_number(0, UINT64_MAX));
   exp->add_option("--assignment", export_opt.assignment,
                   "*-grades: the assignment's column name (default Frustum)");
   exp->add_flag("--sis-login", export_opt.sis_login,
@@ -323,14 +337,12 @@ int run_command(int argc, char** argv) {
     if (draw->parsed()) return frustum::app::run_draw(set, draw_id, draw_output, raster, out);
     if (render->parsed()) {
       if (!render_size.empty()) {
-        int w = 0, h = 0;
-        char x = 0, extra = 0;
-        if (std::sscanf(render_size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 ||
-            (x != 'x' && x != 'X') || w < 1 || h < 1 || w > 16384 || h > 16384) {
-          std::cerr << "--size: expected WxH with 1 ≤ W, H ≤ 16384, got '" << render_size << "'\n";
+        const auto size = frustum::app::parse_size(render_size);
+        if (const std::string* why = std::get_if<std::string>(&size)) {
+          std::cerr << "--size: " << *why << "\n";
           return 2;
         }
-        render_opt.size = std::pair{w, h};
+        render_opt.size = std::get<std::pair<int, int>>(size);
       }
       return frustum::app::run_render(render_opt, out);
     }

@@ -130,21 +130,27 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
   Frame own;  // the frame when the caller keeps none; the scan-line method's image
   Frame& frame = target ? *target : own;
   std::string method;
-  if (scene.scanline) {
-    // The world triangles are freed once in window space.
-    const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
-    ScanlineStats st;
-    frame.color = render_scanline(tris, scene.width, scene.height, scene.background, &st,
-                                  opt.depth ? &frame.depth : nullptr);
-    method = fmt::format(
-        "scan-line: one row of depth ({} bytes) instead of the z-buffer's {} bytes; at most {} "
-        "triangles active on a row, {} spans",
-        st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
-  } else {
-    FillStats fs;
-    render_zbuffer(scene, frame, &gs, &fs, opt.threads, helpers);
-    method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",
-                         frame.depth.data.size() * sizeof(float), fs.fragments, fs.written);
+  try {
+    if (scene.scanline) {
+      // The world triangles are freed once in window space.
+      const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
+      ScanlineStats st;
+      frame.color = render_scanline(tris, scene.width, scene.height, scene.background, &st,
+                                    opt.depth ? &frame.depth : nullptr, scene.max_work);
+      method = fmt::format(
+          "scan-line: one row of depth ({} bytes) instead of the z-buffer's {} bytes; at most {} "
+          "triangles active on a row, {} spans",
+          st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
+    } else {
+      FillStats fs;
+      render_zbuffer(scene, frame, &gs, &fs, opt.threads, helpers);
+      method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",
+                           frame.depth.data.size() * sizeof(float), fs.fragments, fs.written);
+    }
+  } catch (const DomainError& e) {
+    // The frame's work past its bound, or a coordinate beyond the rasterizer's range.
+    o.err << opt.file << ": scene: " << e.what() << "\n";
+    return 1;
   }
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -9,8 +9,10 @@
 #include <map>
 #include <sstream>
 
+#include "grader/batch.hpp"
 #include "grader/csv.hpp"
 #include "grader/file_names.hpp"
+#include "solver/input/yaml_document.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum::app {
@@ -31,17 +33,17 @@ std::string variant_key_file(const std::string& dir, const std::string& set_path
 }
 
 std::vector<std::string> read_roster(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(Diagnostic{SourceLocation{path, 0, 0}, "", "cannot read the roster"});
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Bounded and a regular file, as every input is (a FIFO or /dev/zero once read forever).
+  std::string contents;
+  if (const std::optional<Diagnostic> d = read_text_file(path, kMaxRosterBytes, contents))
+    throw InputError(*d);
   std::vector<std::pair<int, std::string>> ids;  // line, id
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".csv") {
     // A roster that names 'student' in more than one column takes its ids from the last.
-    const CsvRoster roster = parse_csv_roster(path, text.str());
+    const CsvRoster roster = parse_csv_roster(path, contents);
     require_student_column(path, roster);
     const CsvTable& table = roster.table;
     const std::size_t col = roster.student_columns.back();
@@ -51,11 +53,15 @@ std::vector<std::string> read_roster(const std::string& path) {
         ids.emplace_back(row.line, row.fields[col]);
     }
   } else {
-    std::istringstream lines(text.str());
+    std::istringstream lines(contents);
     std::string line;
     for (int n = 1; std::getline(lines, line); ++n) {
       const auto first = line.find_first_not_of(" \t\r");
       if (first == std::string::npos || line[first] == '#') continue;
+      if (ids.size() == kMaxCsvRows)
+        throw InputError(Diagnostic{
+            SourceLocation{path, n, 1}, "student",
+            fmt::format("more than {} students (the limit is {} rows)", kMaxCsvRows, kMaxCsvRows)});
       const auto last = line.find_last_not_of(" \t\r");
       ids.emplace_back(n, line.substr(first, last - first + 1));
     }

@@ -3,6 +3,7 @@
 // every row written by csv_row reads back as the neutralised fields.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -23,8 +24,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const frustum::CsvTable back = frustum::parse_csv(frustum::csv_row(row.fields));
       std::vector<std::string> expected;
       for (const std::string& f : row.fields) expected.push_back(frustum::csv_neutralise(f));
-      // A row of one empty field is a blank line, which CSV does not keep.
+      // A row of one empty field is a blank line, which CSV does not keep; a field at the
+      // length limit may be one byte longer neutralised, and then is refused.
       if (expected.size() == 1 && expected[0].empty()) continue;
+      if (std::any_of(expected.begin(), expected.end(),
+                      [](const std::string& f) { return f.size() > frustum::kMaxCsvCellBytes; }))
+        continue;
       if (back.error || back.rows.size() != 1 || back.rows[0].fields != expected) std::abort();
     }
   const std::string path = "/tmp/frustum-fuzz-roster-" + std::to_string(getpid()) + ".csv";

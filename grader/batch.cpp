@@ -136,6 +136,10 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
   const int student_col =
       roster.student_columns.empty() ? -1 : static_cast<int>(roster.student_columns[0]);
   std::vector<std::pair<std::string, std::string>> columns(header.size());  // problem id, answer
+  // Looked up, not searched: a header of 100 000 columns once took minutes in pairwise checks.
+  std::map<std::pair<std::string, std::string>, std::size_t> first_column;
+  std::map<std::string, std::size_t> problem_at;  // problem id → its place below
+  std::vector<std::pair<std::string, std::vector<std::size_t>>> by_problem;  // in header order
   for (std::size_t i = 0; i < header.size(); ++i) {
     const std::string h = header[i];
     const int column = static_cast<int>(i) + 1;
@@ -153,13 +157,35 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
                      fmt::format("column {} is {}: name answer columns problem-id.answer", column,
                                  quote_excerpt(h))});
     columns[i] = {h.substr(0, dot), h.substr(dot + 1)};
-    for (std::size_t k = 0; k < i; ++k)
-      if (columns[k] == columns[i])
-        throw InputError(Diagnostic{
-            SourceLocation{path, header_line, column}, "header",
-            fmt::format("column {} repeats column {} ({})", column, k + 1, quote_excerpt(h))});
+    if (const auto [first, fresh] = first_column.emplace(columns[i], i); !fresh)
+      throw InputError(Diagnostic{SourceLocation{path, header_line, column}, "header",
+                                  fmt::format("column {} repeats column {} ({})", column,
+                                              first->second + 1, quote_excerpt(h))});
+    const auto [at, fresh] = problem_at.emplace(columns[i].first, by_problem.size());
+    if (fresh) by_problem.emplace_back(columns[i].first, std::vector<std::size_t>());
+    by_problem[at->second].second.push_back(i);
   }
   require_student_column(path, roster);
+  // Each row's answers file, priced before any is built: its answers, each under its problem's
+  // and its own name (a long header repeated on every row), all rows at most
+  // kMaxRosterAnswerBytes together.
+  std::vector<std::size_t> row_bytes(table.rows.size(), 0);
+  std::size_t all_bytes = 0;
+  for (std::size_t r = 1; r < table.rows.size(); ++r) {
+    const CsvRow& row = table.rows[r];
+    std::size_t& bytes = row_bytes[r];
+    for (std::size_t i = 0; i < row.fields.size(); ++i)
+      if (!row.fields[i].empty())
+        bytes += row.fields[i].size() +
+                 (i < columns.size() ? columns[i].first.size() + columns[i].second.size() : 0);
+    all_bytes += std::min(bytes, max_bytes + 1);  // a row over max_bytes is an error row
+    if (all_bytes > kMaxRosterAnswerBytes)
+      throw InputError(Diagnostic{
+          SourceLocation{path, row.line, 1}, "",
+          fmt::format("the rows up to this one hold more than {} bytes of answers with their "
+                      "column names (the limit is {} bytes for a roster)",
+                      kMaxRosterAnswerBytes, kMaxRosterAnswerBytes)});
+  }
   std::vector<BatchEntry> out;
   for (std::size_t r = 1; r < table.rows.size(); ++r) {
     const CsvRow& row = table.rows[r];
@@ -170,8 +196,7 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
                     ? row.fields[static_cast<std::size_t>(student_col)]
                     : "";
     if (b.student.empty()) b.student = fmt::format("row-{}", row.line);
-    std::size_t bytes = 0;
-    for (const std::string& f : row.fields) bytes += f.size();
+    const std::size_t bytes = row_bytes[r];
     if (row.fields.size() > header.size()) {
       b.error = fmt::format("line {}: {} fields, but the header has {}", row.line,
                             row.fields.size(), header.size());
@@ -179,13 +204,19 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
       b.error = fmt::format("{} bytes: larger than the limit of {} bytes for one submission", bytes,
                             max_bytes);
     } else {
+      // Keys inserted without yaml-cpp's search for an existing one (linear in the map's
+      // size): the header's columns are distinct, so each key is new.
       YAML::Node answers(YAML::NodeType::Map);
-      for (std::size_t i = 0; i < row.fields.size(); ++i) {
-        if (static_cast<int>(i) == student_col || row.fields[i].empty()) continue;
-        answers[columns[i].first][columns[i].second] = cell_value(row.fields[i]);
-        const std::pair<int, int> cell{row.line, static_cast<int>(i) + 1};
-        b.cells.emplace("answers." + columns[i].first + "." + columns[i].second, cell);
-        b.cells.emplace("answers." + columns[i].first, cell);  // the first cell of that problem
+      for (const auto& [problem, in_order] : by_problem) {
+        YAML::Node given(YAML::NodeType::Map);
+        for (const std::size_t i : in_order) {
+          if (i >= row.fields.size() || row.fields[i].empty()) continue;
+          given.force_insert(columns[i].second, cell_value(row.fields[i]));
+          const std::pair<int, int> cell{row.line, static_cast<int>(i) + 1};
+          b.cells.emplace("answers." + problem + "." + columns[i].second, cell);
+          b.cells.emplace("answers." + problem, cell);  // the first cell of that problem
+        }
+        if (given.size() > 0) answers.force_insert(problem, given);
       }
       YAML::Node root(YAML::NodeType::Map);
       root["student"] = b.student;

@@ -24,6 +24,10 @@ constexpr double kMaxBatchTimeout = 3600.0;            // an hour for one submis
 constexpr std::size_t kMaxSubmissionBytes = 1u << 20;  // 1 MiB of answers per student
 
 constexpr std::size_t kMaxRosterBytes = 64u << 20;  // a CSV roster of answers
+// The answers files a CSV roster becomes, all rows together: each names its answers by the
+// header's column names, so a long header repeated on every row could make gigabytes of a
+// 64 MiB file (a row's own file is at most max_bytes, kMaxSubmissionBytes).
+constexpr std::size_t kMaxRosterAnswerBytes = 256u << 20;
 
 // One submission, before grading.
 struct BatchEntry {

@@ -1,5 +1,7 @@
 #include "grader/csv.hpp"
 
+#include <fmt/format.h>
+
 #include <cctype>
 #include <string_view>
 
@@ -15,19 +17,67 @@ CsvTable parse_csv(const std::string& text) {
   std::string field;
   bool quoted = false, field_started = false;
   int quote_line = 0, quote_column = 0, column = 1;
+  int field_line = 1, field_column = 1;  // where the current field starts
+  std::size_t cells = 0;
+  const auto fail = [&](int at_line, int at_column, const std::string& what) {
+    table.rows.clear();
+    table.error = fmt::format("line {}: {}", at_line, what);
+    table.error_line = at_line;
+    table.error_column = at_column;
+  };
+  const auto too_long = [&] {
+    fail(field_line, field_column,
+         fmt::format("a field of more than {} bytes (the limit is {} bytes a field)",
+                     kMaxCsvCellBytes, kMaxCsvCellBytes));
+  };
   const auto end_field = [&] {
+    if (field.size() > kMaxCsvCellBytes) {
+      too_long();
+      return false;
+    }
+    if (row.fields.size() == kMaxCsvColumns) {
+      fail(field_line, field_column,
+           fmt::format("more than {} fields in one row (the limit is {} columns)", kMaxCsvColumns,
+                       kMaxCsvColumns));
+      return false;
+    }
+    if (++cells > kMaxCsvCells) {
+      fail(field_line, field_column,
+           fmt::format("more than {} fields in all (the limit is {} cells)", kMaxCsvCells,
+                       kMaxCsvCells));
+      return false;
+    }
     row.fields.push_back(std::move(field));
     field.clear();
     field_started = false;
+    field_line = line;
+    field_column = column + 1;
+    return true;
   };
   const auto end_row = [&] {
-    end_field();
+    if (!end_field()) return false;
     // A blank line is no row.
-    if (!(row.fields.size() == 1 && row.fields[0].empty())) table.rows.push_back(std::move(row));
+    if (!(row.fields.size() == 1 && row.fields[0].empty())) {
+      if (table.rows.size() == kMaxCsvRows) {
+        fail(row.line, 1,
+             fmt::format("more than {} rows (the limit is {} rows)", kMaxCsvRows, kMaxCsvRows));
+        return false;
+      }
+      table.rows.push_back(std::move(row));
+    } else {
+      --cells;
+    }
     row = CsvRow{line, {}};
+    field_line = line;
+    field_column = 1;
+    return true;
   };
   for (; i < text.size(); ++i, ++column) {
     const char c = text[i];
+    if (field.size() > kMaxCsvCellBytes) {
+      too_long();
+      return table;
+    }
     if (quoted) {
       if (c == '"') {
         if (i + 1 < text.size() && text[i + 1] == '"') {
@@ -54,14 +104,14 @@ CsvTable parse_csv(const std::string& text) {
         }
         break;
       case ',':
-        end_field();
+        if (!end_field()) return table;
         break;
       case '\r':
         break;
       case '\n':
         ++line;
         column = 0;
-        end_row();
+        if (!end_row()) return table;
         break;
       default:
         field += c;

@@ -21,7 +21,17 @@ struct CsvTable {
   int error_line = 0, error_column = 0;  // where the error is (1-based)
 };
 
-// Reads a whole CSV text; a UTF-8 byte-order mark and CRLF line ends are accepted.
+// Limits of a CSV text, checked while it is read (one pass, linear in its bytes): a roster of
+// answers has a column per answer of the set and a row per student, so these are far beyond
+// any class, and they keep the rows' memory small (an empty field costs 32 bytes, so the
+// 64 MiB a roster may hold could once make 32 million of them).
+inline constexpr std::size_t kMaxCsvColumns = 10'000;      // fields in one row
+inline constexpr std::size_t kMaxCsvRows = 100'000;        // rows, the header included
+inline constexpr std::size_t kMaxCsvCells = 4'000'000;     // fields in all the rows
+inline constexpr std::size_t kMaxCsvCellBytes = 1u << 16;  // bytes in one field (64 KiB)
+
+// Reads a whole CSV text; a UTF-8 byte-order mark and CRLF line ends are accepted. Going past a
+// limit above is an error at the field where it happens, naming the limit.
 CsvTable parse_csv(const std::string& text);
 
 // A roster in CSV: a header row that names a 'student' column, then one row per student

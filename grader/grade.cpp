@@ -60,11 +60,11 @@ Submission load_submission_from(const YamlDocument& doc, const std::string& name
 }  // namespace
 
 Submission load_submission_from_string(const std::string& yaml, const std::string& name) {
-  return load_submission_from(parse_yaml(yaml, name), name);
+  return load_submission_from(parse_yaml(yaml, name, kMaxAnswerNodes), name);
 }
 
 Submission load_submission(const std::string& path) {
-  return load_submission_from(load_yaml_file(path), path);
+  return load_submission_from(load_yaml_file(path, kMaxAnswerNodes), path);
 }
 
 namespace {

@@ -24,7 +24,8 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-all_targets=(fuzz_loader fuzz_expression fuzz_grade fuzz_batch fuzz_csv_roster fuzz_scene fuzz_neighbours)
+all_targets=(fuzz_loader fuzz_expression fuzz_grade fuzz_batch fuzz_csv_roster fuzz_scene fuzz_neighbours
+             fuzz_work)
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
 . tools/sanitized_build.sh  # build-fuzz/, shared with tools/sanitize.sh

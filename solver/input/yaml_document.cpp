@@ -148,7 +148,8 @@ std::optional<Diagnostic> repair_utf8(std::string& text, const std::string& name
 
 // Walks the document with aliases expanded (iteratively: depth costs no stack) and returns
 // the first problem: a key that is not a scalar, or more than kMaxYamlNodes nodes.
-std::optional<Diagnostic> check_tree(const YAML::Node& root, const std::string& name) {
+std::optional<Diagnostic> check_tree(const YAML::Node& root, const std::string& name,
+                                     std::size_t max_nodes) {
   std::vector<YAML::Node> stack{root};
   std::size_t visited = 0;
   const auto at = [&](const YAML::Node& n, std::string message) {
@@ -160,9 +161,10 @@ std::optional<Diagnostic> check_tree(const YAML::Node& root, const std::string& 
   while (!stack.empty()) {
     const YAML::Node n = stack.back();
     stack.pop_back();
-    if (++visited > kMaxYamlNodes)
-      return at(n, "the document expands to more than " + std::to_string(kMaxYamlNodes) +
-                       " values (through anchors and aliases?)");
+    if (++visited > max_nodes)
+      return at(n, "the document expands to more than " + std::to_string(max_nodes) +
+                       " values (through anchors and aliases?); the limit is " +
+                       std::to_string(max_nodes) + " values");
     if (n.IsSequence()) {
       for (std::size_t i = n.size(); i-- > 0;) stack.push_back(n[i]);
     } else if (n.IsMap()) {
@@ -213,7 +215,8 @@ struct Taken {};
 // it stops (throws Taken) as soon as that value is read.
 class StrictBuilder : public YAML::EventHandler {
  public:
-  StrictBuilder() : memory_(std::make_shared<YAML::detail::memory_holder>()) {}
+  explicit StrictBuilder(std::size_t max_nodes = kMaxYamlNodes)
+      : memory_(std::make_shared<YAML::detail::memory_holder>()), max_nodes_(max_nodes) {}
   explicit StrictBuilder(std::string key) : build_(false), key_(std::move(key)) {}
 
   // The scalar under the key in the top mapping (without build).
@@ -289,12 +292,13 @@ class StrictBuilder : public YAML::EventHandler {
 
   void count(const YAML::Mark& mark, std::size_t n) {
     nodes_ += n;
-    if (nodes_ > kMaxYamlNodes)
+    if (nodes_ > max_nodes_)
       throw Refusal{
           mark,
           (sizes_.empty() ? "the document has more than " : "the document expands to more than ") +
-              std::to_string(kMaxYamlNodes) +
-              (sizes_.empty() ? " values" : " values (through anchors and aliases)")};
+              std::to_string(max_nodes_) +
+              (sizes_.empty() ? " values" : " values (through anchors and aliases)") +
+              " (the limit is " + std::to_string(max_nodes_) + " values)"};
   }
   // A new node at `mark`: counted, checked as a key, registered under its anchor, pushed
   // (null without build).
@@ -390,6 +394,7 @@ class StrictBuilder : public YAML::EventHandler {
   YAML::detail::shared_memory_holder memory_;
   YAML::detail::node* root_ = nullptr;
   std::vector<YAML::detail::node*> pending_;
+  std::size_t max_nodes_ = kMaxYamlNodes;
   std::size_t nodes_ = 0;
   std::vector<Frame> stack_;
   std::vector<YAML::detail::node*> anchors_;  // by anchor − 1
@@ -423,8 +428,8 @@ std::optional<Diagnostic> run_checked(const std::string& text, const std::string
 // Parses the first document into `root` and checks it in one pass (StrictBuilder); a second
 // document is the error returned (root is then left as it was).
 std::optional<Diagnostic> build_checked(const std::string& text, const std::string& name,
-                                        YAML::Node& root) {
-  StrictBuilder builder;
+                                        YAML::Node& root, std::size_t max_nodes) {
+  StrictBuilder builder(max_nodes);
   bool any = false;
   std::optional<Diagnostic> second = run_checked(text, name, builder, any);
   if (!second) root = any ? builder.root() : YAML::Node();
@@ -433,7 +438,7 @@ std::optional<Diagnostic> build_checked(const std::string& text, const std::stri
 
 }  // namespace
 
-YamlDocument parse_yaml(const std::string& text, const std::string& name) {
+YamlDocument parse_yaml(const std::string& text, const std::string& name, std::size_t max_nodes) {
   YamlDocument doc;
   if (const auto wide = wide_encoding(text)) {
     doc.error = Diagnostic{SourceLocation{name, 1, 1}, "",
@@ -444,8 +449,8 @@ YamlDocument parse_yaml(const std::string& text, const std::string& name) {
   doc.invalid_utf8 = repair_utf8(repaired, name);
   try {
     // Refused while parsing: the root stays unset (no node is kept).
-    if ((doc.error = build_checked(repaired, name, doc.root))) return doc;
-    doc.error = check_tree(doc.root, name);
+    if ((doc.error = build_checked(repaired, name, doc.root, max_nodes))) return doc;
+    doc.error = check_tree(doc.root, name, max_nodes);
   } catch (const Refusal& r) {
     doc.error = Diagnostic{SourceLocation{name, r.mark.line >= 0 ? r.mark.line + 1 : 0,
                                           r.mark.line >= 0 ? r.mark.column + 1 : 0},
@@ -571,11 +576,11 @@ std::optional<Diagnostic> read_text_file(const std::string& path, std::size_t ma
   return std::nullopt;
 }
 
-YamlDocument load_yaml_file(const std::string& path) {
+YamlDocument load_yaml_file(const std::string& path, std::size_t max_nodes) {
   std::string text;
   if (std::optional<Diagnostic> error = read_text_file(path, kMaxYamlFileBytes, text))
     return {YAML::Node(), std::move(error), {}};
-  return parse_yaml(text, path);
+  return parse_yaml(text, path, max_nodes);
 }
 
 }  // namespace frustum

@@ -18,6 +18,10 @@ inline constexpr std::size_t kMaxYamlFileBytes = 16 * 1024 * 1024;
 // 16 MiB file of "- 1" lines (4 M nodes) once took 4.3 GB before any check ran. A million
 // is 40 times the largest set we ship (a 1 000-problem set is about 25 000 values).
 inline constexpr std::size_t kMaxYamlNodes = 1'000'000;
+// An answers file holds a student's answers, not a set: 20 problems of 5 answers, each a list
+// of 16 numbers at most, are under 2 000 values. A file of 500 000 values once cost each
+// grading child 307 MB; at this limit a child stays under 60 MB.
+inline constexpr std::size_t kMaxAnswerNodes = 50'000;
 
 struct YamlDocument {
   YAML::Node root;
@@ -30,7 +34,9 @@ struct YamlDocument {
 // Besides YAML syntax, refuses: mapping keys that are not plain names ({[a]: 1}), a key
 // written twice in one mapping (yaml-cpp keeps the first silently), a second document after
 // `---`, text in UTF-16 or UTF-32, and documents that expand to more than kMaxYamlNodes nodes.
-YamlDocument parse_yaml(const std::string& text, const std::string& name);
+// `max_nodes`: kMaxYamlNodes for a problem set, kMaxAnswerNodes for an answers file.
+YamlDocument parse_yaml(const std::string& text, const std::string& name,
+                        std::size_t max_nodes = kMaxYamlNodes);
 // The scalar the text states under `key` in its top mapping, read without building nodes and
 // without reading past it: for a document parse_yaml accepts, parse_yaml(text,
 // name).root[key].Scalar() when that is a scalar, else nothing. A text that parse_yaml refuses
@@ -40,7 +46,7 @@ YamlDocument parse_yaml(const std::string& text, const std::string& name);
 std::optional<std::string> top_scalar(const std::string& text, const std::string& name,
                                       const std::string& key);
 // Reads the file first with read_text_file (kMaxYamlFileBytes).
-YamlDocument load_yaml_file(const std::string& path);
+YamlDocument load_yaml_file(const std::string& path, std::size_t max_nodes = kMaxYamlNodes);
 
 // The whole of a regular file of at most max_bytes, checked before anything is read: a FIFO,
 // a device (/dev/zero), a directory or a larger file is refused with a located message, and

@@ -11,6 +11,7 @@
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/raster/certified_trace.hpp"
+#include "solver/raster/frame_work.hpp"
 
 namespace frustum {
 
@@ -22,6 +23,10 @@ struct Render {
       "colour and depth of queried pixels of a rendered scene (z-buffer trace)";
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr std::size_t kMaxPixels = 64;
+  // World triangles of an exercise's scene (the paper plane has 5 293): each goes through the
+  // geometry with exact decisions where rounding cannot settle them, and competes for every
+  // queried pixel, so the work is triangles × pixels, not the frame's.
+  static constexpr long kMaxTriangles = 100'000;
   static constexpr std::size_t kMaxTraceLines = 24;     // competitors listed per pixel
   static constexpr const char* kIndent = "\n        ";  // trace lines line up under the note
   using Given = RenderGiven;
@@ -39,6 +44,17 @@ struct Render {
     g.conventions = c;
     GivenReader s = r.child("scene", scene_fields());
     g.spec = read_scene(s, c, /*keep_exact=*/true);
+    if (g.spec.triangles > kMaxTriangles)
+      s.fail("objects", fmt::format("{} triangles (repeats counted): a render problem may have at "
+                                    "most {} (the limit is {} triangles; `frustum render` draws "
+                                    "larger scenes)",
+                                    g.spec.triangles, kMaxTriangles, kMaxTriangles));
+    // The frame `frustum render` would draw of this scene is within its bound too.
+    try {
+      price_frame(g.spec.scene);
+    } catch (const DomainError& e) {
+      s.fail("objects", e.what());
+    }
     const std::size_t n = r.list_size("pixels");
     if (n > kMaxPixels)
       r.fail("pixels", fmt::format("at most {} pixels may be queried", kMaxPixels));

@@ -1,5 +1,7 @@
 #include "solver/problem/problem_set.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <set>
 
@@ -352,6 +354,10 @@ ProblemSet load_problem_set(const YamlDocument& doc, const std::string& name) {
     if (!root["problems"].IsDefined()) fail_at(root, name, "problems", "missing required field");
     if (!root["problems"].IsSequence())
       fail_at(root["problems"], name, "problems", "expected a list of problems");
+    if (root["problems"].size() > kMaxSetProblems)
+      fail_at(root["problems"], name, "problems",
+              fmt::format("{} problems (the limit is {} problems a set): split the set",
+                          root["problems"].size(), kMaxSetProblems));
   } catch (const InputError& e) {
     set.errors.push_back(e.diagnostic());
     return set;

@@ -25,6 +25,10 @@ struct YamlDocument;  // yaml_document.hpp
 // Largest `points` of one problem or answer: far beyond any course's weights, and small enough
 // that a set's total and a class's sums stay finite doubles.
 inline constexpr double kMaxPoints = 1'000'000;
+// Problems of one set: each problem's work is bounded by its kind's limits, so a set's is at
+// most this many times the slowest (the largest bundled set has 15; a 1 000-problem set is a
+// term's worth of exercises).
+inline constexpr std::size_t kMaxSetProblems = 1'000;
 
 // Grading defaults (docs/grading.md): relative 1e-3 like WeBWorK, per component; the absolute
 // floor comes from the problem's own magnitudes (rel × what the component is computed from),

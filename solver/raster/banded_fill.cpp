@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 
+#include "solver/raster/frame_work.hpp"
 #include "solver/util/side_by_side.hpp"
 
 namespace frustum {
@@ -26,6 +27,7 @@ struct alignas(128) Part {
   explicit Part(const Scene& scene) : stage(scene) {}
   GeometryStage stage;
   std::vector<RasterTriangle> triangles;
+  std::int64_t work = 0;  // the part's price (frame_work.hpp), summed in order before the fill
 };
 
 // Triangles in drawing order: one part after another (render_in_bands's, set up side by side).
@@ -127,12 +129,18 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
         for (std::size_t source = lo; source < hi; ++source) {
           window.clear();
           stage.add(flat.triangles[source], static_cast<int>(source), window);
-          for (const WindowTriangle& w : window) out.push_back(setup_raster(w));
+          for (const WindowTriangle& w : window) {
+            setups[static_cast<std::size_t>(k)].work +=
+                triangle_price(w, scene.width, scene.height);
+            out.push_back(setup_raster(w));
+          }
         }
       },
       team);
   // Numbered in drawing order across the parts, then filled from the parts as they are (no
   // copy into one array: a megabyte of fresh memory for the paper plane's 3,520).
+  FrameWork work(scene);
+  for (const Part& part : setups) work.add(part.work);
   int source = 0;
   Parts filled;
   for (Part& part : setups) {

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "solver/raster/banded_fill.hpp"
+#include "solver/raster/frame_work.hpp"
 #include "solver/raster/span_fill.hpp"
 #include "solver/raster/striped_render.hpp"
 
@@ -157,7 +158,9 @@ void draw_triangle_rows(const RasterTriangle& t, Frame& frame, int j_lo, int j_h
 }
 
 Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,
-                     Rgb background, FillStats* stats) {
+                     Rgb background, FillStats* stats, std::int64_t max_work) {
+  FrameWork work(width, height, max_work);
+  for (const WindowTriangle& t : triangles) work.add(t);
   Frame frame(width, height, background);
   for (std::size_t k = 0; k < triangles.size(); ++k)
     draw_triangle(setup_raster(triangles[k], static_cast<int>(k)), frame, stats);
@@ -192,13 +195,17 @@ void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_st
     return;
   }
   GeometryStage stage(scene);
+  FrameWork work(scene);
   int source = 0, drawn = 0;
   frame.reset(scene.width, scene.height, scene.background);
   std::vector<WindowTriangle> window;  // one world triangle's, reused
   for_each_world_triangle(scene, [&](const WorldTriangle& t) {
     window.clear();
     stage.add(t, source++, window);
-    for (const WindowTriangle& w : window) draw_triangle(setup_raster(w, drawn++), frame, stats);
+    for (const WindowTriangle& w : window) {
+      work.add(w);
+      draw_triangle(setup_raster(w, drawn++), frame, stats);
+    }
   });
   if (geometry_stats) *geometry_stats = stage.stats;
 }

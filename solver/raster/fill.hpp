@@ -178,9 +178,12 @@ void draw_triangle(const RasterTriangle& t, Frame& frame, FillStats* stats = nul
 void draw_triangle_rows(const RasterTriangle& t, Frame& frame, int j_lo, int j_hi,
                         FillStats* stats = nullptr);
 
-// Setup + draw for every triangle, in order.
+// Setup + draw for every triangle, in order; refused before any is drawn when their price passes
+// `max_work` (frame_work.hpp). The scene's renders below price each triangle as it comes, with
+// Scene::max_work, and stop at the one past it (DomainError naming the bound).
 Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,
-                     Rgb background, FillStats* stats = nullptr);
+                     Rgb background, FillStats* stats = nullptr,
+                     std::int64_t max_work = kMaxFrameWork);
 // The whole pipeline streamed (`frustum render`): each world triangle, as the hierarchy walk
 // yields it, through the geometry stage and into the frame; neither the world nor the window
 // triangles are kept. The same frame as render_zbuffer(geometry(scene, flatten(scene)), …).

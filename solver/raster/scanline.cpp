@@ -3,11 +3,15 @@
 #include <algorithm>
 #include <numeric>
 
+#include "solver/raster/frame_work.hpp"
+
 namespace frustum {
 
 Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangles, int width,
                                      int height, Rgb background, ScanlineStats* stats,
-                                     Image<float>* depth_out) {
+                                     Image<float>* depth_out, std::int64_t max_work) {
+  FrameWork work(width, height, max_work);
+  for (const WindowTriangle& t : triangles) work.add(t);
   Image<std::uint32_t> image(width, height, pack(background));
   if (depth_out) *depth_out = Image<float>(width, height, kDepthClear);
   ScanlineStats st;

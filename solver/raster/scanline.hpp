@@ -21,9 +21,11 @@ struct ScanlineStats {
 };
 
 // The colour image (raster rows); `depth_out`, when given, receives each row's final depths
-// (an output image, not working memory).
+// (an output image, not working memory). Refused before any row is drawn when the triangles'
+// price passes `max_work` (frame_work.hpp).
 Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangles, int width,
                                      int height, Rgb background, ScanlineStats* stats = nullptr,
-                                     Image<float>* depth_out = nullptr);
+                                     Image<float>* depth_out = nullptr,
+                                     std::int64_t max_work = kMaxFrameWork);
 
 }  // namespace frustum

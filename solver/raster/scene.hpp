@@ -69,6 +69,13 @@ struct Camera {
   Vec3d eye{0, 0, 0}, center{0, 0, -1}, up{0, 1, 0};
 };
 
+// A frame's total rasterization work: the sum over its window triangles of the rows of their
+// boxes and the pixels they can cover (frame_work.hpp), which bounds both the pixels a fill
+// tests and the rows a scan line walks. 2³⁰ is 64 layers of the largest frame (4096²), 512 of a
+// 1920 × 1080 one: each triangle within its limits, 10⁷ full-frame triangles at 4096² once asked
+// for about 44 hours; at 2³⁰ the fill of the worst frame takes about a second.
+inline constexpr std::int64_t kMaxFrameWork = std::int64_t{1} << 30;
+
 struct Scene {
   Api api = Api::OpenGL;
   // A left-handed course under OpenGL's or Processing's matrices: the camera takes LookAtLH's
@@ -82,7 +89,8 @@ struct Scene {
   Rgb default_fill{255, 255, 255};  // Processing's default fill
   std::optional<DirectionalLight> light;
   std::vector<SceneObject> objects;
-  bool scanline = false;  // render with the scan-line method
+  bool scanline = false;                  // render with the scan-line method
+  std::int64_t max_work = kMaxFrameWork;  // lower for a bounded test or fuzz run
 };
 
 // Processing's box(w, h, d): centred at the origin, 12 triangles counter-clockwise seen from

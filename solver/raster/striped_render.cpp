@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/raster/frame_work.hpp"
 #include "solver/util/side_by_side.hpp"
 
 namespace frustum {
@@ -12,8 +13,9 @@ namespace {
 // One thread's state, on cache lines of its own: its stage's counts and its vectors change at
 // every triangle, and two threads writing one cache line pass it back and forth between cores.
 struct alignas(128) Worker {
-  explicit Worker(const Scene& scene) : stage(scene) {}
+  explicit Worker(const Scene& scene) : stage(scene), work(scene) {}
   GeometryStage stage;
+  FrameWork work;  // every thread prices every triangle: each stops at the same one
   std::vector<WindowTriangle> window;  // one world triangle's, reused
   FillStats fill;
 };
@@ -46,6 +48,7 @@ void render_in_strips(const Scene& scene, Frame& frame, GeometryStats* geometry_
           w.window.clear();
           w.stage.add(world, source++, w.window);
           for (const WindowTriangle& t : w.window) {
+            w.work.add(t);
             // The rows the triangle may cover, widened by a row each way for the snapping to
             // 1/256 pixel: none of this thread's strips among them, no set-up. A coordinate the
             // set-up refuses goes to it on every thread, so that its error reaches the caller

@@ -1,10 +1,13 @@
 #include "solver/visibility/hidden_lines.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
 #include "solver/geometry/predicates.hpp"
 #include "solver/geometry/triangulate.hpp"
+#include "solver/util/diagnostic.hpp"
 
 namespace frustum {
 
@@ -102,12 +105,22 @@ std::vector<Interval> merge_intervals(std::vector<Interval> spans) {
   return out;
 }
 
-HiddenLines hidden_lines(const Mesh& m, const Vec3<Exact>& eye) {
+HiddenLines hidden_lines(const Mesh& m, const Vec3<Exact>& eye, std::int64_t max_pairs) {
   HiddenLines h;
   const std::vector<MeshEdge> edges = mesh_edges(m);
   h.faces = face_tests(m, face_normals(m), eye);
   const std::vector<EdgeClass> classes = classify_edges(edges, h.faces);
   const std::vector<Occluder> occluders = face_triangles(m);
+  const auto tested = static_cast<std::int64_t>(std::count_if(
+      classes.begin(), classes.end(), [](EdgeClass c) { return c != EdgeClass::Hidden; }));
+  std::int64_t pairs = 0;
+  if (__builtin_mul_overflow(tested, static_cast<std::int64_t>(occluders.size()), &pairs) ||
+      pairs > max_pairs)
+    throw DomainError(
+        "mesh.faces",
+        fmt::format("the hidden lines of {} edges against {} face triangles are {} pairs to test "
+                    "(the limit is {} edge–face pairs a picture); draw a mesh of fewer faces",
+                    tested, occluders.size(), pairs, max_pairs));
   const V3 e = to_double(eye);
   for (std::size_t k = 0; k < edges.size(); ++k) {
     EdgeLines lines;

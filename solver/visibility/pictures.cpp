@@ -66,7 +66,7 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
                                     k));
     screen.push_back(view.project(world.back()));
   }
-  const HiddenLines h = hidden_lines(m, eye);
+  const HiddenLines h = hidden_lines(m, eye, o.max_hidden_line_pairs);
   const ScreenFit fit = fit_screen(screen, 0, 0, kCanvas, kCanvas, kMargin);
 
   int counts[3] = {0, 0, 0};

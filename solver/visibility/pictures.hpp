@@ -5,10 +5,12 @@
 // - the painter's result next to the z-buffer's, pixels where they differ outlined in red.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "solver/viewing/conventions.hpp"
 #include "solver/visibility/drawable.hpp"
+#include "solver/visibility/hidden_lines.hpp"
 
 namespace frustum {
 
@@ -16,6 +18,7 @@ struct PictureOptions {
   Api api = Api::OpenGL;
   std::string title;  // first caption line (e.g. the problem's id)
   int raster = 48;    // painter vs z-buffer: window size in pixels
+  std::int64_t max_hidden_line_pairs = kMaxHiddenLinePairs;  // hidden_lines.hpp
 };
 
 struct Picture {

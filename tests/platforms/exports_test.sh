@@ -129,6 +129,49 @@ check "PrairieLearn: the right answers, as the elements submit them, earn 1.0 ($
 check "PrairieLearn: numbers off by 1000 lose points" test $all_wrong = 1
 check "PrairieLearn: an unreadable matrix is not gradable (no attempt charged)" test $all_invalid = 1
 
+# Hostile text in a string answer: an alias bomb is refused before it is expanded (it once
+# became a 554 MB answers file), an oversized submission is not gradable, and the grader's
+# temporary folder is removed whatever happens (TMPDIR is checked empty after each run).
+cat > "$work/hostile.py" <<'PY'
+import json, os, subprocess, sys
+root, frustum, grader, set_file, case = sys.argv[1:6]
+os.makedirs(os.path.join(root, "data"), exist_ok=True)
+results = os.path.join(root, "results", "results.json")
+if os.path.exists(results):
+    os.remove(results)
+bomb = "[&a [x, x, x, x, x, x, x, x, x], &b [*a, *a, *a, *a, *a, *a, *a, *a, *a], " + \
+       ", ".join(f"&{c} [" + ", ".join([f"*{p}"] * 9) + "]" for p, c in zip("bcdefgh", "cdefghi")) + "]"
+raw = {"bomb": {"silhouette": bomb}, "huge": {"silhouette": "[" + "1-4, " * 300000 + "1-4]"},
+       "anchor": {"silhouette": "[&a 1-4, 1-6]"}, "plain": {"silhouette": "[1-4, 1-6]"}}[case]
+params = {"set": open(set_file, encoding="utf-8").read(), "problem": "seed003-ico-silhouette",
+          "inputs": {"silhouette": "string"}}
+json.dump({"params": params, "submitted_answers": {}, "raw_submitted_answers": raw},
+          open(os.path.join(root, "data", "data.json"), "w"))
+subprocess.run([sys.executable, grader], check=True, timeout=120,
+               env=dict(os.environ, GRADE_ROOT=root, FRUSTUM=frustum, TMPDIR=os.path.join(root, "tmp")))
+r = json.load(open(results))
+left = os.listdir(os.path.join(root, "tmp"))
+print(json.dumps({"gradable": r.get("gradable"), "left": left,
+                  "size": os.path.getsize(results), "message": r.get("message", "")[:200]}))
+PY
+hostile() { rm -rf "$work/hostile" && mkdir -p "$work/hostile/tmp" &&
+  python3 "$work/hostile.py" "$work/hostile" "$frustum" "$grader" "$src/problems/seeds/003_polygons_backface.yaml" "$1"; }
+# DESCRIPTION CASE CONDITION: the CONDITION (Python, on the result r) holds after the grader ran.
+hostile_check() {
+  local r
+  r=$(hostile "$2")
+  check "PrairieLearn: $1" python3 -c "import json,sys; r=json.loads(sys.argv[1]); sys.exit(0 if ($3) else 1)" "$r"
+  echo "  $2: $r"
+}
+hostile_check "an alias bomb in a string answer is graded as written, not expanded" bomb \
+  "r['gradable'] is True and r['left'] == [] and r['size'] < 100000"
+hostile_check "an anchor in a string answer is refused, and the folder removed" anchor \
+  "r['gradable'] is True and r['left'] == []"
+hostile_check "a 1.5 MB answer is not gradable, naming the limit, and the folder removed" huge \
+  "r['gradable'] is False and '1048576 bytes' in r['message'] and r['left'] == []"
+hostile_check "a plain label list still grades, and the folder is removed" plain \
+  "r['gradable'] is True and r['left'] == []"
+
 # --- Canvas QTI and Moodle XML ------------------------------------------------------------
 for set in 001_zbuffer_plane_method 003_polygons_backface 004_placing_and_projecting; do
   "$frustum" export qti "$src/problems/seeds/$set.yaml" --count 2 -o "$work/qti-$set" >/dev/null 2>&1
