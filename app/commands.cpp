@@ -5,6 +5,7 @@
 #include <ostream>
 #include <vector>
 
+#include "grader/file_names.hpp"
 #include "grader/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/problem/registry.hpp"
@@ -101,6 +102,8 @@ int run_check(const std::string& path, const Output& o) {
       o.out << d.format() << "\n";
       ++here;
     }
+    // Ids a student may take for each other (not errors: every export keeps both).
+    for (const Diagnostic& d : look_alike_problem_ids(set)) o.out << d.format() << "\n";
     if (here == 0)
       o.out << file << ": " << set.problems.size() << " problem"
             << (set.problems.size() == 1 ? "" : "s") << ", no errors\n";

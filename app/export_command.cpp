@@ -14,8 +14,10 @@
 #include "grader/export_moodle.hpp"
 #include "grader/export_prairielearn.hpp"
 #include "grader/export_qti.hpp"
+#include "grader/file_names.hpp"
 #include "grader/quiz_items.hpp"
 #include "solver/input/yaml_document.hpp"
+#include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -38,12 +40,9 @@ std::vector<ProblemSet> drawn(const ProblemSet& set, const ExportOptions& e,
   return out;
 }
 
-std::string ident_of(const std::string& stem) {
-  std::string out = "frustum_";
-  for (const char c : stem)
-    out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-  return out;
-}
+// The package's identifier: Canvas files a quiz under it, so two sets must never share one
+// ("a b.yaml" and "a_b.yaml"): the batch's injective encoding of names.
+std::string ident_of(const std::string& stem) { return "frustum_" + file_name_for(stem); }
 
 int export_set(const ExportOptions& e, const Output& o) {
   const YamlDocument doc = load_yaml_file(e.input);
@@ -59,6 +58,19 @@ int export_set(const ExportOptions& e, const Output& o) {
       for (const Diagnostic& d : v.all_errors()) o.err << d.format() << "\n";
       return 1;
     }
+  // A problem that cannot be solved has no key, and every export would leave its question out
+  // (a set with a degenerate triangle once exported its other questions, exit status 0).
+  int unsolved = 0;
+  for (const ProblemSet& v : variants)
+    for (const ProblemResult& p : solve_set(v, false).problems)
+      if (p.error) {
+        o.err << p.error->format() << "\n";
+        ++unsolved;
+      }
+  if (unsolved) {
+    o.err << "error: nothing was exported: every question needs its answer key\n";
+    return 1;
+  }
   const std::string stem = fs::path(e.input).stem().string();
   const std::string title = set.title.empty() ? stem : set.title.in(e.lang);
   std::map<std::string, std::string> files;  // path under e.out → contents

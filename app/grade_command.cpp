@@ -15,6 +15,7 @@
 #include "grader/gradescope.hpp"
 #include "grader/prairielearn.hpp"
 #include "grader/report.hpp"
+#include "grader/visible_text.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/variants.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -135,25 +136,9 @@ ProblemSet set_for_student(const ProblemSet& set, const GradeOptions& g,
   return v;
 }
 
-// Text from files (ids, messages) on a terminal: control characters, escape sequences among
-// them, are shown as '?' so that a student id cannot move the cursor or retitle the window.
-std::string terminal_text(const std::string& s) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const unsigned char c = static_cast<unsigned char>(s[i]);
-    // C0 controls and DEL, and C1 controls (U+0080–U+009F, UTF-8 C2 80–C2 9F).
-    if (c < 0x20 || c == 0x7F) {
-      out += '?';
-    } else if (c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
-               static_cast<unsigned char>(s[i + 1]) <= 0x9F) {
-      out += '?';
-      ++i;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out;
-}
+// Text from files (ids, messages) on a terminal: visible text, so that an id or a file name
+// cannot move the cursor, retitle the window or hide a line.
+std::string terminal_text(const std::string& s) { return visible_text(s); }
 
 std::string progress_bar(std::size_t done, std::size_t total, const std::string& who) {
   constexpr int kWidth = 30;

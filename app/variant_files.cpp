@@ -8,11 +8,13 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "grader/batch.hpp"
 #include "grader/csv.hpp"
 #include "grader/file_names.hpp"
 #include "solver/input/yaml_document.hpp"
+#include "grader/student_id.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum::app {
@@ -37,7 +39,7 @@ std::vector<std::string> read_roster(const std::string& path) {
   std::string contents;
   if (const std::optional<Diagnostic> d = read_text_file(path, kMaxRosterBytes, contents))
     throw InputError(*d);
-  std::vector<std::pair<int, std::string>> ids;  // line, id
+  std::vector<std::tuple<int, int, std::string>> ids;  // line, column, id
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return std::tolower(c); });
@@ -50,7 +52,7 @@ std::vector<std::string> read_roster(const std::string& path) {
     for (std::size_t r = 1; r < table.rows.size(); ++r) {
       const CsvRow& row = table.rows[r];
       if (col < row.fields.size() && !row.fields[col].empty())
-        ids.emplace_back(row.line, row.fields[col]);
+        ids.emplace_back(row.line, static_cast<int>(col) + 1, row.fields[col]);
     }
   } else {
     std::istringstream lines(contents);
@@ -63,19 +65,26 @@ std::vector<std::string> read_roster(const std::string& path) {
             SourceLocation{path, n, 1}, "student",
             fmt::format("more than {} students (the limit is {} rows)", kMaxCsvRows, kMaxCsvRows)});
       const auto last = line.find_last_not_of(" \t\r");
-      ids.emplace_back(n, line.substr(first, last - first + 1));
+      ids.emplace_back(n, static_cast<int>(first) + 1, line.substr(first, last - first + 1));
     }
   }
   if (ids.empty())
     throw InputError(
         Diagnostic{SourceLocation{path, 1, 1}, "student", "the roster names no student"});
-  std::map<std::string, int> first_line;
+  // Ids as every reader of ids takes them (trimmed, refused when no student can have them), and
+  // one student up to case, spaces and Unicode form (student_id_key).
+  std::map<std::string, std::pair<int, std::string>> first;  // key → line, id
   std::vector<std::string> out;
-  for (const auto& [line, id] : ids) {
-    if (const auto [it, fresh] = first_line.emplace(id, line); !fresh)
-      throw InputError(
-          Diagnostic{SourceLocation{path, line, 1}, "student",
-                     fmt::format("'{}' is listed twice (first on line {})", id, it->second)});
+  for (const auto& [line, column, written] : ids) {
+    const StudentId read = read_student_id(written);
+    const SourceLocation where{path, line, column};
+    if (read.problem) throw InputError(Diagnostic{where, "student", *read.problem});
+    const std::string& id = read.id;
+    if (const auto [it, fresh] = first.emplace(student_id_key(id), std::pair{line, id}); !fresh)
+      throw InputError(Diagnostic{
+          where, "student",
+          fmt::format("'{}' is listed twice (first on line {}{})", id, it->second.first,
+                      it->second.second == id ? "" : " as '" + it->second.second + "'")});
     out.push_back(id);
   }
   return out;

@@ -24,6 +24,7 @@
 #include "grader/isolate.hpp"
 #include "grader/output_transaction.hpp"
 #include "grader/report.hpp"
+#include "grader/student_id.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -38,24 +39,53 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-// The student id written in an answers file, without grading it (through the same bounded,
-// strict reader as grading, which stops at the id).
-std::string student_in(const std::string& yaml, const std::string& name) {
-  return top_scalar(yaml, name, "student").value_or("");
+// The student id of an answers file, without grading it: what it states under `student:`
+// (through the same bounded, strict reader as grading, which stops at the id), or else its
+// file's name. A refused id (read_student_id) makes the entry an error, located at the value.
+void read_id(BatchEntry& b, const std::string& text, const std::string& stem) {
+  const std::optional<std::string> stated = top_scalar(text, b.source, "student");
+  const StudentId id = read_student_id(stated ? *stated : stem);
+  if (!id.problem) {
+    b.student = id.id;
+    if (stated) b.claimed = id.id;
+    return;
+  }
+  if (!stated) {
+    b.error =
+        Diagnostic{SourceLocation{b.source, 0, 0}, "file name",
+                   "the file has no `student:` and its name cannot be the id: " + *id.problem +
+                       " (or add `student:` to the file)"}
+            .format();
+    return;
+  }
+  // Grading's reader refuses the id with the same words, at its line and column.
+  for (const Diagnostic& d : load_submission_from_string(text, b.source).errors)
+    if (d.field == "student") {
+      b.error = d.format();
+      return;
+    }
+  b.error = Diagnostic{SourceLocation{b.source, 0, 0}, "student", *id.problem}.format();
 }
 
 // Files that claim a student another file also claims: each row names the other files, so the
 // instructor sees the two submissions (and two gradebook rows) before importing grades.
+// Ids that differ only in case, the spaces around them or their Unicode form are one student
+// (student_id_key): each such file names the others with the id it states.
 void note_shared_students(std::vector<BatchEntry>& entries) {
   std::map<std::string, std::vector<std::size_t>> by_student;
   for (std::size_t i = 0; i < entries.size(); ++i)
-    if (!entries[i].error) by_student[entries[i].student].push_back(i);
-  for (const auto& [student, files] : by_student) {
+    if (!entries[i].error) by_student[student_id_key(entries[i].student)].push_back(i);
+  for (const auto& [key, files] : by_student) {
     if (files.size() < 2) continue;
     for (const std::size_t i : files) {
+      const std::string& student = entries[i].student;
       std::string others;
       for (const std::size_t j : files)
-        if (j != i) others += (others.empty() ? "" : ", ") + entries[j].source;
+        if (j != i)
+          others +=
+              (others.empty() ? "" : ", ") + entries[j].source +
+              (entries[j].student == student ? ""
+                                             : " (as " + quote_excerpt(entries[j].student) + ")");
       entries[i].note =
           fmt::format("{} also claim{} student {}: each file is graded; keep the one that counts",
                       others, files.size() > 2 ? "" : "s", quote_excerpt(student));
@@ -96,8 +126,10 @@ std::vector<BatchEntry> from_directory(const fs::path& dir, std::size_t max_byte
     text.clear();
     if (const std::optional<Diagnostic> d = read_text_file(b.source, max_bytes, text))
       b.error = d->message;
-    b.claimed = b.error ? std::string() : student_in(text, b.source);
-    b.student = b.claimed.empty() ? files[i].stem().string() : b.claimed;
+    if (b.error)
+      b.student = read_student_id(files[i].stem().string()).id;  // "" when it cannot be one
+    else
+      read_id(b, text, files[i].stem().string());
     if (!b.error) {
       b.read_when_graded = true;
       b.length = text.size();
@@ -192,12 +224,15 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
     BatchEntry b;
     b.source = fmt::format("{} row {}", path, row.line);
     b.csv_file = path;
-    b.student = student_col < static_cast<int>(row.fields.size())
-                    ? row.fields[static_cast<std::size_t>(student_col)]
-                    : "";
-    if (b.student.empty()) b.student = fmt::format("row-{}", row.line);
+    const StudentId id = read_student_id(student_col < static_cast<int>(row.fields.size())
+                                             ? row.fields[static_cast<std::size_t>(student_col)]
+                                             : "");
+    b.student = id.id;
     const std::size_t bytes = row_bytes[r];
-    if (row.fields.size() > header.size()) {
+    if (id.problem) {
+      b.error = Diagnostic{SourceLocation{path, row.line, student_col + 1}, "student", *id.problem}
+                    .format();
+    } else if (row.fields.size() > header.size()) {
       b.error = fmt::format("line {}: {} fields, but the header has {}", row.line,
                             row.fields.size(), header.size());
     } else if (bytes > max_bytes) {
@@ -228,6 +263,7 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
     }
     out.push_back(std::move(b));
   }
+  note_shared_students(out);  // two rows of one student, as two files
   return out;
 }
 

@@ -62,8 +62,11 @@ std::string submission_text(const BatchEntry& e);
 
 // Answer files (*.yaml, *.yml) directly in a directory, in name order; or the rows of a CSV
 // whose header has `student` and one column per answer named `problem-id.answer`. A file that
-// cannot be read (a symlink loop, a FIFO, too big) is an entry with its error. Two files that
-// claim the same student are both graded, and each row's note names the other file.
+// cannot be read (a symlink loop, a FIFO, too big) is an entry with its error. Every id is read
+// by read_student_id: one it refuses (empty, a control character, not UTF-8) makes its file or
+// row an error entry with no student, located at the id. Two files (or rows) that claim the
+// same student — the same student_id_key — are both graded, and each one's note names the
+// others.
 // Everything else in the directory that is not hidden (other files, subdirectories) is not
 // graded: `not_graded`, when given, receives a located line for each, so nothing a student
 // handed in is passed over in silence.

@@ -114,6 +114,14 @@ std::string cloze_question(const QuizQuestion& q, const std::string& name) {
   return out + "  </question>\n";
 }
 
+// A name as one level of a category path: Moodle splits the path at '/' and reads "//" as a
+// '/' of the name, so that problem "q/1" is its own category, not "1" inside "q".
+std::string category_level(const std::string& name) {
+  std::string out;
+  for (const char c : name) out += c == '/' ? std::string("//") : std::string(1, c);
+  return out;
+}
+
 }  // namespace
 
 std::string export_moodle(const std::vector<QuizVariant>& variants, const std::string& category) {
@@ -129,8 +137,8 @@ std::string export_moodle(const std::vector<QuizVariant>& variants, const std::s
               q, v.name.empty() ? id : id + " " + v.name);
     if (questions.empty()) continue;  // nothing in it a Cloze field can check
     out += "  <question type=\"category\">\n    <category><text>$course$/top/" +
-           xml_escape(category) + "/" + xml_escape(id) + "</text></category>\n  </question>\n" +
-           questions;
+           xml_escape(category_level(category)) + "/" + xml_escape(category_level(id)) +
+           "</text></category>\n  </question>\n" + questions;
   }
   return out + "</quiz>\n";
 }

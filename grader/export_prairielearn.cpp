@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 
+#include "grader/file_names.hpp"
 #include "grader/quiz_items.hpp"
 #include "grader/xml_text.hpp"
 #include "solver/input/yaml_emit.hpp"
@@ -32,13 +33,6 @@ std::string stable_uuid(const std::string& title, const std::string& id) {
   return fmt::format("{}-{}-4{}-{:x}{}-{}", hex.substr(0, 8), hex.substr(8, 4), hex.substr(13, 3),
                      8 | (std::stoi(hex.substr(16, 1), nullptr, 16) & 3), hex.substr(17, 3),
                      hex.substr(20, 12));
-}
-
-std::string file_part(const std::string& s) {
-  std::string out;
-  for (const char c : s)
-    out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
-  return out;
 }
 
 // Which statements are true, as checkboxes in the set's order, each numbered as in the set
@@ -134,6 +128,11 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
   // The uuid keeps to the set's own title, so a question keeps its id in every language.
   const std::string title = set.title.empty() ? stem : set.title.text;
   const std::string shown = set.title.empty() ? stem : set.title.in(options.lang);
+  // One directory per question, never shared: the batch's injective encoding of names (ids
+  // "q 1", "q/1", "q_1" and "Q_1" are four questions, also on a file system blind to case).
+  std::vector<std::string> wanted;
+  for (const ProblemSpec& p : set.problems) wanted.push_back(stem + "-" + p.id);
+  const std::vector<std::string> dirs = unique_file_names(wanted);
   for (std::size_t i = 0; i < set.problems.size(); ++i) {
     const ProblemSpec& p = set.problems[i];
     if (!p.info) continue;
@@ -207,7 +206,7 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
         "    # PrairieLearn seeds `random` with the variant's seed, so a variant keeps its "
         "problem.\n"
         "    data[\"params\"].update(VARIANTS[random.randrange(len(VARIANTS))])\n";
-    auto& files = out[file_part(stem + "-" + p.id)];
+    auto& files = out[dirs[i]];
     files["info.json"] = info.dump(2) + "\n";
     files["question.html"] = html;
     files["server.py"] = server;

@@ -139,10 +139,13 @@ std::map<std::string, std::string> export_qti(const std::vector<QuizVariant>& va
     const std::string id = v.name.empty() ? ident : ident + "-" + v.name;
     files[id + ".xml"] =
         assessment(v.questions, v.name.empty() ? title : title + " (" + v.name + ")", id);
+    // An href is a URI: the '%' of an encoded name is written %25.
+    std::string href;
+    for (const char c : id) href += c == '%' ? std::string("%25") : std::string(1, c);
     resources += fmt::format(
-        "    <resource identifier=\"{0}\" type=\"imsqti_xmlv1p2\" href=\"{0}.xml\"><file "
-        "href=\"{0}.xml\"/></resource>\n",
-        id);
+        "    <resource identifier=\"{0}\" type=\"imsqti_xmlv1p2\" href=\"{1}.xml\"><file "
+        "href=\"{1}.xml\"/></resource>\n",
+        xml_escape(id), href);
   }
   files["imsmanifest.xml"] = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "grader/report.hpp"
+#include "grader/visible_text.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/derivation/svg.hpp"
 #include "solver/util/exact_format.hpp"
@@ -14,8 +15,9 @@ namespace {
 // Markdown table cells: a pipe would end the cell (markdown_escape escapes it).
 std::string cell(const std::string& s) { return markdown_escape(s); }
 
-// HTML text and attribute values: the SVG writer's escaping (&, <, >, ", ') serves both.
-std::string html_escape(std::string_view s) { return svg_escape(s); }
+// HTML text and attribute values: the SVG writer's escaping (&, <, >, ", ') serves both, after
+// bytes that are not UTF-8 and control characters are made visible.
+std::string html_escape(std::string_view s) { return svg_escape(visible_text(s, Breaks::Kept)); }
 
 std::string verdict_word(Verdict v, Lang lang) { return tr(to_string(v), lang); }
 
@@ -56,17 +58,16 @@ const char* kScript = R"JS(
 
 }  // namespace
 
-std::string markdown_escape(std::string_view text) {
+std::string markdown_escape(std::string_view raw) {
+  const std::string text = visible_text(raw, Breaks::Kept);
   std::string out;
   // At the start of a line these would make a heading, a list or a quote.
   if (!text.empty() && std::string_view("#-+>").find(text[0]) != std::string_view::npos)
     out += '\\';
   out.reserve(out.size() + text.size() + text.size() / 8);
   for (const char c : text) {
-    const unsigned char u = static_cast<unsigned char>(c);
     switch (c) {
       case '\n':
-      case '\r':
       case '\t':
         out += ' ';
         break;
@@ -86,21 +87,20 @@ std::string markdown_escape(std::string_view text) {
         out += c;
         break;
       default:
-        if (u >= 0x20 && u != 0x7F) out += c;  // other control characters are dropped
+        out += c;
     }
   }
   return out;
 }
 
-std::string markdown_code(std::string_view text) {
+std::string markdown_code(std::string_view raw) {
   std::string out;
-  for (const char c : text) {
-    const unsigned char u = static_cast<unsigned char>(c);
+  for (const char c : visible_text(raw, Breaks::Kept)) {
     if (c == '`')
       out += "ʼ";
-    else if (c == '\n' || c == '\r' || c == '\t')
+    else if (c == '\n' || c == '\t')
       out += ' ';
-    else if (u >= 0x20 && u != 0x7F)
+    else
       out += c;
   }
   return out;

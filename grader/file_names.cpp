@@ -4,8 +4,11 @@
 
 #include <cctype>
 #include <cstdint>
+#include <map>
 #include <set>
 
+#include "grader/student_id.hpp"
+#include "solver/util/expression.hpp"
 #include "solver/util/words.hpp"
 
 namespace frustum {
@@ -48,6 +51,25 @@ std::vector<std::string> unique_file_names(const std::vector<std::string>& ids) 
     for (int n = 2; !taken.insert(ascii_lower(name)).second; ++n)
       name = fmt::format("{}~{}", base, n);
     out.push_back(name);
+  }
+  return out;
+}
+
+std::vector<Diagnostic> look_alike_problem_ids(const ProblemSet& set) {
+  std::vector<Diagnostic> out;
+  std::map<std::string, const ProblemSpec*> first;  // look → the first problem with it
+  for (const ProblemSpec& p : set.problems) {
+    std::string look = student_id_key(p.id);
+    for (char& c : look)
+      if (static_cast<unsigned char>(c) < 0x80 && !std::isalnum(static_cast<unsigned char>(c)))
+        c = '_';
+    const auto [it, fresh] = first.emplace(look, &p);
+    if (!fresh)
+      out.push_back(Diagnostic{
+          p.where, p.field + ".id",
+          fmt::format("warning: problem id {} differs from {} ({}) only in case, spaces or "
+                      "signs: each export keeps both, but a student may answer one for the other",
+                      quote_excerpt(p.id), quote_excerpt(it->second->id), it->second->field)});
   }
   return out;
 }

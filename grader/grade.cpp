@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "grader/answer_parser.hpp"
+#include "grader/student_id.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/solve_set.hpp"
@@ -42,9 +43,13 @@ Submission load_submission_from(const YamlDocument& doc, const std::string& name
       err(it->first, k, "unknown field" + did_you_mean(k, {"student", "answers"}));
   }
   if (root["student"].IsDefined()) {
-    if (root["student"].IsScalar())
-      s.student = root["student"].Scalar();
-    else
+    if (root["student"].IsScalar()) {
+      StudentId id = read_student_id(root["student"].Scalar());
+      if (id.problem)
+        err(root["student"], "student", *id.problem);
+      else
+        s.student = std::move(id.id);
+    } else
       err(root["student"], "student", "expected the student's id");
   }
   const YAML::Node answers = root["answers"];

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "grader/csv.hpp"
+#include "grader/visible_text.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {
@@ -23,7 +24,7 @@ std::string gradebook_header(const ProblemSet& set) {
   std::vector<std::string> header = {"student", "score", "max_score", "percent", "status"};
   for (const ProblemSpec& p : set.problems) header.push_back(p.id);
   header.insert(header.end(), {"source", "message", "file"});
-  return csv_row(header);
+  return csv_row(visible_cells(std::move(header)));
 }
 
 std::string gradebook_line(const ProblemSet& set, const BatchRow& r) {
@@ -35,7 +36,8 @@ std::string gradebook_line(const ProblemSet& set, const BatchRow& r) {
   f.push_back(r.source);
   f.push_back(r.message);
   f.push_back(r.feedback_stem);
-  return csv_row(f);
+  // Ids, file names and messages as visible text: `cat gradebook.csv` shows every row as it is.
+  return csv_row(visible_cells(std::move(f)));
 }
 
 std::string gradebook_csv(const ProblemSet& set, const std::vector<BatchRow>& rows) {

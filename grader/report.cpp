@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "grader/visible_text.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {
@@ -69,15 +70,16 @@ std::string score_text(double v) {
 std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
   const Lang lang = style.lang;
   std::string out = fmt::format("{} {}: {} / {}\n", tr("Student", lang),
-                                r.student.empty() ? "(unnamed)" : r.student, score_text(r.score),
-                                score_text(r.max_score));
-  if (!r.variant.empty()) out += "  " + r.variant + "\n";
-  for (const Diagnostic& d : r.errors) out += "  " + tr("warning", lang) + ": " + d.format() + "\n";
+                                r.student.empty() ? "(unnamed)" : visible_text(r.student),
+                                score_text(r.score), score_text(r.max_score));
+  if (!r.variant.empty()) out += "  " + visible_text(r.variant) + "\n";
+  for (const Diagnostic& d : r.errors)
+    out += "  " + tr("warning", lang) + ": " + visible_text(d.format()) + "\n";
   for (const ProblemGrade& p : r.problems) {
     out += fmt::format("\n{} ({}): {} / {}\n", p.id, p.kind, score_text(p.score),
                        score_text(p.max_score));
     if (p.error) {
-      out += "  " + tr("error", lang) + ": " + p.error->format() + "\n";
+      out += "  " + tr("error", lang) + ": " + visible_text(p.error->format()) + "\n";
       continue;
     }
     // The derivation is printed once per problem, after its answers: the longest of the wrong
@@ -93,7 +95,7 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
                          tr(to_string(a.verdict), lang));
       if (a.verdict != Verdict::Missing)
         out += fmt::format(" — {} {}", lang == Lang::En ? "you wrote" : tr("You wrote", lang) + ":",
-                           a.got_text);
+                           visible_text(a.got_text));
       if (a.verdict != Verdict::Correct)
         out += fmt::format("; {} {}", lang == Lang::En ? "expected" : tr("Expected", lang) + ":",
                            tr(a.expected.shown(), lang).unicode);
@@ -102,7 +104,7 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
         out +=
             fmt::format("      {}: {}\n", tr("Common mistake", lang), misconception_text(a, lang));
       if (!a.feedback.empty() && a.verdict != Verdict::Correct)
-        out += "      " + tr(a.feedback, lang) + "\n";
+        out += "      " + visible_text(tr(a.feedback, lang)) + "\n";
       if (a.verdict != Verdict::Correct && !a.derivation.empty() &&
           !a.derivation.back().answers.empty())
         out += fmt::format("      {} {}: {}\n", tr("See step", lang), step_number(a.derivation),

@@ -550,7 +550,10 @@ TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
   const ProblemSet set = load_problem_set_from_string(kSet, "set.yaml");
   const std::vector<BatchEntry> entries = collect_submissions((dir / "roster.csv").string());
   ASSERT_EQ(entries.size(), 3u);
-  EXPECT_EQ(entries[2].student, "row-4");
+  // A row without an id is refused, not given one (it was "row-4").
+  EXPECT_EQ(entries[2].student, "");
+  EXPECT_EQ(entries[2].error,
+            (dir / "roster.csv").string() + ":4:1: student: the student id is empty");
   BatchOptions options;
   options.out_dir = (dir / "out").string();
   const BatchResult r = grade_batch(set, entries, options);
@@ -558,6 +561,7 @@ TEST(Batch, CsvRosterGradesLikeAnswerFiles) {
   EXPECT_DOUBLE_EQ(r.rows[0].score, 5);
   EXPECT_DOUBLE_EQ(r.rows[1].score, 2);  // normal and plane right, z wrong, bf missing
   EXPECT_DOUBLE_EQ(r.rows[2].score, 0);
+  EXPECT_EQ(r.rows[2].status, "error");
   EXPECT_EQ(r.rows[0].source, (dir / "roster.csv").string() + " row 2");
   test::write_file(dir / "bad.csv", "name,zbuf.z\nx,1\n");
   EXPECT_THROW(collect_submissions((dir / "bad.csv").string()), InputError);

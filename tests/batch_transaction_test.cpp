@@ -414,7 +414,9 @@ TEST(OutputHygiene, MarkdownAndGradescopeShowHostileTextLiterally) {
   EXPECT_EQ(gs.find("<script"), std::string::npos);
   EXPECT_EQ(markdown_escape("[x](javascript:alert(1)) *b* `c` |"),
             "\\[x\\](javascript:alert(1)) \\*b\\* \\`c\\` \\|");
-  EXPECT_EQ(markdown_code("a`b\x1b[2J"), "aʼb[2J");
+  // Control characters are shown, not dropped: an id's ESC is seen (issue 40).
+  EXPECT_EQ(markdown_code("a`b\x1b[2J"), "aʼb\\u001B[2J");
+  EXPECT_EQ(markdown_escape("a\x1b[2J\x93"), "a\\\\u001B\\[2J\\\\x93");
 }
 
 }  // namespace

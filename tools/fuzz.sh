@@ -25,7 +25,7 @@ seconds=${1:-60}
 shift || true
 targets=("$@")
 all_targets=(fuzz_loader fuzz_expression fuzz_grade fuzz_batch fuzz_csv_roster fuzz_scene fuzz_neighbours
-             fuzz_work)
+             fuzz_work fuzz_output_text fuzz_export_questions)
 [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 
 . tools/sanitized_build.sh  # build-fuzz/, shared with tools/sanitize.sh
@@ -60,6 +60,7 @@ for t in "${targets[@]}"; do
   # processes under ASan): its inputs get six times the time of a single-process target.
   timeout=${FUZZ_TIMEOUT:-10}
   [ "$t" = fuzz_batch ] || [ "$t" = fuzz_neighbours ] && timeout=$((timeout * 6))
+  [ "$t" = fuzz_output_text ] && timeout=$((timeout * 3))
   case "$t" in
     fuzz_loader) extra=(problems/seeds problems/examples) ;;
     fuzz_grade) extra=("$seeds/fuzz_grade") ;;

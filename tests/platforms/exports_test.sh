@@ -231,7 +231,7 @@ check "Moodle CSV: ID number and the grade column" \
   grep -q '^seed003-published,' <(tail -n +2 "$work/moodle.csv")
 printf 'student,score,max_score,percent,status\na,1,2,50,graded\na,2,2,100,graded\n' > "$work/twice.csv"
 check "a student with two rows is refused, naming the line" \
-  grep -q "twice.csv:3:1: student: student a is also on line 2" <("$frustum" export canvas-grades "$work/twice.csv" 2>&1 || true)
+  grep -q "twice.csv:3:1: student: student 'a' is also on line 2" <("$frustum" export canvas-grades "$work/twice.csv" 2>&1 || true)
 
 echo "$failures failed"
 [ "$failures" -eq 0 ]
