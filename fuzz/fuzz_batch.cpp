@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "fuzz/records.hpp"
+#include "fuzz/fuzz_records.hpp"
 #include "grader/batch.hpp"
 #include "grader/csv.hpp"
 
