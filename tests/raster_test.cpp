@@ -108,6 +108,49 @@ TEST(Rasterizer, ExactSnappingDecidesByTheExactValue) {
   EXPECT_FALSE(on);
 }
 
+// The rule (halves away from zero) for every kind of exact value, on both sides of every half:
+// k/512 exactly and k/512 ± 10⁻³⁰, for odd k of both signs, each written as a rational, as a
+// product of radicals that is rational ((√2 + 1)(√2 − 1) = 1), as a nested radical
+// (√(5 + 2√6) − √2 − √3 = 0), as a trigonometric value (2·sin(π/12)·cos(π/12) − ½ = 0,
+// sin²(π/8) + cos²(π/8) − 1 = 0) and with an irrational offset (10⁻³⁰·√2 instead of 10⁻³⁰).
+// An irrational exact half snapped toward zero on the negative side (issue 42).
+TEST(Rasterizer, ExactSnappingRoundsHalvesAwayFromZeroInEveryForm) {
+  const Exact r2 = GiNaC::sqrt(Exact(2)), r3 = GiNaC::sqrt(Exact(3));
+  const Exact pi = GiNaC::Pi;
+  const std::vector<std::pair<std::string, Exact>> zeros = {
+      {"rational", 0},
+      {"radical product", (r2 + 1) * (r2 - 1) - 1},
+      {"nested radical", GiNaC::sqrt(5 + 2 * GiNaC::sqrt(Exact(6))) - r2 - r3},
+      {"sin pi/12", 2 * GiNaC::sin(pi / 12) * GiNaC::cos(pi / 12) - Exact(1) / 2}};
+  const Exact tiny = GiNaC::pow(Exact(10), -30);
+  const std::vector<std::pair<std::string, Exact>> offsets = {{"0", 0},
+                                                              {"+tiny", tiny},
+                                                              {"-tiny", -tiny},
+                                                              {"+tiny*sqrt2", tiny * r2},
+                                                              {"-tiny*sqrt2", -tiny * r2}};
+  for (const long k : {-1001L, -3L, -1L, 1L, 3L, 1001L})
+    for (const auto& [zero_name, zero] : zeros)
+      for (const auto& [offset_name, offset] : offsets) {
+        const Exact v = zero + Exact(k) / 512 + offset;
+        // Expected: k/512 exactly rounds away from zero; an offset toward zero rounds toward it.
+        const int offset_sign = exact_sign(offset);
+        const long toward_zero = (k - (k > 0 ? 1 : -1)) / 2, away = (k + (k > 0 ? 1 : -1)) / 2;
+        const bool away_from_zero = offset_sign == 0 || (offset_sign > 0) == (k > 0);
+        bool off = false;
+        EXPECT_EQ(to_fixed(v, off), away_from_zero ? away : toward_zero)
+            << k << "/512 " << zero_name << " " << offset_name;
+        EXPECT_TRUE(off) << k << "/512 " << zero_name << " " << offset_name;
+      }
+  // On the grid in every form: not snapped.
+  for (const auto& [zero_name, zero] : zeros) {
+    bool off = false;
+    EXPECT_EQ(to_fixed(zero - Exact(3) / 256, off), -3) << zero_name;
+    EXPECT_FALSE(off) << zero_name;
+    EXPECT_EQ(to_fixed(zero, off), 0) << zero_name;
+    EXPECT_FALSE(off) << zero_name;
+  }
+}
+
 TEST(Rasterizer, DegenerateTriangleCoversNothing) {
   const TriangleSetup t = tri(0, 0, 2, 2, 5, 5);
   EXPECT_TRUE(t.degenerate);
