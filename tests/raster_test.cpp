@@ -121,7 +121,9 @@ TEST(Rasterizer, ExactSnappingRoundsHalvesAwayFromZeroInEveryForm) {
       {"rational", 0},
       {"radical product", (r2 + 1) * (r2 - 1) - 1},
       {"nested radical", GiNaC::sqrt(5 + 2 * GiNaC::sqrt(Exact(6))) - r2 - r3},
-      {"sin pi/12", 2 * GiNaC::sin(pi / 12) * GiNaC::cos(pi / 12) - Exact(1) / 2}};
+      {"sin pi/12", 2 * GiNaC::sin(pi / 12) * GiNaC::cos(pi / 12) - Exact(1) / 2},
+      {"sin pi/8", GiNaC::pow(GiNaC::sin(pi / 8), 2) + GiNaC::pow(GiNaC::cos(pi / 8), 2) - 1},
+      {"tan 7.5°", GiNaC::tan(pi / 24) - GiNaC::sqrt(Exact(6)) + r3 - r2 + 2}};
   const Exact tiny = GiNaC::pow(Exact(10), -30);
   const std::vector<std::pair<std::string, Exact>> offsets = {{"0", 0},
                                                               {"+tiny", tiny},
