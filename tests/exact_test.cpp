@@ -158,6 +158,19 @@ TEST(Exact, CanonicalIsIdempotent) {
   }
 }
 
+// canonical(e) (its short routes) and canonical(e, budget) (the general passes): the same value,
+// printed the same.
+void expect_short_route_matches_the_passes(const ex& e) {
+  WorkBudget budget;
+  const ex general = canonical(e, budget);
+  const ex quick = canonical(e);
+  EXPECT_TRUE(quick.is_equal(general)) << e << ": " << quick << " vs " << general;
+  std::ostringstream a, b;
+  a << quick;
+  b << general;
+  EXPECT_EQ(a.str(), b.str()) << e;
+}
+
 // canonical(e) takes a short route for c·k^(±1/2); the general passes (canonical with a budget)
 // must give the same value, printed the same (answer keys are compared byte for byte). So does
 // exact_sign's short route for such values.
@@ -169,17 +182,22 @@ TEST(Exact, CanonicalShortRouteForSquareRootsMatchesThePasses) {
     const numeric c(part(rng), den(rng));
     for (const ex& e : {ex(c) * GiNaC::sqrt(ex(k)), ex(c) / GiNaC::sqrt(ex(k)), GiNaC::sqrt(ex(k)),
                         1 / GiNaC::sqrt(ex(k))}) {
-      WorkBudget budget;
-      const ex general = canonical(e, budget);
-      const ex quick = canonical(e);
-      EXPECT_TRUE(quick.is_equal(general)) << e << ": " << quick << " vs " << general;
-      std::ostringstream a, b;
-      a << quick;
-      b << general;
-      EXPECT_EQ(a.str(), b.str()) << e;
+      expect_short_route_matches_the_passes(e);
       const double value = to_double(e);
       EXPECT_EQ(exact_sign(e), (value > 0) - (value < 0)) << e;
     }
+  }
+}
+
+// The same for sums a + b·√k + c·√m (k, m below 2000, square or not, equal or not).
+TEST(Exact, CanonicalShortRouteForSumsOfSquareRootsMatchesThePasses) {
+  std::mt19937 rng(20261204);
+  std::uniform_int_distribution<long> radicand(1, 2000), part(-60, 60), den(1, 40);
+  for (int i = 0; i < 2000; ++i) {
+    const ex e = ex(numeric(part(rng), den(rng))) +
+                 ex(numeric(part(rng), den(rng))) * GiNaC::sqrt(ex(radicand(rng))) +
+                 ex(numeric(part(rng), den(rng))) * GiNaC::sqrt(ex(i % 3 ? radicand(rng) : 2));
+    expect_short_route_matches_the_passes(e);
   }
 }
 
