@@ -4,11 +4,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 #include "grader/grade.hpp"
 #include "solver/accuracy/hard_cases.hpp"
 #include "solver/numeric/condition.hpp"
+#include "solver/problem/numeric_result.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/rng.hpp"
 #include "solver/problem/solve_precision.hpp"
@@ -312,6 +314,32 @@ TEST(SolvePrecision, DerivationNamesTheBackendAndKeepsOtherKindsExact) {
   ASSERT_FALSE(z.error);
   EXPECT_FLOAT_EQ(static_cast<float>(z.answers.find("z")->numbers[0]), 8.0f);
   EXPECT_TRUE(z.answers.find("z")->exact.empty());
+}
+
+// Range warnings say what happened: an infinity is an overflow, a NaN (0/0 after a
+// cancellation) is "not a number" and no overflow, and neither claims the exact backend is
+// unlimited (its answers stop at double's range).
+TEST(NumericWarnings, InfinityIsOverflowAndNanIsNotANumber) {
+  const auto titles = [](const NumericResult& r) {
+    std::set<std::string> t;
+    for (const NumericWarning& w : r.warnings) {
+      t.insert(w.title);
+      EXPECT_EQ(w.text.find("no limit"), std::string::npos) << w.text;
+    }
+    return t;
+  };
+  const float zero = 0.0f;
+  NumericOut<float> nan_out(Precision::Float);
+  nan_out.scalar("x", zero / zero);
+  EXPECT_EQ(titles(nan_out.take()), std::set<std::string>{"Not a number"});
+  NumericOut<float> inf_out(Precision::Float);
+  inf_out.scalar("x", std::numeric_limits<float>::max() * 2.0f);
+  const NumericResult inf = inf_out.take();
+  EXPECT_EQ(titles(inf), std::set<std::string>{"Overflow"});
+  EXPECT_NE(inf.warnings[0].text.find("1.8·10³⁰⁸"), std::string::npos);
+  NumericOut<double> fine(Precision::Double);
+  fine.scalar("x", 1.5);
+  EXPECT_TRUE(fine.take().warnings.empty());
 }
 
 // ---- The hard-case suite ----

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "solver/core/rational_power.hpp"
+#include "solver/core/trig_radicals.hpp"
 #include "solver/core/work_budget.hpp"
 #include "solver/util/expression.hpp"
 
@@ -157,6 +158,19 @@ TEST(Exact, CanonicalIsIdempotent) {
   }
 }
 
+// canonical(e) (its short routes) and canonical(e, budget) (the general passes): the same value,
+// printed the same.
+void expect_short_route_matches_the_passes(const ex& e) {
+  WorkBudget budget;
+  const ex general = canonical(e, budget);
+  const ex quick = canonical(e);
+  EXPECT_TRUE(quick.is_equal(general)) << e << ": " << quick << " vs " << general;
+  std::ostringstream a, b;
+  a << quick;
+  b << general;
+  EXPECT_EQ(a.str(), b.str()) << e;
+}
+
 // canonical(e) takes a short route for c·k^(±1/2); the general passes (canonical with a budget)
 // must give the same value, printed the same (answer keys are compared byte for byte). So does
 // exact_sign's short route for such values.
@@ -168,17 +182,22 @@ TEST(Exact, CanonicalShortRouteForSquareRootsMatchesThePasses) {
     const numeric c(part(rng), den(rng));
     for (const ex& e : {ex(c) * GiNaC::sqrt(ex(k)), ex(c) / GiNaC::sqrt(ex(k)), GiNaC::sqrt(ex(k)),
                         1 / GiNaC::sqrt(ex(k))}) {
-      WorkBudget budget;
-      const ex general = canonical(e, budget);
-      const ex quick = canonical(e);
-      EXPECT_TRUE(quick.is_equal(general)) << e << ": " << quick << " vs " << general;
-      std::ostringstream a, b;
-      a << quick;
-      b << general;
-      EXPECT_EQ(a.str(), b.str()) << e;
+      expect_short_route_matches_the_passes(e);
       const double value = to_double(e);
       EXPECT_EQ(exact_sign(e), (value > 0) - (value < 0)) << e;
     }
+  }
+}
+
+// The same for sums a + b·√k + c·√m (k, m below 2000, square or not, equal or not).
+TEST(Exact, CanonicalShortRouteForSumsOfSquareRootsMatchesThePasses) {
+  std::mt19937 rng(20261204);
+  std::uniform_int_distribution<long> radicand(1, 2000), part(-60, 60), den(1, 40);
+  for (int i = 0; i < 2000; ++i) {
+    const ex e = ex(numeric(part(rng), den(rng))) +
+                 ex(numeric(part(rng), den(rng))) * GiNaC::sqrt(ex(radicand(rng))) +
+                 ex(numeric(part(rng), den(rng))) * GiNaC::sqrt(ex(i % 3 ? radicand(rng) : 2));
+    expect_short_route_matches_the_passes(e);
   }
 }
 
@@ -459,6 +478,61 @@ TEST(Exact, ExactSignRefusesAZeroItCannotProve) {
   EXPECT_THROW(exact_sign(-zero), UndecidedSign);
   EXPECT_EQ(exact_sign(zero + GiNaC::pow(ex(10), -200)), 1);
   EXPECT_EQ(exact_sign(zero - GiNaC::pow(ex(10), -200)), -1);
+}
+
+// Sines, cosines and tangents of every multiple of π/24 over two turns (negative angles too)
+// become radicals equal to them to 60 digits; canonical() gives tan 22.5° = √2 − 1 and
+// tan 7.5° = √6 − √3 + √2 − 2, and signs of values that are exactly 0 in them are decided
+// (issue 42: a point on the top plane at fovy = 45° was refused).
+TEST(Exact, TrigonometricValuesAtMultiplesOfPiOver24AreRadicals) {
+  for (long n = -48; n <= 48; ++n) {
+    const ex angle = numeric(n, 24) * GiNaC::Pi;
+    std::vector<ex> values = {GiNaC::sin(angle), GiNaC::cos(angle)};
+    if ((n - 12) % 24 != 0) values.push_back(GiNaC::tan(angle));
+    for (const ex& v : values) {
+      const ex radical = trig_to_radicals(v);
+      EXPECT_FALSE(radical.has(GiNaC::sin(GiNaC::wild())) ||
+                   radical.has(GiNaC::cos(GiNaC::wild())) || radical.has(GiNaC::tan(GiNaC::wild())))
+          << v << " -> " << radical;
+      GiNaC::Digits = 60;
+      const numeric difference = ex_to<numeric>((v - radical).evalf());
+      GiNaC::Digits = 17;
+      EXPECT_LT(GiNaC::abs(difference), numeric(1, 10).power(55)) << v << " -> " << radical;
+      EXPECT_EQ(exact_sign(v - radical), 0) << v;
+    }
+  }
+  EXPECT_TRUE(canonical(GiNaC::tan(GiNaC::Pi / 8) - (sqrt_of(2) - 1)).is_zero());
+  EXPECT_TRUE(
+      canonical(GiNaC::tan(GiNaC::Pi / 24) - (sqrt_of(6) - sqrt_of(3) + sqrt_of(2) - 2)).is_zero());
+  EXPECT_TRUE(
+      canonical(GiNaC::sin(GiNaC::Pi / 8) / GiNaC::cos(GiNaC::Pi / 8) - sqrt_of(2) + 1).is_zero());
+  const ex s = GiNaC::sin(GiNaC::Pi / 8), c = GiNaC::cos(GiNaC::Pi / 8);
+  EXPECT_EQ(exact_sign(s * s + c * c - 1), 0);
+  EXPECT_EQ(exact_sign(2 * GiNaC::tan(GiNaC::Pi / 8) - 2 * sqrt_of(2) + 2), 0);
+  EXPECT_EQ(exact_sign(GiNaC::tan(GiNaC::Pi / 8) - sqrt_of(2) + 1 + GiNaC::pow(ex(10), -300)), 1);
+  // Other angles are left alone.
+  expect_canonical(GiNaC::sin(GiNaC::Pi / 7), GiNaC::sin(GiNaC::Pi / 7));
+  expect_canonical(GiNaC::cos(ex(1)), GiNaC::cos(ex(1)));
+}
+
+// A sign does not depend on the size of the value: the same sums of radicals, exactly 0 or 10⁻³⁰
+// of their size off 0, decided alike at 10⁻³⁰⁰, 1 and 10³⁰⁰ (a solid scaled by 10⁻¹⁰⁰ was
+// refused where the same at size 1 solved).
+TEST(Exact, ExactSignIsScaleInvariant) {
+  const ex zero = GiNaC::sqrt(5 + 2 * sqrt_of(6)) - sqrt_of(2) - sqrt_of(3);
+  const ex flat = sqrt_of(15) - sqrt_of(3) * sqrt_of(5);              // 0 once multiplied out
+  const ex sum = 3 * sqrt_of(5) - 2 * sqrt_of(3) - numeric(3, 1000);  // ≈ 3.2437, not 0
+  for (const int exponent : {-300, -100, 0, 100, 300}) {
+    const ex s = GiNaC::pow(ex(10), exponent);
+    const ex tiny = GiNaC::pow(ex(10), -30);
+    EXPECT_EQ(exact_sign((s * zero).expand()), 0) << exponent;
+    EXPECT_EQ(exact_sign((s * (zero + tiny)).expand()), 1) << exponent;
+    EXPECT_EQ(exact_sign((s * (zero - tiny)).expand()), -1) << exponent;
+    EXPECT_EQ(exact_sign((s * flat).expand()), 0) << exponent;
+    EXPECT_EQ(exact_sign((s * (flat - tiny * sqrt_of(2))).expand()), -1) << exponent;
+    EXPECT_EQ(exact_sign((s * sum).expand()), 1) << exponent;
+    EXPECT_EQ(exact_sign((-s * sum).expand()), -1) << exponent;
+  }
 }
 
 TEST(Exact, ExactSignRestoresDigitsAndRejectsNonReal) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "solver/raster/filtered_depth.hpp"
 #include "solver/raster/zbuffer.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "test_util.hpp"
@@ -106,6 +107,51 @@ TEST(Rasterizer, ExactSnappingDecidesByTheExactValue) {
   bool on = false;
   EXPECT_EQ(to_fixed(Exact(5) / 256, on), 5);
   EXPECT_FALSE(on);
+}
+
+// The rule (halves away from zero) for every kind of exact value, on both sides of every half:
+// k/512 exactly and k/512 ± 10⁻³⁰, for odd k of both signs, each written as a rational, as a
+// product of radicals that is rational ((√2 + 1)(√2 − 1) = 1), as a nested radical
+// (√(5 + 2√6) − √2 − √3 = 0), as a trigonometric value (2·sin(π/12)·cos(π/12) − ½ = 0,
+// sin²(π/8) + cos²(π/8) − 1 = 0) and with an irrational offset (10⁻³⁰·√2 instead of 10⁻³⁰).
+// An irrational exact half snapped toward zero on the negative side (issue 42).
+TEST(Rasterizer, ExactSnappingRoundsHalvesAwayFromZeroInEveryForm) {
+  const Exact r2 = GiNaC::sqrt(Exact(2)), r3 = GiNaC::sqrt(Exact(3));
+  const Exact pi = GiNaC::Pi;
+  const std::vector<std::pair<std::string, Exact>> zeros = {
+      {"rational", 0},
+      {"radical product", (r2 + 1) * (r2 - 1) - 1},
+      {"nested radical", GiNaC::sqrt(5 + 2 * GiNaC::sqrt(Exact(6))) - r2 - r3},
+      {"sin pi/12", 2 * GiNaC::sin(pi / 12) * GiNaC::cos(pi / 12) - Exact(1) / 2},
+      {"sin pi/8", GiNaC::pow(GiNaC::sin(pi / 8), 2) + GiNaC::pow(GiNaC::cos(pi / 8), 2) - 1},
+      {"tan 7.5°", GiNaC::tan(pi / 24) - GiNaC::sqrt(Exact(6)) + r3 - r2 + 2}};
+  const Exact tiny = GiNaC::pow(Exact(10), -30);
+  const std::vector<std::pair<std::string, Exact>> offsets = {{"0", 0},
+                                                              {"+tiny", tiny},
+                                                              {"-tiny", -tiny},
+                                                              {"+tiny*sqrt2", tiny * r2},
+                                                              {"-tiny*sqrt2", -tiny * r2}};
+  for (const long k : {-1001L, -3L, -1L, 1L, 3L, 1001L})
+    for (const auto& [zero_name, zero] : zeros)
+      for (const auto& [offset_name, offset] : offsets) {
+        const Exact v = zero + Exact(k) / 512 + offset;
+        // Expected: k/512 exactly rounds away from zero; an offset toward zero rounds toward it.
+        const int offset_sign = exact_sign(offset);
+        const long toward_zero = (k - (k > 0 ? 1 : -1)) / 2, away = (k + (k > 0 ? 1 : -1)) / 2;
+        const bool away_from_zero = offset_sign == 0 || (offset_sign > 0) == (k > 0);
+        bool off = false;
+        EXPECT_EQ(to_fixed(v, off), away_from_zero ? away : toward_zero)
+            << k << "/512 " << zero_name << " " << offset_name;
+        EXPECT_TRUE(off) << k << "/512 " << zero_name << " " << offset_name;
+      }
+  // On the grid in every form: not snapped.
+  for (const auto& [zero_name, zero] : zeros) {
+    bool off = false;
+    EXPECT_EQ(to_fixed(zero - Exact(3) / 256, off), -3) << zero_name;
+    EXPECT_FALSE(off) << zero_name;
+    EXPECT_EQ(to_fixed(zero, off), 0) << zero_name;
+    EXPECT_FALSE(off) << zero_name;
+  }
 }
 
 TEST(Rasterizer, DegenerateTriangleCoversNothing) {
@@ -245,6 +291,66 @@ const char* kThreePolygons = R"({size: [4, 3], polygons: [
     {label: "1", points: [[0, 0, 5], [3, 0, 5], [3, 3, 5], [0, 3, 5]]},
     {label: "2", points: [[1, 0, 3], [4, 0, 3], [4, 2, 3], [1, 2, 3]]},
     {label: "3", points: [[2, 1, 4], [4, 1, 4], [4, 3, 4], [2, 3, 4]]}]})";
+
+// The filtered exact depth test decides every fragment as the plain exact one does: random
+// triangles on an 8 × 8 grid whose depths are small integers, √2, √3 and sums of them, equal
+// across triangles or 10⁻³⁰ apart (ties and near-ties the ranges cannot separate), drawn both
+// ways; frames and exact depths agree, and the exact comparisons happened only at ties.
+TEST(ZBufferStage, FilteredExactDepthTestMatchesThePlainExactTest) {
+  std::mt19937_64 rng(42);
+  std::uniform_int_distribution<int> coord(-2, 10), small(1, 2), pick(0, 5);
+  const Exact tiny = GiNaC::pow(Exact(10), -30);
+  const auto depth = [&] {
+    const Exact r2 = GiNaC::sqrt(Exact(2)), r3 = GiNaC::sqrt(Exact(3));
+    switch (pick(rng)) {
+      case 0:
+        return Exact(small(rng));
+      case 1:
+        return Exact(small(rng)) * r2;
+      case 2:
+        return Exact(small(rng)) + r3;
+      case 3:
+        return Exact(small(rng)) + r2 + tiny;
+      case 4:
+        return r2 + r3;
+      default:
+        return Exact(small(rng)) + r2 - tiny;
+    }
+  };
+  long exact_comparisons = 0;
+  for (int scene = 0; scene < 60; ++scene) {
+    FrameBuffer plain_frame(8, 8, kBackground), filtered_frame(8, 8, kBackground);
+    DepthBuffer<Exact> plain(8, 8, std::nullopt);
+    FilteredDepthBuffer filtered(8, 8);
+    for (int k = 0; k < 5; ++k) {
+      std::array<Vec2<Exact>, 3> xy;
+      std::array<Exact, 3> z;
+      const bool flat = k % 2 == 0;  // one depth for the whole triangle: ties across triangles
+      const Exact flat_depth = depth();
+      for (int c = 0; c < 3; ++c) {
+        xy[c] = Vec2<Exact>(Exact(coord(rng)), Exact(coord(rng)));
+        z[c] = flat ? flat_depth : depth();
+      }
+      const TriangleSetup t = setup_triangle_exact(xy);
+      const std::string label = std::to_string(k + 1);
+      const DrawCount a = draw_triangle<Exact>(
+          t, z, label, plain, plain_frame,
+          [](const Exact& x, const Exact& y) { return exact_sign(x - y) < 0; });
+      const DrawCount b = draw_triangle_filtered(t, z, label, filtered, filtered_frame);
+      EXPECT_EQ(a.covered, b.covered);
+      EXPECT_EQ(a.written, b.written);
+    }
+    EXPECT_EQ(frame_rows(plain_frame), frame_rows(filtered_frame)) << scene;
+    for (std::size_t c = 0; c < plain.data.size(); ++c) {
+      ASSERT_EQ(plain.data[c].has_value(), filtered.exact.data[c].has_value());
+      if (plain.data[c]) {
+        EXPECT_EQ(exact_sign(*plain.data[c] - *filtered.exact.data[c]), 0);
+      }
+    }
+    exact_comparisons += filtered.exact_comparisons;
+  }
+  EXPECT_GT(exact_comparisons, 0);  // the ties reached the exact test
+}
 
 TEST(ZBufferKind, ThreeOverlappingPolygonsLikeSeed001) {
   const ProblemResult r = solve_yaml(one("zbuffer", kThreePolygons));

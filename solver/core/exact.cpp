@@ -11,12 +11,14 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "solver/core/rational_power.hpp"
+#include "solver/core/trig_radicals.hpp"
 #include "solver/core/work_budget.hpp"
 
 namespace frustum {
@@ -238,10 +240,12 @@ ex combine_radicals(const ex& e) {
 }
 
 // Bottom-up pass that rewrites radicals of rationals (children first, so sin(sqrt(12))
-// and sums of products are reached).
+// and sums of products are reached), and sines, cosines and tangents of multiples of π/24 as
+// radicals (trig_radicals.hpp).
 struct SimplifyRadicals : GiNaC::map_function {
   ex operator()(const ex& e) override {
     const ex mapped = e.map(*this);
+    if (ex radical; trig_radical(mapped, radical)) return radical;
     if (is_a<GiNaC::power>(mapped)) return simplify_power(mapped);
     if (is_a<GiNaC::mul>(mapped)) return combine_radicals(mapped);
     return mapped;
@@ -398,6 +402,15 @@ ex rationalize_denominator(const ex& e, WorkBudget& budget) {
 
 // ---- Zero of nested square roots (GiNaC does not denest √(5 + 2√6) = √2 + √3) ----
 
+// ⌈log10 |x|⌉ of a positive numeric of any size (x.to_double() over- or underflows beyond
+// 10^±308), from its numerator's and denominator's bit lengths (a float is made rational).
+long decimal_exponent(const numeric& x) {
+  const numeric q = x.is_rational() ? x : numeric(cln::rational(cln::the<cln::cl_R>(x.to_cl_N())));
+  const double bits = static_cast<double>(cln::integer_length(to_cl_i(q.numer()))) -
+                      static_cast<double>(cln::integer_length(to_cl_i(q.denom())));
+  return static_cast<long>(std::ceil(bits * 0.30102999566398120)) + 1;
+}
+
 // Square roots nested this deep in number, or polynomials of this degree or this many terms,
 // are not attempted.
 constexpr std::size_t kMaxZeroProofRadicals = 6;
@@ -467,55 +480,95 @@ ex eliminate_square_root(const ex& r, const GiNaC::symbol& y, const ex& a, const
   return (a * u * u - b * v * v).expand();
 }
 
-bool proven_zero(const Exact& e) {
-  {
-    // Cheap on ordinary values: one evaluation shows most are far from 0.
-    const DigitsGuard guard(kSignDigits[0]);
-    numeric approx, scale = 1;
-    SharedEvalf evalf;  // the terms' parts were evaluated with the whole
-    if (!evaluate_real(e, approx, &evalf)) return false;
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      numeric term;
-      if (evaluate_real(e.op(i), term, &evalf)) scale += GiNaC::abs(term);
-    }
-    if (GiNaC::abs(approx) > scale / numeric(10).power(kSignDigits[0] / 2)) return false;
-  }
+// The sign of a real constant built from rationals and square roots (nested or not), decided
+// through the polynomial R above whatever the value's size: its numerator N is a root of R, and
+// every root of R other than 0 has |x| ≥ |r_k|/(|r_k| + max|rᵢ|) (r_k the lowest non-zero
+// coefficient), so N evaluated to a tenth of that bound is 0 when it is below the tenth and has
+// the evaluation's sign otherwise. The denominator's sign is decided the same way. nullopt when
+// unproven (too many roots, other radicals, a polynomial beyond the bounds).
+std::optional<int> radical_sign(const Exact& e, int depth = 0) {
+  if (is_a<numeric>(e) && ex_to<numeric>(e).is_rational()) return exact_sign(e);
   RootsToSymbols to_symbols;
   const ex in_symbols = to_symbols(e);
   if (to_symbols.unsupported || to_symbols.roots.empty() ||
       to_symbols.roots.size() > kMaxZeroProofRadicals)
-    return false;
-  const ex numerator = in_symbols.normal().numer_denom().op(0).expand();
+    return std::nullopt;
+  const ex parts = in_symbols.normal().numer_denom();
+  const ex numerator = parts.op(0).expand();
   const GiNaC::symbol x;
   ex r = (x - numerator).expand();
   for (std::size_t i = to_symbols.roots.size(); i-- > 0;) {
     const auto& [base, y] = to_symbols.roots[i];
-    const ex parts = base.normal().numer_denom();
-    if (is_a<GiNaC::add>(r) && r.nops() > kMaxZeroProofTerms) return false;
-    r = eliminate_square_root(r, y, parts.op(1), parts.op(0));
-    if (!r.is_polynomial(x) || r.degree(x) > kMaxZeroProofDegree) return false;
+    const ex base_parts = base.normal().numer_denom();
+    if (is_a<GiNaC::add>(r) && r.nops() > kMaxZeroProofTerms) return std::nullopt;
+    r = eliminate_square_root(r, y, base_parts.op(1), base_parts.op(0));
+    if (!r.is_polynomial(x) || r.degree(x) > kMaxZeroProofDegree) return std::nullopt;
   }
   for (const auto& [base, y] : to_symbols.roots)
-    if (r.has(y)) return false;
-  if (r.is_zero()) return false;
+    if (r.has(y)) return std::nullopt;
+  if (r.is_zero()) return std::nullopt;
   const int k = r.ldegree(x);
-  if (k == 0) return false;  // 0 is not a root of R: e ≠ 0
   numeric low = GiNaC::abs(ex_to<numeric>(r.coeff(x, k))), high = 0;
   for (int i = k + 1; i <= r.degree(x); ++i) {
     const ex c = r.coeff(x, i);
-    if (!is_a<numeric>(c)) return false;
+    if (!is_a<numeric>(c)) return std::nullopt;
     high = std::max(high, GiNaC::abs(ex_to<numeric>(c)));
   }
   const numeric separation = low / (low + high);
-  // N at enough digits to resolve a tenth of the separation.
+  // N at enough digits to resolve a tenth of the separation, counted from the size of N's terms
+  // (its rounding is relative to them): a solid scaled by 10¹⁰⁰ needs a hundred digits more per
+  // degree than the same at size 1, and the proof must not fail for lack of them.
   GiNaC::exmap values;
   for (std::size_t i = 0; i < to_symbols.roots.size(); ++i)
     values[to_symbols.roots[i].second] = to_symbols.values[i];
-  const long digits = 30 + static_cast<long>(std::ceil(-std::log10(separation.to_double())));
-  const DigitsGuard guard(std::min(digits, 400L));
+  const ex n = numerator.subs(values);
+  numeric terms_size = 1;
+  {
+    const DigitsGuard guard(kSignDigits[0]);
+    if (is_a<GiNaC::add>(n))
+      for (std::size_t i = 0; i < n.nops(); ++i)
+        if (numeric term; evaluate_real(n.op(i), term)) terms_size += GiNaC::abs(term);
+  }
+  const long digits = 30 + decimal_exponent(terms_size) - decimal_exponent(separation);
+  if (digits > kMaxEvaluationDigits) return std::nullopt;
   numeric value;
-  if (!evaluate_real(numerator.subs(values), value)) return false;
-  return GiNaC::abs(value) * 10 < separation;
+  {
+    const DigitsGuard guard(digits);
+    if (!evaluate_real(n, value)) return std::nullopt;
+  }
+  int numerator_sign = 0;
+  if (GiNaC::abs(value) * 10 < separation) {
+    if (k == 0) return std::nullopt;  // 0 is not a root of R: the bound was not met
+    numerator_sign = 0;
+  } else if (GiNaC::abs(value) * 10 >= separation * 9) {
+    numerator_sign = value.is_positive() ? 1 : -1;
+  } else {
+    return std::nullopt;
+  }
+  if (numerator_sign == 0) return 0;
+  const ex denominator = parts.op(1);
+  if (is_a<numeric>(denominator)) return numerator_sign * exact_sign(denominator);
+  if (depth > 0) return std::nullopt;
+  const std::optional<int> d = radical_sign(denominator.subs(values).expand(), depth + 1);
+  if (!d || *d == 0) return std::nullopt;
+  return numerator_sign * *d;
+}
+
+// Proves e = 0 (radical_sign), after one evaluation that shows most values are far from 0.
+bool proven_zero(const Exact& e) {
+  {
+    const DigitsGuard guard(kSignDigits[0]);
+    numeric approx, magnitude = 0;
+    SharedEvalf evalf;  // the terms' parts were evaluated with the whole
+    if (!evaluate_real(e, approx, &evalf)) return false;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      numeric term;
+      if (evaluate_real(e.op(i), term, &evalf)) magnitude += GiNaC::abs(term);
+    }
+    if (GiNaC::abs(approx) > magnitude / numeric(10).power(kSignDigits[0] / 2)) return false;
+  }
+  const std::optional<int> sign = radical_sign(e);
+  return sign && *sign == 0;
 }
 
 // False, with the budget marked exceeded, when x is too large a tree to keep (kMaxExactNodes).
@@ -558,10 +611,32 @@ bool canonical_simple_root(const ex& e, ex& out) {
   return true;
 }
 
+// True when e is already canonical as a sum of rationals and c·√k (c rational, k a square-free
+// integer below kTrialLimit², so split_root finishes by trial division), with at most one term
+// per radical, which GiNaC's sums keep collected: the shape of a depth interpolated between
+// vertices with one square root among them. canonical(e, budget) returns such a sum unchanged
+// (exact_test compares the two); the z-buffer canonicalised 65,536 of them, each through the
+// whole pass, in seconds.
+bool canonical_sum_of_square_roots(const ex& e) {
+  if (!is_a<GiNaC::add>(e)) return false;
+  for (std::size_t i = 0; i < e.nops(); ++i) {
+    const ex& term = e.op(i);
+    if (is_rational(term)) continue;
+    RationalPower parts;
+    if (!rational_power(term, parts) || parts.exponent != numeric(1, 2) ||
+        !parts.base.is_pos_integer() ||
+        parts.base >= numeric(static_cast<long>(kTrialLimit * kTrialLimit)))
+      return false;
+    if (split_root(to_cl_i(parts.base), 2).coeff != 1) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 Exact canonical(const Exact& e) {
   if (ex simple; canonical_simple_root(e, simple)) return simple;
+  if (canonical_sum_of_square_roots(e)) return e;
   WorkBudget budget;
   return canonical(e, budget);
 }
@@ -743,7 +818,9 @@ int exact_sign(const Exact& e) {
     const DigitsGuard guard(digits);
     numeric value;
     if (!evaluate_real(expanded, value)) throw std::domain_error("exact_sign: not real");
-    numeric scale = 1;
+    // Relative to the terms' size, not to 1: the sign of a sum of terms of 10⁻³⁰⁰ is decided
+    // as that of terms of 1 (a solid scaled by 10⁻¹⁰⁰ was refused where one of size 1 solves).
+    numeric scale = GiNaC::abs(value);
     if (is_a<GiNaC::add>(expanded)) {
       numeric sum = 0;
       for (std::size_t i = 0; i < expanded.nops(); ++i) {
@@ -755,7 +832,12 @@ int exact_sign(const Exact& e) {
     const numeric bound = numeric(1) / numeric(10).power(digits - kGuardDigits) * scale;
     if (GiNaC::abs(value) > bound) return value.is_positive() ? 1 : -1;
   }
-  if (canonical(e).is_zero() || proven_zero(expanded)) return 0;
+  // Exactly: the canonical form (a rational, or 0), else the root-separation bound, which
+  // decides any sum of up to kMaxZeroProofRadicals square roots whatever its size.
+  const ex simplest = canonical(e);
+  if (is_rational(simplest)) return exact_sign(simplest);
+  if (const std::optional<int> sign = radical_sign(trig_to_radicals(expanded).expand()))
+    return *sign;
   throw UndecidedSign("the sign of a value that is 0 to " +
                       std::to_string(kSignDigits[std::size(kSignDigits) - 1] - kGuardDigits) +
                       " digits could not be proven: exact arithmetic cannot tell whether it is 0 "

@@ -883,12 +883,18 @@ constexpr Phrase kPhrases[] = {
      "вычисленные из них значения сохраняют мало верных цифр или ни одной, а каждый дискретный "
      "ответ решён "
      "по точным входным данным."},
-    {"some values exceed the range of {0} and are infinite or not a number; the exact backend has "
-     "no limit.",
-     "一部の値は {0} の範囲を超え, 無限大か非数になった. 厳密計算には範囲の限界がない.",
-     "некоторые значения выходят за диапазон {0} и равны бесконечности или не являются числом; у "
-     "точного "
-     "вычисления нет такого предела."},
+    {"some values exceed the range of {0} and are infinite; exact answers are computed up to "
+     "about 1.8·10³⁰⁸ (the range of a double).",
+     "一部の値は {0} の範囲を超えて無限大になった. 厳密計算の答えは約 1.8·10³⁰⁸ (double の範囲) "
+     "まで求められる.",
+     "некоторые значения выходят за диапазон {0} и равны бесконечности; точные ответы "
+     "вычисляются до примерно 1,8·10³⁰⁸ (диапазон double)."},
+    {"some values are not a number: an operation without a value in {0} (0/0 or ∞ − ∞, after a "
+     "cancellation or an overflow); solve with --precision exact for the exact values.",
+     "一部の値は非数になった: {0} で値をもたない演算 (桁落ちやオーバーフローの後の 0/0 や ∞ − ∞) "
+     "による. 厳密な値は `--precision exact` で求められる.",
+     "некоторые значения не являются числом: операция без значения в {0} (0/0 или ∞ − ∞ после "
+     "потери точности или переполнения); точные значения даёт `--precision exact`."},
     {"some values are below the normal range of {0} (subnormal, or flushed to 0): they keep few or "
      "none of "
      "their digits.",

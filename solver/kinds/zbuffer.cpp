@@ -14,6 +14,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/raster/filtered_depth.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -145,7 +146,8 @@ struct ZBuffer {
 
   static Answers solve(const Given& g, Derivation* steps) {
     FrameBuffer frame(g.width, g.height, kBackground);
-    DepthBuffer<Exact> depth(g.width, g.height, std::nullopt);
+    FilteredDepthBuffer filtered(g.width, g.height);
+    const DepthBuffer<Exact>& depth = filtered.exact;
     const bool show = g.width <= kMaxShownSize && g.height <= kMaxShownSize;
     if (steps) {
       steps->note(
@@ -183,14 +185,14 @@ struct ZBuffer {
           throw DomainError("polygons[" + std::to_string(k) + "].points", e.what());
         }
         if (t.degenerate) ++degenerate;
-        const DrawCount n = draw_triangle<Exact>(
-            t, z, p.label, depth, frame,
-            [](const Exact& a, const Exact& b) { return exact_sign(a - b) < 0; });
+        const DrawCount n = draw_triangle_filtered(t, z, p.label, filtered, frame);
         total.covered += n.covered;
         total.written += n.written;
       }
-      for (auto& cell : depth.data)
-        if (cell) *cell = canonical(*cell);
+      // Only the cells this polygon wrote hold new values (the others are canonical already).
+      for (const std::size_t cell : filtered.written)
+        filtered.exact.data[cell] = canonical(*filtered.exact.data[cell]);
+      filtered.written.clear();
       after.push_back(joined(frame_rows(frame)));
       if (steps) {
         Step& s =

@@ -144,12 +144,20 @@ class NumericOut {
   }
 
   NumericResult take() {
+    const std::string name(to_string(r_.precision));
+    // The exact backend is not unlimited: its answers are printed as doubles too and are
+    // refused beyond double's range.
     if (overflow_)
-      warn("Overflow", "some values exceed the range of " + std::string(to_string(r_.precision)) +
-                           " and are infinite or not a number; the exact backend has no limit.");
+      warn("Overflow", "some values exceed the range of " + name +
+                           " and are infinite; exact answers are computed up to about 1.8·10³⁰⁸ "
+                           "(the range of a double).");
+    if (not_a_number_)
+      warn("Not a number", "some values are not a number: an operation without a value in " + name +
+                               " (0/0 or ∞ − ∞, after a cancellation or an overflow); solve with "
+                               "--precision exact for the exact values.");
     if (underflow_)
       warn("Underflow",
-           "some values are below the normal range of " + std::string(to_string(r_.precision)) +
+           "some values are below the normal range of " + name +
                " (subnormal, or flushed to 0): they keep few or none of their digits.");
     return std::move(r_);
   }
@@ -169,7 +177,10 @@ class NumericOut {
         value.numbers.push_back(to_double(value.exact.back()));
       } else {
         value.numbers.push_back(static_cast<double>(x));
-        overflow_ = overflow_ || !std::isfinite(x);
+        // An infinity is an overflow; a NaN is an operation without a value (0/0 after a
+        // cancellation, ∞ − ∞), which is no overflow by itself.
+        overflow_ = overflow_ || std::isinf(x);
+        not_a_number_ = not_a_number_ || std::isnan(x);
         underflow_ = underflow_ || (x != T(0) && std::abs(x) < std::numeric_limits<T>::min());
       }
     }
@@ -178,7 +189,7 @@ class NumericOut {
   }
 
   NumericResult r_;
-  bool overflow_ = false, underflow_ = false;
+  bool overflow_ = false, underflow_ = false, not_a_number_ = false;
 };
 
 }  // namespace frustum

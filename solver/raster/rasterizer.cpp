@@ -53,14 +53,22 @@ std::int64_t to_fixed(const Exact& v, bool& off_grid) {
     off_grid = off_grid || !n.is_integer();
     return n.is_negative() ? -k : k;
   }
-  // An irrational coordinate: the double's rounding, checked exactly against the half-way
-  // points on either side (it is never on the grid).
-  off_grid = true;
-  std::int64_t k = to_fixed(d);
+  // Any other exact value (a radical, a nested radical, a trigonometric value, or a rational
+  // GiNaC holds unreduced, such as (√2 + 1)(√2 − 1)): the same rule, k = sign(q)·⌊|q| + ½⌋,
+  // decided by exact signs of |q| against the half-way points next to the double's rounding.
+  // |q| = k + ½ exactly rounds up (away from zero) on both sides of 0.
+  const int sign = exact_sign(q);
+  if (sign == 0) return 0;
+  const Exact magnitude = sign > 0 ? q : Exact(-q);
   const auto half_above = [](std::int64_t c) { return Exact(static_cast<long>(c)) + Exact(1) / 2; };
-  while (exact_sign(q - half_above(k - 1)) < 0) --k;  // q < k − ½
-  while (exact_sign(q - half_above(k)) >= 0) ++k;     // q ≥ k + ½
-  return k;
+  std::int64_t k = std::abs(to_fixed(d));
+  while (k > 0 && exact_sign(magnitude - half_above(k - 1)) < 0) --k;  // |q| < k − ½
+  while (exact_sign(magnitude - half_above(k)) >= 0) ++k;              // |q| ≥ k + ½
+  // On the grid only when |q| is k exactly; a double this far from k proves it is not.
+  const double distance =
+      std::abs(std::abs(d) * static_cast<double>(kSubpixelScale) - static_cast<double>(k));
+  off_grid = off_grid || distance > 1e-6 || exact_sign(magnitude - static_cast<long>(k)) != 0;
+  return sign * k;
 }
 
 TriangleSetup setup_triangle_exact(const std::array<Vec2<Exact>, 3>& window) {
