@@ -246,7 +246,10 @@ class ProblemGrader {
   }
 
   // Is the answer what the kind recomputes from these earlier answers of the student's?
-  bool follows(const AnswerGrade& ag, const Answers& inputs) const {
+  bool follows(const AnswerGrade& ag, Answers inputs) const {
+    // The answer itself too: where the method allows choices (the plane through any vertex),
+    // the kind recomputes the one the student made.
+    inputs.set(ag.name, *ag.got);
     const Answers carried = spec_.info->carry_forward(spec_.given, inputs);
     const Value* follow = carried.find(ag.name);
     return follow && compare(*follow, *ag.got, rules(ag.name, false)).verdict == Verdict::Correct;
