@@ -236,29 +236,41 @@ std::optional<Comparison> trivial_match(const Value& expected, const Value& got,
   return std::nullopt;
 }
 
-// Credit per component that shows work: the components a trivial answer also gets right do not
-// count, neither in what the student got nor in what there was to get.
+// Credit per component that shows work (docs/grading.md §4). An entry counts when it takes
+// work — no answer written without work (zero, identity, a copy of the given) has it right —
+// or when the student got it wrong anyway. The transposed key does not make an entry free: a
+// diagonal takes the same work in either convention. So a wrong answer never earns full
+// points, and tan for cot in both scale entries of a perspective matrix loses both.
 std::optional<Comparison> component_credit(const Value& expected, const Value& got,
                                            const ComponentJudge& judge, const AnswerRules& r) {
-  std::size_t shown = 0, right = 0;
+  std::size_t counted = 0, right = 0, free_wrong = 0;
   for (std::size_t i = 0; i < expected.numbers.size(); ++i) {
     bool free = false;
     if (r.trivial)
       for (const TrivialAnswer& t : *r.trivial)
-        free = free || judge.ok(i, expected.numbers[i], t.value.numbers[i]);
-    if (free) continue;
-    ++shown;
-    right += judge.ok(i, expected.numbers[i], got.numbers[i]);
+        free = free || (t.no_work && judge.ok(i, expected.numbers[i], t.value.numbers[i]));
+    const bool ok = judge.ok(i, expected.numbers[i], got.numbers[i]);
+    if (free && ok) continue;
+    ++counted;
+    right += ok;
+    free_wrong += free && !ok;
   }
-  if (right == 0 || shown == 0) return std::nullopt;
+  if (right == 0 || counted == 0 || right == counted) return std::nullopt;
   const bool matrix = expected.shape == Value::Shape::Matrix;
+  const char* what = matrix ? "entries" : "components";
+  const std::size_t work = counted - free_wrong;
+  std::string feedback =
+      free_wrong == 0 ? fmt::format("{} of the {} {} that take work are right{}", right, work, what,
+                                    counted < expected.numbers.size()
+                                        ? " (entries a trivial answer also has do not count)"
+                                        : "")
+                      : fmt::format(
+                            "{} of the {} {} that take work are right, and {} of those that take "
+                            "no work are wrong: {} of {} counted",
+                            right, work, what, free_wrong, right, counted);
   return Comparison{Verdict::Partial,
-                    static_cast<double>(right) / static_cast<double>(shown),
-                    fmt::format("{} of the {} {} that take work are right{}", right, shown,
-                                matrix ? "entries" : "components",
-                                shown < expected.numbers.size()
-                                    ? " (entries a trivial answer also has do not count)"
-                                    : ""),
+                    static_cast<double>(right) / static_cast<double>(counted),
+                    std::move(feedback),
                     {}};
 }
 
