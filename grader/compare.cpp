@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <set>
 
 #include "grader/list_items.hpp"
 #include "grader/statement_choice.hpp"
 #include "solver/util/exact_format.hpp"
+#include "solver/util/expression.hpp"
 #include "solver/util/words.hpp"
 
 namespace frustum {
@@ -53,7 +55,54 @@ bool exactly_equal(const Value& a, const Value& b) {
 }
 
 ComponentJudge judge_of(const Value& expected, const AnswerRules& r) {
-  return ComponentJudge(expected, r.spec->kind, r.tol, r.scale);
+  return ComponentJudge(expected, r.spec->kind, r.tol, r.scale, r.unit_exponent);
+}
+
+// A component whose double does not hold it: 0 or subnormal for a non-zero exact number (below
+// 2.2·10⁻³⁰⁸), or infinite.
+bool beyond_double(const Value& v) {
+  for (std::size_t i = 0; i < v.numbers.size(); ++i) {
+    const double x = v.numbers[i];
+    if (!std::isfinite(x)) return i < v.exact.size();
+    if (std::abs(x) < std::numeric_limits<double>::min() && i < v.exact.size() &&
+        !v.exact[i].is_zero())
+      return true;
+  }
+  return false;
+}
+
+// ⌊log₂ |e|⌋ to within one, for any size; nothing for 0 or a value that is no real number.
+std::optional<long> binary_exponent(const Exact& e) {
+  try {
+    const GiNaC::numeric q = rational_near(canonical(e));
+    if (q.is_zero()) return std::nullopt;
+    return GiNaC::abs(q.numer()).int_length() - q.denom().int_length();
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// The largest binary exponent of v's exact components.
+std::optional<long> largest_exponent(const Value& v) {
+  std::optional<long> out;
+  for (const Exact& e : v.exact)
+    if (const auto k = binary_exponent(e); k && (!out || *k > *out)) out = k;
+  return out;
+}
+
+// v times 2⁻ᵏ, exactly, its doubles taken again from the scaled exact numbers.
+Value scaled(const Value& v, long k) {
+  Value out = v;
+  const Exact factor = GiNaC::numeric(2).power(GiNaC::numeric(-k));
+  for (std::size_t i = 0; i < out.numbers.size(); ++i) {
+    if (i < out.exact.size()) {
+      out.exact[i] = canonical(out.exact[i] * factor);
+      out.numbers[i] = to_double(out.exact[i]);
+    } else {
+      out.numbers[i] = std::ldexp(out.numbers[i], static_cast<int>(-k));
+    }
+  }
+  return out;
 }
 
 // Rows of `cols` numbers (a polygon's or a segment's vertices).
@@ -165,29 +214,63 @@ std::string shape_text(const Value& v) {
                                          : fmt::format("{} components", v.numbers.size());
 }
 
-// Credit per component that shows work: the components a trivial answer also gets right do not
-// count, neither in what the student got nor in what there was to get.
+// The trivial answer (trivial.hpp) that `got` is as a whole, if any: a wrong answer equal to the
+// zero vector, the identity, a list copied from the given or the transposed key.
+std::optional<Comparison> trivial_match(const Value& expected, const Value& got,
+                                        const ComponentJudge& judge, const AnswerRules& r) {
+  if (!r.trivial) return std::nullopt;
+  for (const TrivialAnswer& t : *r.trivial) {
+    if (t.value.numbers.size() != got.numbers.size() ||
+        judge.all(expected.numbers, t.value.numbers))
+      continue;
+    // A homogeneous point is the copy at any positive multiple ((2, 4, −10, 2) for (1, 2, −5)).
+    const bool is_copy =
+        ComponentJudge(t.value, r.spec->kind, r.tol, nullptr).all(t.value.numbers, got.numbers) ||
+        (r.spec->kind == AnswerKind::Point && multiple_of(t.value, got, r) == Multiple::Positive);
+    if (!is_copy) continue;
+    Comparison c = incorrect(t.feedback);
+    c.trivial = t.name;
+    c.no_work = t.no_work;
+    return c;
+  }
+  return std::nullopt;
+}
+
+// Credit per component that shows work (docs/grading.md §4). An entry counts when it takes
+// work — no answer written without work (zero, identity, a copy of the given) has it right —
+// or when the student got it wrong anyway. The transposed key does not make an entry free: a
+// diagonal takes the same work in either convention. So a wrong answer never earns full
+// points, and tan for cot in both scale entries of a perspective matrix loses both.
 std::optional<Comparison> component_credit(const Value& expected, const Value& got,
                                            const ComponentJudge& judge, const AnswerRules& r) {
-  std::size_t shown = 0, right = 0;
+  std::size_t counted = 0, right = 0, free_wrong = 0;
   for (std::size_t i = 0; i < expected.numbers.size(); ++i) {
     bool free = false;
     if (r.trivial)
       for (const TrivialAnswer& t : *r.trivial)
-        free = free || judge.ok(i, expected.numbers[i], t.value.numbers[i]);
-    if (free) continue;
-    ++shown;
-    right += judge.ok(i, expected.numbers[i], got.numbers[i]);
+        free = free || (t.no_work && judge.ok(i, expected.numbers[i], t.value.numbers[i]));
+    const bool ok = judge.ok(i, expected.numbers[i], got.numbers[i]);
+    if (free && ok) continue;
+    ++counted;
+    right += ok;
+    free_wrong += free && !ok;
   }
-  if (right == 0 || shown == 0) return std::nullopt;
+  if (right == 0 || counted == 0 || right == counted) return std::nullopt;
   const bool matrix = expected.shape == Value::Shape::Matrix;
+  const char* what = matrix ? "entries" : "components";
+  const std::size_t work = counted - free_wrong;
+  std::string feedback =
+      free_wrong == 0 ? fmt::format("{} of the {} {} that take work are right{}", right, work, what,
+                                    counted < expected.numbers.size()
+                                        ? " (entries a trivial answer also has do not count)"
+                                        : "")
+                      : fmt::format(
+                            "{} of the {} {} that take work are right, and {} of those that take "
+                            "no work are wrong: {} of {} counted",
+                            right, work, what, free_wrong, right, counted);
   return Comparison{Verdict::Partial,
-                    static_cast<double>(right) / static_cast<double>(shown),
-                    fmt::format("{} of the {} {} that take work are right{}", right, shown,
-                                matrix ? "entries" : "components",
-                                shown < expected.numbers.size()
-                                    ? " (entries a trivial answer also has do not count)"
-                                    : ""),
+                    static_cast<double>(right) / static_cast<double>(counted),
+                    std::move(feedback),
                     {}};
 }
 
@@ -300,14 +383,7 @@ Comparison compare_components(const Value& expected, const Value& got, const Ans
     if (m == Multiple::Negative)
       return incorrect("it points the opposite way: check the order of the cross product");
   }
-  if (r.trivial)
-    for (const TrivialAnswer& t : *r.trivial)
-      if (judge.all(expected.numbers, t.value.numbers) == false &&
-          ComponentJudge(t.value, kind, r.tol, nullptr).all(t.value.numbers, got.numbers)) {
-        Comparison c = incorrect(t.feedback);
-        c.trivial = t.name;
-        return c;
-      }
+  if (auto c = trivial_match(expected, got, judge, r)) return *c;
   if (r.partial &&
       (kind == AnswerKind::Vector || kind == AnswerKind::Matrix || kind == AnswerKind::Transform))
     if (auto c = component_credit(expected, got, judge, r)) return *c;
@@ -333,6 +409,25 @@ std::vector<std::string> items_read(const Value& got, const Value& expected, con
   if (r.spec->unordered_pairs)
     for (std::string& item : items) item = pair_as_in_key(item, expected.words);
   return items;
+}
+
+// A list answer with an item that cannot be one of its items (list_items.hpp) cannot be read:
+// `unparseable` with the reason, never a wrong order or set.
+std::optional<Comparison> unreadable_list(const std::vector<std::string>& items,
+                                          const Value& expected, const AnswerRules& r) {
+  const std::string bad = unreadable_item(items, expected.words, r.spec->unordered_pairs);
+  if (bad.empty()) return std::nullopt;
+  const std::string item = quote_excerpt(bad);
+  return Comparison{Verdict::Unparseable,
+                    0.0,
+                    r.spec->unordered_pairs
+                        ? fmt::format("cannot read {} as a pair such as 0-1: write the items "
+                                      "separated by commas, spaces or arrows",
+                                      item)
+                        : fmt::format("cannot read {} as an item of this list: write the items "
+                                      "separated by commas, spaces or arrows",
+                                      item),
+                    {}};
 }
 
 // A word map's keys ("1-0": an edge) in the key's spelling when they are unordered pairs.
@@ -377,9 +472,58 @@ Comparison compare_word_map(const Value& expected, const Value& got) {
                 : "");
 }
 
+bool numeric_kind(AnswerKind kind) {
+  switch (kind) {
+    case AnswerKind::Scalar:
+    case AnswerKind::Vector:
+    case AnswerKind::Direction:
+    case AnswerKind::UnitVector:
+    case AnswerKind::Plane:
+    case AnswerKind::Matrix:
+    case AnswerKind::Transform:
+    case AnswerKind::Segment:
+    case AnswerKind::PointSet:
+    case AnswerKind::Point:
+    case AnswerKind::Polygon:
+      return true;
+    default:
+      return false;
+  }
+}
+
 }  // namespace
 
 Comparison compare(const Value& expected, const Value& got, const AnswerRules& r) {
+  // Numbers beyond double's range (a dot product of −10⁻³⁸⁰ is 0 as a double) are compared
+  // scaled by one power of two, exactly, that brings the key's largest component near 1: every
+  // window, magnitude and threshold scales with them, so signs and relative errors are judged as
+  // at any other size. A magnitude the kind computed in doubles that under- or overflowed is
+  // replaced by the key's own largest component.
+  if (r.unit_exponent == 0 && numeric_kind(r.spec->kind) &&
+      (beyond_double(expected) || beyond_double(got))) {
+    std::optional<long> k = largest_exponent(expected);
+    if (!k) k = largest_exponent(got);
+    if (k && *k != 0 && std::abs(*k) < (1L << 30)) {
+      const Value e = scaled(expected, *k), g = scaled(got, *k);
+      AnswerRules rules = r;
+      rules.unit_exponent = static_cast<int>(*k);
+      rules.trivial = nullptr;  // doubles of the given, not beyond its range
+      AnswerScale scale;
+      if (r.scale) {
+        const double own = max_abs(e.numbers);
+        for (const double m : r.scale->magnitude) {
+          const double sm = std::ldexp(m, -rules.unit_exponent);
+          scale.magnitude.push_back(std::isnormal(m) && std::isnormal(sm) ? sm : own);
+        }
+        for (const std::vector<double>& ts : r.scale->thresholds) {
+          scale.thresholds.emplace_back();
+          for (const double t : ts) scale.thresholds.back().push_back(std::ldexp(t, -*k));
+        }
+        rules.scale = &scale;
+      }
+      return compare(e, g, rules);
+    }
+  }
   if (expected.shape == Value::Shape::Null) {
     return got.shape == Value::Shape::Null ? correct("there is no such value")
                                            : incorrect("there is no such value here");
@@ -439,6 +583,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       if (max_abs(got.numbers) == 0 && all_finite_and_faithful(got)) {
         Comparison c = incorrect("The zero vector has no direction: it is no normal.");
         c.trivial = "zero vector";
+        c.no_work = true;
         return c;
       }
       const Multiple m = multiple_of(expected, got, r);
@@ -446,6 +591,8 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
         return correct("the same direction (a normal is right up to a positive factor)");
       if (m == Multiple::Negative)
         return incorrect("it points the opposite way: check the order of the cross product");
+      // A vertex or another given copied as the normal.
+      if (auto c = trivial_match(expected, got, judge_of(expected, r), r)) return *c;
       return incorrect("");
     }
     case AnswerKind::Plane: {
@@ -470,8 +617,10 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       return incorrect("");
     }
     case AnswerKind::WordList: {
+      const std::vector<std::string> items = items_read(got, expected, r);
+      if (auto c = unreadable_list(items, expected, r)) return *c;
       std::vector<std::string> a = folded(expected.words, expected.words),
-                               b = folded(items_read(got, expected, r), expected.words);
+                               b = folded(items, expected.words);
       std::sort(a.begin(), a.end());
       std::sort(b.begin(), b.end());
       if (a == b) return correct("the same set (order does not matter)");
@@ -488,8 +637,10 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       return incorrect("");
     }
     case AnswerKind::Sequence: {
+      const std::vector<std::string> items = items_read(got, expected, r);
+      if (auto c = unreadable_list(items, expected, r)) return *c;
       const std::vector<std::string> a = folded(expected.words, expected.words),
-                                     b = folded(items_read(got, expected, r), expected.words);
+                                     b = folded(items, expected.words);
       if (a == b) return correct("");
       std::vector<std::string> sa = a, sb = b;
       std::sort(sa.begin(), sa.end());

@@ -26,6 +26,7 @@ struct Comparison {
   double credit = 0;     // fraction of the answer's points, 0..1
   std::string feedback;  // why, for the student
   std::string trivial;   // the trivial answer it is as a whole ("identity matrix"), if any
+  bool no_work = false;  // that trivial answer takes no work (TrivialAnswer::no_work)
 };
 
 // How one asked answer of one problem is judged; prepared once per problem.
@@ -36,6 +37,9 @@ struct AnswerRules {
   bool partial = false;                       // component credit
   bool linear_matrix = kLinearMatrixDefault;  // a purely linear transform as its linear part
   const std::vector<TrivialAnswer>* trivial = nullptr;  // of the key (trivial.hpp)
+  // The numbers are the true values times 2⁻ᵏ (set by compare() itself for values beyond
+  // double's range; see tolerance.hpp's window()).
+  int unit_exponent = 0;
 };
 
 Comparison compare(const Value& expected, const Value& got, const AnswerRules& rules);

@@ -135,6 +135,7 @@ class ProblemGrader {
     const std::string& name = spec_.ask[i];
     AnswerGrade ag;
     ag.name = name;
+    whole_trivial_ = false;
     ag.max_score = spec_.answer_points(name);
     ag.expected = *solved_.answers.find(name);
     const YAML::Node given = student.IsMap() ? student[name] : YAML::Node();
@@ -153,13 +154,16 @@ class ProblemGrader {
     if (parsed_[i].ok && !parsed_[i].note.empty())
       ag.feedback = parsed_[i].note + (ag.feedback.empty() ? "" : "; " + ag.feedback);
     verdicts_.emplace_back(name, ag.verdict);
+    // A trivial answer (zero, a given copied back, the identity…) carries nothing forward, and
+    // neither does a wrong answer computed from one, unless it earned carried credit of its own
+    // from another, worked earlier answer.
     if (ag.got && ag.verdict != Verdict::Correct) {
-      // A wrong answer computed from a trivial one is trivial too: it carries nothing forward.
-      bool from_trivial = all_zero_vector(*ag.got);
-      for (const std::string& d :
-           carry_inputs(*spec_.info, name, [&](const std::string& n) { return answers_.find(n); }))
-        from_trivial = from_trivial || is_trivial(d);
-      if (from_trivial) trivial_.push_back(name);
+      if (whole_trivial_ || all_zero_vector(*ag.got)) {
+        trivial_.push_back(name);
+        whole_.push_back(name);
+      } else if (!ag.carried_forward && !trivial_inputs(name).empty()) {
+        trivial_.push_back(name);
+      }
     }
     if (ag.verdict != Verdict::Correct) ag.derivation = solved_.derivation.steps_for(name);
     return ag;
@@ -170,6 +174,15 @@ class ProblemGrader {
     AnswerRules r = judging_.rules(spec_, name);
     if (!credit) r.partial = false;
     return r;
+  }
+
+  // The student's earlier answers `name` is computed from that are trivial.
+  std::vector<std::string> trivial_inputs(const std::string& name) const {
+    std::vector<std::string> out;
+    for (const std::string& d :
+         carry_inputs(*spec_.info, name, [&](const std::string& n) { return answers_.find(n); }))
+      if (d != name && is_trivial(d)) out.push_back(d);
+    return out;
   }
 
   bool is_trivial(const std::string& name) const {
@@ -190,6 +203,7 @@ class ProblemGrader {
     ag.verdict = c.verdict;
     ag.score = c.credit * ag.max_score;
     ag.feedback = c.feedback;
+    whole_trivial_ = c.no_work && ag.verdict != Verdict::Correct;
     if (!c.trivial.empty()) ag.misconception = c.trivial;
     if (ag.verdict == Verdict::Correct) return;
     if (c.trivial.empty()) diagnose(ag);
@@ -198,7 +212,8 @@ class ProblemGrader {
       ag.verdict = Verdict::Incorrect;
       ag.score = 0;
     }
-    carry_forward(ag);
+    // A trivial answer as a whole is named as such and never "follows" from anything.
+    if (!whole_trivial_) carry_forward(ag);
   }
 
   // Names the common mistake the answer matches, when it is true of the student's own answers:
@@ -235,6 +250,42 @@ class ProblemGrader {
     }
   }
 
+  // Is the answer what the kind recomputes from these earlier answers of the student's?
+  bool follows(const AnswerGrade& ag, Answers inputs) const {
+    // The answer itself too: where the method allows choices (the plane through any vertex),
+    // the kind recomputes the one the student made.
+    inputs.set(ag.name, *ag.got);
+    const Answers carried = spec_.info->carry_forward(spec_.given, inputs);
+    const Value* follow = carried.find(ag.name);
+    return follow && compare(*follow, *ag.got, rules(ag.name, false)).verdict == Verdict::Correct;
+  }
+
+  // A wrong answer that follows from trivial earlier answers is told why it earns nothing.
+  void say_trivial_inputs(AnswerGrade& ag) const {
+    const std::vector<std::string> used = trivial_inputs(ag.name);
+    if (used.empty()) return;
+    Answers inputs;
+    for (const std::string& n : carry_inputs(*spec_.info, ag.name, [&](const std::string& d) {
+           return d != ag.name && answers_.find(d);
+         }))
+      inputs.set(n, *answers_.find(n));
+    if (!follows(ag, inputs)) return;
+    const bool derived = std::any_of(used.begin(), used.end(), [&](const std::string& n) {
+      return std::find(whole_.begin(), whole_.end(), n) == whole_.end();
+    });
+    const std::string why =
+        "It follows from your own " + name_list(used) +
+        (derived ? ", which is computed from an answer that takes no work: nothing is carried "
+                   "forward from it."
+                 : ", which takes no work (zero, or copied from the given): nothing is carried "
+                   "forward from it.");
+    // A sentence of its own, so that each is translated whole.
+    if (ag.feedback.empty())
+      ag.feedback = why;
+    else
+      ag.feedback += (ag.feedback.back() == '.' ? " " : ". ") + why;
+  }
+
   // Error carried forward: right from the student's own earlier answers. When every earlier
   // answer it was recomputed from is itself right (a normal scaled by 2), so is this one.
   void carry_forward(AnswerGrade& ag) {
@@ -245,11 +296,10 @@ class ProblemGrader {
            return d != ag.name && answers_.find(d) && !is_trivial(d);
          }))
       inputs.set(n, *answers_.find(n));
-    if (inputs.items().empty()) return;
-    const Answers carried = spec_.info->carry_forward(spec_.given, inputs);
-    const Value* follow = carried.find(ag.name);
-    if (!follow || compare(*follow, *ag.got, rules(ag.name, false)).verdict != Verdict::Correct)
+    if (inputs.items().empty() || !follows(ag, inputs)) {
+      say_trivial_inputs(ag);
       return;
+    }
     std::vector<std::string> wrong, right;
     for (const auto& [n, v] : inputs.items())
       (verdict_of(n) == Verdict::Correct ? right : wrong).push_back(n);
@@ -280,7 +330,9 @@ class ProblemGrader {
   std::vector<ParsedAnswer> parsed_;
   Answers answers_;                                        // the parsed ones, by name
   std::vector<std::pair<std::string, Verdict>> verdicts_;  // graded so far
-  std::vector<std::string> trivial_;  // wrong answers computed from trivial ones
+  std::vector<std::string> trivial_;  // trivial answers, and wrong ones computed from them
+  std::vector<std::string> whole_;    // those of them that are trivial answers themselves
+  bool whole_trivial_ = false;        // the answer being judged is a trivial answer as a whole
 };
 
 ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,

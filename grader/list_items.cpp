@@ -139,4 +139,21 @@ std::string pair_as_in_key(const std::string& item, const std::vector<std::strin
   return p->a + "-" + p->b;
 }
 
+bool is_pair(const std::string& item) { return pair_of(item).has_value(); }
+
+std::string unreadable_item(const std::vector<std::string>& items,
+                            const std::vector<std::string>& key, bool pairs) {
+  const auto has_letter = [](const std::string& s) {
+    return std::any_of(s.begin(), s.end(), [](unsigned char c) {
+      return std::isalpha(c) != 0 || c >= 0x80;  // any letter, or any non-ASCII character
+    });
+  };
+  const bool numbers_only = !key.empty() && std::none_of(key.begin(), key.end(), has_letter);
+  for (const std::string& item : items) {
+    if (pairs && !is_pair(item)) return item;
+    if (numbers_only && has_letter(item)) return item;
+  }
+  return "";
+}
+
 }  // namespace frustum

@@ -20,4 +20,13 @@ std::vector<std::string> items_as_written(const std::vector<std::string>& got,
 // spelling when the key has that pair ("1-0" → "0-1"); otherwise the item as written.
 std::string pair_as_in_key(const std::string& item, const std::vector<std::string>& key);
 
+// Is the item written as an unordered pair ("a-b", "(a, b)")?
+bool is_pair(const std::string& item);
+
+// The first item that cannot be an item of this list, read against the key's items: a word
+// (any letter) where every item of the key is a number ("then" in "0 then 1"), or, where the
+// items are unordered pairs, an item that is no pair. Empty when every item can be one.
+std::string unreadable_item(const std::vector<std::string>& items,
+                            const std::vector<std::string>& key, bool pairs);
+
 }  // namespace frustum

@@ -11,21 +11,24 @@ double max_abs(const std::vector<double>& v, std::size_t begin, std::size_t end)
   return m;
 }
 
-double window(double expected, const Tolerance& tol, double magnitude) {
-  const double floor = std::max(tol.abs, tol.rel * std::abs(magnitude));
-  if (tol.decimals) return std::max(floor, 0.5 * std::pow(10.0, -*tol.decimals));
+double window(double expected, const Tolerance& tol, double magnitude, int unit_exponent) {
+  const double abs = unit_exponent == 0 ? tol.abs : std::ldexp(tol.abs, -unit_exponent);
+  const double floor = std::max(abs, tol.rel * std::abs(magnitude));
+  // log10 of 2ᵏ: the decimal digits the scaled numbers are shifted by.
+  const double shift = unit_exponent * 0.30102999566398120;
+  if (tol.decimals) return std::max(floor, 0.5 * std::pow(10.0, -*tol.decimals - shift));
   if (tol.sigfigs) {
     if (expected == 0) return floor;
-    const double digit = std::floor(std::log10(std::abs(expected)));
-    return std::max(floor, 0.5 * std::pow(10.0, digit - *tol.sigfigs + 1));
+    const double digit = std::floor(std::log10(std::abs(expected)) + shift);
+    return std::max(floor, 0.5 * std::pow(10.0, digit - *tol.sigfigs + 1 - shift));
   }
   return std::max(floor, tol.rel * std::abs(expected));
 }
 
-bool close(double expected, double got, const Tolerance& tol, double magnitude) {
+bool close(double expected, double got, const Tolerance& tol, double magnitude, int unit_exponent) {
   if (!std::isfinite(got) || !std::isfinite(expected)) return false;
   // A little slack for the rounding of the window itself (0.5 at the last digit).
-  return std::abs(got - expected) <= window(expected, tol, magnitude) * (1 + 1e-12);
+  return std::abs(got - expected) <= window(expected, tol, magnitude, unit_exponent) * (1 + 1e-12);
 }
 
 namespace {
@@ -64,8 +67,8 @@ std::vector<double> default_magnitudes(const Value& e, AnswerKind kind) {
 }  // namespace
 
 ComponentJudge::ComponentJudge(const Value& expected, AnswerKind kind, const Tolerance& tol,
-                               const AnswerScale* declared)
-    : tol_(tol) {
+                               const AnswerScale* declared, int unit_exponent)
+    : tol_(tol), unit_exponent_(unit_exponent) {
   const std::size_t n = expected.numbers.size();
   if (declared && declared->magnitude.size() == n)
     declared_ = &declared->magnitude;
@@ -85,12 +88,12 @@ double ComponentJudge::magnitude(std::size_t i, double e) const {
 }
 
 double ComponentJudge::window(std::size_t i, double e) const {
-  return frustum::window(e, tol_, magnitude(i, e));
+  return frustum::window(e, tol_, magnitude(i, e), unit_exponent_);
 }
 
 bool ComponentJudge::ok(std::size_t i, double e, double g) const {
   const double m = magnitude(i, e);
-  if (!close(e, g, tol_, m)) return false;
+  if (!close(e, g, tol_, m, unit_exponent_)) return false;
   if (!thresholds_) return true;
   // The side of each threshold: a student's number strictly on the other side is wrong unless
   // the expected one is within the noise floor of the threshold (its side is then not

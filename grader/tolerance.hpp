@@ -13,10 +13,13 @@
 namespace frustum {
 
 // The accepted half-width around `expected`: max(rel·|e|, rel·magnitude, abs) in rel mode;
-// sigfigs and decimals replace rel·|e| (see Tolerance).
-double window(double expected, const Tolerance& tol, double magnitude);
+// sigfigs and decimals replace rel·|e| (see Tolerance). `unit_exponent` k: the numbers are
+// the true values times 2⁻ᵏ (values beyond double's range, scaled exactly), so the absolute
+// parts of the window (abs, a decimal's or a significant digit's half unit) scale with them.
+double window(double expected, const Tolerance& tol, double magnitude, int unit_exponent = 0);
 // |got − expected| ≤ window (and both finite).
-bool close(double expected, double got, const Tolerance& tol, double magnitude);
+bool close(double expected, double got, const Tolerance& tol, double magnitude,
+           int unit_exponent = 0);
 
 // How each component of one expected value is judged: the kind's AnswerScale where it declares
 // one of the right size, else the default for the answer kind — a vector's or point's own
@@ -24,8 +27,9 @@ bool close(double expected, double got, const Tolerance& tol, double magnitude);
 // translation column, bottom row), a scalar's own size.
 class ComponentJudge {
  public:
+  // `unit_exponent`: see window().
   ComponentJudge(const Value& expected, AnswerKind kind, const Tolerance& tol,
-                 const AnswerScale* declared);
+                 const AnswerScale* declared, int unit_exponent = 0);
 
   // Component i of the expected value e against the student's g: within the window, and on
   // the same side of every threshold unless e lies within the noise floor of it.
@@ -39,6 +43,7 @@ class ComponentJudge {
   double magnitude(std::size_t i, double e) const;
 
   const Tolerance& tol_;
+  int unit_exponent_ = 0;
   const std::vector<double>* declared_ = nullptr;  // the kind's
   std::vector<double> computed_;                   // a matrix's rows or blocks
   double uniform_ = 0;                             // a vector's largest component

@@ -85,11 +85,12 @@ std::vector<TrivialAnswer> trivial_answers(const Value& key, AnswerKind kind,
   std::vector<TrivialAnswer> out;
   const std::size_t n = key.numbers.size();
   if (n < 2 || (key.shape != Value::Shape::Vector && key.shape != Value::Shape::Matrix)) return out;
-  const auto add = [&](std::string name, std::string feedback, std::vector<double> numbers) {
+  const auto add = [&](std::string name, std::string feedback, std::vector<double> numbers,
+                       bool no_work = true) {
     if (numbers.size() != n || same(numbers, key.numbers)) return;
     for (const TrivialAnswer& t : out)
       if (same(t.value.numbers, numbers)) return;
-    out.push_back({std::move(name), std::move(feedback), filled(key, numbers)});
+    out.push_back({std::move(name), std::move(feedback), filled(key, numbers), no_work});
   };
   const bool square = key.shape == Value::Shape::Matrix && key.rows == key.cols && key.rows >= 2;
   if (square) {
@@ -110,10 +111,11 @@ std::vector<TrivialAnswer> trivial_answers(const Value& key, AnswerKind kind,
               : "That is the transpose: the row-vector form p′ = p·M (as DirectX writes it). With "
                 "column "
                 "vectors p′ = M·p the translation stands in the last column.",
-          transposed);
+          transposed, false);
     else
       add("transposed matrix",
-          "That is the transpose of the expected matrix: rows and columns swapped.", transposed);
+          "That is the transpose of the expected matrix: rows and columns swapped.", transposed,
+          false);
   }
   add(square ? "zero matrix" : "zero vector", "Every entry is 0: that takes no computation.",
       std::vector<double>(n, 0.0));

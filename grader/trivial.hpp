@@ -17,6 +17,10 @@ struct TrivialAnswer {
   std::string name;      // "identity matrix" (a misconception name, translated in feedback)
   std::string feedback;  // what it is, for the student
   Value value;
+  // Zero, the identity, a copy of the given: written without any work, so nothing is carried
+  // forward from it. The transposed key is a convention mistake made with the whole
+  // computation: trivial for component credit, but what follows from it follows from work.
+  bool no_work = true;
 };
 
 // Every list of numbers in a problem's `given`, by field path ("points", "camera.eye"); a
@@ -24,6 +28,10 @@ struct TrivialAnswer {
 struct GivenList {
   std::string field;
   Value value;
+  // Zero, the identity, a copy of the given: written without any work, so nothing is carried
+  // forward from it. The transposed key is a convention mistake made with the whole
+  // computation: trivial for component credit, but what follows from it follows from work.
+  bool no_work = true;
 };
 std::vector<GivenList> given_lists(const YAML::Node& given);
 

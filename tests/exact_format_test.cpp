@@ -177,6 +177,25 @@ TEST(ExactFormat, PlainRadicalsOfRandomRationalsReparse) {
   }
 }
 
+// Issue 41: a key far beyond double's range is written as its digits and power of ten, never
+// as a 380-digit fraction, and its approximation is its own leading digits, never 0 or inf.
+TEST(ExactFormat, PowersOfTenBeyondDoublesRange) {
+  const numeric tiny = numeric(1) / numeric(10).power(380);
+  expect_formats({-tiny, "-1e-380", "−10⁻³⁸⁰", "-10^{-380}"});
+  expect_formats({17 * tiny * 10, "1.7e-378", "1.7·10⁻³⁷⁸", "1.7 \\cdot 10^{-378}"});
+  expect_formats({numeric(10).power(400), "1e400", "10⁴⁰⁰", "10^{400}"});
+  expect_formats(
+      {sqrt_of(21) * tiny, "sqrt(21)*1e-380", "√21·10⁻³⁸⁰", "\\sqrt{21} \\cdot 10^{-380}"});
+  // Short fractions and a long one that is no power of ten keep their form.
+  expect_formats({numeric(1, 1000), "1/1000", "1/1000", "\\frac{1}{1000}"});
+  EXPECT_NE(format_exact(tiny / 3, MathStyle::Plain).find("/3"), std::string::npos);
+  EXPECT_EQ(format_exact_approx(-tiny), "-1e-380");
+  EXPECT_EQ(format_exact_approx(17 * tiny), "1.7e-379");
+  EXPECT_EQ(format_exact_approx(numeric(10).power(400) * 3), "3e+400");
+  EXPECT_EQ(format_exact_approx(sqrt_of(21) * tiny), "4.583e-380");
+  EXPECT_EQ(format_exact_approx(numeric(1, 3)), format_approx(1.0 / 3));
+}
+
 TEST(ExactFormat, FormatDouble) {
   EXPECT_EQ(format_double(8.0), "8");
   EXPECT_EQ(format_double(-6.0), "-6");

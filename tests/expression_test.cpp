@@ -319,7 +319,11 @@ TEST(Expression, NotFiniteOrNotReal) {
 
 TEST(Expression, DecimalExponentIsBounded) {
   expect_error("1e999999", "exponent too large");
-  expect_error("1e401", "exponent too large");
+  expect_error("1e4933", "exponent too large");
+  expect_error("1e-4933", "exponent too large");
+  EXPECT_EQ(kMaxDecimalExponent, 4932);
+  expect_value("1e401", numeric(10).power(401));
+  expect_value("-1.7e-4931", numeric(-17) / numeric(10).power(4932));
   expect_error("1e99999999999999999999999999", "exponent too large");
   expect_value("1e400", numeric(10).power(400));
   expect_value("1e-400", numeric(1) / numeric(10).power(400));

@@ -96,7 +96,7 @@ MathText exact(const Exact& e, bool with_approx) {
   const Exact c = canonical(e);
   MathText m{format_exact(c, MathStyle::Unicode), format_exact(c, MathStyle::Latex)};
   if (with_approx && needs_approx(c)) {
-    const std::string d = format_approx(to_double(c));
+    const std::string d = format_exact_approx(c);
     m.unicode += " ≈ " + unicode_minus(d);
     m.latex += " \\approx " + latex_decimal(d);
   }
@@ -120,8 +120,8 @@ MathText vec(const std::vector<Exact>& v, bool with_approx) {
     std::string d = "(", dl = "\\left(";
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (i) d += ", ", dl += ", ";
-      d += format_approx(to_double(v[i]));
-      dl += latex_decimal(format_approx(to_double(v[i])));
+      d += format_exact_approx(v[i]);
+      dl += latex_decimal(format_exact_approx(v[i]));
     }
     m += math(" ≈ " + unicode_minus(d + ")"), " \\approx " + dl + "\\right)");
   }

@@ -86,6 +86,13 @@ struct Barycentric {
     std::optional<Vec3<Exact>> lambda;
     if (e && !canonical(t).is_zero()) lambda = canonical_vec(lambda_of(*e, t));
     if (lambda) out.set("lambda", Value::vector(*lambda));
+    // Inside the closed triangle: every edge value on the side of the total (or 0).
+    if (e) {
+      const int side = exact_sign(canonical(t));
+      bool inside = side != 0;
+      for (int i = 0; i < 3; ++i) inside = inside && exact_sign(canonical((*e)(i))) * side >= 0;
+      out.set("inside", Value::boolean(inside));
+    }
     if (const auto v = carried(student, "lambda", 3))
       lambda = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
     if (lambda) out.set("z", Value::scalar(interpolated_z(g, *lambda)));

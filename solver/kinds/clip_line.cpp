@@ -22,6 +22,31 @@ struct ClipLine {
     clip_given::Region region;
   };
   static std::vector<std::string> given_fields() { return {"p", "q", "window", "volume"}; }
+  // Error carried forward: trivial accept (both outcodes 0) and trivial reject (a bit set in
+  // both) from the student's own outcodes, read with their leading zeros restored.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    const Answers key = solve(g, nullptr);
+    const auto code = [&](const std::string& name) -> std::optional<std::string> {
+      const Value* v = student.find(name);
+      const Value* k = key.find(name);
+      if (!v || !k || v->word.size() > k->word.size() ||
+          v->word.find_first_not_of("01") != std::string::npos)
+        return std::nullopt;
+      return std::string(k->word.size() - v->word.size(), '0') + v->word;
+    };
+    const auto cp = code("outcode_p"), cq = code("outcode_q");
+    if (!cp && !cq) return out;
+    const std::string p = cp ? *cp : key.find("outcode_p")->word;
+    const std::string q = cq ? *cq : key.find("outcode_q")->word;
+    bool shared = false;
+    for (std::size_t i = 0; i < std::min(p.size(), q.size()); ++i)
+      shared = shared || (p[i] == '1' && q[i] == '1');
+    out.set("accept",
+            Value::boolean(p.find('1') == std::string::npos && q.find('1') == std::string::npos));
+    out.set("reject", Value::boolean(shared));
+    return out;
+  }
   static std::vector<AnswerSpec> answers() {
     return {{"outcode_p", AnswerKind::BitString, {}, {}},
             {"outcode_q", AnswerKind::BitString, {}, {}},

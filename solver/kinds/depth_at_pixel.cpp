@@ -155,11 +155,7 @@ struct DepthAtPixel {
     return m + math(")", "\\right)");
   }
 
-  // The plane through A with normal n, as written on paper, and z at the pixel (nullopt when
-  // the plane is edge-on).
-  static std::array<Exact, 4> plane_through_a(const Given& g, const Vec3<Exact>& n) {
-    return paper_plane(n, canonical_dot(n, g.triangle[0]));
-  }
+  // z at the pixel on a plane [a, b, c, d] (nullopt when the plane is edge-on).
   static std::optional<Exact> z_on(const Given& g, const std::vector<Exact>& plane) {
     if (canonical(plane[2]).is_zero()) return std::nullopt;
     return canonical((plane[3] - plane[0] * g.pixel(0) - plane[1] * g.pixel(1)) / plane[2]);
@@ -175,7 +171,8 @@ struct DepthAtPixel {
       n = Vec3<Exact>((*v)[0], (*v)[1], (*v)[2]);
     std::optional<std::vector<Exact>> plane;
     if (n) {
-      const std::array<Exact, 4> p = plane_through_a(g, *n);
+      const std::array<Exact, 4> p = carried_plane(
+          *n, {g.triangle[0], g.triangle[1], g.triangle[2]}, carried(student, "plane", 4));
       out.set("plane", plane_answer(p));
       plane = std::vector<Exact>(p.begin(), p.end());
     }

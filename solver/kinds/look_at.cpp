@@ -35,6 +35,15 @@ struct LookAt {
     return g;
   }
 
+  // Error carried forward: the points moved by the student's own matrix.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    std::vector<std::vector<Exact>> points;
+    for (const Vec3<Exact>& p : g.points) points.push_back({p(0), p(1), p(2)});
+    if (auto p = carried_points(student, points, 4, g.api)) out.set("points", std::move(*p));
+    return out;
+  }
+
   static Answers solve(const Given& g, Derivation* steps) {
     const MatX<Exact> m =
         look_at_with_steps(g.eye, g.center, g.up, g.api, "", steps, g.left_handed);

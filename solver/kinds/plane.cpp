@@ -112,7 +112,9 @@ struct Plane {
     if (const auto n = carried(student, "normal", 3)) {
       const Vec3<Exact> v((*n)[0], (*n)[1], (*n)[2]);
       out.set("unit_normal", Value::vector(unit(v)));
-      const std::array<Exact, 4> p = paper_plane(v, canonical_dot(v, p0));
+      const std::array<Exact, 4> p =
+          carried_plane(v, g.points.empty() ? std::vector<Vec3<Exact>>{p0} : g.points,
+                        carried(student, "plane", 4));
       out.set("plane", Value::vector(std::vector<Exact>(p.begin(), p.end())));
       plane = std::vector<Exact>(p.begin(), p.end());
     }

@@ -94,6 +94,13 @@ struct Transform {
     Api api = Api::OpenGL;  // DirectX prints every matrix in row-vector form (the transpose)
   };
   static std::vector<std::string> given_fields() { return {"dim", "steps", "points"}; }
+  // Error carried forward: the points moved by the student's own matrix.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    if (auto p = carried_points(student, g.points, static_cast<std::size_t>(g.dim + 1), g.api))
+      out.set("points", std::move(*p));
+    return out;
+  }
   static std::vector<AnswerSpec> answers() {
     return {{"matrix", AnswerKind::Transform, {}, {}},
             {"points", AnswerKind::Matrix, {"matrix"}, {}, "points", true},

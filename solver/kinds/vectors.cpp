@@ -145,8 +145,19 @@ struct Vectors {
     }
     if (const Value* a = student.find("area"); a && a->exact.size() == 1) area = a->exact[0];
     out.set("sin", Value::scalar(canonical(area / (la * lb))));
-    if (const Value* d = student.find("dot"); d && d->exact.size() == 1)
-      out.set("cos", Value::scalar(canonical(d->exact[0] / (la * lb))));
+    std::optional<Exact> cos;
+    if (const Value* d = student.find("dot"); d && d->exact.size() == 1) {
+      cos = canonical(d->exact[0] / (la * lb));
+      out.set("cos", Value::scalar(*cos));
+    }
+    if (const Value* c = student.find("cos"); c && c->exact.size() == 1) cos = c->exact[0];
+    // The angle of the student's own cos, in the set's unit (a cos beyond ±1 has none).
+    if (cos && exact_sign(canonical(*cos - 1)) <= 0 && exact_sign(canonical(*cos + 1)) >= 0) {
+      const Exact rad = canonical(exact_acos(*cos));
+      out.set(
+          "angle",
+          Value::scalar(g.angles == AngleUnit::Degrees ? canonical(rad * 180 / GiNaC::Pi) : rad));
+    }
     return out;
   }
 

@@ -11,10 +11,44 @@
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/numeric/condition.hpp"
+#include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
+#include "solver/viewing/projection.hpp"
 
 namespace frustum {
+
+std::array<Exact, 4> carried_plane(const Vec3<Exact>& n, const std::vector<Vec3<Exact>>& points,
+                                   const std::optional<std::vector<Exact>>& student) {
+  const auto proportional = [](const std::array<Exact, 4>& p, const std::vector<Exact>& q) {
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = i + 1; j < 4; ++j)
+        if (!canonical(p[i] * q[j] - p[j] * q[i]).is_zero()) return false;
+    return true;
+  };
+  if (student && student->size() == 4)
+    for (const Vec3<Exact>& v : points) {
+      const std::array<Exact, 4> p = paper_plane(n, canonical(n.dot(v)));
+      if (proportional(p, *student)) return p;
+    }
+  return paper_plane(n, canonical(n.dot(points.front())));
+}
+
+std::optional<Value> carried_points(const Answers& student,
+                                    const std::vector<std::vector<Exact>>& points, std::size_t n,
+                                    Api api) {
+  const auto m = carried(student, "matrix", n * n);
+  if (!m || points.empty()) return std::nullopt;
+  MatX<Exact> paper(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      paper(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (*m)[i * n + j];
+  try {
+    return transform_points_with_steps(paper_form(paper, api), points, "", "P", nullptr, api);
+  } catch (const std::exception&) {
+    return std::nullopt;  // a point sent to infinity (w = 0) by the student's matrix
+  }
+}
 
 std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
                                           std::size_t size) {

@@ -43,6 +43,12 @@ std::array<Exact, 4> paper_plane(const Vec3<Exact>& n, const Exact& d, bool by_q
 // A plane as an answer: [a, b, c, d] of ax + by + cz = d, shown as its equation.
 Value plane_answer(const std::array<Exact, 4>& plane);
 
+// Error carried forward of the plane method: the plane with the student's normal n through
+// whichever of `points` the student's own plane (`student`, [a, b, c, d], if any) passes
+// through — any vertex is the method — else through the first.
+std::array<Exact, 4> carried_plane(const Vec3<Exact>& n, const std::vector<Vec3<Exact>>& points,
+                                   const std::optional<std::vector<Exact>>& student);
+
 // The named mistake of a plane's constant on the wrong side (the form ax + by + cz + d = 0 taken
 // for ax + by + cz = d, or a list [a, b, c, d] written in it): the plane n·p = −d, scaled as on
 // paper. Nothing when d = 0, where both forms are the same plane. `point` names the point the
@@ -62,6 +68,13 @@ void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* 
 
 // A student's earlier answer usable for error carried forward: present, exact, of the given
 // number of components, and not all zero (a zero normal makes later parts trivial).
+// Error carried forward of a transform's points: the given points moved by the student's own
+// `matrix` (n × n, as printed in the set's API), nothing when there is none or a point goes to
+// infinity under it.
+std::optional<Value> carried_points(const Answers& student,
+                                    const std::vector<std::vector<Exact>>& points, std::size_t n,
+                                    Api api);
+
 std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
                                           std::size_t size);
 

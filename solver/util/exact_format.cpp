@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,12 @@ using GiNaC::numeric;
 
 // Roots with a larger index print as powers; beyond this GiNaC's own form is clearer.
 constexpr long kMaxRadicalIndex = 64;
+
+// A rational whose numerator or denominator has more digits than this is written as a
+// decimal times a power of ten when it is one ("10⁻³⁸⁰", not 1/1000…0).
+constexpr std::size_t kMaxPlainDigits = 40;
+// The most significant digits such a decimal keeps exactly (a double's 17).
+constexpr std::size_t kMaxScientificDigits = 17;
 
 std::string superscript(long n) {
   static constexpr std::string_view kDigits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
@@ -150,9 +157,39 @@ class Formatter {
     return num + "/" + den;
   }
 
+  // A positive rational with a long numerator or denominator that is m·10ᵏ with a short m:
+  // "1.7·10⁻³⁷⁹" (Unicode), "1.7e-379" (Plain), "1.7 \cdot 10^{-379}" (LaTeX); "10⁻³⁸⁰" when
+  // m = 1.
+  std::optional<std::string> scientific(const numeric& n) const {
+    if (!n.is_rational() || !n.is_positive()) return std::nullopt;
+    const std::string num = ginac_text(n.numer()), den = ginac_text(n.denom());
+    if (num.size() <= kMaxPlainDigits && den.size() <= kMaxPlainDigits) return std::nullopt;
+    // n = m·10ᵏ: the denominator must be 2ᵃ5ᵇ; m = n·10^max(a, b) is then an integer.
+    numeric d = n.denom();
+    long twos = 0, fives = 0;
+    while (GiNaC::irem(d, 2).is_zero()) d = GiNaC::iquo(d, 2), ++twos;
+    while (GiNaC::irem(d, 5).is_zero()) d = GiNaC::iquo(d, 5), ++fives;
+    if (!d.is_equal(1)) return std::nullopt;
+    long k = -std::max(twos, fives);
+    numeric m = n * numeric(10).power(-k);
+    while (!m.is_zero() && GiNaC::irem(m, 10).is_zero()) m = GiNaC::iquo(m, 10), ++k;
+    const std::string digits = ginac_text(m);
+    if (digits.size() > kMaxScientificDigits) return std::nullopt;
+    const long exponent = k + static_cast<long>(digits.size()) - 1;
+    std::string mantissa = digits.substr(0, 1);
+    if (digits.size() > 1) mantissa += "." + digits.substr(1);
+    if (style_ == MathStyle::Plain) return mantissa + "e" + std::to_string(exponent);
+    const std::string power = style_ == MathStyle::Unicode
+                                  ? "10" + superscript(exponent)
+                                  : "10^{" + std::to_string(exponent) + "}";
+    if (mantissa == "1") return power;
+    return mantissa + (style_ == MathStyle::Unicode ? "·" : " \\cdot ") + power;
+  }
+
   std::string number(const numeric& n) const {
     if (!n.is_real()) return fallback(n);
     if (n.is_negative()) return std::string(minus()) + number(-n);
+    if (const auto s = scientific(n)) return *s;
     if (n.is_integer()) return ginac_text(n);
     if (n.is_rational()) return fraction(ginac_text(n.numer()), ginac_text(n.denom()));
     return format_double(n.to_double());
@@ -265,6 +302,10 @@ class Formatter {
 
     const bool negative = coeff.is_negative();
     if (negative) coeff = -coeff;
+    // A coefficient such as 10⁻¹⁹⁰ goes after the other factors: √21·10⁻¹⁹⁰.
+    std::optional<std::string> power_of_ten;
+    if (!up.empty()) power_of_ten = scientific(coeff);
+    if (power_of_ten) coeff = 1;
     const bool rational = coeff.is_rational();
     std::vector<std::string> num_items;
     std::vector<std::string> den_items;
@@ -272,6 +313,7 @@ class Formatter {
     const bool num_has_coeff = !num_coeff.is_equal(1) || up.empty();
     if (num_has_coeff) num_items.push_back(number(num_coeff));
     for (const ex& f : up) num_items.push_back(factor(f));
+    if (power_of_ten) num_items.push_back(*power_of_ten);
     const bool den_has_coeff = rational && !coeff.denom().is_equal(1);
     if (den_has_coeff) den_items.push_back(ginac_text(coeff.denom()));
     for (const ex& f : down) {
@@ -399,6 +441,30 @@ std::string format_approx(double v, int significant) {
   if (v == 0) return "0";
   const std::string out = fmt::format("{:.{}g}", v, std::max(significant, 1));
   return out == "-0" ? "0" : out;
+}
+
+std::string format_exact_approx(const Exact& e, int significant) {
+  const double d = to_double(e);
+  if (std::isnan(d) || (std::isnormal(d) && std::isfinite(d))) return format_approx(d, significant);
+  numeric q;
+  try {
+    q = rational_near(e);
+  } catch (const std::exception&) {
+    return "nan";
+  }
+  if (q.is_zero()) return "0";
+  // q = x·10ᵏ with x in double's comfortable range, from the digits of q's parts.
+  const long k = static_cast<long>(ginac_text(GiNaC::abs(q.numer())).size()) -
+                 static_cast<long>(ginac_text(q.denom()).size());
+  const double x = to_double(q * numeric(10).power(-k));
+  const double lead = std::floor(std::log10(std::abs(x)));
+  std::string mantissa = fmt::format("{:.{}g}", x / std::pow(10.0, lead), std::max(significant, 1));
+  long exponent = k + static_cast<long>(lead);
+  if (mantissa == "10" || mantissa == "-10") {  // rounded up to the next power
+    mantissa = mantissa[0] == '-' ? "-1" : "1";
+    ++exponent;
+  }
+  return mantissa + "e" + (exponent < 0 ? "-" : "+") + std::to_string(std::labs(exponent));
 }
 
 }  // namespace frustum

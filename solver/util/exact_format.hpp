@@ -22,4 +22,9 @@ std::string format_double(double v);
 // A short decimal for showing beside an exact value: 4 significant digits ("≈ 0.5774").
 std::string format_approx(double v, int significant = 4);
 
+// The same for an exact real value of any size: beyond double's range (below 2.2·10⁻³⁰⁸,
+// above 1.8·10³⁰⁸) it is still its own leading digits and power of ten ("-1e-380"), never 0
+// or inf. "nan" when e is no real number.
+std::string format_exact_approx(const Exact& e, int significant = 4);
+
 }  // namespace frustum

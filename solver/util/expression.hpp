@@ -20,6 +20,10 @@ inline constexpr std::size_t kMaxExpressionLength = 4096;  // bytes of input
 inline constexpr int kMaxExpressionDepth = 64;             // nested (), function calls, unary ops
 inline constexpr long kMaxExponent = 1024;                 // |integer exponent|
 inline constexpr std::size_t kMaxExactBits = 16384;        // bits of an exact power's result
+// |power of ten| of a decimal (1e-4932): as large as an exact number may be (2¹⁶³⁸⁴ ≈ 10⁴⁹³²),
+// so a key the solver computes from givens within the bounds can be written as a decimal.
+inline constexpr long kMaxDecimalExponent =
+    static_cast<long>(static_cast<double>(kMaxExactBits) * 0.30102999566398120);
 
 struct ExpressionOptions {
   std::size_t max_length = kMaxExpressionLength;

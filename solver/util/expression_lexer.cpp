@@ -14,8 +14,6 @@ namespace frustum {
 namespace expression_internal {
 namespace {
 
-// 1e±400 spans every physical constant a problem needs; bigger powers of ten are typos.
-constexpr long kMaxDecimalExponent = 400;
 constexpr std::size_t kMaxQuotedBytes = 32;
 
 // ---------------------------------------------------------------------------------------
