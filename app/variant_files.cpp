@@ -13,8 +13,8 @@
 #include "grader/batch.hpp"
 #include "grader/csv.hpp"
 #include "grader/file_names.hpp"
-#include "solver/input/yaml_document.hpp"
 #include "grader/student_id.hpp"
+#include "solver/input/yaml_document.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum::app {

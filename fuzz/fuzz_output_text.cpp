@@ -109,6 +109,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (result.rows.size() != entries.size()) std::abort();
     for (const auto& e : fs::recursive_directory_iterator(root / "out")) {
       if (!e.is_regular_file() || e.path().string().find("/katex/") != std::string::npos) continue;
+      // A run's record of its files (name hashes) is the transaction's state, not an output.
+      if (e.path().parent_path().filename() == ".frustum" &&
+          e.path().filename().string().rfind("files-", 0) == 0)
+        continue;
       const std::string text = read(e.path());
       if (e.path().extension() == ".csv")
         check_csv(text, e.path(), entries.size() + 1);
