@@ -43,7 +43,7 @@ frustum::BatchRow row_of(const fs::path& dir, const fs::path& out, const std::st
   const std::vector<frustum::BatchEntry> entries = frustum::collect_submissions(dir.string());
   frustum::BatchOptions options;
   options.out_dir = out.string();
-  options.timeout_seconds = 5;
+  options.timeout_seconds = 30;
   options.jobs = 1;
   options.set_for = [](const frustum::ProblemSet& s, const std::string& student, std::string&) {
     return frustum::variant_for(s, student);
@@ -87,8 +87,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const frustum::BatchRow a = row_of(alone, root / "out-alone", "a-alice.yaml");
     const frustum::BatchRow b = row_of(with, root / "out-class", "a-alice.yaml");
-    if (a.status != b.status || a.score != b.score || a.max_score != b.max_score ||
-        a.problem_scores != b.problem_scores || a.student != b.student)
+    // A time-out says how busy the machine was, not what the neighbours hold.
+    const bool timed_out = a.status == "timeout" || b.status == "timeout";
+    if (!timed_out && (a.status != b.status || a.score != b.score || a.max_score != b.max_score ||
+                       a.problem_scores != b.problem_scores || a.student != b.student))
       std::abort();
   } catch (const frustum::InputError&) {
   }
