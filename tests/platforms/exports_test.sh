@@ -163,10 +163,12 @@ hostile_check() {
   check "PrairieLearn: $1" python3 -c "import json,sys; r=json.loads(sys.argv[1]); sys.exit(0 if ($3) else 1)" "$r"
   echo "  $2: $r"
 }
-hostile_check "an alias bomb in a string answer is graded as written, not expanded" bomb \
-  "r['gradable'] is True and r['left'] == [] and r['size'] < 100000"
+# Read as written, the bomb and the anchor are not edge lists: unparseable answers, which
+# PrairieLearn shows as format errors that cost no attempt.
+hostile_check "an alias bomb in a string answer is read as written, not expanded" bomb \
+  "r['gradable'] is False and 'could not be read' in r['message'] and r['left'] == [] and r['size'] < 100000"
 hostile_check "an anchor in a string answer is refused, and the folder removed" anchor \
-  "r['gradable'] is True and r['left'] == []"
+  "r['gradable'] is False and 'could not be read' in r['message'] and r['left'] == []"
 hostile_check "a 1.5 MB answer is not gradable, naming the limit, and the folder removed" huge \
   "r['gradable'] is False and '1048576 bytes' in r['message'] and r['left'] == []"
 hostile_check "a plain label list still grades, and the folder is removed" plain \
