@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "grader/visible_text.hpp"
 #include "grader/xml_text.hpp"
 
 namespace frustum {
@@ -115,10 +116,12 @@ std::string cloze_question(const QuizQuestion& q, const std::string& name) {
 }
 
 // A name as one level of a category path: Moodle splits the path at '/' and reads "//" as a
-// '/' of the name, so that problem "q/1" is its own category, not "1" inside "q".
+// '/' of the name, so that problem "q/1" is its own category, not "1" inside "q". A control
+// character, which XML cannot hold (xml_escape drops it), is written visibly (\u001B), so that
+// "q/1" and "q/1" + ESC stay two categories.
 std::string category_level(const std::string& name) {
   std::string out;
-  for (const char c : name) out += c == '/' ? std::string("//") : std::string(1, c);
+  for (const char c : visible_text(name)) out += c == '/' ? std::string("//") : std::string(1, c);
   return out;
 }
 
