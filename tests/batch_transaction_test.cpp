@@ -27,12 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kSet = R"(problems:
-  - id: zbuf
-    kind: depth_at_pixel
-    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
-    ask: [z]
-)";
+const char* const kSet = test::kOneDepthProblemSet;
 
 fs::path scratch(const std::string& name) { return test::scratch_dir("txn_" + name); }
 

@@ -35,12 +35,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kSet = R"(problems:
-  - id: zbuf
-    kind: depth_at_pixel
-    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
-    ask: [z]
-)";
+const char* const kSet = test::kOneDepthProblemSet;
 
 // A file of a Japanese Windows zip: 日本.yaml in CP932.
 const std::string kCp932 = "\x93\xFA\x96\x7B";

@@ -41,6 +41,14 @@ inline ProgramRun frustum_run(const std::string& args, bool with_stderr = true) 
   return frustum_run(words(args), with_stderr);
 }
 
+// One depth_at_pixel problem (z = 8) that the batch and output tests grade classes against.
+inline constexpr const char* kOneDepthProblemSet = R"(problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
+    ask: [z]
+)";
+
 inline std::string source_path(const std::string& relative) {
   return std::string(FRUSTUM_SOURCE_DIR) + "/" + relative;
 }
