@@ -6,6 +6,7 @@
 #include <sqlite3.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
@@ -27,7 +28,10 @@ struct Backend {
   std::string why_skipped;
 };
 
-std::string fresh_sqlite(const std::string& test) {
+void PrintTo(const Backend& b, std::ostream* os) { *os << b.name; }
+
+std::string fresh_sqlite(std::string test) {
+  std::replace(test.begin(), test.end(), '/', '_');  // parameterized names: Case/SQLite
   const fs::path dir = fs::temp_directory_path() / ("frustum-store-" + std::to_string(getpid()));
   fs::create_directories(dir);
   const fs::path file = dir / (test + ".sqlite");
