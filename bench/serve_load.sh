@@ -10,6 +10,7 @@
 # --smoke runs each part for about a second (the suite's Bench.ServeLoad) and checks only that
 # each works.
 set -euo pipefail
+ulimit -n "$(ulimit -Hn)" 2>/dev/null || true  # 2,000 idle connections on both sides
 frustum=$(realpath "$1")
 smoke=${2:-}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -57,10 +58,10 @@ echo "# frustum serve load, $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores: $(
 start_server
 $client sessions "$base" "$work/links.csv" "$work/sessions.lua"
 
-echo "## 1-2. preview, then submissions (32 connections, ${seconds} s each)"
-wrk_run preview 32 | grep -E 'Requests/sec|99%|Non-2xx' | sed 's/^/preview: /'
+echo "## 1-2. preview, then submissions (64 connections, ${seconds} s each)"
+wrk_run preview 64 | grep -E 'Requests/sec|99%|Non-2xx' | sed 's/^/preview: /'
 before=$(date +%s.%N)
-wrk_run submit 32 | grep -E 'Requests/sec|99%|Non-2xx' | sed 's/^/submit: /'
+wrk_run submit 64 | grep -E 'Requests/sec|99%|Non-2xx' | sed 's/^/submit: /'
 acked=$(python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('SELECT count(*) FROM submissions').fetchone()[0])" "$db")
 while [ "$(pending)" != 0 ]; do sleep 0.2; done
 after=$(date +%s.%N)
