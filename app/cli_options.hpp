@@ -58,5 +58,6 @@ Command add_export_command(CLI::App& cli);
 Command add_draw_command(CLI::App& cli);
 Command add_bench_command(CLI::App& cli);
 Command add_render_command(CLI::App& cli);
+Command add_serve_command(CLI::App& cli);
 
 }  // namespace frustum::app

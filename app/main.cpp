@@ -28,7 +28,8 @@ int run_command(int argc, char** argv) {
   const std::vector<app::Command> commands = {
       app::add_solve_command(cli), app::add_check_command(cli),    app::add_grade_command(cli),
       app::add_kinds_command(cli), app::add_generate_command(cli), app::add_export_command(cli),
-      app::add_draw_command(cli),  app::add_bench_command(cli),    app::add_render_command(cli)};
+      app::add_serve_command(cli), app::add_draw_command(cli),     app::add_bench_command(cli),
+      app::add_render_command(cli)};
   CLI11_PARSE(cli, argc, argv);
   // The last line of defence: whatever a command throws (a file system error, memory) ends in
   // a message and exit status 1, never in std::terminate.

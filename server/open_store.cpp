@@ -1,0 +1,24 @@
+#include "server/sqlite_migrations.hpp"
+#include "server/sqlite_store.hpp"
+#include "server/store.hpp"
+
+namespace frustum::server {
+
+std::unique_ptr<Store> open_store(const std::string& url, StoreRole role) {
+  constexpr std::string_view kSqlite = "sqlite:";
+  if (url.rfind(kSqlite, 0) == 0) {
+    const std::string path = url.substr(kSqlite.size());
+    if (path.empty()) throw StoreError("--db sqlite:PATH needs a file name after sqlite:");
+    return open_sqlite_store(path,
+                             role == StoreRole::Worker ? SqliteSync::Normal : SqliteSync::Full);
+  }
+  if (url.rfind("postgresql://", 0) == 0 || url.rfind("postgres://", 0) == 0)
+    throw StoreError("this frustum was built without the PostgreSQL store: " +
+                     std::string("use --db sqlite:PATH"));
+  throw StoreError("unknown database '" + url +
+                   "': use sqlite:PATH or postgresql://USER@HOST/DATABASE");
+}
+
+int latest_schema_version() { return sqlite_latest_version(); }
+
+}  // namespace frustum::server
