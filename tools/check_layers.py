@@ -24,6 +24,7 @@ LAYERS = [
     "solver/kinds",       # one file or file pair per kind
     "solver/accuracy",    # speed against error of the numeric backends
     "grader",
+    "server",             # frustum serve: handlers, sessions, stores, grading workers
     "app",
 ]
 
@@ -40,7 +41,7 @@ def main():
     include = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
     bad = []
     for path in sorted(root.glob("solver/**/*.[ch]pp")) + sorted(root.glob("grader/**/*.[ch]pp")) \
-            + sorted(root.glob("app/**/*.[ch]pp")):
+            + sorted(root.glob("server/**/*.[ch]pp")) + sorted(root.glob("app/**/*.[ch]pp")):
         rel = path.relative_to(root).as_posix()
         own = layer_of(rel)
         if own is None:

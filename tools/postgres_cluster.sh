@@ -2,7 +2,8 @@
 # A throwaway PostgreSQL 15 cluster (Debian's `postgresql` package) for the store tests, the
 # benchmarks and CI:
 #   tools/postgres_cluster.sh start DIR   creates the cluster in DIR if needed, starts it if it is
-#                                         not running, prints its URL (postgresql://…)
+#                                         not running, prints its URL (postgresql://…) and
+#                                         writes it to DIR/url
 #   tools/postgres_cluster.sh url DIR     prints the URL of the cluster in DIR
 #   tools/postgres_cluster.sh stop DIR    stops it (nothing to do if it is not running)
 # All three are idempotent. The server listens on 127.0.0.1 only, on a port that was free when
@@ -170,7 +171,11 @@ start() {
     psql_admin "CREATE DATABASE frustum OWNER frustum"
     touch "$dir/roles"
   fi
-  url
+  (
+    umask 077
+    url >"$dir/url"
+  )
+  cat "$dir/url"
 }
 
 stop() {
