@@ -1,6 +1,7 @@
 #include "server/postgres_connection.hpp"
 
 #include <libpq-fe.h>
+#include <poll.h>
 
 #include <memory>
 
@@ -96,6 +97,16 @@ PgConnection::PgConnection(const std::string& url) : password_(url_password(url)
 PgConnection::~PgConnection() { PQfinish(conn_); }
 
 bool PgConnection::usable() const { return PQstatus(conn_) == CONNECTION_OK; }
+
+bool PgConnection::alive() {
+  // A server ending a session sends an error, then closes: each read takes one of them.
+  for (int reads = 0; reads < 8 && usable(); ++reads) {
+    pollfd ready{PQsocket(conn_), POLLIN, 0};
+    if (::poll(&ready, 1, 0) != 1) break;
+    if (PQconsumeInput(conn_) != 1) return false;
+  }
+  return usable();
+}
 
 namespace {
 

@@ -46,6 +46,10 @@ class PgConnection {
   PgRows run(const std::string& name, const std::vector<std::string>& params);
   // False once the server has gone (restarted, killed); such a connection is dropped.
   bool usable() const;
+  // usable(), after reading what the server sent an idle connection: a server that ended the
+  // session (restart, pg_terminate_backend) has closed it, and this sees so before any
+  // statement is sent on it.
+  bool alive();
 
  private:
   pg_conn* conn_ = nullptr;

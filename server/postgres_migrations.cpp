@@ -1,6 +1,7 @@
 // The PostgreSQL store's schema as numbered, forward-only migrations embedded in the binary
 // (migration i brings the schema from version i to i + 1; none is edited once released). The
-// numbering is the SQLite store's: version N has the same tables and meaning in both.
+// numbering is the SQLite store's: version N has the same tables and meaning in both (and here
+// the table `attempts`, which SQLite's single writer does not need).
 #include <array>
 #include <string>
 
@@ -27,6 +28,10 @@ CREATE TABLE submissions (id BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
                           state SMALLINT NOT NULL DEFAULT 0, claimed_by TEXT, claimed_at BIGINT,
                           UNIQUE (student, set_id, problem, attempt));
 CREATE INDEX submissions_pending ON submissions (id) WHERE state = 0;
+-- The last attempt of each student's problem: submit takes the next one by an upsert, whose row
+-- lock makes two submissions at once take two numbers (max(attempt) + 1 could take one twice).
+CREATE TABLE attempts (student TEXT NOT NULL, set_id TEXT NOT NULL, problem TEXT NOT NULL,
+                       last INTEGER NOT NULL, PRIMARY KEY (student, set_id, problem));
 CREATE TABLE grades (id BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
                      submission BIGINT NOT NULL REFERENCES submissions(id), result TEXT NOT NULL,
                      score DOUBLE PRECISION NOT NULL, max_score DOUBLE PRECISION NOT NULL,

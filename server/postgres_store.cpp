@@ -38,12 +38,14 @@ const std::pair<const char*, std::string> kStatements[] = {
     {"drafts",
      "SELECT set_id, problem, answer, text, saved FROM drafts WHERE student = $1 AND set_id = $2 "
      "ORDER BY problem COLLATE \"C\", answer COLLATE \"C\""},
-    // One statement, committed when it returns. Two submissions of one student's problem at
-    // once can compute the same attempt: the unique key refuses the second, which is retried.
+    // One statement, committed when it returns; the attempt comes from the row of `attempts`,
+    // locked by the upsert until the commit, so submissions at once are numbered in turn.
     {"submit",
+     "WITH next AS (INSERT INTO attempts AS a (student, set_id, problem, last) "
+     "VALUES ($1, $2, $5, 1) ON CONFLICT (student, set_id, problem) "
+     "DO UPDATE SET last = a.last + 1 RETURNING last) "
      "INSERT INTO submissions (student, set_id, set_version, variant, problem, answers, "
-     "received, attempt) SELECT $1, $2, $3, $4, $5, $6, $7, coalesce(max(attempt), 0) + 1 "
-     "FROM submissions WHERE student = $1 AND set_id = $2 AND problem = $5 "
+     "received, attempt) SELECT $1, $2, $3, $4, $5, $6, $7, last FROM next "
      "RETURNING id, attempt"},
     // The oldest pending submission nobody holds (or whose holder's lease ran out); rows that
     // another instance is claiming this instant are skipped, not waited for.
@@ -113,8 +115,10 @@ class ConnectionPool {
  public:
   ConnectionPool(std::string url, int limit) : url_(std::move(url)), limit_(limit < 1 ? 1 : limit) {}
 
-  // Runs the prepared statement `name` on a free connection. A connection that the server
-  // dropped (restart, failover) is closed, and the next call opens a new one.
+  // Runs the prepared statement `name` on a free connection. A connection the server has
+  // closed while it was idle (restart, failover) is replaced before the statement is sent, so
+  // no statement is ever sent twice; one that breaks while a statement runs is closed and the
+  // error reported (whether that statement committed cannot be known).
   PgRows run(const char* name, const std::vector<std::string>& params) {
     std::unique_ptr<PgConnection> db = take();
     try {
@@ -140,7 +144,7 @@ class ConnectionPool {
       while (!free_.empty()) {
         std::unique_ptr<PgConnection> db = std::move(free_.back());
         free_.pop_back();
-        if (db->usable()) return db;
+        if (db->alive()) return db;
         --open_;
       }
       ++open_;
@@ -227,19 +231,13 @@ class PostgresStore final : public Store {
     const std::vector<std::string> params = {n.student, n.set,     n.set_version,
                                              n.variant, n.problem, n.answers,
                                              std::to_string(n.received)};
-    for (int tries = 1;; ++tries) {
-      try {
-        const PgRows r = pool_.run("submit", params);
-        SubmissionRecord out;
-        static_cast<NewSubmission&>(out) = n;
-        out.id = integer(r.rows.at(0).at(0));
-        out.attempt = static_cast<int>(integer(r.rows.at(0).at(1)));
-        out.state = SubmissionState::Pending;
-        return out;
-      } catch (const PostgresError& e) {
-        if (e.sqlstate != "23505" || tries == 20) throw;  // 23505: another took this attempt
-      }
-    }
+    const PgRows r = pool_.run("submit", params);
+    SubmissionRecord out;
+    static_cast<NewSubmission&>(out) = n;
+    out.id = integer(r.rows.at(0).at(0));
+    out.attempt = static_cast<int>(integer(r.rows.at(0).at(1)));
+    out.state = SubmissionState::Pending;
+    return out;
   }
 
   std::optional<SubmissionRecord> claim(const std::string& worker, Millis now,

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <barrier>
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -408,6 +409,32 @@ TEST(PostgresStore, ConnectionFailuresNameTheHostNeverThePassword) {
   }
   EXPECT_EQ(redact_postgres_url("postgresql://u:p%40ss@h:5/d?x=1"), "postgresql://u@h:5/d?x=1");
   EXPECT_EQ(redact_postgres_url("postgresql://u@h/d"), "postgresql://u@h/d");
+}
+
+TEST(PostgresStore, ConnectionsTheServerClosedAreReplacedBeforeUse) {
+  const std::unique_ptr<Scratch> scratch = make_scratch("postgresql");
+  if (!scratch) GTEST_SKIP() << kPostgresUnset;
+  const std::string name = "frustum_test_" + std::to_string(::getpid());
+  const std::string url = scratch->url() + "&application_name=" + name;
+  const std::unique_ptr<Store> store = open_postgres_store(url);
+  store->put_student("ann", "hash-ann");
+  // As a restart of the server would: every session of this store ended while idle.
+  const auto ended = PgConnection(scratch->url())
+                         .exec(
+                             "SELECT pg_terminate_backend(pid) FROM pg_stat_activity WHERE "
+                             "application_name = $1",
+                             {name});
+  ASSERT_EQ(ended.rows.size(), 1u);
+  EXPECT_EQ(ended.rows[0][0], "t");
+  for (int i = 0; i < 50 && PgConnection(scratch->url())
+                                    .exec("SELECT count(*) FROM pg_stat_activity WHERE "
+                                          "application_name = $1",
+                                          {name})
+                                    .rows[0][0] != "0";
+       ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(store->student_by_token("hash-ann"), "ann");
+  EXPECT_EQ(store->submit(attempt_of("ann", "s", "p1", 1)).attempt, 1);
 }
 
 TEST(PostgresStore, ExactlyOneOfManyStartingInstancesMigrates) {
