@@ -14,6 +14,7 @@
 
 #include "app/commands.hpp"
 #include "app/number_options.hpp"
+#include "app/serve_command.hpp"
 
 namespace {
 
@@ -249,6 +250,8 @@ int run_command(int argc, char** argv) {
        "frustum export canvas-grades grades/gradebook.csv --assignment \"Homework 3\" -o "
        "canvas.csv"}));
 
+  frustum::app::ServeOptions serve_opt;
+  CLI::App* serve = frustum::app::add_serve_command(cli, serve_opt);
   std::string draw_id, draw_output;
   int raster = 48;
   auto* draw =
@@ -334,6 +337,7 @@ int run_command(int argc, char** argv) {
       export_opt.lang = *frustum::parse_lang(export_lang);
       return frustum::app::run_export(export_opt, out);
     }
+    if (serve->parsed()) return frustum::app::run_serve(serve_opt, out);
     if (draw->parsed()) return frustum::app::run_draw(set, draw_id, draw_output, raster, out);
     if (render->parsed()) {
       if (!render_size.empty()) {

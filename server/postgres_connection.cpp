@@ -91,7 +91,8 @@ PgConnection::PgConnection(const std::string& url) : password_(url_password(url)
     throw StoreError("cannot connect to " + where_ + ": " + without(message, password_));
   }
   // The server's notices ("relation … already exists, skipping") are not for the terminal.
-  PQsetNoticeProcessor(conn_, [](void*, const char*) {}, nullptr);
+  PQsetNoticeProcessor(
+      conn_, [](void*, const char*) {}, nullptr);
 }
 
 PgConnection::~PgConnection() { PQfinish(conn_); }
@@ -148,7 +149,8 @@ std::vector<const char*> pointers(const std::vector<std::string>& params) {
 
 PgRows PgConnection::exec(const std::string& sql, const std::vector<std::string>& params) {
   // Without parameters: the simple protocol, which takes several statements (a migration).
-  if (params.empty()) return rows_of(PQexec(conn_, sql.c_str()), "a statement", where_, password_, conn_);
+  if (params.empty())
+    return rows_of(PQexec(conn_, sql.c_str()), "a statement", where_, password_, conn_);
   const std::vector<const char*> values = pointers(params);
   return rows_of(PQexecParams(conn_, sql.c_str(), static_cast<int>(params.size()), nullptr,
                               values.data(), nullptr, nullptr, 0),
@@ -156,14 +158,14 @@ PgRows PgConnection::exec(const std::string& sql, const std::vector<std::string>
 }
 
 void PgConnection::prepare(const std::string& name, const std::string& sql) {
-  rows_of(PQprepare(conn_, name.c_str(), sql.c_str(), 0, nullptr),
-          "preparing statement " + name, where_, password_, conn_);
+  rows_of(PQprepare(conn_, name.c_str(), sql.c_str(), 0, nullptr), "preparing statement " + name,
+          where_, password_, conn_);
 }
 
 PgRows PgConnection::run(const std::string& name, const std::vector<std::string>& params) {
   const std::vector<const char*> values = pointers(params);
-  return rows_of(PQexecPrepared(conn_, name.c_str(), static_cast<int>(params.size()),
-                                values.data(), nullptr, nullptr, 0),
+  return rows_of(PQexecPrepared(conn_, name.c_str(), static_cast<int>(params.size()), values.data(),
+                                nullptr, nullptr, 0),
                  "statement " + name, where_, password_, conn_);
 }
 

@@ -26,6 +26,7 @@ CREATE TABLE submissions (id BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
                           variant TEXT NOT NULL, problem TEXT NOT NULL, answers TEXT NOT NULL,
                           received BIGINT NOT NULL, attempt INTEGER NOT NULL,
                           state SMALLINT NOT NULL DEFAULT 0, claimed_by TEXT, claimed_at BIGINT,
+                          claims INTEGER NOT NULL DEFAULT 0,
                           UNIQUE (student, set_id, problem, attempt));
 CREATE INDEX submissions_pending ON submissions (id) WHERE state = 0;
 -- The last attempt of each student's problem: submit takes the next one by an upsert, whose row

@@ -14,7 +14,8 @@ namespace frustum::server {
 namespace {
 
 constexpr const char* kSubmissionColumns =
-    "id, student, set_id, set_version, variant, problem, answers, received, attempt, state";
+    "id, student, set_id, set_version, variant, problem, answers, received, attempt, state, "
+    "claims";
 
 // Every statement, prepared on each connection when it opens. Orders use the C collation so
 // that both stores sort alike, whatever the database's locale.
@@ -50,7 +51,8 @@ const std::pair<const char*, std::string> kStatements[] = {
     // The oldest pending submission nobody holds (or whose holder's lease ran out); rows that
     // another instance is claiming this instant are skipped, not waited for.
     {"claim",
-     std::string("UPDATE submissions SET claimed_by = $1, claimed_at = $2 WHERE id = ("
+     std::string("UPDATE submissions SET claimed_by = $1, claimed_at = $2, claims = claims + 1 "
+                 "WHERE id = ("
                  "SELECT id FROM submissions WHERE state = 0 AND "
                  "(claimed_by IS NULL OR claimed_at <= $3) ORDER BY id LIMIT 1 "
                  "FOR UPDATE SKIP LOCKED) RETURNING ") +
@@ -61,11 +63,10 @@ const std::pair<const char*, std::string> kStatements[] = {
      "WITH mine AS (UPDATE submissions SET state = $9 WHERE id = $1 AND claimed_by = $10 AND "
      "state = 0 RETURNING id) INSERT INTO grades (submission, result, score, max_score, "
      "set_version, graded_by, graded, failed) SELECT id, $2, $3, $4, $5, $6, $7, $8 FROM mine"},
-    {"submissions",
-     std::string("SELECT ") + kSubmissionColumns +
-         " FROM submissions WHERE student = $1 AND set_id = $2 ORDER BY id"},
-    {"submission",
-     std::string("SELECT ") + kSubmissionColumns + " FROM submissions WHERE student = $1 AND id = $2"},
+    {"submissions", std::string("SELECT ") + kSubmissionColumns +
+                        " FROM submissions WHERE student = $1 AND set_id = $2 ORDER BY id"},
+    {"submission", std::string("SELECT ") + kSubmissionColumns +
+                       " FROM submissions WHERE student = $1 AND id = $2"},
     {"latest_grade",
      "SELECT submission, result, score, max_score, set_version, graded_by, graded, failed "
      "FROM grades WHERE submission = $1 ORDER BY id DESC LIMIT 1"},
@@ -107,13 +108,15 @@ SubmissionRecord submission_row(const std::vector<std::string>& row) {
   r.received = integer(row.at(7));
   r.attempt = static_cast<int>(integer(row.at(8)));
   r.state = static_cast<SubmissionState>(integer(row.at(9)));
+  r.claims = static_cast<int>(integer(row.at(10)));
   return r;
 }
 
 // Open connections, each used by one thread at a time; at most `limit` exist.
 class ConnectionPool {
  public:
-  ConnectionPool(std::string url, int limit) : url_(std::move(url)), limit_(limit < 1 ? 1 : limit) {}
+  ConnectionPool(std::string url, int limit)
+      : url_(std::move(url)), limit_(limit < 1 ? 1 : limit) {}
 
   // Runs the prepared statement `name` on a free connection. A connection the server has
   // closed while it was idle (restart, failover) is replaced before the statement is sent, so
@@ -216,8 +219,7 @@ class PostgresStore final : public Store {
   }
 
   void save_draft(const std::string& student, const Draft& d) override {
-    pool_.run("save_draft",
-              {student, d.set, d.problem, d.answer, d.text, std::to_string(d.saved)});
+    pool_.run("save_draft", {student, d.set, d.problem, d.answer, d.text, std::to_string(d.saved)});
   }
 
   std::vector<Draft> drafts(const std::string& student, const std::string& set) override {
@@ -228,8 +230,12 @@ class PostgresStore final : public Store {
   }
 
   SubmissionRecord submit(const NewSubmission& n) override {
-    const std::vector<std::string> params = {n.student, n.set,     n.set_version,
-                                             n.variant, n.problem, n.answers,
+    const std::vector<std::string> params = {n.student,
+                                             n.set,
+                                             n.set_version,
+                                             n.variant,
+                                             n.problem,
+                                             n.answers,
                                              std::to_string(n.received)};
     const PgRows r = pool_.run("submit", params);
     SubmissionRecord out;
@@ -252,9 +258,8 @@ class PostgresStore final : public Store {
         static_cast<int>(g.failed ? SubmissionState::Failed : SubmissionState::Graded);
     const PgRows r = pool_.run(
         "record_grade", {std::to_string(g.submission), g.result, text_of(g.score),
-                         text_of(g.max_score), g.set_version, g.graded_by,
-                         std::to_string(g.graded), g.failed ? "true" : "false",
-                         std::to_string(state), worker});
+                         text_of(g.max_score), g.set_version, g.graded_by, std::to_string(g.graded),
+                         g.failed ? "true" : "false", std::to_string(state), worker});
     return r.changed == 1;
   }
 
@@ -266,8 +271,7 @@ class PostgresStore final : public Store {
     return out;
   }
 
-  std::optional<SubmissionRecord> submission(const std::string& student,
-                                             std::int64_t id) override {
+  std::optional<SubmissionRecord> submission(const std::string& student, std::int64_t id) override {
     PgRows r = pool_.run("submission", {student, std::to_string(id)});
     if (r.rows.empty()) return std::nullopt;
     return submission_row(r.rows[0]);
@@ -277,8 +281,8 @@ class PostgresStore final : public Store {
     PgRows r = pool_.run("latest_grade", {std::to_string(submission)});
     if (r.rows.empty()) return std::nullopt;
     const auto& row = r.rows[0];
-    return GradeRecord{integer(row[0]), row[1],          real(row[2]),    real(row[3]),
-                       row[4],          row[5],          integer(row[6]), row[7] == "t"};
+    return GradeRecord{integer(row[0]), row[1], real(row[2]),    real(row[3]),
+                       row[4],          row[5], integer(row[6]), row[7] == "t"};
   }
 
   std::int64_t pending_count() override {

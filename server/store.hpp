@@ -46,6 +46,8 @@ struct SubmissionRecord : NewSubmission {
   std::int64_t id = 0;
   int attempt = 0;  // 1, 2, … per (student, set, problem)
   SubmissionState state = SubmissionState::Pending;
+  int claims = 0;  // times claimed, this claim included (a worker gives up on one that keeps
+                   // killing its graders)
 };
 
 struct GradeRecord {  // many per submission (regrades keep history)

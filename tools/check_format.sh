@@ -6,6 +6,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=(--dry-run --Werror)
 [[ ${1:-} == --fix ]] && mode=(-i)
-files=$(find solver grader app bench tests fuzz -name '*.cpp' -o -name '*.hpp' | sort)
+files=$(find solver grader server app bench tests fuzz -name '*.cpp' -o -name '*.hpp' | sort)
 # shellcheck disable=SC2086
 clang-format --style=file "${mode[@]}" $files

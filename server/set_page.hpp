@@ -1,0 +1,19 @@
+// The student's pages: the list of their sets, a set as their variant (text, givens typeset,
+// figures, one input per asked answer with its draft, their submissions and feedback), one
+// submission, and a problem's figure.
+#pragma once
+
+#include "server/session.hpp"
+
+namespace frustum::server {
+
+Response sets_page(StudentApp& app, const Visitor& v);
+Response set_page(StudentApp& app, const Visitor& v, const CourseSet& set, Millis now);
+Response submission_page(StudentApp& app, const Visitor& v, const CourseSet& set, std::int64_t id,
+                         Millis now);
+Response figure_svg(const Visitor& v, const CourseSet& set, const std::string& problem);
+
+// Attempts made at each problem, and whether the policy lets feedback show for one.
+int attempts_at(const std::vector<SubmissionRecord>& mine, const std::string& problem);
+
+}  // namespace frustum::server
