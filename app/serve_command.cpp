@@ -98,6 +98,10 @@ int serve(const ServeOptions& s, const server::Course& course, Store& store, con
       s.workers);
   server::AppConfig config;
   config.secure_cookies = s.secure_cookies;
+  config.preview_rate = s.preview_rate;
+  config.preview_burst = 3 * s.preview_rate;
+  config.submit_rate = s.submit_rate;
+  config.submit_burst = std::max(10.0, 3 * s.submit_rate);
   server::StudentApp app(course, store, config);
   server::HttpServerOptions http;
   std::tie(http.host, http.port) = host_port(s.listen);
@@ -141,6 +145,10 @@ CLI::App* add_serve_command(CLI::App& cli, ServeOptions& s) {
   c->add_option("--max-connections", s.max_connections, "Connections held at once");
   c->add_option("--max-in-flight", s.max_in_flight,
                 "Requests handled at once; beyond, 429 with Retry-After");
+  c->add_option("--preview-rate", s.preview_rate,
+                "Previews and drafts a session may ask a second (default 10; 429 beyond)");
+  c->add_option("--submit-rate", s.submit_rate,
+                "Submissions a session may make a second (default 1, bursts of 10; 429 beyond)");
   c->add_option("--worker", s.worker, "")->group("");  // internal: a grading worker
   return c;
 }

@@ -28,6 +28,8 @@ struct ServeOptions {
   bool access_log = false;
   std::size_t max_connections = 10000;
   std::size_t max_in_flight = 256;
+  double preview_rate = 10;  // per session, a second (the burst is three times as many)
+  double submit_rate = 1;
   std::optional<std::string> worker;  // internal: run as grading worker NAME
 };
 

@@ -95,8 +95,8 @@ Response submit_answers(StudentApp& app, const Visitor& v, const CourseSet& set,
   if (!p) return message_page(404, lang, Say::NotFound);
   if (set.policy.deadline_ms && now > *set.policy.deadline_ms)
     return message_page(403, lang, Say::DeadlinePassed);
-  const std::vector<SubmissionRecord> mine = app.store.submissions(v.student, set.id);
-  if (set.policy.attempts && attempts_at(mine, p->id) >= *set.policy.attempts)
+  if (set.policy.attempts &&
+      attempts_at(app.store.submissions(v.student, set.id), p->id) >= *set.policy.attempts)
     return message_page(403, lang, Say::NoAttemptsLeft);
   Json answers = Json::object();
   for (const std::string& name : p->ask) {

@@ -20,7 +20,7 @@ struct HttpLimits {
   std::size_t max_connections = 10000;  // further connections are closed at once
   std::size_t max_in_flight = 256;      // requests being handled; beyond, 429 with Retry-After
   int io_threads = 2;
-  int handler_threads = 8;
+  int handler_threads = 32;  // mostly waiting for a commit, which they share
 };
 
 struct HttpServerOptions {

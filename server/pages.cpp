@@ -59,7 +59,7 @@ void secure_headers(Response& r) {
   };
   add("Content-Security-Policy", kCsp);
   add("X-Content-Type-Options", "nosniff");
-  add("Referrer-Policy", "no-referrer");
+  add("Referrer-Policy", "same-origin");  // "no-referrer" makes a form's Origin "null"
   add("X-Frame-Options", "DENY");
 }
 

@@ -71,6 +71,21 @@ std::string form_html(const CourseSet& set, const ProblemSpec& p, const Visitor&
                      : fmt::format("<p class=\"closed\">{}</p>\n", html_escape(closed)));
 }
 
+// The latest submission to problem `id` (null when none).
+const SubmissionRecord* latest_of(const std::vector<SubmissionRecord>& mine,
+                                  const std::string& id) {
+  for (auto it = mine.rbegin(); it != mine.rend(); ++it)
+    if (it->problem == id) return &*it;
+  return nullptr;
+}
+
+// The figure shows what the answers are (the painter's order, the hidden edges): it belongs to
+// the feedback, shown once a submission is graded and the policy lets feedback show.
+bool figure_allowed(const CourseSet& set, const ProblemSpec& p,
+                    const std::vector<SubmissionRecord>& mine, bool graded, Millis now) {
+  return p.info->drawable && graded && set.policy.feedback_shown(attempts_at(mine, p.id), now);
+}
+
 std::string problem_html(StudentApp& app, const CourseSet& set, const ProblemSpec& p, int number,
                          const Visitor& v, const std::map<std::string, std::string>& drafts,
                          const std::vector<SubmissionRecord>& mine, Millis now, bool& pending) {
@@ -81,19 +96,17 @@ std::string problem_html(StudentApp& app, const CourseSet& set, const ProblemSpe
       "<section class=\"problem\" id=\"p-{}\">\n<h2>{} {}</h2>\n<p class=\"text\">{}</p>\n",
       html_escape(p.id), html_escape(say(Say::Problem, lang)), number, html_escape(text));
   out += givens_html(p, lang);
-  if (p.info->drawable)
-    out += fmt::format("<figure><img src=\"/set/{}/figure/{}.svg\" alt=\"{}\"></figure>\n",
-                       html_escape(set.id), html_escape(url_encode(p.id)),
-                       html_escape(say(Say::Figure, lang)));
   const int attempts = attempts_at(mine, p.id);
   out += form_html(set, p, v, drafts, attempts, now, lang);
   // The latest submission in full; earlier ones stay reachable by their own page.
-  for (auto it = mine.rbegin(); it != mine.rend(); ++it) {
-    if (it->problem != p.id) continue;
-    const std::optional<GradeRecord> g = app.store.latest_grade(it->id);
+  if (const SubmissionRecord* last = latest_of(mine, p.id)) {
+    const std::optional<GradeRecord> g = app.store.latest_grade(last->id);
     pending = pending || !g;
-    out += submission_html(*it, g, set.policy.feedback_shown(attempts, now), lang);
-    break;
+    out += submission_html(*last, g, set.policy.feedback_shown(attempts, now), lang);
+    if (figure_allowed(set, p, mine, g && !g->failed, now))
+      out += fmt::format("<figure><img src=\"/set/{}/figure/{}.svg\" alt=\"{}\"></figure>\n",
+                         html_escape(set.id), html_escape(url_encode(p.id)),
+                         html_escape(say(Say::Figure, lang)));
   }
   return out + "</section>\n";
 }
@@ -175,10 +188,16 @@ Response submission_page(StudentApp& app, const Visitor& v, const CourseSet& set
   return html_response(200, page_html(lang, title_of(set), body, v.csrf, !g));
 }
 
-Response figure_svg(const Visitor& v, const CourseSet& set, const std::string& problem) {
+Response figure_svg(StudentApp& app, const Visitor& v, const CourseSet& set,
+                    const std::string& problem, Millis now) {
   const ProblemSet* variant = set.for_student(v.student);
   const ProblemSpec* p = variant ? variant->find(problem) : nullptr;
-  if (!p || p->error || !p->info->drawable) return message_page(404, set.set.lang, Say::NotFound);
+  if (!p || p->error) return message_page(404, set.set.lang, Say::NotFound);
+  const std::vector<SubmissionRecord> mine = app.store.submissions(v.student, set.id);
+  const SubmissionRecord* last = latest_of(mine, p->id);
+  const std::optional<GradeRecord> g = last ? app.store.latest_grade(last->id) : std::nullopt;
+  if (!figure_allowed(set, *p, mine, g && !g->failed, now))
+    return message_page(404, set.set.lang, Say::NotFound);
   try {
     PictureOptions options;
     options.api = p->conventions.api;

@@ -11,9 +11,11 @@ Response sets_page(StudentApp& app, const Visitor& v);
 Response set_page(StudentApp& app, const Visitor& v, const CourseSet& set, Millis now);
 Response submission_page(StudentApp& app, const Visitor& v, const CourseSet& set, std::int64_t id,
                          Millis now);
-Response figure_svg(const Visitor& v, const CourseSet& set, const std::string& problem);
+// A problem's figure, once its feedback is shown (it shows the answers).
+Response figure_svg(StudentApp& app, const Visitor& v, const CourseSet& set,
+                    const std::string& problem, Millis now);
 
-// Attempts made at each problem, and whether the policy lets feedback show for one.
+// Submissions made to one problem.
 int attempts_at(const std::vector<SubmissionRecord>& mine, const std::string& problem);
 
 }  // namespace frustum::server

@@ -44,8 +44,9 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
       return submission_page(app, v, set, *id, now);
   if (r.method == "GET" && rest.rfind(kFigure, 0) == 0 && rest.size() > 4 &&
       rest.compare(rest.size() - 4, 4, ".svg") == 0)
-    return figure_svg(v, set,
-                      url_decode(rest.substr(kFigure.size(), rest.size() - 4 - kFigure.size())));
+    return figure_svg(app, v, set,
+                      url_decode(rest.substr(kFigure.size(), rest.size() - 4 - kFigure.size())),
+                      now);
   return message_page(404, lang, Say::NotFound);
 }
 
