@@ -46,6 +46,12 @@ done
 
 server=${FRUSTUM_TEST_PG:-}
 if [[ -z $server ]]; then server=$(bash "$root/tools/postgres_cluster.sh" start "$build/postgres"); fi
+# The password goes to libpq through the environment, not the command lines of the instances
+# and their workers, which every user of the machine can read (ps).
+if [[ $server =~ ^(postgres(ql)?://[^:/@?]+):([0-9A-Za-z_.~-]+)@(.*)$ ]]; then
+  export PGPASSWORD=${BASH_REMATCH[3]}
+  server="${BASH_REMATCH[1]}@${BASH_REMATCH[4]}"
+fi
 schema=soak_$$_$RANDOM
 url="$server$([[ $server == *\?* ]] && echo '&' || echo '?')options=-csearch_path%3D$schema"
 psql_server() { psql -X -q -At -v ON_ERROR_STOP=1 "$server" -c "$1"; }
@@ -67,7 +73,7 @@ check() {  # check WHAT EXPECTED ACTUAL
 }
 # Every acknowledged submission (ids in $work/acked) stored and graded exactly once.
 check_exactly_once() {
-  sql "SELECT id FROM submissions ORDER BY id" | sort -n >"$work/stored"
+  sql "SELECT id FROM submissions" | sort >"$work/stored"  # comm's order
   check "acknowledged but not stored" 0 "$(comm -23 "$work/acked" "$work/stored" | wc -l)"
   check "stored submissions not graded" 0 "$(sql "SELECT count(*) FROM submissions s WHERE NOT EXISTS (SELECT 1 FROM grades g WHERE g.submission = s.id)")"
   check "submissions with more than one grade row" 0 "$(sql "SELECT count(*) FROM (SELECT submission FROM grades GROUP BY submission HAVING count(*) > 1) x")"
@@ -155,7 +161,7 @@ YAML
     sleep 0.2
   done
   graded_at=$((($(date +%s%N) - start) / 1000000))
-  awk '$1 == "ack" { print $2 }' "$work/acks.log" | sort -n >"$work/acked"
+  awk '$1 == "ack" { print $2 }' "$work/acks.log" | sort >"$work/acked"
   acked=$(wc -l <"$work/acked")
   ((acked > 0)) || { echo "soak: FAIL nothing was acknowledged" >&2; tail "$work"/instance-*.log >&2; exit 1; }
   check_exactly_once
@@ -215,7 +221,7 @@ for pid in "${pids[@]:2}"; do [[ $pid == "$submitter" ]] || wait "$pid" || true;
 wait "${pids[0]}" || true
 done_at=$(( ($(date +%s%N) - start) / 1000000 - idle_exit_ms ))
 
-awk '$1 == "ack" { print $2 }' "$work/acks.log" | sort -n >"$work/acked"
+awk '$1 == "ack" { print $2 }' "$work/acks.log" | sort >"$work/acked"
 acked=$(wc -l <"$work/acked")
 check "acknowledged submissions" "$submissions" "$acked"
 check_exactly_once
