@@ -154,6 +154,9 @@ class ConnectionPool {
     }
     try {
       auto db = std::make_unique<PgConnection>(url_);
+      // A commit returns once it is on disk, whatever the server's default: a submission is
+      // acknowledged only after its commit.
+      db->exec("SET synchronous_commit TO on");
       for (const auto& [name, sql] : kStatements) db->prepare(name, sql);
       return db;
     } catch (...) {
