@@ -157,7 +157,8 @@ int run_serve(const ServeOptions& s, const Output& o) {
   server::Course course;
   if (!load(s, o, course)) return 1;
   const std::string url = db_url(s);
-  const std::unique_ptr<Store> store = server::open_store(url);
+  const std::unique_ptr<Store> store =
+      server::open_store(url, s.worker ? server::StoreRole::Worker : server::StoreRole::Server);
   if (s.worker) {
     server::WorkerOptions w;
     w.seconds = s.grade_seconds;

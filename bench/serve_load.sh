@@ -70,8 +70,8 @@ echo "## 3. ${idle} idle connections"
 $client idle "$base" "$idle" 50
 stop_server
 
-echo "## 4. twice the capacity (64 requests in flight allowed, 128 connections submitting)"
-start_server --max-in-flight 64
+echo "## 4. overload: 16 requests in flight allowed, 128 connections submitting"
+start_server --max-in-flight 16
 rss0=$(rss_kb)
 wrk_run submit 128 | grep -E 'Requests/sec|Non-2xx' | sed 's/^/overload: /'
 rss1=$(rss_kb)

@@ -55,18 +55,24 @@ Response preview_answer(StudentApp& app, const Visitor& v,
                          json_text(Json{{"ok", false}, {"error", say(Say::TooLarge, lang)}}, -1));
   if (text.find_first_not_of(" \t") == std::string::npos)
     return json_response(200, R"({"ok":true,"empty":true})");
-  const ParsedAnswer parsed = parse_answer(answer_node(text), *spec, p->conventions.angles);
-  if (!parsed.ok)
-    return json_response(200, json_text(Json{{"ok", false},
-                                             {"label", say(Say::CannotRead, lang)},
-                                             {"error", tr(parsed.error, lang)}},
-                                        -1));
-  const MathText shown = parsed.value.shown();
-  return json_response(200, json_text(Json{{"ok", true},
-                                           {"label", say(Say::ReadAs, lang)},
-                                           {"tex", shown.latex},
-                                           {"text", shown.unicode}},
-                                      -1));
+  const YAML::Node node = answer_node(text);
+  Json reading;
+  {
+    // The parsed value holds exact numbers: made, shown and freed under the lock.
+    const std::lock_guard lock(app.exact_math);
+    const ParsedAnswer parsed = parse_answer(node, *spec, p->conventions.angles);
+    if (!parsed.ok) {
+      reading = Json{
+          {"ok", false}, {"label", say(Say::CannotRead, lang)}, {"error", tr(parsed.error, lang)}};
+    } else {
+      const MathText shown = parsed.value.shown();
+      reading = Json{{"ok", true},
+                     {"label", say(Say::ReadAs, lang)},
+                     {"tex", shown.latex},
+                     {"text", shown.unicode}};
+    }
+  }
+  return json_response(200, json_text(reading, -1));
 }
 
 Response save_draft(StudentApp& app, const Visitor& v,

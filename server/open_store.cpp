@@ -6,12 +6,13 @@
 
 namespace frustum::server {
 
-std::unique_ptr<Store> open_store(const std::string& url) {
+std::unique_ptr<Store> open_store(const std::string& url, StoreRole role) {
   constexpr std::string_view kSqlite = "sqlite:";
   if (url.rfind(kSqlite, 0) == 0) {
     const std::string path = url.substr(kSqlite.size());
     if (path.empty()) throw StoreError("--db sqlite:PATH needs a file name after sqlite:");
-    return open_sqlite_store(path);
+    return open_sqlite_store(path,
+                             role == StoreRole::Worker ? SqliteSync::Normal : SqliteSync::Full);
   }
   if (url.rfind("postgresql://", 0) == 0 || url.rfind("postgres://", 0) == 0)
     return open_postgres_store(url);

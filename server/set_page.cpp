@@ -201,7 +201,11 @@ Response figure_svg(StudentApp& app, const Visitor& v, const CourseSet& set,
   try {
     PictureOptions options;
     options.api = p->conventions.api;
-    const Picture picture = draw_picture(p->info->drawable(p->given), options);
+    Picture picture;
+    {
+      const std::lock_guard lock(app.exact_math);  // the given holds exact numbers
+      picture = draw_picture(p->info->drawable(p->given), options);
+    }
     return Response{200,
                     {{"Content-Type", "image/svg+xml"},
                      {"Cache-Control", "private, max-age=3600"},

@@ -13,10 +13,14 @@ namespace frustum::server {
 
 class SqliteStmt;
 
+// synchronous=FULL: a commit is on disk when it returns. NORMAL (WAL): it survives the process
+// being killed, and a power failure may lose the last commits.
+enum class SqliteSync { Full, Normal };
+
 class SqliteDb {
  public:
   // Opens (creating) the file in WAL mode with synchronous=FULL and a busy timeout.
-  explicit SqliteDb(const std::string& path);
+  explicit SqliteDb(const std::string& path, SqliteSync sync = SqliteSync::Full);
   ~SqliteDb();
   SqliteDb(const SqliteDb&) = delete;
   SqliteDb& operator=(const SqliteDb&) = delete;

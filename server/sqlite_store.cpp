@@ -67,7 +67,7 @@ class ReaderPool {
 
 class SqliteStore final : public Store {
  public:
-  explicit SqliteStore(const std::string& path) : writer_(path), readers_(path) {}
+  SqliteStore(const std::string& path, SqliteSync sync) : writer_(path, sync), readers_(path) {}
 
   int schema_version() override {
     return readers_.with([](SqliteDb& db) { return sqlite_schema_version(db); });
@@ -279,12 +279,12 @@ class SqliteStore final : public Store {
 
 }  // namespace
 
-std::unique_ptr<Store> open_sqlite_store(const std::string& path) {
+std::unique_ptr<Store> open_sqlite_store(const std::string& path, SqliteSync sync) {
   {
     SqliteDb db(path);
     migrate_sqlite(db, path);
   }
-  return std::make_unique<SqliteStore>(path);
+  return std::make_unique<SqliteStore>(path, sync);
 }
 
 }  // namespace frustum::server

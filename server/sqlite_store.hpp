@@ -5,10 +5,11 @@
 #include <memory>
 #include <string>
 
-#include "server/store.hpp"
+#include "server/sqlite_db.hpp"
 
 namespace frustum::server {
 
-std::unique_ptr<Store> open_sqlite_store(const std::string& path);
+std::unique_ptr<Store> open_sqlite_store(const std::string& path,
+                                         SqliteSync sync = SqliteSync::Full);
 
 }  // namespace frustum::server

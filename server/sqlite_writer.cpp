@@ -4,7 +4,8 @@
 
 namespace frustum::server {
 
-SqliteWriter::SqliteWriter(const std::string& path) : db_(path), thread_([this] { loop(); }) {}
+SqliteWriter::SqliteWriter(const std::string& path, SqliteSync sync)
+    : db_(path, sync), thread_([this] { loop(); }) {}
 
 SqliteWriter::~SqliteWriter() {
   {

@@ -17,7 +17,7 @@ namespace frustum::server {
 
 class SqliteWriter {
  public:
-  explicit SqliteWriter(const std::string& path);
+  SqliteWriter(const std::string& path, SqliteSync sync);
   ~SqliteWriter();  // finishes the queued writes, then stops
 
   // Runs `write` on the writer's connection inside a transaction and returns once it is

@@ -94,10 +94,15 @@ class Store {
   virtual std::int64_t pending_count() = 0;
 };
 
+// Who opens a store. A grading worker's own writes (claims, grades) may be made durable less
+// eagerly: one lost in a power failure leaves its submission pending, to be graded again (and
+// still once). Submissions are always committed durably.
+enum class StoreRole { Server, Worker };
+
 // "sqlite:PATH" or "postgresql://…"; applies the embedded, numbered, forward-only migrations
 // under a lock (exactly one of N instances starting at once migrates) and refuses a database
 // whose schema is newer than the binary, with a clear error (StoreError).
-std::unique_ptr<Store> open_store(const std::string& url);
+std::unique_ptr<Store> open_store(const std::string& url, StoreRole role = StoreRole::Server);
 
 // The schema version this binary's migrations reach (both stores share the numbering).
 int latest_schema_version();

@@ -12,6 +12,7 @@
 //   GET  /static/…             the page's module, style and KaTeX
 #pragma once
 
+#include <mutex>
 #include <string>
 
 #include "server/course.hpp"
@@ -40,6 +41,10 @@ struct StudentApp {
   Store& store;
   AppConfig config;
   RateLimiter preview_limit, draft_limit, submit_limit;
+  // GiNaC (the exact numbers in parsed answers and in the course's givens) is not thread-safe:
+  // its expressions share reference counts and tables. Every handler that touches exact values
+  // — parsing a preview, drawing a figure — holds this; the rest of a page is strings and YAML.
+  std::mutex exact_math;
 };
 
 Response handle_student(StudentApp& app, const Request& request, Millis now);

@@ -40,7 +40,10 @@ int run_worker(const Course& course, Store& store, const std::string& name,
   const pid_t parent = ::getppid();
   SolvedCache cache;
   while (!stop.load() && ::getppid() == parent) {
-    const std::optional<SubmissionRecord> s = store.claim(name, now_ms(), claim_lease(options));
+    // A read first: an idle worker takes no write lock.
+    const std::optional<SubmissionRecord> s =
+        store.pending_count() > 0 ? store.claim(name, now_ms(), claim_lease(options))
+                                  : std::nullopt;
     if (!s) {
       std::this_thread::sleep_for(std::chrono::milliseconds(options.idle_ms));
       continue;

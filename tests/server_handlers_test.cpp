@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <thread>
 
 #include "server/clock.hpp"
 #include "server/given_tex.hpp"
@@ -189,6 +190,33 @@ TEST_F(StudentPages, ThePreviewReadsButNeverJudges) {
       post("/api/preview", alice, "csrf=" + csrf + "&set=week1&problem=zbuf&answer=secret&text=1")
           .status,
       404);
+}
+
+// Handlers run on many threads and GiNaC is not thread-safe: previews (exact numbers) from
+// several threads at once must neither crash nor disagree.
+TEST_F(StudentPages, PreviewsFromManyThreadsAtOnce) {
+  config_.preview_burst = 1e9;
+  app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  const auto preview = [&](int n) {
+    return post("/api/preview", alice,
+                "csrf=" + csrf + "&set=week1&problem=zbuf&answer=plane&text=" +
+                    url_encode("x/3 + y - z = " + std::to_string(n) + "/7"))
+        .body;
+  };
+  constexpr int kThreads = 6, kEach = 150;
+  std::vector<std::string> alone;
+  for (int n = 0; n < kThreads * kEach; ++n) alone.push_back(preview(n));
+  EXPECT_NE(alone[1].find("\\frac{1}{7}"), std::string::npos) << alone[1];
+  std::atomic<int> same{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int i = 0; i < kEach; ++i) same += preview(t * kEach + i) == alone[t * kEach + i];
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(same.load(), kThreads * kEach);
 }
 
 TEST_F(StudentPages, PostsNeedTheSessionsCsrfTokenAndThisOrigin) {
