@@ -63,6 +63,7 @@ int work(const std::string& url, const std::string& name, Millis lease, Millis g
          Millis idle_exit) {
   frustum::server::PostgresOptions options;
   options.connections = 1;
+  options.worker = true;
   const std::unique_ptr<frustum::server::Store> store =
       frustum::server::open_postgres_store(url, options);
   Millis idle_since = now_ms();

@@ -14,8 +14,11 @@ std::unique_ptr<Store> open_store(const std::string& url, StoreRole role) {
     return open_sqlite_store(path,
                              role == StoreRole::Worker ? SqliteSync::Normal : SqliteSync::Full);
   }
-  if (url.rfind("postgresql://", 0) == 0 || url.rfind("postgres://", 0) == 0)
-    return open_postgres_store(url);
+  if (url.rfind("postgresql://", 0) == 0 || url.rfind("postgres://", 0) == 0) {
+    PostgresOptions options;
+    options.worker = role == StoreRole::Worker;
+    return open_postgres_store(url, options);
+  }
   throw StoreError("unknown database '" + redact_postgres_url(url) +
                    "': use sqlite:PATH or postgresql://USER@HOST/DATABASE");
 }

@@ -115,8 +115,8 @@ SubmissionRecord submission_row(const std::vector<std::string>& row) {
 // Open connections, each used by one thread at a time; at most `limit` exist.
 class ConnectionPool {
  public:
-  ConnectionPool(std::string url, int limit)
-      : url_(std::move(url)), limit_(limit < 1 ? 1 : limit) {}
+  ConnectionPool(std::string url, int limit, bool worker)
+      : url_(std::move(url)), limit_(limit < 1 ? 1 : limit), worker_(worker) {}
 
   // Runs the prepared statement `name` on a free connection. A connection the server has
   // closed while it was idle (restart, failover) is replaced before the statement is sent, so
@@ -155,8 +155,8 @@ class ConnectionPool {
     try {
       auto db = std::make_unique<PgConnection>(url_);
       // A commit returns once it is on disk, whatever the server's default: a submission is
-      // acknowledged only after its commit.
-      db->exec("SET synchronous_commit TO on");
+      // acknowledged only after its commit. A worker submits nothing (PostgresOptions::worker).
+      db->exec(worker_ ? "SET synchronous_commit TO off" : "SET synchronous_commit TO on");
       for (const auto& [name, sql] : kStatements) db->prepare(name, sql);
       return db;
     } catch (...) {
@@ -181,6 +181,7 @@ class ConnectionPool {
 
   std::string url_;
   int limit_;
+  bool worker_;
   std::mutex mutex_;
   std::condition_variable freed_;
   std::vector<std::unique_ptr<PgConnection>> free_;
@@ -189,7 +190,8 @@ class ConnectionPool {
 
 class PostgresStore final : public Store {
  public:
-  PostgresStore(const std::string& url, int connections) : pool_(url, connections) {}
+  PostgresStore(const std::string& url, const PostgresOptions& options)
+      : pool_(url, options.connections, options.worker) {}
 
   int schema_version() override {
     return static_cast<int>(integer(pool_.run("schema_version", {}).rows.at(0).at(0)));
@@ -300,7 +302,7 @@ class PostgresStore final : public Store {
 
 std::unique_ptr<Store> open_postgres_store(const std::string& url, PostgresOptions options) {
   migrate_postgres(url);
-  return std::make_unique<PostgresStore>(url, options.connections);
+  return std::make_unique<PostgresStore>(url, options);
 }
 
 }  // namespace frustum::server

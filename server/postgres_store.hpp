@@ -12,6 +12,10 @@ namespace frustum::server {
 
 struct PostgresOptions {
   int connections = 4;  // at most this many open at once (each thread uses one at a time)
+  // A grading worker's claims and grades may reach the disk after their commit returns
+  // (synchronous_commit off): one lost in a crash of the database server leaves its submission
+  // pending, graded again, still once. Submissions always wait for the disk.
+  bool worker = false;
 };
 
 // Applies the missing migrations of the database at `url` and returns how many this call
