@@ -7,9 +7,11 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <memory>
 #include <ostream>
 
-#include "app/variant_files.hpp"
+#include "app/cli_options.hpp"
+#include "batch/variant_files.hpp"
 #include "server/clock.hpp"
 #include "server/http_server.hpp"
 #include "server/student_app.hpp"
@@ -151,6 +153,12 @@ CLI::App* add_serve_command(CLI::App& cli, ServeOptions& s) {
                 "Submissions a session may make a second (default 1, bursts of 10; 429 beyond)");
   c->add_option("--worker", s.worker, "")->group("");  // internal: a grading worker
   return c;
+}
+
+Command add_serve_command(CLI::App& cli) {
+  auto options = std::make_shared<ServeOptions>();
+  CLI::App* serve = add_serve_command(cli, *options);
+  return {serve, [options](const Output& o) { return run_serve(*options, o); }};
 }
 
 int run_serve(const ServeOptions& s, const Output& o) {

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grader/report.hpp"
+#include "report/report.hpp"
 #include "server/http.hpp"
 #include "server/phrases.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grader/report.hpp"
+#include "report/report.hpp"
 #include "server/answer_text.hpp"
 #include "solver/derivation/render.hpp"
 
