@@ -55,6 +55,7 @@ Command add_grade_command(CLI::App& cli);
 Command add_kinds_command(CLI::App& cli);
 Command add_generate_command(CLI::App& cli);
 Command add_export_command(CLI::App& cli);
+Command add_serve_command(CLI::App& cli);
 Command add_draw_command(CLI::App& cli);
 Command add_bench_command(CLI::App& cli);
 Command add_render_command(CLI::App& cli);

@@ -1,3 +1,5 @@
+#include "server/postgres_connection.hpp"
+#include "server/postgres_store.hpp"
 #include "server/sqlite_migrations.hpp"
 #include "server/sqlite_store.hpp"
 #include "server/store.hpp"
@@ -12,10 +14,12 @@ std::unique_ptr<Store> open_store(const std::string& url, StoreRole role) {
     return open_sqlite_store(path,
                              role == StoreRole::Worker ? SqliteSync::Normal : SqliteSync::Full);
   }
-  if (url.rfind("postgresql://", 0) == 0 || url.rfind("postgres://", 0) == 0)
-    throw StoreError("this frustum was built without the PostgreSQL store: " +
-                     std::string("use --db sqlite:PATH"));
-  throw StoreError("unknown database '" + url +
+  if (url.rfind("postgresql://", 0) == 0 || url.rfind("postgres://", 0) == 0) {
+    PostgresOptions options;
+    options.worker = role == StoreRole::Worker;
+    return open_postgres_store(url, options);
+  }
+  throw StoreError("unknown database '" + redact_postgres_url(url) +
                    "': use sqlite:PATH or postgresql://USER@HOST/DATABASE");
 }
 
