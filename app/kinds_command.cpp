@@ -27,7 +27,7 @@ Command add_kinds_command(CLI::App& cli) {
   auto* kinds = cli.add_subcommand("kinds", "List the problem kinds and their answers");
   kinds
       ->add_option("--format", *format,
-                   "text, or markdown: the README's kinds table, generated from the kinds")
+                   "text, or markdown: the manual's kinds table, generated from the kinds")
       ->check(CLI::IsMember({"text", "markdown"}));
   kinds->footer(examples({"frustum kinds", "frustum kinds --format markdown"}));
   return {kinds, [format](const Output& o) { return run_kinds(o, *format == "markdown"); }};

@@ -198,7 +198,8 @@ def main():
     # of its own, removed with the rest at the end: this VM's ext4 has no journal, and creating
     # files soon after thousands were deleted scans the recently deleted inodes.
     # The lecture's plane-method exercise with ranges wide enough for 100 000 distinct variants
-    # (problems/seeds/001's own redraw holds about 13 500, and generate then stops with an error).
+    # (problems/seeds/001_zbuffer_plane_method.yaml's own redraw holds about 13 500, and generate
+    # then stops with an error).
     gen_set = os.path.join(work, "gen-set.yaml")
     subprocess.run([PY, WORKLOADS, "gen-set", gen_set], check=True)
     gen_sizes = ([100, 1000, 10000] + ([100000] if args.full else [])) if want("generate") else []

@@ -1,4 +1,4 @@
-// The README's answer-syntax table is checked against the code: every answer of every kind is
+// docs/answers.md's answer-syntax table is checked against the code: every answer of every kind is
 // in the row of its answer type, and every example in the table parses as that type.
 #include <yaml-cpp/yaml.h>
 
@@ -38,11 +38,11 @@ std::vector<std::string> backticked(const std::string& s) {
   return out;
 }
 
-// The rows of the table under "#### Answer syntax".
-std::vector<Row> readme_rows() {
-  std::ifstream in(test::source_path("README.md"));
+// The rows of the table under "## Answer syntax" in docs/answers.md.
+std::vector<Row> docs_rows() {
+  std::ifstream in(test::source_path("docs/answers.md"));
   std::string line;
-  while (std::getline(in, line) && line != "#### Answer syntax") {
+  while (std::getline(in, line) && line != "## Answer syntax") {
   }
   std::vector<Row> rows;
   bool in_table = false;
@@ -80,8 +80,8 @@ std::vector<Row> readme_rows() {
   return rows;
 }
 
-TEST(AnswerSyntax, ReadmeTableCoversEveryAnswerOfEveryKind) {
-  const std::vector<Row> rows = readme_rows();
+TEST(AnswerSyntax, DocsTableCoversEveryAnswerOfEveryKind) {
+  const std::vector<Row> rows = docs_rows();
   ASSERT_GE(rows.size(), 10u);
   std::map<std::pair<std::string, std::string>, std::string> row_of;
   for (const Row& r : rows)
@@ -103,12 +103,12 @@ TEST(AnswerSyntax, ReadmeTableCoversEveryAnswerOfEveryKind) {
   for (const KindInfo& k : builtin_kinds().all())
     for (const AnswerSpec& a : k.answers)
       EXPECT_TRUE(row_of.count({k.name, a.name}))
-          << k.name << "." << a.name << " is missing from the README's table";
+          << k.name << "." << a.name << " is missing from docs/answers.md's table";
 }
 
-TEST(AnswerSyntax, EveryExampleInTheReadmeParses) {
+TEST(AnswerSyntax, EveryExampleInTheDocsParses) {
   int examples = 0;
-  for (const Row& r : readme_rows()) {
+  for (const Row& r : docs_rows()) {
     ASSERT_FALSE(r.answers.empty()) << r.type;
     const auto& [kind, name] = *r.answers.begin();
     const AnswerSpec* spec = builtin_kinds().find(kind)->answer(name);

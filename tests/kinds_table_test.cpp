@@ -1,6 +1,6 @@
-// README.md's kinds table is generated from the registry (each kind file's doc_given and
+// docs/kinds.md's kinds table is generated from the registry (each kind file's doc_given and
 // doc_answers, in the registry's order): this fails when the two differ and prints the table
-// to paste into README.md (`frustum kinds --format markdown` prints it too).
+// to paste into docs/kinds.md (`frustum kinds --format markdown` prints it too).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -13,8 +13,8 @@ namespace frustum {
 namespace {
 
 // The table that starts with the kinds table's header row, up to its first non-table line.
-std::string readme_kinds_table() {
-  std::ifstream in(test::source_path("README.md"));
+std::string docs_kinds_table() {
+  std::ifstream in(test::source_path("docs/kinds.md"));
   std::string line, table;
   while (std::getline(in, line) && line != "| kind | given | answers |") {
   }
@@ -24,10 +24,10 @@ std::string readme_kinds_table() {
   return table;
 }
 
-TEST(KindsTable, ReadmeMatchesTheRegistry) {
+TEST(KindsTable, DocsMatchTheRegistry) {
   const std::string generated = kinds_table_markdown(builtin_kinds());
-  EXPECT_EQ(readme_kinds_table(), generated)
-      << "README.md's kinds table differs from the kinds' doc_given/doc_answers; the table "
+  EXPECT_EQ(docs_kinds_table(), generated)
+      << "docs/kinds.md's kinds table differs from the kinds' doc_given/doc_answers; the table "
          "to paste:\n\n"
       << generated;
 }

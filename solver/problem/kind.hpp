@@ -138,12 +138,12 @@ struct KindInfo {
   // problem as written, and `vary:` on it is an error.
   bool fixed = false;
 
-  // Where the kind stands in `frustum kinds`, the README's table and every other listing of
-  // kinds (smaller first): set in the kind's `<name>_kind()`; the registry sorts by it.
+  // Where the kind stands in `frustum kinds`, the kinds table of docs/kinds.md and every other
+  // listing of kinds (smaller first): set in the kind's `<name>_kind()`; the registry sorts by it.
   int order = 0;
-  // The README's kinds table (Markdown): what `given` takes and what the answers are. The
-  // table is generated from these (kinds_table_markdown) and tests/kinds_table_test.cpp
-  // checks README.md against it.
+  // The kinds table of docs/kinds.md (Markdown): what `given` takes and what the answers are.
+  // The table is generated from these (kinds_table_markdown) and tests/kinds_table_test.cpp
+  // checks docs/kinds.md against it.
   std::string doc_given;
   std::string doc_answers;
   // Optional. One draw of a well-conditioned `given` for `frustum bench accuracy`, as a YAML
@@ -153,7 +153,7 @@ struct KindInfo {
   const AnswerSpec* answer(const std::string& name) const;
 };
 
-// Adapts a kind struct (see STYLE.md) to the type-erased KindInfo.
+// Adapts a kind struct (CONTRIBUTING.md, "The kind file") to the type-erased KindInfo.
 template <typename K>
 KindInfo make_kind() {
   KindInfo k;

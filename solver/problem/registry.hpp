@@ -27,7 +27,8 @@ const Registry& builtin_kinds();
 // calls them all from the list CMake makes of those files (kinds_list.inc in the build tree),
 // in the order of KindInfo::order. A kind file without its function fails to link.
 
-// The README's kinds table (Markdown), one row per kind from KindInfo::doc_given/doc_answers.
+// The kinds table of docs/kinds.md (Markdown), one row per kind from
+// KindInfo::doc_given/doc_answers.
 std::string kinds_table_markdown(const Registry& registry);
 
 }  // namespace frustum
