@@ -78,14 +78,7 @@ T plane_distance(const Vec4<T>& c, int k, bool z_from_zero, const T& eps) {
   }
 }
 
-// A triangle's window polygon with every decision taken: outside, clipped, facing, the
-// snapped vertices and their window depths. nullopt: a ranged value could not prove one.
-template <typename T>
-struct Outcome {
-  bool outside = false, clipped = false, front = false;
-  std::vector<FixedPoint2> snapped;
-  std::vector<T> z;
-};
+}  // namespace
 
 template <typename T>
 std::optional<Outcome<T>> window_polygon(const std::array<Vec4<T>, 3>& clip, const Scene& s,
@@ -140,8 +133,11 @@ std::optional<Outcome<T>> window_polygon(const std::array<Vec4<T>, 3>& clip, con
   return out;
 }
 
-// Depth at the centre of pixel (i, j): the plane through the snapped vertices, Σ λₖ zₖ with
-// λₖ = Eₖ / (2·area) exact ratios of integers (rasterizer.hpp's interpolate).
+template std::optional<Outcome<R>> window_polygon(const std::array<Vec4<R>, 3>&, const Scene&,
+                                                  const R&);
+template std::optional<Outcome<Exact>> window_polygon(const std::array<Vec4<Exact>, 3>&,
+                                                      const Scene&, const Exact&);
+
 template <typename T>
 T depth_at_centre(const TriangleSetup& t, const std::array<T, 3>& z, int i, int j) {
   const FixedPoint2 p = pixel_centre(i, j);
@@ -156,6 +152,10 @@ T depth_at_centre(const TriangleSetup& t, const std::array<T, 3>& z, int i, int 
     sum += z[static_cast<std::size_t>(t.order[k])] * integer(t.edge[k].at(p.x, p.y));
   return tidied(T(sum / integer(t.area2)));
 }
+template R depth_at_centre(const TriangleSetup&, const std::array<R, 3>&, int, int);
+template Exact depth_at_centre(const TriangleSetup&, const std::array<Exact, 3>&, int, int);
+
+namespace {
 
 Mat4<Exact> product(const Mat4<Exact>& a, const Mat4<Exact>& b) {
   Mat4<Exact> m = a * b;
@@ -229,13 +229,6 @@ Exact exact_epsilon() { return exact_from_double(kClipEpsilon); }
 Outcome<Exact> exact_outcome(const CertifiedScene& cs, const FlatScene& flat, const Scene& s,
                              int source) {
   return *window_polygon<Exact>(exact_clip(cs, flat, source), s, exact_epsilon());
-}
-
-// The window depths of piece `fan` of a fan from a polygon's first vertex.
-template <typename T>
-std::array<T, 3> fan_depths(const std::vector<T>& z, int fan) {
-  const auto v = static_cast<std::size_t>(fan) + 1;
-  return {z[0], z[v], z[v + 1]};
 }
 
 }  // namespace
