@@ -50,7 +50,9 @@ std::string random_scene(std::mt19937& rng, const std::string& api, int n) {
     default:
       s += "  ortho: {left: -4, right: 4, bottom: -3, top: 3, near: 0.5, far: 30}\n";
   }
-  s += "  background: [10, 20, 30]\n  objects:\n";
+  s += "  background: [10, 20, 30]\n";
+  if (n % 2 == 1) s += "  light: lights\n";  // facing then shades: decided for every triangle
+  s += "  objects:\n";
   std::uniform_int_distribution<int> channel(0, 255);
   std::vector<std::array<std::string, 9>> tris;
   for (int k = 0; k < 6; ++k) {

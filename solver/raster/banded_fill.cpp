@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 
+#include "solver/raster/certified_frame.hpp"
 #include "solver/raster/frame_work.hpp"
 #include "solver/util/side_by_side.hpp"
 
@@ -153,6 +154,8 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
     *geometry_stats = GeometryStats{};
     for (const Part& part : setups) *geometry_stats += part.stage.stats;
   }
+  if (certifier)
+    for (Part& part : setups) certifier->keep(std::move(part.stage.kept));
 }
 
 }  // namespace frustum

@@ -87,8 +87,16 @@ void take(const Outcome<T>& o, CertifiedWindow& out) {
 
 }  // namespace
 
+void FrameCertifier::keep(std::vector<KeptWindow>&& part) {
+  if (kept_.empty())
+    kept_ = std::move(part);
+  else
+    kept_.insert(kept_.end(), part.begin(), part.end());
+}
+
 FrameCertifier::FrameCertifier(const Scene& scene, Mat4<Exact> clip_from_world)
-    : scene_(scene),
+    : keeps_(world_triangle_count(scene) <= kBandedTriangles),
+      scene_(scene),
       clip_from_world_(frustum::clip_from_world(scene)),
       exact_clip_from_world_(std::move(clip_from_world)) {
   // The camera in ranged doubles from the exact inputs rounded once, the projection's entries
@@ -150,6 +158,44 @@ const Outcome<Exact>& FrameCertifier::exact_outcome(int object, int face) {
       .first->second;
 }
 
+bool FrameCertifier::inside_window(const std::array<Vec4<R>, 3>& clip, bool facing,
+                                   CertifiedWindow& out) const {
+  // Every vertex proven within every plane (w ≥ ε, −w ≤ x, y ≤ w, −w ≤ z ≤ w or 0 ≤ z ≤ w).
+  const R eps(kClipEpsilon, 0);
+  const bool zero = scene_.api == Api::DirectX;
+  for (const Vec4<R>& c : clip) {
+    const R& w = c(3);
+    if (R(w - eps).proven_sign() <= 0 || R(c(0) + w).proven_sign() <= 0 ||
+        R(w - c(0)).proven_sign() <= 0 || R(c(1) + w).proven_sign() <= 0 ||
+        R(w - c(1)).proven_sign() <= 0 || R(w - c(2)).proven_sign() <= 0 ||
+        (zero ? c(2).proven_sign() <= 0 : R(c(2) + w).proven_sign() <= 0))
+      return false;
+  }
+  // window_polygon's divide, viewport and snap on the three vertices, and its facing.
+  const auto scale = static_cast<double>(kSubpixelScale);
+  std::array<Vec3<R>, 3> r;
+  out.raster.clear();
+  out.depth_error = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Vec4<R>& c = clip[k];
+    const Vec3<R> ndc(R(c(0) / c(3)), R(c(1) / c(3)), R(c(2) / c(3)));
+    r[k] = viewport<R>(ndc, R(scene_.width), R(scene_.height), scene_.api);
+    if (window_y_down(scene_.api)) r[k](1) = R(R(scene_.height) - r[k](1));
+    const std::optional<std::int64_t> x = decided_snap(r[k](0)), y = decided_snap(r[k](1));
+    if (!x || !y || !std::isfinite(r[k](2).r)) return false;
+    out.raster.emplace_back(static_cast<double>(*x) / scale, static_cast<double>(*y) / scale,
+                            r[k](2).v);
+    out.depth_error = std::max(out.depth_error, r[k](2).r);
+  }
+  const R area = R(R(r[1](0) - r[0](0)) * R(r[2](1) - r[0](1))) -
+                 R(R(r[1](1) - r[0](1)) * R(r[2](0) - r[0](0)));
+  const int sign = facing ? area.proven_sign() : 1;
+  if (sign == 0) return false;
+  out.outside = out.clipped = out.exact = false;
+  out.front = scene_.api == Api::OpenGL ? sign > 0 : sign < 0;
+  return true;
+}
+
 void FrameCertifier::window(const WorldTriangle& t, CertifiedWindow& out) {
   // The clip coordinates as the stage computes them, each with its proven radius.
   std::array<Vec4<R>, 3> clip;
@@ -162,9 +208,14 @@ void FrameCertifier::window(const WorldTriangle& t, CertifiedWindow& out) {
           R(c(static_cast<int>(i)),
             (alpha_[i] * (size + t.error) + beta_[i] * t.error + gamma_[i]) * (1 + 8 * kU) + kEta);
   }
-  if (const std::optional<Outcome<R>> ranged =
-          window_polygon<R>(clip, scene_, R(kClipEpsilon, 0))) {
-    take(*ranged, out);
+  // Facing changes the image only through culling and the light: without either, a face
+  // exactly edge-on (its sign unprovable) needs no exact arithmetic.
+  const bool facing = t.cull == Cull::Back || scene_.light.has_value();
+  if (inside_window(clip, facing, out)) return;
+  if (!out.scratch) out.scratch = std::make_shared<Outcome<R>>();
+  Outcome<R>& ranged = *static_cast<Outcome<R>*>(out.scratch.get());
+  if (window_polygon_into<R>(clip, scene_, R(kClipEpsilon, 0), ranged, facing)) {
+    take(ranged, out);
     out.exact = false;
     return;
   }
@@ -207,45 +258,82 @@ void repair_undecided(const Scene& scene, Frame& frame, FrameCertifier& certifie
   GeometryStage stage(scene, &certifier);
   std::vector<WindowTriangle> window;
   int source = 0;
-  for_each_world_triangle(
-      scene,
-      [&](const WorldTriangle& world) {
-        window.clear();
-        stage.add(world, source++, window);
-        for (std::size_t fan = 0; fan < window.size(); ++fan) {
-          const WindowTriangle& w = window[fan];
-          FrameCertifier::Piece piece{world.object, world.face, static_cast<int>(fan), {}};
-          setup_triangle({Vec2<double>(w.v[0](0), w.v[0](1)), Vec2<double>(w.v[1](0), w.v[1](1)),
-                          Vec2<double>(w.v[2](0), w.v[2](1))},
-                         piece.setup);
-          const TriangleSetup& s = piece.setup;
-          if (s.degenerate) continue;
-          const std::array<R, 3> z{R(w.v[0](2), w.depth_error), R(w.v[1](2), w.depth_error),
-                                   R(w.v[2](2), w.depth_error)};
-          const int j0 = std::max(s.j_min, 0),
-                    j1 = std::min(s.j_max, static_cast<int>(rows.size()) - 1);
-          for (int j = j0; j <= j1; ++j) {
-            std::vector<Pixel>& row = rows[static_cast<std::size_t>(j)];
-            auto p = std::lower_bound(row.begin(), row.end(), s.i_min,
+  // Whether a triangle inside the view volume by its doubles can cover an undecided pixel: its
+  // raster box from the doubles, widened by two pixels (its certified vertices are within
+  // rounding of them and snap by at most 1/512 pixel; a clip the doubles do not see only cuts
+  // it smaller).
+  const Mat4d clip_from = clip_from_world(scene);
+  auto may_cover = [&](const WorldTriangle& t) {
+    const std::array<Vec4d, 3> clip{to_clip(clip_from, t.v[0]), to_clip(clip_from, t.v[1]),
+                                    to_clip(clip_from, t.v[2])};
+    if (!inside_volume(clip, scene.api)) return true;  // clipped or outside: certified below
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const Vec4d& c : clip) {
+      const Vec3d r = to_raster(perspective_divide(c), scene.width, scene.height, scene.api);
+      x0 = std::min(x0, r(0));
+      x1 = std::max(x1, r(0));
+      y0 = std::min(y0, r(1));
+      y1 = std::max(y1, r(1));
+    }
+    if (!(x0 <= x1 && y0 <= y1)) return true;  // a NaN: certified below
+    const int j0 = std::max(0, static_cast<int>(std::floor(y0)) - 2),
+              j1 = std::min(static_cast<int>(rows.size()) - 1, static_cast<int>(std::ceil(y1)) + 2);
+    const int i0 = static_cast<int>(std::floor(x0)) - 2, i1 = static_cast<int>(std::ceil(x1)) + 2;
+    for (int j = j0; j <= j1; ++j) {
+      const std::vector<Pixel>& row = rows[static_cast<std::size_t>(j)];
+      const auto p = std::lower_bound(row.begin(), row.end(), i0,
                                       [](const Pixel& q, int i) { return q.i < i; });
-            for (; p != row.end() && p->i <= s.i_max; ++p) {
-              if (!covers(s, p->i, j)) continue;
-              // Written when z < stored: the ranged difference, else the exact depths.
-              const R depth = depth_at_centre<R>(s, z, p->i, j);
-              const SignDecision d = decide_sign(R(depth - p->z), [&] {
-                return certifier.exact_depth_sign(piece, p->piece, p->i, j);
-              });
-              p->exact = p->exact || d.exact;
-              if (d.sign < 0) {
-                p->z = depth;
-                p->piece = piece;
-                p->color = w.color;
-              }
-            }
-          }
+      if (p != row.end() && p->i <= i1) return true;
+    }
+    return false;
+  };
+  // One certified window triangle through the undecided pixels it covers.
+  auto visit = [&](const WindowTriangle& w, const FrameCertifier::Piece& at) {
+    FrameCertifier::Piece piece = at;
+    setup_triangle({Vec2<double>(w.v[0](0), w.v[0](1)), Vec2<double>(w.v[1](0), w.v[1](1)),
+                    Vec2<double>(w.v[2](0), w.v[2](1))},
+                   piece.setup);
+    const TriangleSetup& s = piece.setup;
+    if (s.degenerate) return;
+    const std::array<R, 3> z{R(w.v[0](2), w.depth_error), R(w.v[1](2), w.depth_error),
+                             R(w.v[2](2), w.depth_error)};
+    const int j0 = std::max(s.j_min, 0), j1 = std::min(s.j_max, static_cast<int>(rows.size()) - 1);
+    for (int j = j0; j <= j1; ++j) {
+      std::vector<Pixel>& row = rows[static_cast<std::size_t>(j)];
+      auto p = std::lower_bound(row.begin(), row.end(), s.i_min,
+                                [](const Pixel& q, int i) { return q.i < i; });
+      for (; p != row.end() && p->i <= s.i_max; ++p) {
+        if (!covers(s, p->i, j)) continue;
+        // Written when z < stored: the ranged difference, else the exact depths.
+        const R depth = depth_at_centre<R>(s, z, p->i, j);
+        const SignDecision d = decide_sign(
+            R(depth - p->z), [&] { return certifier.exact_depth_sign(piece, p->piece, p->i, j); });
+        p->exact = p->exact || d.exact;
+        if (d.sign < 0) {
+          p->z = depth;
+          p->piece = piece;
+          p->color = w.color;
         }
-      },
-      true);
+      }
+    }
+  };
+  if (certifier.keeps()) {
+    for (const KeptWindow& k : certifier.kept()) visit(k.w, {k.object, k.face, k.fan, {}});
+  } else {
+    for_each_world_triangle(
+        scene,
+        [&](const WorldTriangle& world) {
+          window.clear();
+          if (!may_cover(world)) {
+            ++source;
+            return;
+          }
+          stage.add(world, source++, window);
+          for (std::size_t fan = 0; fan < window.size(); ++fan)
+            visit(window[fan], {world.object, world.face, static_cast<int>(fan), {}});
+        },
+        true);
+  }
   for (std::size_t j = 0; j < rows.size(); ++j)
     for (const Pixel& p : rows[j]) {
       const std::size_t at =

@@ -49,8 +49,21 @@ class FrameCertifier {
 
   FrameCheck check;
 
+  // A modelled scene (at most kBandedTriangles world triangles): the stages keep their certified
+  // window triangles, and the repair reads them instead of walking the scene again.
+  bool keeps() const { return keeps_; }
+  // The kept triangles of a stage, appended in drawing order (the render's stages in order).
+  void keep(std::vector<KeptWindow>&& part);
+  const std::vector<KeptWindow>& kept() const { return kept_; }
+
  private:
+  bool keeps_ = false;
+  std::vector<KeptWindow> kept_;
   const Outcome<Exact>& exact_outcome(int object, int face);  // with mu_ held
+  // Inside the view volume by the radii: the polygon is the triangle (no vectors but `out`'s).
+  // `facing`: decide the facing too (else it is taken as front).
+  bool inside_window(const std::array<Vec4<Ranged<double>>, 3>& clip, bool facing,
+                     CertifiedWindow& out) const;
   const Scene& scene_;
   Mat4d clip_from_world_;  // the doubles the stage uses
   // Row i of a clip coordinate's error: alpha_[i]·(‖w‖∞ + e) + beta_[i]·e + gamma_[i], e the

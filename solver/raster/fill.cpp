@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "solver/raster/banded_fill.hpp"
+#include "solver/raster/certified_frame.hpp"
 #include "solver/raster/frame_work.hpp"
 #include "solver/raster/span_fill.hpp"
 #include "solver/raster/striped_render.hpp"
@@ -240,6 +241,7 @@ void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_st
       },
       certifier != nullptr);
   if (geometry_stats) *geometry_stats = stage.stats;
+  if (certifier) certifier->keep(std::move(stage.kept));
 }
 
 PixelTrace trace_pixel(const std::vector<WindowTriangle>& triangles, int i, int j, Rgb background) {

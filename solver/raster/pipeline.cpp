@@ -315,7 +315,10 @@ Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLig
 }
 
 GeometryStage::GeometryStage(const Scene& scene, FrameCertifier* certifier)
-    : scene_(scene), certifier_(certifier), clip_from_world_(clip_from_world(scene)) {}
+    : scene_(scene),
+      certifier_(certifier),
+      clip_from_world_(clip_from_world(scene)),
+      keep_(certifier && certifier->keeps()) {}
 
 void GeometryStage::add(const WorldTriangle& t, int source, std::vector<WindowTriangle>& out) {
   if (certifier_) {
@@ -375,6 +378,10 @@ void GeometryStage::add_certified(const WorldTriangle& t, int source,
   for (std::size_t v = 1; v + 1 < r.size(); ++v) {
     out.push_back(
         {{r[0], r[v], r[v + 1]}, color, source, certified_.front, certified_.depth_error});
+    if (keep_) {
+      if (kept.empty()) kept.reserve(kBandedTriangles / 8);
+      kept.push_back({out.back(), t.object, t.face, static_cast<int>(v) - 1});
+    }
     ++s.window;
   }
 }
@@ -387,6 +394,7 @@ std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat,
   for (std::size_t k = 0; k < flat.triangles.size(); ++k)
     stage.add(flat.triangles[k], static_cast<int>(k), out);
   if (stats) *stats = stage.stats;
+  if (certifier) certifier->keep(std::move(stage.kept));
   return out;
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -92,7 +93,8 @@ class FrameCertifier;
 // raster vertices (x, y on their grid points, z) and a bound on their depths' error.
 struct CertifiedWindow {
   bool outside = false, clipped = false, front = false;
-  bool exact = false;  // exact arithmetic decided (the ranged values could not)
+  bool exact = false;             // exact arithmetic decided (the ranged values could not)
+  std::shared_ptr<void> scratch;  // the certifier's, reused from one triangle to the next
   std::vector<Vec3d> raster;
   double depth_error = 0;
 };
@@ -134,6 +136,13 @@ struct GeometryStats {
 
 // Every stage above for one world triangle at a time: its window triangles (a fan when it was
 // clipped) appended to `out`, `source` their index of the world triangle.
+// A certified window triangle kept for the repair of a modelled scene's undecided pixels, with
+// what its exact depths are found from: world triangle (object, face), piece `fan` of its fan.
+struct KeptWindow {
+  WindowTriangle w;
+  int object = 0, face = 0, fan = 0;
+};
+
 // With a certifier (certified_frame.hpp), every decision — outside, clipped, facing, the grid
 // point each vertex snaps to — is the exact inputs' (the doubles when their error bound proves
 // it, else ranged and exact arithmetic), and each window triangle carries its depth error.
@@ -142,6 +151,9 @@ class GeometryStage {
   explicit GeometryStage(const Scene& scene, FrameCertifier* certifier = nullptr);
   void add(const WorldTriangle& t, int source, std::vector<WindowTriangle>& out);
   GeometryStats stats;
+  // Certified stages of a modelled scene (FrameCertifier::keeps()): every window triangle out,
+  // in order, for the repair.
+  std::vector<KeptWindow> kept;
 
  private:
   const Scene& scene_;
@@ -151,6 +163,7 @@ class GeometryStage {
   std::vector<Vec3d> raster_;
   void add_certified(const WorldTriangle& t, int source, std::vector<WindowTriangle>& out);
   CertifiedWindow certified_;
+  bool keep_ = false;
 };
 
 // Every stage above for every triangle, in drawing order.

@@ -53,7 +53,7 @@ __attribute__((target("avx2"))) inline int tie_mask(__m256 z, __m256 old) {
   const __m256 magnitude = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
   const __m256 difference = _mm256_and_ps(_mm256_sub_ps(z, old), magnitude);
   const __m256 margin =
-      _mm256_add_ps(_mm256_mul_ps(_mm256_and_ps(old, magnitude), _mm256_set1_ps(0x1p-21f)),
+      _mm256_add_ps(_mm256_mul_ps(_mm256_and_ps(old, magnitude), _mm256_set1_ps(0x1p-22f)),
                     _mm256_set1_ps(0x1p-34f));
   return _mm256_movemask_ps(_mm256_cmp_ps(difference, margin, _CMP_LE_OQ));
 }

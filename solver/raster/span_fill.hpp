@@ -31,10 +31,12 @@ int fill_span_portable(float* depth, std::uint32_t* color, int n, double row_z, 
 inline constexpr double kDepthTolerance = 0x1p-36;
 // Whether the test z < stored of two 32-bit depths may differ from the test of the exact depths
 // they were rounded from, each computed within kDepthTolerance and then rounded to float
-// (relative 2⁻²⁴, or 2⁻¹⁴⁹ below the normal range): |z − stored| ≤ |stored|·2⁻²¹ + 2⁻³⁴, a
-// margin over twice what the two roundings and the two tolerances can move the difference.
+// (relative 2⁻²⁴, or 2⁻¹⁴⁹ below the normal range): |z − stored| ≤ |stored|·2⁻²² + 2⁻³⁴. Beyond
+// it, |z − stored|·(1 − 2⁻²⁴) exceeds 2⁻²³·|stored| + 2⁻³⁵ + 2⁻¹⁴⁹, which bounds what the two
+// roundings (2⁻²⁴·(|z| + |stored|), |z| ≤ |stored| + |z − stored|) and the two tolerances can
+// move the difference, even with the margin itself rounded in float.
 inline bool depth_tie(float z, float stored) {
-  return std::abs(z - stored) <= std::abs(stored) * 0x1p-21f + 0x1p-34f;
+  return std::abs(z - stored) <= std::abs(stored) * 0x1p-22f + 0x1p-34f;
 }
 // Whether fill_span takes the vector path on this CPU.
 bool fill_span_vectorised();
