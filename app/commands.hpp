@@ -12,6 +12,7 @@
 #include "solver/numeric/precision.hpp"
 #include "solver/raster/scene.hpp"
 #include "solver/raster/zbuffer.hpp"
+#include "solver/steps/scene_reader.hpp"
 #include "solver/util/thread_team.hpp"
 
 namespace frustum {
@@ -106,6 +107,13 @@ int run_render(const RenderOptions& options, const Output& o, Frame* target = nu
 // printing why not; its PNG writer is solver/raster/png_writer.hpp. bench/render_race.cpp races the
 // same steps through llvmpipe.
 std::variant<Scene, int> load_render_scene(const RenderOptions& options, const Output& o);
+// The same with its exact inputs and the exact projection · camera (--size applied): what
+// `frustum render` certifies its frame against (certified_frame.hpp).
+struct RenderScene {
+  SceneSpec spec;
+  Mat4<Exact> clip_from_world;
+};
+std::variant<RenderScene, int> load_render_spec(const RenderOptions& options, const Output& o);
 // `frustum bench accuracy`: speed against error of every numeric path and backend, on generated
 // and hard cases (every *.yaml in hard_dir); writes accuracy_results.md and the plots into out_dir
 // (bench_command.cpp).

@@ -17,6 +17,7 @@
 #include "solver/input/yaml_document.hpp"
 #include "solver/kinds/render.hpp"
 #include "solver/problem/problem_set.hpp"
+#include "solver/raster/certified_frame.hpp"
 #include "solver/raster/fill.hpp"
 #include "solver/raster/png_writer.hpp"
 #include "solver/raster/scanline.hpp"
@@ -27,7 +28,7 @@ namespace frustum::app {
 namespace {
 
 // The scene of a scene file or of a problem set's render problem; nullopt after printing why.
-std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
+std::optional<SceneSpec> load_scene(const RenderOptions& opt, const Output& o) {
   const YamlDocument doc = load_yaml_file(opt.file);
   if (doc.error) {
     o.err << doc.error->format() << "\n";
@@ -46,7 +47,7 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
         o.err << opt.file << ": problem '" << p.id << "' is of kind " << p.kind << ", not render\n";
         return std::nullopt;
       }
-      return std::any_cast<const RenderGiven&>(p.given).spec.scene;
+      return std::any_cast<const RenderGiven&>(p.given).spec;
     }
     o.err << opt.file << ": "
           << (opt.id ? "no problem with id '" + *opt.id + "'" : "no problem of kind render")
@@ -57,9 +58,10 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
     GivenReader root(doc.root, opt.file, "", {"title", "conventions", "scene"});
     const Conventions c = read_conventions(doc.root["conventions"], opt.file, "conventions", {});
     GivenReader s = root.child("scene", scene_fields());
-    Scene scene = read_scene(s, c).scene;
+    // With the exact inputs: the frame follows the exact rule where the doubles cannot.
+    SceneSpec spec = read_scene(s, c, /*keep_exact=*/true);
     root.finish();
-    return scene;
+    return spec;
   } catch (const InputError& e) {
     o.err << e.diagnostic().format() << "\n";
     return std::nullopt;
@@ -68,26 +70,40 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
 
 }  // namespace
 
-std::variant<Scene, int> load_render_scene(const RenderOptions& opt, const Output& o) {
-  std::optional<Scene> loaded = load_scene(opt, o);
+std::variant<RenderScene, int> load_render_spec(const RenderOptions& opt, const Output& o) {
+  std::optional<SceneSpec> loaded = load_scene(opt, o);
   if (!loaded) return 1;
-  Scene& scene = *loaded;
+  RenderScene out{std::move(*loaded), {}};
+  Scene& scene = out.spec.scene;
   if (opt.method) scene.scanline = *opt.method == "scanline";
+  out.clip_from_world = exact_clip_from_world(out.spec, scene.api);
   if (opt.size) {
     const auto [w, h] = *opt.size;
     if (static_cast<long>(w) * h > kMaxScenePixels) {
       o.err << fmt::format("--size: {} × {} pixels; at most {} in all\n", w, h, kMaxScenePixels);
       return 2;
     }
-    // A perspective whose aspect was width/height follows the new size (x scale ∝ 1/aspect).
+    // A perspective whose aspect was width/height follows the new size (x scale ∝ 1/aspect):
+    // its row x is (x scale, 0, 0, 0), so the exact row x of projection · camera scales too.
     const bool perspective = scene.clip_from_eye(3, 2) != 0 && scene.clip_from_eye(0, 2) == 0;
-    if (perspective)
+    if (perspective) {
       scene.clip_from_eye(0, 0) *=
           static_cast<double>(scene.width) * h / (static_cast<double>(scene.height) * w);
+      const Exact ratio = GiNaC::numeric(static_cast<long>(scene.width) * h) /
+                          GiNaC::numeric(static_cast<long>(scene.height) * w);
+      for (int j = 0; j < 4; ++j)
+        out.clip_from_world(0, j) = canonical(out.clip_from_world(0, j) * ratio);
+    }
     scene.width = w;
     scene.height = h;
   }
-  return std::move(scene);
+  return out;
+}
+
+std::variant<Scene, int> load_render_scene(const RenderOptions& opt, const Output& o) {
+  std::variant<RenderScene, int> loaded = load_render_spec(opt, o);
+  if (const int* status = std::get_if<int>(&loaded)) return *status;
+  return std::move(std::get<RenderScene>(loaded).spec.scene);
 }
 
 std::optional<ThreadTeam> render_team(int threads) {
@@ -100,10 +116,13 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
   // compression), while the scene is read.
   std::optional<ThreadTeam> team = render_team(opt.threads);
   ThreadTeam* const helpers = team ? &*team : nullptr;
-  std::variant<Scene, int> loaded = load_render_scene(opt, o);
+  std::variant<RenderScene, int> loaded = load_render_spec(opt, o);
   if (const int* status = std::get_if<int>(&loaded)) return *status;
-  const Scene& scene = std::get<Scene>(loaded);
+  const Scene& scene = std::get<RenderScene>(loaded).spec.scene;
   const auto start = std::chrono::steady_clock::now();
+  // Every decision the exact inputs', as the render kind's: the floats decide where their error
+  // bounds prove it, ranged and exact arithmetic elsewhere (certified_frame.hpp).
+  FrameCertifier certifier(scene, std::get<RenderScene>(loaded).clip_from_world);
   GeometryStats gs;
   Frame own;  // the frame when the caller keeps none; the scan-line method's image
   Frame& frame = target ? *target : own;
@@ -111,22 +130,28 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
   try {
     if (scene.scanline) {
       // The world triangles are freed once in window space.
-      const std::vector<WindowTriangle> tris = geometry(scene, flatten(scene, false), &gs);
+      const std::vector<WindowTriangle> tris =
+          geometry(scene, flatten(scene, false, true), &gs, &certifier);
       ScanlineStats st;
-      frame.color = render_scanline(tris, scene.width, scene.height, scene.background, &st,
-                                    opt.depth ? &frame.depth : nullptr, scene.max_work);
+      frame.ties.assign(static_cast<std::size_t>(scene.height), {});
+      frame.color =
+          render_scanline(tris, scene.width, scene.height, scene.background, &st,
+                          opt.depth ? &frame.depth : nullptr, scene.max_work, &frame.ties);
+      if (!opt.depth) frame.depth = {};
       method = fmt::format(
           "scan-line: one row of depth ({} bytes) instead of the z-buffer's {} bytes; at most {} "
           "triangles active on a row, {} spans",
           st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
     } else {
       FillStats fs;
-      render_zbuffer(scene, frame, &gs, &fs, opt.threads, helpers);
+      render_zbuffer(scene, frame, &gs, &fs, opt.threads, helpers, &certifier);
       method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",
                            frame.depth.data.size() * sizeof(float), fs.fragments, fs.written);
     }
+    repair_undecided(scene, frame, certifier);
   } catch (const DomainError& e) {
-    // The frame's work past its bound, or a coordinate beyond the rasterizer's range.
+    // The frame's work past its bound, or a coordinate beyond the rasterizer's range, or a sign
+    // exact arithmetic could not prove.
     o.err << opt.file << ": scene: " << e.what() << "\n";
     return 1;
   }
@@ -141,9 +166,11 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
     return 1;
   }
   o.out << fmt::format(
-      "{}: {} × {}, {} triangles ({} outside, {} clipped, {} culled, {} drawn) in {:.1f} ms\n{}\n",
+      "{}: {} × {}, {} triangles ({} outside, {} clipped, {} culled, {} drawn) in {:.1f} ms\n{}\n"
+      "exact rule: {} triangles decided by exact arithmetic; {} pixels the floats could not "
+      "decide traced again, {} of them by exact depths\n",
       opt.output, scene.width, scene.height, gs.triangles, gs.outside, gs.clipped, gs.culled,
-      gs.window, ms, method);
+      gs.window, ms, method, gs.exact, certifier.check.pixels, certifier.check.exact_pixels);
   return 0;
 }
 

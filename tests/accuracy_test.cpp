@@ -38,9 +38,9 @@ const ProblemSpec& problem(const ProblemSet& set, const std::string& id) {
 }
 
 // Every set in problems/hard (tests/accuracy_test.cpp checks the list against the folder).
-constexpr const char* kHardSets[] = {"normals",   "planes",     "backface",
-                                     "eye_plane", "magnitudes", "exact_signs",
-                                     "coverage",  "decisions",  "render"};
+constexpr const char* kHardSets[] = {"normals",    "planes",       "backface", "eye_plane",
+                                     "magnitudes", "exact_signs",  "coverage", "decisions",
+                                     "render",     "render_frames"};
 
 ProblemSet hard(const std::string& name) {
   return load_problem_set(source_path("problems/hard/" + name));

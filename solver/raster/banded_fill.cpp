@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 
+#include "solver/raster/certified_frame.hpp"
 #include "solver/raster/frame_work.hpp"
 #include "solver/util/side_by_side.hpp"
 
@@ -24,7 +25,7 @@ struct Bins {
 // own. The stage's counts and the vector's end change at every triangle, and two threads that
 // write one cache line pass it back and forth between their cores at every write.
 struct alignas(128) Part {
-  explicit Part(const Scene& scene) : stage(scene) {}
+  Part(const Scene& scene, FrameCertifier* certifier) : stage(scene, certifier) {}
   GeometryStage stage;
   std::vector<RasterTriangle> triangles;
   std::int64_t work = 0;  // the part's price (frame_work.hpp), summed in order before the fill
@@ -100,12 +101,12 @@ void fill_in_bands(const std::vector<RasterTriangle>& triangles, Frame& frame, i
 }
 
 void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
-                     FillStats* stats, int threads, ThreadTeam* team) {
+                     FillStats* stats, int threads, ThreadTeam* team, FrameCertifier* certifier) {
   // The world triangles walked here (the walk copies the scene's objects, exact coordinates
   // included, whose reference counts are not atomic: not a walk per thread), then in `parts`
   // contiguous ranges, each through a geometry stage and set up on a thread of its own, and
   // joined in drawing order.
-  const FlatScene flat = flatten(scene, false);
+  const FlatScene flat = flatten(scene, false, certifier != nullptr);
   const std::size_t count = flat.triangles.size();
   // Contiguous parts, one a thread: no more than the team has (a team's extra parts would run
   // one after another on the caller's thread).
@@ -114,7 +115,7 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
       std::clamp<std::size_t>(count / kMinTrianglesPerPart, 1, static_cast<std::size_t>(usable)));
   std::vector<Part> setups;  // made here: each stage reads the scene only once made
   setups.reserve(static_cast<std::size_t>(parts));
-  for (int k = 0; k < parts; ++k) setups.emplace_back(scene);
+  for (int k = 0; k < parts; ++k) setups.emplace_back(scene, certifier);
   side_by_side(
       parts,
       [&](int k) {
@@ -153,6 +154,8 @@ void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_s
     *geometry_stats = GeometryStats{};
     for (const Part& part : setups) *geometry_stats += part.stage.stats;
   }
+  if (certifier)
+    for (Part& part : setups) certifier->keep(std::move(part.stage.kept));
 }
 
 }  // namespace frustum

@@ -32,6 +32,7 @@ void fill_in_bands(const std::vector<RasterTriangle>& triangles, Frame& frame, i
 // geometry stage and set up on a thread of its own, joined in drawing order, then the frame filled
 // band by band. The same frame and statistics as render_zbuffer on one thread.
 void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_stats = nullptr,
-                     FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr);
+                     FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr,
+                     FrameCertifier* certifier = nullptr);
 
 }  // namespace frustum

@@ -30,9 +30,9 @@ std::optional<int> decided_sign(const R& x) {
 }
 std::optional<int> decided_sign(const Exact& x) { return exact_sign(x); }
 
-// The 1/256-pixel grid point a window coordinate snaps to (rasterizer.hpp's to_fixed, halves
-// away from zero): for a ranged value, when its whole interval rounds to one grid point.
-std::optional<std::int64_t> decided_snap(const R& x) {
+}  // namespace
+
+std::optional<std::int64_t> decided_snap(const Ranged<double>& x) {
   if (!std::isfinite(x.v) || !std::isfinite(x.r) || std::abs(x.v) > kMaxWindowCoordinate)
     return std::nullopt;
   const auto scale = static_cast<double>(kSubpixelScale);
@@ -41,6 +41,9 @@ std::optional<std::int64_t> decided_snap(const R& x) {
   if ((std::abs(x.v * scale - static_cast<double>(k)) + x.r * scale) * (1 + 1e-12) < 0.5) return k;
   return std::nullopt;
 }
+
+namespace {
+
 std::optional<std::int64_t> decided_snap(const Exact& x) {
   bool off_grid = false;
   return to_fixed(x, off_grid);
@@ -78,19 +81,22 @@ T plane_distance(const Vec4<T>& c, int k, bool z_from_zero, const T& eps) {
   }
 }
 
-// A triangle's window polygon with every decision taken: outside, clipped, facing, the
-// snapped vertices and their window depths. nullopt: a ranged value could not prove one.
-template <typename T>
-struct Outcome {
-  bool outside = false, clipped = false, front = false;
-  std::vector<FixedPoint2> snapped;
-  std::vector<T> z;
-};
+}  // namespace
 
 template <typename T>
 std::optional<Outcome<T>> window_polygon(const std::array<Vec4<T>, 3>& clip, const Scene& s,
                                          const T& eps) {
   Outcome<T> out;
+  if (!window_polygon_into(clip, s, eps, out)) return std::nullopt;
+  return out;
+}
+
+template <typename T>
+bool window_polygon_into(const std::array<Vec4<T>, 3>& clip, const Scene& s, const T& eps,
+                         Outcome<T>& out, bool facing) {
+  out.outside = out.clipped = out.front = false;
+  out.snapped.clear();
+  out.z.clear();
   const bool zero = s.api == Api::DirectX;
   // Trivially outside (all three beyond one plane) or inside (all within every plane).
   bool inside = true;
@@ -103,24 +109,26 @@ std::optional<Outcome<T>> window_polygon(const std::array<Vec4<T>, 3>& clip, con
     }
     if (beyond == 3) {
       out.outside = true;
-      return out;
+      return true;
     }
   }
-  std::vector<Vec4<T>> polygon(clip.begin(), clip.end());
+  std::vector<Vec4<T>>& polygon = out.polygon;
+  polygon.assign(clip.begin(), clip.end());
   if (!inside) {
     try {
       polygon = clip_polygon_homogeneous<T>(polygon, eps, zero).clipped;
     } catch (const Unproven&) {
-      return std::nullopt;  // a vertex within rounding of a plane: clipped exactly
+      return false;  // a vertex within rounding of a plane: clipped exactly
     }
     out.clipped = true;
     if (polygon.size() < 3) {
       out.outside = true;
-      return out;
+      return true;
     }
   }
   // Divide, viewport, y-up raster rows (pipeline.hpp's to_raster).
-  std::vector<Vec2<T>> xy;
+  std::vector<Vec2<T>>& xy = out.xy;
+  xy.clear();
   for (const Vec4<T>& c : polygon) {
     const Vec3<T> ndc(tidied(T(c(0) / c(3))), tidied(T(c(1) / c(3))), tidied(T(c(2) / c(3))));
     Vec3<T> w = viewport<T>(ndc, T(s.width), T(s.height), s.api);
@@ -129,19 +137,28 @@ std::optional<Outcome<T>> window_polygon(const std::array<Vec4<T>, 3>& clip, con
     xy.emplace_back(w(0), w(1));
     out.z.push_back(w(2));
     const std::optional<std::int64_t> x = decided_snap(w(0)), y = decided_snap(w(1));
-    if (!x || !y) return std::nullopt;
+    if (!x || !y) return false;
     out.snapped.push_back({*x, *y});
   }
   // Facing (pipeline.hpp's front_facing): the sign of the unsnapped raster area; edge-on is not
   // front.
+  if (!facing) {
+    out.front = true;
+    return true;
+  }
   const std::optional<int> area = decided_sign(tidied(twice_signed_area(xy)));
-  if (!area) return std::nullopt;
+  if (!area) return false;
   out.front = s.api == Api::OpenGL ? *area > 0 : *area < 0;
-  return out;
+  return true;
 }
 
-// Depth at the centre of pixel (i, j): the plane through the snapped vertices, Σ λₖ zₖ with
-// λₖ = Eₖ / (2·area) exact ratios of integers (rasterizer.hpp's interpolate).
+template bool window_polygon_into(const std::array<Vec4<R>, 3>&, const Scene&, const R&,
+                                  Outcome<R>&, bool);
+template std::optional<Outcome<R>> window_polygon(const std::array<Vec4<R>, 3>&, const Scene&,
+                                                  const R&);
+template std::optional<Outcome<Exact>> window_polygon(const std::array<Vec4<Exact>, 3>&,
+                                                      const Scene&, const Exact&);
+
 template <typename T>
 T depth_at_centre(const TriangleSetup& t, const std::array<T, 3>& z, int i, int j) {
   const FixedPoint2 p = pixel_centre(i, j);
@@ -156,6 +173,10 @@ T depth_at_centre(const TriangleSetup& t, const std::array<T, 3>& z, int i, int 
     sum += z[static_cast<std::size_t>(t.order[k])] * integer(t.edge[k].at(p.x, p.y));
   return tidied(T(sum / integer(t.area2)));
 }
+template R depth_at_centre(const TriangleSetup&, const std::array<R, 3>&, int, int);
+template Exact depth_at_centre(const TriangleSetup&, const std::array<Exact, 3>&, int, int);
+
+namespace {
 
 Mat4<Exact> product(const Mat4<Exact>& a, const Mat4<Exact>& b) {
   Mat4<Exact> m = a * b;
@@ -231,13 +252,6 @@ Outcome<Exact> exact_outcome(const CertifiedScene& cs, const FlatScene& flat, co
   return *window_polygon<Exact>(exact_clip(cs, flat, source), s, exact_epsilon());
 }
 
-// The window depths of piece `fan` of a fan from a polygon's first vertex.
-template <typename T>
-std::array<T, 3> fan_depths(const std::vector<T>& z, int fan) {
-  const auto v = static_cast<std::size_t>(fan) + 1;
-  return {z[0], z[v], z[v + 1]};
-}
-
 }  // namespace
 
 std::vector<ExactPlacement> exact_placements(const Scene& scene) {
@@ -276,7 +290,7 @@ CertifiedScene certified_geometry(const Scene& scene, const FlatScene& flat,
     if (!out) {
       exact = exact_outcome(cs, flat, scene, static_cast<int>(k));
       ++cs.exact_geometry;
-      out = Outcome<R>{exact->outside, exact->clipped, exact->front, exact->snapped, {}};
+      out = Outcome<R>{exact->outside, exact->clipped, exact->front, exact->snapped, {}, {}, {}};
       for (const Exact& z : exact->z) out->z.push_back(R::input(to_double(z)));
     }
     if (out->outside) {

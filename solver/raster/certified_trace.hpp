@@ -36,6 +36,43 @@ struct CertifiedPiece {
   bool front = true;
 };
 
+// A triangle's window polygon with every decision taken: outside, clipped, facing, the
+// snapped vertices and their window depths, from its clip coordinates: ranged (nullopt when a
+// radius cannot prove a decision) or exact. `eps`: the clip plane w ≥ ε.
+template <typename T>
+struct Outcome {
+  bool outside = false, clipped = false, front = false;
+  std::vector<FixedPoint2> snapped;
+  std::vector<T> z;
+  std::vector<Vec4<T>> polygon;  // scratch: the clipped polygon
+  std::vector<Vec2<T>> xy;       // scratch: its raster x, y
+};
+template <typename T>
+std::optional<Outcome<T>> window_polygon(const std::array<Vec4<T>, 3>& clip, const Scene& s,
+                                         const T& eps);
+// The same into `out`, its vectors reused (false: a radius could not prove a decision). Without
+// `facing` the facing is not decided (front is set), for an image it cannot change.
+template <typename T>
+bool window_polygon_into(const std::array<Vec4<T>, 3>& clip, const Scene& s, const T& eps,
+                         Outcome<T>& out, bool facing = true);
+
+// The 1/256-pixel grid point a window coordinate snaps to (rasterizer.hpp's to_fixed, halves
+// away from zero), for a ranged value when its whole interval rounds to one grid point.
+std::optional<std::int64_t> decided_snap(const Ranged<double>& x);
+
+// Depth at the centre of pixel (i, j): the plane through the snapped vertices, Σ λₖ zₖ with
+// λₖ = Eₖ / (2·area) exact ratios of integers (rasterizer.hpp's interpolate); z per input
+// vertex. Ranged (Ranged<double>) or exact.
+template <typename T>
+T depth_at_centre(const TriangleSetup& t, const std::array<T, 3>& z, int i, int j);
+
+// The window depths of piece `fan` of a fan from a polygon's first vertex.
+template <typename T>
+std::array<T, 3> fan_depths(const std::vector<T>& z, int fan) {
+  const auto v = static_cast<std::size_t>(fan) + 1;
+  return {z[0], z[v], z[v + 1]};
+}
+
 // Placement of every flattened object (flatten()'s order, index = FlatScene object index):
 // its exact world_from_object and the object whose exact vertices it places (null for the
 // root).

@@ -1,10 +1,12 @@
 #include "solver/raster/fill.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <type_traits>
 
 #include "solver/raster/banded_fill.hpp"
+#include "solver/raster/certified_frame.hpp"
 #include "solver/raster/frame_work.hpp"
 #include "solver/raster/span_fill.hpp"
 #include "solver/raster/striped_render.hpp"
@@ -52,6 +54,25 @@ RasterTriangle setup_raster(const WindowTriangle& w, int source) {
   const double area2 = static_cast<double>(s.area2);
   t.a = (dz1 * dy2 - dz2 * dy1) / area2;
   t.b = (dx1 * dz2 - dx2 * dz1) / area2;
+  if (w.depth_error >= 0) {
+    // The depth at a covered centre, z0 + b·dy + a·dx in doubles, against Σ λₖ zₖ of the exact
+    // vertex depths (λₖ ≥ 0, Σ λₖ = 1 inside): the vertices' own error, the evaluation's
+    // roundings, and those of a and b (numerators within γ₃ of their terms' magnitudes) times
+    // the largest offsets from v0 in the box.
+    constexpr double u = std::numeric_limits<double>::epsilon() / 2, g = 8 * u;
+    const double span_x =
+        std::max(std::abs(static_cast<double>(pixel_centre(s.i_min, 0).x - s.v[0].x)),
+                 std::abs(static_cast<double>(pixel_centre(s.i_max, 0).x - s.v[0].x)));
+    const double span_y =
+        std::max(std::abs(static_cast<double>(pixel_centre(0, s.j_min).y - s.v[0].y)),
+                 std::abs(static_cast<double>(pixel_centre(0, s.j_max).y - s.v[0].y)));
+    const double ea = g * (std::abs(dz1 * dy2) + std::abs(dz2 * dy1)) / area2,
+                 eb = g * (std::abs(dx1 * dz2) + std::abs(dx2 * dz1)) / area2;
+    const double bound = w.depth_error +
+                         g * (std::abs(t.z0) + std::abs(t.b) * span_y + std::abs(t.a) * span_x) +
+                         ea * span_x + eb * span_y;
+    t.depth_decided = bound <= kDepthTolerance;  // false for a NaN or infinite bound
+  }
   return t;
 }
 
@@ -89,6 +110,7 @@ void draw_triangle_rows(const RasterTriangle& t, Frame& frame, int j_lo, int j_h
   if (box.empty()) return;
   const std::int64_t x0 = s.v[0].x, y0 = s.v[0].y;
   long fragments = 0, written = 0;
+  std::vector<int>* const ties = frame.ties.empty() ? nullptr : frame.ties.data();
   float* depth = frame.depth.data.data();
   std::uint32_t* color = frame.color.data.data();
   const std::uint32_t c = t.color;
@@ -113,6 +135,7 @@ void draw_triangle_rows(const RasterTriangle& t, Frame& frame, int j_lo, int j_h
           inside = true;
           ++fragments;
           const float z = static_cast<float>(row_z + t.a * dx);
+          if (ties && (!t.depth_decided || depth_tie(z, depth[base + i]))) ties[j].push_back(i);
           if (z < depth[base + i]) {
             depth[base + i] = z;
             color[base + i] = c;
@@ -148,7 +171,12 @@ void draw_triangle_rows(const RasterTriangle& t, Frame& frame, int j_lo, int j_h
           __builtin_prefetch(color + ahead + i, 1);
         }
       }
-      written += fill_span(d + i0, col + i0, n, row_z, t.a, dx0, c, stats != nullptr);
+      std::vector<int>* row_ties = ties ? &ties[j] : nullptr;
+      if (row_ties && !t.depth_decided) {
+        for (int i = i0; i <= i1; ++i) row_ties->push_back(i);
+        row_ties = nullptr;
+      }
+      written += fill_span(d + i0, col + i0, n, row_z, t.a, dx0, c, stats != nullptr, row_ties, i0);
     }
   }
   if (stats) {
@@ -182,32 +210,38 @@ bool zbuffer_banded(const Scene& scene, int threads) {
 }
 
 void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
-                    FillStats* stats, int threads, ThreadTeam* team) {
+                    FillStats* stats, int threads, ThreadTeam* team, FrameCertifier* certifier) {
+  // Sized before the fill: threads note ties on their own rows' lists.
+  frame.ties.assign(certifier ? static_cast<std::size_t>(scene.height) : 0, {});
   if (zbuffer_banded(scene, threads)) {
     // A modelled scene with threads to share: the geometry in parts side by side, then the
     // frame filled band by band (on one thread this is no faster than the stream below: a
     // 1920 × 1080 frame stays in this machine's last-level cache).
-    render_in_bands(scene, frame, geometry_stats, stats, threads, team);
+    render_in_bands(scene, frame, geometry_stats, stats, threads, team, certifier);
     return;
   }
   if (threads >= 2) {
-    render_in_strips(scene, frame, geometry_stats, stats, threads, team);
+    render_in_strips(scene, frame, geometry_stats, stats, threads, team, certifier);
     return;
   }
-  GeometryStage stage(scene);
+  GeometryStage stage(scene, certifier);
   FrameWork work(scene);
   int source = 0, drawn = 0;
   frame.reset(scene.width, scene.height, scene.background);
   std::vector<WindowTriangle> window;  // one world triangle's, reused
-  for_each_world_triangle(scene, [&](const WorldTriangle& t) {
-    window.clear();
-    stage.add(t, source++, window);
-    for (const WindowTriangle& w : window) {
-      work.add(w);
-      draw_triangle(setup_raster(w, drawn++), frame, stats);
-    }
-  });
+  for_each_world_triangle(
+      scene,
+      [&](const WorldTriangle& t) {
+        window.clear();
+        stage.add(t, source++, window);
+        for (const WindowTriangle& w : window) {
+          work.add(w);
+          draw_triangle(setup_raster(w, drawn++), frame, stats);
+        }
+      },
+      certifier != nullptr);
   if (geometry_stats) *geometry_stats = stage.stats;
+  if (certifier) certifier->keep(std::move(stage.kept));
 }
 
 PixelTrace trace_pixel(const std::vector<WindowTriangle>& triangles, int i, int j, Rgb background) {

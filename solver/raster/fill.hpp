@@ -18,6 +18,7 @@
 
 #include "solver/raster/pipeline.hpp"
 #include "solver/raster/rasterizer.hpp"
+#include "solver/raster/span_fill.hpp"
 #include "solver/raster/zbuffer.hpp"
 #include "solver/util/thread_team.hpp"
 
@@ -39,6 +40,10 @@ struct RasterTriangle {
   double z0 = 0, a = 0, b = 0;  // the depth plane, per 1/256 pixel, about vertex v[0]
   std::uint32_t color = 0;
   int source = 0;  // index of the WindowTriangle
+  // A certified window triangle (WindowTriangle::depth_error ≥ 0) whose depth at every pixel
+  // centre it covers is within kDepthTolerance of the exact one: the fill's tie test decides
+  // its fragments. False for one whose bound is larger: each of its fragments is undecided.
+  bool depth_decided = true;
 };
 
 // Setup: snap, edge functions, bounding box, depth plane.
@@ -124,6 +129,10 @@ class RowSpans {
 struct Frame {
   Image<std::uint32_t> color;  // raster rows, j = 0 the bottom
   Image<float> depth;
+  // A certified render's undecided pixels (certified_frame.hpp): per raster row, the columns
+  // where a fragment's depth test was a tie for the floats (span_fill.hpp's depth_tie) or its
+  // triangle's depth was not decided (in any order, possibly repeated). Empty when not certified.
+  std::vector<std::vector<int>> ties;
   Frame() = default;
   Frame(int width, int height, Rgb background)
       : color(width, height, pack(background)), depth(width, height, kDepthClear) {}
@@ -191,12 +200,15 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
 // through the geometry in parts side by side and is filled band by band by every thread
 // (banded_fill.hpp); a larger one streams on every thread, each walking the scene and drawing
 // its own strips of rows (striped_render.hpp). Either way the frame is the same bit for bit.
+// With a certifier (certified_frame.hpp) the geometry is certified and the fill notes its ties
+// in frame.ties (the caller repairs them: repair_undecided).
 Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
                      FillStats* stats = nullptr, int threads = 1);
 // The same into a render target the caller keeps (reset to the scene's size and background).
 // With a team (thread_team.hpp), the threaded render's parts run on its threads.
 void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_stats = nullptr,
-                    FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr);
+                    FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr,
+                    FrameCertifier* certifier = nullptr);
 // Whether render_zbuffer with `threads` sets a modelled scene up whole and fills it band by band
 // (at least two threads, at most kBandedTriangles world triangles: banded_fill.hpp, 320 B a
 // triangle set up) rather than streaming it.

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "solver/clipping/polygon_clip.hpp"
+#include "solver/raster/certified_frame.hpp"
 #include "solver/viewing/projection.hpp"
 
 namespace frustum {
@@ -70,22 +72,46 @@ struct FlatSink {
   const std::function<void(const WorldTriangle&)>& visit;
   std::vector<std::string>* names = nullptr;
   int objects = 0;
+  bool track_error = false;
 };
+
+// Error bounds of the walk (WorldTriangle::error), in the ∞-norm: u = 2⁻⁵³, an input rounded
+// once within 2u of its exact value (numeric/ranged.hpp's rule), a dot product of 4 terms within
+// γ₄ = 4u/(1 − 4u) of the sum of its terms' magnitudes, η for subnormal results.
+constexpr double kU = std::numeric_limits<double>::epsilon() / 2;
+constexpr double kGamma4 = 4 * kU * (1 + 8 * kU);
+constexpr double kEta = std::numeric_limits<double>::denorm_min();
+double norm_inf(const Mat4d& m) { return m.cwiseAbs().rowwise().sum().maxCoeff(); }
+double norm_inf(const Vec3d& v) { return v.cwiseAbs().maxCoeff(); }
+// ‖fl(a·b) − a_exact·b_exact‖ from the factors' bounds ea, eb (widened for the bound's own
+// roundings).
+double product_error(const Mat4d& a, double ea, const Mat4d& b, double eb) {
+  const double na = norm_inf(a), nb = norm_inf(b);
+  return (kGamma4 * na * nb + ea * nb + (na + ea) * eb) * (1 + 8 * kU) + kEta;
+}
+// An object's matrix, its entries rounded once from the exact composite.
+double rounded_error(const Mat4d& m) { return 2 * kU * norm_inf(m) + kEta; }
+// T(i·step): each offset fl(i·fl(step)) within 3u of i·step.
+double offset_error(const Vec3d& offset) { return 3 * kU * norm_inf(offset) + kEta; }
 
 Vec3d transformed(const Mat4d& m, const Vec3d& p) {
   return (m * Vec4d(p(0), p(1), p(2), 1.0)).head<3>();
 }
 
 // Object o's own triangles in the world, each vertex placed by `place`; o counts as an object.
-template <typename Place>
+// `error(p, w)`: the bound on |w − w_exact| for the vertex p placed at w (when tracked).
+template <typename Place, typename Error>
 void emit_triangles(const SceneObject& o, Rgb f, Cull c, const std::string* name, FlatSink& out,
-                    const Place& place) {
+                    const Place& place, const Error& error) {
   const int index = out.objects++;
   if (name) out.names->push_back(*name);
   for (std::size_t k = 0; k < o.triangles.size(); ++k) {
     WorldTriangle t;
-    for (int v = 0; v < 3; ++v)
-      t.v[v] = place(o.vertices[static_cast<std::size_t>(o.triangles[k][v])]);
+    for (int v = 0; v < 3; ++v) {
+      const Vec3d& p = o.vertices[static_cast<std::size_t>(o.triangles[k][v])];
+      t.v[v] = place(p);
+      if (out.track_error) t.error = std::max(t.error, error(p, t.v[v]));
+    }
     t.fill = f;
     t.cull = c;
     t.object = index;
@@ -101,25 +127,37 @@ void emit_triangles(const SceneObject& o, Rgb f, Cull c, const std::string* name
 Vec3d translated(const Vec3d& offset, const Vec3d& p) { return p + offset; }
 
 void flatten_children(const std::vector<SceneObject>& children, const Mat4d& world_from_object,
-                      Rgb f, Cull c, const std::string* name, bool top, FlatSink& out);
+                      double error, Rgb f, Cull c, const std::string* name, bool top,
+                      FlatSink& out);
 
 // `name` is null when names are not kept; world_from_object = world_from_parent · M_object.
 // The walk reads the scene and copies none of it: the exact coordinates a scene object keeps
 // (GiNaC's, whose reference counts are not atomic) are never touched, so threads may walk one
 // scene side by side.
-void flatten_into(const SceneObject& o, const Mat4d& world_from_object, Rgb fill, Cull cull,
-                  const std::string* name, FlatSink& out) {
+// `error`: the bound on ‖world_from_object − its exact value‖ (tracked walks only).
+void flatten_into(const SceneObject& o, const Mat4d& world_from_object, double error, Rgb fill,
+                  Cull cull, const std::string* name, FlatSink& out) {
   const Rgb f = o.fill.value_or(fill);
   const Cull c = o.cull.value_or(cull);
-  emit_triangles(o, f, c, name, out,
-                 [&](const Vec3d& p) { return transformed(world_from_object, p); });
-  flatten_children(o.children, world_from_object, f, c, name, false, out);
+  const double norm = out.track_error ? norm_inf(world_from_object) : 0;
+  emit_triangles(
+      o, f, c, name, out, [&](const Vec3d& p) { return transformed(world_from_object, p); },
+      [&](const Vec3d& p, const Vec3d&) {
+        // fl(W·p̃) against W_exact·p_exact, p̃ = (p, 1), p within 2u of its exact value.
+        const double np = std::max(1.0, norm_inf(p));
+        return ((kGamma4 * norm + error) * np + (norm + error) * 2 * kU * norm_inf(p)) *
+                   (1 + 8 * kU) +
+               kEta;
+      });
+  flatten_children(o.children, world_from_object, error, f, c, name, false, out);
 }
 
 // The children of an object (`top`: the scene's objects, children of the world, whose unnamed
 // ones are "objects[k]"); a repeated child once per copy (its own repeat is not read below it).
 void flatten_children(const std::vector<SceneObject>& children, const Mat4d& world_from_object,
-                      Rgb f, Cull c, const std::string* name, bool top, FlatSink& out) {
+                      double error, Rgb f, Cull c, const std::string* name, bool top,
+                      FlatSink& out) {
+  const bool track = out.track_error;
   std::string child_name;
   for (std::size_t k = 0; k < children.size(); ++k) {
     const SceneObject& child = children[k];
@@ -129,8 +167,11 @@ void flatten_children(const std::vector<SceneObject>& children, const Mat4d& wor
                                        : *name + ".children[" + std::to_string(k) + "]";
     const std::string* child_name_or_null = name ? &child_name : nullptr;
     if (!child.repeat) {
-      flatten_into(child, compose(world_from_object, child.transform), f, c, child_name_or_null,
-                   out);
+      flatten_into(child, compose(world_from_object, child.transform),
+                   track ? product_error(world_from_object, error, child.transform,
+                                         rounded_error(child.transform))
+                         : 0,
+                   f, c, child_name_or_null, out);
       continue;
     }
     // Copies: world_from_object · T(index · step) · M_child.
@@ -149,15 +190,28 @@ void flatten_children(const std::vector<SceneObject>& children, const Mat4d& wor
           if (translation_only && child.children.empty() && finite_without_negative_zero(offset)) {
             // A copy that only moves (most repeats; identity_keeps(T(offset)) holds): each vertex
             // plus the offset.
-            emit_triangles(child, own_fill, own_cull, name ? &copy : nullptr, out,
-                           [&](const Vec3d& p) { return translated(offset, p); });
+            emit_triangles(
+                child, own_fill, own_cull, name ? &copy : nullptr, out,
+                [&](const Vec3d& p) { return translated(offset, p); },
+                [&](const Vec3d& p, const Vec3d& w) {
+                  // fl(p + offset): its rounding, p's and the offset's.
+                  return (kU * norm_inf(w) + 2 * kU * norm_inf(p) + 3 * kU * norm_inf(offset)) *
+                             (1 + 8 * kU) +
+                         3 * kEta;
+                });
             continue;
           }
           const Mat4d t = translation(offset);
-          flatten_into(child,
-                       translation_only && identity_keeps(t)
-                           ? t
-                           : compose(compose(world_from_object, t), child.transform),
+          const bool only_t = translation_only && identity_keeps(t);
+          const Mat4d moved = only_t ? t : compose(world_from_object, t);
+          double moved_error = 0;
+          if (track)
+            moved_error = only_t ? offset_error(offset)
+                                 : product_error(world_from_object, error, t, offset_error(offset));
+          flatten_into(child, only_t ? t : compose(moved, child.transform),
+                       track && !only_t ? product_error(moved, moved_error, child.transform,
+                                                        rounded_error(child.transform))
+                                        : moved_error,
                        f, c, name ? &copy : nullptr, out);
         }
   }
@@ -167,7 +221,7 @@ void flatten_children(const std::vector<SceneObject>& children, const Mat4d& wor
 void flatten_scene(const Scene& scene, const std::string* name, FlatSink& out) {
   ++out.objects;
   if (name) out.names->push_back(*name);
-  flatten_children(scene.objects, Mat4d::Identity(), scene.default_fill, Cull::None, name, true,
+  flatten_children(scene.objects, Mat4d::Identity(), 0, scene.default_fill, Cull::None, name, true,
                    out);
 }
 
@@ -176,12 +230,14 @@ void flatten_scene(const Scene& scene, const std::string* name, FlatSink& out) {
 std::size_t world_triangle_count(const Scene& scene) { return flat_size(scene.objects).first; }
 
 void for_each_world_triangle(const Scene& scene,
-                             const std::function<void(const WorldTriangle&)>& visit) {
+                             const std::function<void(const WorldTriangle&)>& visit,
+                             bool track_error) {
   FlatSink sink{visit};
+  sink.track_error = track_error;
   flatten_scene(scene, nullptr, sink);
 }
 
-FlatScene flatten(const Scene& scene, bool names) {
+FlatScene flatten(const Scene& scene, bool names, bool track_error) {
   FlatScene out;
   // Sized once: a million triangles are 88 MB, which doubling would copy and fault in again.
   const auto [triangles, objects] = flat_size(scene.objects);
@@ -191,6 +247,7 @@ FlatScene flatten(const Scene& scene, bool names) {
     out.triangles.push_back(t);
   };
   FlatSink sink{keep, names ? &out.objects : nullptr};
+  sink.track_error = track_error;
   const std::string world = "world";
   flatten_scene(scene, names ? &world : nullptr, sink);
   return out;
@@ -257,10 +314,17 @@ Rgb shade(const WorldTriangle& t, bool front, const std::optional<DirectionalLig
   return {channel(t.fill.r), channel(t.fill.g), channel(t.fill.b)};
 }
 
-GeometryStage::GeometryStage(const Scene& scene)
-    : scene_(scene), clip_from_world_(clip_from_world(scene)) {}
+GeometryStage::GeometryStage(const Scene& scene, FrameCertifier* certifier)
+    : scene_(scene),
+      certifier_(certifier),
+      clip_from_world_(clip_from_world(scene)),
+      keep_(certifier && certifier->keeps()) {}
 
 void GeometryStage::add(const WorldTriangle& t, int source, std::vector<WindowTriangle>& out) {
+  if (certifier_) {
+    add_certified(t, source, out);
+    return;
+  }
   GeometryStats& s = stats;
   ++s.triangles;
   const Mat4d& m = clip_from_world_;
@@ -294,14 +358,43 @@ void GeometryStage::add(const WorldTriangle& t, int source, std::vector<WindowTr
   }
 }
 
+void GeometryStage::add_certified(const WorldTriangle& t, int source,
+                                  std::vector<WindowTriangle>& out) {
+  GeometryStats& s = stats;
+  ++s.triangles;
+  certifier_->window(t, certified_);
+  s.exact += certified_.exact;
+  if (certified_.outside) {
+    ++s.outside;
+    return;
+  }
+  s.clipped += certified_.clipped;
+  if (!certified_.front && t.cull == Cull::Back) {
+    ++s.culled;
+    return;
+  }
+  const Rgb color = shade(t, certified_.front, scene_.light, scene_.left_handed);
+  const std::vector<Vec3d>& r = certified_.raster;
+  for (std::size_t v = 1; v + 1 < r.size(); ++v) {
+    out.push_back(
+        {{r[0], r[v], r[v + 1]}, color, source, certified_.front, certified_.depth_error});
+    if (keep_) {
+      if (kept.empty()) kept.reserve(kBandedTriangles / 8);
+      kept.push_back({out.back(), t.object, t.face, static_cast<int>(v) - 1});
+    }
+    ++s.window;
+  }
+}
+
 std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat,
-                                     GeometryStats* stats) {
+                                     GeometryStats* stats, FrameCertifier* certifier) {
   std::vector<WindowTriangle> out;
   out.reserve(flat.triangles.size());
-  GeometryStage stage(scene);
+  GeometryStage stage(scene, certifier);
   for (std::size_t k = 0; k < flat.triangles.size(); ++k)
     stage.add(flat.triangles[k], static_cast<int>(k), out);
   if (stats) *stats = stage.stats;
+  if (certifier) certifier->keep(std::move(stage.kept));
   return out;
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct WorldTriangle {
   Cull cull = Cull::None;
   int object = 0;  // index into FlatScene::objects
   int face = 0;    // triangle index within its object
+  // A bound on |v − v_exact| (each coordinate of each vertex) against the world vertices of the
+  // scene's exact inputs, when the walk tracks it (certified frames, certified_frame.hpp).
+  double error = 0;
 };
 
 struct FlatScene {
@@ -36,14 +40,17 @@ struct FlatScene {
 // copies of a repeat in index order): world_from_object = world_from_parent · M_object.
 // Without `names`, FlatScene::objects stays empty (WorldTriangle::object still counts the
 // objects): a million copies' names would take more memory than their triangles.
-FlatScene flatten(const Scene& scene, bool names = true);
+FlatScene flatten(const Scene& scene, bool names = true, bool track_error = false);
 // How many world triangles the walk yields (every copy of a repeat counted), without walking.
 std::size_t world_triangle_count(const Scene& scene);
 // The same walk, each world triangle handed to `visit` in order and none kept. The walk only
 // reads the scene (it copies no object, and so none of the exact coordinates an object may keep,
 // whose reference counts are not atomic): threads may walk one scene side by side.
+// `track_error`: each WorldTriangle::error bounds its vertices' distance from the exact ones
+// (the inputs rounded once, the products' roundings).
 void for_each_world_triangle(const Scene& scene,
-                             const std::function<void(const WorldTriangle&)>& visit);
+                             const std::function<void(const WorldTriangle&)>& visit,
+                             bool track_error = false);
 
 Mat4d eye_from_world(const Scene& scene);   // the camera (look_at in the API)
 Mat4d clip_from_world(const Scene& scene);  // projection · camera
@@ -80,6 +87,18 @@ double raster_area2(const std::vector<Vec3d>& polygon);
 // the front is the side n points to, n computed in world coordinates.
 bool front_facing(double raster_area2, Api api);
 
+class FrameCertifier;
+
+// A world triangle's window polygon decided under the exact rule (FrameCertifier::window): its
+// raster vertices (x, y on their grid points, z) and a bound on their depths' error.
+struct CertifiedWindow {
+  bool outside = false, clipped = false, front = false;
+  bool exact = false;             // exact arithmetic decided (the ranged values could not)
+  std::shared_ptr<void> scratch;  // the certifier's, reused from one triangle to the next
+  std::vector<Vec3d> raster;
+  double depth_error = 0;
+};
+
 // Stage: flat two-sided shading (scene.hpp's DirectionalLight). Without a light, the fill.
 // `left_handed` (Scene::left_handed): counter-clockwise = front in a left-handed frame, so the
 // front normal is e₁ × e₀.
@@ -92,6 +111,9 @@ struct WindowTriangle {
   Rgb color;
   int source = 0;  // index into FlatScene::triangles
   bool front = true;
+  // Certified (a FrameCertifier's stage): x and y snap where the exact inputs' do, and each z
+  // is within depth_error of the exact window depth. Negative: not certified.
+  double depth_error = -1;
 };
 
 struct GeometryStats {
@@ -100,7 +122,9 @@ struct GeometryStats {
   long clipped = 0;    // cut by some plane of the view volume
   long culled = 0;     // back faces removed
   long window = 0;     // window triangles out (clipped polygons are fans)
+  long exact = 0;      // certified stages: triangles whose decisions exact arithmetic took
   GeometryStats& operator+=(const GeometryStats& o) {
+    exact += o.exact;
     triangles += o.triangles;
     outside += o.outside;
     clipped += o.clipped;
@@ -112,22 +136,40 @@ struct GeometryStats {
 
 // Every stage above for one world triangle at a time: its window triangles (a fan when it was
 // clipped) appended to `out`, `source` their index of the world triangle.
+// A certified window triangle kept for the repair of a modelled scene's undecided pixels, with
+// what its exact depths are found from: world triangle (object, face), piece `fan` of its fan.
+struct KeptWindow {
+  WindowTriangle w;
+  int object = 0, face = 0, fan = 0;
+};
+
+// With a certifier (certified_frame.hpp), every decision — outside, clipped, facing, the grid
+// point each vertex snaps to — is the exact inputs' (the doubles when their error bound proves
+// it, else ranged and exact arithmetic), and each window triangle carries its depth error.
 class GeometryStage {
  public:
-  explicit GeometryStage(const Scene& scene);
+  explicit GeometryStage(const Scene& scene, FrameCertifier* certifier = nullptr);
   void add(const WorldTriangle& t, int source, std::vector<WindowTriangle>& out);
   GeometryStats stats;
+  // Certified stages of a modelled scene (FrameCertifier::keeps()): every window triangle out,
+  // in order, for the repair.
+  std::vector<KeptWindow> kept;
 
  private:
   const Scene& scene_;
+  FrameCertifier* certifier_;
   Mat4d clip_from_world_;
   std::vector<Vec4d> polygon_;  // reused: no allocation per triangle
   std::vector<Vec3d> raster_;
+  void add_certified(const WorldTriangle& t, int source, std::vector<WindowTriangle>& out);
+  CertifiedWindow certified_;
+  bool keep_ = false;
 };
 
 // Every stage above for every triangle, in drawing order.
 std::vector<WindowTriangle> geometry(const Scene& scene, const FlatScene& flat,
-                                     GeometryStats* stats = nullptr);
+                                     GeometryStats* stats = nullptr,
+                                     FrameCertifier* certifier = nullptr);
 
 // Raster row j ↔ the API's window row (y-down APIs count rows from the top).
 inline int raster_row(int window_row, int height, Api api) {

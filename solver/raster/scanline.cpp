@@ -9,7 +9,8 @@ namespace frustum {
 
 Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangles, int width,
                                      int height, Rgb background, ScanlineStats* stats,
-                                     Image<float>* depth_out, std::int64_t max_work) {
+                                     Image<float>* depth_out, std::int64_t max_work,
+                                     std::vector<std::vector<int>>* ties) {
   FrameWork work(width, height, max_work);
   for (const WindowTriangle& t : triangles) work.add(t);
   Image<std::uint32_t> image(width, height, pack(background));
@@ -54,6 +55,8 @@ Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangle
       ++st.spans;
       for (int i = i0; i <= i1; ++i) {
         const float z = depth_at(t, i, j);
+        if (ties && (!t.depth_decided || depth_tie(z, row_depth[static_cast<std::size_t>(i)])))
+          (*ties)[static_cast<std::size_t>(j)].push_back(i);
         if (z < row_depth[static_cast<std::size_t>(i)]) {
           row_depth[static_cast<std::size_t>(i)] = z;
           color[i] = t.color;

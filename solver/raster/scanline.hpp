@@ -22,10 +22,12 @@ struct ScanlineStats {
 
 // The colour image (raster rows); `depth_out`, when given, receives each row's final depths
 // (an output image, not working memory). Refused before any row is drawn when the triangles'
-// price passes `max_work` (frame_work.hpp).
+// price passes `max_work` (frame_work.hpp). `ties` (height rows): the undecided pixels of
+// certified triangles, as Frame::ties.
 Image<std::uint32_t> render_scanline(const std::vector<WindowTriangle>& triangles, int width,
                                      int height, Rgb background, ScanlineStats* stats = nullptr,
                                      Image<float>* depth_out = nullptr,
-                                     std::int64_t max_work = kMaxFrameWork);
+                                     std::int64_t max_work = kMaxFrameWork,
+                                     std::vector<std::vector<int>>* ties = nullptr);
 
 }  // namespace frustum

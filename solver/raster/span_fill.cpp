@@ -29,6 +29,15 @@ int portable(float* __restrict depth, std::uint32_t* __restrict color, int n, do
   return written;
 }
 
+// The span's undecided pixels (depth_tie against the depths stored before the span is filled).
+void log_ties(const float* depth, int n, double row_z, double a, double dx0, std::vector<int>& ties,
+              int i0) {
+  for (int k = 0; k < n; ++k) {
+    const float z = static_cast<float>(row_z + a * (dx0 + static_cast<double>(k) * kSubpixelScale));
+    if (depth_tie(z, depth[k])) ties.push_back(i0 + k);
+  }
+}
+
 #if FRUSTUM_X86_VECTOR
 // Eight depths of the span from dx (four columns) and dx + 4·2⁸ (the next four): the double
 // products and sums, each rounded as the portable loop rounds them, then to float.
@@ -39,9 +48,24 @@ __attribute__((target("avx2"))) inline __m256 depths8(__m256d row_z, __m256d a, 
   return _mm256_set_m128(hi, lo);
 }
 
+// Lanes of `mask` (bit k: pixel k of the eight) whose depth is undecided: depth_tie.
+__attribute__((target("avx2"))) inline int tie_mask(__m256 z, __m256 old) {
+  const __m256 magnitude = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
+  const __m256 difference = _mm256_and_ps(_mm256_sub_ps(z, old), magnitude);
+  const __m256 margin =
+      _mm256_add_ps(_mm256_mul_ps(_mm256_and_ps(old, magnitude), _mm256_set1_ps(0x1p-22f)),
+                    _mm256_set1_ps(0x1p-34f));
+  return _mm256_movemask_ps(_mm256_cmp_ps(difference, margin, _CMP_LE_OQ));
+}
+inline void push_lanes(int mask, int at, std::vector<int>& ties) {
+  for (; mask != 0; mask &= mask - 1)
+    ties.push_back(at + __builtin_ctz(static_cast<unsigned>(mask)));
+}
+
 // The depth test of eight pixels: `pass` where z < the stored depth (false for a NaN, as `<`).
 __attribute__((target("avx2"))) int avx2(float* depth, std::uint32_t* color, int n, double row_z,
-                                         double a, double dx0, std::uint32_t c, bool count) {
+                                         double a, double dx0, std::uint32_t c, bool count,
+                                         std::vector<int>* ties, int i0) {
   constexpr double s = kSubpixelScale;
   const __m256d vz = _mm256_set1_pd(row_z), va = _mm256_set1_pd(a), step = _mm256_set1_pd(8 * s);
   // dx0 + k·2⁸ is an integer far below 2⁵³: the additions are exact, as the portable product.
@@ -53,6 +77,8 @@ __attribute__((target("avx2"))) int avx2(float* depth, std::uint32_t* color, int
     const __m256 z = depths8(vz, va, dx_lo, dx_hi);
     const __m256 old = _mm256_loadu_ps(depth + k);
     const __m256 pass = _mm256_cmp_ps(z, old, _CMP_LT_OQ);
+    if (ties)
+      if (const int tie = tie_mask(z, old)) push_lanes(tie, i0 + k, *ties);
     _mm256_storeu_ps(depth + k, _mm256_blendv_ps(old, z, pass));
     float* col = reinterpret_cast<float*>(color + k);
     _mm256_storeu_ps(col, _mm256_blendv_ps(_mm256_loadu_ps(col), vc, pass));
@@ -67,6 +93,9 @@ __attribute__((target("avx2"))) int avx2(float* depth, std::uint32_t* color, int
     const __m256 z = depths8(vz, va, dx_lo, dx_hi);
     const __m256 old = _mm256_maskload_ps(depth + k, in);
     const __m256 pass = _mm256_and_ps(_mm256_cmp_ps(z, old, _CMP_LT_OQ), _mm256_castsi256_ps(in));
+    if (ties)
+      if (const int tie = tie_mask(z, old) & _mm256_movemask_ps(_mm256_castsi256_ps(in)))
+        push_lanes(tie, i0 + k, *ties);
     _mm256_maskstore_ps(depth + k, in, _mm256_blendv_ps(old, z, pass));
     float* col = reinterpret_cast<float*>(color + k);
     _mm256_maskstore_ps(col, in, _mm256_blendv_ps(_mm256_maskload_ps(col, in), vc, pass));
@@ -88,17 +117,18 @@ const bool kAvx2 = cpu_has_avx2();
 }  // namespace
 
 int fill_span_portable(float* depth, std::uint32_t* color, int n, double row_z, double a,
-                       double dx0, std::uint32_t c, bool count) {
+                       double dx0, std::uint32_t c, bool count, std::vector<int>* ties, int i0) {
+  if (ties) log_ties(depth, n, row_z, a, dx0, *ties, i0);
   return count ? portable<true>(depth, color, n, row_z, a, dx0, c)
                : portable<false>(depth, color, n, row_z, a, dx0, c);
 }
 
 int fill_span(float* depth, std::uint32_t* color, int n, double row_z, double a, double dx0,
-              std::uint32_t c, bool count) {
+              std::uint32_t c, bool count, std::vector<int>* ties, int i0) {
 #if FRUSTUM_X86_VECTOR
-  if (kAvx2) return avx2(depth, color, n, row_z, a, dx0, c, count);
+  if (kAvx2) return avx2(depth, color, n, row_z, a, dx0, c, count, ties, i0);
 #endif
-  return fill_span_portable(depth, color, n, row_z, a, dx0, c, count);
+  return fill_span_portable(depth, color, n, row_z, a, dx0, c, count, ties, i0);
 }
 
 bool fill_span_vectorised() {

@@ -35,6 +35,7 @@ int strip_rows(int height, int threads);
 // `frame` reset to the scene's size and background, then every world triangle drawn, with
 // `threads` threads (the team's, when given).
 void render_in_strips(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
-                      FillStats* stats, int threads, ThreadTeam* team = nullptr);
+                      FillStats* stats, int threads, ThreadTeam* team = nullptr,
+                      FrameCertifier* certifier = nullptr);
 
 }  // namespace frustum
