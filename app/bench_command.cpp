@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <ostream>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "solver/accuracy/accuracy.hpp"
 #include "solver/accuracy/hard_cases.hpp"
@@ -83,6 +85,30 @@ int run_bench_accuracy(const std::string& out_dir, const std::string& hard_dir, 
     o.err << "wrote " << out_dir
           << "/accuracy_results.md, accuracy_plot.svg, accuracy_plot_hard.svg\n";
   return ok && errors.empty() ? 0 : 1;
+}
+
+Command add_bench_command(CLI::App& cli) {
+  struct Options {
+    std::string dir = "docs";
+    int cases = 200;
+    std::string hard = "problems/hard";
+  };
+  auto opt = std::make_shared<Options>();
+  auto* bench = cli.add_subcommand("bench", "Benchmarks");
+  bench->require_subcommand(1);
+  auto* accuracy =
+      bench->add_subcommand("accuracy", "Speed against error of every numeric backend");
+  accuracy->add_option("-o,--output", opt->dir, "Directory for accuracy.md and accuracy_plot.svg");
+  accuracy->add_option("--cases", opt->cases, "Generated problems per kind")
+      ->check(CLI::Range(1, 100000));
+  accuracy->add_option("--hard", opt->hard, "Directory of the hard-case suite")
+      ->check(CLI::ExistingDirectory);
+  accuracy->footer(examples({"frustum bench accuracy -o docs --cases 200"}));
+  bench->footer(examples({"frustum bench accuracy -o docs --cases 200"}));
+
+  return {accuracy, [opt](const Output& o) {
+            return run_bench_accuracy(opt->dir, opt->hard, opt->cases, o);
+          }};
 }
 
 }  // namespace frustum::app

@@ -103,7 +103,7 @@ std::optional<ThreadTeam> render_team(int threads);
 // same (bench/render_race.cpp, as llvmpipe's context keeps its framebuffer); none: a new one.
 int run_render(const RenderOptions& options, const Output& o, Frame* target = nullptr);
 // The scene `frustum render` draws (--size and --method applied), or the exit status after
-// printing why not; its PNG writer is app/png_writer.hpp. bench/render_race.cpp races the
+// printing why not; its PNG writer is solver/raster/png_writer.hpp. bench/render_race.cpp races the
 // same steps through llvmpipe.
 std::variant<Scene, int> load_render_scene(const RenderOptions& options, const Output& o);
 // `frustum bench accuracy`: speed against error of every numeric path and backend, on generated

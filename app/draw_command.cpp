@@ -1,7 +1,9 @@
 // `frustum draw SET.yaml --id ID [-o FILE.svg] [--raster N]`: the picture of one problem.
 #include <fstream>
+#include <memory>
 #include <ostream>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/registry.hpp"
@@ -72,6 +74,28 @@ int run_draw(const std::string& set_file, const std::string& id, const std::stri
     o.out << output << ": " << picture.summary << "\n";
   }
   return 0;
+}
+
+Command add_draw_command(CLI::App& cli) {
+  struct Options {
+    std::string set, id, output;
+    int raster = 48;
+  };
+  auto opt = std::make_shared<Options>();
+  auto* draw =
+      cli.add_subcommand("draw", "Draw one problem as SVG (hidden lines, painter vs z-buffer)");
+  draw->add_option("set", opt->set, "Problem set (YAML)")->required()->check(CLI::ExistingFile);
+  draw->add_option("--id", opt->id, "The problem to draw")->required();
+  draw->add_option("-o,--output", opt->output, "SVG file to write (default: standard output)");
+  draw->add_option("--raster", opt->raster, "Painter vs z-buffer: window size in pixels (4 to 512)")
+      ->check(CLI::Range(4, 512));
+  draw->footer(
+      examples({"frustum draw problems/seeds/003_polygons_backface.yaml --id "
+                "seed003-ico-hidden-lines -o ico.svg"}));
+
+  return {draw, [opt](const Output& o) {
+            return run_draw(opt->set, opt->id, opt->output, opt->raster, o);
+          }};
 }
 
 }  // namespace frustum::app

@@ -8,14 +8,15 @@
 #include <ostream>
 #include <sstream>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
-#include "grader/atomic_file.hpp"
-#include "grader/export_gradebook.hpp"
-#include "grader/export_moodle.hpp"
-#include "grader/export_prairielearn.hpp"
-#include "grader/export_qti.hpp"
-#include "grader/file_names.hpp"
-#include "grader/quiz_items.hpp"
+#include "batch/atomic_file.hpp"
+#include "batch/file_names.hpp"
+#include "export/export_gradebook.hpp"
+#include "export/export_moodle.hpp"
+#include "export/export_prairielearn.hpp"
+#include "export/export_qti.hpp"
+#include "export/quiz_items.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
@@ -132,6 +133,52 @@ int run_export(const ExportOptions& e, const Output& o) {
     }
   }
   return export_set(e, o);
+}
+
+Command add_export_command(CLI::App& cli) {
+  auto opt = std::make_shared<ExportOptions>();
+  auto lang = std::make_shared<std::string>("en");
+  auto* exp = cli.add_subcommand("export",
+                                 "A set as PrairieLearn questions, Canvas QTI or Moodle XML; a "
+                                 "gradebook for Canvas or Moodle");
+  exp->add_option("format", opt->format, "What to write")
+      ->required()
+      ->check(CLI::IsMember({"prairielearn", "qti", "moodle", "canvas-grades", "moodle-grades"}));
+  exp->add_option("input", opt->input,
+                  "Problem set (YAML); for *-grades, the gradebook.csv of `frustum grade`")
+      ->required()
+      ->check(CLI::ExistingFile);
+  exp->add_option("-o,--out", opt->out,
+                  "Directory (prairielearn, qti), .xml file (moodle) or .csv file (*-grades; "
+                  "default: standard output)");
+  exp->add_option("--count", opt->count,
+                  "Variants to draw (default 1: the set itself when nothing varies)")
+      ->check(CLI::Range(1, 1000));
+  exp->add_option("--seed", opt->seed, "Seed of the variants (default 1)")
+      ->check(whole_number(0, UINT64_MAX));
+  exp->add_option("--assignment", opt->assignment,
+                  "*-grades: the assignment's column name (default Frustum)");
+  exp->add_flag("--sis-login", opt->sis_login,
+                "canvas-grades: the student ids are SIS Login IDs (default SIS User IDs)");
+  exp->add_option("--image", opt->image,
+                  "prairielearn: the grader image (default frustum-prairielearn)");
+  exp->add_option("--lang", *lang, "Language of the questions' texts: en, ja or ru")
+      ->check(language_check());
+  exp->footer(examples(
+      {"frustum export prairielearn SET.yaml --count 20 -o course/questions/",
+       "frustum export qti SET.yaml --count 3 -o quiz/ && (cd quiz && zip -r ../quiz.zip .)",
+       "frustum export moodle SET.yaml --count 20 -o questions.xml",
+       "frustum export canvas-grades grades/gradebook.csv --assignment \"Homework 3\" -o "
+       "canvas.csv"}));
+
+  return {exp, [opt, lang](const Output& o) {
+            if (opt->out.empty() && opt->format.find("grades") == std::string::npos) {
+              o.err << "export " << opt->format << ": give -o OUT\n";
+              return 2;
+            }
+            opt->lang = *parse_lang(*lang);
+            return run_export(*opt, o);
+          }};
 }
 
 }  // namespace frustum::app

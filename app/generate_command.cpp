@@ -13,12 +13,13 @@
 #include <thread>
 #include <unordered_map>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
-#include "app/variant_files.hpp"
-#include "grader/atomic_file.hpp"
-#include "grader/isolate.hpp"
-#include "grader/paper.hpp"
-#include "grader/run_program.hpp"
+#include "batch/atomic_file.hpp"
+#include "batch/isolate.hpp"
+#include "batch/run_program.hpp"
+#include "batch/variant_files.hpp"
+#include "export/paper.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/rng.hpp"
 #include "solver/problem/solve_set.hpp"
@@ -511,6 +512,56 @@ int run_generate(const GenerateCommand& g, const Output& o) {
              "files: frustum grade "
           << g.set << " ANSWERS --variants " << g.out_dir << "\n";
   return status;
+}
+
+Command add_generate_command(CLI::App& cli) {
+  auto opt = std::make_shared<GenerateCommand>();
+  auto lang = std::make_shared<std::string>("en");
+  auto* generate =
+      cli.add_subcommand("generate", "Per-student or seeded variants of a set, with answer keys");
+  generate->add_option("set", opt->set, "Problem set (YAML)")->required()->check(CLI::ExistingFile);
+  auto* gen_student =
+      generate->add_option("--student", opt->students, "Student id(s): one variant each");
+  auto* gen_seed =
+      generate->add_option("--seed", opt->seed, "Seed of --count variants (pairwise distinct)")
+          ->check(whole_number(0, UINT64_MAX));
+  generate->add_option("--count", opt->count, "How many variants from --seed (default 1)")
+      ->check(CLI::Range(1, 100000))
+      ->needs(gen_seed);
+  auto* gen_roster =
+      generate
+          ->add_option("--roster", opt->roster,
+                       "Class roster: a CSV with a student column, or one id per line")
+          ->check(CLI::ExistingFile);
+  gen_seed->excludes(gen_student);
+  gen_seed->excludes(gen_roster);
+  generate
+      ->add_option("-j,--jobs", opt->jobs,
+                   "--count, --roster: variants drawn at once (default: one per core)")
+      ->check(CLI::Range(1, 1024));
+  generate->add_option("-o,--out", opt->out_dir,
+                       "Directory for the sets; keys go in its answers/ (default .)");
+  generate
+      ->add_option(
+          "--format", opt->format,
+          "yaml (default: sets and keys), latex or pdf (also exam sheets and the answer key)")
+      ->check(CLI::IsMember({"yaml", "latex", "pdf"}));
+  generate
+      ->add_option("--lang", *lang, "latex, pdf: language of the exam sheets' texts: en, ja or ru")
+      ->check(language_check());
+  generate->footer(examples(
+      {"frustum generate SET.yaml --roster roster.csv -o variants/",
+       "frustum generate SET.yaml --seed 7 --count 30 -o drill/",
+       "frustum generate SET.yaml --roster roster.csv -o exam/ --format pdf   (exams + key)"}));
+
+  return {generate, [opt, lang](const Output& o) {
+            if (opt->students.empty() && !opt->roster && !opt->seed) {
+              o.err << "generate: give --student ID, --roster FILE or --seed N [--count K]\n";
+              return 2;
+            }
+            opt->lang = *parse_lang(*lang);
+            return run_generate(*opt, o);
+          }};
 }
 
 }  // namespace frustum::app

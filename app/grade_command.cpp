@@ -5,17 +5,20 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <ostream>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
-#include "app/variant_files.hpp"
-#include "grader/atomic_file.hpp"
-#include "grader/batch.hpp"
-#include "grader/feedback.hpp"
-#include "grader/gradescope.hpp"
-#include "grader/prairielearn.hpp"
-#include "grader/report.hpp"
+#include "batch/atomic_file.hpp"
+#include "batch/batch.hpp"
+#include "batch/class_variants.hpp"
+#include "batch/variant_files.hpp"
 #include "grader/visible_text.hpp"
+#include "report/feedback.hpp"
+#include "report/gradescope.hpp"
+#include "report/prairielearn.hpp"
+#include "report/report.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/variants.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -24,116 +27,18 @@ namespace frustum::app {
 
 namespace {
 
-// The sets of a class as `frustum generate --roster` drew them (redraws included), by student.
-using ClassVariants = std::map<std::string, ProblemSet>;
-
-// A set that does not vary is every student's set: the roster then says only whose each file
-// is. (Variants that `generate` drew from such a set are graded against its files, --variants.)
-ClassVariants class_variants(const ProblemSet& set, const std::vector<std::string>& roster) {
-  ClassVariants out;
-  if (!set_varies(set)) {
-    for (const std::string& student : roster) out.emplace(student, set);
-    return out;
-  }
-  const std::vector<ProblemSet> drawn = variants_for_class(set, roster, false);
-  for (std::size_t i = 0; i < roster.size(); ++i) out.emplace(roster[i], drawn[i]);
-  return out;
-}
+VariantSource variant_source(const GradeOptions& g) { return {g.variants, g.roster}; }
 
 // With --roster: the class's variants, or false after printing why the roster cannot be read.
 bool read_class(const ProblemSet& set, const GradeOptions& g, const Output& o,
-                std::optional<ClassVariants>& out) {
-  if (!g.roster) return true;
+                std::optional<RosterVariants>& out) {
   try {
-    out = class_variants(set, read_roster(*g.roster));
+    out = read_class_variants(set, variant_source(g));
     return true;
   } catch (const InputError& e) {
     o.err << "error: " << e.diagnostic().format() << "\n";
     return false;
   }
-}
-
-ProblemSet refused(const ProblemSet& set, const std::string& where, const std::string& why) {
-  ProblemSet none = set;
-  none.problems.clear();
-  none.errors.push_back(Diagnostic{SourceLocation{where, 0, 0}, "student", why});
-  return none;
-}
-
-const char* kRedrawHint =
-    "grade the class against the files `frustum generate -o DIR` wrote (--variants DIR) or against "
-    "the roster it "
-    "was generated from (--roster ROSTER)";
-
-// A class of a varying set graded without --variants or --roster: each student is graded against
-// the variant drawn from their own id (as `generate --student` draws it), so each result depends
-// on that student's file alone. When two students' variants from their ids share a problem and the
-// class was generated together (`generate --roster`), one of them was drawn again, and which
-// depends on the roster: those pairs are named to the instructor (never in a student's result).
-std::vector<std::string> shared_draws(const ProblemSet& set,
-                                      const std::vector<BatchEntry>& entries) {
-  std::vector<std::string> said;
-  std::map<std::string, std::string> first;  // problem id + given → the first student with it
-  for (const BatchEntry& e : entries) {
-    if (e.student.empty() || e.error) continue;
-    const ProblemSet v = variant_for(set, e.student);
-    for (std::size_t i = 0; i < v.problems.size() && i < set.problems.size(); ++i) {
-      const ProblemSpec& p = v.problems[i];
-      if (!problem_varies(set, set.problems[i]) || p.error) continue;
-      const auto [it, fresh] = first.emplace(p.id + "\x1f" + emit_flow(p.given_node), e.student);
-      if (!fresh && it->second != e.student)
-        said.push_back(fmt::format(
-            "the variants of {} and {} drawn from their ids share problem {}; each was graded "
-            "against the variant from their own id, which is right if the class was generated "
-            "with `frustum generate --student`; if it was generated with --roster, one of them "
-            "was drawn again: {}",
-            it->second, e.student, p.id, kRedrawHint));
-    }
-  }
-  return said;
-}
-
-// The set a student is graded against: with --variants, the file `frustum generate` wrote for
-// them; with --roster, their variant in the class drawn from that roster; otherwise their own
-// variant when the set varies.
-ProblemSet set_for_student(const ProblemSet& set, const GradeOptions& g,
-                           const ClassVariants* roster, const std::string& student,
-                           std::string& variant) {
-  if (g.variants) {
-    const std::string file = variant_file(*g.variants, set.file, variant_name(student));
-    std::error_code ec;
-    if (student.empty() || !std::filesystem::is_regular_file(file, ec))
-      return refused(set, file,
-                     student.empty()
-                         ? "the answers need `student:` to find the student's generated set"
-                         : "no generated set for student " + student + " in " + *g.variants);
-    variant = "graded against " + file;
-    return load_problem_set(file);
-  }
-  if (roster) {
-    const auto it = roster->find(student);
-    if (it == roster->end())
-      return refused(set, *g.roster,
-                     student.empty()
-                         ? "the answers need `student:` to find the student in the roster"
-                         : "student " + student + " is not in the roster " + *g.roster);
-    const ProblemSet& v = it->second;
-    if (v.variant)
-      variant = fmt::format(
-          "graded against the variant of student {} in the class of {} (draw {}, seed {:016x})",
-          student, *g.roster, v.variant->draw, v.variant->seed);
-    return v;
-  }
-  if (!set_varies(set)) return set;
-  ProblemSet v = variant_for(set, student);
-  if (v.variant)
-    variant = fmt::format(
-        "graded against the variant of student {} (seed {:016x}) drawn from the id, as "
-        "`frustum generate --student` draws it; a class generated with --roster may have drawn "
-        "this "
-        "student again: then {}",
-        v.variant->student, v.variant->seed, kRedrawHint);
-  return v;
 }
 
 // Text from files (ids, messages) on a terminal: visible text, so that an id or a file name
@@ -169,14 +74,14 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   options.timeout_seconds = g.timeout;
   options.jobs = g.jobs;
   options.lang = g.lang;
-  std::optional<ClassVariants> roster;
+  std::optional<RosterVariants> roster;
   if (!read_class(set, g, o, roster)) return 1;
   const std::vector<std::string> shared = !g.roster && !g.variants && set_varies(set)
                                               ? shared_draws(set, entries)
                                               : std::vector<std::string>{};
   if (set_varies(set) || g.variants || roster)
     options.set_for = [&](const ProblemSet& s, const std::string& student, std::string& variant) {
-      return set_for_student(s, g, roster ? &*roster : nullptr, student, variant);
+      return set_for_student(s, variant_source(g), roster ? &*roster : nullptr, student, variant);
     };
   if (o.progress)
     options.on_progress = [&](std::size_t done, std::size_t total, const std::string& who) {
@@ -241,11 +146,12 @@ int run_grade(const GradeOptions& g, const Output& o) {
   // --gradescope/--prairielearn/--html/--markdown outputs still carry the located reason.
   const bool unreadable = !submission.answers.IsMap() && !submission.errors.empty();
   std::string variant;
-  std::optional<ClassVariants> roster;
+  std::optional<RosterVariants> roster;
   if (!read_class(set, g, o, roster)) return 1;
-  const ProblemSet graded = unreadable ? set
-                                       : set_for_student(set, g, roster ? &*roster : nullptr,
-                                                         submission.student, variant);
+  const ProblemSet graded =
+      unreadable ? set
+                 : set_for_student(set, variant_source(g), roster ? &*roster : nullptr,
+                                   submission.student, variant);
   GradeReport report = grade(graded, submission);
   report.variant = variant;
   if (g.format == Format::Json)
@@ -270,6 +176,68 @@ int run_grade(const GradeOptions& g, const Output& o) {
   bool failed = !report.errors.empty();
   for (const ProblemGrade& p : report.problems) failed = failed || p.error.has_value();
   return failed ? 1 : 0;
+}
+
+Command add_grade_command(CLI::App& cli) {
+  auto opt = std::make_shared<GradeOptions>();
+  auto lang = std::make_shared<std::string>("en");
+  auto* grade =
+      cli.add_subcommand("grade", "Grade a student's answers, or a class, against a problem set");
+  grade->add_option("set", opt->set, "Problem set (YAML)")->required()->check(CLI::ExistingFile);
+  grade
+      ->add_option(
+          "answers", opt->answers,
+          "Answers (YAML); or a directory of answer files, or a CSV roster, to grade a class")
+      ->required()
+      ->check(CLI::ExistingPath);
+  grade->add_option("--format", opt->format, "Output: text (default) or json")
+      ->type_name("FORMAT")
+      ->transform(choice<Format>({{"text", Format::Text}, {"json", Format::Json}}));
+  grade->add_option("--lang", *lang, "Language of the feedback: en, ja or ru")
+      ->check(language_check());
+  grade->add_option(
+      "-o,--out", opt->out_dir,
+      "A class: directory for gradebook.csv, feedback/, gradescope/ (default grades)");
+  grade
+      ->add_option("--timeout", opt->timeout,
+                   "A class: seconds allowed per submission (default 10)")
+      ->check(CLI::Range(0.1, 3600.0));
+  grade
+      ->add_option("-j,--jobs", opt->jobs,
+                   "A class: submissions graded at once (default: one per core)")
+      ->check(CLI::Range(1, 1024));
+  grade->add_option("--gradescope", opt->gradescope,
+                    "One student: write Gradescope's results.json here");
+  grade->add_option("--prairielearn", opt->prairielearn,
+                    "One student: write PrairieLearn's external-grader results.json here");
+  grade->add_option("--html", opt->html,
+                    "One student: write the feedback page (self-contained HTML) here");
+  grade->add_option("--markdown", opt->markdown,
+                    "One student: write the feedback as Markdown here");
+  grade
+      ->add_option("--variants", opt->variants,
+                   "Grade each student against their set written by `frustum generate -o DIR` "
+                   "(DIR/SET-STUDENT.yaml)")
+      ->check(CLI::ExistingDirectory);
+  grade
+      ->add_option(
+          "--roster", opt->roster,
+          "The class roster (CSV with a student column, or one id a line): says whose each file "
+          "is, "
+          "and grades each student against the variant `frustum generate --roster` drew (redraws "
+          "included)")
+      ->check(CLI::ExistingFile)
+      ->excludes("--variants");
+  grade->footer(examples(
+      {"frustum grade problems/seeds/001_zbuffer_plane_method.yaml "
+       "problems/seeds/answers/001_zbuffer_plane_method.yaml",
+       "frustum grade SET.yaml submissions/ -o grades/      (a class: gradebook.csv, feedback/)",
+       "frustum grade SET.yaml ANSWERS.yaml --gradescope results.json --lang ja"}));
+
+  return {grade, [opt, lang](const Output& o) {
+            opt->lang = *parse_lang(*lang);
+            return run_grade(*opt, o);
+          }};
 }
 
 }  // namespace frustum::app

@@ -10,13 +10,15 @@
 #include <optional>
 #include <ostream>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
-#include "app/png_writer.hpp"
+#include "app/number_options.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/kinds/render.hpp"
 #include "solver/problem/problem_set.hpp"
 #include "solver/raster/fill.hpp"
+#include "solver/raster/png_writer.hpp"
 #include "solver/raster/scanline.hpp"
 #include "solver/steps/scene_reader.hpp"
 
@@ -62,30 +64,6 @@ std::optional<Scene> load_scene(const RenderOptions& opt, const Output& o) {
     o.err << e.diagnostic().format() << "\n";
     return std::nullopt;
   }
-}
-
-// Depth as grey: the covered depths' range [min, max] stretched to white (near) … dark grey
-// (far); the background (depth 1, nothing drawn) black.
-bool write_depth_png(const std::string& path, const Image<float>& depth) {
-  float lo = kDepthClear, hi = 0;
-  for (float z : depth.data)
-    if (z < kDepthClear) {
-      lo = std::min(lo, z);
-      hi = std::max(hi, z);
-    }
-  std::vector<std::uint8_t> grey(depth.data.size(), 0);
-  for (int r = 0; r < depth.height; ++r)
-    for (int i = 0; i < depth.width; ++i) {
-      const float z = depth.at(i, depth.height - 1 - r);
-      if (z >= kDepthClear) continue;
-      const double t = hi > lo ? (z - lo) / (hi - lo) : 0.0;
-      grey[static_cast<std::size_t>(r) * depth.width + i] =
-          static_cast<std::uint8_t>(255 - std::lround(t * 215));
-    }
-  std::vector<const png_byte*> rows(static_cast<std::size_t>(depth.height));
-  for (int r = 0; r < depth.height; ++r)
-    rows[static_cast<std::size_t>(r)] = grey.data() + static_cast<std::size_t>(r) * depth.width;
-  return write_png_rows(path, depth.width, depth.height, PNG_COLOR_TYPE_GRAY, rows.data());
 }
 
 }  // namespace
@@ -167,6 +145,42 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
       opt.output, scene.width, scene.height, gs.triangles, gs.outside, gs.clipped, gs.culled,
       gs.window, ms, method);
   return 0;
+}
+
+Command add_render_command(CLI::App& cli) {
+  auto opt = std::make_shared<RenderOptions>();
+  auto size = std::make_shared<std::string>();
+  auto* render = cli.add_subcommand("render", "Render a scene (or a set's render problem) to PNG");
+  render->add_option("file", opt->file, "Scene file (scene:) or problem set")
+      ->required()
+      ->check(CLI::ExistingFile);
+  render->add_option("-o,--output", opt->output, "PNG file to write")->required();
+  render->add_option("--depth", opt->depth, "Also write the depth buffer as a grey PNG");
+  render->add_option("--size", *size, "Image size WxH (default: the scene's viewport)");
+  render->add_option("--id", opt->id, "The render problem of a problem set (default: the first)");
+  render->add_option("--method", opt->method, "zbuffer or scanline (default: the scene's method)")
+      ->check(CLI::IsMember({"zbuffer", "scanline"}));
+  render
+      ->add_option(
+          "--threads", opt->threads,
+          "2 or more: the render shared by that many threads (a modelled scene's geometry "
+          "in parts, then the frame in bands; a larger scene streamed, each thread drawing "
+          "strips of rows), the same image; default 1")
+      ->check(CLI::Range(1, 1024));
+  render->footer(examples(
+      {"frustum render problems/seeds/paperplane.yaml -o paperplane.png --depth depth.png"}));
+
+  return {render, [opt, size](const Output& o) {
+            if (!size->empty()) {
+              const auto parsed = parse_size(*size);
+              if (const std::string* why = std::get_if<std::string>(&parsed)) {
+                o.err << "--size: " << *why << "\n";
+                return 2;
+              }
+              opt->size = std::get<std::pair<int, int>>(parsed);
+            }
+            return run_render(*opt, o);
+          }};
 }
 
 }  // namespace frustum::app

@@ -36,9 +36,9 @@
 #include <thread>
 
 #include "app/commands.hpp"
-#include "app/png_writer.hpp"
 #include "bench/bandwidth_ceiling.hpp"
 #include "solver/raster/fill.hpp"
+#include "solver/raster/png_writer.hpp"
 
 namespace frustum {
 namespace {
@@ -187,7 +187,7 @@ const Image<std::uint32_t>& render_llvmpipe(const app::RenderOptions& opt, Llvmp
   }
   glFinish();
   glReadPixels(0, 0, scene.width, scene.height, GL_RGBA, GL_UNSIGNED_BYTE, gl.frame.data.data());
-  if (!app::write_color_png(opt.output, gl.frame, opt.threads, team ? &*team : nullptr)) {
+  if (!write_color_png(opt.output, gl.frame, opt.threads, team ? &*team : nullptr)) {
     std::cerr << opt.output << ": cannot write the image\n";
     std::exit(2);
   }

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "batch/batch.hpp"
+#include "batch/csv.hpp"
 #include "fuzz/fuzz_records.hpp"
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include <fstream>
 #include <string>
 
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
+#include "batch/batch.hpp"
+#include "batch/csv.hpp"
 #include "grader/grade.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -14,14 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "export/export_moodle.hpp"
+#include "export/export_prairielearn.hpp"
+#include "export/export_qti.hpp"
+#include "export/paper.hpp"
+#include "export/quiz_items.hpp"
 #include "fuzz/fuzz_records.hpp"
-#include "grader/export_moodle.hpp"
-#include "grader/export_prairielearn.hpp"
-#include "grader/export_qti.hpp"
-#include "grader/gradescope.hpp"
-#include "grader/paper.hpp"
-#include "grader/quiz_items.hpp"
 #include "grader/visible_text.hpp"
+#include "report/gradescope.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/util/words.hpp"
 

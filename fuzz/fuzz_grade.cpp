@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "grader/grade.hpp"
-#include "grader/report.hpp"
+#include "report/report.hpp"
 
 namespace {
 

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "batch/batch.hpp"
 #include "fuzz/fuzz_records.hpp"
-#include "grader/batch.hpp"
 #include "solver/problem/variants.hpp"
 
 namespace {

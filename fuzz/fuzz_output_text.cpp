@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "batch/batch.hpp"
+#include "batch/csv.hpp"
+#include "export/export_gradebook.hpp"
 #include "fuzz/fuzz_records.hpp"
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
-#include "grader/export_gradebook.hpp"
 #include "grader/visible_text.hpp"
 
 namespace {

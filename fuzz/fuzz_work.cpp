@@ -21,8 +21,8 @@
 #include <fstream>
 #include <string>
 
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
+#include "batch/batch.hpp"
+#include "batch/csv.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/problem_set.hpp"

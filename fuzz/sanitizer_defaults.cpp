@@ -10,6 +10,6 @@ extern "C" const char* __lsan_default_suppressions() { return "leak:libcln.so\n"
 // The CLI tests read the program's output; a suppression summary would corrupt it.
 extern "C" const char* __lsan_default_options() { return "print_suppressions=0"; }
 
-// A signal stays a signal, as without sanitizers: grader/isolate.hpp reports a child killed by
+// A signal stays a signal, as without sanitizers: batch/isolate.hpp reports a child killed by
 // SIGSEGV as crashed (ASan's own memory checks do not rely on SIGSEGV).
 extern "C" const char* __asan_default_options() { return "handle_segv=0"; }

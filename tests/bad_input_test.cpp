@@ -20,7 +20,7 @@
 #include <sstream>
 
 #include "grader/grade.hpp"
-#include "grader/report.hpp"
+#include "report/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "test_util.hpp"

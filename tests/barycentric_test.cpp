@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "grader/feedback.hpp"
-#include "grader/report.hpp"
+#include "report/feedback.hpp"
+#include "report/report.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

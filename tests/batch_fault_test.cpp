@@ -9,7 +9,7 @@
 #include <sstream>
 #include <thread>
 
-#include "grader/batch.hpp"
+#include "batch/batch.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

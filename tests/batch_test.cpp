@@ -1,6 +1,6 @@
 // Grading a class: CSV reading, atomic writes, isolation of slow and crashing work, the batch's
 // gradebook, feedback pages, Gradescope results, reproducible outputs, and Japanese feedback.
-#include "grader/batch.hpp"
+#include "batch/batch.hpp"
 
 #include <fmt/format.h>
 #include <sys/single_threaded.h>
@@ -20,14 +20,14 @@
 #include <sstream>
 #include <thread>
 
-#include "grader/atomic_file.hpp"
-#include "grader/csv.hpp"
-#include "grader/feedback.hpp"
-#include "grader/gradebook.hpp"
-#include "grader/gradescope.hpp"
-#include "grader/isolate.hpp"
-#include "grader/output_transaction.hpp"
-#include "grader/report.hpp"
+#include "batch/atomic_file.hpp"
+#include "batch/csv.hpp"
+#include "batch/gradebook.hpp"
+#include "batch/isolate.hpp"
+#include "batch/output_transaction.hpp"
+#include "report/feedback.hpp"
+#include "report/gradescope.hpp"
+#include "report/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "test_util.hpp"
 

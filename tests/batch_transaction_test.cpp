@@ -14,12 +14,12 @@
 #include <sstream>
 #include <thread>
 
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
-#include "grader/feedback.hpp"
-#include "grader/file_names.hpp"
-#include "grader/gradescope.hpp"
-#include "grader/output_transaction.hpp"
+#include "batch/batch.hpp"
+#include "batch/csv.hpp"
+#include "batch/file_names.hpp"
+#include "batch/output_transaction.hpp"
+#include "report/feedback.hpp"
+#include "report/gradescope.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -5,10 +5,10 @@
 
 #include <algorithm>
 
-#include "grader/export_moodle.hpp"
-#include "grader/export_qti.hpp"
+#include "export/export_moodle.hpp"
+#include "export/export_qti.hpp"
+#include "export/quiz_items.hpp"
 #include "grader/grade.hpp"
-#include "grader/quiz_items.hpp"
 #include "solver/problem/variants.hpp"
 #include "test_util.hpp"
 

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <regex>
 
-#include "grader/batch.hpp"
-#include "grader/feedback.hpp"
+#include "batch/batch.hpp"
+#include "report/feedback.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "grader/report.hpp"
+#include "report/report.hpp"
 #include "solver/problem/registry.hpp"
 #include "test_util.hpp"
 

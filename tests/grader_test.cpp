@@ -1,8 +1,8 @@
 // Grading: verdicts, equivalences, unparseable and missing answers, and the JSON report.
 #include <fmt/format.h>
 
-#include "grader/feedback.hpp"
-#include "grader/report.hpp"
+#include "report/feedback.hpp"
+#include "report/report.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

@@ -9,8 +9,8 @@
 #include <map>
 #include <set>
 
-#include "grader/feedback.hpp"
-#include "grader/report.hpp"
+#include "report/feedback.hpp"
+#include "report/report.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/problem/solve_set.hpp"

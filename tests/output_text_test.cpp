@@ -10,21 +10,21 @@
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "app/variant_files.hpp"
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
-#include "grader/export_gradebook.hpp"
-#include "grader/export_moodle.hpp"
-#include "grader/export_prairielearn.hpp"
-#include "grader/export_qti.hpp"
-#include "grader/feedback.hpp"
-#include "grader/file_names.hpp"
-#include "grader/gradescope.hpp"
-#include "grader/paper.hpp"
-#include "grader/quiz_items.hpp"
+#include "batch/batch.hpp"
+#include "batch/csv.hpp"
+#include "batch/file_names.hpp"
+#include "batch/variant_files.hpp"
+#include "export/export_gradebook.hpp"
+#include "export/export_moodle.hpp"
+#include "export/export_prairielearn.hpp"
+#include "export/export_qti.hpp"
+#include "export/paper.hpp"
+#include "export/quiz_items.hpp"
+#include "export/xml_text.hpp"
 #include "grader/student_id.hpp"
 #include "grader/visible_text.hpp"
-#include "grader/xml_text.hpp"
+#include "report/feedback.hpp"
+#include "report/gradescope.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/words.hpp"
@@ -238,7 +238,7 @@ TEST(OutputText, CsvRosterIdsAreReadLikeFileIds) {
                    "ann\nb\x1b"
                    "b\n");
   try {
-    app::read_roster((dir / "ids.txt").string());
+    read_roster((dir / "ids.txt").string());
     ADD_FAILURE() << "a roster id with ESC was read";
   } catch (const InputError& x) {
     EXPECT_EQ(x.diagnostic().format(), (dir / "ids.txt").string() +
@@ -248,7 +248,7 @@ TEST(OutputText, CsvRosterIdsAreReadLikeFileIds) {
   }
   test::write_file(dir / "ids.csv", "student\nAnn\n ann\n");
   try {
-    app::read_roster((dir / "ids.csv").string());
+    read_roster((dir / "ids.csv").string());
     ADD_FAILURE() << "Ann and ann were two students";
   } catch (const InputError& x) {
     EXPECT_EQ(x.diagnostic().format(),

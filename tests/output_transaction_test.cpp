@@ -2,7 +2,7 @@
 // in place (no file deleted, none created), and what is published is exactly what a grading into
 // a fresh directory publishes — whatever the kept run held (longer or shorter files, files of
 // students no longer in the class, a file linked elsewhere, a planted symlink).
-#include "grader/output_transaction.hpp"
+#include "batch/output_transaction.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -14,7 +14,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "grader/batch.hpp"
+#include "batch/batch.hpp"
 #include "solver/problem/problem_set.hpp"
 #include "test_util.hpp"
 

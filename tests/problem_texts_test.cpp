@@ -4,9 +4,9 @@
 // placeholders; every writer shows the chosen language, and generated variants keep them all.
 #include <yaml-cpp/yaml.h>
 
-#include "grader/export_moodle.hpp"
-#include "grader/paper.hpp"
-#include "grader/quiz_items.hpp"
+#include "export/export_moodle.hpp"
+#include "export/paper.hpp"
+#include "export/quiz_items.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/problem/variants.hpp"
 #include "test_util.hpp"

@@ -21,11 +21,11 @@
 #include <tuple>
 
 #include "app/commands.hpp"
-#include "app/png_writer.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/raster/certified_trace.hpp"
 #include "solver/raster/fill.hpp"
+#include "solver/raster/png_writer.hpp"
 #include "solver/raster/scanline.hpp"
 #include "solver/raster/striped_render.hpp"
 #include "solver/util/side_by_side.hpp"
@@ -864,7 +864,7 @@ int png_round_trip(const Image<std::uint32_t>& img, const std::string& name) {
     std::ofstream older(path, std::ios::binary);
     older << std::string(std::size_t(1) << 20, '\xAB');
   }
-  if (!app::write_color_png(path, img)) {
+  if (!write_color_png(path, img)) {
     ADD_FAILURE() << path << ": not written";
     return -1;
   }
@@ -872,7 +872,7 @@ int png_round_trip(const Image<std::uint32_t>& img, const std::string& name) {
   for (const int threads : {2, 3, 8, -2, -3, -8}) {  // negative: on the team's threads
     const std::string again = ::testing::TempDir() + std::to_string(threads) + name;
     std::filesystem::remove(again);
-    EXPECT_TRUE(app::write_color_png(again, img, std::abs(threads), threads < 0 ? &team : nullptr));
+    EXPECT_TRUE(write_color_png(again, img, std::abs(threads), threads < 0 ? &team : nullptr));
     EXPECT_EQ(file_bytes(again), file_bytes(path)) << threads << " threads";
   }
   png_image read{};
@@ -951,8 +951,8 @@ TEST(RenderCli, FewOpaqueColoursMakeAPaletteImageWithTheSamePixels) {
       }
     std::set<std::uint32_t> used(img.data.begin(), img.data.end());
     ASSERT_EQ(static_cast<int>(used.size()), colours);
-    app::IndexedImage indexed;
-    EXPECT_EQ(app::index_colors(img, indexed), colours <= 256) << colours;
+    IndexedImage indexed;
+    EXPECT_EQ(index_colors(img, indexed), colours <= 256) << colours;
     if (colours <= 256) {
       EXPECT_EQ(static_cast<int>(indexed.palette.size()), colours);
       EXPECT_EQ(indexed.palette[0], img.at(0, img.height - 1));  // the top row's first pixel
@@ -996,17 +996,17 @@ TEST(RenderCli, TheChecksumFromTheRunsIsZlibsOverTheBytes) {
             img.at(i, y) = pack(Rgb{k, static_cast<std::uint8_t>(k / 3), 1});
           x += n;
         }
-      app::FrameRuns runs;
-      ASSERT_TRUE(app::frame_runs(img, runs));
-      const int bits = app::palette_bit_depth(runs.palette.size());
+      FrameRuns runs;
+      ASSERT_TRUE(frame_runs(img, runs));
+      const int bits = palette_bit_depth(runs.palette.size());
       std::vector<std::uint8_t> row(1 + static_cast<std::size_t>((width * bits + 7) / 8));
       uLong zlib = adler32(0L, Z_NULL, 0);
       std::uint32_t ours = 1;
       for (int r = 0; r < img.height; ++r) {
         row[0] = 0;
-        app::pack_row(runs, r, bits, row.data() + 1);
+        pack_row(runs, r, bits, row.data() + 1);
         zlib = adler32(zlib, row.data(), static_cast<uInt>(row.size()));
-        ours = app::adler32_packed_row(ours, runs, r, bits, row.data() + 1);
+        ours = adler32_packed_row(ours, runs, r, bits, row.data() + 1);
         ASSERT_EQ(ours, zlib) << colours << " colours, width " << width << ", row " << r;
       }
     }
@@ -1017,17 +1017,17 @@ TEST(RenderCli, TheChecksumFromTheRunsIsZlibsOverTheBytes) {
     for (int x = 0; x < wide.width; ++x)
       for (int y = 0; y < 2; ++y)
         wide.at(x, y) = pack(Rgb{static_cast<std::uint8_t>(x % colours + y), 255, 255});
-    app::FrameRuns runs;
-    ASSERT_TRUE(app::frame_runs(wide, runs));
-    const int bits = app::palette_bit_depth(runs.palette.size());
+    FrameRuns runs;
+    ASSERT_TRUE(frame_runs(wide, runs));
+    const int bits = palette_bit_depth(runs.palette.size());
     std::vector<std::uint8_t> row(1 + static_cast<std::size_t>(wide.width) * bits / 8);
     uLong zlib = adler32(0L, Z_NULL, 0);
     std::uint32_t ours = 1;
     for (int r = 0; r < 2; ++r) {
       row[0] = 0;
-      app::pack_row(runs, r, bits, row.data() + 1);
+      pack_row(runs, r, bits, row.data() + 1);
       zlib = adler32(zlib, row.data(), static_cast<uInt>(row.size()));
-      ours = app::adler32_packed_row(ours, runs, r, bits, row.data() + 1);
+      ours = adler32_packed_row(ours, runs, r, bits, row.data() + 1);
     }
     EXPECT_EQ(ours, zlib) << colours << " colours";
   }

@@ -1,5 +1,5 @@
 // run_program: another program run from an argument vector, never through a shell.
-#include "grader/run_program.hpp"
+#include "batch/run_program.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,14 +6,14 @@
 #include <algorithm>
 #include <random>
 
-#include "grader/export_moodle.hpp"
-#include "grader/export_prairielearn.hpp"
-#include "grader/export_qti.hpp"
+#include "export/export_moodle.hpp"
+#include "export/export_prairielearn.hpp"
+#include "export/export_qti.hpp"
+#include "export/paper.hpp"
+#include "export/quiz_items.hpp"
 #include "grader/grade.hpp"
-#include "grader/gradescope.hpp"
-#include "grader/paper.hpp"
-#include "grader/quiz_items.hpp"
 #include "grader/statement_choice.hpp"
+#include "report/gradescope.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/input/yaml_document.hpp"

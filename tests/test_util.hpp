@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "grader/run_program.hpp"
+#include "batch/run_program.hpp"
 #include "solver/core/exact.hpp"
 #include "solver/derivation/problem_result.hpp"
 #include "solver/problem/problem_set.hpp"

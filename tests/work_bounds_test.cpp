@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "app/number_options.hpp"
-#include "grader/batch.hpp"
-#include "grader/csv.hpp"
+#include "batch/batch.hpp"
+#include "batch/csv.hpp"
 #include "grader/grade.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/raster/fill.hpp"

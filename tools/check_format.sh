@@ -6,6 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=(--dry-run --Werror)
 [[ ${1:-} == --fix ]] && mode=(-i)
-files=$(find solver grader app bench tests fuzz -name '*.cpp' -o -name '*.hpp' | sort)
+dirs=()
+for d in solver grader report batch export server app bench tests fuzz; do [[ -d $d ]] && dirs+=("$d"); done
+files=$(find "${dirs[@]}" -name '*.cpp' -o -name '*.hpp' | sort)
 # shellcheck disable=SC2086
 clang-format --style=file "${mode[@]}" $files

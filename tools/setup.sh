@@ -18,6 +18,13 @@ case "${1:-}" in
   *) echo "usage: tools/setup.sh [--tests]" >&2; exit 2 ;;
 esac
 bash tools/packages/install.sh "${lists[@]}"
+if [ "${1:-}" = --tests ]; then
+  # playwright-core drives Debian's chromium in the served pages' browser test; it never
+  # downloads a browser (and the variable says so to any package that would).
+  # Debian's nodejs comes without npm (its own package); a Node.js that brings npm is kept.
+  command -v npm >/dev/null || bash tools/packages/install.sh tools/packages/npm.txt
+  (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund)
+fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${options[@]}" >/dev/null
 cmake --build build --parallel "$(nproc)"

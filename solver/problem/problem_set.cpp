@@ -9,15 +9,16 @@
 #include "solver/input/text_reader.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/problem/serve_policy.hpp"
 #include "solver/util/suggest.hpp"
 
 namespace frustum {
 
 namespace {
 
-const std::vector<std::string> kSetFields = {"title",       "lang",      "source",
-                                             "conventions", "tolerance", "problems",
-                                             "description", "grading",   "variants"};
+const std::vector<std::string> kSetFields = {"title",     "lang",     "source",      "conventions",
+                                             "tolerance", "problems", "description", "grading",
+                                             "variants",  "feedback", "attempts",    "deadline"};
 const std::vector<std::string> kProblemFields = {"id",        "kind",   "text",       "given",
                                                  "ask",       "points", "vary",       "conventions",
                                                  "tolerance", "nice",   "difficulty", "grading"};
@@ -354,6 +355,7 @@ ProblemSet load_problem_set(const YamlDocument& doc, const std::string& name) {
     set.conventions = read_conventions(root["conventions"], name, "conventions", {});
     set.tolerance = read_tolerance(root["tolerance"], name, "tolerance", {});
     set.grading = read_grading(root["grading"], name, "grading", {});
+    read_serve_policy(root, name);  // checked here; `frustum serve` reads it (serve_policy.hpp)
     if (!root["problems"].IsDefined()) fail_at(root, name, "problems", "missing required field");
     if (!root["problems"].IsSequence())
       fail_at(root["problems"], name, "problems", "expected a list of problems");

@@ -53,7 +53,9 @@ stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 # The sources of the `frustum` target: the top CMakeLists.txt and the directories it builds from.
 mkdir -p "$stage/frustum/tools" "$stage/assignment"
-for part in CMakeLists.txt app bench grader solver; do cp -R "$root/$part" "$stage/frustum/"; done
+for part in CMakeLists.txt app bench grader report batch export server solver; do
+  [ -e "$root/$part" ] && cp -R "$root/$part" "$stage/frustum/"
+done
 cp -R "$root/tools/packages" "$stage/frustum/tools/"
 cp "$set_file" "$stage/assignment/$set_name"
 variants_conf=

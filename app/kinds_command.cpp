@@ -1,0 +1,36 @@
+// `frustum kinds [--format text|markdown]`: the problem kinds, their givens and answers.
+#include <memory>
+#include <ostream>
+
+#include "app/cli_options.hpp"
+#include "solver/problem/registry.hpp"
+
+namespace frustum::app {
+
+int run_kinds(const Output& o, bool markdown) {
+  if (markdown) {
+    o.out << kinds_table_markdown(builtin_kinds());
+    return 0;
+  }
+  for (const KindInfo& k : builtin_kinds().all()) {
+    o.out << k.name << " — " << k.summary << "\n    given:";
+    for (const std::string& f : k.given_fields) o.out << " " << f;
+    o.out << "\n    answers:";
+    for (const AnswerSpec& a : k.answers) o.out << " " << a.name;
+    o.out << "\n";
+  }
+  return 0;
+}
+
+Command add_kinds_command(CLI::App& cli) {
+  auto format = std::make_shared<std::string>("text");
+  auto* kinds = cli.add_subcommand("kinds", "List the problem kinds and their answers");
+  kinds
+      ->add_option("--format", *format,
+                   "text, or markdown: the README's kinds table, generated from the kinds")
+      ->check(CLI::IsMember({"text", "markdown"}));
+  kinds->footer(examples({"frustum kinds", "frustum kinds --format markdown"}));
+  return {kinds, [format](const Output& o) { return run_kinds(o, *format == "markdown"); }};
+}
+
+}  // namespace frustum::app

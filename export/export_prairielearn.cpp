@@ -1,0 +1,217 @@
+#include "export/export_prairielearn.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+
+#include "batch/file_names.hpp"
+#include "export/quiz_items.hpp"
+#include "export/xml_text.hpp"
+#include "solver/input/yaml_emit.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/problem/variants.hpp"
+
+namespace frustum {
+
+using json = nlohmann::ordered_json;
+
+namespace {
+
+std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 1469598103934665603ull) {
+  for (const unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+// A UUID (version 4 layout) that depends only on the set's title and the problem id, so a
+// re-export keeps each question's identity (and its students' data) in PrairieLearn.
+std::string stable_uuid(const std::string& title, const std::string& id) {
+  const std::uint64_t a = fnv1a("frustum-prairielearn/1\x1f" + title + "\x1f" + id);
+  const std::uint64_t b = fnv1a(id + "\x1f" + title, a);
+  const std::string hex = fmt::format("{:016x}{:016x}", a, b);
+  return fmt::format("{}-{}-4{}-{:x}{}-{}", hex.substr(0, 8), hex.substr(8, 4), hex.substr(13, 3),
+                     8 | (std::stoi(hex.substr(16, 1), nullptr, 16) & 3), hex.substr(17, 3),
+                     hex.substr(20, 12));
+}
+
+// Which statements are true, as checkboxes in the set's order, each numbered as in the set
+// (frustum-pl-grade reads the ticked ones back by these numbers); a blank submission is "none".
+std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang lang) {
+  const ProblemResult solved = solve_problem(p, "", false);
+  const Value* key = solved.error ? nullptr : solved.answers.find(name);
+  const QuizField f = key ? statement_checkboxes(p, *key, lang) : QuizField{};
+  const bool none_true = std::find(f.right.begin(), f.right.end(), true) == f.right.end();
+  std::string s = fmt::format(
+      "<p>{}:</p>\n<pl-checkbox answers-name=\"{}\" fixed-order=\"true\" allow-blank=\"true\" "
+      "hide-letter-keys=\"true\"{}>\n",
+      name, name, none_true ? " min-correct=\"0\"" : "");
+  for (std::size_t i = 0; i < f.choices.size(); ++i)
+    s += fmt::format("  <pl-answer correct=\"{}\">{}. {}</pl-answer>\n",
+                     f.right[i] ? "true" : "false", i + 1, xml_escape(f.choices[i]));
+  return s + "</pl-checkbox>";
+}
+
+std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) {
+  const std::string name = xml_escape(spec.name);
+  const std::string input = prairielearn_input(spec);
+  if (input == "checkbox") return checkbox_html(name, p, lang);
+  if (input == "number")
+    return fmt::format(
+        "<pl-number-input answers-name=\"{0}\" label=\"\\({0} =\\)\" "
+        "show-help-text=\"true\"></pl-number-input>",
+        name);
+  if (input == "vector" || input == "matrix")
+    return fmt::format(
+        "<p>{0} =</p>\n<pl-matrix-input answers-name=\"{0}\" label=\"{0}\"></pl-matrix-input>",
+        name);
+  if (input == "choice") {
+    std::string s = fmt::format(
+        "<p>{}:</p>\n<pl-multiple-choice answers-name=\"{}\" inline=\"true\">\n", name, name);
+    const std::vector<std::string> words =
+        spec.kind == AnswerKind::Bool ? std::vector<std::string>{"true", "false"} : spec.words;
+    for (const std::string& w : words)
+      s += fmt::format("  <pl-answer correct=\"{{{{params.correct.{}.{}}}}}\">{}</pl-answer>\n",
+                       name, w, xml_escape(w));
+    return s + "</pl-multiple-choice>";
+  }
+  const char* hint = spec.kind == AnswerKind::Plane       ? "an equation such as x + y - z = -6"
+                     : spec.kind == AnswerKind::BitString ? "a bit string such as 0101"
+                     : spec.kind == AnswerKind::WordMap
+                         ? "a mapping such as {0-1: visible, 1-2: hidden}"
+                         : "a list such as [1-3, 2-7]";
+  return fmt::format(
+      "<pl-string-input answers-name=\"{0}\" label=\"{0}:\" placeholder=\"{1}\" "
+      "size=\"40\"></pl-string-input>",
+      name, hint);
+}
+
+// One problem of a variant as a complete one-problem set (the set's other fields kept).
+std::string one_problem_set(const YAML::Node& root, const ProblemSet& variant, std::size_t index) {
+  YAML::Node copy = YAML::Clone(root);
+  YAML::Node only(YAML::NodeType::Sequence);
+  only.push_back(YAML::Clone(root["problems"][index]));
+  copy["problems"] = only;
+  ProblemSet one = variant;
+  one.problems = {variant.problems[index]};
+  return emit_variant_set(copy, one, "");
+}
+
+}  // namespace
+
+std::string prairielearn_input(const AnswerSpec& spec) {
+  switch (spec.kind) {
+    case AnswerKind::Scalar:
+      return "number";
+    case AnswerKind::Vector:
+    case AnswerKind::Direction:
+    case AnswerKind::UnitVector:
+    case AnswerKind::Point:
+      return "vector";
+    case AnswerKind::Matrix:
+    case AnswerKind::Polygon:
+      return "matrix";
+    case AnswerKind::Bool:
+    case AnswerKind::Category:
+      return "choice";
+    case AnswerKind::Statements:
+      return "checkbox";
+    default:
+      return "string";
+  }
+}
+
+std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
+    const YAML::Node& root, const ProblemSet& set, const std::vector<ProblemSet>& variants,
+    const std::string& stem, const PrairieLearnOptions& options) {
+  std::map<std::string, std::map<std::string, std::string>> out;
+  // The uuid keeps to the set's own title, so a question keeps its id in every language.
+  const std::string title = set.title.empty() ? stem : set.title.text;
+  const std::string shown = set.title.empty() ? stem : set.title.in(options.lang);
+  // One directory per question, never shared: the batch's injective encoding of names (ids
+  // "q 1", "q/1", "q_1" and "Q_1" are four questions, also on a file system blind to case).
+  std::vector<std::string> wanted;
+  for (const ProblemSpec& p : set.problems) wanted.push_back(stem + "-" + p.id);
+  const std::vector<std::string> dirs = unique_file_names(wanted);
+  for (std::size_t i = 0; i < set.problems.size(); ++i) {
+    const ProblemSpec& p = set.problems[i];
+    if (!p.info) continue;
+    json info;
+    info["uuid"] = stable_uuid(title, p.id);
+    info["title"] = shown + ": " + p.id;
+    info["topic"] = shown;
+    info["tags"] = json::array({"frustum", p.kind});
+    info["type"] = "v3";
+    info["singleVariant"] = variants.size() == 1;
+    info["gradingMethod"] = "External";
+    info["externalGradingOptions"] = json{{"enabled", true},
+                                          {"image", options.image},
+                                          {"entrypoint", options.entrypoint},
+                                          {"timeout", options.timeout}};
+    // The variants Frustum drew: what the page shows, the set the grader grades against, and
+    // which words are right (for pl-multiple-choice's answer panel).
+    json drawn = json::array();
+    for (const ProblemSet& v : variants) {
+      if (i >= v.problems.size() || v.problems[i].error) continue;
+      const ProblemSpec& vp = v.problems[i];
+      const ProblemResult r = solve_problem(vp, v.file, false);
+      if (r.error) continue;
+      json params;
+      params["problem"] = vp.id;
+      params["text"] = question_text(v, vp, options.lang);
+      std::string given;
+      for (const std::string& line : given_lines(vp)) given += line + "\n";
+      params["given"] = given;
+      params["set"] = one_problem_set(root, v, i);
+      json inputs, correct;
+      for (const std::string& name : vp.ask) {
+        const AnswerSpec* spec = vp.info->answer(name);
+        if (!spec) continue;
+        inputs[name] = prairielearn_input(*spec);
+        if (inputs[name] != "choice") continue;
+        const Value* expected = r.answers.find(name);
+        const std::vector<std::string> words = spec->kind == AnswerKind::Bool
+                                                   ? std::vector<std::string>{"true", "false"}
+                                                   : spec->words;
+        for (const std::string& w : words) {
+          const std::string right = spec->kind == AnswerKind::Bool
+                                        ? (expected && expected->flag ? "true" : "false")
+                                        : (expected ? expected->word : "");
+          correct[name][w] = w == right ? "true" : "false";
+        }
+      }
+      params["inputs"] = inputs;
+      params["correct"] = correct.is_null() ? json::object() : correct;
+      drawn.push_back(params);
+    }
+    if (drawn.empty()) continue;
+    std::string html =
+        "<pl-question-panel>\n  <p>{{params.text}}</p>\n  "
+        "<pre>{{params.given}}</pre>\n</pl-question-panel>\n\n";
+    for (const std::string& name : p.ask)
+      if (const AnswerSpec* spec = p.info->answer(name))
+        html += input_html(*spec, p, options.lang) + "\n\n";
+    html +=
+        "<pl-submission-panel>\n  "
+        "<pl-external-grader-results></pl-external-grader-results>\n</pl-submission-panel>\n";
+    std::string server =
+        "# Generated by `frustum export prairielearn`: the variants below were drawn and solved "
+        "by\n"
+        "# Frustum; grading runs Frustum itself in the external grader (frustum-pl-grade).\n"
+        "import json\nimport random\n\n"
+        "VARIANTS = json.loads(" +
+        json(drawn.dump()).dump() +  // a JSON string literal is a Python string literal
+        ")\n\n\n"
+        "def generate(data):\n"
+        "    # PrairieLearn seeds `random` with the variant's seed, so a variant keeps its "
+        "problem.\n"
+        "    data[\"params\"].update(VARIANTS[random.randrange(len(VARIANTS))])\n";
+    auto& files = out[dirs[i]];
+    files["info.json"] = info.dump(2) + "\n";
+    files["question.html"] = html;
+    files["server.py"] = server;
+  }
+  return out;
+}
+
+}  // namespace frustum

@@ -1,0 +1,212 @@
+#include "export/latex_text.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+
+namespace frustum {
+
+namespace {
+
+// The Unicode characters Frustum's derivations and answers use, as LaTeX.
+const std::map<char32_t, const char*>& unicode_latex() {
+  static const std::map<char32_t, const char*> table = {{U'−', "\\ensuremath{-}"},
+                                                        {U'·', "\\ensuremath{\\cdot}"},
+                                                        {U'×', "\\ensuremath{\\times}"},
+                                                        {U'…', "\\ensuremath{\\dots}"},
+                                                        {U'≈', "\\ensuremath{\\approx}"},
+                                                        {U'√', "\\ensuremath{\\surd}"},
+                                                        {U'π', "\\ensuremath{\\pi}"},
+                                                        {U'θ', "\\ensuremath{\\theta}"},
+                                                        {U'φ', "\\ensuremath{\\varphi}"},
+                                                        {U'α', "\\ensuremath{\\alpha}"},
+                                                        {U'β', "\\ensuremath{\\beta}"},
+                                                        {U'λ', "\\ensuremath{\\lambda}"},
+                                                        {U'′', "\\ensuremath{'}"},
+                                                        {U'‖', "\\ensuremath{\\|}"},
+                                                        {U'∞', "\\ensuremath{\\infty}"},
+                                                        {U'≤', "\\ensuremath{\\le}"},
+                                                        {U'≥', "\\ensuremath{\\ge}"},
+                                                        {U'≠', "\\ensuremath{\\ne}"},
+                                                        {U'⇒', "\\ensuremath{\\Rightarrow}"},
+                                                        {U'→', "\\ensuremath{\\to}"},
+                                                        {U'∈', "\\ensuremath{\\in}"},
+                                                        {U'°', "\\ensuremath{^\\circ}"},
+                                                        {U'±', "\\ensuremath{\\pm}"},
+                                                        {U'∓', "\\ensuremath{\\mp}"},
+                                                        {U'⁻', "\\ensuremath{^{-}}"},
+                                                        {U'⁰', "\\ensuremath{^{0}}"},
+                                                        {U'¹', "\\ensuremath{^{1}}"},
+                                                        {U'²', "\\ensuremath{^{2}}"},
+                                                        {U'³', "\\ensuremath{^{3}}"},
+                                                        {U'₀', "\\ensuremath{_{0}}"},
+                                                        {U'₁', "\\ensuremath{_{1}}"},
+                                                        {U'₂', "\\ensuremath{_{2}}"},
+                                                        {U'₃', "\\ensuremath{_{3}}"},
+                                                        {U'₄', "\\ensuremath{_{4}}"},
+                                                        {U'ₓ', "\\ensuremath{_{x}}"},
+                                                        {U'ᵧ', "\\ensuremath{_{y}}"},
+                                                        {U'ₛ', "\\ensuremath{_{s}}"},
+                                                        {U'ᵢ', "\\ensuremath{_{i}}"},
+                                                        {U'\u0302', "\\ensuremath{\\hat{}}"},
+                                                        {U'\u0303', "\\ensuremath{\\tilde{}}"},
+                                                        {U'①', "\\textcircled{\\scriptsize 1}"},
+                                                        {U'②', "\\textcircled{\\scriptsize 2}"},
+                                                        {U'③', "\\textcircled{\\scriptsize 3}"},
+                                                        {U'④', "\\textcircled{\\scriptsize 4}"},
+                                                        {U'“', "``"},
+                                                        {U'”', "''"},
+                                                        {U'’', "'"},
+                                                        {U'—', "---"},
+                                                        {U'–', "--"},
+                                                        {U'∠', "\\ensuremath{\\angle}"},
+                                                        {U'△', "\\ensuremath{\\triangle}"},
+                                                        {U'∘', "\\ensuremath{\\circ}"}};
+  return table;
+}
+
+// Decodes one UTF-8 character at s[i], advancing i; invalid bytes give U+FFFD.
+char32_t next(std::string_view s, std::size_t& i) {
+  const unsigned char c = static_cast<unsigned char>(s[i]);
+  const int n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+  if (n == 0 || i + static_cast<std::size_t>(n) > s.size()) {
+    ++i;
+    return 0xFFFD;
+  }
+  char32_t cp = n == 1 ? c : c & (0x3F >> (n - 1));
+  for (int k = 1; k < n; ++k)
+    cp = (cp << 6) | (static_cast<unsigned char>(s[i + static_cast<std::size_t>(k)]) & 0x3F);
+  i += static_cast<std::size_t>(n);
+  return cp;
+}
+
+bool is_cyrillic(char32_t c) { return c >= 0x0400 && c <= 0x04FF; }
+
+bool is_cjk(char32_t c) {
+  return (c >= 0x3000 && c <= 0x30FF) || (c >= 0x3400 && c <= 0x9FFF) ||
+         (c >= 0xFF00 && c <= 0xFFEF) || (c >= 0xF900 && c <= 0xFAFF);
+}
+
+// Non-ASCII characters: kept when the preamble declares them (or CJK under LuaLaTeX), else
+// shown as their code point (\unknownchar{2A01} prints [U+2A01]) so nothing vanishes unseen.
+void append_unicode(std::string& out, std::string_view s, std::size_t start, std::size_t end,
+                    char32_t cp) {
+  if (unicode_latex().count(cp) || is_cjk(cp) || is_cyrillic(cp))
+    out.append(s.substr(start, end - start));
+  else
+    out += fmt::format("\\unknownchar{{{:04X}}}", static_cast<unsigned>(cp));
+}
+
+}  // namespace
+
+bool has_cjk(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();)
+    if (is_cjk(next(text, i))) return true;
+  return false;
+}
+
+bool has_cyrillic(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();)
+    if (is_cyrillic(next(text, i))) return true;
+  return false;
+}
+
+std::string latex_prose(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t start = i;
+    const char32_t cp = next(text, i);
+    switch (cp) {
+      case '\\':
+        out += "\\textbackslash{}";
+        break;
+      case '{':
+        out += "\\{";
+        break;
+      case '}':
+        out += "\\}";
+        break;
+      case '$':
+        out += "\\$";
+        break;
+      case '&':
+        out += "\\&";
+        break;
+      case '#':
+        out += "\\#";
+        break;
+      case '^':
+        out += "\\textasciicircum{}";
+        break;
+      case '_':
+        out += "\\_";
+        break;
+      case '%':
+        out += "\\%";
+        break;
+      case '~':
+        out += "\\textasciitilde{}";
+        break;
+      case '<':
+        out += "\\textless{}";
+        break;
+      case '>':
+        out += "\\textgreater{}";
+        break;
+      default:
+        if (cp < 0x80)
+          out += static_cast<char>(cp);
+        else
+          append_unicode(out, text, start, i, cp);
+    }
+  }
+  return out;
+}
+
+std::string latex_math(std::string_view latex) {
+  std::string out;
+  for (std::size_t i = 0; i < latex.size();) {
+    const std::size_t start = i;
+    const char32_t cp = next(latex, i);
+    if (cp < 0x80)
+      out += static_cast<char>(cp);
+    else
+      append_unicode(out, latex, start, i, cp);
+  }
+  return out;
+}
+
+std::string latex_preamble(bool cjk, bool cyrillic) {
+  std::string out;
+  // Cyrillic in DejaVu (fonts-dejavu-core): Latin Modern, LuaLaTeX's default, has none.
+  const std::string cyrillic_fonts =
+      cyrillic ? "\\usepackage{fontspec}\n\\setmainfont{DejaVu Serif}\n"
+                 "\\setsansfont{DejaVu Sans}\n\\setmonofont{DejaVu Sans Mono}\n"
+               : "";
+  if (cjk) {
+    out =
+        "% LuaLaTeX: Japanese text — compile with lualatex (Debian: texlive-luatex, "
+        "texlive-lang-japanese).\n"
+        "\\documentclass[a4paper,11pt]{article}\n" +
+        cyrillic_fonts + "\\usepackage{luatexja}\n";
+  } else if (cyrillic) {
+    out =
+        "% LuaLaTeX: Russian text — compile with lualatex (Debian: texlive-luatex, "
+        "fonts-dejavu-core).\n"
+        "\\documentclass[a4paper,11pt]{article}\n" +
+        cyrillic_fonts;
+  } else {
+    out =
+        "\\documentclass[a4paper,11pt]{article}\n\\usepackage[utf8]{inputenc}\n\\usepackage[T1]{"
+        "fontenc}\n";
+    for (const auto& [cp, tex] : unicode_latex())
+      out += fmt::format("\\DeclareUnicodeCharacter{{{:04X}}}{{{}}}\n", static_cast<unsigned>(cp),
+                         tex);
+  }
+  return out +
+         "\\newcommand{\\unknownchar}[1]{\\ensuremath{[\\mathrm{U{+}#1}]}}\n\\usepackage{amsmath,"
+         "amssymb}\n\\usepackage[margin=2cm]{geometry}\n\\usepackage{tikz}\n"
+         "\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{4pt}\n";
+}
+
+}  // namespace frustum

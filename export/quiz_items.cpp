@@ -1,0 +1,209 @@
+#include "export/quiz_items.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "export/export_tolerance.hpp"
+#include "solver/input/text_reader.hpp"
+#include "solver/input/yaml_emit.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/problem/variants.hpp"
+
+namespace frustum {
+
+namespace {
+
+std::vector<QuizField> numbers(const Value& v, const std::vector<double>& windows) {
+  static const char* const kAxes[] = {"x", "y", "z", "w"};
+  std::vector<QuizField> out;
+  for (std::size_t i = 0; i < v.numbers.size(); ++i) {
+    QuizField f;
+    f.value = v.numbers[i];
+    f.window = windows[i];
+    if (v.shape == Value::Shape::Matrix)
+      f.label = fmt::format("row {}, column {}", i / static_cast<std::size_t>(v.cols) + 1,
+                            i % static_cast<std::size_t>(v.cols) + 1);
+    else if (v.shape == Value::Shape::Vector)
+      f.label = v.numbers.size() <= 4 ? kAxes[i] : fmt::format("component {}", i + 1);
+    out.push_back(f);
+  }
+  return out;
+}
+
+std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAnswer& a, Lang lang) {
+  const QuizField f = statement_checkboxes(p, expected, lang);
+  if (std::find(f.right.begin(), f.right.end(), true) == f.right.end())
+    return "no statement is true, and a checkbox question needs a right choice";
+  a.prompt = "the true statements";
+  a.fields = {f};
+  return {};
+}
+
+// A given that is the problem's key (AnswerKind::Statements: each statement's truth).
+bool given_is_key(const ProblemSpec& p) {
+  return p.info &&
+         std::any_of(p.info->answers.begin(), p.info->answers.end(),
+                     [](const AnswerSpec& a) { return a.kind == AnswerKind::Statements; });
+}
+
+// The fields of one answer, or the reason it cannot be a quiz field.
+std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
+                      const Value& expected, QuizAnswer& a, Lang lang) {
+  if (expected.shape == Value::Shape::Null) return "it has no value here";
+  switch (spec.kind) {
+    case AnswerKind::Scalar:
+    case AnswerKind::Vector:
+    case AnswerKind::UnitVector:
+    case AnswerKind::Point:
+    case AnswerKind::Matrix:
+    case AnswerKind::Transform:
+      a.fields = numbers(expected, accepted_windows(p, key, spec.name, expected));
+      return {};
+    case AnswerKind::Direction: {
+      // Right up to a positive factor: the quiz asks for the one of length 1.
+      Value unit = expected;
+      double norm = 0;
+      for (double x : unit.numbers) norm += x * x;
+      norm = std::sqrt(norm);
+      if (norm == 0) return "a zero vector has no direction";
+      for (double& x : unit.numbers) x /= norm;
+      unit.exact.clear();
+      a.prompt += " (scaled to length 1)";
+      a.fields = numbers(unit, accepted_windows(p, key, spec.name, unit));
+      return {};
+    }
+    case AnswerKind::Bool: {
+      QuizField f;
+      f.type = QuizField::Type::Choice;
+      f.choices = {"true", "false"};
+      f.correct = expected.flag ? "true" : "false";
+      a.fields = {f};
+      return {};
+    }
+    case AnswerKind::Category: {
+      QuizField f;
+      f.type = QuizField::Type::Choice;
+      f.choices = spec.words;
+      f.correct = expected.word;
+      a.fields = {f};
+      return {};
+    }
+    case AnswerKind::BitString: {
+      QuizField f;
+      f.type = QuizField::Type::Text;
+      f.correct = expected.word;
+      // As `frustum grade` does, a platform accepts the bits with leading zeros dropped (an
+      // outcode written as a number: 101 for 0101, 0 for 0000).
+      for (std::size_t k = 1; k < f.correct.size() && f.correct[k - 1] == '0'; ++k)
+        f.also.push_back(f.correct.substr(k));
+      a.prompt += " (a bit string such as 0101)";
+      a.fields = {f};
+      return {};
+    }
+    case AnswerKind::Plane:
+      return "a plane's equation is right up to any non-zero factor";
+    case AnswerKind::Polygon:
+      return "a polygon is right from any starting vertex";
+    case AnswerKind::Segment:
+      return "a segment is right in either direction";
+    case AnswerKind::PointSet:
+      return "a set of points is right in any order";
+    case AnswerKind::WordMap:
+    case AnswerKind::WordList:
+      return "a set of labels is right in any order";
+    case AnswerKind::Sequence:
+      return "an order of labels has no quiz field";
+    case AnswerKind::Statements:
+      return statement_boxes(p, expected, a, lang);
+  }
+  return "no quiz field fits it";
+}
+
+}  // namespace
+
+namespace {
+
+// A statement's `text` or `reason` in `lang`, or in the set's own language (text_reader.hpp).
+std::string statement_field(const ProblemSpec& p, const YAML::Node& statement, const char* key,
+                            Lang lang) {
+  const YAML::Node n =
+      statement.IsMap() ? local_text_node(statement[key], lang, p.text.lang) : YAML::Node();
+  return n.IsDefined() && n.IsScalar() ? n.Scalar() : "";
+}
+
+}  // namespace
+
+std::vector<std::string> statement_texts(const ProblemSpec& p, Lang lang) {
+  std::vector<std::string> out;
+  const YAML::Node statements = given_is_key(p) ? p.given_node["statements"] : YAML::Node();
+  if (statements.IsSequence())
+    for (const YAML::Node& s : statements) out.push_back(statement_field(p, s, "text", lang));
+  return out;
+}
+
+QuizField statement_checkboxes(const ProblemSpec& p, const Value& key, Lang lang) {
+  QuizField f;
+  f.type = QuizField::Type::Checkboxes;
+  const YAML::Node statements = p.given_node["statements"];
+  f.choices = statement_texts(p, lang);
+  f.choices.resize(key.entries.size());
+  for (std::size_t i = 0; i < key.entries.size(); ++i) {
+    const YAML::Node s =
+        statements.IsSequence() && i < statements.size() ? statements[i] : YAML::Node();
+    f.reasons.push_back(statement_field(p, s, "reason", lang));
+    f.right.push_back(key.entries[i].second == "true");
+    if (f.right.back()) f.correct += (f.correct.empty() ? "" : ", ") + std::to_string(i + 1);
+  }
+  return f;
+}
+
+std::string question_text(const ProblemSet& set, const ProblemSpec& p, Lang lang) {
+  if (p.text.empty()) return p.info ? tr(p.info->summary, lang) : p.kind;
+  const std::string& written = p.text.in(lang);
+  std::string text = fill_text(written, p.given_node);
+  if (set.variant && written.find('{') == std::string::npos)
+    text += " " + tr("(Use the values given below.)", lang);
+  return text;
+}
+
+std::vector<std::string> given_lines(const ProblemSpec& p) {
+  std::vector<std::string> out;
+  if (p.given_node.IsMap() && !given_is_key(p))
+    for (auto it = p.given_node.begin(); it != p.given_node.end(); ++it)
+      out.push_back(it->first.as<std::string>() + ": " + emit_flow(it->second));
+  return out;
+}
+
+std::vector<QuizQuestion> quiz_questions(const ProblemSet& set, Lang lang) {
+  std::vector<QuizQuestion> out;
+  for (const ProblemSpec& p : set.problems) {
+    if (p.error || !p.info) continue;
+    const ProblemResult r = solve_problem(p, set.file, false);
+    if (r.error) continue;
+    QuizQuestion q;
+    q.id = p.id;
+    q.kind = p.kind;
+    q.text = question_text(set, p, lang);
+    q.given = given_lines(p);
+    for (const std::string& name : p.ask) {
+      const AnswerSpec* spec = p.info->answer(name);
+      const Value* expected = r.answers.find(name);
+      if (!spec || !expected) continue;
+      QuizAnswer a;
+      a.name = name;
+      a.prompt = name;
+      a.points = p.answer_points(name);
+      const std::string reason = fields_of(p, r.answers, *spec, *expected, a, lang);
+      if (reason.empty())
+        q.answers.push_back(a);
+      else
+        q.left_out.push_back(name + ": " + reason);
+    }
+    out.push_back(q);
+  }
+  return out;
+}
+
+}  // namespace frustum

@@ -1,0 +1,49 @@
+#include "report/prairielearn.hpp"
+
+#include <fmt/format.h>
+
+#include "grader/visible_text.hpp"
+#include "report/feedback.hpp"
+#include "solver/derivation/render.hpp"
+
+namespace frustum {
+
+using json = nlohmann::ordered_json;
+
+json prairielearn_results(const GradeReport& r, Lang lang) {
+  // Unreadable answers and an unreadable file are format errors, not wrong answers.
+  std::vector<std::string> format_errors;
+  for (const Diagnostic& d : r.errors) format_errors.push_back(visible_text(d.format()));
+  for (const ProblemGrade& p : r.problems)
+    for (const AnswerGrade& a : p.answers)
+      if (a.verdict == Verdict::Unparseable)
+        format_errors.push_back(visible_text(fmt::format("{}.{}: {}", p.id, a.name, a.feedback)));
+  json j;
+  j["gradable"] = format_errors.empty();
+  if (!format_errors.empty()) {
+    j["format_errors"] = format_errors;
+    j["message"] =
+        "Some answers could not be read; fix them and submit again (this attempt is not counted).";
+    return j;
+  }
+  j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
+  j["message"] =
+      fmt::format("{} / {}", number_json(r.score).dump(), number_json(r.max_score).dump()) +
+      (r.variant.empty() ? "" : " — " + visible_text(r.variant));
+  json tests = json::array();
+  for (const ProblemGrade& p : r.problems) {
+    json t;
+    t["name"] = p.id;
+    t["points"] = number_json(p.score);
+    t["max_points"] = number_json(p.max_score);
+    t["message"] = p.error                  ? visible_text(p.error->format())
+                   : p.score >= p.max_score ? "correct"
+                                            : "see the feedback below";
+    t["output"] = render_problem_feedback_markdown(p, lang);
+    tests.push_back(t);
+  }
+  j["tests"] = tests;
+  return j;
+}
+
+}  // namespace frustum

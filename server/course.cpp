@@ -1,0 +1,95 @@
+#include "server/course.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "server/tokens.hpp"
+#include "solver/input/yaml_document.hpp"
+#include "solver/problem/variants.hpp"
+
+namespace frustum::server {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A set id travels in URLs: letters, digits, - and _ only.
+bool url_safe(const std::string& id) {
+  return !id.empty() && std::all_of(id.begin(), id.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '-' || c == '_';
+  });
+}
+
+void load_set(const fs::path& path, const std::vector<std::string>& roster, Course& course) {
+  CourseSet s;
+  s.id = path.stem().string();
+  s.file = path.string();
+  if (!url_safe(s.id)) {
+    course.errors.push_back(Diagnostic{SourceLocation{s.file, 0, 0}, "",
+                                       "a served set's file name may hold only letters, digits, "
+                                       "- and _ (it is part of the set's address)"});
+    return;
+  }
+  std::string bytes;
+  if (const auto error = read_text_file(s.file, kMaxYamlFileBytes, bytes)) {
+    course.errors.push_back(*error);
+    return;
+  }
+  s.version = sha256_hex(bytes);
+  const YamlDocument doc = parse_yaml(bytes, s.file);
+  s.set = load_problem_set(doc, s.file);
+  const std::vector<Diagnostic> errors = s.set.all_errors();
+  if (!errors.empty()) {
+    course.errors.insert(course.errors.end(), errors.begin(), errors.end());
+    return;
+  }
+  s.policy = read_serve_policy(doc.root, s.file);
+  if (set_varies(s.set)) {
+    const std::vector<ProblemSet> drawn = variants_for_class(s.set, roster, false);
+    for (std::size_t i = 0; i < roster.size(); ++i) {
+      const std::vector<Diagnostic> e = drawn[i].all_errors();
+      course.errors.insert(course.errors.end(), e.begin(), e.end());
+      s.variants.emplace(roster[i], drawn[i]);
+    }
+  }
+  course.sets.push_back(std::move(s));
+}
+
+}  // namespace
+
+const ProblemSet* CourseSet::for_student(const std::string& student) const {
+  if (variants.empty()) return &set;
+  const auto it = variants.find(student);
+  return it == variants.end() ? nullptr : &it->second;
+}
+
+std::string CourseSet::variant_id(const std::string& student) const {
+  const ProblemSet* v = for_student(student);
+  if (!v || !v->variant) return "";
+  return "student:" + v->variant->student +
+         (v->variant->draw > 1 ? "#" + std::to_string(v->variant->draw) : "");
+}
+
+const CourseSet* Course::find(const std::string& id) const {
+  for (const CourseSet& s : sets)
+    if (s.id == id) return &s;
+  return nullptr;
+}
+
+bool Course::enrolled(const std::string& student) const {
+  return std::find(roster.begin(), roster.end(), student) != roster.end();
+}
+
+Course load_course(const std::string& dir, const std::vector<std::string>& roster) {
+  Course course;
+  course.dir = dir;
+  course.roster = roster;
+  std::vector<fs::path> files;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir))
+    if (e.is_regular_file() && e.path().extension() == ".yaml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const fs::path& f : files) load_set(f, roster, course);
+  return course;
+}
+
+}  // namespace frustum::server

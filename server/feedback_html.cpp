@@ -1,0 +1,97 @@
+#include "server/feedback_html.hpp"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "report/report.hpp"
+#include "server/http.hpp"
+#include "server/phrases.hpp"
+
+namespace frustum::server {
+
+namespace {
+
+using Json = nlohmann::json;
+
+Say verdict_phrase(const std::string& v) {
+  if (v == "correct") return Say::Correct;
+  if (v == "partial") return Say::Partial;
+  if (v == "unparseable") return Say::Unreadable;
+  if (v == "missing") return Say::Missing;
+  return Say::Incorrect;
+}
+
+std::string text_of(const Json& j, const char* key) {
+  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : "";
+}
+
+std::string labelled(const char* cls, Say label, const std::string& text, Lang lang) {
+  if (text.empty()) return "";
+  return fmt::format("<p class=\"{}\"><strong>{}</strong>: {}</p>\n", cls,
+                     html_escape(say(label, lang)), html_escape(text));
+}
+
+std::string carried_html(const Json& a, Lang lang) {
+  if (!a.value("carried_forward", false)) return "";
+  std::string used;
+  for (const Json& c : a.value("carried_from", Json::array()))
+    used += fmt::format("{}<code>{}</code> = <code>{}</code>", used.empty() ? "" : ", ",
+                        html_escape(text_of(c, "name")), html_escape(text_of(c, "text")));
+  return fmt::format("<p class=\"carried\"><strong>{}</strong>{}{}</p>\n",
+                     html_escape(say(Say::Carried, lang)), used.empty() ? "" : ": ", used);
+}
+
+std::string answer_html(const Json& a, Lang lang) {
+  const std::string verdict = text_of(a, "verdict");
+  std::string out = fmt::format(
+      "<div class=\"answer verdict-{0}\" data-answer=\"{1}\">\n<h4><code>{1}</code>: "
+      "<span class=\"verdict\">{2}</span> <span class=\"points\">{3} / {4}</span></h4>\n",
+      html_escape(verdict), html_escape(text_of(a, "name")),
+      html_escape(say(verdict_phrase(verdict), lang)), score_text(a.value("score", 0.0)),
+      score_text(a.value("max_score", 0.0)));
+  if (!text_of(a, "got_text").empty())
+    out +=
+        fmt::format("<p class=\"got\">{}: <code>{}</code></p>\n",
+                    html_escape(say(Say::YourAnswer, lang)), html_escape(text_of(a, "got_text")));
+  if (verdict != "correct")
+    out += labelled("feedback", Say::Feedback, text_of(a, "feedback"), lang);
+  out += labelled("mistake", Say::Mistake, text_of(a, "mistake"), lang);
+  out += labelled("where", Say::WhereWrong, text_of(a, "wrong_step"), lang);
+  out += carried_html(a, lang);
+  // Made by the server from the grader's steps, its texts escaped there (html_steps).
+  if (!text_of(a, "derivation_html").empty())
+    out += fmt::format("<details class=\"derivation\"><summary>{}</summary>\n{}</details>\n",
+                       html_escape(say(Say::Derivation, lang)), text_of(a, "derivation_html"));
+  return out + "</div>\n";
+}
+
+std::string graded_html(const GradeRecord& g, bool shown, Lang lang) {
+  if (g.failed)
+    return fmt::format("<p class=\"failed\">{}</p>\n", html_escape(say(Say::GradingFailed, lang)));
+  if (!shown)
+    return fmt::format("<p class=\"later\">{}</p>\n", html_escape(say(Say::FeedbackLater, lang)));
+  const Json result = Json::parse(g.result, nullptr, false);
+  std::string out =
+      fmt::format("<p class=\"score\">{}: {} / {}</p>\n", html_escape(say(Say::Score, lang)),
+                  score_text(g.score), score_text(g.max_score));
+  if (result.is_object())
+    for (const Json& a : result.value("answers", Json::array())) out += answer_html(a, lang);
+  return out;
+}
+
+}  // namespace
+
+std::string submission_html(const SubmissionRecord& s, const std::optional<GradeRecord>& grade,
+                            bool feedback_shown, Lang lang) {
+  const char* state = !grade ? "pending" : grade->failed ? "failed" : "graded";
+  std::string out =
+      fmt::format("<div class=\"submission\" id=\"s-{0}\" data-state=\"{1}\">\n<h3>{2} {3}</h3>\n",
+                  s.id, state, html_escape(say(Say::Attempt, lang)), s.attempt);
+  if (!grade)
+    return out + fmt::format("<p class=\"pending\">{}</p>\n</div>\n",
+                             html_escape(say(Say::Received, lang)));
+  return out + graded_html(*grade, feedback_shown, lang) + "</div>\n";
+}
+
+}  // namespace frustum::server

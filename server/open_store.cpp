@@ -1,0 +1,28 @@
+#include "server/postgres_connection.hpp"
+#include "server/postgres_store.hpp"
+#include "server/sqlite_migrations.hpp"
+#include "server/sqlite_store.hpp"
+#include "server/store.hpp"
+
+namespace frustum::server {
+
+std::unique_ptr<Store> open_store(const std::string& url, StoreRole role) {
+  constexpr std::string_view kSqlite = "sqlite:";
+  if (url.rfind(kSqlite, 0) == 0) {
+    const std::string path = url.substr(kSqlite.size());
+    if (path.empty()) throw StoreError("--db sqlite:PATH needs a file name after sqlite:");
+    return open_sqlite_store(path,
+                             role == StoreRole::Worker ? SqliteSync::Normal : SqliteSync::Full);
+  }
+  if (url.rfind("postgresql://", 0) == 0 || url.rfind("postgres://", 0) == 0) {
+    PostgresOptions options;
+    options.worker = role == StoreRole::Worker;
+    return open_postgres_store(url, options);
+  }
+  throw StoreError("unknown database '" + redact_postgres_url(url) +
+                   "': use sqlite:PATH or postgresql://USER@HOST/DATABASE");
+}
+
+int latest_schema_version() { return sqlite_latest_version(); }
+
+}  // namespace frustum::server

@@ -1,0 +1,58 @@
+// Every phrase a student reads on the served pages, by key, in English, Japanese and Russian
+// (tests/server_phrases_test.cpp fails on a key without all three).
+#pragma once
+
+#include <cstddef>
+
+#include "solver/derivation/i18n.hpp"
+
+namespace frustum::server {
+
+enum class Say : std::size_t {
+  YourSets,
+  NoSets,
+  SignInFirst,
+  LinkInvalid,
+  NotFound,
+  Refused,
+  TooMany,
+  TooLarge,
+  Busy,
+  Problem,
+  Given,
+  Submit,
+  ReadAs,
+  CannotRead,
+  Received,
+  Attempt,
+  AttemptsLeft,
+  NoAttemptsLeft,
+  DeadlinePassed,
+  Deadline,
+  FeedbackLater,
+  Score,
+  Correct,
+  Incorrect,
+  Partial,
+  Unreadable,
+  Missing,
+  Mistake,
+  WhereWrong,
+  Carried,
+  Derivation,
+  YourAnswer,
+  GradingFailed,
+  DraftSaved,
+  AllSets,
+  FillOneAnswer,
+  Figure,
+  Submissions,
+  Pending,
+  Feedback,
+  NotAccepted,
+  Count
+};
+
+const char* say(Say key, Lang lang);
+
+}  // namespace frustum::server

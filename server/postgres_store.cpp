@@ -1,0 +1,308 @@
+#include "server/postgres_store.hpp"
+
+#include <charconv>
+#include <condition_variable>
+#include <cstdio>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+#include "server/postgres_connection.hpp"
+
+namespace frustum::server {
+
+namespace {
+
+constexpr const char* kSubmissionColumns =
+    "id, student, set_id, set_version, variant, problem, answers, received, attempt, state, "
+    "claims";
+
+// Every statement, prepared on each connection when it opens. Orders use the C collation so
+// that both stores sort alike, whatever the database's locale.
+const std::pair<const char*, std::string> kStatements[] = {
+    {"schema_version", "SELECT coalesce(max(version), 0) FROM schema_migrations"},
+    {"put_student",
+     "INSERT INTO students (id, token_hash) VALUES ($1, $2) "
+     "ON CONFLICT (id) DO UPDATE SET token_hash = excluded.token_hash"},
+    {"student_by_token", "SELECT id FROM students WHERE token_hash = $1"},
+    {"students", "SELECT id FROM students ORDER BY id COLLATE \"C\""},
+    {"put_session",
+     "INSERT INTO sessions (hash, student, csrf, expires) VALUES ($1, $2, $3, $4) "
+     "ON CONFLICT (hash) DO UPDATE SET student = excluded.student, csrf = excluded.csrf, "
+     "expires = excluded.expires"},
+    {"session", "SELECT student, csrf, expires FROM sessions WHERE hash = $1 AND expires > $2"},
+    {"save_draft",
+     "INSERT INTO drafts (student, set_id, problem, answer, text, saved) "
+     "VALUES ($1, $2, $3, $4, $5, $6) ON CONFLICT (student, set_id, problem, answer) "
+     "DO UPDATE SET text = excluded.text, saved = excluded.saved "
+     "WHERE excluded.saved >= drafts.saved"},
+    {"drafts",
+     "SELECT set_id, problem, answer, text, saved FROM drafts WHERE student = $1 AND set_id = $2 "
+     "ORDER BY problem COLLATE \"C\", answer COLLATE \"C\""},
+    // One statement, committed when it returns; the attempt comes from the row of `attempts`,
+    // locked by the upsert until the commit, so submissions at once are numbered in turn.
+    {"submit",
+     "WITH next AS (INSERT INTO attempts AS a (student, set_id, problem, last) "
+     "VALUES ($1, $2, $5, 1) ON CONFLICT (student, set_id, problem) "
+     "DO UPDATE SET last = a.last + 1 RETURNING last) "
+     "INSERT INTO submissions (student, set_id, set_version, variant, problem, answers, "
+     "received, attempt) SELECT $1, $2, $3, $4, $5, $6, $7, last FROM next "
+     "RETURNING id, attempt"},
+    // The oldest pending submission nobody holds (or whose holder's lease ran out); rows that
+    // another instance is claiming this instant are skipped, not waited for.
+    {"claim",
+     std::string("UPDATE submissions SET claimed_by = $1, claimed_at = $2, claims = claims + 1 "
+                 "WHERE id = ("
+                 "SELECT id FROM submissions WHERE state = 0 AND "
+                 "(claimed_by IS NULL OR claimed_at <= $3) ORDER BY id LIMIT 1 "
+                 "FOR UPDATE SKIP LOCKED) RETURNING ") +
+         kSubmissionColumns},
+    // The grade is written only if the submission is still pending and this worker's claim,
+    // in the same statement that marks it graded: a submission is graded exactly once.
+    {"record_grade",
+     "WITH mine AS (UPDATE submissions SET state = $9 WHERE id = $1 AND claimed_by = $10 AND "
+     "state = 0 RETURNING id) INSERT INTO grades (submission, result, score, max_score, "
+     "set_version, graded_by, graded, failed) SELECT id, $2, $3, $4, $5, $6, $7, $8 FROM mine"},
+    {"submissions", std::string("SELECT ") + kSubmissionColumns +
+                        " FROM submissions WHERE student = $1 AND set_id = $2 ORDER BY id"},
+    {"submission", std::string("SELECT ") + kSubmissionColumns +
+                       " FROM submissions WHERE student = $1 AND id = $2"},
+    {"latest_grade",
+     "SELECT submission, result, score, max_score, set_version, graded_by, graded, failed "
+     "FROM grades WHERE submission = $1 ORDER BY id DESC LIMIT 1"},
+    {"pending_count", "SELECT count(*) FROM submissions WHERE state = 0"},
+};
+
+std::int64_t integer(const std::string& text) {
+  std::int64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size())
+    throw StoreError("PostgreSQL returned '" + text + "' where a whole number belongs");
+  return value;
+}
+
+double real(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0')
+    throw StoreError("PostgreSQL returned '" + text + "' where a number belongs");
+  return value;
+}
+
+// Every double exactly (17 significant digits read back to the same value).
+std::string text_of(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+SubmissionRecord submission_row(const std::vector<std::string>& row) {
+  SubmissionRecord r;
+  r.id = integer(row.at(0));
+  r.student = row.at(1);
+  r.set = row.at(2);
+  r.set_version = row.at(3);
+  r.variant = row.at(4);
+  r.problem = row.at(5);
+  r.answers = row.at(6);
+  r.received = integer(row.at(7));
+  r.attempt = static_cast<int>(integer(row.at(8)));
+  r.state = static_cast<SubmissionState>(integer(row.at(9)));
+  r.claims = static_cast<int>(integer(row.at(10)));
+  return r;
+}
+
+// Open connections, each used by one thread at a time; at most `limit` exist.
+class ConnectionPool {
+ public:
+  ConnectionPool(std::string url, int limit, bool worker)
+      : url_(std::move(url)), limit_(limit < 1 ? 1 : limit), worker_(worker) {}
+
+  // Runs the prepared statement `name` on a free connection. A connection the server has
+  // closed while it was idle (restart, failover) is replaced before the statement is sent, so
+  // no statement is ever sent twice; one that breaks while a statement runs is closed and the
+  // error reported (whether that statement committed cannot be known).
+  PgRows run(const char* name, const std::vector<std::string>& params) {
+    std::unique_ptr<PgConnection> db = take();
+    try {
+      PgRows rows = db->run(name, params);
+      give(std::move(db));
+      return rows;
+    } catch (const StoreError&) {
+      if (db->usable()) {
+        give(std::move(db));
+      } else {
+        db.reset();
+        forget();
+      }
+      throw;
+    }
+  }
+
+ private:
+  std::unique_ptr<PgConnection> take() {
+    {
+      std::unique_lock lock(mutex_);
+      freed_.wait(lock, [&] { return !free_.empty() || open_ < limit_; });
+      while (!free_.empty()) {
+        std::unique_ptr<PgConnection> db = std::move(free_.back());
+        free_.pop_back();
+        if (db->alive()) return db;
+        --open_;
+      }
+      ++open_;
+    }
+    try {
+      auto db = std::make_unique<PgConnection>(url_);
+      // A commit returns once it is on disk, whatever the server's default: a submission is
+      // acknowledged only after its commit. A worker submits nothing (PostgresOptions::worker).
+      db->exec(worker_ ? "SET synchronous_commit TO off" : "SET synchronous_commit TO on");
+      for (const auto& [name, sql] : kStatements) db->prepare(name, sql);
+      return db;
+    } catch (...) {
+      forget();
+      throw;
+    }
+  }
+  void give(std::unique_ptr<PgConnection> db) {
+    {
+      std::lock_guard lock(mutex_);
+      free_.push_back(std::move(db));
+    }
+    freed_.notify_one();
+  }
+  void forget() {
+    {
+      std::lock_guard lock(mutex_);
+      --open_;
+    }
+    freed_.notify_one();
+  }
+
+  std::string url_;
+  int limit_;
+  bool worker_;
+  std::mutex mutex_;
+  std::condition_variable freed_;
+  std::vector<std::unique_ptr<PgConnection>> free_;
+  int open_ = 0;
+};
+
+class PostgresStore final : public Store {
+ public:
+  PostgresStore(const std::string& url, const PostgresOptions& options)
+      : pool_(url, options.connections, options.worker) {}
+
+  int schema_version() override {
+    return static_cast<int>(integer(pool_.run("schema_version", {}).rows.at(0).at(0)));
+  }
+
+  void put_student(const std::string& id, const std::string& token_hash) override {
+    pool_.run("put_student", {id, token_hash});
+  }
+
+  std::optional<std::string> student_by_token(const std::string& token_hash) override {
+    PgRows r = pool_.run("student_by_token", {token_hash});
+    if (r.rows.empty()) return std::nullopt;
+    return r.rows[0][0];
+  }
+
+  std::vector<std::string> students() override {
+    std::vector<std::string> out;
+    for (auto& row : pool_.run("students", {}).rows) out.push_back(std::move(row[0]));
+    return out;
+  }
+
+  void put_session(const std::string& session_hash, const SessionRecord& r) override {
+    pool_.run("put_session", {session_hash, r.student, r.csrf, std::to_string(r.expires)});
+  }
+
+  std::optional<SessionRecord> session(const std::string& session_hash, Millis now) override {
+    PgRows r = pool_.run("session", {session_hash, std::to_string(now)});
+    if (r.rows.empty()) return std::nullopt;
+    return SessionRecord{r.rows[0][0], r.rows[0][1], integer(r.rows[0][2])};
+  }
+
+  void save_draft(const std::string& student, const Draft& d) override {
+    pool_.run("save_draft", {student, d.set, d.problem, d.answer, d.text, std::to_string(d.saved)});
+  }
+
+  std::vector<Draft> drafts(const std::string& student, const std::string& set) override {
+    std::vector<Draft> out;
+    for (const auto& row : pool_.run("drafts", {student, set}).rows)
+      out.push_back(Draft{row[0], row[1], row[2], row[3], integer(row[4])});
+    return out;
+  }
+
+  SubmissionRecord submit(const NewSubmission& n) override {
+    const std::vector<std::string> params = {n.student,
+                                             n.set,
+                                             n.set_version,
+                                             n.variant,
+                                             n.problem,
+                                             n.answers,
+                                             std::to_string(n.received)};
+    const PgRows r = pool_.run("submit", params);
+    SubmissionRecord out;
+    static_cast<NewSubmission&>(out) = n;
+    out.id = integer(r.rows.at(0).at(0));
+    out.attempt = static_cast<int>(integer(r.rows.at(0).at(1)));
+    out.state = SubmissionState::Pending;
+    return out;
+  }
+
+  std::optional<SubmissionRecord> claim(const std::string& worker, Millis now,
+                                        Millis lease) override {
+    PgRows r = pool_.run("claim", {worker, std::to_string(now), std::to_string(now - lease)});
+    if (r.rows.empty()) return std::nullopt;
+    return submission_row(r.rows[0]);
+  }
+
+  bool record_grade(const GradeRecord& g, const std::string& worker) override {
+    const int state =
+        static_cast<int>(g.failed ? SubmissionState::Failed : SubmissionState::Graded);
+    const PgRows r = pool_.run(
+        "record_grade", {std::to_string(g.submission), g.result, text_of(g.score),
+                         text_of(g.max_score), g.set_version, g.graded_by, std::to_string(g.graded),
+                         g.failed ? "true" : "false", std::to_string(state), worker});
+    return r.changed == 1;
+  }
+
+  std::vector<SubmissionRecord> submissions(const std::string& student,
+                                            const std::string& set) override {
+    std::vector<SubmissionRecord> out;
+    for (const auto& row : pool_.run("submissions", {student, set}).rows)
+      out.push_back(submission_row(row));
+    return out;
+  }
+
+  std::optional<SubmissionRecord> submission(const std::string& student, std::int64_t id) override {
+    PgRows r = pool_.run("submission", {student, std::to_string(id)});
+    if (r.rows.empty()) return std::nullopt;
+    return submission_row(r.rows[0]);
+  }
+
+  std::optional<GradeRecord> latest_grade(std::int64_t submission) override {
+    PgRows r = pool_.run("latest_grade", {std::to_string(submission)});
+    if (r.rows.empty()) return std::nullopt;
+    const auto& row = r.rows[0];
+    return GradeRecord{integer(row[0]), row[1], real(row[2]),    real(row[3]),
+                       row[4],          row[5], integer(row[6]), row[7] == "t"};
+  }
+
+  std::int64_t pending_count() override {
+    return integer(pool_.run("pending_count", {}).rows.at(0).at(0));
+  }
+
+ private:
+  ConnectionPool pool_;
+};
+
+}  // namespace
+
+std::unique_ptr<Store> open_postgres_store(const std::string& url, PostgresOptions options) {
+  migrate_postgres(url);
+  return std::make_unique<PostgresStore>(url, options);
+}
+
+}  // namespace frustum::server

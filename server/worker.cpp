@@ -1,0 +1,107 @@
+#include "server/worker.hpp"
+
+#include <spawn.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <stdexcept>
+
+#include "server/clock.hpp"
+#include "server/grade_job.hpp"
+#include "server/tokens.hpp"
+
+extern char** environ;
+
+namespace frustum::server {
+
+Millis claim_lease(const WorkerOptions& o) { return (o.seconds + 5) * Millis{1000}; }
+
+namespace {
+
+GradeRecord gave_up(const SubmissionRecord& s, const std::string& name) {
+  GradeRecord g;
+  g.submission = s.id;
+  g.result = R"({"error":"grading did not finish in time"})";
+  g.set_version = s.set_version;
+  g.graded_by = name;
+  g.graded = now_ms();
+  g.failed = true;
+  return g;
+}
+
+}  // namespace
+
+int run_worker(const Course& course, Store& store, const std::string& name,
+               const WorkerOptions& options, const std::atomic<bool>& stop) {
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // the server gone (even by kill -9): stop too
+  const pid_t parent = ::getppid();
+  SolvedCache cache;
+  while (!stop.load() && ::getppid() == parent) {
+    // A read first: an idle worker takes no write lock.
+    const std::optional<SubmissionRecord> s =
+        store.pending_count() > 0 ? store.claim(name, now_ms(), claim_lease(options))
+                                  : std::nullopt;
+    if (!s) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(options.idle_ms));
+      continue;
+    }
+    if (s->claims > options.max_claims) {
+      store.record_grade(gave_up(*s, name), name);
+      continue;
+    }
+    // The grader's own limits bound its work; this bounds its time: SIGALRM ends the process,
+    // the pool starts another, and the claim runs out and counts against the submission.
+    ::alarm(static_cast<unsigned>(options.seconds));
+    const GradeRecord g = grade_submission(course, cache, *s, name, now_ms());
+    ::alarm(0);
+    store.record_grade(g, name);
+  }
+  return 0;
+}
+
+WorkerPool::WorkerPool(std::vector<std::string> argv_tail, int count)
+    : argv_tail_(std::move(argv_tail)), prefix_("w" + random_token(4)) {
+  for (int i = 0; i < count; ++i) pids_.push_back(spawn(i));
+  watcher_ = std::thread([this] { watch(); });
+}
+
+WorkerPool::~WorkerPool() {
+  stopping_ = true;
+  watcher_.join();
+  std::lock_guard lock(mutex_);
+  for (const pid_t pid : pids_)
+    if (pid > 0) ::kill(pid, SIGTERM);
+  for (const pid_t pid : pids_)
+    if (pid > 0) ::waitpid(pid, nullptr, 0);
+}
+
+pid_t WorkerPool::spawn(int index) {
+  std::vector<std::string> args{"/proc/self/exe"};
+  args.insert(args.end(), argv_tail_.begin(), argv_tail_.end());
+  args.push_back("--worker");
+  args.push_back(prefix_ + "-" + std::to_string(index));
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  if (::posix_spawn(&pid, "/proc/self/exe", nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  return pid;
+}
+
+void WorkerPool::watch() {
+  while (!stopping_.load()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::lock_guard lock(mutex_);
+    for (std::size_t i = 0; i < pids_.size(); ++i) {
+      if (pids_[i] > 0 && ::waitpid(pids_[i], nullptr, WNOHANG) == 0) continue;
+      if (stopping_.load()) break;
+      pids_[i] = spawn(static_cast<int>(i));
+      ++restarts_;
+    }
+  }
+}
+
+}  // namespace frustum::server

@@ -1,0 +1,429 @@
+// The student side of `frustum serve`, handler by handler, without sockets: links and sessions,
+// each student's own variant, previews that read but never judge, submissions committed before
+// they are acknowledged, grading with the named mistake and carried credit, the set's feedback
+// policy, and every refusal (another student's pages, CSRF, Origin, rate limits, escaping).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <thread>
+
+#include "server/clock.hpp"
+#include "server/given_tex.hpp"
+#include "server/grade_job.hpp"
+#include "server/phrases.hpp"
+#include "server/session.hpp"
+#include "server/student_app.hpp"
+#include "server/tokens.hpp"
+#include "solver/problem/serve_policy.hpp"
+#include "solver/problem/variants.hpp"
+
+namespace frustum::server {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+constexpr const char* kWeek1 = R"(title: "Depth"
+problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
+    ask: [normal, plane, z]
+)";
+
+// Every student their own triangle.
+constexpr const char* kVaried = R"(title: "Back faces"
+variants: per_student
+problems:
+  - id: bf
+    kind: backface
+    given: {points: [[1,0,0],[1,1,1],[0,1,2]], eye: [0,1,0]}
+    ask: [df, facing]
+)";
+
+// A problem with a figure.
+constexpr const char* kSort = R"(problems:
+  - id: sort
+    kind: depth_sort
+    given:
+      polygons:
+        - [[-2, -1, -6], [2, -1, -6], [2, 1, -6], [-2, 1, -6]]
+        - [[-1, -2, -8], [1, -2, -8], [1, 2, -4], [-1, 2, -4]]
+      eye: [0, 0, 0]
+)";
+
+constexpr Millis kNow = 1'800'000'000'000;
+
+class StudentPages : public ::testing::Test {
+ protected:
+  void SetUp() override { make_course({{"week1", kWeek1}, {"varied", kVaried}, {"sort", kSort}}); }
+
+  void make_course(const std::vector<std::pair<std::string, std::string>>& sets) {
+    dir_ = fs::temp_directory_path() /
+           ("frustum-serve-" + std::to_string(getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    for (const auto& [name, text] : sets) std::ofstream(dir_ / (name + ".yaml")) << text;
+    course_ = load_course(dir_.string(), {"alice", "bob"});
+    ASSERT_TRUE(course_.errors.empty()) << course_.errors.front().format();
+    store_ = open_store("sqlite:" + (dir_ / "serve.sqlite").string());
+    app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+    store_->put_student("alice", sha256_hex(kAlice));
+    store_->put_student("bob", sha256_hex(kBob));
+  }
+
+  Response get(const std::string& target, const std::string& cookie = "") {
+    Request r{"GET", target, {{"host", "127.0.0.1:8080"}}, "", "127.0.0.1"};
+    if (!cookie.empty())
+      r.headers.emplace_back("cookie", std::string(kSessionCookie) + "=" + cookie);
+    return handle_student(*app_, r, kNow);
+  }
+  Response post(const std::string& target, const std::string& cookie, const std::string& body,
+                const std::string& origin = "http://127.0.0.1:8080", Millis now = kNow) {
+    Request r{"POST", target, {{"host", "127.0.0.1:8080"}}, body, "127.0.0.1"};
+    r.headers.emplace_back("cookie", std::string(kSessionCookie) + "=" + cookie);
+    if (!origin.empty()) r.headers.emplace_back("origin", origin);
+    return handle_student(*app_, r, now);
+  }
+  // Signs in with the link's token; returns the session cookie's value.
+  std::string sign_in(const std::string& token) {
+    const Response r = get("/start?token=" + token);
+    EXPECT_EQ(r.status, 303);
+    const std::string cookie = r.header("Set-Cookie").value_or("");
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(cookie, m, std::regex("frustum_session=([0-9a-f]{32})")));
+    return m[1].str();
+  }
+  std::string csrf_of(const std::string& page) {
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(page, m, std::regex("name=\"csrf\" content=\"([0-9a-f]+)\"")));
+    return m[1].str();
+  }
+  void grade_pending() {
+    SolvedCache cache;
+    while (const auto s = store_->claim("test", kNow, 60000))
+      ASSERT_TRUE(store_->record_grade(grade_submission(course_, cache, *s, "test", kNow), "test"));
+  }
+
+  static constexpr const char* kAlice = "0123456789abcdef0123456789abcdef";
+  static constexpr const char* kBob = "fedcba9876543210fedcba9876543210";
+  fs::path dir_;
+  AppConfig config_;
+  Course course_;
+  std::unique_ptr<Store> store_;
+  std::unique_ptr<StudentApp> app_;
+};
+
+TEST_F(StudentPages, TheLinkBecomesAStrictCookieAndLeavesTheUrl) {
+  const Response r = get(std::string("/start?token=") + kAlice);
+  EXPECT_EQ(r.status, 303);
+  EXPECT_EQ(r.header("Location"), "/");
+  const std::string cookie = r.header("Set-Cookie").value_or("");
+  EXPECT_NE(cookie.find("HttpOnly"), std::string::npos);
+  EXPECT_NE(cookie.find("SameSite=Strict"), std::string::npos);
+  EXPECT_EQ(cookie.find("Secure"), std::string::npos);
+  EXPECT_EQ(cookie.find(kAlice), std::string::npos);  // the session is not the link's token
+  const std::string session = sign_in(kAlice);
+  EXPECT_EQ(get("/", session).status, 200);
+  EXPECT_NE(get("/", session).body.find("/set/week1"), std::string::npos);
+}
+
+TEST_F(StudentPages, SecureCookiesBehindTls) {
+  config_.secure_cookies = true;
+  app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+  EXPECT_NE(get(std::string("/start?token=") + kAlice).header("Set-Cookie")->find("; Secure"),
+            std::string::npos);
+}
+
+TEST_F(StudentPages, UnknownOrRotatedLinksAndNoSessionAreRefused) {
+  EXPECT_EQ(get("/start?token=00000000000000000000000000000000").status, 404);
+  EXPECT_EQ(get("/start?token=short").status, 404);
+  store_->put_student("alice", sha256_hex("11111111111111111111111111111111"));  // rotated
+  EXPECT_EQ(get(std::string("/start?token=") + kAlice).status, 404);
+  EXPECT_EQ(get("/set/week1").status, 403);
+  EXPECT_EQ(get("/set/week1", "0123456789abcdef0123456789abcdef").status, 403);
+  EXPECT_NE(get("/").body.find(say(Say::SignInFirst, Lang::En)), std::string::npos);
+}
+
+TEST_F(StudentPages, EachStudentSeesTheVariantThatGenerateDraws) {
+  const std::string alice = sign_in(kAlice), bob = sign_in(kBob);
+  const std::vector<ProblemSet> drawn =
+      variants_for_class(course_.find("varied")->set, {"alice", "bob"}, false);
+  const auto points = [](const ProblemSet& v) {
+    return given_plain(v.problems[0].given_node["points"]);
+  };
+  const std::string a = get("/set/varied", alice).body, b = get("/set/varied", bob).body;
+  EXPECT_NE(a.find(points(drawn[0])), std::string::npos) << points(drawn[0]);
+  EXPECT_NE(b.find(points(drawn[1])), std::string::npos) << points(drawn[1]);
+  EXPECT_EQ(a.find(points(drawn[1])), std::string::npos);
+  EXPECT_EQ(course_.find("varied")->variant_id("alice"), "student:alice");
+}
+
+TEST_F(StudentPages, ThePreviewReadsButNeverJudges) {
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  const auto preview = [&](const std::string& answer, const std::string& text) {
+    const Response r = post(
+        "/api/preview", alice,
+        "csrf=" + csrf + "&set=week1&problem=zbuf&answer=" + answer + "&text=" + url_encode(text));
+    EXPECT_EQ(r.status, 200);
+    return Json::parse(r.body);
+  };
+  const Json right = preview("plane", "x + y - z = -6");
+  const Json wrong = preview("plane", "x + y - z = 6");
+  EXPECT_TRUE(right["ok"]);
+  EXPECT_EQ(right["tex"], "\\left(1, 1, -1, -6\\right)");
+  EXPECT_EQ(wrong["tex"], "\\left(1, 1, -1, 6\\right)");
+  std::vector<std::string> right_keys, wrong_keys;
+  for (const auto& [k, v] : right.items()) right_keys.push_back(k);
+  for (const auto& [k, v] : wrong.items()) wrong_keys.push_back(k);
+  EXPECT_EQ(right_keys, wrong_keys);  // nothing says which is right
+  const Json junk = preview("z", "8++");
+  EXPECT_FALSE(junk["ok"]);
+  EXPECT_NE(junk["error"].get<std::string>().find("8++"), std::string::npos);
+  EXPECT_EQ(
+      post("/api/preview", alice, "csrf=" + csrf + "&set=week1&problem=zbuf&answer=secret&text=1")
+          .status,
+      404);
+}
+
+// Handlers run on many threads and GiNaC is not thread-safe: previews (exact numbers) from
+// several threads at once must neither crash nor disagree.
+TEST_F(StudentPages, PreviewsFromManyThreadsAtOnce) {
+  config_.preview_burst = 1e9;
+  app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  const auto preview = [&](int n) {
+    return post("/api/preview", alice,
+                "csrf=" + csrf + "&set=week1&problem=zbuf&answer=plane&text=" +
+                    url_encode("x/3 + y - z = " + std::to_string(n) + "/7"))
+        .body;
+  };
+  constexpr int kThreads = 6, kEach = 150;
+  std::vector<std::string> alone;
+  for (int n = 0; n < kThreads * kEach; ++n) alone.push_back(preview(n));
+  EXPECT_NE(alone[1].find("\\frac{1}{7}"), std::string::npos) << alone[1];
+  std::atomic<int> same{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int i = 0; i < kEach; ++i) same += preview(t * kEach + i) == alone[t * kEach + i];
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(same.load(), kThreads * kEach);
+}
+
+TEST_F(StudentPages, PostsNeedTheSessionsCsrfTokenAndThisOrigin) {
+  const std::string alice = sign_in(kAlice), bob = sign_in(kBob);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  const std::string bob_csrf = csrf_of(get("/set/week1", bob).body);
+  const std::string body = "problem=zbuf&a.z=8&csrf=";
+  EXPECT_EQ(post("/set/week1/submit", alice, body).status, 403);
+  EXPECT_EQ(post("/set/week1/submit", alice, body + bob_csrf).status, 403);
+  EXPECT_EQ(post("/set/week1/submit", alice, body + csrf, "http://evil.example").status, 403);
+  EXPECT_TRUE(store_->submissions("alice", "week1").empty());
+  EXPECT_EQ(post("/set/week1/submit", alice, body + csrf).status, 303);
+  EXPECT_EQ(store_->submissions("alice", "week1").size(), 1u);
+}
+
+TEST_F(StudentPages, ASubmissionIsStoredBeforeItIsAcknowledged) {
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  const Response r = post("/set/week1/submit", alice,
+                          "csrf=" + csrf + "&problem=zbuf&a.plane=" + url_encode("x + y - z = 6") +
+                              "&a.z=-4&a.normal=");
+  EXPECT_EQ(r.status, 303);
+  EXPECT_EQ(r.header("Location"), "/set/week1#p-zbuf");
+  const auto mine = store_->submissions("alice", "week1");
+  ASSERT_EQ(mine.size(), 1u);
+  EXPECT_EQ(Json::parse(mine[0].answers), (Json{{"plane", "x + y - z = 6"}, {"z", "-4"}}));
+  EXPECT_EQ(mine[0].set_version, course_.find("week1")->version);
+  EXPECT_EQ(mine[0].set_version.size(), 64u);
+  EXPECT_EQ(mine[0].received, kNow);
+  // Pending until a worker grades it: the page says so and refreshes itself.
+  const std::string pending = get("/set/week1", alice).body;
+  EXPECT_NE(pending.find("data-state=\"pending\""), std::string::npos);
+  EXPECT_NE(pending.find("http-equiv=\"refresh\""), std::string::npos);
+  // The answers stay in the inputs.
+  EXPECT_NE(pending.find("value=\"x + y - z = 6\""), std::string::npos);
+}
+
+TEST_F(StudentPages, GradedFeedbackNamesTheMistakeAndTheCarriedCredit) {
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  post("/set/week1/submit", alice,
+       "csrf=" + csrf + "&problem=zbuf&a.normal=" + url_encode("(1, 1, -1)") +
+           "&a.plane=" + url_encode("x + y - z = 6") + "&a.z=-4");
+  grade_pending();
+  const auto s = store_->submissions("alice", "week1").at(0);
+  const Json result = Json::parse(store_->latest_grade(s.id)->result);
+  const Json& plane = result["answers"][1];
+  const Json& z = result["answers"][2];
+  EXPECT_EQ(plane["verdict"], "incorrect");
+  EXPECT_EQ(plane["mistake"], "constant on the wrong side");
+  EXPECT_EQ(z["verdict"], "partial");
+  EXPECT_TRUE(z["carried_forward"]);
+  EXPECT_EQ(z["carried_from"][0]["name"], "plane");
+  EXPECT_EQ(z["carried_from"][0]["text"], "x + y - z = 6");
+  EXPECT_DOUBLE_EQ(store_->latest_grade(s.id)->score, 1.5);
+  const std::string page = get("/set/week1", alice).body;
+  EXPECT_NE(page.find("constant on the wrong side"), std::string::npos);
+  EXPECT_NE(page.find(say(Say::Carried, Lang::En)), std::string::npos);
+  EXPECT_NE(page.find("class=\"steps\""), std::string::npos);  // the derivation
+  EXPECT_NE(page.find("1.5 / 3"), std::string::npos);
+}
+
+TEST_F(StudentPages, NoStudentReachesAnothersPages) {
+  const std::string alice = sign_in(kAlice), bob = sign_in(kBob);
+  const std::string csrf = csrf_of(get("/set/week1", bob).body);
+  post("/set/week1/submit", bob, "csrf=" + csrf + "&problem=zbuf&a.z=8");
+  const std::int64_t bobs = store_->submissions("bob", "week1").at(0).id;
+  EXPECT_EQ(get("/set/week1/submission/" + std::to_string(bobs), bob).status, 200);
+  EXPECT_EQ(get("/set/week1/submission/" + std::to_string(bobs), alice).status, 404);
+  EXPECT_EQ(get("/set/varied/submission/" + std::to_string(bobs), bob).status, 404);
+  EXPECT_EQ(get("/set/nothere", alice).status, 404);
+  EXPECT_EQ(get("/set/week1/figure/nothere.svg", alice).status, 404);
+  EXPECT_EQ(get("/set/week1/figure/zbuf.svg", alice).status, 404);  // nothing to draw
+  // The figure shows the answers: only with the feedback, once a submission is graded.
+  EXPECT_EQ(get("/set/sort/figure/sort.svg", alice).status, 404);
+  EXPECT_EQ(get("/set/sort", alice).body.find("figure/sort.svg"), std::string::npos);
+  const std::string sort_csrf = csrf_of(get("/set/sort", alice).body);
+  post("/set/sort/submit", alice,
+       "csrf=" + sort_csrf + "&problem=sort&a.order=" + url_encode("1 0"));
+  grade_pending();
+  const Response figure = get("/set/sort/figure/sort.svg", alice);
+  EXPECT_EQ(figure.status, 200);
+  EXPECT_NE(figure.body.find("<svg"), std::string::npos);
+  EXPECT_EQ(figure.header("Content-Type"), "image/svg+xml");
+  EXPECT_NE(get("/set/sort", alice).body.find("figure/sort.svg"), std::string::npos);
+  EXPECT_EQ(get("/set/sort/figure/sort.svg", bob).status, 404);  // bob has submitted nothing
+}
+
+TEST_F(StudentPages, PreviewsAndSubmissionsAreRateLimitedPerSession) {
+  const std::string alice = sign_in(kAlice), bob = sign_in(kBob);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  const std::string body = "csrf=" + csrf + "&set=week1&problem=zbuf&answer=z&text=8";
+  int refused = 0;
+  for (int i = 0; i < 40; ++i) {
+    const Response r = post("/api/preview", alice, body);
+    if (r.status == 429) {
+      ++refused;
+      EXPECT_EQ(r.header("Retry-After"), "1");
+    }
+  }
+  EXPECT_EQ(refused, 40 - static_cast<int>(config_.preview_burst));
+  // Another session is not slowed; the same one is served again a second later.
+  const std::string bob_csrf = csrf_of(get("/set/week1", bob).body);
+  EXPECT_EQ(
+      post("/api/preview", bob, "csrf=" + bob_csrf + "&set=week1&problem=zbuf&answer=z&text=8")
+          .status,
+      200);
+  EXPECT_EQ(post("/api/preview", alice, body, "http://127.0.0.1:8080", kNow + 1000).status, 200);
+}
+
+TEST_F(StudentPages, WhatAStudentTypesIsEscapedAndTheCspIsStrict) {
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  const std::string evil = "\"><script>alert(1)</script>";
+  EXPECT_EQ(post("/api/draft", alice,
+                 "csrf=" + csrf + "&set=week1&problem=zbuf&answer=z&text=" + url_encode(evil))
+                .status,
+            200);
+  const Response page = get("/set/week1", alice);
+  EXPECT_EQ(page.body.find("<script>alert"), std::string::npos);
+  EXPECT_NE(page.body.find("&quot;&gt;&lt;script&gt;alert(1)"), std::string::npos);
+  const std::string csp = page.header("Content-Security-Policy").value_or("");
+  EXPECT_NE(csp.find("script-src 'self';"), std::string::npos);
+  EXPECT_NE(csp.find("style-src-attr 'unsafe-inline'"), std::string::npos);
+  EXPECT_EQ(csp.find("script-src 'self' 'unsafe-inline'"), std::string::npos);
+  EXPECT_EQ(page.body.find("<script>"), std::string::npos);  // no inline script at all
+  EXPECT_EQ(page.body.find(" style=\""), std::string::npos);
+}
+
+TEST_F(StudentPages, DraftsAreKeptAndTheLastOneShows) {
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/week1", alice).body);
+  const std::string body = "csrf=" + csrf + "&set=week1&problem=zbuf&answer=z&text=";
+  post("/api/draft", alice, body + "7", "http://127.0.0.1:8080", kNow);
+  post("/api/draft", alice, body + "8", "http://127.0.0.1:8080", kNow + 10);
+  EXPECT_NE(get("/set/week1", alice).body.find("name=\"a.z\" value=\"8\""), std::string::npos);
+  EXPECT_EQ(get("/set/week1", sign_in(kBob)).body.find("name=\"a.z\" value=\"8\""),
+            std::string::npos);
+}
+
+TEST_F(StudentPages, ThePolicyLimitsAttemptsDeadlineAndFeedback) {
+  make_course({{"strict", std::string("attempts: 1\nfeedback: never\n") + kWeek1},
+               {"late", std::string("deadline: 2020-01-01T00:00:00+09:00\n") + kWeek1}});
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/strict", alice).body);
+  EXPECT_EQ(post("/set/strict/submit", alice, "csrf=" + csrf + "&problem=zbuf&a.z=6").status, 303);
+  EXPECT_EQ(post("/set/strict/submit", alice, "csrf=" + csrf + "&problem=zbuf&a.z=8").status, 403);
+  grade_pending();
+  const std::string page = get("/set/strict", alice).body;
+  EXPECT_NE(page.find(say(Say::FeedbackLater, Lang::En)), std::string::npos);
+  EXPECT_EQ(page.find("verdict-incorrect"), std::string::npos);
+  EXPECT_NE(page.find(say(Say::NoAttemptsLeft, Lang::En)), std::string::npos);
+  EXPECT_EQ(post("/set/late/submit", alice, "csrf=" + csrf + "&problem=zbuf&a.z=8").status, 403);
+  EXPECT_EQ(store_->submissions("alice", "late").size(), 0u);
+}
+
+TEST_F(StudentPages, StaticFilesComeFromTheBinary) {
+  const Response js = get("/static/page.js");
+  EXPECT_EQ(js.status, 200);
+  EXPECT_EQ(js.header("Content-Type"), "text/javascript; charset=utf-8");
+  EXPECT_NE(js.body.find("trust: false"), std::string::npos);
+  EXPECT_NE(js.body.find("strict: 'error'"), std::string::npos);
+  const Response katex = get("/static/katex/katex.min.js");
+  EXPECT_EQ(katex.status, 200);
+  EXPECT_GT(katex.body.size(), 100000u);
+  EXPECT_EQ(get("/static/../../etc/passwd").status, 404);
+}
+
+TEST(ServePolicy, DatesNeedAnOffset) {
+  EXPECT_EQ(parse_iso8601("1970-01-01T00:00:00Z"), 0);
+  EXPECT_EQ(parse_iso8601("1970-01-01T09:00+09:00"), 0);
+  EXPECT_EQ(parse_iso8601("2026-12-10T23:59:00+09:00"), 1796914740000);
+  EXPECT_FALSE(parse_iso8601("2026-12-10T23:59:00"));
+  EXPECT_FALSE(parse_iso8601("2026-13-10T23:59:00Z"));
+  EXPECT_FALSE(parse_iso8601("tomorrow"));
+}
+
+TEST(ServePolicy, BadKeysAreLocatedErrors) {
+  const ProblemSet bad = load_problem_set_from_string(
+      std::string("deadline: 2026-12-10 23:59\n") + kWeek1, "bad.yaml");
+  ASSERT_EQ(bad.errors.size(), 1u);
+  EXPECT_EQ(bad.errors[0].field, "deadline");
+  EXPECT_EQ(bad.errors[0].where.line, 1);
+  const ProblemSet worse = load_problem_set_from_string(
+      std::string("feedback: {after: lunch}\n") + kWeek1, "worse.yaml");
+  ASSERT_EQ(worse.errors.size(), 1u);
+  EXPECT_EQ(worse.errors[0].field, "feedback.after");
+  const ProblemSet zero =
+      load_problem_set_from_string(std::string("attempts: 0\n") + kWeek1, "zero.yaml");
+  ASSERT_EQ(zero.errors.size(), 1u);
+  EXPECT_EQ(zero.errors[0].field, "attempts");
+  ServePolicy p = read_serve_policy(YAML::Load("feedback: {attempts: 2}"), "x");
+  EXPECT_FALSE(p.feedback_shown(1, 0));
+  EXPECT_TRUE(p.feedback_shown(2, 0));
+}
+
+TEST(ServePhrases, EveryPhraseHasJapaneseAndRussianWithoutEnglish) {
+  for (std::size_t i = 0; i < static_cast<std::size_t>(Say::Count); ++i) {
+    const Say key = static_cast<Say>(i);
+    const std::string en = say(key, Lang::En), ja = say(key, Lang::Ja), ru = say(key, Lang::Ru);
+    EXPECT_FALSE(en.empty()) << i;
+    EXPECT_NE(ja, en) << en;
+    EXPECT_NE(ru, en) << en;
+    EXPECT_FALSE(std::regex_search(ja, std::regex("[A-Za-z]{2,}"))) << ja;
+    EXPECT_FALSE(std::regex_search(ru, std::regex("[A-Za-z]{2,}"))) << ru;
+  }
+}
+
+}  // namespace
+}  // namespace frustum::server
