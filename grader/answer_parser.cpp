@@ -151,7 +151,88 @@ std::vector<std::string> split_rows(std::string s) {
   return rows;
 }
 
+// "(1/√21)(−2, 1, 4)", "1/sqrt(21)*(-2, 1, 4)", "(-2, 1, 4)/sqrt(21)", "−(1, 2, 3)": one tuple
+// (a bracket group holding commas) with a factor before it, or "/ FACTOR" or "* FACTOR" after
+// it, read as the tuple's components times the factor, exactly and within the answer's work
+// budget. Nothing when the text is not of this form (a plain list is read as before).
+std::optional<Numbers> read_scaled_tuple(const std::string& text, WorkBudget& budget) {
+  const std::string s = trimmed(text);
+  // The top-level bracket groups; exactly one of them must hold a comma.
+  std::size_t open = std::string::npos, close = std::string::npos;
+  int depth = 0, tuples = 0;
+  std::size_t start = 0;
+  bool comma = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == '(' || c == '[') {
+      if (depth++ == 0) {
+        start = i;
+        comma = false;
+      }
+    } else if (c == ')' || c == ']') {
+      if (--depth < 0) return std::nullopt;
+      if (depth == 0 && comma) {
+        ++tuples;
+        open = start;
+        close = i;
+      }
+    } else if (c == ',') {
+      if (depth == 0) return std::nullopt;  // a plain list "a, b, c"
+      if (depth == 1) comma = true;
+    }
+  }
+  if (depth != 0 || tuples != 1) return std::nullopt;
+  std::string before = trimmed(s.substr(0, open)), after = trimmed(s.substr(close + 1));
+  if (before.empty() && after.empty()) return std::nullopt;
+  Numbers out;
+  Exact factor = 1;
+  const auto times = [&](std::string f, bool divide) {
+    f = trimmed(f);
+    if (f.empty()) return false;
+    std::string error;
+    const Exact v = parse_one(f, error, budget);
+    if (!error.empty()) {
+      out.error = error;
+      return false;
+    }
+    if (divide && v.is_zero()) {
+      out.error = "cannot divide the vector by " + quote_excerpt(f) + ", which is 0";
+      return false;
+    }
+    factor = divide ? factor / v : factor * v;
+    return true;
+  };
+  for (const char* op : {"*", "·", "⋅"})
+    if (before.size() > std::string(op).size() &&
+        before.compare(before.size() - std::string(op).size(), std::string::npos, op) == 0) {
+      before = trimmed(before.substr(0, before.size() - std::string(op).size()));
+      break;
+    }
+  if (before == "-" || before == "−")
+    factor = -1;
+  else if (!before.empty() && !times(before, false))
+    return out.error.empty() ? std::nullopt : std::optional<Numbers>(out);
+  if (!after.empty()) {
+    const bool divide = after[0] == '/';
+    std::size_t op = after[0] == '/' || after[0] == '*' ? 1 : 0;
+    if (op == 0)
+      for (const char* mul : {"·", "⋅"})
+        if (after.compare(0, std::string(mul).size(), mul) == 0) op = std::string(mul).size();
+    if (op == 0) return std::nullopt;
+    if (!times(after.substr(op), divide))
+      return out.error.empty() ? std::nullopt : std::optional<Numbers>(out);
+  }
+  for (const std::string& item : split_top(s.substr(open + 1, close - open - 1))) {
+    const Exact v = parse_one(item, out.error, budget);
+    if (!out.error.empty()) return out;
+    out.values.push_back(canonical(v * factor, budget));
+  }
+  return out;
+}
+
 Numbers read_numbers(const YAML::Node& n, WorkBudget& budget) {
+  if (n.IsScalar())
+    if (std::optional<Numbers> scaled = read_scaled_tuple(n.Scalar(), budget)) return *scaled;
   Numbers out;
   std::vector<std::string> items;
   if (n.IsSequence()) {
@@ -264,15 +345,20 @@ namespace {
 
 // Appends the node's text until `out` is longer than `limit` (aliases can make a small file
 // expand to a huge tree, so the walk stops early instead of visiting it all).
-void append_raw(const YAML::Node& node, std::string& out, std::size_t limit) {
+// A text inside a list (a row written "1/2, 0, 0, 0") keeps its quotes when it holds a
+// separator: shown bare, ["1/2, 0", "0, 1"] would read as one flat list of four numbers.
+void append_raw(const YAML::Node& node, std::string& out, std::size_t limit, bool nested = false) {
   if (out.size() > limit) return;
   if (node.IsScalar()) {
-    out += node.Scalar();
+    const std::string& text = node.Scalar();
+    const bool quote =
+        nested && node.Tag() == "!" && text.find_first_of(",;[]{}") != std::string::npos;
+    out += quote ? "\"" + text + "\"" : text;
   } else if (node.IsSequence()) {
     out += "[";
     for (std::size_t i = 0; i < node.size() && out.size() <= limit; ++i) {
       if (i) out += ", ";
-      append_raw(node[i], out, limit);
+      append_raw(node[i], out, limit, true);
     }
     out += "]";
   } else if (node.IsMap()) {
@@ -280,9 +366,9 @@ void append_raw(const YAML::Node& node, std::string& out, std::size_t limit) {
     bool first = true;
     for (auto it = node.begin(); it != node.end() && out.size() <= limit; ++it) {
       if (!first) out += ", ";
-      append_raw(it->first, out, limit);
+      append_raw(it->first, out, limit, true);
       out += ": ";
-      append_raw(it->second, out, limit);
+      append_raw(it->second, out, limit, true);
       first = false;
     }
     out += "}";
@@ -302,13 +388,42 @@ namespace {
 ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, AngleUnit angles,
                                 ParsedAnswer p, WorkBudget& budget);
 
-// What follows "NAME =" when a text answer starts with the answer's own name and holds one '='.
+// A name as compared: without case, spaces, `_`, braces and backslashes, Unicode subscripts,
+// primes and superscripts spelled in ASCII (D_f, Df, D_{f}; M⁻¹, M^-1, M^{-1}; P′, P').
+std::string symbol_key(const std::string& written) {
+  static const std::pair<std::string_view, std::string_view> kSpellings[] = {
+      {"₀", "0"}, {"₁", "1"}, {"₂", "2"}, {"₃", "3"}, {"₄", "4"},    {"₅", "5"}, {"₆", "6"},
+      {"₇", "7"}, {"₈", "8"}, {"₉", "9"}, {"′", "'"}, {"⁻¹", "^-1"}, {"⋅", "·"}, {"−", "-"}};
+  std::string out;
+  for (std::size_t i = 0; i < written.size();) {
+    bool spelled = false;
+    for (const auto& [from, to] : kSpellings)
+      if (written.compare(i, from.size(), from) == 0) {
+        out += to;
+        i += from.size();
+        spelled = true;
+        break;
+      }
+    if (spelled) continue;
+    const char c = written[i++];
+    if (c != ' ' && c != '\t' && c != '_' && c != '{' && c != '}' && c != '\\') out += c;
+  }
+  return ascii_lower(out);
+}
+
+// What follows "NAME =" when a text answer starts with the answer's name, or a symbol the
+// derivation uses for it (AnswerSpec::symbols: "D_f = 27", "s = −415.7"), and holds one '='.
 std::optional<std::string> value_after_own_name(const YAML::Node& node, const AnswerSpec& spec) {
   if (!node.IsScalar() || spec.kind == AnswerKind::Plane) return std::nullopt;
   const std::string& text = node.Scalar();
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos || text.find('=', eq + 1) != std::string::npos) return std::nullopt;
-  if (trim_lower(text.substr(0, eq)) != trim_lower(spec.name)) return std::nullopt;
+  const std::string left = symbol_key(text.substr(0, eq));
+  if (left.empty() ||
+      (left != symbol_key(spec.name) &&
+       std::none_of(spec.symbols.begin(), spec.symbols.end(),
+                    [&](const std::string& sym) { return symbol_key(sym) == left; })))
+    return std::nullopt;
   const std::string rest = trimmed(text.substr(eq + 1));
   if (rest.empty()) return std::nullopt;
   return rest;
@@ -382,9 +497,10 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
       break;
     }
     case AnswerKind::Plane: {
-      const Numbers n = node.IsScalar() && node.Scalar().find('=') != std::string::npos
-                            ? read_plane_equation(node.Scalar(), budget)
-                            : read_numbers(node, budget);
+      const bool equation = node.IsScalar() && node.Scalar().find('=') != std::string::npos;
+      p.form = equation ? "equation" : "list";
+      const Numbers n =
+          equation ? read_plane_equation(node.Scalar(), budget) : read_numbers(node, budget);
       if (!n.error.empty()) {
         p.error = n.error;
         return p;

@@ -17,6 +17,7 @@ struct ParsedAnswer {
   std::string error;  // why it could not be read
   std::string raw;    // the answer as the student wrote it (for reports)
   std::string note;   // how it was read, when not exactly (over its work budget)
+  std::string form;   // the form it was written in, where a kind has several ("equation", "list")
   Value value;
 };
 

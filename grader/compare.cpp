@@ -380,8 +380,7 @@ Comparison compare_components(const Value& expected, const Value& got, const Ans
           fmt::format("the direction is right but the length is {} — a unit vector has length 1 "
                       "(divide by the length)",
                       format_approx(std::abs(k))));
-    if (m == Multiple::Negative)
-      return incorrect("it points the opposite way: check the order of the cross product");
+    if (m == Multiple::Negative) return incorrect("it points the opposite way");
   }
   if (auto c = trivial_match(expected, got, judge, r)) return *c;
   if (r.partial &&
@@ -441,35 +440,64 @@ Value keys_read(const Value& got, const Value& expected, const AnswerRules& r) {
 }
 
 // Word maps (faces, edges): credit per entry, corrected for the best constant answer ("every
-// face front"), which shows no work.
-Comparison compare_word_map(const Value& expected, const Value& got) {
-  // Each entry of the key counts once, however often the student wrote it.
-  std::size_t right = 0;
-  for (const auto& entry : expected.entries)  // (clang 14 cannot capture a structured binding)
-    right += std::any_of(got.entries.begin(), got.entries.end(),
-                         [&](const auto& e) { return e == entry; });
+// face front"), which shows no work. An entry of the key is right when the student wrote it and
+// every copy of it says its word: written twice with the same word it counts once, with two
+// words neither is chosen. An entry the key does not have (a face or an edge the problem does
+// not have) counts as a wrong one, so a wrong answer never earns full points.
+Comparison compare_word_map(const Value& expected, const Value& got, const AnswerRules& r) {
   const std::size_t n = expected.entries.size();
-  if (right == n && got.entries.size() == right) return correct("");
+  std::size_t right = 0, undecided = 0;
+  for (const auto& entry : expected.entries) {  // (clang 14 cannot capture a structured binding)
+    bool said = false, other = false;
+    for (const auto& e : got.entries)
+      if (e.first == entry.first) (e.second == entry.second ? said : other) = true;
+    right += said && !other;
+    undecided += said && other;
+  }
+  std::set<std::string> extra;
+  for (const auto& [k, w] : got.entries)
+    if (std::none_of(expected.entries.begin(), expected.entries.end(),
+                     [&](const auto& e) { return e.first == k; }))
+      extra.insert(k);
+  if (right == n && extra.empty())
+    return correct(got.entries.size() > n ? "an entry written twice with the same word counts once"
+                                          : "");
   std::size_t best_constant = 0;
+  std::string best_word;
   for (const auto& [k, w] : expected.entries) {
     std::size_t same = 0;
     for (const auto& [k2, w2] : expected.entries) same += w2 == w;
-    best_constant = std::max(best_constant, same);
+    if (same > best_constant) {
+      best_constant = same;
+      best_word = w;
+    }
   }
-  if (right > best_constant && n > best_constant)
-    return {
-        Verdict::Partial,
-        static_cast<double>(right - best_constant) / static_cast<double>(n - best_constant),
-        fmt::format("{} of {} entries right; answering \"{}\" everywhere would get {}, so the "
-                    "credit counts the "
-                    "entries beyond that",
-                    right, n, expected.entries.empty() ? "" : "the commonest word", best_constant),
-        {}};
+  // What else was counted, each a sentence of its own.
+  std::string notes;
+  if (undecided > 0)
+    notes += fmt::format(" {} {} written twice with different words: neither word counts as right.",
+                         undecided, undecided == 1 ? "entry is" : "entries are");
+  if (!extra.empty()) {
+    const bool one = extra.size() == 1, edges = r.spec->unordered_pairs;
+    notes += fmt::format(" {} {} the problem does not have; {} as a wrong entry.", extra.size(),
+                         one ? (edges ? "entry names an edge" : "entry names a face")
+                             : (edges ? "entries name edges" : "entries name faces"),
+                         one ? "it counts" : "each counts");
+  }
+  const std::size_t total = n + extra.size();
+  if (right > best_constant && total > best_constant)
+    return {Verdict::Partial,
+            static_cast<double>(right - best_constant) / static_cast<double>(total - best_constant),
+            fmt::format("{} of {} entries right; answering \"{}\" everywhere would get {}, so the "
+                        "credit counts the entries beyond that.",
+                        right, total, best_word, best_constant) +
+                notes,
+            {}};
+  if (right == 0) return incorrect(notes.empty() ? "" : notes.substr(1));
   return incorrect(
-      right > 0 ? fmt::format(
-                      "{} of {} entries right, no more than one word written everywhere would get",
-                      right, n)
-                : "");
+      fmt::format("{} of {} entries right, no more than one word written everywhere would get.",
+                  right, total) +
+      notes);
 }
 
 bool numeric_kind(AnswerKind kind) {
@@ -589,8 +617,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       const Multiple m = multiple_of(expected, got, r);
       if (m == Multiple::Positive)
         return correct("the same direction (a normal is right up to a positive factor)");
-      if (m == Multiple::Negative)
-        return incorrect("it points the opposite way: check the order of the cross product");
+      if (m == Multiple::Negative) return incorrect("it points the opposite way");
       // A vertex or another given copied as the normal.
       if (auto c = trivial_match(expected, got, judge_of(expected, r), r)) return *c;
       return incorrect("");
@@ -624,17 +651,27 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       std::sort(a.begin(), a.end());
       std::sort(b.begin(), b.end());
       if (a == b) return correct("the same set (order does not matter)");
-      // An item written twice counts once: the rest is "that should not be there".
+      // An item written twice is right once; its second copy counts as one that should not be
+      // there (common / max(expected, given)).
       std::vector<std::string> both;
       std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
       const std::size_t common = both.size();
+      const std::size_t copies = b.size() - static_cast<std::size_t>(std::distance(
+                                                b.begin(), std::unique(b.begin(), b.end())));
+      const std::string counted =
+          copies == 0 ? fmt::format("{} of the {} expected items, and {} that should not be there",
+                                    common, a.size(), b.size() - common)
+                      : fmt::format(
+                            "{} of the {} expected items, and {} that should not be there, {} of "
+                            "them a second copy of an item (an item written twice is right "
+                            "once; the copy counts as one that should not be there)",
+                            common, a.size(), b.size() - common, copies);
       if (common > 0 && !a.empty())
         return {Verdict::Partial,
                 static_cast<double>(common) / static_cast<double>(std::max(a.size(), b.size())),
-                fmt::format("{} of the {} expected items, and {} that should not be there", common,
-                            a.size(), b.size() - common),
+                counted,
                 {}};
-      return incorrect("");
+      return incorrect(copies == 0 ? "" : counted);
     }
     case AnswerKind::Sequence: {
       const std::vector<std::string> items = items_read(got, expected, r);
@@ -648,7 +685,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       return incorrect(sa == sb ? "the right items in the wrong order" : "");
     }
     case AnswerKind::WordMap:
-      return compare_word_map(expected, keys_read(got, expected, r));
+      return compare_word_map(expected, keys_read(got, expected, r), r);
     case AnswerKind::Statements:
       return compare_statement_choice(expected, got);
     case AnswerKind::Polygon: {

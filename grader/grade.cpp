@@ -160,7 +160,8 @@ class ProblemGrader {
     if (ag.got && ag.verdict != Verdict::Correct) {
       if (whole_trivial_ || all_zero_vector(*ag.got)) {
         trivial_.push_back(name);
-        whole_.push_back(name);
+        whole_.emplace_back(
+            name, whole_trivial_ && !ag.misconception.empty() ? ag.misconception : "zero vector");
       } else if (!ag.carried_forward && !trivial_inputs(name).empty()) {
         trivial_.push_back(name);
       }
@@ -199,7 +200,15 @@ class ProblemGrader {
 
   void judge(AnswerGrade& ag) {
     const std::string& name = ag.name;
-    const Comparison c = compare(ag.expected, *ag.got, rules(name, true));
+    Comparison c = compare(ag.expected, *ag.got, rules(name, true));
+    // Another choice the method leaves open (the view vector from another vertex): right too.
+    if (c.verdict != Verdict::Correct)
+      for (const AlsoRight& a : judging_.also_right)
+        if (a.answer == name &&
+            compare(a.value, *ag.got, rules(name, false)).verdict == Verdict::Correct) {
+          c = Comparison{Verdict::Correct, 1.0, a.why, {}};
+          break;
+        }
     ag.verdict = c.verdict;
     ag.score = c.credit * ag.max_score;
     ag.feedback = c.feedback;
@@ -238,7 +247,11 @@ class ProblemGrader {
     if (fits.size() == 1) {
       ag.misconception = fits[0]->name;
       ag.wrong_step = fits[0]->step;
-      ag.feedback = fits[0]->feedback + (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
+      // Said in the form the student wrote (an equation, not the list it would explain).
+      std::string said = fits[0]->feedback;
+      for (const auto& [form, feedback] : fits[0]->feedback_by_form)
+        if (form == form_of(ag.name)) said = feedback;
+      ag.feedback = said + (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
     } else if (fits.size() > 1) {
       std::vector<std::string> names;
       for (const Misconception* f : fits) names.push_back(f->name);
@@ -248,6 +261,14 @@ class ProblemGrader {
       ag.feedback = "This is what a " + list + " gives; your other answers do not show which." +
                     (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
     }
+  }
+
+  // The form the student wrote an answer in (ParsedAnswer::form).
+  const std::string& form_of(const std::string& name) const {
+    static const std::string none;
+    for (std::size_t i = 0; i < spec_.ask.size() && i < parsed_.size(); ++i)
+      if (spec_.ask[i] == name) return parsed_[i].form;
+    return none;
   }
 
   // Is the answer what the kind recomputes from these earlier answers of the student's?
@@ -270,20 +291,27 @@ class ProblemGrader {
          }))
       inputs.set(n, *answers_.find(n));
     if (!follows(ag, inputs)) return;
-    const bool derived = std::any_of(used.begin(), used.end(), [&](const std::string& n) {
-      return std::find(whole_.begin(), whole_.end(), n) == whole_.end();
-    });
-    const std::string why =
-        "It follows from your own " + name_list(used) +
-        (derived ? ", which is computed from an answer that takes no work: nothing is carried "
-                   "forward from it."
-                 : ", which takes no work (zero, or copied from the given): nothing is carried "
-                   "forward from it.");
-    // A sentence of its own, so that each is translated whole.
-    if (ag.feedback.empty())
-      ag.feedback = why;
-    else
-      ag.feedback += (ag.feedback.back() == '.' ? " " : ". ") + why;
+    // One sentence per input, saying what it is (a copy of the given, the zero vector…): never
+    // a mistake the student did not make. Each is translated whole.
+    for (const std::string& n : used) {
+      const auto whole =
+          std::find_if(whole_.begin(), whole_.end(), [&](const auto& w) { return w.first == n; });
+      const std::string what = whole == whole_.end() ? "" : whole->second;
+      const std::string why =
+          whole == whole_.end()
+              ? "It follows from your own " + n +
+                    ", which is computed from an answer that takes no work: nothing is carried "
+                    "forward from it."
+          : what == "copied from the given"
+              ? "It follows from your own " + n +
+                    ", which is copied from the given: nothing is carried forward from it."
+              : "It follows from your own " + n + ", which is the " + what +
+                    " and takes no work: nothing is carried forward from it.";
+      if (ag.feedback.empty())
+        ag.feedback = why;
+      else
+        ag.feedback += (ag.feedback.back() == '.' ? " " : ". ") + why;
+    }
   }
 
   // Error carried forward: right from the student's own earlier answers. When every earlier
@@ -331,8 +359,9 @@ class ProblemGrader {
   Answers answers_;                                        // the parsed ones, by name
   std::vector<std::pair<std::string, Verdict>> verdicts_;  // graded so far
   std::vector<std::string> trivial_;  // trivial answers, and wrong ones computed from them
-  std::vector<std::string> whole_;    // those of them that are trivial answers themselves
-  bool whole_trivial_ = false;        // the answer being judged is a trivial answer as a whole
+  // Those of them that are trivial answers themselves, with what each is ("zero vector").
+  std::vector<std::pair<std::string, std::string>> whole_;
+  bool whole_trivial_ = false;  // the answer being judged is a trivial answer as a whole
 };
 
 ProblemGrade grade_problem(const ProblemSpec& spec, const ProblemResult& solved,
@@ -404,6 +433,13 @@ ProblemJudging prepare_judging(const ProblemSpec& spec, const Answers& key) {
       j.scales = spec.info->scales(spec.given, key);
     } catch (const std::exception&) {
       j.scales.clear();  // the defaults judge every answer
+    }
+  }
+  if (spec.info->also_right) {
+    try {
+      j.also_right = spec.info->also_right(spec.given);
+    } catch (const std::exception&) {
+      j.also_right.clear();  // the key alone is right
     }
   }
   std::optional<std::vector<GivenList>> given;

@@ -66,6 +66,7 @@ struct GradeReport {
 struct ProblemJudging {
   AnswerScales scales;
   std::vector<std::pair<std::string, std::vector<TrivialAnswer>>> trivial;
+  std::vector<AlsoRight> also_right;  // answers as right as the key's (KindInfo::also_right)
   AnswerRules rules(const ProblemSpec& spec, const std::string& name) const;
 };
 ProblemJudging prepare_judging(const ProblemSpec& spec, const Answers& key);

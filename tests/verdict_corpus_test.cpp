@@ -108,6 +108,22 @@ TEST(VerdictCorpus, EveryCaseGetsTheInstructorsVerdict) {
           EXPECT_EQ(a->misconception, it->second.as<std::string>())
               << at << ": " << a->name << " (" << reason << ")";
         }
+        // What the feedback says (a phrase it holds, one it must not hold: a form or a mistake
+        // the student did not write), and the answer as shown (in the student's own form).
+        for (const char* field : {"says", "never_says", "shown"})
+          for (auto it = c[field].begin(); c[field] && it != c[field].end(); ++it) {
+            const AnswerGrade* a = graded(it->first.as<std::string>());
+            ASSERT_NE(a, nullptr) << at;
+            const std::string text = it->second.as<std::string>();
+            const std::string& in = std::string(field) == "shown" ? a->got_text : a->feedback;
+            if (std::string(field) == "shown") {
+              EXPECT_EQ(in, text) << at << ": " << a->name << " (" << reason << ")";
+            } else {
+              EXPECT_EQ(in.find(text) != std::string::npos, std::string(field) == "says")
+                  << at << ": " << a->name << " " << field << " '" << text << "' (" << reason
+                  << "); feedback: " << in;
+            }
+          }
         for (const YAML::Node& n : c["carried"]) {
           const AnswerGrade* a = graded(n.as<std::string>());
           ASSERT_NE(a, nullptr) << at;

@@ -53,9 +53,7 @@ constexpr Phrase kPhrases[] = {
     {"the same direction (a normal is right up to a positive factor)",
      "同じ向き (法線は正の定数倍を除いて正しい)",
      "то же направление (нормаль верна с точностью до положительного множителя)"},
-    {"it points the opposite way: check the order of the cross product",
-     "向きが逆です. 外積の順序を確かめてください",
-     "направлена в противоположную сторону: проверьте порядок векторного произведения"},
+    {"it points the opposite way", "向きが逆です", "направлена в противоположную сторону"},
     {"the direction is right but the length is {0} — a unit vector has length 1 (divide by the "
      "length)",
      "向きは正しいが長さが {0} です — 単位ベクトルの長さは 1 (長さで割る)",
@@ -146,31 +144,77 @@ constexpr Phrase kPhrases[] = {
      "数えた {4} 個のうち {3} 個",
      "верно {0} из {1} компонент, требующих вычисления, и {2} из не требующих вычисления неверны: "
      "засчитано {3} из {4}"},
+    {"{0} of the {1} expected items, and {2} that should not be there, {3} of them a second copy "
+     "of an item (an item written twice is right once; the copy counts as one that should not be "
+     "there)",
+     "期待される {1} 個のうち {0} 個, および余分なもの {2} 個 (うち {3} 個は同じ項目の二度目: "
+     "二度書いた項目は一度だけ正解とし, 二度目は余分なものと数える)",
+     "{0} из {1} ожидаемых элементов и {2} лишних, из них {3} — повтор элемента (элемент, "
+     "записанный дважды, верен один раз; повтор считается лишним)"},
     {"{0} of the {1} expected items, and {2} that should not be there",
      "期待される {1} 個のうち {0} 個, および余分なもの {2} 個",
      "{0} из {1} ожидаемых элементов и {2} лишних"},
-    {"{0} of {1} entries right, no more than one word written everywhere would get",
-     "{1} 個中 {0} 個が正しいが, どこにも同じ一語を書いた場合を超えていない",
-     "верно {0} из {1}, не больше, чем дало бы одно слово, написанное везде"},
-    {"{0} of {1} entries right; answering \"the commonest word\" everywhere would get {2}, so the "
-     "credit counts the "
-     "entries beyond that",
-     "{1} 個中 {0} 個が正しい. どこにも「最も多い語」を答えると {2} 個になるので, "
-     "得点はそれを超えた分だけ数える",
-     "верно {0} из {1}; ответ «самым частым словом» везде дал бы {2}, поэтому засчитываются только "
-     "элементы сверх "
-     "этого"},
+    {"{0} of {1} entries right, no more than one word written everywhere would get.",
+     "{1} 個中 {0} 個が正しいが, どこにも同じ一語を書いた場合を超えていない.",
+     "верно {0} из {1}, не больше, чем дало бы одно слово, написанное везде."},
+    {"{0} of {1} entries right; answering \"{2}\" everywhere would get {3}, so the credit counts "
+     "the entries beyond that.",
+     "{1} 個中 {0} 個が正しい. どこにも「{2}」と答えると {3} 個になるので, "
+     "得点はそれを超えた分だけ数える.",
+     "верно {0} из {1}; ответ «{2}» везде дал бы {3}, поэтому засчитываются только элементы сверх "
+     "этого."},
+    {"{0} of {1} entries right, no more than one word written everywhere would get. {2}",
+     "{1} 個中 {0} 個が正しいが, どこにも同じ一語を書いた場合を超えていない. {2}",
+     "верно {0} из {1}, не больше, чем дало бы одно слово, написанное везде. {2}"},
+    {"{0} of {1} entries right; answering \"{2}\" everywhere would get {3}, so the credit counts "
+     "the entries beyond that. {4}",
+     "{1} 個中 {0} 個が正しい. どこにも「{2}」と答えると {3} 個になるので, "
+     "得点はそれを超えた分だけ数える. {4}",
+     "верно {0} из {1}; ответ «{2}» везде дал бы {3}, поэтому засчитываются только элементы сверх "
+     "этого. {4}"},
+    {"cannot divide the vector by {0}, which is 0", "ベクトルを {0} で割れません. それは 0 です",
+     "нельзя разделить вектор на {0}: это 0"},
+    {"{0} entry is written twice with different words: neither word counts as right.",
+     "{0} 個の項目が異なる語で二度書かれています. どちらの語も正解とは数えません.",
+     "{0} элемент записан дважды разными словами: ни одно из слов не засчитывается."},
+    {"{0} entries are written twice with different words: neither word counts as right.",
+     "{0} 個の項目が異なる語で二度書かれています. どちらの語も正解とは数えません.",
+     "Записано дважды разными словами элементов: {0}; ни одно из этих слов не засчитывается."},
+    {"{0} entry names a face the problem does not have; it counts as a wrong entry.",
+     "{0} 個の項目は問題にない面を指しています. 誤った項目として数えます.",
+     "{0} элемент называет грань, которой нет в задаче; он считается неверным."},
+    {"{0} entries name faces the problem does not have; each counts as a wrong entry.",
+     "{0} 個の項目は問題にない面を指しています. それぞれ誤った項目として数えます.",
+     "Элементов с гранями, которых нет в задаче: {0}; каждый считается неверным."},
+    {"{0} entry names an edge the problem does not have; it counts as a wrong entry.",
+     "{0} 個の項目は問題にない稜線を指しています. 誤った項目として数えます.",
+     "{0} элемент называет ребро, которого нет в задаче; он считается неверным."},
+    {"{0} entries name edges the problem does not have; each counts as a wrong entry.",
+     "{0} 個の項目は問題にない稜線を指しています. それぞれ誤った項目として数えます.",
+     "Элементов с рёбрами, которых нет в задаче: {0}; каждый считается неверным."},
+    {"the view vector from {0}: any vertex of the face gives the same D_f",
+     "{0} からの視線ベクトル: 面のどの頂点から取っても D_f は同じです",
+     "вектор взгляда от {0}: любая вершина грани даёт то же D_f"},
+    {"an entry written twice with the same word counts once",
+     "同じ語で二度書いた項目は一度と数える",
+     "элемент, записанный дважды одним словом, считается один раз"},
     {"wrong, but it follows correctly from your own earlier {0} (error carried forward: {1} of the "
      "points)",
      "誤りですが, あなた自身の前の解答から正しく導かれています (`{0}`; 誤りの持ち越し: 配点の {1})",
      "неверно, но правильно следует из вашего предыдущего ответа `{0}` (перенос ошибки: {1} "
      "баллов)"},
-    {"It follows from your own {0}, which takes no work (zero, or copied from the given): nothing "
-     "is carried forward from it.",
-     "あなた自身の `{0}` から導かれていますが, それは計算を要しない解答 (零, または与えられた値の"
-     "写し) なので, 誤りの持ち越しはありません.",
-     "Это следует из вашего `{0}`, но он не требует вычислений (ноль или копия данных задачи): "
-     "баллы с него не переносятся."},
+    {"It follows from your own {0}, which is copied from the given: nothing is carried forward "
+     "from it.",
+     "あなた自身の `{0}` から導かれていますが, それは与えられた値の写しなので, "
+     "誤りの持ち越しはありません.",
+     "Это следует из вашего `{0}`, но он скопирован из данных задачи: баллы с него не "
+     "переносятся."},
+    {"It follows from your own {0}, which is the {1} and takes no work: nothing is carried forward "
+     "from it.",
+     "あなた自身の `{0}` から導かれていますが, それは{1}で計算を要しないので, "
+     "誤りの持ち越しはありません.",
+     "Это следует из вашего `{0}`, но это {1} — ответ без вычислений: баллы с него не "
+     "переносятся."},
     {"It follows from your own {0}, which is computed from an answer that takes no work: nothing "
      "is carried forward from it.",
      "あなた自身の `{0}` から導かれていますが, それは計算を要しない解答から求めたものなので, "
@@ -293,6 +337,12 @@ constexpr Phrase kPhrases[] = {
      "Здесь плоскость записывается как a·x + b·y + c·z = d, где d = n·{0}; список [a, b, c, d] "
      "означает "
      "ту же форму, а не a·x + b·y + c·z + d = 0."},
+    {"Your plane's constant has the wrong sign: the plane through {0} is n·p = n·{1} (from "
+     "n·(p − {2}) = 0), and yours is n·p = −n·{3}.",
+     "平面の定数項の符号が逆です. {0} を通る平面は n·p = n·{1} (n·(p − {2}) = 0 から) ですが, "
+     "あなたの平面は n·p = −n·{3} です.",
+     "У свободного члена плоскости не тот знак: плоскость через {0} — это n·p = n·{1} (из "
+     "n·(p − {2}) = 0), а у вас n·p = −n·{3}."},
     {"You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
      "w による除算が抜けています. NDC = (x_c, y_c, z_c) / w_c です.",
      "Вы пропустили деление на w: NDC = (x_c, y_c, z_c) / w_c."},

@@ -63,6 +63,13 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points,
   });
 }
 
+// "₂" for 2: a vertex's index as the derivation writes it (p₂).
+std::string subscript(std::size_t i) {
+  std::string out;
+  for (const char c : std::to_string(i)) out += std::string("₀₁₂₃₄₅₆₇₈₉").substr((c - '0') * 3, 3);
+  return out;
+}
+
 struct Backface {
   static constexpr const char* kName = "backface";
   static constexpr const char* kSummary = "is a polygon front- or back-facing from the eye";
@@ -75,9 +82,12 @@ struct Backface {
   };
   static std::vector<std::string> given_fields() { return {"points", "eye"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"normal", AnswerKind::Direction, {}, {}},
-            {"view", AnswerKind::Vector, {}, {}},
-            {"df", AnswerKind::Scalar, {"normal", "view"}, {}},
+    return {{.name = "normal", .kind = AnswerKind::Direction, .symbols = {"n"}},
+            {.name = "view", .kind = AnswerKind::Vector, .symbols = {"v"}},
+            {.name = "df",
+             .kind = AnswerKind::Scalar,
+             .depends_on = {"normal", "view"},
+             .symbols = {"D_f"}},
             {"facing", AnswerKind::Category, {"df"}, {"front", "back", "edge_on"}}};
   }
 
@@ -103,6 +113,17 @@ struct Backface {
     return out;
   }
 
+  // The lecture's view vector runs from a vertex of the face to the eye, any vertex: the face is
+  // planar, so every one gives the same D_f = v·n (the key takes p₀).
+  static std::vector<AlsoRight> also_right(const Given& g) {
+    std::vector<AlsoRight> out;
+    for (std::size_t i = 1; i < g.points.size(); ++i)
+      out.push_back({"view", Value::vector(Vec3<Exact>(g.eye - g.points[i])),
+                     "the view vector from p" + subscript(i) +
+                         ": any vertex of the face gives the same D_f"});
+    return out;
+  }
+
   static std::vector<Misconception> misconceptions(const Given& g) {
     const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
     const Vec3<Exact> v = g.eye - g.points[0];
@@ -118,21 +139,29 @@ struct Backface {
     reversed_v.set("view", Value::vector(Vec3<Exact>(-v)));
     reversed_v.set("df", Value::scalar(-df));
     reversed_v.set("facing", Value::category(facing_of(-df)));
-    return {{"reversed cross product",
-             g.left_handed
-                 ? "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, "
-                   "with the vertices counter-clockwise seen from the front, the front normal is "
-                   "n = e₁ × e₀."
-                 : "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the "
-                   "front "
-                   "normal is n = e₀ × e₁.",
-             g.left_handed ? "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)"
-                           : "Normal (n = e₀ × e₁, counter-clockwise = front)",
-             reversed_n},
-            {"view vector reversed",
-             "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the "
-             "polygon to the eye, and that flips the sign of D_f.",
-             "View vector from p₀ to the eye", reversed_v}};
+    std::vector<Misconception> out = {
+        {"reversed cross product",
+         g.left_handed
+             ? "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, "
+               "with the vertices counter-clockwise seen from the front, the front normal is "
+               "n = e₁ × e₀."
+             : "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the "
+               "front "
+               "normal is n = e₀ × e₁.",
+         g.left_handed ? "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)"
+                       : "Normal (n = e₀ × e₁, counter-clockwise = front)",
+         reversed_n},
+        {"view vector reversed",
+         "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the "
+         "polygon to the eye, and that flips the sign of D_f.",
+         "View vector from p₀ to the eye", reversed_v}};
+    // Reversed from any other vertex: the same mistake.
+    for (std::size_t i = 1; i < g.points.size(); ++i) {
+      Misconception m = out.back();
+      m.answers.set("view", Value::vector(Vec3<Exact>(g.points[i] - g.eye)));
+      out.push_back(std::move(m));
+    }
+    return out;
   }
 
   // Grading scales (docs/grading.md §2): D_f = v·n has terms of size max|vᵢ|·max|nᵢ| and its

@@ -31,11 +31,15 @@ struct Barycentric {
   };
   static std::vector<std::string> given_fields() { return {"triangle", "pixel"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"edges", AnswerKind::Vector, {}, {}},
-            {"total", AnswerKind::Scalar, {}, {}},
-            {"lambda", AnswerKind::Vector, {"edges", "total"}, {}},
-            {"inside", AnswerKind::Bool, {"edges"}, {"inside", "outside"}},
-            {"z", AnswerKind::Scalar, {"lambda"}, {}}};
+    return {
+        {"edges", AnswerKind::Vector, {}, {}},
+        {"total", AnswerKind::Scalar, {}, {}},
+        {.name = "lambda",
+         .kind = AnswerKind::Vector,
+         .depends_on = {"edges", "total"},
+         .symbols = {"λ"}},
+        {"inside", AnswerKind::Bool, {"edges"}, {"inside", "outside"}},
+        {.name = "z", .kind = AnswerKind::Scalar, .depends_on = {"lambda"}, .symbols = {"z_S"}}};
   }
 
   static Given parse(GivenReader& r, const Conventions&) {

@@ -128,10 +128,13 @@ struct DepthAtPixel {
   };
   static std::vector<std::string> given_fields() { return {"triangle", "pixel", "cross"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"normal", AnswerKind::Direction, {}, {}},
-            {"unit_normal", AnswerKind::UnitVector, {"normal"}, {}},
+    return {{.name = "normal", .kind = AnswerKind::Direction, .symbols = {"n"}},
+            {.name = "unit_normal",
+             .kind = AnswerKind::UnitVector,
+             .depends_on = {"normal"},
+             .symbols = {"n̂"}},
             {"plane", AnswerKind::Plane, {"unit_normal"}, {}},
-            {"z", AnswerKind::Scalar, {"plane"}, {}},
+            {.name = "z", .kind = AnswerKind::Scalar, .depends_on = {"plane"}, .symbols = {"z_S"}},
             {"inside", AnswerKind::Bool, {}, {"inside", "outside"}}};
   }
 

@@ -70,6 +70,16 @@ struct Normal {
     std::optional<CrossOrder> order;  // when given as A, B, C
     bool left_handed = false;         // the course's coordinates (conventions: handedness)
   };
+  // The normal with the cross product's factors swapped (its side decides the front).
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    const Vec3<Exact> n =
+        g.order ? cross_normal_with_steps({g.points[0], g.points[1], g.points[2]}, *g.order, "A",
+                                          nullptr)
+                : polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
+    const auto m = reversed_normal_mistake(n, g.points.size(), g.left_handed, g.order);
+    return m ? std::vector<Misconception>{*m} : std::vector<Misconception>{};
+  }
+
   // Error carried forward: the unit normal of the student's own normal.
   static Answers carry_forward(const Given&, const Answers& student) {
     Answers out;
@@ -80,8 +90,11 @@ struct Normal {
 
   static std::vector<std::string> given_fields() { return {"points", "A", "B", "C", "cross"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"normal", AnswerKind::Direction, {}, {}},
-            {"unit_normal", AnswerKind::UnitVector, {"normal"}, {}}};
+    return {{.name = "normal", .kind = AnswerKind::Direction, .symbols = {"n"}},
+            {.name = "unit_normal",
+             .kind = AnswerKind::UnitVector,
+             .depends_on = {"normal"},
+             .symbols = {"n̂"}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

@@ -80,10 +80,16 @@ struct Plane {
   };
   static std::vector<std::string> given_fields() { return {"points", "point", "normal"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"normal", AnswerKind::Direction, {}, {}},
-            {"unit_normal", AnswerKind::UnitVector, {"normal"}, {}},
+    return {{.name = "normal", .kind = AnswerKind::Direction, .symbols = {"n"}},
+            {.name = "unit_normal",
+             .kind = AnswerKind::UnitVector,
+             .depends_on = {"normal"},
+             .symbols = {"n̂"}},
             {"plane", AnswerKind::Plane, {"normal"}, {}},
-            {"distance", AnswerKind::Scalar, {"plane"}, {}}};
+            {.name = "distance",
+             .kind = AnswerKind::Scalar,
+             .depends_on = {"plane"},
+             .symbols = {"dist"}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
@@ -134,9 +140,15 @@ struct Plane {
     const Vec3<Exact> n =
         g.points.empty() ? g.normal
                          : polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
-    const auto m =
-        constant_sign_mistake(n, canonical_dot(n, p0), "p₀", "Plane through p₀ with normal n");
-    return m ? std::vector<Misconception>{*m} : std::vector<Misconception>{};
+    std::vector<Misconception> out;
+    if (auto m =
+            constant_sign_mistake(n, canonical_dot(n, p0), "p₀", "Plane through p₀ with normal n"))
+      out.push_back(std::move(*m));
+    // The normal's side, when the problem has it computed by a cross product (not given).
+    if (!g.points.empty())
+      if (auto m = reversed_normal_mistake(n, g.points.size(), g.left_handed, std::nullopt))
+        out.push_back(std::move(*m));
+    return out;
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {

@@ -27,8 +27,11 @@ struct ProjectionPlane {
   };
   static std::vector<std::string> given_fields() { return {"window", "fov", "point"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"plane_z", AnswerKind::Scalar, {}, {}},
-            {"projected", AnswerKind::Vector, {"plane_z"}, {}}};
+    return {{.name = "plane_z", .kind = AnswerKind::Scalar, .symbols = {"s"}},
+            {.name = "projected",
+             .kind = AnswerKind::Vector,
+             .depends_on = {"plane_z"},
+             .symbols = {"P′"}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

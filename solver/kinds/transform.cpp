@@ -102,9 +102,12 @@ struct Transform {
     return out;
   }
   static std::vector<AnswerSpec> answers() {
-    return {{"matrix", AnswerKind::Transform, {}, {}},
+    return {{.name = "matrix", .kind = AnswerKind::Transform, .symbols = {"M"}},
             {"points", AnswerKind::Matrix, {"matrix"}, {}, "points", true},
-            {"inverse", AnswerKind::Transform, {"matrix"}, {}}};
+            {.name = "inverse",
+             .kind = AnswerKind::Transform,
+             .depends_on = {"matrix"},
+             .symbols = {"M⁻¹"}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

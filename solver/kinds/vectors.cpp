@@ -118,13 +118,26 @@ struct Vectors {
   };
   static std::vector<std::string> given_fields() { return {"a", "b"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"dot", AnswerKind::Scalar, {}, {}},
-            {"cross", AnswerKind::Vector, {}, {}},
-            {"area", AnswerKind::Scalar, {"cross"}, {}},
-            {"sin", AnswerKind::Scalar, {"area"}, {}},
-            {"cos", AnswerKind::Scalar, {"dot"}, {}},
-            {.name = "angle", .kind = AnswerKind::Scalar, .depends_on = {"cos"}, .angle = true},
-            {"unit_normal", AnswerKind::UnitVector, {"cross"}, {}}};
+    return {{.name = "dot", .kind = AnswerKind::Scalar, .symbols = {"a·b", "a.b", "a*b"}},
+            {.name = "cross", .kind = AnswerKind::Vector, .symbols = {"a × b", "a x b"}},
+            {.name = "area", .kind = AnswerKind::Scalar, .depends_on = {"cross"}, .symbols = {"S"}},
+            {.name = "sin",
+             .kind = AnswerKind::Scalar,
+             .depends_on = {"area"},
+             .symbols = {"sin θ", "sin(θ)", "sin theta", "sin(theta)"}},
+            {.name = "cos",
+             .kind = AnswerKind::Scalar,
+             .depends_on = {"dot"},
+             .symbols = {"cos θ", "cos(θ)", "cos theta", "cos(theta)"}},
+            {.name = "angle",
+             .kind = AnswerKind::Scalar,
+             .depends_on = {"cos"},
+             .angle = true,
+             .symbols = {"θ", "theta"}},
+            {.name = "unit_normal",
+             .kind = AnswerKind::UnitVector,
+             .depends_on = {"cross"},
+             .symbols = {"n", "n̂"}}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

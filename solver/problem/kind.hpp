@@ -88,6 +88,10 @@ struct AnswerSpec {
   bool unordered_pairs = false;
   // Scalar: an angle in the set's unit (`angles:`); "66.42°" is read as degrees whatever it is.
   bool angle = false;
+  // The symbols the derivation writes for this answer, which a student may repeat before `=`
+  // as well as its name ("D_f = 27", "s = -415.7"); compared without case, spaces, `_`, braces
+  // and with Unicode subscripts, primes and ⁻¹ read as their ASCII spellings.
+  std::vector<std::string> symbols = {};
 };
 
 // A common mistake, as the answers it produces: the grader names it when a student's wrong
@@ -97,6 +101,17 @@ struct Misconception {
   std::string feedback;  // what went wrong, for the student
   std::string step;      // title of the derivation step where it goes wrong
   Answers answers;       // the answers the mistake leads to
+  // What went wrong said in the form the student wrote the answer in (ParsedAnswer::form, such
+  // as "equation" for a plane), where `feedback` would describe another form.
+  std::vector<std::pair<std::string, std::string>> feedback_by_form = {};
+};
+
+// An answer the method gives as rightly as the key's, by another choice it leaves open (the
+// view vector from another vertex of the face), with why it is right, for the student.
+struct AlsoRight {
+  std::string answer;
+  Value value;
+  std::string why;
 };
 
 struct KindInfo {
@@ -112,6 +127,8 @@ struct KindInfo {
   // earlier answers (only those it can recompute; a trivial earlier answer such as a zero
   // normal yields nothing).
   std::function<Answers(const std::any& given, const Answers& student)> carry_forward;
+  // Optional. Answers as right as the key's by another choice the method leaves open.
+  std::function<std::vector<AlsoRight>(const std::any& given)> also_right;
   // Optional. The answers that common mistakes produce.
   std::function<std::vector<Misconception>(const std::any& given)> misconceptions;
   // Optional. Per answer, how finely it is judged (AnswerScale), from the given and the key;
@@ -170,6 +187,8 @@ KindInfo make_kind() {
     k.carry_forward = [](const std::any& g, const Answers& a) {
       return K::carry_forward(std::any_cast<const G&>(g), a);
     };
+  if constexpr (requires(const G& g) { K::also_right(g); })
+    k.also_right = [](const std::any& g) { return K::also_right(std::any_cast<const G&>(g)); };
   if constexpr (requires(const G& g) { K::misconceptions(g); })
     k.misconceptions = [](const std::any& g) {
       return K::misconceptions(std::any_cast<const G&>(g));

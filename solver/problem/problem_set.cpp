@@ -265,8 +265,11 @@ Grading read_grading(const YAML::Node& n, const std::string& file, const std::st
   check_keys(n, {"ecf", "partial", "linear_matrix"}, file, field);
   if (n["ecf"].IsDefined()) {
     base.ecf = read_nonnegative(n["ecf"], file, field + ".ecf");
-    if (base.ecf > 1)
-      fail_at(n["ecf"], file, field + ".ecf", "is a fraction of the points, from 0 to 1");
+    // A wrong answer never earns full points: carried credit is a part of them.
+    if (base.ecf >= 1)
+      fail_at(n["ecf"], file, field + ".ecf",
+              "is a fraction of the points, at least 0 and below 1 (an answer that is wrong "
+              "against the key never earns full points)");
   }
   const auto flag = [&](const char* key, bool& out) {
     if (!n[key].IsDefined()) return;

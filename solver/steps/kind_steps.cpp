@@ -84,18 +84,49 @@ Value plane_answer(const std::array<Exact, 4>& plane) {
   return v;
 }
 
+std::optional<Misconception> reversed_normal_mistake(const Vec3<Exact>& n, std::size_t vertices,
+                                                     bool left_handed,
+                                                     const std::optional<CrossOrder>& order) {
+  if (!order && vertices != 3) return std::nullopt;
+  const Vec3<Exact> r(-n);
+  Answers answers;
+  answers.set("normal", Value::vector(r));
+  if (!canonical(r.dot(r)).is_zero()) answers.set("unit_normal", Value::vector(unit(r)));
+  if (order)
+    return Misconception{"reversed cross product",
+                         "You took " + order->second + " × " + order->first + ".", "Normal",
+                         answers};
+  return Misconception{
+      "reversed cross product",
+      left_handed
+          ? "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, "
+            "with the vertices counter-clockwise seen from the front, the front normal is "
+            "n = e₁ × e₀."
+          : "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the "
+            "front normal is n = e₀ × e₁.",
+      left_handed ? "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)"
+                  : "Normal (n = e₀ × e₁, counter-clockwise = front)",
+      answers};
+}
+
 std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
                                                    const std::string& point,
                                                    const std::string& step) {
   if (canonical(d).is_zero()) return std::nullopt;
   Answers answers;
   answers.set("plane", plane_answer(paper_plane(n, canonical(-d))));
+  // Said in the student's form: a list [a, b, c, d] is read as a·x + b·y + c·z = d, which is
+  // what a list writer may have taken for … + d = 0; an equation says its own constant.
   return Misconception{
       "constant on the wrong side",
       "Your constant d has the wrong sign. Here the plane is written a·x + b·y + c·z = d "
       "with d = n·" +
           point + "; a list [a, b, c, d] means the same form, not a·x + b·y + c·z + d = 0.",
-      step, answers};
+      step,
+      answers,
+      {{"equation", "Your plane's constant has the wrong sign: the plane through " + point +
+                        " is n·p = n·" + point + " (from n·(p − " + point +
+                        ") = 0), and yours is n·p = −n·" + point + "."}}};
 }
 
 Vec3<Exact> unit(const Vec3<Exact>& n) {

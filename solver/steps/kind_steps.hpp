@@ -101,6 +101,14 @@ struct CrossOrder {
 // Reads `cross: [AC, AB]` (each an ordered pair of distinct vertex names A, B, C).
 CrossOrder read_cross(GivenReader& r, const std::string& key, CrossOrder fallback);
 
+// The normal computed with the cross product's factors swapped (−n, and its unit normal), for a
+// triangle's normal by e₀ × e₁ (e₁ × e₀ in left-handed coordinates) or by a named `order`
+// (AB × AC): what it says and where. Nothing for a normal the problem gives or a polygon of more
+// vertices (Newell's sum, no one cross product to swap).
+std::optional<Misconception> reversed_normal_mistake(const Vec3<Exact>& n, std::size_t vertices,
+                                                     bool left_handed,
+                                                     const std::optional<CrossOrder>& order);
+
 // The edge vector XY = Y − X of triangle ABC.
 Vec3<Exact> named_edge(const std::string& name, const std::array<Vec3<Exact>, 3>& abc);
 
