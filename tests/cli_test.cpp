@@ -221,7 +221,8 @@ struct Generated {
   std::map<std::string, std::string> files;
 };
 Generated generate_with_jobs(const std::string& args, int jobs, const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "/" + name + "-j" + std::to_string(jobs);
+  // A directory of this run's own (two checkouts' suites may run this test at once).
+  const std::string dir = test::scratch_dir(name + "-j" + std::to_string(jobs)).string();
   std::filesystem::remove_all(dir);
   const CliRun r = run("generate " + args + " -j " + std::to_string(jobs) + " -o " + dir);
   const auto named = [&](std::string text) {
