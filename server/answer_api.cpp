@@ -6,6 +6,7 @@
 #include "server/answer_text.hpp"
 #include "server/pages.hpp"
 #include "server/set_page.hpp"
+#include "solver/derivation/math_text.hpp"
 #include "solver/derivation/render.hpp"
 
 namespace frustum::server {
@@ -32,6 +33,14 @@ const AnswerSpec* asked_answer(StudentApp& app, const Visitor& v,
   *problem = p;
   *lang = variant->lang;
   return p->info->answer(name);
+}
+
+// How an answer was read, in the form a student writes it: a plane as its equation
+// (ax + by + cz = d), every other answer as the derivations show its value.
+MathText read_as(const Value& value, const AnswerSpec& spec) {
+  if (spec.kind == AnswerKind::Plane && value.exact.size() == 4)
+    return plane_equation(value.exact[0], value.exact[1], value.exact[2], value.exact[3]);
+  return value.shown();
 }
 
 Response too_many(int wait) {
@@ -65,7 +74,7 @@ Response preview_answer(StudentApp& app, const Visitor& v,
       reading = Json{
           {"ok", false}, {"label", say(Say::CannotRead, lang)}, {"error", tr(parsed.error, lang)}};
     } else {
-      const MathText shown = parsed.value.shown();
+      const MathText shown = read_as(parsed.value, *spec);
       reading = Json{{"ok", true},
                      {"label", say(Say::ReadAs, lang)},
                      {"tex", shown.latex},

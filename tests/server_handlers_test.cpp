@@ -177,8 +177,10 @@ TEST_F(StudentPages, ThePreviewReadsButNeverJudges) {
   const Json right = preview("plane", "x + y - z = -6");
   const Json wrong = preview("plane", "x + y - z = 6");
   EXPECT_TRUE(right["ok"]);
-  EXPECT_EQ(right["tex"], "\\left(1, 1, -1, -6\\right)");
-  EXPECT_EQ(wrong["tex"], "\\left(1, 1, -1, 6\\right)");
+  // A plane is read back as its equation, whichever form the student wrote.
+  EXPECT_EQ(right["tex"], "x + y - z = -6");
+  EXPECT_EQ(wrong["tex"], "x + y - z = 6");
+  EXPECT_EQ(preview("plane", "[2, 2, -2, -12]")["tex"], "2x + 2y - 2z = -12");
   std::vector<std::string> right_keys, wrong_keys;
   for (const auto& [k, v] : right.items()) right_keys.push_back(k);
   for (const auto& [k, v] : wrong.items()) wrong_keys.push_back(k);
