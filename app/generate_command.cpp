@@ -135,7 +135,8 @@ struct Rendered {
   std::string set_text, key_text;
 };
 
-Rendered render(const GenerateCommand& g, const YamlDocument& doc, const Named& v) {
+Rendered render(const GenerateCommand& g, const YamlDocument& doc, const std::string& fingerprint,
+                const Named& v) {
   namespace fs = std::filesystem;
   Rendered out;
   if (!v.variant.all_errors().empty()) {
@@ -159,10 +160,11 @@ Rendered render(const GenerateCommand& g, const YamlDocument& doc, const Named& 
   const std::string body = emit_variant_set(doc.root, v.variant, "");
   out.body_hash = fnv1a64(body);
   const std::string seed = fmt::format("{:016x}", v.variant.variant ? v.variant.variant->seed : 0);
-  out.set_text = comment_lines(fmt::format("Variant of {} for {} (seed {}), drawn by `frustum "
-                                           "generate`.\nAnswer key: answers/{}{}",
-                                           source, who, seed, set_file, redraw_note)) +
-                 body;
+  out.set_text =
+      comment_lines(fmt::format("Variant of {} for {} (seed {}), drawn by `frustum "
+                                "generate`.\nAnswer key: answers/{}{}",
+                                source, who, seed, set_file, redraw_note)) +
+      drawn_from_line(DrawnFrom{source, fingerprint, g.seed ? "" : v.student, out.draw}) + body;
   std::vector<Diagnostic> unsolved;
   out.key_text = emit_answer_key(
       v.variant, v.student, fmt::format("Answer key of {} ({}, seed {}).", set_file, who, seed),
@@ -257,6 +259,8 @@ int run_generate(const GenerateCommand& g, const Output& o) {
     for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
     return 1;
   }
+  // What every variant file records as drawn from (grade --variants checks it).
+  const std::string fingerprint = set_fingerprint(doc.root);
   // What `check` refuses is refused here too, before any file is written: a problem that
   // cannot be solved (a placeholder that names no value, answers beyond a double's range).
   {
@@ -350,7 +354,7 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   // (removing and creating files costs more than rewriting them).
   const auto take_here = [&](Named&& v, Record* reuse = nullptr) {
     if (failed) return;
-    const Rendered r = render(g, doc, v);
+    const Rendered r = render(g, doc, fingerprint, v);
     const auto stage_one = [&](std::string* temporary, const std::string& path,
                                const std::string& text) {
       if (!temporary || temporary->empty()) return files.stage(path, text);
@@ -402,7 +406,7 @@ int run_generate(const GenerateCommand& g, const Output& o) {
       const Named v{name_of(i), g.seed ? name_of(i) : students[i],
                     g.seed ? seeds_apart->draw(static_cast<int>(i), &r.givens)
                            : classes_apart->first_draw(students[i], &r.givens)};
-      Rendered rendered = render(g, doc, v);
+      Rendered rendered = render(g, doc, fingerprint, v);
       try {
         if (rendered.variant_errors.empty() && rendered.unsolved.empty()) {
           r.set_temporary =

@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "batch/variant_files.hpp"
+#include "solver/input/yaml_document.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/variants.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -41,6 +43,63 @@ const char* kRedrawHint =
     "grade the class against the files `frustum generate -o DIR` wrote (--variants DIR) or against "
     "the roster it "
     "was generated from (--roster ROSTER)";
+
+// Whether two sets hold the same problems with the same givens (ids in order, givens as
+// emit_flow writes them); `differs` receives the first problem id that does not.
+bool same_givens(const ProblemSet& a, const ProblemSet& b, std::string& differs) {
+  const std::size_t n = std::max(a.problems.size(), b.problems.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const ProblemSpec* p = i < a.problems.size() ? &a.problems[i] : nullptr;
+    const ProblemSpec* q = i < b.problems.size() ? &b.problems[i] : nullptr;
+    if (!p || !q || p->id != q->id || emit_flow(p->given_node) != emit_flow(q->given_node)) {
+      differs = p ? p->id : q->id;
+      return false;
+    }
+  }
+  return true;
+}
+
+// The set a student is graded against with --variants, never a stale one: the file
+// `frustum generate` wrote when the set has not changed since (its fingerprint); when it has
+// (a key, tolerance or policy fixed), the student's variant drawn again from the set as it is
+// now when that gives the student the same givens; otherwise refused, saying what to do.
+ProblemSet generated_set_now(const ProblemSet& set, const std::string& file,
+                             const std::string& student, std::string& variant) {
+  ProblemSet written = load_problem_set(file);
+  if (!written.errors.empty()) return written;
+  if (!written.drawn_from)
+    return refused(set, file,
+                   "this generated set does not say which version of " + set.file +
+                       " it was drawn from (written by an earlier frustum): generate the "
+                       "variants again with this one");
+  const YamlDocument now = load_yaml_file(set.file);
+  if (!now.error && set_fingerprint(now.root) == written.drawn_from->fingerprint) {
+    variant = "graded against " + file;
+    return written;
+  }
+  const std::string changed = set.file + " changed since " + file + " was generated";
+  if (written.drawn_from->draw > 1 || written.drawn_from->student != student)
+    return refused(set, file,
+                   changed + ", and this variant (" +
+                       (written.drawn_from->student.empty()
+                            ? std::string("a --seed variant")
+                            : "draw " + std::to_string(written.drawn_from->draw) + " of student " +
+                                  written.drawn_from->student) +
+                       ") cannot be drawn again from the set alone: generate the variants again "
+                       "(the same roster draws the same class) and grade against them");
+  ProblemSet fresh = set_varies(set) ? variant_for(set, student) : set;
+  std::string differs;
+  if (!fresh.all_errors().empty() || !same_givens(fresh, written, differs))
+    return refused(set, file,
+                   changed + ", and the student's problem " + differs +
+                       " drawn from the set as it is now differs from the one in the file: "
+                       "generate the variants again and hand them out, or grade against the "
+                       "set as it was");
+  variant = "graded against the variant of student " + student + " drawn again from " + set.file +
+            " as it is now (it changed since " + file +
+            " was generated; the student's givens are the same)";
+  return fresh;
+}
 
 }  // namespace
 
@@ -87,8 +146,7 @@ ProblemSet set_for_student(const ProblemSet& set, const VariantSource& source,
           student.empty()
               ? "the answers need `student:` to find the student's generated set"
               : "no generated set for student " + student + " in " + *source.variants_dir);
-    variant = "graded against " + file;
-    return load_problem_set(file);
+    return generated_set_now(set, file, student, variant);
   }
   if (roster) {
     const auto it = roster->find(student);

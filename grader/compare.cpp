@@ -455,10 +455,10 @@ Comparison compare_word_map(const Value& expected, const Value& got, const Answe
     undecided += said && other;
   }
   std::set<std::string> extra;
-  for (const auto& [k, w] : got.entries)
+  for (const auto& entry : got.entries)
     if (std::none_of(expected.entries.begin(), expected.entries.end(),
-                     [&](const auto& e) { return e.first == k; }))
-      extra.insert(k);
+                     [&](const auto& e) { return e.first == entry.first; }))
+      extra.insert(entry.first);
   if (right == n && extra.empty())
     return correct(got.entries.size() > n ? "an entry written twice with the same word counts once"
                                           : "");

@@ -466,6 +466,66 @@ TEST(GenerateCli, WritesReproducibleSetsWhoseKeysGradeFullMarks) {
   EXPECT_NE(status, 0);
 }
 
+// `grade --variants DIR` never grades against a stale file: a generated set records the
+// fingerprint of the set it was drawn from; after the set changed, the student's variant is drawn
+// again from the set as it is now when that gives the same givens (so a key or tolerance fixed
+// since reaches the grade), and is refused otherwise.
+TEST(GenerateCli, GradingAgainstGeneratedFilesNeverUsesAStaleSet) {
+  const std::filesystem::path dir = test::scratch_dir("generate_stale");
+  const std::string set = (dir / "drill.yaml").string();
+  const std::string vdir = (dir / "v").string();
+  std::ofstream(set) << kVariedSet;
+  int status = 0;
+  run_cli("generate " + set + " --student s1 -o " + vdir, status);
+  ASSERT_EQ(status, 0);
+  const std::string file = vdir + "/drill-s1.yaml";
+  EXPECT_NE(test::read_file(file).find("drawn_from: {set: drill.yaml, fingerprint: "),
+            std::string::npos);
+  // s1's key, with dot = 2.3 where a·b = 2: wrong at the set's tolerance.
+  std::string answers = test::read_file(vdir + "/answers/drill-s1.yaml");
+  const std::size_t dot = answers.find("dot: 2");
+  ASSERT_NE(dot, std::string::npos) << answers;
+  answers.replace(dot, 6, "dot: 2.3");
+  const std::string mine = (dir / "s1.yaml").string();
+  std::ofstream(mine) << answers;
+  const auto grade_s1 = [&]() {
+    return run_cli("grade " + set + " " + mine + " --variants " + vdir, status);
+  };
+
+  std::string out = grade_s1();
+  EXPECT_EQ(status, 0) << out;  // the wrong dot is a verdict, not an error
+  EXPECT_NE(out.find("graded against " + file), std::string::npos) << out;
+  EXPECT_NE(out.find("fixed (vectors): 0 / 1"), std::string::npos) << out;
+  // A comment or a layout change is no change.
+  std::ofstream(set, std::ios::app) << "# reviewed\n";
+  out = grade_s1();
+  EXPECT_NE(out.find("graded against " + file), std::string::npos) << out;
+  // The key fixed (a tolerance): the variant is drawn again from the set as it is now, and the
+  // fix reaches the grade.
+  std::string text = kVariedSet;
+  text.replace(text.find("    ask: [dot]"), 14, "    ask: [dot]\n    tolerance: {rel: 0.2}");
+  std::ofstream(set) << text;
+  out = grade_s1();
+  EXPECT_NE(out.find("drawn again from " + set + " as it is now"), std::string::npos) << out;
+  EXPECT_NE(out.find("fixed (vectors): 1 / 1"), std::string::npos) << out;
+  // A varying given changed: s1's problem is not the one in the file any more, so refused.
+  text.replace(text.find("[[0, 1, 0], [5, 5, 5], [-4, 2, 7]]"), 34, "[[9, 9, 9], [8, 8, -8]]");
+  std::ofstream(set) << text;
+  out = grade_s1();
+  EXPECT_EQ(status, 1) << out;
+  EXPECT_NE(out.find("changed since " + file + " was generated, and the student's problem df"),
+            std::string::npos)
+      << out;
+  // A file that does not say what it was drawn from (an earlier frustum's) is refused too.
+  std::string written = test::read_file(file);
+  written.erase(written.find("drawn_from:"),
+                written.find('\n', written.find("drawn_from:")) - written.find("drawn_from:") + 1);
+  std::ofstream(file) << written;
+  out = grade_s1();
+  EXPECT_EQ(status, 1) << out;
+  EXPECT_NE(out.find("does not say which version of " + set), std::string::npos) << out;
+}
+
 TEST(GenerateCli, RosterGivesDistinctVariantsGradedAgainstTheirFiles) {
   const std::string dir = ::testing::TempDir() + "frustum_generate_roster";
   std::filesystem::remove_all(dir);

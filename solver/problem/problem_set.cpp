@@ -16,9 +16,9 @@ namespace frustum {
 
 namespace {
 
-const std::vector<std::string> kSetFields = {"title",     "lang",     "source",      "conventions",
-                                             "tolerance", "problems", "description", "grading",
-                                             "variants",  "feedback", "attempts",    "deadline"};
+const std::vector<std::string> kSetFields = {
+    "title",   "lang",     "source",   "conventions", "tolerance", "problems",  "description",
+    "grading", "variants", "feedback", "attempts",    "deadline",  "drawn_from"};
 const std::vector<std::string> kProblemFields = {"id",        "kind",   "text",       "given",
                                                  "ask",       "points", "vary",       "conventions",
                                                  "tolerance", "nice",   "difficulty", "grading"};
@@ -41,6 +41,32 @@ void check_keys(const YAML::Node& map, const std::vector<std::string>& known,
 std::string read_string(const YAML::Node& n, const std::string& file, const std::string& field) {
   if (!n.IsScalar()) fail_at(n, file, field, "expected text");
   return n.Scalar();
+}
+
+// `drawn_from: {set: NAME, fingerprint: HEX, student: ID, draw: N}` of a variant file.
+DrawnFrom read_drawn_from(const YAML::Node& n, const std::string& file) {
+  if (!n.IsMap())
+    fail_at(n, file, "drawn_from", "expected a mapping {set, fingerprint, student, draw}");
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string key = it->first.as<std::string>();
+    if (key != "set" && key != "fingerprint" && key != "student" && key != "draw")
+      fail_at(it->first, file, "drawn_from." + key,
+              "unknown field (expected set, fingerprint, student, draw)");
+  }
+  DrawnFrom d;
+  d.set = n["set"].IsDefined() ? read_string(n["set"], file, "drawn_from.set") : "";
+  if (!n["fingerprint"].IsDefined())
+    fail_at(n, file, "drawn_from.fingerprint", "missing required field");
+  d.fingerprint = read_string(n["fingerprint"], file, "drawn_from.fingerprint");
+  if (n["student"].IsDefined()) d.student = read_string(n["student"], file, "drawn_from.student");
+  if (n["draw"].IsDefined()) {
+    const std::string draw = read_string(n["draw"], file, "drawn_from.draw");
+    if (draw.empty() || draw.size() > 6 ||
+        draw.find_first_not_of("0123456789") != std::string::npos || std::stoi(draw) < 1)
+      fail_at(n["draw"], file, "drawn_from.draw", "expected a whole number from 1");
+    d.draw = std::stoi(draw);
+  }
+  return d;
 }
 
 double read_nonnegative(const YAML::Node& n, const std::string& file, const std::string& field) {
@@ -352,6 +378,7 @@ ProblemSet load_problem_set(const YamlDocument& doc, const std::string& name) {
                     did_you_mean(v, {"per_student", "fixed"}));
       set.per_student = v == "per_student";
     }
+    if (root["drawn_from"].IsDefined()) set.drawn_from = read_drawn_from(root["drawn_from"], name);
     set.conventions = read_conventions(root["conventions"], name, "conventions", {});
     set.tolerance = read_tolerance(root["tolerance"], name, "tolerance", {});
     set.grading = read_grading(root["grading"], name, "grading", {});

@@ -103,13 +103,24 @@ struct VariantInfo {
   int draw = 1;  // > 1: drawn again so that a class's variants differ (variants_for_class)
 };
 
+// What a variant file written by `frustum generate` was drawn from (its `drawn_from:` field):
+// the source set's fingerprint (variants.hpp: set_fingerprint) when it was drawn, and whose
+// variant it is. Grading against such a file checks the fingerprint against the set as it is now.
+struct DrawnFrom {
+  std::string set;          // the source set's file name
+  std::string fingerprint;  // set_fingerprint of the source set when the variant was drawn
+  std::string student;      // empty for a --seed variant
+  int draw = 1;             // > 1: drawn again for a class (VariantInfo::draw)
+};
+
 struct ProblemSet {
   std::string file;
   Lang lang = Lang::En;  // `lang:` the language the set is written in; other texts fall back to it
   LocalText title;
   std::string source;  // what the set follows (a course's lecture, a textbook), cited in headers
-  bool per_student = false;            // variants: per_student
-  std::optional<VariantInfo> variant;  // set when this is a generated variant
+  bool per_student = false;             // variants: per_student
+  std::optional<VariantInfo> variant;   // set when this is a generated variant
+  std::optional<DrawnFrom> drawn_from;  // set when read from a variant file
   Conventions conventions;
   Tolerance tolerance;
   Grading grading;

@@ -1,5 +1,7 @@
 #include "solver/problem/variants.hpp"
 
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <functional>
 #include <numeric>
@@ -621,6 +623,21 @@ std::optional<std::string> placeholder_error(const std::string& text, const YAML
       error = "the placeholder {" + name + "} " + why;
   });
   return error;
+}
+
+std::string set_fingerprint(const YAML::Node& root) {
+  if (!root.IsMap()) return fmt::format("{:016x}", fnv1a64(emit_flow(root)));
+  YAML::Node copy(YAML::NodeType::Map);
+  for (auto it = root.begin(); it != root.end(); ++it)
+    if (it->first.as<std::string>() != "drawn_from") copy[it->first] = it->second;
+  return fmt::format("{:016x}", fnv1a64(emit_flow(copy)));
+}
+
+std::string drawn_from_line(const DrawnFrom& d) {
+  std::string out =
+      "drawn_from: {set: " + emit_scalar(d.set) + ", fingerprint: \"" + d.fingerprint + "\"";
+  if (!d.student.empty()) out += ", student: " + emit_scalar(d.student);
+  return out + fmt::format(", draw: {}}}\n", d.draw);
 }
 
 std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant,

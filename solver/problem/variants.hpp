@@ -152,6 +152,12 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
 // `header` is written as comment lines first.
 std::string emit_variant_set(const YAML::Node& source_root, const ProblemSet& variant,
                              const std::string& header);
+// A set's fingerprint: FNV-1a 64 (hex) of its YAML as parsed and written again in flow form
+// (emit_flow), `drawn_from` left out: the same for any layout or comments, different when a
+// value, a key or a text changes. A variant file records its source's (`drawn_from:`).
+std::string set_fingerprint(const YAML::Node& root);
+// The `drawn_from:` line of a variant file (one line, ending in a newline).
+std::string drawn_from_line(const DrawnFrom& d);
 // `header` as YAML comment lines ("# " before each line, "#" for an empty one).
 std::string comment_lines(const std::string& header);
 // `{field}` in a problem's text replaced by that given field's value as students read it: a
