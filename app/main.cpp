@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/cli_options.hpp"
+#include "app/command_line_secrets.hpp"
 
 namespace {
 
@@ -31,6 +32,7 @@ int run_command(int argc, char** argv) {
       app::add_serve_command(cli), app::add_draw_command(cli),     app::add_bench_command(cli),
       app::add_render_command(cli)};
   CLI11_PARSE(cli, argc, argv);
+  app::hide_passwords(argc, argv, std::cerr);  // parsed: argv's copy of a secret is not needed
   // The last line of defence: whatever a command throws (a file system error, memory) ends in
   // a message and exit status 1, never in std::terminate.
   try {

@@ -96,8 +96,8 @@ int serve(const ServeOptions& s, const server::Course& course, Store& store, con
   // Workers first: processes of this binary, started by posix_spawn (no fork of a threaded
   // server).
   server::WorkerPool workers(
-      {"serve", s.course, "--db", url, "--grade-seconds", std::to_string(s.grade_seconds)},
-      s.workers);
+      {"serve", s.course, "--grade-seconds", std::to_string(s.grade_seconds)}, s.workers,
+      {"FRUSTUM_DB=" + url});  // in the environment: a password never shows in `ps`
   server::AppConfig config;
   config.secure_cookies = s.secure_cookies;
   config.preview_rate = s.preview_rate;
@@ -132,7 +132,9 @@ CLI::App* add_serve_options(CLI::App& cli, ServeOptions& s) {
       ->required()
       ->check(CLI::ExistingDirectory);
   c->add_option("--db", s.db,
-                "Database: sqlite:PATH (default COURSE/.frustum/serve.sqlite) or postgresql://…");
+                "Database: sqlite:PATH (default COURSE/.frustum/serve.sqlite) or postgresql://… "
+                "(a password: in PGPASSWORD, ~/.pgpass or FRUSTUM_DB, not on the command line)")
+      ->envname("FRUSTUM_DB");
   c->add_option("--listen", s.listen, "Address to listen on (default 127.0.0.1:8080)");
   c->add_option("--issue-links", s.issue_links,
                 "Write student,url for every student without a link to this file (mode 0600), "

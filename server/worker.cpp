@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <stdexcept>
@@ -62,8 +63,19 @@ int run_worker(const Course& course, Store& store, const std::string& name,
   return 0;
 }
 
-WorkerPool::WorkerPool(std::vector<std::string> argv_tail, int count)
+WorkerPool::WorkerPool(std::vector<std::string> argv_tail, int count,
+                       std::vector<std::string> environment)
     : argv_tail_(std::move(argv_tail)), prefix_("w" + random_token(4)) {
+  const auto named = [&](std::string_view entry) {
+    const std::size_t equals = entry.find('=');
+    if (equals == std::string_view::npos) return false;
+    const std::string_view name = entry.substr(0, equals + 1);
+    return std::any_of(environment.begin(), environment.end(),
+                       [&](const std::string& e) { return e.rfind(name, 0) == 0; });
+  };
+  for (char** e = environ; *e != nullptr; ++e)
+    if (!named(*e)) environment_.emplace_back(*e);
+  environment_.insert(environment_.end(), environment.begin(), environment.end());
   for (int i = 0; i < count; ++i) pids_.push_back(spawn(i));
   watcher_ = std::thread([this] { watch(); });
 }
@@ -86,8 +98,12 @@ pid_t WorkerPool::spawn(int index) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  std::vector<char*> envp;
+  for (std::string& e : environment_) envp.push_back(e.data());
+  envp.push_back(nullptr);
   pid_t pid = -1;
-  if (::posix_spawn(&pid, "/proc/self/exe", nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  if (::posix_spawn(&pid, "/proc/self/exe", nullptr, nullptr, argv.data(), envp.data()) != 0)
+    return -1;
   return pid;
 }
 

@@ -34,7 +34,10 @@ class WorkerPool {
  public:
   // `argv_tail` follows the binary's path: {"serve", COURSE, "--db", URL}; each worker adds
   // "--worker NAME".
-  WorkerPool(std::vector<std::string> argv_tail, int count);
+  // `environment`: NAME=VALUE entries the workers get on top of (in place of) this process's
+  // own — how a secret such as the database URL reaches them without showing in `ps`.
+  WorkerPool(std::vector<std::string> argv_tail, int count,
+             std::vector<std::string> environment = {});
   ~WorkerPool();  // SIGTERM to every worker, then waits for them
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
@@ -45,7 +48,8 @@ class WorkerPool {
   void watch();
 
   std::vector<std::string> argv_tail_;
-  std::string prefix_;  // worker names: PREFIX-INDEX
+  std::vector<std::string> environment_;  // the workers' whole environment
+  std::string prefix_;                    // worker names: PREFIX-INDEX
   std::mutex mutex_;
   std::vector<pid_t> pids_;
   std::atomic<bool> stopping_{false};
