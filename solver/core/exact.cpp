@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "solver/core/rational_power.hpp"
@@ -672,8 +673,16 @@ Exact canonical(const Exact& e, WorkBudget& budget) {
 }
 
 bool has_symbol(const Exact& e) {
-  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (is_a<GiNaC::symbol>(*it) || is_a<GiNaC::wildcard>(*it)) return true;
+  // Each shared subexpression once: a value built by repeated substitution (a point clipped
+  // three times) is a small graph whose tree, walked in preorder, is exponentially large.
+  std::unordered_set<const GiNaC::basic*> seen;
+  std::vector<ex> stack{e};
+  while (!stack.empty()) {
+    const ex x = stack.back();
+    stack.pop_back();
+    if (is_a<GiNaC::symbol>(x) || is_a<GiNaC::wildcard>(x)) return true;
+    if (!seen.insert(&ex_to<GiNaC::basic>(x)).second) continue;
+    for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
   }
   return false;
 }
@@ -772,7 +781,11 @@ double to_double(const Exact& e) {
     if (double value; quotient_to_double(num, den, value)) return value;
     return rational_to_double(numeric(cln::cl_N(num)) / numeric(cln::cl_N(den)));
   }
-  if (!multiple && !is_real_constant(e)) return std::numeric_limits<double>::quiet_NaN();
+  // Not a real constant: a symbol, or no precision gives a real (the evaluation below says so;
+  // is_real_constant would evaluate once more first).
+  if (!multiple && (has_symbol(e) || is_a<GiNaC::relational>(e) || is_a<GiNaC::lst>(e) ||
+                    is_a<GiNaC::matrix>(e)))
+    return std::numeric_limits<double>::quiet_NaN();
   numeric value;
   return evaluate_real_with_digits_to_spare(e, value) ? value.to_double()
                                                       : std::numeric_limits<double>::quiet_NaN();

@@ -18,9 +18,11 @@ namespace {
 using Pt = Vec2<Exact>;
 using Poly2 = std::vector<Pt>;
 
-int sign(const Exact& e) { return filtered_sign(canonical(e)); }
+// The filter first, on the value as it is: canonical() only where the filter cannot decide
+// (exact_sign simplifies then), not on every value compared.
+int sign(const Exact& e) { return filtered_sign(e); }
 
-Exact cross2(const Pt& a, const Pt& b) { return canonical(a(0) * b(1) - a(1) * b(0)); }
+Exact cross2(const Pt& a, const Pt& b) { return a(0) * b(1) - a(1) * b(0); }
 
 // Twice the signed area (shoelace): > 0 counter-clockwise.
 Exact area2(const Poly2& p) {
@@ -73,9 +75,7 @@ struct Seen {
   Exact d;  // plane n·x = d
 };
 
-Exact eval(const std::array<Exact, 3>& h, const Pt& s) {
-  return canonical(h[0] + h[1] * s(0) + h[2] * s(1));
-}
+Exact eval(const std::array<Exact, 3>& h, const Pt& s) { return h[0] + h[1] * s(0) + h[2] * s(1); }
 
 // An axis least aligned with v, so v × axis is far from zero.
 Vec3<Exact> helper_axis(const Vec3<Exact>& v) {
