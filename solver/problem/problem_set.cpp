@@ -47,12 +47,7 @@ std::string read_string(const YAML::Node& n, const std::string& file, const std:
 DrawnFrom read_drawn_from(const YAML::Node& n, const std::string& file) {
   if (!n.IsMap())
     fail_at(n, file, "drawn_from", "expected a mapping {set, fingerprint, student, draw}");
-  for (auto it = n.begin(); it != n.end(); ++it) {
-    const std::string key = it->first.as<std::string>();
-    if (key != "set" && key != "fingerprint" && key != "student" && key != "draw")
-      fail_at(it->first, file, "drawn_from." + key,
-              "unknown field (expected set, fingerprint, student, draw)");
-  }
+  check_keys(n, {"set", "fingerprint", "student", "draw"}, file, "drawn_from");
   DrawnFrom d;
   d.set = n["set"].IsDefined() ? read_string(n["set"], file, "drawn_from.set") : "";
   if (!n["fingerprint"].IsDefined())
