@@ -6,6 +6,7 @@
 #include "app/set_files.hpp"
 #include "batch/file_names.hpp"
 #include "solver/problem/solve_set.hpp"
+#include "solver/problem/unstated_givens.hpp"
 #include "solver/problem/variants.hpp"
 
 namespace frustum::app {
@@ -34,6 +35,8 @@ int run_check(const std::string& path, const Output& o) {
     }
     // Ids a student may take for each other (not errors: every export keeps both).
     for (const Diagnostic& d : look_alike_problem_ids(set)) o.out << d.format() << "\n";
+    // Givens the text never states (warnings: the set still solves and grades).
+    for (const Diagnostic& d : unstated_given_warnings(set)) o.out << d.format() << "\n";
     if (here == 0)
       o.out << file << ": " << set.problems.size() << " problem"
             << (set.problems.size() == 1 ? "" : "s") << ", no errors\n";

@@ -33,7 +33,7 @@ struct Output {
 // Exit status: 0 all good, 1 some problem or answer had an error (the rest is still printed).
 int run_solve(const std::string& set, const std::optional<std::string>& id, Format format,
               const Output& o, std::optional<Precision> precision = std::nullopt,
-              Lang lang = Lang::En);
+              std::optional<Lang> lang = std::nullopt);
 int run_check(const std::string& set, const Output& o);
 // frustum grade (app/grade_command.cpp): `answers` is one answers file, a directory of them, or
 // a CSV roster (a batch, written under out_dir).
@@ -41,11 +41,11 @@ struct GradeOptions {
   std::string set;
   std::string answers;
   Format format = Format::Text;
-  Lang lang = Lang::En;
-  std::optional<std::string> out_dir;       // batch outputs (default "grades")
-  double timeout = 10;                      // seconds per submission in a batch
-  std::size_t jobs = 0;                     // batch: child processes at once (0: one per core)
-  std::optional<std::string> gradescope;    // single: results.json
+  std::optional<Lang> lang;               // --lang; none: the set's own (`lang:`), set by run_grade
+  std::optional<std::string> out_dir;     // batch outputs (default "grades")
+  double timeout = 10;                    // seconds per submission in a batch
+  std::size_t jobs = 0;                   // batch: child processes at once (0: one per core)
+  std::optional<std::string> gradescope;  // single: results.json
   std::optional<std::string> prairielearn;  // single: PrairieLearn's external-grader results.json
   std::optional<std::string> html;          // single: feedback page
   std::optional<std::string> markdown;      // single: feedback Markdown
@@ -66,7 +66,7 @@ struct GenerateCommand {
   std::size_t jobs = 0;  // worker processes drawing --count or --roster variants (0: one per core)
   std::string out_dir = ".";
   std::string format = "yaml";  // also latex (exam sheets + answer key) or pdf (compiled)
-  Lang lang = Lang::En;         // the exam sheets' texts (the set's own where not given)
+  std::optional<Lang> lang;     // the exam sheets' texts (none: the set's own `lang:`)
 };
 int run_generate(const GenerateCommand& options, const Output& o);
 
@@ -82,7 +82,7 @@ struct ExportOptions {
   std::string assignment = "Frustum";  // the gradebook column
   bool sis_login = false;              // canvas-grades: ids are SIS Login IDs
   std::string image = "frustum-prairielearn";
-  Lang lang = Lang::En;  // the questions' texts (the set's own where not given)
+  std::optional<Lang> lang;  // the questions' texts (none: the set's own `lang:`)
 };
 int run_export(const ExportOptions& options, const Output& o);
 

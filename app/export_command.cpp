@@ -48,6 +48,7 @@ std::string ident_of(const std::string& stem) { return "frustum_" + file_name_fo
 int export_set(const ExportOptions& e, const Output& o) {
   const YamlDocument doc = load_yaml_file(e.input);
   const ProblemSet set = load_problem_set(doc, e.input);
+  const Lang lang = e.lang.value_or(set.lang);  // without --lang: the set's own
   if (!set.all_errors().empty()) {
     for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
     return 1;
@@ -73,18 +74,18 @@ int export_set(const ExportOptions& e, const Output& o) {
     return 1;
   }
   const std::string stem = fs::path(e.input).stem().string();
-  const std::string title = set.title.empty() ? stem : set.title.in(e.lang);
+  const std::string title = set.title.empty() ? stem : set.title.in(lang);
   std::map<std::string, std::string> files;  // path under e.out → contents
   if (e.format == "prairielearn") {
     PrairieLearnOptions options;
     options.image = e.image;
-    options.lang = e.lang;
+    options.lang = lang;
     for (const auto& [dir, content] : export_prairielearn(doc.root, set, variants, stem, options))
       for (const auto& [name, text] : content) files[dir + "/" + name] = text;
   } else {
     std::vector<QuizVariant> quiz;
     for (std::size_t i = 0; i < variants.size(); ++i)
-      quiz.push_back({names[i], quiz_questions(variants[i], e.lang)});
+      quiz.push_back({names[i], quiz_questions(variants[i], lang)});
     for (const QuizQuestion& q : quiz.front().questions)
       for (const std::string& l : q.left_out)
         o.err << "note: " << q.id << "." << l << " (left to frustum grade)\n";
@@ -137,7 +138,7 @@ int run_export(const ExportOptions& e, const Output& o) {
 
 Command add_export_command(CLI::App& cli) {
   auto opt = std::make_shared<ExportOptions>();
-  auto lang = std::make_shared<std::string>("en");
+  auto lang = std::make_shared<std::string>();  // empty: the set's own
   auto* exp = cli.add_subcommand("export",
                                  "A set as PrairieLearn questions, Canvas QTI or Moodle XML; a "
                                  "gradebook for Canvas or Moodle");
@@ -162,7 +163,9 @@ Command add_export_command(CLI::App& cli) {
                 "canvas-grades: the student ids are SIS Login IDs (default SIS User IDs)");
   exp->add_option("--image", opt->image,
                   "prairielearn: the grader image (default frustum-prairielearn)");
-  exp->add_option("--lang", *lang, "Language of the questions' texts: en, ja or ru")
+  exp->add_option(
+         "--lang", *lang,
+         "Language of the questions' texts: en, ja or ru (default: the set's own, its lang:)")
       ->check(language_check());
   exp->footer(examples(
       {"frustum export prairielearn SET.yaml --count 20 -o course/questions/",
@@ -176,7 +179,7 @@ Command add_export_command(CLI::App& cli) {
               o.err << "export " << opt->format << ": give -o OUT\n";
               return 2;
             }
-            opt->lang = *parse_lang(*lang);
+            opt->lang = parse_lang(*lang);
             return run_export(*opt, o);
           }};
 }

@@ -93,11 +93,12 @@ int write_paper(const GenerateCommand& g, const ProblemSet& set, const std::vect
   for (const Named& v : variants)
     if (v.variant.all_errors().empty()) sheets.push_back({v.student, v.variant});
   const std::string stem = fs::path(g.set).stem().string();
-  const std::string title = set.title.empty() ? stem : set.title.in(g.lang);
+  const Lang lang = g.lang.value_or(set.lang);  // without --lang: the set's own
+  const std::string title = set.title.empty() ? stem : set.title.in(lang);
   int status = 0;
   for (const auto& [name, text] :
-       {std::pair{stem + "-exams", exam_sheets_latex(sheets, title, g.lang)},
-        std::pair{stem + "-key", answer_key_latex(sheets, title, g.lang)}}) {
+       {std::pair{stem + "-exams", exam_sheets_latex(sheets, title, lang)},
+        std::pair{stem + "-key", answer_key_latex(sheets, title, lang)}}) {
     const std::string tex = (fs::path(g.out_dir) / (name + ".tex")).string();
     try {
       write_file_atomically(tex, text);
@@ -520,7 +521,7 @@ int run_generate(const GenerateCommand& g, const Output& o) {
 
 Command add_generate_command(CLI::App& cli) {
   auto opt = std::make_shared<GenerateCommand>();
-  auto lang = std::make_shared<std::string>("en");
+  auto lang = std::make_shared<std::string>();  // empty: the set's own
   auto* generate =
       cli.add_subcommand("generate", "Per-student or seeded variants of a set, with answer keys");
   generate->add_option("set", opt->set, "Problem set (YAML)")->required()->check(CLI::ExistingFile);
@@ -551,7 +552,9 @@ Command add_generate_command(CLI::App& cli) {
           "yaml (default: sets and keys), latex or pdf (also exam sheets and the answer key)")
       ->check(CLI::IsMember({"yaml", "latex", "pdf"}));
   generate
-      ->add_option("--lang", *lang, "latex, pdf: language of the exam sheets' texts: en, ja or ru")
+      ->add_option(
+          "--lang", *lang,
+          "latex, pdf: language of the exam sheets' texts: en, ja or ru (default: the set's own)")
       ->check(language_check());
   generate->footer(examples(
       {"frustum generate SET.yaml --roster roster.csv -o variants/",
@@ -563,7 +566,7 @@ Command add_generate_command(CLI::App& cli) {
               o.err << "generate: give --student ID, --roster FILE or --seed N [--count K]\n";
               return 2;
             }
-            opt->lang = *parse_lang(*lang);
+            opt->lang = parse_lang(*lang);
             return run_generate(*opt, o);
           }};
 }

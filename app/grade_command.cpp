@@ -73,7 +73,7 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
   options.out_dir = g.out_dir.value_or("grades");
   options.timeout_seconds = g.timeout;
   options.jobs = g.jobs;
-  options.lang = g.lang;
+  options.lang = *g.lang;
   std::optional<RosterVariants> roster;
   if (!read_class(set, g, o, roster)) return 1;
   const std::vector<std::string> shared = !g.roster && !g.variants && set_varies(set)
@@ -132,8 +132,11 @@ int run_batch(const ProblemSet& set, const GradeOptions& g, const Output& o) {
 
 }  // namespace
 
-int run_grade(const GradeOptions& g, const Output& o) {
-  const ProblemSet set = load_problem_set(g.set);
+int run_grade(const GradeOptions& given, const Output& o) {
+  const ProblemSet set = load_problem_set(given.set);
+  // Without --lang the feedback is in the set's own language (`lang:`).
+  GradeOptions g = given;
+  g.lang = given.lang.value_or(set.lang);
   std::error_code ec;
   const bool batch = std::filesystem::is_directory(g.answers, ec) ||
                      std::filesystem::path(g.answers).extension() == ".csv";
@@ -160,15 +163,15 @@ int run_grade(const GradeOptions& g, const Output& o) {
     for (const Diagnostic& d : submission.errors)
       o.err << "error: " << terminal_text(d.format()) << " — nothing was graded\n";
   else
-    o.out << render_grade_text(report, TextStyle{o.color, g.lang});
+    o.out << render_grade_text(report, TextStyle{o.color, *g.lang});
   try {
     if (g.gradescope)
-      write_file_atomically(*g.gradescope, json_text(gradescope_results(report, g.lang)) + "\n");
+      write_file_atomically(*g.gradescope, json_text(gradescope_results(report, *g.lang)) + "\n");
     if (g.prairielearn)
       write_file_atomically(*g.prairielearn,
-                            json_text(prairielearn_results(report, g.lang)) + "\n");
-    if (g.html) write_file_atomically(*g.html, render_feedback_html(report, g.lang));
-    if (g.markdown) write_file_atomically(*g.markdown, render_feedback_markdown(report, g.lang));
+                            json_text(prairielearn_results(report, *g.lang)) + "\n");
+    if (g.html) write_file_atomically(*g.html, render_feedback_html(report, *g.lang));
+    if (g.markdown) write_file_atomically(*g.markdown, render_feedback_markdown(report, *g.lang));
   } catch (const std::exception& e) {
     o.err << "error: " << e.what() << "\n";
     return 1;
@@ -180,7 +183,7 @@ int run_grade(const GradeOptions& g, const Output& o) {
 
 Command add_grade_command(CLI::App& cli) {
   auto opt = std::make_shared<GradeOptions>();
-  auto lang = std::make_shared<std::string>("en");
+  auto lang = std::make_shared<std::string>();  // empty: the set's own
   auto* grade =
       cli.add_subcommand("grade", "Grade a student's answers, or a class, against a problem set");
   grade->add_option("set", opt->set, "Problem set (YAML)")->required()->check(CLI::ExistingFile);
@@ -193,7 +196,9 @@ Command add_grade_command(CLI::App& cli) {
   grade->add_option("--format", opt->format, "Output: text (default) or json")
       ->type_name("FORMAT")
       ->transform(choice<Format>({{"text", Format::Text}, {"json", Format::Json}}));
-  grade->add_option("--lang", *lang, "Language of the feedback: en, ja or ru")
+  grade
+      ->add_option("--lang", *lang,
+                   "Language of the feedback: en, ja or ru (default: the set's own, its lang:)")
       ->check(language_check());
   grade->add_option(
       "-o,--out", opt->out_dir,
@@ -235,7 +240,7 @@ Command add_grade_command(CLI::App& cli) {
        "frustum grade SET.yaml ANSWERS.yaml --gradescope results.json --lang ja"}));
 
   return {grade, [opt, lang](const Output& o) {
-            opt->lang = *parse_lang(*lang);
+            opt->lang = parse_lang(*lang);
             return run_grade(*opt, o);
           }};
 }

@@ -25,7 +25,7 @@ bool failed(const SetResult& r) {
 }  // namespace
 
 int run_solve(const std::string& path, const std::optional<std::string>& id, Format format,
-              const Output& o, std::optional<Precision> precision, Lang lang) {
+              const Output& o, std::optional<Precision> precision, std::optional<Lang> reading) {
   const std::vector<std::string> files = set_files(path);
   if (files.empty()) {
     o.err << path << ": no problem sets (*.yaml) here\n";
@@ -34,8 +34,11 @@ int run_solve(const std::string& path, const std::optional<std::string>& id, For
   bool any_failed = false;
   nlohmann::ordered_json sets = nlohmann::ordered_json::array();
   for (const std::string& file : files) {
-    const SetResult result = precision ? solve_set(load_problem_set(file), true, id, *precision)
-                                       : solve_set(load_problem_set(file), true, id);
+    const ProblemSet set = load_problem_set(file);
+    const SetResult result =
+        precision ? solve_set(set, true, id, *precision) : solve_set(set, true, id);
+    // Without --lang each set is read in its own language (`lang:`).
+    const Lang lang = reading.value_or(set.lang);
     any_failed = any_failed || failed(result);
     switch (format) {
       case Format::Json:
@@ -70,7 +73,7 @@ Command add_solve_command(CLI::App& cli) {
     std::optional<std::string> id;
     Format format = Format::Text;
     std::optional<Precision> precision;
-    std::string lang = "en";
+    std::string lang;  // empty: each set's own
   };
   auto opt = std::make_shared<Options>();
   auto* solve = cli.add_subcommand("solve", "Solve a problem set, with derivations");
@@ -102,11 +105,11 @@ Command add_solve_command(CLI::App& cli) {
   solve
       ->add_option("--lang", opt->lang,
                    "Language of the derivations and of the problems' texts (where the set gives "
-                   "it): en, ja or ru")
+                   "it): en, ja or ru (default: the set's own, its lang:)")
       ->check(language_check());
   return {solve, [opt](const Output& o) {
             return run_solve(opt->set, opt->id, opt->format, o, opt->precision,
-                             *parse_lang(opt->lang));
+                             parse_lang(opt->lang));
           }};
 }
 

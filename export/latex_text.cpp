@@ -65,28 +65,6 @@ const std::map<char32_t, const char*>& unicode_latex() {
   return table;
 }
 
-// Decodes one UTF-8 character at s[i], advancing i; invalid bytes give U+FFFD.
-char32_t next(std::string_view s, std::size_t& i) {
-  const unsigned char c = static_cast<unsigned char>(s[i]);
-  const int n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
-  if (n == 0 || i + static_cast<std::size_t>(n) > s.size()) {
-    ++i;
-    return 0xFFFD;
-  }
-  char32_t cp = n == 1 ? c : c & (0x3F >> (n - 1));
-  for (int k = 1; k < n; ++k)
-    cp = (cp << 6) | (static_cast<unsigned char>(s[i + static_cast<std::size_t>(k)]) & 0x3F);
-  i += static_cast<std::size_t>(n);
-  return cp;
-}
-
-bool is_cyrillic(char32_t c) { return c >= 0x0400 && c <= 0x04FF; }
-
-bool is_cjk(char32_t c) {
-  return (c >= 0x3000 && c <= 0x30FF) || (c >= 0x3400 && c <= 0x9FFF) ||
-         (c >= 0xFF00 && c <= 0xFFEF) || (c >= 0xF900 && c <= 0xFAFF);
-}
-
 // Non-ASCII characters: kept when the preamble declares them (or CJK under LuaLaTeX), else
 // shown as their code point (\unknownchar{2A01} prints [U+2A01]) so nothing vanishes unseen.
 void append_unicode(std::string& out, std::string_view s, std::size_t start, std::size_t end,
@@ -99,23 +77,11 @@ void append_unicode(std::string& out, std::string_view s, std::size_t start, std
 
 }  // namespace
 
-bool has_cjk(std::string_view text) {
-  for (std::size_t i = 0; i < text.size();)
-    if (is_cjk(next(text, i))) return true;
-  return false;
-}
-
-bool has_cyrillic(std::string_view text) {
-  for (std::size_t i = 0; i < text.size();)
-    if (is_cyrillic(next(text, i))) return true;
-  return false;
-}
-
 std::string latex_prose(std::string_view text) {
   std::string out;
   for (std::size_t i = 0; i < text.size();) {
     const std::size_t start = i;
-    const char32_t cp = next(text, i);
+    const char32_t cp = next_code_point(text, i);
     switch (cp) {
       case '\\':
         out += "\\textbackslash{}";
@@ -167,7 +133,7 @@ std::string latex_math(std::string_view latex) {
   std::string out;
   for (std::size_t i = 0; i < latex.size();) {
     const std::size_t start = i;
-    const char32_t cp = next(latex, i);
+    const char32_t cp = next_code_point(latex, i);
     if (cp < 0x80)
       out += static_cast<char>(cp);
     else

@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "solver/util/scripts.hpp"  // has_cjk, has_cyrillic: which preamble
+
 namespace frustum {
 
 // Prose: \ { } $ & # ^ _ % ~ escaped.
@@ -18,9 +20,5 @@ std::string latex_math(std::string_view latex);
 // LuaLaTeX — with luatexja when `cjk` (texlive-lang-japanese), with fontspec and DejaVu (which
 // has Cyrillic) when `cyrillic`. A LuaLaTeX preamble's first line starts "% LuaLaTeX".
 std::string latex_preamble(bool cjk, bool cyrillic = false);
-// Whether the text holds Chinese or Japanese characters (kana, CJK ideographs, full-width forms).
-bool has_cjk(std::string_view text);
-// Whether the text holds Cyrillic letters (U+0400–U+04FF).
-bool has_cyrillic(std::string_view text);
 
 }  // namespace frustum

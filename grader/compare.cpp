@@ -35,8 +35,12 @@ std::string_view to_string(Verdict v) {
 
 namespace {
 
-Comparison correct(std::string why) { return {Verdict::Correct, 1.0, std::move(why), {}}; }
-Comparison incorrect(std::string why) { return {Verdict::Incorrect, 0.0, std::move(why), {}}; }
+Comparison correct(std::string why) {
+  return {Verdict::Correct, 1.0, std::move(why), {}, false, {}};
+}
+Comparison incorrect(std::string why) {
+  return {Verdict::Incorrect, 0.0, std::move(why), {}, false, {}};
+}
 
 bool exactly_equal(const Value& a, const Value& b) {
   if (a.exact.empty() || b.exact.empty() || a.exact.size() != b.exact.size()) return false;
@@ -183,6 +187,17 @@ Multiple multiple_of(const Value& expected, const Value& got, const AnswerRules&
   return k > 0 ? Multiple::Positive : Multiple::Negative;
 }
 
+// ‖v‖ of a vector answer: from its doubles, or from its exact components when a double
+// overflowed (1e200 squared).
+double length_of(const Value& v) {
+  double sum = 0;
+  for (const double x : v.numbers) sum += x * x;
+  if (std::isfinite(sum) || v.exact.empty()) return std::sqrt(sum);
+  Exact exact_sum = 0;
+  for (const Exact& x : v.exact) exact_sum += x * x;
+  return std::sqrt(to_double(canonical(exact_sum)));
+}
+
 bool purely_linear(const Value& m) {
   if (m.shape != Value::Shape::Matrix || m.rows != m.cols || m.rows < 3) return false;
   const std::size_t n = static_cast<std::size_t>(m.rows);
@@ -271,6 +286,8 @@ std::optional<Comparison> component_credit(const Value& expected, const Value& g
   return Comparison{Verdict::Partial,
                     static_cast<double>(right) / static_cast<double>(counted),
                     std::move(feedback),
+                    {},
+                    false,
                     {}};
 }
 
@@ -373,13 +390,16 @@ Comparison compare_components(const Value& expected, const Value& got, const Ans
   if (kind == AnswerKind::Point && multiple_of(expected, got, r) == Multiple::Positive)
     return correct("the same homogeneous point (a positive multiple)");
   if (kind == AnswerKind::UnitVector) {
-    double k = 0;
-    const Multiple m = multiple_of(expected, got, r, &k);
-    if (m == Multiple::Positive)
-      return incorrect(
+    const Multiple m = multiple_of(expected, got, r);
+    if (m == Multiple::Positive) {
+      // The student's own length (multiple_of's ratio is taken between rescaled vectors).
+      Comparison c = incorrect(
           fmt::format("the direction is right but the length is {} — a unit vector has length 1 "
                       "(divide by the length)",
-                      format_approx(std::abs(k))));
+                      format_approx(length_of(got))));
+      c.mistake = "not normalised";
+      return c;
+    }
     if (m == Multiple::Negative) return incorrect("it points the opposite way");
   }
   if (auto c = trivial_match(expected, got, judge, r)) return *c;
@@ -426,6 +446,8 @@ std::optional<Comparison> unreadable_list(const std::vector<std::string>& items,
                         : fmt::format("cannot read {} as an item of this list: write the items "
                                       "separated by commas, spaces or arrows",
                                       item),
+                    {},
+                    false,
                     {}};
 }
 
@@ -492,6 +514,8 @@ Comparison compare_word_map(const Value& expected, const Value& got, const Answe
                         "credit counts the entries beyond that.",
                         right, total, best_word, best_constant) +
                 notes,
+            {},
+            false,
             {}};
   if (right == 0) return incorrect(notes.empty() ? "" : notes.substr(1));
   return incorrect(
@@ -670,6 +694,8 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
         return {Verdict::Partial,
                 static_cast<double>(common) / static_cast<double>(std::max(a.size(), b.size())),
                 counted,
+                {},
+                false,
                 {}};
       return incorrect(copies == 0 ? "" : counted);
     }

@@ -206,7 +206,7 @@ class ProblemGrader {
       for (const AlsoRight& a : judging_.also_right)
         if (a.answer == name &&
             compare(a.value, *ag.got, rules(name, false)).verdict == Verdict::Correct) {
-          c = Comparison{Verdict::Correct, 1.0, a.why, {}};
+          c = Comparison{Verdict::Correct, 1.0, a.why, {}, false, {}};
           break;
         }
     ag.verdict = c.verdict;
@@ -215,6 +215,7 @@ class ProblemGrader {
     whole_trivial_ = c.no_work && ag.verdict != Verdict::Correct;
     if (!c.trivial.empty()) ag.misconception = c.trivial;
     if (ag.verdict == Verdict::Correct) return;
+    if (!c.mistake.empty()) ag.misconception = c.mistake;
     if (c.trivial.empty()) diagnose(ag);
     // A named mistake as a whole earns no component credit: it is what the question tests.
     if (!ag.misconception.empty() && ag.verdict == Verdict::Partial) {

@@ -54,7 +54,10 @@ struct GradeReport {
   std::string set_file;
   std::string answers_file;
   std::string student;
-  std::string variant;  // which generated variant was graded, when the set varies per student
+  // Which generated variant was graded, when the set varies per student: the instructor's note
+  // (terminal and JSON reports, the gradebook); feedback a student reads leaves it out, since it
+  // names the instructor's files.
+  std::string variant;
   double score = 0;
   double max_score = 0;
   std::vector<ProblemGrade> problems;

@@ -95,7 +95,7 @@ StatementChoice from_tokens(const std::vector<std::string>& tokens) {
 }
 
 Comparison judged(Verdict v, double credit, std::string why) {
-  return {v, credit, std::move(why), {}};
+  return {v, credit, std::move(why), {}, false, {}};
 }
 
 // The index of statement `number` (as read) among n, or nothing when there is no such statement.

@@ -43,13 +43,14 @@ ol.steps li { margin: .4rem 0; } .note { color: #555; font-size: .95em; } .warni
 .error { color: #c4262e; font-family: monospace; }
 )CSS";
 
-// Counts the verdicts shown and writes the summary line: the page works without it, and a
-// browser test sees that the page was rendered and its script ran.
+// Counts the verdicts shown and writes the summary line in the page's language (each row's
+// data-word): the page works without it, and a browser test sees that the page was rendered
+// and its script ran.
 const char* kScript = R"JS(
 (function () {
   var rows = document.querySelectorAll('tr[data-verdict]');
   var counts = {};
-  rows.forEach(function (r) { var v = r.getAttribute('data-verdict'); counts[v] = (counts[v] || 0) + 1; });
+  rows.forEach(function (r) { var v = r.getAttribute('data-word'); counts[v] = (counts[v] || 0) + 1; });
   var parts = Object.keys(counts).sort().map(function (k) { return k + ': ' + counts[k]; });
   document.getElementById('summary').textContent = parts.join(', ');
   document.body.setAttribute('data-rendered', 'yes');
@@ -149,10 +150,10 @@ std::string render_feedback_markdown(const GradeReport& r, Lang lang) {
 
 std::string render_feedback_markdown(const GradeReport& r, Lang lang,
                                      const std::vector<std::string>& problem_markdown) {
-  std::string out = fmt::format("# {} {}\n\n**{}: {} / {}**\n\n", tr("Student", lang),
-                                r.student.empty() ? "(unnamed)" : markdown_escape(r.student),
-                                tr("Score", lang), score_text(r.score), score_text(r.max_score));
-  if (!r.variant.empty()) out += markdown_escape(r.variant) + "\n\n";
+  std::string out =
+      fmt::format("# {} {}\n\n**{}: {} / {}**\n\n", tr("Student", lang),
+                  r.student.empty() ? tr("(unnamed)", lang) : markdown_escape(r.student),
+                  tr("Score", lang), score_text(r.score), score_text(r.max_score));
   for (const Diagnostic& d : r.errors)
     out += fmt::format("- {}: `{}`\n", tr("warning", lang), markdown_code(d.format()));
   if (!r.errors.empty()) out += "\n";
@@ -170,7 +171,7 @@ std::string render_feedback_html(const GradeReport& r, Lang lang) {
 }
 
 std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head) {
-  const std::string student = r.student.empty() ? "(unnamed)" : r.student;
+  const std::string student = r.student.empty() ? tr("(unnamed)", lang) : r.student;
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
@@ -180,7 +181,6 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
       "<h1>{} {}</h1>\n<p class=\"total\" id=\"total\">{}: {} / {}</p>\n<p id=\"summary\"></p>\n",
       html_escape(tr("Student", lang)), html_escape(student), html_escape(tr("Score", lang)),
       score_text(r.score), score_text(r.max_score));
-  if (!r.variant.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_escape(r.variant));
   for (const Diagnostic& d : r.errors)
     out += fmt::format("<p class=\"error\">{}: {}</p>\n", html_escape(tr("warning", lang)),
                        html_escape(d.format()));
@@ -202,12 +202,12 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
     for (const AnswerGrade& a : p.answers) {
       const std::string_view v = to_string(a.verdict);
       out += fmt::format(
-          "<tr class=\"{}\" data-verdict=\"{}\"><td><code>{}</code></td><td "
+          "<tr class=\"{}\" data-verdict=\"{}\" data-word=\"{}\"><td><code>{}</code></td><td "
           "class=\"verdict\">{}</td>"
           "<td>{} / {}</td><td class=\"math\">{}</td><td class=\"math\">{}</td></tr>\n",
-          v, v, html_escape(a.name), html_escape(verdict_word(a.verdict, lang)),
-          score_text(a.score), score_text(a.max_score), html_escape(got_shown(a)),
-          html_math(a.expected.shown(), lang, false));
+          v, v, html_escape(verdict_word(a.verdict, lang)), html_escape(a.name),
+          html_escape(verdict_word(a.verdict, lang)), score_text(a.score), score_text(a.max_score),
+          html_escape(got_shown(a)), html_math(a.expected.shown(), lang, false));
     }
     out += "</table>\n";
     for (const AnswerGrade& a : p.answers) {

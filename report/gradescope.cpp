@@ -17,7 +17,6 @@ json gradescope_results(const GradeReport& r, const std::vector<std::string>& pr
   json j;
   j["score"] = number_json(r.score);
   std::string summary = fmt::format("{} / {}", r.score, r.max_score);
-  if (!r.variant.empty()) summary += "\n\n" + markdown_escape(r.variant);
   for (const Diagnostic& d : r.errors) summary += "\n\n- `" + markdown_code(d.format()) + "`";
   j["output"] = summary;
   j["output_format"] = "md";

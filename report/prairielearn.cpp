@@ -28,8 +28,7 @@ json prairielearn_results(const GradeReport& r, Lang lang) {
   }
   j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
   j["message"] =
-      fmt::format("{} / {}", number_json(r.score).dump(), number_json(r.max_score).dump()) +
-      (r.variant.empty() ? "" : " — " + visible_text(r.variant));
+      fmt::format("{} / {}", number_json(r.score).dump(), number_json(r.max_score).dump());
   json tests = json::array();
   for (const ProblemGrade& p : r.problems) {
     json t;

@@ -70,7 +70,7 @@ std::string score_text(double v) {
 std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
   const Lang lang = style.lang;
   std::string out = fmt::format("{} {}: {} / {}\n", tr("Student", lang),
-                                r.student.empty() ? "(unnamed)" : visible_text(r.student),
+                                r.student.empty() ? tr("(unnamed)", lang) : visible_text(r.student),
                                 score_text(r.score), score_text(r.max_score));
   if (!r.variant.empty()) out += "  " + visible_text(r.variant) + "\n";
   for (const Diagnostic& d : r.errors)

@@ -402,5 +402,57 @@ TEST(Cli, ProblemTextsInTheChosenLanguage) {
   EXPECT_EQ(exam.find("Back-face culling"), std::string::npos);
 }
 
+// A set that declares `lang: ja` is read in Japanese without --lang: the derivation, the
+// feedback and the exam sheets; --lang en still chooses English.
+TEST(Cli, ASetIsReadInItsOwnLanguageWithoutLang) {
+  const std::string seed003 = seed("003_polygons_backface.yaml");
+  const CliRun solved = stdout_of("solve " + seed003 + " --format json");
+  EXPECT_NE(solved.out.find("\"text\": \"次の記述のうち正しいものを選べ.\""), std::string::npos)
+      << solved.out.substr(0, 2000);
+  const CliRun english = stdout_of("solve " + seed003 + " --lang en --format json");
+  EXPECT_EQ(english.out.find("\"text\": \"次の記述のうち正しいものを選べ.\""), std::string::npos);
+  const CliRun graded =
+      stdout_of("grade " + seed003 + " " +
+                test::source_path("problems/seeds/answers/003_polygons_backface.yaml"));
+  EXPECT_EQ(graded.status, 0) << graded.out;
+  EXPECT_EQ(graded.out.find("Student "), std::string::npos) << graded.out;
+  const std::string dir = ::testing::TempDir() + "frustum_cli_own_lang";
+  std::filesystem::create_directories(dir);
+  ASSERT_EQ(run("generate " + seed003 + " --seed 3 --format latex -o " + dir).status, 0);
+  const std::string exam = test::read_file(dir + "/003_polygons_backface-exams.tex");
+  EXPECT_NE(exam.find("凹多面体を描画する場合はバックフェースカリングを使うべきではない."),
+            std::string::npos);
+}
+
+// `check` warns (exit status 0: the set solves) when a problem's text never states a given the
+// answers are computed from, naming the field at its line; a text that states it — literally
+// or by placeholder — gets no warning.
+TEST(Cli, CheckWarnsWhenATextNeverStatesAGiven) {
+  const std::string dir = ::testing::TempDir() + "frustum_cli_unstated";
+  std::filesystem::create_directories(dir);
+  const std::string silent = dir + "/silent.yaml";
+  std::ofstream(silent) << "problems:\n  - id: t\n    kind: transform\n"
+                           "    text: \"Apply the 2-D translation to the point (1, 2).\"\n"
+                           "    given: {dim: 2, steps: [{translate: [3, 4]}], points: [[1, 2]]}\n";
+  const CliRun warned = stdout_of("check " + silent);
+  EXPECT_EQ(warned.status, 0) << warned.out;
+  EXPECT_NE(warned.out.find("silent.yaml:5:21: problems[0].given.steps: warning: problem t: its "
+                            "text never states steps"),
+            std::string::npos)
+      << warned.out;
+  EXPECT_EQ(warned.out.find("given.points"), std::string::npos) << warned.out;
+  EXPECT_EQ(warned.out.find("given.dim"), std::string::npos) << warned.out;
+  const std::string stated = dir + "/stated.yaml";
+  std::ofstream(stated) << "problems:\n  - id: t\n    kind: transform\n"
+                           "    text: \"Translate the point (1, 2) by (3, 4).\"\n"
+                           "    given: {dim: 2, steps: [{translate: [3, 4]}], points: [[1, 2]]}\n";
+  EXPECT_EQ(stdout_of("check " + stated).out.find("warning"), std::string::npos);
+  // The bundled sets state what they ask.
+  for (const char* bundled : {"problems/seeds", "problems/examples"}) {
+    const CliRun r = stdout_of("check " + test::source_path(bundled));
+    EXPECT_EQ(r.out.find("never states"), std::string::npos) << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace frustum

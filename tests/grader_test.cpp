@@ -84,7 +84,16 @@ TEST(Grader, ReversedNormalIsIncorrectWithFeedback) {
   EXPECT_NE(n.feedback.find("opposite"), std::string::npos);
   const AnswerGrade& u = answer(r, "zbuf-pixel", "unit_normal");
   EXPECT_EQ(u.verdict, Verdict::Incorrect);
-  EXPECT_NE(u.feedback.find("length"), std::string::npos);
+  // Its own length, 9√3 ≈ 15.59 (not a ratio between rescaled vectors), and the mistake named.
+  EXPECT_NE(u.feedback.find("the length is 15.59"), std::string::npos) << u.feedback;
+  EXPECT_EQ(u.misconception, "unnormalised normal") << "n itself: the kind's own mistake";
+  // Every positive multiple is told its own length: 1/10 of the unit normal has length 0.1.
+  const AnswerGrade tenth =
+      answer(grade_answers("answers:\n  zbuf-pixel: {unit_normal: [\"sqrt(3)/30\", \"sqrt(3)/30\", "
+                           "\"-sqrt(3)/30\"]}\n"),
+             "zbuf-pixel", "unit_normal");
+  EXPECT_NE(tenth.feedback.find("the length is 0.1 "), std::string::npos) << tenth.feedback;
+  EXPECT_EQ(tenth.misconception, "not normalised");
 }
 
 TEST(Grader, ToleranceIsRelativeOneInAThousand) {

@@ -4,6 +4,8 @@
 // fails for a long, thin polygon; seed 004's v′ = (P·V·M)·v is one problem.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "grader/grade.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/generate.hpp"
@@ -164,11 +166,113 @@ TEST(LectureExercises, CourseConventionForOrthoZPlanesIsHonoured) {
   const ProblemSet plain = load_problem_set_from_string(yaml, "plain.yaml");
   const SolvedSet plain_key = solve_for_grading(plain);
   EXPECT_NEAR(plain_key.results.at(0).answers.find("matrix")->numbers[10], -1.0 / 495, 1e-15);
-  EXPECT_NE(grade(plain, load_submission_from_string(answers, "a.yaml"), &plain_key)
-                .problems.at(0)
-                .answers.at(0)
-                .verdict,
-            Verdict::Correct);
+  const AnswerGrade coordinates =
+      grade(plain, load_submission_from_string(answers, "a.yaml"), &plain_key)
+          .problems.at(0)
+          .answers.at(0);
+  EXPECT_NE(coordinates.verdict, Verdict::Correct);
+  EXPECT_EQ(coordinates.misconception, "z_min, z_max read as coordinates")
+      << "the feedback says what the student did: +2/(f − n), not the planes' −n, −f";
+}
+
+// The lecture's 9.12 derives ortho(x_min, …, z_max) with z_min ↦ −1, z_max ↦ +1 (+2/(z_max −
+// z_min) in the z row): the bundled problem declares that form, so the lecture's own matrix is
+// the key, and glOrtho's form is named for what it is.
+TEST(LectureExercises, TheLecturesOrthoMatrixIsTheKeyOfItsProblem) {
+  const ProblemSet seed =
+      load_problem_set(test::source_path("problems/seeds/000_projection_and_hidden_surfaces.yaml"));
+  const SolvedSet key = solve_for_grading(seed);
+  std::size_t index = 0;
+  while (index < seed.problems.size() && seed.problems[index].id != "seed000-ortho-matrix") ++index;
+  ASSERT_LT(index, seed.problems.size());
+  const Value* m = key.results.at(index).answers.find("matrix");
+  ASSERT_TRUE(m);
+  EXPECT_NEAR(m->numbers[10], 1.0 / 495, 1e-15);
+  EXPECT_NEAR(m->numbers[11], -101.0 / 99, 1e-12);
+  const auto grade_matrix = [&](const std::string& z_row) {
+    const std::string answers =
+        "student: s\nanswers:\n  seed000-ortho-matrix:\n    matrix: [[0.01, 0, 0, 0], [0, 0.01, "
+        "0, 0], " +
+        z_row + ", [0, 0, 0, 1]]\n";
+    for (const ProblemGrade& p :
+         grade(seed, load_submission_from_string(answers, "a.yaml"), &key).problems)
+      if (p.id == "seed000-ortho-matrix") return p.answers.at(0);
+    return AnswerGrade{};
+  };
+  EXPECT_EQ(grade_matrix("[0, 0, \"1/495\", \"-101/99\"]").verdict, Verdict::Correct);
+  const AnswerGrade gl = grade_matrix("[0, 0, \"-1/495\", \"-101/99\"]");
+  EXPECT_NE(gl.verdict, Verdict::Correct);
+  EXPECT_EQ(gl.misconception, "near, far read as distances");
+}
+
+// θ = 90°, aspect 2, n = 1: perspective() gives t = 1, r = 2. The form −l = r = n·tan(θ/2),
+// −b = t = n·(w/h)·tan(θ/2) gives r = 1, t = 2 — neither reading of θ — and is named; the
+// derivation states both readings in neutral words.
+TEST(LectureExercises, TheAspectRatioOnTheTopIsNamedAndExplainedTruly) {
+  const std::string set =
+      test::one("projection_matrix", "{perspective: {fovy: 90, aspect: 2, near: 1, far: 10}}");
+  const ProblemSet course = load_problem_set_from_string(set, "a.yaml");
+  const SolvedSet key = solve_for_grading(course);
+  const auto grade_matrix = [&](const std::string& matrix) {
+    return grade(course,
+                 load_submission_from_string(
+                     "student: s\nanswers:\n  p:\n    matrix: " + matrix + "\n", "s.yaml"),
+                 &key)
+        .problems.at(0)
+        .answers.at(0);
+  };
+  EXPECT_EQ(
+      grade_matrix("[[0.5, 0, 0, 0], [0, 1, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]")
+          .verdict,
+      Verdict::Correct);
+  const AnswerGrade on_top =
+      grade_matrix("[[1, 0, 0, 0], [0, 0.5, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]");
+  EXPECT_NE(on_top.verdict, Verdict::Correct);
+  EXPECT_EQ(on_top.misconception, "aspect ratio on the top");
+  const ProblemResult solved = test::solve_yaml(set);
+  std::string notes;
+  for (const Step& s : solved.derivation.steps()) notes += s.note;
+  EXPECT_NE(notes.find("t = r·h/w = n·(h/w)·tan(θ/2)"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("matches neither reading of θ"), std::string::npos) << notes;
+  EXPECT_EQ(notes.find("reads θ as a horizontal angle"), std::string::npos)
+      << "putting w/h on t does not read θ as horizontal";
+  // With aspect 1 the form is the right one, so nothing is named after it.
+  const ProblemSet square = load_problem_set_from_string(
+      test::one("projection_matrix", "{perspective: {fovy: 90, aspect: 1, near: 1, far: 10}}"),
+      "b.yaml");
+  for (const Misconception& m :
+       builtin_kinds().find("projection_matrix")->misconceptions(square.problems[0].given))
+    EXPECT_NE(m.name, "aspect ratio on the top");
+}
+
+// Processing's perspective() with no arguments: fovy = 60°, aspect = width/height, cameraZ =
+// (height/2)/tan(30°), near = cameraZ/10, far = 10·cameraZ — for a 100×100 sketch n = 5√3,
+// f = 500√3, so the matrix has √3 on the diagonal and −101/99, −1000√3/99 in the z row.
+TEST(LectureExercises, PerspectiveWithNoArgumentsIsProcessingsDefault) {
+  const ProblemResult plain =
+      test::solve_yaml(test::one("projection_matrix", "{perspective: {}}", "{api: processing}"));
+  ASSERT_FALSE(plain.error) << test::error_text(plain);
+  const Value* m = plain.answers.find("matrix");
+  ASSERT_TRUE(m);
+  EXPECT_NEAR(m->numbers[0], std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(m->numbers[5], -std::sqrt(3.0), 1e-12) << "Processing negates the y row";
+  EXPECT_NEAR(m->numbers[10], -101.0 / 99, 1e-12);
+  EXPECT_NEAR(m->numbers[11], -1000 * std::sqrt(3.0) / 99, 1e-9);
+  bool defaults_shown = false;
+  for (const Step& s : plain.derivation.steps())
+    defaults_shown = defaults_shown || s.title == "perspective() with no arguments";
+  EXPECT_TRUE(defaults_shown);
+  const ProblemResult wide = test::solve_yaml(test::one(
+      "projection_matrix", "{perspective: {width: 200, height: 100}}", "{api: processing}"));
+  ASSERT_FALSE(wide.error) << test::error_text(wide);
+  EXPECT_NEAR(wide.answers.find("matrix")->numbers[0], std::sqrt(3.0) / 2, 1e-12)
+      << "aspect = width/height = 2 widens r";
+  const ProblemSet partial = load_problem_set_from_string(
+      test::one("projection_matrix", "{perspective: {width: 200, height: 100, fovy: 60}}"),
+      "c.yaml");
+  ASSERT_FALSE(partial.all_errors().empty());
+  EXPECT_NE(partial.all_errors()[0].format().find("perspective.fovy"), std::string::npos)
+      << partial.all_errors()[0].format();
 }
 
 // A course reading the field of view as horizontal declares `fov: horizontal` once: θ = 90°

@@ -93,7 +93,9 @@ TEST(Seed000, NearPlaneMapsToMinusOneDespiteTheProse) {
   EXPECT_TRUE(noted) << "the derivation notes, in neutral words, the prose that says otherwise";
 }
 
-TEST(Seed002, NormalizedViewVolumeMapsTheBackCornerToOne) {
+// (50, 50, 100) lies on the back plane z = z_max = 100, halfway from its centre to its corner
+// (100, 100, 100).
+TEST(Seed002, NormalizedViewVolumeMapsAPointOfTheBackPlaneToZOne) {
   const SetResult r = solve_seed("002_transforms_and_view_volume.yaml");
   const ProblemResult& p = problem(r, "seed002-view-volume");
   EXPECT_EQ(exact_text(p, "point"), "1/2, 1/2, 1");

@@ -2,6 +2,7 @@
 // words left in math mode) that KaTeX renders in strict mode.
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -120,6 +121,18 @@ TEST(Typeset, HtmlPageTypesetsInChromiumAndScreenshots) {
   std::filesystem::remove_all(dir);
 }
 
+// `tex` written to DIR/set.tex and compiled there with LuaLaTeX (its fonts cached in DIR/var):
+// the log and the exit status; DIR/set.pdf is the document.
+std::pair<std::string, int> lualatex(const std::filesystem::path& dir, const std::string& tex) {
+  std::ofstream((dir / "set.tex").string()) << tex;
+  std::filesystem::remove(dir / "set.pdf");
+  RunOptions in_dir;
+  in_dir.cwd = dir.string();
+  in_dir.environment = {"TEXMFVAR=" + (dir / "var").string()};
+  in_dir.seconds = 300;
+  return run({"lualatex", "-interaction=nonstopmode", "-halt-on-error", "set.tex"}, in_dir);
+}
+
 // `solve --format latex` compiles with Debian's LuaLaTeX for every seed set.
 TEST(Typeset, LatexDocumentsCompileWithLualatex) {
   ASSERT_TRUE(std::filesystem::exists("/usr/bin/lualatex"))
@@ -129,17 +142,42 @@ TEST(Typeset, LatexDocumentsCompileWithLualatex) {
   std::filesystem::create_directories(dir / "var");
   for (const std::string& file : test::bundled_sets()) {
     if (file.find("/seeds/") == std::string::npos) continue;
-    const std::string tex = (dir / "set.tex").string();
-    std::ofstream(tex) << render_latex(solve_set(load_problem_set(file), true));
-    std::filesystem::remove(dir / "set.pdf");
-    RunOptions in_dir;
-    in_dir.cwd = dir.string();
-    in_dir.environment = {"TEXMFVAR=" + (dir / "var").string()};
-    in_dir.seconds = 300;
-    const auto [log, status] =
-        run({"lualatex", "-interaction=nonstopmode", "-halt-on-error", "set.tex"}, in_dir);
+    const auto [log, status] = lualatex(dir, render_latex(solve_set(load_problem_set(file), true)));
     EXPECT_EQ(status, 0) << file << "\n" << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
     EXPECT_TRUE(std::filesystem::exists(dir / "set.pdf")) << file;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// `solve --format latex --lang ja|ru` prints its Japanese and Russian: the PDF's text (pdftotext)
+// holds the problem's own words, and LuaLaTeX reports no missing character.
+TEST(Typeset, JapaneseAndRussianLatexKeepTheirGlyphs) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("frustum-tex-lang-" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir / "var");
+  const std::pair<const char*, Lang> cases[] = {{"003_polygons_backface.yaml", Lang::Ja},
+                                                {"004_placing_and_projecting.yaml", Lang::Ru}};
+  for (const auto& [name, lang] : cases) {
+    const ProblemSet set =
+        load_problem_set(test::source_path(std::string("problems/seeds/") + name));
+    const auto [log, status] = lualatex(dir, render_latex(solve_set(set, true), lang));
+    ASSERT_EQ(status, 0) << name << "\n" << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
+    const std::string tex_log = test::read_file((dir / "set.log").string());
+    EXPECT_EQ(tex_log.find("Missing character"), std::string::npos) << name;
+    RunOptions in_dir;
+    in_dir.cwd = dir.string();
+    const auto [text, text_status] = run({"pdftotext", "-enc", "UTF-8", "set.pdf", "-"}, in_dir);
+    ASSERT_EQ(text_status, 0);
+    // The set's title in the reader's language, as typeset (a line break may split it).
+    const auto squeezed = [](std::string t) {
+      t.erase(std::remove_if(t.begin(), t.end(), [](char c) { return c == ' ' || c == '\n'; }),
+              t.end());
+      return t;
+    };
+    const std::string title = set.title.in(lang);
+    EXPECT_NE(squeezed(text).find(squeezed(title)), std::string::npos)
+        << name << ": " << title << "\n"
+        << text.substr(0, 600);
   }
   std::filesystem::remove_all(dir);
 }

@@ -9,6 +9,7 @@ namespace {
 constexpr Phrase kPhrases[] = {
     // Interface.
     {"Student", "学生", "Студент"},
+    {"(unnamed)", "(名前なし)", "(без имени)"},
     {"Source", "出典", "Источник"},
     {"Score", "得点", "Баллы"},
     // Exam sheets and answer keys on paper.
@@ -297,6 +298,7 @@ constexpr Phrase kPhrases[] = {
     // Misconceptions: their names and what they tell the student.
     {"reversed cross product", "外積の順序が逆", "обратный порядок векторного произведения"},
     {"unnormalised normal", "法線を正規化していない", "ненормированная нормаль"},
+    {"not normalised", "正規化していない", "не нормирован"},
     {"plane through the origin", "原点を通る平面", "плоскость через начало координат"},
     {"constant on the wrong side", "定数項の符号が逆", "свободный член не с той стороны"},
     {"missing perspective divide", "透視除算 (w による除算) の忘れ",
@@ -304,7 +306,40 @@ constexpr Phrase kPhrases[] = {
     {"degrees taken as radians", "度をラジアンとして計算", "градусы взяты как радианы"},
     {"fovx for fovy", "fovy の代わりに fovx", "fovx вместо fovy"},
     {"near/far sign", "near/far の符号", "знак near/far"},
+    {"z_min, z_max read as coordinates", "z_min, z_max を座標として読んだ",
+     "z_min, z_max прочитаны как координаты"},
+    {"near, far read as distances", "near, far を距離として読んだ",
+     "near, far прочитаны как расстояния"},
+    {"Your z row is +2/(f − n), −(f + n)/(f − n): it maps z = n to −1 and z = f to +1, reading "
+     "near and far as z coordinates. Here they are distances in front of an eye looking down −z "
+     "(glOrtho), so the z row is −2/(f − n), −(f + n)/(f − n).",
+     "あなたの z の行は +2/(f − n), −(f + n)/(f − n) で, z = n を −1 に, z = f を +1 "
+     "に写します. これは near と far を z 座標として読んだ形です. ここでは両者は −z "
+     "方向を向く視点の前方への距離 (glOrtho) なので, z の行は −2/(f − n), −(f + n)/(f − n) です.",
+     "Ваша строка z — +2/(f − n), −(f + n)/(f − n): она переводит z = n в −1 и z = f в +1, то есть "
+     "читает near и far как координаты z. Здесь это расстояния перед глазом, смотрящим вдоль −z "
+     "(glOrtho), поэтому строка z — −2/(f − n), −(f + n)/(f − n)."},
+    {"Your z row is glOrtho's −2/(f − n), −(f + n)/(f − n), which reads near and far as "
+     "distances in front of an eye looking down −z. Here z_min = n and z_max = f are z "
+     "coordinates mapped to −1 and +1, so the z row is +2/(f − n), −(f + n)/(f − n).",
+     "あなたの z の行は glOrtho の −2/(f − n), −(f + n)/(f − n) で, near と far を −z "
+     "方向を向く視点の前方への距離として読んでいます. ここでは z_min = n, z_max = f は −1 と +1 "
+     "に写る z 座標なので, z の行は +2/(f − n), −(f + n)/(f − n) です.",
+     "Ваша строка z — это −2/(f − n), −(f + n)/(f − n) из glOrtho: она читает near и far как "
+     "расстояния перед глазом, смотрящим вдоль −z. Здесь z_min = n и z_max = f — координаты z, "
+     "переходящие в −1 и +1, поэтому строка z — +2/(f − n), −(f + n)/(f − n)."},
     {"fovy for fovx", "fovx の代わりに fovy", "fovy вместо fovx"},
+    {"aspect ratio on the top", "アスペクト比を上端に掛けた",
+     "соотношение сторон умножено на верх"},
+    {"You used −l = r = n·tan(θ/2) and −b = t = n·(w/h)·tan(θ/2): the aspect ratio multiplies the "
+     "top. With r = n·tan(θ/2) the angle is horizontal and t = r·h/w; with θ vertical, "
+     "t = n·tan(θ/2) and r = t·w/h.",
+     "−l = r = n·tan(θ/2), −b = t = n·(w/h)·tan(θ/2) を使っています: アスペクト比が上端に"
+     "掛かっています. r = n·tan(θ/2) なら画角は水平方向で t = r·h/w, θ が垂直方向なら "
+     "t = n·tan(θ/2), r = t·w/h です.",
+     "Вы взяли −l = r = n·tan(θ/2) и −b = t = n·(w/h)·tan(θ/2): соотношение сторон умножает верх. "
+     "При r = n·tan(θ/2) угол горизонтальный и t = r·h/w; при вертикальном θ t = n·tan(θ/2) и "
+     "r = t·w/h."},
     {"You used the angle as the vertical field of view; here it is the horizontal one (fovx).",
      "画角を縦方向として使っています. ここでは横方向の画角 (fovx) です.",
      "Вы взяли угол как вертикальный угол обзора; здесь он горизонтальный (fovx)."},

@@ -236,7 +236,7 @@ constexpr Phrase kPhrases[] = {
      "axis u = (x, y, z).",
      "Rodrigues の公式 R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ を, 単位軸 u = (x, y, z) "
      "について成分ごとに書いたもの.",
-     "Формула Rodrigues R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, записанная поэлементно для единичной оси "
+     "Формула Родрига R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, записанная поэлементно для единичной оси "
      "u = (x, y, z)."},
     {"The axis is normalised first: (x, y, z) = {0}.", "軸をまず正規化する: (x, y, z) = {0}.",
      "Сначала ось нормируется: (x, y, z) = {0}."},
@@ -245,14 +245,23 @@ constexpr Phrase kPhrases[] = {
      "fovy は垂直方向の画角: これが上端 t を決め, アスペクト比 width/height が右端 r を広げる.",
      "fovy — вертикальный угол обзора: он задаёт верх t, а соотношение сторон width/height "
      "расширяет правый край r."},
-    {"Writing −b = t = n·(w/h)·tan(θ/2) instead puts the aspect ratio on the vertical extent, "
-     "which reads θ as a "
-     "horizontal angle.",
-     "代わりに −b = t = n·(w/h)·tan(θ/2) と書くとアスペクト比が垂直方向に掛かり, θ "
-     "を水平方向の角度として読むことになる.",
-     "Запись −b = t = n·(w/h)·tan(θ/2) относит соотношение сторон к вертикали, то есть читает θ "
-     "как "
-     "горизонтальный угол."},
+    {"Read as a horizontal angle, θ would give −l = r = n·tan(θ/2) and t = r·h/w = "
+     "n·(h/w)·tan(θ/2).",
+     "θ を水平方向の画角と読むと −l = r = n·tan(θ/2), t = r·h/w = n·(h/w)·tan(θ/2) となる.",
+     "Если читать θ как горизонтальный угол, то −l = r = n·tan(θ/2) и t = r·h/w = "
+     "n·(h/w)·tan(θ/2)."},
+    {"Some notes write −b = t = n·(w/h)·tan(θ/2) beside r = n·tan(θ/2): for w ≠ h that matches "
+     "neither reading of θ.",
+     "r = n·tan(θ/2) と並べて −b = t = n·(w/h)·tan(θ/2) と書く資料もあるが, w ≠ h "
+     "のときこれはどちらの読み方にも合わない.",
+     "В некоторых материалах рядом с r = n·tan(θ/2) пишут −b = t = n·(w/h)·tan(θ/2): при w ≠ h "
+     "это не соответствует ни одному прочтению θ."},
+    {"Processing's defaults: without arguments perspective() uses a 60° vertical field of view "
+     "and puts the eye where the window's height exactly fills it.",
+     "Processing の既定値: 引数なしの perspective() は垂直方向の画角 60° を使い, "
+     "ウィンドウの高さがちょうどその画角を満たす位置に視点を置く.",
+     "Значения Processing по умолчанию: без аргументов perspective() берёт вертикальный угол "
+     "обзора 60° и ставит глаз туда, где высота окна ровно заполняет этот угол."},
     {"The plane on which the window's height exactly fills the vertical field of view; Processing "
      "puts its default "
      "camera at this distance.",
@@ -402,14 +411,14 @@ constexpr Phrase kPhrases[] = {
      "Один замкнутый выпуклый многогранник: лицевая грань не может закрыть другую, поэтому "
      "отсечение нелицевых "
      "граней удаляет все невидимые поверхности."},
-    {"Not convex: a front face can be hidden by another front face, so back-face culling alone is "
-     "not enough (as for "
-     "any concave polyhedron); a depth test is still needed.",
-     "凸でない: 表の面が別の表の面に隠されることがあるので, 背面除去だけでは足りない "
-     "(凹多面体ではいつもそう). 奥行きテストが必要.",
-     "Невыпуклый: лицевую грань может закрыть другая лицевая грань, поэтому одного отсечения "
-     "нелицевых граней мало "
-     "(как для любого невыпуклого многогранника); нужен ещё тест глубины."},
+    {"Not convex: from some viewpoints a front face hides part of another front face, so "
+     "back-face culling alone does not always remove the hidden surfaces; a depth test is still "
+     "needed.",
+     "凸でない: 視点によっては表の面が別の表の面の一部を隠すので, "
+     "背面除去だけでは隠面がいつも消えるとは限らない. 奥行きテストが必要.",
+     "Невыпуклый: при некоторых положениях глаза лицевая грань закрывает часть другой лицевой "
+     "грани, поэтому одно отсечение нелицевых граней не всегда удаляет невидимые поверхности; "
+     "нужен ещё тест глубины."},
     {"An edge is classified by the two faces that share it.",
      "稜線はそれを共有する 2 つの面で分類される.",
      "Ребро классифицируется по двум граням, которые его разделяют."},

@@ -1,9 +1,11 @@
 // A LaTeX document of a solved set, for instructors who print: every formula in display math,
 // matrices as bmatrix, prose escaped for text mode. Compiled with LuaLaTeX (fontspec, DejaVu
-// fonts for the Unicode in titles and notes), as Debian's texlive packages provide.
+// fonts for the Unicode in titles and notes, luatexja for Japanese), as Debian's texlive packages
+// provide.
 #include <fmt/format.h>
 
 #include "solver/derivation/render.hpp"
+#include "solver/util/scripts.hpp"
 
 namespace frustum {
 
@@ -37,13 +39,7 @@ std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
 
 std::string render_latex(const SetResult& set, Lang lang) {
   const std::string title = set.title.empty() ? set.file : set.title.in(lang);
-  std::string out =
-      "% Compile with lualatex.\n\\documentclass[11pt]{article}\n\\usepackage{amsmath,amssymb}\n"
-      "\\usepackage{fontspec}\n\\setmainfont{DejaVu Serif}\n\\setsansfont{DejaVu "
-      "Sans}\n\\setmonofont{DejaVu Sans Mono}\n"
-      "\\usepackage[margin=2cm]{geometry}\n\\setcounter{MaxMatrixCols}{20}\n\\allowdisplaybreaks\n"
-      "\\begin{document}\n\\section*{" +
-      prose(title) + "}\n";
+  std::string out = "\\section*{" + prose(title) + "}\n";
   if (!set.source.empty())
     out += "\\emph{" + prose(tr("Source", lang)) + ": " + prose(set.source) + "}\n\n";
   for (const Diagnostic& d : set.errors)
@@ -63,7 +59,16 @@ std::string render_latex(const SetResult& set, Lang lang) {
         out += "\\texttt{" + latex_text(name) + "} &= " + tr(v->shown(), lang).latex + " \\\\\n";
     out += "\\end{align*}\n";
   }
-  return out + "\\end{document}\n";
+  // Japanese needs luatexja (DejaVu has no kana or kanji: without it every Japanese character
+  // is missing from the PDF); DejaVu covers Latin, Cyrillic and the Unicode of the notes.
+  const std::string preamble =
+      "% Compile with lualatex.\n\\documentclass[11pt]{article}\n\\usepackage{amsmath,amssymb}\n"
+      "\\usepackage{fontspec}\n\\setmainfont{DejaVu Serif}\n\\setsansfont{DejaVu "
+      "Sans}\n\\setmonofont{DejaVu Sans Mono}\n" +
+      std::string(has_cjk(out) ? "\\usepackage{luatexja}\n" : "") +
+      "\\usepackage[margin=2cm]{geometry}\n\\setcounter{MaxMatrixCols}{20}\n\\allowdisplaybreaks\n"
+      "\\begin{document}\n";
+  return preamble + out + "\\end{document}\n";
 }
 
 }  // namespace frustum

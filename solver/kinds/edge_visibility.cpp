@@ -324,9 +324,9 @@ struct EdgeVisibility {
       steps->add("Back-face culling alone?", {}, {}, word(convex ? "yes" : "no")).note =
           convex ? "A single closed convex polyhedron: no front face can hide another, so "
                    "culling the back faces removes every hidden surface."
-                 : "Not convex: a front face can be hidden by another front face, so back-face "
-                   "culling alone is not enough (as for any concave polyhedron); a depth test is "
-                   "still needed.";
+                 : "Not convex: from some viewpoints a front face hides part of another front "
+                   "face, so back-face culling alone does not always remove the hidden surfaces; "
+                   "a depth test is still needed.";
       steps->yields("backface_sufficient");
     }
     return out;

@@ -30,6 +30,33 @@ void require_positive(GivenReader& r, const std::string& key, const Exact& v,
   if (exact_sign(v) <= 0) r.fail(key, "must be positive: " + why);
 }
 
+// perspective() with no arguments (Processing): fovy = π/3, aspect = width/height,
+// cameraZ = (height/2)/tan(fovy/2), near = cameraZ/10, far = 10·cameraZ. The sketch's size
+// defaults to Processing's size(100, 100); any of perspective()'s own arguments with it is refused
+// (Processing takes all four or none).
+void processing_default_perspective(GivenReader& g, ProjectionSpec& p) {
+  for (const char* key : {"fovy", "fovx", "fov", "aspect", "near", "far"})
+    if (g.has(key))
+      g.fail(key,
+             "perspective() takes all of fovy, aspect, near and far or none of them; with width "
+             "and height it is Processing's perspective() with no arguments");
+  const Exact w = g.has("width") ? g.number("width") : Exact(100);
+  const Exact h = g.has("height") ? g.number("height") : Exact(100);
+  require_positive(g, "width", w, "the sketch's width in pixels");
+  require_positive(g, "height", h, "the sketch's height in pixels");
+  g.finish();
+  const Exact fovy = canonical(GiNaC::Pi / 3);
+  const Exact camera_z = canonical(h / 2 / GiNaC::tan(fovy / 2));
+  p.fovy = fovy;
+  p.aspect = canonical(w / h);
+  p.sketch = std::make_pair(w, h);
+  p.volume =
+      perspective_volume(fovy, *p.aspect, canonical(camera_z / 10), canonical(camera_z * 10));
+  for (Exact* e : {&p.volume.left, &p.volume.right, &p.volume.bottom, &p.volume.top, &p.volume.near,
+                   &p.volume.far})
+    *e = canonical(*e);
+}
+
 }  // namespace
 
 ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
@@ -43,8 +70,15 @@ ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
   p.unit = c.angles;
   p.left_handed = left_handed_columns(c);
   if (r.has("perspective")) {
-    GivenReader g = r.child("perspective", {"fovy", "fovx", "fov", "aspect", "near", "far"});
+    GivenReader g =
+        r.child("perspective", {"fovy", "fovx", "fov", "aspect", "near", "far", "width", "height"});
     p.type = ProjectionSpec::Type::Perspective;
+    if (g.has("width") || g.has("height") ||
+        !(g.has("fovy") || g.has("fovx") || g.has("fov") || g.has("aspect") || g.has("near") ||
+          g.has("far"))) {
+      processing_default_perspective(g, p);
+      return p;
+    }
     // fovy and fovx name their axis; fov is read in the course's convention (default vertical).
     if (g.has("fovy") + g.has("fovx") + g.has("fov") != 1)
       g.fail(g.has("fovx") ? "fovx" : "fovy", "give exactly one of fovy, fovx and fov");
@@ -410,6 +444,25 @@ void perspective_idea_steps(Api api, bool left_handed, const std::string& name, 
 MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* steps,
                                   const std::string& name) {
   const Volume<Exact>& v = p.volume;
+  if (steps && p.sketch) {
+    // Processing's perspective() with no arguments, for a width × height sketch.
+    steps
+        ->add("perspective() with no arguments",
+              math("fovy = π/3,  aspect = width/height,  cameraZ = (height/2)/tan(fovy/2),  "
+                   "near = cameraZ/10,  far = 10·cameraZ",
+                   "\\text{fovy} = \\frac{\\pi}{3},\\; \\text{aspect} = "
+                   "\\frac{\\text{width}}{\\text{height}},\\; \\text{cameraZ} = "
+                   "\\frac{\\text{height}/2}{\\tan(\\text{fovy}/2)},\\; n = "
+                   "\\frac{\\text{cameraZ}}{10},\\; f = 10\\,\\text{cameraZ}"),
+              math("width = ", "\\text{width} = ") + exact(p.sketch->first) +
+                  math(",  height = ", ",\\; \\text{height} = ") + exact(p.sketch->second),
+              math("aspect = ", "\\text{aspect} = ") + exact(*p.aspect) +
+                  math(",  n = ", ",\\; n = ") + exact(v.near, true) +
+                  math(",  f = ", ",\\; f = ") + exact(v.far, true))
+        .note =
+        "Processing's defaults: without arguments perspective() uses a 60° vertical field of view "
+        "and puts the eye where the window's height exactly fills it.";
+  }
   if (steps && p.fovx) {
     // The course's horizontal reading, and how it relates to perspective()'s vertical fovy.
     steps->add(
@@ -453,8 +506,9 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
             math("t = ") + exact(v.top, true) + math(",  r = ", ",\\; r = ") + exact(v.right, true))
         .note =
         "fovy is the vertical field of view: it sets the top t, and the aspect ratio width/height "
-        "widens the right edge r. Writing −b = t = n·(w/h)·tan(θ/2) instead puts the aspect ratio "
-        "on the vertical extent, which reads θ as a horizontal angle.";
+        "widens the right edge r. Read as a horizontal angle, θ would give −l = r = n·tan(θ/2) and "
+        "t = r·h/w = n·(h/w)·tan(θ/2). Some notes write −b = t = n·(w/h)·tan(θ/2) beside "
+        "r = n·tan(θ/2): for w ≠ h that matches neither reading of θ.";
   }
   MatX<Exact> m =
       p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
@@ -545,6 +599,23 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
                    "vertical one (fovy).",
                    frustum_step, fovx});
   }
+  // −l = r = n·tan(θ/2), −b = t = n·(w/h)·tan(θ/2): the aspect ratio multiplying the top, a form
+  // some notes print; it is neither reading of θ unless w = h.
+  if (p.aspect && (p.fovx || p.fovy) && !canonical(*p.aspect - 1).is_zero()) {
+    const Exact theta = p.fovx ? *p.fovx : *p.fovy;
+    ProjectionSpec on_t = p;
+    const Exact r = canonical(p.volume.near * GiNaC::tan(theta / 2));
+    const Exact t = canonical(r * *p.aspect);
+    on_t.volume.left = canonical(-r);
+    on_t.volume.right = r;
+    on_t.volume.bottom = canonical(-t);
+    on_t.volume.top = t;
+    out.push_back({"aspect ratio on the top",
+                   "You used −l = r = n·tan(θ/2) and −b = t = n·(w/h)·tan(θ/2): the aspect ratio "
+                   "multiplies the top. With r = n·tan(θ/2) the angle is horizontal and "
+                   "t = r·h/w; with θ vertical, t = n·tan(θ/2) and r = t·w/h.",
+                   p.fovx ? "The frustum of a horizontal field of view" : frustum_step, on_t});
+  }
   // A left-handed course's projection written with the right-handed matrix (looking down −z).
   if (p.left_handed) {
     ProjectionSpec right = p;
@@ -557,13 +628,31 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
   }
   // near/far sign: the planes' z coordinates (−n, −f) put into the matrix instead of the
   // distances n, f.
+  // For ortho, negating both is exactly the other reading of its z row (coordinates z_min = n,
+  // z_max = f mapped to −1, +1 against glOrtho's distances), so that is what it is named.
   ProjectionSpec signs = p;
   signs.volume.near = canonical(-p.volume.near);
   signs.volume.far = canonical(-p.volume.far);
-  out.push_back({"near/far sign",
-                 "near and far are distances in front of the eye (positive); you used the planes' "
-                 "z coordinates −n and −f.",
-                 "", signs});
+  const bool ortho_reading = p.type == ProjectionSpec::Type::Ortho && !p.left_handed;
+  if (ortho_reading && !p.z_coordinates)
+    out.push_back({"z_min, z_max read as coordinates",
+                   "Your z row is +2/(f − n), −(f + n)/(f − n): it maps z = n to −1 and z = f to "
+                   "+1, reading near and far as z coordinates. Here they are distances in front "
+                   "of an eye looking down −z (glOrtho), so the z row is −2/(f − n), "
+                   "−(f + n)/(f − n).",
+                   "", signs});
+  else if (ortho_reading)
+    out.push_back({"near, far read as distances",
+                   "Your z row is glOrtho's −2/(f − n), −(f + n)/(f − n), which reads near and far "
+                   "as distances in front of an eye looking down −z. Here z_min = n and z_max = f "
+                   "are z coordinates mapped to −1 and +1, so the z row is +2/(f − n), "
+                   "−(f + n)/(f − n).",
+                   "", signs});
+  else
+    out.push_back({"near/far sign",
+                   "near and far are distances in front of the eye (positive); you used the "
+                   "planes' z coordinates −n and −f.",
+                   "", signs});
   return out;
 }
 

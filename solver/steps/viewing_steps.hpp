@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "solver/derivation/derivation.hpp"
 #include "solver/derivation/value.hpp"
@@ -28,6 +29,9 @@ struct ProjectionSpec {
   // conventions fov: horizontal); fovy is then 2·atan(tan(fovx/2)/aspect).
   std::optional<Exact> fovx;
   AngleUnit unit = AngleUnit::Degrees;
+  // perspective() with no arguments: Processing's defaults for a sketch of this width and
+  // height (fovy = 60°, aspect = width/height, near = cameraZ/10, far = 10·cameraZ).
+  std::optional<std::pair<Exact, Exact>> sketch;
   bool z_coordinates = false;  // ortho: near, far are z_min, z_max (Conventions::z_planes)
   // A left-handed course under OpenGL's or Processing's matrices: the eye looks down +z, w′ = z,
   // and the matrix is the right-handed one with its third column negated (left_handed_columns).
