@@ -81,8 +81,8 @@ struct ExportOptions {
   std::uint64_t seed = 1;
   std::string assignment = "Frustum";  // the gradebook column
   bool sis_login = false;              // canvas-grades: ids are SIS Login IDs
-  std::string image = "frustum-prairielearn";
-  Lang lang = Lang::En;  // the questions' texts (the set's own where not given)
+  std::string image;                   // prairielearn: required (ACCOUNT/NAME:TAG)
+  Lang lang = Lang::En;                // the questions' texts (the set's own where not given)
 };
 int run_export(const ExportOptions& options, const Output& o);
 
