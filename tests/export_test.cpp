@@ -205,8 +205,8 @@ TEST(Export, MoodleClozeWeightsAddUpToTheProblemsPoints) {
       }
     }
   }
-  EXPECT_GT(whole, 3);
-  EXPECT_GT(scaled, 3);
+  EXPECT_GE(whole, 1);  // a clipped segment's outcodes and truths: one field each
+  EXPECT_GT(scaled, 3);  // a vector's point split over its numbers
 }
 
 // PrairieLearn's element rules (pl-checkbox.py: "At least one option must be true", min-correct
