@@ -205,7 +205,7 @@ TEST(Export, MoodleClozeWeightsAddUpToTheProblemsPoints) {
       }
     }
   }
-  EXPECT_GE(whole, 1);  // a clipped segment's outcodes and truths: one field each
+  EXPECT_GE(whole, 1);   // a clipped segment's outcodes and truths: one field each
   EXPECT_GT(scaled, 3);  // a vector's point split over its numbers
 }
 

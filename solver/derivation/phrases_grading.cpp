@@ -580,12 +580,13 @@ constexpr Phrase kPhrases[] = {
     {"scaled to length 1", "長さ 1 に正規化して", "нормированный к длине 1"},
     {"scaled so that w = {0}", "w = {0} となるように定数倍して",
      "умноженный на число так, чтобы w = {0}"},
+    // Slots {0}, {1}, {2} hold the same number T (a slot is filled once per use).
     {"Canvas scores this question by its own rule: each right choice ticked earns 1/{0} of the "
-     "points and each wrong one ticked loses 1/{0} ({0} right choices), never below 0.",
+     "points and each wrong one ticked loses 1/{1} ({2} right choices), never below 0.",
      "この問題は Canvas の規則で採点される: 正しい選択肢 1 つごとに配点の 1/{0} を得て, "
-     "誤った選択肢 1 つごとに 1/{0} を失う (正しい選択肢は {0} 個, 0 点未満にはならない).",
+     "誤った選択肢 1 つごとに 1/{1} を失う (正しい選択肢は {2} 個, 0 点未満にはならない).",
      "Этот вопрос Canvas оценивает по своему правилу: каждый отмеченный верный вариант даёт 1/{0} "
-     "баллов, каждый отмеченный неверный отнимает 1/{0} (верных вариантов: {0}), но не меньше 0."},
+     "баллов, каждый отмеченный неверный отнимает 1/{1} (верных вариантов: {2}), но не меньше 0."},
     {"Each number is scored on its own here.", "ここでは数ごとに採点される.",
      "Здесь каждое число оценивается отдельно."},
     {"Not asked here:", "ここでは問わない:", "Здесь не спрашивается:"},
