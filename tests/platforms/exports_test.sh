@@ -60,6 +60,13 @@ check "a second export is byte-identical (UUIDs and variants stay)" \
 # question renders, every input takes the key as a student types it.
 check "PrairieLearn: every question.html passes the elements' rules (pl-checkbox has a right option, ...)" \
   python3 "$here/prairielearn_elements.py" "$work"/pl/*/ "$work"/pl-ja/*/
+# ... and the rules catch what PrairieLearn refuses: a question as the exports once were (no
+# right checkbox, min-correct="0", a pl-number-input), planted in a copy of a real one.
+planted=$work/planted && mkdir -p "$planted" && cp "$(ls -d "$work"/pl/none_true-*culling*/)"* "$planted/"
+sed -i 's/correct="true">\([^0-9]\)/correct="false">\1/; s/hide-letter-keys="true">/hide-letter-keys="true" min-correct="0">/' "$planted/question.html"
+echo '<pl-number-input answers-name="w"></pl-number-input>' >> "$planted/question.html"
+check "PrairieLearn: the element rules refuse a checkbox with no right option and a pl-number-input" \
+  test "$(python3 "$here/prairielearn_elements.py" "$planted/" | grep -c 'At least one option must be true\|min-correct must be\|refuses exact forms')" = 3
 
 # PrairieLearn's side, played by Python: generate() with a seeded `random`, then the answers
 # as the elements submit them, then the external grader's run.
