@@ -81,8 +81,8 @@ struct ExportOptions {
   std::uint64_t seed = 1;
   std::string assignment = "Frustum";  // the gradebook column
   bool sis_login = false;              // canvas-grades: ids are SIS Login IDs
-  std::string image = "frustum-prairielearn";
-  std::optional<Lang> lang;  // the questions' texts (none: the set's own `lang:`)
+  std::string image;                   // prairielearn: required (ACCOUNT/NAME:TAG)
+  std::optional<Lang> lang;            // the questions' texts (none: the set's own `lang:`)
 };
 int run_export(const ExportOptions& options, const Output& o);
 

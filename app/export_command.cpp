@@ -90,9 +90,13 @@ int export_set(const ExportOptions& e, const Output& o) {
       for (const std::string& l : q.left_out)
         o.err << "note: " << q.id << "." << l << " (left to frustum grade)\n";
     if (e.format == "qti")
-      files = export_qti(quiz, title, ident_of(stem));
+      files = export_qti(quiz, title, ident_of(stem), lang);
     else
-      files[""] = export_moodle(quiz, title);
+      files[""] = export_moodle(quiz, title, lang);
+    // What the platforms cannot do as Frustum does, for the instructor.
+    o.err << "note: " << (e.format == "qti" ? "Canvas" : "Moodle")
+          << " credits each number of a vector or matrix on its own, where frustum grade gives "
+             "an answer's points only when all its numbers are right\n";
   }
   try {
     for (const auto& [name, text] : files) {
@@ -116,10 +120,12 @@ int run_export(const ExportOptions& e, const Output& o) {
       std::ifstream in(e.input, std::ios::binary);
       std::stringstream text;
       text << in.rdbuf();
+      std::vector<std::string> left_out;
       const std::string csv = export_gradebook(
           text.str(), e.input,
           e.format == "canvas-grades" ? GradebookFormat::Canvas : GradebookFormat::Moodle,
-          e.assignment, e.sis_login ? StudentKey::SisLoginId : StudentKey::SisUserId);
+          e.assignment, e.sis_login ? StudentKey::SisLoginId : StudentKey::SisUserId, &left_out);
+      for (const std::string& l : left_out) o.err << "note: " << l << "\n";
       if (e.out.empty() || e.out == "-")
         o.out << csv;
       else
@@ -162,13 +168,15 @@ Command add_export_command(CLI::App& cli) {
   exp->add_flag("--sis-login", opt->sis_login,
                 "canvas-grades: the student ids are SIS Login IDs (default SIS User IDs)");
   exp->add_option("--image", opt->image,
-                  "prairielearn: the grader image (default frustum-prairielearn)");
+                  "prairielearn (required): the grader image as PrairieLearn pulls it, "
+                  "ACCOUNT/NAME:TAG (docs/platforms.md: building and publishing it)");
   exp->add_option(
          "--lang", *lang,
          "Language of the questions' texts: en, ja or ru (default: the set's own, its lang:)")
       ->check(language_check());
   exp->footer(examples(
-      {"frustum export prairielearn SET.yaml --count 20 -o course/questions/",
+      {"frustum export prairielearn SET.yaml --count 20 --image ACCOUNT/frustum-grader:0.1.0 -o "
+       "course/questions/",
        "frustum export qti SET.yaml --count 3 -o quiz/ && (cd quiz && zip -r ../quiz.zip .)",
        "frustum export moodle SET.yaml --count 20 -o questions.xml",
        "frustum export canvas-grades grades/gradebook.csv --assignment \"Homework 3\" -o "
@@ -177,6 +185,12 @@ Command add_export_command(CLI::App& cli) {
   return {exp, [opt, lang](const Output& o) {
             if (opt->out.empty() && opt->format.find("grades") == std::string::npos) {
               o.err << "export " << opt->format << ": give -o OUT\n";
+              return 2;
+            }
+            if (opt->format == "prairielearn" && opt->image.find('/') == std::string::npos) {
+              o.err << "export prairielearn: give --image ACCOUNT/NAME:TAG, the grader image as "
+                       "PrairieLearn pulls it from Docker Hub (build and push "
+                       "tools/prairielearn/Dockerfile: docs/platforms.md)\n";
               return 2;
             }
             opt->lang = parse_lang(*lang);

@@ -34,8 +34,8 @@ std::string import_row(std::vector<std::string> cells) {
 }  // namespace
 
 std::string export_gradebook(const std::string& text, const std::string& file,
-                             GradebookFormat format, const std::string& assignment,
-                             StudentKey key) {
+                             GradebookFormat format, const std::string& assignment, StudentKey key,
+                             std::vector<std::string>* left_out) {
   const CsvTable table = parse_csv(text);
   if (table.error) throw InputError(Diagnostic{SourceLocation{file, 0, 0}, "", *table.error});
   if (table.rows.empty())
@@ -72,16 +72,30 @@ std::string export_gradebook(const std::string& text, const std::string& file,
     grades.emplace_back(id, graded ? field(score) : "");
     if (graded && points_possible.empty()) points_possible = field(max_score);
   }
+  // An id that a spreadsheet would run as a formula (=, +, -, @ …) cannot be written as it is,
+  // and with the spreadsheet's guard (') it names no student the LMS knows: such a row is left
+  // out and named, for the grade to be entered by hand.
+  std::vector<std::pair<std::string, std::string>> kept;
+  for (const auto& [id, s] : grades) {
+    if (csv_neutralise(id) == id) {
+      kept.emplace_back(id, s);
+    } else if (left_out) {
+      left_out->push_back(fmt::format(
+          "student {} left out: an id starting with {} would run as a formula in a spreadsheet, "
+          "and with the guard ' the LMS would match no student; enter the grade ({}) by hand",
+          quote_excerpt(id), id.substr(0, 1), s.empty() ? "none" : s));
+    }
+  }
   std::string out;
   if (format == GradebookFormat::Canvas) {
     out = import_row({"Student", "ID", "SIS User ID", "SIS Login ID", "Section", assignment});
     out += import_row({"Points Possible", "", "", "", "", points_possible});
-    for (const auto& [id, s] : grades)
+    for (const auto& [id, s] : kept)
       out += key == StudentKey::SisUserId ? import_row({"", "", id, "", "", s})
                                           : import_row({"", "", "", id, "", s});
   } else {
     out = import_row({"ID number", assignment});
-    for (const auto& [id, s] : grades) out += import_row({id, s});
+    for (const auto& [id, s] : kept) out += import_row({id, s});
   }
   return out;
 }

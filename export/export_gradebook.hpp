@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace frustum {
 
@@ -15,9 +16,12 @@ enum class GradebookFormat {
 enum class StudentKey { SisUserId, SisLoginId };  // Canvas: which column holds Frustum's student id
 
 // Throws InputError (file, line) for a gradebook without student/score/max_score/status, or a
-// student listed twice.
+// student listed twice. A student whose id a spreadsheet would run as a formula (=cmd, @x,
+// -x+1) is left out, not written with the spreadsheet guard (the LMS would match nobody), and
+// named in `left_out`.
 std::string export_gradebook(const std::string& gradebook_csv_text, const std::string& file,
                              GradebookFormat format, const std::string& assignment,
-                             StudentKey key = StudentKey::SisUserId);
+                             StudentKey key = StudentKey::SisUserId,
+                             std::vector<std::string>* left_out = nullptr);
 
 }  // namespace frustum

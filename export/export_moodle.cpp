@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "export/xml_text.hpp"
 #include "grader/visible_text.hpp"
@@ -62,7 +63,7 @@ std::string cloze_field(const QuizField& f, int weight) {
 // A question whose one answer is a set of checkboxes, as Moodle's own multiple-answer question
 // (multichoice, single = false): the statements numbered 1, 2, … in the set's order, each with
 // its reason as the choice's feedback.
-std::string multichoice_question(const QuizQuestion& q, const std::string& name) {
+std::string multichoice_question(const QuizQuestion& q, const std::string& name, Lang) {
   const QuizAnswer& a = q.answers[0];
   const QuizField& f = a.fields[0];
   std::string out = "  <question type=\"multichoice\">\n";
@@ -86,31 +87,86 @@ bool only_checkboxes(const QuizQuestion& q) {
          q.answers[0].fields[0].type == QuizField::Type::Checkboxes && q.left_out.empty();
 }
 
-std::string cloze_question(const QuizQuestion& q, const std::string& name) {
+}  // namespace
+
+std::vector<long long> cloze_weights(const QuizQuestion& q) {
+  // Each field's share of its answer's points as a fraction num/den (points to 1/1000).
+  std::vector<std::pair<long long, long long>> shares;
+  long long common = 1;  // the least common denominator
+  for (const QuizAnswer& a : q.answers) {
+    const long long num = std::max(1LL, std::llround(a.points * 1000));
+    const long long den = 1000 * static_cast<long long>(std::max<std::size_t>(1, a.fields.size()));
+    const long long g = std::gcd(num, den);
+    shares.emplace_back(num / g, den / g);
+    common = std::lcm(common, den / g);
+    if (common > kMaxClozeScale) break;
+  }
+  std::vector<long long> weights;
+  long long all = 0;
+  for (std::size_t i = 0; i < q.answers.size(); ++i)
+    for (std::size_t k = 0; k < q.answers[i].fields.size(); ++k) {
+      // Past the scale Moodle can hold, hundredths of a point (rounded, at least 1).
+      const long long w = common > kMaxClozeScale
+                              ? std::max(1LL, std::llround(100 * q.answers[i].points /
+                                                           double(q.answers[i].fields.size())))
+                              : shares[i].first * (common / shares[i].second);
+      weights.push_back(w);
+      all = std::gcd(all, w);
+    }
+  // Whole points already (common == 1): the weights are the points. Else the smallest whole
+  // numbers in the same proportion.
+  if (common > 1 && all > 1)
+    for (long long& w : weights) w /= all;
+  return weights;
+}
+
+namespace {
+
+std::string cloze_question(const QuizQuestion& q, const std::string& name, Lang lang) {
   std::string html = "<p>" + xml_escape(q.text) + "</p><ul>";
   for (const std::string& g : q.given) html += "<li><code>" + xml_escape(g) + "</code></li>";
   html += "</ul>";
   double total = 0;
+  const std::vector<long long> weights = cloze_weights(q);
+  long long sum = 0;
+  std::size_t field = 0;
   for (const QuizAnswer& a : q.answers) {
     html += "<p>" + xml_escape(a.prompt) + ": ";
-    // Weights: each field's share of its answer's points, in hundredths.
-    const int weight =
-        std::max(1, static_cast<int>(std::lround(100 * a.points / double(a.fields.size()))));
-    for (const QuizField& f : a.fields)
-      html += (f.label.empty() ? "" : xml_escape(f.label) + " ") + cloze_field(f, weight) + " ";
+    for (const QuizField& f : a.fields) {
+      sum += weights[field];
+      html += (f.label.empty() ? "" : xml_escape(f.label) + " ") +
+              cloze_field(f, static_cast<int>(weights[field++])) + " ";
+    }
     html += "</p>";
     total += a.points;
   }
+  // Cloze credits each field alone; said where an answer has several numbers.
+  if (std::any_of(q.answers.begin(), q.answers.end(),
+                  [](const QuizAnswer& a) { return a.fields.size() > 1; }))
+    html += "<p>" + xml_escape(tr("Each number is scored on its own here.", lang)) + "</p>";
   if (!q.left_out.empty()) {
-    html += "<p>Not asked here (graded by Frustum only):";
+    html += "<p>" + xml_escape(tr("Not asked here:", lang));
     for (const std::string& l : q.left_out) html += " " + xml_escape(l) + ";";
     html += "</p>";
   }
-  std::string out = "  <question type=\"cloze\">\n";
+  // For the instructor (an XML comment is not imported): the mark Moodle gives the question.
+  std::string out = fmt::format(
+      "  <!-- {} points in Frustum; Moodle's mark is the sum of the field weights, {}{}. Moodle "
+      "credits each field on its own, where Frustum gives an answer's points only when all "
+      "its numbers are right. -->\n",
+      total, sum,
+      static_cast<double>(sum) == total
+          ? ""
+          : fmt::format(" (set the question's maximum mark in the quiz to {} for Frustum's "
+                        "weight)",
+                        total));
+  out += "  <question type=\"cloze\">\n";
   out += "    <name><text>" + xml_escape(name) + "</text></name>\n";
   out += "    <questiontext format=\"html\"><text><![CDATA[" + html + "]]></text></questiontext>\n";
   out += "    <generalfeedback format=\"html\"><text></text></generalfeedback>\n";
-  out += fmt::format("    <defaultgrade>{}</defaultgrade>\n", total);
+  // Moodle sets a Cloze question's mark to the sum of its weights whatever this says; written
+  // as that sum so the file says what Moodle will do.
+  out += fmt::format("    <defaultgrade>{}</defaultgrade>\n", sum);
   out += "    <penalty>0</penalty>\n    <hidden>0</hidden>\n";
   return out + "  </question>\n";
 }
@@ -127,7 +183,8 @@ std::string category_level(const std::string& name) {
 
 }  // namespace
 
-std::string export_moodle(const std::vector<QuizVariant>& variants, const std::string& category) {
+std::string export_moodle(const std::vector<QuizVariant>& variants, const std::string& category,
+                          Lang lang) {
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n";
   const std::size_t problems = variants.empty() ? 0 : variants[0].questions.size();
   for (std::size_t i = 0; i < problems; ++i) {
@@ -137,7 +194,7 @@ std::string export_moodle(const std::vector<QuizVariant>& variants, const std::s
       for (const QuizQuestion& q : v.questions)
         if (q.id == id && !q.answers.empty())
           questions += (only_checkboxes(q) ? multichoice_question : cloze_question)(
-              q, v.name.empty() ? id : id + " " + v.name);
+              q, v.name.empty() ? id : id + " " + v.name, lang);
     if (questions.empty()) continue;  // nothing in it a Cloze field can check
     out += "  <question type=\"category\">\n    <category><text>$course$/top/" +
            xml_escape(category_level(category)) + "/" + xml_escape(category_level(id)) +

@@ -7,8 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/file_names.hpp"
+#include "export/export_tolerance.hpp"
 #include "export/quiz_items.hpp"
 #include "export/xml_text.hpp"
+#include "solver/derivation/render.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
@@ -36,35 +38,65 @@ std::string stable_uuid(const std::string& title, const std::string& id) {
 }
 
 // Which statements are true, as checkboxes in the set's order, each numbered as in the set
-// (frustum-pl-grade reads the ticked ones back by these numbers); a blank submission is "none".
+// (frustum-pl-grade reads the ticked ones back by these numbers), and a last, unnumbered one
+// for "none is true": pl-checkbox refuses to render without a right option (and min-correct
+// must be at least 1), so a set whose statements are all false still has one to tick.
 std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang lang) {
   const ProblemResult solved = solve_problem(p, "", false);
   const Value* key = solved.error ? nullptr : solved.answers.find(name);
   const QuizField f = key ? statement_checkboxes(p, *key, lang) : QuizField{};
   const bool none_true = std::find(f.right.begin(), f.right.end(), true) == f.right.end();
   std::string s = fmt::format(
-      "<p>{}:</p>\n<pl-checkbox answers-name=\"{}\" fixed-order=\"true\" allow-blank=\"true\" "
-      "hide-letter-keys=\"true\"{}>\n",
-      name, name, none_true ? " min-correct=\"0\"" : "");
+      "<p>{}:</p>\n<pl-checkbox answers-name=\"{}\" fixed-order=\"true\" "
+      "hide-letter-keys=\"true\">\n",
+      name, name);
   for (std::size_t i = 0; i < f.choices.size(); ++i)
     s += fmt::format("  <pl-answer correct=\"{}\">{}. {}</pl-answer>\n",
                      f.right[i] ? "true" : "false", i + 1, xml_escape(f.choices[i]));
+  s += fmt::format("  <pl-answer correct=\"{}\">{}</pl-answer>\n", none_true ? "true" : "false",
+                   xml_escape(tr("None of the statements above is true", lang)));
   return s + "</pl-checkbox>";
 }
 
+// What to type, for an answer entered as text (Frustum reads it: exact forms, `none`).
+const char* hint_of(AnswerKind kind) {
+  switch (kind) {
+    case AnswerKind::Scalar:
+      return "a number such as 15/2, sqrt(3)/2 or 0.25";
+    case AnswerKind::Vector:
+    case AnswerKind::Direction:
+    case AnswerKind::UnitVector:
+    case AnswerKind::Point:
+      return "a vector such as [1, -2, sqrt(3)/2]";
+    case AnswerKind::Matrix:
+      return "rows such as [[1, 0, 2], [0, 1, 3]]: a matrix row by row, or one point per row";
+    case AnswerKind::Transform:
+      return "a matrix row by row, such as [[1, 0], [0, 1]]";
+    case AnswerKind::Segment:
+    case AnswerKind::PointSet:
+    case AnswerKind::Polygon:
+      return "points in order, such as [[0, 0], [4, 0], [0, 3]], or none";
+    case AnswerKind::Plane:
+      return "an equation such as x + y - z = -6";
+    case AnswerKind::BitString:
+      return "a bit string such as 0101";
+    case AnswerKind::WordMap:
+      return "a mapping such as {0-1: visible, 1-2: hidden}";
+    case AnswerKind::Sequence:
+      return "a list in order, such as [2, 0, 1]";
+    default:
+      return "a list such as [1-3, 2-7]";
+  }
+}
+
+// Numbers, vectors, matrices and point lists are typed as text that Frustum reads, so exact
+// forms (15/2, sqrt(14)/14) and `none` are accepted, which pl-number-input and pl-matrix-input
+// refuse; the window a decimal must fall in is stated under the input (params.help), the same
+// the grader uses. The answer panel shows the key (correct_answers, set by server.py).
 std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) {
   const std::string name = xml_escape(spec.name);
   const std::string input = prairielearn_input(spec);
   if (input == "checkbox") return checkbox_html(name, p, lang);
-  if (input == "number")
-    return fmt::format(
-        "<pl-number-input answers-name=\"{0}\" label=\"\\({0} =\\)\" "
-        "show-help-text=\"true\"></pl-number-input>",
-        name);
-  if (input == "vector" || input == "matrix")
-    return fmt::format(
-        "<p>{0} =</p>\n<pl-matrix-input answers-name=\"{0}\" label=\"{0}\"></pl-matrix-input>",
-        name);
   if (input == "choice") {
     std::string s = fmt::format(
         "<p>{}:</p>\n<pl-multiple-choice answers-name=\"{}\" inline=\"true\">\n", name, name);
@@ -75,15 +107,52 @@ std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) 
                        name, w, xml_escape(w));
     return s + "</pl-multiple-choice>";
   }
-  const char* hint = spec.kind == AnswerKind::Plane       ? "an equation such as x + y - z = -6"
-                     : spec.kind == AnswerKind::BitString ? "a bit string such as 0101"
-                     : spec.kind == AnswerKind::WordMap
-                         ? "a mapping such as {0-1: visible, 1-2: hidden}"
-                         : "a list such as [1-3, 2-7]";
   return fmt::format(
-      "<pl-string-input answers-name=\"{0}\" label=\"{0}:\" placeholder=\"{1}\" "
-      "size=\"40\"></pl-string-input>",
-      name, hint);
+      "<pl-string-input answers-name=\"{0}\" label=\"{0} =\" placeholder=\"{1}\" size=\"40\" "
+      "remove-leading-trailing=\"true\" show-help-text=\"false\"></pl-string-input>\n"
+      "<pl-question-panel>{{{{#params.help.{0}}}}}<p class=\"small\">{{{{params.help.{0}}}}}</p>"
+      "{{{{/params.help.{0}}}}}</pl-question-panel>",
+      name, xml_escape(tr(hint_of(spec.kind), lang)));
+}
+
+// The key as a student types it (`[1, 1, -1]`, `sqrt(14)/14`, `none`), for the answer panel.
+std::string typed_key(const Value& v) {
+  std::string text = emit_flow(answer_node(v));
+  if (text.size() >= 2 && text.front() == '"' && text.back() == '"')
+    text = text.substr(1, text.size() - 2);
+  return text;
+}
+
+// What the statement under a text input says: exact forms, and the window of each decimal.
+std::string help_text(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
+                      const Value& expected, Lang lang) {
+  if (expected.numbers.empty() || spec.kind == AnswerKind::Plane ||
+      spec.kind == AnswerKind::Direction)
+    return {};
+  // A z-buffer's background depth is +∞, which the key writes 1e30: said under the input.
+  const bool infinity =
+      std::find(expected.numbers.begin(), expected.numbers.end(), 1e30) != expected.numbers.end();
+  const std::string why =
+      infinity ? " " + tr("1e30 stands for +∞, the depth of a pixel no polygon covers", lang) + "."
+               : "";
+  const std::vector<double> windows = accepted_windows(p, key, spec.name, expected);
+  std::vector<std::string> items;
+  for (const double w : windows) items.push_back(fmt::format("±{:.3g}", w));
+  bool same = true;
+  for (const std::string& i : items) same = same && i == items.front();
+  if (same)
+    return tr(fmt::format("Exact forms such as 15/2 or sqrt(3)/2 are accepted; a decimal is right "
+                          "within {} of the exact value.",
+                          items.front()),
+              lang) +
+           why;
+  std::string list;
+  for (const std::string& i : items) list += (list.empty() ? "" : ", ") + i;
+  return tr(fmt::format("Exact forms such as 15/2 or sqrt(3)/2 are accepted; decimals are right "
+                        "within {} of the exact values, in order.",
+                        list),
+            lang) +
+         why;
 }
 
 // One problem of a variant as a complete one-problem set (the set's other fields kept).
@@ -101,16 +170,6 @@ std::string one_problem_set(const YAML::Node& root, const ProblemSet& variant, s
 
 std::string prairielearn_input(const AnswerSpec& spec) {
   switch (spec.kind) {
-    case AnswerKind::Scalar:
-      return "number";
-    case AnswerKind::Vector:
-    case AnswerKind::Direction:
-    case AnswerKind::UnitVector:
-    case AnswerKind::Point:
-      return "vector";
-    case AnswerKind::Matrix:
-    case AnswerKind::Polygon:
-      return "matrix";
     case AnswerKind::Bool:
     case AnswerKind::Category:
       return "choice";
@@ -148,41 +207,50 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
                                           {"image", options.image},
                                           {"entrypoint", options.entrypoint},
                                           {"timeout", options.timeout}};
-    // The variants Frustum drew: what the page shows, the set the grader grades against, and
-    // which words are right (for pl-multiple-choice's answer panel).
+    // The variants Frustum drew: what the page shows, the set the grader grades against (in
+    // the export's language), which words are right (pl-multiple-choice) and the key with its
+    // derivation for the answer panel (correct_answers: shown when the assessment allows).
     json drawn = json::array();
     for (const ProblemSet& v : variants) {
       if (i >= v.problems.size() || v.problems[i].error) continue;
       const ProblemSpec& vp = v.problems[i];
-      const ProblemResult r = solve_problem(vp, v.file, false);
+      const ProblemResult r = solve_problem(vp, v.file, true);
       if (r.error) continue;
       json params;
       params["problem"] = vp.id;
+      params["lang"] = std::string(to_string(options.lang));
       params["text"] = question_text(v, vp, options.lang);
       std::string given;
       for (const std::string& line : given_lines(vp)) given += line + "\n";
       params["given"] = given;
       params["set"] = one_problem_set(root, v, i);
-      json inputs, correct;
+      json inputs, correct, help = json::object(), key = json::object();
       for (const std::string& name : vp.ask) {
         const AnswerSpec* spec = vp.info->answer(name);
-        if (!spec) continue;
-        inputs[name] = prairielearn_input(*spec);
-        if (inputs[name] != "choice") continue;
         const Value* expected = r.answers.find(name);
+        if (!spec || !expected) continue;
+        inputs[name] = prairielearn_input(*spec);
+        if (inputs[name] == "string") {
+          key[name] = typed_key(*expected);
+          const std::string h = help_text(vp, r.answers, *spec, *expected, options.lang);
+          if (!h.empty()) help[name] = h;
+        }
+        if (inputs[name] != "choice") continue;
         const std::vector<std::string> words = spec->kind == AnswerKind::Bool
                                                    ? std::vector<std::string>{"true", "false"}
                                                    : spec->words;
         for (const std::string& w : words) {
-          const std::string right = spec->kind == AnswerKind::Bool
-                                        ? (expected && expected->flag ? "true" : "false")
-                                        : (expected ? expected->word : "");
+          const std::string right =
+              spec->kind == AnswerKind::Bool ? (expected->flag ? "true" : "false") : expected->word;
           correct[name][w] = w == right ? "true" : "false";
         }
       }
       params["inputs"] = inputs;
       params["correct"] = correct.is_null() ? json::object() : correct;
-      drawn.push_back(params);
+      params["help"] = help;
+      key["frustum_solution"] =
+          html_steps(r.derivation.steps(), options.lang, MathMarkup::Delimited);
+      drawn.push_back(json{{"params", params}, {"correct_answers", key}});
     }
     if (drawn.empty()) continue;
     std::string html =
@@ -191,9 +259,15 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
     for (const std::string& name : p.ask)
       if (const AnswerSpec* spec = p.info->answer(name))
         html += input_html(*spec, p, options.lang) + "\n\n";
+    // Frustum's feedback as HTML (pl-external-grader-results shows the score; its own fields
+    // are plain text in <pre>), and the derivation once the answer panel is shown.
     html +=
         "<pl-submission-panel>\n  "
-        "<pl-external-grader-results></pl-external-grader-results>\n</pl-submission-panel>\n";
+        "<pl-external-grader-results></pl-external-grader-results>\n"
+        "  <div class=\"frustum-feedback\">{{{feedback.results.frustum_html}}}</div>\n"
+        "</pl-submission-panel>\n\n"
+        "<pl-answer-panel>\n  <div class=\"frustum-solution\">"
+        "{{{correct_answers.frustum_solution}}}</div>\n</pl-answer-panel>\n";
     std::string server =
         "# Generated by `frustum export prairielearn`: the variants below were drawn and solved "
         "by\n"
@@ -205,7 +279,10 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
         "def generate(data):\n"
         "    # PrairieLearn seeds `random` with the variant's seed, so a variant keeps its "
         "problem.\n"
-        "    data[\"params\"].update(VARIANTS[random.randrange(len(VARIANTS))])\n";
+        "    variant = VARIANTS[random.randrange(len(VARIANTS))]\n"
+        "    data[\"params\"].update(variant[\"params\"])\n"
+        "    # The key, for the answer panel: shown when the assessment's policy allows.\n"
+        "    data[\"correct_answers\"].update(variant[\"correct_answers\"])\n";
     auto& files = out[dirs[i]];
     files["info.json"] = info.dump(2) + "\n";
     files["question.html"] = html;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "export/xml_text.hpp"
 
 namespace frustum {
@@ -24,27 +26,40 @@ std::string metadata(const std::string& type, double points) {
       type, num(points));
 }
 
-std::string stem(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f) {
+std::string stem(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f, Lang lang) {
   std::string html = "<p>" + xml_escape(q.text) + "</p><ul>";
   for (const std::string& g : q.given) html += "<li><code>" + xml_escape(g) + "</code></li>";
   html += "</ul><p>" + xml_escape(a.prompt) + (f.label.empty() ? "" : ", " + xml_escape(f.label)) +
           "</p>";
   if (!q.left_out.empty()) {
-    html += "<p>Not asked here (graded by Frustum only):";
+    html += "<p>" + xml_escape(tr("Not asked here:", lang));
     for (const std::string& l : q.left_out) html += " " + xml_escape(l) + ";";
     html += "</p>";
+  }
+  // Canvas scores a multiple-answers question by its own rule (each right box ticked +1/T, each
+  // wrong one −1/T, T right boxes), which is not Frustum's (−1/F for a wrong one, F wrong
+  // boxes) and cannot be changed by the import: stated so the students know what counts.
+  if (f.type == QuizField::Type::Checkboxes) {
+    const auto right = std::count(f.right.begin(), f.right.end(), true);
+    html += "<p>" +
+            xml_escape(tr(fmt::format("Canvas scores this question by its own rule: each right "
+                                      "choice ticked earns 1/{0} of the points and each wrong one "
+                                      "ticked loses 1/{0} ({0} right choices), never below 0.",
+                                      right),
+                          lang)) +
+            "</p>";
   }
   return "          <material><mattext texttype=\"text/html\">" + xml_escape(html) +
          "</mattext></material>\n";
 }
 
 std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
-                 const std::string& ident) {
+                 const std::string& ident, Lang lang) {
   const double points = a.points / static_cast<double>(a.fields.size());
   const std::string title = q.id + " " + a.name + (f.label.empty() ? "" : " " + f.label);
   std::string out =
       fmt::format("      <item ident=\"{}\" title=\"{}\">\n", ident, xml_escape(title));
-  std::string presentation = "        <presentation>\n" + stem(q, a, f);
+  std::string presentation = "        <presentation>\n" + stem(q, a, f, lang);
   std::string condition;
   switch (f.type) {
     case QuizField::Type::Number:
@@ -115,7 +130,7 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
 }
 
 std::string assessment(const std::vector<QuizQuestion>& questions, const std::string& title,
-                       const std::string& ident) {
+                       const std::string& ident, Lang lang) {
   std::string body = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<questestinterop xmlns=\"http://www.imsglobal.org/xsd/ims_qtiasiv1p2\">\n"
@@ -125,20 +140,22 @@ std::string assessment(const std::vector<QuizQuestion>& questions, const std::st
   int n = 0;
   for (const QuizQuestion& q : questions)
     for (const QuizAnswer& a : q.answers)
-      for (const QuizField& f : a.fields) body += item(q, a, f, fmt::format("{}_i{}", ident, ++n));
+      for (const QuizField& f : a.fields)
+        body += item(q, a, f, fmt::format("{}_i{}", ident, ++n), lang);
   return body + "    </section>\n  </assessment>\n</questestinterop>\n";
 }
 
 }  // namespace
 
 std::map<std::string, std::string> export_qti(const std::vector<QuizVariant>& variants,
-                                              const std::string& title, const std::string& ident) {
+                                              const std::string& title, const std::string& ident,
+                                              Lang lang) {
   std::map<std::string, std::string> files;
   std::string resources;
   for (const QuizVariant& v : variants) {
     const std::string id = v.name.empty() ? ident : ident + "-" + v.name;
     files[id + ".xml"] =
-        assessment(v.questions, v.name.empty() ? title : title + " (" + v.name + ")", id);
+        assessment(v.questions, v.name.empty() ? title : title + " (" + v.name + ")", id, lang);
     // An href is a URI: the '%' of an encoded name is written %25.
     std::string href;
     for (const char c : id) href += c == '%' ? std::string("%25") : std::string(1, c);

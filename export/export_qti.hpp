@@ -16,7 +16,10 @@ namespace frustum {
 
 // File name → contents: "imsmanifest.xml" and "<ident>[-<variant>].xml" per variant. `ident`
 // (letters, digits, '-', '_') names the assessments.
+// `lang`: the notes the platform's rules need (what is not asked here; Canvas's own credit
+// rule for multiple answers, and per-number credit), in the students' language.
 std::map<std::string, std::string> export_qti(const std::vector<QuizVariant>& variants,
-                                              const std::string& title, const std::string& ident);
+                                              const std::string& title, const std::string& ident,
+                                              Lang lang = Lang::En);
 
 }  // namespace frustum

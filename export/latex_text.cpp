@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <map>
 
 namespace frustum {
@@ -154,7 +155,10 @@ std::string latex_preamble(bool cjk, bool cyrillic) {
         "% LuaLaTeX: Japanese text — compile with lualatex (Debian: texlive-luatex, "
         "texlive-lang-japanese).\n"
         "\\documentclass[a4paper,11pt]{article}\n" +
-        cyrillic_fonts + "\\usepackage{luatexja}\n";
+        cyrillic_fonts +
+        "\\usepackage{luatexja}\n"
+        // Sub- and superscript digits (E₀, x²) from the Latin font: the Japanese fonts have none.
+        "\\ltjdefcharrange{200}{\"2070-\"209F}\\ltjsetparameter{jacharrange={-200}}\n";
   } else if (cyrillic) {
     out =
         "% LuaLaTeX: Russian text — compile with lualatex (Debian: texlive-luatex, "
@@ -173,6 +177,92 @@ std::string latex_preamble(bool cjk, bool cyrillic) {
          "\\newcommand{\\unknownchar}[1]{\\ensuremath{[\\mathrm{U{+}#1}]}}\n\\usepackage{amsmath,"
          "amssymb}\n\\usepackage[margin=2cm]{geometry}\n\\usepackage{tikz}\n"
          "\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{4pt}\n";
+}
+
+namespace {
+
+bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// A name as mathematics, or nothing when it is a plain word: "E_BC" → E_{BC}, "xmin" →
+// x_{\min}, "D_f" → D_{f}, "z" → z.
+std::string symbol_math(const std::string& w) {
+  if (w.size() == 1 && std::isalpha(static_cast<unsigned char>(w[0]))) return w;
+  if (w.size() == 4 && std::isalpha(static_cast<unsigned char>(w[0])) &&
+      (w.substr(1) == "min" || w.substr(1) == "max"))
+    return w.substr(0, 1) + "_{\\" + w.substr(1) + "}";
+  const std::size_t u = w.find('_');
+  if (u == std::string::npos || u == 0 || u + 1 >= w.size() || u > 2 ||
+      w.find('_', u + 1) != std::string::npos || w.size() - u - 1 > 3)
+    return {};
+  const std::string sub = w.substr(u + 1);
+  return w.substr(0, u) + "_{" + (sub == "min" || sub == "max" ? "\\" + sub : sub) + "}";
+}
+
+std::string name_latex(const std::string& name) {
+  const std::string m = symbol_math(name);
+  return m.empty() ? "\\text{" + latex_prose(name) + "}" : m;
+}
+
+// A YAML scalar as mathematics: an expression's text is kept (√ and π mapped by latex_math).
+std::string value_latex(const YAML::Node& n) {
+  if (n.IsScalar()) {
+    std::string t = n.Scalar();
+    std::string out;
+    for (const char c : t) {
+      if (c == '*')
+        out += "\\cdot ";
+      else if (c == '_' || c == '#' || c == '%' || c == '&' || c == '$')
+        out += std::string("\\") + c;
+      else
+        out += c;
+    }
+    return latex_math(out);
+  }
+  if (n.IsSequence()) {
+    std::string out = "(";
+    for (std::size_t i = 0; i < n.size(); ++i) out += (i ? ",\\, " : "") + value_latex(n[i]);
+    return out + ")";
+  }
+  if (n.IsMap()) {
+    std::string out;
+    for (auto it = n.begin(); it != n.end(); ++it)
+      out += (out.empty() ? "" : ",\\; ") + name_latex(it->first.as<std::string>()) + " = " +
+             value_latex(it->second);
+    return out;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string latex_prose_symbols(std::string_view text) {
+  std::string out, plain;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (!word_char(text[i])) {
+      plain += text[i++];
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && word_char(text[j])) ++j;
+    const std::string w(text.substr(i, j - i));
+    const bool at_word_start = i == 0 || !std::isalnum(static_cast<unsigned char>(text[i - 1]));
+    const std::string m = at_word_start && w.size() > 1 ? symbol_math(w) : std::string();
+    if (m.empty()) {
+      plain += w;
+    } else {
+      out += latex_prose(plain) + "\\(" + m + "\\)";
+      plain.clear();
+    }
+    i = j;
+  }
+  return out + latex_prose(plain);
+}
+
+std::string latex_given(const std::string& name, const YAML::Node& value) {
+  // A mapping (a window) is its own pairs: "x_min = 0, x_max = 4, …".
+  if (value.IsMap()) return "\\(" + value_latex(value) + "\\)";
+  return "\\(" + name_latex(name) + " = " + value_latex(value) + "\\)";
 }
 
 }  // namespace frustum

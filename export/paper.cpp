@@ -58,6 +58,16 @@ std::string sheet_head(const std::string& title, const PaperSheet& s, const char
       latex_prose(tr("Name", lang)));
 }
 
+// What an answer line is labelled with, in the sheet's language: the symbol the derivation
+// writes for the answer (a × b, S, D_f) as mathematics, else its name in `lang`.
+std::string answer_label(const ProblemSpec& p, const std::string& name, Lang lang) {
+  const AnswerSpec* spec = p.info ? p.info->answer(name) : nullptr;
+  if (spec && !spec->symbols.empty()) return latex_prose_symbols(spec->symbols.front());
+  const std::string words = tr("answer line: " + name, lang);
+  const std::string shown = words.rfind("answer line: ", 0) == 0 ? name : words;
+  return lang == Lang::En ? latex_prose_symbols(name) : latex_prose_symbols(shown);
+}
+
 }  // namespace
 
 std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::string& title,
@@ -70,13 +80,17 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
     int n = 0;
     for (const ProblemSpec& p : s.set.problems) {
       if (p.error || !p.info) continue;
+      // A problem, its figure and its answer lines on one page: a minipage is never split.
+      out += "\\par\\noindent\\begin{minipage}{\\linewidth}\n";
       out += fmt::format("\\subsection*{{{}. \\normalfont\\small({})}}\n", ++n,
                          latex_prose(points_text(p.max_score(), lang)));
-      out += latex_prose(question_text(s.set, p, lang)) + "\n\n";
-      // An empty itemize does not compile (a statements problem shows no given).
-      if (const std::vector<std::string> lines = given_lines(p); !lines.empty()) {
+      out += latex_prose_symbols(question_text(s.set, p, lang)) + "\n\n";
+      // The givens as mathematics (x_min = 0, A = (0, 0, 6)), not as YAML; an empty itemize
+      // does not compile (a statements problem shows no given).
+      if (!given_lines(p).empty()) {
         out += "\\begin{itemize}\\setlength{\\itemsep}{0pt}\n";
-        for (const std::string& line : lines) out += "\\item \\texttt{" + latex_prose(line) + "}\n";
+        for (auto it = p.given_node.begin(); it != p.given_node.end(); ++it)
+          out += "\\item " + latex_given(it->first.as<std::string>(), it->second) + "\n";
         out += "\\end{itemize}\n";
       }
       // Which statements are true: the statements numbered, never their truths.
@@ -89,7 +103,8 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
       if (const auto figure = tikz_figure(p))
         out += "\\begin{center}\n" + *figure + "\\end{center}\n";
       for (const std::string& name : p.ask)
-        out += "\\texttt{" + latex_prose(name) + "}: \\hrulefill\\par\\vspace{1.2em}\n";
+        out += answer_label(p, name, lang) + ": \\hrulefill\\par\\vspace{1.2em}\n";
+      out += "\\end{minipage}\\par\\bigskip\n";
     }
   }
   return document(out);
@@ -119,7 +134,7 @@ std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::s
       std::string steps;
       for (const Step& step : r.derivation.steps()) {
         if (step.formula.empty() && step.substitution.empty() && step.result.empty()) continue;
-        steps += "\\item " + latex_prose(title_in(step, lang));
+        steps += "\\item " + latex_prose_symbols(title_in(step, lang));
         for (const MathText* m : {&step.formula, &step.substitution, &step.result})
           if (!m->latex.empty()) steps += "\\\\ \\(" + math_or_words(tr(*m, lang).latex) + "\\)";
         steps += "\n";

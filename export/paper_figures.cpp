@@ -48,8 +48,11 @@ class Figure {
     const double scale = kFigureSize / std::max(x1_ - x0_, y1_ - y0_);
     body_ =
         fmt::format("\\begin{{tikzpicture}}[x={:.4f}cm,y={:.4f}cm,font=\\small]\n", scale, scale);
+    // step=1 without a unit is one unit of the picture's coordinates (x=…cm), so the lines
+    // fall on whole coordinates, a pixel's edges; TikZ's default step is 1 cm on the page.
     if (grid)
-      body_ += fmt::format("\\draw[gray!40,very thin] ({},{}) grid ({},{});\n", x0_, y0_, x1_, y1_);
+      body_ += fmt::format("\\draw[gray!40,very thin,step=1] ({},{}) grid ({},{});\n", x0_, y0_,
+                           x1_, y1_);
     body_ += fmt::format("\\draw[->,gray] ({},{}) -- ({},{}) node[right] {{$x$}};\n", x0_, y0_,
                          x1_ + 0.3, y0_);
     body_ += fmt::format("\\draw[->,gray] ({},{}) -- ({},{}) node[above] {{$y$}};\n", x0_, y0_, x0_,

@@ -15,6 +15,9 @@ namespace frustum {
 
 namespace {
 
+// How a key writes +∞ (a z-buffer's background depth): a quiz number field cannot hold ∞.
+constexpr double kInfinityStandIn = 1e30;
+
 std::vector<QuizField> numbers(const Value& v, const std::vector<double>& windows) {
   static const char* const kAxes[] = {"x", "y", "z", "w"};
   std::vector<QuizField> out;
@@ -33,10 +36,17 @@ std::vector<QuizField> numbers(const Value& v, const std::vector<double>& window
 }
 
 std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAnswer& a, Lang lang) {
-  const QuizField f = statement_checkboxes(p, expected, lang);
-  if (std::find(f.right.begin(), f.right.end(), true) == f.right.end())
-    return "no statement is true, and a checkbox question needs a right choice";
-  a.prompt = "the true statements";
+  QuizField f = statement_checkboxes(p, expected, lang);
+  // A multiple-answer question needs a right choice (Moodle: fractions adding up to 100 %):
+  // when no statement is true, the right one is "none", which Frustum scores as the blank
+  // answer — full marks, and each false statement ticked costs 1/F.
+  if (std::find(f.right.begin(), f.right.end(), true) == f.right.end()) {
+    f.choices.push_back(tr("None of the statements above is true", lang));
+    f.right.push_back(true);
+    f.reasons.emplace_back();
+    f.correct = "none";
+  }
+  a.prompt = tr("the true statements", lang);
   a.fields = {f};
   return {};
 }
@@ -53,12 +63,21 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
                       const Value& expected, QuizAnswer& a, Lang lang) {
   if (expected.shape == Value::Shape::Null) return "it has no value here";
   switch (spec.kind) {
+    case AnswerKind::Point:
+      // Homogeneous (x, y, z, w) is right up to the scale of w: the quiz asks for the key's w.
+      if (expected.numbers.size() == 4)
+        a.prompt +=
+            " (" + tr(fmt::format("scaled so that w = {}", expected.numbers[3]), lang) + ")";
+      [[fallthrough]];
     case AnswerKind::Scalar:
     case AnswerKind::Vector:
     case AnswerKind::UnitVector:
-    case AnswerKind::Point:
     case AnswerKind::Matrix:
     case AnswerKind::Transform:
+      if (std::find(expected.numbers.begin(), expected.numbers.end(), kInfinityStandIn) !=
+          expected.numbers.end())
+        a.prompt +=
+            " (" + tr("1e30 stands for +∞, the depth of a pixel no polygon covers", lang) + ")";
       a.fields = numbers(expected, accepted_windows(p, key, spec.name, expected));
       return {};
     case AnswerKind::Direction: {
@@ -70,7 +89,7 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
       if (norm == 0) return "a zero vector has no direction";
       for (double& x : unit.numbers) x /= norm;
       unit.exact.clear();
-      a.prompt += " (scaled to length 1)";
+      a.prompt += " (" + tr("scaled to length 1", lang) + ")";
       a.fields = numbers(unit, accepted_windows(p, key, spec.name, unit));
       return {};
     }
@@ -98,7 +117,7 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
       // outcode written as a number: 101 for 0101, 0 for 0000).
       for (std::size_t k = 1; k < f.correct.size() && f.correct[k - 1] == '0'; ++k)
         f.also.push_back(f.correct.substr(k));
-      a.prompt += " (a bit string such as 0101)";
+      a.prompt += " (" + tr("a bit string such as 0101", lang) + ")";
       a.fields = {f};
       return {};
     }
@@ -199,7 +218,7 @@ std::vector<QuizQuestion> quiz_questions(const ProblemSet& set, Lang lang) {
       if (reason.empty())
         q.answers.push_back(a);
       else
-        q.left_out.push_back(name + ": " + reason);
+        q.left_out.push_back(name + ": " + tr(reason, lang));
     }
     out.push_back(q);
   }

@@ -166,6 +166,59 @@ std::string render_feedback_markdown(const GradeReport& r, Lang lang,
   return out;
 }
 
+std::string render_problem_feedback_html(const ProblemGrade& p, Lang lang, bool with_key,
+                                         MathMarkup markup) {
+  std::string out = fmt::format(
+      "<section class=\"problem\" id=\"problem-{}\">\n<h2>{} <small>({})</small> — {} / "
+      "{}</h2>\n",
+      html_escape(p.id), html_escape(p.id), html_escape(p.kind), score_text(p.score),
+      score_text(p.max_score));
+  if (p.error)
+    return out +
+           fmt::format("<p class=\"error\">{}</p>\n</section>\n", html_escape(p.error->format()));
+  out += fmt::format("<table>\n<tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th>{}</tr>\n",
+                     html_escape(tr("Answer", lang)), html_escape(tr("Verdict", lang)),
+                     html_escape(tr("Score", lang)), html_escape(tr("You wrote", lang)),
+                     with_key ? "<th>" + html_escape(tr("Expected", lang)) + "</th>" : "");
+  for (const AnswerGrade& a : p.answers) {
+    const std::string_view v = to_string(a.verdict);
+    out += fmt::format(
+        "<tr class=\"{}\" data-verdict=\"{}\" data-word=\"{}\"><td><code>{}</code></td><td "
+        "class=\"verdict\">{}</td><td>{} / {}</td><td class=\"math{}\">{}</td>{}</tr>\n",
+        v, v, html_escape(verdict_word(a.verdict, lang)), html_escape(a.name),
+        html_escape(verdict_word(a.verdict, lang)), score_text(a.score), score_text(a.max_score),
+        // What a student wrote is never read as a formula by the host's MathJax.
+        markup == MathMarkup::Delimited ? " mathjax_ignore" : "", html_escape(got_shown(a)),
+        with_key
+            ? "<td class=\"math\">" + html_math(a.expected.shown(), lang, false, markup) + "</td>"
+            : "");
+  }
+  out += "</table>\n";
+  for (const AnswerGrade& a : p.answers) {
+    if (a.verdict == Verdict::Correct) continue;
+    const bool steps = with_key && !a.derivation.empty();
+    if (a.misconception.empty() && a.feedback.empty() && !steps) continue;
+    out += fmt::format(
+        "<div class=\"answer-feedback\" id=\"feedback-{}-{}\">\n<h3><code>{}</code>{}</h3>\n",
+        html_escape(p.id), html_escape(a.name), html_escape(a.name),
+        a.carried_forward
+            ? " — " + html_escape(tr("credit carried forward from your earlier answer", lang))
+            : "");
+    if (!a.misconception.empty())
+      out += fmt::format("<p class=\"mistake\"><b>{}:</b> {}</p>\n",
+                         html_escape(tr("Common mistake", lang)),
+                         html_escape(misconception_text(a, lang)));
+    if (!a.feedback.empty())
+      out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(tr(a.feedback, lang)));
+    if (steps)
+      out += fmt::format("<details open><summary>{}</summary>\n{}</details>\n",
+                         html_escape(tr("How to get it", lang)),
+                         html_steps(a.derivation, lang, markup));
+    out += "</div>\n";
+  }
+  return out + "</section>\n";
+}
+
 std::string render_feedback_html(const GradeReport& r, Lang lang) {
   return render_feedback_html(r, lang, html_math_head());
 }
@@ -184,54 +237,7 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
   for (const Diagnostic& d : r.errors)
     out += fmt::format("<p class=\"error\">{}: {}</p>\n", html_escape(tr("warning", lang)),
                        html_escape(d.format()));
-  for (const ProblemGrade& p : r.problems) {
-    out += fmt::format(
-        "<section class=\"problem\" id=\"problem-{}\">\n<h2>{} <small>({})</small> — {} / "
-        "{}</h2>\n",
-        html_escape(p.id), html_escape(p.id), html_escape(p.kind), score_text(p.score),
-        score_text(p.max_score));
-    if (p.error) {
-      out += fmt::format("<p class=\"error\">{}</p>\n</section>\n", html_escape(p.error->format()));
-      continue;
-    }
-    out +=
-        fmt::format("<table>\n<tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th></tr>\n",
-                    html_escape(tr("Answer", lang)), html_escape(tr("Verdict", lang)),
-                    html_escape(tr("Score", lang)), html_escape(tr("You wrote", lang)),
-                    html_escape(tr("Expected", lang)));
-    for (const AnswerGrade& a : p.answers) {
-      const std::string_view v = to_string(a.verdict);
-      out += fmt::format(
-          "<tr class=\"{}\" data-verdict=\"{}\" data-word=\"{}\"><td><code>{}</code></td><td "
-          "class=\"verdict\">{}</td>"
-          "<td>{} / {}</td><td class=\"math\">{}</td><td class=\"math\">{}</td></tr>\n",
-          v, v, html_escape(verdict_word(a.verdict, lang)), html_escape(a.name),
-          html_escape(verdict_word(a.verdict, lang)), score_text(a.score), score_text(a.max_score),
-          html_escape(got_shown(a)), html_math(a.expected.shown(), lang, false));
-    }
-    out += "</table>\n";
-    for (const AnswerGrade& a : p.answers) {
-      if (a.verdict == Verdict::Correct) continue;
-      if (a.misconception.empty() && a.feedback.empty() && a.derivation.empty()) continue;
-      out += fmt::format(
-          "<div class=\"answer-feedback\" id=\"feedback-{}-{}\">\n<h3><code>{}</code>{}</h3>\n",
-          html_escape(p.id), html_escape(a.name), html_escape(a.name),
-          a.carried_forward
-              ? " — " + html_escape(tr("credit carried forward from your earlier answer", lang))
-              : "");
-      if (!a.misconception.empty())
-        out += fmt::format("<p class=\"mistake\"><b>{}:</b> {}</p>\n",
-                           html_escape(tr("Common mistake", lang)),
-                           html_escape(misconception_text(a, lang)));
-      if (!a.feedback.empty())
-        out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(tr(a.feedback, lang)));
-      if (!a.derivation.empty())
-        out += fmt::format("<details open><summary>{}</summary>\n{}</details>\n",
-                           html_escape(tr("How to get it", lang)), html_steps(a.derivation, lang));
-      out += "</div>\n";
-    }
-    out += "</section>\n";
-  }
+  for (const ProblemGrade& p : r.problems) out += render_problem_feedback_html(p, lang);
   out += fmt::format("<script>{}{}</script>\n</body>\n</html>\n", kScript, html_math_script());
   return out;
 }

@@ -22,13 +22,21 @@ json prairielearn_results(const GradeReport& r, Lang lang) {
   j["gradable"] = format_errors.empty();
   if (!format_errors.empty()) {
     j["format_errors"] = format_errors;
-    j["message"] =
-        "Some answers could not be read; fix them and submit again (this attempt is not counted).";
+    j["message"] = tr(
+        "Some answers could not be read; fix them and submit again (this attempt is not counted).",
+        lang);
     return j;
   }
   j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
   j["message"] =
       fmt::format("{} / {}", number_json(r.score).dump(), number_json(r.max_score).dump());
+  // The feedback as HTML for the question's submission panel ({{{feedback.results.frustum_html}}}:
+  // pl-external-grader-results shows text only, in <pre>), formulas for PrairieLearn's MathJax;
+  // without the key, which the answer panel shows when the assessment's policy allows.
+  std::string html;
+  for (const ProblemGrade& p : r.problems)
+    html += render_problem_feedback_html(p, lang, false, MathMarkup::Delimited);
+  j["frustum_html"] = html;
   json tests = json::array();
   for (const ProblemGrade& p : r.problems) {
     json t;
@@ -36,9 +44,8 @@ json prairielearn_results(const GradeReport& r, Lang lang) {
     t["points"] = number_json(p.score);
     t["max_points"] = number_json(p.max_score);
     t["message"] = p.error                  ? visible_text(p.error->format())
-                   : p.score >= p.max_score ? "correct"
-                                            : "see the feedback below";
-    t["output"] = render_problem_feedback_markdown(p, lang);
+                   : p.score >= p.max_score ? tr("correct", lang)
+                                            : tr("see the feedback below", lang);
     tests.push_back(t);
   }
   j["tests"] = tests;

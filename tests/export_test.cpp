@@ -4,11 +4,15 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "export/export_gradebook.hpp"
 #include "export/export_moodle.hpp"
+#include "export/export_prairielearn.hpp"
 #include "export/export_qti.hpp"
 #include "export/quiz_items.hpp"
 #include "grader/grade.hpp"
+#include "solver/input/yaml_document.hpp"
 #include "solver/problem/variants.hpp"
 #include "test_util.hpp"
 
@@ -98,9 +102,9 @@ TEST(Export, AnswersNoFieldCanCheckAreNamedNotDropped) {
   EXPECT_EQ(qs[1].left_out, std::vector<std::string>{
                                 "plane: a plane's equation is right up to any non-zero factor"});
   const std::string moodle = export_moodle({{"", qs}}, "Seed 1");
-  EXPECT_NE(moodle.find("Not asked here (graded by Frustum only): plane:"), std::string::npos);
-  EXPECT_NE(moodle.find("{100:NUMERICAL:=8:0.008}"), std::string::npos)
-      << moodle;  // z = 8, rel 1e-3, 1 point
+  EXPECT_NE(moodle.find("Not asked here: plane:"), std::string::npos);
+  // z = 8, rel 1e-3, 1 point; the normal's 1 point is three fields of 1/3: weights 1, 1, 1, 3.
+  EXPECT_NE(moodle.find("{3:NUMERICAL:=8:0.008}"), std::string::npos) << moodle;
   const auto qti = export_qti({{"", qs}}, "Seed 1", "seed1");
   ASSERT_TRUE(qti.count("seed1.xml"));
   EXPECT_NE(qti.at("seed1.xml").find("<vargte respident=\"response1\">7.992</vargte>"),
@@ -148,6 +152,154 @@ TEST(Export, TextFieldsAcceptExactlyWhatTheGraderAccepts) {
       }
   EXPECT_GE(fields, 4);
   EXPECT_GT(dropped, 0);  // some outcode has a leading zero
+}
+
+// Moodle's Cloze grading (question/type/multianswer): the question's mark is the sum of its
+// subquestions' weights (<defaultgrade> is ignored) and a student earns Σ wᵢ·fractionᵢ of it.
+// So each answer's share of the weights must be its share of the problem's points, and a
+// problem whose points split into whole weights is marked out of its own points.
+TEST(Export, MoodleClozeWeightsAddUpToTheProblemsPoints) {
+  int whole = 0, scaled = 0;
+  for (const char* file :
+       {"problems/seeds/001_zbuffer_plane_method.yaml",
+        "problems/seeds/002_transforms_and_view_volume.yaml",
+        "problems/seeds/003_polygons_backface.yaml",
+        "problems/seeds/004_placing_and_projecting.yaml", "problems/examples/pipeline.yaml"}) {
+    const ProblemSet set = load_problem_set(test::source_path(file));
+    for (const QuizQuestion& q : quiz_questions(set)) {
+      if (q.answers.empty()) continue;
+      const std::string xml = export_moodle({{"", {q}}}, "t");
+      if (xml.find("type=\"cloze\"") == std::string::npos) continue;
+      // The weights as Moodle reads them: {WEIGHT:TYPE:...} in the question text.
+      std::vector<long long> read;
+      for (std::size_t at = xml.find("{"); at != std::string::npos; at = xml.find("{", at + 1)) {
+        const std::size_t colon = xml.find(':', at);
+        const std::string w = xml.substr(at + 1, colon - at - 1);
+        if (!w.empty() && w.find_first_not_of("0123456789") == std::string::npos)
+          read.push_back(std::stoll(w));
+      }
+      double total = 0;
+      std::size_t fields = 0;
+      for (const QuizAnswer& a : q.answers) total += a.points, fields += a.fields.size();
+      ASSERT_EQ(read.size(), fields) << file << " " << q.id;
+      long long sum = 0;
+      for (const long long w : read) sum += w;
+      std::size_t k = 0;
+      bool whole_points = true;
+      for (const QuizAnswer& a : q.answers) {
+        long long share = 0;
+        for (std::size_t i = 0; i < a.fields.size(); ++i) share += read[k++];
+        EXPECT_NEAR(double(share) / double(sum), a.points / total, 1e-9) << q.id << "." << a.name;
+        const double per = a.points / double(a.fields.size());
+        whole_points = whole_points && per == std::floor(per);
+      }
+      EXPECT_NE(xml.find(fmt::format("<defaultgrade>{}</defaultgrade>", sum)), std::string::npos);
+      if (whole_points) {
+        EXPECT_EQ(double(sum), total) << q.id;
+        ++whole;
+      } else {
+        // Not whole: the smallest whole weights, and the comment says which mark to set.
+        EXPECT_NE(xml.find(fmt::format("maximum mark in the quiz to {}", total)), std::string::npos)
+            << xml;
+        ++scaled;
+      }
+    }
+  }
+  EXPECT_GE(whole, 1);   // a clipped segment's outcodes and truths: one field each
+  EXPECT_GT(scaled, 3);  // a vector's point split over its numbers
+}
+
+// PrairieLearn's element rules (pl-checkbox.py: "At least one option must be true", min-correct
+// at least 1; pl-number-input and pl-matrix-input refuse `none` and sqrt(…)): a set whose
+// statements are all false, and a polygon clipped away, export questions that render and take
+// their key as typed.
+TEST(Export, PrairieLearnQuestionsRenderAndTakeTheirKey) {
+  const char* kSet = R"(title: t
+problems:
+  - id: gone
+    kind: clip_polygon
+    given:
+      points: [[5, 5], [8, 5], [5, 8]]
+      window: {xmin: 0, xmax: 1, ymin: 0, ymax: 1}
+  - id: none-true
+    kind: statements
+    text: "Which are true?"
+    given:
+      statements:
+        - {text: "One.", truth: false}
+        - {text: "Two.", truth: false}
+  - id: pixel
+    kind: depth_at_pixel
+    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1]}
+)";
+  const YamlDocument doc = parse_yaml(kSet, "t.yaml");
+  const ProblemSet set = load_problem_set(doc, "t.yaml");
+  ASSERT_TRUE(set.all_errors().empty());
+  PrairieLearnOptions options;
+  options.image = "course/frustum-grader:1";
+  options.lang = Lang::Ru;
+  const auto pl = export_prairielearn(doc.root, set, {set}, "t", options);
+  ASSERT_EQ(pl.size(), 3u);
+  for (const auto& [dir, files] : pl) {
+    const std::string& html = files.at("question.html");
+    const std::string& server = files.at("server.py");
+    EXPECT_EQ(html.find("pl-number-input"), std::string::npos) << dir;
+    EXPECT_EQ(html.find("pl-matrix-input"), std::string::npos) << dir;
+    EXPECT_EQ(html.find("min-correct"), std::string::npos) << dir;
+    EXPECT_NE(html.find("{{{feedback.results.frustum_html}}}"), std::string::npos) << dir;
+    EXPECT_NE(html.find("<pl-answer-panel>"), std::string::npos) << dir;
+    EXPECT_NE(server.find("data[\"correct_answers\"].update"), std::string::npos) << dir;
+    EXPECT_NE(server.find("\\\"lang\\\":\\\"ru\\\""), std::string::npos) << dir;
+    EXPECT_NE(files.at("info.json").find("\"image\": \"course/frustum-grader:1\""),
+              std::string::npos);
+  }
+  // No statement is true: the right option is "none of them" (in Russian), the only right one.
+  const std::string& checkbox = pl.at("t-none-true").at("question.html");
+  EXPECT_NE(checkbox.find("<pl-answer correct=\"true\">Ни одно из утверждений выше не верно"),
+            std::string::npos)
+      << checkbox;
+  std::size_t right = 0;
+  for (std::size_t at = checkbox.find("correct=\"true\""); at != std::string::npos;
+       at = checkbox.find("correct=\"true\"", at + 1))
+    ++right;
+  EXPECT_EQ(right, 1u) << checkbox;
+  // The polygon clipped away: a text input whose key is `none`.
+  const std::string& gone = pl.at("t-gone").at("question.html");
+  EXPECT_NE(gone.find("<pl-string-input answers-name=\"clipped\""), std::string::npos) << gone;
+  EXPECT_NE(pl.at("t-gone").at("server.py").find("\\\"clipped\\\":\\\"none\\\""), std::string::npos)
+      << pl.at("t-gone").at("server.py");
+  // z = 8 by the plane method: its exact key, and the window of a decimal said in Russian.
+  const std::string& pixel = pl.at("t-pixel").at("server.py");
+  EXPECT_NE(pixel.find("\\\"z\\\":\\\"8\\\""), std::string::npos) << pixel;
+  EXPECT_NE(pixel.find("±0.008"), std::string::npos) << pixel;
+  EXPECT_NE(pixel.find("Можно писать точные значения"), std::string::npos) << pixel;
+}
+
+// Canvas matches SIS User ID and Moodle ID number exactly: an id the spreadsheet guard would
+// change ('=cmd) is left out and named, never written as an id no student has; plain ids and
+// signed numbers stay as they are.
+TEST(Export, GradebookIdsAreWrittenAsTheLmsKnowsThemOrLeftOut) {
+  const std::string book =
+      "student,score,max_score,percent,status\n"
+      "s1,3,4,75,graded\n=cmd(),4,4,100,graded\n@sum(1),2,4,50,graded\n"
+      "-42,1,4,25,graded\n";
+  for (const GradebookFormat format : {GradebookFormat::Canvas, GradebookFormat::Moodle}) {
+    std::vector<std::string> left_out;
+    const std::string csv =
+        export_gradebook(book, "gradebook.csv", format, "HW", StudentKey::SisUserId, &left_out);
+    EXPECT_EQ(csv.find("'="), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("'@"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("cmd"), std::string::npos) << csv;
+    EXPECT_NE(csv.find(format == GradebookFormat::Canvas ? ",,s1,,,3\n" : "s1,3\n"),
+              std::string::npos)
+        << csv;
+    EXPECT_NE(csv.find(format == GradebookFormat::Canvas ? ",,-42,,,1\n" : "-42,1\n"),
+              std::string::npos)
+        << csv;
+    ASSERT_EQ(left_out.size(), 2u);
+    EXPECT_NE(left_out[0].find("enter the grade (4) by hand"), std::string::npos) << left_out[0];
+    EXPECT_NE(left_out[1].find("@sum(1)"), std::string::npos) << left_out[1];
+  }
 }
 
 }  // namespace

@@ -568,11 +568,13 @@ TEST(PostgresStore, ConnectionsTheServerClosedAreReplacedBeforeUse) {
                              {name});
   ASSERT_EQ(ended.rows.size(), 1u);
   EXPECT_EQ(ended.rows[0][0], "t");
-  for (int i = 0; i < 50 && PgConnection(scratch->url())
-                                    .exec("SELECT count(*) FROM pg_stat_activity WHERE "
-                                          "application_name = $1",
-                                          {name})
-                                    .rows[0][0] != "0";
+  // Until the server has ended them (up to 10 s: on a loaded machine a backend takes its time
+  // to exit, and a session still closing is not yet one the server closed).
+  for (int i = 0; i < 500 && PgConnection(scratch->url())
+                                     .exec("SELECT count(*) FROM pg_stat_activity WHERE "
+                                           "application_name = $1",
+                                           {name})
+                                     .rows[0][0] != "0";
        ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   EXPECT_EQ(store->student_by_token("hash-ann"), "ann");

@@ -214,7 +214,11 @@ TEST(Statements, MoodleExportIsAMultipleAnswerQuestion) {
   extra.fields[0].type = QuizField::Type::Choice;
   qs[0].answers.push_back(extra);
   const std::string cloze = export_moodle({{"", qs}}, "Seed 3");
-  EXPECT_NE(cloze.find("{100:MULTIRESPONSE:%100%1つの凸多面体"), std::string::npos) << cloze;
+  // Two answers of equal points: equal whole weights (Moodle marks the question out of their sum).
+  const std::size_t at = cloze.find(":MULTIRESPONSE:%100%1つの凸多面体");
+  ASSERT_NE(at, std::string::npos) << cloze;
+  EXPECT_EQ(cloze.substr(cloze.rfind('{', at), at - cloze.rfind('{', at)),
+            fmt::format("{{{}", cloze_weights(qs[0]).front()));
   EXPECT_NE(cloze.find("~%-33.333%バックフェースカリングを実行する"), std::string::npos) << cloze;
 }
 
@@ -232,6 +236,8 @@ TEST(Statements, CanvasExportIsAMultipleAnswersQuestion) {
             std::string::npos)
       << xml;
   EXPECT_EQ(xml.find("truth"), std::string::npos);
+  // Canvas's own rule for multiple answers (−1/T a wrong box), stated to the students.
+  EXPECT_NE(xml.find("each wrong one ticked loses 1/1"), std::string::npos) << xml;
 }
 
 TEST(Statements, PrairieLearnExportIsACheckboxGradedByFrustum) {
@@ -244,7 +250,11 @@ TEST(Statements, PrairieLearnExportIsACheckboxGradedByFrustum) {
   const auto& files = out.at("003-seed003-culling-statements");
   const std::string& html = files.at("question.html");
   EXPECT_NE(html.find("<pl-checkbox answers-name=\"true_statements\" fixed-order=\"true\" "
-                      "allow-blank=\"true\""),
+                      "hide-letter-keys=\"true\">"),
+            std::string::npos)
+      << html;
+  // Some statement is true here, so the last option, "none is true", is a wrong one.
+  EXPECT_NE(html.find("<pl-answer correct=\"false\">上の記述はどれも正しくない</pl-answer>"),
             std::string::npos)
       << html;
   EXPECT_NE(html.find("<pl-answer correct=\"true\">1. 1つの凸多面体"), std::string::npos) << html;

@@ -29,8 +29,13 @@ std::string render_markdown(const SetResult& set, Lang lang = Lang::En);
 
 // Typeset HTML (render_html.cpp): formulas typeset by KaTeX, inlined from Debian's libjs-katex
 // (no network); each formula's Unicode form stays inside its element as the fallback.
-std::string html_math(const MathText& m, Lang lang = Lang::En, bool display = true);
-std::string html_steps(const std::vector<Step>& steps, Lang lang = Lang::En);
+// A page typesets formulas itself (KaTeX, html_math_script()), or its host does: a course
+// platform whose pages run MathJax over \( … \) and \[ … \] (PrairieLearn).
+enum class MathMarkup { KaTeX, Delimited };
+std::string html_math(const MathText& m, Lang lang = Lang::En, bool display = true,
+                      MathMarkup markup = MathMarkup::KaTeX);
+std::string html_steps(const std::vector<Step>& steps, Lang lang = Lang::En,
+                       MathMarkup markup = MathMarkup::KaTeX);
 // KaTeX's style (fonts inlined) and script for a page's <head>; empty when KaTeX is absent.
 std::string html_math_head();
 // KaTeX as files, for many pages that link one shared copy instead of each carrying it:

@@ -120,14 +120,17 @@ std::string html_math_script() {
 )JS";
 }
 
-std::string html_math(const MathText& m, Lang lang, bool display) {
+std::string html_math(const MathText& m, Lang lang, bool display, MathMarkup markup) {
   const MathText t = tr(m, lang);
+  if (markup == MathMarkup::Delimited)
+    return fmt::format("<span class=\"tex\" title=\"{}\">{}{}{}</span>", svg_escape(t.unicode),
+                       display ? "\\[" : "\\(", svg_escape(t.latex), display ? "\\]" : "\\)");
   return fmt::format("<span class=\"tex{}\" data-tex=\"{}\" title=\"{}\">{}</span>",
                      display ? " display" : "", svg_escape(t.latex), svg_escape(t.unicode),
                      svg_escape(t.unicode));
 }
 
-std::string html_steps(const std::vector<Step>& steps, Lang lang) {
+std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup markup) {
   std::string out = "<ol class=\"steps\">\n";
   int number = 0;  // notes and warnings are not numbered, as in the text rendering
   for (const Step& s : steps) {
@@ -136,10 +139,10 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang) {
                                                            : fmt::format(" value=\"{}\"", ++number);
     out += fmt::format("<li{}><b>{}</b>", cls, svg_escape(title_in(s, lang)));
     for (const MathText* m : {&s.formula, &s.substitution})
-      if (!m->empty()) out += "<div class=\"math\">" + html_math(*m, lang) + "</div>";
+      if (!m->empty()) out += "<div class=\"math\">" + html_math(*m, lang, true, markup) + "</div>";
     if (!s.result.empty())
       out += "<div class=\"math result\">" +
-             html_math(math("⇒ ", "\\Rightarrow\\; ") + s.result, lang) + "</div>";
+             html_math(math("⇒ ", "\\Rightarrow\\; ") + s.result, lang, true, markup) + "</div>";
     if (!s.note.empty())
       out += fmt::format("<div class=\"note\">{}</div>", svg_escape(note_in(s, lang)));
     out += "</li>\n";

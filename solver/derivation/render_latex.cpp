@@ -37,6 +37,12 @@ std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
 
 }  // namespace
 
+// luatexja, with the sub- and superscript digits (e₀ × e₁) left to the Latin font: the Japanese
+// fonts have none.
+constexpr const char* kLuatexja =
+    "\\usepackage{luatexja}\n\\ltjdefcharrange{200}{\"2070-\"209F}"
+    "\\ltjsetparameter{jacharrange={-200}}\n";
+
 std::string render_latex(const SetResult& set, Lang lang) {
   const std::string title = set.title.empty() ? set.file : set.title.in(lang);
   std::string out = "\\section*{" + prose(title) + "}\n";
@@ -65,7 +71,7 @@ std::string render_latex(const SetResult& set, Lang lang) {
       "% Compile with lualatex.\n\\documentclass[11pt]{article}\n\\usepackage{amsmath,amssymb}\n"
       "\\usepackage{fontspec}\n\\setmainfont{DejaVu Serif}\n\\setsansfont{DejaVu "
       "Sans}\n\\setmonofont{DejaVu Sans Mono}\n" +
-      std::string(has_cjk(out) ? "\\usepackage{luatexja}\n" : "") +
+      std::string(has_cjk(out) ? kLuatexja : "") +
       "\\usepackage[margin=2cm]{geometry}\n\\setcounter{MaxMatrixCols}{20}\n\\allowdisplaybreaks\n"
       "\\begin{document}\n";
   return preamble + out + "\\end{document}\n";

@@ -30,6 +30,8 @@ check "cmake --install: bash completion" test -f "$work/prefix/share/bash-comple
 (cd "$build" && cpack -G DEB -B "$work/deb" >/dev/null)
 deb=$(ls "$work/deb"/frustum_"$version"_*.deb)
 check "the .deb depends on the shared libraries it links" grep -q "libginac" <(dpkg-deb -f "$deb" Depends)
+check "the .deb suggests TeX and KaTeX" grep -q "texlive-latex-base.*libjs-katex" <(dpkg-deb -f "$deb" Suggests)
+check "the .deb has its copyright file" grep -q "./usr/share/doc/frustum/copyright$" <(dpkg-deb -c "$deb")
 dpkg -i "$deb" >/dev/null || apt-get install -f -y -qq >/dev/null
 check "dpkg -i installed frustum $version" test "$(dpkg-query -W -f='${Version}' frustum)" = "$version"
 check "/usr/bin/frustum --version" test "$(/usr/bin/frustum --version)" = "frustum $version"
@@ -52,5 +54,7 @@ complete_words() {  # complete_words WORD...: what bash completion offers for th
 check "completion: subcommands" test "$(complete_words frustum so)" = "solve"
 check "completion: options" grep -qw -- "--precision" <(complete_words frustum solve --p)
 check "completion: a choice's words" test "$(complete_words frustum solve x.yaml --format '')" = "text markdown json html latex"
+check "completion: a positional's words (export's formats)" \
+  test "$(complete_words frustum export '')" = "prairielearn qti moodle canvas-grades moodle-grades"
 echo "$failures failed"
 [ "$failures" -eq 0 ]

@@ -22,16 +22,54 @@ check() {
 validate() { python3 "$here/validate_json.py" "$@"; }
 
 # --- PrairieLearn -------------------------------------------------------------------------
-for set in 001_zbuffer_plane_method 003_polygons_backface 000_projection_and_hidden_surfaces; do
-  "$frustum" export prairielearn "$src/problems/seeds/$set.yaml" --count 4 --seed 3 -o "$work/pl" >/dev/null 2>&1
+# Besides the seeds: statements none of which is true, and a polygon clipped away (key `none`).
+# Another set (its own title: a question's UUID is its set's title and its id), every statement
+# false.
+sed -e 's/truth: ○/truth: ×/' -e 's/ja: "ポリゴンの法線ベクトルとバックフェースカリング"/ja: "正しい記述のない問題"/' \
+  "$src/problems/seeds/003_polygons_backface.yaml" > "$work/none_true.yaml"
+cat > "$work/clipped_away.yaml" <<'YAML'
+title: Clipped away
+problems:
+  - id: gone
+    kind: clip_polygon
+    text: "Clip the triangle against the window 0 ≤ x ≤ 1, 0 ≤ y ≤ 1."
+    given:
+      points: [[5, 5], [8, 5], [5, 8]]
+      window: {xmin: 0, xmax: 1, ymin: 0, ymax: 1}
+  - id: kept
+    kind: clip_polygon
+    given:
+      points: [[0, 0], [4, 0], [0, 4]]
+      window: {xmin: 1, xmax: 3, ymin: 1, ymax: 3}
+YAML
+image=frustum-course/frustum-grader:test
+for set in "$src"/problems/seeds/001_zbuffer_plane_method.yaml "$src"/problems/seeds/003_polygons_backface.yaml \
+           "$src"/problems/seeds/000_projection_and_hidden_surfaces.yaml "$work/none_true.yaml" "$work/clipped_away.yaml"; do
+  "$frustum" export prairielearn "$set" --count 4 --seed 3 --image "$image" -o "$work/pl" >/dev/null 2>&1
 done
+"$frustum" export prairielearn "$src/problems/seeds/003_polygons_backface.yaml" --lang ja --image "$image" -o "$work/pl-ja" >/dev/null 2>&1
 check "every question's info.json has PrairieLearn's fields" \
   validate "$here/prairielearn_info.schema.json" "$work"/pl/*/info.json
+check "the grader image is the one given, a name PrairieLearn can pull" \
+  test "$(cat "$work"/pl/*/info.json | grep -c "\"image\": \"$image\"")" = "$(ls -d "$work"/pl/*/ | wc -l)"
+check "without --image, export prairielearn refuses and says why" \
+  grep -q "give --image ACCOUNT/NAME:TAG" <("$frustum" export prairielearn "$src/problems/seeds/001_zbuffer_plane_method.yaml" -o "$work/noimage" 2>&1 || true)
 check "UUIDs are distinct" test "$(cat "$work"/pl/*/info.json | grep -c '"uuid"')" = \
                                "$(cat "$work"/pl/*/info.json | grep '"uuid"' | sort -u | wc -l)"
-"$frustum" export prairielearn "$src/problems/seeds/001_zbuffer_plane_method.yaml" --count 4 --seed 3 -o "$work/pl2" >/dev/null 2>&1
+"$frustum" export prairielearn "$src/problems/seeds/001_zbuffer_plane_method.yaml" --count 4 --seed 3 --image "$image" -o "$work/pl2" >/dev/null 2>&1
 check "a second export is byte-identical (UUIDs and variants stay)" \
   diff <(cd "$work/pl2" && cat */*) <(cd "$work/pl" && cat 001_*/*)
+# PrairieLearn's own element rules (prairielearn_elements.py, from the elements' code): every
+# question renders, every input takes the key as a student types it.
+check "PrairieLearn: every question.html passes the elements' rules (pl-checkbox has a right option, ...)" \
+  python3 "$here/prairielearn_elements.py" "$work"/pl/*/ "$work"/pl-ja/*/
+# ... and the rules catch what PrairieLearn refuses: a question as the exports once were (no
+# right checkbox, min-correct="0", a pl-number-input), planted in a copy of a real one.
+planted=$work/planted && mkdir -p "$planted" && cp "$(ls -d "$work"/pl/none_true-*culling*/)"* "$planted/"
+sed -i 's/correct="true">\([^0-9]\)/correct="false">\1/; s/hide-letter-keys="true">/hide-letter-keys="true" min-correct="0">/' "$planted/question.html"
+echo '<pl-number-input answers-name="w"></pl-number-input>' >> "$planted/question.html"
+check "PrairieLearn: the element rules refuse a checkbox with no right option and a pl-number-input" \
+  test "$(python3 "$here/prairielearn_elements.py" "$planted/" | grep -c 'At least one option must be true\|min-correct must be\|refuses exact forms')" = 3
 
 # PrairieLearn's side, played by Python: generate() with a seeded `random`, then the answers
 # as the elements submit them, then the external grader's run.
@@ -47,30 +85,23 @@ data = {"params": {}, "correct_answers": {}}
 server.generate(data)
 params = data["params"]
 html = open(os.path.join(question, "question.html"), encoding="utf-8").read()
-element = {"number": "pl-number-input", "vector": "pl-matrix-input", "matrix": "pl-matrix-input",
-           "choice": "pl-multiple-choice", "string": "pl-string-input", "checkbox": "pl-checkbox"}
+element = {"choice": "pl-multiple-choice", "string": "pl-string-input", "checkbox": "pl-checkbox"}
 for name, kind in params["inputs"].items():
     if not re.search(r'<%s answers-name="%s"' % (element[kind], re.escape(name)), html):
         sys.exit(f"question.html has no {element[kind]} for {name}")
+    if kind == "string" and name not in data["correct_answers"]:
+        sys.exit(f"server.py sets no correct_answers for {name} (the answer panel would be empty)")
 # The expected answers, from Frustum itself.
 set_path = os.path.join(work, "set.yaml")
 open(set_path, "w", encoding="utf-8").write(params["set"])
 solved = json.loads(subprocess.run([frustum, "solve", set_path, "--format", "json"], check=True,
                                    stdout=subprocess.PIPE).stdout)
 answers = solved["problems"][0]["answers"]
-submitted, raw = {}, {}
+submitted, raw, changed = {}, {}, False
 for name, kind in params["inputs"].items():
     a = answers[name]
     value = a["value"]
-    if kind == "number":
-        if mode == "wrong":
-            value = value + 1000
-        submitted[name], raw[name] = value, a.get("exact", str(value))
-    elif kind in ("vector", "matrix"):
-        rows = value if kind == "matrix" else [value]
-        submitted[name] = {"_type": "ndarray", "_value": rows, "_dtype": "float64"}
-        raw[name] = json.dumps(rows)
-    elif kind == "choice":
+    if kind == "choice":
         words = list(params["correct"][name])
         params[name] = [{"key": chr(97 + i), "html": w} for i, w in enumerate(words)]
         right = str(value).lower() if isinstance(value, bool) else str(value)
@@ -79,44 +110,42 @@ for name, kind in params["inputs"].items():
         options = re.findall(r'<pl-answer correct="(true|false)">(.*?)</pl-answer>', html)
         params[name] = [{"key": chr(97 + i), "html": text} for i, (_, text) in enumerate(options)]
         submitted[name] = [chr(97 + i) for i, (right, _) in enumerate(options) if right == "true"]
-        if [k for k, v in value.items() if v == "true"] != [str(i + 1) for i, (r, _) in enumerate(options) if r == "true"]:
+        numbered = [r for r, text in options if re.match(r"\d+\.", text)]
+        if [k for k, v in value.items() if v == "true"] != [str(i + 1) for i, r in enumerate(numbered) if r == "true"]:
             sys.exit("question.html's checkboxes are not the key")
-    else:
-        text = a.get("text") if isinstance(value, list) or isinstance(value, dict) else str(value)
-        if isinstance(value, str):
-            text = value
-        elif isinstance(value, list) and all(isinstance(x, (int, float)) for x in value) and len(value) == 4:
-            text = json.dumps(value)  # a plane as [a, b, c, d]
-        elif isinstance(value, (list, dict)):
-            text = json.dumps(value)
+    else:  # pl-string-input: the key as the answer panel shows it (exact forms, `none`)
+        text = data["correct_answers"][name]
+        if mode == "wrong" and isinstance(value, (int, float)) and not isinstance(value, bool):
+            text, changed = str(value + 1000), True
         submitted[name] = raw[name] = text
-if mode == "unreadable":  # a matrix that does not close, or a nested mapping where words belong
+if mode == "unreadable":  # a list that does not close, or a nested mapping where words belong
     kinds = params["inputs"]
-    name = next((n for n, k in kinds.items() if k in ("vector", "matrix")), next(iter(kinds)))
-    raw[name] = submitted[name] = ("[1, 2" if kinds[name] not in ("string", "checkbox") else
-                                   ["z"] if kinds[name] == "checkbox" else "{0-1: {x: y}}")
+    name = next(iter(kinds))
+    raw[name] = submitted[name] = ["z"] if kinds[name] == "checkbox" else "{0-1: {x: y}}" if kinds[name] == "string" else "[1, 2"
 root = os.path.join(work, "grade")
 os.makedirs(os.path.join(root, "data"), exist_ok=True)
-json.dump({"params": params, "correct_answers": {}, "submitted_answers": submitted,
+json.dump({"params": params, "correct_answers": data["correct_answers"], "submitted_answers": submitted,
            "raw_submitted_answers": raw}, open(os.path.join(root, "data", "data.json"), "w"))
 results = os.path.join(root, "results", "results.json")
 if os.path.exists(results):
     os.remove(results)
 subprocess.run([sys.executable, grader], check=True, env=dict(os.environ, GRADE_ROOT=root, FRUSTUM=frustum))
 r = json.load(open(results))
-print(json.dumps({"gradable": r.get("gradable"), "score": r.get("score")}))
+print(json.dumps({"gradable": r.get("gradable"), "score": r.get("score")}) if mode != "wrong" else
+      json.dumps({"gradable": r.get("gradable"), "score": r.get("score"), "changed": changed}))
 PY
 grader=$src/tools/prairielearn/frustum-pl-grade
-all_right=1 all_wrong=1 all_invalid=1 graded=0
-for q in "$work"/pl/*/; do
+all_right=1 all_wrong=1 all_invalid=1 graded=0 wrongs=0
+for q in "$work"/pl/*/ "$work"/pl-ja/*/; do
   for seed in 1 2; do
     r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" right $seed) || { echo "FAILED: $q: $r"; all_right=0; continue; }
     validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_right=0
     [ "$r" = '{"gradable": true, "score": 1.0}' ] || { echo "  $q right answers: $r"; all_right=0; }
     graded=$((graded + 1))
   done
-  if grep -q '"number"' "$q/server.py"; then
-    r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" wrong 1)
+  r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" wrong 1)
+  if [ "${r#*\"changed\": true}" != "$r" ]; then  # some number was moved
+    wrongs=$((wrongs + 1))
     validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_wrong=0
     python3 -c "import json,sys; r=json.loads(sys.argv[1]); sys.exit(0 if r['gradable'] and r['score'] < 1 else 1)" "$r" ||
       { echo "  $q wrong numbers: $r"; all_wrong=0; }
@@ -125,9 +154,23 @@ for q in "$work"/pl/*/; do
   validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_invalid=0
   [ "$r" = '{"gradable": false, "score": null}' ] || { echo "  $q unreadable: $r"; all_invalid=0; }
 done
-check "PrairieLearn: the right answers, as the elements submit them, earn 1.0 ($graded variants)" test $all_right = 1 -a $graded -gt 20
-check "PrairieLearn: numbers off by 1000 lose points" test $all_wrong = 1
-check "PrairieLearn: an unreadable matrix is not gradable (no attempt charged)" test $all_invalid = 1
+check "PrairieLearn: the key as typed (exact forms, none), as the elements submit it, earns 1.0 ($graded variants)" test $all_right = 1 -a $graded -gt 20
+check "PrairieLearn: numbers off by 1000 lose points ($wrongs questions)" test $all_wrong = 1 -a $wrongs -gt 5
+check "PrairieLearn: an unreadable answer is not gradable (no attempt charged)" test $all_invalid = 1
+# The feedback: HTML with MathJax-delimited formulas for the submission panel, no Markdown or
+# $$ in the grader-results element's <pre> fields, and in the export's language.
+python3 "$work/play.py" "$work" "$frustum" "$grader" "$(ls -d "$work"/pl-ja/*culling-statements*/)" right 1 >/dev/null
+check "PrairieLearn: a --lang ja export grades with Japanese feedback" \
+  grep -q '得点\|正解' "$work/grade/results/results.json"
+python3 "$work/play.py" "$work" "$frustum" "$grader" "$(ls -d "$work"/pl/001_*zbuf*/ | head -1)" wrong 1 >/dev/null
+check "PrairieLearn: feedback is HTML in frustum_html, no Markdown or \$\$ in the <pre> fields" python3 - "$work/grade/results/results.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+pre = json.dumps([r.get("message"), r.get("output")] + [[t.get("message"), t.get("output")] for t in r.get("tests", [])])
+ok = "$$" not in pre and "| ---" not in pre and "**" not in pre
+ok = ok and "<table>" in r.get("frustum_html", "") and "Expected" not in r["frustum_html"]
+sys.exit(0 if ok else 1)
+PY
 
 # Hostile text in a string answer: an alias bomb is refused before it is expanded (it once
 # became a 554 MB answers file), an oversized submission is not gradable, and the grader's

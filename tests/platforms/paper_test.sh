@@ -41,6 +41,19 @@ check "figures for the five kinds that have one, per student" test "$(grep -c 'b
 check "the variant's values fill the text" grep -Eq 'Find z at pixel [[(][0-9]' "$work/class/hw-exams.tex"
 check "the key gives every student's answers" test "$(grep -c 'texttt{z} (' "$work/class/hw-key.tex")" = 3
 check "the generated sets are still written for grading" test -f "$work/class/hw-s1.yaml" -a -f "$work/class/answers/hw-s1.yaml"
+# Issue 47: grids on the picture's coordinates, givens as mathematics, problems kept whole.
+check "every grid steps one unit of the picture (step=1), not TikZ's 1 cm" \
+  test "$(grep -c ' grid (' "$work/class/hw-exams.tex")" = "$(grep -c 'step=1\]' "$work/class/hw-exams.tex")"
+check "no raw YAML or bare xmin in the sheets (givens are typeset)" \
+  test "$(grep -c 'xmin\|texttt{window\|{xmin' "$work/class/hw-exams.tex")" = 0
+check "the window's bounds are typeset as x_min" grep -q 'x_{\\min} = 0' "$work/class/hw-exams.tex"
+check "each problem is one unbreakable block with its figure and answer lines" \
+  test "$(grep -c 'begin{minipage}' "$work/class/hw-exams.tex")" = 15
+if command -v pdftotext >/dev/null && command -v pdftoppm >/dev/null; then
+  # The pages as images (pdftoppm): a sheet's first page is drawn, not blank.
+  pdftoppm -r 40 -f 1 -l 1 -png "$work/class/hw-exams.pdf" "$work/page" >/dev/null 2>&1 || true
+  check "pdftoppm draws the first page" test -s "$(ls "$work"/page*.png 2>/dev/null | head -1)"
+fi
 
 # Every problem of the bundled sets, texts dropped, two drawn variants each: the key's steps
 # cover every kind's derivation text.
@@ -84,6 +97,8 @@ check "no character of any key or sheet lacks a LaTeX form" \
 
 "$frustum" generate "$src/problems/seeds/001_zbuffer_plane_method.yaml" --seed 1 --lang ja -o "$work/ja" --format latex >/dev/null 2>&1
 check "a Japanese exam chooses LuaLaTeX with luatexja" grep -q 'usepackage{luatexja}' "$work/ja/001_zbuffer_plane_method-exams.tex"
+check "a Japanese sheet's answer lines carry no English key (cross:, plane:)" \
+  test "$(grep -c 'texttt{[a-z_]*}: \\hrulefill' "$work/ja/001_zbuffer_plane_method-exams.tex")" = 0
 # And the Japanese PDFs themselves (texlive-lang-japanese): a sheet per student, the text set in
 # Japanese (its words are in the PDF's text), the key with its Japanese steps.
 "$frustum" generate "$src/problems/seeds/001_zbuffer_plane_method.yaml" --roster "$work/roster.csv" --lang ja -o "$work/japdf" --format pdf >/dev/null 2>&1 || true

@@ -4,11 +4,15 @@
 _frustum() {
   local cur prev words cword
   _init_completion || return
-  local i sub="" path=()
+  local i sub="" path=() args=0
   for ((i = 1; i < cword; i++)); do
     case "${words[i]}" in
       -*) ;;
-      *) if [[ -z $sub || $sub == bench ]]; then sub=${words[i]}; path+=("$sub"); fi ;;
+      *) if [[ -z $sub || ($sub == bench && ${#path[@]} == 1) ]]; then
+           sub=${words[i]}; path+=("$sub"); args=0
+         elif [[ ${words[i - 1]} != -* ]]; then
+           args=$((args + 1))  # a positional argument (not an option's value)
+         fi ;;
     esac
   done
   local help
@@ -28,6 +32,14 @@ _frustum() {
   fi
   if [[ $cur == -* ]]; then
     mapfile -t COMPREPLY < <(compgen -W "$(grep -oE '^ *(-[a-zA-Z],)?--[a-z-]+' <<<"$help" | tr ',' ' ')" -- "$cur")
+    return
+  fi
+  # The positional argument being typed: its words when it is a choice ("format
+  # TEXT:{prairielearn,qti,...}" under "Positionals:"), as `frustum export <TAB>` offers.
+  local positional
+  positional=$(sed -n '/^Positionals:/,/^[A-Z]/s/^  \([a-z][a-z_-]*\) .*/&/p' <<<"$help" | sed -n "$((args + 1))p")
+  if [[ $positional =~ \{([^}]*)\} ]]; then
+    mapfile -t COMPREPLY < <(compgen -W "${BASH_REMATCH[1]//,/ }" -- "$cur")
     return
   fi
   # Subcommands are listed under "Subcommands:"; otherwise complete files.

@@ -8,7 +8,9 @@
 # --identity: with per-student sets, check that the answers' `student:` is the Gradescope
 # submitter's student id (sid) or e-mail, so nobody is graded against another student's set.
 # --visibility: when students see each problem's feedback (expected answers and derivations):
-# visible (default), after_due_date, after_published or hidden; the score is shown either way.
+# visible (default), after_due_date, after_published or hidden. Gradescope hides a submission's
+# total score while any of its tests is hidden (its autograder specification), so the score is
+# held back with the feedback: shown after the due date, when grades are published, or never.
 set -euo pipefail
 usage() { echo "usage: make_bundle.sh SET.yaml [--variants DIR] [--lang en|ja|ru] [--identity sid|email|id] [--visibility WHEN] [-o autograder.zip]" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -38,6 +40,9 @@ case "$visibility" in visible|after_due_date|after_published|hidden) ;;
 [ -f "$set_file" ] || { echo "make_bundle: $set_file: no such file" >&2; exit 1; }
 [ -z "$variants" ] || [ -d "$variants" ] || { echo "make_bundle: $variants: no such directory" >&2; exit 1; }
 out=$(realpath -m "$out")
+# zipfile would end in a traceback: say which directory is missing instead.
+[ -d "$(dirname "$out")" ] || { echo "make_bundle: $(dirname "$out"): no such directory (for -o $out); create it first" >&2; exit 1; }
+[ ! -d "$out" ] || { echo "make_bundle: -o $out is a directory; give the zip's file name" >&2; exit 1; }
 set_name=$(basename "$set_file")
 stem=${set_name%.*}
 
