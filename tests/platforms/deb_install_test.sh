@@ -42,7 +42,7 @@ check "the installed frustum solves seed 001 (z = 8)" \
 /usr/bin/frustum solve "$src/problems/seeds" > seeds.txt
 check "the installed frustum solves every seed set" grep -q "D_f = −2" seeds.txt
 check "the installed frustum grades the published answers fully" \
-  grep -q "^Student seed003-published: \([0-9.]*\) / \1$" <(/usr/bin/frustum grade "$src/problems/seeds/003_polygons_backface.yaml" \
+  grep -q "^Student seed003-published: \([0-9.]*\) / \1$" <(/usr/bin/frustum grade --lang en "$src/problems/seeds/003_polygons_backface.yaml" \
                                                             "$src/problems/seeds/answers/003_polygons_backface.yaml")
 check "man frustum-grade is installed" grep -q "^frustum-grade " <(zcat /usr/share/man/man1/frustum-grade.1.gz | grep -A1 "^.SH NAME" | tail -1)
 complete_words() {  # complete_words WORD...: what bash completion offers for the last word
