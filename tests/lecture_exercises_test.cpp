@@ -23,6 +23,20 @@ const ProblemResult& find(const SetResult& set, const std::string& id) {
   throw std::runtime_error("no problem " + id);
 }
 
+// The grade of answer `name` of problem `id`, written as `value` (YAML), against `key`.
+AnswerGrade graded(const ProblemSet& set, const SolvedSet& key, const std::string& id,
+                   const std::string& name, const std::string& value) {
+  const std::string answers =
+      "student: s\nanswers:\n  " + id + ":\n    " + name + ": " + value + "\n";
+  for (const ProblemGrade& p :
+       grade(set, load_submission_from_string(answers, "a.yaml"), &key).problems)
+    if (p.id == id)
+      for (const AnswerGrade& a : p.answers)
+        if (a.name == name) return a;
+  ADD_FAILURE() << "no answer " << id << "." << name;
+  return {};
+}
+
 TEST(LectureExercises, ZBufferFrameDoesNotDependOnTheDrawingOrder) {
   const SetResult lecture = solve_set(
       load_problem_set(test::source_path("problems/examples/lecture_exercises.yaml")), false, {});
@@ -190,14 +204,8 @@ TEST(LectureExercises, TheLecturesOrthoMatrixIsTheKeyOfItsProblem) {
   EXPECT_NEAR(m->numbers[10], 1.0 / 495, 1e-15);
   EXPECT_NEAR(m->numbers[11], -101.0 / 99, 1e-12);
   const auto grade_matrix = [&](const std::string& z_row) {
-    const std::string answers =
-        "student: s\nanswers:\n  seed000-ortho-matrix:\n    matrix: [[0.01, 0, 0, 0], [0, 0.01, "
-        "0, 0], " +
-        z_row + ", [0, 0, 0, 1]]\n";
-    for (const ProblemGrade& p :
-         grade(seed, load_submission_from_string(answers, "a.yaml"), &key).problems)
-      if (p.id == "seed000-ortho-matrix") return p.answers.at(0);
-    return AnswerGrade{};
+    return graded(seed, key, "seed000-ortho-matrix", "matrix",
+                  "[[0.01, 0, 0, 0], [0, 0.01, 0, 0], " + z_row + ", [0, 0, 0, 1]]");
   };
   EXPECT_EQ(grade_matrix("[0, 0, \"1/495\", \"-101/99\"]").verdict, Verdict::Correct);
   const AnswerGrade gl = grade_matrix("[0, 0, \"-1/495\", \"-101/99\"]");
@@ -214,12 +222,7 @@ TEST(LectureExercises, TheAspectRatioOnTheTopIsNamedAndExplainedTruly) {
   const ProblemSet course = load_problem_set_from_string(set, "a.yaml");
   const SolvedSet key = solve_for_grading(course);
   const auto grade_matrix = [&](const std::string& matrix) {
-    return grade(course,
-                 load_submission_from_string(
-                     "student: s\nanswers:\n  p:\n    matrix: " + matrix + "\n", "s.yaml"),
-                 &key)
-        .problems.at(0)
-        .answers.at(0);
+    return graded(course, key, "p", "matrix", matrix);
   };
   EXPECT_EQ(
       grade_matrix("[[0.5, 0, 0, 0], [0, 1, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]")
@@ -300,11 +303,7 @@ TEST(LectureExercises, CourseConventionForHorizontalFovIsHonoured) {
 
   const SolvedSet key = solve_for_grading(course);
   const auto grade_matrix = [&](const std::string& matrix) {
-    const std::string answers =
-        "student: s\nanswers:\n  fov-horizontal-matrix:\n    matrix: " + matrix + "\n";
-    return grade(course, load_submission_from_string(answers, "a.yaml"), &key)
-        .problems.at(0)
-        .answers.at(0);
+    return graded(course, key, "fov-horizontal-matrix", "matrix", matrix);
   };
   EXPECT_EQ(
       grade_matrix("[[1, 0, 0, 0], [0, 2, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]")
