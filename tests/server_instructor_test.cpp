@@ -189,12 +189,16 @@ TEST_F(InstructorPages, TheClassAtAGlanceCountsVerdictsMediansAndMistakes) {
   EXPECT_EQ(counts[3].submitted, 3);
   EXPECT_EQ(counts[3].partly, 1);
   EXPECT_EQ(counts[3].unreadable, 1);
-  // The named mistake: bob's only (alice corrected hers).
+  // The named mistake: bob's only (alice corrected hers), on the plane and on the z it gives.
   const std::vector<MistakeRow> mistakes = frequent_mistakes(view, 10);
-  ASSERT_EQ(mistakes.size(), 1u);
-  EXPECT_EQ(mistakes[0].mistake, "constant on the wrong side");
+  ASSERT_EQ(mistakes.size(), 2u);
   EXPECT_EQ(mistakes[0].answer, "plane");
-  EXPECT_EQ(mistakes[0].students, std::vector<std::string>{"bob"});
+  EXPECT_EQ(mistakes[1].answer, "z");
+  for (const MistakeRow& m : mistakes) {
+    EXPECT_EQ(m.mistake, "constant on the wrong side");
+    EXPECT_EQ(m.students, std::vector<std::string>{"bob"});
+  }
+  EXPECT_EQ(frequent_mistakes(view, 1).size(), 1u);
   // The page shows them; sorted by score, highest first.
   const std::string prof = sign_in(kProf);
   const std::string page = get("/instructor/set/week1?sort=score&desc=1", prof).body;
