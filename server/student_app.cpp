@@ -77,7 +77,10 @@ Response route(StudentApp& app, const Request& r, Millis now) {
   }
   if (v->role == Role::Instructor) {
     if (path == "/" && r.method == "GET") return Response{303, {{"Location", "/instructor/"}}, ""};
-    return message_page(403, course_lang(app.course), Say::Refused);
+    // A student's pages and requests are refused; anything else is not here (a favicon).
+    if (path.rfind("/set/", 0) == 0 || path.rfind("/api/", 0) == 0)
+      return message_page(403, course_lang(app.course), Say::Refused);
+    return message_page(404, course_lang(app.course), Say::NotFound);
   }
   if (path == "/" && r.method == "GET") return sets_page(app, *v);
   if (path.rfind("/api/", 0) == 0) return api_routes(app, *v, r, now);

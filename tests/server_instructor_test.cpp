@@ -143,6 +143,8 @@ TEST_F(InstructorPages, AnInstructorsLinkOpensTheInstructorsPagesOnly) {
   EXPECT_EQ(get("/", prof).status, 303);  // to /instructor/
   EXPECT_EQ(get("/", prof).header("Location"), "/instructor/");
   EXPECT_EQ(get("/set/week1", prof).status, 403);  // no variant, no submitting
+  EXPECT_EQ(post("/api/draft", prof, "").status, 403);
+  EXPECT_EQ(get("/favicon.ico", prof).status, 404);
   // An instructor no longer in instructors.csv is signed out.
   course_.instructors.clear();
   EXPECT_EQ(get("/instructor/", prof).status, 403);

@@ -94,6 +94,7 @@ async function main() {
     const problems = [];
     page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
     page.on('pageerror', (e) => problems.push(e.message));
+    page.on('response', (r) => { if (r.status() >= 400) problems.push(r.status() + ' ' + r.url()); });
 
     await page.goto(link.prof);
     check(page.url() === base + '/instructor/', 'the instructor lands on /instructor/: ' + page.url());
@@ -141,7 +142,10 @@ async function main() {
     await Promise.all([page.waitForNavigation(), page.click('#regrade button[type="submit"]')]);
     const changes = await page.locator('table.changes tbody tr').count();
     check(changes === third(0) + third(1), `the dry run lists ${changes} students (right ones lose z, mistaken ones' carried z)`);
-    check((await page.locator('table.changes tbody tr').first().innerText()).includes('Correct → Incorrect'), 'why: z is no longer right');
+    const why = await page.locator('table.changes tbody tr[data-student="s001"]').innerText();
+    check(why.includes('z: Correct → Incorrect') && why.includes('3') && why.includes('2'), 'why: z is no longer right: ' + why);
+    const carried = await page.locator('table.changes tbody tr[data-student="s002"]').innerText();
+    check(carried.includes('z: Partly correct → Incorrect'), 'why: z no longer follows from the plane: ' + carried);
     await page.screenshot({path: path.join(out, '4-dry-run.png'), fullPage: true});
     await Promise.all([page.waitForNavigation(), page.click('main form button[type="submit"]')]);
     const applied = await page.innerText('main');
