@@ -14,6 +14,7 @@
 #include "batch/variant_files.hpp"
 #include "server/clock.hpp"
 #include "server/http_server.hpp"
+#include "server/instructors.hpp"
 #include "server/student_app.hpp"
 #include "server/tokens.hpp"
 #include "server/worker.hpp"
@@ -58,26 +59,44 @@ bool load(const ServeOptions& s, const Output& o, server::Course& course) {
     return false;
   }
   course = server::load_course(s.course, read_roster(roster));
+  const fs::path instructors = fs::path(s.course) / "instructors.csv";
+  if (fs::exists(instructors)) {
+    course.instructors = server::read_instructors(instructors.string());
+    for (const std::string& id : course.instructors)
+      if (course.enrolled(id))
+        course.errors.push_back(Diagnostic{SourceLocation{instructors.string(), 0, 0}, "instructor",
+                                           "'" + id +
+                                               "' is also on the roster: an id is a student's "
+                                               "or an instructor's, not both"});
+  }
   for (const Diagnostic& d : course.errors) o.err << d.format() << "\n";
   return course.errors.empty();
 }
 
-// student,url for every student without a link (and the rotated ones), in a file only its
-// owner reads; the store keeps the tokens' hashes only.
+// student,url,role for every student and instructor without a link (and the rotated ones), in
+// a file only its owner reads; the store keeps the tokens' hashes only.
 int issue_links(const ServeOptions& s, const server::Course& course, Store& store,
                 const Output& o) {
-  const std::vector<std::string> have = store.students();
   const std::string base = s.public_url.empty() ? "http://" + s.listen : s.public_url;
-  std::string csv = "student,url\n";
+  std::string csv = "student,url,role\n";
   int issued = 0;
-  for (const std::string& student : course.roster) {
-    const bool rotate = std::find(s.rotate.begin(), s.rotate.end(), student) != s.rotate.end();
-    if (!rotate && std::binary_search(have.begin(), have.end(), student)) continue;
-    const std::string token = server::random_token();
-    store.put_student(student, server::sha256_hex(token));
-    csv += student + "," + base + "/start?token=" + token + "\n";
-    ++issued;
-  }
+  const auto issue = [&](const std::vector<std::string>& ids, const std::vector<std::string>& have,
+                         server::Role role) {
+    for (const std::string& id : ids) {
+      const bool rotate = std::find(s.rotate.begin(), s.rotate.end(), id) != s.rotate.end();
+      if (!rotate && std::binary_search(have.begin(), have.end(), id)) continue;
+      const std::string token = server::random_token();
+      if (role == server::Role::Instructor)
+        store.put_instructor(id, server::sha256_hex(token));
+      else
+        store.put_student(id, server::sha256_hex(token));
+      csv += id + "," + base + "/start?token=" + token + "," +
+             (role == server::Role::Instructor ? "instructor" : "student") + "\n";
+      ++issued;
+    }
+  };
+  issue(course.roster, store.students(), server::Role::Student);
+  issue(course.instructors, store.instructors(), server::Role::Instructor);
   const int fd = ::open(s.issue_links->c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
   if (fd < 0 || ::fchmod(fd, 0600) != 0 ||
       ::write(fd, csv.data(), csv.size()) != static_cast<ssize_t>(csv.size()) || ::fsync(fd) != 0) {
@@ -137,8 +156,8 @@ CLI::App* add_serve_options(CLI::App& cli, ServeOptions& s) {
       ->envname("FRUSTUM_DB");
   c->add_option("--listen", s.listen, "Address to listen on (default 127.0.0.1:8080)");
   c->add_option("--issue-links", s.issue_links,
-                "Write student,url for every student without a link to this file (mode 0600), "
-                "then exit");
+                "Write student,url,role for every student (roster.csv) and instructor "
+                "(instructors.csv) without a link to this file (mode 0600), then exit");
   c->add_option("--rotate", s.rotate, "With --issue-links: issue these students new links");
   c->add_option("--public-url", s.public_url,
                 "The links' address as students reach it (default http://LISTEN)");

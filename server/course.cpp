@@ -20,42 +20,45 @@ bool url_safe(const std::string& id) {
   });
 }
 
-void load_set(const fs::path& path, const std::vector<std::string>& roster, Course& course) {
+}  // namespace
+
+std::optional<CourseSet> load_course_set(const std::string& file,
+                                         const std::vector<std::string>& roster,
+                                         std::vector<Diagnostic>& errors) {
+  const fs::path path(file);
   CourseSet s;
   s.id = path.stem().string();
   s.file = path.string();
   if (!url_safe(s.id)) {
-    course.errors.push_back(Diagnostic{SourceLocation{s.file, 0, 0}, "",
-                                       "a served set's file name may hold only letters, digits, "
-                                       "- and _ (it is part of the set's address)"});
-    return;
+    errors.push_back(Diagnostic{SourceLocation{s.file, 0, 0}, "",
+                                "a served set's file name may hold only letters, digits, "
+                                "- and _ (it is part of the set's address)"});
+    return std::nullopt;
   }
   std::string bytes;
   if (const auto error = read_text_file(s.file, kMaxYamlFileBytes, bytes)) {
-    course.errors.push_back(*error);
-    return;
+    errors.push_back(*error);
+    return std::nullopt;
   }
   s.version = sha256_hex(bytes);
   const YamlDocument doc = parse_yaml(bytes, s.file);
   s.set = load_problem_set(doc, s.file);
-  const std::vector<Diagnostic> errors = s.set.all_errors();
-  if (!errors.empty()) {
-    course.errors.insert(course.errors.end(), errors.begin(), errors.end());
-    return;
+  const std::vector<Diagnostic> set_errors = s.set.all_errors();
+  if (!set_errors.empty()) {
+    errors.insert(errors.end(), set_errors.begin(), set_errors.end());
+    return std::nullopt;
   }
   s.policy = read_serve_policy(doc.root, s.file);
   if (set_varies(s.set)) {
     const std::vector<ProblemSet> drawn = variants_for_class(s.set, roster, false);
     for (std::size_t i = 0; i < roster.size(); ++i) {
       const std::vector<Diagnostic> e = drawn[i].all_errors();
-      course.errors.insert(course.errors.end(), e.begin(), e.end());
+      errors.insert(errors.end(), e.begin(), e.end());
       s.variants.emplace(roster[i], drawn[i]);
     }
   }
-  course.sets.push_back(std::move(s));
+  return s;
 }
-
-}  // namespace
 
 const ProblemSet* CourseSet::for_student(const std::string& student) const {
   if (variants.empty()) return &set;
@@ -80,6 +83,10 @@ bool Course::enrolled(const std::string& student) const {
   return std::find(roster.begin(), roster.end(), student) != roster.end();
 }
 
+bool Course::instructs(const std::string& id) const {
+  return std::find(instructors.begin(), instructors.end(), id) != instructors.end();
+}
+
 Course load_course(const std::string& dir, const std::vector<std::string>& roster) {
   Course course;
   course.dir = dir;
@@ -88,7 +95,9 @@ Course load_course(const std::string& dir, const std::vector<std::string>& roste
   for (const fs::directory_entry& e : fs::directory_iterator(dir))
     if (e.is_regular_file() && e.path().extension() == ".yaml") files.push_back(e.path());
   std::sort(files.begin(), files.end());
-  for (const fs::path& f : files) load_set(f, roster, course);
+  for (const fs::path& f : files)
+    if (auto s = load_course_set(f.string(), roster, course.errors))
+      course.sets.push_back(std::move(*s));
   return course;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,15 +32,22 @@ struct CourseSet {
 struct Course {
   std::string dir;
   std::vector<std::string> roster;
-  std::vector<CourseSet> sets;     // by id
-  std::vector<Diagnostic> errors;  // sets that cannot be served, located
+  std::vector<std::string> instructors;  // instructors.csv (none without it)
+  std::vector<CourseSet> sets;           // by id
+  std::vector<Diagnostic> errors;        // sets that cannot be served, located
 
   const CourseSet* find(const std::string& id) const;
   bool enrolled(const std::string& student) const;
+  bool instructs(const std::string& id) const;
 };
 
 // Reads every DIR/*.yaml (a subdirectory's files are not sets) for the given roster (from
 // DIR/roster.csv, read by the caller). A set with errors is left out and its errors reported.
 Course load_course(const std::string& dir, const std::vector<std::string>& roster);
+// One set as load_course reads it (for a regrade against the file as it is now); nothing, with
+// `errors` filled, when it cannot be served.
+std::optional<CourseSet> load_course_set(const std::string& file,
+                                         const std::vector<std::string>& roster,
+                                         std::vector<Diagnostic>& errors);
 
 }  // namespace frustum::server

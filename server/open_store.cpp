@@ -1,3 +1,7 @@
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
 #include "server/postgres_connection.hpp"
 #include "server/postgres_store.hpp"
 #include "server/sqlite_migrations.hpp"
@@ -21,6 +25,15 @@ std::unique_ptr<Store> open_store(const std::string& url, StoreRole role) {
   }
   throw StoreError("unknown database '" + redact_postgres_url(url) +
                    "': use sqlite:PATH or postgresql://USER@HOST/DATABASE");
+}
+
+std::int64_t Store::wait_for_change(std::int64_t mark, Millis timeout) {
+  constexpr Millis kPoll = 250;
+  for (Millis waited = 0;; waited += kPoll) {
+    const std::int64_t now = change_mark();
+    if (now != mark || waited >= timeout) return now;
+    std::this_thread::sleep_for(std::chrono::milliseconds(std::min(kPoll, timeout - waited)));
+  }
 }
 
 int latest_schema_version() { return sqlite_latest_version(); }

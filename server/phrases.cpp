@@ -6,12 +6,6 @@ namespace frustum::server {
 
 namespace {
 
-struct Phrase {
-  const char* en;
-  const char* ja;
-  const char* ru;
-};
-
 constexpr std::array<Phrase, static_cast<std::size_t>(Say::Count)> kPhrases = {{
     {"Your problem sets", "あなたの問題集", "Ваши наборы задач"},
     {"No problem sets yet.", "問題集はまだありません。", "Наборов задач пока нет."},
@@ -79,7 +73,10 @@ constexpr std::array<Phrase, static_cast<std::size_t>(Say::Count)> kPhrases = {{
 }  // namespace
 
 const char* say(Say key, Lang lang) {
-  const Phrase& p = kPhrases[static_cast<std::size_t>(key)];
+  return in_lang(kPhrases[static_cast<std::size_t>(key)], lang);
+}
+
+const char* in_lang(const Phrase& p, Lang lang) {
   switch (lang) {
     case Lang::Ja:
       return p.ja;

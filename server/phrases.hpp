@@ -55,4 +55,12 @@ enum class Say : std::size_t {
 
 const char* say(Say key, Lang lang);
 
+// A phrase of the served pages in their three languages (instructor_phrases.hpp has its own).
+struct Phrase {
+  const char* en;
+  const char* ja;
+  const char* ru;
+};
+const char* in_lang(const Phrase& phrase, Lang lang);
+
 }  // namespace frustum::server

@@ -109,6 +109,22 @@ bool PgConnection::alive() {
   return usable();
 }
 
+bool PgConnection::wait_notification(int timeout_ms) {
+  const auto take = [&] {
+    bool any = false;
+    while (PGnotify* n = PQnotifies(conn_)) {
+      any = true;
+      PQfreemem(n);
+    }
+    return any;
+  };
+  if (take()) return true;
+  pollfd ready{PQsocket(conn_), POLLIN, 0};
+  if (::poll(&ready, 1, timeout_ms) != 1) return false;
+  if (PQconsumeInput(conn_) != 1) return false;
+  return take();
+}
+
 namespace {
 
 PgRows rows_of(PGresult* raw, const std::string& what, const std::string& where,

@@ -50,6 +50,9 @@ class PgConnection {
   // session (restart, pg_terminate_backend) has closed it, and this sees so before any
   // statement is sent on it.
   bool alive();
+  // After LISTEN on this connection: waits up to `timeout_ms` for a notification; true when one
+  // (or more; all are taken) came.
+  bool wait_notification(int timeout_ms);
 
  private:
   pg_conn* conn_ = nullptr;

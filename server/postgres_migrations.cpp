@@ -13,7 +13,7 @@ namespace frustum::server {
 namespace {
 
 // Migration i + 1 is kMigrations[i]. Append only.
-constexpr std::array<const char*, 1> kMigrations = {
+constexpr std::array<const char*, 2> kMigrations = {
     R"SQL(
 CREATE TABLE students (id TEXT PRIMARY KEY, token_hash TEXT NOT NULL UNIQUE);
 CREATE TABLE sessions (hash TEXT PRIMARY KEY, student TEXT NOT NULL REFERENCES students(id),
@@ -39,6 +39,23 @@ CREATE TABLE grades (id BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY,
                      set_version TEXT NOT NULL, graded_by TEXT NOT NULL, graded BIGINT NOT NULL,
                      failed BOOLEAN NOT NULL);
 CREATE INDEX grades_submission ON grades (submission, id);
+)SQL",
+    // 2: instructors (a role beside each id and each session), the class read by set, and a
+    // NOTIFY on frustum_class whenever a submission or a grade is written, so that every
+    // instance's dashboards hear of it.
+    R"SQL(
+ALTER TABLE students ADD COLUMN role TEXT NOT NULL DEFAULT 'student';
+ALTER TABLE sessions ADD COLUMN role TEXT NOT NULL DEFAULT 'student';
+CREATE INDEX submissions_set ON submissions (set_id, id);
+CREATE FUNCTION frustum_class_changed() RETURNS trigger LANGUAGE plpgsql AS $$
+BEGIN
+  PERFORM pg_notify('frustum_class', TG_TABLE_NAME);
+  RETURN NULL;
+END $$;
+CREATE TRIGGER submissions_notify AFTER INSERT ON submissions
+  FOR EACH STATEMENT EXECUTE FUNCTION frustum_class_changed();
+CREATE TRIGGER grades_notify AFTER INSERT ON grades
+  FOR EACH STATEMENT EXECUTE FUNCTION frustum_class_changed();
 )SQL"};
 
 // The advisory lock that serializes migrations (any constant; it reads "frustmig").

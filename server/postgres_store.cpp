@@ -4,6 +4,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <utility>
 #include <vector>
 
@@ -21,16 +22,17 @@ constexpr const char* kSubmissionColumns =
 // that both stores sort alike, whatever the database's locale.
 const std::pair<const char*, std::string> kStatements[] = {
     {"schema_version", "SELECT coalesce(max(version), 0) FROM schema_migrations"},
-    {"put_student",
-     "INSERT INTO students (id, token_hash) VALUES ($1, $2) "
-     "ON CONFLICT (id) DO UPDATE SET token_hash = excluded.token_hash"},
-    {"student_by_token", "SELECT id FROM students WHERE token_hash = $1"},
-    {"students", "SELECT id FROM students ORDER BY id COLLATE \"C\""},
+    {"put_person",
+     "INSERT INTO students (id, token_hash, role) VALUES ($1, $2, $3) "
+     "ON CONFLICT (id) DO UPDATE SET token_hash = excluded.token_hash, role = excluded.role"},
+    {"person_by_token", "SELECT id FROM students WHERE token_hash = $1 AND role = $2"},
+    {"people", "SELECT id FROM students WHERE role = $1 ORDER BY id COLLATE \"C\""},
     {"put_session",
-     "INSERT INTO sessions (hash, student, csrf, expires) VALUES ($1, $2, $3, $4) "
+     "INSERT INTO sessions (hash, student, csrf, expires, role) VALUES ($1, $2, $3, $4, $5) "
      "ON CONFLICT (hash) DO UPDATE SET student = excluded.student, csrf = excluded.csrf, "
-     "expires = excluded.expires"},
-    {"session", "SELECT student, csrf, expires FROM sessions WHERE hash = $1 AND expires > $2"},
+     "expires = excluded.expires, role = excluded.role"},
+    {"session",
+     "SELECT student, csrf, expires, role FROM sessions WHERE hash = $1 AND expires > $2"},
     {"save_draft",
      "INSERT INTO drafts (student, set_id, problem, answer, text, saved) "
      "VALUES ($1, $2, $3, $4, $5, $6) ON CONFLICT (student, set_id, problem, answer) "
@@ -71,6 +73,33 @@ const std::pair<const char*, std::string> kStatements[] = {
      "SELECT submission, result, score, max_score, set_version, graded_by, graded, failed "
      "FROM grades WHERE submission = $1 ORDER BY id DESC LIMIT 1"},
     {"pending_count", "SELECT count(*) FROM submissions WHERE state = 0"},
+    {"set_submissions", std::string("SELECT ") + kSubmissionColumns +
+                            " FROM submissions WHERE set_id = $1 ORDER BY id LIMIT $2"},
+    {"latest_grades",
+     "SELECT DISTINCT ON (g.submission) g.submission, g.result, g.score, g.max_score, "
+     "g.set_version, g.graded_by, g.graded, g.failed FROM grades g JOIN submissions s "
+     "ON s.id = g.submission WHERE s.set_id = $1 ORDER BY g.submission, g.id DESC"},
+    {"grade_history",
+     "SELECT submission, result, score, max_score, set_version, graded_by, graded, failed "
+     "FROM grades WHERE submission = $1 ORDER BY id"},
+    // A regrade in one statement (so one transaction): the grades as a JSON array.
+    {"record_regrades",
+     "WITH g AS (SELECT (e->>'submission')::bigint AS submission, e->>'result' AS result, "
+     "(e->>'score')::double precision AS score, (e->>'max_score')::double precision AS max_score, "
+     "e->>'set_version' AS set_version, e->>'graded_by' AS graded_by, "
+     "(e->>'graded')::bigint AS graded, (e->>'failed')::boolean AS failed "
+     "FROM jsonb_array_elements($1::jsonb) e), "
+     "marked AS (UPDATE submissions s SET state = CASE WHEN g.failed THEN 2 ELSE 1 END "
+     "FROM g WHERE s.id = g.submission RETURNING s.id), "
+     // A submission that is not there fails the whole statement (division by zero, 22012).
+     "whole AS (SELECT 1 / (CASE WHEN (SELECT count(*) FROM marked) = (SELECT count(*) FROM g) "
+     "THEN 1 ELSE 0 END) AS one) "
+     "INSERT INTO grades (submission, result, score, max_score, set_version, graded_by, graded, "
+     "failed) SELECT submission, result, score, max_score, set_version, graded_by, graded, failed "
+     "FROM g, whole WHERE whole.one = 1 AND submission IN (SELECT id FROM marked)"},
+    {"change_mark",
+     "SELECT (SELECT coalesce(max(id), 0) FROM submissions) + "
+     "(SELECT coalesce(max(id), 0) FROM grades)"},
 };
 
 std::int64_t integer(const std::string& text) {
@@ -110,6 +139,11 @@ SubmissionRecord submission_row(const std::vector<std::string>& row) {
   r.state = static_cast<SubmissionState>(integer(row.at(9)));
   r.claims = static_cast<int>(integer(row.at(10)));
   return r;
+}
+
+GradeRecord grade_row(const std::vector<std::string>& row) {
+  return GradeRecord{integer(row.at(0)), row.at(1), real(row.at(2)),    real(row.at(3)),
+                     row.at(4),          row.at(5), integer(row.at(6)), row.at(7) == "t"};
 }
 
 // Open connections, each used by one thread at a time; at most `limit` exist.
@@ -191,36 +225,37 @@ class ConnectionPool {
 class PostgresStore final : public Store {
  public:
   PostgresStore(const std::string& url, const PostgresOptions& options)
-      : pool_(url, options.connections, options.worker) {}
+      : url_(url), pool_(url, options.connections, options.worker) {}
 
   int schema_version() override {
     return static_cast<int>(integer(pool_.run("schema_version", {}).rows.at(0).at(0)));
   }
 
   void put_student(const std::string& id, const std::string& token_hash) override {
-    pool_.run("put_student", {id, token_hash});
+    pool_.run("put_person", {id, token_hash, "student"});
   }
-
   std::optional<std::string> student_by_token(const std::string& token_hash) override {
-    PgRows r = pool_.run("student_by_token", {token_hash});
-    if (r.rows.empty()) return std::nullopt;
-    return r.rows[0][0];
+    return person_by_token(token_hash, "student");
   }
-
-  std::vector<std::string> students() override {
-    std::vector<std::string> out;
-    for (auto& row : pool_.run("students", {}).rows) out.push_back(std::move(row[0]));
-    return out;
+  std::vector<std::string> students() override { return people("student"); }
+  void put_instructor(const std::string& id, const std::string& token_hash) override {
+    pool_.run("put_person", {id, token_hash, "instructor"});
   }
+  std::optional<std::string> instructor_by_token(const std::string& token_hash) override {
+    return person_by_token(token_hash, "instructor");
+  }
+  std::vector<std::string> instructors() override { return people("instructor"); }
 
   void put_session(const std::string& session_hash, const SessionRecord& r) override {
-    pool_.run("put_session", {session_hash, r.student, r.csrf, std::to_string(r.expires)});
+    pool_.run("put_session", {session_hash, r.student, r.csrf, std::to_string(r.expires),
+                              r.role == Role::Instructor ? "instructor" : "student"});
   }
 
   std::optional<SessionRecord> session(const std::string& session_hash, Millis now) override {
     PgRows r = pool_.run("session", {session_hash, std::to_string(now)});
     if (r.rows.empty()) return std::nullopt;
-    return SessionRecord{r.rows[0][0], r.rows[0][1], integer(r.rows[0][2])};
+    return SessionRecord{r.rows[0][0], r.rows[0][1], integer(r.rows[0][2]),
+                         r.rows[0][3] == "instructor" ? Role::Instructor : Role::Student};
   }
 
   void save_draft(const std::string& student, const Draft& d) override {
@@ -285,17 +320,93 @@ class PostgresStore final : public Store {
   std::optional<GradeRecord> latest_grade(std::int64_t submission) override {
     PgRows r = pool_.run("latest_grade", {std::to_string(submission)});
     if (r.rows.empty()) return std::nullopt;
-    const auto& row = r.rows[0];
-    return GradeRecord{integer(row[0]), row[1], real(row[2]),    real(row[3]),
-                       row[4],          row[5], integer(row[6]), row[7] == "t"};
+    return grade_row(r.rows[0]);
   }
 
   std::int64_t pending_count() override {
     return integer(pool_.run("pending_count", {}).rows.at(0).at(0));
   }
 
+  std::vector<SubmissionRecord> set_submissions(const std::string& set,
+                                                std::size_t limit) override {
+    std::vector<SubmissionRecord> out;
+    for (const auto& row : pool_.run("set_submissions", {set, std::to_string(limit)}).rows)
+      out.push_back(submission_row(row));
+    return out;
+  }
+
+  std::vector<GradeRecord> latest_grades(const std::string& set) override {
+    std::vector<GradeRecord> out;
+    for (const auto& row : pool_.run("latest_grades", {set}).rows) out.push_back(grade_row(row));
+    return out;
+  }
+
+  std::vector<GradeRecord> grade_history(std::int64_t submission) override {
+    std::vector<GradeRecord> out;
+    for (const auto& row : pool_.run("grade_history", {std::to_string(submission)}).rows)
+      out.push_back(grade_row(row));
+    return out;
+  }
+
+  void record_regrades(const std::vector<GradeRecord>& grades) override {
+    nlohmann::json all = nlohmann::json::array();
+    for (const GradeRecord& g : grades)
+      all.push_back({{"submission", g.submission},
+                     {"result", g.result},
+                     {"score", g.score},
+                     {"max_score", g.max_score},
+                     {"set_version", g.set_version},
+                     {"graded_by", g.graded_by},
+                     {"graded", g.graded},
+                     {"failed", g.failed}});
+    try {
+      pool_.run("record_regrades", {all.dump()});
+    } catch (const PostgresError& e) {
+      if (e.sqlstate != "22012") throw;
+      throw StoreError("regrade: one of its submissions is not in the database; nothing written");
+    }
+  }
+
+  std::int64_t change_mark() override {
+    return integer(pool_.run("change_mark", {}).rows.at(0).at(0));
+  }
+
+  // Woken by the NOTIFY that every instance's writes send (migration 2's triggers), on one
+  // listening connection shared by the waiting requests.
+  std::int64_t wait_for_change(std::int64_t mark, Millis timeout) override {
+    const std::int64_t now = change_mark();
+    if (now != mark) return now;
+    {
+      // One request listens; any other waiting at once asks every quarter second.
+      std::unique_lock lock(listen_mutex_, std::try_to_lock);
+      if (!lock.owns_lock()) return Store::wait_for_change(mark, timeout);
+      if (!listener_ || !listener_->usable()) {
+        listener_ = std::make_unique<PgConnection>(url_);
+        listener_->exec("LISTEN frustum_class");
+        const std::int64_t again = change_mark();  // a write between the two reads
+        if (again != mark) return again;
+      }
+      listener_->wait_notification(static_cast<int>(timeout));
+    }
+    return change_mark();
+  }
+
  private:
+  std::optional<std::string> person_by_token(const std::string& token_hash, const char* role) {
+    PgRows r = pool_.run("person_by_token", {token_hash, role});
+    if (r.rows.empty()) return std::nullopt;
+    return r.rows[0][0];
+  }
+  std::vector<std::string> people(const char* role) {
+    std::vector<std::string> out;
+    for (auto& row : pool_.run("people", {role}).rows) out.push_back(std::move(row[0]));
+    return out;
+  }
+
+  std::string url_;
   ConnectionPool pool_;
+  std::mutex listen_mutex_;
+  std::unique_ptr<PgConnection> listener_;
 };
 
 }  // namespace

@@ -13,20 +13,32 @@ std::optional<Visitor> visitor_of(StudentApp& app, const Request& request, Milli
   if (it == cookies.end() || it->second.size() != 32) return std::nullopt;
   const std::string hash = sha256_hex(it->second);
   const std::optional<SessionRecord> s = app.store.session(hash, now);
-  if (!s || !app.course.enrolled(s->student)) return std::nullopt;
-  return Visitor{s->student, s->csrf, hash};
+  if (!s) return std::nullopt;
+  if (s->role == Role::Instructor ? !app.course.instructs(s->student)
+                                  : !app.course.enrolled(s->student))
+    return std::nullopt;
+  return Visitor{s->student, s->csrf, hash, s->role};
 }
 
 Response start_session(StudentApp& app, const Request& request, Millis now) {
   const std::string token = parse_form(request.query())["token"];
-  const std::optional<std::string> student =
-      token.size() == 32 ? app.store.student_by_token(sha256_hex(token)) : std::nullopt;
-  if (!student || !app.course.enrolled(*student))
-    return message_page(404, course_lang(app.course), Say::LinkInvalid);
+  Role role = Role::Student;
+  std::optional<std::string> who;
+  if (token.size() == 32) {
+    const std::string hash = sha256_hex(token);
+    who = app.store.student_by_token(hash);
+    if (who && !app.course.enrolled(*who)) who.reset();
+    if (!who) {
+      who = app.store.instructor_by_token(hash);
+      role = Role::Instructor;
+      if (who && !app.course.instructs(*who)) who.reset();
+    }
+  }
+  if (!who) return message_page(404, course_lang(app.course), Say::LinkInvalid);
   const std::string session = random_token();
   app.store.put_session(sha256_hex(session),
-                        SessionRecord{*student, random_token(), now + app.config.session_ms});
-  Response r{303, {{"Location", "/"}}, ""};
+                        SessionRecord{*who, random_token(), now + app.config.session_ms, role});
+  Response r{303, {{"Location", role == Role::Instructor ? "/instructor/" : "/"}}, ""};
   r.set("Set-Cookie", std::string(kSessionCookie) + "=" + session +
                           "; Path=/; HttpOnly; SameSite=Strict; Max-Age=" +
                           std::to_string(app.config.session_ms / 1000) +

@@ -13,13 +13,15 @@ namespace frustum::server {
 inline constexpr const char* kSessionCookie = "frustum_session";
 
 struct Visitor {
-  std::string student;
+  std::string student;  // the id (an instructor's, when role is Instructor)
   std::string csrf;
   std::string session_hash;
+  Role role = Role::Student;
 };
 
 std::optional<Visitor> visitor_of(StudentApp& app, const Request& request, Millis now);
-// GET /start?token=T: a session for T's student and a redirect to /, or a refusal page.
+// GET /start?token=T: a session for T's student (or instructor) and a redirect to / (or
+// /instructor/), or a refusal page.
 Response start_session(StudentApp& app, const Request& request, Millis now);
 // The Origin header, when present, names this server (its Host).
 bool same_origin(const Request& request);

@@ -7,7 +7,7 @@ namespace frustum::server {
 namespace {
 
 // Migration i + 1 is kMigrations[i]. Append only.
-constexpr std::array<const char*, 1> kMigrations = {
+constexpr std::array<const char*, 2> kMigrations = {
     R"SQL(
 CREATE TABLE students (id TEXT PRIMARY KEY, token_hash TEXT NOT NULL UNIQUE);
 CREATE TABLE sessions (hash TEXT PRIMARY KEY, student TEXT NOT NULL REFERENCES students(id),
@@ -27,6 +27,12 @@ CREATE TABLE grades (id INTEGER PRIMARY KEY AUTOINCREMENT,
                      score REAL NOT NULL, max_score REAL NOT NULL, set_version TEXT NOT NULL,
                      graded_by TEXT NOT NULL, graded INTEGER NOT NULL, failed INTEGER NOT NULL);
 CREATE INDEX grades_submission ON grades (submission, id);
+)SQL",
+    // 2: instructors (a role beside each id and each session) and the class read by set.
+    R"SQL(
+ALTER TABLE students ADD COLUMN role TEXT NOT NULL DEFAULT 'student';
+ALTER TABLE sessions ADD COLUMN role TEXT NOT NULL DEFAULT 'student';
+CREATE INDEX submissions_set ON submissions (set_id, id);
 )SQL"};
 
 }  // namespace

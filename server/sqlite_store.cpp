@@ -13,6 +13,31 @@ namespace {
 constexpr const char* kSubmissionColumns =
     "id, student, set_id, set_version, variant, problem, answers, received, attempt, state, claims";
 
+constexpr const char* kGradeColumns =
+    "submission, result, score, max_score, set_version, graded_by, graded, failed";
+
+GradeRecord grade_row(const SqliteStmt& s) {
+  return GradeRecord{s.integer(0), s.text(1), s.real(2),    s.real(3),
+                     s.text(4),    s.text(5), s.integer(6), s.integer(7) != 0};
+}
+
+void insert_grade(SqliteDb& db, const GradeRecord& g) {
+  SqliteStmt(db, (std::string("INSERT INTO grades (") + kGradeColumns +
+                  ") VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
+                     .c_str())
+      .bind(1, g.submission)
+      .bind(2, g.result)
+      .bind(3, g.score)
+      .bind(4, g.max_score)
+      .bind(5, g.set_version)
+      .bind(6, g.graded_by)
+      .bind(7, g.graded)
+      .bind(8, g.failed ? 1 : 0)
+      .run();
+}
+
+std::string role_text(Role role) { return role == Role::Instructor ? "instructor" : "student"; }
+
 SubmissionRecord submission_row(const SqliteStmt& s) {
   SubmissionRecord r;
   r.id = s.integer(0);
@@ -74,44 +99,31 @@ class SqliteStore final : public Store {
   }
 
   void put_student(const std::string& id, const std::string& token_hash) override {
-    writer_.run([&](SqliteDb& db) {
-      SqliteStmt(db,
-                 "INSERT INTO students (id, token_hash) VALUES (?, ?) "
-                 "ON CONFLICT (id) DO UPDATE SET token_hash = excluded.token_hash")
-          .bind(1, id)
-          .bind(2, token_hash)
-          .run();
-    });
+    put_person(id, token_hash, Role::Student);
   }
-
   std::optional<std::string> student_by_token(const std::string& token_hash) override {
-    return readers_.with([&](SqliteDb& db) -> std::optional<std::string> {
-      SqliteStmt s(db, "SELECT id FROM students WHERE token_hash = ?");
-      s.bind(1, token_hash);
-      if (!s.step()) return std::nullopt;
-      return s.text(0);
-    });
+    return person_by_token(token_hash, Role::Student);
   }
-
-  std::vector<std::string> students() override {
-    return readers_.with([&](SqliteDb& db) {
-      SqliteStmt s(db, "SELECT id FROM students ORDER BY id");
-      std::vector<std::string> out;
-      while (s.step()) out.push_back(s.text(0));
-      return out;
-    });
+  std::vector<std::string> students() override { return people(Role::Student); }
+  void put_instructor(const std::string& id, const std::string& token_hash) override {
+    put_person(id, token_hash, Role::Instructor);
   }
+  std::optional<std::string> instructor_by_token(const std::string& token_hash) override {
+    return person_by_token(token_hash, Role::Instructor);
+  }
+  std::vector<std::string> instructors() override { return people(Role::Instructor); }
 
   void put_session(const std::string& session_hash, const SessionRecord& r) override {
     writer_.run([&](SqliteDb& db) {
       SqliteStmt(db,
-                 "INSERT INTO sessions (hash, student, csrf, expires) VALUES (?, ?, ?, ?) "
+                 "INSERT INTO sessions (hash, student, csrf, expires, role) VALUES (?, ?, ?, ?, ?) "
                  "ON CONFLICT (hash) DO UPDATE SET student = excluded.student, "
-                 "csrf = excluded.csrf, expires = excluded.expires")
+                 "csrf = excluded.csrf, expires = excluded.expires, role = excluded.role")
           .bind(1, session_hash)
           .bind(2, r.student)
           .bind(3, r.csrf)
           .bind(4, r.expires)
+          .bind(5, role_text(r.role))
           .run();
     });
   }
@@ -119,10 +131,12 @@ class SqliteStore final : public Store {
   std::optional<SessionRecord> session(const std::string& session_hash, Millis now) override {
     return readers_.with([&](SqliteDb& db) -> std::optional<SessionRecord> {
       SqliteStmt s(db,
-                   "SELECT student, csrf, expires FROM sessions WHERE hash = ? AND expires > ?");
+                   "SELECT student, csrf, expires, role FROM sessions "
+                   "WHERE hash = ? AND expires > ?");
       s.bind(1, session_hash).bind(2, now);
       if (!s.step()) return std::nullopt;
-      return SessionRecord{s.text(0), s.text(1), s.integer(2)};
+      return SessionRecord{s.text(0), s.text(1), s.integer(2),
+                           s.text(3) == "instructor" ? Role::Instructor : Role::Student};
     });
   }
 
@@ -212,18 +226,7 @@ class SqliteStore final : public Store {
           .bind(3, worker)
           .run();
       if (db.changes() != 1) return;
-      SqliteStmt(db,
-                 "INSERT INTO grades (submission, result, score, max_score, set_version, "
-                 "graded_by, graded, failed) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
-          .bind(1, g.submission)
-          .bind(2, g.result)
-          .bind(3, g.score)
-          .bind(4, g.max_score)
-          .bind(5, g.set_version)
-          .bind(6, g.graded_by)
-          .bind(7, g.graded)
-          .bind(8, g.failed ? 1 : 0)
-          .run();
+      insert_grade(db, g);
       recorded = true;
     });
     return recorded;
@@ -255,13 +258,12 @@ class SqliteStore final : public Store {
 
   std::optional<GradeRecord> latest_grade(std::int64_t submission) override {
     return readers_.with([&](SqliteDb& db) -> std::optional<GradeRecord> {
-      SqliteStmt s(db,
-                   "SELECT submission, result, score, max_score, set_version, graded_by, graded, "
-                   "failed FROM grades WHERE submission = ? ORDER BY id DESC LIMIT 1");
+      SqliteStmt s(db, (std::string("SELECT ") + kGradeColumns +
+                        " FROM grades WHERE submission = ? ORDER BY id DESC LIMIT 1")
+                           .c_str());
       s.bind(1, submission);
       if (!s.step()) return std::nullopt;
-      return GradeRecord{s.integer(0), s.text(1), s.real(2),    s.real(3),
-                         s.text(4),    s.text(5), s.integer(6), s.integer(7) != 0};
+      return grade_row(s);
     });
   }
 
@@ -272,7 +274,102 @@ class SqliteStore final : public Store {
     });
   }
 
+  std::vector<SubmissionRecord> set_submissions(const std::string& set,
+                                                std::size_t limit) override {
+    return readers_.with([&](SqliteDb& db) {
+      SqliteStmt s(db, (std::string("SELECT ") + kSubmissionColumns +
+                        " FROM submissions WHERE set_id = ? ORDER BY id LIMIT ?")
+                           .c_str());
+      s.bind(1, set).bind(2, static_cast<std::int64_t>(limit));
+      std::vector<SubmissionRecord> out;
+      while (s.step()) out.push_back(submission_row(s));
+      return out;
+    });
+  }
+
+  std::vector<GradeRecord> latest_grades(const std::string& set) override {
+    return readers_.with([&](SqliteDb& db) {
+      SqliteStmt s(db,
+                   "SELECT g.submission, g.result, g.score, g.max_score, g.set_version, "
+                   "g.graded_by, g.graded, g.failed FROM grades g JOIN ("
+                   "SELECT max(grades.id) AS id FROM grades JOIN submissions s "
+                   "ON s.id = grades.submission WHERE s.set_id = ? GROUP BY grades.submission"
+                   ") last ON last.id = g.id ORDER BY g.submission");
+      s.bind(1, set);
+      std::vector<GradeRecord> out;
+      while (s.step()) out.push_back(grade_row(s));
+      return out;
+    });
+  }
+
+  std::vector<GradeRecord> grade_history(std::int64_t submission) override {
+    return readers_.with([&](SqliteDb& db) {
+      SqliteStmt s(db, (std::string("SELECT ") + kGradeColumns +
+                        " FROM grades WHERE submission = ? ORDER BY id")
+                           .c_str());
+      s.bind(1, submission);
+      std::vector<GradeRecord> out;
+      while (s.step()) out.push_back(grade_row(s));
+      return out;
+    });
+  }
+
+  void record_regrades(const std::vector<GradeRecord>& grades) override {
+    writer_.run([&](SqliteDb& db) {
+      for (const GradeRecord& g : grades) {
+        SqliteStmt(db, "UPDATE submissions SET state = ? WHERE id = ?")
+            .bind(1, static_cast<int>(g.failed ? SubmissionState::Failed : SubmissionState::Graded))
+            .bind(2, g.submission)
+            .run();
+        if (db.changes() != 1)
+          throw StoreError("regrade: no submission " + std::to_string(g.submission));
+        insert_grade(db, g);
+      }
+    });
+  }
+
+  std::int64_t change_mark() override {
+    return readers_.with([](SqliteDb& db) {
+      SqliteStmt s(db,
+                   "SELECT (SELECT coalesce(max(id), 0) FROM submissions) + "
+                   "(SELECT coalesce(max(id), 0) FROM grades)");
+      return s.step() ? s.integer(0) : 0;
+    });
+  }
+
  private:
+  void put_person(const std::string& id, const std::string& token_hash, Role role) {
+    writer_.run([&](SqliteDb& db) {
+      SqliteStmt(db,
+                 "INSERT INTO students (id, token_hash, role) VALUES (?, ?, ?) "
+                 "ON CONFLICT (id) DO UPDATE SET token_hash = excluded.token_hash, "
+                 "role = excluded.role")
+          .bind(1, id)
+          .bind(2, token_hash)
+          .bind(3, role_text(role))
+          .run();
+    });
+  }
+
+  std::optional<std::string> person_by_token(const std::string& token_hash, Role role) {
+    return readers_.with([&](SqliteDb& db) -> std::optional<std::string> {
+      SqliteStmt s(db, "SELECT id FROM students WHERE token_hash = ? AND role = ?");
+      s.bind(1, token_hash).bind(2, role_text(role));
+      if (!s.step()) return std::nullopt;
+      return s.text(0);
+    });
+  }
+
+  std::vector<std::string> people(Role role) {
+    return readers_.with([&](SqliteDb& db) {
+      SqliteStmt s(db, "SELECT id FROM students WHERE role = ? ORDER BY id");
+      s.bind(1, role_text(role));
+      std::vector<std::string> out;
+      while (s.step()) out.push_back(s.text(0));
+      return out;
+    });
+  }
+
   SqliteWriter writer_;
   ReaderPool readers_;
 };

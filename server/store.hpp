@@ -3,6 +3,7 @@
 // the same conformance tests. Times come from the caller; no process-wide state.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -20,10 +21,15 @@ class StoreError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Who a link and its session belong to: a student on the roster, or an instructor of the
+// course (instructors.csv), who sees the whole class and never a student's page.
+enum class Role { Student, Instructor };
+
 struct SessionRecord {
-  std::string student;
+  std::string student;  // the id (an instructor's, for an instructor's session)
   std::string csrf;
   Millis expires = 0;
+  Role role = Role::Student;
 };
 
 struct Draft {
@@ -69,6 +75,10 @@ class Store {
   virtual void put_student(const std::string& id, const std::string& token_hash) = 0;
   virtual std::optional<std::string> student_by_token(const std::string& token_hash) = 0;
   virtual std::vector<std::string> students() = 0;  // every student with a token, sorted
+  // Instructors, the same way (an id is a student's or an instructor's, never both).
+  virtual void put_instructor(const std::string& id, const std::string& token_hash) = 0;
+  virtual std::optional<std::string> instructor_by_token(const std::string& token_hash) = 0;
+  virtual std::vector<std::string> instructors() = 0;
 
   virtual void put_session(const std::string& session_hash, const SessionRecord&) = 0;
   virtual std::optional<SessionRecord> session(const std::string& session_hash, Millis now) = 0;
@@ -92,6 +102,22 @@ class Store {
                                                      std::int64_t id) = 0;
   virtual std::optional<GradeRecord> latest_grade(std::int64_t submission) = 0;
   virtual std::int64_t pending_count() = 0;
+
+  // The instructor's reads of a whole class: every submission to a set (oldest first, at most
+  // `limit`), the latest grade of each (by submission), and a submission's every grade, oldest
+  // first (regrades keep the ones before).
+  virtual std::vector<SubmissionRecord> set_submissions(const std::string& set,
+                                                        std::size_t limit) = 0;
+  virtual std::vector<GradeRecord> latest_grades(const std::string& set) = 0;
+  virtual std::vector<GradeRecord> grade_history(std::int64_t submission) = 0;
+  // A regrade: every grade written in one transaction, each submission marked by its grade
+  // (graded or failed); all or nothing.
+  virtual void record_regrades(const std::vector<GradeRecord>& grades) = 0;
+  // A number that grows whenever a submission or a grade is written (by any instance).
+  virtual std::int64_t change_mark() = 0;
+  // Waits until change_mark() differs from `mark` or `timeout` passes; returns the mark then.
+  // This one asks every quarter second; PostgreSQL's is woken by NOTIFY from any instance.
+  virtual std::int64_t wait_for_change(std::int64_t mark, Millis timeout);
 };
 
 // Who opens a store. A grading worker's own writes (claims, grades) may be made durable less

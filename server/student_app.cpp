@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "server/answer_api.hpp"
+#include "server/instructor_app.hpp"
 #include "server/pages.hpp"
 #include "server/session.hpp"
 #include "server/set_page.hpp"
@@ -68,6 +69,19 @@ Response route(StudentApp& app, const Request& r, Millis now) {
   if (path == "/start" && r.method == "GET") return start_session(app, r, now);
   const std::optional<Visitor> v = visitor_of(app, r, now);
   if (!v) return message_page(path == "/" ? 200 : 403, course_lang(app.course), Say::SignInFirst);
+  // /instructor/… is the instructors' (a student's session is refused); the rest the students'.
+  if (path == "/instructor" || path.rfind("/instructor/", 0) == 0) {
+    if (v->role != Role::Instructor)
+      return message_page(403, course_lang(app.course), Say::Refused);
+    return handle_instructor(app, *v, r, now);
+  }
+  if (v->role == Role::Instructor) {
+    if (path == "/" && r.method == "GET") return Response{303, {{"Location", "/instructor/"}}, ""};
+    // A student's pages and requests are refused; anything else is not here (a favicon).
+    if (path.rfind("/set/", 0) == 0 || path.rfind("/api/", 0) == 0)
+      return message_page(403, course_lang(app.course), Say::Refused);
+    return message_page(404, course_lang(app.course), Say::NotFound);
+  }
   if (path == "/" && r.method == "GET") return sets_page(app, *v);
   if (path.rfind("/api/", 0) == 0) return api_routes(app, *v, r, now);
   if (const auto sp = set_path(path))

@@ -10,6 +10,7 @@
 //   POST /api/preview          how an answer is read (never whether it is right)
 //   POST /api/draft            an answer as typed so far
 //   GET  /static/…             the page's module, style and KaTeX
+//   …    /instructor/…         the instructors' pages (server/instructor_app.hpp)
 #pragma once
 
 #include <mutex>
@@ -17,6 +18,7 @@
 
 #include "server/course.hpp"
 #include "server/http.hpp"
+#include "server/instructor_state.hpp"
 #include "server/rate_limit.hpp"
 #include "server/store.hpp"
 
@@ -27,6 +29,10 @@ struct AppConfig {
   Millis session_ms = 14LL * 24 * 3600 * 1000;   // a session lasts this long
   double preview_rate = 10, preview_burst = 30;  // per session, a second
   double submit_rate = 1, submit_burst = 10;
+  // /instructor/events waits this long for the class to change (under the server's request
+  // time), with at most `event_waiters` requests waiting at once (others answer at once).
+  Millis events_wait_ms = 8000;
+  int event_waiters = 32;
 };
 
 struct StudentApp {
@@ -45,6 +51,7 @@ struct StudentApp {
   // its expressions share reference counts and tables. Every handler that touches exact values
   // — parsing a preview, drawing a figure — holds this; the rest of a page is strings and YAML.
   std::mutex exact_math;
+  InstructorState instructor;
 };
 
 Response handle_student(StudentApp& app, const Request& request, Millis now);

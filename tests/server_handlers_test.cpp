@@ -11,6 +11,7 @@
 #include <regex>
 #include <thread>
 
+#include "serve_test_sets.hpp"
 #include "server/clock.hpp"
 #include "server/given_tex.hpp"
 #include "server/grade_job.hpp"
@@ -25,25 +26,8 @@ namespace frustum::server {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace frustum::server::test;  // NOLINT: the shared sets and helpers
 using Json = nlohmann::json;
-
-constexpr const char* kWeek1 = R"(title: "Depth"
-problems:
-  - id: zbuf
-    kind: depth_at_pixel
-    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
-    ask: [normal, plane, z]
-)";
-
-// Every student their own triangle.
-constexpr const char* kVaried = R"(title: "Back faces"
-variants: per_student
-problems:
-  - id: bf
-    kind: backface
-    given: {points: [[1,0,0],[1,1,1],[0,1,2]], eye: [0,1,0]}
-    ask: [df, facing]
-)";
 
 // A problem with a figure.
 constexpr const char* kSort = R"(problems:
@@ -92,18 +76,9 @@ class StudentPages : public ::testing::Test {
   }
   // Signs in with the link's token; returns the session cookie's value.
   std::string sign_in(const std::string& token) {
-    const Response r = get("/start?token=" + token);
-    EXPECT_EQ(r.status, 303);
-    const std::string cookie = r.header("Set-Cookie").value_or("");
-    std::smatch m;
-    EXPECT_TRUE(std::regex_search(cookie, m, std::regex("frustum_session=([0-9a-f]{32})")));
-    return m[1].str();
+    return session_cookie(get("/start?token=" + token));
   }
-  std::string csrf_of(const std::string& page) {
-    std::smatch m;
-    EXPECT_TRUE(std::regex_search(page, m, std::regex("name=\"csrf\" content=\"([0-9a-f]+)\"")));
-    return m[1].str();
-  }
+  std::string csrf_of(const std::string& page) { return csrf_in(page); }
   void grade_pending() {
     SolvedCache cache;
     while (const auto s = store_->claim("test", kNow, 60000))
@@ -416,15 +391,7 @@ TEST(ServePolicy, BadKeysAreLocatedErrors) {
 }
 
 TEST(ServePhrases, EveryPhraseHasJapaneseAndRussianWithoutEnglish) {
-  for (std::size_t i = 0; i < static_cast<std::size_t>(Say::Count); ++i) {
-    const Say key = static_cast<Say>(i);
-    const std::string en = say(key, Lang::En), ja = say(key, Lang::Ja), ru = say(key, Lang::Ru);
-    EXPECT_FALSE(en.empty()) << i;
-    EXPECT_NE(ja, en) << en;
-    EXPECT_NE(ru, en) << en;
-    EXPECT_FALSE(std::regex_search(ja, std::regex("[A-Za-z]{2,}"))) << ja;
-    EXPECT_FALSE(std::regex_search(ru, std::regex("[A-Za-z]{2,}"))) << ru;
-  }
+  expect_three_languages(&say, static_cast<std::size_t>(Say::Count));
 }
 
 }  // namespace

@@ -490,6 +490,86 @@ TEST_P(StoreConformance, TextIsKeptByteForByte) {
   EXPECT_EQ(store_->drafts("ann", "s").at(0).text, "½ – \"x\"\n\ty");
 }
 
+TEST_P(StoreConformance, InstructorsAreFoundByTheirOwnTokensAndAreNoStudents) {
+  store_->put_student("alice", "hash-a");
+  store_->put_instructor("prof", "hash-p");
+  EXPECT_EQ(store_->instructor_by_token("hash-p"), "prof");
+  EXPECT_EQ(store_->student_by_token("hash-p"), std::nullopt);  // not a student's link
+  EXPECT_EQ(store_->instructor_by_token("hash-a"), std::nullopt);
+  EXPECT_EQ(store_->students(), std::vector<std::string>{"alice"});
+  EXPECT_EQ(store_->instructors(), std::vector<std::string>{"prof"});
+  store_->put_instructor("prof", "hash-p2");  // rotated
+  EXPECT_EQ(store_->instructor_by_token("hash-p"), std::nullopt);
+  EXPECT_EQ(store_->instructor_by_token("hash-p2"), "prof");
+}
+
+TEST_P(StoreConformance, SessionsCarryTheirRole) {
+  store_->put_student("alice", "hash-a");
+  store_->put_instructor("prof", "hash-p");
+  store_->put_session("s-a", SessionRecord{"alice", "c1", 100});
+  store_->put_session("s-p", SessionRecord{"prof", "c2", 100, Role::Instructor});
+  EXPECT_EQ(store_->session("s-a", 50)->role, Role::Student);
+  EXPECT_EQ(store_->session("s-p", 50)->role, Role::Instructor);
+  EXPECT_EQ(store_->session("s-p", 50)->student, "prof");
+}
+
+TEST_P(StoreConformance, ARegradeKeepsEveryGradeBeforeIt) {
+  const SubmissionRecord a = store_->submit(sub("alice", "p1", 1));
+  const SubmissionRecord b = store_->submit(sub("bob", "p1", 2));
+  NewSubmission elsewhere = sub("carol", "p1", 3);
+  elsewhere.set = "week2";
+  const SubmissionRecord c = store_->submit(elsewhere);
+  for (int i = 0; i < 3; ++i) {
+    const auto claimed = store_->claim("w", 10, 1000);
+    ASSERT_TRUE(claimed);
+    ASSERT_TRUE(store_->record_grade(grade_of(claimed->id, "w", 1.0 + claimed->id % 2), "w"));
+  }
+  const std::int64_t mark = store_->change_mark();
+  GradeRecord again = grade_of(a.id, "instructor:prof", 4.0);
+  again.set_version = "sha-t";
+  GradeRecord failed = grade_of(b.id, "instructor:prof", 0.0);
+  failed.failed = true;
+  store_->record_regrades({again, failed});
+  EXPECT_NE(store_->change_mark(), mark);
+  const std::vector<GradeRecord> history = store_->grade_history(a.id);
+  ASSERT_EQ(history.size(), 2u);
+  EXPECT_EQ(history[0].set_version, "sha-s");
+  EXPECT_EQ(history[0].graded_by, "w");
+  EXPECT_EQ(history[1].set_version, "sha-t");
+  EXPECT_EQ(history[1].graded_by, "instructor:prof");
+  EXPECT_DOUBLE_EQ(history[1].score, 4.0);
+  EXPECT_EQ(store_->submission("bob", b.id)->state, SubmissionState::Failed);
+  // The class's latest grades: one per submission of the set, the regrade's.
+  const std::vector<GradeRecord> latest = store_->latest_grades("week1");
+  ASSERT_EQ(latest.size(), 2u);
+  EXPECT_EQ(latest[0].submission, a.id);
+  EXPECT_DOUBLE_EQ(latest[0].score, 4.0);
+  EXPECT_TRUE(latest[1].failed);
+  const std::vector<SubmissionRecord> all = store_->set_submissions("week1", 10);
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[1].student, "bob");
+  EXPECT_EQ(store_->set_submissions("week1", 1).size(), 1u);
+  EXPECT_EQ(store_->set_submissions("week2", 10).at(0).id, c.id);
+  // All or nothing: a regrade naming a submission that is not there writes none of its grades.
+  EXPECT_THROW(store_->record_regrades({grade_of(a.id, "x", 0.5), grade_of(999999, "x", 1)}),
+               StoreError);
+  EXPECT_EQ(store_->grade_history(a.id).size(), 2u);
+}
+
+TEST_P(StoreConformance, WaitingForAChangeEndsWithTheChange) {
+  const std::int64_t mark = store_->change_mark();
+  EXPECT_EQ(store_->wait_for_change(mark, 0), mark);  // nothing: the wait ends at once
+  std::thread other([&] {
+    const std::unique_ptr<Store> instance = open_store(url_);  // another instance's write
+    instance->submit(sub("alice", "p1", 1));
+  });
+  std::int64_t seen = mark;
+  for (int i = 0; i < 100 && seen == mark; ++i) seen = store_->wait_for_change(mark, 100);
+  other.join();
+  EXPECT_NE(seen, mark);
+  EXPECT_EQ(seen, store_->change_mark());
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, StoreConformance, ::testing::Values("SQLite", "PostgreSQL"),
                          [](const auto& info) { return info.param; });
 

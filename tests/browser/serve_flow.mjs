@@ -5,10 +5,9 @@
 //   node serve_flow.mjs FRUSTUM_BINARY WORK_DIR OUT_DIR
 import {spawn, execFileSync} from 'node:child_process';
 import fs from 'node:fs';
-import net from 'node:net';
 import os from 'node:os';
 import path from 'node:path';
-import {chromium} from 'playwright-core';
+import {check, checks, cleanUp, freePort, launch, run, waitForServer} from './flow.mjs';
 
 const [frustum, work, out] = process.argv.slice(2);
 const kSet = `title: "Depth by the plane method"
@@ -27,33 +26,6 @@ problems:
         - [[-1, -2, -8], [1, -2, -8], [1, 2, -4], [-1, 2, -4]]
       eye: [0, 0, 0]
 `;
-let checks = 0;
-function check(ok, what) {
-  if (!ok) throw new Error('failed: ' + what);
-  ++checks;
-}
-
-function freePort() {
-  return new Promise((resolve) => {
-    const s = net.createServer();
-    s.listen(0, '127.0.0.1', () => {
-      const {port} = s.address();
-      s.close(() => resolve(port));
-    });
-  });
-}
-
-async function waitForServer(base) {
-  for (let i = 0; i < 100; ++i) {
-    try {
-      await fetch(base + '/');
-      return;
-    } catch {
-      await new Promise((r) => setTimeout(r, 100));
-    }
-  }
-  throw new Error('the server did not start');
-}
 
 // Bob submits through plain HTTP (his own session), so that Alice has his submission's URL.
 async function bobSubmits(link, base) {
@@ -93,13 +65,7 @@ async function main() {
   let context;
   try {
     await waitForServer(base);
-    context = await chromium.launchPersistentContext(profile, {
-      executablePath: '/usr/bin/chromium',
-      headless: true,
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-             '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-      viewport: {width: 1000, height: 1400},
-    });
+    context = await launch(profile, {width: 1000, height: 1400});
     const page = context.pages()[0] ?? await context.newPage();
     const problems = [];
     page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
@@ -171,15 +137,10 @@ async function main() {
     await page.goto(`${base}/set/week1/submission/${bobs}`);
     await page.screenshot({path: path.join(out, '5-refused.png'), fullPage: true});
     check(problems.filter((p) => !p.includes('404')).length === 0, 'no script errors or CSP violations: ' + problems.join('; '));
-    console.log(`serve browser test: ${checks} checks passed`);
+    console.log(`serve browser test: ${checks.count} checks passed`);
   } finally {
-    if (context) await context.close();
-    server.kill('SIGTERM');
-    fs.rmSync(profile, {recursive: true, force: true});
+    await cleanUp(context, server, profile);
   }
 }
 
-main().catch((e) => {
-  console.error(e.stack || String(e));
-  process.exit(1);
-});
+run(main);
