@@ -7,11 +7,13 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <ostream>
 
 #include "app/cli_options.hpp"
 #include "batch/variant_files.hpp"
+#include "server/author_preview.hpp"
 #include "server/clock.hpp"
 #include "server/http_server.hpp"
 #include "server/student_app.hpp"
@@ -121,6 +123,26 @@ int serve(const ServeOptions& s, const server::Course& course, Store& store, con
   return 0;
 }
 
+// The set on stdin (bounded), previewed as the authoring page shows it: JSON on stdout.
+int author_preview(const ServeOptions& s, const Output& o) {
+  server::AuthorPreviewRequest r;
+  r.name = *s.author_preview;
+  r.student = s.author_student;
+  r.check_only = s.author_check;
+  std::vector<char> buffer(server::kMaxAuthoredSetBytes + 1);
+  std::cin.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  const auto got = static_cast<std::size_t>(std::cin.gcount());
+  if (got > server::kMaxAuthoredSetBytes) {
+    o.err << "error: the set is larger than " << server::kMaxAuthoredSetBytes << " bytes\n";
+    return 1;
+  }
+  r.yaml.assign(buffer.data(), got);
+  const std::string roster = (fs::path(s.course) / "roster.csv").string();
+  if (fs::exists(roster)) r.roster = read_roster(roster);
+  o.out << server::author_preview_json(r) << "\n";
+  return 0;
+}
+
 }  // namespace
 
 namespace {
@@ -156,6 +178,10 @@ CLI::App* add_serve_options(CLI::App& cli, ServeOptions& s) {
   c->add_option("--submit-rate", s.submit_rate,
                 "Submissions a session may make a second (default 1, bursts of 10; 429 beyond)");
   c->add_option("--worker", s.worker, "")->group("");  // internal: a grading worker
+  // internal: the authoring page's preview, run in a process of its own
+  c->add_option("--author-preview", s.author_preview, "")->group("");
+  c->add_option("--author-student", s.author_student, "")->group("");
+  c->add_flag("--author-check", s.author_check, "")->group("");
   return c;
 }
 
@@ -168,6 +194,7 @@ Command add_serve_command(CLI::App& cli) {
 }
 
 int run_serve(const ServeOptions& s, const Output& o) {
+  if (s.author_preview) return author_preview(s, o);
   server::Course course;
   if (!load(s, o, course)) return 1;
   const std::string url = db_url(s);

@@ -13,18 +13,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A set id travels in URLs: letters, digits, - and _ only.
-bool url_safe(const std::string& id) {
-  return !id.empty() && std::all_of(id.begin(), id.end(), [](unsigned char c) {
-    return std::isalnum(c) || c == '-' || c == '_';
-  });
-}
-
 void load_set(const fs::path& path, const std::vector<std::string>& roster, Course& course) {
   CourseSet s;
   s.id = path.stem().string();
   s.file = path.string();
-  if (!url_safe(s.id)) {
+  if (!set_id_ok(s.id)) {
     course.errors.push_back(Diagnostic{SourceLocation{s.file, 0, 0}, "",
                                        "a served set's file name may hold only letters, digits, "
                                        "- and _ (it is part of the set's address)"});
@@ -56,6 +49,12 @@ void load_set(const fs::path& path, const std::vector<std::string>& roster, Cour
 }
 
 }  // namespace
+
+bool set_id_ok(const std::string& id) {
+  return !id.empty() && std::all_of(id.begin(), id.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '-' || c == '_';
+  });
+}
 
 const ProblemSet* CourseSet::for_student(const std::string& student) const {
   if (variants.empty()) return &set;

@@ -6,12 +6,6 @@ namespace frustum::server {
 
 namespace {
 
-struct Phrase {
-  const char* en;
-  const char* ja;
-  const char* ru;
-};
-
 constexpr std::array<Phrase, static_cast<std::size_t>(Say::Count)> kPhrases = {{
     {"Your problem sets", "あなたの問題集", "Ваши наборы задач"},
     {"No problem sets yet.", "問題集はまだありません。", "Наборов задач пока нет."},
@@ -78,16 +72,6 @@ constexpr std::array<Phrase, static_cast<std::size_t>(Say::Count)> kPhrases = {{
 
 }  // namespace
 
-const char* say(Say key, Lang lang) {
-  const Phrase& p = kPhrases[static_cast<std::size_t>(key)];
-  switch (lang) {
-    case Lang::Ja:
-      return p.ja;
-    case Lang::Ru:
-      return p.ru;
-    default:
-      return p.en;
-  }
-}
+const char* say(Say key, Lang lang) { return kPhrases[static_cast<std::size_t>(key)].in(lang); }
 
 }  // namespace frustum::server

@@ -55,4 +55,12 @@ enum class Say : std::size_t {
 
 const char* say(Say key, Lang lang);
 
+// One phrase in the three languages of the pages, and the one a reader of `lang` reads.
+struct Phrase {
+  const char* en;
+  const char* ja;
+  const char* ru;
+  const char* in(Lang lang) const { return lang == Lang::Ja ? ja : lang == Lang::Ru ? ru : en; }
+};
+
 }  // namespace frustum::server

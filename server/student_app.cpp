@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "server/answer_api.hpp"
+#include "server/author_page.hpp"
 #include "server/pages.hpp"
 #include "server/session.hpp"
 #include "server/set_page.hpp"
@@ -70,6 +71,9 @@ Response route(StudentApp& app, const Request& r, Millis now) {
   if (!v) return message_page(path == "/" ? 200 : 403, course_lang(app.course), Say::SignInFirst);
   if (path == "/" && r.method == "GET") return sets_page(app, *v);
   if (path.rfind("/api/", 0) == 0) return api_routes(app, *v, r, now);
+  constexpr std::string_view kAuthor = "/instructor/author/";
+  if (path.rfind(kAuthor, 0) == 0)
+    return author_routes(app, *v, r, path.substr(kAuthor.size()), now);
   if (const auto sp = set_path(path))
     if (const CourseSet* set = app.course.find(sp->first); set && set->for_student(v->student))
       return set_routes(app, *v, r, *set, sp->second, now);

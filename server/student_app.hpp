@@ -10,6 +10,7 @@
 //   POST /api/preview          how an answer is read (never whether it is right)
 //   POST /api/draft            an answer as typed so far
 //   GET  /static/…             the page's module, style and KaTeX
+//   …    /instructor/author/S  the authoring page (author_page.hpp), instructors only
 #pragma once
 
 #include <mutex>
@@ -27,6 +28,10 @@ struct AppConfig {
   Millis session_ms = 14LL * 24 * 3600 * 1000;   // a session lasts this long
   double preview_rate = 10, preview_burst = 30;  // per session, a second
   double submit_rate = 1, submit_burst = 10;
+  // The authoring page's previews: this binary, run as `serve COURSE --author-preview`, each
+  // given this long (the tests name the built binary, not themselves).
+  std::string self_binary = "/proc/self/exe";
+  double author_seconds = 10;
 };
 
 struct StudentApp {
@@ -45,6 +50,8 @@ struct StudentApp {
   // its expressions share reference counts and tables. Every handler that touches exact values
   // — parsing a preview, drawing a figure — holds this; the rest of a page is strings and YAML.
   std::mutex exact_math;
+  // A set file's save (compare its version, check, keep the old one, write) is one at a time.
+  std::mutex author_files;
 };
 
 Response handle_student(StudentApp& app, const Request& request, Millis now);

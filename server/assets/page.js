@@ -4,7 +4,7 @@
 // drafts saved as the student types.
 const csrf = document.querySelector('meta[name="csrf"]')?.content ?? '';
 
-function typeset(element, tex, display) {
+export function typeset(element, tex, display) {
   if (typeof katex === 'undefined') return false;
   try {
     katex.render(tex, element, {displayMode: display, throwOnError: true, strict: 'error', trust: false});
