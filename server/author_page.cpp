@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -52,13 +53,9 @@ std::optional<Json> run_preview(StudentApp& app, const AuthoredSet& set, const s
     out << yaml;
     if (!out) return std::nullopt;
   }
-  std::vector<std::string> argv = {app.config.self_binary,
-                                   "serve",
-                                   app.course.dir,
-                                   "--author-preview",
-                                   set.file.filename().string(),
-                                   "--author-student",
-                                   student};
+  std::vector<std::string> argv = {app.config.self_binary, "serve", app.course.dir,
+                                   "--author-preview", set.file.filename().string()};
+  if (!student.empty()) argv.insert(argv.end(), {"--author-student", student});
   if (check_only) argv.push_back("--author-check");
   RunOptions options;
   options.stdin_file = input.string();
@@ -83,19 +80,16 @@ std::string roster_options(const Course& course) {
 
 // The check's errors as a list (the page without JavaScript; the module redraws it).
 std::string errors_html(const Json& check, Lang lang) {
-  const Json errors = check.value("errors", Json::array());
+  std::vector<Json> listed = check.value("errors", std::vector<Json>());
+  for (const Json& s : check.value("samples", Json::array()))
+    if (!s.value("ok", true)) listed.push_back(s);
   std::string out = fmt::format("<h2>{}</h2>\n", html_escape(say(AuthorSay::Errors, lang)));
-  if (errors.empty()) return out + fmt::format("<p>{}</p>\n", say(AuthorSay::NoErrors, lang));
+  if (listed.empty()) return out + fmt::format("<p>{}</p>\n", say(AuthorSay::NoErrors, lang));
   out += "<ul>\n";
-  for (const Json& e : errors)
+  for (const Json& e : listed)
     out += fmt::format("<li>{} {}: <code>{}</code>: {}</li>\n", say(AuthorSay::Line, lang),
                        e.value("line", 0), html_escape(e.value("field", "")),
                        html_escape(e.value("message", "")));
-  for (const Json& s : check.value("samples", Json::array()))
-    if (!s.value("ok", true))
-      out += fmt::format("<li>{} {}: <code>{}</code>: {}</li>\n", say(AuthorSay::Line, lang),
-                         s.value("line", 0), html_escape(s.value("field", "")),
-                         html_escape(s.value("message", "")));
   return out + "</ul>\n";
 }
 
@@ -216,10 +210,8 @@ Response preview(StudentApp& app, const AuthoredSet& set,
   return json_response(200, j->dump());
 }
 
-}  // namespace
-
-Response author_routes(StudentApp& app, const Visitor& v, const Request& r, const std::string& rest,
-                       Millis now) {
+Response author_request(StudentApp& app, const Visitor& v, const Request& r,
+                        const std::string& rest, Millis now) {
   const Lang lang = course_lang(app.course);
   if (!is_instructor(v)) return message_page(403, lang, Say::Refused);
   const auto slash = rest.find('/');
@@ -253,6 +245,20 @@ Response author_routes(StudentApp& app, const Visitor& v, const Request& r, cons
   }
   if (action == "preview") return preview(app, set, form);
   return save(app, v, r, set, form, now);
+}
+
+}  // namespace
+
+Response author_routes(StudentApp& app, const Visitor& v, const Request& r, const std::string& rest,
+                       Millis now) {
+  try {
+    return author_request(app, v, r, rest, now);
+  } catch (const StoreError&) {
+    throw;
+  } catch (const std::exception&) {
+    // The course directory cannot be written (a full disk, permissions): nothing was saved.
+    return json_response(500, R"({"error":"the set could not be written"})");
+  }
 }
 
 }  // namespace frustum::server

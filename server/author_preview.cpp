@@ -113,9 +113,7 @@ const ProblemSet* variant_of(const ProblemSet& set, const AuthorPreviewRequest& 
   return &drawn[index];
 }
 
-}  // namespace
-
-std::string author_preview_json(const AuthorPreviewRequest& request) {
+std::string preview_json(const AuthorPreviewRequest& request) {
   const ProblemSet set = load_problem_set_from_string(request.yaml, request.name);
   Json out{{"ok", false},
            {"errors", Json::array()},
@@ -138,6 +136,21 @@ std::string author_preview_json(const AuthorPreviewRequest& request) {
   for (const ProblemSpec& p : shown->problems)
     out["problems"].push_back(problem_json(p, request.name, langs, set.lang));
   return out.dump();
+}
+
+}  // namespace
+
+std::string author_preview_json(const AuthorPreviewRequest& request) {
+  try {
+    return preview_json(request);
+  } catch (const std::exception& e) {
+    // What no check foresaw (a variant that cannot be drawn): said, not a crash of the page.
+    const Json error{{"line", 0},
+                     {"column", 0},
+                     {"field", ""},
+                     {"message", std::string("cannot preview: ") + e.what()}};
+    return Json{{"ok", false}, {"errors", Json::array({error})}}.dump();
+  }
 }
 
 }  // namespace frustum::server

@@ -35,20 +35,22 @@ function element(tag, attributes = {}, ...children) {
 }
 
 let marks = [];
-function markErrors(errors) {
+// Each item {line, column, message} marked in the editor: its line's background (`lineClass`)
+// and its text from the column on.
+function markLines(items) {
   if (!editor) return;
   for (const clear of marks) clear();
   marks = [];
-  for (const error of errors) {
-    if (!(error.line > 0)) continue;
-    const line = error.line - 1;
-    const handle = editor.addLineClass(line, 'background', 'error-line');
-    const length = editor.getLine(line)?.length ?? 0;
-    const from = Math.max(0, (error.column || 1) - 1);
-    const mark = editor.markText({line, ch: Math.min(from, length)}, {line, ch: length},
-                                 {className: 'error-mark', attributes: {title: error.message}});
+  for (const item of items) {
+    if (!(item.line > 0) || item.line > editor.lineCount()) continue;
+    const line = item.line - 1;
+    const handle = editor.addLineClass(line, 'background', item.lineClass);
+    const length = editor.getLine(line).length;
+    const from = Math.min(Math.max(0, (item.column || 1) - 1), length);
+    const mark = editor.markText({line, ch: from}, {line, ch: length},
+                                 {className: 'error-mark', attributes: {title: item.message}});
     marks.push(() => {
-      editor.removeLineClass(handle, 'background', 'error-line');
+      editor.removeLineClass(handle, 'background', item.lineClass);
       mark.clear();
     });
   }
@@ -84,7 +86,9 @@ function showCheck(result) {
     }
     samples.append(list);
   }
-  markErrors([...errors, ...(result.samples ?? []).filter((s) => !s.ok).map((s) => ({...s, column: 1}))]);
+  markLines([...errors.map((e) => ({...e, lineClass: 'error-line'})),
+             ...(result.samples ?? []).filter((s) => !s.ok)
+                 .map((s) => ({...s, column: 1, lineClass: 'sample-line'}))]);
 }
 
 function problemPreview(p) {
