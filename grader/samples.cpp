@@ -66,9 +66,10 @@ std::vector<SampleOutcome> grade_samples(const ProblemSet& set, const SolvedSet*
     const ProblemSpec& spec = set.problems[i];
     if (spec.samples.empty() || spec.error) continue;
     // The problem alone, so that each sample grades one problem, not the whole set.
-    ProblemSet one = set;
+    ProblemSet one;
+    one.file = set.file;
+    one.lang = set.lang;
     one.problems = {spec};
-    one.errors.clear();
     SolvedSet key;
     if (solved && i < solved->results.size()) {
       key.results = {solved->results[i]};
