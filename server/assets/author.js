@@ -2,7 +2,7 @@
 // CodeMirror's YAML editor, and as the author types, check's errors marked at their line and
 // column, the sample answers graded otherwise than expected, and each problem as students read
 // it — statement in each language, givens, answer key and derivation typeset, figure.
-import {typeset} from './page.js';
+import {debounce, typeset} from './page.js';
 
 const csrf = document.querySelector('meta[name="csrf"]')?.content ?? '';
 const main = document.querySelector('main.author');
@@ -177,14 +177,6 @@ async function preview() {
   showPreview(reply.json);
   setStatus('', reply.json.ok ? 'ok' : 'error');
   main.dataset.previews = String(Number(main.dataset.previews ?? '0') + 1);
-}
-
-function debounce(run, ms) {
-  let timer = 0;
-  return () => {
-    clearTimeout(timer);
-    timer = setTimeout(run, ms);
-  };
 }
 
 const later = debounce(preview, 400);

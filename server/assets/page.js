@@ -14,7 +14,7 @@ export function typeset(element, tex, display) {
   }
 }
 
-function debounce(run, ms) {
+export function debounce(run, ms) {
   let timer = 0;
   return () => {
     clearTimeout(timer);
