@@ -7,11 +7,13 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <ostream>
 
 #include "app/cli_options.hpp"
 #include "batch/variant_files.hpp"
+#include "server/author_preview.hpp"
 #include "server/clock.hpp"
 #include "server/http_server.hpp"
 #include "server/instructors.hpp"
@@ -123,6 +125,12 @@ int serve(const ServeOptions& s, const server::Course& course, Store& store, con
   config.preview_burst = 3 * s.preview_rate;
   config.submit_rate = s.submit_rate;
   config.submit_burst = std::max(10.0, 3 * s.submit_rate);
+  // A set file changed while serving that no longer loads: its errors, and the set stays served
+  // as it was.
+  config.report = [&o](const std::vector<Diagnostic>& errors) {
+    for (const Diagnostic& d : errors)
+      o.err << d.format() << " (still serving the set as it was)\n";
+  };
   server::StudentApp app(course, store, config);
   server::HttpServerOptions http;
   std::tie(http.host, http.port) = host_port(s.listen);
@@ -137,6 +145,26 @@ int serve(const ServeOptions& s, const server::Course& course, Store& store, con
   server::run_http_server(http, [&](const server::Request& r) {
     return server::handle_student(app, r, server::now_ms());
   });
+  return 0;
+}
+
+// The set on stdin (bounded), previewed as the authoring page shows it: JSON on stdout.
+int author_preview(const ServeOptions& s, const Output& o) {
+  server::AuthorPreviewRequest r;
+  r.name = *s.author_preview;
+  r.student = s.author_student;
+  r.check_only = s.author_check;
+  std::vector<char> buffer(server::kMaxAuthoredSetBytes + 1);
+  std::cin.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  const auto got = static_cast<std::size_t>(std::cin.gcount());
+  if (got > server::kMaxAuthoredSetBytes) {
+    o.err << "error: the set is larger than " << server::kMaxAuthoredSetBytes << " bytes\n";
+    return 1;
+  }
+  r.yaml.assign(buffer.data(), got);
+  const std::string roster = (fs::path(s.course) / "roster.csv").string();
+  if (fs::exists(roster)) r.roster = read_roster(roster);
+  o.out << server::author_preview_json(r) << "\n";
   return 0;
 }
 
@@ -175,6 +203,10 @@ CLI::App* add_serve_options(CLI::App& cli, ServeOptions& s) {
   c->add_option("--submit-rate", s.submit_rate,
                 "Submissions a session may make a second (default 1, bursts of 10; 429 beyond)");
   c->add_option("--worker", s.worker, "")->group("");  // internal: a grading worker
+  // internal: the authoring page's preview, run in a process of its own
+  c->add_option("--author-preview", s.author_preview, "")->group("");
+  c->add_option("--author-student", s.author_student, "")->group("");
+  c->add_flag("--author-check", s.author_check, "")->group("");
   return c;
 }
 
@@ -187,6 +219,7 @@ Command add_serve_command(CLI::App& cli) {
 }
 
 int run_serve(const ServeOptions& s, const Output& o) {
+  if (s.author_preview) return author_preview(s, o);
   server::Course course;
   if (!load(s, o, course)) return 1;
   const std::string url = db_url(s);
@@ -196,7 +229,7 @@ int run_serve(const ServeOptions& s, const Output& o) {
     server::WorkerOptions w;
     w.seconds = s.grade_seconds;
     const std::atomic<bool> never{false};
-    return server::run_worker(course, *store, *s.worker, w, never);
+    return server::run_worker(std::move(course), *store, *s.worker, w, never);
   }
   if (s.issue_links) return issue_links(s, course, *store, o);
   return serve(s, course, *store, url, o);

@@ -31,6 +31,10 @@ struct ServeOptions {
   double preview_rate = 10;  // per session, a second (the burst is three times as many)
   double submit_rate = 1;
   std::optional<std::string> worker;  // internal: run as grading worker NAME
+  // internal: the authoring page's preview of the set on stdin, named NAME (server/author_preview)
+  std::optional<std::string> author_preview;
+  std::string author_student;  // whose variant it shows ("" for the set as written)
+  bool author_check = false;   // errors and samples only
 };
 
 int run_serve(const ServeOptions& options, const Output& o);

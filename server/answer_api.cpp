@@ -24,7 +24,7 @@ std::string field(const std::map<std::string, std::string>& form, const std::str
 const AnswerSpec* asked_answer(StudentApp& app, const Visitor& v,
                                const std::map<std::string, std::string>& form,
                                const ProblemSpec** problem, Lang* lang) {
-  const CourseSet* set = app.course.find(field(form, "set"));
+  const CourseSet* set = app.course().find(field(form, "set"));
   const ProblemSet* variant = set ? set->for_student(v.student) : nullptr;
   const ProblemSpec* p = variant ? variant->find(field(form, "problem")) : nullptr;
   const std::string name = field(form, "answer");
@@ -108,8 +108,7 @@ Response submit_answers(StudentApp& app, const Visitor& v, const CourseSet& set,
   const ProblemSet* variant = set.for_student(v.student);
   const ProblemSpec* p = variant ? variant->find(field(form, "problem")) : nullptr;
   if (!p) return message_page(404, lang, Say::NotFound);
-  if (set.policy.deadline_ms && now > *set.policy.deadline_ms)
-    return message_page(403, lang, Say::DeadlinePassed);
+  if (set.policy.closed_for(v.student, now)) return message_page(403, lang, Say::DeadlinePassed);
   if (set.policy.attempts &&
       attempts_at(app.store.submissions(v.student, set.id), p->id) >= *set.policy.attempts)
     return message_page(403, lang, Say::NoAttemptsLeft);

@@ -163,7 +163,7 @@ std::vector<BatchRow> gradebook_rows(const Course& course, const ClassView& view
         for (auto it = mine->second.rbegin(); it != mine->second.rend(); ++it) {
           any = true;
           if (const GradeRecord* g = view.graded(**it)) {
-            score = g->score;
+            score = g->score * view.set->policy.credit_factor((*it)->attempt);
             break;
           }
           if (!view.grades.count((*it)->id)) pending = true;

@@ -4,23 +4,19 @@
 #include <filesystem>
 
 #include "server/tokens.hpp"
+#include "solver/input/given_reader.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/variants.hpp"
 
 namespace frustum::server {
 
-namespace {
-
 namespace fs = std::filesystem;
 
-// A set id travels in URLs: letters, digits, - and _ only.
-bool url_safe(const std::string& id) {
+bool set_id_ok(const std::string& id) {
   return !id.empty() && std::all_of(id.begin(), id.end(), [](unsigned char c) {
     return std::isalnum(c) || c == '-' || c == '_';
   });
 }
-
-}  // namespace
 
 std::optional<CourseSet> load_course_set(const std::string& file,
                                          const std::vector<std::string>& roster,
@@ -29,7 +25,7 @@ std::optional<CourseSet> load_course_set(const std::string& file,
   CourseSet s;
   s.id = path.stem().string();
   s.file = path.string();
-  if (!url_safe(s.id)) {
+  if (!set_id_ok(s.id)) {
     errors.push_back(Diagnostic{SourceLocation{s.file, 0, 0}, "",
                                 "a served set's file name may hold only letters, digits, "
                                 "- and _ (it is part of the set's address)"});
@@ -49,6 +45,19 @@ std::optional<CourseSet> load_course_set(const std::string& file,
     return std::nullopt;
   }
   s.policy = read_serve_policy(doc.root, s.file);
+  // An extension for someone not on the roster is a typo that would leave the student meant
+  // without it: the set is not served until it is fixed.
+  bool unknown = false;
+  const YAML::Node extensions = doc.root["extensions"];
+  if (extensions.IsDefined() && extensions.IsMap())
+    for (auto it = extensions.begin(); it != extensions.end(); ++it)
+      if (std::find(roster.begin(), roster.end(), it->first.Scalar()) == roster.end()) {
+        errors.push_back(
+            Diagnostic{location_of(it->first, s.file), "extensions." + it->first.Scalar(),
+                       "'" + it->first.Scalar() + "' is not on the roster (roster.csv)"});
+        unknown = true;
+      }
+  if (unknown) return std::nullopt;
   if (set_varies(s.set)) {
     const std::vector<ProblemSet> drawn = variants_for_class(s.set, roster, false);
     for (std::size_t i = 0; i < roster.size(); ++i) {

@@ -41,6 +41,9 @@ struct Course {
   bool instructs(const std::string& id) const;
 };
 
+// A set id travels in URLs: letters, digits, - and _ only.
+bool set_id_ok(const std::string& id);
+
 // Reads every DIR/*.yaml (a subdirectory's files are not sets) for the given roster (from
 // DIR/roster.csv, read by the caller). A set with errors is left out and its errors reported.
 Course load_course(const std::string& dir, const std::vector<std::string>& roster);

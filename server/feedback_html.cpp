@@ -42,48 +42,71 @@ std::string carried_html(const Json& a, Lang lang) {
                      html_escape(say(Say::Carried, lang)), used.empty() ? "" : ": ", used);
 }
 
-std::string answer_html(const Json& a, Lang lang) {
+std::string answer_html(const Json& a, const FeedbackShown& shown, Lang lang) {
   const std::string verdict = text_of(a, "verdict");
-  std::string out = fmt::format(
-      "<div class=\"answer verdict-{0}\" data-answer=\"{1}\">\n<h4><code>{1}</code>: "
-      "<span class=\"verdict\">{2}</span> <span class=\"points\">{3} / {4}</span></h4>\n",
-      html_escape(verdict), html_escape(text_of(a, "name")),
-      html_escape(say(verdict_phrase(verdict), lang)), score_text(a.value("score", 0.0)),
-      score_text(a.value("max_score", 0.0)));
+  // Without the verdicts, not even the class (its colour) tells them.
+  std::string out =
+      fmt::format("<div class=\"answer verdict-{}\" data-answer=\"{}\">\n<h4><code>{}</code>",
+                  shown.verdicts ? html_escape(verdict) : "hidden", html_escape(text_of(a, "name")),
+                  html_escape(text_of(a, "name")));
+  if (shown.verdicts)
+    out += fmt::format(": <span class=\"verdict\">{}</span>",
+                       html_escape(say(verdict_phrase(verdict), lang)));
+  if (shown.credit)
+    out += fmt::format(" <span class=\"points\">{} / {}</span>", score_text(a.value("score", 0.0)),
+                       score_text(a.value("max_score", 0.0)));
+  out += "</h4>\n";
   if (!text_of(a, "got_text").empty())
     out +=
         fmt::format("<p class=\"got\">{}: <code>{}</code></p>\n",
                     html_escape(say(Say::YourAnswer, lang)), html_escape(text_of(a, "got_text")));
-  if (verdict != "correct")
-    out += labelled("feedback", Say::Feedback, text_of(a, "feedback"), lang);
-  out += labelled("mistake", Say::Mistake, text_of(a, "mistake"), lang);
-  out += labelled("where", Say::WhereWrong, text_of(a, "wrong_step"), lang);
-  out += carried_html(a, lang);
+  if (shown.mistakes) {
+    if (verdict != "correct")
+      out += labelled("feedback", Say::Feedback, text_of(a, "feedback"), lang);
+    out += labelled("mistake", Say::Mistake, text_of(a, "mistake"), lang);
+    out += labelled("where", Say::WhereWrong, text_of(a, "wrong_step"), lang);
+    out += carried_html(a, lang);
+  }
+  // The right answer, typeset by the page from the LaTeX Frustum made (its Unicode without
+  // JavaScript); grades stored before it was recorded have none.
+  if (shown.key && verdict != "correct" && !text_of(a, "key_tex").empty())
+    out += fmt::format(
+        "<p class=\"key\"><strong>{}</strong>: <span class=\"tex\" data-tex=\"{}\">{}</span></p>\n",
+        html_escape(say(Say::RightAnswer, lang)), html_escape(text_of(a, "key_tex")),
+        html_escape(text_of(a, "key_text")));
   // Made by the server from the grader's steps, its texts escaped there (html_steps).
-  if (!text_of(a, "derivation_html").empty())
+  if (shown.derivation && !text_of(a, "derivation_html").empty())
     out += fmt::format("<details class=\"derivation\"><summary>{}</summary>\n{}</details>\n",
                        html_escape(say(Say::Derivation, lang)), text_of(a, "derivation_html"));
   return out + "</div>\n";
 }
 
-std::string graded_html(const GradeRecord& g, bool shown, Lang lang) {
+std::string graded_html(const GradeRecord& g, std::int64_t attempt, const FeedbackShown& shown,
+                        double credit_factor, Lang lang) {
   if (g.failed)
     return fmt::format("<p class=\"failed\">{}</p>\n", html_escape(say(Say::GradingFailed, lang)));
-  if (!shown)
+  if (!shown.any())
     return fmt::format("<p class=\"later\">{}</p>\n", html_escape(say(Say::FeedbackLater, lang)));
   const Json result = Json::parse(g.result, nullptr, false);
-  std::string out =
-      fmt::format("<p class=\"score\">{}: {} / {}</p>\n", html_escape(say(Say::Score, lang)),
-                  score_text(g.score), score_text(g.max_score));
+  std::string out;
+  if (shown.credit) {
+    out = fmt::format("<p class=\"score\">{}: {} / {}</p>\n", html_escape(say(Say::Score, lang)),
+                      score_text(g.score), score_text(g.max_score));
+    if (credit_factor < 1)
+      out += fmt::format("<p class=\"credited\">{} ({} {}): {} / {}</p>\n",
+                         html_escape(say(Say::CreditedAfterPenalty, lang)),
+                         html_escape(say(Say::Attempt, lang)), attempt,
+                         score_text(g.score * credit_factor), score_text(g.max_score));
+  }
   if (result.is_object())
-    for (const Json& a : result.value("answers", Json::array())) out += answer_html(a, lang);
+    for (const Json& a : result.value("answers", Json::array())) out += answer_html(a, shown, lang);
   return out;
 }
 
 }  // namespace
 
 std::string submission_html(const SubmissionRecord& s, const std::optional<GradeRecord>& grade,
-                            bool feedback_shown, Lang lang) {
+                            const FeedbackShown& shown, double credit_factor, Lang lang) {
   const char* state = !grade ? "pending" : grade->failed ? "failed" : "graded";
   std::string out =
       fmt::format("<div class=\"submission\" id=\"s-{0}\" data-state=\"{1}\">\n<h3>{2} {3}</h3>\n",
@@ -91,7 +114,7 @@ std::string submission_html(const SubmissionRecord& s, const std::optional<Grade
   if (!grade)
     return out + fmt::format("<p class=\"pending\">{}</p>\n</div>\n",
                              html_escape(say(Say::Received, lang)));
-  return out + graded_html(*grade, feedback_shown, lang) + "</div>\n";
+  return out + graded_html(*grade, s.attempt, shown, credit_factor, lang) + "</div>\n";
 }
 
 }  // namespace frustum::server

@@ -35,12 +35,15 @@ Json carried_from(const ProblemSpec& spec, const AnswerGrade& a, const Json& wri
 }
 
 Json answer_json(const ProblemSpec& spec, const AnswerGrade& a, const Json& written, Lang lang) {
+  const MathText key = tr(a.expected.shown(), lang);
   return Json{{"name", a.name},
               {"verdict", std::string(to_string(a.verdict))},
               {"score", a.score},
               {"max_score", a.max_score},
               {"got_text", a.got_text},
               {"got_tex", a.got ? a.got->shown().latex : ""},
+              {"key_text", key.unicode},
+              {"key_tex", key.latex},
               {"feedback", tr(a.feedback, lang)},
               {"mistake", a.misconception.empty() ? "" : tr(a.misconception, lang)},
               {"wrong_step", a.wrong_step.empty() ? "" : tr(a.wrong_step, lang)},

@@ -110,6 +110,10 @@ awaitable<void> session(Shared& shared, tcp::socket socket) {
     co_await bhttp::async_read_header(stream, buffer, parser,
                                       asio::redirect_error(use_awaitable, ec));
     if (!ec) {
+      const auto target = parser.get().target();
+      if (!limits.large_body_path.empty() &&
+          target.substr(0, limits.large_body_path.size()) == limits.large_body_path)
+        parser.body_limit(limits.large_body_bytes);
       stream.expires_after(std::chrono::seconds(limits.request_seconds));
       co_await bhttp::async_read(stream, buffer, parser, asio::redirect_error(use_awaitable, ec));
     }

@@ -15,6 +15,9 @@ namespace frustum::server {
 struct HttpLimits {
   std::size_t header_bytes = 8 * 1024;  // request line and headers (431 beyond)
   std::size_t body_bytes = 64 * 1024;   // request body (413 beyond)
+  // Bodies of requests under this path may be larger: an author's whole problem set.
+  std::string large_body_path = "/instructor/";
+  std::size_t large_body_bytes = 2 * 1024 * 1024;
   int request_seconds = 10;             // to receive a request once it starts, and to answer it
   int idle_seconds = 60;                // a keep-alive connection with no request is closed
   std::size_t max_connections = 10000;  // further connections are closed at once

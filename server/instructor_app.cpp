@@ -32,7 +32,7 @@ std::optional<std::int64_t> number(const std::string& s) {
 }
 
 std::vector<BatchRow> class_rows(StudentApp& app, const ClassView& view) {
-  return gradebook_rows(app.course, view);
+  return gradebook_rows(app.course(), view);
 }
 
 Response csv(const std::string& name, std::string text) {
@@ -75,7 +75,7 @@ Response class_at_a_glance(StudentApp& app, const Visitor& v, const CourseSet& s
 Response student_submissions(StudentApp& app, const Visitor& v, const CourseSet& set,
                              const std::string& student, Millis now) {
   const Lang lang = set.set.lang;
-  if (!app.course.enrolled(student) || !set.for_student(student))
+  if (!app.course().enrolled(student) || !set.for_student(student))
     return message_page(404, lang, Say::NotFound);
   const std::vector<SubmissionRecord> mine = app.store.submissions(student, set.id);
   std::vector<std::vector<GradeRecord>> histories;
@@ -96,7 +96,7 @@ Response copies(StudentApp& app, const Visitor& v, const CourseSet& set, Millis 
       report = it->second.second;
     } else {
       const ClassView view = read_class(app.store, set);
-      report = copy_signals(app.course, view, app.instructor.solved, app.exact_math, now);
+      report = copy_signals(app.course(), view, app.instructor.solved, app.exact_math, now);
       app.instructor.copies[set.id] = {mark, report};
     }
   }
@@ -109,9 +109,9 @@ RegradePlan fresh_plan(StudentApp& app, const CourseSet& set, const std::string&
                        const std::string& by, Millis now, std::vector<Diagnostic>& errors) {
   const std::lock_guard math(app.exact_math);
   try {
-    const std::optional<CourseSet> fresh = load_course_set(set.file, app.course.roster, errors);
+    const std::optional<CourseSet> fresh = load_course_set(set.file, app.course().roster, errors);
     if (fresh && errors.empty())
-      return plan_regrade(app.course, *fresh, app.store, problem, by, now);
+      return plan_regrade(app.course(), *fresh, app.store, problem, by, now);
   } catch (const InputError& e) {
     errors.push_back(e.diagnostic());
   }
@@ -204,13 +204,13 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
 
 Response handle_instructor(StudentApp& app, const Visitor& v, const Request& r, Millis now) {
   const std::string path = r.path();
-  const Lang lang = course_lang(app.course);
+  const Lang lang = course_lang(app.course());
   if (path == "/instructor" || path == "/instructor/") {
     if (r.method != "GET") return message_page(405, lang, Say::NotFound);
     std::vector<std::size_t> counts;
-    for (const CourseSet& s : app.course.sets)
+    for (const CourseSet& s : app.course().sets)
       counts.push_back(app.store.set_submissions(s.id, kMaxClassSubmissions).size());
-    return page(lang, tell(Tell::YourCourse, lang), course_page(app.course, counts, lang), v);
+    return page(lang, tell(Tell::YourCourse, lang), course_page(app.course(), counts, lang), v);
   }
   if (path == "/instructor/events" && r.method == "GET") return events(app, r);
   constexpr std::string_view kSet = "/instructor/set/";
@@ -218,7 +218,7 @@ Response handle_instructor(StudentApp& app, const Visitor& v, const Request& r, 
     const std::string tail = path.substr(kSet.size());
     const auto slash = tail.find('/');
     const std::string id = tail.substr(0, slash);
-    if (const CourseSet* set = app.course.find(id))
+    if (const CourseSet* set = app.course().find(id))
       return set_routes(app, v, r, *set, slash == std::string::npos ? "" : tail.substr(slash + 1),
                         now);
   }

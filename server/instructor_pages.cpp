@@ -258,10 +258,10 @@ std::string student_page(const CourseSet& set, const std::string& student,
       // What the student sees of it, under the set's feedback policy.
       const std::optional<GradeRecord> last =
           history.empty() ? std::nullopt : std::optional<GradeRecord>(history.back());
-      out +=
-          fmt::format("<details class=\"seen\" open><summary>{}</summary>\n{}</details>\n",
-                      t(Tell::AsSeen, lang),
-                      submission_html(sub, last, set.policy.feedback_shown(attempts, now), lang));
+      out += fmt::format("<details class=\"seen\" open><summary>{}</summary>\n{}</details>\n",
+                         t(Tell::AsSeen, lang),
+                         submission_html(sub, last, set.policy.shown(sub.student, attempts, now),
+                                         set.policy.credit_factor(sub.attempt), lang));
       if (!history.empty()) {
         out += fmt::format(
             "<table class=\"history\"><caption>{}</caption><thead><tr><th>{}</th><th>{}</th>"

@@ -83,8 +83,6 @@ constexpr std::array<Phrase, static_cast<std::size_t>(Tell::Count)> kPhrases = {
 
 }  // namespace
 
-const char* tell(Tell key, Lang lang) {
-  return in_lang(kPhrases[static_cast<std::size_t>(key)], lang);
-}
+const char* tell(Tell key, Lang lang) { return kPhrases[static_cast<std::size_t>(key)].in(lang); }
 
 }  // namespace frustum::server

@@ -18,7 +18,7 @@ Lang course_lang(const Course& course) {
 }
 
 std::string page_html(Lang lang, const std::string& title, const std::string& body,
-                      const std::string& csrf, bool refresh) {
+                      const std::string& csrf, bool refresh, const std::string& head) {
   return fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
@@ -27,9 +27,10 @@ std::string page_html(Lang lang, const std::string& title, const std::string& bo
       "<link rel=\"stylesheet\" href=\"/static/page.css\">\n"
       "<script defer src=\"/static/katex/katex.min.js\"></script>\n"
       "<script type=\"module\" src=\"/static/page.js\"></script>\n"
-      "</head>\n<body>\n{}</body>\n</html>\n",
+      "{}</head>\n<body>\n{}</body>\n</html>\n",
       to_string(lang), csrf.empty() ? "" : "<meta name=\"csrf\" content=\"" + csrf + "\">\n",
-      refresh ? "<meta http-equiv=\"refresh\" content=\"2\">\n" : "", html_escape(title), body);
+      refresh ? "<meta http-equiv=\"refresh\" content=\"2\">\n" : "", html_escape(title), head,
+      body);
 }
 
 Response html_response(int status, std::string html) {

@@ -14,9 +14,11 @@ namespace frustum::server {
 // The language of pages that belong to no set: the course's first set's.
 Lang course_lang(const Course& course);
 
-// A whole page; `csrf` goes into a meta tag for the module's requests ("" for none).
+// A whole page; `csrf` goes into a meta tag for the module's requests ("" for none); `head`:
+// the page's own further styles and scripts (from this server).
 std::string page_html(Lang lang, const std::string& title, const std::string& body,
-                      const std::string& csrf = "", bool refresh = false);
+                      const std::string& csrf = "", bool refresh = false,
+                      const std::string& head = "");
 Response html_response(int status, std::string html);
 Response json_response(int status, std::string json);
 // A page that says one thing (a refusal, a missing page), with a link home.

@@ -68,23 +68,14 @@ constexpr std::array<Phrase, static_cast<std::size_t>(Say::Count)> kPhrases = {{
     {"Grading…", "採点中…", "Проверяется…"},
     {"Feedback", "講評", "Результаты"},
     {"Not accepted", "受け付けられません", "Не принято"},
+    {"Right answer", "正答", "Правильный ответ"},
+    {"Credited after the penalty", "減点後の得点", "Зачтено с учётом штрафа"},
+    {"Each attempt after the first loses", "2 回目以降の提出ごとの減点",
+     "Штраф за каждую попытку после первой"},
 }};
 
 }  // namespace
 
-const char* say(Say key, Lang lang) {
-  return in_lang(kPhrases[static_cast<std::size_t>(key)], lang);
-}
-
-const char* in_lang(const Phrase& p, Lang lang) {
-  switch (lang) {
-    case Lang::Ja:
-      return p.ja;
-    case Lang::Ru:
-      return p.ru;
-    default:
-      return p.en;
-  }
-}
+const char* say(Say key, Lang lang) { return kPhrases[static_cast<std::size_t>(key)].in(lang); }
 
 }  // namespace frustum::server

@@ -50,17 +50,21 @@ enum class Say : std::size_t {
   Pending,
   Feedback,
   NotAccepted,
+  RightAnswer,
+  CreditedAfterPenalty,
+  PenaltyPerAttempt,
   Count
 };
 
 const char* say(Say key, Lang lang);
 
-// A phrase of the served pages in their three languages (instructor_phrases.hpp has its own).
+// One phrase in the three languages of the pages, and the one a reader of `lang` reads
+// (instructor_phrases.hpp keeps the instructors' own phrases in this form).
 struct Phrase {
   const char* en;
   const char* ja;
   const char* ru;
+  const char* in(Lang lang) const { return lang == Lang::Ja ? ja : lang == Lang::Ru ? ru : en; }
 };
-const char* in_lang(const Phrase& phrase, Lang lang);
 
 }  // namespace frustum::server

@@ -14,8 +14,8 @@ std::optional<Visitor> visitor_of(StudentApp& app, const Request& request, Milli
   const std::string hash = sha256_hex(it->second);
   const std::optional<SessionRecord> s = app.store.session(hash, now);
   if (!s) return std::nullopt;
-  if (s->role == Role::Instructor ? !app.course.instructs(s->student)
-                                  : !app.course.enrolled(s->student))
+  if (s->role == Role::Instructor ? !app.course().instructs(s->student)
+                                  : !app.course().enrolled(s->student))
     return std::nullopt;
   return Visitor{s->student, s->csrf, hash, s->role};
 }
@@ -27,14 +27,14 @@ Response start_session(StudentApp& app, const Request& request, Millis now) {
   if (token.size() == 32) {
     const std::string hash = sha256_hex(token);
     who = app.store.student_by_token(hash);
-    if (who && !app.course.enrolled(*who)) who.reset();
+    if (who && !app.course().enrolled(*who)) who.reset();
     if (!who) {
       who = app.store.instructor_by_token(hash);
       role = Role::Instructor;
-      if (who && !app.course.instructs(*who)) who.reset();
+      if (who && !app.course().instructs(*who)) who.reset();
     }
   }
-  if (!who) return message_page(404, course_lang(app.course), Say::LinkInvalid);
+  if (!who) return message_page(404, course_lang(app.course()), Say::LinkInvalid);
   const std::string session = random_token();
   app.store.put_session(sha256_hex(session),
                         SessionRecord{*who, random_token(), now + app.config.session_ms, role});

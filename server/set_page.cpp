@@ -45,9 +45,9 @@ std::string inputs_html(const ProblemSpec& p, const std::map<std::string, std::s
 }
 
 // Why no more submissions are taken for this problem ("" when they are).
-std::string closed_reason(const CourseSet& set, int attempts, Millis now, Lang lang) {
-  if (set.policy.deadline_ms && now > *set.policy.deadline_ms)
-    return say(Say::DeadlinePassed, lang);
+std::string closed_reason(const CourseSet& set, const Visitor& v, int attempts, Millis now,
+                          Lang lang) {
+  if (set.policy.closed_for(v.student, now)) return say(Say::DeadlinePassed, lang);
   if (set.policy.attempts && attempts >= *set.policy.attempts)
     return say(Say::NoAttemptsLeft, lang);
   return "";
@@ -56,11 +56,15 @@ std::string closed_reason(const CourseSet& set, int attempts, Millis now, Lang l
 std::string form_html(const CourseSet& set, const ProblemSpec& p, const Visitor& v,
                       const std::map<std::string, std::string>& drafts, int attempts, Millis now,
                       Lang lang) {
-  const std::string closed = closed_reason(set, attempts, now, lang);
+  const std::string closed = closed_reason(set, v, attempts, now, lang);
   std::string left;
   if (set.policy.attempts)
     left = fmt::format("<p class=\"left\">{}: {}</p>\n", html_escape(say(Say::AttemptsLeft, lang)),
                        std::max<std::int64_t>(0, *set.policy.attempts - attempts));
+  if (set.policy.penalty > 0)
+    left += fmt::format("<p class=\"penalty\">{}: {}</p>\n",
+                        html_escape(say(Say::PenaltyPerAttempt, lang)),
+                        html_escape(set.policy.penalty_text));
   return fmt::format(
       "<form method=\"post\" action=\"/set/{0}/submit\" class=\"answers\" data-set=\"{0}\" "
       "data-problem=\"{1}\">\n<input type=\"hidden\" name=\"csrf\" value=\"{2}\">\n"
@@ -80,10 +84,11 @@ const SubmissionRecord* latest_of(const std::vector<SubmissionRecord>& mine,
 }
 
 // The figure shows what the answers are (the painter's order, the hidden edges): it belongs to
-// the feedback, shown once a submission is graded and the policy lets feedback show.
-bool figure_allowed(const CourseSet& set, const ProblemSpec& p,
+// the key, shown once a submission is graded and the policy shows the key.
+bool figure_allowed(const CourseSet& set, const Visitor& v, const ProblemSpec& p,
                     const std::vector<SubmissionRecord>& mine, bool graded, Millis now) {
-  return p.info->drawable && graded && set.policy.feedback_shown(attempts_at(mine, p.id), now);
+  return p.info->drawable && graded &&
+         set.policy.shown(v.student, attempts_at(mine, p.id), now).key;
 }
 
 std::string problem_html(StudentApp& app, const CourseSet& set, const ProblemSpec& p, int number,
@@ -102,8 +107,9 @@ std::string problem_html(StudentApp& app, const CourseSet& set, const ProblemSpe
   if (const SubmissionRecord* last = latest_of(mine, p.id)) {
     const std::optional<GradeRecord> g = app.store.latest_grade(last->id);
     pending = pending || !g;
-    out += submission_html(*last, g, set.policy.feedback_shown(attempts, now), lang);
-    if (figure_allowed(set, p, mine, g && !g->failed, now))
+    out += submission_html(*last, g, set.policy.shown(v.student, attempts, now),
+                           set.policy.credit_factor(last->attempt), lang);
+    if (figure_allowed(set, v, p, mine, g && !g->failed, now))
       out += fmt::format("<figure><img src=\"/set/{}/figure/{}.svg\" alt=\"{}\"></figure>\n",
                          html_escape(set.id), html_escape(url_encode(p.id)),
                          html_escape(say(Say::Figure, lang)));
@@ -140,12 +146,12 @@ int attempts_at(const std::vector<SubmissionRecord>& mine, const std::string& pr
 }
 
 Response sets_page(StudentApp& app, const Visitor& v) {
-  const Lang lang = course_lang(app.course);
+  const Lang lang = course_lang(app.course());
   std::string body = fmt::format("<main>\n<h1>{}</h1>\n", html_escape(say(Say::YourSets, lang)));
-  if (app.course.sets.empty())
+  if (app.course().sets.empty())
     body += fmt::format("<p>{}</p>\n", html_escape(say(Say::NoSets, lang)));
   body += "<ul class=\"sets\">\n";
-  for (const CourseSet& s : app.course.sets)
+  for (const CourseSet& s : app.course().sets)
     if (s.for_student(v.student))
       body += fmt::format("<li><a href=\"/set/{}\">{}</a></li>\n", html_escape(s.id),
                           html_escape(title_of(s)));
@@ -162,10 +168,10 @@ Response set_page(StudentApp& app, const Visitor& v, const CourseSet& set, Milli
       answer_values(app.store.drafts(v.student, set.id), mine);
   std::string body = fmt::format("<main>\n<p><a href=\"/\">{}</a></p>\n<h1>{}</h1>\n",
                                  html_escape(say(Say::AllSets, lang)), html_escape(title_of(set)));
-  if (set.policy.deadline_ms)
-    body +=
-        fmt::format("<p class=\"deadline\">{}: <time>{}</time></p>\n",
-                    html_escape(say(Say::Deadline, lang)), html_escape(set.policy.deadline_text));
+  if (set.policy.deadline_for(v.student))
+    body += fmt::format("<p class=\"deadline\">{}: <time>{}</time></p>\n",
+                        html_escape(say(Say::Deadline, lang)),
+                        html_escape(set.policy.deadline_text_for(v.student)));
   bool pending = false;
   int number = 0;
   for (const ProblemSpec& p : variant->problems)
@@ -184,7 +190,8 @@ Response submission_page(StudentApp& app, const Visitor& v, const CourseSet& set
   const std::string body = fmt::format(
       "<main>\n<p><a href=\"/set/{}\">{}</a></p>\n{}</main>\n", html_escape(set.id),
       html_escape(title_of(set)),
-      submission_html(*s, g, set.policy.feedback_shown(attempts_at(mine, s->problem), now), lang));
+      submission_html(*s, g, set.policy.shown(v.student, attempts_at(mine, s->problem), now),
+                      set.policy.credit_factor(s->attempt), lang));
   return html_response(200, page_html(lang, title_of(set), body, v.csrf, !g));
 }
 
@@ -196,7 +203,7 @@ Response figure_svg(StudentApp& app, const Visitor& v, const CourseSet& set,
   const std::vector<SubmissionRecord> mine = app.store.submissions(v.student, set.id);
   const SubmissionRecord* last = latest_of(mine, p->id);
   const std::optional<GradeRecord> g = last ? app.store.latest_grade(last->id) : std::nullopt;
-  if (!figure_allowed(set, *p, mine, g && !g->failed, now))
+  if (!figure_allowed(set, v, *p, mine, g && !g->failed, now))
     return message_page(404, set.set.lang, Say::NotFound);
   try {
     PictureOptions options;

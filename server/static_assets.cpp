@@ -1,13 +1,17 @@
 #include "server/static_assets.hpp"
 
+#include <fstream>
 #include <map>
 #include <mutex>
+#include <sstream>
 
 #include "solver/derivation/render.hpp"
 
 namespace frustum::server {
 
 namespace {
+
+constexpr const char* kCodeMirrorDir = "/usr/share/javascript/codemirror";
 
 struct Asset {
   const char* name;
@@ -41,6 +45,21 @@ const std::map<std::string, std::string>& katex() {
   return files;
 }
 
+// CodeMirror 5 from Debian's libjs-codemirror: the editor and its YAML mode, read once.
+const std::map<std::string, std::string>& codemirror() {
+  static const std::map<std::string, std::string> files = [] {
+    std::map<std::string, std::string> out;
+    for (const char* name : {"lib/codemirror.js", "lib/codemirror.css", "mode/yaml/yaml.js"}) {
+      std::ifstream in(std::string(kCodeMirrorDir) + "/" + name, std::ios::binary);
+      std::ostringstream bytes;
+      bytes << in.rdbuf();
+      if (in) out.emplace(name, bytes.str());
+    }
+    return out;
+  }();
+  return files;
+}
+
 Response file_response(const std::string& path, const std::string& bytes) {
   return Response{200,
                   {{"Content-Type", content_type(path)}, {"Cache-Control", "public, max-age=3600"}},
@@ -56,6 +75,11 @@ std::optional<Response> static_asset(const std::string& path) {
   if (path.rfind(kKatex, 0) == 0) {
     const auto it = katex().find(path.substr(kKatex.size()));
     if (it != katex().end()) return file_response(path, it->second);
+  }
+  constexpr std::string_view kCodeMirror = "codemirror/";
+  if (path.rfind(kCodeMirror, 0) == 0) {
+    const auto it = codemirror().find(path.substr(kCodeMirror.size()));
+    if (it != codemirror().end()) return file_response(path, it->second);
   }
   return std::nullopt;
 }

@@ -1,5 +1,6 @@
 // Files the pages load, all from the binary: the page's module and style (compiled in) and
-// KaTeX from Debian's libjs-katex (/usr/share/javascript/katex, read once).
+// KaTeX from Debian's libjs-katex (/usr/share/javascript/katex, read once), and CodeMirror 5
+// from libjs-codemirror (/usr/share/javascript/codemirror) for the authoring page.
 #pragma once
 
 #include <optional>

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "server/answer_api.hpp"
+#include "server/author_page.hpp"
 #include "server/instructor_app.hpp"
 #include "server/pages.hpp"
 #include "server/session.hpp"
@@ -52,7 +53,7 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
 }
 
 Response api_routes(StudentApp& app, const Visitor& v, const Request& r, Millis now) {
-  if (r.method != "POST") return message_page(405, course_lang(app.course), Say::NotFound);
+  if (r.method != "POST") return message_page(405, course_lang(app.course()), Say::NotFound);
   const auto form = parse_form(r.body);
   if (!same_origin(r) || !csrf_ok(v, r, form)) return json_response(403, R"({"error":"refused"})");
   if (r.path() == "/api/preview") return preview_answer(app, v, form, now);
@@ -64,40 +65,57 @@ Response route(StudentApp& app, const Request& r, Millis now) {
   const std::string path = r.path();
   if (path.rfind("/static/", 0) == 0 && r.method == "GET") {
     if (auto a = static_asset(path.substr(8))) return *a;
-    return message_page(404, course_lang(app.course), Say::NotFound);
+    return message_page(404, course_lang(app.course()), Say::NotFound);
   }
   if (path == "/start" && r.method == "GET") return start_session(app, r, now);
   const std::optional<Visitor> v = visitor_of(app, r, now);
-  if (!v) return message_page(path == "/" ? 200 : 403, course_lang(app.course), Say::SignInFirst);
+  if (!v) return message_page(path == "/" ? 200 : 403, course_lang(app.course()), Say::SignInFirst);
   // /instructor/… is the instructors' (a student's session is refused); the rest the students'.
   if (path == "/instructor" || path.rfind("/instructor/", 0) == 0) {
     if (v->role != Role::Instructor)
-      return message_page(403, course_lang(app.course), Say::Refused);
+      return message_page(403, course_lang(app.course()), Say::Refused);
+    constexpr std::string_view kAuthor = "/instructor/author/";
+    if (path.rfind(kAuthor, 0) == 0)
+      return author_routes(app, *v, r, path.substr(kAuthor.size()), now);
     return handle_instructor(app, *v, r, now);
   }
   if (v->role == Role::Instructor) {
     if (path == "/" && r.method == "GET") return Response{303, {{"Location", "/instructor/"}}, ""};
     // A student's pages and requests are refused; anything else is not here (a favicon).
     if (path.rfind("/set/", 0) == 0 || path.rfind("/api/", 0) == 0)
-      return message_page(403, course_lang(app.course), Say::Refused);
-    return message_page(404, course_lang(app.course), Say::NotFound);
+      return message_page(403, course_lang(app.course()), Say::Refused);
+    return message_page(404, course_lang(app.course()), Say::NotFound);
   }
   if (path == "/" && r.method == "GET") return sets_page(app, *v);
   if (path.rfind("/api/", 0) == 0) return api_routes(app, *v, r, now);
   if (const auto sp = set_path(path))
-    if (const CourseSet* set = app.course.find(sp->first); set && set->for_student(v->student))
+    if (const CourseSet* set = app.course().find(sp->first); set && set->for_student(v->student))
       return set_routes(app, *v, r, *set, sp->second, now);
-  return message_page(404, course_lang(app.course), Say::NotFound);
+  return message_page(404, course_lang(app.course()), Say::NotFound);
 }
+
+// The course the request on this thread began with (handle_student holds it to the end).
+thread_local const Course* t_request_course = nullptr;
 
 }  // namespace
 
+const Course& StudentApp::course() const {
+  if (t_request_course) return *t_request_course;
+  return *live.current();  // outside a request: valid until the next reload
+}
+
 Response handle_student(StudentApp& app, const Request& request, Millis now) {
+  const std::shared_ptr<const Course> held = app.live.at(now);
+  struct Hold {  // restores the outer request's course (none) on every way out
+    const Course* outer;
+    explicit Hold(const Course* c) : outer(t_request_course) { t_request_course = c; }
+    ~Hold() { t_request_course = outer; }
+  } hold(held.get());
   Response r;
   try {
     r = route(app, request, now);
   } catch (const StoreError&) {
-    r = message_page(503, course_lang(app.course), Say::Busy, 1);
+    r = message_page(503, course_lang(app.course()), Say::Busy, 1);
   }
   secure_headers(r);
   return r;

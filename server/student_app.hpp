@@ -11,14 +11,17 @@
 //   POST /api/draft            an answer as typed so far
 //   GET  /static/…             the page's module, style and KaTeX
 //   …    /instructor/…         the instructors' pages (server/instructor_app.hpp)
+//   …    /instructor/author/S  the authoring page (author_page.hpp), instructors only
 #pragma once
 
+#include <functional>
 #include <mutex>
 #include <string>
 
 #include "server/course.hpp"
 #include "server/http.hpp"
 #include "server/instructor_state.hpp"
+#include "server/live_course.hpp"
 #include "server/rate_limit.hpp"
 #include "server/store.hpp"
 
@@ -33,17 +36,27 @@ struct AppConfig {
   // time), with at most `event_waiters` requests waiting at once (others answer at once).
   Millis events_wait_ms = 8000;
   int event_waiters = 32;
+  // The authoring page's previews: this binary, run as `serve COURSE --author-preview`, each
+  // given this long (the tests name the built binary, not themselves).
+  std::string self_binary = "/proc/self/exe";
+  double author_seconds = 10;
+  // How often the set files are looked at for changes (live_course.hpp), and where the errors
+  // of a changed file that no longer loads go.
+  Millis look_every_ms = 1000;
+  std::function<void(const std::vector<Diagnostic>&)> report;
 };
 
 struct StudentApp {
-  StudentApp(const Course& c, Store& s, AppConfig cfg)
-      : course(c),
-        store(s),
+  StudentApp(Course c, Store& s, AppConfig cfg)
+      : store(s),
         config(cfg),
         preview_limit(cfg.preview_rate, cfg.preview_burst),
         draft_limit(cfg.preview_rate, cfg.preview_burst),
-        submit_limit(cfg.submit_rate, cfg.submit_burst) {}
-  const Course& course;
+        submit_limit(cfg.submit_rate, cfg.submit_burst),
+        live(std::move(c), exact_math, cfg.look_every_ms, cfg.report) {}
+  // The course this request sees: the snapshot handle_student took when the request began (the
+  // sets as their files were then); outside a request, the course as it is now.
+  const Course& course() const;
   Store& store;
   AppConfig config;
   RateLimiter preview_limit, draft_limit, submit_limit;
@@ -52,6 +65,9 @@ struct StudentApp {
   // — parsing a preview, drawing a figure — holds this; the rest of a page is strings and YAML.
   std::mutex exact_math;
   InstructorState instructor;
+  // A set file's save (compare its version, check, keep the old one, write) is one at a time.
+  std::mutex author_files;
+  LiveCourse live;  // after exact_math, which it uses
 };
 
 Response handle_student(StudentApp& app, const Request& request, Millis now);

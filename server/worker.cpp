@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <stdexcept>
 
 #include "server/clock.hpp"
 #include "server/grade_job.hpp"
+#include "server/live_course.hpp"
 #include "server/tokens.hpp"
 
 extern char** environ;
@@ -35,8 +37,12 @@ GradeRecord gave_up(const SubmissionRecord& s, const std::string& name) {
 
 }  // namespace
 
-int run_worker(const Course& course, Store& store, const std::string& name,
-               const WorkerOptions& options, const std::atomic<bool>& stop) {
+int run_worker(Course course, Store& store, const std::string& name, const WorkerOptions& options,
+               const std::atomic<bool>& stop) {
+  std::mutex exact_math;  // one thread: LiveCourse's lock is never contended here
+  LiveCourse live(std::move(course), exact_math, 1000, [](const std::vector<Diagnostic>& errors) {
+    for (const Diagnostic& d : errors) std::fprintf(stderr, "%s\n", d.format().c_str());
+  });
   ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // the server gone (even by kill -9): stop too
   const pid_t parent = ::getppid();
   SolvedCache cache;
@@ -56,7 +62,7 @@ int run_worker(const Course& course, Store& store, const std::string& name,
     // The grader's own limits bound its work; this bounds its time: SIGALRM ends the process,
     // the pool starts another, and the claim runs out and counts against the submission.
     ::alarm(static_cast<unsigned>(options.seconds));
-    const GradeRecord g = grade_submission(course, cache, *s, name, now_ms());
+    const GradeRecord g = grade_submission(*live.at(now_ms()), cache, *s, name, now_ms());
     ::alarm(0);
     store.record_grade(g, name);
   }

@@ -26,9 +26,10 @@ struct WorkerOptions {
 // How long a claim holds: past it, another worker takes the submission again.
 Millis claim_lease(const WorkerOptions& o);
 
-// The worker's loop, until `stop` or its parent dies. Returns the exit status.
-int run_worker(const Course& course, Store& store, const std::string& name,
-               const WorkerOptions& options, const std::atomic<bool>& stop);
+// The worker's loop, until `stop` or its parent dies. Returns the exit status. Each submission
+// is graded against its set as the file is then (live_course.hpp), as the server serves it.
+int run_worker(Course course, Store& store, const std::string& name, const WorkerOptions& options,
+               const std::atomic<bool>& stop);
 
 class WorkerPool {
  public:

@@ -3,7 +3,9 @@
 // and carried credit, drafts and results kept over a reload, another student's page refused) and
 // an instructor (tests/browser/dashboard_flow.mjs: the class at a glance updating live while 200
 // students submit, the counts and the frequent mistake, one student's submissions, a regrade's
-// dry run and apply). Screenshots are kept in build/serve_browser/ and build/dashboard_browser/.
+// dry run and apply; tests/browser/author_flow.mjs: an error marked at its line, fixed, the key
+// and derivation following, saved). Screenshots are kept in build/serve_browser/,
+// build/dashboard_browser/ and build/author_browser/.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -44,6 +46,12 @@ TEST(ServeBrowser, AStudentAnswersSubmitsAndSeesTheFeedback) {
 TEST(ServeBrowser, AnInstructorWatchesTheClassSubmitAndRegrades) {
   run_flow("dashboard_flow.mjs", "dashboard_browser", {"200"},
            {"1-empty.png", "2-class.png", "3-student.png", "4-dry-run.png", "5-applied.png"});
+}
+
+TEST(AuthorBrowser, AnAuthorBreaksFixesAndSavesASet) {
+  ASSERT_TRUE(fs::exists("/usr/share/javascript/codemirror/lib/codemirror.js"))
+      << "tools/setup.sh installs libjs-codemirror";
+  run_flow("author_flow.mjs", "author_browser", {}, {"1-error.png", "2-fixed.png", "3-saved.png"});
 }
 
 }  // namespace

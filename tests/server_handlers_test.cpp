@@ -61,11 +61,11 @@ class StudentPages : public ::testing::Test {
     store_->put_student("bob", sha256_hex(kBob));
   }
 
-  Response get(const std::string& target, const std::string& cookie = "") {
+  Response get(const std::string& target, const std::string& cookie = "", Millis now = kNow) {
     Request r{"GET", target, {{"host", "127.0.0.1:8080"}}, "", "127.0.0.1"};
     if (!cookie.empty())
       r.headers.emplace_back("cookie", std::string(kSessionCookie) + "=" + cookie);
-    return handle_student(*app_, r, kNow);
+    return handle_student(*app_, r, now);
   }
   Response post(const std::string& target, const std::string& cookie, const std::string& body,
                 const std::string& origin = "http://127.0.0.1:8080", Millis now = kNow) {
@@ -350,6 +350,100 @@ TEST_F(StudentPages, ThePolicyLimitsAttemptsDeadlineAndFeedback) {
   EXPECT_EQ(store_->submissions("alice", "late").size(), 0u);
 }
 
+// Each part of the feedback when the set says (kNow is 2027-01-15T08:00:00Z): the verdicts at
+// once, the named mistakes from the second attempt, the points never, the key and the
+// derivation after the student's own deadline — bob's, extended, comes two days later than
+// alice's, and he may still submit when she may not.
+TEST_F(StudentPages, EachPartOfTheFeedbackShowsWhenThePolicySays) {
+  make_course({{"parts", std::string("deadline: 2027-01-16T08:00:00Z\n"
+                                     "extensions: {bob: 2027-01-18T08:00:00Z}\n"
+                                     "feedback: {mistakes: {attempts: 2}, credit: never, "
+                                     "key: deadline, derivation: submit}\n"
+                                     "attempts: 3\npenalty: 25%\n") +
+                             kWeek1}});
+  constexpr Millis kDay = 86'400'000;
+  const std::string alice = sign_in(kAlice), bob = sign_in(kBob);
+  const std::string csrf = csrf_of(get("/set/parts", alice).body);
+  const std::string wrong =
+      "csrf=" + csrf + "&problem=zbuf&a.plane=" + url_encode("x + y - z = 6") + "&a.z=-4";
+  ASSERT_EQ(post("/set/parts/submit", alice, wrong).status, 303);
+  grade_pending();
+  std::string page = get("/set/parts", alice).body;
+  EXPECT_NE(page.find("verdict-incorrect"), std::string::npos);           // verdicts: submit
+  EXPECT_EQ(page.find("constant on the wrong side"), std::string::npos);  // mistakes: 2 attempts
+  EXPECT_EQ(page.find("class=\"points\""), std::string::npos);            // credit: never
+  EXPECT_EQ(page.find("1.5 / 3"), std::string::npos);
+  EXPECT_EQ(page.find("class=\"key\""), std::string::npos);  // key: after the deadline
+  // The derivation ends at the right answer: it waits for the key, whatever it says itself.
+  EXPECT_EQ(page.find("class=\"steps\""), std::string::npos);
+  EXPECT_NE(page.find("25%"), std::string::npos);  // the penalty is stated before submitting
+  EXPECT_NE(page.find("2027-01-16T08:00:00Z"), std::string::npos);
+
+  ASSERT_EQ(post("/set/parts/submit", alice, wrong).status, 303);
+  grade_pending();
+  page = get("/set/parts", alice).body;
+  EXPECT_NE(page.find("constant on the wrong side"), std::string::npos);
+  EXPECT_EQ(page.find("class=\"key\""), std::string::npos);
+
+  // After alice's deadline: no more submissions; the key (the plane x + y − z = −6) and the
+  // derivation show.
+  const Millis later = kNow + 2 * kDay;
+  EXPECT_EQ(post("/set/parts/submit", alice, wrong, "http://127.0.0.1:8080", later).status, 403);
+  page = get("/set/parts", alice, later).body;
+  EXPECT_NE(page.find("class=\"key\""), std::string::npos);
+  EXPECT_NE(page.find("x + y − z = −6"), std::string::npos);
+  EXPECT_NE(page.find("class=\"steps\""), std::string::npos);
+  EXPECT_EQ(page.find("1.5 / 3"), std::string::npos);  // credit stays hidden
+
+  // Bob's extension: his deadline on his page, his submission taken, his key not yet shown.
+  const std::string bob_csrf = csrf_of(get("/set/parts", bob).body);
+  EXPECT_NE(get("/set/parts", bob).body.find("2027-01-18T08:00:00Z"), std::string::npos);
+  EXPECT_EQ(post("/set/parts/submit", bob, "csrf=" + bob_csrf + "&problem=zbuf&a.z=-4",
+                 "http://127.0.0.1:8080", later)
+                .status,
+            303);
+  grade_pending();
+  page = get("/set/parts", bob, later).body;
+  EXPECT_NE(page.find("verdict-incorrect"), std::string::npos);
+  EXPECT_EQ(page.find("class=\"key\""), std::string::npos);
+  EXPECT_NE(get("/set/parts", bob, kNow + 4 * kDay).body.find("class=\"key\""), std::string::npos);
+}
+
+// A further attempt is credited less by the penalty: the page says what is credited, the
+// gradebook counts it.
+TEST_F(StudentPages, APenaltyCreditsEachFurtherAttemptLess) {
+  make_course({{"penalised", std::string("penalty: 25%\n") + kWeek1}});
+  const std::string alice = sign_in(kAlice);
+  const std::string csrf = csrf_of(get("/set/penalised", alice).body);
+  const std::string right = "csrf=" + csrf + "&problem=zbuf&a.normal=" + url_encode("(1, 1, -1)") +
+                            "&a.plane=" + url_encode("x + y - z = -6") + "&a.z=8";
+  post("/set/penalised/submit", alice, "csrf=" + csrf + "&problem=zbuf&a.z=-4");
+  grade_pending();
+  EXPECT_EQ(get("/set/penalised", alice).body.find("class=\"credited\""), std::string::npos);
+  post("/set/penalised/submit", alice, right);
+  grade_pending();
+  const std::string page = get("/set/penalised", alice).body;
+  EXPECT_NE(page.find("3 / 3"), std::string::npos);
+  EXPECT_NE(page.find(std::string(say(Say::CreditedAfterPenalty, Lang::En)) + " (" +
+                      say(Say::Attempt, Lang::En) + " 2): 2.25 / 3"),
+            std::string::npos)
+      << page;
+}
+
+TEST_F(StudentPages, AnExtensionForSomeoneNotOnTheRosterKeepsTheSetFromBeingServed) {
+  fs::create_directories(fs::temp_directory_path() / "frustum-serve-extension");
+  const fs::path dir = fs::temp_directory_path() / "frustum-serve-extension";
+  std::ofstream(dir / "hw.yaml") << "deadline: 2027-01-16T08:00:00Z\n"
+                                    "extensions: {alcie: 2027-01-18T08:00:00Z}\n"
+                                 << kWeek1;
+  const Course course = load_course(dir.string(), {"alice", "bob"});
+  fs::remove_all(dir);
+  EXPECT_EQ(course.find("hw"), nullptr);
+  ASSERT_EQ(course.errors.size(), 1u);
+  EXPECT_EQ(course.errors[0].field, "extensions.alcie");
+  EXPECT_EQ(course.errors[0].where.line, 2);
+}
+
 TEST_F(StudentPages, StaticFilesComeFromTheBinary) {
   const Response js = get("/static/page.js");
   EXPECT_EQ(js.status, 200);
@@ -386,8 +480,33 @@ TEST(ServePolicy, BadKeysAreLocatedErrors) {
   ASSERT_EQ(zero.errors.size(), 1u);
   EXPECT_EQ(zero.errors[0].field, "attempts");
   ServePolicy p = read_serve_policy(YAML::Load("feedback: {attempts: 2}"), "x");
-  EXPECT_FALSE(p.feedback_shown(1, 0));
-  EXPECT_TRUE(p.feedback_shown(2, 0));
+  EXPECT_FALSE(p.shown("alice", 1, 0).any());
+  EXPECT_TRUE(p.shown("alice", 2, 0).derivation);
+  // Each part's own when, checked and located like the rest.
+  const auto error_of = [](const std::string& yaml) {
+    const ProblemSet set = load_problem_set_from_string(yaml + kWeek1, "policy.yaml");
+    return set.errors.empty() ? Diagnostic{} : set.errors[0];
+  };
+  EXPECT_EQ(error_of("feedback: {key: deadline}\n").field, "feedback.key");  // no deadline
+  EXPECT_EQ(error_of("feedback: {keys: submit}\n").field, "feedback.keys");
+  EXPECT_EQ(error_of("deadline: 2027-01-16T08:00:00Z\nfeedback: {credit: soon}\n").field,
+            "feedback.credit");
+  EXPECT_EQ(error_of("penalty: 150%\n").field, "penalty");
+  EXPECT_EQ(error_of("penalty: -0.1\n").field, "penalty");
+  EXPECT_EQ(error_of("extensions: {alice: 2027-01-18T08:00:00Z}\n").field, "extensions");
+  EXPECT_EQ(error_of("deadline: 2027-01-16T08:00:00Z\nextensions: {alice: soon}\n").field,
+            "extensions.alice");
+  EXPECT_EQ(error_of("deadline: 2027-01-16T08:00:00Z\nextensions: {alice: soon}\n").where.line, 2);
+  EXPECT_EQ(error_of("penalty: 0.1\nfeedback: {after: submit}\n").field, "");
+  const ServePolicy q = read_serve_policy(
+      YAML::Load("penalty: 0.25\ndeadline: 2027-01-16T08:00:00Z\nfeedback: {key: deadline}"), "x");
+  EXPECT_DOUBLE_EQ(q.credit_factor(1), 1.0);
+  EXPECT_DOUBLE_EQ(q.credit_factor(2), 0.75);
+  EXPECT_DOUBLE_EQ(q.credit_factor(9), 0.0);  // never below nothing
+  EXPECT_TRUE(q.shown("alice", 1, 0).verdicts);
+  EXPECT_FALSE(q.shown("alice", 1, 0).key);
+  EXPECT_FALSE(q.shown("alice", 1, 0).derivation);  // it would give the key away
+  EXPECT_TRUE(q.shown("alice", 1, *parse_iso8601("2027-01-16T08:00:01Z")).derivation);
 }
 
 TEST(ServePhrases, EveryPhraseHasJapaneseAndRussianWithoutEnglish) {

@@ -145,15 +145,16 @@ TEST_F(InstructorPages, AnInstructorsLinkOpensTheInstructorsPagesOnly) {
   EXPECT_EQ(get("/set/week1", prof).status, 403);  // no variant, no submitting
   EXPECT_EQ(post("/api/draft", prof, "").status, 403);
   EXPECT_EQ(get("/favicon.ico", prof).status, 404);
-  // An instructor no longer in instructors.csv is signed out.
+  // An instructor no longer in instructors.csv (read at start) is signed out.
   course_.instructors.clear();
+  app_ = std::make_unique<StudentApp>(course_, *store_, config_);
   EXPECT_EQ(get("/instructor/", prof).status, 403);
 }
 
 TEST_F(InstructorPages, EveryInstructorRouteRefusesAStudent) {
   const std::string alice = sign_in(kAlice);
-  for (const std::string& target :
-       {"/instructor", "/instructor/", "/instructor/set/week1",
+  for (const char* target :
+       {"/instructor", "/instructor/", "/instructor/set/week1", "/instructor/author/week1",
         "/instructor/set/week1/gradebook.csv", "/instructor/set/week1/canvas.csv",
         "/instructor/set/week1/student/bob", "/instructor/set/varied/copies",
         "/instructor/events?set=week1", "/instructor/nothere"})

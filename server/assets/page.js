@@ -4,7 +4,7 @@
 // drafts saved as the student types.
 const csrf = document.querySelector('meta[name="csrf"]')?.content ?? '';
 
-function typeset(element, tex, display) {
+export function typeset(element, tex, display) {
   if (typeof katex === 'undefined') return false;
   try {
     katex.render(tex, element, {displayMode: display, throwOnError: true, strict: 'error', trust: false});
@@ -14,7 +14,7 @@ function typeset(element, tex, display) {
   }
 }
 
-function debounce(run, ms) {
+export function debounce(run, ms) {
   let timer = 0;
   return () => {
     clearTimeout(timer);

@@ -9,6 +9,7 @@
 #include "solver/input/text_reader.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/problem/samples.hpp"
 #include "solver/problem/serve_policy.hpp"
 #include "solver/util/suggest.hpp"
 
@@ -16,26 +17,17 @@ namespace frustum {
 
 namespace {
 
-const std::vector<std::string> kSetFields = {
-    "title",   "lang",     "source",   "conventions", "tolerance", "problems",  "description",
-    "grading", "variants", "feedback", "attempts",    "deadline",  "drawn_from"};
-const std::vector<std::string> kProblemFields = {"id",        "kind",   "text",       "given",
-                                                 "ask",       "points", "vary",       "conventions",
-                                                 "tolerance", "nice",   "difficulty", "grading"};
+const std::vector<std::string> kSetFields = {"title",      "lang",     "source",      "conventions",
+                                             "tolerance",  "problems", "description", "grading",
+                                             "variants",   "feedback", "attempts",    "deadline",
+                                             "drawn_from", "penalty",  "extensions"};
+const std::vector<std::string> kProblemFields = {
+    "id",          "kind",      "text", "given",      "ask",     "points", "vary",
+    "conventions", "tolerance", "nice", "difficulty", "grading", "samples"};
 
 [[noreturn]] void fail_at(const YAML::Node& n, const std::string& file, const std::string& field,
                           const std::string& message) {
   throw InputError(Diagnostic{location_of(n, file), field, message});
-}
-
-void check_keys(const YAML::Node& map, const std::vector<std::string>& known,
-                const std::string& file, const std::string& prefix) {
-  for (auto it = map.begin(); it != map.end(); ++it) {
-    const std::string k = it->first.as<std::string>();
-    if (std::find(known.begin(), known.end(), k) == known.end())
-      fail_at(it->first, file, prefix.empty() ? k : prefix + "." + k,
-              "unknown field" + did_you_mean(k, known));
-  }
 }
 
 std::string read_string(const YAML::Node& n, const std::string& file, const std::string& field) {
@@ -168,6 +160,7 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
                 "not an answer of " + spec.kind + did_you_mean(k, answer_names));
       spec.answer_tolerance[k] = read_tolerance(it->second, file, f, spec.tolerance);
     }
+  spec.samples = read_samples(p["samples"], spec, file);
   // Variation (generate.hpp): `vary`, `nice: true`, `difficulty: normal|hard`.
   if (p["vary"].IsDefined() && !p["vary"].IsNull()) spec.vary = p["vary"];
   if (p["vary"].IsDefined() && !p["vary"].IsNull() && spec.info->fixed)
@@ -201,6 +194,16 @@ void load_problem(const YAML::Node& p, ProblemSpec& spec, const ProblemSet& set,
 }
 
 }  // namespace
+
+void check_keys(const YAML::Node& map, const std::vector<std::string>& known,
+                const std::string& file, const std::string& prefix) {
+  for (auto it = map.begin(); it != map.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    if (std::find(known.begin(), known.end(), k) == known.end())
+      fail_at(it->first, file, prefix.empty() ? k : prefix + "." + k,
+              "unknown field" + did_you_mean(k, known));
+  }
+}
 
 Conventions read_conventions(const YAML::Node& n, const std::string& file, const std::string& field,
                              Conventions base) {

@@ -15,6 +15,7 @@
 
 #include "solver/derivation/local_text.hpp"
 #include "solver/problem/kind.hpp"
+#include "solver/problem/samples.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {
@@ -86,8 +87,9 @@ struct ProblemSpec {
   YAML::Node vary;  // the `vary:` block (generate.hpp); undefined when absent
   // `vary` read once for drawing (set by the variants of a set); null: read at each draw.
   std::shared_ptr<const VaryPlan> vary_plan;
-  bool nice = false;  // nice: true — integer or simple exact answers
-  bool hard = false;  // difficulty: hard — near-degenerate cases on purpose
+  bool nice = false;            // nice: true — integer or simple exact answers
+  bool hard = false;            // difficulty: hard — near-degenerate cases on purpose
+  std::vector<Sample> samples;  // answers with the verdicts their author expects (samples.hpp)
   std::optional<Diagnostic> error;
 
   double max_score() const;
@@ -137,6 +139,10 @@ ProblemSet load_problem_set(const std::string& path);
 ProblemSet load_problem_set(const YamlDocument& doc, const std::string& name);
 // `name` stands for the file in messages.
 ProblemSet load_problem_set_from_string(const std::string& yaml, const std::string& name);
+
+// Fails at the first key of `map` not in `known` (with "did you mean"), as `prefix.key`.
+void check_keys(const YAML::Node& map, const std::vector<std::string>& known,
+                const std::string& file, const std::string& prefix);
 
 // Reads `conventions:` / `tolerance:` mappings (also used by the answer loader).
 Conventions read_conventions(const YAML::Node& n, const std::string& file, const std::string& field,

@@ -659,7 +659,8 @@ std::string emit_variant_set(const YAML::Node& root, const ProblemSet& variant,
       bool first = true;
       for (auto f = p.begin(); f != p.end(); ++f) {
         const std::string name = f->first.as<std::string>();
-        if (name == "vary" || name == "nice" || name == "difficulty") continue;
+        if (name == "vary" || name == "nice" || name == "difficulty" || name == "samples")
+          continue;  // samples answer the set as written, not a variant
         out += first ? "  - " : "    ";
         first = false;
         if (name == "given" && given.IsMap()) {

@@ -3,11 +3,8 @@
 // mistake and the carried credit, reloads and finds the draft and the result kept, and is
 // refused another student's submission. Screenshots go to OUT_DIR.
 //   node serve_flow.mjs FRUSTUM_BINARY WORK_DIR OUT_DIR
-import {spawn, execFileSync} from 'node:child_process';
-import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
-import {check, checks, cleanUp, freePort, launch, run, waitForServer} from './flow.mjs';
+import {checker, run, startCourse} from './course_server.mjs';
 
 const [frustum, work, out] = process.argv.slice(2);
 const kSet = `title: "Depth by the plane method"
@@ -26,6 +23,7 @@ problems:
         - [[-1, -2, -8], [1, -2, -8], [1, 2, -4], [-1, 2, -4]]
       eye: [0, 0, 0]
 `;
+const {check, checks} = checker();
 
 // Bob submits through plain HTTP (his own session), so that Alice has his submission's URL.
 async function bobSubmits(link, base) {
@@ -48,29 +46,10 @@ async function untilGraded(page, problem = '#p-zbuf') {
 }
 
 async function main() {
-  fs.rmSync(work, {recursive: true, force: true});
-  fs.mkdirSync(work, {recursive: true});
-  fs.mkdirSync(out, {recursive: true});
-  const course = path.join(work, 'course');
-  fs.mkdirSync(course);
-  fs.writeFileSync(path.join(course, 'week1.yaml'), kSet);
-  fs.writeFileSync(path.join(course, 'roster.csv'), 'student\nalice\nbob\n');
-  const port = await freePort();
-  const base = `http://127.0.0.1:${port}`;
-  const links = path.join(work, 'links.csv');
-  execFileSync(frustum, ['serve', course, '--issue-links', links, '--public-url', base]);
-  const link = Object.fromEntries(fs.readFileSync(links, 'utf8').trim().split('\n').slice(1).map((l) => l.split(',')));
-  const server = spawn(frustum, ['serve', course, '--listen', `127.0.0.1:${port}`], {stdio: ['ignore', 'inherit', 'inherit']});
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'frustum-serve-chromium-'));
-  let context;
+  const {base, link, page, problems, close} = await startCourse({
+    frustum, work, out, sets: {week1: kSet}, roster: ['alice', 'bob'],
+    viewport: {width: 1000, height: 1400}});
   try {
-    await waitForServer(base);
-    context = await launch(profile, {width: 1000, height: 1400});
-    const page = context.pages()[0] ?? await context.newPage();
-    const problems = [];
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-    page.on('pageerror', (e) => problems.push(e.message));
-
     // The link: a session cookie, and the token gone from the address.
     await page.goto(link.alice);
     check(page.url() === base + '/', 'the token is removed from the URL: ' + page.url());
@@ -137,9 +116,9 @@ async function main() {
     await page.goto(`${base}/set/week1/submission/${bobs}`);
     await page.screenshot({path: path.join(out, '5-refused.png'), fullPage: true});
     check(problems.filter((p) => !p.includes('404')).length === 0, 'no script errors or CSP violations: ' + problems.join('; '));
-    console.log(`serve browser test: ${checks.count} checks passed`);
+    console.log(`serve browser test: ${checks()} checks passed`);
   } finally {
-    await cleanUp(context, server, profile);
+    await close();
   }
 }
 
