@@ -20,7 +20,7 @@
 #include "solver/raster/certified_frame.hpp"
 #include "solver/raster/fill.hpp"
 #include "solver/raster/png_writer.hpp"
-#include "solver/raster/scanline.hpp"
+#include "solver/raster/scene_frame.hpp"
 #include "solver/steps/scene_reader.hpp"
 
 namespace frustum::app {
@@ -120,35 +120,12 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
   if (const int* status = std::get_if<int>(&loaded)) return *status;
   const Scene& scene = std::get<RenderScene>(loaded).spec.scene;
   const auto start = std::chrono::steady_clock::now();
-  // Every decision the exact inputs', as the render kind's: the floats decide where their error
-  // bounds prove it, ranged and exact arithmetic elsewhere (certified_frame.hpp).
-  FrameCertifier certifier(scene, std::get<RenderScene>(loaded).clip_from_world);
-  GeometryStats gs;
-  Frame own;  // the frame when the caller keeps none; the scan-line method's image
+  Frame own;  // the frame when the caller keeps none
   Frame& frame = target ? *target : own;
-  std::string method;
+  SceneFrameReport report;
   try {
-    if (scene.scanline) {
-      // The world triangles are freed once in window space.
-      const std::vector<WindowTriangle> tris =
-          geometry(scene, flatten(scene, false, true), &gs, &certifier);
-      ScanlineStats st;
-      frame.ties.assign(static_cast<std::size_t>(scene.height), {});
-      frame.color =
-          render_scanline(tris, scene.width, scene.height, scene.background, &st,
-                          opt.depth ? &frame.depth : nullptr, scene.max_work, &frame.ties);
-      if (!opt.depth) frame.depth = {};
-      method = fmt::format(
-          "scan-line: one row of depth ({} bytes) instead of the z-buffer's {} bytes; at most {} "
-          "triangles active on a row, {} spans",
-          st.row_depth_bytes, st.zbuffer_depth_bytes, st.active_max, st.spans);
-    } else {
-      FillStats fs;
-      render_zbuffer(scene, frame, &gs, &fs, opt.threads, helpers, &certifier);
-      method = fmt::format("z-buffer: {} bytes of depth; {} fragments, {} written",
-                           frame.depth.data.size() * sizeof(float), fs.fragments, fs.written);
-    }
-    repair_undecided(scene, frame, certifier);
+    draw_scene_frame(scene, std::get<RenderScene>(loaded).clip_from_world, opt.depth.has_value(),
+                     opt.threads, helpers, frame, &report);
   } catch (const DomainError& e) {
     // The frame's work past its bound, or a coordinate beyond the rasterizer's range, or a sign
     // exact arithmetic could not prove.
@@ -169,8 +146,9 @@ int run_render(const RenderOptions& opt, const Output& o, Frame* target) {
       "{}: {} × {}, {} triangles ({} outside, {} clipped, {} culled, {} drawn) in {:.1f} ms\n{}\n"
       "exact rule: {} triangles decided by exact arithmetic; {} pixels the floats could not "
       "decide traced again, {} of them by exact depths\n",
-      opt.output, scene.width, scene.height, gs.triangles, gs.outside, gs.clipped, gs.culled,
-      gs.window, ms, method, gs.exact, certifier.check.pixels, certifier.check.exact_pixels);
+      opt.output, scene.width, scene.height, report.geometry.triangles, report.geometry.outside,
+      report.geometry.clipped, report.geometry.culled, report.geometry.window, ms, report.method,
+      report.geometry.exact, report.traced_pixels, report.exact_pixels);
   return 0;
 }
 

@@ -129,12 +129,16 @@ std::string help_text(const ProblemSpec& p, const Answers& key, const AnswerSpec
   if (expected.numbers.empty() || spec.kind == AnswerKind::Plane ||
       spec.kind == AnswerKind::Direction)
     return {};
-  // A z-buffer's background depth is +∞, which the key writes 1e30: said under the input.
+  // A z-buffer's background depth is +∞ (1e30 in the key), which Frustum, grading this input,
+  // reads written inf: said under the input.
   const bool infinity =
-      std::find(expected.numbers.begin(), expected.numbers.end(), 1e30) != expected.numbers.end();
+      spec.infinity != 0 && std::find(expected.numbers.begin(), expected.numbers.end(),
+                                      spec.infinity) != expected.numbers.end();
   const std::string why =
-      infinity ? " " + tr("1e30 stands for +∞, the depth of a pixel no polygon covers", lang) + "."
-               : "";
+      infinity
+          ? " " + tr("+∞, the depth of a pixel no polygon covers, is written inf (or 1e30)", lang) +
+                "."
+          : "";
   const std::vector<double> windows = accepted_windows(p, key, spec.name, expected);
   std::vector<std::string> items;
   for (const double w : windows) items.push_back(fmt::format("±{:.3g}", w));

@@ -61,10 +61,16 @@ struct Numbers {
 // with this many digits and rounded to a double; parse_answer then drops the exact form.
 constexpr long kNumericFallbackDigits = 40;
 
-Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget) {
+// `infinity`: where an answer holds +∞ as a stand-in number (AnswerSpec::infinity), +∞ written
+// inf, ∞ or infinity (or YAML's .inf) is that number; 0: +∞ is no answer.
+Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget,
+                double infinity = 0) {
   // YAML's spellings of NaN and infinity (the expression parser knows nan, inf and ∞).
   const std::string t = trim_lower(text);
   const std::string body = !t.empty() && (t[0] == '+' || t[0] == '-') ? t.substr(1) : t;
+  if (infinity != 0 && (t.empty() || t[0] != '-') &&
+      (body == "inf" || body == ".inf" || body == "infinity" || body == "∞"))
+    return exact_from_double(infinity);
   if (body == ".nan" || body == ".inf") {
     error = quote_excerpt(text) + " is not a finite number";
     return 0;
@@ -230,7 +236,7 @@ std::optional<Numbers> read_scaled_tuple(const std::string& text, WorkBudget& bu
   return out;
 }
 
-Numbers read_numbers(const YAML::Node& n, WorkBudget& budget) {
+Numbers read_numbers(const YAML::Node& n, WorkBudget& budget, double infinity = 0) {
   if (n.IsScalar())
     if (std::optional<Numbers> scaled = read_scaled_tuple(n.Scalar(), budget)) return *scaled;
   Numbers out;
@@ -250,7 +256,7 @@ Numbers read_numbers(const YAML::Node& n, WorkBudget& budget) {
     return out;
   }
   for (const std::string& item : items) {
-    out.values.push_back(parse_one(item, out.error, budget));
+    out.values.push_back(parse_one(item, out.error, budget, infinity));
     if (!out.error.empty()) return out;
   }
   return out;
@@ -310,7 +316,8 @@ struct Rows {
 
 // A matrix or a vertex list: a YAML list of rows (each a list or "(a, b)"), or one text in a
 // usual written form ("(0, 4), (8, 8)").
-Rows read_rows(const YAML::Node& node, const std::string& item, WorkBudget& budget) {
+Rows read_rows(const YAML::Node& node, const std::string& item, WorkBudget& budget,
+               double infinity = 0) {
   Rows out;
   std::vector<YAML::Node> rows;
   if (node.IsSequence() && node.size() > 0) {
@@ -323,7 +330,7 @@ Rows read_rows(const YAML::Node& node, const std::string& item, WorkBudget& budg
     return out;
   }
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    const Numbers n = read_numbers(rows[r], budget);
+    const Numbers n = read_numbers(rows[r], budget, infinity);
     if (!n.error.empty()) {
       out.error = item + " " + std::to_string(r + 1) + ": " + n.error;
       return out;
@@ -518,7 +525,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
     case AnswerKind::PointSet:
     case AnswerKind::Polygon: {
       const bool vertices = spec.kind != AnswerKind::Matrix && spec.kind != AnswerKind::Transform;
-      const Rows rows = read_rows(node, vertices ? "vertex" : "row", budget);
+      const Rows rows = read_rows(node, vertices ? "vertex" : "row", budget, spec.infinity);
       if (!rows.error.empty()) {
         p.error = rows.error;
         return p;

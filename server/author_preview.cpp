@@ -1,19 +1,54 @@
 #include "server/author_preview.hpp"
 
+#include <openssl/evp.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdlib>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <stdexcept>
 
 #include "batch/set_check.hpp"
 #include "server/given_tex.hpp"
 #include "solver/derivation/render.hpp"
+#include "solver/kinds/render.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
+#include "solver/raster/png_writer.hpp"
+#include "solver/raster/scene_frame.hpp"
 #include "solver/visibility/pictures.hpp"
 
 namespace frustum::server {
 
 namespace {
+
+// The render kind's image as `frustum render` draws it, as a data: URL. The PNG goes through a
+// private temporary file (mkstemp), read back and removed: the preview is a process of its own.
+std::string render_png_url(const RenderGiven& g) {
+  Frame frame;
+  draw_scene_frame(g.spec.scene, exact_clip_from_world(g.spec, g.spec.scene.api), false, 1, nullptr,
+                   frame, nullptr);
+  char path[] = "/tmp/frustum-preview-XXXXXX";
+  const int fd = ::mkstemp(path);
+  if (fd < 0) throw std::runtime_error("no temporary file for the image");
+  ::close(fd);
+  std::string png;
+  const bool written = write_color_png(path, frame.color);
+  if (written) {
+    std::ifstream in(path, std::ios::binary);
+    png.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  ::unlink(path);
+  if (!written || png.empty()) throw std::runtime_error("the image could not be written");
+  std::string b64(4 * ((png.size() + 2) / 3) + 1, '\0');
+  const int n = EVP_EncodeBlock(reinterpret_cast<unsigned char*>(b64.data()),
+                                reinterpret_cast<const unsigned char*>(png.data()),
+                                static_cast<int>(png.size()));
+  b64.resize(static_cast<std::size_t>(n));
+  return "data:image/png;base64," + b64;
+}
 
 using Json = nlohmann::ordered_json;
 
@@ -90,6 +125,13 @@ Json problem_json(const ProblemSpec& p, const std::string& file, const std::vect
       PictureOptions options;
       options.api = p.conventions.api;
       j["figure_svg"] = draw_picture(p.info->drawable(p.given), options).svg;
+    } catch (const std::exception& e) {
+      j["figure_error"] = e.what();
+    }
+  }
+  if (p.kind == "render") {
+    try {
+      j["figure_png"] = render_png_url(std::any_cast<const RenderGiven&>(p.given));
     } catch (const std::exception& e) {
       j["figure_error"] = e.what();
     }

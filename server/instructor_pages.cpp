@@ -197,10 +197,51 @@ std::string course_page(const Course& course, const std::vector<std::size_t>& su
   std::string out =
       fmt::format("<main>\n<h1>{}</h1>\n<ul class=\"sets\">\n", t(Tell::YourCourse, lang));
   for (std::size_t i = 0; i < course.sets.size(); ++i)
-    out += fmt::format("<li><a href=\"{}\">{}</a> ({}: {})</li>\n", base(course.sets[i]),
-                       esc(title_of(course.sets[i])), t(Tell::Submitted, lang),
-                       i < submissions.size() ? submissions[i] : 0);
+    out += fmt::format(
+        "<li><a href=\"{}\">{}</a> ({}: {}) · <a href=\"/instructor/author/{}\">{}</a></li>\n",
+        base(course.sets[i]), esc(title_of(course.sets[i])), t(Tell::Submitted, lang),
+        i < submissions.size() ? submissions[i] : 0, esc(url_encode(course.sets[i].id)),
+        t(Tell::Edit, lang));
   return out + "</ul>\n</main>\n";
+}
+
+// The set's policy as its students meet it: when each part of the feedback shows, the attempts,
+// their penalty, the deadline and each extension.
+std::string policy_html(const ServePolicy& p, Lang lang) {
+  const auto when = [&](const FeedbackWhen& w) {
+    using K = FeedbackWhen::Kind;
+    switch (w.kind) {
+      case K::AfterSubmit:
+        return t(Tell::AtOnce, lang);
+      case K::AfterAttempts:
+        return t(Tell::FromAttempt, lang) + " " + std::to_string(w.attempts);
+      case K::AfterDeadline:
+        return t(Tell::AfterTheirDeadline, lang);
+      case K::AtDate:
+        return t(Tell::FromDate, lang) + " " + esc(utc_text(w.at));
+      case K::Never:
+        return t(Tell::Never, lang);
+    }
+    return std::string();
+  };
+  constexpr Tell kParts[] = {Tell::PartVerdicts, Tell::PartCredit, Tell::PartMistakes,
+                             Tell::PartKey, Tell::PartDerivation};
+  std::string out = fmt::format("<section class=\"policy\">\n<h2>{}</h2>\n<dl>\n",
+                                t(Tell::WhatStudentsSee, lang));
+  for (std::size_t i = 0; i < p.feedback.size(); ++i)
+    out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(kParts[i], lang), when(p.feedback[i]));
+  out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(Tell::Attempts, lang),
+                     p.attempts ? std::to_string(*p.attempts) : t(Tell::Unlimited, lang));
+  if (p.penalty > 0)
+    out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(Tell::PenaltyPerAttempt, lang),
+                       esc(p.penalty_text));
+  if (p.deadline_ms)
+    out += fmt::format("<dt>{}</dt><dd><time>{}</time></dd>\n", t(Tell::Deadline, lang),
+                       esc(p.deadline_text));
+  for (const auto& [student, e] : p.extensions)
+    out += fmt::format("<dt>{}</dt><dd>{}: <time>{}</time></dd>\n", t(Tell::Extensions, lang),
+                       esc(student), esc(e.text));
+  return out + "</dl>\n</section>\n";
 }
 
 std::string class_page(const CourseSet& set, const ClassView& view,
@@ -222,6 +263,7 @@ std::string class_page(const CourseSet& set, const ClassView& view,
   if (!set.variants.empty())
     out +=
         fmt::format("<p><a href=\"{}/copies\">{}</a></p>\n", base(set), t(Tell::CopySignals, lang));
+  out += policy_html(set.policy, lang);
   out += regrade_form(set, v, lang);
   return out + "</main>\n";
 }

@@ -61,6 +61,23 @@ enum class Tell : std::size_t {
   AsSeen,
   Failed,
   SameVerdicts,
+  Edit,
+  WhatStudentsSee,
+  PartVerdicts,
+  PartCredit,
+  PartMistakes,
+  PartKey,
+  PartDerivation,
+  AtOnce,
+  FromAttempt,
+  AfterTheirDeadline,
+  FromDate,
+  Never,
+  Attempts,
+  Unlimited,
+  PenaltyPerAttempt,
+  Deadline,
+  Extensions,
   Count
 };
 

@@ -4,8 +4,10 @@
 // atomically with the previous version kept, 409 when the file changed, 422 when check fails
 // (unless saved with errors), CSRF and Origin.
 #include <gtest/gtest.h>
+#include <openssl/evp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -206,6 +208,33 @@ TEST_F(AuthorPage, ThePreviewShowsWhatStudentsReadTheKeyAndTheDerivation) {
   // A kind with a figure: draw's SVG.
   const Json s = preview("cube", kCube);
   EXPECT_NE(s["problems"][0]["figure_svg"].get<std::string>().find("<svg"), std::string::npos);
+}
+
+// The render kind's figure is the image `frustum render` writes of the same scene, byte for byte.
+TEST_F(AuthorPage, ARenderProblemShowsTheImageTheRenderCommandDraws) {
+  const fs::path seed = fs::path(FRUSTUM_SOURCE_DIR) / "problems/seeds/paperplane.yaml";
+  const std::string plane = test::read_file(seed);
+  test::write_file(dir_ / "plane.yaml", plane);
+  const Json j = preview("plane", plane);
+  ASSERT_EQ(j["problems"].size(), 1u) << j.dump().substr(0, 400);
+  const Json& p = j["problems"][0];
+  EXPECT_EQ(p["kind"], "render");
+  const std::string url = p.value("figure_png", "");
+  const std::string prefix = "data:image/png;base64,";
+  ASSERT_EQ(url.rfind(prefix, 0), 0u) << p.value("figure_error", "") << url.substr(0, 80);
+  const std::string b64 = url.substr(prefix.size());
+  std::string png(b64.size() / 4 * 3, '\0');
+  const int n = EVP_DecodeBlock(reinterpret_cast<unsigned char*>(png.data()),
+                                reinterpret_cast<const unsigned char*>(b64.data()),
+                                static_cast<int>(b64.size()));
+  ASSERT_GT(n, 0);
+  png.resize(static_cast<std::size_t>(n) - std::count(b64.end() - 2, b64.end(), '='));
+  const fs::path drawn = dir_ / "drawn.png";
+  const ProgramRun run =
+      run_program({FRUSTUM_BINARY, "render", seed.string(), "-o", drawn.string(), "--id", p["id"]});
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(png, test::read_file(drawn));
+  EXPECT_EQ(png.substr(1, 3), "PNG");
 }
 
 TEST_F(AuthorPage, AStudentsVariantIsTheOneTheyAreServed) {

@@ -140,6 +140,12 @@ TEST_F(InstructorPages, AnInstructorsLinkOpensTheInstructorsPagesOnly) {
   const std::string prof = sign_in(kProf);
   EXPECT_EQ(get("/instructor/", prof).status, 200);
   EXPECT_NE(get("/instructor/", prof).body.find("/instructor/set/week1"), std::string::npos);
+  EXPECT_NE(get("/instructor/", prof).body.find("href=\"/instructor/author/week1\""),
+            std::string::npos);  // each set's authoring page
+  // The set's policy as students meet it (week1 states none: everything once graded).
+  const std::string page = get("/instructor/set/week1", prof).body;
+  EXPECT_NE(page.find("<dt>right answers</dt><dd>once graded</dd>"), std::string::npos) << page;
+  EXPECT_NE(page.find("<dt>Attempts</dt><dd>unlimited</dd>"), std::string::npos);
   EXPECT_EQ(get("/", prof).status, 303);  // to /instructor/
   EXPECT_EQ(get("/", prof).header("Location"), "/instructor/");
   EXPECT_EQ(get("/set/week1", prof).status, 403);  // no variant, no submitting

@@ -127,6 +127,9 @@ function problemPreview(p) {
     section.append(element('figure', {}, element('img', {
       alt: say('figure'), src: 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(p.figure_svg)})));
   }
+  if (p.figure_png) {  // the render kind's image, as `frustum render` draws it
+    section.append(element('figure', {}, element('img', {alt: say('figure'), src: p.figure_png})));
+  }
   typesetAll(section);
   return section;
 }

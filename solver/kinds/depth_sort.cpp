@@ -3,9 +3,12 @@
 // concave polygons, decided exactly from the geometry over each pair's overlap on screen.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/kind_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/depth_order.hpp"
 #include "solver/visibility/drawable.hpp"
@@ -46,6 +49,42 @@ struct DepthSort {
              .kind = AnswerKind::WordList,
              .depends_on = {"order"},
              .unordered_pairs = true}};
+  }
+
+  // Error carried forward: the depths of the student's own centroids (their distance from the
+  // eye, or their component along the view direction), and the order of the student's own
+  // depths (farthest first, equal depths in the listed order, compared exactly).
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    const std::size_t n = g.polygons.size();
+    if (const auto c = carried(student, "centroids", 3 * n)) {
+      std::vector<Exact> depths;
+      const Exact length =
+          g.viewer.eye ? Exact(1)
+                       : canonical(GiNaC::sqrt(canonical(g.viewer.view_direction->squaredNorm())));
+      for (std::size_t k = 0; k < n; ++k) {
+        const Vec3<Exact> centroid((*c)[3 * k], (*c)[3 * k + 1], (*c)[3 * k + 2]);
+        depths.push_back(g.viewer.eye ? canonical(GiNaC::sqrt(
+                                            canonical((centroid - *g.viewer.eye).squaredNorm())))
+                                      : canonical(centroid.dot(*g.viewer.view_direction) / length));
+      }
+      out.set("depths", Value::vector(depths));
+    }
+    if (const auto d = carried(student, "depths", n)) {
+      std::vector<std::size_t> order(n);
+      for (std::size_t k = 0; k < n; ++k) order[k] = k;
+      try {
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+          return exact_sign(canonical((*d)[a] - (*d)[b])) > 0;
+        });
+        std::vector<std::string> words;
+        for (const std::size_t k : order) words.push_back(std::to_string(k));
+        out.set("order", Value::word_list(words));
+      } catch (const std::exception&) {
+        // A sign of the student's depths that exact arithmetic cannot decide: nothing carried.
+      }
+    }
+    return out;
   }
 
   static Given parse(GivenReader& r, const Conventions&) {

@@ -104,6 +104,52 @@ struct EdgeVisibility {
     return g.left_handed ? reversed_faces(shown) : shown;
   }
 
+  // Error carried forward: the edge classes of the student's own front and back faces (A), B),
+  // C) on the solid's edges), and the silhouette and hidden edges of the student's own classes.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    if (const Value* f = student.find("faces"); f && !f->entries.empty()) try {
+        const Mesh mesh = right_handed_winding(g, transformed(g, nullptr));
+        const MeshCheck check = check_mesh(mesh);
+        std::vector<FaceTest> tests(mesh.faces.size());
+        std::vector<bool> given(mesh.faces.size(), false);
+        bool readable = check.closed && check.oriented;
+        for (const auto& [face, side] : f->entries) {
+          const std::size_t k = face.find_first_not_of("0123456789") == std::string::npos &&
+                                        !face.empty() && face.size() < 7
+                                    ? std::stoul(face)
+                                    : mesh.faces.size();
+          if (k >= mesh.faces.size()) {
+            readable = false;
+            break;
+          }
+          given[k] = true;
+          tests[k].facing = side == "front"     ? Facing::Front
+                            : side == "edge_on" ? Facing::EdgeOn
+                                                : Facing::Back;
+        }
+        if (readable && std::all_of(given.begin(), given.end(), [](bool b) { return b; })) {
+          const std::vector<EdgeClass> classes = classify_edges(check.edges, tests);
+          std::vector<std::pair<std::string, std::string>> edges;
+          for (std::size_t k = 0; k < classes.size(); ++k)
+            edges.emplace_back(check.edges[k].name(), edge_class_word(classes[k]));
+          out.set("edges", Value::word_map(edges));
+        }
+      } catch (const std::exception&) {
+        // A solid the kind cannot classify: solving it says why; nothing to carry.
+      }
+    if (const Value* e = student.find("edges"); e && !e->entries.empty()) {
+      std::vector<std::string> silhouette, hidden;
+      for (const auto& [edge, kind] : e->entries) {
+        if (kind == "silhouette") silhouette.push_back(edge);
+        if (kind == "hidden") hidden.push_back(edge);
+      }
+      out.set("silhouette", Value::word_list(silhouette));
+      out.set("hidden", Value::word_list(hidden));
+    }
+    return out;
+  }
+
   static std::string face_text(const std::vector<int>& face) {
     std::string s;
     for (int v : face) s += (s.empty() ? "" : " ") + std::to_string(v);

@@ -6,6 +6,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/kind_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -32,6 +33,18 @@ struct ProjectionPlane {
              .kind = AnswerKind::Vector,
              .depends_on = {"plane_z"},
              .symbols = {"P′"}}};
+  }
+
+  // Error carried forward: the point projected onto the student's own plane z = s (similar
+  // triangles, P′ = P · s / z_P), when the point can be projected at all.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    const auto s = carried(student, "plane_z", 1);
+    if (!s || exact_sign(g.point(2)) == 0) return out;
+    const Exact k = canonical((*s)[0] / g.point(2));
+    out.set("projected", Value::vector(Vec3<Exact>(canonical(g.point(0) * k),
+                                                   canonical(g.point(1) * k), (*s)[0])));
+    return out;
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

@@ -94,11 +94,13 @@ struct Transform {
     Api api = Api::OpenGL;  // DirectX prints every matrix in row-vector form (the transpose)
   };
   static std::vector<std::string> given_fields() { return {"dim", "steps", "points"}; }
-  // Error carried forward: the points moved by the student's own matrix.
+  // Error carried forward: the points moved by the student's own matrix, and its inverse.
   static Answers carry_forward(const Given& g, const Answers& student) {
     Answers out;
-    if (auto p = carried_points(student, g.points, static_cast<std::size_t>(g.dim + 1), g.api))
-      out.set("points", std::move(*p));
+    const auto n = static_cast<std::size_t>(g.dim + 1);
+    if (auto p = carried_points(student, g.points, n, g.api)) out.set("points", std::move(*p));
+    if (auto inverse = carried_inverse(student, "matrix", n))
+      out.set("inverse", std::move(*inverse));
     return out;
   }
   static std::vector<AnswerSpec> answers() {

@@ -5,6 +5,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
+#include "solver/steps/kind_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -28,6 +29,31 @@ struct ViewVolume {
     return {{"scale_matrix", AnswerKind::Transform, {}, {}},
             {"perspective_matrix", AnswerKind::Transform, {}, {}},
             {"point", AnswerKind::Vector, {"scale_matrix", "perspective_matrix"}, {}}};
+  }
+
+  // Error carried forward: the point through the student's own matrices (P·S·p, then the divide
+  // by W′), when both are written and the point does not go to infinity under them.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    const auto s = carried(student, "scale_matrix", 16);
+    const auto p = carried(student, "perspective_matrix", 16);
+    if (!s || !p) return out;
+    const auto column_form = [&](const std::vector<Exact>& m) {
+      MatX<Exact> written(4, 4);
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) written(i, j) = m[static_cast<std::size_t>(i * 4 + j)];
+      return paper_form(written, g.api);
+    };
+    try {
+      const std::vector<Exact> h =
+          transform_point(MatX<Exact>(column_form(*p) * column_form(*s)),
+                          std::vector<Exact>{g.point(0), g.point(1), g.point(2)});
+      out.set("point",
+              Value::vector(std::vector<Exact>{canonical(h[0]), canonical(h[1]), canonical(h[2])}));
+    } catch (const std::exception&) {
+      // W′ = 0 under the student's matrices: the point has no image to carry.
+    }
+    return out;
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

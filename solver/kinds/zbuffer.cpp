@@ -4,7 +4,8 @@
 // than Z(i, j) (seed 001: "ポリゴンのZ値が Z(i,j) より小さいならば"). Convex polygons are split
 // into a fan of triangles from their first vertex; coverage follows the top-left rule with
 // pixel centres at (i + ½, j + ½), y up. Grids are reported top row (j = h − 1) first, as
-// drawn on paper; +∞ is written 1e30 in numbers and "inf" in the derivation.
+// drawn on paper; +∞ is written 1e30 in numbers and "inf" in the derivation, and a student may
+// write it inf, ∞ or infinity (or 1e30).
 #include "solver/raster/zbuffer.hpp"
 
 #include <fmt/format.h>
@@ -58,7 +59,7 @@ struct ZBuffer {
 
   static std::vector<AnswerSpec> answers() {
     return {{"frame", AnswerKind::Sequence, {}, {}},
-            {"depth", AnswerKind::Matrix, {}, {}},
+            {.name = "depth", .kind = AnswerKind::Matrix, .infinity = kInfinity},
             {"steps", AnswerKind::Sequence, {}, {}}};
   }
 

@@ -92,6 +92,9 @@ struct AnswerSpec {
   // as well as its name ("D_f = 27", "s = -415.7"); compared without case, spaces, `_`, braces
   // and with Unicode subscripts, primes and ⁻¹ read as their ASCII spellings.
   std::vector<std::string> symbols = {};
+  // Matrix: the number that stands for +∞ in the key (the z-buffer's empty depth, 1e30), so that
+  // a student may write +∞ as inf, ∞ or infinity; 0: +∞ is read as no number.
+  double infinity = 0;
 };
 
 // A common mistake, as the answers it produces: the grader names it when a student's wrong

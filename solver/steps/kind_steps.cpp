@@ -60,6 +60,42 @@ std::optional<std::vector<Exact>> carried(const Answers& student, const std::str
   return v->exact;
 }
 
+std::optional<Value> carried_inverse(const Answers& student, const std::string& name,
+                                     std::size_t n) {
+  const auto m = carried(student, name, n * n);
+  if (!m) return std::nullopt;
+  const auto at = [&](std::size_t i, std::size_t j) { return (*m)[i * n + j]; };
+  const bool rational = std::all_of(m->begin(), m->end(), [](const Exact& e) {
+    return GiNaC::is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_rational();
+  });
+  std::vector<std::vector<Exact>> rows(n, std::vector<Exact>(n));
+  if (rational) {
+    GiNaC::matrix g(static_cast<unsigned>(n), static_cast<unsigned>(n));
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        g(static_cast<unsigned>(i), static_cast<unsigned>(j)) = at(i, j);
+    if (g.determinant().is_zero()) return std::nullopt;
+    const GiNaC::matrix inverse = g.inverse();
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        rows[i][j] = canonical(inverse(static_cast<unsigned>(i), static_cast<unsigned>(j)));
+  } else {
+    Eigen::MatrixXd d(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        d(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = to_double(at(i, j));
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(d);
+    if (!d.allFinite() || !lu.isInvertible()) return std::nullopt;
+    const Eigen::MatrixXd inverse = lu.inverse();
+    if (!inverse.allFinite()) return std::nullopt;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        rows[i][j] =
+            exact_from_double(inverse(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+  }
+  return Value::matrix(rows);
+}
+
 void warn_condition(Derivation* steps, double kappa, const std::string& title,
                     const std::string& what) {
   if (!steps || !(kappa > kIllConditioned)) return;

@@ -78,6 +78,14 @@ std::optional<Value> carried_points(const Answers& student,
 std::optional<std::vector<Exact>> carried(const Answers& student, const std::string& name,
                                           std::size_t size);
 
+// Error carried forward of an inverse: the inverse of the student's own n × n `name` as written
+// (in either API's form the inverse of the written matrix is the written inverse); nothing when
+// there is none or it is singular. Exact when every entry is rational; otherwise by LU in double
+// precision, within the grader's tolerance of the exact inverse (the student's radicals are not
+// inverted exactly: their size is the student's to choose).
+std::optional<Value> carried_inverse(const Answers& student, const std::string& name,
+                                     std::size_t n);
+
 // A warning that an answer is ill-conditioned (κ above kIllConditioned in condition.hpp):
 // the condition estimate and the digits float, double and long double would keep.
 void warn_condition(Derivation* steps, double kappa, const std::string& title,
