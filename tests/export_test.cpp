@@ -14,6 +14,8 @@
 #include "grader/grade.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/variants.hpp"
+#include "solver/util/base64.hpp"
+#include "solver/visibility/pictures.hpp"
 #include "test_util.hpp"
 
 namespace frustum {
@@ -209,6 +211,18 @@ TEST(Export, MoodleClozeWeightsAddUpToTheProblemsPoints) {
   EXPECT_GT(scaled, 3);  // a vector's point split over its numbers
 }
 
+// The PrairieLearn questions of a set `t` written in YAML (each variant the set itself), in `lang`.
+std::map<std::string, std::map<std::string, std::string>> prairielearn_questions(const char* yaml,
+                                                                                 Lang lang) {
+  const YamlDocument doc = parse_yaml(yaml, "t.yaml");
+  const ProblemSet set = load_problem_set(doc, "t.yaml");
+  EXPECT_TRUE(set.all_errors().empty());
+  PrairieLearnOptions options;
+  options.image = "course/frustum-grader:1";
+  options.lang = lang;
+  return export_prairielearn(doc.root, set, {set}, "t", options);
+}
+
 // PrairieLearn's element rules (pl-checkbox.py: "At least one option must be true", min-correct
 // at least 1; pl-number-input and pl-matrix-input refuse `none` and sqrt(…)): a set whose
 // statements are all false, and a polygon clipped away, export questions that render and take
@@ -232,13 +246,7 @@ problems:
     kind: depth_at_pixel
     given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1]}
 )";
-  const YamlDocument doc = parse_yaml(kSet, "t.yaml");
-  const ProblemSet set = load_problem_set(doc, "t.yaml");
-  ASSERT_TRUE(set.all_errors().empty());
-  PrairieLearnOptions options;
-  options.image = "course/frustum-grader:1";
-  options.lang = Lang::Ru;
-  const auto pl = export_prairielearn(doc.root, set, {set}, "t", options);
+  const auto pl = prairielearn_questions(kSet, Lang::Ru);
   ASSERT_EQ(pl.size(), 3u);
   for (const auto& [dir, files] : pl) {
     const std::string& html = files.at("question.html");
@@ -273,6 +281,44 @@ problems:
   EXPECT_NE(pixel.find("\\\"z\\\":\\\"8\\\""), std::string::npos) << pixel;
   EXPECT_NE(pixel.find("±0.008"), std::string::npos) << pixel;
   EXPECT_NE(pixel.find("Можно писать точные значения"), std::string::npos) << pixel;
+}
+
+// A kind's figure shows its answers: in a PrairieLearn question it is the variant's own SVG in the
+// answer panel (with the key), never in the question panel or a file of the question.
+TEST(Export, PrairieLearnShowsTheFigureWithTheKeyOnly) {
+  const char* kSet = R"(title: t
+lang: ja
+problems:
+  - id: sort
+    kind: depth_sort
+    given:
+      polygons:
+        - [[-2, -1, -6], [2, -1, -6], [2, 1, -6], [-2, 1, -6]]
+        - [[-1, -2, -8], [1, -2, -8], [1, 2, -4], [-1, 2, -4]]
+      eye: [0, 0, 0]
+  - id: pixel
+    kind: depth_at_pixel
+    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1]}
+)";
+  const auto pl = prairielearn_questions(kSet, Lang::Ja);
+  const ProblemSet set = load_problem_set(parse_yaml(kSet, "t.yaml"), "t.yaml");
+  const auto& sort = pl.at("t-sort");
+  const std::string& html = sort.at("question.html");
+  const std::size_t answer_panel = html.find("<pl-answer-panel>");
+  ASSERT_NE(answer_panel, std::string::npos);
+  EXPECT_GT(html.find("{{{correct_answers.frustum_figure}}}"), answer_panel) << html;
+  EXPECT_EQ(sort.size(), 3u);  // info.json, question.html, server.py: no figure file
+  // The figure is the variant's SVG, drawn as `frustum draw` draws it, with a Japanese alt text.
+  const std::string& server = sort.at("server.py");
+  PictureOptions picture;
+  const std::string svg =
+      draw_picture(set.problems[0].info->drawable(set.problems[0].given), picture).svg;
+  EXPECT_NE(server.find(base64(svg)), std::string::npos);
+  EXPECT_NE(server.find("<img alt="), std::string::npos);
+  EXPECT_NE(server.find("図"), std::string::npos);
+  EXPECT_EQ(server.find("Figure"), std::string::npos);
+  // A kind without a figure has none.
+  EXPECT_EQ(pl.at("t-pixel").at("question.html").find("frustum_figure"), std::string::npos);
 }
 
 // Canvas matches SIS User ID and Moodle ID number exactly: an id the spreadsheet guard would

@@ -628,6 +628,7 @@ constexpr Phrase kPhrases[] = {
     {"1e30 stands for +∞, the depth of a pixel no polygon covers",
      "1e30 は +∞ (どの多角形にも覆われない画素の奥行き) を表す",
      "1e30 обозначает +∞ — глубину пикселя, не покрытого ни одним многоугольником"},
+    {"Figure", "図", "Рисунок"},
     {"+∞, the depth of a pixel no polygon covers, is written inf (or 1e30)",
      "+∞ (どの多角形にも覆われない画素の奥行き) は inf (または 1e30) と書く",
      "+∞ — глубину пикселя, не покрытого ни одним многоугольником, — пишут inf (или 1e30)"},
