@@ -30,7 +30,7 @@ check "cmake --install: bash completion" test -f "$work/prefix/share/bash-comple
 (cd "$build" && cpack -G DEB -B "$work/deb" >/dev/null)
 deb=$(ls "$work/deb"/frustum_"$version"_*.deb)
 check "the .deb depends on the shared libraries it links" grep -q "libginac" <(dpkg-deb -f "$deb" Depends)
-check "the .deb suggests TeX and KaTeX" grep -q "texlive-latex-base.*libjs-katex" <(dpkg-deb -f "$deb" Suggests)
+check "the .deb suggests TeX, KaTeX and CodeMirror" grep -q "texlive-latex-base.*libjs-katex.*libjs-codemirror" <(dpkg-deb -f "$deb" Suggests)
 check "the .deb has its copyright file" grep -q "./usr/share/doc/frustum/copyright$" <(dpkg-deb -c "$deb")
 dpkg -i "$deb" >/dev/null || apt-get install -f -y -qq >/dev/null
 check "dpkg -i installed frustum $version" test "$(dpkg-query -W -f='${Version}' frustum)" = "$version"
