@@ -1,6 +1,5 @@
 #include "server/author_preview.hpp"
 
-#include <openssl/evp.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,6 +17,7 @@
 #include "solver/problem/variants.hpp"
 #include "solver/raster/png_writer.hpp"
 #include "solver/raster/scene_frame.hpp"
+#include "solver/util/base64.hpp"
 #include "solver/visibility/pictures.hpp"
 
 namespace frustum::server {
@@ -42,12 +42,7 @@ std::string render_png_url(const RenderGiven& g) {
   }
   ::unlink(path);
   if (!written || png.empty()) throw std::runtime_error("the image could not be written");
-  std::string b64(4 * ((png.size() + 2) / 3) + 1, '\0');
-  const int n = EVP_EncodeBlock(reinterpret_cast<unsigned char*>(b64.data()),
-                                reinterpret_cast<const unsigned char*>(png.data()),
-                                static_cast<int>(png.size()));
-  b64.resize(static_cast<std::size_t>(n));
-  return "data:image/png;base64," + b64;
+  return "data:image/png;base64," + base64(png);
 }
 
 using Json = nlohmann::ordered_json;

@@ -45,10 +45,9 @@ std::string carried_html(const Json& a, Lang lang) {
 std::string answer_html(const Json& a, const FeedbackShown& shown, Lang lang) {
   const std::string verdict = text_of(a, "verdict");
   // Without the verdicts, not even the class (its colour) tells them.
-  std::string out =
-      fmt::format("<div class=\"answer verdict-{}\" data-answer=\"{}\">\n<h4><code>{}</code>",
-                  shown.verdicts ? html_escape(verdict) : "hidden", html_escape(text_of(a, "name")),
-                  html_escape(text_of(a, "name")));
+  std::string out = fmt::format(
+      "<div class=\"answer verdict-{0}\" data-answer=\"{1}\">\n<h4><code>{1}</code>",
+      shown.verdicts ? html_escape(verdict) : "hidden", html_escape(text_of(a, "name")));
   if (shown.verdicts)
     out += fmt::format(": <span class=\"verdict\">{}</span>",
                        html_escape(say(verdict_phrase(verdict), lang)));

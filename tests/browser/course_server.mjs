@@ -6,19 +6,19 @@ import os from 'node:os';
 import path from 'node:path';
 import {freePort, launch, waitForServer} from './flow.mjs';
 
-// check(ok, what) throws with `what` when !ok; checks() counts the ones that passed.
-export function checker() {
-  let passed = 0;
-  const check = (ok, what) => {
-    if (!ok) throw new Error('failed: ' + what);
-    ++passed;
-  };
-  return {check, checks: () => passed};
-}
+// The plane method on one triangle, the set the student's and the instructor's flows serve.
+export const kPlaneMethodSet = `title: "Depth by the plane method"
+problems:
+  - id: zbuf
+    kind: depth_at_pixel
+    text: "Find the plane of triangle ABC and the depth z at the pixel."
+    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
+    ask: [normal, plane, z]
+`;
 
 // sets: {name: yaml}; roster: students' ids; instructors: instructors' ids (instructors.csv).
-// Returns {course, base, link (id → url), page, problems (script errors and CSP violations),
-// close()}.
+// Returns {course, base, link (id → url), role (id → student or instructor, from the links
+// file), page, problems (script errors and CSP violations), close()}.
 export async function startCourse({frustum, work, out, sets, roster, instructors = [], viewport, serveArgs = []}) {
   fs.rmSync(work, {recursive: true, force: true});
   fs.mkdirSync(work, {recursive: true});
@@ -33,7 +33,14 @@ export async function startCourse({frustum, work, out, sets, roster, instructors
   const base = `http://127.0.0.1:${port}`;
   const links = path.join(work, 'links.csv');
   execFileSync(frustum, ['serve', course, '--issue-links', links, '--public-url', base]);
-  const link = Object.fromEntries(fs.readFileSync(links, 'utf8').trim().split('\n').slice(1).map((l) => l.split(',')));
+  const rows = fs.readFileSync(links, 'utf8').trim().split('\n');
+  if (rows[0] !== 'student,url,role') throw new Error('the links file has no role column: ' + rows[0]);
+  const link = {}, role = {};
+  for (const row of rows.slice(1)) {
+    const [id, url, r] = row.split(',');
+    link[id] = url;
+    role[id] = r;
+  }
   const server = spawn(frustum, ['serve', course, '--listen', `127.0.0.1:${port}`, ...serveArgs],
                        {stdio: ['ignore', 'inherit', 'inherit']});
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'frustum-serve-chromium-'));
@@ -54,7 +61,7 @@ export async function startCourse({frustum, work, out, sets, roster, instructors
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
   page.on('pageerror', (e) => problems.push(e.message));
-  return {course, base, link, page, context, problems, close};
+  return {course, base, link, role, page, context, problems, close};
 }
 
-export {run} from './flow.mjs';
+export {check, checks, run} from './flow.mjs';

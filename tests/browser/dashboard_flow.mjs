@@ -5,22 +5,12 @@
 // then fixes the key in the set file, runs a regrade's dry run and applies it. A student is
 // refused the instructor's pages. Screenshots go to OUT_DIR.
 //   node dashboard_flow.mjs FRUSTUM_BINARY WORK_DIR OUT_DIR [STUDENTS]
-import {spawn, execFileSync} from 'node:child_process';
 import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
-import {check, checks, cleanUp, freePort, launch, run, waitForServer} from './flow.mjs';
+import {check, checks, kPlaneMethodSet, run, startCourse} from './course_server.mjs';
 
 const [frustum, work, out, studentsArg] = process.argv.slice(2);
 const kStudents = Number(studentsArg ?? 200);
-const kSet = `title: "Depth by the plane method"
-problems:
-  - id: zbuf
-    kind: depth_at_pixel
-    text: "Find the plane of triangle ABC and the depth z at the pixel."
-    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
-    ask: [normal, plane, z]
-`;
 // What the class writes: every third student right, every third the named mistake (the plane's
 // constant on the wrong side), every third an unreadable z.
 const kAnswers = [
@@ -55,45 +45,17 @@ async function problemCounts(page) {
 }
 
 async function main() {
-  fs.rmSync(work, {recursive: true, force: true});
-  fs.mkdirSync(work, {recursive: true});
-  fs.mkdirSync(out, {recursive: true});
-  const course = path.join(work, 'course');
-  fs.mkdirSync(course);
-  fs.writeFileSync(path.join(course, 'week1.yaml'), kSet);
   const students = Array.from({length: kStudents}, (_, i) => `s${String(i + 1).padStart(3, '0')}`);
-  fs.writeFileSync(path.join(course, 'roster.csv'), 'student\n' + students.join('\n') + '\n');
-  fs.writeFileSync(path.join(course, 'instructors.csv'), 'instructor\nprof\n');
-  const port = await freePort();
-  const base = `http://127.0.0.1:${port}`;
-  const links = path.join(work, 'links.csv');
-  execFileSync(frustum, ['serve', course, '--issue-links', links, '--public-url', base]);
-  const rows = fs.readFileSync(links, 'utf8').trim().split('\n');
-  check(rows[0] === 'student,url,role', 'the links file has a role column: ' + rows[0]);
-  const link = {};
-  const role = {};
-  for (const row of rows.slice(1)) {
-    const [id, url, r] = row.split(',');
-    link[id] = url;
-    role[id] = r;
-  }
-  check(role.prof === 'instructor' && role.s001 === 'student', 'roles in the links file');
-  const server = spawn(frustum, ['serve', course, '--listen', `127.0.0.1:${port}`, '--workers', '2', '--submit-rate', '50'],
-                       {stdio: ['ignore', 'inherit', 'inherit']});
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'frustum-dashboard-chromium-'));
-  let context;
+  const {course, base, link, role, page, problems, close} = await startCourse({
+    frustum, work, out, sets: {week1: kPlaneMethodSet}, roster: students, instructors: ['prof'],
+    viewport: {width: 1200, height: 1400}, serveArgs: ['--workers', '2', '--submit-rate', '50']});
   try {
-    await waitForServer(base);
+    check(role.prof === 'instructor' && role.s001 === 'student', 'roles in the links file');
     // A student is refused the instructor's pages.
     const studentCookie = await signIn(link.s001);
     const refused = await fetch(base + '/instructor/set/week1', {headers: {cookie: studentCookie}});
     check(refused.status === 403, 'a student is refused /instructor/: ' + refused.status);
 
-    context = await launch(profile, {width: 1200, height: 1400});
-    const page = context.pages()[0] ?? await context.newPage();
-    const problems = [];
-    page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-    page.on('pageerror', (e) => problems.push(e.message));
     page.on('response', (r) => { if (r.status() >= 400) problems.push(r.status() + ' ' + r.url()); });
 
     await page.goto(link.prof);
@@ -137,7 +99,7 @@ async function main() {
     await page.screenshot({path: path.join(out, '3-student.png'), fullPage: true});
 
     // The key changes (the pixel moves: z is 7 now); the dry run lists who changes, then apply.
-    fs.writeFileSync(path.join(course, 'week1.yaml'), kSet.replace('pixel: [1, 1]', 'pixel: [1, 0]'));
+    fs.writeFileSync(path.join(course, 'week1.yaml'), kPlaneMethodSet.replace('pixel: [1, 1]', 'pixel: [1, 0]'));
     await page.goto(base + '/instructor/set/week1');
     await Promise.all([page.waitForNavigation(), page.click('#regrade button[type="submit"]')]);
     const changes = await page.locator('table.changes tbody tr').count();
@@ -157,7 +119,7 @@ async function main() {
     check(problems.filter((p) => !p.includes('404')).length === 0, 'no script errors or CSP violations: ' + problems.join('; '));
     console.log(`dashboard browser test: ${checks.count} checks passed`);
   } finally {
-    await cleanUp(context, server, profile);
+    await close();
   }
 }
 

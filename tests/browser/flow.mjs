@@ -49,10 +49,3 @@ export function run(main) {
     process.exit(1);
   });
 }
-
-// Closes the browser, stops the server and removes the browser's profile.
-export async function cleanUp(context, server, profile) {
-  if (context) await context.close();
-  server.kill('SIGTERM');
-  fs.rmSync(profile, {recursive: true, force: true});
-}

@@ -4,17 +4,10 @@
 // refused another student's submission. Screenshots go to OUT_DIR.
 //   node serve_flow.mjs FRUSTUM_BINARY WORK_DIR OUT_DIR
 import path from 'node:path';
-import {checker, run, startCourse} from './course_server.mjs';
+import {check, checks, kPlaneMethodSet, run, startCourse} from './course_server.mjs';
 
 const [frustum, work, out] = process.argv.slice(2);
-const kSet = `title: "Depth by the plane method"
-problems:
-  - id: zbuf
-    kind: depth_at_pixel
-    text: "Find the plane of triangle ABC and the depth z at the pixel."
-    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1], cross: [AC, AB]}
-    ask: [normal, plane, z]
-  - id: sort
+const kSet = kPlaneMethodSet + `  - id: sort
     kind: depth_sort
     text: "Two polygons that cross each other."
     given:
@@ -23,7 +16,6 @@ problems:
         - [[-1, -2, -8], [1, -2, -8], [1, 2, -4], [-1, 2, -4]]
       eye: [0, 0, 0]
 `;
-const {check, checks} = checker();
 
 // Bob submits through plain HTTP (his own session), so that Alice has his submission's URL.
 async function bobSubmits(link, base) {
@@ -116,7 +108,7 @@ async function main() {
     await page.goto(`${base}/set/week1/submission/${bobs}`);
     await page.screenshot({path: path.join(out, '5-refused.png'), fullPage: true});
     check(problems.filter((p) => !p.includes('404')).length === 0, 'no script errors or CSP violations: ' + problems.join('; '));
-    console.log(`serve browser test: ${checks()} checks passed`);
+    console.log(`serve browser test: ${checks.count} checks passed`);
   } finally {
     await close();
   }
