@@ -21,7 +21,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # with threads (RenderKind.ALargeScene…), every bundled variant's text and every shipped file read
 # twice (TextLiteralsTest.EveryBundledVariant…, YamlDocument.OnePass…/AByteOrderMark…), and every
 # subcommand's --help (Cli.EverySubcommandHasAnExample…). Together a third of the sanitized
-# suite's time (1,040 of 3,220 test-seconds here, 2026-12-05); the GCC suite runs all of them.
+# suite's time (1,040 of 3,220 test-seconds on the 2-vCPU AMD EPYC VM, 2026-12-05); the GCC suite runs all of them.
 repeats='^(Source|Typeset|FeedbackBrowser|ServeBrowser|AuthorBrowser)\.'
 repeats+='|^Language\.(NoEnglish[A-Za-z]*|StudentTextCitesNoLectureFile)$'
 repeats+='|^CertifiedFrame\.RandomOrdinaryScenesEqualTheExactRasterizer$'
