@@ -326,7 +326,8 @@ Rows read_rows(const YAML::Node& node, const std::string& item, WorkBudget& budg
     for (const std::string& r : split_rows(node.Scalar())) rows.emplace_back(r);
   }
   if (rows.empty()) {
-    out.error = "expected a list of " + item + "s, like [[0, 4], [8, 8]] or \"(0, 4), (8, 8)\"";
+    out.error = std::string("expected a list of ") + (item == "row" ? "rows" : "vertices") +
+                ", like [[0, 4], [8, 8]] or \"(0, 4), (8, 8)\"";
     return out;
   }
   for (std::size_t r = 0; r < rows.size(); ++r) {

@@ -66,16 +66,18 @@ awaitable<Response> handle(Shared& shared, Request request) {
   } in_flight{shared.in_flight};
   if (++shared.in_flight > shared.options.limits.max_in_flight)
     co_return plain(429, "busy: try again in a second");
-  auto home = co_await asio::this_coro::executor;
-  co_await asio::post(shared.handlers, use_awaitable);
-  Response response;
-  try {
-    response = shared.handler(request);
-  } catch (const std::exception&) {
-    response = plain(500, "internal error");
-  }
-  co_await asio::post(home, use_awaitable);
-  co_return response;
+  // A coroutine on the pool's executor: `co_await post(pool, use_awaitable)` would resume this
+  // one on its own (the connection's I/O thread), and the handler would block that thread.
+  co_return co_await asio::co_spawn(
+      shared.handlers.get_executor(),
+      [&]() -> awaitable<Response> {
+        try {
+          co_return shared.handler(request);
+        } catch (const std::exception&) {
+          co_return plain(500, "internal error");
+        }
+      },
+      use_awaitable);
 }
 
 // The status for a request the parser refused.

@@ -23,7 +23,7 @@ struct HttpLimits {
   std::size_t max_connections = 10000;  // further connections are closed at once
   std::size_t max_in_flight = 256;      // requests being handled; beyond, 429 with Retry-After
   int io_threads = 2;
-  int handler_threads = 64;  // mostly waiting for a commit, which they share
+  int handler_threads = 16;  // mostly waiting for a commit, which they share
 };
 
 struct HttpServerOptions {

@@ -36,6 +36,16 @@ std::int64_t Store::wait_for_change(std::int64_t mark, Millis timeout) {
   }
 }
 
+std::optional<SubmissionRecord> Store::claim(const std::string& worker, Millis now, Millis lease) {
+  std::vector<SubmissionRecord> one = claim_some(worker, now, lease, 1);
+  if (one.empty()) return std::nullopt;
+  return std::move(one.front());
+}
+
+bool Store::record_grade(const GradeRecord& g, const std::string& worker) {
+  return record_grades({g}, worker).front();
+}
+
 int latest_schema_version() { return sqlite_latest_version(); }
 
 }  // namespace frustum::server

@@ -1,8 +1,8 @@
 #include "server/postgres_store.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <condition_variable>
-#include <cstdio>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <utility>
@@ -50,21 +50,36 @@ const std::pair<const char*, std::string> kStatements[] = {
      "INSERT INTO submissions (student, set_id, set_version, variant, problem, answers, "
      "received, attempt) SELECT $1, $2, $3, $4, $5, $6, $7, last FROM next "
      "RETURNING id, attempt"},
-    // The oldest pending submission nobody holds (or whose holder's lease ran out); rows that
-    // another instance is claiming this instant are skipped, not waited for.
+    // A pending submission whose holder's lease ran out, alone; else up to $4 that nobody
+    // holds, oldest first. Rows another instance is claiming this instant are skipped, not
+    // waited for.
+    {"reclaim",
+     std::string("UPDATE submissions SET claimed_by = $1, claimed_at = $2, claims = claims + 1 "
+                 "WHERE id = (SELECT id FROM submissions WHERE state = 0 AND claimed_by IS NOT "
+                 "NULL AND claimed_at <= $3 ORDER BY id LIMIT 1 FOR UPDATE SKIP LOCKED) "
+                 "RETURNING ") +
+         kSubmissionColumns},
     {"claim",
      std::string("UPDATE submissions SET claimed_by = $1, claimed_at = $2, claims = claims + 1 "
-                 "WHERE id = ("
-                 "SELECT id FROM submissions WHERE state = 0 AND "
-                 "(claimed_by IS NULL OR claimed_at <= $3) ORDER BY id LIMIT 1 "
-                 "FOR UPDATE SKIP LOCKED) RETURNING ") +
+                 "WHERE id IN (SELECT id FROM submissions WHERE state = 0 AND claimed_by IS NULL "
+                 "ORDER BY id LIMIT $3 FOR UPDATE SKIP LOCKED) RETURNING ") +
          kSubmissionColumns},
-    // The grade is written only if the submission is still pending and this worker's claim,
+    {"release",
+     "UPDATE submissions SET claimed_by = NULL, claims = greatest(claims - 1, 0) "
+     "WHERE id = ANY($1::bigint[]) AND claimed_by = $2 AND state = 0"},
+    // Each grade is written only if its submission is still pending and this worker's claim,
     // in the same statement that marks it graded: a submission is graded exactly once.
-    {"record_grade",
-     "WITH mine AS (UPDATE submissions SET state = $9 WHERE id = $1 AND claimed_by = $10 AND "
-     "state = 0 RETURNING id) INSERT INTO grades (submission, result, score, max_score, "
-     "set_version, graded_by, graded, failed) SELECT id, $2, $3, $4, $5, $6, $7, $8 FROM mine"},
+    {"record_grades",
+     "WITH g AS (SELECT (e->>'submission')::bigint AS submission, e->>'result' AS result, "
+     "(e->>'score')::double precision AS score, (e->>'max_score')::double precision AS max_score, "
+     "e->>'set_version' AS set_version, e->>'graded_by' AS graded_by, "
+     "(e->>'graded')::bigint AS graded, (e->>'failed')::boolean AS failed "
+     "FROM jsonb_array_elements($1::jsonb) e), "
+     "mine AS (UPDATE submissions s SET state = CASE WHEN g.failed THEN 2 ELSE 1 END "
+     "FROM g WHERE s.id = g.submission AND s.claimed_by = $2 AND s.state = 0 RETURNING s.id) "
+     "INSERT INTO grades (submission, result, score, max_score, set_version, graded_by, graded, "
+     "failed) SELECT submission, result, score, max_score, set_version, graded_by, graded, failed "
+     "FROM g WHERE submission IN (SELECT id FROM mine) RETURNING submission"},
     {"submissions", std::string("SELECT ") + kSubmissionColumns +
                         " FROM submissions WHERE student = $1 AND set_id = $2 ORDER BY id"},
     {"submission", std::string("SELECT ") + kSubmissionColumns +
@@ -102,6 +117,21 @@ const std::pair<const char*, std::string> kStatements[] = {
      "(SELECT coalesce(max(id), 0) FROM grades)"},
 };
 
+// Grades as the JSON array the batch statements read with jsonb_array_elements.
+std::string grades_json(const std::vector<GradeRecord>& grades) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const GradeRecord& g : grades)
+    all.push_back({{"submission", g.submission},
+                   {"result", g.result},
+                   {"score", g.score},
+                   {"max_score", g.max_score},
+                   {"set_version", g.set_version},
+                   {"graded_by", g.graded_by},
+                   {"graded", g.graded},
+                   {"failed", g.failed}});
+  return all.dump();
+}
+
 std::int64_t integer(const std::string& text) {
   std::int64_t value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -116,13 +146,6 @@ double real(const std::string& text) {
   if (text.empty() || *end != '\0')
     throw StoreError("PostgreSQL returned '" + text + "' where a number belongs");
   return value;
-}
-
-// Every double exactly (17 significant digits read back to the same value).
-std::string text_of(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
 }
 
 SubmissionRecord submission_row(const std::vector<std::string>& row) {
@@ -286,21 +309,37 @@ class PostgresStore final : public Store {
     return out;
   }
 
-  std::optional<SubmissionRecord> claim(const std::string& worker, Millis now,
-                                        Millis lease) override {
-    PgRows r = pool_.run("claim", {worker, std::to_string(now), std::to_string(now - lease)});
-    if (r.rows.empty()) return std::nullopt;
-    return submission_row(r.rows[0]);
+  std::vector<SubmissionRecord> claim_some(const std::string& worker, Millis now, Millis lease,
+                                           std::size_t max) override {
+    std::vector<SubmissionRecord> out;
+    if (max == 0) return out;
+    PgRows r = pool_.run("reclaim", {worker, std::to_string(now), std::to_string(now - lease)});
+    if (r.rows.empty()) r = pool_.run("claim", {worker, std::to_string(now), std::to_string(max)});
+    for (const auto& row : r.rows) out.push_back(submission_row(row));
+    std::sort(out.begin(), out.end(),
+              [](const SubmissionRecord& a, const SubmissionRecord& b) { return a.id < b.id; });
+    return out;
   }
 
-  bool record_grade(const GradeRecord& g, const std::string& worker) override {
-    const int state =
-        static_cast<int>(g.failed ? SubmissionState::Failed : SubmissionState::Graded);
-    const PgRows r = pool_.run(
-        "record_grade", {std::to_string(g.submission), g.result, text_of(g.score),
-                         text_of(g.max_score), g.set_version, g.graded_by, std::to_string(g.graded),
-                         g.failed ? "true" : "false", std::to_string(state), worker});
-    return r.changed == 1;
+  void release(const std::vector<std::int64_t>& submissions, const std::string& worker) override {
+    if (submissions.empty()) return;
+    std::string ids = "{";
+    for (const std::int64_t id : submissions)
+      ids += (ids.size() > 1 ? "," : "") + std::to_string(id);
+    pool_.run("release", {ids + "}", worker});
+  }
+
+  std::vector<bool> record_grades(const std::vector<GradeRecord>& grades,
+                                  const std::string& worker) override {
+    std::vector<bool> recorded(grades.size(), false);
+    if (grades.empty()) return recorded;
+    const PgRows r = pool_.run("record_grades", {grades_json(grades), worker});
+    for (const auto& row : r.rows) {
+      const std::int64_t id = integer(row.at(0));
+      for (std::size_t i = 0; i < grades.size(); ++i)
+        if (grades[i].submission == id) recorded[i] = true;
+    }
+    return recorded;
   }
 
   std::vector<SubmissionRecord> submissions(const std::string& student,
@@ -349,18 +388,8 @@ class PostgresStore final : public Store {
   }
 
   void record_regrades(const std::vector<GradeRecord>& grades) override {
-    nlohmann::json all = nlohmann::json::array();
-    for (const GradeRecord& g : grades)
-      all.push_back({{"submission", g.submission},
-                     {"result", g.result},
-                     {"score", g.score},
-                     {"max_score", g.max_score},
-                     {"set_version", g.set_version},
-                     {"graded_by", g.graded_by},
-                     {"graded", g.graded},
-                     {"failed", g.failed}});
     try {
-      pool_.run("record_regrades", {all.dump()});
+      pool_.run("record_regrades", {grades_json(grades)});
     } catch (const PostgresError& e) {
       if (e.sqlstate != "22012") throw;
       throw StoreError("regrade: one of its submissions is not in the database; nothing written");

@@ -1,5 +1,6 @@
 #include "server/sqlite_store.hpp"
 
+#include <algorithm>
 #include <mutex>
 #include <vector>
 
@@ -197,37 +198,62 @@ class SqliteStore final : public Store {
     return r;
   }
 
-  std::optional<SubmissionRecord> claim(const std::string& worker, Millis now,
-                                        Millis lease) override {
-    std::optional<SubmissionRecord> out;
+  std::vector<SubmissionRecord> claim_some(const std::string& worker, Millis now, Millis lease,
+                                           std::size_t max) override {
+    std::vector<SubmissionRecord> out;
+    if (max == 0) return out;
     writer_.run([&](SqliteDb& db) {
-      SqliteStmt s(
-          db,
-          (std::string("UPDATE submissions SET claimed_by = ?, claimed_at = ?, claims = claims + 1 "
-                       "WHERE id = (SELECT id FROM submissions WHERE state = 0 AND "
-                       "(claimed_by IS NULL OR claimed_at <= ?) ORDER BY id LIMIT 1) "
-                       "RETURNING ") +
-           kSubmissionColumns)
-              .c_str());
-      s.bind(1, worker).bind(2, now).bind(3, now - lease);
-      if (s.step()) out = submission_row(s);
-      s.run();
+      out.clear();  // a retried write starts again
+      const auto claim_where = [&](const std::string& which, std::size_t limit) {
+        SqliteStmt s(db, (std::string("UPDATE submissions SET claimed_by = ?, claimed_at = ?, "
+                                      "claims = claims + 1 WHERE id IN (SELECT id FROM "
+                                      "submissions WHERE state = 0 AND ") +
+                          which + " ORDER BY id LIMIT ?) RETURNING " + kSubmissionColumns)
+                             .c_str());
+        s.bind(1, worker).bind(2, now);
+        if (which.find('?') != std::string::npos)
+          s.bind(3, now - lease).bind(4, static_cast<std::int64_t>(limit));
+        else
+          s.bind(3, static_cast<std::int64_t>(limit));
+        while (s.step()) out.push_back(submission_row(s));
+      };
+      claim_where("claimed_by IS NOT NULL AND claimed_at <= ?", 1);
+      if (out.empty()) claim_where("claimed_by IS NULL", max);
     });
+    std::sort(out.begin(), out.end(),
+              [](const SubmissionRecord& a, const SubmissionRecord& b) { return a.id < b.id; });
     return out;
   }
 
-  bool record_grade(const GradeRecord& g, const std::string& worker) override {
-    bool recorded = false;
+  void release(const std::vector<std::int64_t>& submissions, const std::string& worker) override {
+    if (submissions.empty()) return;
     writer_.run([&](SqliteDb& db) {
-      SqliteStmt(db,
-                 "UPDATE submissions SET state = ? WHERE id = ? AND claimed_by = ? AND state = 0")
-          .bind(1, static_cast<int>(g.failed ? SubmissionState::Failed : SubmissionState::Graded))
-          .bind(2, g.submission)
-          .bind(3, worker)
-          .run();
-      if (db.changes() != 1) return;
-      insert_grade(db, g);
-      recorded = true;
+      for (const std::int64_t id : submissions)
+        SqliteStmt(db,
+                   "UPDATE submissions SET claimed_by = NULL, claims = max(claims - 1, 0) "
+                   "WHERE id = ? AND claimed_by = ? AND state = 0")
+            .bind(1, id)
+            .bind(2, worker)
+            .run();
+    });
+  }
+
+  std::vector<bool> record_grades(const std::vector<GradeRecord>& grades,
+                                  const std::string& worker) override {
+    std::vector<bool> recorded(grades.size(), false);
+    if (grades.empty()) return recorded;
+    writer_.run([&](SqliteDb& db) {
+      for (std::size_t i = 0; i < grades.size(); ++i) {
+        const GradeRecord& g = grades[i];
+        SqliteStmt(db,
+                   "UPDATE submissions SET state = ? WHERE id = ? AND claimed_by = ? AND state = 0")
+            .bind(1, static_cast<int>(g.failed ? SubmissionState::Failed : SubmissionState::Graded))
+            .bind(2, g.submission)
+            .bind(3, worker)
+            .run();
+        recorded[i] = db.changes() == 1;
+        if (recorded[i]) insert_grade(db, g);
+      }
     });
     return recorded;
   }

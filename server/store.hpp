@@ -88,12 +88,21 @@ class Store {
 
   // Durable (committed) when it returns; attempt numbered per (student, set, problem).
   virtual SubmissionRecord submit(const NewSubmission&) = 0;
-  // One pending submission for `worker`, oldest first; a claim older than `lease` is taken again.
-  virtual std::optional<SubmissionRecord> claim(const std::string& worker, Millis now,
-                                                Millis lease) = 0;
-  // The grade of a claimed submission; false (nothing written) if it is no longer this worker's
-  // claim or already graded — so a submission is graded exactly once.
-  virtual bool record_grade(const GradeRecord&, const std::string& worker) = 0;
+  // Pending submissions for `worker`, oldest first: one whose earlier claim's lease ran out,
+  // alone (it may be the one that killed its grader: it must not take others down with it),
+  // or else up to `max` that nobody has claimed. Each claim counts in `claims`.
+  virtual std::vector<SubmissionRecord> claim_some(const std::string& worker, Millis now,
+                                                   Millis lease, std::size_t max) = 0;
+  std::optional<SubmissionRecord> claim(const std::string& worker, Millis now, Millis lease);
+  // Claims given back unworked (a worker out of time for its batch): pending and unclaimed
+  // again, this claim not counted. Only this worker's own pending claims are touched.
+  virtual void release(const std::vector<std::int64_t>& submissions, const std::string& worker) = 0;
+  // The grades of claimed submissions, in one transaction; each written only if its submission
+  // is still this worker's claim and not graded — so a submission is graded exactly once.
+  // Returns, per grade, whether it was written.
+  virtual std::vector<bool> record_grades(const std::vector<GradeRecord>&,
+                                          const std::string& worker) = 0;
+  bool record_grade(const GradeRecord& g, const std::string& worker);
 
   // A student's own submissions to a set, oldest first; one by id only if it is theirs.
   virtual std::vector<SubmissionRecord> submissions(const std::string& student,

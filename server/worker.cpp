@@ -46,25 +46,41 @@ int run_worker(Course course, Store& store, const std::string& name, const Worke
   ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // the server gone (even by kill -9): stop too
   const pid_t parent = ::getppid();
   SolvedCache cache;
+  const Millis lease = claim_lease(options);
   while (!stop.load() && ::getppid() == parent) {
     // A read first: an idle worker takes no write lock.
-    const std::optional<SubmissionRecord> s =
-        store.pending_count() > 0 ? store.claim(name, now_ms(), claim_lease(options))
-                                  : std::nullopt;
-    if (!s) {
+    const std::vector<SubmissionRecord> claimed =
+        store.pending_count() > 0
+            ? store.claim_some(name, now_ms(), lease, static_cast<std::size_t>(options.batch))
+            : std::vector<SubmissionRecord>{};
+    if (claimed.empty()) {
       std::this_thread::sleep_for(std::chrono::milliseconds(options.idle_ms));
       continue;
     }
-    if (s->claims > options.max_claims) {
-      store.record_grade(gave_up(*s, name), name);
-      continue;
+    // Graded in turn, their grades written together: two write transactions a batch, not two a
+    // submission (the database has one writer, which the server's submissions need too).
+    const Millis started = now_ms();
+    std::vector<GradeRecord> grades;
+    std::size_t next = 0;
+    for (; next < claimed.size(); ++next) {
+      const SubmissionRecord& s = claimed[next];
+      if (s.claims > options.max_claims) {
+        grades.push_back(gave_up(s, name));
+        continue;
+      }
+      // Half the lease gone: the rest go back, unworked, before another worker would take them.
+      if (next > 0 && now_ms() - started > lease / 2) break;
+      // The grader's own limits bound its work; this bounds its time: SIGALRM ends the process,
+      // the pool starts another, and the claims run out and count against their submissions
+      // (each then claimed alone, so one that kills its graders fails alone).
+      ::alarm(static_cast<unsigned>(options.seconds));
+      grades.push_back(grade_submission(*live.at(now_ms()), cache, s, name, now_ms()));
+      ::alarm(0);
     }
-    // The grader's own limits bound its work; this bounds its time: SIGALRM ends the process,
-    // the pool starts another, and the claim runs out and counts against the submission.
-    ::alarm(static_cast<unsigned>(options.seconds));
-    const GradeRecord g = grade_submission(*live.at(now_ms()), cache, *s, name, now_ms());
-    ::alarm(0);
-    store.record_grade(g, name);
+    std::vector<std::int64_t> unworked;
+    for (std::size_t i = next; i < claimed.size(); ++i) unworked.push_back(claimed[i].id);
+    store.release(unworked, name);
+    store.record_grades(grades, name);
   }
   return 0;
 }

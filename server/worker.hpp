@@ -1,7 +1,7 @@
 // Grading workers. `frustum serve` starts them as processes of its own binary (posix_spawn of
 // /proc/self/exe with `serve COURSE --db URL --worker NAME`: never fork from the threaded
 // server), restarts one that dies, and stops them with itself. Each claims pending submissions
-// from the store one at a time, so a submission left pending by a restart is graded then.
+// from the store a few at a time, so a submission left pending by a restart is graded then.
 #pragma once
 
 #include <sys/types.h>
@@ -21,6 +21,7 @@ struct WorkerOptions {
   int seconds = 10;    // one submission's grading; the worker is killed beyond it
   int max_claims = 3;  // a submission claimed this often (its graders died) is failed
   int idle_ms = 10;    // pause when nothing is pending
+  int batch = 16;      // submissions claimed at once (a lease run out: one, alone)
 };
 
 // How long a claim holds: past it, another worker takes the submission again.

@@ -2,6 +2,8 @@
 // student reading them in another language, only formulas and names. The corpus is every
 // student-facing text of every bundled set, of generated variants of every kind in every API
 // convention, and of the grader's feedback (student_text.hpp).
+#include <yaml-cpp/yaml.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -9,10 +11,12 @@
 #include <map>
 #include <set>
 
+#include "grader/answer_parser.hpp"
 #include "report/feedback.hpp"
 #include "report/report.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
+#include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "student_text.hpp"
 
@@ -32,7 +36,8 @@ const std::set<std::string>& names() {
       "FrontCounterClockwise", "XMMatrixTranslation", "OrthoOffCenterLH", "PerspectiveOffCenterLH",
       "translate",
       // Names of functions and quantities inside formulas.
-      "acos", "arccos", "rad", "outcode", "ndc", "clip", "dist", "depth", "fov", "nf"};
+      "acos", "arccos", "exp", "log", "rad", "outcode", "ndc", "clip", "dist", "depth", "fov",
+      "nf"};
   return n;
 }
 
@@ -74,19 +79,9 @@ std::vector<std::string> english_words(const std::string& text) {
   return out;
 }
 
-TEST(Language, EnglishWordsAreFoundAndNamesAreNot) {
-  EXPECT_EQ(english_words("法線 (n = e₀ × e₁)"), std::vector<std::string>{});
-  EXPECT_EQ(english_words("perspective(fovy, aspect, near, far) の視体積"),
-            std::vector<std::string>{});
-  EXPECT_EQ(english_words("so the eye sees the 裏"),
-            (std::vector<std::string>{"so", "the", "sees", "the"}));
-  EXPECT_EQ(english_words("`camera.eye` из условия, p_eye, x₀"), std::vector<std::string>{});
-}
-
-TEST(Language, NoEnglishWordReachesAJapaneseOrRussianStudent) {
-  std::map<std::string, std::string> texts;  // text → where first seen
-  for (const test::StudentText& t : test::student_texts()) texts.emplace(t.text, t.where);
-  EXPECT_GT(texts.size(), 300u);
+// How many of `texts` (text → where it was seen) keep an English word in Japanese or Russian;
+// the first 40 are reported, and all are written to $FRUSTUM_UNTRANSLATED when it is set.
+int untranslated(const std::map<std::string, std::string>& texts) {
   std::ofstream dump;
   if (const char* path = std::getenv("FRUSTUM_UNTRANSLATED")) dump.open(path);
   int failures = 0;
@@ -100,7 +95,104 @@ TEST(Language, NoEnglishWordReachesAJapaneseOrRussianStudent) {
         ADD_FAILURE() << to_string(lang) << " " << where << ": \"" << words[0] << "\" in\n    "
                       << shown << "\n    (from: " << text << ")";
     }
-  EXPECT_EQ(failures, 0);
+  return failures;
+}
+
+TEST(Language, EnglishWordsAreFoundAndNamesAreNot) {
+  EXPECT_EQ(english_words("法線 (n = e₀ × e₁)"), std::vector<std::string>{});
+  EXPECT_EQ(english_words("perspective(fovy, aspect, near, far) の視体積"),
+            std::vector<std::string>{});
+  EXPECT_EQ(english_words("so the eye sees the 裏"),
+            (std::vector<std::string>{"so", "the", "sees", "the"}));
+  EXPECT_EQ(english_words("`camera.eye` из условия, p_eye, x₀"), std::vector<std::string>{});
+}
+
+TEST(Language, NoEnglishWordReachesAJapaneseOrRussianStudent) {
+  std::map<std::string, std::string> texts;  // text → where first seen
+  for (const test::StudentText& t : test::student_texts()) texts.emplace(t.text, t.where);
+  EXPECT_GT(texts.size(), 300u);
+  EXPECT_EQ(untranslated(texts), 0);
+}
+
+// Why an answer could not be read, in the student's language: every answer of every kind, given
+// texts that fail in every way the readers know (syntax, names, limits, undefined values, lists,
+// planes, words, bit strings), gives a reason with no English word in Japanese and Russian.
+TEST(Language, ReadingErrorsAreInTheStudentsLanguage) {
+  const std::vector<std::string> scalars = {"",
+                                            "1 +",
+                                            "(1",
+                                            "1)",
+                                            "()",
+                                            "2 3",
+                                            "x y",
+                                            "1/0",
+                                            "0^0",
+                                            "0^-1",
+                                            "(-1)^(1/2)",
+                                            "(-1)^sqrt(2)",
+                                            "2^x",
+                                            "sin(1e9)",
+                                            "exp(1000)",
+                                            "log(0)",
+                                            "log(-1)",
+                                            "asin(2)",
+                                            "acos(3)",
+                                            "1e99999",
+                                            "1,5",
+                                            "[1",
+                                            "{1}",
+                                            "30°",
+                                            "sin 3",
+                                            "inf",
+                                            "nan",
+                                            "foo",
+                                            "xy",
+                                            "e",
+                                            "= 3",
+                                            "1 = 2 = 3",
+                                            "9^9^9^9",
+                                            std::string(300, '(') + "1" + std::string(300, ')'),
+                                            "2^(2^40)",
+                                            "10^400000",
+                                            "(2^1000)^1000",
+                                            "tan(pi/2)",
+                                            "\xff",
+                                            "\xc3\x28",
+                                            "\xef\xbf\xbd",
+                                            "2\xe2\x81\xbb",
+                                            "x^(1/100000)",
+                                            "sqrt",
+                                            "1 * * 2",
+                                            "∞",
+                                            "\x01",
+                                            "x = 1",
+                                            "(1+x)^200*(1+y)^200*(1+z)^200",
+                                            "1 2 3 4",
+                                            "yes",
+                                            "0102",
+                                            "true false",
+                                            "visible visible",
+                                            "-"};
+  const std::vector<std::string> structured = {
+      "[1, 2, foo]", "[[1, 2], [1]]",      "[]",
+      "{a: 1}",      "[[1, 2], [3, foo]]", "[1, [2]]",
+      "{0: [1]}",    "{0-1: 3}",           "[[1, 2, 3, 4], [1, 2]]",
+      "[a, [b]]",    "{visible: [1]}",     "[true]",
+      "[1, 2, 3]",   "[[x, 1]]",           "x + y + z",
+      "x*y = 1",     "x^2 + y = 1",        "[0, 0, 0, 1/0]"};
+  std::vector<YAML::Node> inputs;
+  for (const std::string& text : scalars) inputs.emplace_back(text);
+  for (const std::string& text : structured) inputs.push_back(YAML::Load(text));
+  std::map<std::string, std::string> errors;  // error → the input and answer that gave it
+  for (const KindInfo& kind : builtin_kinds().all())
+    for (const AnswerSpec& answer : kind.answers)
+      for (const YAML::Node& input : inputs) {
+        const ParsedAnswer p = parse_answer(input, answer, AngleUnit::Degrees);
+        if (!p.ok && !p.error.empty())
+          errors.emplace(p.error, kind.name + "." + answer.name + " ← " + YAML::Dump(input));
+      }
+  EXPECT_GT(errors.size(), 60u);
+  EXPECT_EQ(untranslated(errors), 0);
 }
 
 bool cites_lecture_file(std::string text) {

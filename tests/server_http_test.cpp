@@ -8,7 +8,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <future>
+#include <mutex>
 #include <thread>
 
 #include "server/http_server.hpp"
@@ -19,27 +21,25 @@ namespace {
 class HttpServer : public ::testing::Test {
  protected:
   void SetUp() override {
+    HttpServerOptions o;
+    o.limits.header_bytes = 4096;
+    o.limits.body_bytes = 1024;
+    o.limits.idle_seconds = 1;
+    start(o, [](const Request& r) {
+      return Response{200,
+                      {{"Content-Type", "text/plain"}},
+                      r.method + " " + r.target + " " + std::to_string(r.body.size())};
+    });
+  }
+  void start(HttpServerOptions o, Handler handler) {
     rlimit r{};
     getrlimit(RLIMIT_NOFILE, &r);
     r.rlim_cur = r.rlim_max;
     setrlimit(RLIMIT_NOFILE, &r);
-    HttpServerOptions o;
     o.port = 0;
-    o.limits.header_bytes = 4096;
-    o.limits.body_bytes = 1024;
-    o.limits.idle_seconds = 1;
     std::promise<unsigned short> listening;
     o.on_listening = [&](unsigned short p) { listening.set_value(p); };
-    thread_ = std::thread([this, o] {
-      run_http_server(
-          o,
-          [](const Request& r) {
-            return Response{200,
-                            {{"Content-Type", "text/plain"}},
-                            r.method + " " + r.target + " " + std::to_string(r.body.size())};
-          },
-          &stop_);
-    });
+    thread_ = std::thread([this, o, handler] { run_http_server(o, handler, &stop_); });
     port_ = listening.get_future().get();
   }
   void TearDown() override {
@@ -122,6 +122,47 @@ TEST_F(HttpServer, IdleConnectionsDoNotSlowANewRequest) {
   EXPECT_LT(ms, 500);  // generous: a shared machine; bench/serve_load.sh measures it
   close(fd);
   for (const int i : idle) close(i);
+}
+
+// Handlers run on the handler pool, never on the I/O threads: with one I/O thread, a request
+// whose handler waits (as a submission waits for its commit) must not stop the next one from
+// being read and handled — here the next one is what it waits for.
+class HttpServerOneIoThread : public HttpServer {
+ protected:
+  void SetUp() override {
+    HttpServerOptions o;
+    o.limits.io_threads = 1;
+    o.limits.handler_threads = 4;
+    start(o, [this](const Request& r) {
+      std::unique_lock lock(mutex_);
+      if (r.target == "/release") {
+        released_ = true;
+        changed_.notify_all();
+        return Response{200, {{"Content-Type", "text/plain"}}, "ok"};
+      }
+      const bool got = changed_.wait_for(lock, std::chrono::seconds(20), [&] { return released_; });
+      return Response{200, {{"Content-Type", "text/plain"}}, got ? "released" : "timed out"};
+    });
+  }
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool released_ = false;
+};
+
+TEST_F(HttpServerOneIoThread, AWaitingHandlerDoesNotHoldTheIoThread) {
+  const int waiting = connect_socket();
+  std::future<std::string> first = std::async(std::launch::async, [&] {
+    return exchange(waiting, "GET /wait HTTP/1.1\r\nHost: x\r\n\r\n");
+  });
+  // The first request is being handled (waiting) before the second is sent.
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  const int other = connect_socket();
+  const std::string second = exchange(other, "GET /release HTTP/1.1\r\nHost: x\r\n\r\n");
+  EXPECT_NE(second.find("\r\n\r\nok"), std::string::npos) << second;
+  const std::string answer = first.get();
+  EXPECT_NE(answer.find("released"), std::string::npos) << answer;
+  close(waiting);
+  close(other);
 }
 
 }  // namespace

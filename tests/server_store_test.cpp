@@ -460,9 +460,17 @@ TEST_P(StoreConformance, ConcurrentWorkersGradeEachSubmissionOnce) {
       const std::unique_ptr<Store> mine = open_store(url_);
       const std::string name = "w" + std::to_string(w);
       start.arrive_and_wait();
-      while (const auto c = mine->claim(name, 1000, 60000)) {
-        held[static_cast<std::size_t>(w)].push_back(c->id);
-        if (mine->record_grade(GradeRecord{c->id, "{}", 1, 1, "v1", name, 1001}, name)) ++recorded;
+      // Worker w claims w + 1 at a time (the first one by one) and writes their grades together.
+      for (;;) {
+        const std::vector<SubmissionRecord> batch =
+            mine->claim_some(name, 1000, 60000, static_cast<std::size_t>(w + 1));
+        if (batch.empty()) break;
+        std::vector<GradeRecord> grades;
+        for (const SubmissionRecord& c : batch) {
+          held[static_cast<std::size_t>(w)].push_back(c.id);
+          grades.push_back(GradeRecord{c.id, "{}", 1, 1, "v1", name, 1001});
+        }
+        for (const bool written : mine->record_grades(grades, name)) recorded += written ? 1 : 0;
       }
     });
   for (auto& t : workers) t.join();
@@ -479,6 +487,72 @@ TEST_P(StoreConformance, ConcurrentWorkersGradeEachSubmissionOnce) {
   EXPECT_EQ(claimed.size(), std::size_t{kSubmissions});
   EXPECT_EQ(scratch_->number("SELECT count(*) FROM grades"), kSubmissions);
   EXPECT_EQ(scratch_->number("SELECT count(DISTINCT submission) FROM grades"), kSubmissions);
+}
+
+std::vector<std::int64_t> ids_of(const std::vector<SubmissionRecord>& records) {
+  std::vector<std::int64_t> out;
+  for (const SubmissionRecord& r : records) out.push_back(r.id);
+  return out;
+}
+
+TEST_P(StoreConformance, WorkersClaimBatchesOldestFirstAndWriteTheirGradesTogether) {
+  std::vector<std::int64_t> ids;
+  for (int i = 0; i < 5; ++i)
+    ids.push_back(store_->submit(sub("s" + std::to_string(i), "p1", i)).id);
+  const std::vector<SubmissionRecord> mine = store_->claim_some("w1", 100, 1000, 3);
+  EXPECT_EQ(ids_of(mine), (std::vector<std::int64_t>{ids[0], ids[1], ids[2]}));
+  for (const SubmissionRecord& r : mine) EXPECT_EQ(r.claims, 1);
+  EXPECT_EQ(ids_of(store_->claim_some("w2", 100, 1000, 10)),
+            (std::vector<std::int64_t>{ids[3], ids[4]}));
+  EXPECT_TRUE(store_->claim_some("w3", 100, 1000, 10).empty());  // all held
+  // w1 writes its three and one of w2's: only its own are written, in one go.
+  const std::vector<bool> written = store_->record_grades(
+      {grade_of(ids[0], "w1", 1), grade_of(ids[3], "w1", 1), grade_of(ids[2], "w1", 2)}, "w1");
+  EXPECT_EQ(written, (std::vector<bool>{true, false, true}));
+  EXPECT_EQ(store_->pending_count(), 3);
+  EXPECT_EQ(store_->record_grades({grade_of(ids[0], "w1", 1)}, "w1"), std::vector<bool>{false});
+  EXPECT_EQ(scratch_->number("SELECT count(*) FROM grades"), 2);
+  EXPECT_TRUE(store_->record_grades({}, "w1").empty());
+  EXPECT_TRUE(store_->claim_some("w1", 100, 1000, 0).empty());
+}
+
+TEST_P(StoreConformance, AClaimWhoseLeaseRanOutIsTakenAgainAloneBeforeNewOnes) {
+  std::vector<std::int64_t> ids;
+  for (int i = 0; i < 4; ++i)
+    ids.push_back(store_->submit(sub("s" + std::to_string(i), "p1", i)).id);
+  ASSERT_EQ(store_->claim_some("dead", 100, 1000, 3).size(), 3U);  // its worker dies
+  // Before the lease runs out only the unclaimed one is there.
+  EXPECT_EQ(ids_of(store_->claim_some("w2", 1099, 1000, 10)), std::vector<std::int64_t>{ids[3]});
+  // After it, each of the dead worker's claims comes alone (one of them may kill workers).
+  for (int k = 0; k < 3; ++k) {
+    const std::vector<SubmissionRecord> again = store_->claim_some("w2", 1100, 1000, 10);
+    ASSERT_EQ(again.size(), 1U);
+    EXPECT_EQ(again[0].id, ids[static_cast<std::size_t>(k)]);
+    EXPECT_EQ(again[0].claims, 2);
+  }
+  EXPECT_TRUE(store_->claim_some("w2", 1100, 1000, 10).empty());
+  EXPECT_EQ(store_->record_grades({grade_of(ids[0], "dead", 1)}, "dead"), std::vector<bool>{false});
+}
+
+TEST_P(StoreConformance, ReleasedClaimsArePendingAgainAndNotCounted) {
+  std::vector<std::int64_t> ids;
+  for (int i = 0; i < 3; ++i)
+    ids.push_back(store_->submit(sub("s" + std::to_string(i), "p1", i)).id);
+  ASSERT_EQ(store_->claim_some("w1", 100, 1000, 3).size(), 3U);
+  store_->release({ids[1], ids[2]}, "w2");  // not w2's: nothing happens
+  EXPECT_TRUE(store_->claim_some("w2", 100, 1000, 3).empty());
+  store_->release({ids[1], ids[2]}, "w1");
+  const std::vector<SubmissionRecord> taken = store_->claim_some("w2", 100, 1000, 3);
+  EXPECT_EQ(ids_of(taken), (std::vector<std::int64_t>{ids[1], ids[2]}));
+  for (const SubmissionRecord& r : taken) EXPECT_EQ(r.claims, 1);  // the released one not counted
+  EXPECT_EQ(store_->record_grades({grade_of(ids[1], "w1", 1)}, "w1"), std::vector<bool>{false});
+  EXPECT_EQ(store_->record_grades({grade_of(ids[1], "w2", 1), grade_of(ids[0], "w1", 1)}, "w2"),
+            (std::vector<bool>{true, false}));
+  store_->release({ids[0]}, "w1");
+  EXPECT_TRUE(store_->record_grade(grade_of(ids[2], "w2", 1), "w2"));
+  store_->release({ids[2]}, "w2");  // graded: stays graded
+  EXPECT_EQ(store_->submission("s2", ids[2])->state, SubmissionState::Graded);
+  EXPECT_EQ(store_->pending_count(), 1);
 }
 
 TEST_P(StoreConformance, TextIsKeptByteForByte) {

@@ -70,7 +70,8 @@ const Catalogue& catalogue() {
 
 std::string_view in(const Phrase& p, Lang lang) { return lang == Lang::Ja ? p.ja : p.ru; }
 
-// Matches text against literals[i…] with captures (each non-empty, shortest first).
+// Matches text against literals[i…] with captures (each non-empty but a quoted one, shortest
+// first).
 bool match(const Pattern& p, std::size_t i, std::string_view text,
            std::vector<std::string_view>& caps) {
   const std::string_view lit = p.literals[i];
@@ -83,7 +84,9 @@ bool match(const Pattern& p, std::size_t i, std::string_view text,
     caps.push_back(text);
     return true;
   }
-  for (std::size_t end = text.find(next, 1); end != std::string_view::npos;
+  // A quoted value may be empty ('' is how an empty answer is quoted); other slots may not.
+  const bool quoted = !lit.empty() && lit.back() == '\'' && !next.empty() && next.front() == '\'';
+  for (std::size_t end = text.find(next, quoted ? 0 : 1); end != std::string_view::npos;
        end = text.find(next, end + 1)) {
     caps.push_back(text.substr(0, end));
     if (match(p, i + 1, text.substr(end), caps)) return true;
