@@ -38,9 +38,9 @@ const ProblemSpec& problem(const ProblemSet& set, const std::string& id) {
 }
 
 // Every set in problems/hard (tests/accuracy_test.cpp checks the list against the folder).
-constexpr const char* kHardSets[] = {"normals",    "planes",       "backface", "eye_plane",
-                                     "magnitudes", "exact_signs",  "coverage", "decisions",
-                                     "render",     "render_frames"};
+constexpr const char* kHardSets[] = {"normals",    "planes",        "backface",    "eye_plane",
+                                     "magnitudes", "exact_signs",   "coverage",    "decisions",
+                                     "render",     "render_frames", "conditioning"};
 
 ProblemSet hard(const std::string& name) {
   return load_problem_set(source_path("problems/hard/" + name));
@@ -314,6 +314,37 @@ TEST(SolvePrecision, DerivationNamesTheBackendAndKeepsOtherKindsExact) {
   ASSERT_FALSE(z.error);
   EXPECT_FLOAT_EQ(static_cast<float>(z.answers.find("z")->numbers[0]), 8.0f);
   EXPECT_TRUE(z.answers.find("z")->exact.empty());
+}
+
+// A long double answer shows the digits long double holds, not a double's 17 (1/√3 to 19 or more
+// significant digits, each right); a numeric matrix is written in decimals, never as the binary
+// fractions its doubles are.
+TEST(SolvePrecision, LongDoubleShowsItsDigitsAndMatricesAreDecimals) {
+  const ProblemSet set =
+      load_problem_set(source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const ProblemResult p =
+      solve_problem(problem(set, "seed001-pixel-z"), set.file, false, Precision::LongDouble);
+  ASSERT_FALSE(p.error);
+  const Value* n = p.answers.find("unit_normal");
+  ASSERT_NE(n, nullptr);
+  const std::string shown = n->shown().unicode;
+  // 1/√3 = 0.57735026918962576450914878…; long double keeps 19–20 of its digits.
+  EXPECT_NE(shown.find("0.577350269189625764"), std::string::npos) << shown;
+  EXPECT_DOUBLE_EQ(n->numbers[0], 1 / std::sqrt(3.0));  // what is graded stays a double
+  for (const Precision precision : {Precision::Double, Precision::LongDouble}) {
+    const SetResult r = solve_set(
+        load_problem_set(source_path("problems/seeds/002_transforms_and_view_volume.yaml")), false,
+        std::nullopt, precision);
+    int matrices = 0;
+    for (const ProblemResult& q : r.problems)
+      for (const auto& [name, value] : q.answers.items()) {
+        if (value.shape != Value::Shape::Matrix || !value.exact.empty()) continue;
+        ++matrices;
+        EXPECT_EQ(value.shown().unicode.find('/'), std::string::npos)
+            << q.id << "." << name << ": " << value.shown().unicode;
+      }
+    EXPECT_GT(matrices, 2);
+  }
 }
 
 // Range warnings say what happened: an infinity is an overflow, a NaN (0/0 after a

@@ -107,6 +107,10 @@ MathText number(double v) {
   return math(unicode_minus(format_double(v)), latex_decimal(format_double(v)));
 }
 
+MathText long_number(long double v) {
+  return math(unicode_minus(format_long_double(v)), latex_decimal(format_long_double(v)));
+}
+
 MathText vec(const std::vector<Exact>& v, bool with_approx) {
   MathText m = math("(", "\\left(");
   bool any_approx = false;
@@ -129,13 +133,23 @@ MathText vec(const std::vector<Exact>& v, bool with_approx) {
 }
 
 MathText matrix(const std::vector<std::vector<Exact>>& rows) {
+  std::vector<MathText> entries;
+  for (const auto& row : rows)
+    for (const Exact& e : row) entries.push_back(exact(e));
+  return matrix_of(entries, rows.empty() ? 0 : rows[0].size());
+}
+
+MathText tuple_of(const std::vector<MathText>& entries) {
+  MathText m = math("(");
+  for (std::size_t i = 0; i < entries.size(); ++i) m += (i ? math(", ") : math("")) + entries[i];
+  return m + math(")");
+}
+
+MathText matrix_of(const std::vector<MathText>& entries, std::size_t cols) {
   MathText m = math("[", "\\begin{bmatrix}");
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    if (r) m += math("; ", " \\\\ ");
-    for (std::size_t c = 0; c < rows[r].size(); ++c) {
-      if (c) m += math(", ", " & ");
-      m += exact(rows[r][c]);
-    }
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    if (k > 0) m += cols > 0 && k % cols == 0 ? math("; ", " \\\\ ") : math(", ", " & ");
+    m += entries[k];
   }
   m += math("]", "\\end{bmatrix}");
   return m;

@@ -41,6 +41,8 @@ MathText counts(const std::vector<std::pair<long, std::string>>& items);
 // the value is not an integer.
 MathText exact(const Exact& e, bool with_approx = false);
 MathText number(double v);
+// A long double with all the digits it holds (not rounded to a double's).
+MathText long_number(long double v);
 
 // (a, b, c) of exact values.
 MathText vec(const std::vector<Exact>& v, bool with_approx = false);
@@ -50,6 +52,10 @@ MathText vec(const Eigen::Matrix<Exact, N, 1>& v, bool with_approx = false) {
 }
 // A matrix as on paper (rows), bracketed.
 MathText matrix(const std::vector<std::vector<Exact>>& rows);
+// (a, b, c) of entries already written (decimals of a numeric backend).
+MathText tuple_of(const std::vector<MathText>& entries);
+// A matrix of entries already written, `cols` to a row.
+MathText matrix_of(const std::vector<MathText>& entries, std::size_t cols);
 
 // Σ coefᵢ·nameᵢ = rhs written as on paper: unit coefficients dropped, signs as " − ", zero
 // terms left out; an empty name is a constant term ("1 + 1 − z = −6").

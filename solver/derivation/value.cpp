@@ -110,19 +110,17 @@ MathText Value::shown() const {
       return exact.empty() ? number(numbers[0]) : frustum::exact(exact[0], true);
     case Shape::Vector: {
       if (!exact.empty()) return vec(exact, true);
-      MathText m = math("(");
-      for (std::size_t i = 0; i < numbers.size(); ++i)
-        m += (i ? math(", ") : math("")) + number(numbers[i]);
-      return m + math(")");
+      std::vector<MathText> entries;
+      for (const double d : numbers) entries.push_back(number(d));
+      return tuple_of(entries);
     }
     case Shape::Matrix: {
-      std::vector<std::vector<Exact>> r(rows);
-      for (int i = 0; i < rows; ++i)
-        for (int j = 0; j < cols; ++j) {
-          const std::size_t k = static_cast<std::size_t>(i * cols + j);
-          r[i].push_back(exact.empty() ? exact_from_double(numbers[k]) : exact[k]);
-        }
-      return frustum::matrix(r);
+      // A numeric backend's matrix in decimals (its doubles as binary fractions would be exact
+      // and unreadable: 3900231685776981/9007199254740992).
+      std::vector<MathText> entries;
+      for (std::size_t k = 0; k < numbers.size(); ++k)
+        entries.push_back(exact.empty() ? number(numbers[k]) : frustum::exact(exact[k]));
+      return matrix_of(entries, static_cast<std::size_t>(cols));
     }
     case Shape::Bool:
       return frustum::word(flag ? "true" : "false");

@@ -2,6 +2,7 @@
 // a × b = (−2, 1, 4), S = √21, sin θ = √21/5, n = (−2, 1, 4)/√21.
 #include "solver/geometry/zero_vector.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/numeric/condition.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/accuracy_draws.hpp"
@@ -98,6 +99,15 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
       else
         out.vector("unit_normal", o.unit.unit);
       out.note("angle = atan2(‖a × b‖, a·b)");
+      // Nearly parallel vectors cancel in a × b, nearly perpendicular ones in a · b. An exact 0
+      // is decided exactly (parallel) or exact in every backend's products of the inputs.
+      const Eigen::Vector3d da = to_double(in.exact_a), db = to_double(in.exact_b);
+      if (!o.unit.zero)
+        warn_condition(out, p, cross_condition(da, db), "Ill-conditioned cross product",
+                       "a × b (and with it the area, sin θ and the angle)");
+      if (!canonical(Exact(in.exact_a.dot(in.exact_b))).is_zero())
+        warn_condition(out, p, dot_condition(da, db), "Ill-conditioned dot product",
+                       "a · b (and with it cos θ)");
       return out.take();
     };
     In in{{}, {}, unit == AngleUnit::Degrees, {}, a, b};

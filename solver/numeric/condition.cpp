@@ -87,6 +87,20 @@ double normal_condition(const std::vector<Eigen::Vector3d>& points) {
   return ratio(2 * scale * sum_d + terms.maxCoeff(), len);
 }
 
+// Each input component is off by u relative (2u in a product of two), each product is rounded
+// (u) and each sum or difference too: 3u times the products' absolute values, over u·|result|.
+double cross_condition(const Eigen::Vector3d& a_in, const Eigen::Vector3d& b_in) {
+  const Eigen::Vector3d a = scaled(a_in, largest_exponent({a_in})),
+                        b = scaled(b_in, largest_exponent({b_in}));
+  return ratio(3 * abs_cross(a, b).maxCoeff(), a.cross(b).cwiseAbs().maxCoeff());
+}
+
+double dot_condition(const Eigen::Vector3d& a_in, const Eigen::Vector3d& b_in) {
+  const Eigen::Vector3d a = scaled(a_in, largest_exponent({a_in})),
+                        b = scaled(b_in, largest_exponent({b_in}));
+  return ratio(4 * a.cwiseAbs().dot(b.cwiseAbs()), std::abs(a.dot(b)));
+}
+
 double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& eye) {
   return facing_condition(points, eye, Precision::Exact);
 }

@@ -48,6 +48,14 @@ double facing_condition(const std::vector<Eigen::Vector3d>& points, const Eigen:
 std::string digits_sentence(double kappa, double kappa_float, double kappa_double,
                             double kappa_long_double);
 
+// a × b and a · b of two vectors each rounded to a backend: the products' absolute values over
+// the result, in the max norm in which an answer's error is measured — a × b's condition is
+// also the area's, sin θ's and the angle's (θ = atan2(‖a × b‖, a·b) near 0 and π), a · b's is
+// cos θ's. Each vector is scaled by a power of two first (κ does not change). Infinite when the
+// result is 0.
+double cross_condition(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+double dot_condition(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
 // The plane method's z at pixel (x, y) of triangle ABC: c = n_z is a 2×2 determinant of the
 // projected edges (its condition κ_c is how close the triangle is to edge-on), and the
 // correction (a·Δx + b·Δy)/c added to z_A inherits it.

@@ -13,6 +13,31 @@ std::string backend_note(Precision p) {
               : "; values only, no derivation steps (--precision exact gives them).");
 }
 
+// Long double's answers shown with every digit it holds: the answers are doubles (what the
+// grader compares), so their default display would cut long double to a double's 17 digits.
+void show_all_digits(Answers& answers, const NumericResult& n) {
+  Answers shown;
+  for (auto [name, value] : answers.items()) {
+    const std::vector<long double>* raw = n.find_raw(name);
+    const bool numeric = value.shape == Value::Shape::Scalar ||
+                         value.shape == Value::Shape::Vector || value.shape == Value::Shape::Matrix;
+    if (raw && numeric && value.display.empty() && value.exact.empty() &&
+        raw->size() == value.numbers.size()) {
+      std::vector<MathText> digits;
+      for (const long double v : *raw) digits.push_back(long_number(v));
+      if (value.shape == Value::Shape::Matrix) {
+        value.display = matrix_of(digits, static_cast<std::size_t>(value.cols));
+      } else if (value.shape == Value::Shape::Scalar) {
+        value.display = digits[0];
+      } else {
+        value.display = tuple_of(digits);
+      }
+    }
+    shown.set(name, std::move(value));
+  }
+  answers = std::move(shown);
+}
+
 }  // namespace
 
 ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bool with_steps,
@@ -40,6 +65,7 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
       return solver->result();
     }();
     r.answers = n.answers;
+    if (precision == Precision::LongDouble) show_all_digits(r.answers, n);
     if (with_steps) {
       if (const std::string c = describe(spec.conventions, spec.info->uses); !c.empty())
         r.derivation.note("Conventions", c);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -433,6 +434,16 @@ std::string format_double(double v) {
   if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
   if (v == 0) return "0";  // also -0.0
   return fmt::format("{}", v);
+}
+
+std::string format_long_double(long double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
+  if (v == 0) return "0";
+  char buffer[64];
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  if (error != std::errc()) return format_double(static_cast<double>(v));
+  return std::string(buffer, end);
 }
 
 std::string format_approx(double v, int significant) {

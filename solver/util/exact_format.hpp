@@ -18,6 +18,9 @@ std::string format_exact(const Exact& e, MathStyle style);
 
 // Shortest decimal text that round-trips to the same double ("0.5773502691896258", "8", "-6").
 std::string format_double(double v);
+// The same for a long double: the shortest decimal that reads back to it (up to 21 significant
+// digits on x86's 64-bit mantissa), so its extra digits reach the reader.
+std::string format_long_double(long double v);
 
 // A short decimal for showing beside an exact value: 4 significant digits ("≈ 0.5774").
 std::string format_approx(double v, int significant = 4);
