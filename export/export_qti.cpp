@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "export/xml_text.hpp"
 
@@ -53,17 +54,17 @@ std::string stem(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
          "</mattext></material>\n";
 }
 
-std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
-                 const std::string& ident, Lang lang) {
-  const double points = a.points / static_cast<double>(a.fields.size());
-  const std::string title = q.id + " " + a.name + (f.label.empty() ? "" : " " + f.label);
+// One field as its own item (a problem with a single field): Canvas's own question type
+// for it, numbers with the grader's window.
+std::string single_item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
+                        const std::string& ident, const std::string& title, Lang lang) {
   std::string out =
       fmt::format("      <item ident=\"{}\" title=\"{}\">\n", ident, xml_escape(title));
   std::string presentation = "        <presentation>\n" + stem(q, a, f, lang);
   std::string condition;
   switch (f.type) {
     case QuizField::Type::Number:
-      out += metadata("numerical_question", points);
+      out += metadata("numerical_question", a.points);
       presentation +=
           "          <response_str ident=\"response1\" rcardinality=\"Single\"><render_fib "
           "fibtype=\"Decimal\">"
@@ -75,7 +76,7 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
           num(f.value), num(f.value - f.window), num(f.value + f.window));
       break;
     case QuizField::Type::Choice:
-      out += metadata("multiple_choice_question", points);
+      out += metadata("multiple_choice_question", a.points);
       presentation +=
           "          <response_lid ident=\"response1\" rcardinality=\"Single\"><render_choice>";
       for (std::size_t i = 0; i < f.choices.size(); ++i)
@@ -92,7 +93,7 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
     case QuizField::Type::Checkboxes:
       // Canvas's multiple-answers question: right when exactly the right boxes are ticked
       // (Canvas scores partial selections by its own setting, not Frustum's 1/T and 1/F).
-      out += metadata("multiple_answers_question", points);
+      out += metadata("multiple_answers_question", a.points);
       presentation +=
           "          <response_lid ident=\"response1\" rcardinality=\"Multiple\"><render_choice>";
       for (std::size_t i = 0; i < f.choices.size(); ++i) {
@@ -108,7 +109,7 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
       condition = "<and>" + condition + "</and>";
       break;
     case QuizField::Type::Text:
-      out += metadata("short_answer_question", points);
+      out += metadata("short_answer_question", a.points);
       presentation +=
           "          <response_str ident=\"response1\" rcardinality=\"Single\"><render_fib>"
           "<response_label ident=\"answer1\" rshuffle=\"No\"/></render_fib></response_str>\n";
@@ -129,20 +130,85 @@ std::string item(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
   return out;
 }
 
-std::string assessment(const std::vector<QuizQuestion>& questions, const std::string& title,
-                       const std::string& ident, Lang lang) {
-  std::string body = fmt::format(
-      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<questestinterop xmlns=\"http://www.imsglobal.org/xsd/ims_qtiasiv1p2\">\n"
-      "  <assessment ident=\"{}\" title=\"{}\">\n"
-      "    <section ident=\"root_section\">\n",
-      ident, xml_escape(title));
-  int n = 0;
-  for (const QuizQuestion& q : questions)
+double points_of(const QuizQuestion& q) {
+  double points = 0;
+  for (const QuizAnswer& a : q.answers) points += a.points;
+  return points;
+}
+
+// A problem with several fields as one fill-in-multiple-blanks item: a blank per field, each
+// with the texts Canvas accepts for it (canvas_blank). Canvas scores such an item as the share
+// of its blanks answered right (each blank the same), comparing texts trimmed and lower-cased.
+std::string blanks_item(const QuizQuestion& q, const std::string& ident, const std::string& title,
+                        Lang lang) {
+  std::string html = "<p>" + xml_escape(q.text) + "</p><ul>";
+  for (const std::string& g : q.given) html += "<li><code>" + xml_escape(g) + "</code></li>";
+  html += "</ul>";
+  std::string responses;
+  std::vector<std::pair<std::string, std::string>> right;  // (blank, label) pairs
+  for (std::size_t k = 0; k < q.answers.size(); ++k) {
+    const QuizAnswer& a = q.answers[k];
+    html += "<p>" + xml_escape(a.prompt) + ":";
+    for (std::size_t i = 0; i < a.fields.size(); ++i) {
+      const QuizField& f = a.fields[i];
+      const CanvasBlank b = canvas_blank(f, lang);
+      const std::string id = fmt::format("b{}_{}", k + 1, i + 1);
+      html += " " + xml_escape(f.label.empty() ? "" : f.label + " ") + "[" + id + "]";
+      if (!b.hint.empty()) html += " (" + xml_escape(b.hint) + ")";
+      if (i + 1 < a.fields.size()) html += ",";
+      responses += fmt::format(
+          "          <response_lid ident=\"response_{0}\"><material><mattext>{0}</mattext>"
+          "</material><render_choice>",
+          id);
+      for (std::size_t t = 0; t < b.texts.size(); ++t) {
+        const std::string label = fmt::format("{}_{}", id, t + 1);
+        responses += fmt::format(
+            "<response_label ident=\"{}\"><material><mattext "
+            "texttype=\"text/plain\">{}</mattext></material></response_label>",
+            label, xml_escape(b.texts[t]));
+        right.emplace_back(id, label);
+      }
+      responses += "</render_choice></response_lid>\n";
+    }
+    html += "</p>";
+  }
+  html += "<p>" +
+          xml_escape(tr("Each box is scored on its own here, by its text: write each number as a "
+                        "decimal rounded as asked.",
+                        lang)) +
+          "</p>";
+  if (!q.left_out.empty()) {
+    html += "<p>" + xml_escape(tr("Not asked here:", lang));
+    for (const std::string& l : q.left_out) html += " " + xml_escape(l) + ";";
+    html += "</p>";
+  }
+  std::size_t blanks = 0;
+  for (const QuizAnswer& a : q.answers) blanks += a.fields.size();
+  std::string scored;
+  for (const auto& [id, label] : right)
+    scored += fmt::format(
+        "          <respcondition continue=\"Yes\"><conditionvar><varequal "
+        "respident=\"response_{}\">{}</varequal>"
+        "</conditionvar><setvar action=\"Add\" varname=\"SCORE\">{}</setvar></respcondition>\n",
+        id, label, num(100.0 / static_cast<double>(blanks)));
+  return fmt::format("      <item ident=\"{}\" title=\"{}\">\n", ident, xml_escape(title)) +
+         metadata("fill_in_multiple_blanks_question", points_of(q)) +
+         "        <presentation>\n          <material><mattext texttype=\"text/html\">" +
+         xml_escape(html) + "</mattext></material>\n" + responses + "        </presentation>\n" +
+         "        <resprocessing>\n          <outcomes><decvar maxvalue=\"100\" minvalue=\"0\" "
+         "varname=\"SCORE\" vartype=\"Decimal\"/></outcomes>\n" +
+         scored + "        </resprocessing>\n      </item>\n";
+}
+
+// A problem as one item: its single field's own question type, or blanks for several.
+std::string item(const QuizQuestion& q, const std::string& ident, const std::string& title,
+                 Lang lang) {
+  std::size_t fields = 0;
+  for (const QuizAnswer& a : q.answers) fields += a.fields.size();
+  if (fields == 1)
     for (const QuizAnswer& a : q.answers)
-      for (const QuizField& f : a.fields)
-        body += item(q, a, f, fmt::format("{}_i{}", ident, ++n), lang);
-  return body + "    </section>\n  </assessment>\n</questestinterop>\n";
+      if (a.fields.size() == 1) return single_item(q, a, a.fields[0], ident, title, lang);
+  return blanks_item(q, ident, title, lang);
 }
 
 }  // namespace
@@ -150,29 +216,115 @@ std::string assessment(const std::vector<QuizQuestion>& questions, const std::st
 std::map<std::string, std::string> export_qti(const std::vector<QuizVariant>& variants,
                                               const std::string& title, const std::string& ident,
                                               Lang lang) {
-  std::map<std::string, std::string> files;
-  std::string resources;
-  for (const QuizVariant& v : variants) {
-    const std::string id = v.name.empty() ? ident : ident + "-" + v.name;
-    files[id + ".xml"] =
-        assessment(v.questions, v.name.empty() ? title : title + " (" + v.name + ")", id, lang);
-    // An href is a URI: the '%' of an encoded name is written %25.
-    std::string href;
-    for (const char c : id) href += c == '%' ? std::string("%25") : std::string(1, c);
-    resources += fmt::format(
-        "    <resource identifier=\"{0}\" type=\"imsqti_xmlv1p2\" href=\"{1}.xml\"><file "
-        "href=\"{1}.xml\"/></resource>\n",
-        xml_escape(id), href);
+  std::string body = fmt::format(
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<questestinterop xmlns=\"http://www.imsglobal.org/xsd/ims_qtiasiv1p2\">\n"
+      "  <assessment ident=\"{}\" title=\"{}\">\n"
+      "    <section ident=\"root_section\">\n",
+      ident, xml_escape(title));
+  // Problem i of every variant: one item each, in a question group from which Canvas draws
+  // one for each student (selection_number 1), or the item alone when there is one variant.
+  const std::size_t problems = variants.empty() ? 0 : variants.front().questions.size();
+  const bool group = variants.size() > 1;
+  for (std::size_t i = 0; i < problems; ++i) {
+    const QuizQuestion& first = variants.front().questions[i];
+    if (first.answers.empty()) continue;  // nothing a quiz can check (its note is on stderr)
+    if (group)
+      body += fmt::format(
+          "    <section ident=\"{}_g{}\" title=\"{}\">\n      <selection_ordering><selection>"
+          "<selection_number>1</selection_number><selection_extension><points_per_item>{}"
+          "</points_per_item></selection_extension></selection></selection_ordering>\n",
+          ident, i + 1, xml_escape(first.id), num(points_of(first)));
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+      if (i >= variants[v].questions.size()) continue;
+      const QuizQuestion& q = variants[v].questions[i];
+      const std::string& name = variants[v].name;
+      body += item(q, fmt::format("{}_q{}_v{}", ident, i + 1, v + 1),
+                   name.empty() ? q.id : q.id + " (" + name + ")", lang);
+    }
+    if (group) body += "    </section>\n";
   }
+  std::map<std::string, std::string> files;
+  files[ident + ".xml"] = body + "    </section>\n  </assessment>\n</questestinterop>\n";
+  // An href is a URI: the '%' of an encoded name is written %25.
+  std::string href;
+  for (const char c : ident) href += c == '%' ? std::string("%25") : std::string(1, c);
   files["imsmanifest.xml"] = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<manifest identifier=\"{}_manifest\" xmlns=\"http://www.imsglobal.org/xsd/imscp_v1p1\">\n"
+      "<manifest identifier=\"{0}_manifest\" xmlns=\"http://www.imsglobal.org/xsd/imscp_v1p1\">\n"
       "  <metadata><schema>IMS Content</schema><schemaversion>1.1.3</schemaversion></metadata>\n"
       "  <organizations/>\n"
-      "  <resources>\n{}  </resources>\n"
+      "  <resources>\n"
+      "    <resource identifier=\"{1}\" type=\"imsqti_xmlv1p2\" href=\"{2}.xml\"><file "
+      "href=\"{2}.xml\"/></resource>\n"
+      "  </resources>\n"
       "</manifest>\n",
-      ident, resources);
+      ident, xml_escape(ident), href);
   return files;
+}
+
+CanvasBlank canvas_blank(const QuizField& f, Lang lang) {
+  CanvasBlank b;
+  auto add = [&](const std::string& t) {
+    if (std::find(b.texts.begin(), b.texts.end(), t) == b.texts.end()) b.texts.push_back(t);
+  };
+  switch (f.type) {
+    case QuizField::Type::Number: {
+      if (f.value == kQuizInfinity) {
+        for (const char* t : {"inf", "+inf", "∞", "+∞", "infinity", "1e30"}) add(t);
+        b.hint = tr("+∞ is written inf", lang);
+        return b;
+      }
+      // The fewest decimals (at least 2) whose rounding stays inside the grader's window (a
+      // window of 0 is an exact value such as a matrix's fixed 0 or 1: 2 decimals).
+      while (f.window > 0 && b.places < 12 && 0.5 * std::pow(10.0, -b.places) > f.window)
+        ++b.places;
+      b.hint = tr(fmt::format("to {} decimal places", b.places), lang);
+      // Rounded to that many places or up to two more; a value on a half of the last place is
+      // accepted rounded either way; trailing zeros and a leading 0 may be left out.
+      const double nudge = std::min(std::max(std::abs(f.value), 1.0) * 1e-12, f.window / 4);
+      for (int d = b.places; d <= b.places + 2; ++d)
+        for (const double v : {f.value - nudge, f.value, f.value + nudge}) {
+          std::string t = fmt::format("{:.{}f}", v, d);
+          if (t.find_first_not_of("-0.") == std::string::npos) t = fmt::format("{:.{}f}", 0.0, d);
+          std::string trimmed = t;
+          while (trimmed.back() == '0') trimmed.pop_back();
+          if (trimmed.back() == '.') trimmed.pop_back();
+          for (const std::string& u : {t, trimmed}) {
+            add(u);
+            if (u.rfind("0.", 0) == 0) add(u.substr(1));
+            if (u.rfind("-0.", 0) == 0) add("-" + u.substr(2));
+          }
+        }
+      return b;
+    }
+    case QuizField::Type::Choice:
+      add(f.correct);
+      b.hint = tr("one of:", lang);
+      for (std::size_t i = 0; i < f.choices.size(); ++i) b.hint += (i ? ", " : " ") + f.choices[i];
+      return b;
+    case QuizField::Type::Text:
+      add(f.correct);
+      for (const std::string& also : f.also) add(also);
+      return b;
+    case QuizField::Type::Checkboxes: {
+      // The numbers of the right choices, separated by ", ", "," or " ".
+      std::string spaced, tight, words;
+      for (std::size_t i = 0; i < f.right.size(); ++i) {
+        if (!f.right[i]) continue;
+        const std::string n = std::to_string(i + 1);
+        spaced += (spaced.empty() ? "" : ", ") + n;
+        tight += (tight.empty() ? "" : ",") + n;
+        words += (words.empty() ? "" : " ") + n;
+      }
+      for (const std::string& t : {spaced, tight, words}) add(t);
+      b.hint = tr("the numbers of the true statements, such as 1, 3", lang) + ":";
+      for (std::size_t i = 0; i < f.choices.size(); ++i)
+        b.hint += fmt::format("{} {}. {}", i ? ";" : "", i + 1, f.choices[i]);
+      return b;
+    }
+  }
+  return b;
 }
 
 }  // namespace frustum

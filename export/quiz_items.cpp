@@ -15,9 +15,6 @@ namespace frustum {
 
 namespace {
 
-// How a key writes +∞ (a z-buffer's background depth): a quiz number field cannot hold ∞.
-constexpr double kInfinityStandIn = 1e30;
-
 std::vector<QuizField> numbers(const Value& v, const std::vector<double>& windows) {
   static const char* const kAxes[] = {"x", "y", "z", "w"};
   std::vector<QuizField> out;
@@ -74,7 +71,7 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
     case AnswerKind::UnitVector:
     case AnswerKind::Matrix:
     case AnswerKind::Transform:
-      if (std::find(expected.numbers.begin(), expected.numbers.end(), kInfinityStandIn) !=
+      if (std::find(expected.numbers.begin(), expected.numbers.end(), kQuizInfinity) !=
           expected.numbers.end())
         a.prompt +=
             " (" + tr("1e30 stands for +∞, the depth of a pixel no polygon covers", lang) + ")";

@@ -13,6 +13,9 @@
 
 namespace frustum {
 
+// How a key writes +∞ (a z-buffer's background depth) in a number field, which cannot hold ∞.
+constexpr double kQuizInfinity = 1e30;
+
 struct QuizField {
   // Checkboxes: several choices may be right (which statements are true), each ticked one
   // scored as the platform scores multiple answers.

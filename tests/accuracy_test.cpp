@@ -223,6 +223,32 @@ TEST(NumericPaths, ExactBackendMatchesTheDerivation) {
   }
 }
 
+// The radical suite of `frustum bench accuracy`: every third decimal of a generated given
+// becomes an irrational number near it; every kind's problems load, the exact backend solves
+// them, and the kind's exact solve (the derivation) agrees with it and with double.
+TEST(NumericPaths, RadicalInputsAreSolvedExactly) {
+  EXPECT_EQ(bench::with_radicals("{a: [1.25, -3.5, 2], b: [-0.5, 7.75, 1.5, 2.25], fovy: 45, "
+                                 "aspect: \"4/3\"}"),
+            "{a: [\"1.25 + sqrt(2)/10\", -3.5, 2], b: [-0.5, \"7.75 + sqrt(3)/10\", 1.5, 2.25], "
+            "fovy: 45, aspect: \"4/3\"}");
+  for (const std::string& kind : bench::generated_kinds()) {
+    const ProblemSet set = bench::radical_problems(kind, 3, kSeed);
+    ASSERT_TRUE(set.all_errors().empty()) << kind << ": " << set.all_errors()[0].format();
+    int irrational = 0;
+    for (const ProblemSpec& spec : set.problems) {
+      const ProblemResult solved = solve_problem(spec, set.file, false);
+      ASSERT_FALSE(solved.error) << kind << " " << spec.id << ": " << solved.error->format();
+      const NumericResult exact = numeric(spec, Precision::Exact);
+      const bench::CaseError e = bench::compare(numeric(spec, Precision::Double), exact);
+      EXPECT_FALSE(e.wrong) << kind << " " << spec.id;
+      EXPECT_LT(e.error, 1e-10) << kind << " " << spec.id;
+      for (const auto& [name, v] : exact.answers.items())
+        for (const Exact& x : v.exact) irrational += !GiNaC::is_a<GiNaC::numeric>(canonical(x));
+    }
+    EXPECT_GT(irrational, 0) << kind << ": no answer carries the radicals";
+  }
+}
+
 // One formula per concept: depth_at_pixel's exact solve and numeric path compute the plane
 // depth (plane_depth.hpp) and the edge decisions (edge_sign) by the same templates, and
 // backface's D_f and its facing (facing.hpp, facing_side) likewise, and normal and plane take
@@ -499,6 +525,29 @@ TEST(HardCases, DigitEstimatesMatchTheDigitsActuallyLost) {
   }
   EXPECT_GT(checked, 60);
   EXPECT_GT(estimates, 3);
+}
+
+// An exact answer beyond double's range refuses its problem only when it is asked: whether a
+// pixel is inside a triangle at 10³⁰⁰ is answered (the edge values, 10⁶⁰⁰, are not asked).
+TEST(HardCases, AnswersBeyondDoublesRangeRefuseOnlyWhenAsked) {
+  const std::string given =
+      "given: {triangle: [[0, 0, 1e300], [4e300, 0, 2e300], [0, 4e300, 3e300]], pixel: [1e300, "
+      "1e300]}";
+  const ProblemSet set = load_problem_set_from_string(
+      "title: t\nproblems:\n  - {id: inside, kind: barycentric, ask: [inside], " + given +
+          "}\n  - {id: edges, kind: barycentric, ask: [edges], " + given + "}\n",
+      "range.yaml");
+  ASSERT_TRUE(set.all_errors().empty());
+  const ProblemResult inside = solve_problem(problem(set, "inside"), set.file, true);
+  ASSERT_FALSE(inside.error) << inside.error->format();
+  ASSERT_NE(inside.answers.find("inside"), nullptr);
+  EXPECT_TRUE(inside.answers.find("inside")->flag);
+  EXPECT_EQ(inside.answers.find("edges"), nullptr);  // 10⁶⁰⁰: left out, not printed as inf
+  const ProblemResult edges = solve_problem(problem(set, "edges"), set.file, true);
+  ASSERT_TRUE(edges.error);
+  EXPECT_NE(edges.error->message.find("the answer 'edges' is beyond the range of a double"),
+            std::string::npos)
+      << edges.error->message;
 }
 
 TEST(HardCases, ExactNormalsOfDegeneratePolygonsAreExact) {

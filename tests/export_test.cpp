@@ -4,13 +4,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <map>
 
 #include "export/export_gradebook.hpp"
 #include "export/export_moodle.hpp"
 #include "export/export_prairielearn.hpp"
 #include "export/export_qti.hpp"
 #include "export/quiz_items.hpp"
+#include "export/xml_text.hpp"
 #include "grader/grade.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/variants.hpp"
@@ -52,13 +55,16 @@ Verdict verdict_of(const ProblemSet& set, const SolvedSet& solved, const std::st
   return Verdict::Missing;
 }
 
+// The sets whose every quiz field the tests below try (the seeds and the pipeline example).
+constexpr const char* kQuizSets[] = {"problems/seeds/001_zbuffer_plane_method.yaml",
+                                     "problems/seeds/002_transforms_and_view_volume.yaml",
+                                     "problems/seeds/003_polygons_backface.yaml",
+                                     "problems/seeds/004_placing_and_projecting.yaml",
+                                     "problems/examples/pipeline.yaml"};
+
 TEST(Export, QuizWindowsAreTheGradersWindows) {
   int inside = 0, outside = 0;
-  for (const char* file :
-       {"problems/seeds/001_zbuffer_plane_method.yaml",
-        "problems/seeds/002_transforms_and_view_volume.yaml",
-        "problems/seeds/003_polygons_backface.yaml",
-        "problems/seeds/004_placing_and_projecting.yaml", "problems/examples/pipeline.yaml"}) {
+  for (const char* file : kQuizSets) {
     const ProblemSet source = load_problem_set(test::source_path(file));
     ASSERT_TRUE(source.all_errors().empty()) << file;
     std::vector<ProblemSet> sets = variants_from_seed(source, 11, 3, !set_varies(source));
@@ -109,8 +115,183 @@ TEST(Export, AnswersNoFieldCanCheckAreNamedNotDropped) {
   EXPECT_NE(moodle.find("{3:NUMERICAL:=8:0.008}"), std::string::npos) << moodle;
   const auto qti = export_qti({{"", qs}}, "Seed 1", "seed1");
   ASSERT_TRUE(qti.count("seed1.xml"));
-  EXPECT_NE(qti.at("seed1.xml").find("<vargte respident=\"response1\">7.992</vargte>"),
-            std::string::npos);
+  // Canvas: the normal and z are blanks of one item; z = 8 ± 0.008 asks for 2 decimals.
+  EXPECT_NE(qti.at("seed1.xml").find("z: [b3_1] (to 2 decimal places)"), std::string::npos)
+      << qti.at("seed1.xml");
+  EXPECT_NE(qti.at("seed1.xml").find("texttype=\"text/plain\">8.00</mattext>"), std::string::npos);
+}
+
+// Canvas's fill-in-multiple-blanks grading (canvas-lms, Quizzes::QuizQuestion::
+// FillInMultipleBlanksQuestion): a blank is right when the response, trimmed and
+// lower-cased, equals one of its answers' texts the same way; the item's score is the share of
+// its blanks that are right. The blanks and their texts are read back from the exported XML.
+std::string xml_unescaped(std::string s) {
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}})
+    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+      s.replace(at, from.size(), to);
+  return s;
+}
+std::string trimmed_lower(const std::string& s) {
+  const std::size_t b = s.find_first_not_of(" \t\n"), e = s.find_last_not_of(" \t\n");
+  std::string t = b == std::string::npos ? "" : s.substr(b, e - b + 1);
+  for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return t;
+}
+std::map<std::string, std::vector<std::string>> canvas_blanks(const std::string& item) {
+  std::map<std::string, std::vector<std::string>> out;
+  const std::string open = "<response_lid ident=\"response_";
+  for (std::size_t at = item.find(open); at != std::string::npos; at = item.find(open, at + 1)) {
+    const std::size_t id_start = at + open.size();
+    const std::string id = item.substr(id_start, item.find('"', id_start) - id_start);
+    const std::size_t end = item.find("</response_lid>", at);
+    const std::string text_open = "<mattext texttype=\"text/plain\">";
+    for (std::size_t t = item.find(text_open, at); t != std::string::npos && t < end;
+         t = item.find(text_open, t + 1)) {
+      const std::size_t s = t + text_open.size();
+      out[id].push_back(xml_unescaped(item.substr(s, item.find("</mattext>", s) - s)));
+    }
+  }
+  return out;
+}
+double canvas_score(const std::map<std::string, std::vector<std::string>>& blanks,
+                    const std::map<std::string, std::string>& responses) {
+  int right = 0;
+  for (const auto& [id, texts] : blanks) {
+    const auto r = responses.find(id);
+    if (r == responses.end()) continue;
+    for (const std::string& t : texts)
+      if (trimmed_lower(t) == trimmed_lower(r->second)) {
+        ++right;
+        break;
+      }
+  }
+  return blanks.empty() ? 0 : static_cast<double>(right) / static_cast<double>(blanks.size());
+}
+std::size_t items_in(const std::string& xml) {
+  std::size_t n = 0;
+  for (std::size_t at = xml.find("<item ident="); at != std::string::npos;
+       at = xml.find("<item ident=", at + 1))
+    ++n;
+  return n;
+}
+std::string item_xml(const std::string& xml, const std::string& ident) {
+  const std::size_t at = xml.find("<item ident=\"" + ident + "\"");
+  return at == std::string::npos ? "" : xml.substr(at, xml.find("</item>", at) - at);
+}
+
+// A problem with several numbers is one Canvas item (blanks): the key written as each blank
+// asks (rounded to its decimals) scores full marks in Canvas and is right for `frustum grade`;
+// every text Canvas accepts for a number lies in the grader's window; a number two windows off
+// is refused; words and bit strings are their own texts.
+TEST(Export, CanvasBlanksAcceptWhatTheGraderAccepts) {
+  int items = 0, numbers = 0;
+  for (const char* file : kQuizSets) {
+    const ProblemSet source = load_problem_set(test::source_path(file));
+    const std::vector<ProblemSet> sets = variants_from_seed(source, 5, 2, !set_varies(source));
+    std::vector<QuizVariant> variants;
+    for (std::size_t v = 0; v < sets.size(); ++v)
+      variants.push_back({fmt::format("v{}", v), quiz_questions(sets[v])});
+    const std::string xml = export_qti(variants, "t", "t").at("t.xml");
+    for (std::size_t v = 0; v < sets.size(); ++v) {
+      const SolvedSet solved = solve_for_grading(sets[v]);
+      for (std::size_t i = 0; i < variants[v].questions.size(); ++i) {
+        const QuizQuestion& q = variants[v].questions[i];
+        std::size_t fields = 0;
+        for (const QuizAnswer& a : q.answers) fields += a.fields.size();
+        if (fields < 2) continue;
+        const std::string item = item_xml(xml, fmt::format("t_q{}_v{}", i + 1, v + 1));
+        ASSERT_NE(item.find("fill_in_multiple_blanks_question"), std::string::npos) << q.id;
+        const auto blanks = canvas_blanks(item);
+        ASSERT_EQ(blanks.size(), fields) << file << " " << q.id;
+        ++items;
+        std::map<std::string, std::string> key;
+        for (std::size_t k = 0; k < q.answers.size(); ++k) {
+          const QuizAnswer& a = q.answers[k];
+          QuizAnswer rounded = a;  // the answer as a student following the hints writes it
+          for (std::size_t j = 0; j < a.fields.size(); ++j) {
+            const QuizField& f = a.fields[j];
+            const std::string id = fmt::format("b{}_{}", k + 1, j + 1);
+            const CanvasBlank b = canvas_blank(f);
+            EXPECT_EQ(blanks.at(id), b.texts) << q.id << " " << id;
+            if (f.type != QuizField::Type::Number) {
+              key[id] = f.type == QuizField::Type::Checkboxes ? b.texts.front() : f.correct;
+              continue;
+            }
+            if (f.value == kQuizInfinity) {
+              key[id] = "inf";
+              continue;
+            }
+            ++numbers;
+            key[id] = fmt::format("{:.{}f}", f.value, b.places);
+            rounded.fields[j].value = std::stod(key[id]);
+            for (const std::string& t : b.texts)
+              EXPECT_LE(std::abs(std::stod(t) - f.value), f.window * (1 + 1e-9) + 1e-300)
+                  << q.id << " " << id << ": Canvas accepts " << t << " for " << f.value << " ± "
+                  << f.window;
+            if (f.window > 0) {
+              const std::string wrong =
+                  fmt::format("{:.{}f}", f.value + 2 * f.window, b.places + 2);
+              EXPECT_LT(canvas_score(blanks, {{id, wrong}}), 1.0 / static_cast<double>(fields))
+                  << q.id << " " << id << " accepts " << wrong;
+            }
+          }
+          EXPECT_EQ(verdict_of(sets[v], solved, q.id, a.name, answer_yaml(rounded, 0, 0)),
+                    Verdict::Correct)
+              << file << " " << q.id << "." << a.name << ": " << answer_yaml(rounded, 0, 0);
+        }
+        EXPECT_EQ(canvas_score(blanks, key), 1.0) << file << " " << q.id;
+        // Upper case and spaces around a response are Canvas's to ignore.
+        std::map<std::string, std::string> spaced;
+        for (const auto& [id, text] : key) spaced[id] = "  " + text + " ";
+        EXPECT_EQ(canvas_score(blanks, spaced), 1.0) << q.id;
+      }
+    }
+  }
+  EXPECT_GE(items, 10);
+  EXPECT_GE(numbers, 60);
+}
+
+// With variants, each problem is a Canvas question group drawing one item for each student
+// (selection_number 1, the problem's points per item) from its item in every variant, each
+// item with that variant's own givens: per-student variants through Canvas's randomisation, in
+// one quiz.
+TEST(Export, CanvasDrawsEachStudentsVariantFromAQuestionGroup) {
+  const ProblemSet source =
+      load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));
+  const std::vector<ProblemSet> sets = variants_from_seed(source, 9, 3, !set_varies(source));
+  std::vector<QuizVariant> variants;
+  for (std::size_t v = 0; v < sets.size(); ++v)
+    variants.push_back({fmt::format("seed9-{}", v), quiz_questions(sets[v])});
+  const auto files = export_qti(variants, "Seed 3", "seed3");
+  ASSERT_EQ(files.size(), 2u);  // the manifest and one assessment
+  const std::string& xml = files.at("seed3.xml");
+  EXPECT_NE(files.at("imsmanifest.xml").find("href=\"seed3.xml\""), std::string::npos);
+  int groups = 0;
+  for (std::size_t i = 0; i < variants[0].questions.size(); ++i) {
+    const QuizQuestion& q = variants[0].questions[i];
+    if (q.answers.empty()) continue;
+    const std::string open = fmt::format("<section ident=\"seed3_g{}\"", i + 1);
+    const std::size_t at = xml.find(open);
+    ASSERT_NE(at, std::string::npos) << q.id;
+    const std::string section = xml.substr(at, xml.find("</section>", at) - at);
+    double points = 0;
+    for (const QuizAnswer& a : q.answers) points += a.points;
+    EXPECT_NE(section.find(fmt::format("<selection_number>1</selection_number><selection_extension>"
+                                       "<points_per_item>{}</points_per_item>",
+                                       points)),
+              std::string::npos)
+        << section;
+    EXPECT_EQ(items_in(section), 3u) << q.id;
+    for (std::size_t v = 0; v < 3; ++v) {
+      const std::string item = item_xml(section, fmt::format("seed3_q{}_v{}", i + 1, v + 1));
+      ASSERT_FALSE(item.empty()) << q.id << " v" << v;
+      for (const std::string& g : variants[v].questions[i].given)
+        EXPECT_NE(item.find(xml_escape(xml_escape(g))), std::string::npos) << q.id << " " << g;
+    }
+    ++groups;
+  }
+  EXPECT_GE(groups, 3);
 }
 
 // A text field (an outcode) is right on a platform for exactly the spellings the grader calls
@@ -162,11 +343,7 @@ TEST(Export, TextFieldsAcceptExactlyWhatTheGraderAccepts) {
 // problem whose points split into whole weights is marked out of its own points.
 TEST(Export, MoodleClozeWeightsAddUpToTheProblemsPoints) {
   int whole = 0, scaled = 0;
-  for (const char* file :
-       {"problems/seeds/001_zbuffer_plane_method.yaml",
-        "problems/seeds/002_transforms_and_view_volume.yaml",
-        "problems/seeds/003_polygons_backface.yaml",
-        "problems/seeds/004_placing_and_projecting.yaml", "problems/examples/pipeline.yaml"}) {
+  for (const char* file : kQuizSets) {
     const ProblemSet set = load_problem_set(test::source_path(file));
     for (const QuizQuestion& q : quiz_questions(set)) {
       if (q.answers.empty()) continue;

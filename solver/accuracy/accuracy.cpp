@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
 #include <set>
+#include <string_view>
 
 #include "solver/derivation/svg.hpp"
 #include "solver/problem/registry.hpp"
@@ -32,6 +34,21 @@ std::string draw_given(const KindInfo* kind, Rng& rng) {
   return "{}";
 }
 
+// `count` problems of the kind drawn from `seed` (with radicals in their givens: with_radicals),
+// read through the normal loader so that they are validated like hand-written ones.
+ProblemSet drawn_problems(const std::string& kind, int count, std::uint64_t seed, bool radicals) {
+  Rng rng(seed ^ fnv1a64(kind));
+  std::string yaml =
+      "title: generated " + kind + (radicals ? " with radicals" : "") + "\nproblems:\n";
+  for (int i = 0; i < count; ++i) {
+    const std::string given = draw_given(builtin_kinds().find(kind), rng);
+    yaml += fmt::format("  - id: {}{}\n    kind: {}\n    given: {}\n", radicals ? 'r' : 'g', i,
+                        kind, radicals ? with_radicals(given) : given);
+  }
+  return load_problem_set_from_string(yaml,
+                                      (radicals ? "radical-" : "generated-") + kind + ".yaml");
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
@@ -49,12 +66,43 @@ std::vector<std::string> generated_kinds() {
 }
 
 ProblemSet generated_problems(const std::string& kind, int count, std::uint64_t seed) {
-  Rng rng(seed ^ fnv1a64(kind));
-  std::string yaml = "title: generated " + kind + "\nproblems:\n";
-  for (int i = 0; i < count; ++i)
-    yaml += fmt::format("  - id: g{}\n    kind: {}\n    given: {}\n", i, kind,
-                        draw_given(builtin_kinds().find(kind), rng));
-  return load_problem_set_from_string(yaml, "generated-" + kind + ".yaml");
+  return drawn_problems(kind, count, seed, false);
+}
+
+std::string with_radicals(const std::string& given) {
+  // A decimal token: an optional sign, digits, a point, digits, not part of a word or a quoted
+  // string (the generators write fractions such as "4/3" quoted and angles as integers).
+  static const char* const kRadicals[] = {"sqrt(2)", "sqrt(3)", "sqrt(5)"};
+  std::string out;
+  bool quoted = false;
+  int decimals = 0;
+  for (std::size_t i = 0; i < given.size();) {
+    const char c = given[i];
+    if (c == '"') quoted = !quoted;
+    const bool starts =
+        !quoted && (std::isdigit(static_cast<unsigned char>(c)) || c == '-') &&
+        (i == 0 || std::string_view("[{ ,:").find(given[i - 1]) != std::string::npos);
+    if (!starts) {
+      out += c;
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (j < given.size() &&
+           (std::isdigit(static_cast<unsigned char>(given[j])) || given[j] == '.'))
+      ++j;
+    const std::string token = given.substr(i, j - i);
+    if (token.find('.') != std::string::npos && decimals++ % 3 == 0)
+      out += fmt::format("\"{} + {}/10\"", token, kRadicals[(decimals / 3) % 3]);
+    else
+      out += token;
+    i = j;
+  }
+  return out;
+}
+
+ProblemSet radical_problems(const std::string& kind, int count, std::uint64_t seed) {
+  return drawn_problems(kind, count, seed, true);
 }
 
 CaseError compare(const NumericResult& got, const NumericResult& exact) {

@@ -34,6 +34,12 @@ std::vector<std::string> generated_kinds();
 // problem set read through the normal loader (so they are validated like hand-written ones).
 ProblemSet generated_problems(const std::string& kind, int count, std::uint64_t seed);
 
+// The same problems with every third decimal of the given turned into an irrational number
+// near it ("-3.25" becomes "-3.25 + sqrt(2)/10", √3 and √5 in turn): the cost of the exact
+// backend on radical inputs (the numeric backends round them once, as they round decimals).
+ProblemSet radical_problems(const std::string& kind, int count, std::uint64_t seed);
+std::string with_radicals(const std::string& given);
+
 // Times and measures every problem of `set` whose kind has a numeric path, per kind and
 // backend. Each backend's batch is repeated until it has run for about `min_ns` nanoseconds.
 std::vector<AccuracyRow> measure(const ProblemSet& set, const std::string& suite,

@@ -826,6 +826,15 @@ constexpr Phrase kPhrases[] = {
     {"w_c > 0 and inside", "w_c > 0 と内側かどうか", "w_c > 0 и «внутри»"},
     {"whether the normal is zero", "法線がゼロかどうか", "равна ли нормаль нулю"},
     {"whether a and b are parallel", "a と b が平行かどうか", "параллельны ли a и b"},
+    {"{0}: computed exactly on the given numbers (the floating-point computation could not tell "
+     "it from zero); only its final rounding is in it.",
+     "{0}: 与えられた数の厳密計算で求めた (浮動小数点の計算では 0 と区別できなかった). "
+     "誤差は最後の丸め"
+     "だけ.",
+     "{0}: вычислено точно на данных числах (вычисление с плавающей точкой не отличило это от "
+     "нуля); "
+     "в нём только последнее округление."},
+    {"the normal", "法線", "нормаль"},
     {"angle = atan2(‖a × b‖, a·b).", "角度 = atan2(‖a × b‖, a·b).", "угол = atan2(‖a × b‖, a·b)."},
     {"facing: the sign of D_f, proven by its rounding-error bound or else computed exactly.",
      "表裏: D_f の符号. 丸め誤差の上界で確かめ, 確かめられなければ厳密に計算する.",
@@ -853,6 +862,9 @@ constexpr Phrase kPhrases[] = {
     {"a · b (and with it cos θ)", "a · b (と, それに従う cos θ)", "a · b (а с ним cos θ)"},
     {"the plane's normal", "平面の法線", "нормаль плоскости"},
     {"z at this pixel", "この画素の z", "z в этом пикселе"},
+    {"the total (twice the projected area), and λ and z with it",
+     "合計 (投影した面積の 2 倍) と, それに従う λ と z",
+     "сумма (удвоенная площадь проекции), а с ней λ и z"},
     {"w_c (and the NDC divided by it)", "w_c (と, それで割った NDC)",
      "w_c (и NDC, делённые на него)"},
     {"the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)", "逆行列 (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)",

@@ -108,6 +108,7 @@ constexpr Phrase kPhrases[] = {
     {"Nearly edge-on triangle: barycentric fallback", "ほぼ真横から見た三角形: 重心座標による代替",
      "Треугольник почти с ребра: барицентрический запасной путь"},
     {"Nearly edge-on triangle", "ほぼ真横から見た三角形", "Треугольник почти с ребра"},
+    {"Nearly degenerate triangle", "ほぼ退化した三角形", "Почти вырожденный треугольник"},
     {"Nearly parallel edges", "ほぼ平行な辺", "Почти параллельные рёбра"},
     {"No inverse", "逆行列なし", "Обратной матрицы нет"},
     {"No plane", "平面なし", "Плоскости нет"},

@@ -9,6 +9,7 @@
 
 #include "solver/geometry/predicates.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/numeric/condition.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/accuracy_draws.hpp"
@@ -113,6 +114,8 @@ struct Barycentric {
   // backend's scalar; the signs of the edge functions (inside, and a flat triangle) by the
   // filtered predicate with its exact fallback, as depth_at_pixel's numeric path decides them.
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
+    const DepthCondition cond = depth_condition(to_double(g.triangle[0]), to_double(g.triangle[1]),
+                                                to_double(g.triangle[2]), to_double(g.pixel));
     return with_scalar(p, [&]<typename T>() -> std::unique_ptr<NumericSolver> {
       struct In {
         std::array<Vec3<T>, 3> t;
@@ -140,7 +143,7 @@ struct Barycentric {
         o.inside_exact = sides.exact;
         return o;
       };
-      auto report = [p](const In& in, const Out& o) {
+      auto report = [p, cond](const In& in, const Out& o) {
         NumericOut<T> out(p);
         out.inputs(in.range);
         out.vector("edges", o.edges);
@@ -149,6 +152,9 @@ struct Barycentric {
         out.boolean("inside", o.inside);
         out.scalar("z", o.z);
         if (o.inside_exact) out.exact_decision("inside");
+        // A thin triangle's total (twice its projected area) cancels, and λ and z with it.
+        warn_condition(out, p, std::max(cond.kappa_c, cond.kappa_z), "Nearly degenerate triangle",
+                       "the total (twice the projected area), and λ and z with it");
         return out.take();
       };
       In in{{}, {}, g, {}};

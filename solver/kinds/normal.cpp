@@ -51,7 +51,8 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
       NumericOut<T> out(p);
       out.inputs(in.range);
       report_normal(out, n);
-      warn_condition(out, p, kappa, "Ill-conditioned normal", "the normal's direction");
+      if (!n.exact_value)
+        warn_condition(out, p, kappa, "Ill-conditioned normal", "the normal's direction");
       return out.take();
     };
     In in{{}, std::nullopt, {}, points, order};

@@ -54,7 +54,8 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points,
         out.null("distance");
       else
         out.scalar("distance", o.distance);
-      warn_condition(out, p, kappa, "Ill-conditioned plane", "the plane's normal");
+      if (!o.n.exact_value)
+        warn_condition(out, p, kappa, "Ill-conditioned plane", "the plane's normal");
       out.note("plane = (n, n·p₀), not rescaled; distance = |n̂·p₀|");
       return out.take();
     };

@@ -102,7 +102,8 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
       // Nearly parallel vectors cancel in a × b, nearly perpendicular ones in a · b. An exact 0
       // is decided exactly (parallel) or exact in every backend's products of the inputs.
       const Eigen::Vector3d da = to_double(in.exact_a), db = to_double(in.exact_b);
-      if (!o.unit.zero)
+      if (o.unit.exact_value) report_exact_value(out, "a × b");
+      if (!o.unit.zero && !o.unit.exact_value)
         warn_condition(out, p, cross_condition(da, db), "Ill-conditioned cross product",
                        "a × b (and with it the area, sin θ and the angle)");
       if (!canonical(Exact(in.exact_a.dot(in.exact_b))).is_zero())

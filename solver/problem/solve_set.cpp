@@ -1,5 +1,6 @@
 #include "solver/problem/solve_set.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -58,17 +59,24 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
                           ? *spec.drawn_answers
                           : spec.info->solve(spec.given, with_steps ? &r.derivation : nullptr);
     // Exact inputs near 1e308 can give answers beyond double's range (1e308 · 1e308): their
-    // decimals would be inf or NaN (null in JSON), so the problem is refused instead.
-    for (const auto& [name, value] : answers.items())
-      for (const double x : value.numbers)
-        if (!std::isfinite(x)) {
-          r.error = Diagnostic{location_of(spec.given_node, file), spec.field + ".given",
-                               "the answer '" + name +
-                                   "' is beyond the range of a double (about ±1.8e308): scale "
-                                   "the given numbers down"};
-          return;
-        }
-    r.answers = std::move(answers);
+    // decimals would be inf or NaN (null in JSON). An asked one refuses the problem; one not
+    // asked is left out, so a question that asks only what stays in range (whether a pixel is
+    // inside a triangle at 1e300) is answered.
+    Answers kept;
+    for (const auto& [name, value] : answers.items()) {
+      if (std::all_of(value.numbers.begin(), value.numbers.end(),
+                      [](double x) { return std::isfinite(x); })) {
+        kept.set(name, value);
+        continue;
+      }
+      if (std::find(spec.ask.begin(), spec.ask.end(), name) == spec.ask.end()) continue;
+      r.error = Diagnostic{location_of(spec.given_node, file), spec.field + ".given",
+                           "the answer '" + name +
+                               "' is beyond the range of a double (about ±1.8e308): scale the "
+                               "given numbers down"};
+      return;
+    }
+    r.answers = std::move(kept);
   });
   return r;
 }

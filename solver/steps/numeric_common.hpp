@@ -107,6 +107,7 @@ struct NormalPair {
   Vec3<T> unit = Vec3<T>::Zero();
   bool zero = false;
   bool exact_zero_test = false;  // the exact fallback decided whether n is zero
+  bool exact_value = false;      // …and n and unit are the exact normal's nearest values
   bool underflow = false;        // n scaled back fell below the normal range
 };
 
@@ -140,6 +141,7 @@ void decide_normal_zero(NormalPair<T>& out, Vec3<T>& computed, const Vec3<T>& bo
   }
   if constexpr (!kIsExact<T>) {
     if (exact_n) {
+      out.exact_value = true;
       const Exact factor = GiNaC::pow(GiNaC::numeric(2), -scale);
       for (int i = 0; i < 3; ++i) computed(i) = from_exact<T>((*exact_n)(i)*factor);
       const T length = stable_norm(computed);
@@ -195,11 +197,21 @@ NormalPair<T> polygon_normal(const Polygon3<T>& p, const Polygon3<Exact>& exact_
   }
 }
 
+// A value the exact fallback produced (its nearest T): said, since no rounding of the
+// computation is in it and the ill-conditioning warnings do not apply to it.
+template <typename T>
+void report_exact_value(NumericOut<T>& out, const std::string& what) {
+  out.note(what +
+           ": computed exactly on the given numbers (the floating-point computation could not "
+           "tell it from zero); only its final rounding is in it");
+}
+
 template <typename T>
 void report_normal(NumericOut<T>& out, const NormalPair<T>& n) {
   if (n.underflow) out.underflow();
   out.vector("normal", n.n);
   if (n.exact_zero_test) out.exact_decision("whether the normal is zero");
+  if (n.exact_value) report_exact_value(out, "the normal");
   if (n.zero) {
     out.null("unit_normal");
   } else {

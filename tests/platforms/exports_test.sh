@@ -224,15 +224,38 @@ for set in 001_zbuffer_plane_method 003_polygons_backface 004_placing_and_projec
 done
 check "QTI assessments validate against the QTI 1.2 schema" \
   xmllint --noout --schema "$here/schemas/qti_1p2_subset.xsd" "$work"/qti-*/frustum_*.xml
-check "QTI manifests are well-formed and list every assessment" \
+check "QTI manifests are well-formed and list the one assessment" \
   python3 - "$work" <<'PY'
 import glob, os, sys, xml.etree.ElementTree as ET
 ok = True
 for manifest in glob.glob(os.path.join(sys.argv[1], "qti-*", "imsmanifest.xml")):
     hrefs = {r.get("href") for r in ET.parse(manifest).getroot().iter("{http://www.imsglobal.org/xsd/imscp_v1p1}resource")}
     files = {os.path.basename(f) for f in glob.glob(os.path.join(os.path.dirname(manifest), "frustum_*.xml"))}
-    ok = ok and hrefs == files and len(files) == 2
+    ok = ok and hrefs == files and len(files) == 1
 sys.exit(0 if ok else 1)
+PY
+# As Canvas's QTI importer reads a question group (qti_exporter's assessment_test_converter:
+# a section whose selection picks a count, its points per item, the items in it): every
+# problem of a two-variant export is a group picking 1 of its 2 items, worth its points.
+check "QTI: each problem is a Canvas question group drawing 1 of its variants" \
+  python3 - "$work" <<'PY'
+import glob, os, sys, xml.etree.ElementTree as ET
+ns = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
+ok, groups = True, 0
+for f in glob.glob(os.path.join(sys.argv[1], "qti-*", "frustum_*.xml")):
+    root = ET.parse(f).getroot().find(ns + "assessment").find(ns + "section")
+    for g in root.findall(ns + "section"):
+        groups += 1
+        sel = g.find(f"{ns}selection_ordering/{ns}selection")
+        items = g.findall(ns + "item")
+        points = float(sel.find(f"{ns}selection_extension/{ns}points_per_item").text)
+        ok = ok and sel.find(ns + "selection_number").text == "1" and len(items) == 2 and points > 0
+        for item in items:
+            meta = {m.find(ns + "fieldlabel").text: m.find(ns + "fieldentry").text
+                    for m in item.iter(ns + "qtimetadatafield")}
+            ok = ok and float(meta["points_possible"]) == points
+    ok = ok and not root.findall(ns + "item")  # every item is in its problem's group
+sys.exit(0 if ok and groups >= 6 else 1)
 PY
 check "Moodle XML validates against the Moodle XML schema" \
   xmllint --noout --schema "$here/schemas/moodle_xml_subset.xsd" "$work"/moodle-*.xml
