@@ -9,6 +9,7 @@
 #include "app/set_files.hpp"
 #include "report/report.hpp"
 #include "solver/derivation/render.hpp"
+#include "solver/problem/problem_figure.hpp"
 #include "solver/problem/solve_precision.hpp"
 #include "solver/problem/solve_set.hpp"
 
@@ -47,12 +48,16 @@ int run_solve(const std::string& path, const std::optional<std::string>& id, For
       case Format::Markdown:
         o.out << render_markdown(result, lang);
         break;
-      case Format::Html:
-        o.out << render_html(result, lang);
+      case Format::Html: {
+        const Figures figures = problem_figures(set, lang);
+        o.out << render_html(result, lang, &figures);
         break;
-      case Format::Latex:
-        o.out << render_latex(result, lang);
+      }
+      case Format::Latex: {
+        const Figures figures = problem_figures(set, lang);
+        o.out << render_latex(result, lang, &figures);
         break;
+      }
       case Format::Text:
         o.out << render_text(result, TextStyle{o.color, lang});
         break;

@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include "export/latex_text.hpp"
-#include "export/paper_figures.hpp"
 #include "export/quiz_items.hpp"
 #include "solver/derivation/i18n.hpp"
+#include "solver/problem/problem_figure.hpp"
 #include "solver/problem/solve_set.hpp"
 
 namespace frustum {
@@ -100,8 +100,8 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
         for (const std::string& text : statements) out += "\\item " + latex_prose(text) + "\n";
         out += "\\end{enumerate}\n";
       }
-      if (const auto figure = tikz_figure(p))
-        out += "\\begin{center}\n" + *figure + "\\end{center}\n";
+      if (const auto figure = problem_figure(p, lang); figure && !figure->tikz.empty())
+        out += "\\begin{center}\n" + figure->tikz + "\\end{center}\n";
       for (const std::string& name : p.ask)
         out += answer_label(p, name, lang) + ": \\hrulefill\\par\\vspace{1.2em}\n";
       out += "\\end{minipage}\\par\\bigskip\n";

@@ -28,7 +28,16 @@ SqliteDb::SqliteDb(const std::string& path, SqliteSync sync) : path_(path) {
     throw StoreError("cannot open the database " + path + ": " + why);
   }
   sqlite3_busy_handler(db_, retry_soon, nullptr);
-  exec("PRAGMA journal_mode=WAL");
+  // Switching to WAL takes an exclusive lock, and when several instances open a new database at
+  // once SQLite may answer SQLITE_BUSY without calling the busy handler (a lock it cannot wait
+  // for without deadlock): retried here within the same time bound.
+  for (int waited_us = 0;; waited_us += kBusyRetryUs) {
+    const int rc = sqlite3_exec(db_, "PRAGMA journal_mode=WAL", nullptr, nullptr, nullptr);
+    if (rc == SQLITE_OK) break;
+    if ((rc != SQLITE_BUSY && rc != SQLITE_LOCKED) || waited_us >= kBusyTimeoutMs * 1000)
+      exec("PRAGMA journal_mode=WAL");  // throws, naming the error
+    ::usleep(kBusyRetryUs);
+  }
   exec(sync == SqliteSync::Full ? "PRAGMA synchronous=FULL" : "PRAGMA synchronous=NORMAL");
   exec("PRAGMA foreign_keys=ON");
 }

@@ -12,6 +12,7 @@
 
 #include "solver/derivation/latex_check.hpp"
 #include "solver/derivation/render.hpp"
+#include "solver/problem/problem_figure.hpp"
 #include "typeset_corpus.hpp"
 
 namespace frustum {
@@ -94,18 +95,19 @@ TEST(Typeset, KatexRendersEveryFormulaInStrictMode) {
 }
 
 // `solve --format html` in headless Chromium: the page typesets every formula with the inlined
-// KaTeX and a screenshot is taken (look at build/typeset-seed004.png).
+// KaTeX, shows its pictures, and a screenshot is taken (look at build/typeset-pipeline.png).
 TEST(Typeset, HtmlPageTypesetsInChromiumAndScreenshots) {
   constexpr const char* kChromium = "/usr/bin/chromium";
   ASSERT_TRUE(std::filesystem::exists(kChromium)) << "tools/setup.sh installs chromium";
-  const SetResult set = solve_set(
-      load_problem_set(test::source_path("problems/seeds/004_placing_and_projecting.yaml")), true);
+  const ProblemSet source = load_problem_set(test::source_path("problems/examples/pipeline.yaml"));
+  const SetResult set = solve_set(source, true);
+  const Figures figures = problem_figures(source);
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("frustum-html-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir / "profile");
-  const std::string page = (dir / "seed004.html").string(),
-                    png = std::string(FRUSTUM_BINARY_DIR) + "/typeset-seed004.png";
-  std::ofstream(page) << render_html(set);
+  const std::string page = (dir / "pipeline.html").string(),
+                    png = std::string(FRUSTUM_BINARY_DIR) + "/typeset-pipeline.png";
+  std::ofstream(page) << render_html(set, Lang::En, &figures);
   RunOptions quiet;
   quiet.err = OutputTo::Null;
   quiet.seconds = 120;
@@ -114,6 +116,7 @@ TEST(Typeset, HtmlPageTypesetsInChromiumAndScreenshots) {
   EXPECT_NE(dom.find("data-math=\"yes\""), std::string::npos) << "the page's script did not run";
   EXPECT_NE(dom.find("class=\"katex-display\""), std::string::npos);
   EXPECT_EQ(dom.find("data-typeset=\"error\""), std::string::npos);
+  EXPECT_NE(dom.find("<figure class=\"figure\"><img"), std::string::npos);
   std::filesystem::remove(png);
   run(chromium(profile, page, {"--window-size=1000,1400", "--screenshot=" + png}), quiet);
   ASSERT_TRUE(std::filesystem::exists(png));
@@ -140,9 +143,16 @@ TEST(Typeset, LatexDocumentsCompileWithLualatex) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("frustum-tex-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir / "var");
+  // The seeds, and the pipeline example for the pictures of clipping, scan conversion and the
+  // z-buffer (TikZ on the pixel grid).
   for (const std::string& file : test::bundled_sets()) {
-    if (file.find("/seeds/") == std::string::npos) continue;
-    const auto [log, status] = lualatex(dir, render_latex(solve_set(load_problem_set(file), true)));
+    if (file.find("/seeds/") == std::string::npos &&
+        file.find("/pipeline.yaml") == std::string::npos)
+      continue;
+    const ProblemSet set = load_problem_set(file);
+    const Figures figures = problem_figures(set);
+    const auto [log, status] =
+        lualatex(dir, render_latex(solve_set(set, true), Lang::En, &figures));
     EXPECT_EQ(status, 0) << file << "\n" << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
     EXPECT_TRUE(std::filesystem::exists(dir / "set.pdf")) << file;
   }

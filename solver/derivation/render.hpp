@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "solver/derivation/figure.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/local_text.hpp"
 #include "solver/derivation/problem_result.hpp"
@@ -46,9 +47,12 @@ std::vector<std::pair<std::string, std::string>> katex_files();
 std::string html_math_head_linked(const std::string& prefix);
 // The script that typesets every formula element; put it at the end of the <body>.
 std::string html_math_script();
-std::string render_html(const SetResult& set, Lang lang = Lang::En);
+// `figures`: each problem's picture by id (problem_figure.hpp), shown under its text.
+std::string render_html(const SetResult& set, Lang lang = Lang::En,
+                        const Figures* figures = nullptr);
 // A LaTeX document (render_latex.cpp) that compiles with lualatex: for printing.
-std::string render_latex(const SetResult& set, Lang lang = Lang::En);
+std::string render_latex(const SetResult& set, Lang lang = Lang::En,
+                         const Figures* figures = nullptr);
 
 // A number that round-trips: integral doubles become JSON integers (8, not 8.0).
 nlohmann::ordered_json number_json(double v);

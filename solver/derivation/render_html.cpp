@@ -130,7 +130,7 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup mar
   return out + "</ol>\n";
 }
 
-std::string render_html(const SetResult& set, Lang lang) {
+std::string render_html(const SetResult& set, Lang lang, const Figures* figures) {
   const std::string title = set.title.empty() ? set.file : set.title.in(lang);
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -144,6 +144,7 @@ std::string render_html(const SetResult& set, Lang lang) {
       "li.warning {{ list-style: none; }} "
       ".error {{ color: #c4262e; font-family: monospace; }} table {{ border-collapse: collapse; }} "
       "td, th {{ border: 1px solid #ccd; padding: .3rem .6rem; text-align: left; "
+      "}} figure.figure {{ margin: 1rem 0; }} figure.figure img {{ max-width: 100%; "
       "}}</style>\n{}</head>\n<body>\n<h1>{}</h1>\n",
       to_string(lang), svg_escape(title), html_math_head(), svg_escape(title));
   if (!set.source.empty())
@@ -155,6 +156,12 @@ std::string render_html(const SetResult& set, Lang lang) {
     out += fmt::format("<section id=\"{}\">\n<h2>{} <small>({})</small></h2>\n", svg_escape(p.id),
                        svg_escape(p.id), svg_escape(p.kind));
     if (!p.text.empty()) out += fmt::format("<p>{}</p>\n", svg_escape(p.text.in(lang)));
+    // The picture as an image: its styles stay its own, whatever else the page shows.
+    if (const Figure* f = find_figure(figures, p.id); f && !f->svg.empty())
+      out += fmt::format(
+          "<figure class=\"figure\"><img alt=\"{}\" "
+          "src=\"data:image/svg+xml;base64,{}\"></figure>\n",
+          svg_escape(tr("Figure", lang)), base64(f->svg));
     if (p.error) {
       out += fmt::format("<p class=\"error\">{}</p>\n</section>\n", svg_escape(p.error->format()));
       continue;

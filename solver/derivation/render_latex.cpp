@@ -43,7 +43,8 @@ constexpr const char* kLuatexja =
     "\\usepackage{luatexja}\n\\ltjdefcharrange{200}{\"2070-\"209F}"
     "\\ltjsetparameter{jacharrange={-200}}\n";
 
-std::string render_latex(const SetResult& set, Lang lang) {
+std::string render_latex(const SetResult& set, Lang lang, const Figures* figures) {
+  bool pictures = false;
   const std::string title = set.title.empty() ? set.file : set.title.in(lang);
   std::string out = "\\section*{" + prose(title) + "}\n";
   if (!set.source.empty())
@@ -53,6 +54,10 @@ std::string render_latex(const SetResult& set, Lang lang) {
   for (const ProblemResult& p : set.problems) {
     out += "\\subsection*{" + prose(p.id) + " \\normalfont(\\texttt{" + prose(p.kind) + "})}\n";
     if (!p.text.empty()) out += prose(p.text.in(lang)) + "\n\n";
+    if (const Figure* f = find_figure(figures, p.id); f && !f->tikz.empty()) {
+      out += "\\begin{center}\n" + f->tikz + "\\end{center}\n";
+      pictures = true;
+    }
     if (p.error) {
       out += "\\textbf{" + prose(tr("error", lang)) + ":} \\texttt{" + prose(p.error->format()) +
              "}\n\n";
@@ -72,6 +77,7 @@ std::string render_latex(const SetResult& set, Lang lang) {
       "\\usepackage{fontspec}\n\\setmainfont{DejaVu Serif}\n\\setsansfont{DejaVu "
       "Sans}\n\\setmonofont{DejaVu Sans Mono}\n" +
       std::string(has_cjk(out) ? kLuatexja : "") +
+      std::string(pictures ? "\\usepackage{tikz}\n" : "") +
       "\\usepackage[margin=2cm]{geometry}\n\\setcounter{MaxMatrixCols}{20}\n\\allowdisplaybreaks\n"
       "\\begin{document}\n";
   return preamble + out + "\\end{document}\n";

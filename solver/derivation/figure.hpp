@@ -1,0 +1,28 @@
+// A problem's picture beside its derivation: the window and the segment or polygon of a 2-D
+// clipping problem, the pixel grid and triangle of scan conversion, the plane method and the
+// z-buffer, the hidden lines or depth order of a visibility problem (solver/problem/
+// problem_figure.hpp draws it from the problem's givens). The renderers take it beside the
+// solved set: the SVG as an image in HTML (its own styles kept to itself), TikZ in LaTeX
+// (empty where only one form exists).
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace frustum {
+
+struct Figure {
+  std::string svg;   // an SVG document
+  std::string tikz;  // a tikzpicture
+};
+
+using Figures = std::map<std::string, Figure>;  // by problem id
+
+// The figure of problem `id`, or null (no figures given, or none for it).
+inline const Figure* find_figure(const Figures* figures, const std::string& id) {
+  if (!figures) return nullptr;
+  const auto f = figures->find(id);
+  return f == figures->end() ? nullptr : &f->second;
+}
+
+}  // namespace frustum

@@ -1,0 +1,128 @@
+// Pictures in the derivations (issue 46): every problem of a kind with a natural picture gets
+// one — drawn in the plane (clipping, scan conversion, the plane method, barycentric
+// coordinates, the z-buffer) as SVG and TikZ from the same strokes, or `frustum draw`'s
+// picture (hidden lines, painter against z-buffer) as SVG — and `solve --format html|latex`
+// shows it under the problem's text.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <set>
+
+#include "solver/derivation/plane_drawing.hpp"
+#include "solver/derivation/render.hpp"
+#include "solver/problem/problem_figure.hpp"
+#include "solver/problem/solve_set.hpp"
+#include "solver/util/base64.hpp"
+#include "test_util.hpp"
+
+namespace frustum {
+namespace {
+
+// The numbers of every `name="…"` attribute of the SVG's elements of class `cls`.
+std::vector<double> attribute_values(const std::string& svg, const std::string& cls,
+                                     const std::string& name) {
+  std::vector<double> out;
+  const std::regex element("<[a-z]+ class=\"" + cls + "\"[^>]*>");
+  const std::regex attribute(" " + name + "=\"([-0-9.e]+)\"");
+  for (auto e = std::sregex_iterator(svg.begin(), svg.end(), element); e != std::sregex_iterator();
+       ++e) {
+    const std::string tag = e->str();
+    for (auto a = std::sregex_iterator(tag.begin(), tag.end(), attribute);
+         a != std::sregex_iterator(); ++a)
+      out.push_back(std::stod((*a)[1]));
+  }
+  return out;
+}
+
+// A vertex on whole coordinates sits on a grid line in the SVG as in the TikZ (step=1 of the
+// picture's units, not TikZ's default 1 cm): the pixel edges of scan conversion are the grid.
+TEST(Figures, VerticesOnWholeCoordinatesSitOnTheGrid) {
+  PlaneDrawing d = PlaneDrawing::around({{1, 1}, {7, 2}, {3, 6}}, true);
+  d.polyline({{1, 1}, {7, 2}, {3, 6}}, PlaneDrawing::Pen::Shape);
+  d.label({4, 3}, "a & b", false, PlaneDrawing::Place::BelowRight);
+  const std::string svg = d.svg();
+  const std::vector<double> grid_x = attribute_values(svg, "grid", "x1"),
+                            grid_y = attribute_values(svg, "grid", "y1");
+  const std::set<double> xs(grid_x.begin(), grid_x.end()), ys(grid_y.begin(), grid_y.end());
+  EXPECT_EQ(xs.size(), 9u);  // x from 0 to 8 (the box holds the origin, 0.5 margin rounded out)
+  const std::smatch m = [&] {
+    std::smatch s;
+    std::regex_search(svg, s, std::regex("class=\"shape\" points=\"([^\"]+)\""));
+    return s;
+  }();
+  ASSERT_FALSE(m.empty()) << svg;
+  std::istringstream points(m[1].str());
+  std::string xy;
+  int vertices = 0;
+  while (points >> xy) {
+    const double x = std::stod(xy.substr(0, xy.find(','))),
+                 y = std::stod(xy.substr(xy.find(',') + 1));
+    EXPECT_TRUE(xs.count(x)) << x << " is on no vertical grid line";
+    EXPECT_TRUE(ys.count(y)) << y << " is on no horizontal grid line";
+    ++vertices;
+  }
+  EXPECT_EQ(vertices, 3);
+  EXPECT_NE(svg.find("a &amp; b"), std::string::npos);  // text escaped
+  const std::string tikz = d.tikz();
+  EXPECT_NE(tikz.find("step=1] (0,0) grid (8,7)"), std::string::npos) << tikz;
+  EXPECT_NE(tikz.find("\\draw[thick] (1,1) -- (7,2) -- (3,6) -- cycle;"), std::string::npos);
+  EXPECT_NE(tikz.find("{a \\& b}"), std::string::npos) << tikz;
+}
+
+// Every problem of a kind with a picture, in the bundled sets that have them, gets one; the
+// HTML derivation shows each as an image of its SVG and the LaTeX one the TikZ of each plane
+// picture; kinds without a picture get none.
+TEST(Figures, EveryProblemOfAKindWithAPictureShowsItInTheDerivation) {
+  const std::set<std::string> plane = {"clip_line",      "clip_polygon", "scan_convert",
+                                       "depth_at_pixel", "barycentric",  "zbuffer"};
+  const std::set<std::string> drawn = {"edge_visibility", "depth_sort"};
+  std::set<std::string> seen;
+  for (const char* file :
+       {"problems/examples/pipeline.yaml", "problems/examples/barycentric.yaml",
+        "problems/examples/lecture_exercises.yaml", "problems/seeds/001_zbuffer_plane_method.yaml",
+        "problems/seeds/003_polygons_backface.yaml"}) {
+    const ProblemSet set = load_problem_set(test::source_path(file));
+    ASSERT_TRUE(set.all_errors().empty()) << file;
+    const Figures figures = problem_figures(set, set.lang);
+    std::size_t with_tikz = 0;
+    for (const ProblemSpec& p : set.problems) {
+      const Figure* f = find_figure(&figures, p.id);
+      const bool has = plane.count(p.kind) || drawn.count(p.kind);
+      ASSERT_EQ(f != nullptr, has) << file << " " << p.id << " (" << p.kind << ")";
+      if (!f) continue;
+      seen.insert(p.kind);
+      EXPECT_NE(f->svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
+      EXPECT_EQ(!f->tikz.empty(), plane.count(p.kind) == 1) << p.id;
+      if (!f->tikz.empty()) {
+        ++with_tikz;
+        EXPECT_NE(f->tikz.find("\\begin{tikzpicture}"), std::string::npos) << p.id;
+      }
+    }
+    const SetResult solved = solve_set(set, true);
+    const std::string html = render_html(solved, set.lang, &figures);
+    std::size_t images = 0;
+    for (std::size_t at = html.find("<figure class=\"figure\"><img"); at != std::string::npos;
+         at = html.find("<figure class=\"figure\"><img", at + 1))
+      ++images;
+    EXPECT_EQ(images, figures.size()) << file;
+    // The image is the figure's own SVG.
+    if (!figures.empty()) {
+      EXPECT_NE(html.find(base64(figures.begin()->second.svg)), std::string::npos) << file;
+    }
+    const std::string latex = render_latex(solved, set.lang, &figures);
+    std::size_t pictures = 0;
+    for (std::size_t at = latex.find("\\begin{tikzpicture}"); at != std::string::npos;
+         at = latex.find("\\begin{tikzpicture}", at + 1))
+      ++pictures;
+    EXPECT_EQ(pictures, with_tikz) << file;
+    EXPECT_EQ(latex.find("\\usepackage{tikz}") != std::string::npos, with_tikz > 0) << file;
+    // Without figures, as before.
+    EXPECT_EQ(render_html(solved, set.lang).find("<figure"), std::string::npos);
+  }
+  std::set<std::string> all = plane;
+  all.insert(drawn.begin(), drawn.end());
+  EXPECT_EQ(seen, all);
+}
+
+}  // namespace
+}  // namespace frustum
