@@ -67,6 +67,7 @@ struct GenerateCommand {
   std::string out_dir = ".";
   std::string format = "yaml";  // also latex (exam sheets + answer key) or pdf (compiled)
   std::optional<Lang> lang;     // the exam sheets' texts (none: the set's own `lang:`)
+  bool allow_repeats = false;   // a problem whose ranges run out may repeat among the class
 };
 int run_generate(const GenerateCommand& options, const Output& o);
 

@@ -298,6 +298,7 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   const bool paper = g.format != "yaml";
   std::vector<Named> variants;  // kept only for the paper route
   bool redrawn = false;
+  std::vector<std::string> repeating;  // problems that ran out of variants (--allow-repeats)
   int status = 0;
   bool failed = false;  // an output could not be written
   // A variant's text (its FNV-1a hash: bodies are not kept) → the first variant that has it.
@@ -390,8 +391,8 @@ int run_generate(const GenerateCommand& g, const Output& o) {
       seeds.emplace(set, *g.seed, g.count, vary_all);
       seeds_apart.emplace(set, *g.seed, g.count, vary_all);
     } else {
-      classes.emplace(set, vary_all);
-      classes_apart.emplace(set, vary_all);
+      classes.emplace(set, vary_all, g.allow_repeats);
+      classes_apart.emplace(set, vary_all, g.allow_repeats);
     }
     const auto name_of = [&](std::size_t i) {
       return g.seed ? seed_name(i) : variant_name(students[i]);
@@ -489,6 +490,7 @@ int run_generate(const GenerateCommand& g, const Output& o) {
           discard(decode(result->output));
         } catch (const std::exception&) {
         }
+    if (classes) repeating = classes->exhausted();
   } else {
     if (g.seed)
       for_each_variant_from_seed(set, *g.seed, g.count, vary_all, [&](int i, ProblemSet&& drawn) {
@@ -496,9 +498,12 @@ int run_generate(const GenerateCommand& g, const Output& o) {
         take_here({name, name, std::move(drawn)});
       });
     // The class together: pairwise distinct, redrawing a student whose variant repeats another's.
-    std::vector<ProblemSet> class_variants = variants_for_class(set, students, vary_all);
-    for (std::size_t i = 0; i < students.size(); ++i)
-      take_here({variant_name(students[i]), students[i], std::move(class_variants[i])});
+    if (!g.seed) {
+      ClassVariants drawn(set, vary_all, g.allow_repeats);
+      for (const std::string& student : students)
+        take_here({variant_name(student), student, drawn.draw(student)});
+      repeating = drawn.exhausted();
+    }
   }
   try {
     if (!failed) {
@@ -511,11 +516,15 @@ int run_generate(const GenerateCommand& g, const Output& o) {
   }
   if (failed) return 1;
   if (g.format != "yaml") status = std::max(status, write_paper(g, set, variants, o));
+  if (g.allow_repeats)
+    for (const std::string& id : repeating)
+      o.err << "note: problem '" << id
+            << "' has fewer variants than the class: it repeats among students (--allow-repeats)\n";
   if (redrawn)
-    o.err << "note: some students were drawn again so that no two share a problem; grade the class "
-             "against these "
-             "files: frustum grade "
-          << g.set << " ANSWERS --variants " << g.out_dir << "\n";
+    o.err << "note: some students were drawn again so that no two share a problem"
+          << (g.allow_repeats && !repeating.empty() ? " (but those named above)" : "")
+          << "; grade the class against these files: frustum grade " << g.set
+          << " ANSWERS --variants " << g.out_dir << "\n";
   return status;
 }
 
@@ -544,6 +553,9 @@ Command add_generate_command(CLI::App& cli) {
       ->add_option("-j,--jobs", opt->jobs,
                    "--count, --roster: variants drawn at once (default: one per core)")
       ->check(CLI::Range(1, 1024));
+  generate->add_flag("--allow-repeats", opt->allow_repeats,
+                     "--roster, --student: a problem with fewer variants than the class repeats "
+                     "among students instead of leaving the rest without a variant");
   generate->add_option("-o,--out", opt->out_dir,
                        "Directory for the sets; keys go in its answers/ (default .)");
   generate

@@ -300,6 +300,7 @@ CanvasBlank canvas_blank(const QuizField& f, Lang lang) {
     }
     case QuizField::Type::Choice:
       add(f.correct);
+      for (const std::string& also : f.also) add(also);
       b.hint = tr("one of:", lang);
       for (std::size_t i = 0; i < f.choices.size(); ++i) b.hint += (i ? ", " : " ") + f.choices[i];
       return b;

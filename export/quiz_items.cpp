@@ -48,6 +48,18 @@ std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAns
   return {};
 }
 
+// A choice among words, in the students' language (front → 表): the words as `frustum grade`
+// prints them in that language, which it reads back; the word as written in the set is kept as
+// another right spelling where it differs (a platform that compares texts accepts both).
+QuizField word_choice(const std::vector<std::string>& words, const std::string& right, Lang lang) {
+  QuizField f;
+  f.type = QuizField::Type::Choice;
+  for (const std::string& w : words) f.choices.push_back(tr(w, lang));
+  f.correct = tr(right, lang);
+  if (f.correct != right) f.also = {right};
+  return f;
+}
+
 // A given that is the problem's key (AnswerKind::Statements: each statement's truth).
 bool given_is_key(const ProblemSpec& p) {
   return p.info &&
@@ -90,22 +102,12 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
       a.fields = numbers(unit, accepted_windows(p, key, spec.name, unit));
       return {};
     }
-    case AnswerKind::Bool: {
-      QuizField f;
-      f.type = QuizField::Type::Choice;
-      f.choices = {"true", "false"};
-      f.correct = expected.flag ? "true" : "false";
-      a.fields = {f};
+    case AnswerKind::Bool:
+      a.fields = {word_choice({"true", "false"}, expected.flag ? "true" : "false", lang)};
       return {};
-    }
-    case AnswerKind::Category: {
-      QuizField f;
-      f.type = QuizField::Type::Choice;
-      f.choices = spec.words;
-      f.correct = expected.word;
-      a.fields = {f};
+    case AnswerKind::Category:
+      a.fields = {word_choice(spec.words, expected.word, lang)};
       return {};
-    }
     case AnswerKind::BitString: {
       QuizField f;
       f.type = QuizField::Type::Text;

@@ -27,7 +27,9 @@ struct QuizField {
   std::vector<std::string> choices;  // Choice
   std::string correct;               // Choice and Text: the right word or text; Checkboxes: the
                                      // right choices' numbers ("1, 3"), as a student writes them
-  std::vector<std::string> also;     // Text: other spellings `frustum grade` accepts as right
+  std::vector<std::string> also;     // Text, Choice: other spellings `frustum grade` accepts as
+                                     // right (a word as written in the set, beside its
+                                     // translation)
   std::vector<bool> right;           // Checkboxes: which choices are right
   std::vector<std::string> reasons;  // Checkboxes: why each choice is right or wrong ("" if none)
 };

@@ -294,6 +294,34 @@ TEST(Export, CanvasDrawsEachStudentsVariantFromAQuestionGroup) {
   EXPECT_GE(groups, 3);
 }
 
+// A word asked in a Japanese or Russian quiz is that language's word (front → 表, лицевая), as
+// `frustum grade` prints it in the key and reads it back; the set's own English word stays a
+// right spelling where a platform compares texts (Canvas's blanks).
+TEST(Export, ChoicesAreWordsInTheStudentsLanguageAndReadBack) {
+  const ProblemSet set =
+      load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));
+  const SolvedSet solved = solve_for_grading(set);
+  int words = 0;
+  for (const Lang lang : {Lang::Ja, Lang::Ru})
+    for (const QuizQuestion& q : quiz_questions(set, lang))
+      for (const QuizAnswer& a : q.answers)
+        for (const QuizField& f : a.fields) {
+          if (f.type != QuizField::Type::Choice) continue;
+          ++words;
+          EXPECT_TRUE(std::any_of(f.correct.begin(), f.correct.end(),
+                                  [](char c) { return static_cast<unsigned char>(c) >= 0x80; }))
+              << q.id << "." << a.name << ": " << f.correct;
+          EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), f.correct), f.choices.end());
+          for (const std::string& word : std::vector<std::string>{f.correct, f.also.at(0)})
+            EXPECT_EQ(verdict_of(set, solved, q.id, a.name, "\"" + word + "\""), Verdict::Correct)
+                << q.id << "." << a.name << ": " << word;
+          const CanvasBlank b = canvas_blank(f, lang);
+          EXPECT_NE(std::find(b.texts.begin(), b.texts.end(), f.also.at(0)), b.texts.end());
+          EXPECT_NE(b.hint.find(f.correct), std::string::npos) << b.hint;
+        }
+  EXPECT_GE(words, 2);
+}
+
 // A text field (an outcode) is right on a platform for exactly the spellings the grader calls
 // right: every bit string up to the field's length is tried against both.
 TEST(Export, TextFieldsAcceptExactlyWhatTheGraderAccepts) {

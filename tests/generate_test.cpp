@@ -330,6 +330,47 @@ TEST(Vary, ClassVariantsArePairwiseDistinct) {
     EXPECT_EQ(emit_flow(again[i].problems[0].given_node), emit_flow(cls[i].problems[0].given_node));
 }
 
+// A problem with fewer variants than the class is named in the error of every student left
+// over (told at once, not after a hundred draws each); with allow_repeats that problem repeats
+// among the class while the others stay pairwise distinct, and every student has a variant.
+TEST(Vary, AProblemThatRunsOutIsNamedOrAllowedToRepeat) {
+  const std::string yaml = R"(problems:
+  - id: few
+    kind: vectors
+    given: {a: [1, 0, 0], b: [0, 1, 0]}
+    vary: {a: [{range: [1, 3]}, 0, 0]}
+  - id: many
+    kind: vectors
+    given: {a: [1, 0, 0], b: [0, 1, 0]}
+    vary: {a: [{range: [1, 60]}, {range: [1, 60]}, 0]}
+)";
+  const ProblemSet set = load_problem_set_from_string(yaml, "few.yaml");
+  std::vector<std::string> students;
+  for (int i = 0; i < 8; ++i) students.push_back("s" + std::to_string(i));
+  const std::vector<ProblemSet> strict = variants_for_class(set, students, false);
+  int refused = 0;
+  for (const ProblemSet& v : strict) {
+    if (v.all_errors().empty()) continue;
+    ++refused;
+    EXPECT_NE(v.all_errors()[0].message.find("problem 'few' has fewer variants than the class"),
+              std::string::npos)
+        << v.all_errors()[0].message;
+    EXPECT_NE(v.all_errors()[0].message.find("--allow-repeats"), std::string::npos);
+  }
+  EXPECT_EQ(refused, 5);  // three values for eight students
+  ClassVariants drawn(set, false, true);
+  std::set<std::string> few, many;
+  for (const std::string& s : students) {
+    const ProblemSet v = drawn.draw(s);
+    ASSERT_TRUE(v.all_errors().empty()) << s << ": " << v.all_errors()[0].message;
+    few.insert(emit_flow(v.problems[0].given_node));
+    EXPECT_TRUE(many.insert(emit_flow(v.problems[1].given_node)).second)
+        << s << " repeats a problem with room for the class";
+  }
+  EXPECT_EQ(few.size(), 3u);  // every value used, then repeated
+  EXPECT_EQ(drawn.exhausted(), std::vector<std::string>{"few"});
+}
+
 TEST(Vary, MistakesAreLocatedErrors) {
   const std::string yaml = R"(variants: per_student
 problems:

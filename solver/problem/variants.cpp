@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <numeric>
@@ -306,47 +307,103 @@ ProblemSet variant_for_student(const ProblemSet& source, const std::string& stud
                       vary_all, nullptr);
 }
 
-ClassVariants::ClassVariants(const ProblemSet& set, bool vary_all)
-    : set_(prepare_for_drawing(set, vary_all)), vary_all_(vary_all), taken_(set.problems.size()) {}
+ClassVariants::ClassVariants(const ProblemSet& set, bool vary_all, bool allow_repeats)
+    : set_(prepare_for_drawing(set, vary_all)),
+      vary_all_(vary_all),
+      allow_repeats_(allow_repeats),
+      taken_(set.problems.size()),
+      exhausted_(set.problems.size(), false) {}
 
 ProblemSet ClassVariants::first_draw(const std::string& student, VariantGivens* givens) const {
   return make_variant(set_, "student:" + student, student, vary_all_, nullptr, givens);
 }
 
-bool ClassVariants::take(const VariantGivens& givens) {
+std::vector<std::size_t> ClassVariants::repeated(const VariantGivens& givens) const {
   // An empty text is no given to compare (as variants_for_class always had it).
-  const auto drawn = [&](std::size_t i) { return givens.given[i] && !givens.given[i]->empty(); };
-  for (std::size_t i = 0; i < givens.given.size(); ++i)
-    if (drawn(i) && taken_[i].count(*givens.given[i])) return false;
-  for (std::size_t i = 0; i < givens.given.size(); ++i)
-    if (drawn(i)) taken_[i].insert(*givens.given[i]);
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < givens.given.size() && i < taken_.size(); ++i)
+    if (givens.given[i] && !givens.given[i]->empty() && taken_[i].count(*givens.given[i]) &&
+        !(allow_repeats_ && exhausted_[i]))
+      out.push_back(i);
+  return out;
+}
+
+void ClassVariants::hold(const VariantGivens& givens) {
+  for (std::size_t i = 0; i < givens.given.size() && i < taken_.size(); ++i)
+    if (givens.given[i] && !givens.given[i]->empty()) taken_[i].insert(*givens.given[i]);
+}
+
+bool ClassVariants::take(const VariantGivens& givens) {
+  if (!repeated(givens).empty()) return false;
+  hold(givens);
   return true;
 }
 
+std::vector<std::string> ClassVariants::exhausted() const {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < exhausted_.size(); ++i)
+    if (exhausted_[i]) out.push_back(set_.problems[i].id);
+  return out;
+}
+
 ProblemSet ClassVariants::draw(const std::string& student) {
-  for (int draw = 1; draw <= kMaxDrawAttempts; ++draw) {
+  // A problem known to have run out makes every later draw fail alike: without allow_repeats
+  // the student is told at once (100 draws each made a class of 30 wait a minute for it).
+  const bool known_out = std::find(exhausted_.begin(), exhausted_.end(), true) != exhausted_.end();
+  std::vector<int> collisions(taken_.size(), 0);
+  int draws = 0;
+  for (int draw = 1; draw <= kMaxDrawAttempts && (allow_repeats_ || !known_out); ++draw) {
     const std::string who = "student:" + student + (draw == 1 ? "" : "#" + std::to_string(draw));
     VariantGivens givens;
     ProblemSet v = make_variant(set_, who, student, vary_all_, nullptr, &givens);
-    if (!take(givens)) continue;
-    v.variant->draw = draw;
+    const std::vector<std::size_t> same = repeated(givens);
+    if (same.empty()) {
+      hold(givens);
+      v.variant->draw = draw;
+      return v;
+    }
+    ++draws;
+    for (const std::size_t p : same) ++collisions[p];
+    // With allow_repeats, a problem that repeated in every one of many draws has run out: it may
+    // repeat from now on, and this student is drawn again under that rule.
+    if (allow_repeats_ && draw == kMaxDrawAttempts / 4)
+      for (std::size_t p = 0; p < collisions.size(); ++p)
+        if (collisions[p] == draws) exhausted_[p] = true;
+  }
+  if (allow_repeats_) {
+    // Still none: the student's own first draw, its repeated problems allowed from now on.
+    VariantGivens givens;
+    ProblemSet v = first_draw(student, &givens);
+    for (const std::size_t p : repeated(givens)) exhausted_[p] = true;
+    hold(givens);
+    v.variant->draw = 1;
     return v;
   }
+  // Which problems ran out: those that repeated in every draw.
+  std::string names;
+  for (std::size_t p = 0; p < collisions.size(); ++p)
+    if (draws > 0 && collisions[p] == draws) {
+      exhausted_[p] = true;
+      names += (names.empty() ? "'" : ", '") + set_.problems[p].id + "'";
+    }
+  if (names.empty())
+    for (std::size_t p = 0; p < exhausted_.size(); ++p)
+      if (exhausted_[p]) names += (names.empty() ? "'" : ", '") + set_.problems[p].id + "'";
   ProblemSet out = set_;
   out.per_student = false;
   out.variant = VariantInfo{student, 0, kMaxDrawAttempts};
-  out.errors.push_back(Diagnostic{SourceLocation{set_.file, 0, 0}, "student",
-                                  "no variant for " + student +
-                                      " that differs from every earlier student's in " +
-                                      std::to_string(kMaxDrawAttempts) +
-                                      " draws: the ranges hold fewer variants than the class"});
+  out.errors.push_back(Diagnostic{
+      SourceLocation{set_.file, 0, 0}, "student",
+      "no variant for " + student + " that differs from every earlier student's: problem " + names +
+          " has fewer variants than the class (widen its vary ranges, or generate with "
+          "--allow-repeats to let it repeat)"});
   return out;
 }
 
 std::vector<ProblemSet> variants_for_class(const ProblemSet& set,
-                                           const std::vector<std::string>& students,
-                                           bool vary_all) {
-  ClassVariants drawn(set, vary_all);
+                                           const std::vector<std::string>& students, bool vary_all,
+                                           bool allow_repeats) {
+  ClassVariants drawn(set, vary_all, allow_repeats);
   std::vector<ProblemSet> out;
   for (const std::string& student : students) out.push_back(drawn.draw(student));
   return out;

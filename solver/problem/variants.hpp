@@ -111,7 +111,10 @@ class SeedVariants {
 // The variants of variants_for_class one student at a time, with the givens drawn so far.
 class ClassVariants {
  public:
-  ClassVariants(const ProblemSet& set, bool vary_all);
+  // allow_repeats: a problem whose ranges run out (every draw for a student repeated an earlier
+  // student's) may repeat from then on, instead of leaving the rest of the class without a
+  // variant; the other problems stay pairwise distinct.
+  ClassVariants(const ProblemSet& set, bool vary_all, bool allow_repeats = false);
   // The student's first draw, independent of every other student's (`givens` receives its
   // givens): what take() checks.
   ProblemSet first_draw(const std::string& student, VariantGivens* givens = nullptr) const;
@@ -120,11 +123,18 @@ class ClassVariants {
   // Whether a first draw made apart repeats no given held here; if so its givens are held.
   // False: draw() the student here.
   bool take(const VariantGivens& givens);
+  // The ids of the problems whose ranges ran out (allowed to repeat with allow_repeats).
+  std::vector<std::string> exhausted() const;
 
  private:
+  // The problems of `givens` that repeat a given held here (and may not).
+  std::vector<std::size_t> repeated(const VariantGivens& givens) const;
+  void hold(const VariantGivens& givens);
   ProblemSet set_;  // texts templated for drawing (literal values → placeholders)
   bool vary_all_;
+  bool allow_repeats_;
   std::vector<GivenTexts> taken_;
+  std::vector<bool> exhausted_;  // per problem: every draw for some student repeated
 };
 
 // The student's variant, with vary_all as above.
@@ -134,10 +144,12 @@ ProblemSet variant_for_student(const ProblemSet& set, const std::string& student
 // same problem of an earlier student's; then it is drawn again with WHO "student:ID#2", "#3"…
 // (VariantInfo::draw). Such a student's variant cannot be regenerated from the source set and
 // the id alone, so a class generated this way is graded against the generated files
-// (`frustum grade SET ANSWERS --variants DIR`). When the ranges hold fewer variants than
-// students, the students left over carry an error saying so.
+// (`frustum grade SET ANSWERS --variants DIR`). When a problem's ranges hold fewer variants
+// than students, the students left over carry an error naming it — or, with allow_repeats, that
+// problem repeats from then on (ClassVariants).
 std::vector<ProblemSet> variants_for_class(const ProblemSet& set,
-                                           const std::vector<std::string>& students, bool vary_all);
+                                           const std::vector<std::string>& students, bool vary_all,
+                                           bool allow_repeats = false);
 
 // Why the answers are not nice ("" when they are): every number of an asked answer must be
 // simple — a rational with denominator ≤ 100, a square root of a rational with denominator
