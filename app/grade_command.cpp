@@ -20,6 +20,7 @@
 #include "report/prairielearn.hpp"
 #include "report/report.hpp"
 #include "solver/input/yaml_emit.hpp"
+#include "solver/problem/problem_figure.hpp"
 #include "solver/problem/variants.hpp"
 #include "solver/util/diagnostic.hpp"
 
@@ -170,7 +171,11 @@ int run_grade(const GradeOptions& given, const Output& o) {
     if (g.prairielearn)
       write_file_atomically(*g.prairielearn,
                             json_text(prairielearn_results(report, *g.lang)) + "\n");
-    if (g.html) write_file_atomically(*g.html, render_feedback_html(report, *g.lang));
+    if (g.html) {
+      const Figures figures = problem_figures(graded, *g.lang);
+      write_file_atomically(*g.html,
+                            render_feedback_html(report, *g.lang, html_math_head(), &figures));
+    }
     if (g.markdown) write_file_atomically(*g.markdown, render_feedback_markdown(report, *g.lang));
   } catch (const std::exception& e) {
     o.err << "error: " << e.what() << "\n";

@@ -27,6 +27,7 @@
 #include "report/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/input/yaml_document.hpp"
+#include "solver/problem/problem_figure.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/util/expression.hpp"
@@ -426,8 +427,9 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
       const std::vector<std::string> parts = problem_feedback_markdown(report, options.lang);
       out.write("feedback/" + stems[i] + ".md",
                 render_feedback_markdown(report, options.lang, parts));
+      const Figures figures = problem_figures(graded_set, options.lang);
       out.write("feedback/" + stems[i] + ".html",
-                render_feedback_html(report, options.lang, math_head));
+                render_feedback_html(report, options.lang, math_head, &figures));
       out.write("gradescope/" + stems[i] + ".json",
                 json_text(gradescope_results(report, parts)) + "\n");
     } catch (const std::exception& x) {

@@ -29,6 +29,7 @@ std::string got_shown(const AnswerGrade& a) {
 
 const char* kStyle = R"CSS(
 body { font-family: system-ui, "Noto Sans CJK JP", sans-serif; max-width: 60rem; margin: 2rem auto; padding: 0 1rem; color: #1d232a; }
+figure.figure { margin: .8rem 0; } figure.figure img { max-width: 100%; }
 h1 { font-size: 1.5rem; } h2 { font-size: 1.2rem; margin-top: 2rem; border-bottom: 1px solid #ccd; }
 .total { font-size: 1.2rem; font-weight: bold; }
 table { border-collapse: collapse; width: 100%; margin: .5rem 0; }
@@ -167,12 +168,13 @@ std::string render_feedback_markdown(const GradeReport& r, Lang lang,
 }
 
 std::string render_problem_feedback_html(const ProblemGrade& p, Lang lang, bool with_key,
-                                         MathMarkup markup) {
+                                         MathMarkup markup, const Figure* figure) {
   std::string out = fmt::format(
       "<section class=\"problem\" id=\"problem-{}\">\n<h2>{} <small>({})</small> — {} / "
       "{}</h2>\n",
       html_escape(p.id), html_escape(p.id), html_escape(p.kind), score_text(p.score),
       score_text(p.max_score));
+  if (figure && (with_key || !figure->shows_answers)) out += html_figure(*figure, lang);
   if (p.error)
     return out +
            fmt::format("<p class=\"error\">{}</p>\n</section>\n", html_escape(p.error->format()));
@@ -224,6 +226,11 @@ std::string render_feedback_html(const GradeReport& r, Lang lang) {
 }
 
 std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head) {
+  return render_feedback_html(r, lang, math_head, nullptr);
+}
+
+std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head,
+                                 const Figures* figures) {
   const std::string student = r.student.empty() ? tr("(unnamed)", lang) : r.student;
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -237,7 +244,9 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
   for (const Diagnostic& d : r.errors)
     out += fmt::format("<p class=\"error\">{}: {}</p>\n", html_escape(tr("warning", lang)),
                        html_escape(d.format()));
-  for (const ProblemGrade& p : r.problems) out += render_problem_feedback_html(p, lang);
+  for (const ProblemGrade& p : r.problems)
+    out +=
+        render_problem_feedback_html(p, lang, true, MathMarkup::KaTeX, find_figure(figures, p.id));
   out += fmt::format("<script>{}{}</script>\n</body>\n</html>\n", kScript, html_math_script());
   return out;
 }

@@ -24,12 +24,17 @@ std::string render_feedback_html(const GradeReport& r, Lang lang = Lang::En);
 // ~0.7 MB) for a page on its own, or html_math_head_linked() for the pages of a batch, which
 // link one shared copy written beside them.
 std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head);
+// With each problem's picture (problem_figure.hpp, of the set the student was graded against)
+// under its heading; a picture that shows answers only where the key is shown.
+std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head,
+                                 const Figures* figures);
 
 // One problem's part of that page (a <section>); without the key (the expected answers and
 // the derivations) where the platform shows the key by its own policy, with formulas for the
 // page's own KaTeX or for its host's MathJax.
 std::string render_problem_feedback_html(const ProblemGrade& p, Lang lang, bool with_key = true,
-                                         MathMarkup markup = MathMarkup::KaTeX);
+                                         MathMarkup markup = MathMarkup::KaTeX,
+                                         const Figure* figure = nullptr);
 
 // Untrusted text (a student id, an answer as written, a message quoting it) as Markdown that
 // shows it literally: HTML is written as entities (<img onerror=…> stays text in every

@@ -29,6 +29,7 @@
 #include "report/gradescope.hpp"
 #include "report/report.hpp"
 #include "solver/derivation/render.hpp"
+#include "solver/problem/problem_figure.hpp"
 #include "test_util.hpp"
 
 namespace frustum {
@@ -473,8 +474,11 @@ TEST(Batch, GradebookListsEveryStudentAndFeedbackIsWritten) {
   std::vector<std::string> loaded;
   for (auto m = std::sregex_iterator(html.begin(), html.end(), link); m != std::sregex_iterator();
        ++m)
-    loaded.push_back((*m)[1]);
+    if ((*m)[1].str().rfind("data:", 0) != 0) loaded.push_back((*m)[1]);  // pictures are inline
   EXPECT_EQ(loaded, (std::vector<std::string>{"../katex/katex.min.css", "../katex/katex.min.js"}));
+  EXPECT_NE(
+      html.find("<figure class=\"figure\"><img alt=\"Figure\" src=\"data:image/svg+xml;base64,"),
+      std::string::npos);
   for (const std::string& l : loaded)
     EXPECT_TRUE(fs::is_regular_file(dir / "out" / "feedback" / l)) << l;
   const std::string css = test::read_file(dir / "out" / "katex" / "katex.min.css");
@@ -525,12 +529,13 @@ TEST(Batch, OneChildOrSeveralGiveTheSameBytes) {
   ASSERT_EQ(three.rows.size(), 5u);
   for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(three.rows[i].student, one_child.rows[i].student);
   // The page the batch writes is the page made alone, linking the class's copy of KaTeX
-  // instead of carrying it.
+  // instead of carrying it, with the problems' pictures.
   const Submission sub = load_submission_from_string(test::read_file(in / "b_wrong.yaml"),
                                                      (in / "b_wrong.yaml").string());
   const GradeReport alone = grade(set, sub);
+  const Figures figures = problem_figures(set);
   EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.html"),
-            render_feedback_html(alone, Lang::En, html_math_head_linked("../katex/")));
+            render_feedback_html(alone, Lang::En, html_math_head_linked("../katex/"), &figures));
   // So are the Markdown page and the Gradescope results (the batch formats the keys once for
   // the class and each problem's Markdown once for both).
   EXPECT_EQ(test::read_file(dir / "three" / "feedback" / "s002.md"),

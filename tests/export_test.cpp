@@ -16,6 +16,7 @@
 #include "export/xml_text.hpp"
 #include "grader/grade.hpp"
 #include "solver/input/yaml_document.hpp"
+#include "solver/problem/problem_figure.hpp"
 #include "solver/problem/variants.hpp"
 #include "solver/util/base64.hpp"
 #include "solver/visibility/pictures.hpp"
@@ -488,8 +489,9 @@ problems:
   EXPECT_NE(pixel.find("Можно писать точные значения"), std::string::npos) << pixel;
 }
 
-// A kind's figure shows its answers: in a PrairieLearn question it is the variant's own SVG in the
-// answer panel (with the key), never in the question panel or a file of the question.
+// A kind's figure that shows its answers is, in a PrairieLearn question, the variant's own SVG in
+// the answer panel (with the key), never in the question panel or a file of the question; a
+// picture of the givens only is in the question panel.
 TEST(Export, PrairieLearnShowsTheFigureWithTheKeyOnly) {
   const char* kSet = R"(title: t
 lang: ja
@@ -522,8 +524,14 @@ problems:
   EXPECT_NE(server.find("<img alt="), std::string::npos);
   EXPECT_NE(server.find("図"), std::string::npos);
   EXPECT_EQ(server.find("Figure"), std::string::npos);
-  // A kind without a figure has none.
-  EXPECT_EQ(pl.at("t-pixel").at("question.html").find("frustum_figure"), std::string::npos);
+  EXPECT_EQ(html.find("{{{params.frustum_figure}}}"), std::string::npos);
+  // A picture of the givens only (the plane method's triangle and pixel) is in the question.
+  const std::string& pixel = pl.at("t-pixel").at("question.html");
+  EXPECT_LT(pixel.find("{{{params.frustum_figure}}}"), pixel.find("</pl-question-panel>")) << pixel;
+  EXPECT_EQ(pixel.find("correct_answers.frustum_figure"), std::string::npos);
+  EXPECT_NE(
+      pl.at("t-pixel").at("server.py").find(base64(problem_figure(set.problems[1], Lang::Ja)->svg)),
+      std::string::npos);
 }
 
 // Canvas matches SIS User ID and Moodle ID number exactly: an id the spreadsheet guard would

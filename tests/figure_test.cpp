@@ -8,6 +8,8 @@
 #include <regex>
 #include <set>
 
+#include "grader/grade.hpp"
+#include "report/feedback.hpp"
 #include "solver/derivation/plane_drawing.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/problem/problem_figure.hpp"
@@ -122,6 +124,35 @@ TEST(Figures, EveryProblemOfAKindWithAPictureShowsItInTheDerivation) {
   std::set<std::string> all = plane;
   all.insert(drawn.begin(), drawn.end());
   EXPECT_EQ(seen, all);
+}
+
+// A student's feedback page shows each problem's picture under its heading (the plane method's
+// triangle and pixel); a picture that shows answers (the hidden edges) only where the key is
+// shown, not in a platform's feedback that leaves the key to its own policy.
+TEST(Figures, FeedbackShowsThePictureAndHidesAnswersWithTheKey) {
+  for (const char* name : {"001_zbuffer_plane_method", "003_polygons_backface"}) {
+    const ProblemSet set =
+        load_problem_set(test::source_path(std::string("problems/seeds/") + name + ".yaml"));
+    const Submission answers =
+        load_submission(test::source_path(std::string("problems/seeds/answers/") + name + ".yaml"));
+    const GradeReport report = grade(set, answers);
+    const Figures figures = problem_figures(set, set.lang);
+    ASSERT_FALSE(figures.empty()) << name;
+    const std::string page = render_feedback_html(report, set.lang, "", &figures);
+    for (const ProblemGrade& p : report.problems) {
+      const Figure* f = find_figure(&figures, p.id);
+      const std::string part =
+          render_problem_feedback_html(p, set.lang, true, MathMarkup::KaTeX, f);
+      EXPECT_EQ(part.find("<figure class=\"figure\">") != std::string::npos, f != nullptr) << p.id;
+      if (f) {
+        EXPECT_NE(page.find(base64(f->svg)), std::string::npos) << p.id;
+      }
+      const std::string keyless =
+          render_problem_feedback_html(p, set.lang, false, MathMarkup::Delimited, f);
+      EXPECT_EQ(keyless.find("<figure") != std::string::npos, f && !f->shows_answers) << p.id;
+    }
+    EXPECT_EQ(render_feedback_html(report, set.lang, "").find("<figure"), std::string::npos);
+  }
 }
 
 }  // namespace

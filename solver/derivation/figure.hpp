@@ -14,6 +14,9 @@ namespace frustum {
 struct Figure {
   std::string svg;   // an SVG document
   std::string tikz;  // a tikzpicture
+  // The picture shows answers (the hidden edges, the painter's order), not only the givens:
+  // feedback shows it only where it shows the key.
+  bool shows_answers = false;
 };
 
 using Figures = std::map<std::string, Figure>;  // by problem id

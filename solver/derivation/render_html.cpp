@@ -130,6 +130,14 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup mar
   return out + "</ol>\n";
 }
 
+std::string html_figure(const Figure& figure, Lang lang) {
+  // The picture as an image: its styles stay its own, whatever else the page shows.
+  if (figure.svg.empty()) return {};
+  return fmt::format(
+      "<figure class=\"figure\"><img alt=\"{}\" src=\"data:image/svg+xml;base64,{}\"></figure>\n",
+      svg_escape(tr("Figure", lang)), base64(figure.svg));
+}
+
 std::string render_html(const SetResult& set, Lang lang, const Figures* figures) {
   const std::string title = set.title.empty() ? set.file : set.title.in(lang);
   std::string out = fmt::format(
@@ -156,12 +164,7 @@ std::string render_html(const SetResult& set, Lang lang, const Figures* figures)
     out += fmt::format("<section id=\"{}\">\n<h2>{} <small>({})</small></h2>\n", svg_escape(p.id),
                        svg_escape(p.id), svg_escape(p.kind));
     if (!p.text.empty()) out += fmt::format("<p>{}</p>\n", svg_escape(p.text.in(lang)));
-    // The picture as an image: its styles stay its own, whatever else the page shows.
-    if (const Figure* f = find_figure(figures, p.id); f && !f->svg.empty())
-      out += fmt::format(
-          "<figure class=\"figure\"><img alt=\"{}\" "
-          "src=\"data:image/svg+xml;base64,{}\"></figure>\n",
-          svg_escape(tr("Figure", lang)), base64(f->svg));
+    if (const Figure* f = find_figure(figures, p.id)) out += html_figure(*f, lang);
     if (p.error) {
       out += fmt::format("<p class=\"error\">{}</p>\n</section>\n", svg_escape(p.error->format()));
       continue;

@@ -109,7 +109,7 @@ std::optional<Figure> problem_figure(const ProblemSpec& p, Lang lang) {
     if (p.info->drawable) {
       PictureOptions options;
       options.api = p.conventions.api;
-      return Figure{draw_picture(p.info->drawable(p.given), options).svg, ""};
+      return Figure{draw_picture(p.info->drawable(p.given), options).svg, "", true};
     }
   } catch (const std::exception&) {  // YAML errors too: givens a figure cannot show
   }
