@@ -71,6 +71,29 @@ TEST(Figures, VerticesOnWholeCoordinatesSitOnTheGrid) {
   EXPECT_NE(tikz.find("{a \\& b}"), std::string::npos) << tikz;
 }
 
+// A picture at a scale nobody could read (a window 10³⁰⁰ wide) is not drawn — its grid would
+// never end — and a large one is drawn without its grid; tiny coordinates are fixed-point in
+// TikZ (its parser takes no exponent).
+TEST(Figures, HugeAndTinyCoordinatesGiveNoPictureOrAReadableOne) {
+  const auto figure = [](const std::string& xmax, const std::string& p) {
+    const ProblemSet set = load_problem_set_from_string(
+        "problems:\n  - {id: c, kind: clip_line, given: {window: {xmin: 0, xmax: " + xmax +
+            ", ymin: 0, ymax: 3}, p: " + p + ", q: [5, 2]}}\n",
+        "c.yaml");
+    EXPECT_TRUE(set.all_errors().empty());
+    return problem_figure(set.problems.at(0));
+  };
+  EXPECT_FALSE(figure("1e300", "[-1, 1]"));
+  const std::optional<Figure> wide = figure("5000", "[-1, 1]");
+  ASSERT_TRUE(wide);
+  EXPECT_EQ(wide->svg.find("class=\"grid\""), std::string::npos);
+  EXPECT_EQ(wide->tikz.find(" grid "), std::string::npos);
+  const std::optional<Figure> tiny = figure("4", "[0.0000001, 1]");
+  ASSERT_TRUE(tiny);
+  EXPECT_EQ(tiny->tikz.find("e-"), std::string::npos) << tiny->tikz;
+  EXPECT_NE(tiny->tikz.find("(0,1) -- (5,2)"), std::string::npos) << tiny->tikz;
+}
+
 // Every problem of a kind with a picture, in the bundled sets that have them, gets one; the
 // HTML derivation shows each as an image of its SVG and the LaTeX one the TikZ of each plane
 // picture; kinds without a picture get none.

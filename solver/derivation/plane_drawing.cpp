@@ -28,6 +28,15 @@ const char* tikz_place(PlaneDrawing::Place p) {
   return "above right";
 }
 
+// A coordinate as TikZ reads it: fixed point (TikZ's math parser takes no exponent, so 1e-07
+// would stop the document), trailing zeros dropped.
+std::string tikz_number(double v) {
+  std::string s = fmt::format("{:.4f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
 }  // namespace
 
 PlaneDrawing::PlaneDrawing(double x0, double y0, double x1, double y1, bool grid)
@@ -38,6 +47,12 @@ PlaneDrawing::PlaneDrawing(double x0, double y0, double x1, double y1, bool grid
       grid_(grid) {
   if (x1_ <= x0_) x1_ = x0_ + 1;
   if (y1_ <= y0_) y1_ = y0_ + 1;
+  grid_ = grid_ && x1_ - x0_ <= kMaxGridUnits && y1_ - y0_ <= kMaxGridUnits;
+}
+
+bool PlaneDrawing::drawable() const {
+  return std::isfinite(x0_) && std::isfinite(y0_) && std::isfinite(x1_) && std::isfinite(y1_) &&
+         x1_ - x0_ <= kMaxUnits && y1_ - y0_ <= kMaxUnits;
 }
 
 PlaneDrawing PlaneDrawing::around(const std::vector<Eigen::Vector2d>& points, bool grid,
@@ -78,12 +93,13 @@ std::string PlaneDrawing::tikz() const {
   for (const Stroke& s : strokes_) {
     out += s.pen == Pen::Window ? "\\draw[thick,blue] " : "\\draw[thick] ";
     for (std::size_t i = 0; i < s.points.size(); ++i)
-      out += fmt::format("{}({:g},{:g})", i ? " -- " : "", s.points[i].x(), s.points[i].y());
+      out += fmt::format("{}({},{})", i ? " -- " : "", tikz_number(s.points[i].x()),
+                         tikz_number(s.points[i].y()));
     out += s.pen == Pen::Open ? ";\n" : " -- cycle;\n";
   }
   for (const Label& l : labels_)
-    out += fmt::format("\\fill ({:g},{:g}) circle[radius=1.5pt] node[{}] {{{}}};\n", l.at.x(),
-                       l.at.y(), tikz_place(l.where),
+    out += fmt::format("\\fill ({},{}) circle[radius=1.5pt] node[{}] {{{}}};\n",
+                       tikz_number(l.at.x()), tikz_number(l.at.y()), tikz_place(l.where),
                        l.math ? "$" + l.text + "$" : latex_text(l.text));
   return out + "\\end{tikzpicture}\n";
 }

@@ -16,8 +16,16 @@ class PlaneDrawing {
   enum class Pen { Window, Shape, Open };  // a clip window (blue), a shape, an open segment
   enum class Place { AboveLeft, AboveRight, BelowRight };
 
+  // Boxes wider or taller than this many units are not drawn (drawable() is false): a picture
+  // at that scale shows nothing a reader could use, and its strokes would not fit TeX's
+  // dimensions. A grid is ruled only up to kMaxGridUnits cells a side (pixels one could count).
+  static constexpr double kMaxUnits = 10000;
+  static constexpr double kMaxGridUnits = 200;
+
   // The box [⌊x0⌋, ⌈x1⌉] × [⌊y0⌋, ⌈y1⌉] (at least one unit each way).
   PlaneDrawing(double x0, double y0, double x1, double y1, bool grid);
+  // Whether the box is finite and at most kMaxUnits a side.
+  bool drawable() const;
   // The box around `points` widened by `margin`, always holding the origin.
   static PlaneDrawing around(const std::vector<Eigen::Vector2d>& points, bool grid,
                              double margin = 0.5);

@@ -104,8 +104,10 @@ std::optional<PlaneDrawing> plane_drawing(const ProblemSpec& p, Lang lang) {
 std::optional<Figure> problem_figure(const ProblemSpec& p, Lang lang) {
   if (p.error || !p.info) return std::nullopt;
   try {
-    if (const std::optional<PlaneDrawing> d = plane_drawing(p, lang))
+    if (const std::optional<PlaneDrawing> d = plane_drawing(p, lang)) {
+      if (!d->drawable()) return std::nullopt;  // 10⁶ wide, or beyond double's range
       return Figure{d->svg(), d->tikz()};
+    }
     if (p.info->drawable) {
       PictureOptions options;
       options.api = p.conventions.api;
