@@ -123,9 +123,7 @@ std::vector<long long> cloze_weights(const QuizQuestion& q) {
 namespace {
 
 std::string cloze_question(const QuizQuestion& q, const std::string& name, Lang lang) {
-  std::string html = "<p>" + xml_escape(q.text) + "</p><ul>";
-  for (const std::string& g : q.given) html += "<li><code>" + xml_escape(g) + "</code></li>";
-  html += "</ul>";
+  std::string html = question_html(q);
   double total = 0;
   const std::vector<long long> weights = cloze_weights(q);
   long long sum = 0;
@@ -144,11 +142,7 @@ std::string cloze_question(const QuizQuestion& q, const std::string& name, Lang 
   if (std::any_of(q.answers.begin(), q.answers.end(),
                   [](const QuizAnswer& a) { return a.fields.size() > 1; }))
     html += "<p>" + xml_escape(tr("Each number is scored on its own here.", lang)) + "</p>";
-  if (!q.left_out.empty()) {
-    html += "<p>" + xml_escape(tr("Not asked here:", lang));
-    for (const std::string& l : q.left_out) html += " " + xml_escape(l) + ";";
-    html += "</p>";
-  }
+  html += left_out_html(q, lang);
   // For the instructor (an XML comment is not imported): the mark Moodle gives the question.
   std::string out = fmt::format(
       "  <!-- {} points in Frustum; Moodle's mark is the sum of the field weights, {}{}. Moodle "

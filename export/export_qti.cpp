@@ -28,15 +28,9 @@ std::string metadata(const std::string& type, double points) {
 }
 
 std::string stem(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f, Lang lang) {
-  std::string html = "<p>" + xml_escape(q.text) + "</p><ul>";
-  for (const std::string& g : q.given) html += "<li><code>" + xml_escape(g) + "</code></li>";
-  html += "</ul><p>" + xml_escape(a.prompt) + (f.label.empty() ? "" : ", " + xml_escape(f.label)) +
-          "</p>";
-  if (!q.left_out.empty()) {
-    html += "<p>" + xml_escape(tr("Not asked here:", lang));
-    for (const std::string& l : q.left_out) html += " " + xml_escape(l) + ";";
-    html += "</p>";
-  }
+  std::string html = question_html(q) + "<p>" + xml_escape(a.prompt) +
+                     (f.label.empty() ? "" : ", " + xml_escape(f.label)) + "</p>" +
+                     left_out_html(q, lang);
   // Canvas scores a multiple-answers question by its own rule (each right box ticked +1/T, each
   // wrong one −1/T, T right boxes), which is not Frustum's (−1/F for a wrong one, F wrong
   // boxes) and cannot be changed by the import: stated so the students know what counts.
@@ -141,9 +135,7 @@ double points_of(const QuizQuestion& q) {
 // of its blanks answered right (each blank the same), comparing texts trimmed and lower-cased.
 std::string blanks_item(const QuizQuestion& q, const std::string& ident, const std::string& title,
                         Lang lang) {
-  std::string html = "<p>" + xml_escape(q.text) + "</p><ul>";
-  for (const std::string& g : q.given) html += "<li><code>" + xml_escape(g) + "</code></li>";
-  html += "</ul>";
+  std::string html = question_html(q);
   std::string responses;
   std::vector<std::pair<std::string, std::string>> right;  // (blank, label) pairs
   for (std::size_t k = 0; k < q.answers.size(); ++k) {
@@ -176,14 +168,8 @@ std::string blanks_item(const QuizQuestion& q, const std::string& ident, const s
           xml_escape(tr("Each box is scored on its own here, by its text: write each number as a "
                         "decimal rounded as asked.",
                         lang)) +
-          "</p>";
-  if (!q.left_out.empty()) {
-    html += "<p>" + xml_escape(tr("Not asked here:", lang));
-    for (const std::string& l : q.left_out) html += " " + xml_escape(l) + ";";
-    html += "</p>";
-  }
-  std::size_t blanks = 0;
-  for (const QuizAnswer& a : q.answers) blanks += a.fields.size();
+          "</p>" + left_out_html(q, lang);
+  const std::size_t blanks = field_count(q);
   std::string scored;
   for (const auto& [id, label] : right)
     scored += fmt::format(
@@ -203,9 +189,7 @@ std::string blanks_item(const QuizQuestion& q, const std::string& ident, const s
 // A problem as one item: its single field's own question type, or blanks for several.
 std::string item(const QuizQuestion& q, const std::string& ident, const std::string& title,
                  Lang lang) {
-  std::size_t fields = 0;
-  for (const QuizAnswer& a : q.answers) fields += a.fields.size();
-  if (fields == 1)
+  if (field_count(q) == 1)
     for (const QuizAnswer& a : q.answers)
       if (a.fields.size() == 1) return single_item(q, a, a.fields[0], ident, title, lang);
   return blanks_item(q, ident, title, lang);

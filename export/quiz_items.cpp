@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "export/export_tolerance.hpp"
+#include "export/xml_text.hpp"
 #include "solver/input/text_reader.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/solve_set.hpp"
@@ -152,6 +153,25 @@ std::string statement_field(const ProblemSpec& p, const YAML::Node& statement, c
 }
 
 }  // namespace
+
+std::size_t field_count(const QuizQuestion& q) {
+  std::size_t n = 0;
+  for (const QuizAnswer& a : q.answers) n += a.fields.size();
+  return n;
+}
+
+std::string question_html(const QuizQuestion& q) {
+  std::string html = "<p>" + xml_escape(q.text) + "</p><ul>";
+  for (const std::string& g : q.given) html += "<li><code>" + xml_escape(g) + "</code></li>";
+  return html + "</ul>";
+}
+
+std::string left_out_html(const QuizQuestion& q, Lang lang) {
+  if (q.left_out.empty()) return {};
+  std::string html = "<p>" + xml_escape(tr("Not asked here:", lang));
+  for (const std::string& l : q.left_out) html += " " + xml_escape(l) + ";";
+  return html + "</p>";
+}
 
 std::vector<std::string> statement_texts(const ProblemSpec& p, Lang lang) {
   std::vector<std::string> out;

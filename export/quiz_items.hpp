@@ -56,6 +56,14 @@ struct QuizVariant {
   std::vector<QuizQuestion> questions;
 };
 
+// The fields a quiz asks for the question, over all its answers.
+std::size_t field_count(const QuizQuestion& q);
+// The question as HTML, as every quiz platform shows it: its text and its givens (a list of
+// code lines); and the note naming the answers not asked here, with why ("" when none is left
+// out), in the students' language.
+std::string question_html(const QuizQuestion& q);
+std::string left_out_html(const QuizQuestion& q, Lang lang);
+
 // What a student reads: the problem's text in `lang` with its {field}s filled (the kind's
 // summary, translated, when it has none). A drawn variant whose text names no field adds that the
 // values are those given below, since such a text may quote the template's numbers.

@@ -198,8 +198,7 @@ TEST(Export, CanvasBlanksAcceptWhatTheGraderAccepts) {
       const SolvedSet solved = solve_for_grading(sets[v]);
       for (std::size_t i = 0; i < variants[v].questions.size(); ++i) {
         const QuizQuestion& q = variants[v].questions[i];
-        std::size_t fields = 0;
-        for (const QuizAnswer& a : q.answers) fields += a.fields.size();
+        const std::size_t fields = field_count(q);
         if (fields < 2) continue;
         const std::string item = item_xml(xml, fmt::format("t_q{}_v{}", i + 1, v + 1));
         ASSERT_NE(item.find("fill_in_multiple_blanks_question"), std::string::npos) << q.id;
