@@ -26,5 +26,10 @@ if [ "${1:-}" = --tests ]; then
   (cd tests/browser && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund)
 fi
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${options[@]}" >/dev/null
+# Optimised, with line tables and function names (-g1): a crash's backtrace names its files and
+# lines, and the compile skips the full debug information (types, variables) that only a
+# debugger reads (a fifth to a quarter of each file's compile time). For a debugger session,
+# configure another directory with the default flags (-g).
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" "${options[@]}" >/dev/null
 cmake --build build --parallel "$(nproc)"

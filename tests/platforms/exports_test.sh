@@ -4,7 +4,10 @@
 #   server.py's generate() run as PrairieLearn runs it, question.html's inputs matching the
 #   params; then tools/prairielearn/frustum-pl-grade in a stand-in /grade tree with the
 #   answers as PrairieLearn's elements submit them (right, wrong, unreadable), every
-#   results.json against PrairieLearn's documented format;
+#   results.json against PrairieLearn's documented format (the bulk of the submissions run the
+#   grader's script in one Python process, since an interpreter's start-up was four fifths of
+#   this test's time; the language, feedback and hostile-input checks run it as its own
+#   process, as PrairieLearn does);
 # - `frustum export qti` and `export moodle`: the XML against the schemas in schemas/, and the
 #   numbers and windows in them against `frustum solve`;
 # - `frustum export canvas-grades` / `moodle-grades` from a class graded by `frustum grade`.
@@ -74,86 +77,138 @@ check "PrairieLearn: the element rules refuse a checkbox with no right option an
 # PrairieLearn's side, played by Python: generate() with a seeded `random`, then the answers
 # as the elements submit them, then the external grader's run.
 cat > "$work/play.py" <<'PY'
-import importlib.util, json, os, random, re, subprocess, sys
+import importlib.util, json, os, random, re, runpy, subprocess, sys
 
-work, frustum, grader, question, mode = sys.argv[1:6]
-spec = importlib.util.spec_from_file_location("server", os.path.join(question, "server.py"))
-server = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(server)
-random.seed(int(sys.argv[6]))
-data = {"params": {}, "correct_answers": {}}
-server.generate(data)
-params = data["params"]
-html = open(os.path.join(question, "question.html"), encoding="utf-8").read()
-element = {"choice": "pl-multiple-choice", "string": "pl-string-input", "checkbox": "pl-checkbox"}
-for name, kind in params["inputs"].items():
-    if not re.search(r'<%s answers-name="%s"' % (element[kind], re.escape(name)), html):
-        sys.exit(f"question.html has no {element[kind]} for {name}")
-    if kind == "string" and name not in data["correct_answers"]:
-        sys.exit(f"server.py sets no correct_answers for {name} (the answer panel would be empty)")
-# The expected answers, from Frustum itself.
-set_path = os.path.join(work, "set.yaml")
-open(set_path, "w", encoding="utf-8").write(params["set"])
-solved = json.loads(subprocess.run([frustum, "solve", set_path, "--format", "json"], check=True,
-                                   stdout=subprocess.PIPE).stdout)
-answers = solved["problems"][0]["answers"]
-submitted, raw, changed = {}, {}, False
-for name, kind in params["inputs"].items():
-    a = answers[name]
-    value = a["value"]
-    if kind == "choice":
-        words = list(params["correct"][name])
-        params[name] = [{"key": chr(97 + i), "html": w} for i, w in enumerate(words)]
-        right = str(value).lower() if isinstance(value, bool) else str(value)
-        submitted[name] = raw[name] = chr(97 + words.index(right))
-    elif kind == "checkbox":  # which statements are true: the options as question.html lists them
-        options = re.findall(r'<pl-answer correct="(true|false)">(.*?)</pl-answer>', html)
-        params[name] = [{"key": chr(97 + i), "html": text} for i, (_, text) in enumerate(options)]
-        submitted[name] = [chr(97 + i) for i, (right, _) in enumerate(options) if right == "true"]
-        numbered = [r for r, text in options if re.match(r"\d+\.", text)]
-        if [k for k, v in value.items() if v == "true"] != [str(i + 1) for i, r in enumerate(numbered) if r == "true"]:
-            sys.exit("question.html's checkboxes are not the key")
-    else:  # pl-string-input: the key as the answer panel shows it (exact forms, `none`)
-        text = data["correct_answers"][name]
-        if mode == "wrong" and isinstance(value, (int, float)) and not isinstance(value, bool):
-            text, changed = str(value + 1000), True
-        submitted[name] = raw[name] = text
-if mode == "unreadable":  # a list that does not close, or a nested mapping where words belong
-    kinds = params["inputs"]
-    name = next(iter(kinds))
-    raw[name] = submitted[name] = ["z"] if kinds[name] == "checkbox" else "{0-1: {x: y}}" if kinds[name] == "string" else "[1, 2"
-root = os.path.join(work, "grade")
-os.makedirs(os.path.join(root, "data"), exist_ok=True)
-json.dump({"params": params, "correct_answers": data["correct_answers"], "submitted_answers": submitted,
-           "raw_submitted_answers": raw}, open(os.path.join(root, "data", "data.json"), "w"))
-results = os.path.join(root, "results", "results.json")
-if os.path.exists(results):
-    os.remove(results)
-subprocess.run([sys.executable, grader], check=True, env=dict(os.environ, GRADE_ROOT=root, FRUSTUM=frustum))
-r = json.load(open(results))
-print(json.dumps({"gradable": r.get("gradable"), "score": r.get("score")}) if mode != "wrong" else
-      json.dumps({"gradable": r.get("gradable"), "score": r.get("score"), "changed": changed}))
+
+def play(work, frustum, grader, question, mode, seed, in_process):
+    """One submission: generate() seeded with SEED, the answers (right, wrong or unreadable) as
+    the elements submit them, the grader's run; returns the grader's results.json as a dict."""
+    spec = importlib.util.spec_from_file_location("server", os.path.join(question, "server.py"))
+    server = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(server)
+    random.seed(seed)
+    data = {"params": {}, "correct_answers": {}}
+    server.generate(data)
+    params = data["params"]
+    html = open(os.path.join(question, "question.html"), encoding="utf-8").read()
+    element = {"choice": "pl-multiple-choice", "string": "pl-string-input", "checkbox": "pl-checkbox"}
+    for name, kind in params["inputs"].items():
+        if not re.search(r'<%s answers-name="%s"' % (element[kind], re.escape(name)), html):
+            raise SystemExit(f"question.html has no {element[kind]} for {name}")
+        if kind == "string" and name not in data["correct_answers"]:
+            raise SystemExit(f"server.py sets no correct_answers for {name} (the answer panel would be empty)")
+    # The expected answers, from Frustum itself.
+    set_path = os.path.join(work, "set.yaml")
+    open(set_path, "w", encoding="utf-8").write(params["set"])
+    solved = json.loads(subprocess.run([frustum, "solve", set_path, "--format", "json"], check=True,
+                                       stdout=subprocess.PIPE).stdout)
+    answers = solved["problems"][0]["answers"]
+    submitted, raw, changed = {}, {}, False
+    for name, kind in params["inputs"].items():
+        a = answers[name]
+        value = a["value"]
+        if kind == "choice":
+            words = list(params["correct"][name])
+            params[name] = [{"key": chr(97 + i), "html": w} for i, w in enumerate(words)]
+            right = str(value).lower() if isinstance(value, bool) else str(value)
+            submitted[name] = raw[name] = chr(97 + words.index(right))
+        elif kind == "checkbox":  # which statements are true: the options as question.html lists them
+            options = re.findall(r'<pl-answer correct="(true|false)">(.*?)</pl-answer>', html)
+            params[name] = [{"key": chr(97 + i), "html": text} for i, (_, text) in enumerate(options)]
+            submitted[name] = [chr(97 + i) for i, (right, _) in enumerate(options) if right == "true"]
+            numbered = [r for r, text in options if re.match(r"\d+\.", text)]
+            if [k for k, v in value.items() if v == "true"] != [str(i + 1) for i, r in enumerate(numbered) if r == "true"]:
+                raise SystemExit("question.html's checkboxes are not the key")
+        else:  # pl-string-input: the key as the answer panel shows it (exact forms, `none`)
+            text = data["correct_answers"][name]
+            if mode == "wrong" and isinstance(value, (int, float)) and not isinstance(value, bool):
+                text, changed = str(value + 1000), True
+            submitted[name] = raw[name] = text
+    if mode == "unreadable":  # a list that does not close, or a nested mapping where words belong
+        kinds = params["inputs"]
+        name = next(iter(kinds))
+        raw[name] = submitted[name] = ["z"] if kinds[name] == "checkbox" else "{0-1: {x: y}}" if kinds[name] == "string" else "[1, 2"
+    root = os.path.join(work, "grade")
+    os.makedirs(os.path.join(root, "data"), exist_ok=True)
+    json.dump({"params": params, "correct_answers": data["correct_answers"], "submitted_answers": submitted,
+               "raw_submitted_answers": raw}, open(os.path.join(root, "data", "data.json"), "w"))
+    results = os.path.join(root, "results", "results.json")
+    if os.path.exists(results):
+        os.remove(results)
+    if in_process:  # the grader's own script, run as its own __main__ without a second interpreter
+        os.environ.update(GRADE_ROOT=root, FRUSTUM=frustum)
+        try:
+            runpy.run_path(grader, run_name="__main__")
+        except SystemExit as e:
+            if e.code not in (0, None):
+                raise
+    else:
+        subprocess.run([sys.executable, grader], check=True, env=dict(os.environ, GRADE_ROOT=root, FRUSTUM=frustum))
+    r = json.load(open(results))
+    return r, changed
+
+
+# play.py WORK FRUSTUM GRADER QUESTION MODE SEED: one submission through the grader as
+# PrairieLearn runs it (its own process), printing {gradable, score[, changed]}.
+# play.py WORK FRUSTUM GRADER --many SCHEMA JOB...: each JOB is MODE:SEED:QUESTION, the grader
+# run in this process (one interpreter for all: Python's start-up is most of a run), and each
+# results.json checked against SCHEMA; prints a JSON line per job with the schema's errors.
+work, frustum, grader = sys.argv[1:4]
+if sys.argv[4] != "--many":
+    question, mode, seed = sys.argv[4], sys.argv[5], int(sys.argv[6])
+    r, changed = play(work, frustum, grader, question, mode, seed, False)
+    out = {"gradable": r.get("gradable"), "score": r.get("score")}
+    if mode == "wrong":
+        out["changed"] = changed
+    print(json.dumps(out))
+    sys.exit(0)
+import jsonschema
+validator = jsonschema.Draft202012Validator(json.load(open(sys.argv[5], encoding="utf-8")))
+for job in sys.argv[6:]:
+    mode, seed, question = job.split(":", 2)
+    try:
+        r, changed = play(work, frustum, grader, question, mode, int(seed), True)
+    except SystemExit as e:
+        print(json.dumps({"job": job, "failed": str(e.code)}))
+        continue
+    errors = ["/".join(map(str, e.absolute_path)) + ": " + e.message for e in validator.iter_errors(r)]
+    print(json.dumps({"job": job, "mode": mode, "gradable": r.get("gradable"), "score": r.get("score"),
+                      "changed": changed, "errors": errors}))
 PY
 grader=$src/tools/prairielearn/frustum-pl-grade
-all_right=1 all_wrong=1 all_invalid=1 graded=0 wrongs=0
+jobs=()
 for q in "$work"/pl/*/ "$work"/pl-ja/*/; do
-  for seed in 1 2; do
-    r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" right $seed) || { echo "FAILED: $q: $r"; all_right=0; continue; }
-    validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_right=0
-    [ "$r" = '{"gradable": true, "score": 1.0}' ] || { echo "  $q right answers: $r"; all_right=0; }
-    graded=$((graded + 1))
-  done
-  r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" wrong 1)
-  if [ "${r#*\"changed\": true}" != "$r" ]; then  # some number was moved
-    wrongs=$((wrongs + 1))
-    validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_wrong=0
-    python3 -c "import json,sys; r=json.loads(sys.argv[1]); sys.exit(0 if r['gradable'] and r['score'] < 1 else 1)" "$r" ||
-      { echo "  $q wrong numbers: $r"; all_wrong=0; }
-  fi
-  r=$(python3 "$work/play.py" "$work" "$frustum" "$grader" "$q" unreadable 1)
-  validate "$here/prairielearn_results.schema.json" "$work/grade/results/results.json" || all_invalid=0
-  [ "$r" = '{"gradable": false, "score": null}' ] || { echo "  $q unreadable: $r"; all_invalid=0; }
+  jobs+=("right:1:$q" "right:2:$q" "wrong:1:$q" "unreadable:1:$q")
 done
+python3 "$work/play.py" "$work" "$frustum" "$grader" --many "$here/prairielearn_results.schema.json" "${jobs[@]}" > "$work/played.jsonl"
+read -r all_right all_wrong all_invalid graded wrongs < <(python3 - "$work/played.jsonl" <<'PY'
+import json, sys
+right = wrong = invalid = 1
+graded = wrongs = 0
+for line in open(sys.argv[1], encoding="utf-8"):
+    r = json.loads(line)
+    bad = r.get("failed") or r["errors"]
+    if r.get("failed"):
+        print("  FAILED:", r["job"], r["failed"], file=sys.stderr)
+    elif r["errors"]:
+        print("  results.json of", r["job"], "breaks the schema:", r["errors"], file=sys.stderr)
+    mode = r["job"].split(":")[0]
+    if mode == "right":
+        graded += not bad
+        if bad or (r["gradable"], r["score"]) != (True, 1.0):
+            print("  right answers:", line.strip(), file=sys.stderr)
+            right = 0
+    elif mode == "wrong" and (bad or r["changed"]):  # some number was moved
+        wrongs += 1
+        if bad or not (r["gradable"] and r["score"] < 1):
+            print("  wrong numbers:", line.strip(), file=sys.stderr)
+            wrong = 0
+    elif mode == "unreadable" and (bad or (r["gradable"], r["score"]) != (False, None)):
+        print("  unreadable:", line.strip(), file=sys.stderr)
+        invalid = 0
+print(right, wrong, invalid, graded, wrongs)
+PY
+)
 check "PrairieLearn: the key as typed (exact forms, none), as the elements submit it, earns 1.0 ($graded variants)" test $all_right = 1 -a $graded -gt 20
 check "PrairieLearn: numbers off by 1000 lose points ($wrongs questions)" test $all_wrong = 1 -a $wrongs -gt 5
 check "PrairieLearn: an unreadable answer is not gradable (no attempt charged)" test $all_invalid = 1
