@@ -20,14 +20,15 @@ namespace {
 
 // Words a student may write for each category and boolean, with Japanese equivalents.
 const std::vector<std::pair<std::string, std::string>> kWordSynonyms = {
-    {"front", "front"},        {"表", "front"},           {"おもて", "front"},
-    {"front-facing", "front"}, {"back", "back"},          {"裏", "back"},
-    {"うら", "back"},          {"back-facing", "back"},   {"edge_on", "edge_on"},
-    {"edge-on", "edge_on"},    {"edge on", "edge_on"},    {"真横", "edge_on"},
-    {"visible", "visible"},    {"可視", "visible"},       {"silhouette", "silhouette"},
-    {"輪郭線", "silhouette"},  {"輪郭", "silhouette"},    {"hidden", "hidden"},
-    {"不可視", "hidden"},      {"concave", "not convex"}, {"凹", "not convex"},
-    {"内部", "inside"},        {"外部", "outside"},       {"вне", "outside"}};
+    {"front", "front"},        {"表", "front"},         {"おもて", "front"},
+    {"front-facing", "front"}, {"back", "back"},        {"裏", "back"},
+    {"うら", "back"},          {"back-facing", "back"}, {"edge_on", "edge_on"},
+    {"edge-on", "edge_on"},    {"edge on", "edge_on"},  {"真横", "edge_on"},
+    {"visible", "visible"},    {"可視", "visible"},     {"silhouette", "silhouette"},
+    {"輪郭線", "silhouette"},  {"輪郭", "silhouette"},  {"hidden", "hidden"},
+    {"不可視", "hidden"},      {"見える", "visible"},   {"隠れる", "hidden"},
+    {"concave", "not convex"}, {"凹", "not convex"},    {"内部", "inside"},
+    {"外部", "outside"},       {"вне", "outside"}};
 
 const std::vector<std::pair<std::string, bool>> kBoolWords = {
     {"true", true},   {"yes", true},     {"y", true},  {"t", true},

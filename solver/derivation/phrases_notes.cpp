@@ -8,6 +8,35 @@ namespace frustum {
 namespace {
 
 constexpr Phrase kPhrases[] = {
+    {"Each polygon's edges that the line crosses give the two ends of its section; along the "
+     "section the depth changes linearly, as the polygon is planar.",
+     "走査線が横切るポリゴンの辺から断面の両端が求まる. ポリゴンは平面なので, 断面に沿って奥行きは"
+     "線形に変わる.",
+     "Рёбра многоугольника, которые пересекает строка, дают два конца его сечения; вдоль сечения "
+     "глубина меняется линейно, так как многоугольник плоский."},
+    {"On each piece between two breakpoints one section is nearest all along (depths are linear "
+     "and cross only at breakpoints): the smallest z is seen. The method keeps one line's "
+     "sections at a time, not a depth for every pixel.",
+     "2 つの区切り点の間の各区間では, 1 つの断面が全体にわたって最も手前にある (奥行きは線形で, "
+     "区切り点でしか交わらない): z が最も小さい断面が見える. この方法は 1 本の走査線の断面だけを"
+     "保持し, 画素ごとの奥行きは持たない.",
+     "На каждом отрезке между двумя точками разбиения одно сечение ближе всех на всём отрезке "
+     "(глубины линейны и пересекаются только в точках разбиения): видно сечение с наименьшим z. "
+     "Метод хранит сечения одной строки, а не глубину каждого пикселя."},
+    {"Each column of M lies in one piece: m0–m2 is the image of the x axis, m4–m6 that of the y "
+     "axis, m8–m10 that of the z axis, and m12–m14 the translation (where the origin goes).",
+     "M の各列が連続して並ぶ: m0–m2 は x 軸の像, m4–m6 は y 軸の像, m8–m10 は z 軸の像, "
+     "m12–m14 は平行移動 (原点の移る先) である.",
+     "Каждый столбец M лежит подряд: m0–m2 — образ оси X, m4–m6 — оси Y, m8–m10 — оси Z, "
+     "m12–m14 — перенос (куда переходит начало координат)."},
+    {"Each column of M lies in one piece: m0–m1 is the image of the x axis, m3–m4 that of the y "
+     "axis, and m6–m7 the translation (where the origin goes).",
+     "M の各列が連続して並ぶ: m0–m1 は x 軸の像, m3–m4 は y 軸の像, m6–m7 は平行移動 "
+     "(原点の移る先) である.",
+     "Каждый столбец M лежит подряд: m0–m1 — образ оси X, m3–m4 — оси Y, m6–m7 — перенос "
+     "(куда переходит начало координат)."},
+    {"With W = {0} the point {1} is written {2}.", "W = {0} とすると, 点 {1} は {2} と表される.",
+     "При W = {0} точка {1} записывается как {2}."},
     // Conventions.
     {"OpenGL: right-handed eye space looking down −z, column vectors (p′ = M·p), NDC cube [−1, 1]³ "
      "with near → −1, "
@@ -366,7 +395,7 @@ constexpr Phrase kPhrases[] = {
      "У граней {0} D_f = 0 точно: глаз лежит в их плоскости, поэтому на экране они не занимают "
      "площади."},
     {"They count as back for the edge classes, as back-face culling treats them.",
-     "稜線の分類では, 背面除去と同じく裏として扱う.",
+     "稜線の分類では, バックフェースカリングと同じく裏として扱う.",
      "При классификации рёбер они считаются обратными, как их и трактует отсечение нелицевых "
      "граней."},
     {"D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
@@ -415,7 +444,7 @@ constexpr Phrase kPhrases[] = {
      "back-face culling alone does not always remove the hidden surfaces; a depth test is still "
      "needed.",
      "凸でない: 視点によっては表の面が別の表の面の一部を隠すので, "
-     "背面除去だけでは隠面がいつも消えるとは限らない. 奥行きテストが必要.",
+     "バックフェースカリングだけでは隠面がいつも消えるとは限らない. 奥行きテストが必要.",
      "Невыпуклый: при некоторых положениях глаза лицевая грань закрывает часть другой лицевой "
      "грани, поэтому одно отсечение нелицевых граней не всегда удаляет невидимые поверхности; "
      "нужен ещё тест глубины."},
@@ -751,6 +780,9 @@ constexpr Phrase kPhrases[] = {
     {"{0} is behind {1}", "{0} が {1} の奥", "{0} за {1}"},
     {"nearer one changes: they interpenetrate", "手前のものが入れ替わる: 貫通している",
      "ближний меняется: они взаимно проникают"},
+    {"nearer one differs between parts: one wraps around the other",
+     "部分によって手前のものが異なる: 一方が他方を包んでいる",
+     "ближний различается по частям: один охватывает другой"},
     {"{0} entirely behind the plane of {1}", "{0} は {1} の平面の完全に奥",
      "{0} целиком за плоскостью {1}"},
     {"{0} entirely in front of the plane of {1}", "{0} は {1} の平面の完全に手前",

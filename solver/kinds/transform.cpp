@@ -83,6 +83,37 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
   });
 }
 
+// The matrix as one array m0, m1, …, m(n²−1): column by column (OpenGL's layout: glLoadMatrixf
+// and glUniformMatrix4fv without transposing read it so) or row by row; the step shows which
+// entry of the matrix each m_k is, as on paper.
+Value array_with_steps(const MatX<Exact>& m, bool column_major, Derivation* steps) {
+  const auto n = static_cast<std::size_t>(m.rows());
+  std::vector<Exact> array;
+  std::vector<MathText> names(n * n);
+  for (std::size_t k = 0; k < n * n; ++k) {
+    const std::size_t i = column_major ? k % n : k / n, j = column_major ? k / n : k % n;
+    array.push_back(m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+    names[i * n + j] = math(fmt::format("m{}", k), fmt::format("m_{{{}}}", k));
+  }
+  if (steps) {
+    Step& step = steps->add(column_major ? "The matrix as an array, column by column"
+                                         : "The matrix as an array, row by row",
+                            math("M = ") + matrix_of(names, n), {},
+                            math(fmt::format("(m0, …, m{}) = ", n * n - 1),
+                                 fmt::format("(m_{{0}}, \\dots, m_{{{}}}) = ", n * n - 1)) +
+                                vec(array));
+    if (column_major)
+      step.note = n == 4 ? "Each column of M lies in one piece: m0–m2 is the image of the x axis, "
+                           "m4–m6 that of the y axis, m8–m10 that of the z axis, and m12–m14 the "
+                           "translation (where the origin goes)."
+                         : "Each column of M lies in one piece: m0–m1 is the image of the x axis, "
+                           "m3–m4 that of the y axis, and m6–m7 the translation (where the origin "
+                           "goes).";
+    steps->yields("array");
+  }
+  return Value::vector(array);
+}
+
 struct Transform {
   static constexpr const char* kName = "transform";
   static constexpr const char* kSummary =
@@ -92,8 +123,11 @@ struct Transform {
     std::vector<TransformStep> steps;
     std::vector<std::vector<Exact>> points;
     Api api = Api::OpenGL;  // DirectX prints every matrix in row-vector form (the transpose)
+    // `array`: the matrix as the 16 (2-D: 9) numbers of an array, m0, m1, … taken column by
+    // column (OpenGL's layout, glLoadMatrixf) or row by row.
+    std::optional<bool> column_major;
   };
-  static std::vector<std::string> given_fields() { return {"dim", "steps", "points"}; }
+  static std::vector<std::string> given_fields() { return {"dim", "steps", "points", "array"}; }
   // Error carried forward: the points moved by the student's own matrix, and its inverse.
   static Answers carry_forward(const Given& g, const Answers& student) {
     Answers out;
@@ -101,6 +135,13 @@ struct Transform {
     if (auto p = carried_points(student, g.points, n, g.api)) out.set("points", std::move(*p));
     if (auto inverse = carried_inverse(student, "matrix", n))
       out.set("inverse", std::move(*inverse));
+    // The array of the student's own matrix, in the asked order.
+    if (const auto m = g.column_major ? carried(student, "matrix", n * n) : std::nullopt) {
+      std::vector<Exact> array;
+      for (std::size_t k = 0; k < n * n; ++k)
+        array.push_back(*g.column_major ? (*m)[(k % n) * n + k / n] : (*m)[k]);
+      out.set("array", Value::vector(array));
+    }
     return out;
   }
   static std::vector<AnswerSpec> answers() {
@@ -109,7 +150,11 @@ struct Transform {
             {.name = "inverse",
              .kind = AnswerKind::Transform,
              .depends_on = {"matrix"},
-             .symbols = {"M⁻¹"}}};
+             .symbols = {"M⁻¹"}},
+            {.name = "array",
+             .kind = AnswerKind::Vector,
+             .depends_on = {"matrix"},
+             .needs_given = "array"}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {
@@ -118,6 +163,8 @@ struct Transform {
     g.dim = r.has("dim") ? static_cast<int>(to_double(r.number("dim"))) : 3;
     if (g.dim != 2 && g.dim != 3) r.fail("dim", "must be 2 or 3");
     g.steps = read_transform_steps(r, "steps", g.dim, c);
+    if (r.has("array"))
+      g.column_major = r.word("array", {"column_major", "row_major"}) == "column_major";
     if (r.has("points")) {
       const std::size_t count = r.list_size("points");
       for (std::size_t i = 0; i < count; ++i) {
@@ -203,6 +250,8 @@ struct Transform {
     Answers out;
     out.set("matrix", matrix_value(paper_form(m, g.api)));
     if (steps) steps->yields("matrix");
+    if (g.column_major)
+      out.set("array", array_with_steps(paper_form(m, g.api), *g.column_major, steps));
     out.set("points",
             transform_points_with_steps(m, g.points, "Transform a point", "P", steps, g.api));
     // det M is the product of the steps' determinants (rotations and translations have 1).
@@ -323,8 +372,11 @@ KindInfo transform_kind() {
   k.order = 60;
   k.doc_given =
       "`dim` (2/3), `steps` (`translate`, `scale`, `rotate_x/y/z`, `rotate` (2D angle or 3D "
-      "{`axis`, `angle`}), `shear`), `points`";
-  k.doc_answers = "`matrix` (first step applied first: M = A₃A₂A₁), `points`, `inverse`";
+      "{`axis`, `angle`}), `shear`), `points`, `array` (`column_major`: OpenGL's layout, or "
+      "`row_major`)";
+  k.doc_answers =
+      "`matrix` (first step applied first: M = A₃A₂A₁), `points`, `inverse`, `array` (with "
+      "`array: column_major` or `row_major`: the matrix's entries m0, m1, … in that order)";
   k.accuracy_given = accuracy_given;
   return k;
 }

@@ -173,6 +173,14 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
       }
       spec.given = std::move(parsed);
       spec.given_node.reset(given);
+      // A given drawn whole (a problem with none: default_problem) asks what it makes sense
+      // of, as a written problem's default `ask` does (no `array` where none is given).
+      if (!keep_shape)
+        std::erase_if(spec.ask, [&](const std::string& name) {
+          const AnswerSpec* a = kind.answer(name);
+          return a && !a->needs_given.empty() &&
+                 !static_cast<const YAML::Node&>(given)[a->needs_given].IsDefined();
+        });
       spec.drawn_answers = std::make_shared<const Answers>(std::move(answers));
       if (given_text) *given_text = text;
       return spec;

@@ -1,0 +1,239 @@
+// Homogeneous coordinates of a point (seed 002): a point (x, y) is (w·x, w·y, w) for every w ≠ 0,
+// so (5, 7) is (5, 7, 1), (10, 14, 2), …; a homogeneous (X, Y, W) is the point (X/W, Y/W); and
+// two tuples are one point when their quotients are equal. In 2-D or 3-D.
+#include <fmt/format.h>
+
+#include "solver/input/given_reader.hpp"
+#include "solver/problem/generate.hpp"
+#include "solver/problem/registry.hpp"
+#include "solver/steps/kind_steps.hpp"
+
+namespace frustum {
+
+namespace {
+
+// The names written in the formulas: x, y[, z] and X, Y[, Z], W.
+MathText coordinates(std::size_t dim, bool upper, bool with_w) {
+  static constexpr const char* kLower[] = {"x", "y", "z"};
+  static constexpr const char* kUpper[] = {"X", "Y", "Z"};
+  std::string text = "(";
+  for (std::size_t i = 0; i < dim; ++i)
+    text += std::string(i ? ", " : "") + (upper ? kUpper[i] : kLower[i]);
+  if (with_w) text += upper ? ", W" : ", w";
+  return math(text + ")");
+}
+
+// (w·x, w·y[, w·z], w).
+MathText scaled_names(std::size_t dim) {
+  static constexpr const char* kLower[] = {"x", "y", "z"};
+  std::string unicode = "(", latex = "(";
+  for (std::size_t i = 0; i < dim; ++i) {
+    unicode += fmt::format("{}w·{}", i ? ", " : "", kLower[i]);
+    latex += fmt::format("{}w\\cdot {}", i ? ", " : "", kLower[i]);
+  }
+  return math(unicode + ", w)", latex + ", w)");
+}
+
+struct Homogeneous {
+  static constexpr const char* kName = "homogeneous";
+  static constexpr const char* kSummary = "a point in homogeneous coordinates and back";
+  static constexpr ConventionUse kUses{.api = false, .angles = false};
+  struct Given {
+    std::vector<Exact> point;                     // Cartesian, 2 or 3 coordinates
+    std::optional<Exact> w;                       // the weight of `homogeneous`
+    std::optional<std::vector<Exact>> candidate;  // a homogeneous tuple: dim + 1 numbers
+  };
+  static std::vector<std::string> given_fields() { return {"point", "w", "candidate"}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{.name = "homogeneous", .kind = AnswerKind::Vector, .needs_given = "w"},
+            {.name = "cartesian", .kind = AnswerKind::Vector, .needs_given = "candidate"},
+            {.name = "same_point",
+             .kind = AnswerKind::Bool,
+             .depends_on = {"cartesian"},
+             .needs_given = "candidate"}};
+  }
+
+  static Given parse(GivenReader& r, const Conventions&) {
+    Given g;
+    const std::size_t given = r.has("point") && r.is_list("point") ? r.node()["point"].size() : 0;
+    if (given != 2 && given != 3) r.fail("point", "give the point's 2 or 3 coordinates");
+    const std::size_t dim = given;
+    g.point = r.numbers("point", dim);
+    if (r.has("w")) {
+      g.w = r.number("w");
+      if (exact_sign(*g.w) == 0) r.fail("w", "must not be 0: (0, 0, 0) is no point");
+    }
+    if (r.has("candidate")) {
+      g.candidate = r.numbers("candidate", dim + 1);
+      if (exact_sign(g.candidate->back()) == 0)
+        r.fail("candidate", "its last number (W) must not be 0: W = 0 is a point at infinity");
+    }
+    if (!g.w && !g.candidate) r.fail("w", "give w (to write the point) or candidate (to read one)");
+    return g;
+  }
+
+  // The mistakes: the coordinates not multiplied by w (only w appended), or w kept at 1; X, Y
+  // multiplied by W instead of divided, or W simply dropped.
+  static std::vector<Misconception> misconceptions(const Given& g) {
+    std::vector<Misconception> out;
+    const std::size_t dim = g.point.size();
+    if (g.w && exact_sign(*g.w - 1) != 0) {
+      std::vector<Exact> appended = g.point, unit_w;
+      appended.push_back(*g.w);
+      for (const Exact& x : g.point) unit_w.push_back(canonical(*g.w * x));
+      unit_w.push_back(Exact(1));
+      Answers a, b;
+      a.set("homogeneous", Value::vector(appended));
+      b.set("homogeneous", Value::vector(unit_w));
+      out.push_back({"w appended, coordinates not multiplied",
+                     "Every coordinate is multiplied by w, not only the last one added: "
+                     "(x, y) with weight w is (w·x, w·y, w).",
+                     "Homogeneous coordinates of the point", a});
+      out.push_back({"coordinates multiplied, w left at 1",
+                     "The last coordinate is w itself: after multiplying x and y by w, write w, "
+                     "not 1.",
+                     "Homogeneous coordinates of the point", b});
+    }
+    if (g.candidate && exact_sign(g.candidate->back() - 1) != 0 &&
+        exact_sign(g.candidate->back() + 1) != 0) {
+      const Exact& w = g.candidate->back();
+      std::vector<Exact> times, dropped;
+      for (std::size_t i = 0; i < dim; ++i) {
+        times.push_back(canonical((*g.candidate)[i] * w));
+        dropped.push_back((*g.candidate)[i]);
+      }
+      Answers a, b;
+      a.set("cartesian", Value::vector(times));
+      a.set("same_point", Value::boolean(same_point(g.point, times)));
+      b.set("cartesian", Value::vector(dropped));
+      b.set("same_point", Value::boolean(same_point(g.point, dropped)));
+      out.push_back({"multiplied by W instead of dividing",
+                     "From (X, Y, W) the point is (X/W, Y/W): divide by W.", "Back to the point",
+                     a});
+      out.push_back({"W dropped without dividing",
+                     "Dropping W gives the point only when W = 1; otherwise divide X and Y by W.",
+                     "Back to the point", b});
+    }
+    return out;
+  }
+
+  // Error carried forward: whether the student's own point is the given one.
+  static Answers carry_forward(const Given& g, const Answers& student) {
+    Answers out;
+    if (const auto p = carried(student, "cartesian", g.point.size()))
+      out.set("same_point", Value::boolean(same_point(g.point, *p)));
+    return out;
+  }
+
+  static bool same_point(const std::vector<Exact>& a, const std::vector<Exact>& b) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (exact_sign(a[i] - b[i]) != 0) return false;
+    return true;
+  }
+
+  static Answers solve(const Given& g, Derivation* steps) {
+    const std::size_t dim = g.point.size();
+    Answers out;
+    if (g.w) {
+      std::vector<Exact> h;
+      MathText substituted = math("(");
+      for (std::size_t i = 0; i < dim; ++i) {
+        h.push_back(canonical(*g.w * g.point[i]));
+        substituted += math(i ? ", " : "") + exact(*g.w) + math("·", "\\cdot ") + exact(g.point[i]);
+      }
+      h.push_back(*g.w);
+      substituted += math(", ") + exact(*g.w) + math(")");
+      if (steps) {
+        steps->add("Homogeneous coordinates of the point",
+                   coordinates(dim, false, false) + math(" ≡ ", " \\equiv ") + scaled_names(dim) +
+                       math(", w ≠ 0", ",\\ w \\neq 0"),
+                   substituted, vec(h));
+        steps->yields("homogeneous");
+      }
+      out.set("homogeneous", Value::vector(h));
+    }
+    if (g.candidate) {
+      const std::vector<Exact>& c = *g.candidate;
+      const Exact& w = c.back();
+      std::vector<Exact> p;
+      MathText substituted = math("(");
+      for (std::size_t i = 0; i < dim; ++i) {
+        p.push_back(canonical(c[i] / w));
+        // W in brackets when it is negative or not a whole number: 10/(−2), 5/(1/2).
+        const bool bracket = exact_sign(w) < 0 || needs_approx(w);
+        substituted += math(i ? ", " : "") + exact(c[i]) + math(bracket ? "/(" : "/") + exact(w) +
+                       math(bracket ? ")" : "");
+      }
+      substituted += math(")");
+      std::string names = "(";
+      std::string latex = "\\left(";
+      static constexpr const char* kUpper[] = {"X", "Y", "Z"};
+      for (std::size_t i = 0; i < dim; ++i) {
+        names += fmt::format("{}{}/W", i ? ", " : "", kUpper[i]);
+        latex += fmt::format("{}\\frac{{{}}}{{W}}", i ? ", " : "", kUpper[i]);
+      }
+      const bool same = same_point(g.point, p);
+      if (steps) {
+        steps->add("Back to the point",
+                   coordinates(dim, true, true) + math(" ↦ ", " \\mapsto ") +
+                       math(names + ")", latex + "\\right)"),
+                   substituted, vec(p, true));
+        steps->yields("cartesian");
+        Step& step = steps->add(
+            "The same point?",
+            word("equal quotients") + math(" ⇔ ", " \\Leftrightarrow ") + word("the same point"),
+            vec(p) + math(same ? " = " : " ≠ ", same ? " = " : " \\neq ") + vec(g.point),
+            word(same ? "yes" : "no"));
+        if (!same) {
+          std::vector<Exact> scaled;
+          for (const Exact& x : g.point) scaled.push_back(canonical(w * x));
+          scaled.push_back(w);
+          step.note = fmt::format("With W = {} the point {} is written {}.", exact(w).unicode,
+                                  vec(g.point).unicode, vec(scaled).unicode);
+        }
+        steps->yields("same_point");
+      }
+      out.set("cartesian", Value::vector(p));
+      out.set("same_point", Value::boolean(same));
+    }
+    return out;
+  }
+
+  // Default generator: a small integer point, a weight of 2–4 (or a fraction when not nice), and
+  // a candidate that is the point (half of the draws) or a near miss of it (one coordinate off by
+  // one before scaling: the slip the exercise is about).
+  static YAML::Node generate(Rng& rng, const GenerateOptions& o) {
+    const std::size_t dim = rng.integer(0, 2) == 0 ? 3 : 2;
+    std::vector<std::int64_t> point;
+    for (std::size_t i = 0; i < dim; ++i) point.push_back(rng.integer(-9, 9));
+    YAML::Node g;
+    g["point"] = gen_list(point);
+    const std::int64_t w = rng.integer(2, 4) * (rng.integer(0, 3) == 0 ? -1 : 1);
+    g["w"] = o.nice || rng.integer(0, 1) == 0 ? gen_number(w) : gen_fraction(1, std::abs(w));
+    std::vector<std::int64_t> candidate;
+    const std::int64_t cw = rng.integer(2, 5);
+    const bool same = rng.integer(0, 1) == 0;
+    const std::size_t off =
+        static_cast<std::size_t>(rng.integer(0, static_cast<std::int64_t>(dim) - 1));
+    for (std::size_t i = 0; i < dim; ++i)
+      candidate.push_back(cw * point[i] + (!same && i == off ? 1 : 0));
+    candidate.push_back(cw);
+    g["candidate"] = gen_list(candidate);
+    return g;
+  }
+};
+
+}  // namespace
+
+KindInfo homogeneous_kind() {
+  KindInfo k = make_kind<Homogeneous>();
+  k.order = 55;
+  k.doc_given =
+      "`point` (2 or 3 coordinates), `w` (the weight, not 0) and/or `candidate` (a homogeneous "
+      "tuple, its last number W not 0)";
+  k.doc_answers =
+      "`homogeneous` (w·point, w), `cartesian` (the candidate's point), `same_point` (yes/no)";
+  return k;
+}
+
+}  // namespace frustum
