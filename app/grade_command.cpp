@@ -172,7 +172,7 @@ int run_grade(const GradeOptions& given, const Output& o) {
       write_file_atomically(*g.prairielearn,
                             json_text(prairielearn_results(report, *g.lang)) + "\n");
     if (g.html) {
-      const Figures figures = problem_figures(graded, *g.lang);
+      const Figures figures = student_figures(graded, report, *g.lang);
       write_file_atomically(*g.html,
                             render_feedback_html(report, *g.lang, html_math_head(), &figures));
     }

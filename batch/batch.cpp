@@ -427,7 +427,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
       const std::vector<std::string> parts = problem_feedback_markdown(report, options.lang);
       out.write("feedback/" + stems[i] + ".md",
                 render_feedback_markdown(report, options.lang, parts));
-      const Figures figures = problem_figures(graded_set, options.lang);
+      const Figures figures = student_figures(graded_set, report, options.lang);
       out.write("feedback/" + stems[i] + ".html",
                 render_feedback_html(report, options.lang, math_head, &figures));
       out.write("gradescope/" + stems[i] + ".json",

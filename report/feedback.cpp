@@ -6,6 +6,7 @@
 #include "report/report.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/derivation/svg.hpp"
+#include "solver/problem/problem_figure.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {
@@ -167,6 +168,17 @@ std::string render_feedback_markdown(const GradeReport& r, Lang lang,
   return out;
 }
 
+Figures student_figures(const ProblemSet& set, const GradeReport& r, Lang lang) {
+  std::map<std::string, AnswerPair> answers;
+  for (const ProblemGrade& p : r.problems)
+    for (const AnswerGrade& a : p.answers) {
+      AnswerPair& pair = answers[p.id];
+      if (a.got) pair.student.set(a.name, *a.got);
+      pair.key.set(a.name, a.expected);
+    }
+  return feedback_figures(set, lang, answers);
+}
+
 std::string render_problem_feedback_html(const ProblemGrade& p, Lang lang, bool with_key,
                                          MathMarkup markup, const Figure* figure) {
   std::string out = fmt::format(
@@ -174,7 +186,7 @@ std::string render_problem_feedback_html(const ProblemGrade& p, Lang lang, bool 
       "{}</h2>\n",
       html_escape(p.id), html_escape(p.id), html_escape(p.kind), score_text(p.score),
       score_text(p.max_score));
-  if (figure && (with_key || !figure->shows_answers)) out += html_figure(*figure, lang);
+  if (figure && (with_key || !figure->shows_answers)) out += html_figure(*figure, lang, with_key);
   if (p.error)
     return out +
            fmt::format("<p class=\"error\">{}</p>\n</section>\n", html_escape(p.error->format()));

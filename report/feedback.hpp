@@ -29,6 +29,11 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
 std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head,
                                  const Figures* figures);
 
+// The pictures of a student's feedback page, graded against `set` (the student's variant):
+// each problem's picture, with the student's own answer drawn in where it can be (a clipped
+// segment or polygon; feedback_figures in problem_figure.hpp).
+Figures student_figures(const ProblemSet& set, const GradeReport& r, Lang lang);
+
 // One problem's part of that page (a <section>); without the key (the expected answers and
 // the derivations) where the platform shows the key by its own policy, with formulas for the
 // page's own KaTeX or for its host's MathJax.

@@ -178,5 +178,61 @@ TEST(Figures, FeedbackShowsThePictureAndHidesAnswersWithTheKey) {
   }
 }
 
+// A student's wrong clipped segment or polygon is drawn over the givens (dashed), the right
+// one beside it only where the key is shown; a right answer, `none` and an answer outside the
+// picture draw nothing more; the caption says which line is whose, in the page's language.
+TEST(Figures, FeedbackDrawsTheStudentsWrongClippingAndTheRightOneWithTheKey) {
+  const ProblemSet set = load_problem_set_from_string(R"yaml(problems:
+  - id: seg
+    kind: clip_line
+    given: {p: [-2, 5], q: [3, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}
+    ask: [clipped]
+  - id: poly
+    kind: clip_polygon
+    given:
+      points: [[0, 0], [4, 0], [0, 4]]
+      window: {xmin: 1, xmax: 3, ymin: 1, ymax: 3}
+)yaml",
+                                                      "clip.yaml");
+  const auto figures_for = [&](const std::string& seg, const std::string& poly) {
+    const GradeReport r =
+        grade(set, load_submission_from_string("student: s\nanswers:\n  seg: {clipped: " + seg +
+                                                   "}\n  poly: {clipped: " + poly + "}\n",
+                                               "a.yaml"));
+    return std::pair{r, student_figures(set, r, Lang::Ja)};
+  };
+  // Wrong: both drawn, dashed, with the key's green only in svg_with_key.
+  const auto [wrong, drawn] = figures_for("[[0, 3], [3, 1]]", "[[1, 1], [3, 1], [3, 3], [1, 3]]");
+  for (const char* id : {"seg", "poly"}) {
+    const Figure* f = find_figure(&drawn, id);
+    ASSERT_TRUE(f) << id;
+    EXPECT_TRUE(f->student_answer) << id;
+    EXPECT_NE(f->svg.find("class=\"student\""), std::string::npos) << id;
+    EXPECT_EQ(f->svg.find("class=\"key\""), std::string::npos) << id;
+    EXPECT_NE(f->svg_with_key.find("class=\"key\""), std::string::npos) << id;
+  }
+  const ProblemGrade& seg = wrong.problems[0];
+  const std::string keyless = render_problem_feedback_html(seg, Lang::Ja, false, MathMarkup::KaTeX,
+                                                           find_figure(&drawn, "seg"));
+  const std::string keyed = render_problem_feedback_html(seg, Lang::Ja, true, MathMarkup::KaTeX,
+                                                         find_figure(&drawn, "seg"));
+  EXPECT_NE(keyless.find("赤い破線: あなたの解答.</figcaption>"), std::string::npos) << keyless;
+  EXPECT_NE(keyless.find(base64(find_figure(&drawn, "seg")->svg)), std::string::npos);
+  EXPECT_NE(keyed.find("緑: 正しい解答"), std::string::npos);
+  EXPECT_NE(keyed.find(base64(find_figure(&drawn, "seg")->svg_with_key)), std::string::npos);
+  // Right (the key's own numbers), none, and far outside the picture: the plain figure.
+  for (const auto& [s, p] :
+       {std::pair{"[[0, 3.4], [3, 1]]", "[[1, 1], [3, 1], [1, 3]]"}, std::pair{"none", "none"},
+        std::pair{"[[0, 3], [300, 1]]", "[[1, 1], [3, 1], [3, -90]]"}}) {
+    const auto [r, plain] = figures_for(s, p);
+    for (const char* id : {"seg", "poly"}) {
+      const Figure* f = find_figure(&plain, id);
+      ASSERT_TRUE(f) << id << " " << s;
+      EXPECT_FALSE(f->student_answer) << id << " " << s;
+      EXPECT_EQ(f->svg.find("class=\"student\""), std::string::npos) << id << " " << s;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace frustum

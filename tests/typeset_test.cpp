@@ -136,6 +136,52 @@ std::pair<std::string, int> lualatex(const std::filesystem::path& dir, const std
   return run({"lualatex", "-interaction=nonstopmode", "-halt-on-error", "set.tex"}, in_dir);
 }
 
+// Exact values too long to read (nested radicals of several hundred characters) and long
+// formulas stay within the page: LuaLaTeX reports no overfull line, and in Chromium no formula
+// of the HTML page is wider than its box (800 pixels wide), and the values are shown as their
+// decimals cut after six digits.
+TEST(Typeset, LongExactValuesStayWithinThePage) {
+  const char* yaml = R"yaml(title: long exact values
+problems:
+  - id: v
+    kind: vectors
+    given: {a: [3, "sqrt(2)", "7/3"], b: ["5/7", "11/13", "sqrt(5)"]}
+  - id: pl
+    kind: plane
+    given: {points: [[1, "2/7", 3], ["sqrt(3)", 5, "1/9"], [7, "13/11", "sqrt(2)"]]}
+)yaml";
+  const SetResult set = solve_set(load_problem_set_from_string(yaml, "long.yaml"), true);
+  const std::string text = render_text(set, TextStyle{});
+  EXPECT_NE(text.find("sin θ = 0.533707…"), std::string::npos) << text.substr(0, 3000);
+  EXPECT_NE(text.find("n̂ = (−0.150903…, −0.499370…, −0.853145…)"), std::string::npos);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("frustum-long-" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir / "var");
+  std::filesystem::create_directories(dir / "profile");
+  const auto [log, status] = lualatex(dir, render_latex(set, Lang::En));
+  ASSERT_EQ(status, 0) << log.substr(log.size() > 3000 ? log.size() - 3000 : 0);
+  const std::string tex_log = test::read_file((dir / "set.log").string());
+  EXPECT_EQ(tex_log.find("Overfull \\hbox"), std::string::npos) << tex_log.substr(
+      tex_log.find("Overfull") == std::string::npos ? 0 : tex_log.find("Overfull"), 400);
+  // The page, with a script after KaTeX's that counts the formulas wider than their box.
+  std::string html = render_html(set, Lang::En);
+  html.insert(html.rfind("</body>"),
+              "<script>var n = 0; document.querySelectorAll('.math, td').forEach(function (e) { "
+              "if (e.scrollWidth > e.clientWidth + 1) n++; }); "
+              "document.body.setAttribute('data-overflow', String(n));</script>\n");
+  const std::string page = (dir / "long.html").string();
+  std::ofstream(page) << html;
+  RunOptions quiet;
+  quiet.err = OutputTo::Null;
+  quiet.seconds = 120;
+  const auto [dom, dom_status] = run(
+      chromium((dir / "profile").string(), page, {"--window-size=800,1200", "--dump-dom"}), quiet);
+  EXPECT_NE(dom.find("data-math=\"yes\""), std::string::npos) << "the page's script did not run";
+  EXPECT_NE(dom.find("data-overflow=\"0\""), std::string::npos) << dom.substr(
+      dom.find("data-overflow") == std::string::npos ? 0 : dom.find("data-overflow"), 40);
+  std::filesystem::remove_all(dir);
+}
+
 // `solve --format latex` compiles with Debian's LuaLaTeX for every seed set.
 TEST(Typeset, LatexDocumentsCompileWithLualatex) {
   ASSERT_TRUE(std::filesystem::exists("/usr/bin/lualatex"))

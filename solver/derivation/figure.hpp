@@ -17,6 +17,11 @@ struct Figure {
   // The picture shows answers (the hidden edges, the painter's order), not only the givens:
   // feedback shows it only where it shows the key.
   bool shows_answers = false;
+  // Feedback: the student's own answer drawn over the givens (dashed red; it never shows the
+  // key), and `svg_with_key` the same picture with the right answer too (green), for pages
+  // that show the key.
+  bool student_answer = false;
+  std::string svg_with_key = {};
 };
 
 using Figures = std::map<std::string, Figure>;  // by problem id

@@ -1,6 +1,9 @@
 #include "solver/derivation/math_text.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 
 #include "solver/util/exact_format.hpp"
 
@@ -92,9 +95,49 @@ std::string latex_decimal(const std::string& d) {
 
 }  // namespace
 
+namespace {
+
+// An exact form longer than this (characters) is not one a student can read or check: a
+// derivation shows its decimal expansion instead, cut after six significant digits and
+// followed by "…" (the digits shown are the value's own; the exact value stays in the JSON).
+constexpr std::size_t kReadableExact = 40;
+
+std::size_t characters(const std::string& s) {
+  std::size_t n = 0;
+  for (const unsigned char c : s) n += (c & 0xC0) != 0x80;  // UTF-8 lead bytes
+  return n;
+}
+
+// e's first six significant digits, cut (not rounded), as a plain decimal between 10⁻⁴ and
+// 10⁶ and in e-notation beyond; from the double nearest e (its 17 digits settle the first six
+// unless e lies within 10⁻¹⁶ of a six-digit boundary).
+std::string cut_decimal(const Exact& e) {
+  const double d = to_double(e);
+  if (!std::isfinite(d) || d == 0) return format_exact_approx(e, 6);
+  const std::string sci = fmt::format("{:.16e}", std::abs(d));  // "5.3370212345678901e-01"
+  const std::string digits = sci.substr(0, 1) + sci.substr(2, 5);
+  const int exponent = std::stoi(sci.substr(sci.find('e') + 1));
+  std::string out = d < 0 ? "-" : "";
+  if (exponent < -4 || exponent > 5)
+    return out + digits.substr(0, 1) + "." + digits.substr(1) + (exponent < 0 ? "e-" : "e+") +
+           std::to_string(std::abs(exponent));
+  if (exponent < 0)
+    return out + "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits;
+  const auto point = static_cast<std::size_t>(exponent + 1);
+  return out + digits.substr(0, point) + (point < digits.size() ? "." + digits.substr(point) : "");
+}
+
+MathText cut(const Exact& e) {
+  const std::string d = cut_decimal(e);
+  return {unicode_minus(d) + "…", latex_decimal(d) + "\\ldots"};
+}
+
+}  // namespace
+
 MathText exact(const Exact& e, bool with_approx) {
   const Exact c = canonical(e);
   MathText m{format_exact(c, MathStyle::Unicode), format_exact(c, MathStyle::Latex)};
+  if (with_approx && needs_approx(c) && characters(m.unicode) > kReadableExact) return cut(c);
   if (with_approx && needs_approx(c)) {
     const std::string d = format_exact_approx(c);
     m.unicode += " ≈ " + unicode_minus(d);
@@ -112,22 +155,40 @@ MathText long_number(long double v) {
 }
 
 MathText vec(const std::vector<Exact>& v, bool with_approx) {
-  MathText m = math("(", "\\left(");
+  std::vector<MathText> entries;
   bool any_approx = false;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    if (i) m += math(", ");
-    m += exact(v[i]);
-    any_approx = any_approx || needs_approx(canonical(v[i]));
+  std::size_t length = 0;
+  for (const Exact& e : v) {
+    entries.push_back(exact(e));
+    length += characters(entries.back().unicode);
+    any_approx = any_approx || needs_approx(canonical(e));
   }
-  m += math(")", "\\right)");
+  // Too long to read as exact forms: the decimals, cut after six digits.
+  if (with_approx && any_approx && length > 2 * kReadableExact) {
+    MathText m = math("(", "\\left(");
+    for (std::size_t i = 0; i < v.size(); ++i)
+      m += (i ? math(", ") : math("")) +
+           (needs_approx(canonical(v[i])) ? cut(canonical(v[i])) : exact(v[i]));
+    return m + math(")", "\\right)");
+  }
+  // A long vector may break after its commas: \left( … \right) is one unbreakable box, so its
+  // brackets are then \bigl( \bigr).
+  const bool breakable = length > 40;
+  const std::string open = breakable ? "\\bigl(" : "\\left(";
+  const std::string close = breakable ? "\\bigr)" : "\\right)";
+  const std::string comma = breakable ? ", \\allowbreak " : ", ";
+  MathText m = math("(", open);
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    m += (i ? math(", ", comma) : math("")) + entries[i];
+  m += math(")", close);
   if (with_approx && any_approx) {
-    std::string d = "(", dl = "\\left(";
+    std::string d = "(", dl = open;
     for (std::size_t i = 0; i < v.size(); ++i) {
-      if (i) d += ", ", dl += ", ";
+      if (i) d += ", ", dl += comma;
       d += format_exact_approx(v[i]);
       dl += latex_decimal(format_exact_approx(v[i]));
     }
-    m += math(" ≈ " + unicode_minus(d + ")"), " \\approx " + dl + "\\right)");
+    m += math(" ≈ " + unicode_minus(d + ")"), " \\approx " + dl + close);
   }
   return m;
 }

@@ -12,6 +12,11 @@ namespace frustum {
 
 namespace {
 
+bool open_pen(PlaneDrawing::Pen pen) {
+  using Pen = PlaneDrawing::Pen;
+  return pen == Pen::Open || pen == Pen::KeyOpen || pen == Pen::StudentOpen;
+}
+
 constexpr double kTikzSide = 6.5;  // cm
 constexpr double kSvgSide = 320;   // px
 constexpr double kSvgMargin = 28;  // px around the box, for the axes' names and labels
@@ -67,6 +72,12 @@ PlaneDrawing PlaneDrawing::around(const std::vector<Eigen::Vector2d>& points, bo
                       hi.x() + margin, hi.y() + margin, grid);
 }
 
+bool PlaneDrawing::contains(const std::vector<Eigen::Vector2d>& points) const {
+  for (const Eigen::Vector2d& q : points)
+    if (!(q.x() >= x0_ && q.x() <= x1_ && q.y() >= y0_ && q.y() <= y1_)) return false;
+  return true;
+}
+
 void PlaneDrawing::polyline(const std::vector<Eigen::Vector2d>& points, Pen pen) {
   strokes_.push_back({points, pen});
 }
@@ -91,11 +102,14 @@ std::string PlaneDrawing::tikz() const {
                      y1_ + 0.3);
   out += fmt::format("\\node[below left,gray] at ({},{}) {{${}, {}$}};\n", x0_, y0_, x0_, y0_);
   for (const Stroke& s : strokes_) {
-    out += s.pen == Pen::Window ? "\\draw[thick,blue] " : "\\draw[thick] ";
+    out += s.pen == Pen::Window                         ? "\\draw[thick,blue] "
+           : s.pen == Pen::Key || s.pen == Pen::KeyOpen ? "\\draw[line width=2pt,green!50!black] "
+           : s.pen == Pen::Student || s.pen == Pen::StudentOpen ? "\\draw[thick,red,dashed] "
+                                                                : "\\draw[thick] ";
     for (std::size_t i = 0; i < s.points.size(); ++i)
       out += fmt::format("{}({},{})", i ? " -- " : "", tikz_number(s.points[i].x()),
                          tikz_number(s.points[i].y()));
-    out += s.pen == Pen::Open ? ";\n" : " -- cycle;\n";
+    out += open_pen(s.pen) ? ";\n" : " -- cycle;\n";
   }
   for (const Label& l : labels_)
     out += fmt::format("\\fill ({},{}) circle[radius=1.5pt] node[{}] {{{}}};\n",
@@ -116,7 +130,9 @@ std::string PlaneDrawing::svg() const {
   svg.style(
       ".grid { stroke: #d6d9de; stroke-width: 0.6 } .axis { stroke: #8a9099; stroke-width: 1 } "
       ".window { stroke: #1f5fbf; stroke-width: 2.2; fill: none } .shape { stroke: #1d232a; "
-      "stroke-width: 2.2; fill: none } .dot { fill: #1d232a } text { font: 13px sans-serif; "
+      "stroke-width: 2.2; fill: none } .key { stroke: #1a7f37; stroke-width: 4; fill: none; "
+      "stroke-opacity: 0.75 } .student { stroke: #c4262e; stroke-width: 2.2; "
+      "stroke-dasharray: 7 4; fill: none } .dot { fill: #1d232a } text { font: 13px sans-serif; "
       "fill: #1d232a } .axis-name, .corner { fill: #8a9099 } .math { font-style: italic }");
   if (grid_) {
     for (double x = x0_; x <= x1_; ++x) svg.line(at(x, y0_), at(x, y1_), "grid");
@@ -135,8 +151,11 @@ std::string PlaneDrawing::svg() const {
   for (const Stroke& s : strokes_) {
     std::vector<Eigen::Vector2d> p;
     for (const Eigen::Vector2d& q : s.points) p.push_back(at(q.x(), q.y()));
-    const char* cls = s.pen == Pen::Window ? "window" : "shape";
-    if (s.pen == Pen::Open) {
+    const char* cls = s.pen == Pen::Window                                 ? "window"
+                      : s.pen == Pen::Key || s.pen == Pen::KeyOpen         ? "key"
+                      : s.pen == Pen::Student || s.pen == Pen::StudentOpen ? "student"
+                                                                           : "shape";
+    if (open_pen(s.pen)) {
       for (std::size_t i = 1; i < p.size(); ++i) svg.line(p[i - 1], p[i], cls);
     } else {
       svg.polygon(p, cls);

@@ -13,7 +13,9 @@ namespace frustum {
 
 class PlaneDrawing {
  public:
-  enum class Pen { Window, Shape, Open };  // a clip window (blue), a shape, an open segment
+  // A clip window (blue), a shape, an open segment; the right answer (green) and a student's
+  // answer (dashed red), each closed or open.
+  enum class Pen { Window, Shape, Open, Key, KeyOpen, Student, StudentOpen };
   enum class Place { AboveLeft, AboveRight, BelowRight };
 
   // Boxes wider or taller than this many units are not drawn (drawable() is false): a picture
@@ -31,6 +33,8 @@ class PlaneDrawing {
                              double margin = 0.5);
 
   void polyline(const std::vector<Eigen::Vector2d>& points, Pen pen);
+  // Whether every point lies in the box (an answer drawn outside it would leave the picture).
+  bool contains(const std::vector<Eigen::Vector2d>& points) const;
   // A dot with a label: `math` labels (P, A, 0) are set as formulas, others as words.
   void label(const Eigen::Vector2d& at, const std::string& text, bool math, Place where);
 

@@ -48,7 +48,9 @@ std::string html_math_head_linked(const std::string& prefix);
 // The script that typesets every formula element; put it at the end of the <body>.
 std::string html_math_script();
 // A problem's picture on a page: its SVG as an image (its styles stay its own), captioned.
-std::string html_figure(const Figure& figure, Lang lang = Lang::En);
+// With `with_key`, a feedback figure's picture that also draws the right answer; a figure with
+// the student's answer drawn says under it which line is whose.
+std::string html_figure(const Figure& figure, Lang lang = Lang::En, bool with_key = false);
 // `figures`: each problem's picture by id (problem_figure.hpp), shown under its text.
 std::string render_html(const SetResult& set, Lang lang = Lang::En,
                         const Figures* figures = nullptr);

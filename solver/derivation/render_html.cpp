@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "solver/derivation/line_breaks.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/derivation/svg.hpp"
 #include "solver/util/base64.hpp"
@@ -118,11 +119,16 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup mar
                             : s.level == Step::Level::Note  ? " class=\"note-step\""
                                                            : fmt::format(" value=\"{}\"", ++number);
     out += fmt::format("<li{}><b>{}</b>", cls, svg_escape(title_in(s, lang)));
+    // A long line is set as breakable inline math in display style, within the page.
+    const auto block = [&](const MathText& m) {
+      return long_math(m) ? html_math(math("", "\\displaystyle ") + m, lang, false, markup)
+                          : html_math(m, lang, true, markup);
+    };
     for (const MathText* m : {&s.formula, &s.substitution})
-      if (!m->empty()) out += "<div class=\"math\">" + html_math(*m, lang, true, markup) + "</div>";
+      if (!m->empty()) out += "<div class=\"math\">" + block(*m) + "</div>";
     if (!s.result.empty())
-      out += "<div class=\"math result\">" +
-             html_math(math("⇒ ", "\\Rightarrow\\; ") + s.result, lang, true, markup) + "</div>";
+      out += "<div class=\"math result\">" + block(math("⇒ ", "\\Rightarrow\\; ") + s.result) +
+             "</div>";
     if (!s.note.empty())
       out += fmt::format("<div class=\"note\">{}</div>", svg_escape(note_in(s, lang)));
     out += "</li>\n";
@@ -130,12 +136,18 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup mar
   return out + "</ol>\n";
 }
 
-std::string html_figure(const Figure& figure, Lang lang) {
+std::string html_figure(const Figure& figure, Lang lang, bool with_key) {
   // The picture as an image: its styles stay its own, whatever else the page shows.
   if (figure.svg.empty()) return {};
+  const bool keyed = with_key && !figure.svg_with_key.empty();
+  const std::string caption = !figure.student_answer ? ""
+                              : keyed
+                                  ? tr("Dashed red: your answer; green: the right answer.", lang)
+                                  : tr("Dashed red: your answer.", lang);
   return fmt::format(
-      "<figure class=\"figure\"><img alt=\"{}\" src=\"data:image/svg+xml;base64,{}\"></figure>\n",
-      svg_escape(tr("Figure", lang)), base64(figure.svg));
+      "<figure class=\"figure\"><img alt=\"{}\" src=\"data:image/svg+xml;base64,{}\">{}</figure>\n",
+      svg_escape(tr("Figure", lang)), base64(keyed ? figure.svg_with_key : figure.svg),
+      caption.empty() ? "" : "<figcaption>" + svg_escape(caption) + "</figcaption>");
 }
 
 std::string render_html(const SetResult& set, Lang lang, const Figures* figures) {

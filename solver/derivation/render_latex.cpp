@@ -4,6 +4,7 @@
 // provide.
 #include <fmt/format.h>
 
+#include "solver/derivation/line_breaks.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/util/scripts.hpp"
 
@@ -19,6 +20,14 @@ std::string prose(const std::string& text) {
   return out;
 }
 
+// A formula on its own line: displayed when it fits, else inline math in display style in a
+// ragged-right paragraph, which TeX breaks after = and + and at \\allowbreak.
+std::string display(const MathText& m, Lang lang) {
+  const std::string latex = tr(m, lang).latex;
+  return long_math(m) ? "{\\raggedright\\noindent $\\displaystyle " + latex + "$\\par}\n"
+                      : "\\[ " + latex + " \\]\n";
+}
+
 std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
   std::string out = "\\begin{enumerate}\n";
   for (const Step& s : steps) {
@@ -28,8 +37,8 @@ std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
                                             : "\\textbf{") +
            prose(title_in(s, lang)) + "}\n";
     for (const MathText* m : {&s.formula, &s.substitution})
-      if (!m->empty()) out += "\\[ " + tr(*m, lang).latex + " \\]\n";
-    if (!s.result.empty()) out += "\\[ \\Rightarrow\\; " + tr(s.result, lang).latex + " \\]\n";
+      if (!m->empty()) out += display(*m, lang);
+    if (!s.result.empty()) out += display(math("⇒ ", "\\Rightarrow\\; ") + s.result, lang);
     if (!s.note.empty()) out += "{\\small " + prose(note_in(s, lang)) + "}\n";
   }
   return out + "\\end{enumerate}\n";
@@ -64,11 +73,19 @@ std::string render_latex(const SetResult& set, Lang lang, const Figures* figures
       continue;
     }
     out += steps_latex(p.derivation.steps(), lang);
-    out += "\\paragraph{" + prose(tr("Answers", lang)) + "}\n\\begin{align*}\n";
+    out += "\\paragraph{" + prose(tr("Answers", lang)) + "}\n";
+    // Aligned when every answer fits a line; otherwise one breakable line each.
+    bool fits = true;
+    for (const std::string& name : p.ask)
+      if (const Value* v = p.answers.find(name)) fits = fits && !long_math(v->shown());
+    out += fits ? "\\begin{align*}\n" : "";
     for (const std::string& name : p.ask)
       if (const Value* v = p.answers.find(name))
-        out += "\\texttt{" + latex_text(name) + "} &= " + tr(v->shown(), lang).latex + " \\\\\n";
-    out += "\\end{align*}\n";
+        out +=
+            fits ? "\\texttt{" + latex_text(name) + "} &= " + tr(v->shown(), lang).latex + " \\\\\n"
+                 : "{\\raggedright\\noindent\\texttt{" + latex_text(name) +
+                       "} $\\displaystyle = " + tr(v->shown(), lang).latex + "$\\par}\n";
+    out += fits ? "\\end{align*}\n" : "";
   }
   // Japanese needs luatexja (DejaVu has no kana or kanji: without it every Japanese character
   // is missing from the PDF); DejaVu covers Latin, Cyrillic and the Unicode of the notes.

@@ -99,7 +99,57 @@ std::optional<PlaneDrawing> plane_drawing(const ProblemSpec& p, Lang lang) {
   return std::nullopt;
 }
 
+// The points of an answer that can be drawn in the plane: clip_line's and clip_polygon's
+// `clipped` (rows of two numbers); nothing for `none`, other answers and other kinds.
+std::optional<std::vector<Eigen::Vector2d>> drawn_answer(const ProblemSpec& p, const Answers& a) {
+  if (p.kind != "clip_line" && p.kind != "clip_polygon") return std::nullopt;
+  const Value* v = a.find("clipped");
+  if (!v || v->shape != Value::Shape::Matrix || v->cols != 2 || v->rows < 2 ||
+      v->numbers.size() != static_cast<std::size_t>(2 * v->rows))
+    return std::nullopt;
+  std::vector<Eigen::Vector2d> out;
+  for (int r = 0; r < v->rows; ++r) out.emplace_back(v->numbers[2 * r], v->numbers[2 * r + 1]);
+  return out;
+}
+
+// Whether two drawn answers are the same points (a right answer needs no second drawing).
+bool same_points(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if ((a[i] - b[i]).norm() > 1e-9 * (1 + a[i].norm())) return false;
+  return true;
+}
+
 }  // namespace
+
+Figures feedback_figures(const ProblemSet& set, Lang lang,
+                         const std::map<std::string, AnswerPair>& answers) {
+  Figures out = problem_figures(set, lang);
+  for (const ProblemSpec& p : set.problems) {
+    const auto it = answers.find(p.id);
+    if (it == answers.end() || p.error || !p.info) continue;
+    try {
+      std::optional<PlaneDrawing> d = plane_drawing(p, lang);
+      const auto student = drawn_answer(p, it->second.student);
+      const auto key = drawn_answer(p, it->second.key);
+      if (!d || !d->drawable() || !student || !d->contains(*student) ||
+          (key && same_points(*student, *key)))
+        continue;
+      const bool open = p.kind == "clip_line";
+      d->polyline(*student, open ? Pen::StudentOpen : Pen::Student);
+      Figure f{d->svg(), d->tikz()};
+      f.student_answer = true;
+      if (key && d->contains(*key)) {
+        d->polyline(*key, open ? Pen::KeyOpen : Pen::Key);
+        d->polyline(*student, open ? Pen::StudentOpen : Pen::Student);  // the dashes on top
+        f.svg_with_key = d->svg();
+      }
+      out[p.id] = std::move(f);
+    } catch (const std::exception&) {  // givens a figure cannot show: the plain figure stays
+    }
+  }
+  return out;
+}
 
 std::optional<Figure> problem_figure(const ProblemSpec& p, Lang lang) {
   if (p.error || !p.info) return std::nullopt;

@@ -6,10 +6,13 @@
 // and the exam sheets show it; it never decides anything.
 #pragma once
 
+#include <map>
 #include <optional>
+#include <string>
 
 #include "solver/derivation/figure.hpp"
 #include "solver/derivation/i18n.hpp"
+#include "solver/derivation/value.hpp"
 #include "solver/problem/problem_set.hpp"
 
 namespace frustum {
@@ -20,5 +23,16 @@ std::optional<Figure> problem_figure(const ProblemSpec& problem, Lang lang = Lan
 
 // Every problem's figure in a set, by id.
 Figures problem_figures(const ProblemSet& set, Lang lang = Lang::En);
+
+// A student's answers and the key of one problem, for the picture of a feedback page.
+struct AnswerPair {
+  Answers student, key;
+};
+// The figures of a student's feedback: where a problem's answer can be drawn in its picture
+// (the clipped segment of clip_line, the clipped polygon of clip_polygon) and the student gave
+// a wrong one, it is drawn over the givens (Figure::student_answer), and svg_with_key adds the
+// right one; the student's answer is left out when it lies outside the picture.
+Figures feedback_figures(const ProblemSet& set, Lang lang,
+                         const std::map<std::string, AnswerPair>& answers);
 
 }  // namespace frustum

@@ -1,0 +1,15 @@
+// When a piece of mathematics is too long for one line of a page: more than `limit` characters
+// as written in Unicode. The renderers then let it break (inline math in \displaystyle, which
+// TeX and KaTeX break after = and + and at \allowbreak) instead of setting it in one display
+// line that would run off the page; a long vector's brackets and commas allow it (vec()).
+#pragma once
+
+#include <cstddef>
+
+#include "solver/derivation/math_text.hpp"
+
+namespace frustum {
+
+bool long_math(const MathText& m, std::size_t limit = 64);
+
+}  // namespace frustum
