@@ -87,5 +87,46 @@ TEST(VariantShape, EveryBundledProblemKeepsItsStructure) {
   EXPECT_GT(varied, 40);
 }
 
+// Variants keep their exercise's character: a segment that is clipped (neither accepted nor
+// rejected whole, not cut to a point) stays one, a segment rejected whole stays rejected, a
+// polygon clipped away stays clipped away (though the kind refuses such draws otherwise), and
+// a pixel inside its triangle stays inside.
+TEST(VariantShape, VariantsKeepTheWrittenExercisesCharacter) {
+  const ProblemSet set = load_problem_set_from_string(R"yaml(problems:
+  - id: clips
+    kind: clip_line
+    given: {p: [-2, 5], q: [3, 1], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}
+  - id: rejected
+    kind: clip_line
+    given: {p: [5, 5], q: [7, 6], window: {xmin: 0, xmax: 4, ymin: 0, ymax: 4}}
+  - id: gone
+    kind: clip_polygon
+    given: {points: [[5, 5], [8, 5], [5, 8]], window: {xmin: 0, xmax: 1, ymin: 0, ymax: 1}}
+  - id: inside
+    kind: depth_at_pixel
+    given: {triangle: [[0, 0, 6], [3, 0, 9], [0, 3, 9]], pixel: [1, 1]}
+)yaml",
+                                                      "character.yaml");
+  const std::vector<ProblemSet> variants = variants_from_seed(set, 11, 25, true);
+  ASSERT_EQ(variants.size(), 25u);
+  for (const ProblemSet& v : variants) {
+    const SetResult r = solve_set(v, false);
+    for (const ProblemResult& p : r.problems) ASSERT_FALSE(p.error) << test::error_text(p);
+    const auto flag = [&](int i, const char* name) {
+      return r.problems[i].answers.find(name)->flag;
+    };
+    const Value* clipped = r.problems[0].answers.find("clipped");
+    EXPECT_FALSE(flag(0, "accept"));
+    EXPECT_FALSE(flag(0, "reject"));
+    ASSERT_TRUE(clipped && clipped->shape == Value::Shape::Matrix && clipped->rows == 2);
+    EXPECT_FALSE(clipped->numbers[0] == clipped->numbers[2] &&
+                 clipped->numbers[1] == clipped->numbers[3])
+        << "a segment clipped to one point";
+    EXPECT_TRUE(flag(1, "reject"));
+    EXPECT_EQ(r.problems[2].answers.find("clipped")->shape, Value::Shape::Null);
+    EXPECT_TRUE(flag(3, "inside"));
+  }
+}
+
 }  // namespace
 }  // namespace frustum

@@ -95,6 +95,32 @@ std::string not_nice(const Answers& answers, const std::vector<std::string>& ask
   return "";
 }
 
+// An exercise's character, as its asked answers show it: every yes/no answer (a segment
+// accepted or not, a pixel inside, a polyhedron convex), which answers are empty (a segment or
+// polygon clipped away) and which shapes collapsed (a segment clipped to one point). A variant
+// of a written exercise keeps it: a clip that clips stays one that clips.
+std::string character(const KindInfo& kind, const Answers& answers,
+                      const std::vector<std::string>& ask) {
+  std::string out;
+  for (const std::string& name : ask) {
+    const Value* v = answers.find(name);
+    const AnswerSpec* spec = kind.answer(name);
+    if (!v || !spec) continue;
+    if (v->shape == Value::Shape::Bool) out += name + (v->flag ? "=yes " : "=no ");
+    if (v->shape == Value::Shape::Null) out += name + "=none ";
+    const bool shape = spec->kind == AnswerKind::Segment || spec->kind == AnswerKind::Polygon;
+    if (shape && v->shape == Value::Shape::Matrix && v->rows > 1 && v->cols > 0 &&
+        v->numbers.size() == static_cast<std::size_t>(v->rows * v->cols)) {
+      bool one_point = true;
+      for (int r = 1; r < v->rows; ++r)
+        for (int c = 0; c < v->cols; ++c)
+          one_point = one_point && v->numbers[r * v->cols + c] == v->numbers[c];
+      if (one_point) out += name + "=one point ";
+    }
+  }
+  return out;
+}
+
 ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::uint64_t seed,
                          const GivenTexts& avoid, std::string* given_text,
                          std::vector<std::string>* repeated) {
@@ -135,6 +161,22 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
         if (YAML::Node g = kind.generate(rng, options); given_shape(g) == shape) return g;
     return keep_shape ? redraw_values(base.given_node, rng) : kind.generate(rng, options);
   };
+  // The written exercise's character, which a default variant keeps (not a `vary:` plan: its
+  // ranges are the instructor's to choose).
+  // A written exercise that the kind would call ill-conditioned is about that case (a polygon
+  // clipped away, an eye in a face's plane): its variants are not refused for it.
+  std::optional<std::string> written;
+  bool refuse_ill = !base.hard && kind.ill_conditioned;
+  if (keep_shape) {
+    try {
+      GivenReader reader(base.given_node, file, base.field + ".given", kind.given_fields);
+      const std::any parsed = kind.parse(reader, base.conventions);
+      const Answers answers = kind.solve(parsed, nullptr);
+      written = character(kind, answers, base.ask);
+      if (refuse_ill && !kind.ill_conditioned(parsed, answers).empty()) refuse_ill = false;
+    } catch (const std::exception&) {  // the written given itself does not solve: no constraint
+    }
+  }
   for (int attempt = 0; attempt < kMaxDrawAttempts; ++attempt) {
     try {
       YAML::Node given = use_default ? default_given(attempt) : plan->draw(base.given_node, rng);
@@ -150,8 +192,7 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
       // A check of the given alone refuses before solving: such a draw is refused below too,
       // whatever solving finds, so the same draw is taken. The last attempt is checked in the
       // order below, for the reason it reports.
-      if (!base.hard && kind.ill_conditioned && kind.ill_conditioned_given_only &&
-          attempt + 1 < kMaxDrawAttempts) {
+      if (refuse_ill && kind.ill_conditioned_given_only && attempt + 1 < kMaxDrawAttempts) {
         last = kind.ill_conditioned(parsed, Answers{});
         if (!last.empty()) continue;
       }
@@ -163,9 +204,14 @@ ProblemSpec draw_problem(const ProblemSpec& base, const std::string& file, std::
             v && v->shape == Value::Shape::Matrix && v->rows == 0)
           last = name + " is empty";
       if (!last.empty()) continue;
-      if (!base.hard && kind.ill_conditioned) {
+      if (refuse_ill) {
         last = kind.ill_conditioned(parsed, answers);
         if (!last.empty()) continue;
+      }
+      if (written && character(kind, answers, base.ask) != *written) {
+        last = "not an exercise of the written one's kind (" + character(kind, answers, base.ask) +
+               "where it has " + (written->empty() ? "none of these" : *written) + ")";
+        continue;
       }
       if (base.nice && !base.hard) {  // hard cases are rarely nice: hard wins
         last = not_nice(answers, base.ask);
