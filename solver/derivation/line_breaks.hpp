@@ -10,6 +10,8 @@
 
 namespace frustum {
 
+// A matrix ([…; …] / bmatrix) cannot break: mathematics holding one counts as short, to be
+// displayed on its own centred line.
 bool long_math(const MathText& m, std::size_t limit = 64);
 
 }  // namespace frustum

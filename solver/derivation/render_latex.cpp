@@ -24,7 +24,7 @@ std::string prose(const std::string& text) {
 // ragged-right paragraph, which TeX breaks after = and + and at \\allowbreak.
 std::string display(const MathText& m, Lang lang) {
   const std::string latex = tr(m, lang).latex;
-  return long_math(m) ? "{\\raggedright\\noindent $\\displaystyle " + latex + "$\\par}\n"
+  return long_math(m) ? "\\par{\\raggedright\\noindent $\\displaystyle " + latex + "$\\par}\n"
                       : "\\[ " + latex + " \\]\n";
 }
 
@@ -83,7 +83,7 @@ std::string render_latex(const SetResult& set, Lang lang, const Figures* figures
       if (const Value* v = p.answers.find(name))
         out +=
             fits ? "\\texttt{" + latex_text(name) + "} &= " + tr(v->shown(), lang).latex + " \\\\\n"
-                 : "{\\raggedright\\noindent\\texttt{" + latex_text(name) +
+                 : "\\par{\\raggedright\\noindent\\texttt{" + latex_text(name) +
                        "} $\\displaystyle = " + tr(v->shown(), lang).latex + "$\\par}\n";
     out += fits ? "\\end{align*}\n" : "";
   }
@@ -95,7 +95,10 @@ std::string render_latex(const SetResult& set, Lang lang, const Figures* figures
       "Sans}\n\\setmonofont{DejaVu Sans Mono}\n" +
       std::string(has_cjk(out) ? kLuatexja : "") +
       std::string(pictures ? "\\usepackage{tikz}\n" : "") +
+      // Lines of prose may stretch rather than run into the margin: words Debian's TeX has no
+      // hyphenation patterns for (Russian without texlive-lang-cyrillic, long identifiers).
       "\\usepackage[margin=2cm]{geometry}\n\\setcounter{MaxMatrixCols}{20}\n\\allowdisplaybreaks\n"
+      "\\setlength{\\emergencystretch}{3em}\n"
       "\\begin{document}\n";
   return preamble + out + "\\end{document}\n";
 }
