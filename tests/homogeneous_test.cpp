@@ -157,5 +157,18 @@ TEST(LectureDepthSort, AConcavePolygonConflictsWithAStripThroughItsNotch) {
   EXPECT_NE(text.find("one wraps around the other (a concave polygon)"), std::string::npos);
 }
 
+// The tie rule of the drawing order is said where two centroids are equally deep (the
+// interpenetrating pair) and nowhere else (the concave pair: 6 and 13/2).
+TEST(LectureDepthSort, TheTieRuleIsSaidOnlyWhereDepthsTie) {
+  const SetResult set = solve_file("problems/examples/visibility.yaml");
+  const auto said = [&](const std::string& id) {
+    for (const Step& s : find(set, id).derivation.steps())
+      if (s.note == "Equal depths keep the listed order.") return true;
+    return false;
+  };
+  EXPECT_TRUE(said("depth-sort-interpenetrating"));
+  EXPECT_FALSE(said("depth-sort-concave"));
+}
+
 }  // namespace
 }  // namespace frustum

@@ -176,8 +176,13 @@ struct DepthSort {
     MathText seq;
     for (const std::string& k : order)
       seq += (seq.empty() ? MathText{} : math(" → ", " \\to ")) + word(k);
-    steps->add("Draw back to front (farthest centroid first)", {}, {}, seq).note =
-        "Equal depths keep the listed order.";
+    // Said only where two depths are equal: the tie rule decides nothing otherwise.
+    bool tie = false;
+    for (std::size_t a = 0; a < res.depths.size(); ++a)
+      for (std::size_t b = a + 1; b < res.depths.size(); ++b)
+        tie = tie || exact_sign(res.depths[a] - res.depths[b]) == 0;
+    Step& draw = steps->add("Draw back to front (farthest centroid first)", {}, {}, seq);
+    if (tie) draw.note = "Equal depths keep the listed order.";
     steps->yields("order");
 
     std::string pairs;
