@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <thread>
@@ -250,41 +251,32 @@ void discard(const Record& r) {
   if (!r.key_temporary.empty()) FileBatch::discard(r.key_temporary);
 }
 
-}  // namespace
-
-int run_generate(const GenerateCommand& g, const Output& o) {
-  namespace fs = std::filesystem;
-  const YamlDocument doc = load_yaml_file(g.set);
-  const ProblemSet set = load_problem_set(doc, g.set);
+// What `check` refuses is refused here too, before any file is written: errors of the set, a
+// problem that cannot be solved (a placeholder that names no value, answers beyond a double's
+// range), a text stating a given value that no field explains (stale in every variant). Each
+// is printed; false when the set is refused.
+bool set_can_vary(const ProblemSet& set, bool vary_all, const Output& o) {
   if (!set.all_errors().empty()) {
     for (const Diagnostic& d : set.all_errors()) o.err << d.format() << "\n";
-    return 1;
+    return false;
   }
-  // What every variant file records as drawn from (grade --variants checks it).
-  const std::string fingerprint = set_fingerprint(doc.root);
-  // What `check` refuses is refused here too, before any file is written: a problem that
-  // cannot be solved (a placeholder that names no value, answers beyond a double's range).
-  {
-    bool unsolvable = false;
-    for (const ProblemSpec& p : set.problems)
-      if (const ProblemResult r = solve_problem(p, set.file, false); r.error) {
-        o.err << r.error->format() << "\n";
-        unsolvable = true;
-      }
-    if (unsolvable) return 1;
-  }
-  const bool vary_all = !set_varies(set);
-  // A text stating a given value that no field explains would be stale in every variant.
+  bool unsolvable = false;
+  for (const ProblemSpec& p : set.problems)
+    if (const ProblemResult r = solve_problem(p, set.file, false); r.error) {
+      o.err << r.error->format() << "\n";
+      unsolvable = true;
+    }
+  if (unsolvable) return false;
   if (const std::vector<Diagnostic> stale = stale_text_errors(set, vary_all); !stale.empty()) {
     for (const Diagnostic& d : stale) o.err << d.format() << "\n";
-    return 1;
+    return false;
   }
-  if (vary_all)
-    o.err << g.set
-          << ": no problem has `vary` and the set does not say `variants: per_student`, so every "
-          << "problem is drawn by its kind's default generator; grade against the generated files "
-             "(or add "
-          << "`variants: per_student` to grade against " << g.set << " itself)\n";
+  return true;
+}
+
+// The students named with --student and in --roster; nothing (after printing why) when the
+// roster cannot be read.
+std::optional<std::vector<std::string>> students_of(const GenerateCommand& g, const Output& o) {
   std::vector<std::string> students = g.students;
   if (g.roster) {
     try {
@@ -292,76 +284,72 @@ int run_generate(const GenerateCommand& g, const Output& o) {
       students.insert(students.end(), listed.begin(), listed.end());
     } catch (const InputError& e) {
       o.err << "error: " << e.diagnostic().format() << "\n";
-      return 1;
+      return std::nullopt;
     }
   }
-  const bool paper = g.format != "yaml";
-  std::vector<Named> variants;  // kept only for the paper route
-  bool redrawn = false;
-  std::vector<std::string> repeating;  // problems that ran out of variants (--allow-repeats)
-  int status = 0;
-  bool failed = false;  // an output could not be written
-  // A variant's text (its FNV-1a hash: bodies are not kept) → the first variant that has it.
-  std::unordered_map<std::uint64_t, std::string> seen;
-  // Written in groups, each made durable by one sync (FileBatch); paths are printed once their
-  // group is in place. A group is synced and renamed by a child process while this one goes on
-  // taking variants (the workers' results would otherwise wait in their pipes).
-  FileBatch files;
-  std::vector<std::string> written;     // staged since the last group
-  std::vector<std::string> committing;  // the group being put in place
-  const auto group_done = [&] {
-    files.wait_commit();
-    for (const std::string& line : committing) o.out << line << "\n";
-    committing.clear();
-  };
-  const auto flush = [&] {
-    group_done();
-    files.commit_in_background();
-    committing = std::move(written);
-    written.clear();
-  };
-  // A variant's messages and files, in variant order; `stage` puts its two files in the batch
-  // (writing them, or adopting what a worker wrote) and false when there are none.
-  const auto take = [&](const std::string& name, const Rendered& r,
-                        const std::function<void(const std::string&, const std::string&)>& stage) {
+  return students;
+}
+
+// One run's variants on their way to disk, in variant order: their messages, and their files
+// written in groups, each made durable by one sync (FileBatch); paths are printed once their
+// group is in place. A group is synced and renamed by a child process while this one goes on
+// taking variants (the workers' results would otherwise wait in their pipes).
+class VariantWriter {
+ public:
+  using Stage = std::function<void(const std::string& set_path, const std::string& key_path)>;
+
+  VariantWriter(const GenerateCommand& g, const YamlDocument& doc, std::string fingerprint,
+                const Output& o, bool paper)
+      : g_(g), doc_(doc), fingerprint_(std::move(fingerprint)), o_(o), paper_(paper) {}
+
+  // More than one group: the process that commits them is made now, while this one is small.
+  void expect(std::size_t items) {
+    if (!paper_ && 2 * items > kFilesPerSync) files_.start_committer();
+  }
+
+  // A variant's messages and files; `stage` puts its two files in the batch (writing them, or
+  // adopting what a worker wrote). False when it has none.
+  bool take(const std::string& name, const Rendered& r, const Stage& stage) {
     if (failed) return false;
     if (!r.variant_errors.empty()) {
-      o.err << r.variant_errors;
+      o_.err << r.variant_errors;
       status = 1;
       return false;
     }
     redrawn = redrawn || r.draw > 1;
-    if (const auto [it, fresh] = seen.emplace(r.body_hash, name); !fresh)
-      o.err << "warning: " << name << " has the same variant as " << it->second
-            << " (the ranges leave few choices)\n";
+    if (const auto [it, fresh] = seen_.emplace(r.body_hash, name); !fresh)
+      o_.err << "warning: " << name << " has the same variant as " << it->second
+             << " (the ranges leave few choices)\n";
     if (!r.unsolved.empty()) {
-      o.err << r.unsolved;
+      o_.err << r.unsolved;
       status = 1;
       return false;
     }
     try {
-      const std::string set_path = variant_file(g.out_dir, g.set, name);
-      const std::string key_path = variant_key_file(g.out_dir, g.set, name);
+      const std::string set_path = variant_file(g_.out_dir, g_.set, name);
+      const std::string key_path = variant_key_file(g_.out_dir, g_.set, name);
       stage(set_path, key_path);
-      written.push_back(set_path + "  " + key_path);
-      if (files.staged() >= kFilesPerSync) flush();
+      written_.push_back(set_path + "  " + key_path);
+      if (files_.staged() >= kFilesPerSync) flush();
     } catch (const std::exception& e) {
-      o.err << "error: " << e.what() << "\n";
+      o_.err << "error: " << e.what() << "\n";
       failed = true;
       return false;
     }
     return true;
-  };
-  // `reuse` (when given) holds a worker's temporary files for this variant, written again here
-  // (removing and creating files costs more than rewriting them).
-  const auto take_here = [&](Named&& v, Record* reuse = nullptr) {
+  }
+
+  // A variant drawn in this process, rendered and taken; `reuse` (when given) holds a worker's
+  // temporary files for it, written again here (removing and creating files costs more than
+  // rewriting them).
+  void take_here(Named&& v, Record* reuse = nullptr) {
     if (failed) return;
-    const Rendered r = render(g, doc, fingerprint, v);
+    const Rendered r = render(g_, doc_, fingerprint_, v);
     const auto stage_one = [&](std::string* temporary, const std::string& path,
                                const std::string& text) {
-      if (!temporary || temporary->empty()) return files.stage(path, text);
+      if (!temporary || temporary->empty()) return files_.stage(path, text);
       FileBatch::rewrite_staged(*temporary, path, text);
-      files.adopt(*temporary, path);
+      files_.adopt(*temporary, path);
       temporary->clear();
     };
     const bool staged =
@@ -369,158 +357,233 @@ int run_generate(const GenerateCommand& g, const Output& o) {
           stage_one(reuse ? &reuse->set_temporary : nullptr, set_path, r.set_text);
           stage_one(reuse ? &reuse->key_temporary : nullptr, key_path, r.key_text);
         });
-    if (staged && paper) variants.push_back(std::move(v));
-  };
-  const auto seed_name = [&](std::size_t i) { return fmt::format("seed{}-{}", *g.seed, i); };
-  const std::size_t items = g.seed ? static_cast<std::size_t>(g.count) : students.size();
-  const std::size_t jobs = std::min<std::size_t>(
-      g.jobs ? g.jobs : std::max(1u, std::thread::hardware_concurrency()), items);
-  // More than one group: the process that commits them is made now, while this one is small.
-  if (!paper && 2 * items > kFilesPerSync) files.start_committer();
-  if (jobs > 1 && !paper && items >= kMinParallelVariants) {
-    // Worker processes (GiNaC is not thread-safe) draw, solve and write the variants, each
-    // taking the next that nobody has taken (so that they finish together, and the variants
-    // arrive nearly in order: their groups are synced and renamed while the workers go on).
-    // A worker knows only the givens of the variants it drew itself, all earlier than the one it
-    // draws, so this process takes their variants in order and draws again, itself, any that
-    // repeats a given it did not know (SeedVariants::take): the files are those of one process
-    // whatever -j is.
-    std::optional<SeedVariants> seeds, seeds_apart;
-    std::optional<ClassVariants> classes, classes_apart;
-    if (g.seed) {
-      seeds.emplace(set, *g.seed, g.count, vary_all);
-      seeds_apart.emplace(set, *g.seed, g.count, vary_all);
-    } else {
-      classes.emplace(set, vary_all, g.allow_repeats);
-      classes_apart.emplace(set, vary_all, g.allow_repeats);
+    if (staged && paper_) variants.push_back(std::move(v));
+  }
+
+  // A worker's files for a variant, put in the batch under their names.
+  void adopt(const std::string& temporary, const std::string& path) {
+    files_.adopt(temporary, path);
+  }
+
+  // The last group put in place; false when an output could not be written.
+  bool finish() {
+    try {
+      if (!failed) {
+        flush();
+        group_done();
+      }
+    } catch (const std::exception& e) {
+      o_.err << "error: " << e.what() << "\n";
+      failed = true;
     }
-    const auto name_of = [&](std::size_t i) {
-      return g.seed ? seed_name(i) : variant_name(students[i]);
-    };
-    const auto work = [&](std::size_t i) {
-      Record r;
-      if (g.seed && seeds_apart->exhausted()) {
-        // This worker found the ranges used up: the rest is left to this process's own draws,
-        // which stop where the ranges are used up.
-        r.givens.complete = false;
-        return encode(r);
-      }
-      const Named v{name_of(i), g.seed ? name_of(i) : students[i],
-                    g.seed ? seeds_apart->draw(static_cast<int>(i), &r.givens)
-                           : classes_apart->first_draw(students[i], &r.givens)};
-      Rendered rendered = render(g, doc, fingerprint, v);
-      try {
-        if (rendered.variant_errors.empty() && rendered.unsolved.empty()) {
-          r.set_temporary =
-              FileBatch::write_staged(variant_file(g.out_dir, g.set, v.name), rendered.set_text);
-          r.key_temporary = FileBatch::write_staged(variant_key_file(g.out_dir, g.set, v.name),
-                                                    rendered.key_text);
-        }
-      } catch (const std::exception& e) {
-        discard(r);
-        r.set_temporary.clear();
-        r.key_temporary.clear();
-        r.write_error = e.what();
-      }
-      r.rendered = std::move(rendered);
-      r.rendered.set_text.clear();
-      r.rendered.key_text.clear();
+    return !failed;
+  }
+
+  int status = 0;
+  bool failed = false;          // an output could not be written
+  bool redrawn = false;         // some variant was drawn again to stay distinct
+  std::vector<Named> variants;  // kept only for the paper route
+
+ private:
+  void group_done() {
+    files_.wait_commit();
+    for (const std::string& line : committing_) o_.out << line << "\n";
+    committing_.clear();
+  }
+  void flush() {
+    group_done();
+    files_.commit_in_background();
+    committing_ = std::move(written_);
+    written_.clear();
+  }
+
+  const GenerateCommand& g_;
+  const YamlDocument& doc_;
+  const std::string fingerprint_;
+  const Output& o_;
+  const bool paper_;
+  // A variant's text (its FNV-1a hash: bodies are not kept) → the first variant that has it.
+  std::unordered_map<std::uint64_t, std::string> seen_;
+  FileBatch files_;
+  std::vector<std::string> written_;     // staged since the last group
+  std::vector<std::string> committing_;  // the group being put in place
+};
+
+// The variants drawn, solved and written by worker processes (GiNaC is not thread-safe), each
+// taking the next that nobody has taken (so that they finish together, and the variants arrive
+// nearly in order: their groups are synced and renamed while the workers go on). A worker knows
+// only the givens of the variants it drew itself, all earlier than the one it draws, so this
+// process takes their variants in order and draws again, itself, any that repeats a given it
+// did not know (SeedVariants::take): the files are those of one process whatever -j is.
+// Returns the problems that ran out of variants (--allow-repeats).
+std::vector<std::string> draw_in_workers(VariantWriter& w, const GenerateCommand& g,
+                                         const YamlDocument& doc, const std::string& fingerprint,
+                                         const ProblemSet& set,
+                                         const std::vector<std::string>& students, bool vary_all,
+                                         std::size_t items, std::size_t jobs, const Output& o) {
+  namespace fs = std::filesystem;
+  std::optional<SeedVariants> seeds, seeds_apart;
+  std::optional<ClassVariants> classes, classes_apart;
+  if (g.seed) {
+    seeds.emplace(set, *g.seed, g.count, vary_all);
+    seeds_apart.emplace(set, *g.seed, g.count, vary_all);
+  } else {
+    classes.emplace(set, vary_all, g.allow_repeats);
+    classes_apart.emplace(set, vary_all, g.allow_repeats);
+  }
+  const auto name_of = [&](std::size_t i) {
+    return g.seed ? fmt::format("seed{}-{}", *g.seed, i) : variant_name(students[i]);
+  };
+  const auto work = [&](std::size_t i) {
+    Record r;
+    if (g.seed && seeds_apart->exhausted()) {
+      // This worker found the ranges used up: the rest is left to this process's own draws,
+      // which stop where the ranges are used up.
+      r.givens.complete = false;
       return encode(r);
-    };
-    std::vector<std::optional<IsolatedResult>> arrived(items);
-    std::size_t next = 0;
-    bool stopped = false;  // a seed's ranges are used up: no variant after it
-    const auto settle = [&](std::size_t i, IsolatedResult& result) {
-      if (result.status != IsolatedResult::Status::Ok) {
-        o.err << "error: " << name_of(i) << ": " << result.error << "\n";
-        status = 1;
-        return;
+    }
+    const Named v{name_of(i), g.seed ? name_of(i) : students[i],
+                  g.seed ? seeds_apart->draw(static_cast<int>(i), &r.givens)
+                         : classes_apart->first_draw(students[i], &r.givens)};
+    Rendered rendered = render(g, doc, fingerprint, v);
+    try {
+      if (rendered.variant_errors.empty() && rendered.unsolved.empty()) {
+        r.set_temporary =
+            FileBatch::write_staged(variant_file(g.out_dir, g.set, v.name), rendered.set_text);
+        r.key_temporary =
+            FileBatch::write_staged(variant_key_file(g.out_dir, g.set, v.name), rendered.key_text);
       }
-      Record r;
-      try {
-        r = decode(result.output);
-      } catch (const std::exception& e) {
-        o.err << "error: " << name_of(i) << ": " << e.what() << "\n";
-        status = 1;
-        return;
-      }
-      if (stopped || failed) {
-        discard(r);
-        return;
-      }
-      if (!r.write_error.empty()) {
-        o.err << "error: " << r.write_error << "\n";
-        failed = true;
-        return;
-      }
-      if (g.seed ? seeds->take(r.givens) : classes->take(r.givens)) {
-        if (!take(name_of(i), r.rendered,
+    } catch (const std::exception& e) {
+      discard(r);
+      r.set_temporary.clear();
+      r.key_temporary.clear();
+      r.write_error = e.what();
+    }
+    r.rendered = std::move(rendered);
+    r.rendered.set_text.clear();
+    r.rendered.key_text.clear();
+    return encode(r);
+  };
+  std::vector<std::optional<IsolatedResult>> arrived(items);
+  std::size_t next = 0;
+  bool stopped = false;  // a seed's ranges are used up: no variant after it
+  const auto settle = [&](std::size_t i, IsolatedResult& result) {
+    if (result.status != IsolatedResult::Status::Ok) {
+      o.err << "error: " << name_of(i) << ": " << result.error << "\n";
+      w.status = 1;
+      return;
+    }
+    Record r;
+    try {
+      r = decode(result.output);
+    } catch (const std::exception& e) {
+      o.err << "error: " << name_of(i) << ": " << e.what() << "\n";
+      w.status = 1;
+      return;
+    }
+    if (stopped || w.failed) {
+      discard(r);
+      return;
+    }
+    if (!r.write_error.empty()) {
+      o.err << "error: " << r.write_error << "\n";
+      w.failed = true;
+      return;
+    }
+    if (g.seed ? seeds->take(r.givens) : classes->take(r.givens)) {
+      if (!w.take(name_of(i), r.rendered,
                   [&](const std::string& set_path, const std::string& key_path) {
-                    files.adopt(r.set_temporary, set_path);
+                    w.adopt(r.set_temporary, set_path);
                     r.set_temporary.clear();
-                    files.adopt(r.key_temporary, key_path);
+                    w.adopt(r.key_temporary, key_path);
                     r.key_temporary.clear();
                   }))
-          discard(r);
-        return;
-      }
-      if (g.seed) {
-        take_here({name_of(i), name_of(i), seeds->draw(static_cast<int>(i))}, &r);
-        stopped = seeds->exhausted();
-      } else {
-        take_here({name_of(i), students[i], classes->draw(students[i])}, &r);
-      }
-      discard(r);  // what was not written again
-    };
-    std::error_code ec;
-    fs::create_directories(fs::path(variant_key_file(g.out_dir, g.set, "x")).parent_path(), ec);
-    run_isolated_each(
-        items, work, kVariantSeconds,
-        [&](std::size_t i, IsolatedResult& result) {
-          arrived[i] = std::move(result);
-          for (; next < items && arrived[next]; ++next) {
-            settle(next, *arrived[next]);
-            arrived[next].reset();
-          }
-        },
-        64u << 20, jobs, [&] { return stopped || failed; }, Shares::Dynamic);
-    // Once stopped, what arrived beyond a share that was not run is never taken: its files go.
-    for (std::optional<IsolatedResult>& result : arrived)
-      if (result && result->status == IsolatedResult::Status::Ok) try {
-          discard(decode(result->output));
-        } catch (const std::exception&) {
+        discard(r);
+      return;
+    }
+    if (g.seed) {
+      w.take_here({name_of(i), name_of(i), seeds->draw(static_cast<int>(i))}, &r);
+      stopped = seeds->exhausted();
+    } else {
+      w.take_here({name_of(i), students[i], classes->draw(students[i])}, &r);
+    }
+    discard(r);  // what was not written again
+  };
+  std::error_code ec;
+  fs::create_directories(fs::path(variant_key_file(g.out_dir, g.set, "x")).parent_path(), ec);
+  run_isolated_each(
+      items, work, kVariantSeconds,
+      [&](std::size_t i, IsolatedResult& result) {
+        arrived[i] = std::move(result);
+        for (; next < items && arrived[next]; ++next) {
+          settle(next, *arrived[next]);
+          arrived[next].reset();
         }
-    if (classes) repeating = classes->exhausted();
-  } else {
-    if (g.seed)
-      for_each_variant_from_seed(set, *g.seed, g.count, vary_all, [&](int i, ProblemSet&& drawn) {
-        const std::string name = seed_name(static_cast<std::size_t>(i));
-        take_here({name, name, std::move(drawn)});
-      });
-    // The class together: pairwise distinct, redrawing a student whose variant repeats another's.
-    if (!g.seed) {
-      ClassVariants drawn(set, vary_all, g.allow_repeats);
-      for (const std::string& student : students)
-        take_here({variant_name(student), student, drawn.draw(student)});
-      repeating = drawn.exhausted();
-    }
+      },
+      64u << 20, jobs, [&] { return stopped || w.failed; }, Shares::Dynamic);
+  // Once stopped, what arrived beyond a share that was not run is never taken: its files go.
+  for (std::optional<IsolatedResult>& result : arrived)
+    if (result && result->status == IsolatedResult::Status::Ok) try {
+        discard(decode(result->output));
+      } catch (const std::exception&) {
+      }
+  return classes ? classes->exhausted() : std::vector<std::string>{};
+}
+
+// The variants drawn in this process, in order; the class together, pairwise distinct,
+// redrawing a student whose variant repeats another's. Returns the problems that ran out of
+// variants (--allow-repeats).
+std::vector<std::string> draw_here(VariantWriter& w, const GenerateCommand& g,
+                                   const ProblemSet& set, const std::vector<std::string>& students,
+                                   bool vary_all) {
+  if (g.seed) {
+    for_each_variant_from_seed(set, *g.seed, g.count, vary_all, [&](int i, ProblemSet&& drawn) {
+      const std::string name = fmt::format("seed{}-{}", *g.seed, i);
+      w.take_here({name, name, std::move(drawn)});
+    });
+    return {};
   }
-  try {
-    if (!failed) {
-      flush();
-      group_done();
-    }
-  } catch (const std::exception& e) {
-    o.err << "error: " << e.what() << "\n";
-    failed = true;
-  }
-  if (failed) return 1;
-  if (g.format != "yaml") status = std::max(status, write_paper(g, set, variants, o));
+  ClassVariants drawn(set, vary_all, g.allow_repeats);
+  for (const std::string& student : students)
+    w.take_here({variant_name(student), student, drawn.draw(student)});
+  return drawn.exhausted();
+}
+
+}  // namespace
+
+int run_generate(const GenerateCommand& g, const Output& o) {
+  const YamlDocument doc = load_yaml_file(g.set);
+  const ProblemSet set = load_problem_set(doc, g.set);
+  const bool vary_all = !set_varies(set);
+  if (!set_can_vary(set, vary_all, o)) return 1;
+  if (vary_all)
+    o.err << g.set
+          << ": no problem has `vary` and the set does not say `variants: per_student`, so every "
+          << "problem is drawn by its kind's default generator; grade against the generated files "
+             "(or add "
+          << "`variants: per_student` to grade against " << g.set << " itself)\n";
+  const std::optional<std::vector<std::string>> students = students_of(g, o);
+  if (!students) return 1;
+  const bool paper = g.format != "yaml";
+  // What every variant file records as drawn from (grade --variants checks it).
+  const std::string fingerprint = set_fingerprint(doc.root);
+  VariantWriter w(g, doc, fingerprint, o, paper);
+  const std::size_t items = g.seed ? static_cast<std::size_t>(g.count) : students->size();
+  const std::size_t jobs = std::min<std::size_t>(
+      g.jobs ? g.jobs : std::max(1u, std::thread::hardware_concurrency()), items);
+  w.expect(items);
+  const std::vector<std::string> repeating =
+      jobs > 1 && !paper && items >= kMinParallelVariants
+          ? draw_in_workers(w, g, doc, fingerprint, set, *students, vary_all, items, jobs, o)
+          : draw_here(w, g, set, *students, vary_all);
+  if (!w.finish()) return 1;
+  int status = w.status;
+  if (paper) status = std::max(status, write_paper(g, set, w.variants, o));
   if (g.allow_repeats)
     for (const std::string& id : repeating)
       o.err << "note: problem '" << id
             << "' has fewer variants than the class: it repeats among students (--allow-repeats)\n";
-  if (redrawn)
+  if (w.redrawn)
     o.err << "note: some students were drawn again so that no two share a problem"
           << (g.allow_repeats && !repeating.empty() ? " (but those named above)" : "")
           << "; grade the class against these files: frustum grade " << g.set
