@@ -118,57 +118,133 @@ struct Lane {
   Clock::time_point deadline;
 };
 
-}  // namespace
+// One run of run_isolated_each: its lanes (a child process each), the items handed so far and
+// their results. The parts of the run are its methods; a child forked by start() runs take()
+// and the caller's work in its own copy of the run.
+class IsolatedRun {
+ public:
+  using Work = std::function<std::string(std::size_t)>;
+  using OnResult = std::function<void(std::size_t, IsolatedResult&)>;
 
-std::vector<IsolatedResult> run_isolated_each(
-    std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
-    const std::function<void(std::size_t, IsolatedResult&)>& on_result, std::size_t max_output,
-    std::size_t jobs, const std::function<bool()>& stop, Shares shares, Reaper* reaper) {
-  std::vector<IsolatedResult> results(count);
-  std::vector<char> handed(count, 0);  // the items whose result is in
-  jobs = std::max<std::size_t>(1, std::min(jobs, count));
-  Board* board = Board::make(jobs);
-  // Without the shared board, items cannot be taken one at a time: contiguous shares instead.
-  const bool dynamic = shares == Shares::Dynamic && board;
-  bool stopped_by_caller = false;
-  std::size_t handed_count = 0;
-  const auto finish = [&](std::size_t i, IsolatedResult r) {
-    handed[i] = 1;
-    ++handed_count;
-    if (on_result) on_result(i, r);
-    results[i] = std::move(r);
-    if (stop && !stopped_by_caller && stop()) {
-      stopped_by_caller = true;
-      if (board) board->stopping.store(true);
+  IsolatedRun(std::size_t count, const Work& work, double seconds, const OnResult& on_result,
+              std::size_t max_output, std::size_t jobs, const std::function<bool()>& stop,
+              Shares shares)
+      : count_(count),
+        work_(work),
+        seconds_(seconds),
+        on_result_(on_result),
+        max_output_(max_output),
+        stop_(stop),
+        results_(count),
+        handed_(count, 0),
+        jobs_(std::max<std::size_t>(1, std::min(jobs, count))),
+        board_(Board::make(jobs_)),
+        // Without the shared board, items cannot be taken one at a time: contiguous shares.
+        dynamic_(shares == Shares::Dynamic && board_),
+        limit_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds))),
+        lanes_(jobs_) {
+    // Contiguous shares, one per child: item i always lands in the same share for a given count
+    // and jobs, so a rerun repeats every child's work item for item. Dynamic: every child takes
+    // the next item nobody has taken (lane.next and lane.end are then unused).
+    for (std::size_t j = 0; j < jobs_; ++j) {
+      lanes_[j].next = dynamic_ ? 0 : count * j / jobs_;
+      lanes_[j].end = dynamic_ ? 0 : count * (j + 1) / jobs_;
     }
-  };
-  const auto limit =
-      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-  // Contiguous shares, one per child: item i always lands in the same share for a given count
-  // and jobs, so a rerun repeats every child's work item for item. Dynamic: every child takes
-  // the next item nobody has taken (lane.next and lane.end are then unused).
-  std::vector<Lane> lanes(jobs);
-  for (std::size_t j = 0; j < jobs; ++j) {
-    lanes[j].next = dynamic ? 0 : count * j / jobs;
-    lanes[j].end = dynamic ? 0 : count * (j + 1) / jobs;
   }
+  ~IsolatedRun() { Board::release(board_, jobs_); }
+  IsolatedRun(const IsolatedRun&) = delete;
+  IsolatedRun& operator=(const IsolatedRun&) = delete;
+
+  // Every lane's children until every item has a result (or the caller stopped the run).
+  void run() {
+    const Clock::time_point started = Clock::now();
+    while (true) {
+      std::vector<pollfd> polls;
+      std::vector<std::size_t> polled;
+      for (std::size_t j = 0; j < lanes_.size(); ++j) {
+        keep_busy(j);
+        if (lanes_[j].fd >= 0) {
+          polls.push_back({lanes_[j].fd, POLLIN, 0});
+          polled.push_back(j);
+        }
+      }
+      if (polls.empty()) break;
+      const bool read_some = poll_lanes(polls, polled);
+      pace(read_some, started);
+    }
+  }
+
+  // Items without a result: never started once the caller stopped, or (Dynamic) taken by a
+  // child killed in the instant between taking an item and saying so — those run again, alone.
+  std::vector<IsolatedResult> results(Reaper* reaper) {
+    std::vector<std::size_t> left;
+    for (std::size_t i = 0; i < count_; ++i)
+      if (!handed_[i]) {
+        if (stopped_by_caller_)
+          results_[i].error = "not run";
+        else
+          left.push_back(i);
+      }
+    if (!left.empty()) {
+      run_isolated_each(
+          left.size(), [&](std::size_t k) { return work_(left[k]); }, seconds_,
+          [&](std::size_t k, IsolatedResult& r) { finish(left[k], std::move(r)); }, max_output_, 1,
+          [&] { return stopped_by_caller_; }, Shares::Contiguous, reaper);
+      for (const std::size_t i : left)
+        if (!handed_[i]) results_[i].error = "not run";
+    }
+    return std::move(results_);
+  }
+
+  Reaper* reaper = nullptr;
+
+ private:
+  // The child stopped: by a time limit, a result too big, or its pipe closing.
+  enum class Stop { Timeout, TooBig, Eof };
+
+  void finish(std::size_t i, IsolatedResult r) {
+    handed_[i] = 1;
+    ++handed_count_;
+    if (on_result_) on_result_(i, r);
+    results_[i] = std::move(r);
+    if (stop_ && !stopped_by_caller_ && stop_()) {
+      stopped_by_caller_ = true;
+      if (board_) board_->stopping.store(true);
+    }
+  }
+
   // The lane's next item to work on, or nothing when its share (or the class) is done.
-  const auto take = [&](Lane& lane, std::size_t j) -> std::optional<std::size_t> {
-    if (board && board->stopping.load()) return std::nullopt;
-    if (!dynamic)
+  std::optional<std::size_t> take(Lane& lane, std::size_t j) {
+    if (board_ && board_->stopping.load()) return std::nullopt;
+    if (!dynamic_)
       return lane.next < lane.end ? std::optional<std::size_t>(lane.next) : std::nullopt;
-    const std::size_t i = board->next.fetch_add(1);
-    if (i >= count) return std::nullopt;
-    board->current(j).store(i);
+    const std::size_t i = board_->next.fetch_add(1);
+    if (i >= count_) return std::nullopt;
+    board_->current(j).store(i);
     return i;
-  };
-  const auto work_left = [&](const Lane& lane) {
-    if (stopped_by_caller) return false;
-    return dynamic ? board->next.load() < count : lane.next < lane.end;
-  };
+  }
+
+  bool work_left(const Lane& lane) const {
+    if (stopped_by_caller_) return false;
+    return dynamic_ ? board_->next.load() < count_ : lane.next < lane.end;
+  }
+
+  // Every lane with work left has a child; a lane whose child cannot be made works here,
+  // without a time limit.
+  void keep_busy(std::size_t j) {
+    Lane& lane = lanes_[j];
+    if (lane.fd < 0 && work_left(lane) && !start(lane, j))
+      while (work_left(lane)) {
+        const std::optional<std::size_t> i = take(lane, j);
+        if (!i) break;
+        if (!dynamic_) ++lane.next;
+        finish(*i, run_in_process([&] { return work_(*i); }));
+      }
+  }
+
   // Starts a child on the rest of the lane's work; false when no child could be made.
-  const auto start = [&](Lane& lane, std::size_t j) {
-    if (board) board->current(j).store(Board::kNone);
+  bool start(Lane& lane, std::size_t j) {
+    if (board_) board_->current(j).store(Board::kNone);
     int fds[2];
     const pid_t parent = getpid();
     const pid_t pid = pipe(fds) == 0 ? fork() : -1;
@@ -179,13 +255,13 @@ std::vector<IsolatedResult> run_isolated_each(
       prctl(PR_SET_PDEATHSIG, SIGKILL);
       if (getppid() != parent) _exit(4);
       close(fds[0]);
-      for (const Lane& other : lanes)
+      for (const Lane& other : lanes_)
         if (other.fd >= 0) close(other.fd);
       while (const std::optional<std::size_t> i = take(lane, j)) {
         std::string text;
         char status = 'O';
         try {
-          text = work(*i);
+          text = work_(*i);
         } catch (const std::exception& e) {
           status = 'E';
           text = e.what();
@@ -209,13 +285,13 @@ std::vector<IsolatedResult> run_isolated_each(
     lane.data.clear();
     lane.offset = 0;
     lane.broken = false;
-    lane.deadline = Clock::now() + limit;
+    lane.deadline = Clock::now() + limit_;
     return true;
-  };
+  }
+
   // The child stopped (stop says why): the item it was on gets the reason, a fresh child
   // carries on after it.
-  enum class Stop { Timeout, TooBig, Eof };
-  const auto stopped = [&](Lane& lane, std::size_t j, Stop stop) {
+  void stopped(Lane& lane, std::size_t j, Stop stop) {
     close(lane.fd);
     lane.fd = -1;
     if (stop != Stop::Eof) kill(lane.pid, SIGKILL);
@@ -224,11 +300,11 @@ std::vector<IsolatedResult> run_isolated_each(
     std::size_t on = Board::kNone;
     if (!lane.broken && lane.data.size() - lane.offset >= kFrameHeader)
       on = little_endian(lane.data.data() + lane.offset + 8);
-    else if (!dynamic && lane.next < lane.end)
+    else if (!dynamic_ && lane.next < lane.end)
       on = lane.next;
-    else if (dynamic)
-      on = board->current(j).load();
-    const bool owed = on < count && !handed[on];
+    else if (dynamic_)
+      on = board_->current(j).load();
+    const bool owed = on < count_ && !handed_[on];
     // A child that closed its pipe owing nothing is waited for by the reaper: it is unmapping
     // its memory, and its exit status says nothing about any item.
     if (stop == Stop::Eof && !owed && reaper) {
@@ -241,14 +317,14 @@ std::vector<IsolatedResult> run_isolated_each(
     }
     lane.pid = -1;
     if (!owed) return;
-    if (stopped_by_caller && stop == Stop::Eof && !WIFSIGNALED(status) && WEXITSTATUS(status) == 0)
+    if (stopped_by_caller_ && stop == Stop::Eof && !WIFSIGNALED(status) && WEXITSTATUS(status) == 0)
       return;  // the child stopped before its next item, as asked
     IsolatedResult r;
     if (stop == Stop::Timeout) {
       r.status = IsolatedResult::Status::Timeout;
-      r.error = fmt::format("time limit of {} s exceeded", seconds);
+      r.error = fmt::format("time limit of {} s exceeded", seconds_);
     } else if (stop == Stop::TooBig) {
-      r.error = fmt::format("result larger than {} bytes", max_output);
+      r.error = fmt::format("result larger than {} bytes", max_output_);
     } else if (WIFSIGNALED(status)) {
       r.status = IsolatedResult::Status::Crashed;
       r.error = fmt::format("the grader crashed on this input (signal {}: {})", WTERMSIG(status),
@@ -258,11 +334,12 @@ std::vector<IsolatedResult> run_isolated_each(
       r.error =
           fmt::format("the grader stopped without a result (exit status {})", WEXITSTATUS(status));
     }
-    if (!dynamic) ++lane.next;
+    if (!dynamic_) ++lane.next;
     finish(on, std::move(r));
-  };
+  }
+
   // Hands over every complete frame the lane holds.
-  const auto drain = [&](Lane& lane) {
+  void drain(Lane& lane) {
     while (!lane.broken && lane.data.size() - lane.offset >= kFrameHeader) {
       const std::uint64_t size = little_endian(lane.data.data() + lane.offset);
       if (lane.data.size() - lane.offset - 8 < size) break;
@@ -278,107 +355,102 @@ std::vector<IsolatedResult> run_isolated_each(
       }
       // A result for an item the child was not given: the child is killed, and the item it
       // was on fails as a crash when its pipe closes.
-      if (i >= count || handed[i] || (!dynamic && i != lane.next)) {
+      if (i >= count_ || handed_[i] || (!dynamic_ && i != lane.next)) {
         kill(lane.pid, SIGKILL);
         lane.broken = true;
         break;
       }
       lane.offset += 8 + size;
-      if (!dynamic) ++lane.next;
+      if (!dynamic_) ++lane.next;
       finish(i, std::move(r));
-      lane.deadline = Clock::now() + limit;
+      lane.deadline = Clock::now() + limit_;
     }
     if (lane.offset > (1u << 20)) {
       lane.data.erase(0, lane.offset);
       lane.offset = 0;
     }
-  };
-  char buffer[1 << 16];
-  const Clock::time_point started = Clock::now();
-  while (true) {
-    // Every lane with work left has a child (a lane whose child cannot be made works here,
-    // without a time limit).
-    std::vector<pollfd> polls;
-    std::vector<std::size_t> polled;
-    for (std::size_t j = 0; j < lanes.size(); ++j) {
-      Lane& lane = lanes[j];
-      if (lane.fd < 0 && work_left(lane) && !start(lane, j))
-        while (work_left(lane)) {
-          const std::optional<std::size_t> i = take(lane, j);
-          if (!i) break;
-          if (!dynamic) ++lane.next;
-          finish(*i, run_in_process([&] { return work(*i); }));
-        }
-      if (lane.fd >= 0) {
-        polls.push_back({lane.fd, POLLIN, 0});
-        polled.push_back(j);
-      }
-    }
-    if (polls.empty()) break;
+  }
+
+  // Waits for the first lane with something to read or a deadline, and reads what is there;
+  // whether anything was read.
+  bool poll_lanes(std::vector<pollfd>& polls, const std::vector<std::size_t>& polled) {
     long long wait_ms = 1000;
     for (const std::size_t j : polled)
       wait_ms = std::min<long long>(wait_ms, std::chrono::duration_cast<std::chrono::milliseconds>(
-                                                 lanes[j].deadline - Clock::now())
+                                                 lanes_[j].deadline - Clock::now())
                                                  .count());
     const int ready =
         poll(polls.data(), polls.size(), static_cast<int>(std::max<long long>(wait_ms, 0)));
-    if (ready < 0) continue;  // EINTR: poll again
+    if (ready < 0) return false;  // EINTR: poll again
     bool read_some = false;
     for (std::size_t k = 0; k < polls.size(); ++k) {
       const std::size_t j = polled[k];
-      Lane& lane = lanes[j];
+      Lane& lane = lanes_[j];
       if (ready > 0 && (polls[k].revents & (POLLIN | POLLHUP | POLLERR))) {
-        const ssize_t n = read(lane.fd, buffer, sizeof buffer);
+        const ssize_t n = read(lane.fd, buffer_, sizeof buffer_);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) {
           drain(lane);
           stopped(lane, j, Stop::Eof);
           continue;
         }
-        lane.data.append(buffer, static_cast<std::size_t>(n));
+        lane.data.append(buffer_, static_cast<std::size_t>(n));
         read_some = true;
         drain(lane);
-        if (!dynamic && lane.next >= lane.end) {
+        if (!dynamic_ && lane.next >= lane.end) {
           stopped(lane, j, Stop::Eof);
           continue;
         }
-        if (lane.data.size() - lane.offset > max_output) {
+        if (lane.data.size() - lane.offset > max_output_) {
           stopped(lane, j, Stop::TooBig);
           continue;
         }
       }
       if (lane.fd >= 0 && Clock::now() >= lane.deadline) stopped(lane, j, Stop::Timeout);
     }
+    return read_some;
+  }
+
+  // At the rate so far (items a second, all children together), waits until only each open
+  // child's last item is left, up to kCoalesce: results then arrive in larger reads.
+  void pace(bool read_some, Clock::time_point started) {
     const auto open_lanes = static_cast<std::size_t>(
-        std::count_if(lanes.begin(), lanes.end(), [](const Lane& l) { return l.fd >= 0; }));
-    if (read_some && open_lanes > 0 && count - handed_count > open_lanes && handed_count > 0) {
-      // At the rate so far (items a second, all children together), the time until only each
-      // open child's last item is left.
-      const auto per_item = (Clock::now() - started) / handed_count;
-      const auto until_last = per_item * (count - handed_count - open_lanes);
+        std::count_if(lanes_.begin(), lanes_.end(), [](const Lane& l) { return l.fd >= 0; }));
+    if (read_some && open_lanes > 0 && count_ - handed_count_ > open_lanes && handed_count_ > 0) {
+      const auto per_item = (Clock::now() - started) / handed_count_;
+      const auto until_last = per_item * (count_ - handed_count_ - open_lanes);
       std::this_thread::sleep_for(std::min<Clock::duration>(kCoalesce, until_last));
     }
   }
-  Board::release(board, jobs);
-  // Items without a result: never started once the caller stopped, or (Dynamic) taken by a
-  // child killed in the instant between taking an item and saying so — those run again, alone.
-  std::vector<std::size_t> left;
-  for (std::size_t i = 0; i < count; ++i)
-    if (!handed[i]) {
-      if (stopped_by_caller)
-        results[i].error = "not run";
-      else
-        left.push_back(i);
-    }
-  if (!left.empty()) {
-    run_isolated_each(
-        left.size(), [&](std::size_t k) { return work(left[k]); }, seconds,
-        [&](std::size_t k, IsolatedResult& r) { finish(left[k], std::move(r)); }, max_output, 1,
-        [&] { return stopped_by_caller; }, Shares::Contiguous, reaper);
-    for (const std::size_t i : left)
-      if (!handed[i]) results[i].error = "not run";
-  }
-  return results;
+
+  const std::size_t count_;
+  const Work& work_;
+  const double seconds_;
+  const OnResult& on_result_;
+  const std::size_t max_output_;
+  const std::function<bool()>& stop_;
+  std::vector<IsolatedResult> results_;
+  std::vector<char> handed_;  // the items whose result is in
+  std::size_t handed_count_ = 0;
+  bool stopped_by_caller_ = false;
+  const std::size_t jobs_;
+  Board* const board_;
+  const bool dynamic_;
+  const Clock::duration limit_;
+  std::vector<Lane> lanes_;
+  char buffer_[1 << 16];
+};
+
+}  // namespace
+
+std::vector<IsolatedResult> run_isolated_each(
+    std::size_t count, const std::function<std::string(std::size_t)>& work, double seconds,
+    const std::function<void(std::size_t, IsolatedResult&)>& on_result, std::size_t max_output,
+    std::size_t jobs, const std::function<bool()>& stop, Shares shares, Reaper* reaper) {
+  IsolatedRun run(count, work, seconds, on_result, max_output, jobs, stop, shares);
+  run.reaper = reaper;
+  run.run();
+  return run.results(reaper);
 }
 
 Reaper::~Reaper() {
