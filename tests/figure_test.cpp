@@ -99,7 +99,8 @@ TEST(Figures, HugeAndTinyCoordinatesGiveNoPictureOrAReadableOne) {
 // picture; kinds without a picture get none.
 TEST(Figures, EveryProblemOfAKindWithAPictureShowsItInTheDerivation) {
   const std::set<std::string> plane = {"clip_line",      "clip_polygon", "scan_convert",
-                                       "depth_at_pixel", "barycentric",  "zbuffer"};
+                                       "depth_at_pixel", "barycentric",  "zbuffer",
+                                       "scanline"};
   const std::set<std::string> drawn = {"edge_visibility", "depth_sort"};
   std::set<std::string> seen;
   for (const char* file :

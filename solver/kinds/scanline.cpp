@@ -237,9 +237,10 @@ struct Scanline {
 
     MathText found;
     for (const Section& s : ss)
-      found += math(found.empty() ? "" : ",  ") + math(g.polygons[s.polygon].label + ": ") +
-               math("x ∈ [", "x \\in [") + exact(s.x_left) + math(", ") + exact(s.x_right) +
-               math("], z: ") + exact(s.z_left) + math(" → ", " \\to ") + exact(s.z_right);
+      found += math(found.empty() ? "" : ",  ", found.empty() ? "" : ",\\quad ") +
+               math(g.polygons[s.polygon].label + ": ") + math("x ∈ [", "x \\in [") +
+               exact(s.x_left) + math(", ") + exact(s.x_right) + math("], z: ") + exact(s.z_left) +
+               math(" → ", " \\to ") + exact(s.z_right);
     steps
         ->add("Sections of the polygons on the scan line",
               math("x = x₀ + (y − y₀)(x₁ − x₀)/(y₁ − y₀),  z = z₀ + (y − y₀)(z₁ − z₀)/(y₁ − y₀)",
@@ -255,7 +256,7 @@ struct Scanline {
       const std::string& a = g.polygons[c.a].label;
       const std::string& b = g.polygons[c.b].label;
       where +=
-          math(where.empty() ? "" : ",  ") +
+          math(where.empty() ? "" : ",  ", where.empty() ? "" : ",\\quad ") +
           math(fmt::format("z_{}(x) = z_{}(x) ⇒ x = ", a, b),
                fmt::format("z_{{\\mathrm{{{}}}}}(x) = z_{{\\mathrm{{{}}}}}(x) \\Rightarrow x = ", a,
                            b)) +
@@ -265,8 +266,8 @@ struct Scanline {
       steps->add("Where two sections' depths cross", math("z_a(x) = z_b(x)"), {}, where);
     MathText shown;
     for (const Piece& p : ps)
-      shown += math(shown.empty() ? "" : ",  ") + math("[") + exact(p.from) + math(", ") +
-               exact(p.to) + math("]: ") +
+      shown += math(shown.empty() ? "" : ",  ", shown.empty() ? "" : ",\\quad ") + math("[") +
+               exact(p.from) + math(", ") + exact(p.to) + math("]: ") +
                (p.label == kBackground ? word("background") : math(p.label));
     steps
         ->add("Nearest section on each piece", word("visible") + math(": min z", ": \\min z"), {},

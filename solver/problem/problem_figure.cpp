@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -81,6 +82,26 @@ std::optional<PlaneDrawing> plane_drawing(const ProblemSpec& p, Lang lang) {
     for (std::size_t i = 0; i < tri.size() && i < 3; ++i)
       d.label(tri[i], kNames[i], true, Place::AboveRight);
     if (pixel) d.label(*pixel, tr("pixel", lang), false, Place::BelowRight);
+    return d;
+  }
+  if (p.kind == "scanline" && g["y"] && g["polygons"]) {
+    // The polygons on the screen and the scan line across them.
+    std::vector<Eigen::Vector2d> all;
+    for (std::size_t i = 0; i < g["polygons"].size(); ++i)
+      all = joined(all, points(g["polygons"][i]["points"]));
+    const double y = number(g["y"]);
+    double x0 = all.empty() ? 0 : all[0].x(), x1 = x0;
+    for (const Eigen::Vector2d& q : all) x0 = std::min(x0, q.x()), x1 = std::max(x1, q.x());
+    all.emplace_back(x0, y);
+    PlaneDrawing d = PlaneDrawing::around(all, true);
+    for (std::size_t i = 0; i < g["polygons"].size(); ++i) {
+      const YAML::Node poly = g["polygons"][i];
+      const std::vector<Eigen::Vector2d> pts = points(poly["points"]);
+      d.polyline(pts, Pen::Shape);
+      d.label(pts[0], poly["label"].as<std::string>(), false, Place::AboveRight);
+    }
+    d.polyline({{x0 - 0.5, y}, {x1 + 0.5, y}}, Pen::Window);
+    d.label({x0 - 0.5, y}, "y = " + g["y"].as<std::string>(), true, Place::AboveRight);
     return d;
   }
   if (p.kind == "zbuffer" && g["size"]) {
