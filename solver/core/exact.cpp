@@ -494,13 +494,25 @@ std::optional<int> radical_sign(const Exact& e, int depth = 0) {
   if (to_symbols.unsupported || to_symbols.roots.empty() ||
       to_symbols.roots.size() > kMaxZeroProofRadicals)
     return std::nullopt;
-  const ex parts = in_symbols.normal().numer_denom();
+  // GiNaC's normal() can throw from inside its gcd ("heur_gcd: not an integer polynomial",
+  // seen on radical inputs in one run of many): the sign is then unproven, never an error.
+  ex parts;
+  try {
+    parts = in_symbols.normal().numer_denom();
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
   const ex numerator = parts.op(0).expand();
   const GiNaC::symbol x;
   ex r = (x - numerator).expand();
   for (std::size_t i = to_symbols.roots.size(); i-- > 0;) {
     const auto& [base, y] = to_symbols.roots[i];
-    const ex base_parts = base.normal().numer_denom();
+    ex base_parts;
+    try {
+      base_parts = base.normal().numer_denom();
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
     if (is_a<GiNaC::add>(r) && r.nops() > kMaxZeroProofTerms) return std::nullopt;
     r = eliminate_square_root(r, y, base_parts.op(1), base_parts.op(0));
     if (!r.is_polynomial(x) || r.degree(x) > kMaxZeroProofDegree) return std::nullopt;
@@ -583,7 +595,11 @@ bool simplify_pass(ex& current, WorkBudget& budget) {
   SimplifyRadicals simplify;
   // normal() cancels sqrt(3)*sqrt(3) and collects fractions; expand() flattens the result
   // into a sum of terms.
-  current = simplify(current).normal().expand();
+  try {
+    current = simplify(current).normal().expand();
+  } catch (const std::exception&) {  // normal()'s gcd may throw: the last form is kept
+    return false;
+  }
   return true;
 }
 
@@ -650,7 +666,14 @@ Exact canonical(const Exact& e, WorkBudget& budget) {
   if (!budget.spend(exact_size(e).work)) return e;
   const ex expanded = e.expand();
   if (!small_enough(expanded, budget) || !budget.spend(normal_cost(expanded))) return e;
-  ex current = expanded.normal();
+  // normal() may throw from inside GiNaC's gcd ("heur_gcd: not an integer polynomial", seen
+  // on radical inputs in one run of many): the value is then kept in the form it came in.
+  ex current;
+  try {
+    current = expanded.normal();
+  } catch (const std::exception&) {
+    return e;
+  }
   if (!small_enough(current, budget)) return e;
   for (int pass = 0; pass < kMaxCanonicalPasses; ++pass) {
     ex next = current;
