@@ -5,10 +5,14 @@
 #pragma once
 
 #include <cstddef>
+#include <string_view>
 
 #include "solver/derivation/math_text.hpp"
 
 namespace frustum {
+
+// Characters (Unicode code points) of UTF-8 text: what "long" is measured in.
+std::size_t characters(std::string_view utf8);
 
 // A matrix ([…; …] / bmatrix) cannot break: mathematics holding one counts as short, to be
 // displayed on its own centred line.

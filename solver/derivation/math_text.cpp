@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/derivation/line_breaks.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {
@@ -101,12 +102,6 @@ namespace {
 // derivation shows its decimal expansion instead, cut after six significant digits and
 // followed by "…" (the digits shown are the value's own; the exact value stays in the JSON).
 constexpr std::size_t kReadableExact = 40;
-
-std::size_t characters(const std::string& s) {
-  std::size_t n = 0;
-  for (const unsigned char c : s) n += (c & 0xC0) != 0x80;  // UTF-8 lead bytes
-  return n;
-}
 
 // e's first six significant digits, cut (not rounded), as a plain decimal between 10⁻⁴ and
 // 10⁶ and in e-notation beyond; from the double nearest e (its 17 digits settle the first six
