@@ -134,7 +134,7 @@ std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::s
       std::string steps;
       for (const Step& step : r.derivation.steps()) {
         if (step.formula.empty() && step.substitution.empty() && step.result.empty()) continue;
-        steps += "\\item " + latex_prose_symbols(title_in(step, lang));
+        steps += "\\item " + latex_prose_symbols(step.title.in(lang));
         for (const MathText* m : {&step.formula, &step.substitution, &step.result})
           if (!m->latex.empty()) steps += "\\\\ \\(" + math_or_words(tr(*m, lang).latex) + "\\)";
         steps += "\n";

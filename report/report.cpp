@@ -108,7 +108,7 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
       if (a.verdict != Verdict::Correct && !a.derivation.empty() &&
           !a.derivation.back().answers.empty())
         out += fmt::format("      {} {}: {}\n", tr("See step", lang), step_number(a.derivation),
-                           title_in(a.derivation.back(), lang));
+                           a.derivation.back().title.in(lang));
     }
     if (derivation) {
       out += "  " + tr("How to get it", lang) + ":\n";

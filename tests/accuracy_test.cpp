@@ -48,7 +48,7 @@ ProblemSet hard(const std::string& name) {
 
 bool has_warning(const NumericResult& r, const std::string& title_part) {
   for (const NumericWarning& w : r.warnings)
-    if (w.title.find(title_part) != std::string::npos) return true;
+    if (w.title.en().find(title_part) != std::string::npos) return true;
   return false;
 }
 
@@ -329,9 +329,9 @@ TEST(SolvePrecision, DerivationNamesTheBackendAndKeepsOtherKindsExact) {
     ASSERT_FALSE(p.error) << p.error->format();
     bool backend = false;
     for (const Step& s : p.derivation.steps())
-      backend = backend || (s.title == "Backend" &&
-                            s.note.find(p.kind == "depth_at_pixel" ? "float (IEEE 754 binary32"
-                                                                   : "") != std::string::npos);
+      backend = backend || (s.title.en() == "Backend" &&
+                            s.note.en().find(p.kind == "depth_at_pixel" ? "float (IEEE 754 binary32"
+                                                                        : "") != std::string::npos);
     EXPECT_TRUE(backend) << p.id;
   }
   // seed 001's pixel: z = 8 in float too.
@@ -380,8 +380,8 @@ TEST(NumericWarnings, InfinityIsOverflowAndNanIsNotANumber) {
   const auto titles = [](const NumericResult& r) {
     std::set<std::string> t;
     for (const NumericWarning& w : r.warnings) {
-      t.insert(w.title);
-      EXPECT_EQ(w.text.find("no limit"), std::string::npos) << w.text;
+      t.insert(w.title.en());
+      EXPECT_EQ(w.text.en().find("no limit"), std::string::npos) << w.text.en();
     }
     return t;
   };
@@ -393,7 +393,7 @@ TEST(NumericWarnings, InfinityIsOverflowAndNanIsNotANumber) {
   inf_out.scalar("x", std::numeric_limits<float>::max() * 2.0f);
   const NumericResult inf = inf_out.take();
   EXPECT_EQ(titles(inf), std::set<std::string>{"Overflow"});
-  EXPECT_NE(inf.warnings[0].text.find("1.8·10³⁰⁸"), std::string::npos);
+  EXPECT_NE(inf.warnings[0].text.en().find("1.8·10³⁰⁸"), std::string::npos);
   NumericOut<double> fine(Precision::Double);
   fine.scalar("x", 1.5);
   EXPECT_TRUE(fine.take().warnings.empty());
@@ -473,8 +473,8 @@ TEST(HardCases, DiscreteAnswersAreExactInEveryBackend) {
           ++compared;
         }
         for (const Step& s : r.derivation.steps())
-          if (s.title == "Backend" &&
-              s.note.find("decided by exact arithmetic") != std::string::npos)
+          if (s.title.en() == "Backend" &&
+              s.note.en().find("decided by exact arithmetic") != std::string::npos)
             ++fallbacks;
       }
     }
@@ -512,11 +512,11 @@ TEST(HardCases, DigitEstimatesMatchTheDigitsActuallyLost) {
         }
         const std::string claim = std::string(to_string(p)) + " keeps about ";
         for (const NumericWarning& w : r.warnings) {
-          const std::size_t at = w.text.find(claim);
+          const std::size_t at = w.text.en().find(claim);
           if (at == std::string::npos) continue;
-          const double said = std::stod(w.text.substr(at + claim.size()));
-          EXPECT_GE(kept, said - 1)
-              << where << ": says " << said << " digits, keeps " << kept << " (" << w.text << ")";
+          const double said = std::stod(w.text.en().substr(at + claim.size()));
+          EXPECT_GE(kept, said - 1) << where << ": says " << said << " digits, keeps " << kept
+                                    << " (" << w.text.en() << ")";
           ++estimates;
         }
         ++checked;
@@ -647,8 +647,9 @@ TEST(HardCases, EdgeOnPlaneMethodWarnsAndFallsBack) {
   EXPECT_EQ(exact_text(r, "plane"), "1, 5000, -1, 500100");
   bool warned = false;
   for (const Step& s : r.derivation.steps())
-    warned = warned || (s.level == Step::Level::Warning && s.title == "Nearly edge-on triangle" &&
-                        s.note.find("κ") != std::string::npos);
+    warned =
+        warned || (s.level == Step::Level::Warning && s.title.en() == "Nearly edge-on triangle" &&
+                   s.note.en().find("κ") != std::string::npos);
   EXPECT_TRUE(warned);
   // float: the plane method would keep no digit, so z comes from barycentric interpolation and
   // stays within the vertices' depths [0, 10]; double and long double land near 5.
@@ -692,7 +693,7 @@ TEST(HardCases, FarNearOneMillionFloatCannotSeparateWhatExactDoes) {
   EXPECT_EQ(exact_sign(eb.answers.find("window")->exact[2] - ea.answers.find("window")->exact[2]),
             1);
   bool noted = false;
-  for (const Step& s : ea.derivation.steps()) noted = noted || s.title == "Depth precision";
+  for (const Step& s : ea.derivation.steps()) noted = noted || s.title.en() == "Depth precision";
   EXPECT_TRUE(noted);
   EXPECT_EQ(raw(numeric(a, Precision::Float), "window")[2],
             raw(numeric(b, Precision::Float), "window")[2]);

@@ -150,7 +150,7 @@ TEST(BadInput, ProblemSetsGiveTheirLocatedMessageAndTheRestSolves) {
       const auto& steps = bad->derivation.steps();
       EXPECT_TRUE(std::any_of(
           steps.begin(), steps.end(),
-          [&](const Step& s) { return s.level == Step::Level::Warning && s.title == title; }))
+          [&](const Step& s) { return s.level == Step::Level::Warning && s.title.en() == title; }))
           << "warning '" << title << "'";
     }
     // Every renderer copes with what was loaded (invalid UTF-8 included).

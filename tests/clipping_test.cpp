@@ -224,7 +224,7 @@ TEST(ClipLineKind, TwoDimensionalSegmentClippedAtBothEnds) {
   EXPECT_FALSE(r.answers.find("reject")->flag);
   EXPECT_EQ(exact_text(r, "clipped"), "0, 7/6, 4, 11/6");
   int iterations = 0;
-  for (const Step& s : r.derivation.steps()) iterations += s.title.rfind("Iteration", 0) == 0;
+  for (const Step& s : r.derivation.steps()) iterations += s.title.en().rfind("Iteration", 0) == 0;
   EXPECT_EQ(iterations, 2);
 }
 
@@ -271,7 +271,7 @@ TEST(ClipPolygonKind, OneStepPerClipPlane) {
   ASSERT_FALSE(r.error) << error_text(r);
   EXPECT_EQ(exact_text(r, "clipped"), "1, 1, 3, 1, 1, 3");
   int stages = 0;
-  for (const Step& s : r.derivation.steps()) stages += s.title.rfind("Clip against", 0) == 0;
+  for (const Step& s : r.derivation.steps()) stages += s.title.en().rfind("Clip against", 0) == 0;
   EXPECT_EQ(stages, 4);
   const ProblemResult none =
       solve_yaml(one("clip_polygon", "{points: [[5, 5, 5], [6, 5, 5], [6, 6, 5]]}"));

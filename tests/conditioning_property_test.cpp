@@ -184,8 +184,8 @@ NumericResult numeric(const ProblemSpec& spec, Precision p) {
 }
 
 bool exact_value_note(const NumericResult& r) {
-  for (const std::string& n : r.notes)
-    if (n.find("computed exactly on the given numbers") != std::string::npos) return true;
+  for (const Said& n : r.notes)
+    if (n.en().find("computed exactly on the given numbers") != std::string::npos) return true;
   return false;
 }
 
@@ -231,12 +231,12 @@ TEST(ConditioningProperty, WarningsTellTheDigitsActuallyKept) {
         bool condition_warning = false;
         const std::string claim = std::string(to_string(p)) + " keeps about ";
         for (const NumericWarning& w : r.warnings) {
-          const std::size_t at = w.text.find(claim);
+          const std::size_t at = w.text.en().find(claim);
           if (at == std::string::npos) continue;
           condition_warning = true;
-          const double said = std::stod(w.text.substr(at + claim.size()));
+          const double said = std::stod(w.text.en().substr(at + claim.size()));
           EXPECT_GE(kept, said - 1) << where << ": says " << said << " digits, keeps " << kept
-                                    << " (" << w.title << ": " << w.text << ")";
+                                    << " (" << w.title.en() << ": " << w.text.en() << ")";
           gloom[kind].push_back(kept - said);
           ++claims[kind];
         }

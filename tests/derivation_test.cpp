@@ -21,7 +21,7 @@ TEST(Derivation, StepsForAnAnswerStopAtTheStepThatYieldsIt) {
   EXPECT_EQ(to_z.back().answers, std::vector<std::string>{"z"});
   // The API's eye-space line is not stated: the answer does not depend on it (issue 16), and
   // "right-handed" would contradict the left-handed projection coordinates stated instead.
-  EXPECT_EQ(r.derivation.steps().front().title, "Projection coordinates are left-handed");
+  EXPECT_EQ(r.derivation.steps().front().title.en(), "Projection coordinates are left-handed");
 }
 
 TEST(Derivation, TextShowsExactValuesWithDecimalsAndNoColourUnlessAsked) {
@@ -89,7 +89,7 @@ TEST(Derivation, APolygonThatOnlyTouchesTheWindowIsNotCalledOutside) {
     const ProblemResult r = test::solve_yaml(yaml);
     EXPECT_FALSE(r.error) << yaml;
     EXPECT_EQ(r.answers.find("clipped")->shape, Value::Shape::Null);
-    return r.derivation.steps().back().note;
+    return r.derivation.steps().back().note.en();
   };
   for (const char* touching : {
            R"(problems:

@@ -122,7 +122,7 @@ TEST(Handedness, DepthAtPixelIsTheSameInBothCoursesAndSaysWhy) {
   EXPECT_EQ(test::exact_text(left, "z"), "8");
   EXPECT_EQ(numbers(left, "plane"), numbers(right, "plane"));
   std::string notes;
-  for (const Step& st : left.derivation.steps()) notes += st.note + "\n";
+  for (const Step& st : left.derivation.steps()) notes += st.note.en() + "\n";
   EXPECT_NE(notes.find("as this course's eye space is"), std::string::npos) << notes;
 }
 
@@ -151,10 +151,10 @@ TEST(Handedness, LookAtTakesTheLeftHandedBasisAndItsHeadersSaySo) {
     EXPECT_NEAR(numbers(left, "points")[2], distance, 1e-12);
     EXPECT_NEAR(numbers(right, "points")[2], -distance, 1e-12);
     for (const Step& s : left.derivation.steps()) {
-      EXPECT_EQ(s.title.find("right-handed"), std::string::npos) << s.title;
-      if (s.title == "Conventions") {
-        EXPECT_NE(s.note.find("left-handed"), std::string::npos) << s.note;
-        EXPECT_EQ(s.note.find("right-handed"), std::string::npos) << s.note;
+      EXPECT_EQ(s.title.en().find("right-handed"), std::string::npos) << s.title.en();
+      if (s.title.en() == "Conventions") {
+        EXPECT_NE(s.note.en().find("left-handed"), std::string::npos) << s.note.en();
+        EXPECT_EQ(s.note.en().find("right-handed"), std::string::npos) << s.note.en();
       }
     }
   }
@@ -206,7 +206,7 @@ TEST(Handedness, ProjectionIsTheRightHandedOneMirroredInZ) {
   EXPECT_NEAR(l[2], r[2], 1e-12);
   EXPECT_EQ(left.answers.find("inside")->flag, right.answers.find("inside")->flag);
   std::string notes;
-  for (const Step& st : left.derivation.steps()) notes += st.note + "\n";
+  for (const Step& st : left.derivation.steps()) notes += st.note.en() + "\n";
   EXPECT_NE(notes.find("mirrored left to right"), std::string::npos) << notes;
 }
 

@@ -163,7 +163,7 @@ TEST(LectureDepthSort, TheTieRuleIsSaidOnlyWhereDepthsTie) {
   const SetResult set = solve_file("problems/examples/visibility.yaml");
   const auto said = [&](const std::string& id) {
     for (const Step& s : find(set, id).derivation.steps())
-      if (s.note == "Equal depths keep the listed order.") return true;
+      if (s.note.en() == "Equal depths keep the listed order.") return true;
     return false;
   };
   EXPECT_TRUE(said("depth-sort-interpenetrating"));

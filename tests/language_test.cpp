@@ -5,6 +5,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include "report/report.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
+#include "solver/problem/conventions_note.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "student_text.hpp"
@@ -36,8 +38,9 @@ const std::set<std::string>& names() {
       "FrontCounterClockwise", "XMMatrixTranslation", "OrthoOffCenterLH", "PerspectiveOffCenterLH",
       "translate",
       // Names of functions and quantities inside formulas.
-      "acos", "arccos", "exp", "log", "rad", "outcode", "ndc", "clip", "dist", "depth", "fov",
-      "nf"};
+      "acos", "arccos", "exp", "log", "rad", "outcode", "ndc", "clip", "dist", "depth", "fov", "nf",
+      // A scene object's name (the paper plane of the paper-plane seed): names stay as written.
+      "plane"};
   return n;
 }
 
@@ -81,13 +84,16 @@ std::vector<std::string> english_words(const std::string& text) {
 
 // How many of `texts` (text → where it was seen) keep an English word in Japanese or Russian;
 // the first 40 are reported, and all are written to $FRUSTUM_UNTRANSLATED when it is set.
-int untranslated(const std::map<std::string, std::string>& texts) {
+// Texts in every language (keyed by all three, so one English said two ways is checked twice),
+// each with where it was first seen.
+int untranslated(const std::map<std::array<std::string, 3>, std::string>& texts) {
   std::ofstream dump;
   if (const char* path = std::getenv("FRUSTUM_UNTRANSLATED")) dump.open(path);
   int failures = 0;
   for (const Lang lang : {Lang::Ja, Lang::Ru})
-    for (const auto& [text, where] : texts) {
-      const std::string shown = tr(text, lang);
+    for (const auto& [said, where] : texts) {
+      const std::string& text = said[0];
+      const std::string& shown = said[static_cast<std::size_t>(lang)];
       const std::vector<std::string> words = english_words(shown);
       if (words.empty()) continue;
       if (dump.is_open()) dump << to_string(lang) << "\t" << where << "\t" << text << "\n";
@@ -108,8 +114,9 @@ TEST(Language, EnglishWordsAreFoundAndNamesAreNot) {
 }
 
 TEST(Language, NoEnglishWordReachesAJapaneseOrRussianStudent) {
-  std::map<std::string, std::string> texts;  // text → where first seen
-  for (const test::StudentText& t : test::student_texts()) texts.emplace(t.text, t.where);
+  std::map<std::array<std::string, 3>, std::string> texts;  // text → where first seen
+  for (const test::StudentText& t : test::student_texts())
+    texts.emplace(std::array{t.text.en(), t.text.in(Lang::Ja), t.text.in(Lang::Ru)}, t.where);
   EXPECT_GT(texts.size(), 300u);
   EXPECT_EQ(untranslated(texts), 0);
 }
@@ -183,13 +190,15 @@ TEST(Language, ReadingErrorsAreInTheStudentsLanguage) {
   std::vector<YAML::Node> inputs;
   for (const std::string& text : scalars) inputs.emplace_back(text);
   for (const std::string& text : structured) inputs.push_back(YAML::Load(text));
-  std::map<std::string, std::string> errors;  // error → the input and answer that gave it
+  // error → the input and answer that gave it
+  std::map<std::array<std::string, 3>, std::string> errors;
   for (const KindInfo& kind : builtin_kinds().all())
     for (const AnswerSpec& answer : kind.answers)
       for (const YAML::Node& input : inputs) {
         const ParsedAnswer p = parse_answer(input, answer, AngleUnit::Degrees);
         if (!p.ok && !p.error.empty())
-          errors.emplace(p.error, kind.name + "." + answer.name + " ← " + YAML::Dump(input));
+          errors.emplace(std::array{p.error, tr(p.error, Lang::Ja), tr(p.error, Lang::Ru)},
+                         kind.name + "." + answer.name + " ← " + YAML::Dump(input));
       }
   EXPECT_GT(errors.size(), 60u);
   EXPECT_EQ(untranslated(errors), 0);
@@ -206,7 +215,7 @@ bool cites_lecture_file(std::string text) {
 TEST(Language, StudentTextCitesNoLectureFile) {
   for (const test::StudentText& t : test::student_texts())
     for (const Lang lang : {Lang::En, Lang::Ja, Lang::Ru})
-      EXPECT_FALSE(cites_lecture_file(tr(t.text, lang))) << t.where << ": " << tr(t.text, lang);
+      EXPECT_FALSE(cites_lecture_file(t.text.in(lang))) << t.where << ": " << t.text.in(lang);
   for (const std::string& file : test::bundled_sets()) {
     const ProblemSet set = load_problem_set(file);
     for (const auto& [lang, title] : set.title.all())
@@ -239,13 +248,13 @@ TEST(Language, CourseConventionsLineIsTranslated) {
   for (const Api api : {Api::OpenGL, Api::Processing, Api::DirectX})
     for (const bool api_used : {false, true})
       for (const bool angles : {false, true}) {
-        const std::string line =
-            describe(test::course_conventions(api),
-                     ConventionUse{.api = api_used, .angles = angles, .handedness = true});
+        const Said line =
+            conventions_note(test::course_conventions(api),
+                             ConventionUse{.api = api_used, .angles = angles, .handedness = true});
         if (line.empty()) continue;
         for (const Lang lang : {Lang::Ja, Lang::Ru})
-          EXPECT_EQ(english_words(tr(line, lang)), std::vector<std::string>{})
-              << to_string(lang) << ": " << tr(line, lang);
+          EXPECT_EQ(english_words(line.in(lang)), std::vector<std::string>{})
+              << to_string(lang) << ": " << line.in(lang);
       }
 }
 
@@ -337,7 +346,7 @@ TEST(Language, NoEnglishWordInTheMathematicsOfAJapaneseOrRussianDerivation) {
             ++formulas;
             const std::string shown = tr(*m, lang).unicode;
             if (!english_words(shown).empty())
-              failures.emplace(shown, set.problems[i].id + " (" + s.title + ")");
+              failures.emplace(shown, set.problems[i].id + " (" + s.title.en() + ")");
           }
     }
   }

@@ -75,7 +75,7 @@ TEST(Seed004, ModelViewProjectionChainIsOneProblem) {
   EXPECT_EQ(test::exact_text(p, "ndc"), "0, 1/5, 61/99");
   EXPECT_EQ(test::exact_text(p, "window"), "400, 360, 80/99");
   std::vector<std::string> titles;
-  for (const Step& s : p.derivation.steps()) titles.push_back(s.title);
+  for (const Step& s : p.derivation.steps()) titles.push_back(s.title.en());
   const auto at = [&](const std::string& t) {
     return std::find(titles.begin(), titles.end(), t) - titles.begin();
   };
@@ -160,7 +160,7 @@ TEST(LectureExercises, CourseConventionForOrthoZPlanesIsHonoured) {
   ASSERT_TRUE(m);
   EXPECT_NEAR(m->numbers[10], 1.0 / 495, 1e-15);
   EXPECT_NEAR(m->numbers[11], -1010.0 / 990, 1e-12);
-  const std::string note = solved.problems.at(0).derivation.steps().back().note;
+  const std::string note = solved.problems.at(0).derivation.steps().back().note.en();
   EXPECT_NE(note.find("−2/(f − n)"), std::string::npos)
       << "the derivation relates the two readings";
   const std::string answers =
@@ -234,7 +234,7 @@ TEST(LectureExercises, TheAspectRatioOnTheTopIsNamedAndExplainedTruly) {
   EXPECT_EQ(on_top.misconception, "aspect ratio on the top");
   const ProblemResult solved = test::solve_yaml(set);
   std::string notes;
-  for (const Step& s : solved.derivation.steps()) notes += s.note;
+  for (const Step& s : solved.derivation.steps()) notes += s.note.en();
   EXPECT_NE(notes.find("t = r·h/w = n·(h/w)·tan(θ/2)"), std::string::npos) << notes;
   EXPECT_NE(notes.find("matches neither reading of θ"), std::string::npos) << notes;
   EXPECT_EQ(notes.find("reads θ as a horizontal angle"), std::string::npos)
@@ -263,7 +263,7 @@ TEST(LectureExercises, PerspectiveWithNoArgumentsIsProcessingsDefault) {
   EXPECT_NEAR(m->numbers[11], -1000 * std::sqrt(3.0) / 99, 1e-9);
   bool defaults_shown = false;
   for (const Step& s : plain.derivation.steps())
-    defaults_shown = defaults_shown || s.title == "perspective() with no arguments";
+    defaults_shown = defaults_shown || s.title.en() == "perspective() with no arguments";
   EXPECT_TRUE(defaults_shown);
   const ProblemResult wide = test::solve_yaml(test::one(
       "projection_matrix", "{perspective: {width: 200, height: 100}}", "{api: processing}"));
@@ -293,10 +293,10 @@ TEST(LectureExercises, CourseConventionForHorizontalFovIsHonoured) {
   bool related = false;
   for (const Step& s : m.derivation.steps())
     related =
-        related || (s.title == "The same frustum from the vertical angle" &&
+        related || (s.title.en() == "The same frustum from the vertical angle" &&
                     s.result.unicode.find("fovy = 2·atan(1/2) ≈ 53.13°") != std::string::npos);
   EXPECT_TRUE(related) << "the derivation shows fovy = 2·atan(tan(fovx/2)/aspect)";
-  EXPECT_NE(m.derivation.steps().front().note.find("the field of view is horizontal"),
+  EXPECT_NE(m.derivation.steps().front().note.en().find("the field of view is horizontal"),
             std::string::npos);
   const ProblemResult& p = find(solved, "fov-horizontal-point");
   EXPECT_EQ(test::exact_text(p, "window"), "600, 300, 5/9");

@@ -360,7 +360,7 @@ TEST(ZBufferKind, ThreeOverlappingPolygonsLikeSeed001) {
             (std::vector<std::string>{"111./111./111.", "111./1222/1222", "1133/1222/1222"}));
   EXPECT_EQ(exact_text(r, "depth"), "5, 5, 4, 4, 5, 3, 3, 3, 5, 3, 3, 3");
   int polygons = 0;
-  for (const Step& s : r.derivation.steps()) polygons += s.title.rfind("Polygon", 0) == 0;
+  for (const Step& s : r.derivation.steps()) polygons += s.title.en().rfind("Polygon", 0) == 0;
   EXPECT_EQ(polygons, 3);
 }
 

@@ -436,7 +436,7 @@ TEST(RenderKind, NearerTriangleWinsWhateverTheOrder) {
   // The trace lists all three in drawing order: written, written, hidden.
   std::string trace;
   for (const Step& s : r.derivation.steps())
-    if (s.title == "Pixel (32, 24)") trace = s.note;
+    if (s.title.en() == "Pixel (32, 24)") trace = s.note.en();
   EXPECT_NE(trace.find("1. triangle 0 (far"), std::string::npos) << trace;
   EXPECT_NE(trace.find("2. triangle 1 (near"), std::string::npos) << trace;
   EXPECT_NE(trace.find("3. triangle 2 (hidden"), std::string::npos) << trace;
@@ -726,9 +726,10 @@ TEST(RenderKind, HardCasesAreDecidedExactlyWhereFloatsCannot) {
     floats[r.id] = float_pipeline_winner(g.spec.scene, g.pixels[0][0], g.pixels[0][1]);
     bool said = false;
     for (const Step& st : r.derivation.steps())
-      said = said ||
-             st.note.find("xact arithmetic on the given numbers decided") != std::string::npos ||
-             st.note.find("decided by exact arithmetic") != std::string::npos;
+      said =
+          said ||
+          st.note.en().find("xact arithmetic on the given numbers decided") != std::string::npos ||
+          st.note.en().find("decided by exact arithmetic") != std::string::npos;
     EXPECT_TRUE(said) << r.id;
   }
   const std::map<std::string, std::string> want = {{"render-vertex-on-half-grid", "background"},

@@ -89,7 +89,7 @@ TEST(Seed000, NearPlaneMapsToMinusOneDespiteTheProse) {
   EXPECT_EQ(exact_text(p, "ndc"), "0, 0, -1");
   bool noted = false;
   for (const Step& s : p.derivation.steps())
-    noted = noted || s.note.find("contradicts this matrix") != std::string::npos;
+    noted = noted || s.note.en().find("contradicts this matrix") != std::string::npos;
   EXPECT_TRUE(noted) << "the derivation notes, in neutral words, the prose that says otherwise";
 }
 
@@ -110,7 +110,7 @@ TEST(Seed004, RotationAboutOneOneOneCyclesTheAxes) {
   bool noted = false;
   for (const ProblemResult& q : r.problems)
     for (const Step& s : q.derivation.steps())
-      noted = noted || s.note.find("−b = t = n·(w/h)·tan(θ/2)") != std::string::npos;
+      noted = noted || s.note.en().find("−b = t = n·(w/h)·tan(θ/2)") != std::string::npos;
   EXPECT_TRUE(noted)
       << "the perspective derivation notes, in neutral words, where the aspect ratio belongs";
 }

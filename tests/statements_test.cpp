@@ -67,7 +67,10 @@ TEST(Seed003, CullingStatementsKeyIsOneTrueThreeFalse) {
       << half.feedback;
   // The wrong answer comes with the derivation that holds the reasons.
   ASSERT_FALSE(half.derivation.empty());
-  EXPECT_EQ(half.derivation[2].note, "Reason: 頂点ではなく、面の法線が必要である.");
+  EXPECT_EQ(half.derivation[2].note.in(Lang::Ja), "理由: 頂点ではなく、面の法線が必要である.");
+  // An English reader reads the set's English text of the reason.
+  EXPECT_EQ(half.derivation[2].note.en(),
+            "Reason: It needs the normals of the faces, not of the vertices.");
 }
 
 TEST(Statements, DerivationListsEachStatementWithItsMarkAndReason) {
@@ -76,19 +79,20 @@ TEST(Statements, DerivationListsEachStatementWithItsMarkAndReason) {
   const ProblemResult& p = culling(solved);
   const std::vector<Step>& steps = p.derivation.steps();
   ASSERT_EQ(steps.size(), 5u);
-  EXPECT_EQ(steps[0].title,
-            "Statement 1: 1つの凸多面体の陰面消去にはバックフェースカリングが効果的である.");
+  EXPECT_EQ(steps[0].title.en(),
+            "Statement 1: Back-face culling is effective for hidden-surface removal of a single "
+            "convex polyhedron.");
   EXPECT_EQ(steps[0].result.unicode, "○ True");
   EXPECT_EQ(steps[1].result.unicode, "× False");
   EXPECT_EQ(steps[1].result.latex, "\\times\\; \\text{False}");
-  EXPECT_EQ(steps[4].title, "The true statements");
+  EXPECT_EQ(steps[4].title.en(), "The true statements");
   EXPECT_EQ(steps[4].result.unicode, "1");
   // In Japanese the lecture's own words; in Russian, Russian ones.
-  EXPECT_EQ(tr(steps[0].title, Lang::Ja),
+  EXPECT_EQ(steps[0].title.in(Lang::Ja),
             "記述 1: 1つの凸多面体の陰面消去にはバックフェースカリングが効果的である.");
   EXPECT_EQ(tr(steps[0].result, Lang::Ja).unicode, "○ 正しい");
   EXPECT_EQ(tr(steps[3].result, Lang::Ru).unicode, "× неверно");
-  EXPECT_EQ(tr(steps[4].title, Lang::Ru), "Верные утверждения");
+  EXPECT_EQ(steps[4].title.in(Lang::Ru), "Верные утверждения");
   const SetResult one{set.file, {}, "", {p}, {}};
   const std::string ja = render_text(one, TextStyle{false, Lang::Ja});
   EXPECT_NE(ja.find("記述 3: バックフェースカリングを実行するためには頂点の法線が必要である."),

@@ -21,7 +21,7 @@ namespace frustum::test {
 
 struct StudentText {
   std::string where;  // problem id and what the text is
-  std::string text;   // as recorded (English)
+  Said text;          // in every language (the grader's text: English translated by the catalogue)
 };
 
 // A value as a student would write it in an answers file.
@@ -64,12 +64,10 @@ inline YAML::Node answer_yaml(const Value& v) {
 inline void add_steps(std::vector<StudentText>& out, const std::string& where,
                       const std::vector<Step>& steps) {
   for (const Step& s : steps) {
-    // A title or note quoting the instructor's text in several languages (a statement and its
-    // reason) is the instructor's, checked in each language by instructor_texts().
-    if (s.titles.empty()) out.push_back({where + " title", s.title});
-    if (!s.note.empty() && s.notes.empty()) out.push_back({where + " note", s.note});
+    out.push_back({where + " title", s.title});
+    if (!s.note.empty()) out.push_back({where + " note", s.note});
     for (const MathText* m : {&s.formula, &s.substitution, &s.result})
-      for (const std::string& w : m->words) out.push_back({where + " word", w});
+      for (const Said& w : m->words) out.push_back({where + " word", w});
   }
 }
 
@@ -150,8 +148,7 @@ inline std::vector<StudentText> student_texts() {
             add_steps(out, spec.id + " (" + std::string(to_string(p)) + ")", n.derivation.steps());
         }
       for (const auto& [name, v] : r.answers.items())
-        for (const std::string& w : v.shown().words)
-          out.push_back({spec.id + "." + name + " word", w});
+        for (const Said& w : v.shown().words) out.push_back({spec.id + "." + name + " word", w});
       for (const Misconception& m : solved.mistakes[i]) {
         out.push_back({spec.id + " mistake", m.name});
         out.push_back({spec.id + " mistake feedback", m.feedback});
@@ -232,10 +229,9 @@ inline std::vector<InstructorText> instructor_texts() {
       if (!p.text.empty())
         out.push_back({where + " text", each([&](Lang l) { return p.text.in(l); })});
       for (const Step& s : p.derivation.steps()) {
-        if (!s.titles.empty())
-          out.push_back({where + " step", each([&](Lang l) { return title_in(s, l); })});
-        if (!s.notes.empty())
-          out.push_back({where + " note", each([&](Lang l) { return note_in(s, l); })});
+        out.push_back({where + " step", each([&](Lang l) { return s.title.in(l); })});
+        if (!s.note.empty())
+          out.push_back({where + " note", each([&](Lang l) { return s.note.in(l); })});
       }
     }
   }

@@ -1013,8 +1013,8 @@ TEST(ConventionsEveryKind, ClippingDefaultVolumeFollowsTheNdcRange) {
         << to_string(api);
     bool titled = false;
     for (const Step& st : line.derivation.steps())
-      titled =
-          titled || st.title == (dx ? "Clip volume (default: DirectX's NDC volume, z in [0, 1])"
+      titled = titled ||
+               st.title.en() == (dx ? "Clip volume (default: DirectX's NDC volume, z in [0, 1])"
                                     : "Clip volume (default: the NDC cube)");
     EXPECT_TRUE(titled) << to_string(api);
     const ProblemResult poly =

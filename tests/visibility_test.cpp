@@ -216,8 +216,9 @@ TEST(EdgeVisibility, HiddenLineNoteListsTheFrontEdgesWhenNoneIsVisible) {
   for (const Step& s : r.derivation.steps())
     if (s.title == "Edge classes") {
       seen = true;
-      EXPECT_EQ(s.note.find("none"), std::string::npos) << s.note;
-      EXPECT_NE(s.note.find("(visible + silhouette): 1-2, 1-3, 2-3."), std::string::npos) << s.note;
+      EXPECT_EQ(s.note.en().find("none"), std::string::npos) << s.note.en();
+      EXPECT_NE(s.note.en().find("(visible + silhouette): 1-2, 1-3, 2-3."), std::string::npos)
+          << s.note.en();
     }
   EXPECT_TRUE(seen);
 }
@@ -253,7 +254,7 @@ TEST(Seed003, IcosahedronQuestionsAgreeWithOneClassification) {
   EXPECT_EQ(3 * 8u, 2 * drawn.size() + silhouette.size());
   bool one_loop = false;
   for (const Step& s : r["seed003-ico-silhouette"].derivation.steps())
-    one_loop |= s.note.find("(1 loop)") != std::string::npos;
+    one_loop |= s.note.en().find("(1 loop)") != std::string::npos;
   EXPECT_TRUE(one_loop);
   EXPECT_EQ(silhouette.size() + hidden.size() + drawn.size(), 30u);
   EXPECT_TRUE(r["seed003-ico-hidden-lines"].answers.find("backface_sufficient")->flag);
@@ -404,9 +405,9 @@ TEST(EdgeVisibility, DerivationShowsDfTableAndTheSilhouetteLoop) {
   ASSERT_FALSE(r.error) << error_text(r);
   bool table = false, loop = false;
   for (const Step& s : r.derivation.steps()) {
-    table |=
-        s.note.find("D_f = ") != std::string::npos && s.note.find("face 7") != std::string::npos;
-    loop |= s.note.find("(1 loop)") != std::string::npos;
+    table |= s.note.en().find("D_f = ") != std::string::npos &&
+             s.note.en().find("face 7") != std::string::npos;
+    loop |= s.note.en().find("(1 loop)") != std::string::npos;
   }
   EXPECT_TRUE(table);
   EXPECT_TRUE(loop);
@@ -432,8 +433,8 @@ TEST(DepthSort, CyclicOverlapOfThreeLongPolygonsConflicts) {
   EXPECT_EQ(words_of(r, "conflicts"), (std::set<std::string>{"0-1", "0-2", "1-2"}));
   bool cyclic = false;
   for (const Step& s : r.derivation.steps())
-    cyclic |= s.note.find("三すくみ") != std::string::npos &&
-              s.note.find("CONFLICT") != std::string::npos;
+    cyclic |= s.note.en().find("三すくみ") != std::string::npos &&
+              s.note.en().find("CONFLICT") != std::string::npos;
   EXPECT_TRUE(cyclic);
   // The same as library data: every pair is on the cycle.
   std::vector<Polygon3<Exact>> polys = {
@@ -455,7 +456,7 @@ TEST(DepthSort, InterpenetratingPolygonsConflict) {
   EXPECT_EQ(words_of(r, "conflicts"), (std::set<std::string>{"0-1"}));
   EXPECT_EQ(test::exact_text(r, "depths"), "6, 6");
   bool said = false;
-  for (const Step& s : r.derivation.steps()) said |= s.note.find("貫通") != std::string::npos;
+  for (const Step& s : r.derivation.steps()) said |= s.note.en().find("貫通") != std::string::npos;
   EXPECT_TRUE(said);
 }
 
@@ -470,7 +471,7 @@ TEST(DepthSort, ConcavePolygonWrappingAroundConflicts) {
   EXPECT_EQ(words_of(r, "conflicts"), (std::set<std::string>{"0-1"}));
   bool wraps = false;
   for (const Step& s : r.derivation.steps())
-    wraps |= s.note.find("wraps around") != std::string::npos;
+    wraps |= s.note.en().find("wraps around") != std::string::npos;
   EXPECT_TRUE(wraps);
 }
 

@@ -4,7 +4,7 @@
 
 namespace frustum {
 
-Step& Derivation::add(std::string title, MathText formula, MathText substitution, MathText result) {
+Step& Derivation::add(Said title, MathText formula, MathText substitution, MathText result) {
   Step s;
   s.title = std::move(title);
   s.formula = std::move(formula);
@@ -14,14 +14,14 @@ Step& Derivation::add(std::string title, MathText formula, MathText substitution
   return steps_.back();
 }
 
-Step& Derivation::note(std::string title, std::string text) {
+Step& Derivation::note(Said title, Said text) {
   Step& s = add(std::move(title));
   s.note = std::move(text);
   s.level = Step::Level::Note;
   return s;
 }
 
-Step& Derivation::warn(std::string title, std::string text) {
+Step& Derivation::warn(Said title, Said text) {
   Step& s = add(std::move(title));
   s.note = std::move(text);
   s.level = Step::Level::Warning;

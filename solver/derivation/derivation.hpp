@@ -3,36 +3,32 @@
 // (render_text, render_markdown, render_json) decide how it looks.
 #pragma once
 
-#include <map>
 #include <string>
 #include <vector>
 
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/math_text.hpp"
+#include "solver/derivation/said.hpp"
 
 namespace frustum {
 
 struct Step {
   enum class Level { Info, Note, Warning };
 
-  std::string title;      // "Plane through A"
+  Said title;             // "Plane through A", in each language
   MathText formula;       // n·(p − A) = 0
   MathText substitution;  // (1/√3, 1/√3, −1/√3)·(x, y, z − 6) = 0
   MathText result;        // x + y − z = −6
-  std::string note;       // prose: a convention, a seed's slip, a warning
+  Said note;              // prose: a convention, a seed's slip, a warning
   Level level = Level::Info;
   std::vector<std::string> answers;  // the answers this step produces ("plane")
-  // The title and note as written for another language, where they quote an instructor's text
-  // that the set gives in that language (a statement and its reason): local_text.hpp.
-  std::map<Lang, std::string> titles, notes;
 };
 
 class Derivation {
  public:
-  Step& add(std::string title, MathText formula = {}, MathText substitution = {},
-            MathText result = {});
-  Step& note(std::string title, std::string text);
-  Step& warn(std::string title, std::string text);
+  Step& add(Said title, MathText formula = {}, MathText substitution = {}, MathText result = {});
+  Step& note(Said title, Said text);
+  Step& warn(Said title, Said text);
   // Marks the most recent step as producing the named answer.
   void yields(const std::string& answer);
 

@@ -219,10 +219,10 @@ namespace {
 
 // Longer words first: "0 back faces culled" is one phrase, not "0 back"; "window triangles" is
 // not "window" and a translated "triangles".
-std::vector<std::string> longest_first(const MathText& m) {
-  std::vector<std::string> words = m.words;
+std::vector<Said> longest_first(const MathText& m) {
+  std::vector<Said> words = m.words;
   std::stable_sort(words.begin(), words.end(),
-                   [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+                   [](const Said& a, const Said& b) { return a.en().size() > b.en().size(); });
   return words;
 }
 
@@ -241,8 +241,9 @@ void agree_counts(MathText& m, Lang lang) {
     while (i > 0 && s[i - 1] >= '0' && s[i - 1] <= '9') --i;
     return s.substr(i, at - i);
   };
-  for (const std::string& w : longest_first(m))
+  for (const Said& said : longest_first(m))
     for (const CountForms& c : count_forms()) {
+      const std::string& w = said.en();
       if (c.en != w) continue;
       const std::string unicode_word = " " + w, latex_word = "\\,\\text{" + latex_text(w) + "}";
       for (std::size_t at = 0; (at = m.unicode.find(unicode_word, at)) != std::string::npos;) {
@@ -278,13 +279,60 @@ RuForm russian_form(long n) {
   return last == 1 ? RuForm::One : last >= 2 && last <= 4 ? RuForm::Few : RuForm::Many;
 }
 
+Said::Said(const std::string& english)
+    : text_{english, tr(english, Lang::Ja), tr(english, Lang::Ru)} {}
+
+namespace {
+
+// Joins two texts of one language as consecutive sentences: one space between (none at a line
+// break).
+void join(std::string& left, const std::string& right, bool spaced) {
+  if (right.empty()) return;
+  if (spaced && !left.empty() && left.back() != '\n' && left.back() != ' ' &&
+      right.front() != '\n' && right.front() != ' ')
+    left += ' ';
+  left += right;
+}
+
+}  // namespace
+
+Said& Said::operator+=(const Said& next) {
+  for (std::size_t i = 0; i < text_.size(); ++i) join(text_[i], next.text_[i], true);
+  return *this;
+}
+
+Said& Said::append(const Said& next) {
+  for (std::size_t i = 0; i < text_.size(); ++i) join(text_[i], next.text_[i], false);
+  return *this;
+}
+
+Said said_detail::fill(const Phrase& p, const Said* args, std::size_t n) {
+  std::array<std::string, 3> out;
+  for (const Lang lang : kLangs) {
+    const std::string_view to = p.in(lang);
+    std::string& text = out[static_cast<std::size_t>(lang)];
+    for (std::size_t i = 0; i < to.size(); ++i) {
+      const std::size_t slot = i + 2 < to.size() && to[i] == '{' && to[i + 2] == '}'
+                                   ? static_cast<std::size_t>(to[i + 1] - '0')
+                                   : n;
+      if (slot < n) {
+        text += args[slot].in(lang);
+        i += 2;
+      } else {
+        text += to[i];
+      }
+    }
+  }
+  return Said(std::move(out[0]), std::move(out[1]), std::move(out[2]));
+}
+
 MathText tr(const MathText& m, Lang lang) {
   if (m.words.empty()) return m;
   MathText out = m;
   if (lang != Lang::Ja) agree_counts(out, lang);
   if (lang == Lang::En) return out;
-  for (const std::string& w : longest_first(m)) {
-    const std::string t = tr(w, lang);
+  for (const Said& said : longest_first(m)) {
+    const std::string &w = said.en(), &t = said.in(lang);
     if (t == w) continue;
     for (std::size_t at = 0; (at = out.unicode.find(w, at)) != std::string::npos;) {
       const bool whole =

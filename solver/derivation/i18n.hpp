@@ -9,10 +9,9 @@
 #include <string_view>
 
 #include "solver/derivation/math_text.hpp"
+#include "solver/derivation/said.hpp"
 
 namespace frustum {
-
-enum class Lang { En, Ja, Ru };
 
 std::optional<Lang> parse_lang(std::string_view code);  // "en", "ja", "ru"
 std::string_view to_string(Lang lang);

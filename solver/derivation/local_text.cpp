@@ -14,18 +14,8 @@ std::vector<std::pair<Lang, std::string>> LocalText::all() const {
   return out;
 }
 
-namespace {
-
-std::string quoted_in(const std::string& own, const std::map<Lang, std::string>& given, Lang lang) {
-  const auto it = given.find(lang);
-  return tr(it == given.end() ? own : it->second, lang);
+Said said(const LocalText& text) {
+  return Said(text.in(Lang::En), text.in(Lang::Ja), text.in(Lang::Ru));
 }
-
-}  // namespace
-
-std::string title_in(const Step& step, Lang lang) {
-  return quoted_in(step.title, step.titles, lang);
-}
-std::string note_in(const Step& step, Lang lang) { return quoted_in(step.note, step.notes, lang); }
 
 }  // namespace frustum

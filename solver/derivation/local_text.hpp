@@ -32,9 +32,7 @@ struct LocalText {
   }
 };
 
-// A step's title and note in the reader's language: the step's own words translated (tr), the
-// instructor's text it quotes taken in that language when the set gives it (Step::titles).
-std::string title_in(const Step& step, Lang lang);
-std::string note_in(const Step& step, Lang lang);
+// The text in every language: each as the set gives it, else the set's own.
+Said said(const LocalText& text);
 
 }  // namespace frustum

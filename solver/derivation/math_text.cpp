@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "solver/derivation/line_breaks.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {
@@ -13,7 +14,7 @@ namespace frustum {
 MathText& MathText::operator+=(const MathText& other) {
   unicode += other.unicode;
   latex += other.latex;
-  for (const std::string& w : other.words)
+  for (const Said& w : other.words)
     if (std::find(words.begin(), words.end(), w) == words.end()) words.push_back(w);
   return *this;
 }
@@ -56,17 +57,20 @@ std::string latex_text(std::string_view text) {
   return out;
 }
 
-MathText word(std::string_view english) {
-  MathText m{std::string(english), "\\text{" + latex_text(english) + "}", {}};
-  m.words.emplace_back(english);
+MathText word(const Said& said) {
+  MathText m{said.en(), "\\text{" + latex_text(said.en()) + "}", {}};
+  m.words.push_back(said);
   return m;
 }
+
+MathText word(const Phrase& phrase) { return word(Said(phrase)); }
 
 MathText counts(const std::vector<std::pair<long, std::string>>& items) {
   MathText m;
   for (const auto& [n, what] : items)
     m += (m.empty() ? MathText{} : math(", ", ",\\; ")) +
-         math(std::to_string(n) + " ", std::to_string(n) + "\\,") + word(what);
+         math(std::to_string(n) + " ", std::to_string(n) + "\\,") +
+         word(words::vocabulary_word(what));
   return m;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "solver/core/matrix.hpp"
+#include "solver/derivation/said.hpp"
 
 namespace frustum {
 
@@ -16,7 +17,7 @@ struct MathText {
   std::string latex;
   // English words written inside the mathematics (each once, as given to word()): a renderer
   // in another language translates them (i18n.hpp); the LaTeX holds each as \text{word}.
-  std::vector<std::string> words = {};
+  std::vector<Said> words = {};
 
   bool empty() const { return unicode.empty() && latex.empty(); }
   MathText& operator+=(const MathText& other);
@@ -30,7 +31,8 @@ MathText math(std::string_view unicode, std::string_view latex);
 
 // Words inside mathematics ("yes", "front", "background"): Unicode as written, LaTeX as
 // \text{…} with LaTeX's special characters escaped; translated by the renderers.
-MathText word(std::string_view english);
+MathText word(const Said& said);
+MathText word(const Phrase& phrase);
 // Text escaped for LaTeX's text mode (\text{…}, and the LaTeX document's prose).
 std::string latex_text(std::string_view text);
 

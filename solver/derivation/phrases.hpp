@@ -8,11 +8,9 @@
 #include <span>
 #include <string_view>
 
-namespace frustum {
+#include "solver/derivation/said.hpp"
 
-struct Phrase {
-  std::string_view en, ja, ru;
-};
+namespace frustum {
 
 std::span<const Phrase> step_phrases();     // step titles and words in formulas
 std::span<const Phrase> note_phrases();     // the notes under steps, conventions, warnings

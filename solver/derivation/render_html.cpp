@@ -118,7 +118,7 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup mar
     const std::string cls = s.level == Step::Level::Warning ? " class=\"warning\""
                             : s.level == Step::Level::Note  ? " class=\"note-step\""
                                                            : fmt::format(" value=\"{}\"", ++number);
-    out += fmt::format("<li{}><b>{}</b>", cls, svg_escape(title_in(s, lang)));
+    out += fmt::format("<li{}><b>{}</b>", cls, svg_escape(s.title.in(lang)));
     // A long line is set as breakable inline math in display style, within the page.
     const auto block = [&](const MathText& m) {
       return long_math(m) ? html_math(math("", "\\displaystyle ") + m, lang, false, markup)
@@ -130,7 +130,7 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup mar
       out += "<div class=\"math result\">" + block(math("⇒ ", "\\Rightarrow\\; ") + s.result) +
              "</div>";
     if (!s.note.empty())
-      out += fmt::format("<div class=\"note\">{}</div>", svg_escape(note_in(s, lang)));
+      out += fmt::format("<div class=\"note\">{}</div>", svg_escape(s.note.in(lang)));
     out += "</li>\n";
   }
   return out + "</ol>\n";

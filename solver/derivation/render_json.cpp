@@ -78,8 +78,8 @@ json steps_json(const std::vector<Step>& steps) {
     std::string text;
     for (const MathText* m : {&s.formula, &s.substitution, &s.result})
       if (!m->empty()) text += (text.empty() ? "" : "\n") + m->unicode;
-    if (!s.note.empty()) text += (text.empty() ? "" : "\n") + s.note;
-    json j = {{"title", s.title}, {"text", text}};
+    if (!s.note.empty()) text += (text.empty() ? "" : "\n") + s.note.en();
+    json j = {{"title", s.title.en()}, {"text", text}};
     if (!s.formula.empty())
       j["formula"] = {{"text", s.formula.unicode}, {"latex", s.formula.latex}};
     if (!s.substitution.empty())

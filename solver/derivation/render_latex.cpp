@@ -35,11 +35,11 @@ std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
     out += info ? "\\item " : "\\item[\\textbullet] ";
     out += (s.level == Step::Level::Warning ? "\\textbf{" + prose(tr("Warning", lang)) + ": "
                                             : "\\textbf{") +
-           prose(title_in(s, lang)) + "}\n";
+           prose(s.title.in(lang)) + "}\n";
     for (const MathText* m : {&s.formula, &s.substitution})
       if (!m->empty()) out += display(*m, lang);
     if (!s.result.empty()) out += display(math("⇒ ", "\\Rightarrow\\; ") + s.result, lang);
-    if (!s.note.empty()) out += "{\\small " + prose(note_in(s, lang)) + "}\n";
+    if (!s.note.empty()) out += "{\\small " + prose(s.note.in(lang)) + "}\n";
   }
   return out + "\\end{enumerate}\n";
 }

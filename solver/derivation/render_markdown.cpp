@@ -8,7 +8,7 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang) {
   std::string out;
   int number = 0;
   for (const Step& s : steps) {
-    const std::string title = title_in(s, lang), note = note_in(s, lang);
+    const std::string title = s.title.in(lang), note = s.note.in(lang);
     if (s.level == Step::Level::Warning)
       out += fmt::format("> **{} — {}.** {}\n\n", tr("Warning", lang), title, note);
     else if (s.level == Step::Level::Note)

@@ -38,7 +38,7 @@ std::string render_steps_text(const std::vector<Step>& steps, const TextStyle& s
   int number = 0;
   for (const Step& s : steps) {
     const std::string body = indent + "    ";
-    const std::string title = title_in(s, style.lang), note = note_in(s, style.lang);
+    const std::string title = s.title.in(style.lang), note = s.note.in(style.lang);
     if (s.level == Step::Level::Warning) {
       out += fmt::format("{}{}⚠ {}{}\n", indent, a.yellow(), title, a.reset());
     } else if (s.level == Step::Level::Note) {

@@ -4,6 +4,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "solver/derivation/vocabulary.hpp"
+
 namespace frustum {
 
 Value Value::scalar(const Exact& e) {
@@ -95,8 +97,8 @@ MathText comma_joined(const std::vector<MathText>& parts) {
     }
     out.unicode += p.unicode;
     out.latex += p.latex;
-    for (const std::string& w : p.words)
-      if (seen.insert(w).second) out.words.push_back(w);
+    for (const Said& w : p.words)
+      if (seen.insert(w.en()).second) out.words.push_back(w);
   }
   return out;
 }
@@ -123,23 +125,24 @@ MathText Value::shown() const {
       return matrix_of(entries, static_cast<std::size_t>(cols));
     }
     case Shape::Bool:
-      return frustum::word(flag ? "true" : "false");
+      return frustum::word(flag ? words::kTrue : words::kFalse);
     case Shape::Word:
-      return frustum::word(word);
+      return frustum::word(words::vocabulary_word(word));
     case Shape::WordMap: {
       std::vector<MathText> parts;
       for (const auto& [k, v] : entries)
-        parts.push_back(frustum::word(k) + math(": ", "\\colon ") + frustum::word(v));
+        parts.push_back(frustum::word(words::vocabulary_word(k)) + math(": ", "\\colon ") +
+                        frustum::word(words::vocabulary_word(v)));
       return comma_joined(parts);
     }
     case Shape::WordList: {
-      if (words.empty()) return frustum::word("none");
+      if (words.empty()) return frustum::word(words::kNone);
       std::vector<MathText> parts;
-      for (const auto& w : words) parts.push_back(frustum::word(w));
+      for (const auto& w : words) parts.push_back(frustum::word(words::vocabulary_word(w)));
       return comma_joined(parts);
     }
     case Shape::Null:
-      return frustum::word("none");
+      return frustum::word(words::kNone);
   }
   return {};
 }

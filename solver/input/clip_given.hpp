@@ -8,9 +8,21 @@
 
 #include "solver/clipping/clip_box.hpp"
 #include "solver/derivation/math_text.hpp"
+#include "solver/derivation/said.hpp"
 #include "solver/input/given_reader.hpp"
 
 namespace frustum::clip_given {
+
+// The titles of the step that states the region.
+inline constexpr Phrase kRegionClipWindow{"Clip window", "クリップウィンドウ", "Окно отсечения"};
+inline constexpr Phrase kRegionClipVolume{"Clip volume", "クリップ領域", "Объём отсечения"};
+inline constexpr Phrase kRegionDefaultVolumeDirectX{
+    "Clip volume (default: DirectX's NDC volume, z in [0, 1])",
+    "クリップ領域 (既定: DirectX の正規化視体積, z は [0, 1])",
+    "Объём отсечения (по умолчанию: нормализованный объём DirectX, z в [0, 1])"};
+inline constexpr Phrase kRegionDefaultVolumeCube{"Clip volume (default: the NDC cube)",
+                                                 "クリップ領域 (既定: 正規化視体積の立方体)",
+                                                 "Объём отсечения (по умолчанию: куб NDC)"};
 
 // 2 or 3: the length of the list at `key` (a point).
 inline int point_dims(GivenReader& r, const std::string& key) {
@@ -56,11 +68,10 @@ struct Region {
   Api api = Api::OpenGL;
 
   // The title of the derivation's step that states the region.
-  std::string title() const {
-    if (dims == 2) return "Clip window";
-    if (!default_volume) return "Clip volume";
-    return api == Api::DirectX ? "Clip volume (default: DirectX's NDC volume, z in [0, 1])"
-                               : "Clip volume (default: the NDC cube)";
+  Said title() const {
+    if (dims == 2) return say(kRegionClipWindow);
+    if (!default_volume) return say(kRegionClipVolume);
+    return say(api == Api::DirectX ? kRegionDefaultVolumeDirectX : kRegionDefaultVolumeCube);
   }
 };
 

@@ -1,6 +1,12 @@
 // seed 003: back-face test. D_f = (p_eye − p_i)·n; D_f > 0 front, D_f < 0 back, 0 edge-on.
 // p0 = (1,0,0), p1 = (1,1,1), p2 = (0,1,2), eye = (0,1,0) → n = (1, −1, 1), v = (−1, 1, 0),
 // D_f = −2: back. The sign is decided exactly, never against a float epsilon.
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/geometry/facing.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/input/given_reader.hpp"
@@ -8,6 +14,7 @@
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/accuracy_draws.hpp"
+#include "solver/steps/digits_said.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -15,6 +22,61 @@
 namespace frustum {
 
 namespace {
+
+constexpr Phrase kFacing{"facing", "表裏", "ориентация"};
+
+constexpr Phrase kFacingNote{
+    "facing: the sign of D_f, proven by its rounding-error bound or else computed exactly.",
+    "表裏: D_f の符号. 丸め誤差の上界で確かめ, 確かめられなければ厳密に計算する.",
+    "ориентация: знак D_f, доказанный оценкой ошибки округления или иначе вычисленный точно."};
+constexpr Phrase kWindingLeftHanded{"Winding in a left-handed frame", "左手系での頂点の回り順",
+                                    "Порядок обхода в левой системе"};
+constexpr Phrase kDirectXWinding{
+    "In DirectX's left-handed coordinates the same formula n = e₀ × e₁ points to the side from "
+    "which the vertices appear clockwise — Direct3D's default front face (FrontCounterClockwise = "
+    "false).",
+    "DirectX の左手系では同じ式 n = e₀ × e₁ が, 頂点が時計回りに見える側を向く — Direct3D "
+    "の既定の表面 (FrontCounterClockwise = false).",
+    "В левой системе DirectX та же формула n = e₀ × e₁ указывает в сторону, откуда вершины видны "
+    "по часовой стрелке, — лицевая грань Direct3D по умолчанию (FrontCounterClockwise = false)."};
+constexpr Phrase kViewVector{"View vector from p₀ to the eye", "p₀ から視点への視線ベクトル",
+                             "Вектор взгляда от p₀ к глазу"};
+constexpr Phrase kDiscriminant{"Discriminant", "判別式", "Признак лицевой грани"};
+constexpr Phrase kEyeNearlyInPlane{"Eye nearly in the polygon's plane",
+                                   "視点がほぼ多角形の平面上にある",
+                                   "Глаз почти в плоскости многоугольника"};
+constexpr Phrase kDfIllConditioned{
+    "D_f (its sign, front or back, is decided exactly here; a floating-point sign needs an "
+    "error-bounded filter with an exact fallback) is ill-conditioned ({0}).",
+    "D_f (その符号, つまり表か裏かはここでは厳密に判定する. "
+    "浮動小数点での符号には誤差限界付きのフィルタと厳密計算による代替が必要) は条件が悪い ({0}).",
+    "D_f (его знак — лицевая или обратная — здесь определяется точно; знаку в плавающей точке "
+    "нужен фильтр с оценкой погрешности и точный запасной путь) плохо обусловлен ({0})."};
+constexpr Phrase kFrontOrBack{"Front or back", "表か裏か", "Лицевая или обратная"};
+constexpr Phrase kDfPositive{
+    "D_f > 0: v and n make an acute angle, so the eye sees the front.",
+    "D_f > 0: v と n のなす角は鋭角なので, 視点からは表が見える.",
+    "D_f > 0: v и n образуют острый угол, поэтому глаз видит лицевую сторону."};
+constexpr Phrase kDfNegative{
+    "D_f < 0: v and n make an obtuse angle, so the eye sees the back.",
+    "D_f < 0: v と n のなす角は鈍角なので, 視点からは裏が見える.",
+    "D_f < 0: v и n образуют тупой угол, поэтому глаз видит обратную сторону."};
+constexpr Phrase kDfZero{
+    "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.",
+    "D_f = 0 (厳密): 視点は多角形の平面上にあり, 多角形を真横から見る.",
+    "D_f = 0 точно: глаз лежит в плоскости многоугольника и видит его с ребра."};
+constexpr Phrase kRightHandedReading{"The right-handed reading", "右手系で読むと",
+                                     "Прочтение в правой системе"};
+constexpr Phrase kMirrorImage{
+    "Read in right-handed coordinates the same numbers describe the mirror image: its normal e₀ × "
+    "e₁ is −n, D_f changes sign, and the eye would see the other side.",
+    "右手系で読むと同じ数値は鏡像を表す: その法線 e₀ × e₁ は −n で, D_f の符号が変わり, "
+    "視点からは反対側が見える.",
+    "Прочитанные в правой системе, те же числа описывают зеркальный образ: его нормаль e₀ × e₁ "
+    "равна −n, D_f меняет знак, и глаз увидел бы другую сторону."};
+constexpr Phrase kHandednessDecides{"The handedness decides the answer.",
+                                    "答えは座標系の右手・左手で決まる.",
+                                    "Ответ зависит от ориентации системы координат."};
 
 std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points,
                                                 const Vec3<Exact>& eye, Precision p) {
@@ -49,10 +111,9 @@ std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points,
       out.vector("view", f.view);
       out.scalar("df", f.df);
       out.word("facing", facing_word(f.sign));
-      warn_condition(out, p, kappa, "Eye nearly in the polygon's plane", "D_f");
-      out.note(
-          "facing: the sign of D_f, proven by its rounding-error bound or else computed exactly");
-      if (f.used_exact) out.exact_decision("facing");
+      warn_condition(out, p, kappa, say(kEyeNearlyInPlane), Said::verbatim("D_f"));
+      out.note(say(kFacingNote));
+      if (f.used_exact) out.exact_decision(say(kFacing));
       return out.take();
     };
     In in{{}, {}, {}, points, eye, {}};
@@ -175,11 +236,7 @@ struct Backface {
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
-    if (steps && g.api == Api::DirectX)
-      steps->note("Winding in a left-handed frame",
-                  "In DirectX's left-handed coordinates the same formula n = e₀ × e₁ points to "
-                  "the side from which the vertices appear clockwise — Direct3D's default front "
-                  "face (FrontCounterClockwise = false).");
+    if (steps && g.api == Api::DirectX) steps->note(say(kWindingLeftHanded), say(kDirectXWinding));
     const Vec3<Exact> n = polygon_normal_with_steps(g.points, "points", steps, g.left_handed);
     if (steps) steps->yields("normal");
     Answers out;
@@ -192,7 +249,7 @@ struct Backface {
     out.set("view", Value::vector(v));
     if (steps) {
       steps->add(
-          "View vector from p₀ to the eye",
+          say(kViewVector),
           math("v = p_eye − p₀", "\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0"),
           math("v = ", "\\mathbf{v} = ") + vec(g.eye) + math(" − ", " - ") + vec(g.points[0]),
           math("v = ", "\\mathbf{v} = ") + vec(v));
@@ -201,7 +258,7 @@ struct Backface {
     const Exact df = canonical(f.df);
     out.set("df", Value::scalar(df));
     if (steps) {
-      steps->add("Discriminant", math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
+      steps->add(say(kDiscriminant), math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
                  math("D_f = ") + vec(v) + math("·", "\\cdot") + vec(n),
                  math("D_f = ") + exact(df, true));
       steps->yields("df");
@@ -212,31 +269,21 @@ struct Backface {
       const double kf = facing_condition(pts, eye, Precision::Float);
       if (!df.is_zero() && kf > kIllConditioned)
         steps->warn(
-            "Eye nearly in the polygon's plane",
-            "D_f (its sign, front or back, is decided exactly here; a floating-point sign needs an "
-            "error-bounded filter with an exact fallback) is ill-conditioned (" +
-                digits_sentence(facing_condition(pts, eye), kf,
-                                facing_condition(pts, eye, Precision::Double),
-                                facing_condition(pts, eye, Precision::LongDouble)) +
-                ").");
+            say(kEyeNearlyInPlane),
+            say(kDfIllConditioned, digits_said(facing_condition(pts, eye), kf,
+                                               facing_condition(pts, eye, Precision::Double),
+                                               facing_condition(pts, eye, Precision::LongDouble))));
     }
     const int sign = f.sign;
     const std::string side = facing_word(sign);
     out.set("facing", Value::category(side));
     if (steps) {
-      const std::string why =
-          sign > 0 ? "D_f > 0: v and n make an acute angle, so the eye sees the front."
-          : sign < 0
-              ? "D_f < 0: v and n make an obtuse angle, so the eye sees the back."
-              : "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.";
-      steps->add("Front or back", {}, {}, word(side)).note = why;
+      const Phrase& why = sign > 0 ? kDfPositive : sign < 0 ? kDfNegative : kDfZero;
+      const Phrase& seen = sign > 0 ? words::kFront : sign < 0 ? words::kBack : words::kEdgeOnKey;
+      steps->add(say(kFrontOrBack), {}, {}, word(seen)).note = say(why);
       steps->yields("facing");
       if (g.left_handed && sign != 0)
-        steps->note(
-            "The right-handed reading",
-            "Read in right-handed coordinates the same numbers describe the mirror image: its "
-            "normal e₀ × e₁ is −n, D_f changes sign, and the eye would see the other side. The "
-            "handedness decides the answer.");
+        steps->note(say(kRightHandedReading), say(kMirrorImage) + say(kHandednessDecides));
     }
     return out;
   }

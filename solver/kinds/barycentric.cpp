@@ -7,6 +7,7 @@
 // z = 8 (the plane method's z).
 #include <cmath>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/numeric/condition.hpp"
@@ -20,6 +21,24 @@
 namespace frustum {
 
 namespace {
+
+constexpr Phrase kNearlyDegenerateTriangle{"Nearly degenerate triangle", "ほぼ退化した三角形",
+                                           "Почти вырожденный треугольник"};
+constexpr Phrase kTheTotalTwiceTheProjectedArea{
+    "the total (twice the projected area), and λ and z with it",
+    "合計 (投影した面積の 2 倍) と, それに従う λ と z",
+    "сумма (удвоенная площадь проекции), а с ней λ и z"};
+
+constexpr Phrase kEdgeFunctions{"Edge functions at the pixel", "画素での辺関数",
+                                "Рёберные функции в пикселе"};
+constexpr Phrase kTwiceSignedArea{"Twice the signed area of the triangle",
+                                  "三角形の符号付き面積の 2 倍",
+                                  "Удвоенная ориентированная площадь треугольника"};
+constexpr Phrase kBarycentricCoordinates{"Barycentric coordinates", "重心座標",
+                                         "Барицентрические координаты"};
+constexpr Phrase kDepthByInterpolation{"Depth by barycentric interpolation",
+                                       "重心座標による奥行きの補間",
+                                       "Глубина барицентрической интерполяцией"};
 
 struct Barycentric {
   static constexpr const char* kName = "barycentric";
@@ -151,10 +170,10 @@ struct Barycentric {
         out.vector("lambda", o.lambda);
         out.boolean("inside", o.inside);
         out.scalar("z", o.z);
-        if (o.inside_exact) out.exact_decision("inside");
+        if (o.inside_exact) out.exact_decision(Said(words::kInside));
         // A thin triangle's total (twice its projected area) cancels, and λ and z with it.
-        warn_condition(out, p, std::max(cond.kappa_c, cond.kappa_z), "Nearly degenerate triangle",
-                       "the total (twice the projected area), and λ and z with it");
+        warn_condition(out, p, std::max(cond.kappa_c, cond.kappa_z), say(kNearlyDegenerateTriangle),
+                       say(kTheTotalTwiceTheProjectedArea));
         return out.take();
       };
       In in{{}, {}, g, {}};
@@ -170,7 +189,7 @@ struct Barycentric {
     Answers out;
     out.set("edges", Value::vector(e));
     if (steps) {
-      steps->add("Edge functions at the pixel",
+      steps->add(say(kEdgeFunctions),
                  math("E_BC(xₛ, yₛ), E_CA(xₛ, yₛ), E_AB(xₛ, yₛ);  E_PQ(x, y) = (x_Q − x_P)(y − "
                       "y_P) − (y_Q − y_P)(x − x_P)",
                       "E_{BC}(x_S, y_S),\\; E_{CA}(x_S, y_S),\\; E_{AB}(x_S, y_S),\\quad "
@@ -180,7 +199,7 @@ struct Barycentric {
     }
     out.set("total", Value::scalar(t));
     if (steps) {
-      steps->add("Twice the signed area of the triangle",
+      steps->add(say(kTwiceSignedArea),
                  math("E_AB(x_C, y_C) = E_BC + E_CA + E_AB",
                       "E_{AB}(x_C, y_C) = E_{BC} + E_{CA} + E_{AB}"),
                  {}, exact(t));
@@ -190,7 +209,7 @@ struct Barycentric {
     const Vec3<Exact> lambda = canonical_vec(lambda_of(e, t));
     out.set("lambda", Value::vector(lambda));
     if (steps) {
-      steps->add("Barycentric coordinates",
+      steps->add(say(kBarycentricCoordinates),
                  math("λ₀ = E_BC / E_AB(C), λ₁ = E_CA / E_AB(C), λ₂ = E_AB / E_AB(C)",
                       "\\lambda_0 = \\frac{E_{BC}}{E_{AB}(C)},\\; \\lambda_1 = "
                       "\\frac{E_{CA}}{E_{AB}(C)},\\; \\lambda_2 = \\frac{E_{AB}}{E_{AB}(C)}"),
@@ -204,7 +223,7 @@ struct Barycentric {
     const Exact z = interpolated_z(g, lambda);
     out.set("z", Value::scalar(z));
     if (steps) {
-      steps->add("Depth by barycentric interpolation",
+      steps->add(say(kDepthByInterpolation),
                  math("z = λ₀z_A + λ₁z_B + λ₂z_C",
                       "z_S = \\lambda_0 z_A + \\lambda_1 z_B + "
                       "\\lambda_2 z_C"),

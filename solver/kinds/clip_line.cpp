@@ -4,6 +4,7 @@
 // (y < ymin), 0010 right (x > xmax), 0001 left (x < xmin); 3D adds 100000 (z > zmax) and
 // 010000 (z < zmin) in front. A point on a boundary is inside.
 #include "solver/clipping/line_clip.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/clip_given.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -11,6 +12,99 @@
 namespace frustum {
 
 namespace {
+
+constexpr Phrase kBitCodes2D{
+    "{0}-bit codes, most significant first: 1000 top (y > ymax), 0100 bottom (y < ymin), 0010 "
+    "right (x > xmax), 0001 left (x < xmin).",
+    "{0} ビットのコード (上位ビットから): 1000 上 (y > ymax), 0100 下 (y < ymin), 0010 右 (x > "
+    "xmax), 0001 左 (x < xmin).",
+    "{0}-битные коды, старший бит первым: 1000 сверху (y > ymax), 0100 снизу (y < ymin), 0010 "
+    "справа (x > xmax), 0001 слева (x < xmin)."};
+constexpr Phrase kBitCodes3D{
+    "{0}-bit codes (the 2D codes with two bits for z added), most significant first: 100000 z > "
+    "zmax, 010000 z < zmin, 001000 top (y > ymax), 000100 bottom (y < ymin), 000010 right "
+    "(x > xmax), 000001 left (x < xmin).",
+    "{0} ビットのコード (2 次元のコードに z の 2 ビットを加えたもの, 上位ビットから): 100000 z > "
+    "zmax, 010000 z < zmin, 001000 上 (y > ymax), 000100 下 (y < ymin), 000010 右 (x > xmax), "
+    "000001 左 (x < xmin).",
+    "{0}-битные коды (двумерные коды плюс два бита для z), старший бит первым: 100000 z > zmax, "
+    "010000 z < zmin, 001000 сверху (y > ymax), 000100 снизу (y < ymin), 000010 справа "
+    "(x > xmax), 000001 слева (x < xmin)."};
+constexpr Phrase kPointOnBoundaryInside{"A point on a boundary is inside (bit 0).",
+                                        "境界上の点は内側とする (ビット 0).",
+                                        "Точка на границе считается внутренней (бит 0)."};
+constexpr Phrase kTop{"top (y > ymax)", "上 (y > ymax)", "сверху (y > ymax)"};
+constexpr Phrase kBottom{"bottom (y < ymin)", "下 (y < ymin)", "снизу (y < ymin)"};
+constexpr Phrase kRight{"right (x > xmax)", "右 (x > xmax)", "справа (x > xmax)"};
+constexpr Phrase kLeft{"left (x < xmin)", "左 (x < xmin)", "слева (x < xmin)"};
+constexpr Phrase kOutcodeOfP{"Outcode of p", "p のアウトコード", "Код области точки p"};
+constexpr Phrase kOutcodeOfQ{"Outcode of q", "q のアウトコード", "Код области точки q"};
+constexpr Phrase kTrivialAccept{"Trivial accept? (both codes 0)", "自明な採用? (両方のコードが 0)",
+                                "Тривиальное принятие? (оба кода 0)"};
+constexpr Phrase kTrivialReject{"Trivial reject? (a common outside bit)",
+                                "自明な棄却? (共通の外側ビット)",
+                                "Тривиальное отбрасывание? (общий бит «снаружи»)"};
+constexpr Phrase kYesWholeSegmentInside{"yes: the whole segment is inside", "はい: 線分全体が内側",
+                                        "да: весь отрезок внутри"};
+constexpr Phrase kYesBothOutsideSameBoundary{"yes: both endpoints are outside the same boundary",
+                                             "はい: 両端点が同じ境界の外側にある",
+                                             "да: оба конца вне одной и той же границы"};
+constexpr Phrase kIteration{
+    "Iteration {0}: {1} ({2}) is outside {3} (bit {4}): move it to {5}",
+    "反復 {0}: {1} ({2}) は {3} の外側 (ビット {4}): {5} へ移す",
+    "Итерация {0}: {1} ({2}) вне границы {3} (бит {4}): переносим её на {5}"};
+constexpr Phrase kFractionOfTheWay{
+    "t is the fraction of the way from {0} to {1} at which the segment crosses {2}.",
+    "t は, 線分が {2} と交わる点が {0} から {1} へ向かう道のりのどれだけの割合にあるかを表す.",
+    "t — доля пути от {0} к {1}, на которой отрезок пересекает {2}."};
+constexpr Phrase kClippedSegment{"Clipped segment", "クリップ後の線分", "Отсечённый отрезок"};
+constexpr Phrase kTriviallyAccepted{"Trivially accepted: the segment is unchanged.",
+                                    "自明な採用: 線分はそのまま残る.",
+                                    "Тривиально принят: отрезок не меняется."};
+constexpr Phrase kBothCodesNow{"Both codes are now {0}: accept.",
+                               "両方のコードが {0} になった: 採用.",
+                               "Оба кода теперь {0}: принимаем."};
+constexpr Phrase kNothingIsVisible{"Nothing is visible", "何も見えない", "Ничего не видно"};
+constexpr Phrase kTriviallyRejected{"Trivially rejected: the segment lies outside one boundary.",
+                                    "自明な棄却: 線分は一つの境界の外側にある.",
+                                    "Тривиально отброшен: отрезок лежит вне одной из границ."};
+constexpr Phrase kMissesAfterClipping{
+    "After clipping, both endpoints share an outside bit: the segment misses the region.",
+    "クリッピング後, 両端点が共通の外側ビットを持つ: 線分は領域を通らない.",
+    "После отсечения оба конца имеют общий внешний бит: отрезок не проходит через область."};
+
+// What one outside bit means (line_clip.cpp's outcode_bit_meaning).
+Said bit_meaning(unsigned bit) {
+  switch (bit) {
+    case outcode_bit(0, false):
+      return say(kLeft);
+    case outcode_bit(0, true):
+      return say(kRight);
+    case outcode_bit(1, false):
+      return say(kBottom);
+    case outcode_bit(1, true):
+      return say(kTop);
+    case outcode_bit(2, false):
+      return Said::verbatim("z < zmin");
+    case outcode_bit(2, true):
+      return Said::verbatim("z > zmax");
+    default:
+      return Said::verbatim("?");
+  }
+}
+
+// What a code's set bits mean, most significant first, or inside (line_clip.cpp's
+// outcode_meaning): "left (x < xmin), top (y > ymax)".
+Said code_meaning(unsigned code) {
+  if (code == 0) return say(words::kInside);
+  Said s;
+  for (int b = 5; b >= 0; --b)
+    if (code & (1u << b)) {
+      if (!s.empty()) s.append(Said::verbatim(", "));
+      s.append(bit_meaning(1u << b));
+    }
+  return s;
+}
 
 struct ClipLine {
   static constexpr const char* kName = "clip_line";
@@ -66,14 +160,8 @@ struct ClipLine {
     return g;
   }
 
-  static std::string bits_legend(int dims) {
-    std::string s =
-        dims == 3 ? "6-bit codes (the 2D codes with two bits for z added), most significant first: "
-                    "100000 z > zmax, 010000 z < zmin, 001000 top (y > ymax), 000100 bottom "
-                    "(y < ymin), 000010 right (x > xmax), 000001 left (x < xmin)."
-                  : "4-bit codes, most significant first: 1000 top (y > ymax), 0100 bottom "
-                    "(y < ymin), 0010 right (x > xmax), 0001 left (x < xmin).";
-    return s + " A point on a boundary is inside (bit 0).";
+  static Said bits_legend(int dims) {
+    return (dims == 3 ? say(kBitCodes3D, 6) : say(kBitCodes2D, 4)) + say(kPointOnBoundaryInside);
   }
 
   template <int N>
@@ -101,25 +189,24 @@ struct ClipLine {
       const MathText op_or = math(" OR ", " \\mathbin{\\mathrm{OR}} "),
                      op_and = math(" AND ", " \\mathbin{\\mathrm{AND}} ");
       steps
-          ->add("Outcode of p", {}, math("p = ") + vec(g.p),
+          ->add(say(kOutcodeOfP), {}, math("p = ") + vec(g.p),
                 outcode_of("p") + math(" = ") + code(r.code_p))
-          .note = outcode_meaning(r.code_p);
+          .note = code_meaning(r.code_p);
       steps->yields("outcode_p");
       steps
-          ->add("Outcode of q", {}, math("q = ") + vec(g.q),
+          ->add(say(kOutcodeOfQ), {}, math("q = ") + vec(g.q),
                 outcode_of("q") + math(" = ") + code(r.code_q))
-          .note = outcode_meaning(r.code_q);
+          .note = code_meaning(r.code_q);
       steps->yields("outcode_q");
-      steps->add("Trivial accept? (both codes 0)",
+      steps->add(say(kTrivialAccept),
                  outcode_of("p") + op_or + outcode_of("q") + math(" = ") + code(0),
                  code(r.code_p) + op_or + code(r.code_q) + math(" = ") + code(r.code_p | r.code_q),
-                 word(r.trivial_accept ? "yes: the whole segment is inside" : "no"));
+                 word(r.trivial_accept ? kYesWholeSegmentInside : words::kNo));
       steps->yields("accept");
-      steps->add(
-          "Trivial reject? (a common outside bit)",
-          outcode_of("p") + op_and + outcode_of("q") + math(" ≠ ", " \\ne ") + code(0),
-          code(r.code_p) + op_and + code(r.code_q) + math(" = ") + code(r.code_p & r.code_q),
-          word(r.trivial_reject ? "yes: both endpoints are outside the same boundary" : "no"));
+      steps->add(say(kTrivialReject),
+                 outcode_of("p") + op_and + outcode_of("q") + math(" ≠ ", " \\ne ") + code(0),
+                 code(r.code_p) + op_and + code(r.code_q) + math(" = ") + code(r.code_p & r.code_q),
+                 word(r.trivial_reject ? kYesBothOutsideSameBoundary : words::kNo));
       steps->yields("reject");
       // The endpoints as the loop moves them: t is measured from the endpoint being moved (a)
       // towards the other one (b).
@@ -140,9 +227,8 @@ struct ClipLine {
         const Exact t = canonical((bound_value - a(axis)) / (b(axis) - a(axis)));
         steps
             ->add(
-                "Iteration " + std::to_string(++n) + ": " + who + " (" +
-                    outcode_string(it.code_before, N) + ") is outside " + bound_name + " (bit " +
-                    outcode_string(it.bit, N) + "): move it to " + x + " = " + bound_name,
+                say(kIteration, ++n, who, outcode_string(it.code_before, N), bound_name,
+                    outcode_string(it.bit, N), x + " = " + bound_name),
                 math("t = (", "t = \\frac{") + bound +
                     math(" − " + who + "_" + x + ") / (" + other + "_" + x + " − " + who + "_" + x +
                              "),  " + who + "′ = " + who + " + t·(" + other + " − " + who + ")",
@@ -154,8 +240,7 @@ struct ClipLine {
                     math(",  t = ", ",\\; t = ") + exact(t, true),
                 math(who + "′ = ", who + "' = ") + vec(it.after, true) + math(",  ", ",\\; ") +
                     outcode_of(who, true) + math(" = ") + code(it.code_after))
-            .note = "t is the fraction of the way from " + who + " to " + other +
-                    " at which the segment crosses " + x + " = " + bound_name + ".";
+            .note = say(kFractionOfTheWay, who, other, x + " = " + bound_name);
         ends[static_cast<std::size_t>(it.endpoint)] = it.after;
       }
     }
@@ -165,20 +250,18 @@ struct ClipLine {
       out.set("clipped", Value::matrix(rows));
       if (steps) {
         steps
-            ->add("Clipped segment", {}, {},
+            ->add(say(kClippedSegment), {}, {},
                   math("p′ = ", "p' = ") + vec((*r.clipped)[0], true) +
                       math(",  q′ = ", ",\\; q' = ") + vec((*r.clipped)[1], true))
-            .note = r.trivial_accept ? std::string("Trivially accepted: the segment is unchanged.")
-                                     : "Both codes are now " + outcode_string(0, N) + ": accept.";
+            .note =
+            r.trivial_accept ? say(kTriviallyAccepted) : say(kBothCodesNow, outcode_string(0, N));
         steps->yields("clipped");
       }
     } else {
       out.set("clipped", Value::null());
       if (steps) {
-        steps->add("Nothing is visible").note =
-            r.trivial_reject ? "Trivially rejected: the segment lies outside one boundary."
-                             : "After clipping, both endpoints share an outside bit: the segment "
-                               "misses the region.";
+        steps->add(say(kNothingIsVisible)).note =
+            say(r.trivial_reject ? kTriviallyRejected : kMissesAfterClipping);
         steps->yields("clipped");
       }
     }

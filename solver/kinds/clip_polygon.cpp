@@ -4,6 +4,7 @@
 // plane is inside. The answer is the vertex list after the last stage, or null when fewer
 // than three vertices are left.
 #include "solver/clipping/polygon_clip.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/clip_given.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -11,6 +12,52 @@
 namespace frustum {
 
 namespace {
+
+constexpr Phrase kNoVertices{"no vertices", "頂点なし", "вершин нет"};
+constexpr Phrase kSutherlandHodgman{
+    "Sutherland–Hodgman: clip against one boundary at a time; for each edge S → E keep E when it "
+    "is inside (on the boundary counts as inside) and add the intersection where the edge "
+    "crosses.",
+    "Sutherland–Hodgman: 境界を一つずつ使ってクリップする. 各辺 S → E について, E が内側なら E "
+    "を残し (境界上は内側), 辺が境界を横切るところでは交点を加える.",
+    "Sutherland–Hodgman: отсекаем по одной границе за раз; для каждого ребра S → E оставляем E, "
+    "если она внутри (на границе — тоже внутри), и добавляем точку пересечения, где ребро "
+    "пересекает границу."};
+constexpr Phrase kClipAgainst{"Clip against {0}", "クリップ: {0}", "Отсечение: {0}"};
+constexpr Phrase kTopSide{"top: {0}", "上端: {0}", "верх: {0}"};
+constexpr Phrase kBottomSide{"bottom: {0}", "下端: {0}", "низ: {0}"};
+constexpr Phrase kLeftSide{"left: {0}", "左端: {0}", "лево: {0}"};
+constexpr Phrase kRightSide{"right: {0}", "右端: {0}", "право: {0}"};
+constexpr Phrase kNothingIsLeft{"Nothing is left", "何も残らない", "Ничего не остаётся"};
+constexpr Phrase kNoVertexRemains{"No vertex remains: the polygon lies outside the region.",
+                                  "頂点は一つも残らない: 多角形は領域の外にある.",
+                                  "Не остаётся ни одной вершины: многоугольник лежит вне области."};
+constexpr Phrase kFewerThanThreeRemain{
+    "Fewer than three vertices remain: the polygon only touches the region's boundary (at a "
+    "point or along an edge), which encloses no area.",
+    "残る頂点は 3 つ未満: 多角形は領域の境界に (1 点または 1 辺で) 接するだけで, 面積をもつ部分は"
+    "ない.",
+    "Остаётся меньше трёх вершин: многоугольник лишь касается границы области (в точке или по "
+    "ребру), а это не ограничивает никакой площади."};
+
+// The clip plane of stage `k` of clip_polygon_box (polygon_clip.hpp), in its order: left
+// (x ≥ xmin), right (x ≤ xmax), bottom (y ≥ ymin), top (y ≤ ymax), then z ≥ zmin, z ≤ zmax.
+Said stage_plane(std::size_t k) {
+  switch (k) {
+    case 0:
+      return say(kLeftSide, "x ≥ xmin");
+    case 1:
+      return say(kRightSide, "x ≤ xmax");
+    case 2:
+      return say(kBottomSide, "y ≥ ymin");
+    case 3:
+      return say(kTopSide, "y ≤ ymax");
+    case 4:
+      return Said::verbatim("z ≥ zmin");
+    default:
+      return Said::verbatim("z ≤ zmax");
+  }
+}
 
 struct ClipPolygon {
   static constexpr const char* kName = "clip_polygon";
@@ -39,7 +86,7 @@ struct ClipPolygon {
 
   template <int N>
   static MathText vertex_list(const std::vector<Eigen::Matrix<Exact, N, 1>>& vs) {
-    if (vs.empty()) return word("no vertices");
+    if (vs.empty()) return word(kNoVertices);
     MathText m;
     for (std::size_t i = 0; i < vs.size(); ++i)
       m += math(i ? ", " : "", i ? ",\\; " : "") + vec(vs[i]);
@@ -54,26 +101,20 @@ struct ClipPolygon {
     const PolygonClipResult<V> r = clip_polygon_box(poly, box);
     if (steps) {
       steps
-          ->add(g.region.title(), {}, word("polygon") + math(": ", "\\colon ") + vertex_list(poly),
+          ->add(g.region.title(), {},
+                word(words::kPolygon) + math(": ", "\\colon ") + vertex_list(poly),
                 clip_given::box_text(box))
-          .note =
-          "Sutherland–Hodgman: clip against one boundary at a time; for each edge S → E keep E "
-          "when it is "
-          "inside (on the boundary counts as inside) and add the intersection where the edge "
-          "crosses.";
-      for (const auto& s : r.stages)
-        steps->add("Clip against " + s.plane, {}, {}, vertex_list(s.vertices));
+          .note = say(kSutherlandHodgman);
+      for (std::size_t k = 0; k < r.stages.size(); ++k)
+        steps->add(say(kClipAgainst, stage_plane(k)), {}, {}, vertex_list(r.stages[k].vertices));
     }
     Answers out;
     if (r.empty()) {
       out.set("clipped", Value::null());
       if (steps) {
         // One or two vertices left: the polygon meets the region's boundary only.
-        steps->add("Nothing is left").note =
-            r.clipped.empty() ? "No vertex remains: the polygon lies outside the region."
-                              : "Fewer than three vertices remain: the polygon only touches the "
-                                "region's boundary (at a point or along an edge), which encloses "
-                                "no area.";
+        steps->add(say(kNothingIsLeft)).note =
+            say(r.clipped.empty() ? kNoVertexRemains : kFewerThanThreeRemain);
         steps->yields("clipped");
       }
       return out;

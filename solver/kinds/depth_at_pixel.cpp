@@ -2,9 +2,14 @@
 // coordinates, which are left-handed (seed 001's warning), so its front normal is AC × AB:
 // A(0,0,6), B(3,0,9), C(0,3,9) → n = (9, 9, −9), n̂ = (1/√3, 1/√3, −1/√3), x + y − z = −6,
 // and the pixel (1, 1) has z = 8.
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "solver/core/exact_vector.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/geometry/plane_depth.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/input/given_reader.hpp"
@@ -12,6 +17,7 @@
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/steps/accuracy_draws.hpp"
+#include "solver/steps/digits_said.hpp"
 #include "solver/steps/kind_steps.hpp"
 #include "solver/steps/numeric_common.hpp"
 #include "solver/util/diagnostic.hpp"
@@ -20,6 +26,68 @@
 namespace frustum {
 
 namespace {
+
+constexpr Phrase kZAtThisPixel{"z at this pixel", "この画素の z", "z в этом пикселе"};
+
+constexpr Phrase kByBarycentric{"z by barycentric interpolation (stable fallback).",
+                                "z は重心座標による補間で求めた (安定な代替法).",
+                                "z найдено барицентрической интерполяцией (устойчивая замена)."};
+constexpr Phrase kByPlaneMethod{"z = (d − a·xₛ − b·yₛ)/c (the plane method).",
+                                "z = (d − a·xₛ − b·yₛ)/c (平面の方程式による方法).",
+                                "z = (d − a·xₛ − b·yₛ)/c (метод плоскости)."};
+constexpr Phrase kBarycentricFallback{"Nearly edge-on triangle: barycentric fallback",
+                                      "ほぼ真横から見た三角形: 重心座標による代替",
+                                      "Треугольник почти с ребра: барицентрическая замена"};
+constexpr Phrase kFallbackNote{
+    "c ≈ 0 (κ_c ≈ {0}); the plane method would keep {1} digits of z, so z = Σ λᵢ zᵢ with λᵢ from "
+    "the edge functions at the pixel is used: for a pixel inside the triangle it stays within the "
+    "vertices' depths.",
+    "c ≈ 0 (κ_c ≈ {0}). 平面の方程式では z が {1} 桁しか残らないので, 画素での辺関数から求めた λᵢ "
+    "による z = Σ λᵢ zᵢ を使う. 三角形の内側の画素ではこの値は頂点の奥行きの範囲内にある.",
+    "c ≈ 0 (κ_c ≈ {0}); метод плоскости сохранил бы {1} цифр z, поэтому используется z = Σ λᵢ zᵢ с "
+    "λᵢ из рёберных функций в пикселе: для пикселя внутри треугольника оно остаётся в пределах "
+    "глубин вершин."};
+constexpr Phrase kProjectionLeftHanded{"Projection coordinates are left-handed",
+                                       "投影座標系は左手系", "Координаты проекции — левая система"};
+constexpr Phrase kMindOrderUses{
+    "Mind the order of the cross product; this problem uses {0}.",
+    "外積の順序に注意. この問題では {0} を使う.",
+    "Следите за порядком векторного произведения; в этой задаче используется {0}."};
+constexpr Phrase kMindOrderCourse{
+    "Mind the order of the cross product: projection coordinates (x, y on the screen, z the depth "
+    "away from the eye) are left-handed, as this course's eye space is, so the front normal of a "
+    "triangle ABC is AC × AB (the order used by default).",
+    "外積の順序に注意: 投影座標系 (画面上の x, y と視点から奥へ向かう奥行き z) "
+    "はこのコースの視点座標系と同じく左手系なので, 三角形 ABC の表の法線は AC × AB (既定の順序) "
+    "である.",
+    "Следите за порядком векторного произведения: координаты проекции (x, y на экране, z — глубина "
+    "от глаза) образуют левую систему, как и система координат вида в этом курсе, поэтому лицевая "
+    "нормаль треугольника ABC — AC × AB (порядок по умолчанию)."};
+constexpr Phrase kMindOrderLeftFrame{
+    "Mind the order of the cross product: in a left-handed frame the front normal of a triangle "
+    "ABC is AC × AB (the order used by default).",
+    "外積の順序に注意: 左手系では三角形 ABC の表向きの法線は AC × AB (既定の順序).",
+    "Следите за порядком векторного произведения: в левой системе лицевая нормаль треугольника ABC "
+    "— AC × AB (порядок по умолчанию)."};
+constexpr Phrase kPlaneThroughA{"Plane through A with normal n̂", "A を通り法線 n̂ の平面",
+                                "Плоскость через A с нормалью n̂"};
+constexpr Phrase kDepthAtPixel{"Depth at the pixel", "画素での奥行き (z 値)", "Глубина в пикселе"};
+constexpr Phrase kNearlyEdgeOn{"Nearly edge-on triangle", "ほぼ真横から見た三角形",
+                               "Треугольник почти с ребра"};
+constexpr Phrase kCIsSmall{
+    "c is small beside the terms it is computed from (κ_c ≈ {0}), so z = (d − a·xₛ − b·yₛ)/c is "
+    "ill-conditioned ({1}).",
+    "c はそれを計算する項に比べて小さい (κ_c ≈ {0}) ので, z = (d − a·xₛ − b·yₛ)/c は条件が悪い "
+    "({1}).",
+    "c мало по сравнению со слагаемыми, из которых вычисляется (κ_c ≈ {0}), поэтому z = (d − a·xₛ "
+    "− b·yₛ)/c плохо обусловлено ({1})."};
+constexpr Phrase kComputedInFloatingPoint{
+    "Computed in floating point with fewer than half its digits left, z is better found by "
+    "barycentric interpolation z = Σ λᵢ zᵢ.",
+    "浮動小数点で計算すると桁が半分も残らないので, z は重心座標による補間 z = Σ λᵢ zᵢ "
+    "で求める方がよい.",
+    "При вычислении в плавающей точке остаётся меньше половины цифр, поэтому z лучше найти "
+    "барицентрической интерполяцией z = Σ λᵢ zᵢ."};
 
 // The decisions (edge-on, the pixel's edge signs) are geometry's edge_on_sign and pixel_sides,
 // shared by the exact solve, the numeric path and the barycentric kind.
@@ -92,18 +160,14 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
                  std::vector<T>{r.unit_normal(0), r.unit_normal(1), r.unit_normal(2), r.d});
       out.scalar("z", r.z);
       out.boolean("inside", o.inside);
-      out.note(r.barycentric ? "z by barycentric interpolation (stable fallback)"
-                             : "z = (d − a·xₛ − b·yₛ)/c (the plane method)");
-      if (o.inside_exact) out.exact_decision("inside");
+      out.note(say(r.barycentric ? kByBarycentric : kByPlaneMethod));
+      if (o.inside_exact) out.exact_decision(Said(words::kInside));
       if (r.barycentric)
-        out.warn(
-            "Nearly edge-on triangle: barycentric fallback",
-            fmt::format("c ≈ 0 (κ_c ≈ {:.1e}); the plane method would keep {:.1f} digits of z, "
-                        "so z = Σ λᵢ zᵢ with λᵢ from the edge functions at the pixel is used: for "
-                        "a pixel inside the triangle it stays within the vertices' depths.",
-                        cond.kappa_c, trusted_digits(cond.kappa_z, p)));
+        out.warn(say(kBarycentricFallback),
+                 say(kFallbackNote, fmt::format("{:.1e}", cond.kappa_c),
+                     fmt::format("{:.1f}", trusted_digits(cond.kappa_z, p))));
       else
-        warn_condition(out, p, cond.kappa_z, "Nearly edge-on triangle", "z at this pixel");
+        warn_condition(out, p, cond.kappa_z, say(kNearlyEdgeOn), say(kZAtThisPixel));
       return out.take();
     };
     const std::array<int, 4> o = cross_indices(order);
@@ -238,18 +302,10 @@ struct DepthAtPixel {
 
   static Answers solve(const Given& g, Derivation* steps) {
     if (steps)
-      steps->note(
-          "Projection coordinates are left-handed",
-          g.order_given ? "Mind the order of the cross product; this problem uses " +
-                              g.order.first + " × " + g.order.second + "."
-          : g.course_left_handed
-              ? "Mind the order of the cross product: projection coordinates (x, y on the screen, "
-                "z the "
-                "depth away from the eye) are left-handed, as this course's eye space is, so the "
-                "front "
-                "normal of a triangle ABC is AC × AB (the order used by default)."
-              : "Mind the order of the cross product: in a left-handed frame the front normal of a "
-                "triangle ABC is AC × AB (the order used by default).");
+      steps->note(say(kProjectionLeftHanded),
+                  g.order_given ? say(kMindOrderUses, g.order.first + " × " + g.order.second)
+                  : g.course_left_handed ? say(kMindOrderCourse)
+                                         : say(kMindOrderLeftFrame));
     const Vec3<Exact> n = cross_normal_with_steps(g.triangle, g.order, "triangle", steps);
     if (steps) steps->yields("normal");
     Answers out;
@@ -270,7 +326,7 @@ struct DepthAtPixel {
     out.set("plane", pv);
     if (steps) {
       steps->add(
-          "Plane through A with normal n̂",
+          say(kPlaneThroughA),
           math("n̂·(p − A) = 0", "\\hat{\\mathbf{n}}\\cdot(\\mathbf{p} - \\overrightarrow{OA}) = 0"),
           vec(u) + math("·", "\\cdot") + offset_point(A) + math(" = 0"), pv.display);
       steps->yields("plane");
@@ -282,7 +338,7 @@ struct DepthAtPixel {
     const Exact z = canonical(plane_method_z(rational_plane(r, n, A, g.pixel), g.pixel));
     out.set("z", Value::scalar(z));
     if (steps) {
-      steps->add("Depth at the pixel",
+      steps->add(say(kDepthAtPixel),
                  math("z = (d − a·xₛ − b·yₛ) / c", "z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
                  linear_equation({{a * g.pixel(0), ""}, {b * g.pixel(1), ""}, {c, "z"}}, plane[3]),
                  math("z = ", "z_S = ") + exact(z, true));
@@ -291,14 +347,9 @@ struct DepthAtPixel {
           depth_condition(to_double(g.triangle[0]), to_double(g.triangle[1]),
                           to_double(g.triangle[2]), to_double(g.pixel));
       if (cond.kappa_z > kIllConditioned)
-        steps->warn("Nearly edge-on triangle",
-                    "c is small beside the terms it is computed from (κ_c ≈ " +
-                        format_approx(cond.kappa_c) +
-                        "), so z = (d − a·xₛ − b·yₛ)/c is ill-conditioned (" +
-                        digits_sentence(cond.kappa_z) +
-                        "). Computed in floating point with fewer than half its digits left, z is "
-                        "better found by "
-                        "barycentric interpolation z = Σ λᵢ zᵢ.");
+        steps->warn(say(kNearlyEdgeOn),
+                    say(kCIsSmall, format_approx(cond.kappa_c), digits_said(cond.kappa_z)) +
+                        say(kComputedInFloatingPoint));
     }
     const bool inside = inside_triangle_with_steps(g.triangle, g.pixel, steps);
     out.set("inside", Value::boolean(inside));

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -16,6 +17,162 @@
 namespace frustum {
 
 namespace {
+
+// Centroids, depths and the order.
+constexpr Phrase kCentroids{"Centroids", "重心", "Центры тяжести"};
+constexpr Phrase kDepthFromEye{"Depth: distance from the eye", "奥行き: 視点からの距離",
+                               "Глубина: расстояние от глаза"};
+constexpr Phrase kLargerDepthFarther{"Larger depth = farther from the eye.",
+                                     "奥行きが大きいほど視点から遠い.",
+                                     "Большая глубина = дальше от глаза."};
+constexpr Phrase kDepthAlongView{"Depth along the view direction", "視線方向の奥行き",
+                                 "Глубина вдоль направления взгляда"};
+constexpr Phrase kViewDirectionDepth{
+    "v is the direction the viewer looks (into the scene), so larger depth = farther (with v = (0, "
+    "0, −1), OpenGL's default view, depth = −z).",
+    "v は見る人が見る方向 (シーンの奥へ) なので, 奥行きが大きいほど遠い (OpenGL の既定の v = (0, "
+    "0, −1) では奥行き = −z).",
+    "v — направление взгляда наблюдателя (в сцену), поэтому большая глубина = дальше (при v = (0, "
+    "0, −1), взгляде OpenGL по умолчанию, глубина = −z)."};
+constexpr Phrase kDrawBackToFront{
+    "Draw back to front (farthest centroid first)", "奥から手前へ描く (重心が最も遠いものから)",
+    "Рисование от дальних к ближним (сначала самый дальний центр тяжести)"};
+constexpr Phrase kEqualDepthsKeepOrder{"Equal depths keep the listed order.",
+                                       "奥行きが等しいものは列挙した順のまま.",
+                                       "Равные глубины сохраняют исходный порядок."};
+// The overlapping pairs.
+constexpr Phrase kCheckEachPair{"Check each overlapping pair (Newell)", "重なる組を調べる (Newell)",
+                                "Проверка каждой перекрывающейся пары (Newell)"};
+constexpr Phrase kConflicts{"conflicts", "矛盾", "конфликты"};
+constexpr Phrase kNoConflicts{"no conflicts", "矛盾なし", "конфликтов нет"};
+constexpr Phrase kOverlapOrthographic{
+    "Overlap is decided exactly by the orthographic projection along the view direction (each "
+    "polygon cut into triangles on screen).",
+    "重なりは視線方向への平行投影で厳密に判定する (各多角形を画面上で三角形に分割).",
+    "Перекрытие определяется точно ортографической проекцией вдоль направления взгляда (каждый "
+    "многоугольник разрезан на треугольники на экране)."};
+constexpr Phrase kOverlapPerspective{
+    "Overlap is decided exactly by the perspective projection from the eye onto the plane "
+    "perpendicular to the direction from the eye to the mean centroid (each polygon cut into "
+    "triangles on screen).",
+    "重なりは, 視点から平均重心への方向に垂直な平面への, 視点からの透視投影で厳密に判定する "
+    "(各多角形を画面上で三角形に分割).",
+    "Перекрытие определяется точно перспективной проекцией из глаза на плоскость, перпендикулярную "
+    "направлению от глаза к среднему центру тяжести (каждый многоугольник разрезан на треугольники "
+    "на экране)."};
+constexpr Phrase kCompareAtCorners{
+    "Over each overlapping piece the depths of the two planes are compared at the piece's corners "
+    "(depth is affine there), which gives the true order; Newell's plane tests are shown beside "
+    "it.",
+    "重なる各部分で, 2 つの平面の奥行きをその部分の角で比べる (そこでは奥行きはアフィン). "
+    "これが本当の前後関係を与える. Newell の平面テストも並べて示す.",
+    "На каждом перекрывающемся куске глубины двух плоскостей сравниваются в углах куска (там "
+    "глубина аффинна), что даёт истинный порядок; рядом показаны плоскостные тесты Newell."};
+constexpr Phrase kWhenPairConflicts{
+    "A pair conflicts when the centroid order is wrong, they interpenetrate, one wraps around the "
+    "other, or they lie on a cycle (polygons have size, so one centroid cannot order them).",
+    "重心の順序が誤っているとき, 貫通しているとき, 一方が他方を包むとき, または三すくみのとき, "
+    "その組は矛盾する (ポリゴンには「大きさ」があるので, 重心だけでは前後関係が定まらない).",
+    "Пара конфликтует, если порядок центров тяжести неверен, они взаимно проникают, одна "
+    "охватывает другую или они лежат на цикле (у многоугольников есть размер, поэтому один центр "
+    "тяжести не упорядочивает их)."};
+constexpr Phrase kNoOverlap{
+    "No two polygons overlap on screen: any order is right.",
+    "画面上で重なる多角形の組はない: どの順序でも正しい.",
+    "Никакие два многоугольника не перекрываются на экране: любой порядок верен."};
+constexpr Phrase kSeenEdgeOn{
+    "Seen edge-on (no area on screen, never in conflict): {0}.",
+    "真横から見える (画面上で面積がなく, 矛盾することはない): {0}.",
+    "Видны с ребра (на экране не занимают площади и ни с чем не конфликтуют): {0}."};
+constexpr Phrase kPairLine{
+    "{0}-{1}: overlap on screen; over the overlap {2}; plane tests: {3}, {5} — {4}",
+    "{0}-{1}: 画面上で重なる. 重なりでは {2}. 平面テスト: {3}, {5} — {4}",
+    "{0}-{1}: перекрываются на экране; на перекрытии {2}; плоскостные тесты: {3}, {5} — {4}"};
+constexpr Phrase kIsBehind{"{0} is behind {1}", "{0} が {1} の奥", "{0} за {1}"};
+constexpr Phrase kNearerChanges{"nearer one changes: they interpenetrate",
+                                "手前のものが入れ替わる: 貫通している",
+                                "ближний меняется: они взаимно проникают"};
+constexpr Phrase kNearerDiffers{"nearer one differs between parts: one wraps around the other",
+                                "部分によって手前のものが異なる: 一方が他方を包んでいる",
+                                "ближний различается по частям: один охватывает другой"};
+constexpr Phrase kDepthsEqual{"depths are equal (coplanar)", "奥行きが等しい (同一平面上)",
+                              "глубины равны (компланарны)"};
+constexpr Phrase kEntirelyBehind{"{0} entirely behind the plane of {1}",
+                                 "{0} は {1} の平面の完全に奥", "{0} целиком за плоскостью {1}"};
+constexpr Phrase kEntirelyInFront{"{0} entirely in front of the plane of {1}",
+                                  "{0} は {1} の平面の完全に手前",
+                                  "{0} целиком перед плоскостью {1}"};
+constexpr Phrase kOnBothSides{"{0} on both sides of the plane of {1}",
+                              "{0} は {1} の平面の両側にある", "{0} по обе стороны плоскости {1}"};
+constexpr Phrase kCentroidOrderRight{"the centroid order is right", "重心の順序で正しい",
+                                     "порядок центров тяжести верен"};
+constexpr Phrase kConflictCycle{
+    "CONFLICT: they lie on a cycle of overlaps (三すくみ): each polygon must be drawn before the "
+    "next, around the cycle, so no order of whole polygons is right",
+    "矛盾: 三すくみ. 各多角形を次のものより先に描かねばならず, それが一巡するので, "
+    "多角形単位のどの順序も正しくない",
+    "КОНФЛИКТ: они лежат на цикле перекрытий: каждый многоугольник нужно рисовать раньше "
+    "следующего по циклу, поэтому никакой порядок целых многоугольников не верен"};
+constexpr Phrase kConflictInterpenetrate{
+    "CONFLICT: they interpenetrate (貫通): over their overlap the nearer polygon changes inside "
+    "one piece, so no order of whole polygons is right",
+    "矛盾: 貫通している. 重なりの一つの部分の中で手前の多角形が入れ替わるので, "
+    "多角形単位のどの順序も正しくない",
+    "КОНФЛИКТ: они взаимно проникают: на их перекрытии ближний многоугольник меняется внутри "
+    "одного куска, поэтому никакой порядок целых многоугольников не верен"};
+constexpr Phrase kConflictWraps{
+    "CONFLICT: one wraps around the other (a concave polygon): part of the overlap has one in "
+    "front, part the other, so no order of whole polygons is right",
+    "矛盾: 一方が他方を包んでいる (凹ポリゴン). 重なりの一部では一方が, 残りでは他方が手前なので, "
+    "多角形単位のどの順序も正しくない",
+    "КОНФЛИКТ: один охватывает другой (невыпуклый многоугольник): на части перекрытия впереди "
+    "один, на части — другой, поэтому никакой порядок целых многоугольников не верен"};
+constexpr Phrase kConflictFartherThan{
+    "CONFLICT: over their overlap {0} is nearer everywhere, but its centroid is farther than "
+    "{1}'s, so the centroid order draws {2} first and {3} paints over it",
+    "矛盾: 重なりではどこでも {0} が手前だが, その重心は {1} の重心より奥にあるので, 重心の順では "
+    "{2} を先に描き, {3} がその上に描かれてしまう",
+    "КОНФЛИКТ: на перекрытии {0} везде ближе, но его центр тяжести дальше, чем у {1}, поэтому "
+    "порядок по центрам тяжести рисует {2} первым, и {3} закрашивает его"};
+constexpr Phrase kConflictAsFarAs{
+    "CONFLICT: over their overlap {0} is nearer everywhere, but its centroid is as far as {1}'s, "
+    "so the centroid order draws {2} first and {3} paints over it",
+    "矛盾: 重なりではどこでも {0} が手前だが, その重心は {1} の重心と同じ奥行きなので, "
+    "重心の順では {2} を先に描き, {3} がその上に描かれてしまう",
+    "КОНФЛИКТ: на перекрытии {0} везде ближе, но его центр тяжести так же далеко, как у {1}, "
+    "поэтому порядок по центрам тяжести рисует {2} первым, и {3} закрашивает его"};
+
+// How two overlapping polygons i < j relate over their overlap.
+Said relation(const PairReport& p) {
+  switch (p.order) {
+    case PairOrder::FirstBehind:
+      return say(kIsBehind, p.i, p.j);
+    case PairOrder::SecondBehind:
+      return say(kIsBehind, p.j, p.i);
+    case PairOrder::Interpenetrating:
+      return say(kNearerChanges);
+    case PairOrder::WrapsAround:
+      return say(kNearerDiffers);
+    case PairOrder::Coplanar:
+      break;
+  }
+  return say(kDepthsEqual);
+}
+
+// Newell's plane test of polygon a against the plane of b.
+Said plane_test(int a, int b, bool behind, bool in_front) {
+  return say(behind ? kEntirelyBehind : in_front ? kEntirelyInFront : kOnBothSides, a, b);
+}
+
+// Why a pair conflicts, as depth_sort decided it (PairReport::reason, in the same order).
+Said conflict(const PairReport& p) {
+  if (p.order == PairOrder::Interpenetrating) return say(kConflictInterpenetrate);
+  if (p.order == PairOrder::WrapsAround) return say(kConflictWraps);
+  if (p.cyclic) return say(kConflictCycle);
+  const int far = p.order == PairOrder::FirstBehind ? p.i : p.j;
+  const int near = far == p.i ? p.j : p.i;
+  return say(p.centroid_tie ? kConflictAsFarAs : kConflictFartherThan, near, far, near, far);
+}
 
 struct DepthSort {
   static constexpr const char* kName = "depth_sort";
@@ -147,7 +304,7 @@ struct DepthSort {
       lines += (k ? sep : MathText{}) +
                math(fmt::format("g{} = ", k), fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
                vec(res.centroids[k]);
-    steps->add("Centroids",
+    steps->add(say(kCentroids),
                math("g = (p₀ + p₁ + ⋯ + p_{n−1}) / n",
                     "\\mathbf{g} = \\frac{1}{n}(\\mathbf{p}_0 + \\cdots + \\mathbf{p}_{n-1})"),
                {}, lines);
@@ -159,73 +316,49 @@ struct DepthSort {
                 exact(res.depths[k], true);
     if (g.viewer.eye)
       steps
-          ->add("Depth: distance from the eye",
+          ->add(say(kDepthFromEye),
                 math("depth = ‖g − p_eye‖",
                      "\\text{depth} = \\lVert\\mathbf{g} - \\mathbf{p}_{\\text{eye}}\\rVert"),
                 math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(*g.viewer.eye), depths)
-          .note = "Larger depth = farther from the eye.";
+          .note = say(kLargerDepthFarther);
     else
       steps
-          ->add("Depth along the view direction",
+          ->add(say(kDepthAlongView),
                 math("depth = g·v̂", "\\text{depth} = \\mathbf{g}\\cdot\\hat{\\mathbf{v}}"),
                 math("v = ", "\\mathbf{v} = ") + vec(*g.viewer.view_direction), depths)
-          .note =
-          "v is the direction the viewer looks (into the scene), so larger depth = farther "
-          "(with v = (0, 0, −1), OpenGL's default view, depth = −z).";
+          .note = say(kViewDirectionDepth);
     steps->yields("depths");
     MathText seq;
     for (const std::string& k : order)
-      seq += (seq.empty() ? MathText{} : math(" → ", " \\to ")) + word(k);
+      seq += (seq.empty() ? MathText{} : math(" → ", " \\to ")) + word(Said::verbatim(k));
     // Said only where two depths are equal: the tie rule decides nothing otherwise.
     bool tie = false;
     for (std::size_t a = 0; a < res.depths.size(); ++a)
       for (std::size_t b = a + 1; b < res.depths.size(); ++b)
         tie = tie || exact_sign(res.depths[a] - res.depths[b]) == 0;
-    Step& draw = steps->add("Draw back to front (farthest centroid first)", {}, {}, seq);
-    if (tie) draw.note = "Equal depths keep the listed order.";
+    Step& draw = steps->add(say(kDrawBackToFront), {}, {}, seq);
+    if (tie) draw.note = say(kEqualDepthsKeepOrder);
     steps->yields("order");
 
-    std::string pairs;
-    for (const PairReport& p : res.overlapping) {
-      const std::string rel =
-          p.order == PairOrder::FirstBehind    ? fmt::format("{} is behind {}", p.i, p.j)
-          : p.order == PairOrder::SecondBehind ? fmt::format("{} is behind {}", p.j, p.i)
-          : p.order == PairOrder::Interpenetrating
-              ? std::string("nearer one changes: they interpenetrate")
-          : p.order == PairOrder::WrapsAround
-              ? std::string("nearer one differs between parts: one wraps around the other")
-              : std::string("depths are equal (coplanar)");
-      pairs += fmt::format(
-          "\n{}: overlap on screen; over the overlap {}; plane tests: {} {} "
-          "the plane of {}, {} {} the plane of {}{}",
-          p.name(), rel, p.i,
-          p.planes.i_behind_plane_j  ? "entirely behind"
-          : p.planes.i_front_plane_j ? "entirely in front of"
-                                     : "on both sides of",
-          p.j, p.j,
-          p.planes.j_behind_plane_i  ? "entirely behind"
-          : p.planes.j_front_plane_i ? "entirely in front of"
-                                     : "on both sides of",
-          p.i, p.conflict ? " — CONFLICT: " + p.reason : " — the centroid order is right");
-    }
-    MathText conflicts = word(res.conflicts.empty() ? "no conflicts" : "conflicts");
+    MathText conflicts = word(res.conflicts.empty() ? kNoConflicts : kConflicts);
     for (std::size_t k = 0; k < res.conflicts.size(); ++k)
-      conflicts += (k ? sep : math(": ", "\\colon ")) + word(res.conflicts[k]);
-    Step& s = steps->add("Check each overlapping pair (Newell)", {}, {}, conflicts);
-    s.note =
-        "Overlap is decided exactly by the " + res.projection +
-        " (each polygon cut into triangles on screen). Over each overlapping piece the depths "
-        "of the two planes are compared at the piece's corners (depth is affine there), which "
-        "gives the true order; Newell's plane tests are shown beside it. A pair conflicts when "
-        "the centroid order is wrong, they interpenetrate, one wraps around the other, or they "
-        "lie on a cycle (polygons have size, so one centroid cannot order them)." +
-        (res.overlapping.empty()
-             ? std::string("\nNo two polygons overlap on screen: any order is right.")
-             : pairs);
+      conflicts += (k ? sep : math(": ", "\\colon ")) + word(Said::verbatim(res.conflicts[k]));
+    Step& s = steps->add(say(kCheckEachPair), {}, {}, conflicts);
+    // Overlap is decided in the projection depth_sort chose: from the eye when there is one.
+    s.note = say(g.viewer.eye ? kOverlapPerspective : kOverlapOrthographic) +
+             say(kCompareAtCorners) + say(kWhenPairConflicts);
+    const Said line_break = Said::verbatim("\n");
+    if (res.overlapping.empty()) s.note.append(line_break).append(say(kNoOverlap));
+    for (const PairReport& p : res.overlapping)
+      s.note.append(line_break)
+          .append(say(kPairLine, p.i, p.j, relation(p),
+                      plane_test(p.i, p.j, p.planes.i_behind_plane_j, p.planes.i_front_plane_j),
+                      p.conflict ? conflict(p) : say(kCentroidOrderRight),
+                      plane_test(p.j, p.i, p.planes.j_behind_plane_i, p.planes.j_front_plane_i)));
     if (!res.edge_on.empty()) {
       std::string e;
       for (int k : res.edge_on) e += (e.empty() ? "" : ", ") + std::to_string(k);
-      s.note += "\nSeen edge-on (no area on screen, never in conflict): " + e + ".";
+      s.note.append(line_break).append(say(kSeenEdgeOn, e));
     }
     steps->yields("conflicts");
     return out;

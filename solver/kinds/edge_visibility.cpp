@@ -5,8 +5,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
+#include <string_view>
+#include <utility>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
@@ -26,6 +30,154 @@ namespace {
 
 // More faces than this and the derivation lists only the counts, not the D_f table.
 constexpr std::size_t kMaxTableFaces = 60;
+
+// The solid and its transform.
+constexpr Phrase kTheSolid{"The solid", "立体", "Тело"};
+constexpr Phrase kSolidCounts{
+    "{0}: {1} vertices, {2} faces (counter-clockwise from outside).",
+    "{0}: 頂点 {1} 個, 面 {2} 個 (外から見て反時計回り).",
+    "{0}: {1} вершин, {2} граней (против часовой стрелки, если смотреть снаружи)."};
+constexpr Phrase kPhiKeptExact{"φ = (1 + √5)/2 is kept exact.", "φ = (1 + √5)/2 は厳密に扱う.",
+                               "φ = (1 + √5)/2 хранится точно."};
+constexpr Phrase kTetrahedron{"tetrahedron", "正四面体", "тетраэдр"};
+constexpr Phrase kCube{"cube", "立方体", "куб"};
+constexpr Phrase kOctahedron{"octahedron", "正八面体", "октаэдр"};
+constexpr Phrase kDodecahedron{"dodecahedron", "正十二面体", "додекаэдр"};
+constexpr Phrase kIcosahedron{"icosahedron", "正二十面体", "икосаэдр"};
+constexpr Phrase kTransformTheSolid{"Transform the solid (first step applied first)",
+                                    "立体を変換 (最初のステップを最初に適用)",
+                                    "Преобразование тела (первый шаг применяется первым)"};
+constexpr Phrase kStepA{"A{0}: {1}", "A{0}: {1}", "A{0}: {1}"};
+constexpr Phrase kEveryVertexMoves{
+    "Every vertex moves by P′ = M·P; faces keep their vertex lists.",
+    "各頂点は P′ = M·P で移り, 面の頂点リストは変わらない.",
+    "Каждая вершина переходит по P′ = M·P; грани сохраняют свои списки вершин."};
+constexpr Phrase kDetMirrors{
+    "det M < 0 mirrors the solid, so every face's vertex order is reversed to stay "
+    "counter-clockwise seen from outside.",
+    "det M < 0 なので立体は鏡映される. 外側から見て反時計回りのままになるよう, "
+    "各面の頂点の順序を逆にする.",
+    "det M < 0 — тело зеркально отражается, поэтому порядок вершин каждой грани обращается, чтобы "
+    "он оставался против часовой стрелки при взгляде снаружи."};
+constexpr Phrase kWindingLeftHanded{"Winding in a left-handed frame", "左手系での頂点の回り順",
+                                    "Порядок обхода в левой системе"};
+constexpr Phrase kFacesListedLeftHanded{
+    "The faces are listed counter-clockwise seen from outside in this left-handed frame, where e₀ "
+    "× e₁ points inward: each face's outward (front) normal is n = e₁ × e₀.",
+    "この左手系では各面の頂点は外側から見て反時計回りに並べられ, e₀ × e₁ は内側を向く. "
+    "各面の外向き(表側)の法線は n = e₁ × e₀ である.",
+    "В этой левой системе координат вершины каждой грани перечислены против часовой стрелки при "
+    "взгляде снаружи, и e₀ × e₁ направлен внутрь: внешняя (лицевая) нормаль каждой грани — n = e₁ "
+    "× e₀."};
+constexpr Phrase kClosedAndOriented{"Closed and consistently oriented",
+                                    "閉じていて向きがそろっている",
+                                    "Замкнут и ориентирован согласованно"};
+constexpr Phrase kEveryEdgeJoinsTwo{
+    "Every edge joins exactly two faces, which walk it in opposite directions.",
+    "どの辺もちょうど 2 つの面に共有され, 2 つの面はその辺を逆向きにたどる.",
+    "Каждое ребро соединяет ровно две грани, которые обходят его в противоположных направлениях."};
+// Faces.
+constexpr Phrase kFrontOrBackPerFace{"Front or back per face", "各面の表裏",
+                                     "Лицевая или обратная для каждой грани"};
+constexpr Phrase kDfSign{
+    "D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
+    "counter-clockwise = front).",
+    "D_f > 0: 表, D_f < 0: 裏 (p_i は面の最初の頂点, n はその法線, 反時計回り = 表).",
+    "D_f > 0: лицевая; D_f < 0: обратная (p_i — первая вершина грани, n — её нормаль, против "
+    "часовой стрелки = лицевая)."};
+constexpr Phrase kFaceLine{"face {0}: n = {1}, D_f = {2} → {3}", "面 {0}: n = {1}, D_f = {2} → {3}",
+                           "грань {0}: n = {1}, D_f = {2} → {3}"};
+constexpr Phrase kEdgeOnFaces{"Edge-on faces", "真横から見た面", "Грани, видимые с ребра"};
+constexpr Phrase kFacesHaveDfZero{
+    "Face(s) {0} have D_f = 0 exactly: the eye lies in their plane, so they cover no area on "
+    "screen.",
+    "面 {0} は D_f = 0 (厳密): 視点がその平面上にあるので, 画面上で面積を持たない.",
+    "У граней {0} D_f = 0 точно: глаз лежит в их плоскости, поэтому на экране они не занимают "
+    "площади."};
+constexpr Phrase kCountAsBack{
+    "They count as back for the edge classes, as back-face culling treats them.",
+    "稜線の分類では, バックフェースカリングと同じく裏として扱う.",
+    "При классификации рёбер они считаются обратными, как их и трактует отсечение нелицевых "
+    "граней."};
+// Edges, silhouette, convexity.
+constexpr Phrase kEdgeClasses{"Edge classes", "稜線の分類", "Классы рёбер"};
+constexpr Phrase kEdgeClassifiedByFaces{
+    "An edge is classified by the two faces that share it.",
+    "稜線はそれを共有する 2 つの面で分類される.",
+    "Ребро классифицируется по двум граням, которые его разделяют."};
+constexpr Phrase kHiddenLineDrawing{
+    "Hidden-line drawing = the edges of the front faces (visible + silhouette): {0}.",
+    "隠線消去した図 = 表の面の稜線 (見える稜線 + 輪郭線): {0}.",
+    "Рисунок с удалёнными невидимыми линиями = рёбра лицевых граней (видимые + силуэт): {0}."};
+constexpr Phrase kSilhouetteTitle{"Silhouette: the front–back edges", "輪郭線: 表と裏の境の辺",
+                                  "Силуэт: рёбра между лицевой и обратной гранями"};
+constexpr Phrase kChainedOneLoop{"Chained by shared vertices: {0} ({1} loop).",
+                                 "共有する頂点でつなぐ: {0} (ループ {1} 個).",
+                                 "Связаны общими вершинами: {0} ({1} контур)."};
+constexpr Phrase kChainedLoops{"Chained by shared vertices: {0} ({1} loops).",
+                               "共有する頂点でつなぐ: {0} (ループ {1} 個).",
+                               "Связаны общими вершинами: {0} (контуров: {1})."};
+constexpr Phrase kConvexSilhouette{
+    "A convex polyhedron's silhouette is one closed loop, a convex polygon on screen.",
+    "凸多面体の輪郭線は閉じたループ一つで, 画面上では凸多角形になる.",
+    "Силуэт выпуклого многогранника — один замкнутый контур, выпуклый многоугольник на экране."};
+constexpr Phrase kNotSimpleLoops{
+    "The silhouette edges do not chain into simple loops (the solid is not convex).",
+    "輪郭線の辺は単純なループにつながらない (立体は凸でない).",
+    "Рёбра силуэта не складываются в простые контуры (тело невыпуклое)."};
+constexpr Phrase kHiddenEdgesTitle{"Hidden edges: the back–back edges", "隠れる稜線: 裏と裏の辺",
+                                   "Невидимые рёбра: между двумя обратными гранями"};
+constexpr Phrase kDrawingOnlyThese{
+    "Drawing only these shows the lines that should be hidden.",
+    "これらだけを描くと, 隠れるべき線が見える.",
+    "Если рисовать только их, видны линии, которые должны быть скрыты."};
+constexpr Phrase kConvexQ{"Convex?", "凸か?", "Выпуклый?"};
+constexpr Phrase kConvex{"convex", "凸", "выпуклый"};
+constexpr Phrase kNotConvex{"not convex", "凸でない", "невыпуклый"};
+constexpr Phrase kEveryVertexInside{
+    "Every vertex lies on the inner side of (or on) every face plane.",
+    "どの頂点もすべての面の平面の内側 (または平面上) にある.",
+    "Каждая вершина лежит с внутренней стороны каждой плоскости грани (или на ней)."};
+constexpr Phrase kNotConvexWitness{"Not convex: vertex {0} lies outside the plane of face {1}.",
+                                   "凸でない: 頂点 {0} は面 {1} の平面の外側にある.",
+                                   "Невыпуклый: вершина {0} лежит снаружи плоскости грани {1}."};
+constexpr Phrase kBackfaceAloneQ{"Back-face culling alone?", "バックフェースカリングだけで十分か?",
+                                 "Достаточно ли отсечения нелицевых граней?"};
+constexpr Phrase kSingleConvexPolyhedron{
+    "A single closed convex polyhedron: no front face can hide another, so culling the back faces "
+    "removes every hidden surface.",
+    "閉じた凸多面体が一つだけ: 表の面が他の面を隠すことはないので, "
+    "裏面を除去すれば隠面はすべて消える.",
+    "Один замкнутый выпуклый многогранник: лицевая грань не может закрыть другую, поэтому "
+    "отсечение нелицевых граней удаляет все невидимые поверхности."};
+constexpr Phrase kNotConvexNeedsDepthTest{
+    "Not convex: from some viewpoints a front face hides part of another front face, so back-face "
+    "culling alone does not always remove the hidden surfaces; a depth test is still needed.",
+    "凸でない: 視点によっては表の面が別の表の面の一部を隠すので, "
+    "バックフェースカリングだけでは隠面がいつも消えるとは限らない. 奥行きテストが必要.",
+    "Невыпуклый: при некоторых положениях глаза лицевая грань закрывает часть другой лицевой "
+    "грани, поэтому одно отсечение нелицевых граней не всегда удаляет невидимые поверхности; нужен "
+    "ещё тест глубины."};
+
+// A named solid in words.
+Said solid_word(const std::string& name) {
+  static constexpr std::pair<const char*, const Phrase*> kSolids[] = {
+      {"tetrahedron", &kTetrahedron},
+      {"cube", &kCube},
+      {"octahedron", &kOctahedron},
+      {"dodecahedron", &kDodecahedron},
+      {"icosahedron", &kIcosahedron}};
+  for (const auto& [key, phrase] : kSolids)
+    if (name == key) return say(*phrase);
+  return Said::verbatim(name);
+}
+
+// A transform step's title as the `transform` reader writes it ("translate (0, 0, −10)"): a
+// translation, a scaling and a rotation about an axis in words; rotate_x, rotate_y and rotate_z
+// with their angle stay as written, the set's own key.
+const Phrase& facing_phrase(Facing f) {
+  return f == Facing::Front ? words::kFront : f == Facing::Back ? words::kBack : words::kEdgeOnKey;
+}
 
 struct EdgeVisibility {
   static constexpr const char* kName = "edge_visibility";
@@ -156,10 +308,15 @@ struct EdgeVisibility {
     return s;
   }
 
-  static std::string join(const std::vector<std::string>& words) {
+  static std::string join(const std::vector<std::string>& names) {
     std::string s;
-    for (const std::string& w : words) s += (s.empty() ? "" : ", ") + w;
-    return s.empty() ? "none" : s;
+    for (const std::string& w : names) s += (s.empty() ? "" : ", ") + w;
+    return s;
+  }
+
+  // Edges or faces by their numbers, or "none".
+  static Said listed(const std::vector<std::string>& names) {
+    return names.empty() ? say(words::kNone) : Said::verbatim(join(names));
   }
 
   // Applies the composite transform to the vertices; a mirror (det < 0) reverses every
@@ -180,39 +337,33 @@ struct EdgeVisibility {
     if (det < 0)
       for (std::vector<int>& f : mesh.faces) std::reverse(f.begin(), f.end());
     if (steps) {
-      std::string order, product, product_latex;
+      Said order;
+      std::string product, product_latex;
       for (std::size_t i = 0; i < g.transform.size(); ++i) {
-        order += fmt::format("{}A{}: {}", i ? "; " : "", i + 1, g.transform[i].title);
+        if (i) order.append(Said::verbatim("; "));
+        order.append(say(kStepA, i + 1, g.transform[i].heading));
         product = fmt::format("A{}", i + 1) + (i ? "·" : "") + product;
         product_latex = fmt::format("A_{{{}}}", i + 1) + product_latex;
       }
-      Step& s = steps->add("Transform the solid (first step applied first)",
-                           math("M = " + product, "M = " + product_latex), {},
-                           math("M = ") + matrix_text(m));
-      s.note = order + ". Every vertex moves by P′ = M·P; faces keep their vertex lists.";
-      if (det < 0)
-        s.note +=
-            " det M < 0 mirrors the solid, so every face's vertex order is reversed to stay "
-            "counter-clockwise seen from outside.";
+      order.append(Said::verbatim("."));
+      Step& s = steps->add(say(kTransformTheSolid), math("M = " + product, "M = " + product_latex),
+                           {}, math("M = ") + matrix_text(m));
+      s.note = order + say(kEveryVertexMoves);
+      if (det < 0) s.note += say(kDetMirrors);
     }
     return mesh;
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
     if (steps && !g.solid.empty()) {
-      std::string text = fmt::format("{}: {} vertices, {} faces (counter-clockwise from outside).",
-                                     g.solid, g.mesh.vertices.size(), g.mesh.faces.size());
-      if (g.solid == "icosahedron" || g.solid == "dodecahedron")
-        text += " φ = (1 + √5)/2 is kept exact.";
-      steps->note("The solid", text);
+      Said text =
+          say(kSolidCounts, solid_word(g.solid), g.mesh.vertices.size(), g.mesh.faces.size());
+      if (g.solid == "icosahedron" || g.solid == "dodecahedron") text += say(kPhiKeptExact);
+      steps->note(say(kTheSolid), text);
     }
     const Mesh shown = transformed(g, steps);
     const Mesh mesh = right_handed_winding(g, shown);
-    if (steps && g.left_handed)
-      steps->note("Winding in a left-handed frame",
-                  "The faces are listed counter-clockwise seen from outside in this "
-                  "left-handed frame, where e₀ × e₁ points inward: each face's outward (front) "
-                  "normal is n = e₁ × e₀.");
+    if (steps && g.left_handed) steps->note(say(kWindingLeftHanded), say(kFacesListedLeftHanded));
     for (std::size_t f = 0; f < mesh.faces.size() && g.solid.empty(); ++f) {
       const PolygonAnalysis a = analyse_face(mesh, f);
       if (a.degenerate)
@@ -234,7 +385,7 @@ struct EdgeVisibility {
                                      "oriented polyhedron are needed to classify its edges");
     if (steps)
       steps
-          ->add("Closed and consistently oriented", math("V − E + F", "V - E + F"), {},
+          ->add(say(kClosedAndOriented), math("V − E + F", "V - E + F"), {},
                 math(fmt::format("{} − {} + {} = {}", mesh.vertices.size(), check.edges.size(),
                                  mesh.faces.size(),
                                  static_cast<long>(mesh.vertices.size()) -
@@ -245,27 +396,28 @@ struct EdgeVisibility {
                                  static_cast<long>(mesh.vertices.size()) -
                                      static_cast<long>(check.edges.size()) +
                                      static_cast<long>(mesh.faces.size()))))
-          .note = "Every edge joins exactly two faces, which walk it in opposite directions.";
+          .note = say(kEveryEdgeJoinsTwo);
 
     // Front or back per face (seed 003).
     const std::vector<Vec3<Exact>> normals = face_normals(mesh);
     const std::vector<FaceTest> tests = face_tests(mesh, normals, g.eye);
     Answers out;
     std::vector<std::pair<std::string, std::string>> faces;
-    std::string table;
+    Said table;
     std::vector<std::string> edge_on;
     for (std::size_t f = 0; f < tests.size(); ++f) {
       faces.emplace_back(std::to_string(f), facing_word(tests[f].facing));
       if (tests[f].facing == Facing::EdgeOn) edge_on.push_back(std::to_string(f));
-      if (f < kMaxTableFaces)
-        table += fmt::format("\nface {} [{}]: n = {}, D_f = {} → {}", f, face_text(shown.faces[f]),
-                             vec(normals[f]).unicode, exact(tests[f].df, true).unicode,
-                             facing_word(tests[f].facing));
+      if (steps && f < kMaxTableFaces)
+        table.append(Said::verbatim("\n"))
+            .append(say(kFaceLine, fmt::format("{} [{}]", f, face_text(shown.faces[f])),
+                        vec(normals[f]).unicode, exact(tests[f].df, true).unicode,
+                        facing_phrase(tests[f].facing)));
     }
     out.set("faces", Value::word_map(faces));
     if (steps) {
       Step& s = steps->add(
-          "Front or back per face",
+          say(kFrontOrBackPerFace),
           math("D_f = (p_eye − p_i)·n",
                "D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
           math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
@@ -276,18 +428,10 @@ struct EdgeVisibility {
                                  [](const FaceTest& t) { return t.facing == Facing::Back; }),
                    "back"},
                   {static_cast<long>(edge_on.size()), "edge-on"}}));
-      s.note =
-          "D_f > 0: front; D_f < 0: back (p_i is the face's first vertex, n its normal, "
-          "counter-clockwise = front)." +
-          table;
+      s.note = say(kDfSign).append(table);
       steps->yields("faces");
       if (!edge_on.empty())
-        steps->note(
-            "Edge-on faces",
-            "Face(s) " + join(edge_on) +
-                " have D_f = 0 exactly: the eye lies in their plane, "
-                "so they cover no area on screen. They count as back for the edge classes, as "
-                "back-face culling treats them.");
+        steps->note(say(kEdgeOnFaces), say(kFacesHaveDfZero, join(edge_on)) + say(kCountAsBack));
     }
 
     // Edge classes A), B), C).
@@ -309,25 +453,23 @@ struct EdgeVisibility {
       std::vector<std::string> front_edges = visible;
       front_edges.insert(front_edges.end(), silhouette.begin(), silhouette.end());
       steps
-          ->add("Edge classes",
-                word("front") + math("–", "\\text{–}") + word("front") + math(": ", "\\colon ") +
-                    word("visible") + math(";  ", ";\\; ") + word("front") +
-                    math("–", "\\text{–}") + word("back") + math(": ", "\\colon ") +
-                    word("silhouette") + math(";  ", ";\\; ") + word("back") +
-                    math("–", "\\text{–}") + word("back") + math(": ", "\\colon ") + word("hidden"),
+          ->add(say(kEdgeClasses),
+                word(words::kFront) + math("–", "\\text{–}") + word(words::kFront) +
+                    math(": ", "\\colon ") + word(words::kVisible) + math(";  ", ";\\; ") +
+                    word(words::kFront) + math("–", "\\text{–}") + word(words::kBack) +
+                    math(": ", "\\colon ") + word(words::kSilhouette) + math(";  ", ";\\; ") +
+                    word(words::kBack) + math("–", "\\text{–}") + word(words::kBack) +
+                    math(": ", "\\colon ") + word(words::kHidden),
                 {},
                 counts({{static_cast<long>(visible.size()), "visible"},
                         {static_cast<long>(silhouette.size()), "silhouette"},
                         {static_cast<long>(hidden.size()), "hidden"}}))
-          .note =
-          "An edge is classified by the two faces that share it. Hidden-line "
-          "drawing = the edges of the front faces (visible + silhouette): " +
-          join(front_edges) + ".";
+          .note = say(kEdgeClassifiedByFaces) + say(kHiddenLineDrawing, listed(front_edges));
       steps->yields("edges");
     }
 
     // Convexity: every vertex on the inner side of every face plane.
-    std::string witness;
+    ConvexityWitness witness;
     const bool convex = is_convex(mesh, normals, &witness);
     out.set("convex", Value::boolean(convex));
 
@@ -339,40 +481,32 @@ struct EdgeVisibility {
         for (int v : loop) s += (s.empty() ? "" : " → ") + std::to_string(v);
         loop_text += (loop_text.empty() ? "" : ";  ") + s;
       }
-      Step& s = steps->add("Silhouette: the front–back edges", {}, {},
-                           silhouette.empty() ? word("none") : word(join(silhouette)));
-      if (loops.ok && !loops.loops.empty())
-        s.note = fmt::format("Chained by shared vertices: {} ({} loop{}).", loop_text,
-                             loops.loops.size(), loops.loops.size() == 1 ? "" : "s") +
-                 (convex ? " A convex polyhedron's silhouette is one closed loop, a convex polygon "
-                           "on screen."
-                         : "");
-      else if (!loops.ok)
-        s.note = "The silhouette edges do not chain into simple loops (the solid is not convex).";
+      Step& s = steps->add(say(kSilhouetteTitle), {}, {}, word(listed(silhouette)));
+      if (loops.ok && !loops.loops.empty()) {
+        s.note = say(loops.loops.size() == 1 ? kChainedOneLoop : kChainedLoops, loop_text,
+                     loops.loops.size());
+        if (convex) s.note += say(kConvexSilhouette);
+      } else if (!loops.ok) {
+        s.note = say(kNotSimpleLoops);
+      }
       steps->yields("silhouette");
-      steps
-          ->add("Hidden edges: the back–back edges", {}, {},
-                hidden.empty() ? word("none") : word(join(hidden)))
-          .note = "Drawing only these shows the lines that should be hidden.";
+      steps->add(say(kHiddenEdgesTitle), {}, {}, word(listed(hidden))).note =
+          say(kDrawingOnlyThese);
       steps->yields("hidden");
       steps
-          ->add("Convex?",
+          ->add(say(kConvexQ),
                 math("n_f·(v − p_f) ≤ 0  ∀ v, f",
                      "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\quad "
                      "\\forall\\, \\mathbf{v}, f"),
-                {}, word(convex ? "convex" : "not convex"))
-          .note = convex ? "Every vertex lies on the inner side of (or on) every face plane."
-                         : "Not convex: " + witness + ".";
+                {}, word(convex ? kConvex : kNotConvex))
+          .note =
+          convex ? say(kEveryVertexInside) : say(kNotConvexWitness, witness.vertex, witness.face);
       steps->yields("convex");
     }
     out.set("backface_sufficient", Value::boolean(convex));
     if (steps) {
-      steps->add("Back-face culling alone?", {}, {}, word(convex ? "yes" : "no")).note =
-          convex ? "A single closed convex polyhedron: no front face can hide another, so "
-                   "culling the back faces removes every hidden surface."
-                 : "Not convex: from some viewpoints a front face hides part of another front "
-                   "face, so back-face culling alone does not always remove the hidden surfaces; "
-                   "a depth test is still needed.";
+      steps->add(say(kBackfaceAloneQ), {}, {}, word(convex ? words::kYes : words::kNo)).note =
+          say(convex ? kSingleConvexPolyhedron : kNotConvexNeedsDepthTest);
       steps->yields("backface_sufficient");
     }
     return out;

@@ -3,6 +3,7 @@
 // two tuples are one point when their quotients are equal. In 2-D or 3-D.
 #include <fmt/format.h>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -11,6 +12,16 @@
 namespace frustum {
 
 namespace {
+
+constexpr Phrase kHomogeneousCoordinates{"Homogeneous coordinates of the point", "点の同次座標",
+                                         "Однородные координаты точки"};
+constexpr Phrase kBackToThePoint{"Back to the point", "通常座標に戻す", "Обратно к точке"};
+constexpr Phrase kTheSamePoint{"The same point?", "同じ点か?", "Та же точка?"};
+constexpr Phrase kEqualQuotients{"equal quotients", "商が等しい", "частные равны"};
+constexpr Phrase kTheSamePointWord{"the same point", "同じ点", "та же точка"};
+constexpr Phrase kWrittenWithW{"With W = {0} the point {1} is written {2}.",
+                               "W = {0} とすると, 点 {1} は {2} と表される.",
+                               "При W = {0} точка {1} записывается как {2}."};
 
 // The names written in the formulas: x, y[, z] and X, Y[, Z], W.
 MathText coordinates(std::size_t dim, bool upper, bool with_w) {
@@ -144,7 +155,7 @@ struct Homogeneous {
       h.push_back(*g.w);
       substituted += math(", ") + exact(*g.w) + math(")");
       if (steps) {
-        steps->add("Homogeneous coordinates of the point",
+        steps->add(say(kHomogeneousCoordinates),
                    coordinates(dim, false, false) + math(" ≡ ", " \\equiv ") + scaled_names(dim) +
                        math(", w ≠ 0", ",\\ w \\neq 0"),
                    substituted, vec(h));
@@ -174,22 +185,22 @@ struct Homogeneous {
       }
       const bool same = same_point(g.point, p);
       if (steps) {
-        steps->add("Back to the point",
+        steps->add(say(kBackToThePoint),
                    coordinates(dim, true, true) + math(" ↦ ", " \\mapsto ") +
                        math(names + ")", latex + "\\right)"),
                    substituted, vec(p, true));
         steps->yields("cartesian");
         Step& step = steps->add(
-            "The same point?",
-            word("equal quotients") + math(" ⇔ ", " \\Leftrightarrow ") + word("the same point"),
+            say(kTheSamePoint),
+            word(kEqualQuotients) + math(" ⇔ ", " \\Leftrightarrow ") + word(kTheSamePointWord),
             vec(p) + math(same ? " = " : " ≠ ", same ? " = " : " \\neq ") + vec(g.point),
-            word(same ? "yes" : "no"));
+            word(same ? words::kYes : words::kNo));
         if (!same) {
           std::vector<Exact> scaled;
           for (const Exact& x : g.point) scaled.push_back(canonical(w * x));
           scaled.push_back(w);
-          step.note = fmt::format("With W = {} the point {} is written {}.", exact(w).unicode,
-                                  vec(g.point).unicode, vec(scaled).unicode);
+          step.note =
+              say(kWrittenWithW, exact(w).unicode, vec(g.point).unicode, vec(scaled).unicode);
         }
         steps->yields("same_point");
       }

@@ -12,6 +12,9 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kAPointInViewCoordinates{"A point in view coordinates", "視点座標系での点",
+                                          "Точка в координатах вида"};
+
 struct LookAt {
   static constexpr const char* kName = "look_at";
   static constexpr const char* kSummary = "the view matrix of a camera at eye looking at center";
@@ -52,7 +55,7 @@ struct LookAt {
     if (steps) steps->yields("matrix");
     std::vector<std::vector<Exact>> points;
     for (const Vec3<Exact>& p : g.points) points.push_back({p(0), p(1), p(2)});
-    out.set("points", transform_points_with_steps(m, points, "A point in view coordinates", "p",
+    out.set("points", transform_points_with_steps(m, points, say(kAPointInViewCoordinates), "p",
                                                   steps, g.api));
     return out;
   }

@@ -12,6 +12,32 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kIllConditionedNormal{"Ill-conditioned normal", "条件の悪い法線",
+                                       "Плохо обусловленная нормаль"};
+constexpr Phrase kTheNormalSDirection{"the normal's direction", "法線の向き",
+                                      "направление нормали"};
+
+constexpr Phrase kOrientation{"Orientation", "向き", "Ориентация"};
+constexpr Phrase kLeftHandedCross{
+    "These coordinates are left-handed: AC × AB points to the side from which A, B, C run "
+    "counter-clockwise (the front).",
+    "この座標は左手系である: AC × AB は A, B, C が反時計回りに見える側 (表) を向く.",
+    "Эти координаты — левая система: AC × AB направлен в ту сторону, откуда A, B, C идут против "
+    "часовой стрелки (лицевая сторона)."};
+constexpr Phrase kMirrorFrontNormal{
+    "Read in a right-handed frame, the same numbers describe the mirror image, whose front normal "
+    "is AB × AC = −(AC × AB).",
+    "右手系で読むと同じ数値は鏡像を表し, その表の法線は AB × AC = −(AC × AB) である.",
+    "Прочитанные в правой системе, те же числа описывают зеркальный образ, лицевая нормаль "
+    "которого AB × AC = −(AC × AB)."};
+constexpr Phrase kRightHandedCross{
+    "In a right-handed frame AB × AC points to the side from which A, B, C run counter-clockwise; "
+    "in a left-handed frame (such as projection coordinates) that side's normal is AC × AB.",
+    "右手系では AB × AC は A, B, C が反時計回りに見える側を向く. 左手系 (投影座標系など) "
+    "ではその側の法線は AC × AB.",
+    "В правой системе AB × AC направлен в ту сторону, откуда A, B, C идут против часовой стрелки; "
+    "в левой системе (например, в координатах проекции) нормаль этой стороны — AC × AB."};
+
 std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
                                               const std::optional<CrossOrder>& order, Precision p) {
   const double kappa = normal_condition(double_points(points));
@@ -52,7 +78,7 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
       out.inputs(in.range);
       report_normal(out, n);
       if (!n.exact_value)
-        warn_condition(out, p, kappa, "Ill-conditioned normal", "the normal's direction");
+        warn_condition(out, p, kappa, say(kIllConditionedNormal), say(kTheNormalSDirection));
       return out.take();
     };
     In in{{}, std::nullopt, {}, points, order};
@@ -128,16 +154,9 @@ struct Normal {
       // Which side the normal points to depends on the frame's handedness: said here, as
       // depth_at_pixel says it for its left-handed projection coordinates.
       if (steps)
-        steps->note(
-            "Orientation",
-            g.left_handed
-                ? "These coordinates are left-handed: AC × AB points to the side from which "
-                  "A, B, C run counter-clockwise (the front). Read in a right-handed frame, "
-                  "the same numbers describe the mirror image, whose front normal is "
-                  "AB × AC = −(AC × AB)."
-                : "In a right-handed frame AB × AC points to the side from which A, B, C run "
-                  "counter-clockwise; in a left-handed frame (such as projection coordinates) "
-                  "that side's normal is AC × AB.");
+        steps->note(say(kOrientation), g.left_handed
+                                           ? say(kLeftHandedCross) + say(kMirrorFrontNormal)
+                                           : say(kRightHandedCross));
       n = cross_normal_with_steps({g.points[0], g.points[1], g.points[2]}, *g.order, "A", steps);
     } else {
       n = polygon_normal_with_steps(g.points, "points", steps, g.left_handed);

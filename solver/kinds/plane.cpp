@@ -13,6 +13,18 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kIllConditionedPlane{"Ill-conditioned plane", "条件の悪い平面",
+                                      "Плохо обусловленная плоскость"};
+constexpr Phrase kThePlaneSNormal{"the plane's normal", "平面の法線", "нормаль плоскости"};
+
+constexpr Phrase kPlaneNote{"plane = (n, n·p₀), not rescaled; distance = |n̂·p₀|.",
+                            "平面 = (n, n·p₀) (係数は約さない), 距離 = |n̂·p₀|.",
+                            "плоскость = (n, n·p₀) без масштабирования; расстояние = |n̂·p₀|."};
+constexpr Phrase kPlaneThroughP0{"Plane through p₀ with normal n", "p₀ を通り法線 n の平面",
+                                 "Плоскость через p₀ с нормалью n"};
+constexpr Phrase kDistanceFromOrigin{"Distance from the origin", "原点からの距離",
+                                     "Расстояние от начала координат"};
+
 std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points,
                                              const Vec3<Exact>& point, const Vec3<Exact>& normal,
                                              Precision p) {
@@ -55,8 +67,8 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points,
       else
         out.scalar("distance", o.distance);
       if (!o.n.exact_value)
-        warn_condition(out, p, kappa, "Ill-conditioned plane", "the plane's normal");
-      out.note("plane = (n, n·p₀), not rescaled; distance = |n̂·p₀|");
+        warn_condition(out, p, kappa, say(kIllConditionedPlane), say(kThePlaneSNormal));
+      out.note(say(kPlaneNote));
       return out.take();
     };
     In in;
@@ -173,7 +185,7 @@ struct Plane {
     const Value pv = plane_answer(paper_plane(n, d));
     out.set("plane", pv);
     if (steps) {
-      steps->add("Plane through p₀ with normal n",
+      steps->add(say(kPlaneThroughP0),
                  math("n·(p − p₀) = 0  ⇔  n·p = n·p₀",
                       "\\mathbf{n}\\cdot(\\mathbf{p} - \\mathbf{p}_0) = 0 \\iff "
                       "\\mathbf{n}\\cdot\\mathbf{p} = \\mathbf{n}\\cdot\\mathbf{p}_0"),
@@ -183,7 +195,7 @@ struct Plane {
     const Exact dist = canonical((exact_sign(d) < 0 ? Exact(-d) : d) / len);
     out.set("distance", Value::scalar(dist));
     if (steps) {
-      steps->add("Distance from the origin",
+      steps->add(say(kDistanceFromOrigin),
                  math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
                  math("dist = |", "\\text{dist} = \\frac{\\lvert ") + exact(d) +
                      math("| / ", " \\rvert}{") + exact(len) + math("", "}"),

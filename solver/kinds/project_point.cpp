@@ -24,6 +24,90 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kPointInEyePlane{"The point is in the eye's plane", "点は視点を通る平面上にある",
+                                  "Точка в плоскости глаза"};
+constexpr Phrase kPointBehindEye{"The point is behind the eye", "点は視点の後ろにある",
+                                 "Точка позади глаза"};
+constexpr Phrase kNoNdcOrWindowPosition{"w_c ≤ 0: no NDC or window position.",
+                                        "w_c ≤ 0: NDC もウィンドウ上の位置もない.",
+                                        "w_c ≤ 0: нет ни NDC, ни положения в окне."};
+constexpr Phrase kWcPositiveAndInside{"w_c > 0 and inside", "w_c > 0 と内側かどうか",
+                                      "w_c > 0 и «внутри»"};
+constexpr Phrase kPointCloseToEyePlane{"Point close to the eye's plane", "点が視点を通る平面に近い",
+                                       "Точка близко к плоскости глаза"};
+constexpr Phrase kWcAndNdcDividedByIt{"w_c (and the NDC divided by it)",
+                                      "w_c (と, それで割った NDC)",
+                                      "w_c (и NDC, делённые на него)"};
+constexpr Phrase kModelMatrix{"Model matrix (first step applied first)",
+                              "モデル変換行列 (最初のステップを最初に適用)",
+                              "Матрица модели (первый шаг применяется первым)"};
+constexpr Phrase kWcAndNdcIllConditioned{
+    "w_c, and the NDC divided by it, is ill-conditioned ({0}).",
+    "w_c と, それで割った NDC は条件が悪い ({0}).",
+    "w_c и NDC, делённые на него, плохо обусловлены ({0})."};
+constexpr Phrase kModelToWorld{"Model to world coordinates", "モデル座標からワールド座標へ",
+                               "Из локальных координат в мировые"};
+constexpr Phrase kModelToView{"Model to view coordinates", "モデル座標から視点座標へ",
+                              "Из локальных координат в координаты вида"};
+constexpr Phrase kWorldToView{"World to view coordinates", "ワールド座標から視点座標へ",
+                              "Из мировых координат в координаты вида"};
+constexpr Phrase kRightHandedReading{"The right-handed reading", "右手系で読むと",
+                                     "Прочтение в правой системе"};
+constexpr Phrase kReadInRightHanded{
+    "Read in right-handed coordinates (gluLookAt and the right-handed projection on the same "
+    "numbers), the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' x "
+    "changes sign between V and P, so for a view volume symmetric in x (l = −r) the picture is "
+    "mirrored left to right.",
+    "右手系で読むと (同じ数値に gluLookAt と右手系の投影を使うと), 連鎖は代わりに P_right·diag(−1, "
+    "1, 1, 1)·V_right になる: V と P の間で視点座標の x の符号が変わるので, x について対称な視体積 "
+    "(l = −r) では画像が左右反転する.",
+    "В правой системе координат (gluLookAt и проекция правой системы на тех же числах) цепочка "
+    "вместо этого равна P_right·diag(−1, 1, 1, 1)·V_right: координата x вида меняет знак между V и "
+    "P, поэтому для видимого объёма, симметричного по x (l = −r), изображение зеркально отражается "
+    "слева направо."};
+constexpr Phrase kClipCoordinates{"Clip coordinates", "クリップ座標", "Координаты отсечения"};
+constexpr Phrase kWholeChainAtOnce{"The whole chain at once", "変換の合成を一度に",
+                                   "Вся цепочка сразу"};
+constexpr Phrase kProductComputedOnce{
+    "The product of the matrices is computed once and applies to every vertex of the object; it "
+    "gives the same clip coordinates as the steps one by one.",
+    "行列の積は一度だけ計算すれば物体のすべての頂点に使える. "
+    "一段ずつ変換した場合と同じクリップ座標になる.",
+    "Произведение матриц вычисляется один раз и применяется ко всем вершинам объекта; оно даёт те "
+    "же координаты отсечения, что и пошаговое преобразование."};
+constexpr Phrase kDepthPrecision{"Depth precision", "奥行きの精度", "Точность глубины"};
+constexpr Phrase kFarNearDepthBuffer{
+    "far/near = {0}: a float depth buffer in [0, 1] separates surfaces at this distance only when "
+    "they are more than Δz ≈ {1} apart (Δz ≈ 2⁻²⁴(f − n)z²/(f·n); a reversed-Z depth buffer keeps "
+    "far more).",
+    "far/near = {0}: [0, 1] の float の奥行きバッファがこの距離で面を区別できるのは, 面が Δz ≈ {1} "
+    "より離れているときだけ (Δz ≈ 2⁻²⁴(f − n)z²/(f·n). 逆 Z "
+    "の奥行きバッファならはるかに多くの精度が残る).",
+    "far/near = {0}: float-буфер глубины в [0, 1] различает поверхности на этом расстоянии, только "
+    "если они отстоят больше чем на Δz ≈ {1} (Δz ≈ 2⁻²⁴(f − n)z²/(f·n); обратный Z-буфер сохраняет "
+    "гораздо больше)."};
+constexpr Phrase kWcZeroCannotDivide{
+    "w_c = 0: dividing by w would send the point to infinity or mirror it in front of the eye, so "
+    "it has no NDC or window position; clipping removes it before the divide.",
+    "w_c = 0: w で割ると点は無限遠に飛ぶか視点の前に鏡映されるので, "
+    "正規化座標もウィンドウ上の位置もない. 除算の前にクリッピングで除かれる.",
+    "w_c = 0: деление на w отправило бы точку в бесконечность или отразило бы её перед глазом, "
+    "поэтому у неё нет положения в NDC и в окне; отсечение удаляет её до деления."};
+constexpr Phrase kWcNegativeCannotDivide{
+    "w_c < 0: dividing by w would send the point to infinity or mirror it in front of the eye, so "
+    "it has no NDC or window position; clipping removes it before the divide.",
+    "w_c < 0: w で割ると点は無限遠に飛ぶか視点の前に鏡映されるので, "
+    "正規化座標もウィンドウ上の位置もない. 除算の前にクリッピングで除かれる.",
+    "w_c < 0: деление на w отправило бы точку в бесконечность или отразило бы её перед глазом, "
+    "поэтому у неё нет положения в NDC и в окне; отсечение удаляет её до деления."};
+constexpr Phrase kPerspectiveDivide{"Perspective divide", "透視除算", "Перспективное деление"};
+constexpr Phrase kInsideViewVolume{"Inside the view volume?", "視体積の内側か?",
+                                   "Внутри видимого объёма?"};
+constexpr Phrase kYesPointVisible{"yes: the point is visible", "はい: 点は見える",
+                                  "да: точка видна"};
+constexpr Phrase kNoClippingRemovesIt{"no: clipping removes it", "いいえ: クリッピングで除かれる",
+                                      "нет: отсечение удаляет её"};
+
 // The inputs of project_point in scalar S (T, Ranged<T> for the decisions, Exact for their
 // fallback), and clip = P·V·M·p from them: one formula for all three.
 template <typename S>
@@ -186,18 +270,18 @@ std::unique_ptr<NumericSolver> project_point_numeric(
       } else {
         out.null("ndc");
         out.null("window");
-        out.warn(o.w_sign == 0 ? "The point is in the eye's plane" : "The point is behind the eye",
-                 "w_c ≤ 0: no NDC or window position.");
+        out.warn(o.w_sign == 0 ? say(kPointInEyePlane) : say(kPointBehindEye),
+                 say(kNoNdcOrWindowPosition));
       }
       out.boolean("inside", o.inside);
-      if (o.exact_decided) out.exact_decision("w_c > 0 and inside");
+      if (o.exact_decided) out.exact_decision(say(kWcPositiveAndInside));
       Eigen::Vector4d row, h;
       for (int i = 0; i < 4; ++i) {
         row(i) = static_cast<double>(to_long_double(o.row3(i)));
         h(i) = static_cast<double>(to_long_double(o.homogeneous(i)));
       }
-      warn_condition(out, p, w_condition(row, h), "Point close to the eye's plane",
-                     "w_c (and the NDC divided by it)");
+      warn_condition(out, p, w_condition(row, h), say(kPointCloseToEyePlane),
+                     say(kWcAndNdcDividedByIt));
       return out.take();
     };
     In in{{}, {}, exact, from_exact<T>(width), from_exact<T>(height), {}};
@@ -336,16 +420,14 @@ struct ProjectPoint {
       product_latex = g.model.empty() ? "V P" : (g.camera ? "M V P" : "M P");
     }
     steps
-        ->add("The whole chain at once",
+        ->add(say(kWholeChainAtOnce),
               rows ? math("v′ = v·(" + product + ")",
                           "\\mathbf{v}' = \\mathbf{v}\\,(" + product_latex + ")")
                    : math("v′ = (" + product + ")·v",
                           "\\mathbf{v}' = (" + product_latex + ")\\,\\mathbf{v}"),
               math(product + " = ", product_latex + " = ") + matrix_text(paper_form(pvm, g.api)),
               math("v′ = ", "\\mathbf{v}' = ") + vec(clip, true))
-        .note =
-        "The product of the matrices is computed once and applies to every vertex of the object; "
-        "it gives the same clip coordinates as the steps one by one.";
+        .note = say(kProductComputedOnce);
   }
 
   static std::unique_ptr<NumericSolver> solve_numeric(const Given& g, Precision p) {
@@ -356,7 +438,7 @@ struct ProjectPoint {
   // M = Aₙ·…·A₁ of the model's steps (column form), or nothing without a model.
   static std::optional<MatX<Exact>> model_matrix(const std::vector<TransformStep>& model) {
     if (model.empty()) return std::nullopt;
-    return compose_with_steps(model, 3, Api::OpenGL, "M", "", nullptr);
+    return compose_with_steps(model, 3, Api::OpenGL, "M", kModelMatrix, nullptr);
   }
 
   static Vec3<Exact> moved(const MatX<Exact>& m, const Vec3<Exact>& p) {
@@ -370,13 +452,12 @@ struct ProjectPoint {
     MatX<Exact> model = MatX<Exact>::Identity(4, 4), view = MatX<Exact>::Identity(4, 4);
     if (!g.model.empty()) {
       // Seed 004: the model matrix places the object (M = M_parent·M_object).
-      model = compose_with_steps(g.model, 3, g.api, "M", "Model matrix (first step applied first)",
-                                 steps);
+      model = compose_with_steps(g.model, 3, g.api, "M", kModelMatrix, steps);
       p = moved(model, p);
       if (steps) {
         const std::string to = g.camera ? "world" : "view";
         steps->add(
-            g.camera ? "Model to world coordinates" : "Model to view coordinates",
+            g.camera ? say(kModelToWorld) : say(kModelToView),
             rows ? math("p_" + to + " = v·M", "\\mathbf{p}_{\\text{" + to + "}} = \\mathbf{v} M")
                  : math("p_" + to + " = M·v", "\\mathbf{p}_{\\text{" + to + "}} = M \\mathbf{v}"),
             math("v = ", "\\mathbf{v} = ") + vec(g.point),
@@ -388,7 +469,7 @@ struct ProjectPoint {
       view = look_at_with_steps(eye, center, up, g.api, "camera.", steps, g.left_handed);
       p = moved(view, p);
       if (steps)
-        steps->add("World to view coordinates",
+        steps->add(say(kWorldToView),
                    math("p_view = V·p_world",
                         "\\mathbf{p}_{\\text{view}} = V \\mathbf{p}_{\\text{world}}"),
                    {}, math("p_view = ", "\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
@@ -396,14 +477,7 @@ struct ProjectPoint {
     // The lecture's names: P projects, V views, M places (v′ = (P·V·M)·v).
     const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps, "P");
     if (steps && g.left_handed && g.camera)
-      steps->note(
-          "The right-handed reading",
-          "Read in right-handed coordinates (gluLookAt and the right-handed projection on the same "
-          "numbers), the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' "
-          "x "
-          "changes sign between V and P, so for a view volume symmetric in x (l = −r) the picture "
-          "is "
-          "mirrored left to right.");
+      steps->note(say(kRightHandedReading), say(kReadInRightHanded));
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> h(4);
     h << p(0), p(1), p(2), Exact(1);
     Eigen::Matrix<Exact, Eigen::Dynamic, 1> clip = m * h;
@@ -412,7 +486,7 @@ struct ProjectPoint {
     const std::vector<Exact> clip_v(clip.data(), clip.data() + 4);
     out.set("clip", Value::vector(clip_v));
     if (steps) {
-      steps->add("Clip coordinates",
+      steps->add(say(kClipCoordinates),
                  g.api == Api::DirectX
                      ? math("clip = p·P", "(x_c, y_c, z_c, w_c) = (x, y, z, 1)\\, P")
                      : math("clip = P·p",
@@ -434,17 +508,13 @@ struct ProjectPoint {
       Eigen::Vector4d row, ph;
       for (int j = 0; j < 4; ++j) row(j) = to_double(m(3, j));
       ph << to_double(p(0)), to_double(p(1)), to_double(p(2)), 1.0;
-      warn_condition(steps, w_condition(row, ph), "Point close to the eye's plane",
-                     "w_c, and the NDC divided by it,");
+      warn_condition(steps, w_condition(row, ph), say(kPointCloseToEyePlane),
+                     kWcAndNdcIllConditioned);
       const double n = to_double(g.projection.volume.near), f = to_double(g.projection.volume.far);
       if (g.projection.type != ProjectionSpec::Type::Ortho && f / n >= kDepthRatioNote)
-        steps->note(
-            "Depth precision",
-            fmt::format("far/near = {:.0e}: a float depth buffer in [0, 1] separates surfaces at "
-                        "this distance only when they are more than Δz ≈ {} apart (Δz ≈ 2⁻²⁴(f − "
-                        "n)z²/(f·n); "
-                        "a reversed-Z depth buffer keeps far more).",
-                        f / n, format_approx(float_depth_resolution(n, f, to_double(w)))));
+        steps->note(say(kDepthPrecision),
+                    say(kFarNearDepthBuffer, fmt::format("{:.0e}", f / n),
+                        format_approx(float_depth_resolution(n, f, to_double(w)))));
     }
     // Inside the view volume: w > 0 and every plane test ≥ 0.
     const bool inside = inside_volume(sign);
@@ -452,11 +522,8 @@ struct ProjectPoint {
       out.set("ndc", Value::null());
       out.set("window", Value::null());
       if (steps)
-        steps->warn(w_sign == 0 ? "The point is in the eye's plane" : "The point is behind the eye",
-                    "w_c " + std::string(w_sign == 0 ? "= 0" : "< 0") +
-                        ": dividing by w would send the point to infinity or mirror it in front "
-                        "of the eye, so it has no NDC or window position; clipping removes it "
-                        "before the divide.");
+        steps->warn(w_sign == 0 ? say(kPointInEyePlane) : say(kPointBehindEye),
+                    w_sign == 0 ? say(kWcZeroCannotDivide) : say(kWcNegativeCannotDivide));
     } else {
       const Vec3<Exact> ndc(canonical(clip(0) / w), canonical(clip(1) / w), canonical(clip(2) / w));
       out.set("ndc", Value::vector(ndc));
@@ -465,7 +532,7 @@ struct ProjectPoint {
       out.set("window", Value::vector(window));
       if (steps) {
         steps->add(
-            "Perspective divide",
+            say(kPerspectiveDivide),
             math("ndc = (x_c, y_c, z_c) / w_c", "\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"), {},
             math("ndc = ", "\\text{ndc} = ") + vec(ndc, true));
         steps->yields("ndc");
@@ -474,13 +541,13 @@ struct ProjectPoint {
     }
     out.set("inside", Value::boolean(inside));
     if (steps) {
-      steps->add("Inside the view volume?",
+      steps->add(say(kInsideViewVolume),
                  g.api == Api::DirectX
                      ? math("−w_c ≤ x_c, y_c ≤ w_c,  0 ≤ z_c ≤ w_c,  w_c > 0",
                             "-w_c \\le x_c, y_c \\le w_c,\\; 0 \\le z_c \\le w_c,\\; w_c > 0")
                      : math("−w_c ≤ x_c, y_c, z_c ≤ w_c,  w_c > 0",
                             "-w_c \\le x_c, y_c, z_c \\le w_c,\\; w_c > 0"),
-                 {}, word(inside ? "yes: the point is visible" : "no: clipping removes it"));
+                 {}, word(inside ? say(kYesPointVisible) : say(kNoClippingRemovesIt)));
       steps->yields("inside");
     }
     return out;

@@ -14,6 +14,36 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kDistanceOfProjectionPlane{"Distance of the projection plane", "投影面までの距離",
+                                            "Расстояние до плоскости проекции"};
+constexpr Phrase kPlaneFillsFieldOfView{
+    "The plane on which the window's height exactly fills the vertical field of view; Processing "
+    "puts its default camera at this distance.",
+    "ウィンドウの高さがちょうど垂直方向の画角を満たす平面. Processing "
+    "は既定のカメラをこの距離に置く.",
+    "Плоскость, на которой высота окна в точности заполняет вертикальный угол обзора; Processing "
+    "ставит камеру по умолчанию на этом расстоянии."};
+constexpr Phrase kEyeSpaceLooksDownMinusZ{
+    "Eye space looks down −z, so the plane is at negative z.",
+    "視点座標系は −z 方向を見るので, この平面は負の z にある.",
+    "Пространство вида смотрит вдоль −z, поэтому плоскость лежит при отрицательном z."};
+constexpr Phrase kDirectXLooksDownPlusZ{"DirectX's eye space looks down +z.",
+                                        "DirectX の視点座標系は +z 方向を見る.",
+                                        "В DirectX пространство вида смотрит вдоль +z."};
+constexpr Phrase kLeftHandedPlaneAtPositiveZ{
+    "The course's left-handed eye space looks down +z, so the plane is at positive z.",
+    "この講義の左手系の視点座標系は +z 方向を見るので, この平面は正の z にある.",
+    "В левой системе координат курса пространство вида смотрит вдоль +z, поэтому плоскость лежит "
+    "при положительном z."};
+constexpr Phrase kReadRightHandedPlane{
+    "Read right-handed (looking down −z), the same picture has the plane at z = −s and every "
+    "point's z negated: x′ and y′ are the same in both readings.",
+    "右手系 (−z 方向を見る) で読むと, 同じ像で平面は z = −s にあり, 各点の z の符号が反転する: x′ "
+    "と y′ はどちらで読んでも同じである.",
+    "В правой системе (взгляд вдоль −z) та же картина даёт плоскость z = −s и противоположный знак "
+    "z у каждой точки: x′ и y′ в обоих прочтениях одинаковы."};
+constexpr Phrase kSimilarTriangles{"Similar triangles", "相似な三角形", "Подобные треугольники"};
+
 // +1 when eye space looks down +z (left-handed: DirectX, or a course that declares it), else −1.
 int looking_down(const Conventions& c) { return handedness_of(c) == Handedness::Left ? 1 : -1; }
 
@@ -72,7 +102,7 @@ struct ProjectionPlane {
     out.set("plane_z", Value::scalar(s));
     if (steps) {
       steps
-          ->add("Distance of the projection plane",
+          ->add(say(kDistanceOfProjectionPlane),
                 math(std::string(toward < 0 ? "s = −" : "s = ") + "(height/2) / tan(fov/2)",
                      std::string(toward < 0 ? "s = -" : "s = ") +
                          "\\frac{\\text{height}/2}{\\tan(\\text{fov}/2)}"),
@@ -80,16 +110,11 @@ struct ProjectionPlane {
                     math(",  fov = ", ",\\; \\text{fov} = ") +
                     angle_text(g.fov, g.conventions.angles),
                 math("s = ") + exact(s, true))
-          .note =
-          "The plane on which the window's height exactly fills the vertical field of view; "
-          "Processing puts its default camera at this distance. " +
-          std::string(toward < 0 ? "Eye space looks down −z, so the plane is at negative z."
-                      : g.conventions.api == Api::DirectX
-                          ? "DirectX's eye space looks down +z."
-                          : "The course's left-handed eye space looks down +z, so the plane is "
-                            "at positive z. Read right-handed (looking down −z), the same "
-                            "picture has the plane at z = −s and every point's z negated: x′ and "
-                            "y′ are the same in both readings.");
+          .note = say(kPlaneFillsFieldOfView) +
+                  (toward < 0 ? say(kEyeSpaceLooksDownMinusZ)
+                   : g.conventions.api == Api::DirectX
+                       ? say(kDirectXLooksDownPlusZ)
+                       : say(kLeftHandedPlaneAtPositiveZ) + say(kReadRightHandedPlane));
       steps->yields("plane_z");
     }
     const int z_sign = exact_sign(g.point(2));
@@ -102,7 +127,7 @@ struct ProjectionPlane {
     const Vec3<Exact> p(canonical(g.point(0) * k), canonical(g.point(1) * k), s);
     out.set("projected", Value::vector(p));
     if (steps) {
-      steps->add("Similar triangles", math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
+      steps->add(say(kSimilarTriangles), math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
                  math("P′ = ", "P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") +
                      exact(s) + math(") / (", "}{") + exact(g.point(2)) + math(")", "}"),
                  math("P′ = ", "P' = ") + vec(p, true));

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -16,6 +17,102 @@
 namespace frustum {
 
 namespace {
+
+// The conventions and the geometry.
+constexpr Phrase kConventionsAndModel{"Conventions and model", "規約とモデル",
+                                      "Соглашения и модель"};
+constexpr Phrase kPixelYDown{
+    "Pixel (i, j) is counted in the y-down window (row 0 at the top) and has its centre at (i + ½, "
+    "j + ½).",
+    "画素 (i, j) は y が下向きのウィンドウで数え (0 行目が上), 中心は (i + ½, j + ½).",
+    "Пиксель (i, j) отсчитывается в окне с осью y вниз (строка 0 сверху), его центр — в (i + ½, j "
+    "+ ½)."};
+constexpr Phrase kPixelYUp{
+    "Pixel (i, j) is counted in the y-up window (row 0 at the bottom) and has its centre at (i + "
+    "½, j + ½).",
+    "画素 (i, j) は y が上向きのウィンドウで数え (0 行目が下), 中心は (i + ½, j + ½).",
+    "Пиксель (i, j) отсчитывается в окне с осью y вверх (строка 0 снизу), его центр — в (i + ½, j "
+    "+ ½)."};
+constexpr Phrase kTrianglesClipped{
+    "Triangles are clipped in homogeneous clip space, divided by w, mapped by the viewport, "
+    "snapped to 1/256 pixel and covered under the top-left rule; depth is window z in [0, 1], "
+    "interpolated as the plane through the snapped vertices (z/w is affine in screen space) and "
+    "stored as a 32-bit float.",
+    "三角形は同次クリップ空間でクリップし, w で割り, ビューポート変換で写し, 1/256 画素に丸め, "
+    "左上規則で被覆を決める. 奥行きは [0, 1] のウィンドウ z で, 丸めた頂点を通る平面として補間し "
+    "(z/w は画面空間でアフィン), 32 ビット float で格納する.",
+    "Треугольники отсекаются в однородном пространстве отсечения, делятся на w, отображаются в "
+    "область просмотра, привязываются к 1/256 пикселя и покрываются по правилу «верх-лево»; "
+    "глубина — z окна в [0, 1], интерполируется как плоскость через привязанные вершины (z/w "
+    "аффинно в экранном пространстве) и хранится как 32-битный float."};
+constexpr Phrase kDepthBufferStarts{
+    "The depth buffer starts at 1 (far) and a fragment is written when its depth is less than the "
+    "stored one (equal keeps the earlier).",
+    "奥行きバッファは 1 (遠方) で始まり, 断片は奥行きが格納値より小さいときに書き込まれる "
+    "(等しければ先のまま).",
+    "Буфер глубины начинается с 1 (далеко), фрагмент записывается, если его глубина меньше "
+    "сохранённой (при равенстве остаётся прежний)."};
+constexpr Phrase kEveryDecisionExact{
+    "Every decision (clipping, facing, snapping, the depth test) is exact: taken on the computed "
+    "values when their error bound proves it, else by exact arithmetic on the given numbers.",
+    "判定 (クリッピング, 表裏, スナップ, 奥行き比較) はすべて厳密: "
+    "計算値の誤差限界が判定を保証するときは計算値で, "
+    "そうでなければ与えられた数での厳密な計算で決める.",
+    "Каждое решение (отсечение, ориентация, привязка к сетке, тест глубины) точное: принимается по "
+    "вычисленным значениям, когда их оценка погрешности его гарантирует, иначе точной арифметикой "
+    "над заданными числами."};
+constexpr Phrase kLighting{
+    "Lighting as Processing's lights(): ambient {0} + directional {1} travelling along {2}, flat "
+    "and two-sided.",
+    "照明は Processing の lights() と同じ: 環境光 {0} + 方向 {2} に進む平行光 {1}, "
+    "フラットシェーディング, 両面.",
+    "Освещение как lights() в Processing: фоновое {0} + направленное {1} вдоль {2}, плоское, "
+    "двустороннее."};
+constexpr Phrase kNoLight{"No light: each triangle has its fill colour.",
+                          "照明なし: 各三角形は塗りつぶし色のまま.",
+                          "Без освещения: у каждого треугольника свой цвет заливки."};
+constexpr Phrase kGeometry{"Geometry: model → world → clip → window",
+                           "幾何: モデル → ワールド → クリップ → ウィンドウ",
+                           "Геометрия: модель → мир → отсечение → окно"};
+constexpr Phrase kObjects{"{0} objects.", "物体 {0} 個.", "Объектов: {0}."};
+constexpr Phrase kOnlyQueriedPixels{
+    "Only the queried pixels are resolved: a triangle competes for a pixel when its screen bounds "
+    "hold the pixel centre; no {0} frame is allocated.",
+    "問われた画素だけを求める: 画面上の範囲が画素中心を含む三角形がその画素を争う. {0} "
+    "のフレームは確保しない.",
+    "Вычисляются только запрошенные пиксели: треугольник претендует на пиксель, если его экранные "
+    "границы содержат центр пикселя; кадр {0} не выделяется."};
+constexpr Phrase kExactGeometry{
+    "Exact arithmetic on the given numbers decided the clipping, facing or snapping of {0} "
+    "triangle(s) that rounding could not settle.",
+    "丸め誤差で決まらなかった三角形 {0} 個のクリッピング, 表裏またはスナップは, "
+    "与えられた数での厳密な計算で決めた.",
+    "Отсечение, ориентацию или привязку к сетке для треугольников ({0}), которые округление не "
+    "позволяло определить, решила точная арифметика над заданными числами."};
+// A pixel's z-buffer trace.
+constexpr Phrase kPixelAt{"Pixel {0}", "画素 {0}", "Пиксель {0}"};
+constexpr Phrase kCleared{"cleared", "初期化済み", "очищено"};
+constexpr Phrase kColour{"colour", "色", "цвет"};
+constexpr Phrase kTraceHeader{
+    "Z-buffer trace, drawing order ({0} competitor(s)):", "Z バッファの経過, 描画順 (候補 {0} 個):",
+    "Трассировка Z-буфера в порядке рисования (претендентов: {0}):"};
+constexpr Phrase kTraceWritten{
+    "{0}. triangle {1} ({2} face {3}, {4}): z = {5} → written, colour {6}",
+    "{0}. 三角形 {1} (`{2}` の面 {3}, {4}): z = {5} → 書き込む, 色 {6}",
+    "{0}. треугольник {1} (`{2}`, грань {3}, {4}): z = {5} → записан, цвет {6}"};
+constexpr Phrase kTraceHidden{"{0}. triangle {1} ({2} face {3}, {4}): z = {5} → hidden",
+                              "{0}. 三角形 {1} (`{2}` の面 {3}, {4}): z = {5} → 隠れる",
+                              "{0}. треугольник {1} (`{2}`, грань {3}, {4}): z = {5} → скрыт"};
+constexpr Phrase kMoreCompetitors{"… {0} more", "… 他 {0} 個", "… ещё {0}"};
+constexpr Phrase kNoTriangleCovers{"No triangle covers this pixel centre.",
+                                   "この画素中心を覆う三角形はない.",
+                                   "Ни один треугольник не покрывает центр этого пикселя."};
+constexpr Phrase kDepthTestExact{
+    "The depth test was decided by exact arithmetic on the given numbers (the computed depths were "
+    "within rounding of each other).",
+    "奥行き比較は与えられた数での厳密な計算で決めた (計算した奥行きの差が丸め誤差の範囲内だった).",
+    "Тест глубины решён точной арифметикой над заданными числами (вычисленные глубины совпадали в "
+    "пределах округления)."};
 
 struct Render {
   static constexpr const char* kName = "render";
@@ -108,31 +205,14 @@ struct Render {
     const Api api = scene.api;
     if (steps) {
       steps->note(
-          "Conventions and model",
-          std::string("Pixel (i, j) is counted in the ") +
-              (window_y_down(api) ? "y-down window (row 0 at the top)"
-                                  : "y-up window (row 0 at the bottom)") +
-              " and has its centre at (i + ½, j + ½). Triangles are clipped in homogeneous clip "
-              "space, divided "
-              "by w, mapped by the viewport, snapped to 1/256 pixel and covered under the top-left "
-              "rule; depth "
-              "is window z in [0, 1], interpolated as the plane through the snapped vertices (z/w "
-              "is affine "
-              "in screen space) and stored as a 32-bit float. The depth buffer starts at 1 (far) "
-              "and a "
-              "fragment is written when its depth is less than the stored one (equal keeps the "
-              "earlier). "
-              "Every decision (clipping, facing, snapping, the depth test) is exact: taken on the "
-              "computed "
-              "values when their error bound proves it, else by exact arithmetic on the given "
-              "numbers. " +
-              (scene.light
-                   ? fmt::format("Lighting as Processing's lights(): ambient {} + directional {} "
-                                 "travelling along ({:.4g}, {:.4g}, {:.4g}), flat and two-sided.",
-                                 scene.light->ambient, scene.light->diffuse,
-                                 scene.light->direction(0), scene.light->direction(1),
-                                 scene.light->direction(2))
-                   : std::string("No light: each triangle has its fill colour.")));
+          say(kConventionsAndModel),
+          say(window_y_down(api) ? kPixelYDown : kPixelYUp) + say(kTrianglesClipped) +
+              say(kDepthBufferStarts) + say(kEveryDecisionExact) +
+              (scene.light ? say(kLighting, fmt::format("{}", scene.light->ambient),
+                                 fmt::format("{}", scene.light->diffuse),
+                                 fmt::format("({:.4g}, {:.4g}, {:.4g})", scene.light->direction(0),
+                                             scene.light->direction(1), scene.light->direction(2)))
+                           : say(kNoLight)));
     }
     // The exact projection · camera, for the decisions the computed values cannot settle.
     const FlatScene flat = flatten(scene);
@@ -140,21 +220,15 @@ struct Render {
     const GeometryStats& gs = cs.stats;
     if (steps) {
       Step& geometry =
-          steps->add("Geometry: model → world → clip → window", {}, {},
+          steps->add(say(kGeometry), {}, {},
                      counts({{gs.triangles, "triangles"}}) + math(": ", "\\colon ") +
                          counts({{gs.outside, "outside the view volume"},
                                  {gs.clipped, "clipped"},
                                  {gs.culled, "back faces culled"}}) +
                          math(" → ", " \\to ") + counts({{gs.window, "window triangles"}}));
-      geometry.note = fmt::format(
-          "{} objects. Only the queried pixels are resolved: a triangle competes for a pixel when "
-          "its screen bounds hold the pixel centre; no {} × {} frame is allocated.",
-          flat.objects.size(), scene.width, scene.height);
-      if (cs.exact_geometry > 0)
-        geometry.note += fmt::format(
-            " Exact arithmetic on the given numbers decided the clipping, facing or snapping "
-            "of {} triangle(s) that rounding could not settle.",
-            cs.exact_geometry);
+      geometry.note = say(kObjects, flat.objects.size()) +
+                      say(kOnlyQueriedPixels, fmt::format("{} × {}", scene.width, scene.height));
+      if (cs.exact_geometry > 0) geometry.note += say(kExactGeometry, cs.exact_geometry);
     }
     Value pixels, color_rows, depth;
     pixels.shape = Value::Shape::Matrix;
@@ -180,43 +254,45 @@ struct Render {
       depths.push_back(t.depth);
       objects.push_back(winner);
       if (!steps) continue;
-      std::string trace;
+      // Each line of the trace under the note's first line.
+      const Said indent = Said::verbatim(kIndent);
+      Said trace = say(kTraceHeader, t.competitors.size());
       float stored = kDepthClear;
       for (std::size_t k = 0; k < t.competitors.size(); ++k) {
         const Competitor& c = t.competitors[k];
         if (k == kMaxTraceLines) {
-          trace += fmt::format("{}… {} more", kIndent, t.competitors.size() - k);
+          trace.append(indent).append(say(kMoreCompetitors, t.competitors.size() - k));
           break;
         }
         const CertifiedPiece& w = cs.pieces[static_cast<std::size_t>(c.triangle)];
         const WorldTriangle& src = flat.triangles[static_cast<std::size_t>(w.source)];
-        trace += fmt::format("{}{}. triangle {} ({} face {}, {}): z = {} {} Z = {} → {}", kIndent,
-                             k + 1, w.source, flat.objects[static_cast<std::size_t>(src.object)],
-                             src.face, w.front ? "front" : "back", depth_text(c.depth),
-                             c.passed ? "<" : "≥", depth_text(stored),
-                             c.passed ? "written, colour " + color_text(w.color) : "hidden");
+        const std::string z = fmt::format("{} {} Z = {}", depth_text(c.depth), c.passed ? "<" : "≥",
+                                          depth_text(stored));
+        const std::string& object = flat.objects[static_cast<std::size_t>(src.object)];
+        const Phrase& side = w.front ? words::kFront : words::kBack;
+        trace.append(indent).append(
+            c.passed ? say(kTraceWritten, k + 1, w.source, object, src.face, side, z,
+                           color_text(w.color))
+                     : say(kTraceHidden, k + 1, w.source, object, src.face, side, z));
         if (c.passed) stored = c.depth;
       }
-      if (t.competitors.empty())
-        trace = std::string(kIndent) + "No triangle covers this pixel centre.";
+      if (t.competitors.empty()) trace.append(indent).append(say(kNoTriangleCovers));
+      if (exact_depths) trace.append(indent).append(say(kDepthTestExact));
+      // The winner is an object's name, as the scene gives it, or the background.
+      const MathText winner_word =
+          t.winner < 0 ? word(words::kBackground) : word(Said::verbatim(winner));
       Step& s = steps->add(
-          fmt::format("Pixel ({}, {})", q[0], q[1]),
-          math("Z = 1 (", "Z = 1\\ (") + word("cleared") + math("),  F = ", "),\\; F = ") +
-              word("background") +
+          say(kPixelAt, fmt::format("({}, {})", q[0], q[1])),
+          math("Z = 1 (", "Z = 1\\ (") + word(kCleared) + math("),  F = ", "),\\; F = ") +
+              word(words::kBackground) +
               math(" " + color_text(scene.background), "\\ " + color_text(scene.background)),
           {},
-          word("colour") +
+          word(kColour) +
               math(" " + color_text(t.color) + ", ", "\\ " + color_text(t.color) + ",\\; ") +
-              word("depth") +
+              word(words::kDepth) +
               math(" " + depth_text(t.depth) + "  (", "\\ " + depth_text(t.depth) + "\\quad (") +
-              word(winner) + math(")"));
-      s.note =
-          fmt::format("Z-buffer trace, drawing order ({} competitor(s)):", t.competitors.size()) +
-          trace;
-      if (exact_depths)
-        s.note += std::string(kIndent) +
-                  "The depth test was decided by exact arithmetic on the given numbers (the "
-                  "computed depths were within rounding of each other).";
+              winner_word + math(")"));
+      s.note = trace;
     }
     std::string shown, shown_latex;
     for (int r = 0; r < pixels.rows; ++r) {

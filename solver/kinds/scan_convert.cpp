@@ -4,6 +4,7 @@
 // `pixels` lists [i, j] sorted by j, then i.
 #include <map>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -13,6 +14,70 @@
 namespace frustum {
 
 namespace {
+
+constexpr Phrase kPixelsAndFillRule{"Pixels and the fill rule", "画素と塗りつぶし規則",
+                                    "Пиксели и правило заполнения"};
+constexpr Phrase kWindowYUp{
+    "Window y points up; pixel (i, j) has its centre at (i + ½, j + ½).",
+    "ウィンドウの y は上向き. 画素 (i, j) の中心は (i + ½, j + ½).",
+    "Ось y окна направлена вверх; центр пикселя (i, j) — в (i + ½, j + ½)."};
+constexpr Phrase kVerticesSnapped{
+    "Vertices are snapped to 1/256 pixel and the edge functions are evaluated exactly.",
+    "頂点は 1/256 画素に丸め, エッジ関数は厳密に評価する.",
+    "Вершины привязываются к 1/256 пикселя, функции рёбер вычисляются точно."};
+constexpr Phrase kTopLeftRule{
+    "Top-left rule: a centre exactly on an edge is covered only when the edge is a top edge "
+    "(horizontal, interior below) or a left edge (interior to its right); on a bottom or right "
+    "edge it is not.",
+    "左上規則: ちょうど辺上にある中心が覆われるのは, その辺が上辺 (水平で内部が下) か左辺 "
+    "(内部が右) のときだけで, 下辺や右辺では覆われない.",
+    "Правило «верх-лево»: центр ровно на ребре покрыт, только если ребро верхнее (горизонтальное, "
+    "внутренность ниже) или левое (внутренность справа); на нижнем или правом ребре — нет."};
+constexpr Phrase kSnappedToGrid{"Vertices snapped to the sub-pixel grid",
+                                "頂点をサブピクセル格子に丸める",
+                                "Вершины привязаны к субпиксельной сетке"};
+constexpr Phrase kNotAMultiple{
+    "Some vertex is not a multiple of 1/256 pixel; it was rounded to the nearest one, as a GPU "
+    "does.",
+    "1/256 画素の倍数でない頂点があるので, GPU と同じく最も近い倍数に丸めた.",
+    "Некоторая вершина не кратна 1/256 пикселя; она округлена до ближайшей, как это делает GPU."};
+constexpr Phrase kOrientation{"Orientation", "向き", "Ориентация"};
+constexpr Phrase kClockwiseScannedAs{
+    "The triangle {0} is clockwise; it is scanned as {1} (counter-clockwise) so the interior has "
+    "E > 0 on every edge.",
+    "三角形 {0} は時計回りなので, {1} (反時計回り) として走査し, 内部がすべての辺で E > 0 "
+    "となるようにする.",
+    "Треугольник {0} обходится по часовой стрелке; он сканируется как {1} (против часовой), чтобы "
+    "внутри E > 0 на каждом ребре."};
+constexpr Phrase kCullsNothing{"Scan conversion culls nothing.", "走査変換では何も除去しない.",
+                               "Растеризация ничего не отбрасывает."};
+constexpr Phrase kDegenerateTriangle{"Degenerate triangle", "退化した三角形",
+                                     "Вырожденный треугольник"};
+constexpr Phrase kCollinear{
+    "The three vertices are collinear (zero area): the triangle covers no pixels.",
+    "3 つの頂点が一直線上にある (面積 0): 三角形はどの画素も覆わない.",
+    "Три вершины лежат на одной прямой (нулевая площадь): треугольник не покрывает ни одного "
+    "пикселя."};
+constexpr Phrase kEdgeFunction{"Edge function {0}", "エッジ関数 {0}", "Функция ребра {0}"};
+constexpr Phrase kTopEdge{"top edge: centres on it are covered", "上辺: その上の画素中心は覆われる",
+                          "верхнее ребро: центры на нём покрыты"};
+constexpr Phrase kLeftEdge{"left edge: centres on it are covered",
+                           "左辺: その上の画素中心は覆われる",
+                           "левое ребро: центры на нём покрыты"};
+constexpr Phrase kBottomOrRightEdge{"bottom or right edge: centres on it are not covered",
+                                    "下辺または右辺: その上の画素中心は覆われない",
+                                    "нижнее или правое ребро: центры на нём не покрыты"};
+constexpr Phrase kBoundingBox{"Bounding box of the pixel centres",
+                              "画素中心のバウンディングボックス",
+                              "Ограничивающий прямоугольник центров пикселей"};
+constexpr Phrase kPixelCovered{
+    "A pixel is covered when E > 0 on all three edges, or E = 0 on an edge that is top or left.",
+    "画素が覆われるのは, 3 辺すべてで E > 0 のとき, または E = 0 となる辺が上辺か左辺のとき.",
+    "Пиксель покрыт, если E > 0 на всех трёх рёбрах или E = 0 на верхнем или левом ребре."};
+constexpr Phrase kCoveredPixelsByRow{"Covered pixels, row by row", "覆われる画素 (行ごと)",
+                                     "Покрытые пиксели, по строкам"};
+constexpr Phrase kPixelsCovered{"{0} pixel(s) covered.", "{0} 個の画素を覆う.",
+                                "Покрыто пикселей: {0}."};
 
 // Fixed-point (1/2⁸ pixel) numbers as exact rationals in pixels.
 Exact pixels_of(std::int64_t v, int power = 1) {
@@ -54,28 +119,15 @@ struct ScanConvert {
     const std::vector<Fragment> frags = rasterize(t);
     const char* names = "ABC";
     if (steps) {
-      steps->note("Pixels and the fill rule",
-                  "Window y points up; pixel (i, j) has its centre at (i + ½, j + ½). Vertices are "
-                  "snapped to 1/256 "
-                  "pixel and the edge functions are evaluated exactly. Top-left rule: a centre "
-                  "exactly on an edge is "
-                  "covered only when the edge is a top edge (horizontal, interior below) or a left "
-                  "edge (interior to "
-                  "its right); on a bottom or right edge it is not.");
-      if (t.snapped)
-        steps->warn("Vertices snapped to the sub-pixel grid",
-                    "Some vertex is not a multiple of 1/256 pixel; it was rounded to the nearest "
-                    "one, as a GPU does.");
+      steps->note(say(kPixelsAndFillRule),
+                  say(kWindowYUp) + say(kVerticesSnapped) + say(kTopLeftRule));
+      if (t.snapped) steps->warn(say(kSnappedToGrid), say(kNotAMultiple));
       if (t.reordered)
-        steps->note(
-            "Orientation",
-            "The triangle ABC is clockwise; it is scanned as ACB (counter-clockwise) so the "
-            "interior has E > 0 on every edge. Scan conversion culls nothing.");
+        steps->note(say(kOrientation), say(kClockwiseScannedAs, "ABC", "ACB") + say(kCullsNothing));
     }
     if (t.degenerate) {
       if (steps) {
-        steps->warn("Degenerate triangle",
-                    "The three vertices are collinear (zero area): the triangle covers no pixels.");
+        steps->warn(say(kDegenerateTriangle), say(kCollinear));
         steps->yields("pixels");
       }
       Answers out;
@@ -86,11 +138,9 @@ struct ScanConvert {
       for (int k = 0; k < 3; ++k) {
         const EdgeFunction& e = t.edge[k];
         const std::string from(1, names[t.order[(k + 1) % 3]]), to(1, names[t.order[(k + 2) % 3]]);
-        const std::string cls = e.top    ? "top edge: centres on it are covered"
-                                : e.left ? "left edge: centres on it are covered"
-                                         : "bottom or right edge: centres on it are not covered";
+        const Phrase& cls = e.top ? kTopEdge : e.left ? kLeftEdge : kBottomOrRightEdge;
         steps
-            ->add("Edge function E_" + from + to,
+            ->add(say(kEdgeFunction, "E_" + from + to),
                   math("E(x, y) = (x_" + to + " − x_" + from + ")(y − y_" + from + ") − (y_" + to +
                            " − y_" + from + ")(x − x_" + from + ")",
                        "E_{" + from + to + "}(x, y) = (x_" + to + " - x_" + from + ")(y - y_" +
@@ -99,17 +149,15 @@ struct ScanConvert {
                   math("E_" + from + to + "(x, y) = ", "E_{" + from + to + "}(x, y) = ") +
                       linear_expression(
                           {{pixels_of(e.a), "x"}, {pixels_of(e.b), "y"}, {pixels_of(e.c, 2), ""}}))
-            .note = cls;
+            .note = say(cls);
       }
       steps
-          ->add("Bounding box of the pixel centres", {}, {},
+          ->add(say(kBoundingBox), {}, {},
                 math("i = " + std::to_string(t.i_min) + " … " + std::to_string(t.i_max) +
                          ",  j = " + std::to_string(t.j_min) + " … " + std::to_string(t.j_max),
                      std::to_string(t.i_min) + " \\le i \\le " + std::to_string(t.i_max) + ",\\; " +
                          std::to_string(t.j_min) + " \\le j \\le " + std::to_string(t.j_max)))
-          .note =
-          "A pixel is covered when E > 0 on all three edges, or E = 0 on an edge that is top or "
-          "left.";
+          .note = say(kPixelCovered);
       std::map<int, std::string> rows;
       for (const Fragment& f : frags)
         rows[f.j] += (rows[f.j].empty() ? "" : ", ") + std::to_string(f.i);
@@ -118,8 +166,8 @@ struct ScanConvert {
         text += (text.empty() ? MathText{} : math(";  ", ";\\quad ")) +
                 math("j = " + std::to_string(j) + ": i = " + is,
                      "j = " + std::to_string(j) + "\\colon i = " + is);
-      steps->add("Covered pixels, row by row", {}, {}, text.empty() ? word("none") : text).note =
-          std::to_string(frags.size()) + " pixel(s) covered.";
+      steps->add(say(kCoveredPixelsByRow), {}, {}, text.empty() ? word(words::kNone) : text).note =
+          say(kPixelsCovered, frags.size());
       steps->yields("pixels");
     }
     std::vector<std::vector<Exact>> px;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -18,6 +19,30 @@ namespace frustum {
 namespace {
 
 constexpr const char* kBackground = ".";
+
+constexpr Phrase kSections{"Sections of the polygons on the scan line", "走査線上のポリゴンの断面",
+                           "Сечения многоугольников строкой развёртки"};
+constexpr Phrase kSectionEnds{
+    "Each polygon's edges that the line crosses give the two ends of its section; along the "
+    "section the depth changes linearly, as the polygon is planar.",
+    "走査線が横切るポリゴンの辺から断面の両端が求まる. ポリゴンは平面なので, "
+    "断面に沿って奥行きは線形に変わる.",
+    "Рёбра многоугольника, которые пересекает строка, дают два конца его сечения; вдоль сечения "
+    "глубина меняется линейно, так как многоугольник плоский."};
+constexpr Phrase kDepthsCross{"Where two sections' depths cross", "2 つの断面の奥行きが交わる位置",
+                              "Где пересекаются глубины двух сечений"};
+constexpr Phrase kNearestOnEachPiece{"Nearest section on each piece", "各区間で最も手前の断面",
+                                     "Ближайшее сечение на каждом отрезке"};
+constexpr Phrase kSmallestZSeen{
+    "On each piece between two breakpoints one section is nearest all along (depths are linear and "
+    "cross only at breakpoints): the smallest z is seen. The method keeps one line's sections at a "
+    "time, not a depth for every pixel.",
+    "2 つの区切り点の間の各区間では, 1 つの断面が全体にわたって最も手前にある (奥行きは線形で, "
+    "区切り点でしか交わらない): z が最も小さい断面が見える. この方法は 1 "
+    "本の走査線の断面だけを保持し, 画素ごとの奥行きは持たない.",
+    "На каждом отрезке между двумя точками разбиения одно сечение ближе всех на всём отрезке "
+    "(глубины линейны и пересекаются только в точках разбиения): видно сечение с наименьшим z. "
+    "Метод хранит сечения одной строки, а не глубину каждого пикселя."};
 
 struct Section {
   std::size_t polygon;
@@ -242,14 +267,12 @@ struct Scanline {
                exact(s.x_left) + math(", ") + exact(s.x_right) + math("], z: ") + exact(s.z_left) +
                math(" → ", " \\to ") + exact(s.z_right);
     steps
-        ->add("Sections of the polygons on the scan line",
+        ->add(say(kSections),
               math("x = x₀ + (y − y₀)(x₁ − x₀)/(y₁ − y₀),  z = z₀ + (y − y₀)(z₁ − z₀)/(y₁ − y₀)",
                    "x = x_0 + \\frac{(y - y_0)(x_1 - x_0)}{y_1 - y_0},\\quad z = z_0 + "
                    "\\frac{(y - y_0)(z_1 - z_0)}{y_1 - y_0}"),
               math("y = ") + exact(g.y), found)
-        .note =
-        "Each polygon's edges that the line crosses give the two ends of its section; along the "
-        "section the depth changes linearly, as the polygon is planar.";
+        .note = say(kSectionEnds);
     steps->yields("spans");
     MathText where;
     for (const Crossing& c : crossings) {
@@ -262,20 +285,16 @@ struct Scanline {
                            b)) +
           exact(c.x);
     }
-    if (!crossings.empty())
-      steps->add("Where two sections' depths cross", math("z_a(x) = z_b(x)"), {}, where);
+    if (!crossings.empty()) steps->add(say(kDepthsCross), math("z_a(x) = z_b(x)"), {}, where);
     MathText shown;
     for (const Piece& p : ps)
       shown += math(shown.empty() ? "" : ",  ", shown.empty() ? "" : ",\\quad ") + math("[") +
                exact(p.from) + math(", ") + exact(p.to) + math("]: ") +
-               (p.label == kBackground ? word("background") : math(p.label));
+               (p.label == kBackground ? word(words::kBackground) : math(p.label));
     steps
-        ->add("Nearest section on each piece", word("visible") + math(": min z", ": \\min z"), {},
+        ->add(say(kNearestOnEachPiece), word(words::kVisible) + math(": min z", ": \\min z"), {},
               shown)
-        .note =
-        "On each piece between two breakpoints one section is nearest all along (depths are "
-        "linear and cross only at breakpoints): the smallest z is seen. The method keeps one "
-        "line's sections at a time, not a depth for every pixel.";
+        .note = say(kSmallestZSeen);
     steps->yields("visible");
     steps->yields("breaks");
     return out;

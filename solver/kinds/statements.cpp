@@ -6,6 +6,8 @@
 #include <array>
 #include <utility>
 
+#include "solver/derivation/local_text.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/input/text_reader.hpp"
 #include "solver/problem/registry.hpp"
@@ -31,6 +33,12 @@ std::optional<bool> truth_word(std::string_view written) {
 }
 
 namespace {
+
+constexpr Phrase kStatement{"Statement {0}: {1}", "記述 {0}: {1}", "Утверждение {0}: {1}"};
+constexpr Phrase kTheTrueStatements{"The true statements", "正しい記述", "Верные утверждения"};
+constexpr Phrase kReason{"Reason: {0}", "理由: {0}", "Обоснование: {0}"};
+constexpr Phrase kTrue{"True", "正しい", "верно"};
+constexpr Phrase kFalse{"False", "誤り", "неверно"};
 
 // Line breaks and runs of spaces in a YAML block scalar, as one line.
 std::string one_line(const std::string& s) {
@@ -111,8 +119,8 @@ struct Statements {
   }
 
   static MathText mark(bool truth) {
-    return truth ? math("○ ", "\\bigcirc\\; ") + word("True")
-                 : math("× ", "\\times\\; ") + word("False");
+    return truth ? math("○ ", "\\bigcirc\\; ") + word(kTrue)
+                 : math("× ", "\\times\\; ") + word(kFalse);
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
@@ -128,19 +136,14 @@ struct Statements {
       if (s.truth) chosen += (chosen.empty() ? MathText{} : math(", ", ",\\; ")) + math(number);
       if (steps) {
         // The statement and its reason quoted in each language the set gives them in.
-        Step& step = steps->add("Statement " + number + ": " + s.text.text, {}, {}, mark(s.truth));
-        for (const auto& [lang, t] : s.text.translations)
-          step.titles[lang] = "Statement " + number + ": " + t;
-        if (!s.reason.empty()) {
-          step.note = "Reason: " + s.reason.text;
-          for (const auto& [lang, t] : s.reason.translations) step.notes[lang] = "Reason: " + t;
-        }
+        Step& step = steps->add(say(kStatement, number, said(s.text)), {}, {}, mark(s.truth));
+        if (!s.reason.empty()) step.note = say(kReason, said(s.reason));
       }
     }
     Value v = Value::word_map(std::move(entries));
     v.display = key;
     if (steps) {
-      steps->add("The true statements", {}, {}, chosen.empty() ? word("none") : chosen);
+      steps->add(say(kTheTrueStatements), {}, {}, chosen.empty() ? word(words::kNone) : chosen);
       steps->yields("true_statements");
     }
     Answers out;

@@ -18,6 +18,52 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kTransformAPoint{"Transform a point", "点を変換", "Преобразование точки"};
+
+constexpr Phrase kIllConditionedMatrix{"Ill-conditioned matrix", "条件の悪い行列",
+                                       "Плохо обусловленная матрица"};
+constexpr Phrase kTheInverseCondition{"the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)",
+                                      "逆行列 (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)",
+                                      "обратная матрица (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)"};
+constexpr Phrase kInverseStepByStep{"inverse = A₁⁻¹·…·Aₙ⁻¹.", "逆行列 = A₁⁻¹·…·Aₙ⁻¹.",
+                                    "обратная матрица = A₁⁻¹·…·Aₙ⁻¹."};
+constexpr Phrase kInverseByLu{
+    "inverse by LU with partial pivoting.", "逆行列は部分ピボット選択付き LU 分解で求めた.",
+    "обратная матрица — LU-разложением с частичным выбором ведущего элемента."};
+constexpr Phrase kArrayByColumn{"The matrix as an array, column by column",
+                                "行列を配列に: 列ごとに", "Матрица как массив: по столбцам"};
+constexpr Phrase kArrayByRow{"The matrix as an array, row by row", "行列を配列に: 行ごとに",
+                             "Матрица как массив: по строкам"};
+constexpr Phrase kColumnsInPieces3d{
+    "Each column of M lies in one piece: m0–m2 is the image of the x axis, m4–m6 that of the y "
+    "axis, m8–m10 that of the z axis, and m12–m14 the translation (where the origin goes).",
+    "M の各列が連続して並ぶ: m0–m2 は x 軸の像, m4–m6 は y 軸の像, m8–m10 は z 軸の像, m12–m14 "
+    "は平行移動 (原点の移る先) である.",
+    "Каждый столбец M лежит подряд: m0–m2 — образ оси X, m4–m6 — оси Y, m8–m10 — оси Z, m12–m14 — "
+    "перенос (куда переходит начало координат)."};
+constexpr Phrase kColumnsInPieces2d{
+    "Each column of M lies in one piece: m0–m1 is the image of the x axis, m3–m4 that of the y "
+    "axis, and m6–m7 the translation (where the origin goes).",
+    "M の各列が連続して並ぶ: m0–m1 は x 軸の像, m3–m4 は y 軸の像, m6–m7 は平行移動 "
+    "(原点の移る先) である.",
+    "Каждый столбец M лежит подряд: m0–m1 — образ оси X, m3–m4 — оси Y, m6–m7 — перенос (куда "
+    "переходит начало координат)."};
+constexpr Phrase kComposite{"Composite (first step applied first)",
+                            "合成変換 (最初のステップを最初に適用)",
+                            "Композиция (первый шаг применяется первым)"};
+constexpr Phrase kNoInverse{"No inverse", "逆行列なし", "Обратной матрицы нет"};
+constexpr Phrase kFlattensSpace{
+    "det M = 0: the transform flattens space and cannot be undone.",
+    "det M = 0: この変換は空間を押しつぶすので, 元に戻せない.",
+    "det M = 0: преобразование сплющивает пространство, и его нельзя обратить."};
+constexpr Phrase kInverse{"Inverse", "逆行列", "Обратная матрица"};
+constexpr Phrase kEachStepUndone{
+    "Each step is undone on its own (a translation by its negative, a scaling by its reciprocal, "
+    "a rotation by its transpose), in reverse order.",
+    "各ステップを個別に元に戻す (平行移動は符号を反転, 拡大縮小は逆数, 回転は転置) — 逆の順序で.",
+    "Каждый шаг обращается отдельно (перенос — противоположным, масштабирование — обратными "
+    "величинами, поворот — транспонированием), в обратном порядке."};
+
 std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX<Exact>>& steps,
                                                  const std::vector<MatX<Exact>>& inverses,
                                                  bool invertible,
@@ -64,10 +110,9 @@ std::unique_ptr<NumericSolver> transform_numeric(int dim, const std::vector<MatX
         if constexpr (!kIsExact<T>) {
           const double kappa = static_cast<double>(o.m.cwiseAbs().rowwise().sum().maxCoeff() *
                                                    o.inverse.cwiseAbs().rowwise().sum().maxCoeff());
-          warn_condition(out, p, kappa, "Ill-conditioned matrix",
-                         "the inverse (κ∞(M) = ‖M‖∞‖M⁻¹‖∞)");
+          warn_condition(out, p, kappa, say(kIllConditionedMatrix), say(kTheInverseCondition));
         }
-        out.note(kIsExact<T> ? "inverse = A₁⁻¹·…·Aₙ⁻¹" : "inverse by LU with partial pivoting");
+        out.note(say(kIsExact<T> ? kInverseStepByStep : kInverseByLu));
       }
       return out.take();
     };
@@ -96,19 +141,12 @@ Value array_with_steps(const MatX<Exact>& m, bool column_major, Derivation* step
     names[i * n + j] = math(fmt::format("m{}", k), fmt::format("m_{{{}}}", k));
   }
   if (steps) {
-    Step& step = steps->add(column_major ? "The matrix as an array, column by column"
-                                         : "The matrix as an array, row by row",
+    Step& step = steps->add(say(column_major ? kArrayByColumn : kArrayByRow),
                             math("M = ") + matrix_of(names, n), {},
                             math(fmt::format("(m0, …, m{}) = ", n * n - 1),
                                  fmt::format("(m_{{0}}, \\dots, m_{{{}}}) = ", n * n - 1)) +
                                 vec(array));
-    if (column_major)
-      step.note = n == 4 ? "Each column of M lies in one piece: m0–m2 is the image of the x axis, "
-                           "m4–m6 that of the y axis, m8–m10 that of the z axis, and m12–m14 the "
-                           "translation (where the origin goes)."
-                         : "Each column of M lies in one piece: m0–m1 is the image of the x axis, "
-                           "m3–m4 that of the y axis, and m6–m7 the translation (where the origin "
-                           "goes).";
+    if (column_major) step.note = say(n == 4 ? kColumnsInPieces3d : kColumnsInPieces2d);
     steps->yields("array");
   }
   return Value::vector(array);
@@ -193,7 +231,7 @@ struct Transform {
       // In the problem's own convention: DirectX students write the row-vector form.
       a.set("matrix", matrix_value(paper_form(m, g.api)));
       if (!g.points.empty())
-        a.set("points", transform_points_with_steps(m, g.points, "", "P", nullptr, g.api));
+        a.set("points", transform_points_with_steps(m, g.points, {}, "P", nullptr, g.api));
       const bool singular = std::any_of(inverses.begin(), inverses.end(),
                                         [](const MatX<Exact>& i) { return i.size() == 0; });
       if (!singular) {
@@ -245,23 +283,21 @@ struct Transform {
   static Answers solve(const Given& g, Derivation* steps) {
     const int size = g.dim + 1;
     const bool rows = g.api == Api::DirectX;
-    const MatX<Exact> m = compose_with_steps(g.steps, g.dim, g.api, "M",
-                                             "Composite (first step applied first)", steps);
+    const MatX<Exact> m = compose_with_steps(g.steps, g.dim, g.api, "M", kComposite, steps);
     Answers out;
     out.set("matrix", matrix_value(paper_form(m, g.api)));
     if (steps) steps->yields("matrix");
     if (g.column_major)
       out.set("array", array_with_steps(paper_form(m, g.api), *g.column_major, steps));
     out.set("points",
-            transform_points_with_steps(m, g.points, "Transform a point", "P", steps, g.api));
+            transform_points_with_steps(m, g.points, say(kTransformAPoint), "P", steps, g.api));
     // det M is the product of the steps' determinants (rotations and translations have 1).
     Exact det = 1;
     for (const TransformStep& s : g.steps) det *= s.det;
     det = canonical(det);
     if (det.is_zero()) {
       out.set("inverse", Value::null());
-      if (steps)
-        steps->warn("No inverse", "det M = 0: the transform flattens space and cannot be undone.");
+      if (steps) steps->warn(say(kNoInverse), say(kFlattensSpace));
     } else {
       // M⁻¹ = A₁⁻¹·A₂⁻¹·…·Aₙ⁻¹.
       MatX<Exact> inv = MatX<Exact>::Identity(size, size);
@@ -275,13 +311,11 @@ struct Transform {
           order_latex += fmt::format("A_{{{}}}^{{-1}}", i);
         }
         steps
-            ->add("Inverse",
+            ->add(say(kInverse),
                   math("M⁻¹ = " + order + " (M·M⁻¹ = I)",
                        "M^{-1} = " + order_latex + "\\;(M M^{-1} = I)"),
                   {}, math("M⁻¹ = ", "M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
-            .note =
-            "Each step is undone on its own (a translation by its negative, a scaling by its "
-            "reciprocal, a rotation by its transpose), in reverse order.";
+            .note = say(kEachStepUndone);
         steps->yields("inverse");
       }
     }

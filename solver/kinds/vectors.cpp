@@ -14,6 +14,39 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kWhetherAAndBAreParallel{"whether a and b are parallel", "a と b が平行かどうか",
+                                          "параллельны ли a и b"};
+
+constexpr Phrase kIllConditionedCrossProduct{"Ill-conditioned cross product", "条件の悪い外積",
+                                             "Плохо обусловленное векторное произведение"};
+constexpr Phrase kABAndWithItThe{"a × b (and with it the area, sin θ and the angle)",
+                                 "a × b (と, それに従う面積, sin θ, 角度)",
+                                 "a × b (а с ним площадь, sin θ и угол)"};
+constexpr Phrase kIllConditionedDotProduct{"Ill-conditioned dot product", "条件の悪い内積",
+                                           "Плохо обусловленное скалярное произведение"};
+constexpr Phrase kABAndWithItCos{"a · b (and with it cos θ)", "a · b (と, それに従う cos θ)",
+                                 "a · b (а с ним cos θ)"};
+
+constexpr Phrase kAngleNote{"angle = atan2(‖a × b‖, a·b).", "角度 = atan2(‖a × b‖, a·b).",
+                            "угол = atan2(‖a × b‖, a·b)."};
+constexpr Phrase kDotProduct{"Dot product", "内積", "Скалярное произведение"};
+constexpr Phrase kCrossProduct{"Cross product", "外積", "Векторное произведение"};
+constexpr Phrase kAreaOfParallelogram{"Area of the parallelogram", "平行四辺形の面積",
+                                      "Площадь параллелограмма"};
+constexpr Phrase kSineOfAngle{"Sine of the angle", "角度の正弦", "Синус угла"};
+constexpr Phrase kCosineOfAngle{"Cosine of the angle", "角度の余弦", "Косинус угла"};
+constexpr Phrase kAngle{"Angle", "角度", "Угол"};
+constexpr Phrase kNoPlane{"No plane", "平面なし", "Плоскости нет"};
+constexpr Phrase kParallelNoPlane{
+    "a and b are parallel (a × b = 0): the points 0, a, b are collinear and span no plane, so "
+    "there is no unit normal.",
+    "a と b は平行 (a × b = 0): 点 0, a, b は一直線上にあって平面を張らないので, 単位法線はない.",
+    "a и b параллельны (a × b = 0): точки 0, a, b лежат на одной прямой и не задают плоскость, "
+    "поэтому единичной нормали нет."};
+constexpr Phrase kUnitNormalOfPlane{"Unit normal of the plane through 0, a, b",
+                                    "0, a, b を通る平面の単位法線",
+                                    "Единичная нормаль плоскости через 0, a, b"};
+
 // The measures of a and b from their products, in any scalar: the parallelogram's area
 // ‖a × b‖, the lengths, sin θ = ‖a × b‖/(‖a‖‖b‖) and cos θ = a·b/(‖a‖‖b‖). The exact solve and
 // the numeric path (on a and b scaled by powers of two, which sin and cos do not see) both use
@@ -93,22 +126,22 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
       out.scalar("sin", o.sin);
       out.scalar("cos", o.cos);
       out.scalar("angle", o.angle);
-      if (o.unit.exact_zero_test) out.exact_decision("whether a and b are parallel");
+      if (o.unit.exact_zero_test) out.exact_decision(say(kWhetherAAndBAreParallel));
       if (o.unit.zero)
         out.null("unit_normal");
       else
         out.vector("unit_normal", o.unit.unit);
-      out.note("angle = atan2(‖a × b‖, a·b)");
+      out.note(say(kAngleNote));
       // Nearly parallel vectors cancel in a × b, nearly perpendicular ones in a · b. An exact 0
       // is decided exactly (parallel) or exact in every backend's products of the inputs.
       const Eigen::Vector3d da = to_double(in.exact_a), db = to_double(in.exact_b);
-      if (o.unit.exact_value) report_exact_value(out, "a × b");
+      if (o.unit.exact_value) report_exact_value(out, Said::verbatim("a × b"));
       if (!o.unit.zero && !o.unit.exact_value)
-        warn_condition(out, p, cross_condition(da, db), "Ill-conditioned cross product",
-                       "a × b (and with it the area, sin θ and the angle)");
+        warn_condition(out, p, cross_condition(da, db), say(kIllConditionedCrossProduct),
+                       say(kABAndWithItThe));
       if (!canonical(Exact(in.exact_a.dot(in.exact_b))).is_zero())
-        warn_condition(out, p, dot_condition(da, db), "Ill-conditioned dot product",
-                       "a · b (and with it cos θ)");
+        warn_condition(out, p, dot_condition(da, db), say(kIllConditionedDotProduct),
+                       say(kABAndWithItCos));
       return out.take();
     };
     In in{{}, {}, unit == AngleUnit::Degrees, {}, a, b};
@@ -245,7 +278,7 @@ struct Vectors {
     out.set("dot", Value::scalar(dot));
     if (steps) {
       steps->add(
-          "Dot product",
+          say(kDotProduct),
           math("a·b = aₓbₓ + a_yb_y + a_zb_z",
                "\\mathbf{a}\\cdot\\mathbf{b} = a_x b_x + a_y b_y + a_z b_z"),
           math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + math("·", "\\cdot") + vec(b),
@@ -257,7 +290,7 @@ struct Vectors {
     for (int i = 0; i < 3; ++i) cross(i) = canonical(cross(i));
     out.set("cross", Value::vector(cross));
     if (steps) {
-      steps->add("Cross product",
+      steps->add(say(kCrossProduct),
                  math("a × b = (a_yb_z − a_zb_y, a_zbₓ − aₓb_z, aₓb_y − a_ybₓ)",
                       "\\mathbf{a}\\times\\mathbf{b} = (a_y b_z - a_z b_y,\\; a_z b_x - a_x "
                       "b_z,\\; a_x b_y - a_y b_x)"),
@@ -272,7 +305,7 @@ struct Vectors {
     const Exact area = canonical(m.area);
     out.set("area", Value::scalar(area));
     if (steps) {
-      steps->add("Area of the parallelogram",
+      steps->add(say(kAreaOfParallelogram),
                  math("S = ‖a × b‖", "S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"), {},
                  math("S = ") + exact(area, true));
       steps->yields("area");
@@ -280,7 +313,7 @@ struct Vectors {
     const Exact sin = canonical(m.sin);
     out.set("sin", Value::scalar(sin));
     if (steps) {
-      steps->add("Sine of the angle",
+      steps->add(say(kSineOfAngle),
                  math("sin θ = ‖a × b‖ / (‖a‖ ‖b‖)",
                       "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} "
                       "\\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
@@ -293,7 +326,7 @@ struct Vectors {
     out.set("cos", Value::scalar(cos));
     if (steps) {
       steps->add(
-          "Cosine of the angle",
+          say(kCosineOfAngle),
           math("cos θ = a·b / (‖a‖ ‖b‖)",
                "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
                "\\lVert\\mathbf{b}\\rVert}"),
@@ -307,7 +340,7 @@ struct Vectors {
         g.angles == AngleUnit::Degrees ? canonical(radians * 180 / GiNaC::Pi) : radians;
     out.set("angle", Value::scalar(angle));
     if (steps) {
-      steps->add("Angle", math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
+      steps->add(say(kAngle), math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
                  math("θ = ", "\\theta = ") + exact(angle, true) +
                      math(g.angles == AngleUnit::Degrees ? "°" : " rad",
                           g.angles == AngleUnit::Degrees ? "{}^\\circ" : "\\,\\text{rad}"));
@@ -315,15 +348,12 @@ struct Vectors {
     }
     if (area.is_zero()) {
       out.set("unit_normal", Value::null());
-      if (steps)
-        steps->warn("No plane",
-                    "a and b are parallel (a × b = 0): the points 0, a, b are "
-                    "collinear and span no plane, so there is no unit normal.");
+      if (steps) steps->warn(say(kNoPlane), say(kParallelNoPlane));
     } else {
       const Vec3<Exact> n = unit(cross);
       out.set("unit_normal", Value::vector(n));
       if (steps) {
-        steps->add("Unit normal of the plane through 0, a, b",
+        steps->add(say(kUnitNormalOfPlane),
                    math("n = (a × b) / ‖a × b‖",
                         "\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert "
                         "\\mathbf{a}\\times\\mathbf{b} \\rVert}"),

@@ -13,6 +13,35 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kViewVolumeAndWhereItGoes{
+    "The view volume and where it goes", "視体積とその行き先", "Видимый объём и куда он переходит"};
+constexpr Phrase kEyeLooksDownPlusZVolume{
+    "The eye looks down +z: the view volume runs from z = z_min to z = z_max, with half-widths a "
+    "(in x) and b (in y) at distance d. S and P map it to 0 ≤ z ≤ 1 with near → 0 and far → 1, and "
+    "x, y to [−1, 1] (OpenGL's NDC cube instead sends near to −1).",
+    "視点は +z 方向を見る: 視体積は z = z_min から z = z_max まで, 距離 d での半幅は a (x 方向) と "
+    "b (y 方向). S と P はこれを 0 ≤ z ≤ 1 (前方クリッピング面 → 0, 後方クリッピング面 → 1), x, y "
+    "を [−1, 1] に写す (OpenGL の正規化視体積の立方体では前方は −1 に行く).",
+    "Глаз смотрит вдоль +z: видимый объём простирается от z = z_min до z = z_max, с полуширинами a "
+    "(по x) и b (по y) на расстоянии d. S и P переводят его в 0 ≤ z ≤ 1 (ближняя плоскость → 0, "
+    "дальняя → 1), а x, y — в [−1, 1] (куб NDC в OpenGL переводит ближнюю плоскость в −1)."};
+constexpr Phrase kNormalizeTheViewVolume{"① Normalize the view volume", "① 視体積の正規化",
+                                         "① Нормализация видимого объёма"};
+constexpr Phrase kBackPlaneMovesToZ1{
+    "The back clipping plane moves to z = 1, where x and y span [−1, 1].",
+    "後方クリッピング面は z = 1 に移り, そこで x と y は [−1, 1] に広がる.",
+    "Дальняя плоскость отсечения переходит в z = 1, где x и y пробегают [−1, 1]."};
+constexpr Phrase kPerspectiveOfNormalizedVolume{"② Perspective of the normalized volume",
+                                                "② 正規化視体積の透視変換",
+                                                "② Перспектива нормализованного объёма"};
+constexpr Phrase kProjectiveNotAffine{
+    "X′ and Y′ are unchanged and W′ = z: the matrix is projective, not affine.",
+    "X′ と Y′ は変わらず W′ = z: この行列はアフィンではなく射影変換である.",
+    "X′ и Y′ не меняются, а W′ = z: матрица проективная, не аффинная."};
+constexpr Phrase kPointThroughBoth{"A point through both, then the divide by W′",
+                                   "両方を通る点と W′ による除算",
+                                   "Точка через оба преобразования, затем деление на W′"};
+
 struct ViewVolume {
   static constexpr const char* kName = "view_volume";
   static constexpr const char* kSummary = "the normalized perspective view volume of Foley et al.";
@@ -83,27 +112,21 @@ struct ViewVolume {
     Answers out;
     // The volume's own coordinates, stated instead of an API's eye space: they differ from
     // OpenGL's (near → 0 here, −1 there), and a header saying otherwise would contradict step ②.
-    if (steps)
-      steps->note("The view volume and where it goes",
-                  "The eye looks down +z: the view volume runs from z = z_min to z = z_max, with "
-                  "half-widths a "
-                  "(in x) and b (in y) at distance d. S and P map it to 0 ≤ z ≤ 1 with near → 0 "
-                  "and far → 1, "
-                  "and x, y to [−1, 1] (OpenGL's NDC cube instead sends near to −1).");
+    if (steps) steps->note(say(kViewVolumeAndWhereItGoes), say(kEyeLooksDownPlusZVolume));
     out.set("scale_matrix", matrix_value(paper_form(s, g.api)));
     out.set("perspective_matrix", matrix_value(paper_form(p, g.api)));
     if (steps) {
       steps
-          ->add("① Normalize the view volume",
+          ->add(say(kNormalizeTheViewVolume),
                 math("S(d/(a·z_max), d/(b·z_max), 1/z_max)",
                      "S\\left(\\frac{d}{a z_{\\max}}, \\frac{d}{b z_{\\max}}, "
                      "\\frac{1}{z_{\\max}}\\right)"),
                 {}, math("S = ") + matrix_text(paper_form(s, g.api)))
-          .note = "The back clipping plane moves to z = 1, where x and y span [−1, 1]." +
-                  std::string(g.api == Api::DirectX ? " " + multiply_note(g.api) : "");
+          .note =
+          say(kBackPlaneMovesToZ1) + (g.api == Api::DirectX ? multiply_note(g.api) : Said());
       steps->yields("scale_matrix");
       steps
-          ->add("② Perspective of the normalized volume",
+          ->add(say(kPerspectiveOfNormalizedVolume),
                 g.api == Api::DirectX
                     ? math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) 1; 0 0 "
                            "−z̃/(1−z̃) 0]",
@@ -121,7 +144,7 @@ struct ViewVolume {
                            "0 & 0 & 1 & 0 \\end{bmatrix}"),
                 math("z̃_min = ", "\\tilde{z}_{\\min} = ") + exact(zt),
                 math("P = ") + matrix_text(paper_form(p, g.api)))
-          .note = "X′ and Y′ are unchanged and W′ = z: the matrix is projective, not affine.";
+          .note = say(kProjectiveNotAffine);
       steps->yields("perspective_matrix");
     }
     const std::vector<Exact> h =
@@ -129,7 +152,7 @@ struct ViewVolume {
     const std::vector<Exact> q = {canonical(h[0]), canonical(h[1]), canonical(h[2])};
     out.set("point", Value::vector(q));
     if (steps) {
-      steps->add("A point through both, then the divide by W′",
+      steps->add(say(kPointThroughBoth),
                  g.api == Api::DirectX
                      ? math("(X′, Y′, Z′, W′) = p·S·P,  p′ = (X′, Y′, Z′)/W′",
                             "(X', Y', Z', W') = \\mathbf{p} S P,\\; \\mathbf{p}' = \\frac{(X', Y', "

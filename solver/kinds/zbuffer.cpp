@@ -22,6 +22,46 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kPixelsOrientationDepthTest{"Pixels, orientation and the depth test",
+                                             "画素, 向きと奥行きテスト",
+                                             "Пиксели, ориентация и тест глубины"};
+constexpr Phrase kPixelCentreWindowYUp{
+    "Pixel (i, j) has its centre at (i + ½, j + ½), window y up; grids are written top row first.",
+    "画素 (i, j) の中心は (i + ½, j + ½), ウィンドウの y は上向き. 格子は上の行から書く.",
+    "Центр пикселя (i, j) — в (i + ½, j + ½), ось y окна вверх; сетки записаны с верхней строки."};
+constexpr Phrase kCoverageFan{
+    "Coverage uses the top-left fill rule; convex polygons are split into a fan of triangles from "
+    "their first vertex; z is interpolated linearly in x and y (the plane through the vertices).",
+    "被覆は左上規則による. 凸多角形は最初の頂点から扇形に三角形分割する. z は x と y "
+    "について線形に補間する (頂点を通る平面).",
+    "Покрытие — по правилу «верх-лево»; выпуклые многоугольники разбиваются веером треугольников "
+    "от первой вершины; z интерполируется линейно по x и y (плоскость через вершины)."};
+constexpr Phrase kOverwrittenWhenSmaller{
+    "A pixel is overwritten when the polygon's z is smaller than Z(i, j); equal z keeps the "
+    "earlier polygon.",
+    "多角形の z が Z(i, j) より小さいとき画素を上書きする. z が等しいときは先の多角形のまま.",
+    "Пиксель перезаписывается, если z многоугольника меньше Z(i, j); при равных z остаётся "
+    "прежний многоугольник."};
+constexpr Phrase kInitialise{"Initialise", "初期化", "Инициализация"};
+constexpr Phrase kGridsNotWritten{"(grids larger than 32 × 32 are not written out)",
+                                  "(32 × 32 より大きい格子は書き出さない)",
+                                  "(сетки больше 32 × 32 не выписываются)"};
+constexpr Phrase kFrameColon{"frame:", "フレーム:", "кадр:"};
+constexpr Phrase kDepthColon{"depth:", "奥行き:", "глубина:"};
+constexpr Phrase kPolygonLabel{"Polygon {0} (label {1})", "多角形 {0} (ラベル {1})",
+                               "Многоугольник {0} (метка {1})"};
+constexpr Phrase kDegeneratePolygon{"Degenerate polygon {0}", "退化した多角形 {0}",
+                                    "Вырожденный многоугольник {0}"};
+constexpr Phrase kFanTrianglesZeroArea{
+    "{0} of its fan triangles have zero area in x, y and cover no pixels.",
+    "扇形分割の三角形のうち {0} 個は x, y での面積が 0 で, どの画素も覆わない.",
+    "Треугольников веера с нулевой площадью в x, y (они не покрывают пикселей): {0}."};
+constexpr Phrase kFinalFrameBuffer{"Final frame buffer", "最終のフレームバッファ",
+                                   "Итоговый буфер кадра"};
+constexpr Phrase kRowsTopFirst{"Rows top first, joined by “/”.",
+                               "行は上から順に “/” でつないで書く.",
+                               "Строки сверху вниз, через «/»."};
+
 struct ZBuffer {
   static constexpr const char* kName = "zbuffer";
   static constexpr const char* kSummary =
@@ -122,21 +162,24 @@ struct ZBuffer {
   }
 
   // The frame and depth grids as text, top row first, columns aligned.
-  static std::string grids(const FrameBuffer& frame, const DepthBuffer<Exact>& depth) {
+  static Said grids(const FrameBuffer& frame, const DepthBuffer<Exact>& depth) {
     std::size_t wide = 1;
     for (const auto& z : depth.data) wide = std::max(wide, depth_text(z).size());
     // Continuation lines are indented to line up under the note in the text renderer.
-    std::string s = "frame:";
-    for (const std::string& row : frame_rows(frame)) s += "\n        " + row;
-    s += "\n      depth:";
+    std::string rows;
+    for (const std::string& row : frame_rows(frame)) rows += "\n        " + row;
+    Said s = say(kFrameColon);
+    s.append(Said::verbatim(rows + "\n      "));
+    s.append(say(kDepthColon));
+    rows.clear();
     for (int j = depth.height - 1; j >= 0; --j) {
-      s += "\n       ";
+      rows += "\n       ";
       for (int i = 0; i < depth.width; ++i) {
         const std::string cell = depth_text(depth.at(i, j));
-        s += " " + std::string(wide - cell.size(), ' ') + cell;
+        rows += " " + std::string(wide - cell.size(), ' ') + cell;
       }
     }
-    return s;
+    return s.append(Said::verbatim(rows));
   }
 
   static std::string joined(const std::vector<std::string>& rows) {
@@ -151,20 +194,12 @@ struct ZBuffer {
     const DepthBuffer<Exact>& depth = filtered.exact;
     const bool show = g.width <= kMaxShownSize && g.height <= kMaxShownSize;
     if (steps) {
-      steps->note(
-          "Pixels, orientation and the depth test",
-          "Pixel (i, j) has its centre at (i + ½, j + ½), window y up; grids are written top row "
-          "first. "
-          "Coverage uses the top-left fill rule; convex polygons are split into a fan of triangles "
-          "from "
-          "their first vertex; z is interpolated linearly in x and y (the plane through the "
-          "vertices). "
-          "A pixel is overwritten when the polygon's z is smaller than Z(i, j); equal z keeps "
-          "the earlier polygon.");
+      steps->note(say(kPixelsOrientationDepthTest),
+                  say(kPixelCentreWindowYUp) + say(kCoverageFan) + say(kOverwrittenWhenSmaller));
       steps
-          ->add("Initialise", {}, {},
+          ->add(say(kInitialise), {}, {},
                 math("F(i, j) = “.”,  Z(i, j) = ∞", "F(i, j) = \\text{“.”},\\; Z(i, j) = \\infty"))
-          .note = show ? grids(frame, depth) : "(grids larger than 32 × 32 are not written out)";
+          .note = show ? grids(frame, depth) : say(kGridsNotWritten);
     }
     std::vector<std::string> after;
     for (std::size_t k = 0; k < g.polygons.size(); ++k) {
@@ -196,15 +231,12 @@ struct ZBuffer {
       filtered.written.clear();
       after.push_back(joined(frame_rows(frame)));
       if (steps) {
-        Step& s =
-            steps->add("Polygon " + std::to_string(k + 1) + " (label " + p.label + ")", {}, {},
-                       counts({{total.covered, "pixel(s) covered"},
-                               {total.written, "nearer than Z(i, j) and written"}}));
-        s.note = show ? grids(frame, depth) : "";
+        Step& s = steps->add(say(kPolygonLabel, k + 1, p.label), {}, {},
+                             counts({{total.covered, "pixel(s) covered"},
+                                     {total.written, "nearer than Z(i, j) and written"}}));
+        s.note = show ? grids(frame, depth) : Said();
         if (degenerate > 0)
-          steps->warn("Degenerate polygon " + std::to_string(k + 1),
-                      std::to_string(degenerate) +
-                          " of its fan triangles have zero area in x, y and cover no pixels.");
+          steps->warn(say(kDegeneratePolygon, k + 1), say(kFanTrianglesZeroArea, degenerate));
       }
     }
     Answers out;
@@ -222,8 +254,8 @@ struct ZBuffer {
     out.set("depth", d);
     out.set("steps", Value::word_list(after));
     if (steps) {
-      steps->add("Final frame buffer", {}, {}, word(joined(frame_rows(frame)))).note =
-          "Rows top first, joined by “/”.";
+      steps->add(say(kFinalFrameBuffer), {}, {}, word(Said::verbatim(joined(frame_rows(frame)))))
+          .note = say(kRowsTopFirst);
       steps->yields("frame");
       steps->yields("depth");
       steps->yields("steps");

@@ -10,15 +10,80 @@
 #include <utility>
 #include <vector>
 
+#include "solver/derivation/said.hpp"
 #include "solver/derivation/value.hpp"
 #include "solver/numeric/precision.hpp"
 #include "solver/viewing/transforms.hpp"
 
 namespace frustum {
 
+// What NumericOut says: the inputs' and the values' range warnings, and a decision left to exact
+// arithmetic.
+inline constexpr Phrase kNumericInputsOverflow{"Inputs overflow", "入力のオーバーフロー",
+                                               "Переполнение входных данных"};
+inline constexpr Phrase kNumericInputsUnderflow{"Inputs underflow", "入力のアンダーフロー",
+                                                "Исчезновение порядка входных данных"};
+inline constexpr Phrase kNumericInputsOverflowDecided{
+    "some inputs exceed the range of {0} and became infinite; the values computed from them are "
+    "meaningless, and every discrete answer was decided on the exact inputs.",
+    "一部の入力は {0} の範囲を超えて無限大になった. それから計算した値は意味をもたないが, "
+    "離散的な答えはすべて厳密な入力で決めた.",
+    "некоторые входные данные выходят за диапазон {0} и стали бесконечными; вычисленные из них "
+    "значения бессмысленны, а каждый дискретный ответ решён по точным входным данным."};
+inline constexpr Phrase kNumericInputsOverflowMeaningless{
+    "some inputs exceed the range of {0} and became infinite; the values computed from them are "
+    "meaningless.",
+    "一部の入力は {0} の範囲を超えて無限大になった. それから計算した値は意味をもたない.",
+    "некоторые входные данные выходят за диапазон {0} и стали бесконечными; вычисленные из них "
+    "значения бессмысленны."};
+inline constexpr Phrase kNumericInputsUnderflowDecided{
+    "some inputs are below the normal range of {0} and were rounded to subnormal numbers or to 0: "
+    "the values computed from them keep few or none of their digits, and every discrete answer was "
+    "decided on the exact inputs.",
+    "一部の入力は {0} の正規化数の範囲より小さく, 非正規化数か 0 に丸められた. "
+    "それから計算した値には正しい桁がほとんど残らないが, 離散的な答えはすべて厳密な入力で決めた.",
+    "некоторые входные данные меньше нормального диапазона {0} и округлены до субнормальных чисел "
+    "или до 0: вычисленные из них значения сохраняют мало верных цифр или ни одной, а каждый "
+    "дискретный ответ решён по точным входным данным."};
+inline constexpr Phrase kNumericInputsUnderflowFewDigits{
+    "some inputs are below the normal range of {0} and were rounded to subnormal numbers or to 0: "
+    "the values computed from them keep few or none of their digits.",
+    "一部の入力は {0} の正規化数の範囲より小さく, 非正規化数か 0 に丸められた. "
+    "それから計算した値には正しい桁がほとんど残らない.",
+    "некоторые входные данные меньше нормального диапазона {0} и округлены до субнормальных чисел "
+    "или до 0: вычисленные из них значения сохраняют мало верных цифр или ни одной."};
+inline constexpr Phrase kNumericDecidedByExactArithmetic{
+    "{0}: decided by exact arithmetic on the given numbers (the {1} computation could not settle "
+    "it).",
+    "{0}: 与えられた数の厳密計算で決めた ({1} の計算では決められなかった).",
+    "{0}: решено точной арифметикой на данных числах (вычисление в {1} не смогло это решить)."};
+inline constexpr Phrase kNumericOverflow{"Overflow", "オーバーフロー", "Переполнение"};
+inline constexpr Phrase kNumericValuesOverflow{
+    "some values exceed the range of {0} and are infinite; exact answers are computed up to about "
+    "1.8·10³⁰⁸ (the range of a double).",
+    "一部の値は {0} の範囲を超えて無限大になった. 厳密計算の答えは約 1.8·10³⁰⁸ (double の範囲) "
+    "まで求められる.",
+    "некоторые значения выходят за диапазон {0} и равны бесконечности; точные ответы вычисляются "
+    "до примерно 1,8·10³⁰⁸ (диапазон double)."};
+inline constexpr Phrase kNumericNotANumber{"Not a number", "非数", "Не число"};
+inline constexpr Phrase kNumericValuesNotANumber{
+    "some values are not a number: an operation without a value in {0} (0/0 or ∞ − ∞, after a "
+    "cancellation or an overflow); solve with --precision exact for the exact values.",
+    "一部の値は非数になった: {0} で値をもたない演算 (桁落ちやオーバーフローの後の 0/0 や ∞ − ∞) "
+    "による. 厳密な値は `--precision exact` で求められる.",
+    "некоторые значения не являются числом: операция без значения в {0} (0/0 или ∞ − ∞ после "
+    "потери точности или переполнения); точные значения даёт `--precision exact`."};
+inline constexpr Phrase kNumericUnderflow{"Underflow", "アンダーフロー", "Исчезновение порядка"};
+inline constexpr Phrase kNumericValuesUnderflow{
+    "some values are below the normal range of {0} (subnormal, or flushed to 0): they keep few or "
+    "none of their digits.",
+    "一部の値は {0} の正規化数の範囲より小さい (非正規化数か 0): 正しい桁はほとんど残らない.",
+    "некоторые значения меньше нормального диапазона {0} (субнормальные или обращены в 0): в них "
+    "мало верных цифр или нет ни одной."};
+
 struct NumericWarning {
-  std::string title;
-  std::string text;
+  Said title;
+  Said text;
 };
 
 struct NumericResult {
@@ -30,7 +95,7 @@ struct NumericResult {
   std::vector<std::pair<std::string, std::vector<long double>>> raw;
   std::vector<NumericWarning> warnings;
   // Which formulation the numeric path used where it had a choice ("plane method", "barycentric").
-  std::vector<std::string> notes;
+  std::vector<Said> notes;
 
   const std::vector<long double>* find_raw(const std::string& name) const {
     for (const auto& [n, v] : raw)
@@ -113,10 +178,8 @@ class NumericOut {
   void word(const std::string& name, const std::string& w) {
     r_.answers.set(name, Value::category(w));
   }
-  void warn(std::string title, std::string text) {
-    r_.warnings.push_back({std::move(title), std::move(text)});
-  }
-  void note(std::string text) { r_.notes.push_back(std::move(text)); }
+  void warn(Said title, Said text) { r_.warnings.push_back({std::move(title), std::move(text)}); }
+  void note(Said text) { r_.notes.push_back(std::move(text)); }
   // A value whose true magnitude is below the normal range even where it came out 0 (a
   // product scaled back by a power of two): warned as underflow.
   void underflow() { underflow_ = true; }
@@ -124,41 +187,28 @@ class NumericOut {
   // `discrete_exact`: the kind decides its discrete answers on the exact inputs (say so).
   void inputs(const InputRange& range, bool discrete_exact = true) {
     const std::string name(to_string(r_.precision));
-    const std::string decided =
-        discrete_exact ? ", and every discrete answer was decided on the exact inputs." : ".";
     if (range.overflow)
-      warn("Inputs overflow",
-           "some inputs exceed the range of " + name +
-               " and became infinite; the values computed from them are meaningless" + decided);
+      warn(say(kNumericInputsOverflow),
+           say(discrete_exact ? kNumericInputsOverflowDecided : kNumericInputsOverflowMeaningless,
+               name));
     if (range.underflow)
-      warn("Inputs underflow",
-           "some inputs are below the normal range of " + name +
-               " and were rounded to subnormal numbers or to 0: the values computed from "
-               "them keep few or none of their digits" +
-               decided);
+      warn(say(kNumericInputsUnderflow),
+           say(discrete_exact ? kNumericInputsUnderflowDecided : kNumericInputsUnderflowFewDigits,
+               name));
   }
-  // A discrete answer decided by the exact fallback (predicates.hpp), in neutral words.
-  void exact_decision(const std::string& what) {
-    note(what + ": decided by exact arithmetic on the given numbers (the " +
-         std::string(to_string(r_.precision)) + " computation could not settle it)");
+  // A discrete answer decided by the exact fallback (predicates.hpp), in neutral words: `what`
+  // is decided ("whether the normal is zero").
+  void exact_decision(const Said& what) {
+    note(say(kNumericDecidedByExactArithmetic, what, to_string(r_.precision)));
   }
 
   NumericResult take() {
     const std::string name(to_string(r_.precision));
     // The exact backend is not unlimited: its answers are printed as doubles too and are
     // refused beyond double's range.
-    if (overflow_)
-      warn("Overflow", "some values exceed the range of " + name +
-                           " and are infinite; exact answers are computed up to about 1.8·10³⁰⁸ "
-                           "(the range of a double).");
-    if (not_a_number_)
-      warn("Not a number", "some values are not a number: an operation without a value in " + name +
-                               " (0/0 or ∞ − ∞, after a cancellation or an overflow); solve with "
-                               "--precision exact for the exact values.");
-    if (underflow_)
-      warn("Underflow",
-           "some values are below the normal range of " + name +
-               " (subnormal, or flushed to 0): they keep few or none of their digits.");
+    if (overflow_) warn(say(kNumericOverflow), say(kNumericValuesOverflow, name));
+    if (not_a_number_) warn(say(kNumericNotANumber), say(kNumericValuesNotANumber, name));
+    if (underflow_) warn(say(kNumericUnderflow), say(kNumericValuesUnderflow, name));
     return std::move(r_);
   }
 

@@ -20,6 +20,8 @@ namespace {
 using Pen = PlaneDrawing::Pen;
 using Place = PlaneDrawing::Place;
 
+constexpr Phrase kPixel{"pixel", "画素", "пиксель"};
+
 // A given number (exact text such as 5/2 or sqrt(3) allowed); throws when it is not one.
 double number(const YAML::Node& n) {
   if (!n.IsScalar()) throw std::invalid_argument("not a number");
@@ -81,7 +83,7 @@ std::optional<PlaneDrawing> plane_drawing(const ProblemSpec& p, Lang lang) {
     static const char* const kNames[] = {"A", "B", "C"};
     for (std::size_t i = 0; i < tri.size() && i < 3; ++i)
       d.label(tri[i], kNames[i], true, Place::AboveRight);
-    if (pixel) d.label(*pixel, tr("pixel", lang), false, Place::BelowRight);
+    if (pixel) d.label(*pixel, std::string(kPixel.in(lang)), false, Place::BelowRight);
     return d;
   }
   if (p.kind == "scanline" && g["y"] && g["polygons"]) {

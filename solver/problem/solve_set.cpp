@@ -6,6 +6,7 @@
 
 #include "solver/input/given_reader.hpp"
 #include "solver/input/text_reader.hpp"
+#include "solver/problem/conventions_note.hpp"
 #include "solver/problem/variants.hpp"
 
 namespace frustum {
@@ -53,8 +54,9 @@ ProblemResult solve_problem(const ProblemSpec& spec, const std::string& file, bo
     }
   solve_located(spec, file, r, [&] {
     // The conventions line only where a convention can change the answers.
-    if (const std::string c = describe(spec.conventions, spec.info->uses); with_steps && !c.empty())
-      r.derivation.note("Conventions", c);
+    if (with_steps)
+      if (const Said c = conventions_note(spec.conventions, spec.info->uses); !c.empty())
+        r.derivation.note(say(kConventionsTitle), c);
     Answers answers = !with_steps && spec.drawn_answers
                           ? *spec.drawn_answers
                           : spec.info->solve(spec.given, with_steps ? &r.derivation : nullptr);

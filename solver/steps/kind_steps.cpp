@@ -8,15 +8,108 @@
 
 #include "solver/core/exact_vector.hpp"
 #include "solver/core/rational_power.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/numeric/condition.hpp"
+#include "solver/steps/digits_said.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/viewing/projection.hpp"
 
 namespace frustum {
+
+namespace {
+
+constexpr Phrase kIllConditionedNormal{"Ill-conditioned normal", "条件の悪い法線",
+                                       "Плохо обусловленная нормаль"};
+constexpr Phrase kNormalDirectionIllConditioned{"The normal's direction is ill-conditioned ({0}).",
+                                                "法線の向きは条件が悪い ({0}).",
+                                                "Направление нормали плохо обусловлено ({0})."};
+constexpr Phrase kUnitNormal{"Unit normal", "単位法線", "Единичная нормаль"};
+constexpr Phrase kEdgeVectors{"Edge vectors", "辺ベクトル", "Векторы рёбер"};
+constexpr Phrase kNormal{"Normal", "法線", "Нормаль"};
+constexpr Phrase kNormalLeftHanded{
+    "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
+    "法線 (左手系: n = e₁ × e₀, 反時計回り = 表)",
+    "Нормаль (левая система: n = e₁ × e₀, против часовой стрелки = лицевая)"};
+constexpr Phrase kLeftHandedTriangleFront{
+    "In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is the side "
+    "of e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite normal, that of "
+    "the mirror image.",
+    "左手系では p₀, p₁, p₂ が反時計回りに見える側は e₁ × e₀ = −(e₀ × e₁) の側である: 右手系の式 "
+    "e₀ × e₁ は逆向きの法線, すなわち鏡像の法線を与える.",
+    "В левой системе координат сторона, откуда p₀, p₁, p₂ идут против часовой стрелки, — это "
+    "сторона e₁ × e₀ = −(e₀ × e₁): формула правой системы e₀ × e₁ даёт противоположную нормаль, "
+    "нормаль зеркального образа."};
+constexpr Phrase kNormalRightHanded{"Normal (n = e₀ × e₁, counter-clockwise = front)",
+                                    "法線 (n = e₀ × e₁, 反時計回り = 表)",
+                                    "Нормаль (n = e₀ × e₁, против часовой стрелки = лицевая)"};
+constexpr Phrase kNewellNormalLeftHanded{"Normal of the {0}-gon by Newell's method, left-handed",
+                                         "Newell の方法による {0} 角形の法線 (左手系)",
+                                         "Нормаль {0}-угольника методом Newell, левая система"};
+constexpr Phrase kLeftHandedNewellSign{
+    "In left-handed coordinates the counter-clockwise side's normal is the right-handed sum with "
+    "its sign changed (e₁ × e₀ for a triangle).",
+    "左手系では反時計回りに見える側の法線は右手系の和の符号を変えたもの (三角形では e₁ × e₀).",
+    "В левой системе координат нормаль стороны, откуда обход идёт против часовой стрелки, — это "
+    "сумма правой системы с обратным знаком (для треугольника e₁ × e₀)."};
+constexpr Phrase kNewellNormal{"Normal of the {0}-gon by Newell's method",
+                               "Newell の方法による {0} 角形の法線",
+                               "Нормаль {0}-угольника методом Newell"};
+constexpr Phrase kNewellSumsEveryPair{
+    "Newell's method sums every edge pair, so it stays accurate when some edges are nearly "
+    "parallel or nearly zero (where eᵢ × eᵢ₊₁ loses accuracy), and gives twice the vector area "
+    "(the same direction as eᵢ × eᵢ₊₁ for a convex polygon).",
+    "Newell の方法はすべての辺の組を足し合わせるので, ほぼ平行な辺やほぼ長さ 0 "
+    "の辺があっても精度を保ち (eᵢ × eᵢ₊₁ では精度が落ちる), ベクトル面積の 2 倍を与える "
+    "(凸多角形では eᵢ × eᵢ₊₁ と同じ向き).",
+    "Метод Newell суммирует все пары рёбер, поэтому остаётся точным, когда некоторые рёбра почти "
+    "параллельны или почти нулевые (где eᵢ × eᵢ₊₁ теряет точность), и даёт удвоенную векторную "
+    "площадь (то же направление, что eᵢ × eᵢ₊₁, для выпуклого многоугольника)."};
+constexpr Phrase kRepeatedVertex{"Repeated vertex", "重複した頂点", "Повторяющаяся вершина"};
+constexpr Phrase kZeroEdge{
+    "e{0} = p{1} − p{2} is the zero vector (a repeated vertex); the normal uses the other edges.",
+    "e{0} = p{1} − p{2} は零ベクトル (重複した頂点) なので, 法線は残りの辺から求める.",
+    "e{0} = p{1} − p{2} — нулевой вектор (повторяющаяся вершина); нормаль строится по остальным "
+    "рёбрам."};
+constexpr Phrase kNearlyParallelEdges{"Nearly parallel edges", "ほぼ平行な辺",
+                                      "Почти параллельные рёбра"};
+constexpr Phrase kEdgesNearlyParallel{
+    "e{0} and e{1} are nearly parallel (sin θ ≈ {2}); e × e loses about {3} of double precision's "
+    "16 digits here, but this normal is computed exactly.",
+    "e{0} と e{1} はほぼ平行 (sin θ ≈ {2}). ここで e × e は double の 16 桁のうちおよそ {3} "
+    "桁を失うが, この法線は厳密に計算している.",
+    "e{0} и e{1} почти параллельны (sin θ ≈ {2}); здесь e × e теряет около {3} из 16 цифр double, "
+    "но эта нормаль вычислена точно."};
+constexpr Phrase kNonPlanarPolygon{"Non-planar polygon", "平面でない多角形",
+                                   "Неплоский многоугольник"};
+constexpr Phrase kVertexOffPlane{
+    "vertex p{0} is not in the plane of the others; the normal is the best-fit (Newell) "
+    "direction.",
+    "頂点 p{0} は他の頂点の平面上にない. 法線は最もよく当てはまる (Newell の) 向きとする.",
+    "вершина p{0} не лежит в плоскости остальных; нормаль — направление наилучшего приближения "
+    "(Newell)."};
+constexpr Phrase kIsPixelInside{"Is the pixel inside the projected triangle?",
+                                "画素は投影された三角形の内側か?",
+                                "Лежит ли пиксель внутри спроецированного треугольника?"};
+constexpr Phrase kSignsAgree{
+    "The signs agree (0 = on an edge), so the pixel is inside the closed triangle.",
+    "符号がそろっている (0 = 辺上) ので, 画素は閉じた三角形の内側にある.",
+    "Знаки совпадают (0 — на ребре), поэтому пиксель внутри замкнутого треугольника."};
+constexpr Phrase kSignsDifferPlane{
+    "The signs differ, so the pixel is outside; the plane still gives its z.",
+    "符号がそろっていないので画素は外側にある. それでも平面から z は求まる.",
+    "Знаки различаются, поэтому пиксель снаружи; плоскость всё равно даёт его z."};
+constexpr Phrase kSignsDifferInterpolation{
+    "The signs differ, so the pixel is outside (some λᵢ is negative); the interpolation still "
+    "gives its z.",
+    "符号がそろっていないので画素は外側にある (負の λᵢ がある). それでも補間から z は求まる.",
+    "Знаки различаются, поэтому пиксель снаружи (некоторое λᵢ отрицательно); интерполяция всё "
+    "равно даёт его z."};
+
+}  // namespace
 
 std::array<Exact, 4> carried_plane(const Vec3<Exact>& n, const std::vector<Vec3<Exact>>& points,
                                    const std::optional<std::vector<Exact>>& student) {
@@ -44,7 +137,7 @@ std::optional<Value> carried_points(const Answers& student,
     for (std::size_t j = 0; j < n; ++j)
       paper(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (*m)[i * n + j];
   try {
-    return transform_points_with_steps(paper_form(paper, api), points, "", "P", nullptr, api);
+    return transform_points_with_steps(paper_form(paper, api), points, {}, "P", nullptr, api);
   } catch (const std::exception&) {
     return std::nullopt;  // a point sent to infinity (w = 0) by the student's matrix
   }
@@ -96,10 +189,9 @@ std::optional<Value> carried_inverse(const Answers& student, const std::string& 
   return Value::matrix(rows);
 }
 
-void warn_condition(Derivation* steps, double kappa, const std::string& title,
-                    const std::string& what) {
+void warn_condition(Derivation* steps, double kappa, const Said& title, const Phrase& sentence) {
   if (!steps || !(kappa > kIllConditioned)) return;
-  steps->warn(title, what + " is ill-conditioned (" + digits_sentence(kappa) + ").");
+  steps->warn(title, say(sentence, digits_said(kappa)));
 }
 
 namespace {
@@ -192,7 +284,7 @@ Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps) {
 
 void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* steps) {
   if (steps) {
-    steps->add("Unit normal",
+    steps->add(say(kUnitNormal),
                math("n̂ = n / ‖n‖,  ‖n‖ = √(nₓ² + n_y² + n_z²)",
                     "\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
                     "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
@@ -223,7 +315,7 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
   if (p.size() == 3) {
     const Vec3<Exact> e0 = edge(p, 0), e1 = edge(p, 1);
     if (steps) {
-      steps->add("Edge vectors",
+      steps->add(say(kEdgeVectors),
                  math("e₀ = p₁ − p₀,  e₁ = p₂ − p₁",
                       "\\mathbf{e}_0 = \\mathbf{p}_1 - \\mathbf{p}_0,\\; \\mathbf{e}_1 = "
                       "\\mathbf{p}_2 - \\mathbf{p}_1"),
@@ -232,16 +324,13 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
                      math(",  e₁ = ", ",\\; \\mathbf{e}_1 = ") + vec(e1));
       if (left_handed)
         steps
-            ->add("Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
+            ->add(say(kNormalLeftHanded),
                   math("n = e₁ × e₀", "\\mathbf{n} = \\mathbf{e}_1 \\times \\mathbf{e}_0"),
                   math("n = ", "\\mathbf{n} = ") + vec(e1) + math(" × ", " \\times ") + vec(e0),
                   math("n = ", "\\mathbf{n} = ") + vec(n))
-            .note =
-            "In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is "
-            "the side of e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite "
-            "normal, that of the mirror image.";
+            .note = say(kLeftHandedTriangleFront);
       else
-        steps->add("Normal (n = e₀ × e₁, counter-clockwise = front)",
+        steps->add(say(kNormalRightHanded),
                    math("n = e₀ × e₁", "\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
                    math("n = ", "\\mathbf{n} = ") + vec(e0) + math(" × ", " \\times ") + vec(e1),
                    math("n = ", "\\mathbf{n} = ") + vec(n));
@@ -249,47 +338,31 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
   } else {
     if (steps && left_handed)
       steps
-          ->add(fmt::format("Normal of the {}-gon by Newell's method, left-handed", p.size()),
+          ->add(say(kNewellNormalLeftHanded, p.size()),
                 math("n = −Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
                      "\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
                      "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
                 {}, math("n = ", "\\mathbf{n} = ") + vec(n))
-          .note =
-          "In left-handed coordinates the counter-clockwise side's normal is the right-handed "
-          "sum with its sign changed (e₁ × e₀ for a triangle).";
+          .note = say(kLeftHandedNewellSign);
     else if (steps)
       steps
-          ->add(fmt::format("Normal of the {}-gon by Newell's method", p.size()),
+          ->add(say(kNewellNormal, p.size()),
                 math("n = Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
                      "\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
                      "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
                 {}, math("n = ", "\\mathbf{n} = ") + vec(n))
-          .note =
-          "Newell's method sums every edge pair, so it stays accurate when some edges "
-          "are nearly parallel or nearly zero (where eᵢ × eᵢ₊₁ loses accuracy), and gives twice "
-          "the "
-          "vector area (the same direction as eᵢ × eᵢ₊₁ for a convex polygon).";
+          .note = say(kNewellSumsEveryPair);
   }
   if (steps) {
     for (std::size_t i : a.zero_edges)
-      steps->warn("Repeated vertex",
-                  fmt::format("e{} = p{} − p{} is the zero vector (a repeated vertex); the "
-                              "normal uses the other edges.",
-                              i, (i + 1) % p.size(), i));
+      steps->warn(say(kRepeatedVertex), say(kZeroEdge, i, (i + 1) % p.size(), i));
     if (a.min_sine < kNearParallelSine)
-      steps->warn("Nearly parallel edges",
-                  fmt::format("e{} and e{} are nearly parallel (sin θ ≈ {}); e × e loses about "
-                              "{:.0f} of double precision's 16 digits here, but this normal is "
-                              "computed exactly.",
-                              a.worst_pair, (a.worst_pair + 1) % p.size(),
-                              format_approx(a.min_sine), std::log10(a.condition)));
-    warn_condition(steps, normal_condition(to_doubles(p)), "Ill-conditioned normal",
-                   "The normal's direction");
-    if (!a.planar)
-      steps->warn("Non-planar polygon",
-                  fmt::format("vertex p{} is not in the plane of the others; the normal is the "
-                              "best-fit (Newell) direction.",
-                              a.off_plane_vertex));
+      steps->warn(say(kNearlyParallelEdges),
+                  say(kEdgesNearlyParallel, a.worst_pair, (a.worst_pair + 1) % p.size(),
+                      format_approx(a.min_sine), fmt::format("{:.0f}", std::log10(a.condition))));
+    warn_condition(steps, normal_condition(to_doubles(p)), say(kIllConditionedNormal),
+                   kNormalDirectionIllConditioned);
+    if (!a.planar) steps->warn(say(kNonPlanarPolygon), say(kVertexOffPlane, a.off_plane_vertex));
   }
   return n;
 }
@@ -409,16 +482,16 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
                   "\\overrightarrow{" + e + "} = " + to + " - " + from + " = ") +
              vec(value);
     };
-    steps->add("Edge vectors", {}, {},
+    steps->add(say(kEdgeVectors), {}, {},
                edge_text(order.first, u) + math(",  ", ",\\; ") + edge_text(order.second, v));
-    steps->add("Normal",
+    steps->add(say(kNormal),
                math("n = " + order.first + " × " + order.second,
                     "\\mathbf{n} = \\overrightarrow{" + order.first +
                         "} \\times \\overrightarrow{" + order.second + "}"),
                math("n = ", "\\mathbf{n} = ") + vec(u) + math(" × ", " \\times ") + vec(v),
                math("n = ", "\\mathbf{n} = ") + vec(n));
     warn_condition(steps, normal_condition(to_doubles({abc[0], abc[1], abc[2]})),
-                   "Ill-conditioned normal", "The normal's direction");
+                   say(kIllConditionedNormal), kNormalDirectionIllConditioned);
   }
   return n;
 }
@@ -437,19 +510,16 @@ bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
       return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0");
     };
     steps
-        ->add("Is the pixel inside the projected triangle?",
+        ->add(say(kIsPixelInside),
               math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",
                    "\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, "
                    "y_S),\\; "
                    "\\operatorname{sign} E_{CA}(x_S, y_S)"),
               sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
-              word(inside ? "inside" : "outside"))
-        .note =
-        inside ? "The signs agree (0 = on an edge), so the pixel is inside the closed triangle."
-        : z_from == ZFrom::Plane
-            ? "The signs differ, so the pixel is outside; the plane still gives its z."
-            : "The signs differ, so the pixel is outside (some λᵢ is negative); the interpolation "
-              "still gives its z.";
+              word(inside ? words::kInside : words::kOutside))
+        .note = say(inside                   ? kSignsAgree
+                    : z_from == ZFrom::Plane ? kSignsDifferPlane
+                                             : kSignsDifferInterpolation);
     steps->yields("inside");
   }
   return inside;

@@ -87,9 +87,9 @@ std::optional<Value> carried_inverse(const Answers& student, const std::string& 
                                      std::size_t n);
 
 // A warning that an answer is ill-conditioned (κ above kIllConditioned in condition.hpp):
-// the condition estimate and the digits float, double and long double would keep.
-void warn_condition(Derivation* steps, double kappa, const std::string& title,
-                    const std::string& what);
+// `sentence` ("The normal's direction is ill-conditioned ({0}).") with the condition estimate
+// and the digits float, double and long double would keep in its slot.
+void warn_condition(Derivation* steps, double kappa, const Said& title, const Phrase& sentence);
 
 // "p0, p1, p2" style names.
 std::string point_name(const std::string& stem, std::size_t i);

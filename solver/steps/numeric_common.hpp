@@ -19,9 +19,26 @@
 #include "solver/geometry/zero_vector.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/numeric_result.hpp"
+#include "solver/steps/digits_said.hpp"
 #include "solver/steps/kind_steps.hpp"
 
 namespace frustum {
+
+// What the numeric paths' shared warnings and notes say.
+inline constexpr Phrase kNumericIllConditioned{
+    "{0} is ill-conditioned ({1}): {2}; solve with --precision exact for the exact value.",
+    "{0} は条件が悪い ({1}): {2}. 厳密な値は `--precision exact` で解くこと.",
+    "{0} плохо обусловлено ({1}): {2}; точное значение даёт решение с `--precision exact`."};
+inline constexpr Phrase kNumericComputedExactly{
+    "{0}: computed exactly on the given numbers (the floating-point computation could not tell it "
+    "from zero); only its final rounding is in it.",
+    "{0}: 与えられた数の厳密計算で求めた (浮動小数点の計算では 0 と区別できなかった). "
+    "誤差は最後の丸めだけ.",
+    "{0}: вычислено точно на данных числах (вычисление с плавающей точкой не отличило это от "
+    "нуля); в нём только последнее округление."};
+inline constexpr Phrase kNumericWhetherNormalIsZero{"whether the normal is zero",
+                                                    "法線がゼロかどうか", "равна ли нормаль нулю"};
+inline constexpr Phrase kNumericTheNormal{"the normal", "法線", "нормаль"};
 
 // An exact input in T, recording in `range` (when given) whether it left T's normal range.
 template <typename T>
@@ -85,14 +102,13 @@ T scaled_by(const T& v, int k, bool& underflow) {
 
 // The warning a numeric path gives when its answer's condition is poor.
 template <typename T>
-void warn_condition(NumericOut<T>& out, Precision p, double kappa, const std::string& title,
-                    const std::string& what) {
+void warn_condition(NumericOut<T>& out, Precision p, double kappa, const Said& title,
+                    const Said& what) {
   if (!(kappa > kIllConditioned) || p == Precision::Exact) return;
   out.warn(title,
-           fmt::format("{} is ill-conditioned ({}): {}; solve with --precision exact for "
-                       "the exact value.",
-                       what, std::isfinite(kappa) ? fmt::format("κ ≈ {:.1e}", kappa) : "κ = ∞",
-                       digits_sentence(kappa, p)));
+           say(kNumericIllConditioned, what,
+               std::isfinite(kappa) ? fmt::format("κ ≈ {:.1e}", kappa) : std::string("κ = ∞"),
+               backend_digits(kappa, p)));
 }
 
 // A polygon's normal in T: e₀ × e₁ for a triangle (seed 003), Newell's Σ dᵢ × dᵢ₊₁ (dᵢ = pᵢ − p₀)
@@ -200,18 +216,16 @@ NormalPair<T> polygon_normal(const Polygon3<T>& p, const Polygon3<Exact>& exact_
 // A value the exact fallback produced (its nearest T): said, since no rounding of the
 // computation is in it and the ill-conditioning warnings do not apply to it.
 template <typename T>
-void report_exact_value(NumericOut<T>& out, const std::string& what) {
-  out.note(what +
-           ": computed exactly on the given numbers (the floating-point computation could not "
-           "tell it from zero); only its final rounding is in it");
+void report_exact_value(NumericOut<T>& out, const Said& what) {
+  out.note(say(kNumericComputedExactly, what));
 }
 
 template <typename T>
 void report_normal(NumericOut<T>& out, const NormalPair<T>& n) {
   if (n.underflow) out.underflow();
   out.vector("normal", n.n);
-  if (n.exact_zero_test) out.exact_decision("whether the normal is zero");
-  if (n.exact_value) report_exact_value(out, "the normal");
+  if (n.exact_zero_test) out.exact_decision(say(kNumericWhetherNormalIsZero));
+  if (n.exact_value) report_exact_value(out, say(kNumericTheNormal));
   if (n.zero) {
     out.null("unit_normal");
   } else {

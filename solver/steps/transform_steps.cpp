@@ -10,6 +10,49 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kTranslate{"translate {0}", "平行移動 {0}", "перенос на {0}"};
+constexpr Phrase kScale{"scale {0}", "拡大縮小 {0}", "масштабирование {0}"};
+constexpr Phrase kRotateX{"rotate_x {0}", "x 軸まわりに {0} 回転", "поворот вокруг оси x на {0}"};
+constexpr Phrase kRotateY{"rotate_y {0}", "y 軸まわりに {0} 回転", "поворот вокруг оси y на {0}"};
+constexpr Phrase kRotateZ{"rotate_z {0}", "z 軸まわりに {0} 回転", "поворот вокруг оси z на {0}"};
+constexpr Phrase kRotate{"rotate {0}", "{0} 回転", "поворот на {0}"};
+constexpr Phrase kRotateAbout{"rotate {0} about {1}", "{1} を軸に {0} 回転",
+                              "поворот на {0} вокруг {1}"};
+constexpr Phrase kShear{"shear {0}", "せん断 {0}", "сдвиг {0}"};
+constexpr Phrase kShearEntries{"shear (h_ij adds coordinate j to coordinate i)",
+                               "せん断 (h_ij は座標 j を座標 i に加える)",
+                               "сдвиг (h_ij прибавляет координату j к координате i)"};
+constexpr Phrase kZeroScaleFactor{
+    "a zero scale factor flattens space: the composite has no inverse",
+    "拡大縮小の係数 0 は空間を押しつぶす: 合成変換は逆行列をもたない",
+    "нулевой коэффициент масштабирования сплющивает пространство: у композиции нет обратной "
+    "матрицы"};
+constexpr Phrase kRodrigues{
+    "Rodrigues' formula R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, written entry by entry, for the unit "
+    "axis u = (x, y, z).",
+    "Rodrigues の公式 R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ を, 単位軸 u = (x, y, z) "
+    "について成分ごとに書いたもの.",
+    "Формула Родрига R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, записанная поэлементно для единичной оси u "
+    "= (x, y, z)."};
+constexpr Phrase kAxisNormalisedFirst{"The axis is normalised first: (x, y, z) = {0}.",
+                                      "軸をまず正規化する: (x, y, z) = {0}.",
+                                      "Сначала ось нормируется: (x, y, z) = {0}."};
+constexpr Phrase kStepTitle{"A{0}: {1}", "A{0}: {1}", "A{0}: {1}"};
+constexpr Phrase kRowVectorsLeftmost{
+    "DirectX multiplies row vectors: P′ = P·M, so the step applied first stands leftmost and "
+    "every matrix is the transpose of its column-vector form (a translation in the bottom row, as "
+    "XMMatrixTranslation builds it).",
+    "DirectX は行ベクトルを掛ける: P′ = P·M なので, 最初に適用する変換が一番左に来て, "
+    "どの行列も列ベクトルの形の転置になる (平行移動は最下行, XMMatrixTranslation と同じ).",
+    "DirectX умножает строки-векторы: P′ = P·M, поэтому первое применяемое преобразование стоит "
+    "слева, а каждая матрица — транспонированная форма для столбцов (перенос в нижней строке, как "
+    "строит XMMatrixTranslation)."};
+constexpr Phrase kColumnVectorsRightmost{
+    "Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = A₃A₂A₁P).",
+    "列ベクトル: P′ = M·P なので, 最初に適用する変換が一番右に来る (P′ = A₃A₂A₁P).",
+    "Столбцы-векторы: P′ = M·P, поэтому первое применяемое преобразование стоит справа (P′ = "
+    "A₃A₂A₁P)."};
+
 // The inverse of one step from its kind: translations negate, scalings take reciprocals,
 // rotations transpose; only a shear (rational entries) is inverted by elimination. The
 // composite's inverse is then the product in reverse order, which never asks GiNaC to
@@ -101,16 +144,20 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
   const std::size_t n = static_cast<std::size_t>(dim);
   if (k == "translate") {
     const std::vector<Exact> v = s.numbers(k, n);
-    t = {"translate " + vec(v).unicode, translate(v), ""};
+    t.heading = say(kTranslate, vec(v).unicode);
+    t.matrix = translate(v);
   } else if (k == "scale") {
     std::vector<Exact> v = s.is_list(k) ? s.numbers(k, n) : std::vector<Exact>(n, s.number(k));
-    t = {"scale " + vec(v).unicode, scale(v), ""};
+    t.heading = say(kScale, vec(v).unicode);
+    t.matrix = scale(v);
     for (const Exact& x : v)
-      if (x.is_zero()) t.note = "a zero scale factor flattens space: the composite has no inverse";
+      if (x.is_zero()) t.note = say(kZeroScaleFactor);
   } else if (k == "rotate_x" || k == "rotate_y" || k == "rotate_z") {
     if (dim != 3) s.fail(k, "rotations about x, y, z are 3D; in 2D use rotate");
     const Exact a = read_angle(s, k, c.angles);
-    t = {k + " " + angle_text(a, c.angles).unicode, rotate_axis_index(k[7] - 'x', a), ""};
+    const Phrase& about = k[7] == 'x' ? kRotateX : k[7] == 'y' ? kRotateY : kRotateZ;
+    t.heading = say(about, angle_text(a, c.angles).unicode);
+    t.matrix = rotate_axis_index(k[7] - 'x', a);
     if (dim == 3) {
       t.formula = axis_rotation_formula(k[7] - 'x');
       t.substitution = cos_sin(a, c.angles);
@@ -120,7 +167,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
   } else if (k == "rotate") {
     if (dim == 2) {
       const Exact a = read_angle(s, k, c.angles);
-      t = {"rotate " + angle_text(a, c.angles).unicode, rotate_2d(a), ""};
+      t.heading = say(kRotate, angle_text(a, c.angles).unicode);
+      t.matrix = rotate_2d(a);
       t.formula = math(
           "R = [c −s 0; s c 0; 0 0 1]",
           "R(\\theta) = \\begin{bmatrix} c & -s & 0 \\\\ s & c & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}");
@@ -134,21 +182,17 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
       const Exact a = read_angle(r, "angle", c.angles);
       r.finish();
       const Vec3<Exact> u = unit(axis);
-      t = {"rotate " + angle_text(a, c.angles).unicode + " about " + vec(axis).unicode,
-           rotate_about(u, a), ""};
+      t.heading = say(kRotateAbout, angle_text(a, c.angles).unicode, vec(axis).unicode);
+      t.matrix = rotate_about(u, a);
       t.formula = axis_angle_formula();
       t.substitution = math("(x, y, z) = ", "(x, y, z) = ") + vec(u, true) + math(",  ", ",\\; ") +
                        cos_sin(a, c.angles) + math(",  1 − c = ", ",\\; 1 - c = ") +
                        exact(canonical(1 - GiNaC::cos(a)));
-      t.note =
-          "Rodrigues' formula R = c·I + s·[u]ₓ + (1 − c)·u·uᵀ, written entry by entry, for the "
-          "unit axis "
-          "u = (x, y, z).";
+      t.note = say(kRodrigues);
       t.angle = a;
       t.rotation = [u](const Exact& b) { return rotate_about(u, b); };
       if (!canonical(axis.dot(axis) - 1).is_zero())
-        t.note += " The axis is normalised first: (x, y, z) = " + vec(axis).unicode + " / " +
-                  exact(norm(axis)).unicode + ".";
+        t.note += say(kAxisNormalisedFirst, vec(axis).unicode + " / " + exact(norm(axis)).unicode);
     }
   } else if (k == "shear" && with_shear) {
     MatX<Exact> h = MatX<Exact>::Zero(dim, dim);
@@ -156,8 +200,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
       const std::vector<Exact> v = s.numbers(k, 2);
       h(0, 1) = v[0];
       h(1, 0) = v[1];
-      t.title =
-          "shear x′ = x + " + exact(v[0]).unicode + "·y, y′ = y + " + exact(v[1]).unicode + "·x";
+      t.heading = say(
+          kShear, "x′ = x + " + exact(v[0]).unicode + "·y, y′ = y + " + exact(v[1]).unicode + "·x");
     } else {
       GivenReader r = s.child(k, {"xy", "xz", "yx", "yz", "zx", "zy"});
       const std::string names = "xyz";
@@ -165,7 +209,7 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
         if (r.has(f))
           h(static_cast<int>(names.find(f[0])), static_cast<int>(names.find(f[1]))) = r.number(f);
       r.finish();
-      t.title = "shear (h_ij adds coordinate j to coordinate i)";
+      t.heading = say(kShearEntries);
     }
     t.matrix = shear(h);
   } else {
@@ -197,9 +241,10 @@ std::vector<TransformStep> read_transform_steps(GivenReader& r, const std::strin
   return out;
 }
 
-MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim, Api api,
-                               const std::string& name, const std::string& title,
-                               Derivation* derivation) {
+namespace {
+
+MatX<Exact> compose(const std::vector<TransformStep>& steps, int dim, Api api,
+                    const std::string& name, const Said& title, Derivation* derivation) {
   const bool rows = api == Api::DirectX;
   MatX<Exact> m = MatX<Exact>::Identity(dim + 1, dim + 1);
   for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -208,7 +253,7 @@ MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim,
     if (derivation) {
       // Row vectors: the symbolic forms are the column-vector ones, so only the values show.
       Step& st = derivation->add(
-          fmt::format("A{}: {}", i + 1, s.title), rows ? MathText{} : s.formula, s.substitution,
+          say(kStepTitle, i + 1, s.heading), rows ? MathText{} : s.formula, s.substitution,
           math(fmt::format("A{} = ", i + 1), fmt::format("A_{{{}}} = ", i + 1)) +
               matrix_text(paper_form(s.matrix, api)));
       st.note = s.note;
@@ -225,15 +270,17 @@ MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim,
     derivation
         ->add(title, math(name + " = " + order, name + " = " + order_latex), {},
               math(name + " = ") + matrix_text(paper_form(m, api)))
-        .note =
-        rows
-            ? "DirectX multiplies row vectors: P′ = P·M, so the step applied first stands leftmost "
-              "and every matrix is the transpose of its column-vector form (a translation in the "
-              "bottom row, as XMMatrixTranslation builds it)."
-            : "Column vectors: P′ = M·P, so the step applied first stands rightmost (P′ = "
-              "A₃A₂A₁P).";
+        .note = say(rows ? kRowVectorsLeftmost : kColumnVectorsRightmost);
   }
   return m;
+}
+
+}  // namespace
+
+MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim, Api api,
+                               const std::string& name, const Phrase& title,
+                               Derivation* derivation) {
+  return compose(steps, dim, api, name, say(title), derivation);
 }
 
 }  // namespace frustum

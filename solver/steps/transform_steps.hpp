@@ -18,9 +18,9 @@
 namespace frustum {
 
 struct TransformStep {
-  std::string title;  // "translate (2, 3)"
+  Said heading;  // "translate (2, 3)", in every language
   MatX<Exact> matrix;
-  std::string note;
+  Said note;
   MatX<Exact> inverse = {};  // empty when the step is singular (a zero scale factor)
   Exact det = 1;
   MathText formula = {};  // the step's matrix in symbols (rotations: cos θ, sin θ; Rodrigues)
@@ -69,7 +69,7 @@ MatX<T> then_undo(const MatX<T>& inverse, const MatX<T>& step_inverse) {
 // one derivation step per Aᵢ and one for the composite, titled `title` (DirectX prints every
 // matrix in row-vector form, `name` = A₁·…·Aₙ).
 MatX<Exact> compose_with_steps(const std::vector<TransformStep>& steps, int dim, Api api,
-                               const std::string& name, const std::string& title,
+                               const std::string& name, const Phrase& title,
                                Derivation* derivation);
 
 }  // namespace frustum

@@ -8,6 +8,186 @@
 
 namespace frustum {
 
+namespace {
+
+constexpr Phrase kViewport{"Viewport", "ビューポート変換", "Преобразование в область просмотра"};
+constexpr Phrase kViewingDirection{"Viewing direction", "視線方向", "Направление взгляда"};
+constexpr Phrase kCameraAxesLeftHanded{"Camera axes (left-handed, looking down +z)",
+                                       "カメラの軸 (左手系, +z 方向を見る)",
+                                       "Оси камеры (левая система, взгляд вдоль +z)"};
+constexpr Phrase kCameraAxesRightHanded{"Camera axes (right-handed, looking down −z)",
+                                        "カメラの軸 (右手系, −z 方向を見る)",
+                                        "Оси камеры (правая система, взгляд вдоль −z)"};
+constexpr Phrase kSideAxis{"Side axis", "横方向の軸", "Боковая ось"};
+constexpr Phrase kTranslations{"Translations", "平行移動", "Переносы"};
+constexpr Phrase kViewMatrix{"View matrix", "視野変換行列", "Матрица вида"};
+constexpr Phrase kSimilarTriangles{"Similar triangles", "相似な三角形", "Подобные треугольники"};
+constexpr Phrase kDepthGoesIntoW{"Homogeneous coordinates: the depth goes into w′",
+                                 "同次座標: 奥行きを w′ に入れる",
+                                 "Однородные координаты: глубина уходит в w′"};
+constexpr Phrase kPerspectiveWithNoArguments{
+    "perspective() with no arguments", "引数なしの perspective()", "perspective() без аргументов"};
+constexpr Phrase kFrustumOfHorizontalFov{"The frustum of a horizontal field of view",
+                                         "水平方向の画角による視体積",
+                                         "Усечённая пирамида по горизонтальному углу обзора"};
+constexpr Phrase kSameFrustumFromVerticalAngle{"The same frustum from the vertical angle",
+                                               "垂直方向の画角から見た同じ視体積",
+                                               "Та же пирамида через вертикальный угол"};
+constexpr Phrase kFrustumOfPerspective{
+    "The frustum of perspective(fovy, aspect, near, far)",
+    "perspective(fovy, aspect, near, far) の視体積",
+    "Усечённая пирамида видимости perspective(fovy, aspect, near, far)"};
+constexpr Phrase kOrthographicProjectionMatrix{"Orthographic projection matrix", "平行投影の行列",
+                                               "Матрица ортографической проекции"};
+constexpr Phrase kPerspectiveProjectionMatrix{"Perspective projection matrix", "透視投影行列",
+                                              "Матрица перспективной проекции"};
+constexpr Phrase kOpenGlWindowOrigin{"OpenGL's window origin is bottom-left, y up.",
+                                     "OpenGL のウィンドウの原点は左下で y は上向き.",
+                                     "В OpenGL начало окна внизу слева, y вверх."};
+constexpr Phrase kDirectXWindowOrigin{
+    "DirectX's window origin is top-left, y down; NDC z is already in [0, 1].",
+    "DirectX のウィンドウの原点は左上で y は下向き. 正規化座標の z はすでに [0, 1] にある.",
+    "В DirectX начало окна вверху слева, y вниз; z в NDC уже в [0, 1]."};
+constexpr Phrase kProcessingWindowOrigin{
+    "Processing's window origin is top-left with y down (its screenY); its projection negated y "
+    "for its y-down world, so world y and window y both point down.",
+    "Processing のウィンドウの原点は左上で y は下向き (screenY). その投影は y "
+    "が下向きのワールドに合わせて y を反転するので, ワールドの y もウィンドウの y も下を向く.",
+    "В Processing начало окна вверху слева, y вниз (его screenY); его проекция меняет знак y для "
+    "мира с осью y вниз, так что y мира и y окна направлены вниз."};
+constexpr Phrase kDirectXRowVectors{
+    "DirectX multiplies row vectors, p′ = p·M: the matrix is printed in that form (the transpose "
+    "of the column-vector matrix).",
+    "DirectX は行ベクトルを掛ける (p′ = p·M). 行列はその形 (列ベクトルの行列の転置) で示す.",
+    "DirectX умножает строки-векторы, p′ = p·M: матрица записана в этой форме (транспонированная "
+    "матрица для столбцов)."};
+constexpr Phrase kColumnVectors{"Column vectors, p′ = M·p.", "列ベクトル: p′ = M·p.",
+                                "Столбцы-векторы: p′ = M·p."};
+constexpr Phrase kEyeCenterUp{
+    "eye = the camera's position (e), center = the point it looks at (c), up = the up vector.",
+    "eye = カメラの位置 (e), center = 注視点 (c), up = 上方向ベクトル.",
+    "eye — положение камеры (e), center — точка, на которую она смотрит (c), up — вектор «вверх»."};
+constexpr Phrase kLeftHandedCameraLooksDownPlusZ{"Left-handed, the camera looks down +z.",
+                                                 "左手系では, カメラは +z 方向を見る.",
+                                                 "В левой системе камера смотрит вдоль +z."};
+constexpr Phrase kRightHandedCameraRowsNegated{
+    "A right-handed camera at the same place (gluLookAt, looking down −z) has the x and z rows "
+    "negated: V_right = diag(−1, 1, −1, 1)·V.",
+    "同じ位置の右手系のカメラ (gluLookAt, −z 方向を見る) では x と z の行の符号が逆になる: V_right "
+    "= diag(−1, 1, −1, 1)·V.",
+    "У камеры правой системы в том же месте (gluLookAt, взгляд вдоль −z) строки x и z меняют знак: "
+    "V_right = diag(−1, 1, −1, 1)·V."};
+constexpr Phrase kEachRowOfVDotsAPoint{
+    "Each row of V dots a point with one camera axis after moving the eye to the origin: s·(p − "
+    "eye) = s·p − s·eye.",
+    "V の各行は, 視点を原点に移した後の点とカメラの軸 1 本との内積: s·(p − eye) = s·p − s·eye.",
+    "Каждая строка V — скалярное произведение точки на одну ось камеры после переноса глаза в "
+    "начало координат: s·(p − eye) = s·p − s·eye."};
+constexpr Phrase kPointMeetsNearPlanePlusZ{
+    "A point (x, y, z) in front of the eye (z > 0) meets the near plane z = n at (x_n, y_n): the "
+    "projection divides by the depth z.",
+    "視点の前方 (z > 0) の点 (x, y, z) は前方クリッピング面 z = n と (x_n, y_n) で交わる: "
+    "投影は奥行き z で割る.",
+    "Точка (x, y, z) перед глазом (z > 0) попадает на ближнюю плоскость z = n в (x_n, y_n): "
+    "проекция делит на глубину z."};
+constexpr Phrase kPointMeetsNearPlaneMinusZ{
+    "A point (x, y, z) in front of the eye (z < 0, so −z is its depth) meets the near plane z = −n "
+    "at (x_n, y_n): the projection divides by −z.",
+    "視点の前方 (z < 0 なので −z が奥行き) の点 (x, y, z) は前方クリッピング面 z = −n と (x_n, "
+    "y_n) で交わる (三角形の相似より). 投影は −z で割る.",
+    "Точка (x, y, z) перед глазом (z < 0, так что −z — её глубина) попадает на ближнюю плоскость z "
+    "= −n в (x_n, y_n): проекция делит на −z."};
+constexpr Phrase kNoMatrixDividesByACoordinate{
+    "No 4 × 4 matrix divides by a coordinate, but the perspective divide by w′ does: the matrix "
+    "only has to put the depth into w′ and scale x_n, y_n from the window [l, r] × [b, t] to [−1, "
+    "1].",
+    "4 × 4 行列は座標で割ることはできないが, w′ による透視除算ならできる: 行列は奥行きを w′ "
+    "に入れ, x_n, y_n を窓 [l, r] × [b, t] から [−1, 1] に拡大縮小すればよい.",
+    "Никакая матрица 4 × 4 не делит на координату, а перспективное деление на w′ делит: матрице "
+    "остаётся поместить глубину в w′ и перевести x_n, y_n из окна [l, r] × [b, t] в [−1, 1]."};
+constexpr Phrase kProcessingDefaults{
+    "Processing's defaults: without arguments perspective() uses a 60° vertical field of view and "
+    "puts the eye where the window's height exactly fills it.",
+    "Processing の既定値: 引数なしの perspective() は垂直方向の画角 60° を使い, "
+    "ウィンドウの高さがちょうどその画角を満たす位置に視点を置く.",
+    "Значения Processing по умолчанию: без аргументов perspective() берёт вертикальный угол обзора "
+    "60° и ставит глаз туда, где высота окна ровно заполняет этот угол."};
+constexpr Phrase kFovxSpansTheWidth{
+    "Here the field of view spans the width (fovx): it sets the right edge r, and the top is r "
+    "divided by the aspect ratio. perspective() takes the vertical angle fovy; both give the same "
+    "frustum and the same matrix.",
+    "ここでは画角は横方向 (fovx) に広がる: 右端 r を決め, 上端は r をアスペクト比で割ったもの. "
+    "perspective() は縦方向の画角 fovy を取る. どちらも同じ視体積, 同じ行列を与える.",
+    "Здесь угол обзора охватывает ширину (fovx): он задаёт правый край r, а верх равен r, "
+    "делённому на соотношение сторон. perspective() принимает вертикальный угол fovy; оба дают "
+    "один и тот же объём и одну и ту же матрицу."};
+constexpr Phrase kFovyIsVertical{
+    "fovy is the vertical field of view: it sets the top t, and the aspect ratio width/height "
+    "widens the right edge r.",
+    "fovy は垂直方向の画角: これが上端 t を決め, アスペクト比 width/height が右端 r を広げる.",
+    "fovy — вертикальный угол обзора: он задаёт верх t, а соотношение сторон width/height "
+    "расширяет правый край r."};
+constexpr Phrase kReadAsHorizontalAngle{
+    "Read as a horizontal angle, θ would give −l = r = n·tan(θ/2) and t = r·h/w = "
+    "n·(h/w)·tan(θ/2).",
+    "θ を水平方向の画角と読むと −l = r = n·tan(θ/2), t = r·h/w = n·(h/w)·tan(θ/2) となる.",
+    "Если читать θ как горизонтальный угол, то −l = r = n·tan(θ/2) и t = r·h/w = "
+    "n·(h/w)·tan(θ/2)."};
+constexpr Phrase kSomeNotesWriteAspectOnTop{
+    "Some notes write −b = t = n·(w/h)·tan(θ/2) beside r = n·tan(θ/2): for w ≠ h that matches "
+    "neither reading of θ.",
+    "r = n·tan(θ/2) と並べて −b = t = n·(w/h)·tan(θ/2) と書く資料もあるが, w ≠ h "
+    "のときこれはどちらの読み方にも合わない.",
+    "В некоторых материалах рядом с r = n·tan(θ/2) пишут −b = t = n·(w/h)·tan(θ/2): при w ≠ h это "
+    "не соответствует ни одному прочтению θ."};
+constexpr Phrase kProcessingNegatesYRow{
+    "Processing negates the y row because its window's y axis points down.",
+    "Processing ではウィンドウの y 軸が下向きなので, y の行の符号を反転する.",
+    "Processing меняет знак строки y, потому что ось y его окна направлена вниз."};
+constexpr Phrase kLeftHandedNearFarAreCoordinates{
+    "Left-handed, looking down +z: z = n maps to z_ndc = −1 and z = f to +1, so near and far are "
+    "also the z coordinates of their planes.",
+    "左手系で +z 方向を見る: z = n は z_ndc = −1 に, z = f は +1 に写るので, near と far "
+    "はそれぞれの平面の z 座標でもある.",
+    "Левая система, взгляд вдоль +z: z = n переходит в z_ndc = −1, а z = f — в +1, так что near и "
+    "far — это и z-координаты их плоскостей."};
+constexpr Phrase kRightHandedMatrixThirdColumn{
+    "The right-handed matrix (looking down −z) is this one with its third column negated: the same "
+    "view volume with the z axis reversed.",
+    "右手系の行列 (−z 方向を見る) はこの行列の第 3 列の符号を変えたもの: 同じ視体積で z "
+    "軸の向きだけが逆である.",
+    "Матрица правой системы (взгляд вдоль −z) — эта же матрица с третьим столбцом с обратным "
+    "знаком: тот же видимый объём с обращённой осью z."};
+constexpr Phrase kColumnVectorsNearFarToNdc{
+    "Column vectors, p′ = M·p. z = −n maps to z_ndc = −1 and z = −f to +1.",
+    "列ベクトル: p′ = M·p. z = −n は z_ndc = −1 に, z = −f は +1 に移る.",
+    "Столбцы-векторы: p′ = M·p. z = −n переходит в z_ndc = −1, а z = −f — в +1."};
+constexpr Phrase kSentenceContradictsMatrix{
+    "(A sentence stating z = −n ↦ +1 contradicts this matrix; the matrix decides.)",
+    "(z = −n ↦ +1 とする記述はこの行列と矛盾します. 行列の方が正しい.)",
+    "(Утверждение z = −n ↦ +1 противоречит этой матрице; верна матрица.)"};
+constexpr Phrase kLookingDownPlusZNdc{
+    "Looking down +z, z_ndc runs from 0 at near to 1 at far.",
+    "+z 方向を見るので, z_ndc は near で 0, far で 1 になる.",
+    "При взгляде вдоль +z z_ndc меняется от 0 на near до 1 на far."};
+constexpr Phrase kNearFarAsZCoordinates{
+    "Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: the z "
+    "row is +2/(z_max − z_min).",
+    "ここでは near と far は z 座標 z_min = n, z_max = f で, それぞれ −1 と +1 に写る: z の行は "
+    "+2/(z_max − z_min).",
+    "Здесь near и far — z-координаты z_min = n и z_max = f, переходящие в −1 и +1: строка z равна "
+    "+2/(z_max − z_min)."};
+constexpr Phrase kGlOrthoReadsDistances{
+    "OpenGL's glOrtho reads them as distances in front of an eye looking down −z (the planes z = "
+    "−n and z = −f), which gives −2/(f − n) there; the two matrices differ only in the direction "
+    "of the z axis.",
+    "OpenGL の glOrtho はこれらを −z 方向を見る視点の前方への距離 (平面 z = −n と z = −f) "
+    "として読むので, そこは −2/(f − n) になる. 二つの行列の違いは z 軸の向きだけである.",
+    "glOrtho в OpenGL читает их как расстояния перед глазом, смотрящим вдоль −z (плоскости z = −n "
+    "и z = −f), и даёт там −2/(f − n); две матрицы различаются только направлением оси z."};
+
+}  // namespace
+
 Exact read_angle(GivenReader& r, const std::string& key, AngleUnit unit) {
   const Exact a = r.number(key);
   return canonical(unit == AngleUnit::Degrees ? a * GiNaC::Pi / 180 : a);
@@ -148,9 +328,8 @@ std::vector<std::vector<Exact>> rows_of(const MatX<Exact>& m) {
 }
 
 Value transform_points_with_steps(const MatX<Exact>& m,
-                                  const std::vector<std::vector<Exact>>& points,
-                                  const std::string& title, const std::string& name,
-                                  Derivation* steps, Api api) {
+                                  const std::vector<std::vector<Exact>>& points, const Said& title,
+                                  const std::string& name, Derivation* steps, Api api) {
   if (points.empty()) return Value::null();
   std::vector<std::vector<Exact>> moved;
   for (const std::vector<Exact>& p : points) {
@@ -188,22 +367,16 @@ void viewport_step(Derivation* steps, Api api, const Exact& width, const Exact& 
   given += math("width = ", "\\text{width} = ") + exact(width) +
            math(",  height = ", ",\\; \\text{height} = ") + exact(height);
   steps
-      ->add("Viewport", formula, given,
+      ->add(say(kViewport), formula, given,
             math("(x_w, y_w, depth) = ", "(x_w, y_w, \\text{depth}) = ") + vec(window, true))
-      .note = api == Api::OpenGL ? "OpenGL's window origin is bottom-left, y up."
-              : api == Api::DirectX
-                  ? "DirectX's window origin is top-left, y down; NDC z is already in [0, 1]."
-                  : "Processing's window origin is top-left with y down (its screenY); its "
-                    "projection negated y for its y-down world, so world y and window y both "
-                    "point down.";
+      .note = say(api == Api::OpenGL    ? kOpenGlWindowOrigin
+                  : api == Api::DirectX ? kDirectXWindowOrigin
+                                        : kProcessingWindowOrigin);
   steps->yields("window");
 }
 
-std::string multiply_note(Api api) {
-  return api == Api::DirectX
-             ? "DirectX multiplies row vectors, p′ = p·M: the matrix is printed in that form "
-               "(the transpose of the column-vector matrix)."
-             : "Column vectors, p′ = M·p.";
+Said multiply_note(Api api) {
+  return say(api == Api::DirectX ? kDirectXRowVectors : kColumnVectors);
 }
 
 void check_camera(const Vec3<Exact>& eye, const Vec3<Exact>& center, const Vec3<Exact>& up,
@@ -233,7 +406,7 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
     for (int i = 0; i < 3; ++i) side(i) = canonical(side(i));
     // Forward, side and up, as gluLookAt (or LookAtLH) computes them, then the translations.
     steps
-        ->add("Viewing direction",
+        ->add(say(kViewingDirection),
               math("f = (center − eye)/‖center − eye‖",
                    "\\mathbf{f} = \\frac{\\mathbf{c} - \\mathbf{e}}{\\lVert\\mathbf{c} - "
                    "\\mathbf{e}\\rVert}"),
@@ -241,11 +414,10 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
                   math(",  ‖center − eye‖ = ", ",\\; \\lVert\\mathbf{c} - \\mathbf{e}\\rVert = ") +
                   exact(norm(forward), true),
               math("f = ", "\\mathbf{f} = ") + vec(f, true))
-        .note =
-        "eye = the camera's position (e), center = the point it looks at (c), up = the up vector.";
+        .note = say(kEyeCenterUp);
     if (plus_z) {
       steps->add(
-          "Camera axes (left-handed, looking down +z)",
+          say(kCameraAxesLeftHanded),
           math("z = f,  x = (up × z)/‖up × z‖,  y = z × x",
                "\\mathbf{z} = \\mathbf{f},\\; \\mathbf{x} = "
                "\\frac{\\mathbf{up}\\times\\mathbf{z}}{\\lVert\\mathbf{up}\\times\\mathbf{z}"
@@ -255,7 +427,7 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
               exact(norm(side), true),
           math("x = ", "\\mathbf{x} = ") + vec(row(0)) + math(",  y = ", ",\\; \\mathbf{y} = ") +
               vec(row(1)) + math(",  z = ", ",\\; \\mathbf{z} = ") + vec(row(2)));
-      steps->add("Translations",
+      steps->add(say(kTranslations),
                  math("t = (−x·eye, −y·eye, −z·eye)",
                       "\\mathbf{t} = (-\\mathbf{x}\\cdot\\mathbf{e},\\, "
                       "-\\mathbf{y}\\cdot\\mathbf{e},\\, -\\mathbf{z}\\cdot\\mathbf{e})"),
@@ -265,7 +437,7 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
       if (api == Api::DirectX)
         steps
             ->add(
-                "View matrix",
+                say(kViewMatrix),
                 math("V = [x_x y_x z_x 0; x_y y_y z_y 0; x_z y_z z_z 0; t_x t_y t_z 1] (p′ = p·V)",
                      "V = \\begin{bmatrix} x_x & y_x & z_x & 0 \\\\ x_y & y_y & z_y & 0 \\\\ x_z & "
                      "y_z & z_z & 0 \\\\ t_x & t_y & t_z & 1 \\end{bmatrix}"),
@@ -273,19 +445,16 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
             .note = multiply_note(api);
       else
         steps
-            ->add("View matrix",
+            ->add(say(kViewMatrix),
                   math("V = [x_x x_y x_z t_x; y_x y_y y_z t_y; z_x z_y z_z t_z; 0 0 0 1]",
                        "V = \\begin{bmatrix} x_x & x_y & x_z & t_x \\\\ y_x & y_y & y_z & t_y \\\\ "
                        "z_x & z_y & z_z & t_z \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"),
                   {}, math("V = ") + matrix_text(m))
-            .note =
-            multiply_note(api) +
-            " Left-handed, the camera looks down +z. A right-handed camera at the same place "
-            "(gluLookAt, looking down −z) has the x and z rows negated: V_right = diag(−1, 1, −1, "
-            "1)·V.";
+            .note = multiply_note(api) + say(kLeftHandedCameraLooksDownPlusZ) +
+                    say(kRightHandedCameraRowsNegated);
     } else {
       steps->add(
-          "Side axis",
+          say(kSideAxis),
           math("s = (f × up)/‖f × up‖",
                "\\mathbf{s} = "
                "\\frac{\\mathbf{f}\\times\\mathbf{up}}{\\lVert\\mathbf{f}\\times\\mathbf{up}"
@@ -294,7 +463,7 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
               math(",  ‖f × up‖ = ", ",\\; \\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert = ") +
               exact(norm(side), true),
           math("s = ", "\\mathbf{s} = ") + vec(row(0), true));
-      steps->add("Camera axes (right-handed, looking down −z)",
+      steps->add(say(kCameraAxesRightHanded),
                  math("u = s × f,  z_cam = −f",
                       "\\mathbf{u} = \\mathbf{s}\\times\\mathbf{f},\\; \\mathbf{z}_{\\text{cam}} = "
                       "-\\mathbf{f}"),
@@ -302,7 +471,7 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
                  math("u = ", "\\mathbf{u} = ") + vec(row(1), true) +
                      math(",  −f = ", ",\\; -\\mathbf{f} = ") + vec(row(2), true));
       steps
-          ->add("Translations",
+          ->add(say(kTranslations),
                 math("(−s·eye, −u·eye, f·eye)",
                      "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; "
                      "\\mathbf{f}\\cdot\\mathbf{e}\\right)"),
@@ -311,11 +480,9 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
                      "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; "
                      "\\mathbf{f}\\cdot\\mathbf{e}\\right) = ") +
                     vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true))
-          .note =
-          "Each row of V dots a point with one camera axis after moving the eye to the origin: "
-          "s·(p − eye) = s·p − s·eye.";
+          .note = say(kEachRowOfVDotsAPoint);
       steps
-          ->add("View matrix",
+          ->add(say(kViewMatrix),
                 math("V = [s_x s_y s_z −s·eye; u_x u_y u_z −u·eye; −f_x −f_y −f_z f·eye; 0 0 0 1]",
                      "V = \\begin{bmatrix} s_x & s_y & s_z & -\\mathbf{s}\\cdot\\mathbf{e} \\\\ "
                      "u_x & u_y & u_z & -\\mathbf{u}\\cdot\\mathbf{e} \\\\ "
@@ -405,7 +572,7 @@ void perspective_idea_steps(Api api, bool left_handed, const std::string& name, 
   const bool plus_z = api == Api::DirectX || left_handed;
   const bool rows = api == Api::DirectX;  // w′ = z in column 4 (row vectors), else in row 4
   steps
-      .add("Similar triangles",
+      .add(say(kSimilarTriangles),
            plus_z ? math("x_n : n = x : z,  y_n : n = y : z", "x_n : n = x : z,\\; y_n : n = y : z")
                   : math("x_n : n = x : (−z),  y_n : n = y : (−z)",
                          "x_n : n = x : (-z),\\; y_n : n = y : (-z)"),
@@ -414,14 +581,9 @@ void perspective_idea_steps(Api api, bool left_handed, const std::string& name, 
                          "x_n = \\frac{n\\,x}{z},\\; y_n = \\frac{n\\,y}{z}")
                   : math("x_n = n·x / (−z),  y_n = n·y / (−z)",
                          "x_n = \\frac{n\\,x}{-z},\\; y_n = \\frac{n\\,y}{-z}"))
-      .note = plus_z ? "A point (x, y, z) in front of the eye (z > 0) meets the near plane z = n "
-                       "at (x_n, y_n): "
-                       "the projection divides by the depth z."
-                     : "A point (x, y, z) in front of the eye (z < 0, so −z is its depth) meets "
-                       "the near plane "
-                       "z = −n at (x_n, y_n): the projection divides by −z.";
+      .note = say(plus_z ? kPointMeetsNearPlanePlusZ : kPointMeetsNearPlaneMinusZ);
   steps
-      .add("Homogeneous coordinates: the depth goes into w′",
+      .add(say(kDepthGoesIntoW),
            rows     ? math("w′ = z  (" + name + "_∗4 = (0, 0, 1, 0)ᵀ)",
                            "w' = z \\quad (" + name + "_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
            : plus_z ? math("w′ = z  (" + name + "_4∗ = (0, 0, 1, 0))",
@@ -433,10 +595,7 @@ void perspective_idea_steps(Api api, bool left_handed, const std::string& name, 
                          "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{z}")
                   : math("x_ndc = x′ / w′ = x′ / (−z)",
                          "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{-z}"))
-      .note =
-      "No 4 × 4 matrix divides by a coordinate, but the perspective divide by w′ does: the matrix "
-      "only "
-      "has to put the depth into w′ and scale x_n, y_n from the window [l, r] × [b, t] to [−1, 1].";
+      .note = say(kNoMatrixDividesByACoordinate);
 }
 
 }  // namespace
@@ -447,7 +606,7 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   if (steps && p.sketch) {
     // Processing's perspective() with no arguments, for a width × height sketch.
     steps
-        ->add("perspective() with no arguments",
+        ->add(say(kPerspectiveWithNoArguments),
               math("fovy = π/3,  aspect = width/height,  cameraZ = (height/2)/tan(fovy/2),  "
                    "near = cameraZ/10,  far = 10·cameraZ",
                    "\\text{fovy} = \\frac{\\pi}{3},\\; \\text{aspect} = "
@@ -459,14 +618,12 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
               math("aspect = ", "\\text{aspect} = ") + exact(*p.aspect) +
                   math(",  n = ", ",\\; n = ") + exact(v.near, true) +
                   math(",  f = ", ",\\; f = ") + exact(v.far, true))
-        .note =
-        "Processing's defaults: without arguments perspective() uses a 60° vertical field of view "
-        "and puts the eye where the window's height exactly fills it.";
+        .note = say(kProcessingDefaults);
   }
   if (steps && p.fovx) {
     // The course's horizontal reading, and how it relates to perspective()'s vertical fovy.
     steps->add(
-        "The frustum of a horizontal field of view",
+        say(kFrustumOfHorizontalFov),
         math("r = n·tan(fovx/2),  l = −r,  t = r / aspect,  b = −t",
              "r = n\\tan\\frac{\\text{fovx}}{2},\\; l = -r,\\; t = \\frac{r}{\\text{aspect}},\\; b "
              "= -t"),
@@ -477,7 +634,7 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
     const double fovy_shown =
         to_double(p.unit == AngleUnit::Degrees ? Exact(*p.fovy * 180 / GiNaC::Pi) : *p.fovy);
     steps
-        ->add("The same frustum from the vertical angle",
+        ->add(say(kSameFrustumFromVerticalAngle),
               math("fovy = 2·atan(tan(fovx/2) / aspect)",
                    "\\text{fovy} = 2\\arctan\\frac{\\tan(\\text{fovx}/2)}{\\text{aspect}}"),
               {},
@@ -489,14 +646,11 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
                                    p.unit == AngleUnit::Degrees ? "^{\\circ}" : "")) +
                   math(",  t = n·tan(fovy/2) = ", ",\\; t = n\\tan\\frac{\\text{fovy}}{2} = ") +
                   exact(v.top, true))
-        .note =
-        "Here the field of view spans the width (fovx): it sets the right edge r, and the top is "
-        "r divided by the aspect ratio. perspective() takes the vertical angle fovy; both give the "
-        "same frustum and the same matrix.";
+        .note = say(kFovxSpansTheWidth);
   } else if (steps && p.type == ProjectionSpec::Type::Perspective) {
     steps
         ->add(
-            "The frustum of perspective(fovy, aspect, near, far)",
+            say(kFrustumOfPerspective),
             math("t = n·tan(fovy/2),  b = −t,  r = t·aspect,  l = −r",
                  "t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l "
                  "= -r"),
@@ -505,10 +659,7 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
                 math(",  n = ", ",\\; n = ") + exact(v.near),
             math("t = ") + exact(v.top, true) + math(",  r = ", ",\\; r = ") + exact(v.right, true))
         .note =
-        "fovy is the vertical field of view: it sets the top t, and the aspect ratio width/height "
-        "widens the right edge r. Read as a horizontal angle, θ would give −l = r = n·tan(θ/2) and "
-        "t = r·h/w = n·(h/w)·tan(θ/2). Some notes write −b = t = n·(w/h)·tan(θ/2) beside "
-        "r = n·tan(θ/2): for w ≠ h that matches neither reading of θ.";
+        say(kFovyIsVertical) + say(kReadAsHorizontalAngle) + say(kSomeNotesWriteAspectOnTop);
   }
   MatX<Exact> m =
       p.type == ProjectionSpec::Type::Ortho ? ortho_matrix(v, api) : frustum_matrix(v, api);
@@ -528,35 +679,20 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   }
   if (steps) {
     const bool ortho = p.type == ProjectionSpec::Type::Ortho;
-    Step& s = steps->add(ortho ? "Orthographic projection matrix" : "Perspective projection matrix",
+    Step& s = steps->add(say(ortho ? kOrthographicProjectionMatrix : kPerspectiveProjectionMatrix),
                          p.z_coordinates ? ortho_coordinates_formula(api, name)
                                          : projection_formula(ortho, api, p.left_handed, name),
                          volume_text(v), math(name + " = ") + matrix_text(paper_form(m, api)));
-    s.note = multiply_note(api);
-    if (api == Api::Processing)
-      s.note += " Processing negates the y row because its window's y axis points down.";
+    // OpenGL's right-handed perspective: the column vectors and where near and far go are one
+    // sentence ("… = M·p. z = −n maps to …").
+    s.note = api == Api::OpenGL && !ortho && !p.left_handed
+                 ? say(kColumnVectorsNearFarToNdc) + say(kSentenceContradictsMatrix)
+                 : multiply_note(api);
+    if (api == Api::Processing) s.note += say(kProcessingNegatesYRow);
     if (p.left_handed)
-      s.note +=
-          " Left-handed, looking down +z: z = n maps to z_ndc = −1 and z = f to +1, so near and "
-          "far are "
-          "also the z coordinates of their planes. The right-handed matrix (looking down −z) is "
-          "this one "
-          "with its third column negated: the same view volume with the z axis reversed.";
-    if (api == Api::OpenGL && !ortho && !p.left_handed)
-      s.note +=
-          " z = −n maps to z_ndc = −1 and z = −f to +1. (A sentence stating z = −n ↦ +1 "
-          "contradicts "
-          "this matrix; the matrix decides.)";
-    if (api == Api::DirectX) s.note += " Looking down +z, z_ndc runs from 0 at near to 1 at far.";
-    if (p.z_coordinates)
-      s.note +=
-          " Here near and far are the z coordinates z_min = n and z_max = f, mapped to −1 and +1: "
-          "the z row "
-          "is +2/(z_max − z_min). OpenGL's glOrtho reads them as distances in front of an eye "
-          "looking down "
-          "−z (the planes z = −n and z = −f), which gives −2/(f − n) there; the two matrices "
-          "differ only "
-          "in the direction of the z axis.";
+      s.note += say(kLeftHandedNearFarAreCoordinates) + say(kRightHandedMatrixThirdColumn);
+    if (api == Api::DirectX) s.note += say(kLookingDownPlusZNdc);
+    if (p.z_coordinates) s.note += say(kNearFarAsZCoordinates) + say(kGlOrthoReadsDistances);
     steps->yields("matrix");
   }
   return m;

@@ -64,9 +64,9 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
 // P′ = P·M under DirectX's row vectors; M is the column form either way); the
 // answer value is the list of moved points (null when there are none).
 Value transform_points_with_steps(const MatX<Exact>& m,
-                                  const std::vector<std::vector<Exact>>& points,
-                                  const std::string& title, const std::string& name,
-                                  Derivation* steps, Api api = Api::OpenGL);
+                                  const std::vector<std::vector<Exact>>& points, const Said& title,
+                                  const std::string& name, Derivation* steps,
+                                  Api api = Api::OpenGL);
 
 MatX<Exact> canonical(const MatX<Exact>& m);
 std::vector<std::vector<Exact>> rows_of(const MatX<Exact>& m);
@@ -79,7 +79,7 @@ void viewport_step(Derivation* steps, Api api, const Exact& width, const Exact& 
                    const Vec3<Exact>& window, const Vec3<Exact>* ndc = nullptr);
 
 // "M = " in the conventions: DirectX prints the row-vector matrix (p′ = p·M).
-std::string multiply_note(Api api);
+Said multiply_note(Api api);
 
 // Common mistakes in setting up a projection, each as the projection it amounts to: degrees
 // taken as radians, fovx for fovy, the planes' z coordinates for near and far. `step` is the

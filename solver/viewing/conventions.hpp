@@ -62,8 +62,4 @@ struct ConventionUse {
   bool handedness = false;
 };
 
-// One sentence naming the conventions `use` marks, for the first step of a derivation; empty
-// when none of them matters.
-std::string describe(const Conventions& c, ConventionUse use = {});
-
 }  // namespace frustum

@@ -288,8 +288,9 @@ DepthSortResult depth_sort(const std::vector<Polygon3<Exact>>& polygons,
                (p.order == PairOrder::SecondBehind && i_first)) {
       const int far = p.order == PairOrder::FirstBehind ? p.i : p.j;
       const int near = far == p.i ? p.j : p.i;
-      const bool tie =
+      p.centroid_tie =
           sign(key[static_cast<std::size_t>(near)] - key[static_cast<std::size_t>(far)]) == 0;
+      const bool tie = p.centroid_tie;
       p.reason = fmt::format(
           "over their overlap {} is nearer everywhere, but its centroid is {} {}'s, "
           "so the centroid order draws {} first and {} paints over it",

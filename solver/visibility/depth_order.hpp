@@ -45,8 +45,9 @@ struct PairReport {
   PlaneTests planes;
   bool cyclic = false;
   bool conflict = false;
-  std::string reason;        // why the pair conflicts (empty when it does not)
-  std::string name() const;  // "i-j"
+  bool centroid_tie = false;  // a conflict of a nearer polygon whose centroid is as far
+  std::string reason;         // why the pair conflicts (empty when it does not)
+  std::string name() const;   // "i-j"
 };
 
 struct DepthSortResult {

@@ -202,12 +202,12 @@ int filtered_sign(const Exact& e) {
   return exact_sign(e);
 }
 
-bool is_convex(const Mesh& m, const std::vector<Vec3<Exact>>& normals, std::string* witness) {
+bool is_convex(const Mesh& m, const std::vector<Vec3<Exact>>& normals, ConvexityWitness* witness) {
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     const Vec3<Exact>& p = m.vertices[static_cast<std::size_t>(m.faces[f][0])];
     for (std::size_t v = 0; v < m.vertices.size(); ++v) {
       if (filtered_sign(canonical(normals[f].dot(m.vertices[v] - p))) > 0) {
-        if (witness) *witness = fmt::format("vertex {} lies outside the plane of face {}", v, f);
+        if (witness) *witness = {v, f};
         return false;
       }
     }

@@ -47,10 +47,15 @@ MeshCheck check_mesh(const Mesh& m);
 // Face normals by Newell's method (e₀ × e₁ for triangles), exact and canonical.
 std::vector<Vec3<Exact>> face_normals(const Mesh& m);
 
+// Why a solid is not convex: a vertex outside (on the outer side of) a face's plane.
+struct ConvexityWitness {
+  std::size_t vertex = 0, face = 0;
+};
+
 // Convex: every vertex on the inner side of (or on) every face plane, n_f·(v − p_f) ≤ 0,
-// decided exactly. `witness` gets "vertex v is outside face f" when it is not.
+// decided exactly. `witness` gets a vertex outside a face's plane when it is not.
 bool is_convex(const Mesh& m, const std::vector<Vec3<Exact>>& normals,
-               std::string* witness = nullptr);
+               ConvexityWitness* witness = nullptr);
 
 // Sign of an exact value: doubles decide when the value is clearly away from zero, exact
 // arithmetic (exact_sign) decides the rest.

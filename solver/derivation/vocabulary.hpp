@@ -1,0 +1,50 @@
+// Words many kinds write inside formulas and answers (yes/no, front/back, visible/hidden …),
+// each once, in the three languages. A kind's own phrases stay in the kind's file.
+#pragma once
+
+#include <string_view>
+
+#include "solver/derivation/said.hpp"
+
+namespace frustum::words {
+
+inline constexpr Phrase kYes{"yes", "はい", "да"};
+inline constexpr Phrase kNo{"no", "いいえ", "нет"};
+inline constexpr Phrase kNone{"none", "なし", "нет"};
+inline constexpr Phrase kTrue{"true", "真", "истина"};
+inline constexpr Phrase kFalse{"false", "偽", "ложь"};
+inline constexpr Phrase kFront{"front", "表", "лицевая"};
+inline constexpr Phrase kBack{"back", "裏", "обратная"};
+inline constexpr Phrase kEdgeOn{"edge-on", "真横", "с ребра"};
+inline constexpr Phrase kEdgeOnKey{"edge_on", "真横", "с ребра"};
+inline constexpr Phrase kVisible{"visible", "可視", "видимое"};
+inline constexpr Phrase kHidden{"hidden", "不可視", "невидимое"};
+inline constexpr Phrase kSilhouette{"silhouette", "輪郭線", "силуэт"};
+inline constexpr Phrase kInside{"inside", "内側", "внутри"};
+inline constexpr Phrase kOutside{"outside", "外側", "снаружи"};
+inline constexpr Phrase kBackground{"background", "背景", "фон"};
+inline constexpr Phrase kDepth{"depth", "奥行き", "глубина"};
+inline constexpr Phrase kPlane{"plane", "平面", "плоскость"};
+inline constexpr Phrase kPolygon{"polygon", "多角形", "многоугольник"};
+inline constexpr Phrase kDegrees{"degrees", "度", "градусах"};
+inline constexpr Phrase kRadians{"radians", "ラジアン", "радианах"};
+// Counted in a summary ("3 triangles: 1 clipped, 0 back faces culled").
+inline constexpr Phrase kTriangles{"triangles", "三角形", "треугольники"};
+inline constexpr Phrase kWindowTriangles{"window triangles", "ウィンドウ上の三角形",
+                                         "треугольники в окне"};
+inline constexpr Phrase kClipped{"clipped", "クリップされた", "отсечено"};
+inline constexpr Phrase kBackFacesCulled{"back faces culled", "背面を除去",
+                                         "нелицевые грани отброшены"};
+inline constexpr Phrase kOutsideViewVolume{"outside the view volume", "視体積の外側",
+                                           "вне видимого объёма"};
+inline constexpr Phrase kPixelsCovered{"pixel(s) covered", "画素を覆う", "пикс. покрыто"};
+inline constexpr Phrase kNearerAndWritten{"nearer than Z(i, j) and written",
+                                          "Z(i, j) より手前なので書き込む",
+                                          "ближе, чем Z(i, j), и записано"};
+
+// A word that is data rather than a phrase of the code: an answer's category ("front", "edge_on",
+// "visible"), true/false, or a counted word. The word among the ones above with exactly that
+// English, or the word as written (a name, a label, an outcode) when none has it.
+Said vocabulary_word(std::string_view english);
+
+}  // namespace frustum::words
