@@ -62,7 +62,8 @@ std::string render_latex(const SetResult& set, Lang lang = Lang::En,
 nlohmann::ordered_json number_json(double v);
 nlohmann::ordered_json value_json(const Value& v);  // "value"
 nlohmann::ordered_json exact_json(const Value& v);  // "exact" (null when not exact)
-nlohmann::ordered_json steps_json(const std::vector<Step>& steps);
+// The steps in `lang` (titles, notes and the words inside formulas).
+nlohmann::ordered_json steps_json(const std::vector<Step>& steps, Lang lang = Lang::En);
 // `text` and `title` in `lang` (the set's own when it does not give that language); `texts` and
 // `titles` map every language given ({"en": …, "ja": …}); `lang` is the set's own language.
 nlohmann::ordered_json problem_json(const ProblemResult& p, Lang lang = Lang::En);

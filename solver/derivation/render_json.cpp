@@ -72,19 +72,21 @@ json exact_json(const Value& v) {
   return shaped(v, v.exact, [](const Exact& e) { return format_exact(e, MathStyle::Plain); });
 }
 
-json steps_json(const std::vector<Step>& steps) {
+json steps_json(const std::vector<Step>& steps, Lang lang) {
   json out = json::array();
   for (const Step& s : steps) {
     std::string text;
     for (const MathText* m : {&s.formula, &s.substitution, &s.result})
-      if (!m->empty()) text += (text.empty() ? "" : "\n") + m->unicode;
-    if (!s.note.empty()) text += (text.empty() ? "" : "\n") + s.note.en();
-    json j = {{"title", s.title.en()}, {"text", text}};
-    if (!s.formula.empty())
-      j["formula"] = {{"text", s.formula.unicode}, {"latex", s.formula.latex}};
-    if (!s.substitution.empty())
-      j["substitution"] = {{"text", s.substitution.unicode}, {"latex", s.substitution.latex}};
-    if (!s.result.empty()) j["result"] = {{"text", s.result.unicode}, {"latex", s.result.latex}};
+      if (!m->empty()) text += (text.empty() ? "" : "\n") + tr(*m, lang).unicode;
+    if (!s.note.empty()) text += (text.empty() ? "" : "\n") + s.note.in(lang);
+    json j = {{"title", s.title.in(lang)}, {"text", text}};
+    const auto math_json = [&](const MathText& m) {
+      const MathText said = tr(m, lang);
+      return json{{"text", said.unicode}, {"latex", said.latex}};
+    };
+    if (!s.formula.empty()) j["formula"] = math_json(s.formula);
+    if (!s.substitution.empty()) j["substitution"] = math_json(s.substitution);
+    if (!s.result.empty()) j["result"] = math_json(s.result);
     if (s.level != Step::Level::Info)
       j["level"] = s.level == Step::Level::Warning ? "warning" : "note";
     if (!s.answers.empty()) j["answers"] = s.answers;
@@ -121,11 +123,11 @@ json problem_json(const ProblemResult& p, Lang lang) {
     json a = {{"value", value_json(*v)}};
     json e = exact_json(*v);
     if (!e.is_null()) a["exact"] = e;
-    a["text"] = v->shown().unicode;
+    a["text"] = tr(v->shown(), lang).unicode;
     answers[name] = a;
   }
   j["answers"] = answers;
-  j["steps"] = steps_json(p.derivation.steps());
+  j["steps"] = steps_json(p.derivation.steps(), lang);
   return j;
 }
 
