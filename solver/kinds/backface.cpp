@@ -29,8 +29,6 @@ constexpr Phrase kFacingNote{
     "facing: the sign of D_f, proven by its rounding-error bound or else computed exactly.",
     "表裏: D_f の符号. 丸め誤差の上界で確かめ, 確かめられなければ厳密に計算する.",
     "ориентация: знак D_f, доказанный оценкой ошибки округления или иначе вычисленный точно."};
-constexpr Phrase kWindingLeftHanded{"Winding in a left-handed frame", "左手系での頂点の回り順",
-                                    "Порядок обхода в левой системе"};
 constexpr Phrase kDirectXWinding{
     "In DirectX's left-handed coordinates the same formula n = e₀ × e₁ points to the side from "
     "which the vertices appear clockwise — Direct3D's default front face (FrontCounterClockwise = "
@@ -65,8 +63,6 @@ constexpr Phrase kDfZero{
     "D_f = 0 exactly: the eye lies in the polygon's plane, which it sees edge-on.",
     "D_f = 0 (厳密): 視点は多角形の平面上にあり, 多角形を真横から見る.",
     "D_f = 0 точно: глаз лежит в плоскости многоугольника и видит его с ребра."};
-constexpr Phrase kRightHandedReading{"The right-handed reading", "右手系で読むと",
-                                     "Прочтение в правой системе"};
 constexpr Phrase kMirrorImage{
     "Read in right-handed coordinates the same numbers describe the mirror image: its normal e₀ × "
     "e₁ is −n, D_f changes sign, and the eye would see the other side.",

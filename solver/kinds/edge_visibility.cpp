@@ -47,7 +47,6 @@ constexpr Phrase kIcosahedron{"icosahedron", "正二十面体", "икосаэд�
 constexpr Phrase kTransformTheSolid{"Transform the solid (first step applied first)",
                                     "立体を変換 (最初のステップを最初に適用)",
                                     "Преобразование тела (первый шаг применяется первым)"};
-constexpr Phrase kStepA{"A{0}: {1}", "A{0}: {1}", "A{0}: {1}"};
 constexpr Phrase kEveryVertexMoves{
     "Every vertex moves by P′ = M·P; faces keep their vertex lists.",
     "各頂点は P′ = M·P で移り, 面の頂点リストは変わらない.",
@@ -59,8 +58,6 @@ constexpr Phrase kDetMirrors{
     "各面の頂点の順序を逆にする.",
     "det M < 0 — тело зеркально отражается, поэтому порядок вершин каждой грани обращается, чтобы "
     "он оставался против часовой стрелки при взгляде снаружи."};
-constexpr Phrase kWindingLeftHanded{"Winding in a left-handed frame", "左手系での頂点の回り順",
-                                    "Порядок обхода в левой системе"};
 constexpr Phrase kFacesListedLeftHanded{
     "The faces are listed counter-clockwise seen from outside in this left-handed frame, where e₀ "
     "× e₁ points inward: each face's outward (front) normal is n = e₁ × e₀.",
@@ -341,7 +338,7 @@ struct EdgeVisibility {
       std::string product, product_latex;
       for (std::size_t i = 0; i < g.transform.size(); ++i) {
         if (i) order.append(Said::verbatim("; "));
-        order.append(say(kStepA, i + 1, g.transform[i].heading));
+        order.append(say(kStepTitle, i + 1, g.transform[i].heading));
         product = fmt::format("A{}", i + 1) + (i ? "·" : "") + product;
         product_latex = fmt::format("A_{{{}}}", i + 1) + product_latex;
       }

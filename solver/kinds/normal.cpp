@@ -12,8 +12,6 @@ namespace frustum {
 
 namespace {
 
-constexpr Phrase kIllConditionedNormal{"Ill-conditioned normal", "条件の悪い法線",
-                                       "Плохо обусловленная нормаль"};
 constexpr Phrase kTheNormalSDirection{"the normal's direction", "法線の向き",
                                       "направление нормали"};
 

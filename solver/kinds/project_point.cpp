@@ -51,8 +51,6 @@ constexpr Phrase kModelToView{"Model to view coordinates", "モデル座標か�
                               "Из локальных координат в координаты вида"};
 constexpr Phrase kWorldToView{"World to view coordinates", "ワールド座標から視点座標へ",
                               "Из мировых координат в координаты вида"};
-constexpr Phrase kRightHandedReading{"The right-handed reading", "右手系で読むと",
-                                     "Прочтение в правой системе"};
 constexpr Phrase kReadInRightHanded{
     "Read in right-handed coordinates (gluLookAt and the right-handed projection on the same "
     "numbers), the chain is P_right·diag(−1, 1, 1, 1)·V_right instead: the view coordinates' x "

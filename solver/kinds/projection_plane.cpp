@@ -42,7 +42,6 @@ constexpr Phrase kReadRightHandedPlane{
     "と y′ はどちらで読んでも同じである.",
     "В правой системе (взгляд вдоль −z) та же картина даёт плоскость z = −s и противоположный знак "
     "z у каждой точки: x′ и y′ в обоих прочтениях одинаковы."};
-constexpr Phrase kSimilarTriangles{"Similar triangles", "相似な三角形", "Подобные треугольники"};
 
 // +1 when eye space looks down +z (left-handed: DirectX, or a course that declares it), else −1.
 int looking_down(const Conventions& c) { return handedness_of(c) == Handedness::Left ? 1 : -1; }

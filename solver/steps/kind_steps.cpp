@@ -22,8 +22,6 @@ namespace frustum {
 
 namespace {
 
-constexpr Phrase kIllConditionedNormal{"Ill-conditioned normal", "条件の悪い法線",
-                                       "Плохо обусловленная нормаль"};
 constexpr Phrase kNormalDirectionIllConditioned{"The normal's direction is ill-conditioned ({0}).",
                                                 "法線の向きは条件が悪い ({0}).",
                                                 "Направление нормали плохо обусловлено ({0})."};

@@ -13,6 +13,14 @@
 
 namespace frustum {
 
+// Step titles several kinds write.
+inline constexpr Phrase kWindingLeftHanded{
+    "Winding in a left-handed frame", "左手系での頂点の回り順", "Порядок обхода в левой системе"};
+inline constexpr Phrase kRightHandedReading{"The right-handed reading", "右手系で読むと",
+                                            "Прочтение в правой системе"};
+inline constexpr Phrase kIllConditionedNormal{"Ill-conditioned normal", "条件の悪い法線",
+                                              "Плохо обусловленная нормаль"};
+
 // Normal of a polygon, counter-clockwise = front: e_0 × e_1 for a triangle (seed 003),
 // Newell's method for more vertices. Records the steps and warnings (degenerate, nearly
 // parallel or zero edges, non-planar) when `steps` is set. Throws DomainError on a

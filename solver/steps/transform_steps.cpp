@@ -37,7 +37,6 @@ constexpr Phrase kRodrigues{
 constexpr Phrase kAxisNormalisedFirst{"The axis is normalised first: (x, y, z) = {0}.",
                                       "軸をまず正規化する: (x, y, z) = {0}.",
                                       "Сначала ось нормируется: (x, y, z) = {0}."};
-constexpr Phrase kStepTitle{"A{0}: {1}", "A{0}: {1}", "A{0}: {1}"};
 constexpr Phrase kRowVectorsLeftmost{
     "DirectX multiplies row vectors: P′ = P·M, so the step applied first stands leftmost and "
     "every matrix is the transpose of its column-vector form (a translation in the bottom row, as "

@@ -17,6 +17,9 @@
 
 namespace frustum {
 
+// "A1: translate (2, 3)": a step of a composite transform by its number and heading.
+inline constexpr Phrase kStepTitle{"A{0}: {1}", "A{0}: {1}", "A{0}: {1}"};
+
 struct TransformStep {
   Said heading;  // "translate (2, 3)", in every language
   MatX<Exact> matrix;

@@ -21,7 +21,6 @@ constexpr Phrase kCameraAxesRightHanded{"Camera axes (right-handed, looking down
 constexpr Phrase kSideAxis{"Side axis", "横方向の軸", "Боковая ось"};
 constexpr Phrase kTranslations{"Translations", "平行移動", "Переносы"};
 constexpr Phrase kViewMatrix{"View matrix", "視野変換行列", "Матрица вида"};
-constexpr Phrase kSimilarTriangles{"Similar triangles", "相似な三角形", "Подобные треугольники"};
 constexpr Phrase kDepthGoesIntoW{"Homogeneous coordinates: the depth goes into w′",
                                  "同次座標: 奥行きを w′ に入れる",
                                  "Однородные координаты: глубина уходит в w′"};

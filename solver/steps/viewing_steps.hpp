@@ -14,6 +14,10 @@
 
 namespace frustum {
 
+// The step title of a projection's derivation by similar triangles.
+inline constexpr Phrase kSimilarTriangles{"Similar triangles", "相似な三角形",
+                                          "Подобные треугольники"};
+
 class GivenReader;
 
 // An angle in the conventions' unit, returned in radians (exact: 60 → π/3).
