@@ -13,7 +13,7 @@ int run_kinds(const Output& o, bool markdown) {
     return 0;
   }
   for (const KindInfo& k : builtin_kinds().all()) {
-    o.out << k.name << " — " << k.summary << "\n    given:";
+    o.out << k.name << " — " << k.summary.en() << "\n    given:";
     for (const std::string& f : k.given_fields) o.out << " " << f;
     o.out << "\n    answers:";
     for (const AnswerSpec& a : k.answers) o.out << " " << a.name;

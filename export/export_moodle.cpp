@@ -13,6 +13,10 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kEachNumberScoredOnItsOwn{"Each number is scored on its own here.",
+                                           "ここでは数ごとに採点される.",
+                                           "Здесь каждое число оценивается отдельно."};
+
 // Cloze answers treat } # ~ / " \ as syntax: a backslash keeps them literal.
 std::string cloze_literal(const std::string& s) {
   std::string out;
@@ -141,7 +145,7 @@ std::string cloze_question(const QuizQuestion& q, const std::string& name, Lang 
   // Cloze credits each field alone; said where an answer has several numbers.
   if (std::any_of(q.answers.begin(), q.answers.end(),
                   [](const QuizAnswer& a) { return a.fields.size() > 1; }))
-    html += "<p>" + xml_escape(tr("Each number is scored on its own here.", lang)) + "</p>";
+    html += "<p>" + xml_escape(kEachNumberScoredOnItsOwn.in(lang)) + "</p>";
   html += left_out_html(q, lang);
   // For the instructor (an XML comment is not imported): the mark Moodle gives the question.
   std::string out = fmt::format(

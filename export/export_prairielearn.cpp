@@ -19,8 +19,56 @@
 namespace frustum {
 
 using json = nlohmann::ordered_json;
+using namespace quiz_phrases;
 
 namespace {
+
+// What to type, for an answer entered as text.
+constexpr Phrase kNumberSuchAs{"a number such as 15/2, sqrt(3)/2 or 0.25",
+                               "15/2, sqrt(3)/2, 0.25 のような数",
+                               "число, например 15/2, sqrt(3)/2 или 0.25"};
+constexpr Phrase kVectorSuchAs{"a vector such as [1, -2, sqrt(3)/2]",
+                               "[1, -2, sqrt(3)/2] のようなベクトル",
+                               "вектор, например [1, -2, sqrt(3)/2]"};
+constexpr Phrase kRowsSuchAs{
+    "rows such as [[1, 0, 2], [0, 1, 3]]: a matrix row by row, or one point per row",
+    "[[1, 0, 2], [0, 1, 3]] のような行の並び: 行ごとの行列, または 1 行に 1 点",
+    "строки, например [[1, 0, 2], [0, 1, 3]]: матрица по строкам или по точке в строке"};
+constexpr Phrase kMatrixRowByRow{"a matrix row by row, such as [[1, 0], [0, 1]]",
+                                 "[[1, 0], [0, 1]] のように行ごとに書いた行列",
+                                 "матрица по строкам, например [[1, 0], [0, 1]]"};
+constexpr Phrase kPointsInOrder{"points in order, such as [[0, 0], [4, 0], [0, 3]], or none",
+                                "[[0, 0], [4, 0], [0, 3]] のように順に並べた点, または none",
+                                "точки по порядку, например [[0, 0], [4, 0], [0, 3]], или none"};
+constexpr Phrase kEquationSuchAs{"an equation such as x + y - z = -6",
+                                 "x + y - z = -6 のような方程式",
+                                 "уравнение, например x + y - z = -6"};
+constexpr Phrase kMappingSuchAs{"a mapping such as {0-1: visible, 1-2: hidden}",
+                                "{0-1: visible, 1-2: hidden} のような対応",
+                                "соответствие, например {0-1: visible, 1-2: hidden}"};
+constexpr Phrase kListInOrder{"a list in order, such as [2, 0, 1]",
+                              "[2, 0, 1] のように順に並べたリスト",
+                              "список по порядку, например [2, 0, 1]"};
+constexpr Phrase kListSuchAs{"a list such as [1-3, 2-7]", "[1-3, 2-7] のようなリスト",
+                             "список, например [1-3, 2-7]"};
+// Under a text input: exact forms, and the window of each decimal.
+constexpr Phrase kInfinityWrittenInf{
+    "+∞, the depth of a pixel no polygon covers, is written inf (or 1e30)",
+    "+∞ (どの多角形にも覆われない画素の奥行き) は inf (または 1e30) と書く",
+    "+∞ — глубину пикселя, не покрытого ни одним многоугольником, — пишут inf (или 1e30)"};
+constexpr Phrase kExactFormsOneWindow{
+    "Exact forms such as 15/2 or sqrt(3)/2 are accepted; a decimal is right within {0} of the "
+    "exact value.",
+    "15/2 や sqrt(3)/2 のような厳密な形で答えてよい. 小数は厳密な値との差が {0} 以内なら正解.",
+    "Можно писать точные значения, например 15/2 или sqrt(3)/2; десятичная дробь верна, если "
+    "отличается от точного значения не более чем на {0}."};
+constexpr Phrase kExactFormsWindows{
+    "Exact forms such as 15/2 or sqrt(3)/2 are accepted; decimals are right within {0} of the "
+    "exact values, in order.",
+    "15/2 や sqrt(3)/2 のような厳密な形で答えてよい. 小数は厳密な値との差が順に {0} "
+    "以内なら正解.",
+    "Можно писать точные значения, например 15/2 или sqrt(3)/2; десятичные дроби верны, если "
+    "отличаются от точных значений не более чем на {0} (по порядку)."};
 
 std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 1469598103934665603ull) {
   for (const unsigned char c : s) h = (h ^ c) * 1099511628211ull;
@@ -55,38 +103,38 @@ std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang la
     s += fmt::format("  <pl-answer correct=\"{}\">{}. {}</pl-answer>\n",
                      f.right[i] ? "true" : "false", i + 1, xml_escape(f.choices[i]));
   s += fmt::format("  <pl-answer correct=\"{}\">{}</pl-answer>\n", none_true ? "true" : "false",
-                   xml_escape(tr("None of the statements above is true", lang)));
+                   xml_escape(kNoStatementIsTrue.in(lang)));
   return s + "</pl-checkbox>";
 }
 
 // What to type, for an answer entered as text (Frustum reads it: exact forms, `none`).
-const char* hint_of(AnswerKind kind) {
+const Phrase& hint_of(AnswerKind kind) {
   switch (kind) {
     case AnswerKind::Scalar:
-      return "a number such as 15/2, sqrt(3)/2 or 0.25";
+      return kNumberSuchAs;
     case AnswerKind::Vector:
     case AnswerKind::Direction:
     case AnswerKind::UnitVector:
     case AnswerKind::Point:
-      return "a vector such as [1, -2, sqrt(3)/2]";
+      return kVectorSuchAs;
     case AnswerKind::Matrix:
-      return "rows such as [[1, 0, 2], [0, 1, 3]]: a matrix row by row, or one point per row";
+      return kRowsSuchAs;
     case AnswerKind::Transform:
-      return "a matrix row by row, such as [[1, 0], [0, 1]]";
+      return kMatrixRowByRow;
     case AnswerKind::Segment:
     case AnswerKind::PointSet:
     case AnswerKind::Polygon:
-      return "points in order, such as [[0, 0], [4, 0], [0, 3]], or none";
+      return kPointsInOrder;
     case AnswerKind::Plane:
-      return "an equation such as x + y - z = -6";
+      return kEquationSuchAs;
     case AnswerKind::BitString:
-      return "a bit string such as 0101";
+      return kBitStringSuchAs;
     case AnswerKind::WordMap:
-      return "a mapping such as {0-1: visible, 1-2: hidden}";
+      return kMappingSuchAs;
     case AnswerKind::Sequence:
-      return "a list in order, such as [2, 0, 1]";
+      return kListInOrder;
     default:
-      return "a list such as [1-3, 2-7]";
+      return kListSuchAs;
   }
 }
 
@@ -113,7 +161,7 @@ std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) 
       "remove-leading-trailing=\"true\" show-help-text=\"false\"></pl-string-input>\n"
       "<pl-question-panel>{{{{#params.help.{0}}}}}<p class=\"small\">{{{{params.help.{0}}}}}</p>"
       "{{{{/params.help.{0}}}}}</pl-question-panel>",
-      name, xml_escape(tr(hint_of(spec.kind), lang)));
+      name, xml_escape(hint_of(spec.kind).in(lang)));
 }
 
 // The key as a student types it (`[1, 1, -1]`, `sqrt(14)/14`, `none`), for the answer panel.
@@ -135,29 +183,16 @@ std::string help_text(const ProblemSpec& p, const Answers& key, const AnswerSpec
   const bool infinity =
       spec.infinity != 0 && std::find(expected.numbers.begin(), expected.numbers.end(),
                                       spec.infinity) != expected.numbers.end();
-  const std::string why =
-      infinity
-          ? " " + tr("+∞, the depth of a pixel no polygon covers, is written inf (or 1e30)", lang) +
-                "."
-          : "";
+  const std::string why = infinity ? fmt::format(" {}.", kInfinityWrittenInf.in(lang)) : "";
   const std::vector<double> windows = accepted_windows(p, key, spec.name, expected);
   std::vector<std::string> items;
   for (const double w : windows) items.push_back(fmt::format("±{:.3g}", w));
   bool same = true;
   for (const std::string& i : items) same = same && i == items.front();
-  if (same)
-    return tr(fmt::format("Exact forms such as 15/2 or sqrt(3)/2 are accepted; a decimal is right "
-                          "within {} of the exact value.",
-                          items.front()),
-              lang) +
-           why;
+  if (same) return say(kExactFormsOneWindow, items.front()).in(lang) + why;
   std::string list;
   for (const std::string& i : items) list += (list.empty() ? "" : ", ") + i;
-  return tr(fmt::format("Exact forms such as 15/2 or sqrt(3)/2 are accepted; decimals are right "
-                        "within {} of the exact values, in order.",
-                        list),
-            lang) +
-         why;
+  return say(kExactFormsWindows, list).in(lang) + why;
 }
 
 // One problem of a variant as a complete one-problem set (the set's other fields kept).

@@ -11,6 +11,28 @@ namespace frustum {
 
 namespace {
 
+// Slots {0}, {1}, {2} hold the same number T (a slot is filled once per use).
+constexpr Phrase kCanvasScoresByItsOwnRule{
+    "Canvas scores this question by its own rule: each right choice ticked earns 1/{0} of the "
+    "points and each wrong one ticked loses 1/{1} ({2} right choices), never below 0.",
+    "この問題は Canvas の規則で採点される: 正しい選択肢 1 つごとに配点の 1/{0} を得て, "
+    "誤った選択肢 1 つごとに 1/{1} を失う (正しい選択肢は {2} 個, 0 点未満にはならない).",
+    "Этот вопрос Canvas оценивает по своему правилу: каждый отмеченный верный вариант даёт 1/{0} "
+    "баллов, каждый отмеченный неверный отнимает 1/{1} (верных вариантов: {2}), но не меньше 0."};
+constexpr Phrase kEachBoxScoredOnItsOwn{
+    "Each box is scored on its own here, by its text: write each number as a decimal rounded "
+    "as asked.",
+    "ここでは欄ごとに, 書かれた文字列で採点される: 各数は指示どおりに丸めた小数で書くこと.",
+    "Здесь каждое поле оценивается отдельно, по записанному тексту: пишите каждое число "
+    "десятичной дробью, округлённой как указано."};
+constexpr Phrase kToDecimalPlaces{"to {0} decimal places", "小数第 {0} 位まで",
+                                  "с {0} знаками после запятой"};
+constexpr Phrase kInfinityIsWrittenInf{"+∞ is written inf", "+∞ は inf と書く", "+∞ пишется inf"};
+constexpr Phrase kOneOf{"one of:", "次のいずれか:", "одно из:"};
+constexpr Phrase kNumbersOfTheTrueStatements{"the numbers of the true statements, such as 1, 3",
+                                             "正しい記述の番号 (例: 1, 3)",
+                                             "номера верных утверждений, например 1, 3"};
+
 // Numbers as QTI and Canvas read them: shortest round-trip decimal.
 std::string num(double v) { return fmt::format("{}", v); }
 
@@ -36,13 +58,8 @@ std::string stem(const QuizQuestion& q, const QuizAnswer& a, const QuizField& f,
   // boxes) and cannot be changed by the import: stated so the students know what counts.
   if (f.type == QuizField::Type::Checkboxes) {
     const auto right = std::count(f.right.begin(), f.right.end(), true);
-    html += "<p>" +
-            xml_escape(tr(fmt::format("Canvas scores this question by its own rule: each right "
-                                      "choice ticked earns 1/{0} of the points and each wrong one "
-                                      "ticked loses 1/{0} ({0} right choices), never below 0.",
-                                      right),
-                          lang)) +
-            "</p>";
+    html +=
+        "<p>" + xml_escape(say(kCanvasScoresByItsOwnRule, right, right, right).in(lang)) + "</p>";
   }
   return "          <material><mattext texttype=\"text/html\">" + xml_escape(html) +
          "</mattext></material>\n";
@@ -164,11 +181,7 @@ std::string blanks_item(const QuizQuestion& q, const std::string& ident, const s
     }
     html += "</p>";
   }
-  html += "<p>" +
-          xml_escape(tr("Each box is scored on its own here, by its text: write each number as a "
-                        "decimal rounded as asked.",
-                        lang)) +
-          "</p>" + left_out_html(q, lang);
+  html += "<p>" + xml_escape(kEachBoxScoredOnItsOwn.in(lang)) + "</p>" + left_out_html(q, lang);
   const std::size_t blanks = field_count(q);
   std::string scored;
   for (const auto& [id, label] : right)
@@ -256,14 +269,14 @@ CanvasBlank canvas_blank(const QuizField& f, Lang lang) {
     case QuizField::Type::Number: {
       if (f.value == kQuizInfinity) {
         for (const char* t : {"inf", "+inf", "∞", "+∞", "infinity", "1e30"}) add(t);
-        b.hint = tr("+∞ is written inf", lang);
+        b.hint = kInfinityIsWrittenInf.in(lang);
         return b;
       }
       // The fewest decimals (at least 2) whose rounding stays inside the grader's window (a
       // window of 0 is an exact value such as a matrix's fixed 0 or 1: 2 decimals).
       while (f.window > 0 && b.places < 12 && 0.5 * std::pow(10.0, -b.places) > f.window)
         ++b.places;
-      b.hint = tr(fmt::format("to {} decimal places", b.places), lang);
+      b.hint = say(kToDecimalPlaces, b.places).in(lang);
       // Rounded to that many places or up to two more; a value on a half of the last place is
       // accepted rounded either way; trailing zeros and a leading 0 may be left out.
       const double nudge = std::min(std::max(std::abs(f.value), 1.0) * 1e-12, f.window / 4);
@@ -285,7 +298,7 @@ CanvasBlank canvas_blank(const QuizField& f, Lang lang) {
     case QuizField::Type::Choice:
       add(f.correct);
       for (const std::string& also : f.also) add(also);
-      b.hint = tr("one of:", lang);
+      b.hint = kOneOf.in(lang);
       for (std::size_t i = 0; i < f.choices.size(); ++i) b.hint += (i ? ", " : " ") + f.choices[i];
       return b;
     case QuizField::Type::Text:
@@ -303,7 +316,7 @@ CanvasBlank canvas_blank(const QuizField& f, Lang lang) {
         words += (words.empty() ? "" : " ") + n;
       }
       for (const std::string& t : {spaced, tight, words}) add(t);
-      b.hint = tr("the numbers of the true statements, such as 1, 3", lang) + ":";
+      b.hint = fmt::format("{}:", kNumbersOfTheTrueStatements.in(lang));
       for (std::size_t i = 0; i < f.choices.size(); ++i)
         b.hint += fmt::format("{} {}. {}", i ? ";" : "", i + 1, f.choices[i]);
       return b;

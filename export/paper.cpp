@@ -16,6 +16,57 @@ namespace frustum {
 
 namespace {
 
+constexpr Phrase kExam{"exam", "試験", "контрольная работа"};
+constexpr Phrase kAnswerKey{"answer key", "解答", "ответы"};
+constexpr Phrase kName{"Name", "氏名", "Имя"};
+
+// The answer lines of a paper exam in the sheet's language, for an answer with no symbol of its
+// own: each phrase's English is the answer's name, which the English sheet writes.
+constexpr Phrase kAnswerLines[] = {
+    {"accept", "採択", "принятие"},
+    {"reject", "棄却", "отбрасывание"},
+    {"backface_sufficient", "バックフェースカリングだけで十分か",
+     "достаточно ли отсечения нелицевых граней"},
+    {"centroids", "重心", "центроиды"},
+    {"clip", "クリップ座標", "координаты отсечения"},
+    {"clipped", "クリッピングの結果", "результат отсечения"},
+    {"color", "色", "цвет"},
+    {"convex", "凸か", "выпуклый ли"},
+    {"depth", "奥行き", "глубина"},
+    {"depths", "奥行き", "глубины"},
+    {"faces", "面", "грани"},
+    {"facing", "表裏", "ориентация"},
+    {"frame", "フレーム", "кадр"},
+    {"inside", "内側か", "внутри ли"},
+    {"ndc", "正規化デバイス座標", "нормализованные координаты"},
+    {"object", "物体", "объект"},
+    {"order", "描画順", "порядок рисования"},
+    {"outcode_p", "p の領域コード", "код области p"},
+    {"outcode_q", "q の領域コード", "код области q"},
+    {"perspective_matrix", "透視変換行列", "матрица перспективы"},
+    {"pixels", "画素", "пиксели"},
+    {"plane", "平面", "плоскость"},
+    {"point", "点", "точка"},
+    {"points", "点", "точки"},
+    {"scale_matrix", "拡大縮小行列", "матрица масштабирования"},
+    {"steps", "手順", "шаги"},
+    {"total", "合計", "сумма"},
+    {"true_statements", "正しい記述", "верные утверждения"},
+    {"window", "ウィンドウ座標", "оконные координаты"},
+    {"conflicts", "競合", "конфликты"},
+    {"edges", "稜線", "рёбра"},
+    {"hidden", "不可視の稜線", "невидимые рёбра"},
+    {"silhouette", "輪郭線", "контурные рёбра"},
+    {"homogeneous", "同次座標", "однородные координаты"},
+    {"cartesian", "通常座標", "декартовы координаты"},
+    {"same_point", "同じ点か", "та же ли точка"},
+    {"array", "配列", "массив"},
+    {"matrix", "行列", "матрица"},
+    {"spans", "断面", "сечения"},
+    {"visible", "各区間で見える断面", "видимые сечения по отрезкам"},
+    {"breaks", "区切り点", "точки разбиения"},
+};
+
 // The whole document: LuaLaTeX with luatexja as soon as any Japanese appears (a problem's text,
 // or a step's gloss such as 輪郭線), with a Cyrillic font as soon as any Russian does, pdflatex
 // otherwise.
@@ -51,11 +102,12 @@ std::string points_text(double points, Lang lang) {
   return fmt::format("{:g} point{}", points, points == 1 ? "" : "s");
 }
 
-std::string sheet_head(const std::string& title, const PaperSheet& s, const char* what, Lang lang) {
+std::string sheet_head(const std::string& title, const PaperSheet& s, const Phrase& what,
+                       Lang lang) {
   return fmt::format(
       "\\section*{{{} --- {}}}\n\\textbf{{{}}} \\hfill {}: \\rule{{5cm}}{{0.4pt}}\n\n",
-      latex_prose(title), latex_prose(tr(what, lang)), latex_prose(s.student),
-      latex_prose(tr("Name", lang)));
+      latex_prose(title), latex_prose(what.in(lang)), latex_prose(s.student),
+      latex_prose(kName.in(lang)));
 }
 
 // What an answer line is labelled with, in the sheet's language: the symbol the derivation
@@ -63,9 +115,9 @@ std::string sheet_head(const std::string& title, const PaperSheet& s, const char
 std::string answer_label(const ProblemSpec& p, const std::string& name, Lang lang) {
   const AnswerSpec* spec = p.info ? p.info->answer(name) : nullptr;
   if (spec && !spec->symbols.empty()) return latex_prose_symbols(spec->symbols.front());
-  const std::string words = tr("answer line: " + name, lang);
-  const std::string shown = words.rfind("answer line: ", 0) == 0 ? name : words;
-  return lang == Lang::En ? latex_prose_symbols(name) : latex_prose_symbols(shown);
+  for (const Phrase& line : kAnswerLines)
+    if (line.en == name) return latex_prose_symbols(line.in(lang));
+  return latex_prose_symbols(name);
 }
 
 }  // namespace
@@ -76,7 +128,7 @@ std::string exam_sheets_latex(const std::vector<PaperSheet>& sheets, const std::
   for (std::size_t k = 0; k < sheets.size(); ++k) {
     const PaperSheet& s = sheets[k];
     if (k) out += "\\clearpage\n";
-    out += sheet_head(title, s, "exam", lang);
+    out += sheet_head(title, s, kExam, lang);
     int n = 0;
     for (const ProblemSpec& p : s.set.problems) {
       if (p.error || !p.info) continue;
@@ -116,7 +168,7 @@ std::string answer_key_latex(const std::vector<PaperSheet>& sheets, const std::s
   for (std::size_t k = 0; k < sheets.size(); ++k) {
     const PaperSheet& s = sheets[k];
     if (k) out += "\\clearpage\n";
-    out += sheet_head(title, s, "answer key", lang);
+    out += sheet_head(title, s, kAnswerKey, lang);
     int n = 0;
     for (const ProblemSpec& p : s.set.problems) {
       if (p.error || !p.info) continue;

@@ -7,6 +7,7 @@
 
 #include "export/export_tolerance.hpp"
 #include "export/xml_text.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/text_reader.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/solve_set.hpp"
@@ -14,7 +15,48 @@
 
 namespace frustum {
 
+using namespace quiz_phrases;
+
 namespace {
+
+constexpr Phrase kTheTrueStatements{"the true statements", "正しい記述", "верные утверждения"};
+constexpr Phrase kScaledSoThatW{"scaled so that w = {0}", "w = {0} となるように定数倍して",
+                                "умноженный на число так, чтобы w = {0}"};
+constexpr Phrase kInfinityStandsFor{"1e30 stands for +∞, the depth of a pixel no polygon covers",
+                                    "1e30 は +∞ (どの多角形にも覆われない画素の奥行き) を表す",
+                                    "1e30 обозначает +∞ — глубину пикселя, не покрытого ни одним "
+                                    "многоугольником"};
+constexpr Phrase kScaledToLength1{"scaled to length 1", "長さ 1 に正規化して",
+                                  "нормированный к длине 1"};
+constexpr Phrase kNotAskedHere{"Not asked here:", "ここでは問わない:", "Здесь не спрашивается:"};
+constexpr Phrase kUseTheValuesGivenBelow{"(Use the values given below.)", "(下に示す値を使うこと.)",
+                                         "(Используйте значения, данные ниже.)"};
+// Why an answer is not asked in a quiz (no field type can express its equivalence).
+constexpr Phrase kNoValueHere{"it has no value here", "ここでは値がない",
+                              "здесь у него нет значения"};
+constexpr Phrase kZeroVectorNoDirection{"a zero vector has no direction",
+                                        "零ベクトルには向きがない",
+                                        "у нулевого вектора нет направления"};
+constexpr Phrase kPlaneUpToFactor{"a plane's equation is right up to any non-zero factor",
+                                  "平面の方程式は 0 でない定数倍しても正しい",
+                                  "уравнение плоскости верно с точностью до ненулевого множителя"};
+constexpr Phrase kPolygonAnyStart{"a polygon is right from any starting vertex",
+                                  "多角形はどの頂点から始めても正しい",
+                                  "многоугольник верен при любой начальной вершине"};
+constexpr Phrase kSegmentEitherDirection{"a segment is right in either direction",
+                                         "線分はどちらの向きでも正しい",
+                                         "отрезок верен в обоих направлениях"};
+constexpr Phrase kPointSetAnyOrder{"a set of points is right in any order",
+                                   "点の集合はどの順でも正しい",
+                                   "множество точек верно в любом порядке"};
+constexpr Phrase kLabelSetAnyOrder{"a set of labels is right in any order",
+                                   "ラベルの集合はどの順でも正しい",
+                                   "множество меток верно в любом порядке"};
+constexpr Phrase kLabelOrderNoField{"an order of labels has no quiz field",
+                                    "ラベルの順序を問う欄はない",
+                                    "для порядка меток нет поля теста"};
+constexpr Phrase kNoFieldFits{"no quiz field fits it", "合う欄がない",
+                              "для него нет подходящего поля"};
 
 std::vector<QuizField> numbers(const Value& v, const std::vector<double>& windows) {
   static const char* const kAxes[] = {"x", "y", "z", "w"};
@@ -33,20 +75,19 @@ std::vector<QuizField> numbers(const Value& v, const std::vector<double>& window
   return out;
 }
 
-std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAnswer& a, Lang lang) {
+void statement_boxes(const ProblemSpec& p, const Value& expected, QuizAnswer& a, Lang lang) {
   QuizField f = statement_checkboxes(p, expected, lang);
   // A multiple-answer question needs a right choice (Moodle: fractions adding up to 100 %):
   // when no statement is true, the right one is "none", which Frustum scores as the blank
   // answer — full marks, and each false statement ticked costs 1/F.
   if (std::find(f.right.begin(), f.right.end(), true) == f.right.end()) {
-    f.choices.push_back(tr("None of the statements above is true", lang));
+    f.choices.emplace_back(kNoStatementIsTrue.in(lang));
     f.right.push_back(true);
     f.reasons.emplace_back();
     f.correct = "none";
   }
-  a.prompt = tr("the true statements", lang);
+  a.prompt = kTheTrueStatements.in(lang);
   a.fields = {f};
-  return {};
 }
 
 // A choice among words, in the students' language (front → 表): the words as `frustum grade`
@@ -55,8 +96,9 @@ std::string statement_boxes(const ProblemSpec& p, const Value& expected, QuizAns
 QuizField word_choice(const std::vector<std::string>& words, const std::string& right, Lang lang) {
   QuizField f;
   f.type = QuizField::Type::Choice;
-  for (const std::string& w : words) f.choices.push_back(tr(w, lang));
-  f.correct = tr(right, lang);
+  for (const std::string& w : words)
+    f.choices.push_back(frustum::words::vocabulary_word(w).in(lang));
+  f.correct = frustum::words::vocabulary_word(right).in(lang);
   if (f.correct != right) f.also = {right};
   return f;
 }
@@ -69,15 +111,15 @@ bool given_is_key(const ProblemSpec& p) {
 }
 
 // The fields of one answer, or the reason it cannot be a quiz field.
-std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
-                      const Value& expected, QuizAnswer& a, Lang lang) {
-  if (expected.shape == Value::Shape::Null) return "it has no value here";
+Said fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
+               const Value& expected, QuizAnswer& a, Lang lang) {
+  if (expected.shape == Value::Shape::Null) return say(kNoValueHere);
   switch (spec.kind) {
     case AnswerKind::Point:
       // Homogeneous (x, y, z, w) is right up to the scale of w: the quiz asks for the key's w.
       if (expected.numbers.size() == 4)
-        a.prompt +=
-            " (" + tr(fmt::format("scaled so that w = {}", expected.numbers[3]), lang) + ")";
+        a.prompt += fmt::format(
+            " ({})", say(kScaledSoThatW, fmt::format("{}", expected.numbers[3])).in(lang));
       [[fallthrough]];
     case AnswerKind::Scalar:
     case AnswerKind::Vector:
@@ -86,8 +128,7 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
     case AnswerKind::Transform:
       if (std::find(expected.numbers.begin(), expected.numbers.end(), kQuizInfinity) !=
           expected.numbers.end())
-        a.prompt +=
-            " (" + tr("1e30 stands for +∞, the depth of a pixel no polygon covers", lang) + ")";
+        a.prompt += fmt::format(" ({})", kInfinityStandsFor.in(lang));
       a.fields = numbers(expected, accepted_windows(p, key, spec.name, expected));
       return {};
     case AnswerKind::Direction: {
@@ -96,10 +137,10 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
       double norm = 0;
       for (double x : unit.numbers) norm += x * x;
       norm = std::sqrt(norm);
-      if (norm == 0) return "a zero vector has no direction";
+      if (norm == 0) return say(kZeroVectorNoDirection);
       for (double& x : unit.numbers) x /= norm;
       unit.exact.clear();
-      a.prompt += " (" + tr("scaled to length 1", lang) + ")";
+      a.prompt += fmt::format(" ({})", kScaledToLength1.in(lang));
       a.fields = numbers(unit, accepted_windows(p, key, spec.name, unit));
       return {};
     }
@@ -117,27 +158,28 @@ std::string fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec
       // outcode written as a number: 101 for 0101, 0 for 0000).
       for (std::size_t k = 1; k < f.correct.size() && f.correct[k - 1] == '0'; ++k)
         f.also.push_back(f.correct.substr(k));
-      a.prompt += " (" + tr("a bit string such as 0101", lang) + ")";
+      a.prompt += fmt::format(" ({})", kBitStringSuchAs.in(lang));
       a.fields = {f};
       return {};
     }
     case AnswerKind::Plane:
-      return "a plane's equation is right up to any non-zero factor";
+      return say(kPlaneUpToFactor);
     case AnswerKind::Polygon:
-      return "a polygon is right from any starting vertex";
+      return say(kPolygonAnyStart);
     case AnswerKind::Segment:
-      return "a segment is right in either direction";
+      return say(kSegmentEitherDirection);
     case AnswerKind::PointSet:
-      return "a set of points is right in any order";
+      return say(kPointSetAnyOrder);
     case AnswerKind::WordMap:
     case AnswerKind::WordList:
-      return "a set of labels is right in any order";
+      return say(kLabelSetAnyOrder);
     case AnswerKind::Sequence:
-      return "an order of labels has no quiz field";
+      return say(kLabelOrderNoField);
     case AnswerKind::Statements:
-      return statement_boxes(p, expected, a, lang);
+      statement_boxes(p, expected, a, lang);
+      return {};
   }
-  return "no quiz field fits it";
+  return say(kNoFieldFits);
 }
 
 }  // namespace
@@ -168,7 +210,7 @@ std::string question_html(const QuizQuestion& q) {
 
 std::string left_out_html(const QuizQuestion& q, Lang lang) {
   if (q.left_out.empty()) return {};
-  std::string html = "<p>" + xml_escape(tr("Not asked here:", lang));
+  std::string html = "<p>" + xml_escape(kNotAskedHere.in(lang));
   for (const std::string& l : q.left_out) html += " " + xml_escape(l) + ";";
   return html + "</p>";
 }
@@ -198,11 +240,11 @@ QuizField statement_checkboxes(const ProblemSpec& p, const Value& key, Lang lang
 }
 
 std::string question_text(const ProblemSet& set, const ProblemSpec& p, Lang lang) {
-  if (p.text.empty()) return p.info ? tr(p.info->summary, lang) : p.kind;
+  if (p.text.empty()) return p.info ? p.info->summary.in(lang) : p.kind;
   const std::string& written = p.text.in(lang);
   std::string text = fill_text(written, p.given_node);
   if (set.variant && written.find('{') == std::string::npos)
-    text += " " + tr("(Use the values given below.)", lang);
+    text += fmt::format(" {}", kUseTheValuesGivenBelow.in(lang));
   return text;
 }
 
@@ -233,11 +275,11 @@ std::vector<QuizQuestion> quiz_questions(const ProblemSet& set, Lang lang) {
       a.name = name;
       a.prompt = name;
       a.points = p.answer_points(name);
-      const std::string reason = fields_of(p, r.answers, *spec, *expected, a, lang);
+      const Said reason = fields_of(p, r.answers, *spec, *expected, a, lang);
       if (reason.empty())
         q.answers.push_back(a);
       else
-        q.left_out.push_back(name + ": " + tr(reason, lang));
+        q.left_out.push_back(name + ": " + reason.in(lang));
     }
     out.push_back(q);
   }

@@ -10,8 +10,20 @@
 
 #include "solver/problem/kind.hpp"
 #include "solver/problem/problem_set.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum {
+
+// Words the quiz exports say in more than one file (quiz_items.cpp and the exports).
+namespace quiz_phrases {
+
+inline constexpr Phrase kNoStatementIsTrue{"None of the statements above is true",
+                                           "上の記述はどれも正しくない",
+                                           "Ни одно из утверждений выше не верно"};
+inline constexpr Phrase kBitStringSuchAs{"a bit string such as 0101", "0101 のようなビット列",
+                                         "битовая строка, например 0101"};
+
+}  // namespace quiz_phrases
 
 // How a key writes +∞ (a z-buffer's background depth) in a number field, which cannot hold ∞.
 constexpr double kQuizInfinity = 1e30;

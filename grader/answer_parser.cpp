@@ -10,13 +10,123 @@
 #include "grader/statement_choice.hpp"
 #include "solver/core/exact.hpp"
 #include "solver/core/work_budget.hpp"
-#include "solver/derivation/i18n.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/util/expression.hpp"
 #include "solver/util/words.hpp"
 
 namespace frustum {
 
 namespace {
+
+// Why an answer cannot be read, and how it was read when not exactly.
+constexpr Phrase kAnswerTooLong{"the answer is too long (more than {0} bytes)",
+                                "解答が長すぎます ({0} バイトを超えています)",
+                                "ответ слишком длинный (больше {0} байт)"};
+constexpr Phrase kEmptyAnswer{"empty answer", "空の解答", "пустой ответ"};
+constexpr Phrase kReadNumerically{
+    "too complex to compare exactly, so its value was computed to {0} significant digits and "
+    "compared within the tolerance",
+    "厳密に比較するには複雑すぎるので, 値を有効数字 {0} 桁で計算し, 許容誤差内で比較しました",
+    "слишком сложен для точного сравнения, поэтому его значение вычислено с {0} значащими "
+    "цифрами и сравнено в пределах допуска"};
+// A number. '{0}' is the answer's text quoted (quote_excerpt without its quotes), kept as
+// written in every language.
+constexpr Phrase kCannotRead{"cannot read '{0}': {1}", "`{0}` を読めません: {1}",
+                             "не удаётся прочитать `{0}`: {1}"};
+constexpr Phrase kNotFiniteNumber{"'{0}' is not a finite number", "`{0}` は有限の数ではありません",
+                                  "`{0}` — не конечное число"};
+constexpr Phrase kNotRealNumber{"'{0}' is not a real number", "`{0}` は実数ではありません",
+                                "`{0}` — не действительное число"};
+constexpr Phrase kCannotEvaluate{"'{0}' cannot be evaluated as a number",
+                                 "`{0}` は数として評価できません",
+                                 "`{0}` нельзя вычислить как число"};
+constexpr Phrase kExpectedOneNumber{"expected one number", "数が一つ必要です",
+                                    "ожидалось одно число"};
+// Lists of numbers, vectors, rows and vertices.
+constexpr Phrase kCannotDivideVector{"cannot divide the vector by '{0}', which is 0",
+                                     "ベクトルを `{0}` で割れません (0 です)",
+                                     "нельзя разделить вектор на `{0}`: это 0"};
+constexpr Phrase kItemNotNumber{"item {0} is not a number", "要素 {0} は数ではありません",
+                                "элемент {0} — не число"};
+constexpr Phrase kExpectedNumbers{"expected a list of numbers", "数のリストが必要です",
+                                  "ожидался список чисел"};
+constexpr Phrase kExpectedRows{"expected a list of rows, like {0} or {1}",
+                               "行のリストが必要です (例: {0} または {1})",
+                               "ожидался список строк, например {0} или {1}"};
+constexpr Phrase kExpectedVertices{"expected a list of vertices, like {0} or {1}",
+                                   "頂点のリストが必要です (例: {0} または {1})",
+                                   "ожидался список вершин, например {0} или {1}"};
+constexpr Phrase kInRow{"row {0}: {1}", "行 {0}: {1}", "строка {0}: {1}"};
+constexpr Phrase kInVertex{"vertex {0}: {1}", "頂点 {0}: {1}", "вершина {0}: {1}"};
+constexpr Phrase kRowsDifferentLengths{"the rows have different lengths",
+                                       "行の長さがそろっていません", "строки разной длины"};
+constexpr Phrase kVertexWrongCoordinates{"vertex {0}: wrong number of coordinates",
+                                         "頂点 {0}: 座標の個数が違います",
+                                         "вершина {0}: неверное число координат"};
+// A plane.
+constexpr Phrase kCannotReadPlane{"cannot read the plane '{0}': {1}",
+                                  "平面 `{0}` を読めません: {1}",
+                                  "не удаётся прочитать плоскость `{0}`: {1}"};
+constexpr Phrase kPlaneIsEquationOrList{
+    "a plane is an equation like 'x + y - z = -6' or a list [a, b, c, d]",
+    "平面は 'x + y - z = -6' のような方程式か, リスト [a, b, c, d] で書きます",
+    "плоскость — уравнение вида 'x + y - z = -6' или список [a, b, c, d]"};
+constexpr Phrase kPlaneNotLinear{"the plane is not linear in {0}",
+                                 "平面が {0} について線形ではありません",
+                                 "плоскость не линейна по {0}"};
+constexpr Phrase kPlaneCoefficientsNumbers{"the plane's coefficients must be numbers",
+                                           "平面の係数は数でなければなりません",
+                                           "коэффициенты плоскости должны быть числами"};
+constexpr Phrase kPlaneHasFourCoefficients{
+    "a plane has 4 coefficients [a, b, c, d] of ax + by + cz = d",
+    "平面の係数は a·x + b·y + c·z = d の 4 つ [a, b, c, d] です",
+    "у плоскости 4 коэффициента [a, b, c, d] уравнения a·x + b·y + c·z = d"};
+// Words.
+constexpr Phrase kExpectedTrueOrFalse{"expected true or false", "true か false が必要です",
+                                      "ожидалось true или false"};
+constexpr Phrase kNotTrueOrFalse{"'{0}' is not true or false", "`{0}` は 真 でも 偽 でもありません",
+                                 "`{0}` — не истина и не ложь"};
+constexpr Phrase kNotTrueOrFalseOr{"'{0}' is not true or false (or {1} or {2})",
+                                   "`{0}` は 真 でも 偽 でも ({1} でも {2} でも) ありません",
+                                   "`{0}` — не истина и не ложь (и не {1}, не {2})"};
+constexpr Phrase kExpectedOneWord{"expected one word", "語が一つ必要です", "ожидалось одно слово"};
+constexpr Phrase kNotOneOf{"'{0}' is not one of {1}", "`{0}` は次のいずれでもありません: {1}",
+                           "`{0}` — не одно из: {1}"};
+constexpr Phrase kExpectedBitString{"expected a bit string like 0101",
+                                    "0101 のようなビット列が必要です",
+                                    "ожидалась строка битов, например 0101"};
+constexpr Phrase kNotBitString{"'{0}' is not a bit string of 0 and 1",
+                               "`{0}` は 0 と 1 のビット列ではありません",
+                               "`{0}` — не строка битов из 0 и 1"};
+constexpr Phrase kItemNotWord{"item {0} is not a word", "要素 {0} は語ではありません",
+                              "элемент {0} — не слово"};
+constexpr Phrase kExpectedList{"expected a list", "リストが必要です", "ожидался список"};
+constexpr Phrase kExpectedMapping{"expected a mapping like {0}", "{0} のような対応付けが必要です",
+                                  "ожидалось сопоставление вида {0}"};
+constexpr Phrase kValueNotWord{"the value of '{0}' is not a word", "`{0}` の値は語ではありません",
+                               "значение `{0}` — не слово"};
+// The convexity answer's own pair of words (edge_visibility says them too).
+constexpr Phrase kConvex{"convex", "凸", "выпуклый"};
+constexpr Phrase kNotConvex{"not convex", "凸でない", "невыпуклый"};
+
+// Untrusted text as a message quotes it ('1+1+1...'), without the quotes: a phrase places it
+// in each language's own quotes.
+std::string excerpt(std::string_view text) {
+  const std::string q = quote_excerpt(text);
+  return q.substr(1, q.size() - 2);
+}
+
+// Why the expression reader (solver/util/expression_*.cpp) could not read a text. It says so in
+// English; TRANSITIONAL: translated through the old catalogue until the expression reader says
+// its reasons as phrases.
+Said expression_reason(const std::string& english) { return Said(english); }
+
+// A word of an answer's category or truth value as the key prints it in each language.
+Said word_said(const std::string& word) {
+  if (word == kConvex.en) return Said(kConvex);
+  if (word == kNotConvex.en) return Said(kNotConvex);
+  return words::vocabulary_word(word);
+}
 
 // Words a student may write for each category and boolean, with Japanese equivalents.
 const std::vector<std::pair<std::string, std::string>> kWordSynonyms = {
@@ -43,9 +153,11 @@ std::string known_word(const std::string& written, const std::vector<std::string
   std::string w = trim_lower(written);
   for (const auto& [syn, canon] : kWordSynonyms)
     if (syn == w) return canon;
-  for (const std::string& c : candidates)
+  for (const std::string& c : candidates) {
+    const Said said = word_said(c);
     for (const Lang lang : {Lang::Ja, Lang::Ru})
-      if (trim_lower(tr(c, lang)) == w) return c;
+      if (trim_lower(said.in(lang)) == w) return c;
+  }
   return w;
 }
 
@@ -55,7 +167,7 @@ const std::vector<std::string> kMapWords = {"front",   "back",   "edge_on",
 
 struct Numbers {
   std::vector<Exact> values;
-  std::string error;
+  Said error;
 };
 
 // An answer too complex to simplify within its work budget keeps only its value, computed
@@ -64,8 +176,7 @@ constexpr long kNumericFallbackDigits = 40;
 
 // `infinity`: where an answer holds +∞ as a stand-in number (AnswerSpec::infinity), +∞ written
 // inf, ∞ or infinity (or YAML's .inf) is that number; 0: +∞ is no answer.
-Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget,
-                double infinity = 0) {
+Exact parse_one(const std::string& text, Said& error, WorkBudget& budget, double infinity = 0) {
   // YAML's spellings of NaN and infinity (the expression parser knows nan, inf and ∞).
   const std::string t = trim_lower(text);
   const std::string body = !t.empty() && (t[0] == '+' || t[0] == '-') ? t.substr(1) : t;
@@ -73,24 +184,24 @@ Exact parse_one(const std::string& text, std::string& error, WorkBudget& budget,
       (body == "inf" || body == ".inf" || body == "infinity" || body == "∞"))
     return exact_from_double(infinity);
   if (body == ".nan" || body == ".inf") {
-    error = quote_excerpt(text) + " is not a finite number";
+    error = say(kNotFiniteNumber, excerpt(text));
     return 0;
   }
   ExpressionOptions options;
   options.degree_sign = true;
   const ExpressionResult r = parse_expression(text, options);
   if (!r) {
-    error = "cannot read " + quote_excerpt(text) + ": " + r.error;
+    error = say(kCannotRead, excerpt(text), expression_reason(r.error));
     return 0;
   }
   if (!is_real_constant(*r.value)) {
-    error = quote_excerpt(text) + " is not a real number";
+    error = say(kNotRealNumber, excerpt(text));
     return 0;
   }
   const Exact e = canonical(*r.value, budget);
   if (!budget.exceeded()) return e;
   const double v = to_double(e);  // kNumericFallbackDigits digits, then rounded
-  if (!std::isfinite(v)) error = quote_excerpt(text) + " cannot be evaluated as a number";
+  if (!std::isfinite(v)) error = say(kCannotEvaluate, excerpt(text));
   return std::isfinite(v) ? exact_from_double(v) : Exact(0);
 }
 
@@ -196,14 +307,14 @@ std::optional<Numbers> read_scaled_tuple(const std::string& text, WorkBudget& bu
   const auto times = [&](std::string f, bool divide) {
     f = trimmed(f);
     if (f.empty()) return false;
-    std::string error;
+    Said error;
     const Exact v = parse_one(f, error, budget);
     if (!error.empty()) {
       out.error = error;
       return false;
     }
     if (divide && v.is_zero()) {
-      out.error = "cannot divide the vector by " + quote_excerpt(f) + ", which is 0";
+      out.error = say(kCannotDivideVector, excerpt(f));
       return false;
     }
     factor = divide ? factor / v : factor * v;
@@ -245,7 +356,7 @@ Numbers read_numbers(const YAML::Node& n, WorkBudget& budget, double infinity = 
   if (n.IsSequence()) {
     for (std::size_t i = 0; i < n.size(); ++i) {
       if (!n[i].IsScalar()) {
-        out.error = "item " + std::to_string(i + 1) + " is not a number";
+        out.error = say(kItemNotNumber, i + 1);
         return out;
       }
       items.push_back(n[i].Scalar());
@@ -253,7 +364,7 @@ Numbers read_numbers(const YAML::Node& n, WorkBudget& budget, double infinity = 
   } else if (n.IsScalar()) {
     items = split_list(n.Scalar());
   } else {
-    out.error = "expected a list of numbers";
+    out.error = say(kExpectedNumbers);
     return out;
   }
   for (const std::string& item : items) {
@@ -272,11 +383,11 @@ Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
   opts.degree_sign = true;
   const ExpressionResult r = parse_expression(text, opts);
   if (!r) {
-    out.error = "cannot read the plane " + quote_excerpt(text) + ": " + r.error;
+    out.error = say(kCannotReadPlane, excerpt(text), expression_reason(r.error));
     return out;
   }
   if (!r.equation) {
-    out.error = "a plane is an equation like 'x + y - z = -6' or a list [a, b, c, d]";
+    out.error = say(kPlaneIsEquationOrList);
     return out;
   }
   const GiNaC::ex e = r.value->expand();
@@ -285,7 +396,7 @@ Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
   for (const char* name : {"x", "y", "z"}) {
     const GiNaC::symbol& s = opts.symbols.at(name);
     if (e.degree(s) > 1) {
-      out.error = std::string("the plane is not linear in ") + name;
+      out.error = say(kPlaneNotLinear, name);
       return out;
     }
     const GiNaC::ex c = e.coeff(s, 1);
@@ -295,12 +406,12 @@ Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
   }
   const GiNaC::ex constant = e.subs(zero);
   if (!(e - linear - constant).expand().is_zero()) {
-    out.error = "the plane is not linear in x, y, z";
+    out.error = say(kPlaneNotLinear, "x, y, z");
     return out;
   }
   for (const Exact& c : out.values)
     if (!is_real_constant(c)) {
-      out.error = "the plane's coefficients must be numbers";
+      out.error = say(kPlaneCoefficientsNumbers);
       return out;
     }
   out.values.push_back(-constant);
@@ -312,13 +423,12 @@ Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
 
 struct Rows {
   std::vector<std::vector<Exact>> values;
-  std::string error;
+  Said error;
 };
 
-// A matrix or a vertex list: a YAML list of rows (each a list or "(a, b)"), or one text in a
-// usual written form ("(0, 4), (8, 8)").
-Rows read_rows(const YAML::Node& node, const std::string& item, WorkBudget& budget,
-               double infinity = 0) {
+// A matrix (`vertices` false: its rows) or a vertex list: a YAML list of rows (each a list or
+// "(a, b)"), or one text in a usual written form ("(0, 4), (8, 8)").
+Rows read_rows(const YAML::Node& node, bool vertices, WorkBudget& budget, double infinity = 0) {
   Rows out;
   std::vector<YAML::Node> rows;
   if (node.IsSequence() && node.size() > 0) {
@@ -327,20 +437,18 @@ Rows read_rows(const YAML::Node& node, const std::string& item, WorkBudget& budg
     for (const std::string& r : split_rows(node.Scalar())) rows.emplace_back(r);
   }
   if (rows.empty()) {
-    out.error = std::string("expected a list of ") + (item == "row" ? "rows" : "vertices") +
-                ", like [[0, 4], [8, 8]] or \"(0, 4), (8, 8)\"";
+    out.error =
+        say(vertices ? kExpectedVertices : kExpectedRows, "[[0, 4], [8, 8]]", "\"(0, 4), (8, 8)\"");
     return out;
   }
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const Numbers n = read_numbers(rows[r], budget, infinity);
     if (!n.error.empty()) {
-      out.error = item + " " + std::to_string(r + 1) + ": " + n.error;
+      out.error = say(vertices ? kInVertex : kInRow, r + 1, n.error);
       return out;
     }
     if (!out.values.empty() && n.values.size() != out.values[0].size()) {
-      out.error = item == "row"
-                      ? "the rows have different lengths"
-                      : item + " " + std::to_string(r + 1) + ": wrong number of coordinates";
+      out.error = vertices ? say(kVertexWrongCoordinates, r + 1) : say(kRowsDifferentLengths);
       return out;
     }
     out.values.push_back(n.values);
@@ -445,8 +553,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleU
   WorkBudget budget;  // one for the whole answer, shared by its numbers
   p.raw = raw_text(node);
   if (p.raw.size() > kMaxExpressionLength * 4) {
-    p.error =
-        "the answer is too long (more than " + std::to_string(kMaxExpressionLength * 4) + " bytes)";
+    p.error = say(kAnswerTooLong, kMaxExpressionLength * 4);
     // Reports show the start only.
     std::size_t cut = 64;
     while (cut > 0 && (static_cast<unsigned char>(p.raw[cut]) & 0xC0) == 0x80) --cut;
@@ -454,7 +561,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleU
     return p;
   }
   if (!node.IsDefined() || node.IsNull()) {
-    p.error = "empty answer";
+    p.error = say(kEmptyAnswer);
     return p;
   }
   // "none": the answer has no value (a segment clipped away, no unit normal of parallel vectors).
@@ -477,10 +584,10 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
   switch (spec.kind) {
     case AnswerKind::Scalar: {
       if (!node.IsScalar()) {
-        p.error = "expected one number";
+        p.error = say(kExpectedOneNumber);
         return p;
       }
-      std::string error;
+      Said error;
       Exact v = parse_one(node.Scalar(), error, budget);
       if (!error.empty()) {
         p.error = error;
@@ -515,7 +622,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
         return p;
       }
       if (n.values.size() != 4) {
-        p.error = "a plane has 4 coefficients [a, b, c, d] of ax + by + cz = d";
+        p.error = say(kPlaneHasFourCoefficients);
         return p;
       }
       p.value = Value::vector(n.values);
@@ -527,7 +634,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
     case AnswerKind::PointSet:
     case AnswerKind::Polygon: {
       const bool vertices = spec.kind != AnswerKind::Matrix && spec.kind != AnswerKind::Transform;
-      const Rows rows = read_rows(node, vertices ? "vertex" : "row", budget, spec.infinity);
+      const Rows rows = read_rows(node, vertices, budget, spec.infinity);
       if (!rows.error.empty()) {
         p.error = rows.error;
         return p;
@@ -537,7 +644,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
     }
     case AnswerKind::Bool: {
       if (!node.IsScalar()) {
-        p.error = "expected true or false";
+        p.error = say(kExpectedTrueOrFalse);
         return p;
       }
       // true/false, yes/no, and the answer's own pair of words (inside/outside), in any language.
@@ -548,9 +655,9 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
                                    [&](const auto& b) { return b.first == w; });
       const auto named = std::find(spec.words.begin(), spec.words.end(), w);
       if (it == kBoolWords.end() && named == spec.words.end()) {
-        p.error =
-            quote_excerpt(node.Scalar()) + " is not true or false" +
-            (spec.words.size() == 2 ? " (or " + spec.words[0] + " or " + spec.words[1] + ")" : "");
+        p.error = spec.words.size() == 2 ? say(kNotTrueOrFalseOr, excerpt(node.Scalar()),
+                                               word_said(spec.words[0]), word_said(spec.words[1]))
+                                         : say(kNotTrueOrFalse, excerpt(node.Scalar()));
         return p;
       }
       p.value = Value::boolean(it != kBoolWords.end() ? it->second : named == spec.words.begin());
@@ -558,14 +665,17 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
     }
     case AnswerKind::Category: {
       if (!node.IsScalar()) {
-        p.error = "expected one word";
+        p.error = say(kExpectedOneWord);
         return p;
       }
       const std::string w = known_word(node.Scalar(), spec.words);
       if (std::find(spec.words.begin(), spec.words.end(), w) == spec.words.end()) {
-        std::string list;
-        for (const auto& a : spec.words) list += (list.empty() ? "" : ", ") + a;
-        p.error = quote_excerpt(node.Scalar()) + " is not one of " + list;
+        Said list;
+        for (const auto& a : spec.words) {
+          if (!list.empty()) list.append(Said::verbatim(", "));
+          list.append(word_said(a));
+        }
+        p.error = say(kNotOneOf, excerpt(node.Scalar()), list);
         return p;
       }
       p.value = Value::category(w);
@@ -573,7 +683,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
     }
     case AnswerKind::BitString: {
       if (!node.IsScalar()) {
-        p.error = "expected a bit string like 0101";
+        p.error = say(kExpectedBitString);
         return p;
       }
       std::string bits;
@@ -581,7 +691,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
         if (c == '0' || c == '1')
           bits += c;
         else if (c != ' ' && c != '_') {
-          p.error = quote_excerpt(node.Scalar()) + " is not a bit string of 0 and 1";
+          p.error = say(kNotBitString, excerpt(node.Scalar()));
           return p;
         }
       p.value = Value::category(bits);
@@ -600,7 +710,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
             continue;
           }
           if (!node[i].IsScalar()) {
-            p.error = "item " + std::to_string(i + 1) + " is not a word";
+            p.error = say(kItemNotWord, i + 1);
             return p;
           }
           words.push_back(trimmed(node[i].Scalar()));  // labels keep their case ("A.B")
@@ -614,7 +724,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
           if (!w.empty()) words.push_back(w);
         }
       } else {
-        p.error = "expected a list";
+        p.error = say(kExpectedList);
         return p;
       }
       p.value = Value::word_list(words);
@@ -623,6 +733,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
     case AnswerKind::Statements: {
       StatementChoice c = read_statement_choice(node);
       if (!c.error.empty()) {
+        // Said by statement_choice (TRANSITIONAL while its error is English: the old catalogue).
         p.error = c.error;
         return p;
       }
@@ -632,15 +743,17 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
     case AnswerKind::WordMap: {
       if (!node.IsMap()) {
         // The example in this answer's own terms: a face or an edge, and one of its words.
-        p.error = fmt::format("expected a mapping like {{\"{}\": {}}}",
-                              spec.unordered_pairs ? "0-1" : "0",
-                              spec.words.empty() ? "visible" : spec.words.front());
+        const Said example =
+            Said::verbatim(fmt::format("{{\"{}\": ", spec.unordered_pairs ? "0-1" : "0"))
+                .append(word_said(spec.words.empty() ? "visible" : spec.words.front()))
+                .append(Said::verbatim("}"));
+        p.error = say(kExpectedMapping, example);
         return p;
       }
       std::vector<std::pair<std::string, std::string>> entries;
       for (auto it = node.begin(); it != node.end(); ++it) {
         if (!it->second.IsScalar()) {
-          p.error = "the value of '" + it->first.as<std::string>() + "' is not a word";
+          p.error = say(kValueNotWord, it->first.as<std::string>());
           return p;
         }
         entries.emplace_back(it->first.as<std::string>(),
@@ -652,9 +765,7 @@ ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, 
   }
   if (budget.exceeded()) {
     p.value.exact.clear();
-    p.note = "too complex to compare exactly, so its value was computed to " +
-             std::to_string(kNumericFallbackDigits) +
-             " significant digits and compared within the tolerance";
+    p.note = say(kReadNumerically, kNumericFallbackDigits);
   }
   p.ok = true;
   return p;

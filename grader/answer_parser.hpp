@@ -14,10 +14,10 @@ namespace frustum {
 
 struct ParsedAnswer {
   bool ok = false;
-  std::string error;  // why it could not be read
-  std::string raw;    // the answer as the student wrote it (for reports)
-  std::string note;   // how it was read, when not exactly (over its work budget)
-  std::string form;   // the form it was written in, where a kind has several ("equation", "list")
+  Said error;        // why it could not be read
+  std::string raw;   // the answer as the student wrote it (for reports)
+  Said note;         // how it was read, when not exactly (over its work budget)
+  std::string form;  // the form it was written in, where a kind has several ("equation", "list")
   Value value;
 };
 

@@ -11,6 +11,7 @@
 
 #include "grader/list_items.hpp"
 #include "grader/statement_choice.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/util/expression.hpp"
 #include "solver/util/words.hpp"
@@ -35,10 +36,217 @@ std::string_view to_string(Verdict v) {
 
 namespace {
 
-Comparison correct(std::string why) {
-  return {Verdict::Correct, 1.0, std::move(why), {}, false, {}};
-}
-Comparison incorrect(std::string why) {
+// What a comparison tells the student: why the answer is right, or how it is wrong.
+constexpr Phrase kNoSuchValue{"there is no such value", "その値は存在しません",
+                              "такого значения нет"};
+constexpr Phrase kNoSuchValueHere{"there is no such value here", "ここには値がありません",
+                                  "здесь такого значения нет"};
+constexpr Phrase kThereAreNone{"there are none", "ありません", "их нет"};
+constexpr Phrase kThereIsAValueHere{"there is a value here", "ここには値があります",
+                                    "здесь значение есть"};
+constexpr Phrase kExpectedOneNumber{"expected one number", "数が一つ必要です",
+                                    "ожидалось одно число"};
+constexpr Phrase kExactlyEqual{"exactly equal", "完全に一致", "точно равно"};
+constexpr Phrase kWithinTolerance{"within tolerance", "許容誤差内", "в пределах допуска"};
+constexpr Phrase kEqual{"equal", "一致", "равно"};
+constexpr Phrase kExpectedItemsGot{"expected {0} items, got {1}",
+                                   "要素は {0} 個のはずですが, {1} 個です",
+                                   "ожидалось элементов: {0}, получено: {1}"};
+constexpr Phrase kSameItemsAnyOrder{"the same items (order does not matter)",
+                                    "同じ要素 (順序は問いません)",
+                                    "те же элементы (порядок не важен)"};
+constexpr Phrase kExpectedComponentsGot{"expected {0} components, got {1}",
+                                        "成分は {0} 個のはずですが, {1} です",
+                                        "ожидалось компонент: {0}, получено: {1}"};
+constexpr Phrase kZeroVectorHasNoDirection{"The zero vector has no direction: it is no normal.",
+                                           "零ベクトルには向きがなく, 法線になりません.",
+                                           "У нулевого вектора нет направления: это не нормаль."};
+constexpr Phrase kSameDirection{
+    "the same direction (a normal is right up to a positive factor)",
+    "同じ向き (法線は正の定数倍を除いて正しい)",
+    "то же направление (нормаль верна с точностью до положительного множителя)"};
+constexpr Phrase kPointsTheOppositeWay{"it points the opposite way", "向きが逆です",
+                                       "направлена в противоположную сторону"};
+constexpr Phrase kPlaneHasFourCoefficients{"a plane has 4 coefficients", "平面の係数は 4 つです",
+                                           "у плоскости 4 коэффициента"};
+constexpr Phrase kSamePlane{
+    "the same plane (equations agree up to a non-zero factor)",
+    "同じ平面 (方程式が 0 でない定数倍を除いて一致)",
+    "та же плоскость (уравнения совпадают с точностью до ненулевого множителя)"};
+constexpr Phrase kReadWithLeadingZeros{"read as {0} (the leading zeros restored)",
+                                       "{0} と読みました (先頭の 0 を補いました)",
+                                       "прочитано как {0} (ведущие нули восстановлены)"};
+constexpr Phrase kBitsOnePerWindowEdge{"{0} bits, one per window edge",
+                                       "ウィンドウの辺ごとに 1 ビット、計 {0} ビットです",
+                                       "{0} бит, по одному на каждую сторону окна"};
+constexpr Phrase kSameSetAnyOrder{"the same set (order does not matter)",
+                                  "同じ集合 (順序は問いません)",
+                                  "то же множество (порядок не важен)"};
+constexpr Phrase kExpectedItemsAndExtra{
+    "{0} of the {1} expected items, and {2} that should not be there",
+    "期待される {1} 個のうち {0} 個, および余分なもの {2} 個",
+    "{0} из {1} ожидаемых элементов и {2} лишних"};
+constexpr Phrase kExpectedItemsExtraAndCopies{
+    "{0} of the {1} expected items, and {2} that should not be there, {3} of them a second copy of "
+    "an item (an item written twice is right once; the copy counts as one that should not be "
+    "there)",
+    "期待される {1} 個のうち {0} 個, および余分なもの {2} 個 (うち {3} 個は同じ項目の二度目: "
+    "二度書いた項目は一度だけ正解とし, 二度目は余分なものと数える)",
+    "{0} из {1} ожидаемых элементов и {2} лишних, из них {3} — повтор элемента (элемент, "
+    "записанный дважды, верен один раз; повтор считается лишним)"};
+constexpr Phrase kRightItemsWrongOrder{"the right items in the wrong order",
+                                       "要素は正しいが順序が違います",
+                                       "верные элементы в неверном порядке"};
+constexpr Phrase kExpectedVerticesGot{"expected {0} vertices, got {1}",
+                                      "頂点は {0} 個のはずですが, {1} 個です",
+                                      "ожидалось вершин: {0}, получено: {1}"};
+constexpr Phrase kSamePolygonOtherStart{"the same polygon, starting at another vertex",
+                                        "同じ多角形 (別の頂点から始まる)",
+                                        "тот же многоугольник, начиная с другой вершины"};
+constexpr Phrase kRightVerticesOppositeOrder{
+    "the right vertices in the opposite order: the orientation decides which side is the front",
+    "頂点は正しいが順序が逆です. 向きがどちらの側が表かを決めます",
+    "верные вершины в обратном порядке: ориентация решает, какая сторона лицевая"};
+constexpr Phrase kCannotBeGradedYet{"answers of this kind cannot be graded yet",
+                                    "この種類の解答はまだ採点できません",
+                                    "ответы этого вида пока не оцениваются"};
+constexpr Phrase kTransformMovesOrigin{
+    "this transform moves the origin (a translation or a projection): it needs the {0}×{1} "
+    "homogeneous matrix",
+    "この変換は原点を動かします (平行移動または投影). {0}×{1} の同次変換行列が必要です",
+    "это преобразование сдвигает начало координат (перенос или проекция): нужна однородная матрица "
+    "{0}×{1}"};
+constexpr Phrase kAsksForHomogeneousMatrix{"this problem asks for the {0}×{1} homogeneous matrix",
+                                           "この問題は {0}×{1} の同次変換行列を求めています",
+                                           "в этой задаче нужна однородная матрица {0}×{1}"};
+constexpr Phrase kLinearPartWithoutTranslation{"the linear part of a transform without translation",
+                                               "平行移動を含まない変換の線形部分",
+                                               "линейная часть преобразования без переноса"};
+constexpr Phrase kExpectedMatrixGotMatrix{"expected a {0} matrix, got a {1} matrix",
+                                          "{0} 行列のはずですが, {1} 行列です",
+                                          "ожидалась матрица {0}, получена матрица {1}"};
+constexpr Phrase kExpectedMatrixGotComponents{"expected a {0} matrix, got {1} components",
+                                              "{0} 行列のはずですが, 成分 {1} 個です",
+                                              "ожидалась матрица {0}, получено компонент: {1}"};
+constexpr Phrase kExpectedComponentsGotMatrix{"expected {0} components, got a {1} matrix",
+                                              "成分は {0} 個のはずですが, {1} 行列です",
+                                              "ожидалось компонент: {0}, получена матрица {1}"};
+constexpr Phrase kExpectedComponentsGotComponents{"expected {0} components, got {1} components",
+                                                  "成分は {0} 個のはずですが, {1} 個です",
+                                                  "ожидалось компонент: {0}, получено: {1}"};
+constexpr Phrase kSameSegmentOtherOrder{"the same segment, its endpoints in the other order",
+                                        "同じ線分 (端点の順序が逆)",
+                                        "тот же отрезок, концы в другом порядке"};
+constexpr Phrase kSameHomogeneousPoint{
+    "the same homogeneous point (a positive multiple)", "同じ同次座標の点 (正の定数倍)",
+    "та же точка в однородных координатах (положительное кратное)"};
+constexpr Phrase kDirectionRightLengthIs{
+    "the direction is right but the length is {0} — a unit vector has length 1 (divide by the "
+    "length)",
+    "向きは正しいが長さが {0} です — 単位ベクトルの長さは 1 (長さで割る)",
+    "направление верное, но длина {0} — у единичного вектора длина 1 (разделите на длину)"};
+constexpr Phrase kNotNormalised{"not normalised", "正規化していない", "не нормирован"};
+constexpr Phrase kEntriesWithWorkRight{"{0} of the {1} entries that take work are right",
+                                       "計算を要する {1} 個の要素のうち {0} 個が正しい",
+                                       "верно {0} из {1} элементов, требующих вычисления"};
+constexpr Phrase kComponentsWithWorkRight{"{0} of the {1} components that take work are right",
+                                          "計算を要する {1} 個の成分のうち {0} 個が正しい",
+                                          "верно {0} из {1} компонент, требующих вычисления"};
+constexpr Phrase kEntriesWithWorkRightTrivialUncounted{
+    "{0} of the {1} entries that take work are right (entries a trivial answer also has do not "
+    "count)",
+    "計算を要する {1} 個の要素のうち {0} 個が正しい (自明な解答でも得られる要素は数えない)",
+    "верно {0} из {1} элементов, требующих вычисления (элементы, которые есть и у тривиального "
+    "ответа, не считаются)"};
+constexpr Phrase kComponentsWithWorkRightTrivialUncounted{
+    "{0} of the {1} components that take work are right (entries a trivial answer also has do not "
+    "count)",
+    "計算を要する {1} 個の成分のうち {0} 個が正しい (自明な解答でも得られる成分は数えない)",
+    "верно {0} из {1} компонент, требующих вычисления (элементы, которые есть и у тривиального "
+    "ответа, не считаются)"};
+constexpr Phrase kEntriesWithWorkRightFreeWrong{
+    "{0} of the {1} entries that take work are right, and {2} of those that take no work are "
+    "wrong: {3} of {4} counted",
+    "計算を要する {1} 個の要素のうち {0} 個が正しく, 計算を要しない要素のうち {2} 個が誤り. 数えた "
+    "{4} 個のうち {3} 個",
+    "верно {0} из {1} элементов, требующих вычисления, и {2} из не требующих вычисления неверны: "
+    "засчитано {3} из {4}"};
+constexpr Phrase kComponentsWithWorkRightFreeWrong{
+    "{0} of the {1} components that take work are right, and {2} of those that take no work are "
+    "wrong: {3} of {4} counted",
+    "計算を要する {1} 個の成分のうち {0} 個が正しく, 計算を要しない成分のうち {2} 個が誤り. 数えた "
+    "{4} 個のうち {3} 個",
+    "верно {0} из {1} компонент, требующих вычисления, и {2} из не требующих вычисления неверны: "
+    "засчитано {3} из {4}"};
+// Points read as the rows they mean (point_rows_of), then what the comparison of those says.
+constexpr Phrase kReadAsOnePoint{"read as one point", "1 つの点として読みました",
+                                 "прочитано как одна точка"};
+constexpr Phrase kReadAsOneHomogeneousPoint{
+    "read as one point in homogeneous coordinates (w = 1)",
+    "同次座標 (w = 1) の 1 つの点として読みました",
+    "прочитано как одна точка в однородных координатах (w = 1)"};
+constexpr Phrase kReadAsHomogeneousPoints{"read as points in homogeneous coordinates (w = 1)",
+                                          "同次座標 (w = 1) の点として読みました",
+                                          "прочитано как точки в однородных координатах (w = 1)"};
+constexpr Phrase kReadAsHomogeneousCoordinates{
+    "read as homogeneous coordinates: (x, y, z, w) is the point (x/w, y/w, z/w)",
+    "同次座標として読みました: (x, y, z, w) は点 (x/w, y/w, z/w) です",
+    "прочитано как однородные координаты: (x, y, z, w) — это точка (x/w, y/w, z/w)"};
+constexpr Phrase kReadAndThen{"{0}; {1}", "{0}; {1}", "{0}; {1}"};
+// Lists and word maps.
+constexpr Phrase kCannotReadAsPair{
+    "cannot read {0} as a pair such as 0-1: write the items separated by commas, spaces or arrows",
+    "`{0}` を 0-1 のような組として読めません. 項目はコンマ, 空白または矢印で区切って書いてください",
+    "не удаётся прочитать `{0}` как пару вида 0-1: разделяйте элементы запятыми, пробелами или "
+    "стрелками"};
+constexpr Phrase kCannotReadAsItem{
+    "cannot read {0} as an item of this list: write the items separated by commas, spaces or "
+    "arrows",
+    "`{0}` をこのリストの項目として読めません. 項目はコンマ, "
+    "空白または矢印で区切って書いてください",
+    "не удаётся прочитать `{0}` как элемент этого списка: разделяйте элементы запятыми, пробелами "
+    "или стрелками"};
+constexpr Phrase kEntryTwiceSameWord{"an entry written twice with the same word counts once",
+                                     "同じ語で二度書いた項目は一度と数える",
+                                     "элемент, записанный дважды одним словом, считается один раз"};
+constexpr Phrase kEntriesRightBeyondConstant{
+    "{0} of {1} entries right; answering \"{2}\" everywhere would get {3}, so the credit counts "
+    "the entries beyond that.",
+    "{1} 個中 {0} 個が正しい. どこにも「{2}」と答えると {3} 個になるので, "
+    "得点はそれを超えた分だけ数える.",
+    "верно {0} из {1}; ответ «{2}» везде дал бы {3}, поэтому засчитываются только элементы сверх "
+    "этого."};
+constexpr Phrase kEntriesRightNoMoreThanConstant{
+    "{0} of {1} entries right, no more than one word written everywhere would get.",
+    "{1} 個中 {0} 個が正しいが, どこにも同じ一語を書いた場合を超えていない.",
+    "верно {0} из {1}, не больше, чем дало бы одно слово, написанное везде."};
+constexpr Phrase kEntryTwiceDifferentWords{
+    "{0} entry is written twice with different words: neither word counts as right.",
+    "{0} 個の項目が異なる語で二度書かれています. どちらの語も正解とは数えません.",
+    "{0} элемент записан дважды разными словами: ни одно из слов не засчитывается."};
+constexpr Phrase kEntriesTwiceDifferentWords{
+    "{0} entries are written twice with different words: neither word counts as right.",
+    "{0} 個の項目が異なる語で二度書かれています. どちらの語も正解とは数えません.",
+    "Записано дважды разными словами элементов: {0}; ни одно из этих слов не засчитывается."};
+constexpr Phrase kEntryNamesNoSuchFace{
+    "{0} entry names a face the problem does not have; it counts as a wrong entry.",
+    "{0} 個の項目は問題にない面を指しています. 誤った項目として数えます.",
+    "{0} элемент называет грань, которой нет в задаче; он считается неверным."};
+constexpr Phrase kEntryNamesNoSuchEdge{
+    "{0} entry names an edge the problem does not have; it counts as a wrong entry.",
+    "{0} 個の項目は問題にない稜線を指しています. 誤った項目として数えます.",
+    "{0} элемент называет ребро, которого нет в задаче; он считается неверным."};
+constexpr Phrase kEntriesNameNoSuchFaces{
+    "{0} entries name faces the problem does not have; each counts as a wrong entry.",
+    "{0} 個の項目は問題にない面を指しています. それぞれ誤った項目として数えます.",
+    "Элементов с гранями, которых нет в задаче: {0}; каждый считается неверным."};
+constexpr Phrase kEntriesNameNoSuchEdges{
+    "{0} entries name edges the problem does not have; each counts as a wrong entry.",
+    "{0} 個の項目は問題にない稜線を指しています. それぞれ誤った項目として数えます.",
+    "Элементов с рёбрами, которых нет в задаче: {0}; каждый считается неверным."};
+
+Comparison correct(Said why = {}) { return {Verdict::Correct, 1.0, std::move(why), {}, false, {}}; }
+Comparison incorrect(Said why = {}) {
   return {Verdict::Incorrect, 0.0, std::move(why), {}, false, {}};
 }
 
@@ -224,9 +432,16 @@ Value linear_part(const Value& m) {
   return v;
 }
 
-std::string shape_text(const Value& v) {
-  return v.shape == Value::Shape::Matrix ? fmt::format("a {}×{} matrix", v.rows, v.cols)
-                                         : fmt::format("{} components", v.numbers.size());
+// "expected a 4×4 matrix, got 3 components": a matrix by its size, anything else by its count.
+Said shape_mismatch(const Value& expected, const Value& got) {
+  const auto size = [](const Value& v) {
+    return v.shape == Value::Shape::Matrix ? fmt::format("{}×{}", v.rows, v.cols)
+                                           : std::to_string(v.numbers.size());
+  };
+  const bool em = expected.shape == Value::Shape::Matrix, gm = got.shape == Value::Shape::Matrix;
+  const Phrase& p = em ? (gm ? kExpectedMatrixGotMatrix : kExpectedMatrixGotComponents)
+                       : (gm ? kExpectedComponentsGotMatrix : kExpectedComponentsGotComponents);
+  return say(p, size(expected), size(got));
 }
 
 // The trivial answer (trivial.hpp) that `got` is as a whole, if any: a wrong answer equal to the
@@ -272,17 +487,17 @@ std::optional<Comparison> component_credit(const Value& expected, const Value& g
   }
   if (right == 0 || counted == 0 || right == counted) return std::nullopt;
   const bool matrix = expected.shape == Value::Shape::Matrix;
-  const char* what = matrix ? "entries" : "components";
   const std::size_t work = counted - free_wrong;
-  std::string feedback =
-      free_wrong == 0 ? fmt::format("{} of the {} {} that take work are right{}", right, work, what,
-                                    counted < expected.numbers.size()
-                                        ? " (entries a trivial answer also has do not count)"
-                                        : "")
-                      : fmt::format(
-                            "{} of the {} {} that take work are right, and {} of those that take "
-                            "no work are wrong: {} of {} counted",
-                            right, work, what, free_wrong, right, counted);
+  Said feedback;
+  if (free_wrong > 0)
+    feedback = say(matrix ? kEntriesWithWorkRightFreeWrong : kComponentsWithWorkRightFreeWrong,
+                   right, work, free_wrong, right, counted);
+  else if (counted < expected.numbers.size())
+    feedback = say(
+        matrix ? kEntriesWithWorkRightTrivialUncounted : kComponentsWithWorkRightTrivialUncounted,
+        right, work);
+  else
+    feedback = say(matrix ? kEntriesWithWorkRight : kComponentsWithWorkRight, right, work);
   return Comparison{Verdict::Partial,
                     static_cast<double>(right) / static_cast<double>(counted),
                     std::move(feedback),
@@ -296,7 +511,7 @@ std::optional<Comparison> component_credit(const Value& expected, const Value& g
 // coordinates (x, y, z, w), w ≠ 0, as (x/w, y/w, z/w). Nothing when `got` is none of these.
 struct PointReading {
   Value rows;
-  std::string how;
+  Said how;
 };
 
 std::optional<PointReading> point_rows_of(const Value& expected, const Value& got) {
@@ -304,11 +519,11 @@ std::optional<PointReading> point_rows_of(const Value& expected, const Value& go
     return std::nullopt;
   const std::size_t n = static_cast<std::size_t>(expected.cols);
   Value as_rows = got;
-  std::string how;
+  Said how;
   if (expected.rows == 1 && got.cols == 1 && got.rows > 1) {  // one point, as a list or a column
     as_rows.rows = 1;
     as_rows.cols = got.rows;
-    how = "read as one point";
+    how = say(kReadAsOnePoint);
   }
   if (static_cast<std::size_t>(as_rows.cols) == n + 1 && as_rows.rows == expected.rows) {
     // Homogeneous coordinates: (x, y, z, w) is the point (x/w, y/w, z/w); w = 0 is a direction.
@@ -333,9 +548,8 @@ std::optional<PointReading> point_rows_of(const Value& expected, const Value& go
       for (std::size_t i = 0; i < affine.exact.size(); ++i)
         affine.numbers[i] = to_double(affine.exact[i]);
     as_rows = affine;
-    how = all_one ? (expected.rows == 1 ? "read as one point in homogeneous coordinates (w = 1)"
-                                        : "read as points in homogeneous coordinates (w = 1)")
-                  : "read as homogeneous coordinates: (x, y, z, w) is the point (x/w, y/w, z/w)";
+    how = say(all_one ? (expected.rows == 1 ? kReadAsOneHomogeneousPoint : kReadAsHomogeneousPoints)
+                      : kReadAsHomogeneousCoordinates);
   }
   if (how.empty() || as_rows.cols != expected.cols) return std::nullopt;
   return PointReading{as_rows, how};
@@ -350,63 +564,55 @@ Comparison compare_components(const Value& expected, const Value& got, const Ans
       spec.point_rows = false;
       plain.spec = &spec;
       Comparison c = compare_components(expected, p->rows, plain);
-      c.feedback =
-          c.verdict == Verdict::Correct || c.feedback.empty() ? p->how : p->how + "; " + c.feedback;
+      c.feedback = c.verdict == Verdict::Correct || c.feedback.empty()
+                       ? p->how
+                       : say(kReadAndThen, p->how, c.feedback);
       return c;
     }
   if (kind == AnswerKind::Transform && got.shape == Value::Shape::Matrix &&
       expected.rows == got.rows + 1 && got.rows == got.cols) {
     if (!purely_linear(expected))
-      return incorrect(fmt::format(
-          "this transform moves the origin (a translation or a projection): it needs the "
-          "{0}×{0} homogeneous matrix",
-          expected.rows));
+      return incorrect(say(kTransformMovesOrigin, expected.rows, expected.rows));
     if (!r.linear_matrix)
-      return incorrect(
-          fmt::format("this problem asks for the {0}×{0} homogeneous matrix", expected.rows));
+      return incorrect(say(kAsksForHomogeneousMatrix, expected.rows, expected.rows));
     AnswerRules linear = r;
     linear.trivial = nullptr;
     linear.scale = nullptr;
     Comparison c = compare_components(linear_part(expected), got, linear);
-    if (c.verdict == Verdict::Correct)
-      c.feedback = "the linear part of a transform without translation";
+    if (c.verdict == Verdict::Correct) c.feedback = say(kLinearPartWithoutTranslation);
     return c;
   }
   if (got.numbers.size() != expected.numbers.size() ||
       (expected.shape == Value::Shape::Matrix && got.shape == Value::Shape::Matrix &&
        expected.cols != got.cols))
-    return incorrect(fmt::format("expected {}, got {}", shape_text(expected), shape_text(got)));
-  if (exactly_equal(expected, got)) return correct("exactly equal");
+    return incorrect(shape_mismatch(expected, got));
+  if (exactly_equal(expected, got)) return correct(say(kExactlyEqual));
   const ComponentJudge judge = judge_of(expected, r);
-  if (judge.all(expected.numbers, got.numbers)) return correct("within tolerance");
+  if (judge.all(expected.numbers, got.numbers)) return correct(say(kWithinTolerance));
   if (kind == AnswerKind::Segment) {
     const auto e = rows_of(expected), g = rows_of(got);
     std::vector<double> reversed;
     for (auto it = g.rbegin(); it != g.rend(); ++it)
       reversed.insert(reversed.end(), it->begin(), it->end());
-    if (judge.all(expected.numbers, reversed))
-      return correct("the same segment, its endpoints in the other order");
+    if (judge.all(expected.numbers, reversed)) return correct(say(kSameSegmentOtherOrder));
   }
   if (kind == AnswerKind::Point && multiple_of(expected, got, r) == Multiple::Positive)
-    return correct("the same homogeneous point (a positive multiple)");
+    return correct(say(kSameHomogeneousPoint));
   if (kind == AnswerKind::UnitVector) {
     const Multiple m = multiple_of(expected, got, r);
     if (m == Multiple::Positive) {
       // The student's own length (multiple_of's ratio is taken between rescaled vectors).
-      Comparison c = incorrect(
-          fmt::format("the direction is right but the length is {} — a unit vector has length 1 "
-                      "(divide by the length)",
-                      format_approx(length_of(got))));
-      c.mistake = "not normalised";
+      Comparison c = incorrect(say(kDirectionRightLengthIs, format_approx(length_of(got))));
+      c.mistake = say(kNotNormalised);
       return c;
     }
-    if (m == Multiple::Negative) return incorrect("it points the opposite way");
+    if (m == Multiple::Negative) return incorrect(say(kPointsTheOppositeWay));
   }
   if (auto c = trivial_match(expected, got, judge, r)) return *c;
   if (r.partial &&
       (kind == AnswerKind::Vector || kind == AnswerKind::Matrix || kind == AnswerKind::Transform))
     if (auto c = component_credit(expected, got, judge, r)) return *c;
-  return incorrect("");
+  return incorrect();
 }
 
 // Words compared without case ("Background" is background), unless the expected words differ
@@ -439,13 +645,7 @@ std::optional<Comparison> unreadable_list(const std::vector<std::string>& items,
   const std::string item = quote_excerpt(bad);
   return Comparison{Verdict::Unparseable,
                     0.0,
-                    r.spec->unordered_pairs
-                        ? fmt::format("cannot read {} as a pair such as 0-1: write the items "
-                                      "separated by commas, spaces or arrows",
-                                      item)
-                        : fmt::format("cannot read {} as an item of this list: write the items "
-                                      "separated by commas, spaces or arrows",
-                                      item),
+                    say(r.spec->unordered_pairs ? kCannotReadAsPair : kCannotReadAsItem, item),
                     {},
                     false,
                     {}};
@@ -482,8 +682,7 @@ Comparison compare_word_map(const Value& expected, const Value& got, const Answe
                      [&](const auto& e) { return e.first == entry.first; }))
       extra.insert(entry.first);
   if (right == n && extra.empty())
-    return correct(got.entries.size() > n ? "an entry written twice with the same word counts once"
-                                          : "");
+    return correct(got.entries.size() > n ? say(kEntryTwiceSameWord) : Said());
   std::size_t best_constant = 0;
   std::string best_word;
   for (const auto& [k, w] : expected.entries) {
@@ -495,33 +694,28 @@ Comparison compare_word_map(const Value& expected, const Value& got, const Answe
     }
   }
   // What else was counted, each a sentence of its own.
-  std::string notes;
+  Said notes;
   if (undecided > 0)
-    notes += fmt::format(" {} {} written twice with different words: neither word counts as right.",
-                         undecided, undecided == 1 ? "entry is" : "entries are");
+    notes +=
+        say(undecided == 1 ? kEntryTwiceDifferentWords : kEntriesTwiceDifferentWords, undecided);
   if (!extra.empty()) {
     const bool one = extra.size() == 1, edges = r.spec->unordered_pairs;
-    notes += fmt::format(" {} {} the problem does not have; {} as a wrong entry.", extra.size(),
-                         one ? (edges ? "entry names an edge" : "entry names a face")
-                             : (edges ? "entries name edges" : "entries name faces"),
-                         one ? "it counts" : "each counts");
+    notes += say(one ? (edges ? kEntryNamesNoSuchEdge : kEntryNamesNoSuchFace)
+                     : (edges ? kEntriesNameNoSuchEdges : kEntriesNameNoSuchFaces),
+                 extra.size());
   }
   const std::size_t total = n + extra.size();
   if (right > best_constant && total > best_constant)
     return {Verdict::Partial,
             static_cast<double>(right - best_constant) / static_cast<double>(total - best_constant),
-            fmt::format("{} of {} entries right; answering \"{}\" everywhere would get {}, so the "
-                        "credit counts the entries beyond that.",
-                        right, total, best_word, best_constant) +
+            say(kEntriesRightBeyondConstant, right, total, words::vocabulary_word(best_word),
+                best_constant) +
                 notes,
             {},
             false,
             {}};
-  if (right == 0) return incorrect(notes.empty() ? "" : notes.substr(1));
-  return incorrect(
-      fmt::format("{} of {} entries right, no more than one word written everywhere would get.",
-                  right, total) +
-      notes);
+  if (right == 0) return incorrect(notes);
+  return incorrect(say(kEntriesRightNoMoreThanConstant, right, total) + notes);
 }
 
 bool numeric_kind(AnswerKind kind) {
@@ -577,24 +771,24 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
     }
   }
   if (expected.shape == Value::Shape::Null) {
-    return got.shape == Value::Shape::Null ? correct("there is no such value")
-                                           : incorrect("there is no such value here");
+    return got.shape == Value::Shape::Null ? correct(say(kNoSuchValue))
+                                           : incorrect(say(kNoSuchValueHere));
   }
   // "none" for an empty list (no hidden edges) says the same thing.
   if (got.shape == Value::Shape::Null && expected.shape == Value::Shape::WordList &&
       expected.words.empty())
-    return correct("there are none");
+    return correct(say(kThereAreNone));
   // "none" chooses no statement.
   if (r.spec->kind == AnswerKind::Statements) return compare_statement_choice(expected, got);
-  if (got.shape == Value::Shape::Null) return incorrect("there is a value here");
+  if (got.shape == Value::Shape::Null) return incorrect(say(kThereIsAValueHere));
   switch (r.spec->kind) {
     case AnswerKind::Scalar: {
       if (got.numbers.size() != 1 || expected.numbers.size() != 1)
-        return incorrect("expected one number");
-      if (exactly_equal(expected, got)) return correct("exactly equal");
+        return incorrect(say(kExpectedOneNumber));
+      if (exactly_equal(expected, got)) return correct(say(kExactlyEqual));
       if (judge_of(expected, r).ok(0, expected.numbers[0], got.numbers[0]))
-        return correct("within tolerance");
-      return incorrect("");
+        return correct(say(kWithinTolerance));
+      return incorrect();
     }
     case AnswerKind::Vector:
     case AnswerKind::Point:
@@ -607,7 +801,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       // The same rows in any order: each expected row matched by a distinct given row.
       const auto e = rows_of(expected), g = rows_of(got);
       if (e.size() != g.size() || (!e.empty() && expected.cols != got.cols))
-        return incorrect(fmt::format("expected {} items, got {}", e.size(), g.size()));
+        return incorrect(say(kExpectedItemsGot, e.size(), g.size()));
       // Sorted, the rows usually pair off at once (pixels are integers); otherwise each expected
       // row takes the first unused row within tolerance.
       auto se = e, sg = g;
@@ -616,56 +810,53 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       bool paired = true;
       for (std::size_t i = 0; i < se.size() && paired; ++i)
         paired = judge_of(numeric_value(expected, se[i]), r).all(se[i], sg[i]);
-      if (paired) return correct("the same items (order does not matter)");
+      if (paired) return correct(say(kSameItemsAnyOrder));
       std::vector<bool> used(g.size(), false);
       for (const auto& row : e) {
         const ComponentJudge judge = judge_of(numeric_value(expected, row), r);
         std::size_t j = 0;
         while (j < g.size() && (used[j] || !judge.all(row, g[j]))) ++j;
-        if (j == g.size()) return incorrect("");
+        if (j == g.size()) return incorrect();
         used[j] = true;
       }
-      return correct("the same items (order does not matter)");
+      return correct(say(kSameItemsAnyOrder));
     }
     case AnswerKind::Direction: {
       if (got.numbers.size() != expected.numbers.size())
-        return incorrect(fmt::format("expected {} components, got {}", expected.numbers.size(),
-                                     got.numbers.size()));
-      if (exactly_equal(expected, got)) return correct("equal");
+        return incorrect(say(kExpectedComponentsGot, expected.numbers.size(), got.numbers.size()));
+      if (exactly_equal(expected, got)) return correct(say(kEqual));
       if (max_abs(got.numbers) == 0 && all_finite_and_faithful(got)) {
-        Comparison c = incorrect("The zero vector has no direction: it is no normal.");
-        c.trivial = "zero vector";
+        Comparison c = incorrect(say(kZeroVectorHasNoDirection));
+        c.trivial = say(kZeroVectorAnswer);
         c.no_work = true;
         return c;
       }
       const Multiple m = multiple_of(expected, got, r);
-      if (m == Multiple::Positive)
-        return correct("the same direction (a normal is right up to a positive factor)");
-      if (m == Multiple::Negative) return incorrect("it points the opposite way");
+      if (m == Multiple::Positive) return correct(say(kSameDirection));
+      if (m == Multiple::Negative) return incorrect(say(kPointsTheOppositeWay));
       // A vertex or another given copied as the normal.
       if (auto c = trivial_match(expected, got, judge_of(expected, r), r)) return *c;
-      return incorrect("");
+      return incorrect();
     }
     case AnswerKind::Plane: {
-      if (got.numbers.size() != 4) return incorrect("a plane has 4 coefficients");
-      if (multiple_of(expected, got, r) != Multiple::None)
-        return correct("the same plane (equations agree up to a non-zero factor)");
-      return incorrect("");
+      if (got.numbers.size() != 4) return incorrect(say(kPlaneHasFourCoefficients));
+      if (multiple_of(expected, got, r) != Multiple::None) return correct(say(kSamePlane));
+      return incorrect();
     }
     case AnswerKind::Bool:
-      return got.flag == expected.flag ? correct("") : incorrect("");
+      return got.flag == expected.flag ? correct() : incorrect();
     case AnswerKind::Category:
-      return got.word == expected.word ? correct("") : incorrect("");
+      return got.word == expected.word ? correct() : incorrect();
     case AnswerKind::BitString: {
-      if (got.word == expected.word) return correct("");
+      if (got.word == expected.word) return correct();
       // Written as a number, an outcode loses its leading zeros (0 for 0000, 101 for 0101):
       // the same bits, read with the zeros restored.
       if (!got.word.empty() && got.word.size() < expected.word.size() &&
           std::string(expected.word.size() - got.word.size(), '0') + got.word == expected.word)
-        return correct(fmt::format("read as {} (the leading zeros restored)", expected.word));
+        return correct(say(kReadWithLeadingZeros, expected.word));
       if (got.word.size() != expected.word.size())
-        return incorrect(fmt::format("{} bits, one per window edge", expected.word.size()));
-      return incorrect("");
+        return incorrect(say(kBitsOnePerWindowEdge, expected.word.size()));
+      return incorrect();
     }
     case AnswerKind::WordList: {
       const std::vector<std::string> items = items_read(got, expected, r);
@@ -674,7 +865,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
                                b = folded(items, expected.words);
       std::sort(a.begin(), a.end());
       std::sort(b.begin(), b.end());
-      if (a == b) return correct("the same set (order does not matter)");
+      if (a == b) return correct(say(kSameSetAnyOrder));
       // An item written twice is right once; its second copy counts as one that should not be
       // there (common / max(expected, given)).
       std::vector<std::string> both;
@@ -682,14 +873,10 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       const std::size_t common = both.size();
       const std::size_t copies = b.size() - static_cast<std::size_t>(std::distance(
                                                 b.begin(), std::unique(b.begin(), b.end())));
-      const std::string counted =
-          copies == 0 ? fmt::format("{} of the {} expected items, and {} that should not be there",
-                                    common, a.size(), b.size() - common)
-                      : fmt::format(
-                            "{} of the {} expected items, and {} that should not be there, {} of "
-                            "them a second copy of an item (an item written twice is right "
-                            "once; the copy counts as one that should not be there)",
-                            common, a.size(), b.size() - common, copies);
+      const Said counted =
+          copies == 0
+              ? say(kExpectedItemsAndExtra, common, a.size(), b.size() - common)
+              : say(kExpectedItemsExtraAndCopies, common, a.size(), b.size() - common, copies);
       if (common > 0 && !a.empty())
         return {Verdict::Partial,
                 static_cast<double>(common) / static_cast<double>(std::max(a.size(), b.size())),
@@ -697,18 +884,18 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
                 {},
                 false,
                 {}};
-      return incorrect(copies == 0 ? "" : counted);
+      return incorrect(copies == 0 ? Said() : counted);
     }
     case AnswerKind::Sequence: {
       const std::vector<std::string> items = items_read(got, expected, r);
       if (auto c = unreadable_list(items, expected, r)) return *c;
       const std::vector<std::string> a = folded(expected.words, expected.words),
                                      b = folded(items, expected.words);
-      if (a == b) return correct("");
+      if (a == b) return correct();
       std::vector<std::string> sa = a, sb = b;
       std::sort(sa.begin(), sa.end());
       std::sort(sb.begin(), sb.end());
-      return incorrect(sa == sb ? "the right items in the wrong order" : "");
+      return incorrect(sa == sb ? say(kRightItemsWrongOrder) : Said());
     }
     case AnswerKind::WordMap:
       return compare_word_map(expected, keys_read(got, expected, r), r);
@@ -718,7 +905,7 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
       // The same vertex cycle, starting anywhere (orientation must match).
       const auto e = rows_of(expected), g = rows_of(got);
       if (e.size() != g.size() || e.empty())
-        return incorrect(fmt::format("expected {} vertices, got {}", e.size(), g.size()));
+        return incorrect(say(kExpectedVerticesGot, e.size(), g.size()));
       const auto cycle_matches = [&](bool reversed) -> std::optional<std::size_t> {
         for (std::size_t shift = 0; shift < e.size(); ++shift) {
           bool all = true;
@@ -732,15 +919,12 @@ Comparison compare(const Value& expected, const Value& got, const AnswerRules& r
         return std::nullopt;
       };
       if (const auto shift = cycle_matches(false))
-        return correct(*shift ? "the same polygon, starting at another vertex" : "equal");
-      if (cycle_matches(true))
-        return incorrect(
-            "the right vertices in the opposite order: the orientation decides which side is the "
-            "front");
-      return incorrect("");
+        return correct(say(*shift ? kSamePolygonOtherStart : kEqual));
+      if (cycle_matches(true)) return incorrect(say(kRightVerticesOppositeOrder));
+      return incorrect();
     }
   }
-  return incorrect("answers of this kind cannot be graded yet");
+  return incorrect(say(kCannotBeGradedYet));
 }
 
 }  // namespace frustum

@@ -24,12 +24,12 @@ std::string_view to_string(Verdict v);
 struct Comparison {
   Verdict verdict = Verdict::Incorrect;
   double credit = 0;     // fraction of the answer's points, 0..1
-  std::string feedback;  // why, for the student
-  std::string trivial;   // the trivial answer it is as a whole ("identity matrix"), if any
+  Said feedback;         // why, for the student
+  Said trivial;          // the trivial answer it is as a whole ("identity matrix"), if any
   bool no_work = false;  // that trivial answer takes no work (TrivialAnswer::no_work)
   // A mistake the comparison itself recognises ("not normalised": the right direction, another
   // length); a kind's own named mistake that fits the answer is said instead.
-  std::string mistake;
+  Said mistake;
 };
 
 // How one asked answer of one problem is judged; prepared once per problem.

@@ -74,6 +74,57 @@ Submission load_submission(const std::string& path) {
 
 namespace {
 
+constexpr Phrase kNoAnswerGiven{"no answer given", "解答がありません", "ответа нет"};
+// How it was read, then what the comparison found.
+constexpr Phrase kReadThen{"{0}; {1}", "{0}; {1}", "{0}; {1}"};
+constexpr Phrase kInParentheses{"({0})", "({0})", "({0})"};
+constexpr Phrase kAnd{"{0} and {1}", "{0} と {1}", "{0} и {1}"};
+constexpr Phrase kOr{"{0} or {1}", "{0}または{1}", "{0} или {1}"};
+constexpr Phrase kWhatTwoMistakesGive{
+    "This is what a {0} or {1} gives; your other answers do not show which.",
+    "これは「{0}」または「{1}」で生じる値です. 他の解答からはどちらかは分かりません.",
+    "Так получается при ошибке «{0}» или «{1}»; по остальным ответам не видно, при какой."};
+constexpr Phrase kWhatMistakesGive{
+    "This is what a {0} gives; your other answers do not show which.",
+    "これは「{0}」で生じる値です. 他の解答からはどれかは分かりません.",
+    "Так получается при одной из ошибок: {0}; по остальным ответам не видно, при какой."};
+constexpr Phrase kFollowsFromACopy{
+    "It follows from your own {0}, which is copied from the given: nothing is carried forward "
+    "from it.",
+    "あなた自身の `{0}` から導かれていますが, それは与えられた値の写しなので, "
+    "誤りの持ち越しはありません.",
+    "Это следует из вашего `{0}`, но он скопирован из данных задачи: баллы с него не "
+    "переносятся."};
+constexpr Phrase kFollowsFromATrivialAnswer{
+    "It follows from your own {0}, which is the {1} and takes no work: nothing is carried forward "
+    "from it.",
+    "あなた自身の `{0}` から導かれていますが, それは{1}で計算を要しないので, "
+    "誤りの持ち越しはありません.",
+    "Это следует из вашего `{0}`, но это {1} — ответ без вычислений: баллы с него не "
+    "переносятся."};
+constexpr Phrase kFollowsFromNoWork{
+    "It follows from your own {0}, which is computed from an answer that takes no work: nothing "
+    "is carried forward from it.",
+    "あなた自身の `{0}` から導かれていますが, それは計算を要しない解答から求めたものなので, "
+    "誤りの持ち越しはありません.",
+    "Это следует из вашего `{0}`, но он получен из ответа, не требующего вычислений: баллы с него "
+    "не переносятся."};
+constexpr Phrase kRightForYourOwnOne{
+    "right for your own {0}, which is also right (the key used another, equally right, choice)",
+    "あなた自身の `{0}` に対して正しく, それも正しい (正解例は別の, 同じく正しい選び方をしている)",
+    "верно для вашего `{0}`, который тоже верен (в ключе выбран другой, столь же верный вариант)"};
+constexpr Phrase kRightForYourOwnSeveral{
+    "right for your own {0}, which are also right (the key used another, equally right, choice)",
+    "あなた自身の `{0}` に対して正しく, それらも正しい (正解例は別の, "
+    "同じく正しい選び方をしている)",
+    "верно для ваших `{0}`, которые тоже верны (в ключе выбран другой, столь же верный вариант)"};
+constexpr Phrase kCarriedForward{
+    "wrong, but it follows correctly from your own earlier {0} (error carried forward: {1} of the "
+    "points)",
+    "誤りですが, あなた自身の前の解答から正しく導かれています (`{0}`; 誤りの持ち越し: 配点の {1})",
+    "неверно, но правильно следует из вашего предыдущего ответа `{0}` (перенос ошибки: {1} "
+    "баллов)"};
+
 bool all_zero_vector(const Value& v) {
   if (v.numbers.size() < 2) return false;
   for (const double x : v.numbers)
@@ -105,11 +156,24 @@ std::vector<std::string> carry_inputs(const KindInfo& kind, const std::string& n
   return out;
 }
 
-std::string name_list(const std::vector<std::string>& names) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+// "a, b and c" (`joiner`: kAnd or kOr), each item in the reader's language.
+Said listed(const std::vector<Said>& items, const Phrase& joiner) {
+  Said out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i == 0)
+      out = items[i];
+    else if (i + 1 == items.size())
+      out = say(joiner, out, items[i]);
+    else
+      out.append(Said::verbatim(", ")).append(items[i]);
+  }
   return out;
+}
+
+Said name_list(const std::vector<std::string>& names) {
+  std::vector<Said> items;
+  for (const std::string& n : names) items.push_back(Said::verbatim(n));
+  return listed(items, kAnd);
 }
 
 // One problem's grading: the student's parsed answers, each graded in turn against the key,
@@ -141,7 +205,7 @@ class ProblemGrader {
     const YAML::Node given = student.IsMap() ? student[name] : YAML::Node();
     if (!given.IsDefined() || given.IsNull()) {
       ag.verdict = Verdict::Missing;
-      ag.feedback = "no answer given";
+      ag.feedback = Said(kNoAnswerGiven);
     } else if (!parsed_[i].ok) {
       ag.got_text = parsed_[i].raw;
       ag.verdict = Verdict::Unparseable;
@@ -152,7 +216,8 @@ class ProblemGrader {
       judge(ag);
     }
     if (parsed_[i].ok && !parsed_[i].note.empty())
-      ag.feedback = parsed_[i].note + (ag.feedback.empty() ? "" : "; " + ag.feedback);
+      ag.feedback =
+          ag.feedback.empty() ? parsed_[i].note : say(kReadThen, parsed_[i].note, ag.feedback);
     verdicts_.emplace_back(name, ag.verdict);
     // A trivial answer (zero, a given copied back, the identity…) carries nothing forward, and
     // neither does a wrong answer computed from one, unless it earned carried credit of its own
@@ -160,8 +225,9 @@ class ProblemGrader {
     if (ag.got && ag.verdict != Verdict::Correct) {
       if (whole_trivial_ || all_zero_vector(*ag.got)) {
         trivial_.push_back(name);
-        whole_.emplace_back(
-            name, whole_trivial_ && !ag.misconception.empty() ? ag.misconception : "zero vector");
+        whole_.emplace_back(name, whole_trivial_ && !ag.misconception.empty()
+                                      ? ag.misconception
+                                      : Said(kZeroVectorAnswer));
       } else if (!ag.carried_forward && !trivial_inputs(name).empty()) {
         trivial_.push_back(name);
       }
@@ -249,18 +315,16 @@ class ProblemGrader {
       ag.misconception = fits[0]->name;
       ag.wrong_step = fits[0]->step;
       // Said in the form the student wrote (an equation, not the list it would explain).
-      std::string said = fits[0]->feedback;
+      Said said = fits[0]->feedback;
       for (const auto& [form, feedback] : fits[0]->feedback_by_form)
         if (form == form_of(ag.name)) said = feedback;
-      ag.feedback = said + (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
+      ag.feedback = ag.feedback.empty() ? said : said + say(kInParentheses, ag.feedback);
     } else if (fits.size() > 1) {
-      std::vector<std::string> names;
+      std::vector<Said> names;
       for (const Misconception* f : fits) names.push_back(f->name);
-      std::string list;
-      for (std::size_t i = 0; i < names.size(); ++i)
-        list += (i ? (i + 1 == names.size() ? " or " : ", ") : "") + names[i];
-      ag.feedback = "This is what a " + list + " gives; your other answers do not show which." +
-                    (ag.feedback.empty() ? "" : " (" + ag.feedback + ")");
+      const Said which = names.size() == 2 ? say(kWhatTwoMistakesGive, names[0], names[1])
+                                           : say(kWhatMistakesGive, listed(names, kOr));
+      ag.feedback = ag.feedback.empty() ? which : which + say(kInParentheses, ag.feedback);
     }
   }
 
@@ -297,21 +361,13 @@ class ProblemGrader {
     for (const std::string& n : used) {
       const auto whole =
           std::find_if(whole_.begin(), whole_.end(), [&](const auto& w) { return w.first == n; });
-      const std::string what = whole == whole_.end() ? "" : whole->second;
-      const std::string why =
-          whole == whole_.end()
-              ? "It follows from your own " + n +
-                    ", which is computed from an answer that takes no work: nothing is carried "
-                    "forward from it."
-          : what == "copied from the given"
-              ? "It follows from your own " + n +
-                    ", which is copied from the given: nothing is carried forward from it."
-              : "It follows from your own " + n + ", which is the " + what +
-                    " and takes no work: nothing is carried forward from it.";
-      if (ag.feedback.empty())
-        ag.feedback = why;
-      else
-        ag.feedback += (ag.feedback.back() == '.' ? " " : ". ") + why;
+      const Said why = whole == whole_.end() ? say(kFollowsFromNoWork, n)
+                       : whole->second == Said(kCopiedFromTheGiven)
+                           ? say(kFollowsFromACopy, n)
+                           : say(kFollowsFromATrivialAnswer, n, whole->second);
+      if (!ag.feedback.empty() && !ag.feedback.en().ends_with('.'))
+        ag.feedback.append(Said::verbatim("."));
+      ag.feedback += why;
     }
   }
 
@@ -335,11 +391,10 @@ class ProblemGrader {
     if (wrong.empty()) {
       ag.verdict = Verdict::Correct;
       ag.score = ag.max_score;
-      ag.misconception.clear();
-      ag.wrong_step.clear();
-      ag.feedback = "right for your own " + name_list(right) + ", which " +
-                    (right.size() == 1 ? "is" : "are") +
-                    " also right (the key used another, equally right, choice)";
+      ag.misconception = {};
+      ag.wrong_step = {};
+      ag.feedback =
+          say(right.size() == 1 ? kRightForYourOwnOne : kRightForYourOwnSeveral, name_list(right));
       return;
     }
     const double credit = spec_.grading.ecf * ag.max_score;
@@ -347,9 +402,8 @@ class ProblemGrader {
     ag.verdict = Verdict::Partial;
     ag.score = credit;
     ag.carried_forward = true;
-    ag.feedback = "wrong, but it follows correctly from your own earlier " + name_list(wrong) +
-                  " (error carried forward: " + format_approx(spec_.grading.ecf * 100, 3) +
-                  "% of the points)";
+    ag.feedback =
+        say(kCarriedForward, name_list(wrong), format_approx(spec_.grading.ecf * 100, 3) + "%");
   }
 
   const ProblemSpec& spec_;
@@ -361,7 +415,7 @@ class ProblemGrader {
   std::vector<std::pair<std::string, Verdict>> verdicts_;  // graded so far
   std::vector<std::string> trivial_;  // trivial answers, and wrong ones computed from them
   // Those of them that are trivial answers themselves, with what each is ("zero vector").
-  std::vector<std::pair<std::string, std::string>> whole_;
+  std::vector<std::pair<std::string, Said>> whole_;
   bool whole_trivial_ = false;  // the answer being judged is a trivial answer as a whole
 };
 

@@ -34,9 +34,9 @@ struct AnswerGrade {
   Value expected;
   std::optional<Value> got;  // parsed
   std::string got_text;      // as written
-  std::string feedback;
-  std::string misconception;     // the common mistake the answer matches, if any
-  std::string wrong_step;        // the derivation step where that mistake happens
+  Said feedback;
+  Said misconception;            // the common mistake the answer matches, if any
+  Said wrong_step;               // the derivation step where that mistake happens
   bool carried_forward = false;  // credit given for following the student's earlier answer
   std::vector<Step> derivation;  // the steps that lead to this answer, for wrong answers
 };

@@ -19,11 +19,13 @@ SampleVerdict verdict_of(const std::vector<AnswerGrade>& answers, double score, 
   return score > 0 ? SampleVerdict::Partly : SampleVerdict::Wrong;
 }
 
+// In English, as every diagnostic of `check` is (the instructor's self-test of the set).
 std::string answers_said(const std::vector<AnswerGrade>& answers) {
   std::string out;
   for (const AnswerGrade& a : answers)
-    out += fmt::format("{}{}: {}", out.empty() ? "" : "; ", a.name, to_string(a.verdict)) +
-           (a.feedback.empty() || a.verdict == Verdict::Correct ? "" : " (" + a.feedback + ")");
+    out +=
+        fmt::format("{}{}: {}", out.empty() ? "" : "; ", a.name, to_string(a.verdict)) +
+        (a.feedback.empty() || a.verdict == Verdict::Correct ? "" : " (" + a.feedback.en() + ")");
   return out;
 }
 

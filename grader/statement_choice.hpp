@@ -14,6 +14,7 @@
 
 #include "grader/compare.hpp"
 #include "solver/derivation/value.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum {
 
@@ -22,7 +23,7 @@ namespace frustum {
 // statement number to "true"/"false". An error says why the answer cannot be read.
 struct StatementChoice {
   Value value;
-  std::string error;
+  Said error;  // for the student
 };
 StatementChoice read_statement_choice(const YAML::Node& node);
 

@@ -9,6 +9,52 @@ namespace frustum {
 
 namespace {
 
+// What each trivial answer is called, and what it is (the zero vector and the copy of the given
+// are named in trivial.hpp: the grader says them too).
+constexpr Phrase kIdentityMatrix{"identity matrix", "単位行列", "единичная матрица"};
+constexpr Phrase kIdentityMatrixLeavesPoints{
+    "That is the identity matrix: it leaves every point where it is.",
+    "それは単位行列です. どの点も動かしません.",
+    "Это единичная матрица: она оставляет каждую точку на месте."};
+constexpr Phrase kTransposedConvention{
+    "transposed matrix (row- vs column-vector convention)",
+    "転置行列 (行ベクトルと列ベクトルの規約の取り違え)",
+    "транспонированная матрица (путаница строк- и столбцов-векторов)"};
+constexpr Phrase kTransposeColumnVectorForm{
+    "That is the transpose: the column-vector form p′ = M·p (as OpenGL writes it).",
+    "それは転置です. 列ベクトルの形 p′ = M·p (OpenGL の書き方) になっています.",
+    "Это транспонированная матрица: форма для столбцов p′ = M·p (как пишет OpenGL)."};
+constexpr Phrase kDirectXTranslationInBottomRow{
+    "With DirectX's row vectors p′ = p·M the translation stands in the bottom row.",
+    "DirectX の行ベクトル p′ = p·M では平行移動は最下行に来ます.",
+    "Для строк-векторов DirectX p′ = p·M перенос стоит в нижней строке."};
+constexpr Phrase kTransposeRowVectorForm{
+    "That is the transpose: the row-vector form p′ = p·M (as DirectX writes it).",
+    "それは転置です. 行ベクトルの形 p′ = p·M (DirectX の書き方) になっています.",
+    "Это транспонированная матрица: форма для строк p′ = p·M (как пишет DirectX)."};
+constexpr Phrase kColumnVectorsTranslationInLastColumn{
+    "With column vectors p′ = M·p the translation stands in the last column.",
+    "列ベクトル p′ = M·p では平行移動は最後の列に来ます.",
+    "Для столбцов-векторов p′ = M·p перенос стоит в последнем столбце."};
+constexpr Phrase kTransposedMatrix{"transposed matrix", "転置行列", "транспонированная матрица"};
+constexpr Phrase kTransposeOfExpected{
+    "That is the transpose of the expected matrix: rows and columns swapped.",
+    "それは正解の行列の転置です. 行と列が入れ替わっています.",
+    "Это транспонированная верная матрица: строки и столбцы переставлены."};
+constexpr Phrase kZeroMatrix{"zero matrix", "零行列", "нулевая матрица"};
+constexpr Phrase kEveryEntryZero{"Every entry is 0: that takes no computation.",
+                                 "すべて 0 です. 計算を必要としません.",
+                                 "Все элементы равны 0: это не требует вычислений."};
+constexpr Phrase kGivenCopiedUnchanged{
+    "That is the given, copied unchanged: the answer is what the computation makes of it.",
+    "それは問題の値をそのまま写したものです. 解答はそれを計算した結果です.",
+    "Это данные из условия без изменений: ответ — то, что из них получается при вычислении."};
+constexpr Phrase kFieldCopiedUnchanged{
+    "That is `{0}` from the problem, copied unchanged: the answer is what the computation makes of "
+    "it.",
+    "それは問題の `{0}` をそのまま写したものです. 解答はそれを計算した結果です.",
+    "Это `{0}` из условия без изменений: ответ — то, что из него получается при вычислении."};
+
 std::optional<Exact> number_of(const YAML::Node& n) {
   if (!n.IsScalar()) return std::nullopt;
   const ExpressionResult r = parse_expression(n.Scalar());
@@ -85,8 +131,7 @@ std::vector<TrivialAnswer> trivial_answers(const Value& key, AnswerKind kind,
   std::vector<TrivialAnswer> out;
   const std::size_t n = key.numbers.size();
   if (n < 2 || (key.shape != Value::Shape::Vector && key.shape != Value::Shape::Matrix)) return out;
-  const auto add = [&](std::string name, std::string feedback, std::vector<double> numbers,
-                       bool no_work = true) {
+  const auto add = [&](Said name, Said feedback, std::vector<double> numbers, bool no_work = true) {
     if (numbers.size() != n || same(numbers, key.numbers)) return;
     for (const TrivialAnswer& t : out)
       if (same(t.value.numbers, numbers)) return;
@@ -100,34 +145,24 @@ std::vector<TrivialAnswer> trivial_answers(const Value& key, AnswerKind kind,
       identity[i * s + i] = 1;
       for (std::size_t j = 0; j < s; ++j) transposed[i * s + j] = key.numbers[j * s + i];
     }
-    add("identity matrix", "That is the identity matrix: it leaves every point where it is.",
-        identity);
+    add(say(kIdentityMatrix), say(kIdentityMatrixLeavesPoints), identity);
     if (kind == AnswerKind::Transform)
-      add("transposed matrix (row- vs column-vector convention)",
+      add(say(kTransposedConvention),
           api == Api::DirectX
-              ? "That is the transpose: the column-vector form p′ = M·p (as OpenGL writes it). "
-                "With "
-                "DirectX's row vectors p′ = p·M the translation stands in the bottom row."
-              : "That is the transpose: the row-vector form p′ = p·M (as DirectX writes it). With "
-                "column "
-                "vectors p′ = M·p the translation stands in the last column.",
+              ? say(kTransposeColumnVectorForm) + say(kDirectXTranslationInBottomRow)
+              : say(kTransposeRowVectorForm) + say(kColumnVectorsTranslationInLastColumn),
           transposed, false);
     else
-      add("transposed matrix",
-          "That is the transpose of the expected matrix: rows and columns swapped.", transposed,
-          false);
+      add(say(kTransposedMatrix), say(kTransposeOfExpected), transposed, false);
   }
-  add(square ? "zero matrix" : "zero vector", "Every entry is 0: that takes no computation.",
+  add(say(square ? kZeroMatrix : kZeroVectorAnswer), say(kEveryEntryZero),
       std::vector<double>(n, 0.0));
   for (const GivenList& g : given) {
     std::vector<double> copy = g.value.numbers;
     if (copy.size() + 1 == n && (kind == AnswerKind::Point || kind == AnswerKind::Vector))
       copy.push_back(1);
-    add("copied from the given",
-        "That is " +
-            (g.field.empty() ? std::string("the given") : "`" + g.field + "` from the problem") +
-            ", copied unchanged: the answer is what the computation makes of it.",
-        copy);
+    add(say(kCopiedFromTheGiven),
+        g.field.empty() ? say(kGivenCopiedUnchanged) : say(kFieldCopiedUnchanged, g.field), copy);
   }
   return out;
 }

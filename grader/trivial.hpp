@@ -10,12 +10,18 @@
 
 #include "solver/derivation/value.hpp"
 #include "solver/problem/kind.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum {
 
+// Two trivial answers the grader names when it says why nothing is carried forward from them.
+inline constexpr Phrase kZeroVectorAnswer{"zero vector", "零ベクトル", "нулевой вектор"};
+inline constexpr Phrase kCopiedFromTheGiven{"copied from the given", "問題の値の写し",
+                                            "скопировано из условия"};
+
 struct TrivialAnswer {
-  std::string name;      // "identity matrix" (a misconception name, translated in feedback)
-  std::string feedback;  // what it is, for the student
+  Said name;      // "identity matrix" (a misconception name)
+  Said feedback;  // what it is, for the student
   Value value;
   // Zero, the identity, a copy of the given: written without any work, so nothing is carried
   // forward from it. The transposed key is a convention mistake made with the whole

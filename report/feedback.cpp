@@ -11,7 +11,18 @@
 
 namespace frustum {
 
+using namespace report_phrases;
+
 namespace {
+
+constexpr Phrase kAnswer{"Answer", "解答", "Ответ"};
+constexpr Phrase kVerdict{"Verdict", "判定", "Оценка"};
+constexpr Phrase kScore{"Score", "得点", "Баллы"};
+constexpr Phrase kYouWrote{"You wrote", "あなたの解答", "Ваш ответ"};
+constexpr Phrase kExpected{"Expected", "正解", "Верный ответ"};
+constexpr Phrase kCreditCarriedForward{"credit carried forward from your earlier answer",
+                                       "前の解答からの継続点 (誤りの持ち越し)",
+                                       "баллы перенесены с вашего предыдущего ответа"};
 
 // Markdown table cells: a pipe would end the cell (markdown_escape escapes it).
 std::string cell(const std::string& s) { return markdown_escape(s); }
@@ -20,7 +31,7 @@ std::string cell(const std::string& s) { return markdown_escape(s); }
 // bytes that are not UTF-8 and control characters are made visible.
 std::string html_escape(std::string_view s) { return svg_escape(visible_text(s, Breaks::Kept)); }
 
-std::string verdict_word(Verdict v, Lang lang) { return tr(to_string(v), lang); }
+std::string verdict_word(Verdict v, Lang lang) { return std::string(verdict_phrase(v).in(lang)); }
 
 // The answer as the student wrote it (their decimals, their form), never our exact reading of
 // it: 0.948683 stays 0.948683 beside the key.
@@ -112,11 +123,10 @@ std::string markdown_code(std::string_view raw) {
 std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
   std::string out;
   if (p.error)
-    return out +
-           fmt::format("**{}:** `{}`\n\n", tr("error", lang), markdown_code(p.error->format()));
-  out += fmt::format("| {} | {} | {} | {} | {} |\n| --- | --- | --- | --- | --- |\n",
-                     tr("Answer", lang), tr("Verdict", lang), tr("Score", lang),
-                     tr("You wrote", lang), tr("Expected", lang));
+    return out + fmt::format("**{}:** `{}`\n\n", kError.in(lang), markdown_code(p.error->format()));
+  out +=
+      fmt::format("| {} | {} | {} | {} | {} |\n| --- | --- | --- | --- | --- |\n", kAnswer.in(lang),
+                  kVerdict.in(lang), kScore.in(lang), kYouWrote.in(lang), kExpected.in(lang));
   for (const AnswerGrade& a : p.answers)
     out += fmt::format("| `{}` | {} | {} / {} | {} | {} |\n", markdown_code(a.name),
                        verdict_word(a.verdict, lang), score_text(a.score), score_text(a.max_score),
@@ -126,15 +136,13 @@ std::string render_problem_feedback_markdown(const ProblemGrade& p, Lang lang) {
     if (a.verdict == Verdict::Correct) continue;
     if (a.misconception.empty() && a.feedback.empty() && a.derivation.empty()) continue;
     out += fmt::format("**`{}`**", markdown_code(a.name));
-    if (a.carried_forward)
-      out += " — " + tr("credit carried forward from your earlier answer", lang);
+    if (a.carried_forward) out += fmt::format(" — {}", kCreditCarriedForward.in(lang));
     out += "\n\n";
     if (!a.misconception.empty())
-      out +=
-          fmt::format("> **{}:** {}\n\n", tr("Common mistake", lang), misconception_text(a, lang));
-    if (!a.feedback.empty()) out += markdown_escape(tr(a.feedback, lang)) + "\n\n";
+      out += fmt::format("> **{}:** {}\n\n", kCommonMistake.in(lang), misconception_text(a, lang));
+    if (!a.feedback.empty()) out += markdown_escape(a.feedback.in(lang)) + "\n\n";
     if (!a.derivation.empty())
-      out += fmt::format("*{}:*\n\n", tr("How to get it", lang)) +
+      out += fmt::format("*{}:*\n\n", kHowToGetIt.in(lang)) +
              render_steps_markdown(a.derivation, lang);
   }
   return out;
@@ -153,11 +161,11 @@ std::string render_feedback_markdown(const GradeReport& r, Lang lang) {
 std::string render_feedback_markdown(const GradeReport& r, Lang lang,
                                      const std::vector<std::string>& problem_markdown) {
   std::string out =
-      fmt::format("# {} {}\n\n**{}: {} / {}**\n\n", tr("Student", lang),
-                  r.student.empty() ? tr("(unnamed)", lang) : markdown_escape(r.student),
-                  tr("Score", lang), score_text(r.score), score_text(r.max_score));
+      fmt::format("# {} {}\n\n**{}: {} / {}**\n\n", kStudent.in(lang),
+                  r.student.empty() ? std::string(kUnnamed.in(lang)) : markdown_escape(r.student),
+                  kScore.in(lang), score_text(r.score), score_text(r.max_score));
   for (const Diagnostic& d : r.errors)
-    out += fmt::format("- {}: `{}`\n", tr("warning", lang), markdown_code(d.format()));
+    out += fmt::format("- {}: `{}`\n", kWarning.in(lang), markdown_code(d.format()));
   if (!r.errors.empty()) out += "\n";
   for (std::size_t i = 0; i < r.problems.size(); ++i) {
     const ProblemGrade& p = r.problems[i];
@@ -191,9 +199,9 @@ std::string render_problem_feedback_html(const ProblemGrade& p, Lang lang, bool 
     return out +
            fmt::format("<p class=\"error\">{}</p>\n</section>\n", html_escape(p.error->format()));
   out += fmt::format("<table>\n<tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th>{}</tr>\n",
-                     html_escape(tr("Answer", lang)), html_escape(tr("Verdict", lang)),
-                     html_escape(tr("Score", lang)), html_escape(tr("You wrote", lang)),
-                     with_key ? "<th>" + html_escape(tr("Expected", lang)) + "</th>" : "");
+                     html_escape(kAnswer.in(lang)), html_escape(kVerdict.in(lang)),
+                     html_escape(kScore.in(lang)), html_escape(kYouWrote.in(lang)),
+                     with_key ? "<th>" + html_escape(kExpected.in(lang)) + "</th>" : "");
   for (const AnswerGrade& a : p.answers) {
     const std::string_view v = to_string(a.verdict);
     out += fmt::format(
@@ -215,19 +223,16 @@ std::string render_problem_feedback_html(const ProblemGrade& p, Lang lang, bool 
     out += fmt::format(
         "<div class=\"answer-feedback\" id=\"feedback-{}-{}\">\n<h3><code>{}</code>{}</h3>\n",
         html_escape(p.id), html_escape(a.name), html_escape(a.name),
-        a.carried_forward
-            ? " — " + html_escape(tr("credit carried forward from your earlier answer", lang))
-            : "");
+        a.carried_forward ? " — " + html_escape(kCreditCarriedForward.in(lang)) : "");
     if (!a.misconception.empty())
       out += fmt::format("<p class=\"mistake\"><b>{}:</b> {}</p>\n",
-                         html_escape(tr("Common mistake", lang)),
+                         html_escape(kCommonMistake.in(lang)),
                          html_escape(misconception_text(a, lang)));
     if (!a.feedback.empty())
-      out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(tr(a.feedback, lang)));
+      out += fmt::format("<p class=\"feedback\">{}</p>\n", html_escape(a.feedback.in(lang)));
     if (steps)
       out += fmt::format("<details open><summary>{}</summary>\n{}</details>\n",
-                         html_escape(tr("How to get it", lang)),
-                         html_steps(a.derivation, lang, markup));
+                         html_escape(kHowToGetIt.in(lang)), html_steps(a.derivation, lang, markup));
     out += "</div>\n";
   }
   return out + "</section>\n";
@@ -243,7 +248,7 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
 
 std::string render_feedback_html(const GradeReport& r, Lang lang, const std::string& math_head,
                                  const Figures* figures) {
-  const std::string student = r.student.empty() ? tr("(unnamed)", lang) : r.student;
+  const std::string student = r.student.empty() ? std::string(kUnnamed.in(lang)) : r.student;
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
@@ -251,10 +256,10 @@ std::string render_feedback_html(const GradeReport& r, Lang lang, const std::str
       to_string(lang), html_escape(student), kStyle, math_head);
   out += fmt::format(
       "<h1>{} {}</h1>\n<p class=\"total\" id=\"total\">{}: {} / {}</p>\n<p id=\"summary\"></p>\n",
-      html_escape(tr("Student", lang)), html_escape(student), html_escape(tr("Score", lang)),
+      html_escape(kStudent.in(lang)), html_escape(student), html_escape(kScore.in(lang)),
       score_text(r.score), score_text(r.max_score));
   for (const Diagnostic& d : r.errors)
-    out += fmt::format("<p class=\"error\">{}: {}</p>\n", html_escape(tr("warning", lang)),
+    out += fmt::format("<p class=\"error\">{}: {}</p>\n", html_escape(kWarning.in(lang)),
                        html_escape(d.format()));
   for (const ProblemGrade& p : r.problems)
     out +=

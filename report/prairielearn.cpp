@@ -4,11 +4,24 @@
 
 #include "grader/visible_text.hpp"
 #include "report/feedback.hpp"
+#include "report/report.hpp"
 #include "solver/derivation/render.hpp"
 
 namespace frustum {
 
 using json = nlohmann::ordered_json;
+
+namespace {
+
+constexpr Phrase kSomeAnswersCouldNotBeRead{
+    "Some answers could not be read; fix them and submit again (this attempt is not counted).",
+    "読み取れない解答があります. 直して再提出してください (この提出は回数に数えません).",
+    "Некоторые ответы не удалось прочитать; исправьте их и отправьте снова (эта попытка не "
+    "засчитывается)."};
+constexpr Phrase kSeeTheFeedbackBelow{"see the feedback below", "下のフィードバックを参照",
+                                      "см. отзыв ниже"};
+
+}  // namespace
 
 json prairielearn_results(const GradeReport& r, Lang lang) {
   // Unreadable answers and an unreadable file are format errors, not wrong answers.
@@ -17,14 +30,13 @@ json prairielearn_results(const GradeReport& r, Lang lang) {
   for (const ProblemGrade& p : r.problems)
     for (const AnswerGrade& a : p.answers)
       if (a.verdict == Verdict::Unparseable)
-        format_errors.push_back(visible_text(fmt::format("{}.{}: {}", p.id, a.name, a.feedback)));
+        format_errors.push_back(
+            visible_text(fmt::format("{}.{}: {}", p.id, a.name, a.feedback.en())));
   json j;
   j["gradable"] = format_errors.empty();
   if (!format_errors.empty()) {
     j["format_errors"] = format_errors;
-    j["message"] = tr(
-        "Some answers could not be read; fix them and submit again (this attempt is not counted).",
-        lang);
+    j["message"] = kSomeAnswersCouldNotBeRead.in(lang);
     return j;
   }
   j["score"] = r.max_score > 0 ? r.score / r.max_score : 0.0;
@@ -44,8 +56,8 @@ json prairielearn_results(const GradeReport& r, Lang lang) {
     t["points"] = number_json(p.score);
     t["max_points"] = number_json(p.max_score);
     t["message"] = p.error                  ? visible_text(p.error->format())
-                   : p.score >= p.max_score ? tr("correct", lang)
-                                            : tr("see the feedback below", lang);
+                   : p.score >= p.max_score ? std::string(verdict_phrase(Verdict::Correct).in(lang))
+                                            : std::string(kSeeTheFeedbackBelow.in(lang));
     tests.push_back(t);
   }
   j["tests"] = tests;

@@ -10,8 +10,17 @@
 namespace frustum {
 
 using json = nlohmann::ordered_json;
+using namespace report_phrases;
 
 namespace {
+
+constexpr Phrase kWhereItGoesWrong{"Where it goes wrong", "誤りの生じるステップ",
+                                   "Где возникает ошибка"};
+constexpr Phrase kSeeStep{"See step", "参照ステップ", "См. шаг"};
+// Inside a line of the text report ("— you wrote 3; expected 2"); a colon after the words where
+// they are a label.
+constexpr Phrase kYouWroteInline{"you wrote", "あなたの解答:", "Ваш ответ:"};
+constexpr Phrase kExpectedInline{"expected", "正解:", "Верный ответ:"};
 
 // The number a step has in the rendered derivation (notes and warnings are not numbered).
 int step_number(const std::vector<Step>& steps) {
@@ -51,10 +60,10 @@ std::string mark(Verdict v, bool color) {
 }  // namespace
 
 std::string misconception_text(const AnswerGrade& a, Lang lang) {
-  return tr(a.misconception, lang) +
-         (a.wrong_step.empty()
-              ? ""
-              : " (" + tr("Where it goes wrong", lang) + ": " + tr(a.wrong_step, lang) + ")");
+  std::string out = a.misconception.in(lang);
+  if (!a.wrong_step.empty())
+    out += fmt::format(" ({}: {})", kWhereItGoesWrong.in(lang), a.wrong_step.in(lang));
+  return out;
 }
 
 // A score as a teacher writes it: at most two decimals, trailing zeros dropped (21.33, 2, 0.5).
@@ -69,17 +78,18 @@ std::string score_text(double v) {
 
 std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
   const Lang lang = style.lang;
-  std::string out = fmt::format("{} {}: {} / {}\n", tr("Student", lang),
-                                r.student.empty() ? tr("(unnamed)", lang) : visible_text(r.student),
-                                score_text(r.score), score_text(r.max_score));
+  std::string out =
+      fmt::format("{} {}: {} / {}\n", kStudent.in(lang),
+                  r.student.empty() ? std::string(kUnnamed.in(lang)) : visible_text(r.student),
+                  score_text(r.score), score_text(r.max_score));
   if (!r.variant.empty()) out += "  " + visible_text(r.variant) + "\n";
   for (const Diagnostic& d : r.errors)
-    out += "  " + tr("warning", lang) + ": " + visible_text(d.format()) + "\n";
+    out += fmt::format("  {}: {}\n", kWarning.in(lang), visible_text(d.format()));
   for (const ProblemGrade& p : r.problems) {
     out += fmt::format("\n{} ({}): {} / {}\n", p.id, p.kind, score_text(p.score),
                        score_text(p.max_score));
     if (p.error) {
-      out += "  " + tr("error", lang) + ": " + visible_text(p.error->format()) + "\n";
+      out += fmt::format("  {}: {}\n", kError.in(lang), visible_text(p.error->format()));
       continue;
     }
     // The derivation is printed once per problem, after its answers: the longest of the wrong
@@ -92,26 +102,24 @@ std::string render_grade_text(const GradeReport& r, const TextStyle& style) {
         derivation = &a.derivation;
     for (const AnswerGrade& a : p.answers) {
       out += fmt::format("  {} {}: {}", mark(a.verdict, style.color), a.name,
-                         tr(to_string(a.verdict), lang));
+                         verdict_phrase(a.verdict).in(lang));
       if (a.verdict != Verdict::Missing)
-        out += fmt::format(" — {} {}", lang == Lang::En ? "you wrote" : tr("You wrote", lang) + ":",
-                           visible_text(a.got_text));
+        out += fmt::format(" — {} {}", kYouWroteInline.in(lang), visible_text(a.got_text));
       if (a.verdict != Verdict::Correct)
-        out += fmt::format("; {} {}", lang == Lang::En ? "expected" : tr("Expected", lang) + ":",
-                           tr(a.expected.shown(), lang).unicode);
+        out +=
+            fmt::format("; {} {}", kExpectedInline.in(lang), tr(a.expected.shown(), lang).unicode);
       out += "\n";
       if (!a.misconception.empty())
-        out +=
-            fmt::format("      {}: {}\n", tr("Common mistake", lang), misconception_text(a, lang));
+        out += fmt::format("      {}: {}\n", kCommonMistake.in(lang), misconception_text(a, lang));
       if (!a.feedback.empty() && a.verdict != Verdict::Correct)
-        out += "      " + visible_text(tr(a.feedback, lang)) + "\n";
+        out += "      " + visible_text(a.feedback.in(lang)) + "\n";
       if (a.verdict != Verdict::Correct && !a.derivation.empty() &&
           !a.derivation.back().answers.empty())
-        out += fmt::format("      {} {}: {}\n", tr("See step", lang), step_number(a.derivation),
+        out += fmt::format("      {} {}: {}\n", kSeeStep.in(lang), step_number(a.derivation),
                            a.derivation.back().title.in(lang));
     }
     if (derivation) {
-      out += "  " + tr("How to get it", lang) + ":\n";
+      out += fmt::format("  {}:\n", kHowToGetIt.in(lang));
       out += render_steps_text(*derivation, style, "    ");
     }
   }
@@ -140,10 +148,11 @@ json render_grade_json(const GradeReport& r) {
       aj["got"] =
           a.got ? value_json(*a.got) : (a.got_text.empty() ? json(nullptr) : json(a.got_text));
       if (a.verdict != Verdict::Missing) aj["got_text"] = a.got_text;
-      aj["feedback"] = a.feedback;
+      // The JSON report is for programs and keeps one language: the grader's English.
+      aj["feedback"] = a.feedback.en();
       if (!a.misconception.empty()) {
-        aj["misconception"] = a.misconception;
-        aj["wrong_step"] = a.wrong_step;
+        aj["misconception"] = a.misconception.en();
+        aj["wrong_step"] = a.wrong_step.en();
       }
       if (a.carried_forward) aj["carried_forward"] = true;
       if (!a.derivation.empty()) aj["derivation"] = steps_json(a.derivation);

@@ -72,7 +72,7 @@ Response preview_answer(StudentApp& app, const Visitor& v,
     const ParsedAnswer parsed = parse_answer(node, *spec, p->conventions.angles);
     if (!parsed.ok) {
       reading = Json{
-          {"ok", false}, {"label", say(Say::CannotRead, lang)}, {"error", tr(parsed.error, lang)}};
+          {"ok", false}, {"label", say(Say::CannotRead, lang)}, {"error", parsed.error.in(lang)}};
     } else {
       const MathText shown = read_as(parsed.value, *spec);
       reading = Json{{"ok", true},

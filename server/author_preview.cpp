@@ -95,7 +95,7 @@ Json problem_json(const ProblemSpec& p, const std::string& file, const std::vect
   for (const Lang l : langs)
     texts.push_back(Json{
         {"lang", std::string(to_string(l))},
-        {"text", p.text.empty() ? tr(p.info->summary, l) : fill_text(p.text.in(l), p.given_node)}});
+        {"text", p.text.empty() ? p.info->summary.in(l) : fill_text(p.text.in(l), p.given_node)}});
   j["texts"] = std::move(texts);
   Json given = Json::array();
   if (p.given_node.IsMap())

@@ -44,9 +44,9 @@ Json answer_json(const ProblemSpec& spec, const AnswerGrade& a, const Json& writ
               {"got_tex", a.got ? a.got->shown().latex : ""},
               {"key_text", key.unicode},
               {"key_tex", key.latex},
-              {"feedback", tr(a.feedback, lang)},
-              {"mistake", a.misconception.empty() ? "" : tr(a.misconception, lang)},
-              {"wrong_step", a.wrong_step.empty() ? "" : tr(a.wrong_step, lang)},
+              {"feedback", a.feedback.in(lang)},
+              {"mistake", a.misconception.in(lang)},
+              {"wrong_step", a.wrong_step.in(lang)},
               {"carried_forward", a.carried_forward},
               {"carried_from", carried_from(spec, a, written)},
               {"derivation_html", a.derivation.empty() ? "" : html_steps(a.derivation, lang)}};

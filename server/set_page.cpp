@@ -96,7 +96,7 @@ std::string problem_html(StudentApp& app, const CourseSet& set, const ProblemSpe
                          const std::vector<SubmissionRecord>& mine, Millis now, bool& pending) {
   const Lang lang = set.set.lang;
   const std::string text =
-      p.text.empty() ? tr(p.info->summary, lang) : fill_text(p.text.in(lang), p.given_node);
+      p.text.empty() ? p.info->summary.in(lang) : fill_text(p.text.in(lang), p.given_node);
   std::string out = fmt::format(
       "<section class=\"problem\" id=\"p-{}\">\n<h2>{} {}</h2>\n<p class=\"text\">{}</p>\n",
       html_escape(p.id), html_escape(say(Say::Problem, lang)), number, html_escape(text));

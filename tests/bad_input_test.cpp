@@ -193,9 +193,9 @@ TEST(BadInput, AnswerFilesGiveTheirMessageAndTheRestGrades) {
       }();
       if (const AnswerGrade* a = find_answer(r, parts[0])) {
         EXPECT_EQ(to_string(a->verdict), parts[1]) << parts[0];
-        EXPECT_TRUE(contains(a->feedback, parts[2]))
+        EXPECT_TRUE(contains(a->feedback.en(), parts[2]))
             << parts[0] << " feedback '" << a->feedback << "' lacks '" << parts[2] << "'";
-        EXPECT_LT(a->feedback.size(), 1000u) << "the message quotes a bounded excerpt";
+        EXPECT_LT(a->feedback.en().size(), 1000u) << "the message quotes a bounded excerpt";
       } else {
         EXPECT_TRUE(std::any_of(r.errors.begin(), r.errors.end(),
                                 [&](const Diagnostic& d) { return matches(d, c.path, e); }))

@@ -630,10 +630,6 @@ TEST(Feedback, JapaneseFeedbackTranslatesVerdictsAndStepTitles) {
   const std::string en = render_grade_text(r, TextStyle{false, Lang::En});
   EXPECT_NE(en.find("incorrect"), std::string::npos);
   EXPECT_EQ(en.find("不正解"), std::string::npos);
-  EXPECT_EQ(tr("Normalize the view volume", Lang::Ja),
-            "視体積の正規化");  // the lecture says 視体積
-  EXPECT_EQ(tr("Clip against x ≤ 1", Lang::Ja), "クリップ: x ≤ 1");
-  EXPECT_EQ(tr("Something new", Lang::Ja), "Something new");
   const std::string md = render_feedback_markdown(r, Lang::Ja);
   EXPECT_NE(md.find("| 解答 | 判定 |"), std::string::npos) << md;
 }

@@ -84,7 +84,7 @@ std::vector<Replacement> replacements(const ProblemSpec& spec, const std::string
   }
   for (const Misconception& m : mistakes)
     if (const Value* v = m.answers.find(name); v && v->shape != Value::Shape::Null)
-      out.push_back({Made::Mistake, "the mistake " + m.name, *v});
+      out.push_back({Made::Mistake, "the mistake " + m.name.en(), *v});
   return out;
 }
 
@@ -179,22 +179,24 @@ TEST_P(CarriedCredit, NeverMoreThanAnInstructorGives) {
         const std::string at = kind.name + " #" + std::to_string(i) + " " + given + ": " + name +
                                " replaced by " + r.what;
         // A mistake that happens to give a copy or zero is judged as one.
-        const bool trivial =
-            r.made != Made::Mistake || replaced->misconception == "copied from the given" ||
-            replaced->misconception == "zero vector" || replaced->misconception == "zero matrix" ||
-            replaced->misconception == "identity matrix";
+        const bool trivial = r.made != Made::Mistake ||
+                             replaced->misconception.en() == "copied from the given" ||
+                             replaced->misconception.en() == "zero vector" ||
+                             replaced->misconception.en() == "zero matrix" ||
+                             replaced->misconception.en() == "identity matrix";
         for (const AnswerGrade& a : report.problems[0].answers) {
           const std::string here = at + "; " + a.name + " = " + a.got_text + " (" +
-                                   std::string(to_string(a.verdict)) + "): " + a.feedback;
+                                   std::string(to_string(a.verdict)) + "): " + a.feedback.en();
           // Never partial with full points, never more than the points.
           EXPECT_LE(a.score, a.max_score + 1e-12) << here;
           if (a.verdict == Verdict::Partial) {
             EXPECT_LT(a.score, a.max_score - 1e-12) << here;
           }
           // Never both copied and following, and carried credit said at most once.
-          EXPECT_FALSE(a.misconception == "copied from the given" && a.carried_forward) << here;
-          EXPECT_LE(times_said(a.feedback, "follows correctly"), 1u) << here;
-          EXPECT_EQ(a.carried_forward, says(a.feedback, "follows correctly")) << here;
+          EXPECT_FALSE(a.misconception.en() == "copied from the given" && a.carried_forward)
+              << here;
+          EXPECT_LE(times_said(a.feedback.en(), "follows correctly"), 1u) << here;
+          EXPECT_EQ(a.carried_forward, says(a.feedback.en(), "follows correctly")) << here;
           if (a.verdict == Verdict::Correct) continue;
           if (a.name == name) {
             // The replaced answer itself follows from nothing; a copy or zero earns nothing (a

@@ -47,7 +47,7 @@ TEST(GraderCredit, ErrorCarriedForwardFromAWrongNormal) {
   EXPECT_EQ(plane.verdict, Verdict::Partial);
   EXPECT_TRUE(plane.carried_forward);
   EXPECT_DOUBLE_EQ(plane.score, kEcfCreditDefault);
-  EXPECT_NE(plane.feedback.find("earlier"), std::string::npos) << plane.feedback;
+  EXPECT_NE(plane.feedback.en().find("earlier"), std::string::npos) << plane.feedback;
   const AnswerGrade& z = answer(r, "z");
   EXPECT_EQ(z.verdict, Verdict::Partial);
   EXPECT_TRUE(z.carried_forward);
@@ -83,9 +83,9 @@ TEST(GraderCredit, ReversedCrossProductIsNamedWithItsStep) {
   const GradeReport r = grade_text(kDepth, "answers:\n  z: {normal: [-1, -1, 1]}\n");
   const AnswerGrade& n = answer(r, "normal");
   EXPECT_EQ(n.verdict, Verdict::Incorrect);
-  EXPECT_EQ(n.misconception, "reversed cross product");
-  EXPECT_EQ(n.wrong_step, "Normal");
-  EXPECT_NE(n.feedback.find("left-handed"), std::string::npos) << n.feedback;
+  EXPECT_EQ(n.misconception.en(), "reversed cross product");
+  EXPECT_EQ(n.wrong_step.en(), "Normal");
+  EXPECT_NE(n.feedback.en().find("left-handed"), std::string::npos) << n.feedback;
   const std::string json = render_grade_json(r).dump();
   EXPECT_NE(json.find("\"misconception\":\"reversed cross product\""), std::string::npos);
 }
@@ -109,7 +109,7 @@ TEST(GraderCredit, ProjectionMistakesAreDiagnosed) {
   // name.
   const std::vector<Misconception> mistakes = kind->misconceptions(s.problems[0].given);
   std::vector<std::string> names;
-  for (const Misconception& m : mistakes) names.push_back(m.name);
+  for (const Misconception& m : mistakes) names.push_back(m.name.en());
   for (const char* expected :
        {"missing perspective divide", "degrees taken as radians", "fovx for fovy", "near/far sign"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
@@ -138,7 +138,7 @@ TEST(GraderCredit, CompositionInTheWrongOrder) {
   // Translate then rotate: M = R·T. A₁·A₂ = T·R is the wrong order.
   const GradeReport r =
       grade_text(set, "answers:\n  t: {matrix: [[0, -1, 2], [1, 0, 0], [0, 0, 1]]}\n");
-  EXPECT_EQ(answer(r, "matrix", "t").misconception, "composition in the wrong order");
+  EXPECT_EQ(answer(r, "matrix", "t").misconception.en(), "composition in the wrong order");
   const GradeReport ok =
       grade_text(set, "answers:\n  t: {matrix: [[0, -1, 0], [1, 0, 2], [0, 0, 1]]}\n");
   EXPECT_EQ(answer(ok, "matrix", "t").verdict, Verdict::Correct);

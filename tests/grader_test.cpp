@@ -81,19 +81,19 @@ TEST(Grader, ReversedNormalIsIncorrectWithFeedback) {
       grade_answers("answers:\n  zbuf-pixel: {normal: [-9, -9, 9], unit_normal: [9, 9, -9]}\n");
   const AnswerGrade& n = answer(r, "zbuf-pixel", "normal");
   EXPECT_EQ(n.verdict, Verdict::Incorrect);
-  EXPECT_NE(n.feedback.find("opposite"), std::string::npos);
+  EXPECT_NE(n.feedback.en().find("opposite"), std::string::npos);
   const AnswerGrade& u = answer(r, "zbuf-pixel", "unit_normal");
   EXPECT_EQ(u.verdict, Verdict::Incorrect);
   // Its own length, 9√3 ≈ 15.59 (not a ratio between rescaled vectors), and the mistake named.
-  EXPECT_NE(u.feedback.find("the length is 15.59"), std::string::npos) << u.feedback;
-  EXPECT_EQ(u.misconception, "unnormalised normal") << "n itself: the kind's own mistake";
+  EXPECT_NE(u.feedback.en().find("the length is 15.59"), std::string::npos) << u.feedback;
+  EXPECT_EQ(u.misconception.en(), "unnormalised normal") << "n itself: the kind's own mistake";
   // Every positive multiple is told its own length: 1/10 of the unit normal has length 0.1.
   const AnswerGrade tenth =
       answer(grade_answers("answers:\n  zbuf-pixel: {unit_normal: [\"sqrt(3)/30\", \"sqrt(3)/30\", "
                            "\"-sqrt(3)/30\"]}\n"),
              "zbuf-pixel", "unit_normal");
-  EXPECT_NE(tenth.feedback.find("the length is 0.1 "), std::string::npos) << tenth.feedback;
-  EXPECT_EQ(tenth.misconception, "not normalised");
+  EXPECT_NE(tenth.feedback.en().find("the length is 0.1 "), std::string::npos) << tenth.feedback;
+  EXPECT_EQ(tenth.misconception.en(), "not normalised");
 }
 
 TEST(Grader, ToleranceIsRelativeOneInAThousand) {
@@ -119,7 +119,7 @@ TEST(Grader, UnparseableAnswersNeverStopTheRest) {
   EXPECT_EQ(answer(r, "zbuf-pixel", "plane").verdict, Verdict::Unparseable);
   const AnswerGrade& z = answer(r, "zbuf-pixel", "z");
   EXPECT_EQ(z.verdict, Verdict::Unparseable);
-  EXPECT_NE(z.feedback.find("exponent"), std::string::npos);
+  EXPECT_NE(z.feedback.en().find("exponent"), std::string::npos);
   EXPECT_EQ(answer(r, "bf", "df").verdict, Verdict::Correct);
   EXPECT_EQ(answer(r, "bf", "facing").verdict, Verdict::Unparseable);
   EXPECT_DOUBLE_EQ(r.score, 1);

@@ -242,7 +242,7 @@ TEST(Handedness, GraderAcceptsTheCoursesOwnFormAndNamesTheRightHandedOne) {
       if (a.verdict == Verdict::Missing) continue;
       EXPECT_NE(a.verdict, Verdict::Correct) << p.id << "." << a.name;
       if (p.id == "lh-perspective") {
-        EXPECT_EQ(a.misconception, "right-handed matrix");
+        EXPECT_EQ(a.misconception.en(), "right-handed matrix");
       }
     }
 }

@@ -17,6 +17,7 @@
 #include "report/report.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/problem/conventions_note.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
@@ -197,7 +198,7 @@ TEST(Language, ReadingErrorsAreInTheStudentsLanguage) {
       for (const YAML::Node& input : inputs) {
         const ParsedAnswer p = parse_answer(input, answer, AngleUnit::Degrees);
         if (!p.ok && !p.error.empty())
-          errors.emplace(std::array{p.error, tr(p.error, Lang::Ja), tr(p.error, Lang::Ru)},
+          errors.emplace(std::array{p.error.en(), p.error.in(Lang::Ja), p.error.in(Lang::Ru)},
                          kind.name + "." + answer.name + " ← " + YAML::Dump(input));
       }
   EXPECT_GT(errors.size(), 60u);
@@ -267,9 +268,10 @@ TEST(Language, BooleanKeyIsPrintedInTheStudentsLanguageAndAcceptedBack) {
   const std::string id = "seed001-pixel-z";
   for (const Lang lang : {Lang::Ja, Lang::Ru}) {
     YAML::Node wrong;
-    wrong[id]["inside"] = tr("false", lang);
+    wrong[id]["inside"] = std::string(words::kFalse.in(lang));
     const GradeReport r = test::grade_answers(set, solved, wrong);
-    const std::string expected = tr("Expected", lang) + ": " + tr("true", lang);
+    // The key as the text report says it.
+    const std::string expected = lang == Lang::Ja ? "正解: 真" : "Верный ответ: истина";
     EXPECT_NE(render_grade_text(r, TextStyle{false, lang}).find(expected), std::string::npos)
         << render_grade_text(r, TextStyle{false, lang});
     const ProblemGrade* p = nullptr;
@@ -277,11 +279,11 @@ TEST(Language, BooleanKeyIsPrintedInTheStudentsLanguageAndAcceptedBack) {
       if (g.id == id) p = &g;
     ASSERT_NE(p, nullptr);
     const std::string md = render_problem_feedback_markdown(*p, lang);
-    EXPECT_NE(md.find("| " + tr("true", lang) + " |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| " + std::string(words::kTrue.in(lang)) + " |"), std::string::npos) << md;
     EXPECT_EQ(md.find("| true |"), std::string::npos) << md;
     // The key's own word, written back by the student, is correct.
     YAML::Node right;
-    right[id]["inside"] = tr("true", lang);
+    right[id]["inside"] = std::string(words::kTrue.in(lang));
     const GradeReport ok = test::grade_answers(set, solved, right);
     for (const ProblemGrade& g : ok.problems) {
       if (g.id != id) continue;
@@ -320,8 +322,8 @@ TEST(Language, NoEnglishProblemTextReachesAJapaneseOrRussianStudent) {
 TEST(Language, KindSummariesAreTranslated) {
   for (const KindInfo& kind : builtin_kinds().all())
     for (const Lang lang : {Lang::Ja, Lang::Ru})
-      EXPECT_EQ(english_words(tr(kind.summary, lang)), std::vector<std::string>{})
-          << kind.name << " " << to_string(lang) << ": " << tr(kind.summary, lang);
+      EXPECT_EQ(english_words(kind.summary.in(lang)), std::vector<std::string>{})
+          << kind.name << " " << to_string(lang) << ": " << kind.summary.in(lang);
 }
 
 }  // namespace

@@ -103,7 +103,7 @@ TEST(Seed004, ModelViewProjectionChainIsOneProblem) {
   // A₁·A₂: (1, 0, 0) → (11, 0, 0) → (0, 11, 0); view (−10, 11, −5); NDC (−2, 11/5, 61/99).
   const AnswerGrade wrong = grade_window("[-400, 960, \"80/99\"]");
   EXPECT_EQ(wrong.verdict, Verdict::Incorrect);
-  EXPECT_EQ(wrong.misconception, "composition in the wrong order");
+  EXPECT_EQ(wrong.misconception.en(), "composition in the wrong order");
 }
 
 // v′ = (P·V·M)·v equals projecting the moved point M·v: every generated problem with a model,
@@ -185,7 +185,7 @@ TEST(LectureExercises, CourseConventionForOrthoZPlanesIsHonoured) {
           .problems.at(0)
           .answers.at(0);
   EXPECT_NE(coordinates.verdict, Verdict::Correct);
-  EXPECT_EQ(coordinates.misconception, "z_min, z_max read as coordinates")
+  EXPECT_EQ(coordinates.misconception.en(), "z_min, z_max read as coordinates")
       << "the feedback says what the student did: +2/(f − n), not the planes' −n, −f";
 }
 
@@ -210,7 +210,7 @@ TEST(LectureExercises, TheLecturesOrthoMatrixIsTheKeyOfItsProblem) {
   EXPECT_EQ(grade_matrix("[0, 0, \"1/495\", \"-101/99\"]").verdict, Verdict::Correct);
   const AnswerGrade gl = grade_matrix("[0, 0, \"-1/495\", \"-101/99\"]");
   EXPECT_NE(gl.verdict, Verdict::Correct);
-  EXPECT_EQ(gl.misconception, "near, far read as distances");
+  EXPECT_EQ(gl.misconception.en(), "near, far read as distances");
 }
 
 // θ = 90°, aspect 2, n = 1: perspective() gives t = 1, r = 2. The form −l = r = n·tan(θ/2),
@@ -231,7 +231,7 @@ TEST(LectureExercises, TheAspectRatioOnTheTopIsNamedAndExplainedTruly) {
   const AnswerGrade on_top =
       grade_matrix("[[1, 0, 0, 0], [0, 0.5, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]");
   EXPECT_NE(on_top.verdict, Verdict::Correct);
-  EXPECT_EQ(on_top.misconception, "aspect ratio on the top");
+  EXPECT_EQ(on_top.misconception.en(), "aspect ratio on the top");
   const ProblemResult solved = test::solve_yaml(set);
   std::string notes;
   for (const Step& s : solved.derivation.steps()) notes += s.note.en();
@@ -312,7 +312,7 @@ TEST(LectureExercises, CourseConventionForHorizontalFovIsHonoured) {
   const AnswerGrade vertical =
       grade_matrix("[[0.5, 0, 0, 0], [0, 1, 0, 0], [0, 0, \"-11/9\", \"-20/9\"], [0, 0, -1, 0]]");
   EXPECT_NE(vertical.verdict, Verdict::Correct);
-  EXPECT_EQ(vertical.misconception, "fovy for fovx");
+  EXPECT_EQ(vertical.misconception.en(), "fovy for fovx");
 
   // Without the declaration `fov` is perspective()'s vertical angle; `fovx` names its axis
   // anywhere.

@@ -1,7 +1,7 @@
-// Phrases keyed in code (solver/derivation/said.hpp): a phrase is checked when it is compiled
+// Phrases keyed in code (solver/util/said.hpp): a phrase is checked when it is compiled
 // (both translations, the same slots), `say` fills each language's slots with each language's
 // words, and words that are data (answer categories) are found exactly or kept as written.
-#include "solver/derivation/said.hpp"
+#include "solver/util/said.hpp"
 
 #include <gtest/gtest.h>
 

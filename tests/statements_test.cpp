@@ -63,7 +63,8 @@ TEST(Seed003, CullingStatementsKeyIsOneTrueThreeFalse) {
   const AnswerGrade& half = graded(set, "[1, 3]");
   EXPECT_EQ(half.verdict, Verdict::Partial);
   EXPECT_NEAR(half.score, 2.0 / 3.0, 1e-12);
-  EXPECT_NE(half.feedback.find("Statement 3 is false, not true (see step 3)."), std::string::npos)
+  EXPECT_NE(half.feedback.en().find("Statement 3 is false, not true (see step 3)."),
+            std::string::npos)
       << half.feedback;
   // The wrong answer comes with the derivation that holds the reasons.
   ASSERT_FALSE(half.derivation.empty());
@@ -300,8 +301,8 @@ TEST(Statements, CreditPropertiesOverManyKeysAndAnswers) {
     }
     const StatementChoice by_number = read_statement_choice(numbers),
                           by_truth = read_statement_choice(truths);
-    ASSERT_EQ(by_number.error, "");
-    ASSERT_EQ(by_truth.error, "");
+    ASSERT_TRUE(by_number.error.empty()) << by_number.error;
+    ASSERT_TRUE(by_truth.error.empty()) << by_truth.error;
     const Comparison c = compare_statement_choice(key, by_number.value);
     const Comparison d = compare_statement_choice(key, by_truth.value);
     EXPECT_EQ(c.verdict, d.verdict);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,6 +19,12 @@
 #include "solver/problem/problem_set.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/util/exact_format.hpp"
+#include "solver/util/said.hpp"
+
+namespace frustum {
+// A student-facing text in a test's failure message: its English.
+inline std::ostream& operator<<(std::ostream& out, const Said& said) { return out << said.en(); }
+}  // namespace frustum
 
 namespace frustum::test {
 

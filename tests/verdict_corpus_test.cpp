@@ -105,7 +105,7 @@ TEST(VerdictCorpus, EveryCaseGetsTheInstructorsVerdict) {
         for (auto it = c["mistake"].begin(); c["mistake"] && it != c["mistake"].end(); ++it) {
           const AnswerGrade* a = graded(it->first.as<std::string>());
           ASSERT_NE(a, nullptr) << at;
-          EXPECT_EQ(a->misconception, it->second.as<std::string>())
+          EXPECT_EQ(a->misconception.en(), it->second.as<std::string>())
               << at << ": " << a->name << " (" << reason << ")";
         }
         // What the feedback says (a phrase it holds, one it must not hold: a form or a mistake
@@ -115,7 +115,7 @@ TEST(VerdictCorpus, EveryCaseGetsTheInstructorsVerdict) {
             const AnswerGrade* a = graded(it->first.as<std::string>());
             ASSERT_NE(a, nullptr) << at;
             const std::string text = it->second.as<std::string>();
-            const std::string& in = std::string(field) == "shown" ? a->got_text : a->feedback;
+            const std::string& in = std::string(field) == "shown" ? a->got_text : a->feedback.en();
             if (std::string(field) == "shown") {
               EXPECT_EQ(in, text) << at << ": " << a->name << " (" << reason << ")";
             } else {

@@ -932,7 +932,7 @@ TEST(ConventionsEveryKind, TransformMisconceptionsInTheProblemsConvention) {
     const ProblemSpec& spec = set.problems[0];
     std::map<std::string, MatX<Exact>> out;
     for (const Misconception& m : spec.info->misconceptions(spec.given))
-      out[m.name] = exact_matrix(*m.answers.find("matrix"));
+      out[m.name.en()] = exact_matrix(*m.answers.find("matrix"));
     return out;
   };
   const auto gl = mistakes(Api::OpenGL), dx = mistakes(Api::DirectX);

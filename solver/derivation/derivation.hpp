@@ -8,7 +8,7 @@
 
 #include "solver/derivation/i18n.hpp"
 #include "solver/derivation/math_text.hpp"
-#include "solver/derivation/said.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum {
 

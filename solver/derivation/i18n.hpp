@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "solver/derivation/math_text.hpp"
-#include "solver/derivation/said.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "solver/core/matrix.hpp"
-#include "solver/derivation/said.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum {
 

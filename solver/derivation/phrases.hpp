@@ -8,7 +8,7 @@
 #include <span>
 #include <string_view>
 
-#include "solver/derivation/said.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum {
 

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "solver/derivation/labels.hpp"
 #include "solver/derivation/line_breaks.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/derivation/svg.hpp"
@@ -141,12 +142,12 @@ std::string html_figure(const Figure& figure, Lang lang, bool with_key) {
   if (figure.svg.empty()) return {};
   const bool keyed = with_key && !figure.svg_with_key.empty();
   const std::string caption = !figure.student_answer ? ""
-                              : keyed
-                                  ? tr("Dashed red: your answer; green: the right answer.", lang)
-                                  : tr("Dashed red: your answer.", lang);
+                              : keyed ? labels::in(labels::kYourAnswerDashedWithKey, lang)
+                                      : labels::in(labels::kYourAnswerDashed, lang);
   return fmt::format(
       "<figure class=\"figure\"><img alt=\"{}\" src=\"data:image/svg+xml;base64,{}\">{}</figure>\n",
-      svg_escape(tr("Figure", lang)), base64(keyed ? figure.svg_with_key : figure.svg),
+      svg_escape(labels::in(labels::kFigure, lang)),
+      base64(keyed ? figure.svg_with_key : figure.svg),
       caption.empty() ? "" : "<figcaption>" + svg_escape(caption) + "</figcaption>");
 }
 
@@ -168,8 +169,8 @@ std::string render_html(const SetResult& set, Lang lang, const Figures* figures)
       "}}</style>\n{}</head>\n<body>\n<h1>{}</h1>\n",
       to_string(lang), svg_escape(title), html_math_head(), svg_escape(title));
   if (!set.source.empty())
-    out += fmt::format("<p class=\"source\">{}: {}</p>\n", svg_escape(tr("Source", lang)),
-                       svg_escape(set.source));
+    out += fmt::format("<p class=\"source\">{}: {}</p>\n",
+                       svg_escape(labels::in(labels::kSource, lang)), svg_escape(set.source));
   for (const Diagnostic& d : set.errors)
     out += fmt::format("<p class=\"error\">{}</p>\n", svg_escape(d.format()));
   for (const ProblemResult& p : set.problems) {
@@ -182,7 +183,8 @@ std::string render_html(const SetResult& set, Lang lang, const Figures* figures)
       continue;
     }
     out += html_steps(p.derivation.steps(), lang);
-    out += fmt::format("<table>\n<tr><th>{}</th><th></th></tr>\n", svg_escape(tr("Answers", lang)));
+    out += fmt::format("<table>\n<tr><th>{}</th><th></th></tr>\n",
+                       svg_escape(labels::in(labels::kAnswers, lang)));
     for (const std::string& name : p.ask)
       if (const Value* v = p.answers.find(name))
         out += fmt::format("<tr><td><code>{}</code></td><td>{}</td></tr>\n", svg_escape(name),

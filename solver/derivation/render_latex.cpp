@@ -4,6 +4,7 @@
 // provide.
 #include <fmt/format.h>
 
+#include "solver/derivation/labels.hpp"
 #include "solver/derivation/line_breaks.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/util/scripts.hpp"
@@ -33,8 +34,9 @@ std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
   for (const Step& s : steps) {
     const bool info = s.level == Step::Level::Info;
     out += info ? "\\item " : "\\item[\\textbullet] ";
-    out += (s.level == Step::Level::Warning ? "\\textbf{" + prose(tr("Warning", lang)) + ": "
-                                            : "\\textbf{") +
+    out += (s.level == Step::Level::Warning
+                ? "\\textbf{" + prose(labels::in(labels::kWarning, lang)) + ": "
+                : "\\textbf{") +
            prose(s.title.in(lang)) + "}\n";
     for (const MathText* m : {&s.formula, &s.substitution})
       if (!m->empty()) out += display(*m, lang);
@@ -57,9 +59,11 @@ std::string render_latex(const SetResult& set, Lang lang, const Figures* figures
   const std::string title = set.title.empty() ? set.file : set.title.in(lang);
   std::string out = "\\section*{" + prose(title) + "}\n";
   if (!set.source.empty())
-    out += "\\emph{" + prose(tr("Source", lang)) + ": " + prose(set.source) + "}\n\n";
+    out +=
+        "\\emph{" + prose(labels::in(labels::kSource, lang)) + ": " + prose(set.source) + "}\n\n";
   for (const Diagnostic& d : set.errors)
-    out += "\\textbf{" + prose(tr("error", lang)) + ":} \\texttt{" + prose(d.format()) + "}\n\n";
+    out += "\\textbf{" + prose(labels::in(labels::kErrorLower, lang)) + ":} \\texttt{" +
+           prose(d.format()) + "}\n\n";
   for (const ProblemResult& p : set.problems) {
     out += "\\subsection*{" + prose(p.id) + " \\normalfont(\\texttt{" + prose(p.kind) + "})}\n";
     if (!p.text.empty()) out += prose(p.text.in(lang)) + "\n\n";
@@ -68,12 +72,12 @@ std::string render_latex(const SetResult& set, Lang lang, const Figures* figures
       pictures = true;
     }
     if (p.error) {
-      out += "\\textbf{" + prose(tr("error", lang)) + ":} \\texttt{" + prose(p.error->format()) +
-             "}\n\n";
+      out += "\\textbf{" + prose(labels::in(labels::kErrorLower, lang)) + ":} \\texttt{" +
+             prose(p.error->format()) + "}\n\n";
       continue;
     }
     out += steps_latex(p.derivation.steps(), lang);
-    out += "\\paragraph{" + prose(tr("Answers", lang)) + "}\n";
+    out += "\\paragraph{" + prose(labels::in(labels::kAnswers, lang)) + "}\n";
     // Aligned when every answer fits a line; otherwise one breakable line each.
     bool fits = true;
     for (const std::string& name : p.ask)

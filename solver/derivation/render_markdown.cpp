@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include "solver/derivation/labels.hpp"
 #include "solver/derivation/render.hpp"
 
 namespace frustum {
@@ -10,7 +11,7 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang) {
   for (const Step& s : steps) {
     const std::string title = s.title.in(lang), note = s.note.in(lang);
     if (s.level == Step::Level::Warning)
-      out += fmt::format("> **{} — {}.** {}\n\n", tr("Warning", lang), title, note);
+      out += fmt::format("> **{} — {}.** {}\n\n", labels::in(labels::kWarning, lang), title, note);
     else if (s.level == Step::Level::Note)
       out += fmt::format("> **{}.** {}\n\n", title, note);
     else
@@ -26,10 +27,12 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang) {
 std::string render_problem_markdown(const ProblemResult& p, Lang lang) {
   std::string out = fmt::format("## {} (`{}`)\n\n", p.id, p.kind);
   if (!p.text.empty()) out += p.text.in(lang) + "\n\n";
-  if (p.error) return out + fmt::format("**{}:** `{}`\n\n", tr("Error", lang), p.error->format());
+  if (p.error)
+    return out +
+           fmt::format("**{}:** `{}`\n\n", labels::in(labels::kError, lang), p.error->format());
   out += render_steps_markdown(p.derivation.steps(), lang);
-  out += fmt::format("**{}**\n\n| {} | {} |\n| --- | --- |\n", tr("Answers", lang),
-                     tr("answer", lang), tr("value", lang));
+  out += fmt::format("**{}**\n\n| {} | {} |\n| --- | --- |\n", labels::in(labels::kAnswers, lang),
+                     labels::in(labels::kAnswer, lang), labels::in(labels::kValue, lang));
   for (const std::string& name : p.ask)
     if (const Value* v = p.answers.find(name))
       out += fmt::format("| `{}` | ${}$ |\n", name, tr(v->shown(), lang).latex);
@@ -38,9 +41,10 @@ std::string render_problem_markdown(const ProblemResult& p, Lang lang) {
 
 std::string render_markdown(const SetResult& set, Lang lang) {
   std::string out = fmt::format("# {}\n\n", set.title.empty() ? set.file : set.title.in(lang));
-  if (!set.source.empty()) out += fmt::format("*{}: {}*\n\n", tr("Source", lang), set.source);
+  if (!set.source.empty())
+    out += fmt::format("*{}: {}*\n\n", labels::in(labels::kSource, lang), set.source);
   for (const Diagnostic& d : set.errors)
-    out += fmt::format("**{}:** `{}`\n\n", tr("Error", lang), d.format());
+    out += fmt::format("**{}:** `{}`\n\n", labels::in(labels::kError, lang), d.format());
   for (const ProblemResult& p : set.problems) out += render_problem_markdown(p, lang);
   return out;
 }

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include "solver/derivation/labels.hpp"
 #include "solver/derivation/problem_result.hpp"
 #include "solver/derivation/render.hpp"
 
@@ -60,12 +61,12 @@ std::string render_problem_text(const ProblemResult& p, const TextStyle& style) 
   std::string out = fmt::format("{}━━ {} · {} ━━{}\n", a.bold(), p.id, p.kind, a.reset());
   if (!p.text.empty()) out += p.text.in(style.lang) + "\n";
   if (p.error) {
-    out += fmt::format("  {}{}:{} {}\n", a.red(), tr("error", style.lang), a.reset(),
-                       p.error->format());
+    out += fmt::format("  {}{}:{} {}\n", a.red(), labels::in(labels::kErrorLower, style.lang),
+                       a.reset(), p.error->format());
     return out;
   }
   out += render_steps_text(p.derivation.steps(), style);
-  out += fmt::format("  {}{}{}\n", a.bold(), tr("Answers", style.lang), a.reset());
+  out += fmt::format("  {}{}{}\n", a.bold(), labels::in(labels::kAnswers, style.lang), a.reset());
   for (const std::string& name : p.ask) {
     if (const Value* v = p.answers.find(name))
       out += fmt::format("    {} = {}\n", name, tr(v->shown(), style.lang).unicode);
@@ -78,7 +79,8 @@ std::string render_text(const SetResult& set, const TextStyle& style) {
   std::string out;
   if (!set.title.empty())
     out += fmt::format("{}{}{}\n", a.bold(), set.title.in(style.lang), a.reset());
-  if (!set.source.empty()) out += fmt::format("{}: {}\n", tr("Source", style.lang), set.source);
+  if (!set.source.empty())
+    out += fmt::format("{}: {}\n", labels::in(labels::kSource, style.lang), set.source);
   if (!set.title.empty() || !set.source.empty()) out += "\n";
   for (const Diagnostic& d : set.errors)
     out += fmt::format("{}error:{} {}\n", a.red(), a.reset(), d.format());

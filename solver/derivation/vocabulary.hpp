@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-#include "solver/derivation/said.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum::words {
 

@@ -8,8 +8,8 @@
 
 #include "solver/clipping/clip_box.hpp"
 #include "solver/derivation/math_text.hpp"
-#include "solver/derivation/said.hpp"
 #include "solver/input/given_reader.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum::clip_given {
 

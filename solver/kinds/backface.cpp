@@ -74,6 +74,20 @@ constexpr Phrase kHandednessDecides{"The handedness decides the answer.",
                                     "答えは座標系の右手・左手で決まる.",
                                     "Ответ зависит от ориентации системы координат."};
 
+constexpr Phrase kViewVectorFromAnyVertex{
+    "the view vector from {0}: any vertex of the face gives the same D_f",
+    "{0} からの視線ベクトル: 面のどの頂点から取っても D_f は同じです",
+    "вектор взгляда от {0}: любая вершина грани даёт то же D_f"};
+constexpr Phrase kViewVectorReversed{"view vector reversed", "視線ベクトルの向きが逆",
+                                     "вектор взгляда развёрнут"};
+constexpr Phrase kViewVectorPointsToPolygon{
+    "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the polygon "
+    "to the eye, and that flips the sign of D_f.",
+    "あなたの視線ベクトルは視点から多角形へ向いています. v = p_eye − pᵢ "
+    "は多角形から視点へ向くベクトルで, 向きが逆だと D_f の符号が反転します.",
+    "Ваш вектор взгляда направлен от глаза к многоугольнику: v = p_eye − pᵢ направлен от "
+    "многоугольника к глазу, и это меняет знак D_f."};
+
 std::unique_ptr<NumericSolver> backface_numeric(const Polygon3<Exact>& points,
                                                 const Vec3<Exact>& eye, Precision p) {
   const double kappa = facing_condition(double_points(points), to_double(eye), p);
@@ -129,7 +143,9 @@ std::string subscript(std::size_t i) {
 
 struct Backface {
   static constexpr const char* kName = "backface";
-  static constexpr const char* kSummary = "is a polygon front- or back-facing from the eye";
+  static constexpr Phrase kSummary{
+      "is a polygon front- or back-facing from the eye", "多角形は視点から見て表か裏か",
+      "какой стороной, лицевой или нелицевой, многоугольник обращён к глазу"};
   static constexpr ConventionUse kUses{.api = false, .angles = false, .handedness = true};
   struct Given {
     Polygon3<Exact> points;
@@ -176,8 +192,7 @@ struct Backface {
     std::vector<AlsoRight> out;
     for (std::size_t i = 1; i < g.points.size(); ++i)
       out.push_back({"view", Value::vector(Vec3<Exact>(g.eye - g.points[i])),
-                     "the view vector from p" + subscript(i) +
-                         ": any vertex of the face gives the same D_f"});
+                     say(kViewVectorFromAnyVertex, "p" + subscript(i))});
     return out;
   }
 
@@ -196,22 +211,15 @@ struct Backface {
     reversed_v.set("view", Value::vector(Vec3<Exact>(-v)));
     reversed_v.set("df", Value::scalar(-df));
     reversed_v.set("facing", Value::category(facing_of(-df)));
-    std::vector<Misconception> out = {
-        {"reversed cross product",
-         g.left_handed
-             ? "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, "
-               "with the vertices counter-clockwise seen from the front, the front normal is "
-               "n = e₁ × e₀."
-             : "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the "
-               "front "
-               "normal is n = e₀ × e₁.",
-         g.left_handed ? "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)"
-                       : "Normal (n = e₀ × e₁, counter-clockwise = front)",
-         reversed_n},
-        {"view vector reversed",
-         "Your view vector points from the eye to the polygon: v = p_eye − pᵢ points from the "
-         "polygon to the eye, and that flips the sign of D_f.",
-         "View vector from p₀ to the eye", reversed_v}};
+    // The reversed cross product as the normal's helper says it for a triangle (e₀ × e₁ of the
+    // first three vertices, whatever their number), with its consequences here.
+    std::vector<Misconception> out;
+    if (auto m = reversed_normal_mistake(n, 3, g.left_handed, std::nullopt)) {
+      m->answers = reversed_n;
+      out.push_back(std::move(*m));
+    }
+    out.push_back(
+        {say(kViewVectorReversed), say(kViewVectorPointsToPolygon), say(kViewVector), reversed_v});
     // Reversed from any other vertex: the same mistake.
     for (std::size_t i = 1; i < g.points.size(); ++i) {
       Misconception m = out.back();

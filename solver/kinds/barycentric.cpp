@@ -42,8 +42,11 @@ constexpr Phrase kDepthByInterpolation{"Depth by barycentric interpolation",
 
 struct Barycentric {
   static constexpr const char* kName = "barycentric";
-  static constexpr const char* kSummary =
-      "barycentric coordinates of a pixel in a projected triangle, and its interpolated z";
+  static constexpr Phrase kSummary{
+      "barycentric coordinates of a pixel in a projected triangle, and its interpolated z",
+      "投影された三角形での画素の重心座標と, 補間した z 値",
+      "барицентрические координаты пикселя в спроецированном треугольнике и интерполированное "
+      "значение z"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::array<Vec3<Exact>, 3> triangle;

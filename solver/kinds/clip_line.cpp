@@ -108,8 +108,10 @@ Said code_meaning(unsigned code) {
 
 struct ClipLine {
   static constexpr const char* kName = "clip_line";
-  static constexpr const char* kSummary =
-      "Cohen–Sutherland outcodes and clipping of a segment (2D or 3D)";
+  static constexpr Phrase kSummary{
+      "Cohen–Sutherland outcodes and clipping of a segment (2D or 3D)",
+      "Cohen–Sutherland のアルゴリズムによる線分の領域コードとクリッピング (2次元または3次元)",
+      "коды областей Коэна — Сазерленда (Cohen–Sutherland) и отсечение отрезка (2D или 3D)"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::vector<Exact> p, q;

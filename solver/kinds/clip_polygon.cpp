@@ -61,8 +61,12 @@ Said stage_plane(std::size_t k) {
 
 struct ClipPolygon {
   static constexpr const char* kName = "clip_polygon";
-  static constexpr const char* kSummary =
-      "Sutherland–Hodgman clipping of a polygon (2D window or 3D volume)";
+  static constexpr Phrase kSummary{
+      "Sutherland–Hodgman clipping of a polygon (2D window or 3D volume)",
+      "Sutherland–Hodgman のアルゴリズムによる多角形のクリッピング "
+      "(2次元のウィンドウまたは3次元の視体積)",
+      "отсечение многоугольника алгоритмом Сазерленда — Ходжмана (Sutherland–Hodgman): окном 2D "
+      "или объёмом 3D"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr std::size_t kMaxVertices = 1000;
   struct Given {

@@ -88,6 +88,22 @@ constexpr Phrase kComputedInFloatingPoint{
     "で求める方がよい.",
     "При вычислении в плавающей точке остаётся меньше половины цифр, поэтому z лучше найти "
     "барицентрической интерполяцией z = Σ λᵢ zᵢ."};
+constexpr Phrase kFrontNormalHereIs{
+    "The projection coordinates are left-handed, so the front normal here is {0}.",
+    "投影座標系は左手系なので, ここでの表向きの法線は {0} です.",
+    "Координаты проекции — левая система, поэтому лицевая нормаль здесь {0}."};
+constexpr Phrase kUnnormalisedNormal{"unnormalised normal", "法線を正規化していない",
+                                     "ненормированная нормаль"};
+constexpr Phrase kThatIsNItself{
+    "That is n itself: a unit normal is n divided by its length ‖n‖.",
+    "それは n そのものです. 単位法線は n をその長さ ‖n‖ で割ったものです.",
+    "Это сама n: единичная нормаль — это n, делённая на свою длину ‖n‖."};
+constexpr Phrase kPlaneThroughTheOrigin{"plane through the origin", "原点を通る平面",
+                                        "плоскость через начало координат"};
+constexpr Phrase kPlanePassesThroughOrigin{
+    "Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
+    "あなたの平面は原点を通っています. n·(p − A) = 0 から d = n·A であり, 0 ではありません.",
+    "Ваша плоскость проходит через начало координат: из n·(p − A) = 0 следует d = n·A, а не 0."};
 
 // The decisions (edge-on, the pixel's edge signs) are geometry's edge_on_sign and pixel_sides,
 // shared by the exact solve, the numeric path and the barycentric kind.
@@ -180,8 +196,10 @@ std::unique_ptr<NumericSolver> depth_at_pixel_numeric(const std::array<Vec3<Exac
 
 struct DepthAtPixel {
   static constexpr const char* kName = "depth_at_pixel";
-  static constexpr const char* kSummary =
-      "z of a pixel inside a projected triangle by the plane method";
+  static constexpr Phrase kSummary{
+      "z of a pixel inside a projected triangle by the plane method",
+      "平面の方程式による, 投影された三角形の内部の画素の z 値",
+      "значение z пикселя внутри спроецированного треугольника методом уравнения плоскости"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::array<Vec3<Exact>, 3> triangle;
@@ -256,16 +274,13 @@ struct DepthAtPixel {
     Answers reversed;
     reversed.set("normal", Value::vector(Vec3<Exact>(-n)));
     reversed.set("unit_normal", Value::vector(unit(Vec3<Exact>(-n))));
-    out.push_back({"reversed cross product",
-                   "You took " + g.order.second + " × " + g.order.first +
-                       ". The projection coordinates are "
-                       "left-handed, so the front normal here is " +
-                       g.order.first + " × " + g.order.second + ".",
-                   "Normal", reversed});
+    out.push_back({say(kind_words::kReversedCrossProduct),
+                   say(kind_words::kYouTook, g.order.second + " × " + g.order.first) +
+                       say(kFrontNormalHereIs, g.order.first + " × " + g.order.second),
+                   say(kind_words::kNormalTitle), reversed});
     Answers unnormalized;
     unnormalized.set("unit_normal", Value::vector(n));
-    out.push_back({"unnormalised normal",
-                   "That is n itself: a unit normal is n divided by its length ‖n‖.", "Unit normal",
+    out.push_back({say(kUnnormalisedNormal), say(kThatIsNItself), say(kind_words::kUnitNormalTitle),
                    unnormalized});
     const Vec3<Exact> u = unit(n);
     Answers origin;
@@ -273,11 +288,10 @@ struct DepthAtPixel {
     origin.set("plane", plane_answer(p0));
     if (const auto z = z_on(g, std::vector<Exact>(p0.begin(), p0.end())))
       origin.set("z", Value::scalar(*z));
-    out.push_back({"plane through the origin",
-                   "Your plane passes through the origin: n·(p − A) = 0 gives d = n·A, not 0.",
-                   "Plane through A with normal n̂", origin});
-    if (auto m = constant_sign_mistake(u, canonical_dot(u, g.triangle[0]), "A",
-                                       "Plane through A with normal n̂")) {
+    out.push_back(
+        {say(kPlaneThroughTheOrigin), say(kPlanePassesThroughOrigin), say(kPlaneThroughA), origin});
+    if (auto m =
+            constant_sign_mistake(u, canonical_dot(u, g.triangle[0]), "A", say(kPlaneThroughA))) {
       const Value* plane = m->answers.find("plane");
       if (const auto z = z_on(g, plane->exact)) m->answers.set("z", Value::scalar(*z));
       out.push_back(std::move(*m));

@@ -176,8 +176,10 @@ Said conflict(const PairReport& p) {
 
 struct DepthSort {
   static constexpr const char* kName = "depth_sort";
-  static constexpr const char* kSummary =
-      "painter's algorithm: centroid order back to front, and its conflicts";
+  static constexpr Phrase kSummary{
+      "painter's algorithm: centroid order back to front, and its conflicts",
+      "奥行きソート法: 奥から手前への重心の順序と, その矛盾",
+      "алгоритм художника: порядок центров тяжести от дальних к ближним и его конфликты"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::vector<Polygon3<Exact>> polygons;

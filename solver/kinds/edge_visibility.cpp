@@ -178,8 +178,10 @@ const Phrase& facing_phrase(Facing f) {
 
 struct EdgeVisibility {
   static constexpr const char* kName = "edge_visibility";
-  static constexpr const char* kSummary =
-      "front/back faces and visible, silhouette and hidden edges of a polyhedron";
+  static constexpr Phrase kSummary{
+      "front/back faces and visible, silhouette and hidden edges of a polyhedron",
+      "多面体の表/裏の面と, 見える稜線, 輪郭線, 隠れる稜線",
+      "лицевые и нелицевые грани многогранника, его видимые, контурные и невидимые рёбра"};
   static constexpr ConventionUse kUses{.api = false, .angles = true, .handedness = true};
   struct Given {
     Mesh mesh;

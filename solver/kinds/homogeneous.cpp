@@ -22,6 +22,33 @@ constexpr Phrase kTheSamePointWord{"the same point", "同じ点", "та же т�
 constexpr Phrase kWrittenWithW{"With W = {0} the point {1} is written {2}.",
                                "W = {0} とすると, 点 {1} は {2} と表される.",
                                "При W = {0} точка {1} записывается как {2}."};
+constexpr Phrase kWAppended{"w appended, coordinates not multiplied",
+                            "w を付け加えただけで座標に掛けていない",
+                            "w дописан, координаты не умножены"};
+constexpr Phrase kEveryCoordinateMultiplied{
+    "Every coordinate is multiplied by w, not only the last one added: (x, y) with weight w is "
+    "(w·x, w·y, w).",
+    "追加した成分だけでなく, すべての座標に w を掛けます: 重み w の (x, y) は (w·x, w·y, w) です.",
+    "На w умножается каждая координата, а не только дописывается последняя: точка (x, y) с "
+    "весом w — это (w·x, w·y, w)."};
+constexpr Phrase kWLeftAt1{"coordinates multiplied, w left at 1",
+                           "座標に w を掛けたが最後の成分を 1 のままにした",
+                           "координаты умножены, w оставлен равным 1"};
+constexpr Phrase kLastCoordinateIsW{
+    "The last coordinate is w itself: after multiplying x and y by w, write w, not 1.",
+    "最後の成分は w そのものです: x と y に w を掛けたら, 最後は 1 ではなく w と書きます.",
+    "Последняя координата — само w: умножив x и y на w, пишите w, а не 1."};
+constexpr Phrase kMultipliedByW{"multiplied by W instead of dividing", "W で割らずに掛けた",
+                                "умножено на W вместо деления"};
+constexpr Phrase kDivideByW{"From (X, Y, W) the point is (X/W, Y/W): divide by W.",
+                            "(X, Y, W) が表す点は (X/W, Y/W) です: W で割ります.",
+                            "Кортеж (X, Y, W) задаёт точку (X/W, Y/W): делите на W."};
+constexpr Phrase kWDropped{"W dropped without dividing", "W で割らずに W を取り除いた",
+                           "W отброшен без деления"};
+constexpr Phrase kDroppingWOnlyWhenOne{
+    "Dropping W gives the point only when W = 1; otherwise divide X and Y by W.",
+    "W を取り除くだけで点になるのは W = 1 のときだけです. それ以外は X と Y を W で割ります.",
+    "Отбросить W можно только при W = 1; иначе делите X и Y на W."};
 
 // The names written in the formulas: x, y[, z] and X, Y[, Z], W.
 MathText coordinates(std::size_t dim, bool upper, bool with_w) {
@@ -47,7 +74,9 @@ MathText scaled_names(std::size_t dim) {
 
 struct Homogeneous {
   static constexpr const char* kName = "homogeneous";
-  static constexpr const char* kSummary = "a point in homogeneous coordinates and back";
+  static constexpr Phrase kSummary{"a point in homogeneous coordinates and back",
+                                   "点の同次座標表現と通常座標への変換",
+                                   "точка в однородных координатах и обратно"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     std::vector<Exact> point;                     // Cartesian, 2 or 3 coordinates
@@ -96,14 +125,9 @@ struct Homogeneous {
       Answers a, b;
       a.set("homogeneous", Value::vector(appended));
       b.set("homogeneous", Value::vector(unit_w));
-      out.push_back({"w appended, coordinates not multiplied",
-                     "Every coordinate is multiplied by w, not only the last one added: "
-                     "(x, y) with weight w is (w·x, w·y, w).",
-                     "Homogeneous coordinates of the point", a});
-      out.push_back({"coordinates multiplied, w left at 1",
-                     "The last coordinate is w itself: after multiplying x and y by w, write w, "
-                     "not 1.",
-                     "Homogeneous coordinates of the point", b});
+      out.push_back(
+          {say(kWAppended), say(kEveryCoordinateMultiplied), say(kHomogeneousCoordinates), a});
+      out.push_back({say(kWLeftAt1), say(kLastCoordinateIsW), say(kHomogeneousCoordinates), b});
     }
     if (g.candidate && exact_sign(g.candidate->back() - 1) != 0 &&
         exact_sign(g.candidate->back() + 1) != 0) {
@@ -118,12 +142,8 @@ struct Homogeneous {
       a.set("same_point", Value::boolean(same_point(g.point, times)));
       b.set("cartesian", Value::vector(dropped));
       b.set("same_point", Value::boolean(same_point(g.point, dropped)));
-      out.push_back({"multiplied by W instead of dividing",
-                     "From (X, Y, W) the point is (X/W, Y/W): divide by W.", "Back to the point",
-                     a});
-      out.push_back({"W dropped without dividing",
-                     "Dropping W gives the point only when W = 1; otherwise divide X and Y by W.",
-                     "Back to the point", b});
+      out.push_back({say(kMultipliedByW), say(kDivideByW), say(kBackToThePoint), a});
+      out.push_back({say(kWDropped), say(kDroppingWOnlyWhenOne), say(kBackToThePoint), b});
     }
     return out;
   }

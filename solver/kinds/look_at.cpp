@@ -15,9 +15,35 @@ namespace {
 constexpr Phrase kAPointInViewCoordinates{"A point in view coordinates", "視点座標系での点",
                                           "Точка в координатах вида"};
 
+constexpr Phrase kReversedLookAtBasis{"reversed look-at basis", "カメラ基底の向きの反転",
+                                      "развёрнутый базис камеры"};
+constexpr Phrase kZAwayFromSceneDirectX{
+    "Your camera's z axis points away from the scene: DirectX's camera looks down +z, so z = "
+    "(center − eye)/‖center − eye‖ and x = up × z.",
+    "あなたのカメラの z 軸はシーンと反対を向いています. DirectX のカメラは +z 方向を見るので, z = "
+    "(center − eye)/‖center − eye‖, x = up × z です.",
+    "Ось z вашей камеры направлена от сцены: камера DirectX смотрит вдоль +z, поэтому z = (center "
+    "− eye)/‖center − eye‖ и x = up × z."};
+constexpr Phrase kZAwayFromSceneLeftHanded{
+    "Your camera's z axis points away from the scene: in left-handed coordinates the camera looks "
+    "down +z, so z = (center − eye)/‖center − eye‖ and x = up × z.",
+    "あなたのカメラの z 軸はシーンと反対を向いています. 左手系の座標ではカメラは +z "
+    "方向を見るので, z = (center − eye)/‖center − eye‖, x = up × z です.",
+    "Ось z вашей камеры направлена от сцены: в левой системе координат камера смотрит вдоль +z, "
+    "поэтому z = (center − eye)/‖center − eye‖ и x = up × z."};
+constexpr Phrase kZAtTheScene{
+    "Your camera's z axis points at the scene: the camera looks down −z, so z = (eye − "
+    "center)/‖eye − center‖ and x = up × z.",
+    "あなたのカメラの z 軸はシーンの方を向いています. カメラは −z 方向を見るので, z = (eye − "
+    "center)/‖eye − center‖, x = up × z です.",
+    "Ось z вашей камеры направлена на сцену: камера смотрит вдоль −z, поэтому z = (eye − "
+    "center)/‖eye − center‖ и x = up × z."};
+
 struct LookAt {
   static constexpr const char* kName = "look_at";
-  static constexpr const char* kSummary = "the view matrix of a camera at eye looking at center";
+  static constexpr Phrase kSummary{"the view matrix of a camera at eye looking at center",
+                                   "eye から center を見るカメラのビュー変換行列",
+                                   "матрица вида камеры в точке eye, смотрящей на center"};
   static constexpr ConventionUse kUses{.api = true, .angles = false};
   struct Given {
     Vec3<Exact> eye, center, up;
@@ -69,18 +95,11 @@ struct LookAt {
                     canonical(2 * g.eye(2) - g.center(2)));
     try {
       const bool plus_z = g.api == Api::DirectX || g.left_handed;
-      return {{"reversed look-at basis",
-               g.api == Api::DirectX ? "Your camera's z axis points away from the scene: DirectX's "
-                                       "camera looks down +z, so "
-                                       "z = (center − eye)/‖center − eye‖ and x = up × z."
-               : g.left_handed
-                   ? "Your camera's z axis points away from the scene: in left-handed coordinates "
-                     "the camera "
-                     "looks down +z, so z = (center − eye)/‖center − eye‖ and x = up × z."
-                   : "Your camera's z axis points at the scene: the camera looks down −z, so "
-                     "z = (eye − center)/‖eye − center‖ and x = up × z.",
-               plus_z ? "Camera axes (left-handed, looking down +z)"
-                      : "Camera axes (right-handed, looking down −z)",
+      return {{say(kReversedLookAtBasis),
+               say(g.api == Api::DirectX ? kZAwayFromSceneDirectX
+                   : g.left_handed       ? kZAwayFromSceneLeftHanded
+                                         : kZAtTheScene),
+               say(plus_z ? kCameraAxesLeftHanded : kCameraAxesRightHanded),
                solve(reversed, nullptr)}};
     } catch (const std::exception&) {
       return {};

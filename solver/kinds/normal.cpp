@@ -88,7 +88,9 @@ std::unique_ptr<NumericSolver> normal_numeric(const Polygon3<Exact>& points,
 
 struct Normal {
   static constexpr const char* kName = "normal";
-  static constexpr const char* kSummary = "the normal and unit normal of a polygon";
+  static constexpr Phrase kSummary{"the normal and unit normal of a polygon",
+                                   "多角形の法線ベクトルと単位法線ベクトル",
+                                   "нормаль и единичная нормаль многоугольника"};
   static constexpr ConventionUse kUses{.api = false, .angles = false, .handedness = true};
   struct Given {
     Polygon3<Exact> points;           // when given as a polygon

@@ -82,8 +82,9 @@ std::unique_ptr<NumericSolver> plane_numeric(const Polygon3<Exact>& points,
 
 struct Plane {
   static constexpr const char* kName = "plane";
-  static constexpr const char* kSummary =
-      "the plane through points, or through a point with a normal";
+  static constexpr Phrase kSummary{"the plane through points, or through a point with a normal",
+                                   "点を通る平面, または 1 点と法線ベクトルで決まる平面",
+                                   "плоскость через точки или через точку с заданной нормалью"};
   static constexpr ConventionUse kUses{.api = false, .angles = false, .handedness = true};
   struct Given {
     Polygon3<Exact> points;  // empty when point + normal
@@ -154,8 +155,7 @@ struct Plane {
         g.points.empty() ? g.normal
                          : polygon_normal_with_steps(g.points, "points", nullptr, g.left_handed);
     std::vector<Misconception> out;
-    if (auto m =
-            constant_sign_mistake(n, canonical_dot(n, p0), "p₀", "Plane through p₀ with normal n"))
+    if (auto m = constant_sign_mistake(n, canonical_dot(n, p0), "p₀", say(kPlaneThroughP0)))
       out.push_back(std::move(*m));
     // The normal's side, when the problem has it computed by a cross product (not given).
     if (!g.points.empty())

@@ -105,6 +105,12 @@ constexpr Phrase kYesPointVisible{"yes: the point is visible", "はい: 点は�
                                   "да: точка видна"};
 constexpr Phrase kNoClippingRemovesIt{"no: clipping removes it", "いいえ: クリッピングで除かれる",
                                       "нет: отсечение удаляет её"};
+constexpr Phrase kMissingPerspectiveDivide{"missing perspective divide",
+                                           "透視除算 (w による除算) の忘れ",
+                                           "пропущено перспективное деление"};
+constexpr Phrase kSkippedDivideByW{"You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
+                                   "w による除算が抜けています. NDC = (x_c, y_c, z_c) / w_c です.",
+                                   "Вы пропустили деление на w: NDC = (x_c, y_c, z_c) / w_c."};
 
 // The inputs of project_point in scalar S (T, Ranged<T> for the decisions, Exact for their
 // fallback), and clip = P·V·M·p from them: one formula for all three.
@@ -293,7 +299,9 @@ std::unique_ptr<NumericSolver> project_point_numeric(
 
 struct ProjectPoint {
   static constexpr const char* kName = "project_point";
-  static constexpr const char* kSummary = "a point's clip, NDC and window coordinates";
+  static constexpr Phrase kSummary{"a point's clip, NDC and window coordinates",
+                                   "点のクリップ座標, NDC とウィンドウ座標",
+                                   "координаты точки в пространстве отсечения, в NDC и в окне"};
   struct Given {
     Vec3<Exact> point;
     std::vector<TransformStep> model;                  // empty: the point is in world coordinates
@@ -363,8 +371,7 @@ struct ProjectPoint {
 
   static std::vector<Misconception> misconceptions(const Given& g) {
     std::vector<Misconception> out;
-    auto variant = [&](const std::string& name, const std::string& feedback,
-                       const std::string& step, Given changed) {
+    auto variant = [&](const Said& name, const Said& feedback, const Said& step, Given changed) {
       try {
         out.push_back({name, feedback, step, solve(changed, nullptr)});
       } catch (const std::exception&) {
@@ -383,9 +390,8 @@ struct ProjectPoint {
         nodiv.set("window",
                   Value::vector(Vec3<Exact>(canonical(w(0)), canonical(w(1)), canonical(w(2)))));
         nodiv.set("inside", Value::boolean(ndc_inside(c, g.api)));
-        out.push_back({"missing perspective divide",
-                       "You skipped the divide by w: NDC = (x_c, y_c, z_c) / w_c.",
-                       "Perspective divide", nodiv});
+        out.push_back({say(kMissingPerspectiveDivide), say(kSkippedDivideByW),
+                       say(kPerspectiveDivide), nodiv});
       }
     } catch (const std::exception&) {
     }
@@ -393,13 +399,13 @@ struct ProjectPoint {
     if (g.model.size() >= 2) {
       Given changed = g;
       std::reverse(changed.model.begin(), changed.model.end());
-      variant("composition in the wrong order", wrong_order_feedback(g.api),
-              "Model matrix (first step applied first)", changed);
+      variant(say(kCompositionInTheWrongOrder), wrong_order_feedback(g.api), say(kModelMatrix),
+              changed);
     }
     for (const ProjectionMistake& m : projection_mistakes(g.projection)) {
       Given changed = g;
       changed.projection = m.projection;
-      variant(m.name, m.feedback, m.step.empty() ? "Clip coordinates" : m.step, changed);
+      variant(m.name, m.feedback, m.step.empty() ? say(kClipCoordinates) : m.step, changed);
     }
     return out;
   }

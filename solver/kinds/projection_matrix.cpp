@@ -10,7 +10,9 @@ namespace {
 
 struct ProjectionMatrix {
   static constexpr const char* kName = "projection_matrix";
-  static constexpr const char* kSummary = "the matrix of perspective(), frustum() or ortho()";
+  static constexpr Phrase kSummary{"the matrix of perspective(), frustum() or ortho()",
+                                   "perspective(), frustum() または ortho() の行列",
+                                   "матрица perspective(), frustum() или ortho()"};
   struct Given {
     ProjectionSpec projection;
     Api api;
@@ -32,11 +34,11 @@ struct ProjectionMatrix {
       try {
         Given changed = g;
         changed.projection = m.projection;
+        const bool ortho = g.projection.type == ProjectionSpec::Type::Ortho;
         out.push_back({m.name, m.feedback,
-                       m.step.empty() ? (g.projection.type == ProjectionSpec::Type::Ortho
-                                             ? "Orthographic projection matrix"
-                                             : "Perspective projection matrix")
-                                      : m.step,
+                       m.step.empty() ? say(ortho ? kOrthographicProjectionMatrix
+                                                  : kPerspectiveProjectionMatrix)
+                                      : Said(m.step),
                        solve(changed, nullptr)});
       } catch (const std::exception&) {
         // A mistake that leads to no volume (near = far) cannot be matched.

@@ -48,8 +48,9 @@ int looking_down(const Conventions& c) { return handedness_of(c) == Handedness::
 
 struct ProjectionPlane {
   static constexpr const char* kName = "projection_plane";
-  static constexpr const char* kSummary =
-      "where the projection plane lies and where a point lands on it";
+  static constexpr Phrase kSummary{"where the projection plane lies and where a point lands on it",
+                                   "投影面の位置と, その上に点が写る位置",
+                                   "где лежит плоскость проекции и куда на неё попадает точка"};
   struct Given {
     Exact width, height, fov;
     Vec3<Exact> point;

@@ -116,8 +116,10 @@ constexpr Phrase kDepthTestExact{
 
 struct Render {
   static constexpr const char* kName = "render";
-  static constexpr const char* kSummary =
-      "colour and depth of queried pixels of a rendered scene (z-buffer trace)";
+  static constexpr Phrase kSummary{
+      "colour and depth of queried pixels of a rendered scene (z-buffer trace)",
+      "レンダリングしたシーンの指定した画素の色と奥行き (Zバッファ法の追跡)",
+      "цвет и глубина заданных пикселей визуализированной сцены (трассировка z-буфера)"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr std::size_t kMaxPixels = 64;
   // World triangles of an exercise's scene (the paper plane has 5 293): each goes through the

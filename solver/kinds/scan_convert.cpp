@@ -86,7 +86,9 @@ Exact pixels_of(std::int64_t v, int power = 1) {
 
 struct ScanConvert {
   static constexpr const char* kName = "scan_convert";
-  static constexpr const char* kSummary = "pixels covered by a triangle (top-left fill rule)";
+  static constexpr Phrase kSummary{
+      "pixels covered by a triangle (top-left fill rule)", "三角形が覆う画素 (左上規則)",
+      "пиксели, покрытые треугольником (правило верхнего левого края)"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr int kMaxBox = 256;  // the bounding box may span at most 256 × 256 pixels
   struct Given {

@@ -44,6 +44,16 @@ constexpr Phrase kSmallestZSeen{
     "(глубины линейны и пересекаются только в точках разбиения): видно сечение с наименьшим z. "
     "Метод хранит сечения одной строки, а не глубину каждого пикселя."};
 
+constexpr Phrase kLargerDepthTakenAsNearer{"larger depth taken as nearer",
+                                           "z の大きいほうを手前とした",
+                                           "большая глубина принята за ближнюю"};
+constexpr Phrase kDepthGrowsAwayFromViewer{
+    "Depth z grows away from the viewer: on each piece the section with the smallest z is the one "
+    "seen.",
+    "奥行き z は視点から遠いほど大きい: 各区間で z が最も小さい断面が見える.",
+    "Глубина z растёт при удалении от наблюдателя: на каждом отрезке видно сечение с наименьшим "
+    "z."};
+
 struct Section {
   std::size_t polygon;
   Exact x_left, z_left, x_right, z_right;
@@ -68,8 +78,11 @@ bool less(const Exact& a, const Exact& b) { return exact_sign(a - b) < 0; }
 
 struct Scanline {
   static constexpr const char* kName = "scanline";
-  static constexpr const char* kSummary =
-      "the scan-line method: sections of polygons on one line and the nearest on each piece";
+  static constexpr Phrase kSummary{
+      "the scan-line method: sections of polygons on one line and the nearest on each piece",
+      "スキャンライン法: 1 本の走査線上のポリゴンの断面と, 各区間で最も手前の断面",
+      "метод строки развёртки: сечения многоугольников одной строкой и ближайшее на каждом "
+      "отрезке"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr std::size_t kMaxPolygons = 50;
   struct Polygon {
@@ -241,10 +254,8 @@ struct Scanline {
     if (ss.size() < 2) return {};
     Answers a;
     set_pieces(a, pieces(g, ss, nullptr, true));
-    return {{"larger depth taken as nearer",
-             "Depth z grows away from the viewer: on each piece the section with the smallest z "
-             "is the one seen.",
-             "Nearest section on each piece", a}};
+    return {{say(kLargerDepthTakenAsNearer), say(kDepthGrowsAwayFromViewer),
+             say(kNearestOnEachPiece), a}};
   }
 
   static Answers solve(const Given& g, Derivation* steps) {

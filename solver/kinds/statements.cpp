@@ -54,7 +54,9 @@ std::string one_line(const std::string& s) {
 
 struct Statements {
   static constexpr const char* kName = "statements";
-  static constexpr const char* kSummary = "which of the given statements are true";
+  static constexpr Phrase kSummary{"which of the given statements are true",
+                                   "与えられた記述のうちどれが正しいか",
+                                   "какие из данных утверждений верны"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr bool kFixed = true;
   struct Statement {

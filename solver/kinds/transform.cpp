@@ -57,6 +57,12 @@ constexpr Phrase kFlattensSpace{
     "det M = 0: この変換は空間を押しつぶすので, 元に戻せない.",
     "det M = 0: преобразование сплющивает пространство, и его нельзя обратить."};
 constexpr Phrase kInverse{"Inverse", "逆行列", "Обратная матрица"};
+constexpr Phrase kDegreesTakenAsRadians{"degrees taken as radians", "度をラジアンとして計算",
+                                        "градусы взяты как радианы"};
+constexpr Phrase kRotationUsesDegreesAsRadians{
+    "Your rotation uses the angle's number of degrees as radians (cos {0} instead of cos {1}).",
+    "回転で角度の度数をラジアンとして使っています (cos {1} ではなく cos {0}).",
+    "В повороте число градусов взято как радианы (cos {0} вместо cos {1})."};
 constexpr Phrase kEachStepUndone{
     "Each step is undone on its own (a translation by its negative, a scaling by its reciprocal, "
     "a rotation by its transpose), in reverse order.",
@@ -154,8 +160,9 @@ Value array_with_steps(const MatX<Exact>& m, bool column_major, Derivation* step
 
 struct Transform {
   static constexpr const char* kName = "transform";
-  static constexpr const char* kSummary =
-      "the composite of translations, scalings, rotations and shears";
+  static constexpr Phrase kSummary{"the composite of translations, scalings, rotations and shears",
+                                   "平行移動, 拡大縮小, 回転, せん断の合成",
+                                   "композиция переносов, масштабирований, поворотов и сдвигов"};
   struct Given {
     int dim = 3;
     std::vector<TransformStep> steps;
@@ -246,8 +253,8 @@ struct Transform {
       inverses.push_back(s.inverse);
     }
     if (g.steps.size() >= 2)
-      out.push_back({"composition in the wrong order", wrong_order_feedback(g.api),
-                     "Composite (first step applied first)", composite(matrices, inverses, true)});
+      out.push_back({say(kCompositionInTheWrongOrder), wrong_order_feedback(g.api), say(kComposite),
+                     composite(matrices, inverses, true)});
     // Degrees taken as radians: every rotation by the angle's number of degrees, in radians
     // (undone by the rotation by minus that many radians).
     bool rotates = false;
@@ -260,11 +267,8 @@ struct Transform {
       as_radians_undone.push_back(turned ? s.rotation(canonical(-radians)) : s.inverse);
     }
     if (rotates)
-      out.push_back({"degrees taken as radians",
-                     "Your rotation uses the angle's number of degrees as radians (cos 90 instead "
-                     "of cos 90°).",
-                     "Composite (first step applied first)",
-                     composite(as_radians, as_radians_undone, false)});
+      out.push_back({say(kDegreesTakenAsRadians), say(kRotationUsesDegreesAsRadians, "90", "90°"),
+                     say(kComposite), composite(as_radians, as_radians_undone, false)});
     return out;
   }
 

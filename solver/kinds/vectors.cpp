@@ -46,6 +46,31 @@ constexpr Phrase kParallelNoPlane{
 constexpr Phrase kUnitNormalOfPlane{"Unit normal of the plane through 0, a, b",
                                     "0, a, b を通る平面の単位法線",
                                     "Единичная нормаль плоскости через 0, a, b"};
+constexpr Phrase kAntiCommutative{
+    "You computed b × a = −(a × b): the cross product is anti-commutative.",
+    "b × a = −(a × b) を計算しています. 外積は反可換です.",
+    "Вы вычислили b × a = −(a × b): векторное произведение антикоммутативно."};
+constexpr Phrase kTriangleInsteadOfParallelogram{"triangle instead of parallelogram",
+                                                 "平行四辺形ではなく三角形",
+                                                 "треугольник вместо параллелограмма"};
+constexpr Phrase kHalfTheArea{
+    "That is half the area: ‖a × b‖ is the parallelogram's area, the triangle's is half of it.",
+    "それは面積の半分です. ‖a × b‖ は平行四辺形の面積で, 三角形の面積はその半分です.",
+    "Это половина площади: ‖a × b‖ — площадь параллелограмма, а треугольника — её половина."};
+constexpr Phrase kRadiansInsteadOfDegrees{"radians instead of degrees", "度ではなくラジアン",
+                                          "радианы вместо градусов"};
+constexpr Phrase kDegreesInsteadOfRadians{"degrees instead of radians", "ラジアンの代わりに度",
+                                          "градусы вместо радиан"};
+constexpr Phrase kAngleInRadians{"Your angle is in radians; the problem asks for degrees.",
+                                 "角度がラジアンになっています. 問題は度で求めています.",
+                                 "Ваш угол в радианах; в задаче нужны градусы."};
+constexpr Phrase kAngleInDegrees{"Your angle is in degrees; the problem asks for radians.",
+                                 "角度が度になっています. 問題はラジアンで求めています.",
+                                 "Ваш угол в градусах; в задаче нужны радианы."};
+constexpr Phrase kCosForSin{"cos for sin", "sin の代わりに cos", "cos вместо sin"};
+constexpr Phrase kThatIsCos{"That is cos θ = a·b/(‖a‖‖b‖); sin θ uses ‖a × b‖.",
+                            "それは cos θ = a·b/(‖a‖‖b‖) です. sin θ には ‖a × b‖ を使います.",
+                            "Это cos θ = a·b/(‖a‖‖b‖); для sin θ нужно ‖a × b‖."};
 
 // The measures of a and b from their products, in any scalar: the parallelogram's area
 // ‖a × b‖, the lengths, sin θ = ‖a × b‖/(‖a‖‖b‖) and cos θ = a·b/(‖a‖‖b‖). The exact solve and
@@ -153,8 +178,10 @@ std::unique_ptr<NumericSolver> vectors_numeric(const Vec3<Exact>& a, const Vec3<
 
 struct Vectors {
   static constexpr const char* kName = "vectors";
-  static constexpr const char* kSummary =
-      "dot and cross products of two vectors, the parallelogram's area, sin, cos and the angle";
+  static constexpr Phrase kSummary{
+      "dot and cross products of two vectors, the parallelogram's area, sin, cos and the angle",
+      "2 つのベクトルの内積と外積, 平行四辺形の面積, sin, cos となす角",
+      "скалярное и векторное произведения двух векторов, площадь параллелограмма, sin, cos и угол"};
   static constexpr ConventionUse kUses{.api = false, .angles = true};
   struct Given {
     Vec3<Exact> a, b;
@@ -234,19 +261,13 @@ struct Vectors {
     other_unit.set("angle", Value::scalar(degrees ? rad : canonical(rad * 180 / GiNaC::Pi)));
     Answers swapped;
     swapped.set("sin", Value::scalar(cos));
-    return {{"reversed cross product",
-             "You computed b × a = −(a × b): the cross product is anti-commutative.",
-             "Cross product", reversed},
-            {"triangle instead of parallelogram",
-             "That is half the area: ‖a × b‖ is the parallelogram's area, "
-             "the triangle's is half of it.",
-             "Area of the parallelogram", triangle},
-            {degrees ? "radians instead of degrees" : "degrees instead of radians",
-             degrees ? "Your angle is in radians; the problem asks for degrees."
-                     : "Your angle is in degrees; the problem asks for radians.",
-             "Angle", other_unit},
-            {"cos for sin", "That is cos θ = a·b/(‖a‖‖b‖); sin θ uses ‖a × b‖.",
-             "Sine of the angle", swapped}};
+    return {{say(kind_words::kReversedCrossProduct), say(kAntiCommutative), say(kCrossProduct),
+             reversed},
+            {say(kTriangleInsteadOfParallelogram), say(kHalfTheArea), say(kAreaOfParallelogram),
+             triangle},
+            {say(degrees ? kRadiansInsteadOfDegrees : kDegreesInsteadOfRadians),
+             say(degrees ? kAngleInRadians : kAngleInDegrees), say(kAngle), other_unit},
+            {say(kCosForSin), say(kThatIsCos), say(kSineOfAngle), swapped}};
   }
 
   // Grading scales (docs/grading.md §2): every product's terms are of size max|aᵢ|·max|bᵢ|;

@@ -44,7 +44,10 @@ constexpr Phrase kPointThroughBoth{"A point through both, then the divide by W�
 
 struct ViewVolume {
   static constexpr const char* kName = "view_volume";
-  static constexpr const char* kSummary = "the normalized perspective view volume of Foley et al.";
+  static constexpr Phrase kSummary{
+      "the normalized perspective view volume of Foley et al.",
+      "フォーリーらの正規化視体積 (透視投影)",
+      "нормированный видимый объём перспективной проекции по Фоли и др."};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   struct Given {
     Exact d, a, b, z_min, z_max;

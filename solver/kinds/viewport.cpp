@@ -33,7 +33,8 @@ std::unique_ptr<NumericSolver> viewport_numeric(const Vec3<Exact>& ndc, const Ex
 
 struct Viewport {
   static constexpr const char* kName = "viewport";
-  static constexpr const char* kSummary = "NDC to window coordinates";
+  static constexpr Phrase kSummary{"NDC to window coordinates", "NDC からウィンドウ座標へ",
+                                   "из NDC в оконные координаты"};
   static constexpr ConventionUse kUses{.api = true, .angles = false};
   struct Given {
     Vec3<Exact> ndc;

@@ -64,8 +64,10 @@ constexpr Phrase kRowsTopFirst{"Rows top first, joined by “/”.",
 
 struct ZBuffer {
   static constexpr const char* kName = "zbuffer";
-  static constexpr const char* kSummary =
-      "frame and depth buffers of the Z-buffer algorithm on a small grid";
+  static constexpr Phrase kSummary{
+      "frame and depth buffers of the Z-buffer algorithm on a small grid",
+      "小さな格子上の Zバッファ法のフレームバッファと奥行きバッファ",
+      "буфер кадра и буфер глубины алгоритма z-буфера на малой сетке"};
   static constexpr ConventionUse kUses{.api = false, .angles = false};
   static constexpr int kMaxSize = 256;       // the largest grid: 256 × 256 pixels
   static constexpr int kMaxShownSize = 32;   // larger grids are not written into the derivation

@@ -1,7 +1,7 @@
 // The sentence that opens a derivation with the conventions it is solved in, in every language.
 #pragma once
 
-#include "solver/derivation/said.hpp"
+#include "solver/util/said.hpp"
 #include "solver/viewing/conventions.hpp"
 
 namespace frustum {

@@ -100,13 +100,13 @@ struct AnswerSpec {
 // A common mistake, as the answers it produces: the grader names it when a student's wrong
 // answer matches one of these.
 struct Misconception {
-  std::string name;      // "reversed cross product"
-  std::string feedback;  // what went wrong, for the student
-  std::string step;      // title of the derivation step where it goes wrong
-  Answers answers;       // the answers the mistake leads to
+  Said name;        // "reversed cross product"
+  Said feedback;    // what went wrong, for the student
+  Said step;        // title of the derivation step where it goes wrong (as the step says it)
+  Answers answers;  // the answers the mistake leads to
   // What went wrong said in the form the student wrote the answer in (ParsedAnswer::form, such
   // as "equation" for a plane), where `feedback` would describe another form.
-  std::vector<std::pair<std::string, std::string>> feedback_by_form = {};
+  std::vector<std::pair<std::string, Said>> feedback_by_form = {};
 };
 
 // An answer the method gives as rightly as the key's, by another choice it leaves open (the
@@ -114,12 +114,12 @@ struct Misconception {
 struct AlsoRight {
   std::string answer;
   Value value;
-  std::string why;
+  Said why;
 };
 
 struct KindInfo {
   std::string name;
-  std::string summary;
+  Said summary;  // what the kind asks, in a line (a problem without a text is asked by it)
   std::vector<std::string> given_fields;  // for messages and suggestions
   std::vector<AnswerSpec> answers;
   // Reads and validates `given`; throws InputError with the location of the bad field.
@@ -178,7 +178,7 @@ template <typename K>
 KindInfo make_kind() {
   KindInfo k;
   k.name = K::kName;
-  k.summary = K::kSummary;
+  k.summary = Said(K::kSummary);
   k.given_fields = K::given_fields();
   k.answers = K::answers();
   k.parse = [](GivenReader& r, const Conventions& c) -> std::any { return K::parse(r, c); };

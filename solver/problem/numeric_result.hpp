@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "solver/derivation/said.hpp"
 #include "solver/derivation/value.hpp"
 #include "solver/numeric/precision.hpp"
+#include "solver/util/said.hpp"
 #include "solver/viewing/transforms.hpp"
 
 namespace frustum {

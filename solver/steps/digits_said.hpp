@@ -3,8 +3,8 @@
 // warnings of the derivations and of the numeric paths.
 #pragma once
 
-#include "solver/derivation/said.hpp"
 #include "solver/numeric/precision.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum {
 

@@ -25,13 +25,7 @@ namespace {
 constexpr Phrase kNormalDirectionIllConditioned{"The normal's direction is ill-conditioned ({0}).",
                                                 "法線の向きは条件が悪い ({0}).",
                                                 "Направление нормали плохо обусловлено ({0})."};
-constexpr Phrase kUnitNormal{"Unit normal", "単位法線", "Единичная нормаль"};
 constexpr Phrase kEdgeVectors{"Edge vectors", "辺ベクトル", "Векторы рёбер"};
-constexpr Phrase kNormal{"Normal", "法線", "Нормаль"};
-constexpr Phrase kNormalLeftHanded{
-    "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
-    "法線 (左手系: n = e₁ × e₀, 反時計回り = 表)",
-    "Нормаль (левая система: n = e₁ × e₀, против часовой стрелки = лицевая)"};
 constexpr Phrase kLeftHandedTriangleFront{
     "In left-handed coordinates the side from which p₀, p₁, p₂ run counter-clockwise is the side "
     "of e₁ × e₀ = −(e₀ × e₁): the right-handed formula e₀ × e₁ gives the opposite normal, that of "
@@ -41,9 +35,6 @@ constexpr Phrase kLeftHandedTriangleFront{
     "В левой системе координат сторона, откуда p₀, p₁, p₂ идут против часовой стрелки, — это "
     "сторона e₁ × e₀ = −(e₀ × e₁): формула правой системы e₀ × e₁ даёт противоположную нормаль, "
     "нормаль зеркального образа."};
-constexpr Phrase kNormalRightHanded{"Normal (n = e₀ × e₁, counter-clockwise = front)",
-                                    "法線 (n = e₀ × e₁, 反時計回り = 表)",
-                                    "Нормаль (n = e₀ × e₁, против часовой стрелки = лицевая)"};
 constexpr Phrase kNewellNormalLeftHanded{"Normal of the {0}-gon by Newell's method, left-handed",
                                          "Newell の方法による {0} 角形の法線 (左手系)",
                                          "Нормаль {0}-угольника методом Newell, левая система"};
@@ -106,6 +97,37 @@ constexpr Phrase kSignsDifferInterpolation{
     "符号がそろっていないので画素は外側にある (負の λᵢ がある). それでも補間から z は求まる.",
     "Знаки различаются, поэтому пиксель снаружи (некоторое λᵢ отрицательно); интерполяция всё "
     "равно даёт его z."};
+constexpr Phrase kYouTookRightHandedFormula{
+    "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, with the "
+    "vertices counter-clockwise seen from the front, the front normal is n = e₁ × e₀.",
+    "右手系の式 e₀ × e₁ を計算しています. この左手系の座標では, 表から見て頂点が反時計回りなので, "
+    "表向きの法線は n = e₁ × e₀ です.",
+    "Вы взяли e₀ × e₁, формулу правой системы: в этих левых координатах, когда вершины обходятся "
+    "против часовой стрелки при взгляде с лицевой стороны, лицевая нормаль n = e₁ × e₀."};
+constexpr Phrase kYouTookE1CrossE0{
+    "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the front normal "
+    "is n = e₀ × e₁.",
+    "e₁ × e₀ を計算しています. 表から見て頂点が反時計回りなので, 表向きの法線は n = e₀ × e₁ です.",
+    "Вы взяли e₁ × e₀: вершины обходятся против часовой стрелки, если смотреть с лицевой стороны, "
+    "поэтому лицевая нормаль n = e₀ × e₁."};
+constexpr Phrase kConstantOnTheWrongSide{"constant on the wrong side", "定数項の符号が逆",
+                                         "свободный член не с той стороны"};
+constexpr Phrase kConstantDWrongSign{"Your constant d has the wrong sign.",
+                                     "定数 d の符号が逆です.", "У свободного члена d не тот знак."};
+constexpr Phrase kPlaneWrittenWithD{
+    "Here the plane is written a·x + b·y + c·z = d with d = n·{0}; a list [a, b, c, d] means the "
+    "same form, not a·x + b·y + c·z + d = 0.",
+    "ここでは平面を a·x + b·y + c·z = d (d = n·{0}) と書きます. "
+    "リスト [a, b, c, d] も同じ形を表し, a·x + b·y + c·z + d = 0 ではありません.",
+    "Здесь плоскость записывается как a·x + b·y + c·z = d, где d = n·{0}; список [a, b, c, d] "
+    "означает ту же форму, а не a·x + b·y + c·z + d = 0."};
+constexpr Phrase kPlaneConstantWrongSign{
+    "Your plane's constant has the wrong sign: the plane through {0} is n·p = n·{1} (from "
+    "n·(p − {2}) = 0), and yours is n·p = −n·{3}.",
+    "平面の定数項の符号が逆です. {0} を通る平面は n·p = n·{1} (n·(p − {2}) = 0 から) ですが, "
+    "あなたの平面は n·p = −n·{3} です.",
+    "У свободного члена плоскости не тот знак: плоскость через {0} — это n·p = n·{1} (из "
+    "n·(p − {2}) = 0), а у вас n·p = −n·{3}."};
 
 }  // namespace
 
@@ -219,40 +241,28 @@ std::optional<Misconception> reversed_normal_mistake(const Vec3<Exact>& n, std::
   answers.set("normal", Value::vector(r));
   if (!canonical(r.dot(r)).is_zero()) answers.set("unit_normal", Value::vector(unit(r)));
   if (order)
-    return Misconception{"reversed cross product",
-                         "You took " + order->second + " × " + order->first + ".", "Normal",
-                         answers};
+    return Misconception{say(kind_words::kReversedCrossProduct),
+                         say(kind_words::kYouTook, order->second + " × " + order->first),
+                         say(kind_words::kNormalTitle), answers};
   return Misconception{
-      "reversed cross product",
-      left_handed
-          ? "You took e₀ × e₁, the right-handed formula: in these left-handed coordinates, "
-            "with the vertices counter-clockwise seen from the front, the front normal is "
-            "n = e₁ × e₀."
-          : "You took e₁ × e₀: with the vertices counter-clockwise seen from the front, the "
-            "front normal is n = e₀ × e₁.",
-      left_handed ? "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)"
-                  : "Normal (n = e₀ × e₁, counter-clockwise = front)",
+      say(kind_words::kReversedCrossProduct),
+      say(left_handed ? kYouTookRightHandedFormula : kYouTookE1CrossE0),
+      say(left_handed ? kind_words::kNormalLeftHandedTitle : kind_words::kNormalRightHandedTitle),
       answers};
 }
 
 std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
-                                                   const std::string& point,
-                                                   const std::string& step) {
+                                                   const std::string& point, const Said& step) {
   if (canonical(d).is_zero()) return std::nullopt;
   Answers answers;
   answers.set("plane", plane_answer(paper_plane(n, canonical(-d))));
   // Said in the student's form: a list [a, b, c, d] is read as a·x + b·y + c·z = d, which is
   // what a list writer may have taken for … + d = 0; an equation says its own constant.
-  return Misconception{
-      "constant on the wrong side",
-      "Your constant d has the wrong sign. Here the plane is written a·x + b·y + c·z = d "
-      "with d = n·" +
-          point + "; a list [a, b, c, d] means the same form, not a·x + b·y + c·z + d = 0.",
-      step,
-      answers,
-      {{"equation", "Your plane's constant has the wrong sign: the plane through " + point +
-                        " is n·p = n·" + point + " (from n·(p − " + point +
-                        ") = 0), and yours is n·p = −n·" + point + "."}}};
+  return Misconception{say(kConstantOnTheWrongSide),
+                       say(kConstantDWrongSign) + say(kPlaneWrittenWithD, point),
+                       step,
+                       answers,
+                       {{"equation", say(kPlaneConstantWrongSign, point, point, point, point)}}};
 }
 
 Vec3<Exact> unit(const Vec3<Exact>& n) {
@@ -282,7 +292,7 @@ Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps) {
 
 void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* steps) {
   if (steps) {
-    steps->add(say(kUnitNormal),
+    steps->add(say(kind_words::kUnitNormalTitle),
                math("n̂ = n / ‖n‖,  ‖n‖ = √(nₓ² + n_y² + n_z²)",
                     "\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
                     "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
@@ -322,13 +332,13 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
                      math(",  e₁ = ", ",\\; \\mathbf{e}_1 = ") + vec(e1));
       if (left_handed)
         steps
-            ->add(say(kNormalLeftHanded),
+            ->add(say(kind_words::kNormalLeftHandedTitle),
                   math("n = e₁ × e₀", "\\mathbf{n} = \\mathbf{e}_1 \\times \\mathbf{e}_0"),
                   math("n = ", "\\mathbf{n} = ") + vec(e1) + math(" × ", " \\times ") + vec(e0),
                   math("n = ", "\\mathbf{n} = ") + vec(n))
             .note = say(kLeftHandedTriangleFront);
       else
-        steps->add(say(kNormalRightHanded),
+        steps->add(say(kind_words::kNormalRightHandedTitle),
                    math("n = e₀ × e₁", "\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
                    math("n = ", "\\mathbf{n} = ") + vec(e0) + math(" × ", " \\times ") + vec(e1),
                    math("n = ", "\\mathbf{n} = ") + vec(n));
@@ -482,7 +492,7 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
     };
     steps->add(say(kEdgeVectors), {}, {},
                edge_text(order.first, u) + math(",  ", ",\\; ") + edge_text(order.second, v));
-    steps->add(say(kNormal),
+    steps->add(say(kind_words::kNormalTitle),
                math("n = " + order.first + " × " + order.second,
                     "\\mathbf{n} = \\overrightarrow{" + order.first +
                         "} \\times \\overrightarrow{" + order.second + "}"),

@@ -21,6 +21,24 @@ inline constexpr Phrase kRightHandedReading{"The right-handed reading", "右手�
 inline constexpr Phrase kIllConditionedNormal{"Ill-conditioned normal", "条件の悪い法線",
                                               "Плохо обусловленная нормаль"};
 
+// Phrases of the normal's steps and of its mistakes that several of these files say (the
+// grader names a mistake's step by the title the derivation gives it). In a namespace of their
+// own, said qualified (kind_words::kNormalTitle), so no kind's own phrase of the same name clashes.
+namespace kind_words {
+inline constexpr Phrase kNormalTitle{"Normal", "法線", "Нормаль"};
+inline constexpr Phrase kNormalLeftHandedTitle{
+    "Normal (left-handed: n = e₁ × e₀, counter-clockwise = front)",
+    "法線 (左手系: n = e₁ × e₀, 反時計回り = 表)",
+    "Нормаль (левая система: n = e₁ × e₀, против часовой стрелки = лицевая)"};
+inline constexpr Phrase kNormalRightHandedTitle{
+    "Normal (n = e₀ × e₁, counter-clockwise = front)", "法線 (n = e₀ × e₁, 反時計回り = 表)",
+    "Нормаль (n = e₀ × e₁, против часовой стрелки = лицевая)"};
+inline constexpr Phrase kUnitNormalTitle{"Unit normal", "単位法線", "Единичная нормаль"};
+inline constexpr Phrase kReversedCrossProduct{"reversed cross product", "外積の順序が逆",
+                                              "обратный порядок векторного произведения"};
+inline constexpr Phrase kYouTook{"You took {0}.", "{0} を計算しています.", "Вы взяли {0}."};
+}  // namespace kind_words
+
 // Normal of a polygon, counter-clockwise = front: e_0 × e_1 for a triangle (seed 003),
 // Newell's method for more vertices. Records the steps and warnings (degenerate, nearly
 // parallel or zero edges, non-planar) when `steps` is set. Throws DomainError on a
@@ -60,10 +78,10 @@ std::array<Exact, 4> carried_plane(const Vec3<Exact>& n, const std::vector<Vec3<
 // The named mistake of a plane's constant on the wrong side (the form ax + by + cz + d = 0 taken
 // for ax + by + cz = d, or a list [a, b, c, d] written in it): the plane n·p = −d, scaled as on
 // paper. Nothing when d = 0, where both forms are the same plane. `point` names the point the
-// plane passes through (d = n·A); `step` is the derivation step where it goes wrong.
+// plane passes through (d = n·A); `step` is the title of the derivation step where it goes wrong
+// (as that step says it).
 std::optional<Misconception> constant_sign_mistake(const Vec3<Exact>& n, const Exact& d,
-                                                   const std::string& point,
-                                                   const std::string& step);
+                                                   const std::string& point, const Said& step);
 
 // Unit vector n/|n| (exact, canonical).
 Vec3<Exact> unit(const Vec3<Exact>& n);

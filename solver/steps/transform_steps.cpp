@@ -52,6 +52,22 @@ constexpr Phrase kColumnVectorsRightmost{
     "Столбцы-векторы: P′ = M·P, поэтому первое применяемое преобразование стоит справа (P′ = "
     "A₃A₂A₁P)."};
 
+// wrong_order_feedback's, for row vectors and for column vectors.
+constexpr Phrase kMultipliedInReverseOrder{
+    "You multiplied the steps in reverse order (…·A₂·A₁): with DirectX's row vectors, P′ = P·M, "
+    "the step applied first stands leftmost, M = A₁·A₂·…",
+    "逆の順に行列を掛けています (…·A₂·A₁). DirectX の行ベクトルでは P′ = P·M なので, "
+    "最初に適用する変換が一番左に来ます: M = A₁·A₂·…",
+    "Вы перемножили шаги в обратном порядке (…·A₂·A₁): для строк-векторов DirectX, P′ = P·M, "
+    "первый шаг стоит слева, M = A₁·A₂·…"};
+constexpr Phrase kMultipliedInTheOrderApplied{
+    "You multiplied the steps in the order they are applied (A₁·A₂·…): with column vectors the "
+    "step applied first stands rightmost, M = …·A₂·A₁ (as in P′ = A₃A₂A₁P).",
+    "適用する順に行列を掛けています (A₁·A₂·…). 列ベクトルでは最初に適用する変換が一番右に来ます: M "
+    "= …·A₂·A₁ (P′ = A₃A₂A₁P のように).",
+    "Вы перемножили шаги в порядке применения (A₁·A₂·…): для столбцов-векторов первый шаг стоит "
+    "справа, M = …·A₂·A₁ (как в P′ = A₃A₂A₁P)."};
+
 // The inverse of one step from its kind: translations negate, scalings take reciprocals,
 // rotations transpose; only a shear (rational entries) is inverted by elimination. The
 // composite's inverse is then the product in reverse order, which never asks GiNaC to
@@ -220,12 +236,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
   return t;
 }
 
-std::string wrong_order_feedback(Api api) {
-  return api == Api::DirectX
-             ? "You multiplied the steps in reverse order (…·A₂·A₁): with DirectX's row vectors, "
-               "P′ = P·M, the step applied first stands leftmost, M = A₁·A₂·…"
-             : "You multiplied the steps in the order they are applied (A₁·A₂·…): with column "
-               "vectors the step applied first stands rightmost, M = …·A₂·A₁ (as in P′ = A₃A₂A₁P).";
+Said wrong_order_feedback(Api api) {
+  return say(api == Api::DirectX ? kMultipliedInReverseOrder : kMultipliedInTheOrderApplied);
 }
 
 std::vector<TransformStep> read_transform_steps(GivenReader& r, const std::string& key, int dim,

@@ -19,6 +19,9 @@ namespace frustum {
 
 // "A1: translate (2, 3)": a step of a composite transform by its number and heading.
 inline constexpr Phrase kStepTitle{"A{0}: {1}", "A{0}: {1}", "A{0}: {1}"};
+// The misconception of a composite multiplied in the wrong order (wrong_order_feedback).
+inline constexpr Phrase kCompositionInTheWrongOrder{
+    "composition in the wrong order", "変換の合成順序が逆", "композиция в неверном порядке"};
 
 struct TransformStep {
   Said heading;  // "translate (2, 3)", in every language
@@ -47,7 +50,7 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
 
 // The feedback for a composite multiplied in the wrong order (the order the steps are applied
 // in, for column vectors; the reverse, for DirectX's row vectors).
-std::string wrong_order_feedback(Api api);
+Said wrong_order_feedback(Api api);
 
 // Reads the list `key` of such steps (by default 1 to kMaxTransformSteps of them, shear
 // included).

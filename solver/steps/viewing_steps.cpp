@@ -12,12 +12,6 @@ namespace {
 
 constexpr Phrase kViewport{"Viewport", "ビューポート変換", "Преобразование в область просмотра"};
 constexpr Phrase kViewingDirection{"Viewing direction", "視線方向", "Направление взгляда"};
-constexpr Phrase kCameraAxesLeftHanded{"Camera axes (left-handed, looking down +z)",
-                                       "カメラの軸 (左手系, +z 方向を見る)",
-                                       "Оси камеры (левая система, взгляд вдоль +z)"};
-constexpr Phrase kCameraAxesRightHanded{"Camera axes (right-handed, looking down −z)",
-                                        "カメラの軸 (右手系, −z 方向を見る)",
-                                        "Оси камеры (правая система, взгляд вдоль −z)"};
 constexpr Phrase kSideAxis{"Side axis", "横方向の軸", "Боковая ось"};
 constexpr Phrase kTranslations{"Translations", "平行移動", "Переносы"};
 constexpr Phrase kViewMatrix{"View matrix", "視野変換行列", "Матрица вида"};
@@ -36,10 +30,6 @@ constexpr Phrase kFrustumOfPerspective{
     "The frustum of perspective(fovy, aspect, near, far)",
     "perspective(fovy, aspect, near, far) の視体積",
     "Усечённая пирамида видимости perspective(fovy, aspect, near, far)"};
-constexpr Phrase kOrthographicProjectionMatrix{"Orthographic projection matrix", "平行投影の行列",
-                                               "Матрица ортографической проекции"};
-constexpr Phrase kPerspectiveProjectionMatrix{"Perspective projection matrix", "透視投影行列",
-                                              "Матрица перспективной проекции"};
 constexpr Phrase kOpenGlWindowOrigin{"OpenGL's window origin is bottom-left, y up.",
                                      "OpenGL のウィンドウの原点は左下で y は上向き.",
                                      "В OpenGL начало окна внизу слева, y вверх."};
@@ -184,6 +174,81 @@ constexpr Phrase kGlOrthoReadsDistances{
     "として読むので, そこは −2/(f − n) になる. 二つの行列の違いは z 軸の向きだけである.",
     "glOrtho в OpenGL читает их как расстояния перед глазом, смотрящим вдоль −z (плоскости z = −n "
     "и z = −f), и даёт там −2/(f − n); две матрицы различаются только направлением оси z."};
+
+// The mistakes of projection_mistakes: each one's name and feedback.
+constexpr Phrase kFovyForFovx{"fovy for fovx", "fovx の代わりに fovy", "fovy вместо fovx"};
+constexpr Phrase kUsedTheAngleAsVertical{
+    "You used the angle as the vertical field of view; here it is the horizontal one (fovx).",
+    "画角を縦方向として使っています. ここでは横方向の画角 (fovx) です.",
+    "Вы взяли угол как вертикальный угол обзора; здесь он горизонтальный (fovx)."};
+constexpr Phrase kDegreesTakenAsRadians{"degrees taken as radians", "度をラジアンとして計算",
+                                        "градусы взяты как радианы"};
+constexpr Phrase kNumbersFromDegreesAsRadians{
+    "Your numbers come from using the angle in degrees as if it were radians.",
+    "度で与えられた角度をラジアンとして使った値になっています.",
+    "Ваши числа получены, если угол в градусах взять как радианы."};
+constexpr Phrase kFovxForFovy{"fovx for fovy", "fovy の代わりに fovx", "fovx вместо fovy"};
+constexpr Phrase kUsedTheAngleAsHorizontal{
+    "You used the angle as the horizontal field of view; perspective() takes the vertical one "
+    "(fovy).",
+    "角度を水平方向の画角として使っています. perspective() が受け取るのは垂直方向の画角 (fovy) "
+    "です.",
+    "Вы взяли угол как горизонтальный угол обзора; perspective() принимает вертикальный (fovy)."};
+constexpr Phrase kAspectRatioOnTheTop{"aspect ratio on the top", "アスペクト比を上端に掛けた",
+                                      "соотношение сторон умножено на верх"};
+constexpr Phrase kAspectRatioMultipliesTheTop{
+    "You used −l = r = n·tan(θ/2) and −b = t = n·(w/h)·tan(θ/2): the aspect ratio multiplies the "
+    "top. With r = n·tan(θ/2) the angle is horizontal and t = r·h/w; with θ vertical, t = "
+    "n·tan(θ/2) and r = t·w/h.",
+    "−l = r = n·tan(θ/2), −b = t = n·(w/h)·tan(θ/2) を使っています: "
+    "アスペクト比が上端に掛かっています. r = n·tan(θ/2) なら画角は水平方向で t = r·h/w, θ "
+    "が垂直方向なら t = n·tan(θ/2), r = t·w/h です.",
+    "Вы взяли −l = r = n·tan(θ/2) и −b = t = n·(w/h)·tan(θ/2): соотношение сторон умножает верх. "
+    "При r = n·tan(θ/2) угол горизонтальный и t = r·h/w; при вертикальном θ t = n·tan(θ/2) и r = "
+    "t·w/h."};
+constexpr Phrase kRightHandedMatrix{"right-handed matrix", "右手系の行列",
+                                    "матрица правой системы"};
+constexpr Phrase kUsedTheRightHandedMatrix{
+    "You used the right-handed matrix (the eye looking down −z); in this course's left-handed "
+    "coordinates the eye looks down +z, so the third column has the opposite sign (w′ = z).",
+    "右手系の行列 (視点は −z 方向を見る) を使っています. このコースの左手系の座標では視点は +z "
+    "方向を見るので, 第 3 列の符号が逆になります (w′ = z).",
+    "Вы использовали матрицу правой системы (глаз смотрит вдоль −z); в левой системе координат "
+    "этого курса глаз смотрит вдоль +z, поэтому третий столбец имеет обратный знак (w′ = z)."};
+constexpr Phrase kZMinZMaxReadAsCoordinates{"z_min, z_max read as coordinates",
+                                            "z_min, z_max を座標として読んだ",
+                                            "z_min, z_max прочитаны как координаты"};
+constexpr Phrase kZRowReadsCoordinates{
+    "Your z row is +2/(f − n), −(f + n)/(f − n): it maps z = n to −1 and z = f to +1, reading near "
+    "and far as z coordinates. Here they are distances in front of an eye looking down −z "
+    "(glOrtho), so the z row is −2/(f − n), −(f + n)/(f − n).",
+    "あなたの z の行は +2/(f − n), −(f + n)/(f − n) で, z = n を −1 に, z = f を +1 に写します. "
+    "これは near と far を z 座標として読んだ形です. ここでは両者は −z "
+    "方向を向く視点の前方への距離 (glOrtho) なので, z の行は −2/(f − n), −(f + n)/(f − n) です.",
+    "Ваша строка z — +2/(f − n), −(f + n)/(f − n): она переводит z = n в −1 и z = f в +1, то есть "
+    "читает near и far как координаты z. Здесь это расстояния перед глазом, смотрящим вдоль −z "
+    "(glOrtho), поэтому строка z — −2/(f − n), −(f + n)/(f − n)."};
+constexpr Phrase kNearFarReadAsDistances{"near, far read as distances",
+                                         "near, far を距離として読んだ",
+                                         "near, far прочитаны как расстояния"};
+constexpr Phrase kZRowReadsDistances{
+    "Your z row is glOrtho's −2/(f − n), −(f + n)/(f − n), which reads near and far as distances "
+    "in front of an eye looking down −z. Here z_min = n and z_max = f are z coordinates mapped to "
+    "−1 and +1, so the z row is +2/(f − n), −(f + n)/(f − n).",
+    "あなたの z の行は glOrtho の −2/(f − n), −(f + n)/(f − n) で, near と far を −z "
+    "方向を向く視点の前方への距離として読んでいます. ここでは z_min = n, z_max = f は −1 と +1 "
+    "に写る z 座標なので, z の行は +2/(f − n), −(f + n)/(f − n) です.",
+    "Ваша строка z — это −2/(f − n), −(f + n)/(f − n) из glOrtho: она читает near и far как "
+    "расстояния перед глазом, смотрящим вдоль −z. Здесь z_min = n и z_max = f — координаты z, "
+    "переходящие в −1 и +1, поэтому строка z — +2/(f − n), −(f + n)/(f − n)."};
+constexpr Phrase kNearFarSign{"near/far sign", "near/far の符号", "знак near/far"};
+constexpr Phrase kNearFarArePositiveDistances{
+    "near and far are distances in front of the eye (positive); you used the planes' z coordinates "
+    "−n and −f.",
+    "near と far は視点の前方への距離 (正の値) です. あなたは平面の z 座標 −n と −f "
+    "を使っています.",
+    "near и far — расстояния перед глазом (положительные); вы взяли z-координаты плоскостей −n и "
+    "−f."};
 
 }  // namespace
 
@@ -699,7 +764,7 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
 
 std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
   std::vector<ProjectionMistake> out;
-  const std::string frustum_step = "The frustum of perspective(fovy, aspect, near, far)";
+  const Said frustum_step = say(kFrustumOfPerspective);
   if (p.fovx && p.aspect) {
     // The horizontal angle read as perspective()'s vertical one.
     ProjectionSpec fovy = p;
@@ -709,18 +774,15 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
     for (Exact* e : {&fovy.volume.left, &fovy.volume.right, &fovy.volume.bottom, &fovy.volume.top})
       *e = canonical(*e);
     out.push_back(
-        {"fovy for fovx",
-         "You used the angle as the vertical field of view; here it is the horizontal one (fovx).",
-         "The frustum of a horizontal field of view", fovy});
+        {say(kFovyForFovx), say(kUsedTheAngleAsVertical), say(kFrustumOfHorizontalFov), fovy});
   } else if (p.fovy && p.aspect) {
     const Exact as_degrees = canonical(*p.fovy * 180 / GiNaC::Pi);
     if (!canonical(GiNaC::cos(as_degrees / 2)).is_zero()) {
       ProjectionSpec radians = p;
       radians.fovy = as_degrees;
       radians.volume = perspective_volume(as_degrees, *p.aspect, p.volume.near, p.volume.far);
-      out.push_back({"degrees taken as radians",
-                     "Your numbers come from using the angle in degrees as if it were radians.",
-                     frustum_step, radians});
+      out.push_back(
+          {say(kDegreesTakenAsRadians), say(kNumbersFromDegreesAsRadians), frustum_step, radians});
     }
     // fovx: the angle spans the width, so r = n·tan(θ/2) and t = r / aspect.
     ProjectionSpec fovx = p;
@@ -729,10 +791,7 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
     fovx.volume.left = canonical(-t);
     fovx.volume.top = canonical(t / *p.aspect);
     fovx.volume.bottom = canonical(-t / *p.aspect);
-    out.push_back({"fovx for fovy",
-                   "You used the angle as the horizontal field of view; perspective() takes the "
-                   "vertical one (fovy).",
-                   frustum_step, fovx});
+    out.push_back({say(kFovxForFovy), say(kUsedTheAngleAsHorizontal), frustum_step, fovx});
   }
   // −l = r = n·tan(θ/2), −b = t = n·(w/h)·tan(θ/2): the aspect ratio multiplying the top, a form
   // some notes print; it is neither reading of θ unless w = h.
@@ -745,21 +804,14 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
     on_t.volume.right = r;
     on_t.volume.bottom = canonical(-t);
     on_t.volume.top = t;
-    out.push_back({"aspect ratio on the top",
-                   "You used −l = r = n·tan(θ/2) and −b = t = n·(w/h)·tan(θ/2): the aspect ratio "
-                   "multiplies the top. With r = n·tan(θ/2) the angle is horizontal and "
-                   "t = r·h/w; with θ vertical, t = n·tan(θ/2) and r = t·w/h.",
-                   p.fovx ? "The frustum of a horizontal field of view" : frustum_step, on_t});
+    out.push_back({say(kAspectRatioOnTheTop), say(kAspectRatioMultipliesTheTop),
+                   p.fovx ? say(kFrustumOfHorizontalFov) : frustum_step, on_t});
   }
   // A left-handed course's projection written with the right-handed matrix (looking down −z).
   if (p.left_handed) {
     ProjectionSpec right = p;
     right.left_handed = false;
-    out.push_back(
-        {"right-handed matrix",
-         "You used the right-handed matrix (the eye looking down −z); in this course's left-handed "
-         "coordinates the eye looks down +z, so the third column has the opposite sign (w′ = z).",
-         "", right});
+    out.push_back({say(kRightHandedMatrix), say(kUsedTheRightHandedMatrix), Said{}, right});
   }
   // near/far sign: the planes' z coordinates (−n, −f) put into the matrix instead of the
   // distances n, f.
@@ -770,24 +822,11 @@ std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p) {
   signs.volume.far = canonical(-p.volume.far);
   const bool ortho_reading = p.type == ProjectionSpec::Type::Ortho && !p.left_handed;
   if (ortho_reading && !p.z_coordinates)
-    out.push_back({"z_min, z_max read as coordinates",
-                   "Your z row is +2/(f − n), −(f + n)/(f − n): it maps z = n to −1 and z = f to "
-                   "+1, reading near and far as z coordinates. Here they are distances in front "
-                   "of an eye looking down −z (glOrtho), so the z row is −2/(f − n), "
-                   "−(f + n)/(f − n).",
-                   "", signs});
+    out.push_back({say(kZMinZMaxReadAsCoordinates), say(kZRowReadsCoordinates), Said{}, signs});
   else if (ortho_reading)
-    out.push_back({"near, far read as distances",
-                   "Your z row is glOrtho's −2/(f − n), −(f + n)/(f − n), which reads near and far "
-                   "as distances in front of an eye looking down −z. Here z_min = n and z_max = f "
-                   "are z coordinates mapped to −1 and +1, so the z row is +2/(f − n), "
-                   "−(f + n)/(f − n).",
-                   "", signs});
+    out.push_back({say(kNearFarReadAsDistances), say(kZRowReadsDistances), Said{}, signs});
   else
-    out.push_back({"near/far sign",
-                   "near and far are distances in front of the eye (positive); you used the "
-                   "planes' z coordinates −n and −f.",
-                   "", signs});
+    out.push_back({say(kNearFarSign), say(kNearFarArePositiveDistances), Said{}, signs});
   return out;
 }
 

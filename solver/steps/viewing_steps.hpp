@@ -17,6 +17,19 @@ namespace frustum {
 // The step title of a projection's derivation by similar triangles.
 inline constexpr Phrase kSimilarTriangles{"Similar triangles", "相似な三角形",
                                           "Подобные треугольники"};
+// The titles of look_at_with_steps's axes step, where a reversed basis goes wrong.
+inline constexpr Phrase kCameraAxesLeftHanded{"Camera axes (left-handed, looking down +z)",
+                                              "カメラの軸 (左手系, +z 方向を見る)",
+                                              "Оси камеры (левая система, взгляд вдоль +z)"};
+inline constexpr Phrase kCameraAxesRightHanded{"Camera axes (right-handed, looking down −z)",
+                                               "カメラの軸 (右手系, −z 方向を見る)",
+                                               "Оси камеры (правая система, взгляд вдоль −z)"};
+// The titles of projection_with_steps's matrix step, where a mistake that names no earlier step
+// goes wrong.
+inline constexpr Phrase kOrthographicProjectionMatrix{
+    "Orthographic projection matrix", "平行投影の行列", "Матрица ортографической проекции"};
+inline constexpr Phrase kPerspectiveProjectionMatrix{
+    "Perspective projection matrix", "透視投影行列", "Матрица перспективной проекции"};
 
 class GivenReader;
 
@@ -87,9 +100,10 @@ Said multiply_note(Api api);
 
 // Common mistakes in setting up a projection, each as the projection it amounts to: degrees
 // taken as radians, fovx for fovy, the planes' z coordinates for near and far. `step` is the
-// derivation step where it goes wrong ("" where the matrix itself is).
+// derivation step where it goes wrong, said as that step's title (empty where the matrix itself
+// is).
 struct ProjectionMistake {
-  std::string name, feedback, step;
+  Said name, feedback, step;
   ProjectionSpec projection;
 };
 std::vector<ProjectionMistake> projection_mistakes(const ProjectionSpec& p);
