@@ -121,8 +121,10 @@ std::variant<RenderScene, int> load_render_spec(const RenderOptions& options, co
 int run_bench_accuracy(const std::string& out_dir, const std::string& hard_dir, int cases,
                        const Output& o);
 // `frustum draw`: an SVG picture of one problem (hidden lines, painter vs z-buffer); written
-// to `output`, or to o.out when it is empty or "-". `raster` is the painter/z-buffer size.
+// to `output`, or to o.out when it is empty or "-". `raster` is the painter/z-buffer size;
+// `lang` the language of the picture's captions and of the summary printed (none: the set's
+// own, its `lang:`).
 int run_draw(const std::string& set, const std::string& id, const std::string& output, int raster,
-             const Output& o);
+             const Output& o, std::optional<Lang> lang = std::nullopt);
 
 }  // namespace frustum::app

@@ -1,4 +1,5 @@
-// `frustum draw SET.yaml --id ID [-o FILE.svg] [--raster N]`: the picture of one problem.
+// `frustum draw SET.yaml --id ID [-o FILE.svg] [--raster N] [--lang L]`: the picture of one
+// problem.
 #include <fstream>
 #include <memory>
 #include <ostream>
@@ -25,7 +26,7 @@ std::string drawable_kinds() {
 }  // namespace
 
 int run_draw(const std::string& set_file, const std::string& id, const std::string& output,
-             int raster, const Output& o) {
+             int raster, const Output& o, std::optional<Lang> lang) {
   const ProblemSet set = load_problem_set(set_file);
   for (const Diagnostic& d : set.errors) o.err << d.format() << "\n";
   const ProblemSpec* spec = set.find(id);
@@ -54,6 +55,7 @@ int run_draw(const std::string& set_file, const std::string& id, const std::stri
     options.api = spec->conventions.api;
     options.title = spec->id + " (" + spec->kind + ")";
     options.raster = raster;
+    options.lang = lang.value_or(set.lang);
     picture = draw_picture(spec->info->drawable(spec->given), options);
   } catch (const DomainError& e) {
     o.err << GivenReader(spec->given_node, set.file, spec->field + ".given", {})
@@ -80,6 +82,7 @@ Command add_draw_command(CLI::App& cli) {
   struct Options {
     std::string set, id, output;
     int raster = 48;
+    std::string lang;  // empty: the set's own
   };
   auto opt = std::make_shared<Options>();
   auto* draw =
@@ -89,12 +92,16 @@ Command add_draw_command(CLI::App& cli) {
   draw->add_option("-o,--output", opt->output, "SVG file to write (default: standard output)");
   draw->add_option("--raster", opt->raster, "Painter vs z-buffer: window size in pixels (4 to 512)")
       ->check(CLI::Range(4, 512));
+  draw->add_option("--lang", opt->lang,
+                   "Language of the picture's captions: en, ja or ru (default: the set's own, "
+                   "its lang:)")
+      ->check(language_check());
   draw->footer(
       examples({"frustum draw problems/seeds/003_polygons_backface.yaml --id "
                 "seed003-ico-hidden-lines -o ico.svg"}));
 
   return {draw, [opt](const Output& o) {
-            return run_draw(opt->set, opt->id, opt->output, opt->raster, o);
+            return run_draw(opt->set, opt->id, opt->output, opt->raster, o, parse_lang(opt->lang));
           }};
 }
 

@@ -116,11 +116,6 @@ std::string excerpt(std::string_view text) {
   return q.substr(1, q.size() - 2);
 }
 
-// Why the expression reader (solver/util/expression_*.cpp) could not read a text. It says so in
-// English; TRANSITIONAL: translated through the old catalogue until the expression reader says
-// its reasons as phrases.
-Said expression_reason(const std::string& english) { return Said(english); }
-
 // A word of an answer's category or truth value as the key prints it in each language.
 Said word_said(const std::string& word) {
   if (word == kConvex.en) return Said(kConvex);
@@ -191,7 +186,7 @@ Exact parse_one(const std::string& text, Said& error, WorkBudget& budget, double
   options.degree_sign = true;
   const ExpressionResult r = parse_expression(text, options);
   if (!r) {
-    error = say(kCannotRead, excerpt(text), expression_reason(r.error));
+    error = say(kCannotRead, excerpt(text), r.error);
     return 0;
   }
   if (!is_real_constant(*r.value)) {
@@ -383,7 +378,7 @@ Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
   opts.degree_sign = true;
   const ExpressionResult r = parse_expression(text, opts);
   if (!r) {
-    out.error = say(kCannotReadPlane, excerpt(text), expression_reason(r.error));
+    out.error = say(kCannotReadPlane, excerpt(text), r.error);
     return out;
   }
   if (!r.equation) {

@@ -24,14 +24,15 @@ constexpr Phrase kSeeTheFeedbackBelow{"see the feedback below", "下のフィー
 }  // namespace
 
 json prairielearn_results(const GradeReport& r, Lang lang) {
-  // Unreadable answers and an unreadable file are format errors, not wrong answers.
+  // Unreadable answers and an unreadable file are format errors, not wrong answers; why an
+  // answer could not be read is said in the student's language.
   std::vector<std::string> format_errors;
   for (const Diagnostic& d : r.errors) format_errors.push_back(visible_text(d.format()));
   for (const ProblemGrade& p : r.problems)
     for (const AnswerGrade& a : p.answers)
       if (a.verdict == Verdict::Unparseable)
         format_errors.push_back(
-            visible_text(fmt::format("{}.{}: {}", p.id, a.name, a.feedback.en())));
+            visible_text(fmt::format("{}.{}: {}", p.id, a.name, a.feedback.in(lang))));
   json j;
   j["gradable"] = format_errors.empty();
   if (!format_errors.empty()) {

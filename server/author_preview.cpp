@@ -119,6 +119,7 @@ Json problem_json(const ProblemSpec& p, const std::string& file, const std::vect
     try {
       PictureOptions options;
       options.api = p.conventions.api;
+      options.lang = lang;
       j["figure_svg"] = draw_picture(p.info->drawable(p.given), options).svg;
     } catch (const std::exception& e) {
       j["figure_error"] = e.what();

@@ -208,6 +208,7 @@ Response figure_svg(StudentApp& app, const Visitor& v, const CourseSet& set,
   try {
     PictureOptions options;
     options.api = p->conventions.api;
+    options.lang = set.set.lang;  // the set's pages' language
     Picture picture;
     {
       const std::lock_guard lock(app.exact_math);  // the given holds exact numbers

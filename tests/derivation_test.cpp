@@ -42,7 +42,7 @@ TEST(Derivation, TextShowsExactValuesWithDecimalsAndNoColourUnlessAsked) {
 
 TEST(Derivation, TextIndentsANotesFurtherLinesUnlessTheyBringTheirOwn) {
   Derivation d;
-  d.note("Backend", "first line\nsecond line\n        a trace row");
+  d.note(Said::verbatim("Backend"), Said::verbatim("first line\nsecond line\n        a trace row"));
   EXPECT_EQ(render_steps_text(d.steps(), TextStyle{false}),
             "  • Backend\n      first line\n      second line\n        a trace row\n");
 }

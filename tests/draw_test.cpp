@@ -10,6 +10,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "app/commands.hpp"
 #include "solver/derivation/svg.hpp"
@@ -389,7 +390,7 @@ struct DrawRun {
 DrawRun draw(const std::string& set, const std::string& id, const std::string& output = "") {
   std::ostringstream out, err;
   const int status =
-      app::run_draw(test::source_path(set), id, output, 24, app::Output{out, err, false});
+      app::run_draw(test::source_path(set), id, output, 24, app::Output{out, err, false}, Lang::En);
   return {status, out.str(), err.str()};
 }
 
@@ -436,6 +437,94 @@ TEST(DrawCommand, EyeInsideTheSolidIsAnErrorAtTheEye) {
     EXPECT_EQ(e.field(), "eye");
     EXPECT_NE(std::string(e.what()).find("not in front of the eye"), std::string::npos) << e.what();
   }
+}
+
+// What a picture says in words: its <title>, and the caption lines and panel names (the <text>
+// elements without a class; vertex and polygon numbers have one), one a line, as escaped.
+std::string picture_words(const std::string& svg) {
+  std::string out;
+  for (const std::string_view open : {"<title>", "<text x="}) {
+    for (std::size_t at = svg.find(open); at != std::string::npos; at = svg.find(open, at + 1)) {
+      const std::size_t from = svg.find('>', at) + 1;
+      out += svg.substr(from, svg.find('<', from) - from) + "\n";
+    }
+  }
+  return out;
+}
+
+// Runs of two or more Latin letters that are not an api's name (as the set writes it: opengl).
+std::vector<std::string> latin_words(const std::string& text) {
+  std::vector<std::string> out;
+  const auto letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
+  for (std::size_t i = 0; i < text.size();) {
+    std::size_t j = i;
+    while (j < text.size() && letter(text[j])) ++j;
+    const std::string word = text.substr(i, j - i);
+    if (word.size() >= 2 && !parse_api(word)) out.push_back(word);
+    i = j == i ? i + 1 : j;
+  }
+  return out;
+}
+
+// The captions, the <title> and the summary in the reader's language: the lecture's words, no
+// English word (numbers, coordinates, the api's name and pair names stay as written); English
+// as before.
+TEST(Pictures, CaptionsAndSummaryAreInTheReadersLanguage) {
+  const ProblemSet seeds =
+      load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));
+  const ProblemSet examples =
+      load_problem_set(test::source_path("problems/examples/visibility.yaml"));
+  const ProblemSpec& ico = seed_problem(seeds, "seed003-ico-hidden-lines");
+  const ProblemSpec& cyclic = seed_problem(examples, "depth-sort-cyclic");
+  struct Want {
+    Lang lang;
+    std::vector<std::string> hidden_lines, painter;
+  };
+  const std::vector<Want> wants = {
+      {Lang::Ja,
+       {"隠線消去", "視点 (3, 5, 7) から", "透視投影", "実線: 可視", "太線: 輪郭線", "破線: 不可視",
+        "稜線 30 本", "(processing, 画面の y は下向き)"},
+       {"画家のアルゴリズムと Zバッファ", "画家のアルゴリズム (奥行きソート)", "Zバッファ", "画素",
+        "矛盾: "}},
+      {Lang::Ru,
+       {"удаление невидимых линий", "перспектива из глаза (3, 5, 7)", "видимое ребро", "силуэт",
+        "невидимое или закрытое", "рёбер: 30", "(processing, ось y окна вниз)"},
+       {"алгоритм художника и z-буфер", "алгоритм художника (сортировка по глубине)", "z-буфер",
+        "пикселей", "конфликты: "}}};
+  for (const Want& w : wants)
+    for (const auto& [spec, words] :
+         {std::pair{&ico, &w.hidden_lines}, std::pair{&cyclic, &w.painter}}) {
+      PictureOptions o;
+      o.lang = w.lang;
+      o.api = Api::Processing;  // "(processing, window y down)" in their words
+      const Picture p = draw_picture(spec->info->drawable(spec->given), o);
+      const XmlCheck c = check_xml(p.svg);
+      ASSERT_TRUE(c.ok) << c.problem;
+      const std::string said = picture_words(p.svg) + p.summary;
+      for (const std::string& word : *words)
+        EXPECT_NE(said.find(word), std::string::npos) << word << " in\n" << said;
+      EXPECT_EQ(latin_words(said), std::vector<std::string>{}) << said;
+      EXPECT_EQ(said.find("visible"), std::string::npos) << said;
+      EXPECT_EQ(said.find("hidden"), std::string::npos) << said;
+    }
+  // English: the caption as it always was.
+  const Picture en = draw_picture(ico.info->drawable(ico.given), PictureOptions{});
+  for (const char* line :
+       {"<title>hidden lines</title>", ">perspective from the eye (3, 5, 7) toward ",
+        ">solid: visible · bold: silhouette · dashed: hidden or covered<",
+        " split where other faces cover them<"})
+    EXPECT_NE(en.svg.find(line), std::string::npos) << line << " in\n" << en.svg;
+  EXPECT_EQ(en.summary.rfind("30 edges: ", 0), 0u) << en.summary;
+  // `frustum draw --lang ru`: the summary it prints.
+  const std::string file = ::testing::TempDir() + "frustum_draw_lang_test.svg";
+  std::ostringstream out, err;
+  ASSERT_EQ(
+      app::run_draw(test::source_path("problems/seeds/003_polygons_backface.yaml"),
+                    "seed003-ico-hidden-lines", file, 24, app::Output{out, err, false}, Lang::Ru),
+      0)
+      << err.str();
+  std::remove(file.c_str());
+  EXPECT_NE(out.str().find(": рёбер: 30; видимых: "), std::string::npos) << out.str();
 }
 
 }  // namespace

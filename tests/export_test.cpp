@@ -514,9 +514,11 @@ problems:
   ASSERT_NE(answer_panel, std::string::npos);
   EXPECT_GT(html.find("{{{correct_answers.frustum_figure}}}"), answer_panel) << html;
   EXPECT_EQ(sort.size(), 3u);  // info.json, question.html, server.py: no figure file
-  // The figure is the variant's SVG, drawn as `frustum draw` draws it, with a Japanese alt text.
+  // The figure is the variant's SVG, drawn as `frustum draw --lang ja` draws it, with a Japanese
+  // alt text and Japanese captions.
   const std::string& server = sort.at("server.py");
   PictureOptions picture;
+  picture.lang = Lang::Ja;
   const std::string svg =
       draw_picture(set.problems[0].info->drawable(set.problems[0].given), picture).svg;
   EXPECT_NE(server.find(base64(svg)), std::string::npos);

@@ -245,7 +245,7 @@ TEST(LectureExercises, TheAspectRatioOnTheTopIsNamedAndExplainedTruly) {
       "b.yaml");
   for (const Misconception& m :
        builtin_kinds().find("projection_matrix")->misconceptions(square.problems[0].given))
-    EXPECT_NE(m.name, "aspect ratio on the top");
+    EXPECT_NE(m.name.en(), "aspect ratio on the top");
 }
 
 // Processing's perspective() with no arguments: fovy = 60°, aspect = width/height, cameraZ =

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <type_traits>
+
 #include "solver/derivation/derivation.hpp"
 #include "solver/derivation/vocabulary.hpp"
 #include "typeset_corpus.hpp"
@@ -53,6 +56,23 @@ TEST(Said, DataWordsAreFoundExactlyOrKeptAsWritten) {
   EXPECT_EQ(words::vocabulary_word("plane").in(Lang::Ja), "plane");
   EXPECT_EQ(words::vocabulary_word("0110").in(Lang::Ru), "0110");
   EXPECT_EQ(words::vocabulary_word("Front").in(Lang::Ja), "Front");
+}
+
+// A Said can only be made from a phrase, from all three texts or verbatim: English alone does
+// not convert to one (nothing is translated by looking its English up).
+static_assert(!std::is_convertible_v<std::string, Said>);
+static_assert(!std::is_convertible_v<const char*, Said>);
+static_assert(!std::is_constructible_v<Said, std::string>);
+
+// A counted word agrees with its number in Russian (1 треугольник, 2 треугольника, 5
+// треугольников) and in English (1 triangle): every counted word has all its forms.
+TEST(Said, EveryCountedWordHasItsForms) {
+  EXPECT_FALSE(words::count_forms().empty());
+  for (const words::CountForms& f : words::count_forms()) {
+    EXPECT_FALSE(f.en.empty() || f.en_one.empty()) << f.en;
+    EXPECT_FALSE(f.one.empty() || f.few.empty() || f.many.empty()) << f.en;
+    EXPECT_EQ(words::vocabulary_word(f.en).en(), f.en) << "counted words are in the vocabulary";
+  }
 }
 
 // Every step of every kind's generated problems is said in all three languages: a title or

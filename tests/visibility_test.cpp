@@ -214,7 +214,7 @@ TEST(EdgeVisibility, HiddenLineNoteListsTheFrontEdgesWhenNoneIsVisible) {
   EXPECT_EQ(words_of(r, "silhouette").size(), 3u);
   bool seen = false;
   for (const Step& s : r.derivation.steps())
-    if (s.title == "Edge classes") {
+    if (s.title.en() == "Edge classes") {
       seen = true;
       EXPECT_EQ(s.note.en().find("none"), std::string::npos) << s.note.en();
       EXPECT_NE(s.note.en().find("(visible + silhouette): 1-2, 1-3, 2-3."), std::string::npos)
@@ -372,7 +372,7 @@ TEST(EdgeVisibility, EdgeOnFaceIsReportedAndCountsAsBack) {
   // Only the front face is front: its four edges are the silhouette, one loop.
   EXPECT_EQ(words_of(r, "silhouette"), (std::set<std::string>{"0-1", "0-4", "1-5", "4-5"}));
   bool noted = false;
-  for (const Step& s : r.derivation.steps()) noted |= s.title == "Edge-on faces";
+  for (const Step& s : r.derivation.steps()) noted |= s.title.en() == "Edge-on faces";
   EXPECT_TRUE(noted);
 }
 

@@ -21,7 +21,7 @@ using GiNaC::ex;
 
 ex value_of(const std::string& text) {
   const ExpressionResult r = parse_expression(text);
-  EXPECT_TRUE(r) << text << ": " << r.error;
+  EXPECT_TRUE(r) << text << ": " << r.error.en();
   return r ? *r.value : ex(0);
 }
 

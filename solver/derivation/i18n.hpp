@@ -1,7 +1,7 @@
-// The language of derivations and feedback. Steps are recorded in English; a renderer asked
-// for Japanese or Russian translates titles, notes and fixed phrases through one catalogue
-// (phrases_*.cpp), so the kinds never format for a language. Mathematics (formulas, values)
-// is never translated; the words written inside it are (MathText::words).
+// The language of derivations and feedback. Text is said in all three languages where it is
+// written (`Phrase`, `Said`: solver/util/said.hpp) and a renderer picks the reader's; this
+// file names the languages and puts the words written inside mathematics (MathText::words)
+// into one of them. Formulas and values are never translated.
 #pragma once
 
 #include <optional>
@@ -16,11 +16,6 @@ namespace frustum {
 std::optional<Lang> parse_lang(std::string_view code);  // "en", "ja", "ru"
 std::string_view to_string(Lang lang);
 
-// A step title, note or interface phrase in `lang`: a whole-text match first, then a pattern
-// whose {0}, {1} … stand for values or names ("Clip against {0}"), then sentence by sentence,
-// and inside a sentence the known phrases (longest first); text the catalogue does not know
-// stays as written (the language test fails on it).
-std::string tr(std::string_view english, Lang lang);
 // Mathematics in `lang`: its words (MathText::words, \text{…} in the LaTeX) translated, the
 // formulas themselves unchanged.
 MathText tr(const MathText& m, Lang lang);

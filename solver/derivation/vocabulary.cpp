@@ -16,4 +16,24 @@ Said vocabulary_word(std::string_view english) {
   return Said::verbatim(english);
 }
 
+namespace {
+
+constexpr CountForms kCounts[] = {
+    {"triangles", "triangle", "треугольник", "треугольника", "треугольников"},
+    {"window triangles", "window triangle", "треугольник в окне", "треугольника в окне",
+     "треугольников в окне"},
+    {"clipped", "clipped", "отсечён", "отсечены", "отсечено"},
+    {"back faces culled", "back face culled", "нелицевая грань отброшена",
+     "нелицевые грани отброшены", "нелицевых граней отброшено"},
+    {"front", "front", "лицевая", "лицевые", "лицевых"},
+    {"back", "back", "обратная", "обратные", "обратных"},
+    {"visible", "visible", "видимое", "видимых", "видимых"},
+    {"silhouette", "silhouette", "контурное", "контурных", "контурных"},
+    {"hidden", "hidden", "невидимое", "невидимых", "невидимых"},
+};
+
+}  // namespace
+
+std::span<const CountForms> count_forms() { return kCounts; }
+
 }  // namespace frustum::words

@@ -2,6 +2,7 @@
 // each once, in the three languages. A kind's own phrases stay in the kind's file.
 #pragma once
 
+#include <span>
 #include <string_view>
 
 #include "solver/util/said.hpp"
@@ -41,6 +42,14 @@ inline constexpr Phrase kPixelsCovered{"pixel(s) covered", "画素を覆う", "�
 inline constexpr Phrase kNearerAndWritten{"nearer than Z(i, j) and written",
                                           "Z(i, j) より手前なので書き込む",
                                           "ближе, чем Z(i, j), и записано"};
+
+// A word counted by a number in a formula ("3 front" → "3 лицевые"): its English plural and
+// singular (for 1), and the three forms Russian agreement takes: one (1, 21, 31 …), few
+// (2–4, 22–24 …) and many (0, 5–20, 25–30 …).
+struct CountForms {
+  std::string_view en, en_one, one, few, many;
+};
+std::span<const CountForms> count_forms();
 
 // A word that is data rather than a phrase of the code: an answer's category ("front", "edge_on",
 // "visible"), true/false, or a counted word. The word among the ones above with exactly that

@@ -73,7 +73,7 @@ Exact read_exact(const YAML::Node& n, const std::string& file, const std::string
   if (l == "true" || l == "false" || l == "yes" || l == "no")
     return fail("expected a number, got " + quote_excerpt(text));
   const ExpressionResult r = parse_expression(text);
-  if (!r) return fail("cannot read " + quote_excerpt(text) + " as a number: " + r.error);
+  if (!r) return fail("cannot read " + quote_excerpt(text) + " as a number: " + r.error.en());
   WorkBudget budget;
   const Exact e = canonical(*r.value, budget);
   if (budget.exceeded())

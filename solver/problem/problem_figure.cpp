@@ -26,7 +26,7 @@ constexpr Phrase kPixel{"pixel", "画素", "пиксель"};
 double number(const YAML::Node& n) {
   if (!n.IsScalar()) throw std::invalid_argument("not a number");
   const ExpressionResult r = parse_expression(n.Scalar());
-  if (!r) throw std::invalid_argument(r.error);
+  if (!r) throw std::invalid_argument(r.error.en());
   return to_double(*r.value);
 }
 
@@ -184,6 +184,7 @@ std::optional<Figure> problem_figure(const ProblemSpec& p, Lang lang) {
     if (p.info->drawable) {
       PictureOptions options;
       options.api = p.conventions.api;
+      options.lang = lang;
       return Figure{draw_picture(p.info->drawable(p.given), options).svg, "", true};
     }
   } catch (const std::exception&) {  // YAML errors too: givens a figure cannot show

@@ -13,6 +13,8 @@
 #include <string>
 #include <string_view>
 
+#include "solver/util/said.hpp"
+
 namespace frustum {
 
 // Named defaults; every limit can be overridden per call.
@@ -42,7 +44,7 @@ struct ExpressionOptions {
 
 struct ExpressionResult {
   std::optional<GiNaC::ex> value;  // set on success
-  std::string error;               // set on failure: a sentence for a person
+  Said error;                      // set on failure: why, for the person who wrote it
   std::size_t offset = 0;          // byte offset of the error in the input
   bool equation = false;           // the input was "lhs = rhs"
   explicit operator bool() const { return value.has_value(); }

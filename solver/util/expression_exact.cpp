@@ -13,18 +13,27 @@
 
 namespace frustum {
 namespace expression_internal {
+namespace {
+
+// Why a value is not read.
+constexpr Phrase kCannotCompute{"this value cannot be computed", "この値は計算できません",
+                                "это значение нельзя вычислить"};
+constexpr Phrase kNotRealNumber{"not a real number", "実数ではありません",
+                                "не действительное число"};
+
+}  // namespace
 
 // Floating approximation of a constant (no symbols).
 numeric approximate(const ex& e, std::size_t offset) {
   const ex a = evaluate([&] { return e.evalf(); }, offset);
-  if (!is_a<numeric>(a)) fail("this value cannot be computed", offset);
+  if (!is_a<numeric>(a)) fail(say(kCannotCompute), offset);
   return ex_to<numeric>(a);
 }
 
 // The solver is real-valued: a constant must evaluate to a real number.
-void require_real(const ex& e, std::size_t offset, const std::string& hint) {
+void require_real(const ex& e, std::size_t offset, const Said& why) {
   if (has_symbol(e)) return;
-  if (!approximate(e, offset).is_real()) fail("not a real number" + hint, offset);
+  if (!approximate(e, offset).is_real()) fail(why.empty() ? say(kNotRealNumber) : why, offset);
 }
 
 }  // namespace expression_internal

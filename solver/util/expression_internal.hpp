@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "solver/util/expression.hpp"
+#include "solver/util/said.hpp"
 
 namespace frustum::expression_internal {
 
@@ -21,15 +22,28 @@ using GiNaC::ex_to;
 using GiNaC::is_a;
 using GiNaC::numeric;
 
+// What more than one piece says: evaluate() below, the lexer and the parser. A quoted token
+// ('{0}') is placed as written, without its quotes (excerpt()).
+inline constexpr Phrase kDivisionByZero{"division by zero", "0 で割っています", "деление на ноль"};
+inline constexpr Phrase kCannotComputeValue{
+    "this value cannot be computed (it is too large or undefined)",
+    "この値は計算できません (大きすぎるか, 定義されていません)",
+    "это значение нельзя вычислить (оно слишком велико или не определено)"};
+inline constexpr Phrase kNotFiniteNumber{
+    "'{0}' is not a finite number", "`{0}` は有限の数ではありません", "`{0}` — не конечное число"};
+
 // Internal only: parse_expression turns it into an ExpressionResult.
 struct ParseError {
-  std::string message;
+  Said message;
   std::size_t offset;
 };
 
-[[noreturn]] inline void fail(std::string message, std::size_t offset) {
+[[noreturn]] inline void fail(Said message, std::size_t offset) {
   throw ParseError{std::move(message), offset};
 }
+// A reason is said as a phrase (say(kX, ...)), never as English text to be looked up.
+void fail(const char* english, std::size_t offset) = delete;
+void fail(const std::string& english, std::size_t offset) = delete;
 
 // ---------------------------------------------------------------------------------------
 // Tokens (expression_lexer.cpp)
@@ -66,6 +80,9 @@ std::vector<Token> tokenize(std::string_view text);
 
 // The source text of a token in quotes, shortened at a character boundary.
 std::string quoted(std::string_view text, std::size_t offset, std::size_t size);
+// The same without its quotes, for a phrase that places it in each language's own quotes
+// ('{0}' in English, `{0}` in Japanese and Russian).
+std::string excerpt(std::string_view text, std::size_t offset, std::size_t size);
 
 // ---------------------------------------------------------------------------------------
 // Size bounds carried with every value (expression_limits.cpp)
@@ -117,22 +134,23 @@ void check_power(const Value& base, const Value& exponent, const numeric& k,
 
 // Runs a GiNaC operation, turning its exceptions into a located error.
 template <class F>
-ex evaluate(F&& f, std::size_t offset, const char* pole_message = "division by zero") {
+ex evaluate(F&& f, std::size_t offset, const Phrase& pole = kDivisionByZero) {
   try {
     return f();
   } catch (const GiNaC::pole_error&) {
-    fail(pole_message, offset);
+    fail(say(pole), offset);
   } catch (const std::bad_alloc&) {
     throw;
   } catch (const std::exception&) {
-    fail("this value cannot be computed (it is too large or undefined)", offset);
+    fail(say(kCannotComputeValue), offset);
   }
 }
 
 // Floating approximation of a constant (no symbols).
 numeric approximate(const ex& e, std::size_t offset);
 
-// The solver is real-valued: a constant must evaluate to a real number.
-void require_real(const ex& e, std::size_t offset, const std::string& hint);
+// The solver is real-valued: a constant must evaluate to a real number. `why` is the error
+// when it does not (empty: "not a real number").
+void require_real(const ex& e, std::size_t offset, const Said& why = {});
 
 }  // namespace frustum::expression_internal

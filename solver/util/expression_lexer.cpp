@@ -14,6 +14,37 @@ namespace frustum {
 namespace expression_internal {
 namespace {
 
+// Why a text is not read: its characters. A quoted token ('{0}') is placed as written.
+constexpr Phrase kNotText{"invalid UTF-8: a byte that is not text (shown as \uFFFD)",
+                          "不正な UTF-8: 文字でないバイトがあります (\uFFFD と表示)",
+                          "неверная кодировка UTF-8: байт, не являющийся текстом (показан как "
+                          "\uFFFD)"};
+// {0} is the byte in hexadecimal (0xC3), {1} where it is.
+constexpr Phrase kInvalidByte{
+    "invalid UTF-8: byte {0} at byte {1} does not start a valid character",
+    "不正な UTF-8: バイト {1} の `{0}` は正しい文字の始まりではありません",
+    "неверная кодировка UTF-8: байт `{0}` (позиция {1}) не начинает допустимый символ"};
+constexpr Phrase kDecimalExponentTooLarge{
+    "exponent too large in '{0}' (powers of ten are limited to e±{1})",
+    "`{0}` の指数が大きすぎます (10 のべきは e±{1} まで)",
+    "слишком большой показатель в `{0}` (степени десяти — не дальше e±{1})"};
+constexpr Phrase kSuperscriptMinusAlone{"'⁻' must be followed by superscript digits",
+                                        "'⁻' の後には上付きの数字が必要です",
+                                        "после '⁻' должны идти цифры верхнего индекса"};
+// {0} is the character as shown (quoted, with its code: "'€' (U+20AC)"; a control character
+// by its code only), {1} where it is.
+constexpr Phrase kUnsupportedCharacter{"unsupported character {0} at byte {1}",
+                                       "使えない文字 `{0}` (バイト {1})",
+                                       "недопустимый символ `{0}` (байт {1})"};
+constexpr Phrase kUnsupportedComma{
+    "unsupported character {0} at byte {1}; write decimals with a point, e.g. 0.5",
+    "使えない文字 `{0}` (バイト {1}). 小数は小数点で書きます (例: 0.5)",
+    "недопустимый символ `{0}` (байт {1}); дробную часть отделяйте точкой, например 0.5"};
+constexpr Phrase kUnsupportedBracket{
+    "unsupported character {0} at byte {1}; use ( ) for grouping",
+    "使えない文字 `{0}` (バイト {1}). まとめるには ( ) を使います",
+    "недопустимый символ `{0}` (байт {1}); для группировки используйте ( )"};
+
 constexpr std::size_t kMaxQuotedBytes = 32;
 
 // ---------------------------------------------------------------------------------------
@@ -98,14 +129,12 @@ std::vector<Glyph> decode_utf8(std::string_view text) {
       code = (code << 6) | (b & 0x3F);
     }
     // parse_yaml replaces invalid bytes with U+FFFD; name the cause, not the placeholder.
-    if (valid && code == 0xFFFD)
-      fail("invalid UTF-8: a byte that is not text (shown as \uFFFD)", i);
+    if (valid && code == 0xFFFD) fail(say(kNotText), i);
     if (!valid) {
-      std::ostringstream out;
-      out << "invalid UTF-8: byte 0x" << std::uppercase << std::hex << std::setw(2)
-          << std::setfill('0') << static_cast<unsigned>(b0) << std::dec << " at byte " << i
-          << " does not start a valid character";
-      fail(out.str(), i);
+      std::ostringstream hex;
+      hex << "0x" << std::uppercase << std::hex << std::setw(2) << std::setfill('0')
+          << static_cast<unsigned>(b0);
+      fail(say(kInvalidByte, hex.str(), i), i);
     }
     glyphs.push_back({fold(code), code, i, size});
     i += size;
@@ -169,7 +198,7 @@ class Lexer {
       } else if (superscript_digit(c) >= 0 || c == kSuperscriptMinus) {
         tokens.push_back(superscript());
       } else if (c == kInfinitySign) {
-        fail("'∞' is not a finite number", g.offset);
+        fail(say(kNotFiniteNumber, "∞"), g.offset);
       } else {
         tokens.push_back(punctuation());
       }
@@ -215,10 +244,10 @@ class Lexer {
       const bool too_large =
           digits.size() > 6 || (!digits.empty() && std::stol(digits) > kMaxDecimalExponent);
       if (too_large) {
-        fail("exponent too large in " +
-                 quoted(text_, glyphs_[first].offset, offset_at(i_) - glyphs_[first].offset) +
-                 " (powers of ten are limited to e±" + std::to_string(kMaxDecimalExponent) + ")",
-             glyphs_[first].offset);
+        const std::size_t begin = glyphs_[first].offset;
+        fail(say(kDecimalExponentTooLarge, excerpt(text_, begin, offset_at(i_) - begin),
+                 kMaxDecimalExponent),
+             begin);
       }
       exponent = digits.empty() ? 0 : std::stol(digits);
       if (sign == U'-') exponent = -exponent;
@@ -249,7 +278,7 @@ class Lexer {
     while (superscript_digit(code_at(i_)) >= 0) {
       digits += static_cast<char>('0' + superscript_digit(glyphs_[i_++].code));
     }
-    if (digits.empty()) fail("'⁻' must be followed by superscript digits", glyphs_[first].offset);
+    if (digits.empty()) fail(say(kSuperscriptMinusAlone), glyphs_[first].offset);
     const numeric value = integer_from_digits(digits);
     return make(TokenKind::kSuperscript, first, negative ? -value : value);
   }
@@ -291,19 +320,16 @@ class Lexer {
       default:
         break;
     }
-    std::string message = "unsupported character ";
     // Control characters are named by code only; printing them would garble the message.
-    if (g.original >= 0x20 && g.original != 0x7F && !(g.original >= 0x80 && g.original < 0xA0)) {
-      message += quoted(text_, g.offset, g.size) + " (" + hex_code(g.original) + ")";
-    } else {
-      message += hex_code(g.original);
-    }
-    message += " at byte " + std::to_string(g.offset);
-    if (g.code == U',') message += "; write decimals with a point, e.g. 0.5";
-    if (g.code == U'[' || g.code == U']' || g.code == U'{' || g.code == U'}') {
-      message += "; use ( ) for grouping";
-    }
-    fail(message, g.offset);
+    const std::string shown =
+        g.original >= 0x20 && g.original != 0x7F && !(g.original >= 0x80 && g.original < 0xA0)
+            ? quoted(text_, g.offset, g.size) + " (" + hex_code(g.original) + ")"
+            : hex_code(g.original);
+    const bool bracket = g.code == U'[' || g.code == U']' || g.code == U'{' || g.code == U'}';
+    const Phrase& why = g.code == U',' ? kUnsupportedComma
+                        : bracket      ? kUnsupportedBracket
+                                       : kUnsupportedCharacter;
+    fail(say(why, shown, g.offset), g.offset);
   }
 
   std::string_view text_;
@@ -313,8 +339,8 @@ class Lexer {
 
 }  // namespace
 
-// The source text of a token in quotes, shortened at a character boundary.
-std::string quoted(std::string_view text, std::size_t offset, std::size_t size) {
+// The source text of a token, shortened at a character boundary ("1+1+1...").
+std::string excerpt(std::string_view text, std::size_t offset, std::size_t size) {
   std::string_view s = text.substr(offset, size);
   const bool shorten = s.size() > kMaxQuotedBytes;
   if (shorten) {
@@ -323,11 +349,15 @@ std::string quoted(std::string_view text, std::size_t offset, std::size_t size) 
     s = s.substr(0, cut);
   }
   std::string out;
-  out.reserve(s.size() + 5);
-  out += '\'';
+  out.reserve(s.size() + 3);
   out.append(s);
-  out += shorten ? "...'" : "'";
+  if (shorten) out += "...";
   return out;
+}
+
+// The same in quotes.
+std::string quoted(std::string_view text, std::size_t offset, std::size_t size) {
+  return "'" + excerpt(text, offset, size) + "'";
 }
 
 std::vector<Token> tokenize(std::string_view text) { return Lexer(text, decode_utf8(text)).run(); }

@@ -14,6 +14,36 @@
 namespace frustum::expression_internal {
 namespace {
 
+// Why a text is not read: the limits that keep it from growing without bound. Values (a
+// number, a power written as GiNaC prints it, a limit) are placed as written.
+constexpr Phrase kNestedTooDeeply{
+    "nested too deeply (more than {0} levels of brackets, functions, signs or powers)",
+    "入れ子が深すぎます (括弧, 関数, 符号, べきが {0} 段を超えています)",
+    "слишком глубокая вложенность (больше {0} уровней скобок, функций, знаков или степеней)"};
+constexpr Phrase kCombinedExponentTooLarge{
+    "exponent too large (the powers combine to an exponent of {0}; the limit is {1})",
+    "指数が大きすぎます (べきを合わせた指数は {0}, 上限は {1})",
+    "слишком большой показатель (степени дают вместе показатель {0}; предел {1})"};
+constexpr Phrase kNumberTooLarge{"number too large (it would have {0} bits; the limit is {1})",
+                                 "数が大きすぎます ({0} ビットになります. 上限は {1})",
+                                 "слишком большое число (в нём было бы {0} бит; предел {1})"};
+constexpr Phrase kTooManyTerms{
+    "the expression is too big (expanded it would have more than {0} terms)",
+    "式が大きすぎます (展開すると {0} 項を超えます)",
+    "выражение слишком велико (в раскрытом виде больше {0} членов)"};
+constexpr Phrase kRootTooHigh{"roots beyond the {0}th are not supported (exponent {1})",
+                              "{0} 乗根を超える根は扱えません (指数 {1})",
+                              "корни степени выше {0} не поддерживаются (показатель {1})"};
+// {0}^{1}: the power; {2}: how many bits (a number, or kFarMoreThan).
+constexpr Phrase kPowerTooLarge{
+    "exponent too large ({0}^{1} would have {2} bits; the limit is {3})",
+    "指数が大きすぎます (`{0}^{1}` は {2} ビットになります. 上限は {3})",
+    "слишком большой показатель (в `{0}^{1}` было бы {2} бит; предел {3})"};
+constexpr Phrase kFarMoreThan{"far more than {0}", "{0} をはるかに超える", "намного больше {0}"};
+constexpr Phrase kExponentTooLarge{"exponent too large ({0}; the limit is {1})",
+                                   "指数が大きすぎます (`{0}`. 上限は {1})",
+                                   "слишком большой показатель (`{0}`; предел {1})"};
+
 // expand() (here on divisors, and downstream) multiplies sums out; (a+b+c+d)^1000 or a
 // product of many sums would create more terms than memory holds.
 constexpr double kMaxExpandedTerms = 10'000;
@@ -72,9 +102,7 @@ int nesting_limit(const ExpressionOptions& options) {
 
 Nesting::Nesting(int& depth, int limit, std::size_t offset) : depth_(depth) {
   if (depth_ >= limit) {
-    fail("nested too deeply (more than " + std::to_string(limit) +
-             " levels of brackets, functions, signs or powers)",
-         offset);
+    fail(say(kNestedTooDeeply, limit), offset);
   }
   ++depth_;
 }
@@ -83,20 +111,14 @@ void check_value_size(const Value& v, const ExpressionOptions& options, std::siz
   const ExactSize size = exact_size(v.value);
   // GiNaC merges powers: (x^1000)^4 is x^4000.
   if (size.max_exponent > numeric(options.max_exponent)) {
-    fail("exponent too large (the powers combine to an exponent of " + describe(size.max_exponent) +
-             "; the limit is " + std::to_string(options.max_exponent) + ")",
-         offset);
+    fail(say(kCombinedExponentTooLarge, describe(size.max_exponent), options.max_exponent), offset);
   }
   // Products of big numbers are bounded like powers: 99^99*99^99*... grows without one.
   if (static_cast<std::size_t>(size.max_bits) > options.max_exact_bits) {
-    fail("number too large (it would have " + std::to_string(size.max_bits + 1) +
-             " bits; the limit is " + std::to_string(options.max_exact_bits) + ")",
-         offset);
+    fail(say(kNumberTooLarge, size.max_bits + 1, options.max_exact_bits), offset);
   }
   if (size.work > kMaxExpandedTerms) {
-    fail("the expression is too big (expanded it would have more than " +
-             whole_number(kMaxExpandedTerms) + " terms)",
-         offset);
+    fail(say(kTooManyTerms, whole_number(kMaxExpandedTerms)), offset);
   }
 }
 
@@ -109,9 +131,7 @@ void check_power(const Value& base, const Value& exponent, const numeric& k,
   if (rational && !integer && exact_k.denom() > kMaxParsedRootIndex) {
     std::ostringstream k_text;
     k_text << exact_k;
-    fail("roots beyond the " + std::to_string(kMaxParsedRootIndex) +
-             "th are not supported (exponent " + k_text.str() + ")",
-         exponent_offset);
+    fail(say(kRootTooHigh, kMaxParsedRootIndex, k_text.str()), exponent_offset);
   }
 
   // GiNaC evaluates rational^(p/q) through rational^p: about |p| * height bits.
@@ -122,16 +142,14 @@ void check_power(const Value& base, const Value& exponent, const numeric& k,
       cost_k > kHuge ? std::numeric_limits<double>::infinity() : cost_k.to_double() * base.height;
   const double max_bits = static_cast<double>(options.max_exact_bits);
   if (cost_bits > max_bits) {
-    const std::string size =
-        std::isinf(cost_bits) ? "far more than " + whole_number(max_bits) : whole_number(cost_bits);
-    fail("exponent too large (" + describe(base.value) + "^" + describe(exponent.value) +
-             " would have " + size + " bits; the limit is " + whole_number(max_bits) + ")",
+    const Said size = std::isinf(cost_bits) ? say(kFarMoreThan, whole_number(max_bits))
+                                            : Said::verbatim(whole_number(cost_bits));
+    fail(say(kPowerTooLarge, describe(base.value), describe(exponent.value), size,
+             whole_number(max_bits)),
          offset);
   }
   if (abs_k > numeric(options.max_exponent)) {
-    fail("exponent too large (" + describe(exponent.value) + "; the limit is " +
-             std::to_string(options.max_exponent) + ")",
-         exponent_offset);
+    fail(say(kExponentTooLarge, describe(exponent.value), options.max_exponent), exponent_offset);
   }
 }
 

@@ -29,6 +29,107 @@ namespace frustum {
 namespace expression_internal {
 namespace {
 
+// Why a text is not read: its grammar, its names and its values. A quoted token ('{0}') is
+// placed as written; so are a name's example, the variables and a limit.
+constexpr Phrase kEmptyExpression{"empty expression", "式が空です", "пустое выражение"};
+constexpr Phrase kEquationNotAllowed{"'=' is not allowed here: give an expression, not an equation",
+                                     "ここでは '=' は使えません: 方程式ではなく式を書いてください",
+                                     "здесь нельзя писать '=': нужно выражение, а не уравнение"};
+constexpr Phrase kOnlyOneEquals{"only one '=' is allowed", "'=' は 1 つだけ書けます",
+                                "допускается только один знак '='"};
+constexpr Phrase kUnmatchedClose{"unmatched ')'", "対応する '(' のない ')'", "')' без парной '('"};
+constexpr Phrase kUnexpected{"unexpected '{0}'", "予期しない `{0}` があります",
+                             "неожиданно встретилось `{0}`"};
+constexpr Phrase kMissingOperator{"missing operator before '{0}' (write * to multiply)",
+                                  "`{0}` の前に演算子がありません (掛け算は * で書きます)",
+                                  "перед `{0}` нет знака операции (умножение пишется через *)"};
+// {1}: where the degree sign is.
+constexpr Phrase kDegreeSignInGiven{
+    "unsupported character '{0}' (U+00B0) at byte {1}: give the angle as a number in the "
+    "set's unit",
+    "使えない文字 `{0}` (U+00B0, バイト {1}): 角度はこの問題集の単位で数として書いてください",
+    "недопустимый символ `{0}` (U+00B0, байт {1}): запишите угол числом в единицах задания"};
+constexpr Phrase kIncomplete{"incomplete expression: expected a number, name or '(' after '{0}'",
+                             "式が途中で終わっています: `{0}` の後に数, 名前または '(' が必要です",
+                             "незаконченное выражение: после `{0}` нужно число, имя или '('"};
+constexpr Phrase kEmptyBrackets{"empty brackets '()'", "空の括弧 '()'", "пустые скобки '()'"};
+constexpr Phrase kExpectedFactor{"expected a number, name or '(' but found '{0}'",
+                                 "数, 名前または '(' が必要ですが, `{0}` があります",
+                                 "нужно число, имя или '(', а встретилось `{0}`"};
+// {0}: where the '(' is.
+constexpr Phrase kNeverClosed{"the '(' at byte {0} is never closed",
+                              "バイト {0} の '(' が閉じていません",
+                              "скобка '(' в байте {0} не закрыта"};
+constexpr Phrase kExpectedClose{"expected ')' but found '{0}'",
+                                "')' が必要ですが, `{0}` があります",
+                                "нужна ')', а встретилось `{0}`"};
+// {1}: the function written with an argument, sqrt(3).
+constexpr Phrase kNeedsBrackets{"'{0}' needs its argument in brackets, e.g. {1}",
+                                "`{0}` の引数は括弧で囲みます (例: `{1}`)",
+                                "аргумент `{0}` пишется в скобках, например `{1}`"};
+constexpr Phrase kUnknownName{"unknown name '{0}'", "未知の名前 `{0}`", "неизвестное имя `{0}`"};
+constexpr Phrase kUnknownNameEuler{"unknown name '{0}' (write exp(1) for Euler's number)",
+                                   "未知の名前 `{0}` (ネイピア数は exp(1) と書きます)",
+                                   "неизвестное имя `{0}` (число Эйлера пишется exp(1))"};
+// {1}: the name's letters as a product, x*y.
+constexpr Phrase kUnknownNameProduct{
+    "unknown name '{0}' (write a product with '*' or spaces, e.g. {1})",
+    "未知の名前 `{0}` (積は '*' か空白で書きます. 例: `{1}`)",
+    "неизвестное имя `{0}` (произведение пишется через '*' или пробел, например `{1}`)"};
+// {1}: the variables, x y z.
+constexpr Phrase kUnknownNameVariables{"unknown name '{0}' (the variables here are {1})",
+                                       "未知の名前 `{0}` (ここで使える変数: `{1}`)",
+                                       "неизвестное имя `{0}` (переменные здесь: `{1}`)"};
+constexpr Phrase kNegativePowerOfZero{"division by zero (0 to a negative power)",
+                                      "0 で割っています (0 の負のべき)",
+                                      "деление на ноль (0 в отрицательной степени)"};
+constexpr Phrase kUnknownOperator{"internal error: unknown operator", "内部エラー: 未知の演算子",
+                                  "внутренняя ошибка: неизвестная операция"};
+constexpr Phrase kExponentWithVariables{
+    "the exponent must be a number, not an expression with variables",
+    "指数は変数を含まない数でなければなりません",
+    "показатель степени должен быть числом, а не выражением с переменными"};
+constexpr Phrase kExponentNotReal{"not a real number (the exponent)", "実数ではありません (指数)",
+                                  "не действительное число (показатель степени)"};
+constexpr Phrase kNegativeToIrrational{
+    "not a real number (a negative number to an irrational power)",
+    "実数ではありません (負の数の無理数乗)",
+    "не действительное число (отрицательное число в иррациональной степени)"};
+constexpr Phrase kEvenRootOfNegative{
+    "not a real number (an even root of a negative number)",
+    "実数ではありません (負の数の偶数乗根)",
+    "не действительное число (корень чётной степени из отрицательного числа)"};
+// {0}: asin or acos as written.
+constexpr Phrase kNeedsUnitRange{"not a real number ('{0}' needs a value between -1 and 1)",
+                                 "実数ではありません (`{0}` の引数は -1 から 1 の間です)",
+                                 "не действительное число (аргумент `{0}` должен быть от -1 до 1)"};
+constexpr Phrase kLogNeedsPositive{
+    "not a real number (log needs a positive number)",
+    "実数ではありません (log の引数は正の数です)",
+    "не действительное число (аргумент log должен быть положительным)"};
+constexpr Phrase kZeroToZero{"0^0 is undefined", "0^0 は定義されていません", "0^0 не определено"};
+constexpr Phrase kLogOfZero{"log(0) is undefined", "log(0) は定義されていません",
+                            "log(0) не определён"};
+constexpr Phrase kTanPole{"undefined: tan has a pole here (division by zero)",
+                          "定義されていません: tan はここで極をもちます (0 で割っています)",
+                          "не определено: здесь у tan полюс (деление на ноль)"};
+// {1}: the limit.
+constexpr Phrase kAngleTooLarge{"the angle in '{0}' is too large (at most {1})",
+                                "`{0}` の角度が大きすぎます (最大 {1})",
+                                "угол в `{0}` слишком велик (не больше {1})"};
+constexpr Phrase kArgumentTooLarge{"the argument of '{0}' is too large (at most {1})",
+                                   "`{0}` の引数が大きすぎます (最大 {1})",
+                                   "аргумент `{0}` слишком велик (не больше {1})"};
+// The whole text: {0} its length, {1} the limit, in bytes.
+constexpr Phrase kTooLong{"the expression is too long ({0} bytes; the limit is {1})",
+                          "式が長すぎます ({0} バイトあります. 上限は {1})",
+                          "выражение слишком длинное ({0} байт; предел {1})"};
+constexpr Phrase kOutOfMemory{"the expression is too large to evaluate (out of memory)",
+                              "式が大きすぎて評価できません (メモリ不足)",
+                              "выражение слишком велико для вычисления (не хватает памяти)"};
+constexpr Phrase kCannotEvaluate{"the expression cannot be evaluated", "式を評価できません",
+                                 "выражение нельзя вычислить"};
+
 // Proving a divisor zero by expand() costs up to ~40 us a term for sums of radicals, so one
 // parse spends at most this many terms on it, then falls back to a numeric test.
 constexpr double kMaxZeroTestTerms = 2'000;
@@ -69,23 +170,21 @@ class Parser {
 
   ExpressionResult run() {
     ExpressionResult result;
-    if (peek().kind == TokenKind::kEnd) fail("empty expression", 0);
+    if (peek().kind == TokenKind::kEnd) fail(say(kEmptyExpression), 0);
     Value value = sum();
     if (peek().kind == TokenKind::kEquals) {
       const Token& equals = advance();
-      if (!options_.allow_equation) {
-        fail("'=' is not allowed here: give an expression, not an equation", equals.offset);
-      }
+      if (!options_.allow_equation) fail(say(kEquationNotAllowed), equals.offset);
       const Value rhs = sum();
-      if (peek().kind == TokenKind::kEquals) fail("only one '=' is allowed", peek().offset);
+      if (peek().kind == TokenKind::kEquals) fail(say(kOnlyOneEquals), peek().offset);
       value = combine(value, rhs, TokenKind::kMinus, equals.offset);
       result.equation = true;
     }
     const Token& end = peek();
-    if (end.kind == TokenKind::kClose) fail("unmatched ')'", end.offset);
-    if (end.kind != TokenKind::kEnd) fail("unexpected " + quote(end), end.offset);
+    if (end.kind == TokenKind::kClose) fail(say(kUnmatchedClose), end.offset);
+    if (end.kind != TokenKind::kEnd) fail(say(kUnexpected, shown(end)), end.offset);
     check_value_size(value, options_, 0);
-    require_real(value.value, 0, "");
+    require_real(value.value, 0);
     result.value = value.value;
     return result;
   }
@@ -97,7 +196,8 @@ class Parser {
     if (t.kind != TokenKind::kEnd) ++pos_;
     return t;
   }
-  std::string quote(const Token& t) const { return quoted(text_, t.offset, t.size); }
+  // A token as a phrase quotes it ('{0}'), without the quotes.
+  std::string shown(const Token& t) const { return excerpt(text_, t.offset, t.size); }
 
   static bool starts_factor(TokenKind kind) {
     return kind == TokenKind::kNumber || kind == TokenKind::kName || kind == TokenKind::kPi ||
@@ -123,9 +223,7 @@ class Parser {
         const Value right = signed_factor();
         left = combine(left, right, next.kind, next.offset);
       } else if (starts_factor(next.kind)) {
-        if (next.kind == TokenKind::kNumber) {
-          fail("missing operator before " + quote(next) + " (write * to multiply)", next.offset);
-        }
+        if (next.kind == TokenKind::kNumber) fail(say(kMissingOperator, shown(next)), next.offset);
         const Value right = power();
         left = combine(left, right, TokenKind::kTimes, next.offset);
       } else {
@@ -156,9 +254,7 @@ class Parser {
     if (peek().kind == TokenKind::kDegree) {
       const Token& degree = advance();
       if (!options_.degree_sign)
-        fail("unsupported character " + quote(degree) + " (U+00B0) at byte " +
-                 std::to_string(degree.offset) + ": give the angle as a number in the set's unit",
-             degree.offset);
+        fail(say(kDegreeSignInGiven, shown(degree), degree.offset), degree.offset);
       Value per_degree{numeric(1, 180)};
       settle(per_degree);
       base = combine(combine(base, per_degree, TokenKind::kTimes, degree.offset), Value{GiNaC::Pi},
@@ -211,14 +307,11 @@ class Parser {
 
   [[noreturn]] void expected_factor(const Token& previous) const {
     const Token& t = peek();
-    if (t.kind == TokenKind::kEnd) {
-      fail("incomplete expression: expected a number, name or '(' after " + quote(previous),
-           t.offset);
-    }
+    if (t.kind == TokenKind::kEnd) fail(say(kIncomplete, shown(previous)), t.offset);
     if (t.kind == TokenKind::kClose && pos_ > 0 && previous.kind == TokenKind::kOpen) {
-      fail("empty brackets '()'", previous.offset);
+      fail(say(kEmptyBrackets), previous.offset);
     }
-    fail("expected a number, name or '(' but found " + quote(t), t.offset);
+    fail(say(kExpectedFactor, shown(t)), t.offset);
   }
 
   void close(const Token& open) {
@@ -226,9 +319,9 @@ class Parser {
     if (t.kind == TokenKind::kClose) {
       advance();
     } else if (t.kind == TokenKind::kEnd) {
-      fail("the '(' at byte " + std::to_string(open.offset) + " is never closed", open.offset);
+      fail(say(kNeverClosed, open.offset), open.offset);
     } else {
-      fail("expected ')' but found " + quote(t), t.offset);
+      fail(say(kExpectedClose, shown(t)), t.offset);
     }
   }
 
@@ -247,27 +340,25 @@ class Parser {
     }
     const std::string key = ascii_lower(t.name);
     if (key == "pi") return Value{GiNaC::Pi};
-    if (function) {
-      fail(quote(t) + " needs its argument in brackets, e.g. " + t.name + "(3)", t.offset);
-    }
+    if (function) fail(say(kNeedsBrackets, shown(t), t.name + "(3)"), t.offset);
     if (key == "inf" || key == "infinity" || key == "nan") {
-      fail(quote(t) + " is not a finite number", t.offset);
+      fail(say(kNotFiniteNumber, shown(t)), t.offset);
     }
-    std::string message = "unknown name " + quote(t);
-    if (key == "e") {
-      message += " (write exp(1) for Euler's number)";
-    } else if (t.name.size() > 1 && std::all_of(t.name.begin(), t.name.end(), [&](char c) {
-                 return options_.symbols.count(std::string(1, c)) > 0;
-               })) {
+    if (key == "e") fail(say(kUnknownNameEuler, shown(t)), t.offset);
+    if (t.name.size() > 1 && std::all_of(t.name.begin(), t.name.end(), [&](char c) {
+          return options_.symbols.count(std::string(1, c)) > 0;
+        })) {
       std::string product(1, t.name[0]);
       for (std::size_t i = 1; i < t.name.size(); ++i) product += std::string("*") + t.name[i];
-      message += " (write a product with '*' or spaces, e.g. " + product + ")";
-    } else if (!options_.symbols.empty()) {
-      message += " (the variables here are";
-      for (const auto& entry : options_.symbols) message += " " + entry.first;
-      message += ")";
+      fail(say(kUnknownNameProduct, shown(t), product), t.offset);
     }
-    fail(message, t.offset);
+    if (!options_.symbols.empty()) {
+      std::string variables;
+      for (const auto& entry : options_.symbols)
+        variables += (variables.empty() ? "" : " ") + entry.first;
+      fail(say(kUnknownNameVariables, shown(t), variables), t.offset);
+    }
+    fail(say(kUnknownName, shown(t)), t.offset);
   }
 
   // ---- operations, each guarded before GiNaC computes anything large
@@ -295,7 +386,7 @@ class Parser {
       case TokenKind::kTimes:
       case TokenKind::kDivide:
         if (op == TokenKind::kDivide && is_exact_zero(b.value, offset)) {
-          fail("division by zero", offset);
+          fail(say(kDivisionByZero), offset);
         }
         r.value = evaluate(
             [&] { return op == TokenKind::kTimes ? a.value * b.value : a.value / b.value; },
@@ -303,7 +394,7 @@ class Parser {
         r.height = a.height + b.height;
         break;
       default:
-        fail("internal error: unknown operator", offset);
+        fail(say(kUnknownOperator), offset);
     }
     settle(r);
     // A sum only adds its parts' terms; checking every '+' of a long sum would cost O(n^2),
@@ -317,10 +408,10 @@ class Parser {
   Value raise(const Value& base, const Value& exponent, std::size_t offset,
               std::size_t exponent_offset) {
     if (has_symbol(exponent.value)) {
-      fail("the exponent must be a number, not an expression with variables", exponent_offset);
+      fail(say(kExponentWithVariables), exponent_offset);
     }
     const numeric k = approximate(exponent.value, exponent_offset);
-    if (!k.is_real()) fail("not a real number (the exponent)", exponent_offset);
+    if (!k.is_real()) fail(say(kExponentNotReal), exponent_offset);
     check_power(base, exponent, k, options_, offset, exponent_offset);
     const bool rational = is_a<numeric>(exponent.value);  // exact numerics are rational here
     const numeric exact_k = rational ? ex_to<numeric>(exponent.value) : numeric(0);
@@ -330,8 +421,8 @@ class Parser {
     Value r;
     const bool constant_base = !has_symbol(base.value);
     if (constant_base && is_exact_zero(base.value, offset)) {
-      if (k.is_zero()) fail("0^0 is undefined", offset);
-      if (k.is_negative()) fail("division by zero (0 to a negative power)", offset);
+      if (k.is_zero()) fail(say(kZeroToZero), offset);
+      if (k.is_negative()) fail(say(kNegativePowerOfZero), offset);
       // 0 to any positive power is 0. GiNaC leaves 0^(irrational) unevaluated, and dividing by
       // it later throws from inside GiNaC's evalf, which leaks (found by fuzz_expression).
       r.value = 0;
@@ -344,10 +435,8 @@ class Parser {
       return b.is_real() && b.is_negative();
     }();
     if (negative_base) {
-      if (!rational) fail("not a real number (a negative number to an irrational power)", offset);
-      if (exact_k.denom().is_even()) {
-        fail("not a real number (an even root of a negative number)", offset);
-      }
+      if (!rational) fail(say(kNegativeToIrrational), offset);
+      if (exact_k.denom().is_even()) fail(say(kEvenRootOfNegative), offset);
       const ex magnitude = evaluate([&] { return GiNaC::pow(-base.value, exact_k); }, offset);
       r.value = exact_k.numer().is_odd() ? -magnitude : magnitude;
     } else {
@@ -356,7 +445,7 @@ class Parser {
     r.height = base.height * abs_k.to_double();
     settle(r);
     check_value_size(r, options_, offset);
-    require_real(r.value, offset, "");
+    require_real(r.value, offset);
     return r;
   }
 
@@ -365,7 +454,7 @@ class Parser {
     const ex& x = argument.value;
     const bool constant = !has_symbol(x);
     Value r;
-    std::string hint;
+    Said why_not_real;  // empty: "not a real number"
     switch (function) {
       case Function::kSqrt:
         return raise(argument, Value{numeric(1, 2)}, offset, offset);
@@ -377,9 +466,7 @@ class Parser {
         if (constant) {
           const numeric a = approximate(x, offset);
           if (a.is_real() && GiNaC::abs(a) > numeric(kMaxTrigArgument)) {
-            fail("the angle in " + quote(name) + " is too large (at most " +
-                     whole_number(kMaxTrigArgument) + ")",
-                 offset);
+            fail(say(kAngleTooLarge, shown(name), whole_number(kMaxTrigArgument)), offset);
           }
         }
         r.value = evaluate(
@@ -388,13 +475,13 @@ class Parser {
                      : function == Function::kCos ? GiNaC::cos(x)
                                                   : GiNaC::tan(x);
             },
-            offset, "undefined: tan has a pole here (division by zero)");
+            offset, kTanPole);
         break;
       case Function::kAsin:
       case Function::kAcos:
         r.value = evaluate(
             [&] { return function == Function::kAsin ? GiNaC::asin(x) : GiNaC::acos(x); }, offset);
-        hint = " (" + quote(name) + " needs a value between -1 and 1)";
+        why_not_real = say(kNeedsUnitRange, shown(name));
         break;
       case Function::kAtan:
         r.value = evaluate([&] { return GiNaC::atan(x); }, offset);
@@ -405,22 +492,18 @@ class Parser {
           const numeric a = approximate(x, offset);
           const double limit = static_cast<double>(options_.max_exact_bits) * std::log(2.0);
           if (a.is_real() && GiNaC::abs(a) > numeric(limit)) {
-            fail("the argument of " + quote(name) + " is too large (at most " +
-                     whole_number(std::floor(limit)) + ")",
-                 offset);
+            fail(say(kArgumentTooLarge, shown(name), whole_number(std::floor(limit))), offset);
           }
         }
         r.value = evaluate([&] { return GiNaC::exp(x); }, offset);
         break;
       case Function::kLog:
         if (constant) {
-          if (is_exact_zero(x, offset)) fail("log(0) is undefined", offset);
+          if (is_exact_zero(x, offset)) fail(say(kLogOfZero), offset);
           const numeric a = approximate(x, offset);
-          if (a.is_real() && a.is_negative()) {
-            fail("not a real number (log needs a positive number)", offset);
-          }
+          if (a.is_real() && a.is_negative()) fail(say(kLogNeedsPositive), offset);
         }
-        r.value = evaluate([&] { return GiNaC::log(x); }, offset, "log(0) is undefined");
+        r.value = evaluate([&] { return GiNaC::log(x); }, offset, kLogOfZero);
         break;
       case Function::kAbs:
         r.value = evaluate([&] { return GiNaC::abs(x); }, offset);
@@ -430,7 +513,7 @@ class Parser {
     r.height = argument.height;
     settle(r);
     check_value_size(r, options_, offset);
-    require_real(r.value, offset, hint);
+    require_real(r.value, offset, why_not_real);
     return r;
   }
 
@@ -443,7 +526,7 @@ class Parser {
   WorkBudget zero_test_budget_{kMaxZeroTestTerms};
 };
 
-ExpressionResult failure(std::string message, std::size_t offset) {
+ExpressionResult failure(Said message, std::size_t offset) {
   ExpressionResult result;
   result.error = std::move(message);
   result.offset = offset;
@@ -457,10 +540,8 @@ ExpressionResult failure(std::string message, std::size_t offset) {
 ExpressionResult parse_expression(std::string_view text, const ExpressionOptions& options) {
   // Length first: nothing else runs on oversized input.
   if (text.size() > options.max_length) {
-    return expression_internal::failure("the expression is too long (" +
-                                            std::to_string(text.size()) + " bytes; the limit is " +
-                                            std::to_string(options.max_length) + ")",
-                                        options.max_length);
+    return expression_internal::failure(
+        say(expression_internal::kTooLong, text.size(), options.max_length), options.max_length);
   }
   if (const std::optional<GiNaC::ex> d = parse_decimal_literal(text)) {
     ExpressionResult r;
@@ -473,12 +554,11 @@ ExpressionResult parse_expression(std::string_view text, const ExpressionOptions
   } catch (const expression_internal::ParseError& e) {
     return expression_internal::failure(e.message, e.offset);
   } catch (const std::bad_alloc&) {
-    return expression_internal::failure("the expression is too large to evaluate (out of memory)",
-                                        0);
+    return expression_internal::failure(say(expression_internal::kOutOfMemory), 0);
   } catch (const std::exception&) {
-    return expression_internal::failure("the expression cannot be evaluated", 0);
+    return expression_internal::failure(say(expression_internal::kCannotEvaluate), 0);
   } catch (...) {
-    return expression_internal::failure("the expression cannot be evaluated", 0);
+    return expression_internal::failure(say(expression_internal::kCannotEvaluate), 0);
   }
 }
 

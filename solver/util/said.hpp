@@ -60,10 +60,6 @@ class Said {
   explicit Said(const Phrase& p) : text_{std::string(p.en), std::string(p.ja), std::string(p.ru)} {}
   Said(std::string en, std::string ja, std::string ru)
       : text_{std::move(en), std::move(ja), std::move(ru)} {}
-  // Text written in English that a catalogue translates by its English (being retired: text
-  // a student reads is said through a Phrase).
-  Said(const std::string& english);                          // NOLINT(google-explicit-constructor)
-  Said(const char* english) : Said(std::string(english)) {}  // NOLINT
   static Said verbatim(std::string_view text) {
     return {std::string(text), std::string(text), std::string(text)};
   }

@@ -15,6 +15,18 @@ namespace {
 // Looking within about 8° of the y axis, +y cannot be the up vector.
 constexpr double kUpParallel = 0.99;
 
+// The caption's sentence about the camera; points, vectors and the api's name as written.
+constexpr Phrase kPerspectiveView{"perspective from the eye {0} toward {1}, up {2}",
+                                  "視点 {0} から {1} を見る透視投影, 上方向 {2}",
+                                  "перспектива из глаза {0} на {1}, вверх {2}"};
+constexpr Phrase kOrthographicView{"orthographic along {0}, up {1}",
+                                   "{0} 方向の平行投影, 上方向 {1}",
+                                   "ортографическая проекция вдоль {0}, вверх {1}"};
+// "… (opengl, left-handed, window y down)": the view, the api, then what of these applies.
+constexpr Phrase kViewInApi{"{0} ({1}{2}{3})", "{0} ({1}{2}{3})", "{0} ({1}{2}{3})"};
+constexpr Phrase kLeftHanded{", left-handed", ", 左手系", ", левая система"};
+constexpr Phrase kWindowYDown{", window y down", ", 画面の y は下向き", ", ось y окна вниз"};
+
 std::string point_text(const Eigen::Vector3d& p) {
   return fmt::format("({:g}, {:g}, {:g})", p.x(), p.y(), p.z());
 }
@@ -58,13 +70,12 @@ DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api
   if (std::abs(along_y) > kUpParallel) up = Eigen::Vector3d(0, 0, along_y < 0 ? -1 : 1);
   const MatX<double> m = look_at<double>(eye, center, up, d.left_handed ? Api::DirectX : api);
   d.view_from_world = m;
-  d.description = d.perspective ? fmt::format("perspective from the eye {} toward {}, up {}",
-                                              point_text(eye), point_text(center), point_text(up))
-                                : fmt::format("orthographic along {}, up {}", point_text(forward),
-                                              point_text(up));
-  d.description += fmt::format(" ({}{}{})", to_string(api),
-                               left_handed && api != Api::DirectX ? ", left-handed" : "",
-                               api == Api::Processing ? ", window y down" : "");
+  const Said view = d.perspective
+                        ? say(kPerspectiveView, point_text(eye), point_text(center), point_text(up))
+                        : say(kOrthographicView, point_text(forward), point_text(up));
+  d.description = say(kViewInApi, view, to_string(api),
+                      left_handed && api != Api::DirectX ? Said(kLeftHanded) : Said(),
+                      api == Api::Processing ? Said(kWindowYDown) : Said());
   return d;
 }
 

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "solver/util/said.hpp"
 #include "solver/viewing/conventions.hpp"
 #include "solver/visibility/depth_order.hpp"
 
@@ -20,7 +21,7 @@ struct DrawView {
   Api api = Api::OpenGL;
   bool left_handed = false;  // looking down +z (DirectX, or a left-handed course)
   Eigen::Matrix4d view_from_world = Eigen::Matrix4d::Identity();
-  std::string description;  // one sentence for the picture's caption
+  Said description;  // one sentence for the picture's caption, in every language
 
   // Distance in front of the viewer along the line of sight (> 0 in front).
   double depth(const Eigen::Vector3d& world) const;

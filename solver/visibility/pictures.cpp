@@ -6,6 +6,7 @@
 #include <array>
 
 #include "solver/derivation/svg.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/hidden_lines.hpp"
 #include "solver/visibility/painter_vs_zbuffer.hpp"
@@ -40,9 +41,51 @@ constexpr const char* kRasterCss =
 constexpr std::array<const char*, 8> kPalette = {"#f6d32d", "#62a0ea", "#8ff0a4", "#f66151",
                                                  "#dc8add", "#ffa348", "#99c1f1", "#cdab8f"};
 
-void caption(Svg& svg, double y, const std::vector<std::string>& lines) {
-  for (const std::string& l : lines) {
-    svg.text({kMargin / 2, y}, l, "");
+// What the pictures say: their <title> when the options give none, the caption lines under
+// them and the summary. Counts, coordinates, polygon numbers and pair names as written.
+constexpr Phrase kHiddenLinesTitle{"hidden lines", "隠線消去", "удаление невидимых линий"};
+constexpr Phrase kLineLegend{
+    "solid: visible · bold: silhouette · dashed: hidden or covered",
+    "実線: 可視 · 太線: 輪郭線 · 破線: 不可視, または他の面に覆われた部分",
+    "сплошная: видимое ребро · жирная: силуэт · пунктир: невидимое или закрытое"};
+constexpr Phrase kEdgeSummary{
+    "{0} edges: {1} visible, {2} silhouette, {3} hidden; {4} split",
+    "稜線 {0} 本: 可視 {1}, 輪郭線 {2}, 不可視 {3}; 分割された稜線 {4}",
+    "рёбер: {0}; видимых: {1}, силуэтных: {2}, невидимых: {3}; разбитых: {4}"};
+constexpr Phrase kEdgeCaption{
+    "{0} edges: {1} visible, {2} silhouette, {3} hidden; {4} split where other faces cover them",
+    "稜線 {0} 本: 可視 {1}, 輪郭線 {2}, 不可視 {3}; 他の面に覆われて分割された稜線 {4}",
+    "рёбер: {0}; видимых: {1}, силуэтных: {2}, невидимых: {3}; разбитых перекрытием: {4}"};
+constexpr Phrase kPainterTitle{"painter vs z-buffer", "画家のアルゴリズムと Zバッファ",
+                               "алгоритм художника и z-буфер"};
+constexpr Phrase kPainterSummary{
+    "painter (order {0}) vs z-buffer at {1}×{2}: {3} pixels differ; conflicts: {4}",
+    "画家のアルゴリズム (順序 {0}) と Zバッファ ({1}×{2}): 異なる画素 {3} 個; 矛盾: {4}",
+    "алгоритм художника (порядок {0}) и z-буфер на сетке {1}×{2}: различающихся пикселей — {3}; "
+    "конфликты: {4}"};
+constexpr Phrase kPainterSummaryOnePixel{
+    "painter (order {0}) vs z-buffer at {1}×{2}: {3} pixel differ; conflicts: {4}",
+    "画家のアルゴリズム (順序 {0}) と Zバッファ ({1}×{2}): 異なる画素 {3} 個; 矛盾: {4}",
+    "алгоритм художника (порядок {0}) и z-буфер на сетке {1}×{2}: различающихся пикселей — {3}; "
+    "конфликты: {4}"};
+constexpr Phrase kPainterAndZBuffer{
+    "painter: whole polygons back to front by centroid ({0}); z-buffer: nearest per pixel",
+    "画家のアルゴリズム: 多角形を丸ごと, 重心の奥から手前へ描く ({0}); Zバッファ: "
+    "画素ごとに最も手前",
+    "художник: целые многоугольники по убыванию глубины центра ({0}); z-буфер: ближайший в "
+    "пикселе"};
+constexpr Phrase kPixelsDiffer{
+    "{0} of {1} pixels differ (marked in red); conflicts: {2}",
+    "{1} 画素のうち {0} 画素が異なる (赤で表示); 矛盾: {2}",
+    "различаются пикселей: {0} из {1} (отмечены красным); конфликты: {2}"};
+constexpr Phrase kPainterPanel{"painter's algorithm (depth sort)",
+                               "画家のアルゴリズム (奥行きソート)",
+                               "алгоритм художника (сортировка по глубине)"};
+constexpr Phrase kZBufferPanel{"z-buffer", "Zバッファ", "z-буфер"};
+
+void caption(Svg& svg, double y, const std::vector<Said>& lines, Lang lang) {
+  for (const Said& l : lines) {
+    svg.text({kMargin / 2, y}, l.in(lang), "");
     y += kCaptionLine;
   }
 }
@@ -72,14 +115,13 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
   int counts[3] = {0, 0, 0};
   for (const EdgeLines& e : h.edges) ++counts[static_cast<int>(e.cls)];
   const std::string summary =
-      fmt::format("{} edges: {} visible, {} silhouette, {} hidden; {} split", h.edges.size(),
-                  counts[0], counts[1], counts[2], h.split_edges);
+      say(kEdgeSummary, h.edges.size(), counts[0], counts[1], counts[2], h.split_edges).in(o.lang);
 
-  const std::vector<std::string> lines = {
-      o.title, view.description, "solid: visible · bold: silhouette · dashed: hidden or covered",
-      summary + " where other faces cover them"};
+  const std::vector<Said> lines = {
+      Said::verbatim(o.title), view.description, Said(kLineLegend),
+      say(kEdgeCaption, h.edges.size(), counts[0], counts[1], counts[2], h.split_edges)};
   Svg svg(kCanvas, kCanvas + kCaptionLine * (static_cast<double>(lines.size()) + 1));
-  svg.title(o.title.empty() ? "hidden lines" : o.title);
+  svg.title(o.title.empty() ? kHiddenLinesTitle.in(o.lang) : o.title);
   svg.style(kLineCss);
   // Covered spans first, so solid lines lie on top of dashed ones where they meet.
   for (bool visible : {false, true}) {
@@ -109,7 +151,7 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
     svg.text(fit(screen[k]) + Eigen::Vector2d(4, -4), std::to_string(k),
              on_front[k] ? "vertex" : "vertex-back");
   svg.end_group();
-  caption(svg, kCanvas + kCaptionLine / 2, lines);
+  caption(svg, kCanvas + kCaptionLine / 2, lines, o.lang);
   return {svg.str(), summary};
 }
 
@@ -139,29 +181,26 @@ Picture painter_picture(const Drawable& d, const PictureOptions& o) {
   for (int k : r.sort.order) order += (order.empty() ? "" : " → ") + std::to_string(k);
   std::string conflicts;
   for (const std::string& c : r.sort.conflicts) conflicts += (conflicts.empty() ? "" : ", ") + c;
+  const Said conflicts_said = conflicts.empty() ? Said(words::kNone) : Said::verbatim(conflicts);
   const std::string summary =
-      fmt::format("painter (order {}) vs z-buffer at {}×{}: {} pixel{} differ; conflicts: {}",
-                  order, n, n, r.differing.size(), r.differing.size() == 1 ? "" : "s",
-                  conflicts.empty() ? "none" : conflicts);
-  const std::vector<std::string> lines = {
-      o.title, r.view.description,
-      fmt::format(
-          "painter: whole polygons back to front by centroid ({}); z-buffer: nearest per pixel",
-          order),
-      fmt::format("{} of {} pixels differ (marked in red); conflicts: {}", r.differing.size(),
-                  n * n, conflicts.empty() ? "none" : conflicts)};
+      say(r.differing.size() == 1 ? kPainterSummaryOnePixel : kPainterSummary, order, n, n,
+          r.differing.size(), conflicts_said)
+          .in(o.lang);
+  const std::vector<Said> lines = {Said::verbatim(o.title), r.view.description,
+                                   say(kPainterAndZBuffer, order),
+                                   say(kPixelsDiffer, r.differing.size(), n * n, conflicts_said)};
   const double top = 2 * kCaptionLine;
   const double width = 2 * kPanel + 3 * kGap,
                height = top + kPanel + kCaptionLine * (static_cast<double>(lines.size()) + 1.5);
   Svg svg(width, height);
-  svg.title(o.title.empty() ? "painter vs z-buffer" : o.title);
+  svg.title(o.title.empty() ? kPainterTitle.in(o.lang) : o.title);
   svg.style(kRasterCss);
   const std::array<double, 2> x0 = {kGap, 2 * kGap + kPanel};
   const std::array<const FrameBuffer*, 2> frames = {&r.painter, &r.zbuffer};
-  const std::array<const char*, 2> names = {"painter's algorithm (depth sort)", "z-buffer"};
+  const std::array<const Phrase*, 2> names = {&kPainterPanel, &kZBufferPanel};
   for (std::size_t p = 0; p < 2; ++p) {
     svg.begin_group(p == 0 ? "painter" : "zbuffer");
-    svg.text({x0[p], top - kCaptionLine / 2}, names[p], "");
+    svg.text({x0[p], top - kCaptionLine / 2}, names[p]->in(o.lang), "");
     frame_panel(svg, *frames[p], x0[p], top, cell);
     // Polygon outlines and numbers over the pixels (window y up → SVG y down).
     for (std::size_t k = 0; k < r.window.size(); ++k) {
@@ -180,7 +219,7 @@ Picture painter_picture(const Drawable& d, const PictureOptions& o) {
                (1 - 2 * kDiffInset) * cell, (1 - 2 * kDiffInset) * cell, "diff");
     svg.end_group();
   }
-  caption(svg, top + kPanel + 1.5 * kCaptionLine, lines);
+  caption(svg, top + kPanel + 1.5 * kCaptionLine, lines, o.lang);
   return {svg.str(), summary};
 }
 

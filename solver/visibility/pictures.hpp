@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "solver/util/said.hpp"
 #include "solver/viewing/conventions.hpp"
 #include "solver/visibility/drawable.hpp"
 #include "solver/visibility/hidden_lines.hpp"
@@ -19,11 +20,12 @@ struct PictureOptions {
   std::string title;  // first caption line (e.g. the problem's id)
   int raster = 48;    // painter vs z-buffer: window size in pixels
   std::int64_t max_hidden_line_pairs = kMaxHiddenLinePairs;  // hidden_lines.hpp
+  Lang lang = Lang::En;  // the captions, the <title> and the summary (the title above as given)
 };
 
 struct Picture {
   std::string svg;
-  std::string summary;  // one line: what was drawn (counts)
+  std::string summary;  // one line: what was drawn (counts), in the options' language
 };
 
 // Throws DomainError("eye") when a vertex is not in front of the eye, or as depth_sort does.
