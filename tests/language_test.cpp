@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 
+#include "export/paper.hpp"
 #include "grader/answer_parser.hpp"
 #include "report/feedback.hpp"
 #include "report/report.hpp"
@@ -316,6 +317,124 @@ TEST(Language, NoEnglishProblemTextReachesAJapaneseOrRussianStudent) {
   // And each language reads its own text: a Japanese text is not shown to a Russian student.
   for (const test::InstructorText& t : texts)
     EXPECT_NE(t.shown.at(Lang::Ja), t.shown.at(Lang::Ru)) << t.where;
+}
+
+// The prose of a LaTeX document a student reads, after \begin{document}: mathematics
+// (\(…\), \[…\], $…$, align and tikz environments), code (\texttt{…}, `…`), commands with their
+// options, environment names and comments left out.
+std::string latex_prose(const std::string& tex) {
+  std::string out;
+  std::size_t i = tex.find("\\begin{document}");
+  i = i == std::string::npos ? 0 : i + 16;
+  const auto skip_to = [&](const std::string& end) {
+    const std::size_t at = tex.find(end, i);
+    i = at == std::string::npos ? tex.size() : at + end.size();
+  };
+  const auto skip_group = [&] {  // a {…} group at i, nested braces included
+    if (i >= tex.size() || tex[i] != '{') return;
+    int depth = 0;
+    for (; i < tex.size(); ++i) {
+      if (tex[i] == '\\') {
+        ++i;
+        continue;
+      }
+      depth += tex[i] == '{' ? 1 : tex[i] == '}' ? -1 : 0;
+      if (depth == 0) break;
+    }
+    ++i;
+  };
+  while (i < tex.size()) {
+    const char c = tex[i];
+    if (c == '%') {
+      skip_to("\n");
+    } else if (tex.compare(i, 2, "\\(") == 0) {
+      skip_to("\\)");
+    } else if (tex.compare(i, 2, "\\[") == 0) {
+      skip_to("\\]");
+    } else if (c == '$') {
+      ++i;
+      skip_to("$");
+    } else if (c == '`') {
+      ++i;
+      skip_to("`");
+    } else if (c == '\\' && i + 1 < tex.size() &&
+               std::isalpha(static_cast<unsigned char>(tex[i + 1]))) {
+      std::size_t j = i + 1;
+      while (j < tex.size() && (std::isalpha(static_cast<unsigned char>(tex[j])) || tex[j] == '*'))
+        ++j;
+      const std::string command = tex.substr(i + 1, j - i - 1);
+      i = j;
+      if (i < tex.size() && tex[i] == '[') skip_to("]");
+      if (command == "texttt" || command == "includegraphics" || command == "end") {
+        skip_group();
+      } else if (command == "begin") {
+        const std::size_t close = tex.find('}', i);
+        const std::string env = tex.substr(i + 1, close - i - 1);
+        skip_group();
+        if (env.rfind("align", 0) == 0 || env.rfind("equation", 0) == 0 ||
+            env.rfind("gather", 0) == 0 || env == "tikzpicture")
+          skip_to("\\end{" + env + "}");
+        else
+          skip_group();  // an environment's argument ({tabular}'s columns)
+      }
+      out += ' ';
+    } else if (c == '\\') {
+      // An escaped character (\_, \%, \&) is itself; a line break (\\) or a space command is
+      // a space.
+      out += i + 1 < tex.size() && std::string_view("_%&#{}$").find(tex[i + 1]) != std::string::npos
+                 ? tex[i + 1]
+                 : ' ';
+      i += 2;
+    } else {
+      out += c;
+      ++i;
+    }
+  }
+  return out;
+}
+
+// The line of `text` where `word` first stands.
+std::string line_with(const std::string& text, const std::string& word) {
+  const std::size_t at = text.find(word);
+  if (at == std::string::npos) return "";
+  const std::size_t from = text.rfind('\n', at), to = text.find('\n', at);
+  const std::size_t begin = from == std::string::npos ? 0 : from + 1;
+  return text.substr(begin, to == std::string::npos ? std::string::npos : to - begin);
+}
+
+// Exam sheets and answer keys on paper (`generate --format latex|pdf --lang ja|ru`): no English
+// word in what a Japanese or Russian student reads — the headings, the answer lines, the points,
+// the key's step titles — besides the instructor's problem ids.
+TEST(Language, ExamSheetsAndAnswerKeysHaveNoEnglishWord) {
+  int documents = 0;
+  std::map<std::array<std::string, 3>, std::string> texts;
+  for (const ProblemSet& set : test::student_text_sets(1)) {
+    if (set.problems.empty()) continue;
+    const std::vector<PaperSheet> sheets = {PaperSheet{"s1", set}};
+    for (const Lang lang : {Lang::Ja, Lang::Ru})
+      for (const bool key : {false, true}) {
+        std::string prose = latex_prose(key ? answer_key_latex(sheets, "t", lang)
+                                            : exam_sheets_latex(sheets, "t", lang));
+        ++documents;
+        std::vector<std::string> ids;  // the instructor's names for the problems, longest first
+        for (const ProblemSpec& p : set.problems) ids.push_back(p.id);
+        std::sort(ids.begin(), ids.end(),
+                  [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+        for (const std::string& id : ids)
+          for (std::size_t at; (at = prose.find(id)) != std::string::npos;)
+            prose.replace(at, id.size(), " ");
+        const std::vector<std::string> english = english_words(prose);
+        EXPECT_TRUE(english.empty()) << set.file << (key ? " answer key " : " exam sheets ")
+                                     << to_string(lang) << ": \"" << english[0] << "\" in\n"
+                                     << line_with(prose, english[0]);
+      }
+  }
+  EXPECT_GT(documents, 40);
+  // The extraction keeps the words: the same sheets in English have them.
+  const ProblemSet seed =
+      load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
+  const std::string en = latex_prose(exam_sheets_latex({PaperSheet{"s1", seed}}, "t", Lang::En));
+  EXPECT_GT(english_words(en).size(), 20u) << en;
 }
 
 // A problem without a text is asked by its kind's summary, in the student's language too.
