@@ -58,7 +58,10 @@ constexpr Phrase kLabelOrderNoField{"an order of labels has no quiz field",
 constexpr Phrase kNoFieldFits{"no quiz field fits it", "合う欄がない",
                               "для него нет подходящего поля"};
 
-std::vector<QuizField> numbers(const Value& v, const std::vector<double>& windows) {
+constexpr Phrase kRowColumn{"row {0}, column {1}", "{0} 行 {1} 列", "строка {0}, столбец {1}"};
+constexpr Phrase kComponent{"component {0}", "成分 {0}", "компонента {0}"};
+
+std::vector<QuizField> numbers(const Value& v, const std::vector<double>& windows, Lang lang) {
   static const char* const kAxes[] = {"x", "y", "z", "w"};
   std::vector<QuizField> out;
   for (std::size_t i = 0; i < v.numbers.size(); ++i) {
@@ -66,10 +69,11 @@ std::vector<QuizField> numbers(const Value& v, const std::vector<double>& window
     f.value = v.numbers[i];
     f.window = windows[i];
     if (v.shape == Value::Shape::Matrix)
-      f.label = fmt::format("row {}, column {}", i / static_cast<std::size_t>(v.cols) + 1,
-                            i % static_cast<std::size_t>(v.cols) + 1);
+      f.label = say(kRowColumn, i / static_cast<std::size_t>(v.cols) + 1,
+                    i % static_cast<std::size_t>(v.cols) + 1)
+                    .in(lang);
     else if (v.shape == Value::Shape::Vector)
-      f.label = v.numbers.size() <= 4 ? kAxes[i] : fmt::format("component {}", i + 1);
+      f.label = v.numbers.size() <= 4 ? kAxes[i] : say(kComponent, i + 1).in(lang);
     out.push_back(f);
   }
   return out;
@@ -129,7 +133,7 @@ Said fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
       if (std::find(expected.numbers.begin(), expected.numbers.end(), kQuizInfinity) !=
           expected.numbers.end())
         a.prompt += fmt::format(" ({})", kInfinityStandsFor.in(lang));
-      a.fields = numbers(expected, accepted_windows(p, key, spec.name, expected));
+      a.fields = numbers(expected, accepted_windows(p, key, spec.name, expected), lang);
       return {};
     case AnswerKind::Direction: {
       // Right up to a positive factor: the quiz asks for the one of length 1.
@@ -141,7 +145,7 @@ Said fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
       for (double& x : unit.numbers) x /= norm;
       unit.exact.clear();
       a.prompt += fmt::format(" ({})", kScaledToLength1.in(lang));
-      a.fields = numbers(unit, accepted_windows(p, key, spec.name, unit));
+      a.fields = numbers(unit, accepted_windows(p, key, spec.name, unit), lang);
       return {};
     }
     case AnswerKind::Bool:

@@ -105,9 +105,6 @@ constexpr Phrase kExpectedMapping{"expected a mapping like {0}", "{0} のよう�
                                   "ожидалось сопоставление вида {0}"};
 constexpr Phrase kValueNotWord{"the value of '{0}' is not a word", "`{0}` の値は語ではありません",
                                "значение `{0}` — не слово"};
-// The convexity answer's own pair of words (edge_visibility says them too).
-constexpr Phrase kConvex{"convex", "凸", "выпуклый"};
-constexpr Phrase kNotConvex{"not convex", "凸でない", "невыпуклый"};
 
 // Untrusted text as a message quotes it ('1+1+1...'), without the quotes: a phrase places it
 // in each language's own quotes.
@@ -117,11 +114,7 @@ std::string excerpt(std::string_view text) {
 }
 
 // A word of an answer's category or truth value as the key prints it in each language.
-Said word_said(const std::string& word) {
-  if (word == kConvex.en) return Said(kConvex);
-  if (word == kNotConvex.en) return Said(kNotConvex);
-  return words::vocabulary_word(word);
-}
+Said word_said(const std::string& word) { return words::vocabulary_word(word); }
 
 // Words a student may write for each category and boolean, with Japanese equivalents.
 const std::vector<std::pair<std::string, std::string>> kWordSynonyms = {

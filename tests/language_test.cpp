@@ -13,6 +13,7 @@
 #include <set>
 
 #include "export/paper.hpp"
+#include "export/quiz_items.hpp"
 #include "grader/answer_parser.hpp"
 #include "report/feedback.hpp"
 #include "report/report.hpp"
@@ -435,6 +436,44 @@ TEST(Language, ExamSheetsAndAnswerKeysHaveNoEnglishWord) {
       load_problem_set(test::source_path("problems/seeds/001_zbuffer_plane_method.yaml"));
   const std::string en = latex_prose(exam_sheets_latex({PaperSheet{"s1", seed}}, "t", Lang::En));
   EXPECT_GT(english_words(en).size(), 20u) << en;
+}
+
+// The questions the exports write (Moodle, Canvas QTI, PrairieLearn): every prompt, field label
+// ("строка 1, столбец 2"), choice and hint a Japanese or Russian student reads has no English
+// word; the same questions in English have them.
+TEST(Language, ExportedQuestionsHaveNoEnglishWord) {
+  std::size_t labels = 0;
+  for (const ProblemSet& set : test::student_text_sets(1))
+    for (const Lang lang : {Lang::Ja, Lang::Ru})
+      for (const QuizQuestion& q : quiz_questions(set, lang))
+        for (const QuizAnswer& a : q.answers) {
+          std::vector<std::string> texts = {a.prompt};
+          for (const QuizField& f : a.fields) {
+            texts.push_back(f.label);
+            labels += !f.label.empty();
+            if (f.type != QuizField::Type::Checkboxes)  // statements are the instructor's text
+              for (const std::string& c : f.choices) texts.push_back(c);
+          }
+          for (const std::string& l : q.left_out)  // "name: why it is not asked here"
+            texts.push_back(l.substr(l.find(": ") == std::string::npos ? 0 : l.find(": ") + 2));
+          for (std::string text : texts) {
+            // The answer's own name (`normal`, `ndc`) is a name.
+            for (std::size_t at; (at = text.find(a.name)) != std::string::npos;)
+              text.replace(at, a.name.size(), " ");
+            const std::vector<std::string> english = english_words(text);
+            EXPECT_TRUE(english.empty())
+                << set.file << " " << q.id << "." << a.name << " " << to_string(lang) << ": \""
+                << english[0] << "\" in " << text;
+          }
+        }
+  EXPECT_GT(labels, 100u);
+  const ProblemSet seed =
+      load_problem_set(test::source_path("problems/seeds/002_transforms_and_view_volume.yaml"));
+  bool english_label = false;
+  for (const QuizQuestion& q : quiz_questions(seed, Lang::En))
+    for (const QuizAnswer& a : q.answers)
+      for (const QuizField& f : a.fields) english_label |= f.label.rfind("row 1, column 1", 0) == 0;
+  EXPECT_TRUE(english_label);
 }
 
 // A problem without a text is asked by its kind's summary, in the student's language too.

@@ -7,7 +7,7 @@ Said vocabulary_word(std::string_view english) {
   // called "plane") is not translated.
   static constexpr const Phrase* kData[] = {
       &kYes, &kNo, &kNone, &kTrue, &kFalse, &kFront, &kBack, &kEdgeOn, &kEdgeOnKey, &kVisible,
-      &kHidden, &kSilhouette, &kInside, &kOutside, &kBackground,
+      &kHidden, &kSilhouette, &kInside, &kOutside, &kBackground, &kConvex, &kNotConvex,
       // counted
       &kTriangles, &kWindowTriangles, &kClipped, &kBackFacesCulled, &kOutsideViewVolume,
       &kPixelsCovered, &kNearerAndWritten};

@@ -23,6 +23,8 @@ inline constexpr Phrase kHidden{"hidden", "不可視", "невидимое"};
 inline constexpr Phrase kSilhouette{"silhouette", "輪郭線", "силуэт"};
 inline constexpr Phrase kInside{"inside", "内側", "внутри"};
 inline constexpr Phrase kOutside{"outside", "外側", "снаружи"};
+inline constexpr Phrase kConvex{"convex", "凸", "выпуклый"};
+inline constexpr Phrase kNotConvex{"not convex", "凸でない", "невыпуклый"};
 inline constexpr Phrase kBackground{"background", "背景", "фон"};
 inline constexpr Phrase kDepth{"depth", "奥行き", "глубина"};
 inline constexpr Phrase kPlane{"plane", "平面", "плоскость"};

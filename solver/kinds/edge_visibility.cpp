@@ -129,8 +129,6 @@ constexpr Phrase kDrawingOnlyThese{
     "これらだけを描くと, 隠れるべき線が見える.",
     "Если рисовать только их, видны линии, которые должны быть скрыты."};
 constexpr Phrase kConvexQ{"Convex?", "凸か?", "Выпуклый?"};
-constexpr Phrase kConvex{"convex", "凸", "выпуклый"};
-constexpr Phrase kNotConvex{"not convex", "凸でない", "невыпуклый"};
 constexpr Phrase kEveryVertexInside{
     "Every vertex lies on the inner side of (or on) every face plane.",
     "どの頂点もすべての面の平面の内側 (または平面上) にある.",
@@ -497,7 +495,7 @@ struct EdgeVisibility {
                 math("n_f·(v − p_f) ≤ 0  ∀ v, f",
                      "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\quad "
                      "\\forall\\, \\mathbf{v}, f"),
-                {}, word(convex ? kConvex : kNotConvex))
+                {}, word(convex ? words::kConvex : words::kNotConvex))
           .note =
           convex ? say(kEveryVertexInside) : say(kNotConvexWitness, witness.vertex, witness.face);
       steps->yields("convex");

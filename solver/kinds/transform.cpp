@@ -57,8 +57,6 @@ constexpr Phrase kFlattensSpace{
     "det M = 0: この変換は空間を押しつぶすので, 元に戻せない.",
     "det M = 0: преобразование сплющивает пространство, и его нельзя обратить."};
 constexpr Phrase kInverse{"Inverse", "逆行列", "Обратная матрица"};
-constexpr Phrase kDegreesTakenAsRadians{"degrees taken as radians", "度をラジアンとして計算",
-                                        "градусы взяты как радианы"};
 constexpr Phrase kRotationUsesDegreesAsRadians{
     "Your rotation uses the angle's number of degrees as radians (cos {0} instead of cos {1}).",
     "回転で角度の度数をラジアンとして使っています (cos {1} ではなく cos {0}).",

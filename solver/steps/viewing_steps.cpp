@@ -181,8 +181,6 @@ constexpr Phrase kUsedTheAngleAsVertical{
     "You used the angle as the vertical field of view; here it is the horizontal one (fovx).",
     "画角を縦方向として使っています. ここでは横方向の画角 (fovx) です.",
     "Вы взяли угол как вертикальный угол обзора; здесь он горизонтальный (fovx)."};
-constexpr Phrase kDegreesTakenAsRadians{"degrees taken as radians", "度をラジアンとして計算",
-                                        "градусы взяты как радианы"};
 constexpr Phrase kNumbersFromDegreesAsRadians{
     "Your numbers come from using the angle in degrees as if it were radians.",
     "度で与えられた角度をラジアンとして使った値になっています.",

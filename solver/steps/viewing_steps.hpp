@@ -102,6 +102,10 @@ Said multiply_note(Api api);
 // taken as radians, fovx for fovy, the planes' z coordinates for near and far. `step` is the
 // derivation step where it goes wrong, said as that step's title (empty where the matrix itself
 // is).
+// A named mistake of the angle (projection_mistakes, and transform's rotations).
+inline constexpr Phrase kDegreesTakenAsRadians{"degrees taken as radians", "度をラジアンとして計算",
+                                               "градусы взяты как радианы"};
+
 struct ProjectionMistake {
   Said name, feedback, step;
   ProjectionSpec projection;
