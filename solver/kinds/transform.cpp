@@ -13,6 +13,7 @@
 #include "solver/steps/transform_steps.hpp"
 #include "solver/steps/viewing_steps.hpp"
 #include "solver/util/diagnostic.hpp"
+#include "solver/util/exact_format.hpp"
 
 namespace frustum {
 
@@ -256,17 +257,21 @@ struct Transform {
     // Degrees taken as radians: every rotation by the angle's number of degrees, in radians
     // (undone by the rotation by minus that many radians).
     bool rotates = false;
+    std::string degrees;  // the first rotation's angle in degrees, as the feedback quotes it
     std::vector<MatX<Exact>> as_radians, as_radians_undone;
     for (const TransformStep& s : g.steps) {
       rotates = rotates || s.angle.has_value();
       const bool turned = s.angle && s.rotation;
       const Exact radians = turned ? canonical(*s.angle * 180 / GiNaC::Pi) : Exact(0);
+      if (s.angle && degrees.empty())
+        degrees = format_exact(canonical(*s.angle * 180 / GiNaC::Pi), MathStyle::Unicode);
       as_radians.push_back(turned ? s.rotation(radians) : s.matrix);
       as_radians_undone.push_back(turned ? s.rotation(canonical(-radians)) : s.inverse);
     }
     if (rotates)
-      out.push_back({say(kDegreesTakenAsRadians), say(kRotationUsesDegreesAsRadians, "90", "90°"),
-                     say(kComposite), composite(as_radians, as_radians_undone, false)});
+      out.push_back({say(kDegreesTakenAsRadians),
+                     say(kRotationUsesDegreesAsRadians, degrees, degrees + "°"), say(kComposite),
+                     composite(as_radians, as_radians_undone, false)});
     return out;
   }
 
