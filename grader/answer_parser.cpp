@@ -33,8 +33,6 @@ constexpr Phrase kReadNumerically{
 // written in every language.
 constexpr Phrase kCannotRead{"cannot read '{0}': {1}", "`{0}` を読めません: {1}",
                              "не удаётся прочитать `{0}`: {1}"};
-constexpr Phrase kNotFiniteNumber{"'{0}' is not a finite number", "`{0}` は有限の数ではありません",
-                                  "`{0}` — не конечное число"};
 constexpr Phrase kNotRealNumber{"'{0}' is not a real number", "`{0}` は実数ではありません",
                                 "`{0}` — не действительное число"};
 constexpr Phrase kCannotEvaluate{"'{0}' cannot be evaluated as a number",

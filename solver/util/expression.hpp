@@ -42,6 +42,11 @@ struct ExpressionOptions {
   bool degree_sign = false;
 };
 
+// Why a text is not a number a student may write: the reader says it of '∞', the grader of an
+// answer that reads as one.
+inline constexpr Phrase kNotFiniteNumber{
+    "'{0}' is not a finite number", "`{0}` は有限の数ではありません", "`{0}` — не конечное число"};
+
 struct ExpressionResult {
   std::optional<GiNaC::ex> value;  // set on success
   Said error;                      // set on failure: why, for the person who wrote it

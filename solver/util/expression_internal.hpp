@@ -29,8 +29,6 @@ inline constexpr Phrase kCannotComputeValue{
     "this value cannot be computed (it is too large or undefined)",
     "この値は計算できません (大きすぎるか, 定義されていません)",
     "это значение нельзя вычислить (оно слишком велико или не определено)"};
-inline constexpr Phrase kNotFiniteNumber{
-    "'{0}' is not a finite number", "`{0}` は有限の数ではありません", "`{0}` — не конечное число"};
 
 // Internal only: parse_expression turns it into an ExpressionResult.
 struct ParseError {
