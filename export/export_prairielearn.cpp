@@ -10,6 +10,7 @@
 #include "export/export_tolerance.hpp"
 #include "export/quiz_items.hpp"
 #include "export/xml_text.hpp"
+#include "grader/answer_type.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/problem_figure.hpp"
@@ -24,33 +25,6 @@ using namespace quiz_phrases;
 namespace {
 
 // What to type, for an answer entered as text.
-constexpr Phrase kNumberSuchAs{"a number such as 15/2, sqrt(3)/2 or 0.25",
-                               "15/2, sqrt(3)/2, 0.25 のような数",
-                               "число, например 15/2, sqrt(3)/2 или 0.25"};
-constexpr Phrase kVectorSuchAs{"a vector such as [1, -2, sqrt(3)/2]",
-                               "[1, -2, sqrt(3)/2] のようなベクトル",
-                               "вектор, например [1, -2, sqrt(3)/2]"};
-constexpr Phrase kRowsSuchAs{
-    "rows such as [[1, 0, 2], [0, 1, 3]]: a matrix row by row, or one point per row",
-    "[[1, 0, 2], [0, 1, 3]] のような行の並び: 行ごとの行列, または 1 行に 1 点",
-    "строки, например [[1, 0, 2], [0, 1, 3]]: матрица по строкам или по точке в строке"};
-constexpr Phrase kMatrixRowByRow{"a matrix row by row, such as [[1, 0], [0, 1]]",
-                                 "[[1, 0], [0, 1]] のように行ごとに書いた行列",
-                                 "матрица по строкам, например [[1, 0], [0, 1]]"};
-constexpr Phrase kPointsInOrder{"points in order, such as [[0, 0], [4, 0], [0, 3]], or none",
-                                "[[0, 0], [4, 0], [0, 3]] のように順に並べた点, または none",
-                                "точки по порядку, например [[0, 0], [4, 0], [0, 3]], или none"};
-constexpr Phrase kEquationSuchAs{"an equation such as x + y - z = -6",
-                                 "x + y - z = -6 のような方程式",
-                                 "уравнение, например x + y - z = -6"};
-constexpr Phrase kMappingSuchAs{"a mapping such as {0-1: visible, 1-2: hidden}",
-                                "{0-1: visible, 1-2: hidden} のような対応",
-                                "соответствие, например {0-1: visible, 1-2: hidden}"};
-constexpr Phrase kListInOrder{"a list in order, such as [2, 0, 1]",
-                              "[2, 0, 1] のように順に並べたリスト",
-                              "список по порядку, например [2, 0, 1]"};
-constexpr Phrase kListSuchAs{"a list such as [1-3, 2-7]", "[1-3, 2-7] のようなリスト",
-                             "список, например [1-3, 2-7]"};
 // Under a text input: exact forms, and the window of each decimal.
 constexpr Phrase kInfinityWrittenInf{
     "+∞, the depth of a pixel no polygon covers, is written inf (or 1e30)",
@@ -107,37 +81,6 @@ std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang la
   return s + "</pl-checkbox>";
 }
 
-// What to type, for an answer entered as text (Frustum reads it: exact forms, `none`).
-const Phrase& hint_of(AnswerKind kind) {
-  switch (kind) {
-    case AnswerKind::Scalar:
-      return kNumberSuchAs;
-    case AnswerKind::Vector:
-    case AnswerKind::Direction:
-    case AnswerKind::UnitVector:
-    case AnswerKind::Point:
-      return kVectorSuchAs;
-    case AnswerKind::Matrix:
-      return kRowsSuchAs;
-    case AnswerKind::Transform:
-      return kMatrixRowByRow;
-    case AnswerKind::Segment:
-    case AnswerKind::PointSet:
-    case AnswerKind::Polygon:
-      return kPointsInOrder;
-    case AnswerKind::Plane:
-      return kEquationSuchAs;
-    case AnswerKind::BitString:
-      return kBitStringSuchAs;
-    case AnswerKind::WordMap:
-      return kMappingSuchAs;
-    case AnswerKind::Sequence:
-      return kListInOrder;
-    default:
-      return kListSuchAs;
-  }
-}
-
 // Numbers, vectors, matrices and point lists are typed as text that Frustum reads, so exact
 // forms (15/2, sqrt(14)/14) and `none` are accepted, which pl-number-input and pl-matrix-input
 // refuse; the window a decimal must fall in is stated under the input (params.help), the same
@@ -149,9 +92,7 @@ std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) 
   if (input == "choice") {
     std::string s = fmt::format(
         "<p>{}:</p>\n<pl-multiple-choice answers-name=\"{}\" inline=\"true\">\n", name, name);
-    const std::vector<std::string> words =
-        spec.kind == AnswerKind::Bool ? std::vector<std::string>{"true", "false"} : spec.words;
-    for (const std::string& w : words)
+    for (const std::string& w : answer_type(spec.kind).choices(spec))
       s += fmt::format("  <pl-answer correct=\"{{{{params.correct.{}.{}}}}}\">{}</pl-answer>\n",
                        name, w, xml_escape(w));
     return s + "</pl-multiple-choice>";
@@ -161,7 +102,7 @@ std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) 
       "remove-leading-trailing=\"true\" show-help-text=\"false\"></pl-string-input>\n"
       "<pl-question-panel>{{{{#params.help.{0}}}}}<p class=\"small\">{{{{params.help.{0}}}}}</p>"
       "{{{{/params.help.{0}}}}}</pl-question-panel>",
-      name, xml_escape(hint_of(spec.kind).in(lang)));
+      name, xml_escape(answer_type(spec.kind).typed_hint->in(lang)));
 }
 
 // The key as a student types it (`[1, 1, -1]`, `sqrt(14)/14`, `none`), for the answer panel.
@@ -175,9 +116,7 @@ std::string typed_key(const Value& v) {
 // What the statement under a text input says: exact forms, and the window of each decimal.
 std::string help_text(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
                       const Value& expected, Lang lang) {
-  if (expected.numbers.empty() || spec.kind == AnswerKind::Plane ||
-      spec.kind == AnswerKind::Direction)
-    return {};
+  if (expected.numbers.empty() || !answer_type(spec.kind).componentwise) return {};
   // A z-buffer's background depth is +∞ (1e30 in the key), which Frustum, grading this input,
   // reads written inf: said under the input.
   const bool infinity =
@@ -209,15 +148,15 @@ std::string one_problem_set(const YAML::Node& root, const ProblemSet& variant, s
 }  // namespace
 
 std::string prairielearn_input(const AnswerSpec& spec) {
-  switch (spec.kind) {
-    case AnswerKind::Bool:
-    case AnswerKind::Category:
+  switch (answer_type(spec.kind).input) {
+    case TypedInput::Choice:
       return "choice";
-    case AnswerKind::Statements:
+    case TypedInput::Checkboxes:
       return "checkbox";
-    default:
-      return "string";
+    case TypedInput::Text:
+      break;
   }
+  return "string";
 }
 
 std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
@@ -277,14 +216,10 @@ std::map<std::string, std::map<std::string, std::string>> export_prairielearn(
           if (!h.empty()) help[name] = h;
         }
         if (inputs[name] != "choice") continue;
-        const std::vector<std::string> words = spec->kind == AnswerKind::Bool
-                                                   ? std::vector<std::string>{"true", "false"}
-                                                   : spec->words;
-        for (const std::string& w : words) {
-          const std::string right =
-              spec->kind == AnswerKind::Bool ? (expected->flag ? "true" : "false") : expected->word;
+        const AnswerType& type = answer_type(spec->kind);
+        const std::string right = type.chosen(*expected);
+        for (const std::string& w : type.choices(*spec))
           correct[name][w] = w == right ? "true" : "false";
-        }
       }
       params["inputs"] = inputs;
       params["correct"] = correct.is_null() ? json::object() : correct;

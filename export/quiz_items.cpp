@@ -7,6 +7,7 @@
 
 #include "export/export_tolerance.hpp"
 #include "export/xml_text.hpp"
+#include "grader/answer_type.hpp"
 #include "solver/derivation/vocabulary.hpp"
 #include "solver/input/text_reader.hpp"
 #include "solver/input/yaml_emit.hpp"
@@ -20,44 +21,16 @@ using namespace quiz_phrases;
 namespace {
 
 constexpr Phrase kTheTrueStatements{"the true statements", "正しい記述", "верные утверждения"};
-constexpr Phrase kScaledSoThatW{"scaled so that w = {0}", "w = {0} となるように定数倍して",
-                                "умноженный на число так, чтобы w = {0}"};
 constexpr Phrase kInfinityStandsFor{"1e30 stands for +∞, the depth of a pixel no polygon covers",
                                     "1e30 は +∞ (どの多角形にも覆われない画素の奥行き) を表す",
                                     "1e30 обозначает +∞ — глубину пикселя, не покрытого ни одним "
                                     "многоугольником"};
-constexpr Phrase kScaledToLength1{"scaled to length 1", "長さ 1 に正規化して",
-                                  "нормированный к длине 1"};
+// Why an answer is not asked in a quiz.
+constexpr Phrase kNoValueHere{"it has no value here", "ここでは値がない",
+                              "здесь у него нет значения"};
 constexpr Phrase kNotAskedHere{"Not asked here:", "ここでは問わない:", "Здесь не спрашивается:"};
 constexpr Phrase kUseTheValuesGivenBelow{"(Use the values given below.)", "(下に示す値を使うこと.)",
                                          "(Используйте значения, данные ниже.)"};
-// Why an answer is not asked in a quiz (no field type can express its equivalence).
-constexpr Phrase kNoValueHere{"it has no value here", "ここでは値がない",
-                              "здесь у него нет значения"};
-constexpr Phrase kZeroVectorNoDirection{"a zero vector has no direction",
-                                        "零ベクトルには向きがない",
-                                        "у нулевого вектора нет направления"};
-constexpr Phrase kPlaneUpToFactor{"a plane's equation is right up to any non-zero factor",
-                                  "平面の方程式は 0 でない定数倍しても正しい",
-                                  "уравнение плоскости верно с точностью до ненулевого множителя"};
-constexpr Phrase kPolygonAnyStart{"a polygon is right from any starting vertex",
-                                  "多角形はどの頂点から始めても正しい",
-                                  "многоугольник верен при любой начальной вершине"};
-constexpr Phrase kSegmentEitherDirection{"a segment is right in either direction",
-                                         "線分はどちらの向きでも正しい",
-                                         "отрезок верен в обоих направлениях"};
-constexpr Phrase kPointSetAnyOrder{"a set of points is right in any order",
-                                   "点の集合はどの順でも正しい",
-                                   "множество точек верно в любом порядке"};
-constexpr Phrase kLabelSetAnyOrder{"a set of labels is right in any order",
-                                   "ラベルの集合はどの順でも正しい",
-                                   "множество меток верно в любом порядке"};
-constexpr Phrase kLabelOrderNoField{"an order of labels has no quiz field",
-                                    "ラベルの順序を問う欄はない",
-                                    "для порядка меток нет поля теста"};
-constexpr Phrase kNoFieldFits{"no quiz field fits it", "合う欄がない",
-                              "для него нет подходящего поля"};
-
 constexpr Phrase kRowColumn{"row {0}, column {1}", "{0} 行 {1} 列", "строка {0}, столбец {1}"};
 constexpr Phrase kComponent{"component {0}", "成分 {0}", "компонента {0}"};
 
@@ -107,83 +80,44 @@ QuizField word_choice(const std::vector<std::string>& words, const std::string& 
   return f;
 }
 
-// A given that is the problem's key (AnswerKind::Statements: each statement's truth).
+// A given that is the problem's key (statements: each statement's truth).
 bool given_is_key(const ProblemSpec& p) {
   return p.info &&
-         std::any_of(p.info->answers.begin(), p.info->answers.end(),
-                     [](const AnswerSpec& a) { return a.kind == AnswerKind::Statements; });
+         std::any_of(p.info->answers.begin(), p.info->answers.end(), [](const AnswerSpec& a) {
+           return answer_type(a.kind).input == TypedInput::Checkboxes;
+         });
 }
 
-// The fields of one answer, or the reason it cannot be a quiz field.
+// The fields of one answer as its type asks for it, or the reason it cannot be a quiz field.
 Said fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
                const Value& expected, QuizAnswer& a, Lang lang) {
   if (expected.shape == Value::Shape::Null) return say(kNoValueHere);
-  switch (spec.kind) {
-    case AnswerKind::Point:
-      // Homogeneous (x, y, z, w) is right up to the scale of w: the quiz asks for the key's w.
-      if (expected.numbers.size() == 4)
-        a.prompt += fmt::format(
-            " ({})", say(kScaledSoThatW, fmt::format("{}", expected.numbers[3])).in(lang));
-      [[fallthrough]];
-    case AnswerKind::Scalar:
-    case AnswerKind::Vector:
-    case AnswerKind::UnitVector:
-    case AnswerKind::Matrix:
-    case AnswerKind::Transform:
-      if (std::find(expected.numbers.begin(), expected.numbers.end(), kQuizInfinity) !=
-          expected.numbers.end())
+  const QuizAsk ask = answer_type(spec.kind).quiz(spec, expected);
+  if (!ask.refused.empty()) return ask.refused;
+  for (const Said& note : ask.notes) a.prompt += fmt::format(" ({})", note.in(lang));
+  switch (ask.field) {
+    case QuizAsk::Field::Numbers:
+      if (std::find(ask.numbers.numbers.begin(), ask.numbers.numbers.end(), kQuizInfinity) !=
+          ask.numbers.numbers.end())
         a.prompt += fmt::format(" ({})", kInfinityStandsFor.in(lang));
-      a.fields = numbers(expected, accepted_windows(p, key, spec.name, expected), lang);
-      return {};
-    case AnswerKind::Direction: {
-      // Right up to a positive factor: the quiz asks for the one of length 1.
-      Value unit = expected;
-      double norm = 0;
-      for (double x : unit.numbers) norm += x * x;
-      norm = std::sqrt(norm);
-      if (norm == 0) return say(kZeroVectorNoDirection);
-      for (double& x : unit.numbers) x /= norm;
-      unit.exact.clear();
-      a.prompt += fmt::format(" ({})", kScaledToLength1.in(lang));
-      a.fields = numbers(unit, accepted_windows(p, key, spec.name, unit), lang);
-      return {};
-    }
-    case AnswerKind::Bool:
-      a.fields = {word_choice({"true", "false"}, expected.flag ? "true" : "false", lang)};
-      return {};
-    case AnswerKind::Category:
-      a.fields = {word_choice(spec.words, expected.word, lang)};
-      return {};
-    case AnswerKind::BitString: {
+      a.fields = numbers(ask.numbers, accepted_windows(p, key, spec.name, ask.numbers), lang);
+      break;
+    case QuizAsk::Field::Choice:
+      a.fields = {word_choice(ask.words, ask.right, lang)};
+      break;
+    case QuizAsk::Field::Text: {
       QuizField f;
       f.type = QuizField::Type::Text;
-      f.correct = expected.word;
-      // As `frustum grade` does, a platform accepts the bits with leading zeros dropped (an
-      // outcode written as a number: 101 for 0101, 0 for 0000).
-      for (std::size_t k = 1; k < f.correct.size() && f.correct[k - 1] == '0'; ++k)
-        f.also.push_back(f.correct.substr(k));
-      a.prompt += fmt::format(" ({})", kBitStringSuchAs.in(lang));
+      f.correct = ask.right;
+      f.also = ask.also;
       a.fields = {f};
-      return {};
+      break;
     }
-    case AnswerKind::Plane:
-      return say(kPlaneUpToFactor);
-    case AnswerKind::Polygon:
-      return say(kPolygonAnyStart);
-    case AnswerKind::Segment:
-      return say(kSegmentEitherDirection);
-    case AnswerKind::PointSet:
-      return say(kPointSetAnyOrder);
-    case AnswerKind::WordMap:
-    case AnswerKind::WordList:
-      return say(kLabelSetAnyOrder);
-    case AnswerKind::Sequence:
-      return say(kLabelOrderNoField);
-    case AnswerKind::Statements:
+    case QuizAsk::Field::Statements:
       statement_boxes(p, expected, a, lang);
-      return {};
+      break;
   }
-  return say(kNoFieldFits);
+  return {};
 }
 
 }  // namespace

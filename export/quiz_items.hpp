@@ -20,8 +20,6 @@ namespace quiz_phrases {
 inline constexpr Phrase kNoStatementIsTrue{"None of the statements above is true",
                                            "上の記述はどれも正しくない",
                                            "Ни одно из утверждений выше не верно"};
-inline constexpr Phrase kBitStringSuchAs{"a bit string such as 0101", "0101 のようなビット列",
-                                         "битовая строка, например 0101"};
 
 }  // namespace quiz_phrases
 

@@ -7,7 +7,8 @@
 #include <cmath>
 #include <optional>
 
-#include "grader/statement_choice.hpp"
+#include "grader/answer_reading.hpp"
+#include "grader/answer_type.hpp"
 #include "solver/core/exact.hpp"
 #include "solver/core/work_budget.hpp"
 #include "solver/derivation/vocabulary.hpp"
@@ -16,7 +17,7 @@
 
 namespace frustum {
 
-namespace {
+namespace reading {
 
 // Why an answer cannot be read, and how it was read when not exactly.
 constexpr Phrase kAnswerTooLong{"the answer is too long (more than {0} bytes)",
@@ -38,8 +39,6 @@ constexpr Phrase kNotRealNumber{"'{0}' is not a real number", "`{0}` は実数�
 constexpr Phrase kCannotEvaluate{"'{0}' cannot be evaluated as a number",
                                  "`{0}` は数として評価できません",
                                  "`{0}` нельзя вычислить как число"};
-constexpr Phrase kExpectedOneNumber{"expected one number", "数が一つ必要です",
-                                    "ожидалось одно число"};
 // Lists of numbers, vectors, rows and vertices.
 constexpr Phrase kCannotDivideVector{"cannot divide the vector by '{0}', which is 0",
                                      "ベクトルを `{0}` で割れません (0 です)",
@@ -61,48 +60,10 @@ constexpr Phrase kRowsDifferentLengths{"the rows have different lengths",
 constexpr Phrase kVertexWrongCoordinates{"vertex {0}: wrong number of coordinates",
                                          "頂点 {0}: 座標の個数が違います",
                                          "вершина {0}: неверное число координат"};
-// A plane.
-constexpr Phrase kCannotReadPlane{"cannot read the plane '{0}': {1}",
-                                  "平面 `{0}` を読めません: {1}",
-                                  "не удаётся прочитать плоскость `{0}`: {1}"};
-constexpr Phrase kPlaneIsEquationOrList{
-    "a plane is an equation like 'x + y - z = -6' or a list [a, b, c, d]",
-    "平面は 'x + y - z = -6' のような方程式か, リスト [a, b, c, d] で書きます",
-    "плоскость — уравнение вида 'x + y - z = -6' или список [a, b, c, d]"};
-constexpr Phrase kPlaneNotLinear{"the plane is not linear in {0}",
-                                 "平面が {0} について線形ではありません",
-                                 "плоскость не линейна по {0}"};
-constexpr Phrase kPlaneCoefficientsNumbers{"the plane's coefficients must be numbers",
-                                           "平面の係数は数でなければなりません",
-                                           "коэффициенты плоскости должны быть числами"};
-constexpr Phrase kPlaneHasFourCoefficients{
-    "a plane has 4 coefficients [a, b, c, d] of ax + by + cz = d",
-    "平面の係数は a·x + b·y + c·z = d の 4 つ [a, b, c, d] です",
-    "у плоскости 4 коэффициента [a, b, c, d] уравнения a·x + b·y + c·z = d"};
-// Words.
-constexpr Phrase kExpectedTrueOrFalse{"expected true or false", "true か false が必要です",
-                                      "ожидалось true или false"};
-constexpr Phrase kNotTrueOrFalse{"'{0}' is not true or false", "`{0}` は 真 でも 偽 でもありません",
-                                 "`{0}` — не истина и не ложь"};
-constexpr Phrase kNotTrueOrFalseOr{"'{0}' is not true or false (or {1} or {2})",
-                                   "`{0}` は 真 でも 偽 でも ({1} でも {2} でも) ありません",
-                                   "`{0}` — не истина и не ложь (и не {1}, не {2})"};
-constexpr Phrase kExpectedOneWord{"expected one word", "語が一つ必要です", "ожидалось одно слово"};
-constexpr Phrase kNotOneOf{"'{0}' is not one of {1}", "`{0}` は次のいずれでもありません: {1}",
-                           "`{0}` — не одно из: {1}"};
-constexpr Phrase kExpectedBitString{"expected a bit string like 0101",
-                                    "0101 のようなビット列が必要です",
-                                    "ожидалась строка битов, например 0101"};
-constexpr Phrase kNotBitString{"'{0}' is not a bit string of 0 and 1",
-                               "`{0}` は 0 と 1 のビット列ではありません",
-                               "`{0}` — не строка битов из 0 и 1"};
+// A list of words.
 constexpr Phrase kItemNotWord{"item {0} is not a word", "要素 {0} は語ではありません",
                               "элемент {0} — не слово"};
 constexpr Phrase kExpectedList{"expected a list", "リストが必要です", "ожидался список"};
-constexpr Phrase kExpectedMapping{"expected a mapping like {0}", "{0} のような対応付けが必要です",
-                                  "ожидалось сопоставление вида {0}"};
-constexpr Phrase kValueNotWord{"the value of '{0}' is not a word", "`{0}` の値は語ではありません",
-                               "значение `{0}` — не слово"};
 
 // Untrusted text as a message quotes it ('1+1+1...'), without the quotes: a phrase places it
 // in each language's own quotes.
@@ -126,12 +87,6 @@ const std::vector<std::pair<std::string, std::string>> kWordSynonyms = {
     {"concave", "not convex"}, {"凹", "not convex"},    {"内部", "inside"},
     {"外部", "outside"},       {"вне", "outside"}};
 
-const std::vector<std::pair<std::string, bool>> kBoolWords = {
-    {"true", true},   {"yes", true},     {"y", true},  {"t", true},
-    {"1", true},      {"はい", true},    {"○", true},  {"〇", true},
-    {"false", false}, {"no", false},     {"n", false}, {"f", false},
-    {"0", false},     {"いいえ", false}, {"×", false}, {"✕", false}};
-
 // The word a student wrote, as one of `candidates` when it is one of them in English, a listed
 // synonym, or the Japanese or Russian word the derivations print for it (what the key shows a
 // student reading in that language is accepted back). Unchanged otherwise.
@@ -147,22 +102,13 @@ std::string known_word(const std::string& written, const std::vector<std::string
   return w;
 }
 
-// The words a word map's entries may take (faces, edges).
-const std::vector<std::string> kMapWords = {"front",   "back",   "edge_on",
-                                            "visible", "hidden", "silhouette"};
-
-struct Numbers {
-  std::vector<Exact> values;
-  Said error;
-};
-
 // An answer too complex to simplify within its work budget keeps only its value, computed
 // with this many digits and rounded to a double; parse_answer then drops the exact form.
 constexpr long kNumericFallbackDigits = 40;
 
 // `infinity`: where an answer holds +∞ as a stand-in number (AnswerSpec::infinity), +∞ written
 // inf, ∞ or infinity (or YAML's .inf) is that number; 0: +∞ is no answer.
-Exact parse_one(const std::string& text, Said& error, WorkBudget& budget, double infinity = 0) {
+Exact parse_one(const std::string& text, Said& error, WorkBudget& budget, double infinity) {
   // YAML's spellings of NaN and infinity (the expression parser knows nan, inf and ∞).
   const std::string t = trim_lower(text);
   const std::string body = !t.empty() && (t[0] == '+' || t[0] == '-') ? t.substr(1) : t;
@@ -191,6 +137,8 @@ Exact parse_one(const std::string& text, Said& error, WorkBudget& budget, double
   return std::isfinite(v) ? exact_from_double(v) : Exact(0);
 }
 
+namespace {
+
 // One bracket pair around the whole text: "(1, 2)", not "(0, 3), (1, 2)".
 bool wrapped(const std::string& s) {
   if (s.size() < 2 ||
@@ -205,11 +153,15 @@ bool wrapped(const std::string& s) {
   return true;
 }
 
+}  // namespace
+
 std::string trimmed(std::string s) {
   s.erase(0, s.find_first_not_of(" \t"));
   s.erase(s.find_last_not_of(" \t") + 1);
   return s;
 }
+
+namespace {
 
 // Splits "a, b, c" at top-level separators (commas; with `semicolons`, also ';').
 std::vector<std::string> split_top(const std::string& s, bool semicolons = false) {
@@ -230,15 +182,14 @@ std::vector<std::string> split_top(const std::string& s, bool semicolons = false
   return out;
 }
 
-// Splits "(a, b, c)" or "a, b, c" at top-level commas.
+}  // namespace
+
 std::vector<std::string> split_list(std::string s) {
   s = trimmed(s);
   if (wrapped(s)) s = s.substr(1, s.size() - 2);
   return split_top(s);
 }
 
-// A point list written as text, in the usual forms: "(0, 4), (8, 8)", "[[0, 4], [8, 8]]",
-// "(0, 4); (8, 8)". Empty when the text is not a list of bracketed tuples.
 std::vector<std::string> split_rows(std::string s) {
   s = trimmed(s);
   if (wrapped(s)) {
@@ -254,6 +205,8 @@ std::vector<std::string> split_rows(std::string s) {
   }
   return rows;
 }
+
+namespace {
 
 // "(1/√21)(−2, 1, 4)", "1/sqrt(21)*(-2, 1, 4)", "(-2, 1, 4)/sqrt(21)", "−(1, 2, 3)": one tuple
 // (a bracket group holding commas) with a factor before it, or "/ FACTOR" or "* FACTOR" after
@@ -334,7 +287,9 @@ std::optional<Numbers> read_scaled_tuple(const std::string& text, WorkBudget& bu
   return out;
 }
 
-Numbers read_numbers(const YAML::Node& n, WorkBudget& budget, double infinity = 0) {
+}  // namespace
+
+Numbers read_numbers(const YAML::Node& n, WorkBudget& budget, double infinity) {
   if (n.IsScalar())
     if (std::optional<Numbers> scaled = read_scaled_tuple(n.Scalar(), budget)) return *scaled;
   Numbers out;
@@ -360,61 +315,7 @@ Numbers read_numbers(const YAML::Node& n, WorkBudget& budget, double infinity = 
   return out;
 }
 
-// "x + y − z = −6" → [a, b, c, d] of ax + by + cz = d.
-Numbers read_plane_equation(const std::string& text, WorkBudget& budget) {
-  Numbers out;
-  ExpressionOptions opts;
-  for (const char* name : {"x", "y", "z"}) opts.symbols.emplace(name, GiNaC::symbol(name));
-  opts.allow_equation = true;
-  opts.degree_sign = true;
-  const ExpressionResult r = parse_expression(text, opts);
-  if (!r) {
-    out.error = say(kCannotReadPlane, excerpt(text), r.error);
-    return out;
-  }
-  if (!r.equation) {
-    out.error = say(kPlaneIsEquationOrList);
-    return out;
-  }
-  const GiNaC::ex e = r.value->expand();
-  GiNaC::exmap zero;
-  GiNaC::ex linear = 0;
-  for (const char* name : {"x", "y", "z"}) {
-    const GiNaC::symbol& s = opts.symbols.at(name);
-    if (e.degree(s) > 1) {
-      out.error = say(kPlaneNotLinear, name);
-      return out;
-    }
-    const GiNaC::ex c = e.coeff(s, 1);
-    out.values.push_back(c);
-    linear += c * s;
-    zero[s] = 0;
-  }
-  const GiNaC::ex constant = e.subs(zero);
-  if (!(e - linear - constant).expand().is_zero()) {
-    out.error = say(kPlaneNotLinear, "x, y, z");
-    return out;
-  }
-  for (const Exact& c : out.values)
-    if (!is_real_constant(c)) {
-      out.error = say(kPlaneCoefficientsNumbers);
-      return out;
-    }
-  out.values.push_back(-constant);
-  for (Exact& c : out.values) c = canonical(c, budget);
-  if (budget.exceeded())
-    for (Exact& c : out.values) c = exact_from_double(to_double(c));
-  return out;
-}
-
-struct Rows {
-  std::vector<std::vector<Exact>> values;
-  Said error;
-};
-
-// A matrix (`vertices` false: its rows) or a vertex list: a YAML list of rows (each a list or
-// "(a, b)"), or one text in a usual written form ("(0, 4), (8, 8)").
-Rows read_rows(const YAML::Node& node, bool vertices, WorkBudget& budget, double infinity = 0) {
+Rows read_rows(const YAML::Node& node, bool vertices, WorkBudget& budget, double infinity) {
   Rows out;
   std::vector<YAML::Node> rows;
   if (node.IsSequence() && node.size() > 0) {
@@ -442,7 +343,34 @@ Rows read_rows(const YAML::Node& node, bool vertices, WorkBudget& budget, double
   return out;
 }
 
-}  // namespace
+Said read_word_list(const YAML::Node& node, bool unordered_pairs, std::vector<std::string>& words) {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      // A pair written as a list of its two ends: [0, 3] is the edge 0-3.
+      const YAML::Node& item = node[i];
+      if (unordered_pairs && item.IsSequence() && item.size() == 2 && item[0].IsScalar() &&
+          item[1].IsScalar()) {
+        words.push_back(trimmed(item[0].Scalar()) + "-" + trimmed(item[1].Scalar()));
+        continue;
+      }
+      if (!node[i].IsScalar()) return say(kItemNotWord, i + 1);
+      words.push_back(trimmed(node[i].Scalar()));  // labels keep their case ("A.B")
+    }
+  } else if (node.IsScalar()) {
+    // Pairs written as bracketed tuples: "(0, 3), (1, 2)".
+    const std::vector<std::string> rows =
+        unordered_pairs ? split_rows(node.Scalar()) : std::vector<std::string>{};
+    for (std::string w : rows.empty() ? split_list(node.Scalar()) : rows) {
+      w = trimmed(w);
+      if (!w.empty()) words.push_back(w);
+    }
+  } else {
+    return say(kExpectedList);
+  }
+  return {};
+}
+
+}  // namespace reading
 
 namespace {
 
@@ -488,9 +416,6 @@ std::string raw_text(const YAML::Node& node) {
 
 namespace {
 
-ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, AngleUnit angles,
-                                ParsedAnswer p, WorkBudget& budget);
-
 // A name as compared: without case, spaces, `_`, braces and backslashes, Unicode subscripts,
 // primes and superscripts spelled in ASCII (D_f, Df, D_{f}; M⁻¹, M^-1, M^{-1}; P′, P').
 std::string symbol_key(const std::string& written) {
@@ -517,7 +442,7 @@ std::string symbol_key(const std::string& written) {
 // What follows "NAME =" when a text answer starts with the answer's name, or a symbol the
 // derivation uses for it (AnswerSpec::symbols: "D_f = 27", "s = −415.7"), and holds one '='.
 std::optional<std::string> value_after_own_name(const YAML::Node& node, const AnswerSpec& spec) {
-  if (!node.IsScalar() || spec.kind == AnswerKind::Plane) return std::nullopt;
+  if (!node.IsScalar() || answer_type(spec.kind).own_equals) return std::nullopt;
   const std::string& text = node.Scalar();
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos || text.find('=', eq + 1) != std::string::npos) return std::nullopt;
@@ -527,7 +452,7 @@ std::optional<std::string> value_after_own_name(const YAML::Node& node, const An
        std::none_of(spec.symbols.begin(), spec.symbols.end(),
                     [&](const std::string& sym) { return symbol_key(sym) == left; })))
     return std::nullopt;
-  const std::string rest = trimmed(text.substr(eq + 1));
+  const std::string rest = reading::trimmed(text.substr(eq + 1));
   if (rest.empty()) return std::nullopt;
   return rest;
 }
@@ -539,7 +464,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleU
   WorkBudget budget;  // one for the whole answer, shared by its numbers
   p.raw = raw_text(node);
   if (p.raw.size() > kMaxExpressionLength * 4) {
-    p.error = say(kAnswerTooLong, kMaxExpressionLength * 4);
+    p.error = say(reading::kAnswerTooLong, kMaxExpressionLength * 4);
     // Reports show the start only.
     std::size_t cut = 64;
     while (cut > 0 && (static_cast<unsigned char>(p.raw[cut]) & 0xC0) == 0x80) --cut;
@@ -547,7 +472,7 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleU
     return p;
   }
   if (!node.IsDefined() || node.IsNull()) {
-    p.error = say(kEmptyAnswer);
+    p.error = say(reading::kEmptyAnswer);
     return p;
   }
   // "none": the answer has no value (a segment clipped away, no unit normal of parallel vectors).
@@ -558,205 +483,20 @@ ParsedAnswer parse_answer(const YAML::Node& node, const AnswerSpec& spec, AngleU
   }
   // "z = 8" for the answer z: the answer's own name on the left of one '=' is dropped (not
   // for a plane, which may be an equation such as "z = 8 - x - y").
-  if (const std::optional<std::string> rest = value_after_own_name(node, spec))
-    return parse_answer_value(YAML::Node(*rest), spec, angles, std::move(p), budget);
-  return parse_answer_value(node, spec, angles, std::move(p), budget);
-}
-
-namespace {
-
-ParsedAnswer parse_answer_value(const YAML::Node& node, const AnswerSpec& spec, AngleUnit angles,
-                                ParsedAnswer p, WorkBudget& budget) {
-  switch (spec.kind) {
-    case AnswerKind::Scalar: {
-      if (!node.IsScalar()) {
-        p.error = say(kExpectedOneNumber);
-        return p;
-      }
-      Said error;
-      Exact v = parse_one(node.Scalar(), error, budget);
-      if (!error.empty()) {
-        p.error = error;
-        return p;
-      }
-      // "66.42°" read 66.42·π/180: an angle asked in degrees is that many degrees.
-      if (spec.angle && angles == AngleUnit::Degrees &&
-          node.Scalar().find("°") != std::string::npos)
-        v = canonical(v * 180 / GiNaC::Pi, budget);
-      p.value = Value::scalar(v);
-      break;
-    }
-    case AnswerKind::Vector:
-    case AnswerKind::Direction:
-    case AnswerKind::UnitVector:
-    case AnswerKind::Point: {
-      const Numbers n = read_numbers(node, budget);
-      if (!n.error.empty()) {
-        p.error = n.error;
-        return p;
-      }
-      p.value = Value::vector(n.values);
-      break;
-    }
-    case AnswerKind::Plane: {
-      const bool equation = node.IsScalar() && node.Scalar().find('=') != std::string::npos;
-      p.form = equation ? "equation" : "list";
-      const Numbers n =
-          equation ? read_plane_equation(node.Scalar(), budget) : read_numbers(node, budget);
-      if (!n.error.empty()) {
-        p.error = n.error;
-        return p;
-      }
-      if (n.values.size() != 4) {
-        p.error = say(kPlaneHasFourCoefficients);
-        return p;
-      }
-      p.value = Value::vector(n.values);
-      break;
-    }
-    case AnswerKind::Matrix:
-    case AnswerKind::Transform:
-    case AnswerKind::Segment:
-    case AnswerKind::PointSet:
-    case AnswerKind::Polygon: {
-      const bool vertices = spec.kind != AnswerKind::Matrix && spec.kind != AnswerKind::Transform;
-      const Rows rows = read_rows(node, vertices, budget, spec.infinity);
-      if (!rows.error.empty()) {
-        p.error = rows.error;
-        return p;
-      }
-      p.value = Value::matrix(rows.values);
-      break;
-    }
-    case AnswerKind::Bool: {
-      if (!node.IsScalar()) {
-        p.error = say(kExpectedTrueOrFalse);
-        return p;
-      }
-      // true/false, yes/no, and the answer's own pair of words (inside/outside), in any language.
-      std::vector<std::string> pair = {"true", "false", "yes", "no"};
-      pair.insert(pair.end(), spec.words.begin(), spec.words.end());
-      const std::string w = known_word(node.Scalar(), pair);
-      const auto it = std::find_if(kBoolWords.begin(), kBoolWords.end(),
-                                   [&](const auto& b) { return b.first == w; });
-      const auto named = std::find(spec.words.begin(), spec.words.end(), w);
-      if (it == kBoolWords.end() && named == spec.words.end()) {
-        p.error = spec.words.size() == 2 ? say(kNotTrueOrFalseOr, excerpt(node.Scalar()),
-                                               word_said(spec.words[0]), word_said(spec.words[1]))
-                                         : say(kNotTrueOrFalse, excerpt(node.Scalar()));
-        return p;
-      }
-      p.value = Value::boolean(it != kBoolWords.end() ? it->second : named == spec.words.begin());
-      break;
-    }
-    case AnswerKind::Category: {
-      if (!node.IsScalar()) {
-        p.error = say(kExpectedOneWord);
-        return p;
-      }
-      const std::string w = known_word(node.Scalar(), spec.words);
-      if (std::find(spec.words.begin(), spec.words.end(), w) == spec.words.end()) {
-        Said list;
-        for (const auto& a : spec.words) {
-          if (!list.empty()) list.append(Said::verbatim(", "));
-          list.append(word_said(a));
-        }
-        p.error = say(kNotOneOf, excerpt(node.Scalar()), list);
-        return p;
-      }
-      p.value = Value::category(w);
-      break;
-    }
-    case AnswerKind::BitString: {
-      if (!node.IsScalar()) {
-        p.error = say(kExpectedBitString);
-        return p;
-      }
-      std::string bits;
-      for (char c : node.Scalar())
-        if (c == '0' || c == '1')
-          bits += c;
-        else if (c != ' ' && c != '_') {
-          p.error = say(kNotBitString, excerpt(node.Scalar()));
-          return p;
-        }
-      p.value = Value::category(bits);
-      break;
-    }
-    case AnswerKind::WordList:
-    case AnswerKind::Sequence: {
-      std::vector<std::string> words;
-      if (node.IsSequence()) {
-        for (std::size_t i = 0; i < node.size(); ++i) {
-          // A pair written as a list of its two ends: [0, 3] is the edge 0-3.
-          const YAML::Node& item = node[i];
-          if (spec.unordered_pairs && item.IsSequence() && item.size() == 2 && item[0].IsScalar() &&
-              item[1].IsScalar()) {
-            words.push_back(trimmed(item[0].Scalar()) + "-" + trimmed(item[1].Scalar()));
-            continue;
-          }
-          if (!node[i].IsScalar()) {
-            p.error = say(kItemNotWord, i + 1);
-            return p;
-          }
-          words.push_back(trimmed(node[i].Scalar()));  // labels keep their case ("A.B")
-        }
-      } else if (node.IsScalar()) {
-        // Pairs written as bracketed tuples: "(0, 3), (1, 2)".
-        const std::vector<std::string> rows =
-            spec.unordered_pairs ? split_rows(node.Scalar()) : std::vector<std::string>{};
-        for (std::string w : rows.empty() ? split_list(node.Scalar()) : rows) {
-          w = trimmed(w);
-          if (!w.empty()) words.push_back(w);
-        }
-      } else {
-        p.error = say(kExpectedList);
-        return p;
-      }
-      p.value = Value::word_list(words);
-      break;
-    }
-    case AnswerKind::Statements: {
-      StatementChoice c = read_statement_choice(node);
-      if (!c.error.empty()) {
-        // Said by statement_choice (TRANSITIONAL while its error is English: the old catalogue).
-        p.error = c.error;
-        return p;
-      }
-      p.value = std::move(c.value);
-      break;
-    }
-    case AnswerKind::WordMap: {
-      if (!node.IsMap()) {
-        // The example in this answer's own terms: a face or an edge, and one of its words.
-        const Said example =
-            Said::verbatim(fmt::format("{{\"{}\": ", spec.unordered_pairs ? "0-1" : "0"))
-                .append(word_said(spec.words.empty() ? "visible" : spec.words.front()))
-                .append(Said::verbatim("}"));
-        p.error = say(kExpectedMapping, example);
-        return p;
-      }
-      std::vector<std::pair<std::string, std::string>> entries;
-      for (auto it = node.begin(); it != node.end(); ++it) {
-        if (!it->second.IsScalar()) {
-          p.error = say(kValueNotWord, it->first.as<std::string>());
-          return p;
-        }
-        entries.emplace_back(it->first.as<std::string>(),
-                             known_word(it->second.Scalar(), kMapWords));
-      }
-      p.value = Value::word_map(entries);
-      break;
-    }
+  const std::optional<std::string> rest = value_after_own_name(node, spec);
+  AnswerReading reading{angles, budget};
+  const Said error = answer_type(spec.kind).read(rest ? YAML::Node(*rest) : node, spec, reading, p);
+  if (!error.empty()) {
+    p.error = error;
+    p.value = Value();
+    return p;
   }
   if (budget.exceeded()) {
     p.value.exact.clear();
-    p.note = say(kReadNumerically, kNumericFallbackDigits);
+    p.note = say(reading::kReadNumerically, reading::kNumericFallbackDigits);
   }
   p.ok = true;
   return p;
 }
-
-}  // namespace
 
 }  // namespace frustum

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "grader/answer_type.hpp"
+
 namespace frustum {
 
 double max_abs(const std::vector<double>& v, std::size_t begin, std::size_t end) {
@@ -38,7 +40,8 @@ std::vector<double> default_magnitudes(const Value& e, AnswerKind kind) {
   const std::vector<double>& x = e.numbers;
   std::vector<double> m(x.size());
   const bool rows = e.shape == Value::Shape::Matrix && e.cols > 0;
-  if (kind == AnswerKind::Transform && rows && e.rows == e.cols && e.rows >= 2) {
+  const bool blocks = answer_type(kind).block_magnitudes;
+  if (blocks && rows && e.rows == e.cols && e.rows >= 2) {
     // Blocks of a homogeneous matrix: the linear part, the translation column, the bottom row.
     const std::size_t n = static_cast<std::size_t>(e.rows);
     enum Block { kLinear, kTranslation, kBottom };
@@ -53,7 +56,7 @@ std::vector<double> default_magnitudes(const Value& e, AnswerKind kind) {
       for (std::size_t j = 0; j < n; ++j) m[i * n + j] = size[block(i, j)];
     return m;
   }
-  if (rows && kind != AnswerKind::Transform) {
+  if (rows && !blocks) {
     const std::size_t c = static_cast<std::size_t>(e.cols);
     for (std::size_t r = 0; r * c < x.size(); ++r) {
       const double row = max_abs(x, r * c, (r + 1) * c);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <optional>
 
+#include "grader/answer_type.hpp"
 #include "solver/util/expression.hpp"
 
 namespace frustum {
@@ -129,6 +130,7 @@ std::vector<GivenList> given_lists(const YAML::Node& given) {
 std::vector<TrivialAnswer> trivial_answers(const Value& key, AnswerKind kind,
                                            const std::vector<GivenList>& given, Api api) {
   std::vector<TrivialAnswer> out;
+  const AnswerType& type = answer_type(kind);
   const std::size_t n = key.numbers.size();
   if (n < 2 || (key.shape != Value::Shape::Vector && key.shape != Value::Shape::Matrix)) return out;
   const auto add = [&](Said name, Said feedback, std::vector<double> numbers, bool no_work = true) {
@@ -146,7 +148,7 @@ std::vector<TrivialAnswer> trivial_answers(const Value& key, AnswerKind kind,
       for (std::size_t j = 0; j < s; ++j) transposed[i * s + j] = key.numbers[j * s + i];
     }
     add(say(kIdentityMatrix), say(kIdentityMatrixLeavesPoints), identity);
-    if (kind == AnswerKind::Transform)
+    if (type.transposed_is_convention)
       add(say(kTransposedConvention),
           api == Api::DirectX
               ? say(kTransposeColumnVectorForm) + say(kDirectXTranslationInBottomRow)
@@ -159,8 +161,7 @@ std::vector<TrivialAnswer> trivial_answers(const Value& key, AnswerKind kind,
       std::vector<double>(n, 0.0));
   for (const GivenList& g : given) {
     std::vector<double> copy = g.value.numbers;
-    if (copy.size() + 1 == n && (kind == AnswerKind::Point || kind == AnswerKind::Vector))
-      copy.push_back(1);
+    if (copy.size() + 1 == n && type.homogeneous_copies) copy.push_back(1);
     add(say(kCopiedFromTheGiven),
         g.field.empty() ? say(kGivenCopiedUnchanged) : say(kFieldCopiedUnchanged, g.field), copy);
   }

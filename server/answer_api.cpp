@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grader/answer_parser.hpp"
+#include "grader/answer_type.hpp"
 #include "server/answer_text.hpp"
 #include "server/pages.hpp"
 #include "server/set_page.hpp"
@@ -38,9 +39,8 @@ const AnswerSpec* asked_answer(StudentApp& app, const Visitor& v,
 // How an answer was read, in the form a student writes it: a plane as its equation
 // (ax + by + cz = d), every other answer as the derivations show its value.
 MathText read_as(const Value& value, const AnswerSpec& spec) {
-  if (spec.kind == AnswerKind::Plane && value.exact.size() == 4)
-    return plane_equation(value.exact[0], value.exact[1], value.exact[2], value.exact[3]);
-  return value.shown();
+  const AnswerType& type = answer_type(spec.kind);
+  return type.shown ? type.shown(value) : value.shown();
 }
 
 Response too_many(int wait) {

@@ -24,7 +24,9 @@ class Rng;
 struct GenerateOptions;  // generate.hpp
 struct Drawable;         // solver/visibility/drawable.hpp
 
-// How an answer is compared: the equivalences the grader applies.
+// The type of an answer: how a student writes it, how it is read and compared with the key
+// (the equivalences the grader applies) and how a platform asks for it — each in its own file of
+// grader/answer_types/ (grader/answer_type.hpp).
 enum class AnswerKind {
   Scalar,      // a number
   Vector,      // componentwise
