@@ -1,5 +1,5 @@
 // The student side of `frustum serve` as one handler: a plain function of a request, the time
-// and the app's state, giving a response (no sockets; tests/server_handlers_test.cpp calls it).
+// and the app's state, giving a response (no sockets; tests/server_student_app_test.cpp calls it).
 //
 //   GET  /start?token=T        the link: token → session cookie, redirect to / (token gone)
 //   GET  /                     the student's sets
