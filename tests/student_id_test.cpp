@@ -2,6 +2,8 @@
 // written and refused when no student can have them, file names shown escaped but still graded,
 // ids that are one student up to case, spaces and Unicode form flagged as one, and exports that
 // keep every question whatever its id.
+#include "grader/student_id.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -21,7 +23,6 @@
 #include "export/paper.hpp"
 #include "export/quiz_items.hpp"
 #include "export/xml_text.hpp"
-#include "grader/student_id.hpp"
 #include "grader/visible_text.hpp"
 #include "report/feedback.hpp"
 #include "report/gradescope.hpp"
