@@ -57,7 +57,7 @@ int run_grade(const GradeOptions& options, const Output& o);
 int run_kinds(const Output& o, bool markdown = false);
 // frustum generate (app/generate_command.cpp): variants for `students`, or `count` variants
 // from `seed`, written with their answer keys under out_dir.
-struct GenerateCommand {
+struct GenerateCommandOptions {
   std::string set;
   std::vector<std::string> students;
   std::optional<std::string> roster;  // --roster: a CSV with a student column, or one id per line
@@ -69,7 +69,7 @@ struct GenerateCommand {
   std::optional<Lang> lang;     // the exam sheets' texts (none: the set's own `lang:`)
   bool allow_repeats = false;   // a problem whose ranges run out may repeat among the class
 };
-int run_generate(const GenerateCommand& options, const Output& o);
+int run_generate(const GenerateCommandOptions& options, const Output& o);
 
 // frustum export (app/export_command.cpp): a set as PrairieLearn questions, a Canvas QTI
 // package or Moodle XML (format prairielearn | qti | moodle, `input` a set), or a gradebook.csv

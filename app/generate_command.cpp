@@ -87,8 +87,8 @@ std::string compile_latex(const std::string& engine, const std::string& text,
 }
 
 // The paper route: DIR/STEM-exams.tex and DIR/STEM-key.tex, compiled to PDF with --format pdf.
-int write_paper(const GenerateCommand& g, const ProblemSet& set, const std::vector<Named>& variants,
-                const Output& o) {
+int write_paper(const GenerateCommandOptions& g, const ProblemSet& set,
+                const std::vector<Named>& variants, const Output& o) {
   namespace fs = std::filesystem;
   std::vector<PaperSheet> sheets;
   for (const Named& v : variants)
@@ -137,8 +137,8 @@ struct Rendered {
   std::string set_text, key_text;
 };
 
-Rendered render(const GenerateCommand& g, const YamlDocument& doc, const std::string& fingerprint,
-                const Named& v) {
+Rendered render(const GenerateCommandOptions& g, const YamlDocument& doc,
+                const std::string& fingerprint, const Named& v) {
   namespace fs = std::filesystem;
   Rendered out;
   if (!v.variant.all_errors().empty()) {
@@ -276,7 +276,8 @@ bool set_can_vary(const ProblemSet& set, bool vary_all, const Output& o) {
 
 // The students named with --student and in --roster; nothing (after printing why) when the
 // roster cannot be read.
-std::optional<std::vector<std::string>> students_of(const GenerateCommand& g, const Output& o) {
+std::optional<std::vector<std::string>> students_of(const GenerateCommandOptions& g,
+                                                    const Output& o) {
   std::vector<std::string> students = g.students;
   if (g.roster) {
     try {
@@ -298,7 +299,7 @@ class VariantWriter {
  public:
   using Stage = std::function<void(const std::string& set_path, const std::string& key_path)>;
 
-  VariantWriter(const GenerateCommand& g, const YamlDocument& doc, std::string fingerprint,
+  VariantWriter(const GenerateCommandOptions& g, const YamlDocument& doc, std::string fingerprint,
                 const Output& o, bool paper)
       : g_(g), doc_(doc), fingerprint_(std::move(fingerprint)), o_(o), paper_(paper) {}
 
@@ -397,7 +398,7 @@ class VariantWriter {
     written_.clear();
   }
 
-  const GenerateCommand& g_;
+  const GenerateCommandOptions& g_;
   const YamlDocument& doc_;
   const std::string fingerprint_;
   const Output& o_;
@@ -416,7 +417,7 @@ class VariantWriter {
 // process takes their variants in order and draws again, itself, any that repeats a given it
 // did not know (SeedVariants::take): the files are those of one process whatever -j is.
 // Returns the problems that ran out of variants (--allow-repeats).
-std::vector<std::string> draw_in_workers(VariantWriter& w, const GenerateCommand& g,
+std::vector<std::string> draw_in_workers(VariantWriter& w, const GenerateCommandOptions& g,
                                          const YamlDocument& doc, const std::string& fingerprint,
                                          const ProblemSet& set,
                                          const std::vector<std::string>& students, bool vary_all,
@@ -533,7 +534,7 @@ std::vector<std::string> draw_in_workers(VariantWriter& w, const GenerateCommand
 // The variants drawn in this process, in order; the class together, pairwise distinct,
 // redrawing a student whose variant repeats another's. Returns the problems that ran out of
 // variants (--allow-repeats).
-std::vector<std::string> draw_here(VariantWriter& w, const GenerateCommand& g,
+std::vector<std::string> draw_here(VariantWriter& w, const GenerateCommandOptions& g,
                                    const ProblemSet& set, const std::vector<std::string>& students,
                                    bool vary_all) {
   if (g.seed) {
@@ -551,7 +552,7 @@ std::vector<std::string> draw_here(VariantWriter& w, const GenerateCommand& g,
 
 }  // namespace
 
-int run_generate(const GenerateCommand& g, const Output& o) {
+int run_generate(const GenerateCommandOptions& g, const Output& o) {
   const YamlDocument doc = load_yaml_file(g.set);
   const ProblemSet set = load_problem_set(doc, g.set);
   const bool vary_all = !set_varies(set);
@@ -592,7 +593,7 @@ int run_generate(const GenerateCommand& g, const Output& o) {
 }
 
 Command add_generate_command(CLI::App& cli) {
-  auto opt = std::make_shared<GenerateCommand>();
+  auto opt = std::make_shared<GenerateCommandOptions>();
   auto lang = std::make_shared<std::string>();  // empty: the set's own
   auto* generate =
       cli.add_subcommand("generate", "Per-student or seeded variants of a set, with answer keys");

@@ -119,19 +119,19 @@ int serve(const ServeOptions& s, const server::Course& course, Store& store, con
   server::WorkerPool workers(
       {"serve", s.course, "--grade-seconds", std::to_string(s.grade_seconds)}, s.workers,
       {"FRUSTUM_DB=" + url});  // in the environment: a password never shows in `ps`
-  server::AppConfig config;
-  config.secure_cookies = s.secure_cookies;
-  config.preview_rate = s.preview_rate;
-  config.preview_burst = 3 * s.preview_rate;
-  config.submit_rate = s.submit_rate;
-  config.submit_burst = std::max(10.0, 3 * s.submit_rate);
+  server::StudentAppOptions app_options;
+  app_options.secure_cookies = s.secure_cookies;
+  app_options.preview_rate = s.preview_rate;
+  app_options.preview_burst = 3 * s.preview_rate;
+  app_options.submit_rate = s.submit_rate;
+  app_options.submit_burst = std::max(10.0, 3 * s.submit_rate);
   // A set file changed while serving that no longer loads: its errors, and the set stays served
   // as it was.
-  config.report = [&o](const std::vector<Diagnostic>& errors) {
+  app_options.report = [&o](const std::vector<Diagnostic>& errors) {
     for (const Diagnostic& d : errors)
       o.err << d.format() << " (still serving the set as it was)\n";
   };
-  server::StudentApp app(course, store, config);
+  server::StudentApp app(course, store, app_options);
   server::HttpServerOptions http;
   std::tie(http.host, http.port) = host_port(s.listen);
   http.limits.max_connections = s.max_connections;

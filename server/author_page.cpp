@@ -52,14 +52,14 @@ std::optional<Json> run_preview(StudentApp& app, const AuthoredSet& set, const s
     out << yaml;
     if (!out) return std::nullopt;
   }
-  std::vector<std::string> argv = {app.config.self_binary, "serve", app.course().dir,
+  std::vector<std::string> argv = {app.options.self_binary, "serve", app.course().dir,
                                    "--author-preview", set.file.filename().string()};
   if (!student.empty()) argv.insert(argv.end(), {"--author-student", student});
   if (check_only) argv.push_back("--author-check");
   RunOptions options;
   options.stdin_file = input.string();
   options.err = OutputTo::Null;
-  options.seconds = app.config.author_seconds;
+  options.seconds = app.options.author_seconds;
   options.max_output = 32u << 20;
   const ProgramRun run = run_program(argv, options);
   std::error_code ec;

@@ -167,9 +167,9 @@ Response events(StudentApp& app, const Request& r) {
   if (!mark)
     if (const auto it = query.find("mark"); it != query.end()) mark = number(it->second);
   std::int64_t now_mark = app.store.change_mark();
-  if (mark && *mark == now_mark && app.config.events_wait_ms > 0) {
-    if (++app.instructor.waiting <= app.config.event_waiters)
-      now_mark = app.store.wait_for_change(*mark, app.config.events_wait_ms);
+  if (mark && *mark == now_mark && app.options.events_wait_ms > 0) {
+    if (++app.instructor.waiting <= app.options.event_waiters)
+      now_mark = app.store.wait_for_change(*mark, app.options.events_wait_ms);
     --app.instructor.waiting;
   }
   std::string body = "retry: 1000\nid: " + std::to_string(now_mark) + "\n";

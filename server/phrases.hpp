@@ -1,5 +1,5 @@
 // Every phrase a student reads on the served pages, by key, in English, Japanese and Russian
-// (ServePhrases in tests/server_handlers_test.cpp fails on a key without all three).
+// (ServePhrases in tests/server_student_app_test.cpp fails on a key without all three).
 #pragma once
 
 #include <cstddef>

@@ -37,12 +37,12 @@ Response start_session(StudentApp& app, const Request& request, Millis now) {
   if (!who) return message_page(404, course_lang(app.course()), Say::LinkInvalid);
   const std::string session = random_token();
   app.store.put_session(sha256_hex(session),
-                        SessionRecord{*who, random_token(), now + app.config.session_ms, role});
+                        SessionRecord{*who, random_token(), now + app.options.session_ms, role});
   Response r{303, {{"Location", role == Role::Instructor ? "/instructor/" : "/"}}, ""};
   r.set("Set-Cookie", std::string(kSessionCookie) + "=" + session +
                           "; Path=/; HttpOnly; SameSite=Strict; Max-Age=" +
-                          std::to_string(app.config.session_ms / 1000) +
-                          (app.config.secure_cookies ? "; Secure" : ""));
+                          std::to_string(app.options.session_ms / 1000) +
+                          (app.options.secure_cookies ? "; Secure" : ""));
   return r;
 }
 

@@ -1,5 +1,5 @@
 // The student side of `frustum serve` as one handler: a plain function of a request, the time
-// and the app's state, giving a response (no sockets; tests/server_handlers_test.cpp calls it).
+// and the app's state, giving a response (no sockets; tests/server_student_app_test.cpp calls it).
 //
 //   GET  /start?token=T        the link: token → session cookie, redirect to / (token gone)
 //   GET  /                     the student's sets
@@ -27,7 +27,7 @@
 
 namespace frustum::server {
 
-struct AppConfig {
+struct StudentAppOptions {
   bool secure_cookies = false;                   // behind a TLS proxy: cookies marked Secure
   Millis session_ms = 14LL * 24 * 3600 * 1000;   // a session lasts this long
   double preview_rate = 10, preview_burst = 30;  // per session, a second
@@ -47,18 +47,18 @@ struct AppConfig {
 };
 
 struct StudentApp {
-  StudentApp(Course c, Store& s, AppConfig cfg)
+  StudentApp(Course c, Store& s, StudentAppOptions o)
       : store(s),
-        config(cfg),
-        preview_limit(cfg.preview_rate, cfg.preview_burst),
-        draft_limit(cfg.preview_rate, cfg.preview_burst),
-        submit_limit(cfg.submit_rate, cfg.submit_burst),
-        live(std::move(c), exact_math, cfg.look_every_ms, cfg.report) {}
+        options(o),
+        preview_limit(o.preview_rate, o.preview_burst),
+        draft_limit(o.preview_rate, o.preview_burst),
+        submit_limit(o.submit_rate, o.submit_burst),
+        live(std::move(c), exact_math, o.look_every_ms, o.report) {}
   // The course this request sees: the snapshot handle_student took when the request began (the
   // sets as their files were then); outside a request, the course as it is now.
   const Course& course() const;
   Store& store;
-  AppConfig config;
+  StudentAppOptions options;
   RateLimiter preview_limit, draft_limit, submit_limit;
   // GiNaC (the exact numbers in parsed answers and in the course's givens) is not thread-safe:
   // its expressions share reference counts and tables. Every handler that touches exact values

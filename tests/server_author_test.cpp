@@ -76,8 +76,8 @@ class AuthorPage : public ::testing::Test {
     course_.instructors = {"carol"};
     ASSERT_TRUE(course_.errors.empty()) << course_.errors.front().format();
     store_ = open_store("sqlite:" + (dir_ / "serve.sqlite").string());
-    config_.self_binary = FRUSTUM_BINARY;
-    app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+    options_.self_binary = FRUSTUM_BINARY;
+    app_ = std::make_unique<StudentApp>(course_, *store_, options_);
     store_->put_student("alice", sha256_hex(kAlice));
     store_->put_instructor("carol", sha256_hex(kCarol));
     carol_ = sign_in(kCarol);
@@ -133,7 +133,7 @@ class AuthorPage : public ::testing::Test {
   static constexpr const char* kAlice = "0123456789abcdef0123456789abcdef";
   static constexpr const char* kCarol = "c0ffeec0ffeec0ffeec0ffeec0ffee00";
   fs::path dir_;
-  AppConfig config_;
+  StudentAppOptions options_;
   Course course_;
   std::unique_ptr<Store> store_;
   std::unique_ptr<StudentApp> app_;
@@ -316,8 +316,8 @@ TEST_F(AuthorPage, CsrfAndOriginAreChecked) {
 }
 
 TEST_F(AuthorPage, APreviewThatFailsIsAnAnswerNotACrash) {
-  config_.self_binary = "/nonexistent/frustum";
-  app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+  options_.self_binary = "/nonexistent/frustum";
+  app_ = std::make_unique<StudentApp>(course_, *store_, options_);
   const Response r = post("/instructor/author/week1/preview", carol_,
                           "csrf=" + csrf_ + "&yaml=" + url_encode(kWeek1));
   EXPECT_EQ(r.status, 503);

@@ -70,8 +70,8 @@ class InstructorPages : public ::testing::Test {
     ASSERT_TRUE(course_.errors.empty()) << course_.errors.front().format();
     course_.instructors = {"prof"};
     store_ = open_store("sqlite:" + (dir_ / "serve.sqlite").string());
-    config_.events_wait_ms = 0;  // no test waits
-    app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+    options_.events_wait_ms = 0;  // no test waits
+    app_ = std::make_unique<StudentApp>(course_, *store_, options_);
     store_->put_student("alice", sha256_hex(kAlice));
     store_->put_student("bob", sha256_hex(kBob));
     store_->put_student("carol", sha256_hex(kCarol));
@@ -127,7 +127,7 @@ class InstructorPages : public ::testing::Test {
   }
 
   fs::path dir_;
-  AppConfig config_;
+  StudentAppOptions options_;
   Course course_;
   std::unique_ptr<Store> store_;
   std::unique_ptr<StudentApp> app_;
@@ -153,7 +153,7 @@ TEST_F(InstructorPages, AnInstructorsLinkOpensTheInstructorsPagesOnly) {
   EXPECT_EQ(get("/favicon.ico", prof).status, 404);
   // An instructor no longer in instructors.csv (read at start) is signed out.
   course_.instructors.clear();
-  app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+  app_ = std::make_unique<StudentApp>(course_, *store_, options_);
   EXPECT_EQ(get("/instructor/", prof).status, 403);
 }
 

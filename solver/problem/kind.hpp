@@ -164,7 +164,7 @@ struct KindInfo {
   // listing of kinds (smaller first): set in the kind's `<name>_kind()`; the registry sorts by it.
   int order = 0;
   // The kinds table of docs/kinds.md (Markdown): what `given` takes and what the answers are.
-  // The table is generated from these (kinds_table_markdown) and tests/kinds_table_test.cpp
+  // The table is generated from these (kinds_table_markdown) and tests/registry_test.cpp
   // checks docs/kinds.md against it.
   std::string doc_given;
   std::string doc_answers;

@@ -2,6 +2,8 @@
 // read once (VaryPlan) draws what apply_vary draws, and draw_problem, which refuses a draw
 // whose given alone is ill-conditioned before solving it, takes the same draw (or reports the
 // same reason) as the plain loop that solves every draw first. Properties over many seeds.
+#include "solver/problem/vary_spec.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,7 +11,6 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/variants.hpp"
-#include "solver/problem/vary_spec.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "test_util.hpp"
 

@@ -1,11 +1,11 @@
 // Escaping text for SVG and HTML pages: the five special characters become entities, every other
 // byte (UTF-8 included) is copied as it is.
+#include "solver/derivation/svg.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 #include <string>
-
-#include "solver/derivation/svg.hpp"
 
 namespace frustum {
 namespace {

@@ -3,6 +3,8 @@
 // coordinates, the z-buffer) as SVG and TikZ from the same strokes, or `frustum draw`'s
 // picture (hidden lines, painter against z-buffer) as SVG — and `solve --format html|latex`
 // shows it under the problem's text.
+#include "solver/problem/problem_figure.hpp"
+
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -12,7 +14,6 @@
 #include "report/feedback.hpp"
 #include "solver/derivation/plane_drawing.hpp"
 #include "solver/derivation/render.hpp"
-#include "solver/problem/problem_figure.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/util/base64.hpp"
 #include "test_util.hpp"

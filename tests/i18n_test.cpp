@@ -2,6 +2,8 @@
 // student reading them in another language, only formulas and names. The corpus is every
 // student-facing text of every bundled set, of generated variants of every kind in every API
 // convention, and of the grader's feedback (student_text.hpp).
+#include "solver/derivation/i18n.hpp"
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -17,7 +19,6 @@
 #include "grader/answer_parser.hpp"
 #include "report/feedback.hpp"
 #include "report/report.hpp"
-#include "solver/derivation/i18n.hpp"
 #include "solver/derivation/render.hpp"
 #include "solver/derivation/vocabulary.hpp"
 #include "solver/problem/conventions_note.hpp"

@@ -56,7 +56,7 @@ class StudentPages : public ::testing::Test {
     course_ = load_course(dir_.string(), {"alice", "bob"});
     ASSERT_TRUE(course_.errors.empty()) << course_.errors.front().format();
     store_ = open_store("sqlite:" + (dir_ / "serve.sqlite").string());
-    app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+    app_ = std::make_unique<StudentApp>(course_, *store_, options_);
     store_->put_student("alice", sha256_hex(kAlice));
     store_->put_student("bob", sha256_hex(kBob));
   }
@@ -88,7 +88,7 @@ class StudentPages : public ::testing::Test {
   static constexpr const char* kAlice = "0123456789abcdef0123456789abcdef";
   static constexpr const char* kBob = "fedcba9876543210fedcba9876543210";
   fs::path dir_;
-  AppConfig config_;
+  StudentAppOptions options_;
   Course course_;
   std::unique_ptr<Store> store_;
   std::unique_ptr<StudentApp> app_;
@@ -109,8 +109,8 @@ TEST_F(StudentPages, TheLinkBecomesAStrictCookieAndLeavesTheUrl) {
 }
 
 TEST_F(StudentPages, SecureCookiesBehindTls) {
-  config_.secure_cookies = true;
-  app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+  options_.secure_cookies = true;
+  app_ = std::make_unique<StudentApp>(course_, *store_, options_);
   EXPECT_NE(get(std::string("/start?token=") + kAlice).header("Set-Cookie")->find("; Secure"),
             std::string::npos);
 }
@@ -172,8 +172,8 @@ TEST_F(StudentPages, ThePreviewReadsButNeverJudges) {
 // Handlers run on many threads and GiNaC is not thread-safe: previews (exact numbers) from
 // several threads at once must neither crash nor disagree.
 TEST_F(StudentPages, PreviewsFromManyThreadsAtOnce) {
-  config_.preview_burst = 1e9;
-  app_ = std::make_unique<StudentApp>(course_, *store_, config_);
+  options_.preview_burst = 1e9;
+  app_ = std::make_unique<StudentApp>(course_, *store_, options_);
   const std::string alice = sign_in(kAlice);
   const std::string csrf = csrf_of(get("/set/week1", alice).body);
   const auto preview = [&](int n) {
@@ -294,7 +294,7 @@ TEST_F(StudentPages, PreviewsAndSubmissionsAreRateLimitedPerSession) {
       EXPECT_EQ(r.header("Retry-After"), "1");
     }
   }
-  EXPECT_EQ(refused, 40 - static_cast<int>(config_.preview_burst));
+  EXPECT_EQ(refused, 40 - static_cast<int>(options_.preview_burst));
   // Another session is not slowed; the same one is served again a second later.
   const std::string bob_csrf = csrf_of(get("/set/week1", bob).body);
   EXPECT_EQ(

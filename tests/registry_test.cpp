@@ -1,12 +1,13 @@
 // docs/kinds.md's kinds table is generated from the registry (each kind file's doc_given and
 // doc_answers, in the registry's order): this fails when the two differ and prints the table
 // to paste into docs/kinds.md (`frustum kinds --format markdown` prints it too).
+#include "solver/problem/registry.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <string>
 
-#include "solver/problem/registry.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

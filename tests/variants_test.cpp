@@ -1,7 +1,8 @@
 // What students read is checked before they read it: a problem's text names only values of its
 // given, and a variant keeps its exercise's structure (the same steps and kinds of givens).
-#include "solver/problem/generate.hpp"
 #include "solver/problem/variants.hpp"
+
+#include "solver/problem/generate.hpp"
 #include "typeset_corpus.hpp"
 
 namespace frustum {
