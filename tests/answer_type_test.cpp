@@ -46,8 +46,12 @@ TEST(AnswerTypes, EachKindOfAnswerHasOneCompleteType) {
     EXPECT_FALSE(t.syntax.empty()) << i;
     EXPECT_TRUE(t.read && t.compare && t.quiz) << i;
     // What a platform's input needs: a hint to type by, or the words to choose from.
-    if (t.input == TypedInput::Text) EXPECT_NE(t.typed_hint, nullptr) << i;
-    if (t.input == TypedInput::Choice) EXPECT_TRUE(t.choices && t.chosen) << i;
+    if (t.input == TypedInput::Text) {
+      EXPECT_NE(t.typed_hint, nullptr) << i;
+    }
+    if (t.input == TypedInput::Choice) {
+      EXPECT_TRUE(t.choices && t.chosen) << i;
+    }
   }
 }
 
