@@ -12,7 +12,7 @@
 #include "solver/numeric/precision.hpp"
 #include "solver/raster/scene.hpp"
 #include "solver/raster/zbuffer.hpp"
-#include "solver/steps/scene_reader.hpp"
+#include "solver/shared/scene_reader.hpp"
 #include "solver/util/thread_team.hpp"
 
 namespace frustum {

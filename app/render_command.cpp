@@ -21,7 +21,7 @@
 #include "solver/raster/fill.hpp"
 #include "solver/raster/png_writer.hpp"
 #include "solver/raster/scene_frame.hpp"
-#include "solver/steps/scene_reader.hpp"
+#include "solver/shared/scene_reader.hpp"
 
 namespace frustum::app {
 

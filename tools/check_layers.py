@@ -21,8 +21,8 @@ USES = {
     "solver/visibility": ["solver/derivation"],
     "solver/input": ["solver/visibility"],      # YAML documents and given readers
     "solver/problem": ["solver/input"],         # kinds' interface, registry, sets, variants
-    "solver/steps": ["solver/problem"],         # building blocks shared by kinds
-    "solver/kinds": ["solver/steps"],           # one file or file pair per kind
+    "solver/shared": ["solver/problem"],        # what several kinds share
+    "solver/kinds": ["solver/shared"],          # one file or file pair per kind
     "solver/accuracy": ["solver/kinds"],        # speed against error of the backends
     "grader": ["solver/kinds"],                 # judging one answer file
     "report": ["grader"],                       # what a grading says, in every format
