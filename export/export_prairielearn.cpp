@@ -10,7 +10,7 @@
 #include "export/export_tolerance.hpp"
 #include "export/quiz_items.hpp"
 #include "export/xml_text.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/problem_figure.hpp"
 #include "solver/problem/solve_set.hpp"

@@ -11,7 +11,7 @@
 
 #include "batch/set_check.hpp"
 #include "server/given_tex.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/kinds/render.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
