@@ -12,7 +12,7 @@
 #include "solver/numeric/precision.hpp"
 #include "solver/raster/scene.hpp"
 #include "solver/raster/zbuffer.hpp"
-#include "solver/steps/scene_reader.hpp"
+#include "solver/shared/scene_reader.hpp"
 #include "solver/util/thread_team.hpp"
 
 namespace frustum {
@@ -95,7 +95,8 @@ struct RenderOptions {
   std::optional<std::pair<int, int>> size;  // --size WxH
   std::optional<std::string> id;            // the render problem of a set
   std::optional<std::string> method;        // zbuffer | scanline
-  int threads = 1;  // ≥ 2: fill.hpp's render_zbuffer (and the PNG's colour scan) share the work
+  // ≥ 2: threaded_zbuffer.hpp's render_zbuffer (and the PNG's colour scan) share the work.
+  int threads = 1;
 };
 // The threads a render with --threads N shares between its steps and its PNG writer, started
 // now (so that they start while the scene is read): none for one thread, at most 64 (--threads
@@ -105,8 +106,8 @@ std::optional<ThreadTeam> render_team(int threads);
 // same (bench/render_race.cpp, as llvmpipe's context keeps its framebuffer); none: a new one.
 int run_render(const RenderOptions& options, const Output& o, Frame* target = nullptr);
 // The scene `frustum render` draws (--size and --method applied), or the exit status after
-// printing why not; its PNG writer is solver/raster/png_writer.hpp. bench/render_race.cpp races the
-// same steps through llvmpipe.
+// printing why not; its PNG writer is solver/raster_fast/png_writer.hpp. bench/render_race.cpp
+// races the same steps through llvmpipe.
 std::variant<Scene, int> load_render_scene(const RenderOptions& options, const Output& o);
 // The same with its exact inputs and the exact projection · camera (--size applied): what
 // `frustum render` certifies its frame against (certified_frame.hpp).

@@ -4,7 +4,7 @@
 
 #include <charconv>
 
-#include "solver/steps/scene_reader.hpp"
+#include "solver/shared/scene_reader.hpp"
 
 namespace frustum::app {
 

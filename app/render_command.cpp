@@ -19,9 +19,9 @@
 #include "solver/problem/problem_set.hpp"
 #include "solver/raster/certified_frame.hpp"
 #include "solver/raster/fill.hpp"
-#include "solver/raster/png_writer.hpp"
-#include "solver/raster/scene_frame.hpp"
-#include "solver/steps/scene_reader.hpp"
+#include "solver/raster_fast/png_writer.hpp"
+#include "solver/raster_fast/scene_frame.hpp"
+#include "solver/shared/scene_reader.hpp"
 
 namespace frustum::app {
 

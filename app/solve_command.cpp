@@ -8,7 +8,7 @@
 #include "app/cli_options.hpp"
 #include "app/set_files.hpp"
 #include "report/report.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/problem/problem_figure.hpp"
 #include "solver/problem/solve_precision.hpp"
 #include "solver/problem/solve_set.hpp"

@@ -38,7 +38,8 @@
 #include "app/commands.hpp"
 #include "bench/bandwidth_ceiling.hpp"
 #include "solver/raster/fill.hpp"
-#include "solver/raster/png_writer.hpp"
+#include "solver/raster_fast/png_writer.hpp"
+#include "solver/raster_fast/threaded_zbuffer.hpp"
 
 namespace frustum {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/problem/problem_set.hpp"
 #include "solver/problem/solve_set.hpp"
 

@@ -10,7 +10,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/input/yaml_document.hpp"
 #include "solver/problem/problem_set.hpp"
-#include "solver/steps/scene_reader.hpp"
+#include "solver/shared/scene_reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

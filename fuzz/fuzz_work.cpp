@@ -30,7 +30,8 @@
 #include "solver/raster/fill.hpp"
 #include "solver/raster/frame_work.hpp"
 #include "solver/raster/scanline.hpp"
-#include "solver/steps/scene_reader.hpp"
+#include "solver/raster_fast/threaded_zbuffer.hpp"
+#include "solver/shared/scene_reader.hpp"
 #include "solver/visibility/edge_classes.hpp"
 #include "solver/visibility/pictures.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "grader/visible_text.hpp"
 #include "report/report.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/svg.hpp"
 #include "solver/problem/problem_figure.hpp"
 #include "solver/util/exact_format.hpp"

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "grader/grade.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/i18n.hpp"
-#include "solver/derivation/render.hpp"
 
 namespace frustum {
 

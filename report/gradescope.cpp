@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "report/feedback.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 
 namespace frustum {
 

@@ -5,7 +5,7 @@
 #include "grader/visible_text.hpp"
 #include "report/feedback.hpp"
 #include "report/report.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 
 namespace frustum {
 

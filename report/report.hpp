@@ -6,7 +6,7 @@
 #include <string>
 
 #include "grader/grade.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/util/said.hpp"
 
 namespace frustum {

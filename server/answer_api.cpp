@@ -7,8 +7,8 @@
 #include "server/answer_text.hpp"
 #include "server/pages.hpp"
 #include "server/set_page.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/math_text.hpp"
-#include "solver/derivation/render.hpp"
 
 namespace frustum::server {
 

@@ -11,12 +11,12 @@
 
 #include "batch/set_check.hpp"
 #include "server/given_tex.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/kinds/render.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
-#include "solver/raster/png_writer.hpp"
-#include "solver/raster/scene_frame.hpp"
+#include "solver/raster_fast/png_writer.hpp"
+#include "solver/raster_fast/scene_frame.hpp"
 #include "solver/util/base64.hpp"
 #include "solver/visibility/pictures.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "report/report.hpp"
 #include "server/answer_text.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 
 namespace frustum::server {
 

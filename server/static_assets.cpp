@@ -5,7 +5,7 @@
 #include <mutex>
 #include <sstream>
 
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 
 namespace frustum::server {
 

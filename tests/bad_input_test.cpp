@@ -21,7 +21,7 @@
 
 #include "grader/grade.hpp"
 #include "report/report.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "test_util.hpp"
 

@@ -1,9 +1,9 @@
-// The frame filled band by band (solver/raster/banded_fill.hpp) is the frame of clearing it and
-// drawing every triangle in order, bit for bit, whatever the number of threads and wherever the
+// The frame filled band by band (solver/raster_fast/banded_fill.hpp) is the frame of clearing it
+// and drawing every triangle in order, bit for bit, whatever the number of threads and wherever the
 // bands cut the triangles: random triangles of every size (slivers, ones larger than the frame,
 // ones off it, degenerate ones), overlapping in depth, on frames whose height is and is not a
 // multiple of the band.
-#include "solver/raster/banded_fill.hpp"
+#include "solver/raster_fast/banded_fill.hpp"
 
 #include <gtest/gtest.h>
 

@@ -28,7 +28,7 @@
 #include "report/feedback.hpp"
 #include "report/gradescope.hpp"
 #include "report/report.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/problem/problem_figure.hpp"
 #include "test_util.hpp"
 

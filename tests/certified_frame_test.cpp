@@ -13,6 +13,7 @@
 #include "solver/problem/problem_set.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/raster/scanline.hpp"
+#include "solver/raster_fast/threaded_zbuffer.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

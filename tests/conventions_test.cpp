@@ -12,8 +12,8 @@
 #include <random>
 
 #include "grader/grade.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/i18n.hpp"
-#include "solver/derivation/render.hpp"
 #include "solver/problem/problem_set.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "test_util.hpp"

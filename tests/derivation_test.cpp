@@ -1,5 +1,5 @@
 // Derivations as data and their three renderings.
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "test_util.hpp"
 
 namespace frustum {

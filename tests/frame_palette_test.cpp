@@ -1,7 +1,7 @@
-// A frame's palette and runs (solver/raster/frame_palette.hpp): the palette in order of first
+// A frame's palette and runs (solver/raster_fast/frame_palette.hpp): the palette in order of first
 // appearance from the top row down, and each row's runs, the same whether one thread scans the
 // frame or several scan a part each (each part meets the colours in its own order).
-#include "solver/raster/frame_palette.hpp"
+#include "solver/raster_fast/frame_palette.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/i18n.hpp"
-#include "solver/derivation/render.hpp"
 #include "solver/problem/problem_set.hpp"
 #include "solver/problem/rng.hpp"
 #include "solver/problem/solve_set.hpp"

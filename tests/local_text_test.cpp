@@ -7,7 +7,7 @@
 #include "export/export_moodle.hpp"
 #include "export/paper.hpp"
 #include "export/quiz_items.hpp"
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/problem/variants.hpp"
 #include "test_util.hpp"
 

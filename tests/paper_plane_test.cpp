@@ -6,7 +6,7 @@
 
 #include "solver/geometry/plane_depth.hpp"
 #include "solver/problem/rng.hpp"
-#include "solver/steps/kind_steps.hpp"
+#include "solver/shared/derivation_parts.hpp"
 #include "solver/util/exact_format.hpp"
 #include "test_util.hpp"
 

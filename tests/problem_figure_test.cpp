@@ -12,8 +12,8 @@
 
 #include "grader/grade.hpp"
 #include "report/feedback.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/plane_drawing.hpp"
-#include "solver/derivation/render.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/util/base64.hpp"
 #include "test_util.hpp"

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/latex_check.hpp"
-#include "solver/derivation/render.hpp"
 #include "solver/problem/problem_figure.hpp"
 #include "typeset_corpus.hpp"
 

@@ -12,7 +12,7 @@
 #include <random>
 
 #include "solver/problem/solve_precision.hpp"
-#include "solver/steps/viewing_steps.hpp"
+#include "solver/shared/viewing_parts.hpp"
 #include "solver/viewing/projection.hpp"
 #include "solver/viewing/transforms.hpp"
 #include "test_util.hpp"

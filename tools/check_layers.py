@@ -2,8 +2,9 @@
 """Fails when a file includes a layer its own layer may not use (docs: CONTRIBUTING.md, "The layers").
 
 The layers are a graph: USES says which layers each may use directly, and a layer may use
-whatever those may use. The solver's directories form a chain (each uses the one below it);
-above the solver, one folder per job. bench/, tests/ and fuzz/ may include anything.
+whatever those may use. The solver's directories form a chain (each uses the one below it),
+but for solver/raster_fast, a branch over solver/raster that only server/ (and app/ through it)
+uses; above the solver, one folder per job. bench/, tests/ and fuzz/ may include anything.
 """
 import pathlib
 import re
@@ -16,19 +17,20 @@ USES = {
     "solver/geometry": ["solver/numeric"],      # predicates, normals, plane depth, facing
     "solver/viewing": ["solver/geometry"],      # conventions, transforms, projections
     "solver/clipping": ["solver/viewing"],
-    "solver/raster": ["solver/clipping"],
+    "solver/raster": ["solver/clipping"],       # the teaching pipeline: rasterizer, z-buffer, …
+    "solver/raster_fast": ["solver/raster"],    # frustum render at speed: bands, strips, PNG
     "solver/derivation": ["solver/raster"],     # steps as data, typesetting, languages
     "solver/visibility": ["solver/derivation"],
     "solver/input": ["solver/visibility"],      # YAML documents and given readers
     "solver/problem": ["solver/input"],         # kinds' interface, registry, sets, variants
-    "solver/steps": ["solver/problem"],         # building blocks shared by kinds
-    "solver/kinds": ["solver/steps"],           # one file or file pair per kind
+    "solver/shared": ["solver/problem"],        # what several kinds share
+    "solver/kinds": ["solver/shared"],          # one file or file pair per kind
     "solver/accuracy": ["solver/kinds"],        # speed against error of the backends
     "grader": ["solver/kinds"],                 # judging one answer file
     "report": ["grader"],                       # what a grading says, in every format
     "batch": ["report"],                        # a class: isolation, transactions, gradebooks
     "export": ["batch"],                        # platform questions, LMS gradebooks, paper
-    "server": ["batch", "export"],              # frustum serve: handlers and stores
+    "server": ["batch", "export", "solver/raster_fast"],  # frustum serve: handlers and stores
     "app": ["server", "solver/accuracy"],       # the command line
 }
 

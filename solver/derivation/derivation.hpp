@@ -1,6 +1,6 @@
 // A derivation recorded as data: a list of steps a student can follow, each with its title,
-// the formula, the formula with the numbers substituted, and the result. Renderers
-// (render_text, render_markdown, render_json) decide how it looks.
+// the formula, the formula with the numbers substituted, and the result. Formatters
+// (formats.hpp: render_text, render_markdown, render_json, …) decide how it looks.
 #pragma once
 
 #include <string>

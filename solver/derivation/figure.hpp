@@ -1,7 +1,7 @@
 // A problem's picture beside its derivation: the window and the segment or polygon of a 2-D
 // clipping problem, the pixel grid and triangle of scan conversion, the plane method and the
 // z-buffer, the hidden lines or depth order of a visibility problem (solver/problem/
-// problem_figure.hpp draws it from the problem's givens). The renderers take it beside the
+// problem_figure.hpp draws it from the problem's givens). The formatters take it beside the
 // solved set: the SVG as an image in HTML (its own styles kept to itself), TikZ in LaTeX
 // (empty where only one form exists).
 #pragma once

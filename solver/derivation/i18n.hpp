@@ -1,5 +1,5 @@
 // The language of derivations and feedback. Text is said in all three languages where it is
-// written (`Phrase`, `Said`: solver/util/said.hpp) and a renderer picks the reader's; this
+// written (`Phrase`, `Said`: solver/util/said.hpp) and a formatter picks the reader's; this
 // file names the languages and puts the words written inside mathematics (MathText::words)
 // into one of them. Formulas and values are never translated.
 #pragma once

@@ -1,5 +1,5 @@
 // When a piece of mathematics is too long for one line of a page: more than `limit` characters
-// as written in Unicode. The renderers then let it break (inline math in \displaystyle, which
+// as written in Unicode. The formatters then let it break (inline math in \displaystyle, which
 // TeX and KaTeX break after = and + and at \allowbreak) instead of setting it in one display
 // line that would run off the page; a long vector's brackets and commas allow it (vec()).
 #pragma once

@@ -1,4 +1,4 @@
-// A piece of mathematics kept in the two notations the renderers need: Unicode for the
+// A piece of mathematics kept in the two notations the formatters need: Unicode for the
 // terminal and JSON ("√3/3", "x + y − z = −6") and LaTeX for Markdown ("\frac{\sqrt{3}}{3}").
 #pragma once
 
@@ -15,7 +15,7 @@ namespace frustum {
 struct MathText {
   std::string unicode;
   std::string latex;
-  // English words written inside the mathematics (each once, as given to word()): a renderer
+  // English words written inside the mathematics (each once, as given to word()): a formatter
   // in another language translates them (i18n.hpp); the LaTeX holds each as \text{word}.
   std::vector<Said> words = {};
 
@@ -30,7 +30,7 @@ MathText math(std::string_view both);
 MathText math(std::string_view unicode, std::string_view latex);
 
 // Words inside mathematics ("yes", "front", "background"): Unicode as written, LaTeX as
-// \text{…} with LaTeX's special characters escaped; translated by the renderers.
+// \text{…} with LaTeX's special characters escaped; translated by the formatters.
 MathText word(const Said& said);
 MathText word(const Phrase& phrase);
 // Text escaped for LaTeX's text mode (\text{…}, and the LaTeX document's prose).

@@ -13,10 +13,10 @@
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
-#include "solver/steps/accuracy_draws.hpp"
-#include "solver/steps/digits_said.hpp"
-#include "solver/steps/kind_steps.hpp"
-#include "solver/steps/numeric_common.hpp"
+#include "solver/shared/accuracy_draws.hpp"
+#include "solver/shared/derivation_parts.hpp"
+#include "solver/shared/digits_said.hpp"
+#include "solver/shared/numeric_path_common.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

@@ -9,7 +9,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
-#include "solver/steps/kind_steps.hpp"
+#include "solver/shared/derivation_parts.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/visibility/depth_order.hpp"
 #include "solver/visibility/drawable.hpp"

@@ -7,7 +7,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
-#include "solver/steps/kind_steps.hpp"
+#include "solver/shared/derivation_parts.hpp"
 
 namespace frustum {
 

@@ -2,7 +2,7 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
-#include "solver/steps/viewing_steps.hpp"
+#include "solver/shared/viewing_parts.hpp"
 
 namespace frustum {
 

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "solver/steps/scene_reader.hpp"
+#include "solver/shared/scene_reader.hpp"
 
 namespace frustum {
 

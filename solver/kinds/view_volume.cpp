@@ -5,8 +5,8 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
-#include "solver/steps/kind_steps.hpp"
-#include "solver/steps/viewing_steps.hpp"
+#include "solver/shared/derivation_parts.hpp"
+#include "solver/shared/viewing_parts.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

@@ -4,9 +4,9 @@
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
-#include "solver/steps/accuracy_draws.hpp"
-#include "solver/steps/numeric_common.hpp"
-#include "solver/steps/viewing_steps.hpp"
+#include "solver/shared/accuracy_draws.hpp"
+#include "solver/shared/numeric_path_common.hpp"
+#include "solver/shared/viewing_parts.hpp"
 
 namespace frustum {
 

@@ -5,11 +5,9 @@
 #include <limits>
 #include <type_traits>
 
-#include "solver/raster/banded_fill.hpp"
 #include "solver/raster/certified_frame.hpp"
 #include "solver/raster/frame_work.hpp"
 #include "solver/raster/span_fill.hpp"
-#include "solver/raster/striped_render.hpp"
 
 namespace frustum {
 
@@ -195,35 +193,9 @@ Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, in
   return frame;
 }
 
-Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats, FillStats* stats,
-                     int threads) {
-  Frame frame;
-  render_zbuffer(scene, frame, geometry_stats, stats, threads);
-  return frame;
-}
-
-// With threads, a scene of at most kBandedTriangles world triangles is set up whole and filled
-// band by band (banded_fill.hpp); a larger one streams, every thread drawing its strips of rows
-// (striped_render.hpp).
-bool zbuffer_banded(const Scene& scene, int threads) {
-  return threads >= 2 && world_triangle_count(scene) <= kBandedTriangles;
-}
-
-void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
-                    FillStats* stats, int threads, ThreadTeam* team, FrameCertifier* certifier) {
-  // Sized before the fill: threads note ties on their own rows' lists.
+void render_zbuffer_streamed(const Scene& scene, Frame& frame, GeometryStats* geometry_stats,
+                             FillStats* stats, FrameCertifier* certifier) {
   frame.ties.assign(certifier ? static_cast<std::size_t>(scene.height) : 0, {});
-  if (zbuffer_banded(scene, threads)) {
-    // A modelled scene with threads to share: the geometry in parts side by side, then the
-    // frame filled band by band (on one thread this is no faster than the stream below: a
-    // 1920 × 1080 frame stays in this machine's last-level cache).
-    render_in_bands(scene, frame, geometry_stats, stats, threads, team, certifier);
-    return;
-  }
-  if (threads >= 2) {
-    render_in_strips(scene, frame, geometry_stats, stats, threads, team, certifier);
-    return;
-  }
   GeometryStage stage(scene, certifier);
   FrameWork work(scene);
   int source = 0, drawn = 0;

@@ -20,7 +20,6 @@
 #include "solver/raster/rasterizer.hpp"
 #include "solver/raster/span_fill.hpp"
 #include "solver/raster/zbuffer.hpp"
-#include "solver/util/thread_team.hpp"
 
 namespace frustum {
 
@@ -193,27 +192,21 @@ void draw_triangle_rows(const RasterTriangle& t, Frame& frame, int j_lo, int j_h
 Frame render_zbuffer(const std::vector<WindowTriangle>& triangles, int width, int height,
                      Rgb background, FillStats* stats = nullptr,
                      std::int64_t max_work = kMaxFrameWork);
-// The whole pipeline streamed (`frustum render`): each world triangle, as the hierarchy walk
-// yields it, through the geometry stage and into the frame; neither the world nor the window
-// triangles are kept. The same frame as render_zbuffer(geometry(scene, flatten(scene)), …).
-// threads ≥ 2: a scene of at most kBandedTriangles world triangles (a modelled scene) goes
-// through the geometry in parts side by side and is filled band by band by every thread
-// (banded_fill.hpp); a larger one streams on every thread, each walking the scene and drawing
-// its own strips of rows (striped_render.hpp). Either way the frame is the same bit for bit.
-// With a certifier (certified_frame.hpp) the geometry is certified and the fill notes its ties
-// in frame.ties (the caller repairs them: repair_undecided).
-Frame render_zbuffer(const Scene& scene, GeometryStats* geometry_stats = nullptr,
-                     FillStats* stats = nullptr, int threads = 1);
-// The same into a render target the caller keeps (reset to the scene's size and background).
-// With a team (thread_team.hpp), the threaded render's parts run on its threads.
-void render_zbuffer(const Scene& scene, Frame& target, GeometryStats* geometry_stats = nullptr,
-                    FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr,
-                    FrameCertifier* certifier = nullptr);
-// Whether render_zbuffer with `threads` sets a modelled scene up whole and fills it band by band
-// (at least two threads, at most kBandedTriangles world triangles: banded_fill.hpp, 320 B a
-// triangle set up) rather than streaming it.
+// The whole pipeline streamed on one thread (`frustum render`'s z-buffer; with threads, and
+// choosing between them, solver/raster_fast/threaded_zbuffer.hpp's render_zbuffer): each world
+// triangle, as the hierarchy walk yields it, through the geometry stage and into the frame;
+// neither the world nor the window triangles are kept. The same frame as
+// render_zbuffer(geometry(scene, flatten(scene)), …), drawn into a render target the caller
+// keeps (reset to the scene's size and background). With a certifier (certified_frame.hpp) the
+// geometry is certified and the fill notes its ties in frame.ties (the caller repairs them:
+// repair_undecided).
+void render_zbuffer_streamed(const Scene& scene, Frame& target,
+                             GeometryStats* geometry_stats = nullptr, FillStats* stats = nullptr,
+                             FrameCertifier* certifier = nullptr);
+// A modelled scene: at most this many world triangles. With threads, render_zbuffer sets it up
+// whole and fills it band by band (solver/raster_fast/banded_fill.hpp, 320 B a triangle set up)
+// rather than streaming it; a certifier keeps its certified window triangles.
 inline constexpr std::size_t kBandedTriangles = std::size_t(1) << 15;
-bool zbuffer_banded(const Scene& scene, int threads);
 
 // Only what one pixel needs (the render kind): the triangles whose bounds hold the pixel
 // centre compete, in drawing order; no frame is allocated.

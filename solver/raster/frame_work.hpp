@@ -36,8 +36,8 @@ class FrameWork {
 };
 
 // The price of the scene's frame, its world triangles walked through the geometry stage as
-// render_zbuffer walks them and none kept; throws as FrameWork::add past Scene::max_work (so at
-// most a geometry pass is spent on a scene that would be refused).
+// render_zbuffer_streamed walks them and none kept; throws as FrameWork::add past Scene::max_work
+// (so at most a geometry pass is spent on a scene that would be refused).
 std::int64_t price_frame(const Scene& scene);
 
 }  // namespace frustum

@@ -1,7 +1,7 @@
 // A scene as plain data (seed 004: scene → objects → primitives → vertices): a camera, a
 // projection, a viewport, objects with flat fill colours in a parent–child hierarchy, and at
 // most one directional light as in Processing's lights(). No textures, no materials. Read
-// from YAML only in solver/steps/scene_reader.*.
+// from YAML only in solver/shared/scene_reader.*.
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-#include "solver/raster/striped_render.hpp"
+#include "solver/raster_fast/striped_render.hpp"
 
 #include <algorithm>
 #include <cmath>

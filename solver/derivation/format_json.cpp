@@ -2,7 +2,7 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "solver/derivation/render.hpp"
+#include "solver/derivation/formats.hpp"
 #include "solver/util/exact_format.hpp"
 
 namespace frustum {

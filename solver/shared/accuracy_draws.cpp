@@ -1,4 +1,4 @@
-#include "solver/steps/accuracy_draws.hpp"
+#include "solver/shared/accuracy_draws.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "solver/steps/numeric_common.hpp"
+#include "solver/shared/numeric_path_common.hpp"
 
 namespace frustum {
 

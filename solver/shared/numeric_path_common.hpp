@@ -19,8 +19,8 @@
 #include "solver/geometry/zero_vector.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/problem/numeric_result.hpp"
-#include "solver/steps/digits_said.hpp"
-#include "solver/steps/kind_steps.hpp"
+#include "solver/shared/derivation_parts.hpp"
+#include "solver/shared/digits_said.hpp"
 
 namespace frustum {
 

@@ -1,5 +1,5 @@
-// Derivation pieces several kinds share: a polygon's normal with its warnings, and a plane
-// scaled to the form written on paper.
+// Derivation pieces several kinds share: a polygon's normal with its warnings, a plane scaled to
+// the form written on paper, and a student's earlier answers carried forward.
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-#include "solver/raster/banded_fill.hpp"
+#include "solver/raster_fast/banded_fill.hpp"
 
 #include <algorithm>
 #include <span>

@@ -1,7 +1,7 @@
 #include <fmt/format.h>
 
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/labels.hpp"
-#include "solver/derivation/render.hpp"
 
 namespace frustum {
 

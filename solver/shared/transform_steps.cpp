@@ -1,10 +1,10 @@
-#include "solver/steps/transform_steps.hpp"
+#include "solver/shared/transform_steps.hpp"
 
 #include <fmt/format.h>
 
 #include "solver/input/given_reader.hpp"
-#include "solver/steps/kind_steps.hpp"
-#include "solver/steps/viewing_steps.hpp"
+#include "solver/shared/derivation_parts.hpp"
+#include "solver/shared/viewing_parts.hpp"
 
 namespace frustum {
 

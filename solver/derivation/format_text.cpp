@@ -1,8 +1,8 @@
 #include <fmt/format.h>
 
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/labels.hpp"
 #include "solver/derivation/problem_result.hpp"
-#include "solver/derivation/render.hpp"
 
 namespace frustum {
 

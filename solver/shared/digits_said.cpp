@@ -1,4 +1,4 @@
-#include "solver/steps/digits_said.hpp"
+#include "solver/shared/digits_said.hpp"
 
 #include <fmt/format.h>
 

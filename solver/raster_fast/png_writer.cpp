@@ -1,4 +1,4 @@
-#include "solver/raster/png_writer.hpp"
+#include "solver/raster_fast/png_writer.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "solver/raster/fill.hpp"
-#include "solver/raster/frame_palette.hpp"
+#include "solver/raster_fast/frame_palette.hpp"
 #include "solver/util/side_by_side.hpp"
 
 namespace frustum {

@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/labels.hpp"
 #include "solver/derivation/line_breaks.hpp"
-#include "solver/derivation/render.hpp"
 #include "solver/derivation/svg.hpp"
 #include "solver/util/base64.hpp"
 

@@ -1,5 +1,6 @@
-// Renderers of derivations and solved sets: text for the terminal, Markdown with LaTeX math,
-// and JSON in the shape of problem-format.md §3.
+// Formatters of derivations and solved sets: text for the terminal, Markdown with LaTeX math,
+// JSON in the shape of problem-format.md §3, typeset HTML and LaTeX (format_*.cpp; the
+// functions keep their names, render_text, render_json, …).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -28,7 +29,7 @@ std::string render_steps_markdown(const std::vector<Step>& steps, Lang lang = La
 std::string render_problem_markdown(const ProblemResult& p, Lang lang = Lang::En);
 std::string render_markdown(const SetResult& set, Lang lang = Lang::En);
 
-// Typeset HTML (render_html.cpp): formulas typeset by KaTeX, inlined from Debian's libjs-katex
+// Typeset HTML (format_html.cpp): formulas typeset by KaTeX, inlined from Debian's libjs-katex
 // (no network); each formula's Unicode form stays inside its element as the fallback.
 // A page typesets formulas itself (KaTeX, html_math_script()), or its host does: a course
 // platform whose pages run MathJax over \( … \) and \[ … \] (PrairieLearn).
@@ -54,7 +55,7 @@ std::string html_figure(const Figure& figure, Lang lang = Lang::En, bool with_ke
 // `figures`: each problem's picture by id (problem_figure.hpp), shown under its text.
 std::string render_html(const SetResult& set, Lang lang = Lang::En,
                         const Figures* figures = nullptr);
-// A LaTeX document (render_latex.cpp) that compiles with lualatex: for printing.
+// A LaTeX document (format_latex.cpp) that compiles with lualatex: for printing.
 std::string render_latex(const SetResult& set, Lang lang = Lang::En,
                          const Figures* figures = nullptr);
 

@@ -9,6 +9,7 @@
 #include "solver/raster/certified_frame.hpp"
 #include "solver/raster/pipeline.hpp"
 #include "solver/raster/zbuffer.hpp"
+#include "solver/util/thread_team.hpp"
 
 namespace frustum {
 

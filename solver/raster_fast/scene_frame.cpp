@@ -1,9 +1,10 @@
-#include "solver/raster/scene_frame.hpp"
+#include "solver/raster_fast/scene_frame.hpp"
 
 #include <fmt/format.h>
 
 #include "solver/raster/fill.hpp"
 #include "solver/raster/scanline.hpp"
+#include "solver/raster_fast/threaded_zbuffer.hpp"
 
 namespace frustum {
 

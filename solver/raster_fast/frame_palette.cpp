@@ -1,4 +1,4 @@
-#include "solver/raster/frame_palette.hpp"
+#include "solver/raster_fast/frame_palette.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,9 +1,9 @@
-#include "solver/steps/viewing_steps.hpp"
+#include "solver/shared/viewing_parts.hpp"
 
 #include <fmt/format.h>
 
 #include "solver/input/given_reader.hpp"
-#include "solver/steps/kind_steps.hpp"
+#include "solver/shared/derivation_parts.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

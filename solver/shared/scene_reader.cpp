@@ -1,4 +1,4 @@
-#include "solver/steps/scene_reader.hpp"
+#include "solver/shared/scene_reader.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "solver/input/given_reader.hpp"
-#include "solver/steps/transform_steps.hpp"
+#include "solver/shared/transform_steps.hpp"
 #include "solver/util/diagnostic.hpp"
 
 namespace frustum {

@@ -1,6 +1,7 @@
 // The z-buffer fill of a whole frame band by band (tiles as wide as the frame), for a scene
 // small enough that its triangles are all set up before any is drawn (`frustum render` of a
-// modelled scene; a stream of millions goes through fill.hpp's render_zbuffer instead).
+// modelled scene; a stream of millions goes through striped_render.hpp instead, or through
+// fill.hpp's render_zbuffer_streamed on one thread).
 //
 // Each triangle is binned to the bands of rows its bounding box spans. A band is cleared and
 // then drawn, the triangles of its bin in drawing order, while its rows (32 × the width × 8 B:
@@ -27,10 +28,10 @@ void fill_in_bands(const std::vector<RasterTriangle>& triangles, Frame& frame, i
                    int height, Rgb background, FillStats* stats = nullptr, int threads = 1,
                    ThreadTeam* team = nullptr);
 
-// The whole z-buffer render of a scene (fill.hpp's render_zbuffer with threads, for a scene of
-// few enough triangles): the world triangles split into contiguous parts, each part through the
-// geometry stage and set up on a thread of its own, joined in drawing order, then the frame filled
-// band by band. The same frame and statistics as render_zbuffer on one thread.
+// The whole z-buffer render of a scene (threaded_zbuffer.hpp's render_zbuffer with threads, for a
+// scene of few enough triangles): the world triangles split into contiguous parts, each part
+// through the geometry stage and set up on a thread of its own, joined in drawing order, then the
+// frame filled band by band. The same frame and statistics as render_zbuffer on one thread.
 void render_in_bands(const Scene& scene, Frame& frame, GeometryStats* geometry_stats = nullptr,
                      FillStats* stats = nullptr, int threads = 1, ThreadTeam* team = nullptr,
                      FrameCertifier* certifier = nullptr);

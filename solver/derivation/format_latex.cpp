@@ -4,9 +4,9 @@
 // provide.
 #include <fmt/format.h>
 
+#include "solver/derivation/formats.hpp"
 #include "solver/derivation/labels.hpp"
 #include "solver/derivation/line_breaks.hpp"
-#include "solver/derivation/render.hpp"
 #include "solver/util/scripts.hpp"
 
 namespace frustum {

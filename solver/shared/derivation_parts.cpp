@@ -1,4 +1,4 @@
-#include "solver/steps/kind_steps.hpp"
+#include "solver/shared/derivation_parts.hpp"
 
 #include <fmt/format.h>
 
@@ -12,8 +12,8 @@
 #include "solver/geometry/polygon_normal.hpp"
 #include "solver/geometry/predicates.hpp"
 #include "solver/numeric/condition.hpp"
-#include "solver/steps/digits_said.hpp"
-#include "solver/steps/viewing_steps.hpp"
+#include "solver/shared/digits_said.hpp"
+#include "solver/shared/viewing_parts.hpp"
 #include "solver/util/diagnostic.hpp"
 #include "solver/util/exact_format.hpp"
 #include "solver/viewing/projection.hpp"

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/raster/frame_palette.hpp"
 #include "solver/raster/zbuffer.hpp"
+#include "solver/raster_fast/frame_palette.hpp"
 
 namespace frustum {
 

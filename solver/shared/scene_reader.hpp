@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "solver/raster/scene.hpp"
-#include "solver/steps/viewing_steps.hpp"
+#include "solver/shared/viewing_parts.hpp"
 #include "solver/visibility/mesh.hpp"
 
 namespace frustum {
