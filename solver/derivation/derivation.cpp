@@ -4,6 +4,11 @@
 
 namespace frustum {
 
+Step& Step::yields(std::string answer) {
+  answers.push_back(std::move(answer));
+  return *this;
+}
+
 Step& Derivation::add(Said title, MathText formula, MathText substitution, MathText result) {
   Step s;
   s.title = std::move(title);
@@ -29,7 +34,7 @@ Step& Derivation::warn(Said title, Said text) {
 }
 
 void Derivation::yields(const std::string& answer) {
-  if (!steps_.empty()) steps_.back().answers.push_back(answer);
+  if (!steps_.empty()) steps_.back().yields(answer);
 }
 
 std::vector<Step> Derivation::steps_for(const std::string& answer) const {

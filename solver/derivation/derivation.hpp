@@ -22,6 +22,10 @@ struct Step {
   Said note;              // prose: a convention, a seed's slip, a warning
   Level level = Level::Info;
   std::vector<std::string> answers;  // the answers this step produces ("plane")
+
+  // Marks this step as producing the named answer and returns it, so a kind adds a step and
+  // says what it yields in one statement: `steps->add(...).yields("plane");`.
+  Step& yields(std::string answer);
 };
 
 class Derivation {
@@ -29,7 +33,8 @@ class Derivation {
   Step& add(Said title, MathText formula = {}, MathText substitution = {}, MathText result = {});
   Step& note(Said title, Said text);
   Step& warn(Said title, Said text);
-  // Marks the most recent step as producing the named answer.
+  // Marks the most recent step, whoever added it (a helper, possibly ending on its warning;
+  // a loop), as producing the named answer. A step a kind adds itself says it with Step::yields.
   void yields(const std::string& answer);
 
   const std::vector<Step>& steps() const { return steps_; }

@@ -251,21 +251,21 @@ struct Backface {
     const Facing<Exact> f = facing(wound, g.eye, wound, g.eye, true);
     const Vec3<Exact>& v = f.view;
     out.set("view", Value::vector(v));
-    if (steps) {
-      steps->add(
-          say(kViewVector),
-          math("v = p_eye − p₀", "\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0"),
-          math("v = ", "\\mathbf{v} = ") + vec(g.eye) + math(" − ", " - ") + vec(g.points[0]),
-          math("v = ", "\\mathbf{v} = ") + vec(v));
-      steps->yields("view");
-    }
+    if (steps)
+      steps
+          ->add(say(kViewVector),
+                math("v = p_eye − p₀", "\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0"),
+                math("v = ", "\\mathbf{v} = ") + vec(g.eye) + math(" − ", " - ") + vec(g.points[0]),
+                math("v = ", "\\mathbf{v} = ") + vec(v))
+          .yields("view");
     const Exact df = canonical(f.df);
     out.set("df", Value::scalar(df));
     if (steps) {
-      steps->add(say(kDiscriminant), math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
-                 math("D_f = ") + vec(v) + math("·", "\\cdot") + vec(n),
-                 math("D_f = ") + exact(df, true));
-      steps->yields("df");
+      steps
+          ->add(say(kDiscriminant), math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
+                math("D_f = ") + vec(v) + math("·", "\\cdot") + vec(n),
+                math("D_f = ") + exact(df, true))
+          .yields("df");
       std::vector<Eigen::Vector3d> pts;
       for (const Vec3<Exact>& q : g.points) pts.push_back(to_double(q));
       // Each backend's own condition: products below its normal range cost it digits too.
@@ -284,8 +284,7 @@ struct Backface {
     if (steps) {
       const Phrase& why = sign > 0 ? kDfPositive : sign < 0 ? kDfNegative : kDfZero;
       const Phrase& seen = sign > 0 ? words::kFront : sign < 0 ? words::kBack : words::kEdgeOnKey;
-      steps->add(say(kFrontOrBack), {}, {}, word(seen)).note = say(why);
-      steps->yields("facing");
+      steps->add(say(kFrontOrBack), {}, {}, word(seen)).yields("facing").note = say(why);
       if (g.left_handed && sign != 0)
         steps->note(say(kRightHandedReading), say(kMirrorImage) + say(kHandednessDecides));
     }

@@ -191,48 +191,48 @@ struct Barycentric {
     const Exact t = total(g);
     Answers out;
     out.set("edges", Value::vector(e));
-    if (steps) {
-      steps->add(say(kEdgeFunctions),
-                 math("E_BC(xₛ, yₛ), E_CA(xₛ, yₛ), E_AB(xₛ, yₛ);  E_PQ(x, y) = (x_Q − x_P)(y − "
-                      "y_P) − (y_Q − y_P)(x − x_P)",
-                      "E_{BC}(x_S, y_S),\\; E_{CA}(x_S, y_S),\\; E_{AB}(x_S, y_S),\\quad "
-                      "E_{PQ}(x, y) = (x_Q - x_P)(y - y_P) - (y_Q - y_P)(x - x_P)"),
-                 {}, vec(e));
-      steps->yields("edges");
-    }
+    if (steps)
+      steps
+          ->add(say(kEdgeFunctions),
+                math("E_BC(xₛ, yₛ), E_CA(xₛ, yₛ), E_AB(xₛ, yₛ);  E_PQ(x, y) = (x_Q − x_P)(y − "
+                     "y_P) − (y_Q − y_P)(x − x_P)",
+                     "E_{BC}(x_S, y_S),\\; E_{CA}(x_S, y_S),\\; E_{AB}(x_S, y_S),\\quad "
+                     "E_{PQ}(x, y) = (x_Q - x_P)(y - y_P) - (y_Q - y_P)(x - x_P)"),
+                {}, vec(e))
+          .yields("edges");
     out.set("total", Value::scalar(t));
-    if (steps) {
-      steps->add(say(kTwiceSignedArea),
-                 math("E_AB(x_C, y_C) = E_BC + E_CA + E_AB",
-                      "E_{AB}(x_C, y_C) = E_{BC} + E_{CA} + E_{AB}"),
-                 {}, exact(t));
-      steps->yields("total");
-    }
+    if (steps)
+      steps
+          ->add(say(kTwiceSignedArea),
+                math("E_AB(x_C, y_C) = E_BC + E_CA + E_AB",
+                     "E_{AB}(x_C, y_C) = E_{BC} + E_{CA} + E_{AB}"),
+                {}, exact(t))
+          .yields("total");
     if (t.is_zero()) refuse_flat();
     const Vec3<Exact> lambda = canonical_vec(lambda_of(e, t));
     out.set("lambda", Value::vector(lambda));
-    if (steps) {
-      steps->add(say(kBarycentricCoordinates),
-                 math("λ₀ = E_BC / E_AB(C), λ₁ = E_CA / E_AB(C), λ₂ = E_AB / E_AB(C)",
-                      "\\lambda_0 = \\frac{E_{BC}}{E_{AB}(C)},\\; \\lambda_1 = "
-                      "\\frac{E_{CA}}{E_{AB}(C)},\\; \\lambda_2 = \\frac{E_{AB}}{E_{AB}(C)}"),
-                 {}, vec(lambda, true));
-      steps->yields("lambda");
-    }
+    if (steps)
+      steps
+          ->add(say(kBarycentricCoordinates),
+                math("λ₀ = E_BC / E_AB(C), λ₁ = E_CA / E_AB(C), λ₂ = E_AB / E_AB(C)",
+                     "\\lambda_0 = \\frac{E_{BC}}{E_{AB}(C)},\\; \\lambda_1 = "
+                     "\\frac{E_{CA}}{E_{AB}(C)},\\; \\lambda_2 = \\frac{E_{AB}}{E_{AB}(C)}"),
+                {}, vec(lambda, true))
+          .yields("lambda");
     // Inside the closed triangle, decided (and written) as depth_at_pixel decides it.
     const bool inside =
         inside_triangle_with_steps(g.triangle, g.pixel, steps, ZFrom::Interpolation);
     out.set("inside", Value::boolean(inside));
     const Exact z = interpolated_z(g, lambda);
     out.set("z", Value::scalar(z));
-    if (steps) {
-      steps->add(say(kDepthByInterpolation),
-                 math("z = λ₀z_A + λ₁z_B + λ₂z_C",
-                      "z_S = \\lambda_0 z_A + \\lambda_1 z_B + "
-                      "\\lambda_2 z_C"),
-                 {}, math("z = ", "z_S = ") + exact(z, true));
-      steps->yields("z");
-    }
+    if (steps)
+      steps
+          ->add(say(kDepthByInterpolation),
+                math("z = λ₀z_A + λ₁z_B + λ₂z_C",
+                     "z_S = \\lambda_0 z_A + \\lambda_1 z_B + "
+                     "\\lambda_2 z_C"),
+                {}, math("z = ", "z_S = ") + exact(z, true))
+          .yields("z");
     return out;
   }
 

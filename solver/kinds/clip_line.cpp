@@ -193,23 +193,25 @@ struct ClipLine {
       steps
           ->add(say(kOutcodeOfP), {}, math("p = ") + vec(g.p),
                 outcode_of("p") + math(" = ") + code(r.code_p))
+          .yields("outcode_p")
           .note = code_meaning(r.code_p);
-      steps->yields("outcode_p");
       steps
           ->add(say(kOutcodeOfQ), {}, math("q = ") + vec(g.q),
                 outcode_of("q") + math(" = ") + code(r.code_q))
+          .yields("outcode_q")
           .note = code_meaning(r.code_q);
-      steps->yields("outcode_q");
-      steps->add(say(kTrivialAccept),
-                 outcode_of("p") + op_or + outcode_of("q") + math(" = ") + code(0),
-                 code(r.code_p) + op_or + code(r.code_q) + math(" = ") + code(r.code_p | r.code_q),
-                 word(r.trivial_accept ? kYesWholeSegmentInside : words::kNo));
-      steps->yields("accept");
-      steps->add(say(kTrivialReject),
-                 outcode_of("p") + op_and + outcode_of("q") + math(" ≠ ", " \\ne ") + code(0),
-                 code(r.code_p) + op_and + code(r.code_q) + math(" = ") + code(r.code_p & r.code_q),
-                 word(r.trivial_reject ? kYesBothOutsideSameBoundary : words::kNo));
-      steps->yields("reject");
+      steps
+          ->add(say(kTrivialAccept),
+                outcode_of("p") + op_or + outcode_of("q") + math(" = ") + code(0),
+                code(r.code_p) + op_or + code(r.code_q) + math(" = ") + code(r.code_p | r.code_q),
+                word(r.trivial_accept ? kYesWholeSegmentInside : words::kNo))
+          .yields("accept");
+      steps
+          ->add(say(kTrivialReject),
+                outcode_of("p") + op_and + outcode_of("q") + math(" ≠ ", " \\ne ") + code(0),
+                code(r.code_p) + op_and + code(r.code_q) + math(" = ") + code(r.code_p & r.code_q),
+                word(r.trivial_reject ? kYesBothOutsideSameBoundary : words::kNo))
+          .yields("reject");
       // The endpoints as the loop moves them: t is measured from the endpoint being moved (a)
       // towards the other one (b).
       std::array<V, 2> ends = {p, q};
@@ -250,22 +252,19 @@ struct ClipLine {
       std::vector<std::vector<Exact>> rows;
       for (const V& e : *r.clipped) rows.emplace_back(e.data(), e.data() + N);
       out.set("clipped", Value::matrix(rows));
-      if (steps) {
+      if (steps)
         steps
             ->add(say(kClippedSegment), {}, {},
                   math("p′ = ", "p' = ") + vec((*r.clipped)[0], true) +
                       math(",  q′ = ", ",\\; q' = ") + vec((*r.clipped)[1], true))
+            .yields("clipped")
             .note =
             r.trivial_accept ? say(kTriviallyAccepted) : say(kBothCodesNow, outcode_string(0, N));
-        steps->yields("clipped");
-      }
     } else {
       out.set("clipped", Value::null());
-      if (steps) {
-        steps->add(say(kNothingIsVisible)).note =
+      if (steps)
+        steps->add(say(kNothingIsVisible)).yields("clipped").note =
             say(r.trivial_reject ? kTriviallyRejected : kMissesAfterClipping);
-        steps->yields("clipped");
-      }
     }
     return out;
   }

@@ -117,9 +117,8 @@ struct ClipPolygon {
       out.set("clipped", Value::null());
       if (steps) {
         // One or two vertices left: the polygon meets the region's boundary only.
-        steps->add(say(kNothingIsLeft)).note =
+        steps->add(say(kNothingIsLeft)).yields("clipped").note =
             say(r.clipped.empty() ? kNoVertexRemains : kFewerThanThreeRemain);
-        steps->yields("clipped");
       }
       return out;
     }

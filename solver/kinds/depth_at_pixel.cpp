@@ -338,13 +338,13 @@ struct DepthAtPixel {
     const std::array<Exact, 4> plane = paper_plane(u, r.d);
     const Value pv = plane_answer(plane);
     out.set("plane", pv);
-    if (steps) {
-      steps->add(
-          say(kPlaneThroughA),
-          math("n̂·(p − A) = 0", "\\hat{\\mathbf{n}}\\cdot(\\mathbf{p} - \\overrightarrow{OA}) = 0"),
-          vec(u) + math("·", "\\cdot") + offset_point(A) + math(" = 0"), pv.display);
-      steps->yields("plane");
-    }
+    if (steps)
+      steps
+          ->add(say(kPlaneThroughA),
+                math("n̂·(p − A) = 0",
+                     "\\hat{\\mathbf{n}}\\cdot(\\mathbf{p} - \\overrightarrow{OA}) = 0"),
+                vec(u) + math("·", "\\cdot") + offset_point(A) + math(" = 0"), pv.display)
+          .yields("plane");
     const Exact& a = plane[0];
     const Exact& b = plane[1];
     const Exact& c = plane[2];
@@ -352,11 +352,12 @@ struct DepthAtPixel {
     const Exact z = canonical(plane_method_z(rational_plane(r, n, A, g.pixel), g.pixel));
     out.set("z", Value::scalar(z));
     if (steps) {
-      steps->add(say(kDepthAtPixel),
-                 math("z = (d − a·xₛ − b·yₛ) / c", "z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
-                 linear_equation({{a * g.pixel(0), ""}, {b * g.pixel(1), ""}, {c, "z"}}, plane[3]),
-                 math("z = ", "z_S = ") + exact(z, true));
-      steps->yields("z");
+      steps
+          ->add(say(kDepthAtPixel),
+                math("z = (d − a·xₛ − b·yₛ) / c", "z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
+                linear_equation({{a * g.pixel(0), ""}, {b * g.pixel(1), ""}, {c, "z"}}, plane[3]),
+                math("z = ", "z_S = ") + exact(z, true))
+          .yields("z");
       const DepthCondition cond =
           depth_condition(to_double(g.triangle[0]), to_double(g.triangle[1]),
                           to_double(g.triangle[2]), to_double(g.pixel));

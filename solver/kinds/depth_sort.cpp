@@ -306,11 +306,12 @@ struct DepthSort {
       lines += (k ? sep : MathText{}) +
                math(fmt::format("g{} = ", k), fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
                vec(res.centroids[k]);
-    steps->add(say(kCentroids),
-               math("g = (p₀ + p₁ + ⋯ + p_{n−1}) / n",
-                    "\\mathbf{g} = \\frac{1}{n}(\\mathbf{p}_0 + \\cdots + \\mathbf{p}_{n-1})"),
-               {}, lines);
-    steps->yields("centroids");
+    steps
+        ->add(say(kCentroids),
+              math("g = (p₀ + p₁ + ⋯ + p_{n−1}) / n",
+                   "\\mathbf{g} = \\frac{1}{n}(\\mathbf{p}_0 + \\cdots + \\mathbf{p}_{n-1})"),
+              {}, lines)
+        .yields("centroids");
     MathText depths;
     for (std::size_t k = 0; k < n; ++k)
       depths += (k ? sep : MathText{}) +
@@ -322,14 +323,15 @@ struct DepthSort {
                 math("depth = ‖g − p_eye‖",
                      "\\text{depth} = \\lVert\\mathbf{g} - \\mathbf{p}_{\\text{eye}}\\rVert"),
                 math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(*g.viewer.eye), depths)
+          .yields("depths")
           .note = say(kLargerDepthFarther);
     else
       steps
           ->add(say(kDepthAlongView),
                 math("depth = g·v̂", "\\text{depth} = \\mathbf{g}\\cdot\\hat{\\mathbf{v}}"),
                 math("v = ", "\\mathbf{v} = ") + vec(*g.viewer.view_direction), depths)
+          .yields("depths")
           .note = say(kViewDirectionDepth);
-    steps->yields("depths");
     MathText seq;
     for (const std::string& k : order)
       seq += (seq.empty() ? MathText{} : math(" → ", " \\to ")) + word(Said::verbatim(k));
@@ -338,14 +340,13 @@ struct DepthSort {
     for (std::size_t a = 0; a < res.depths.size(); ++a)
       for (std::size_t b = a + 1; b < res.depths.size(); ++b)
         tie = tie || exact_sign(res.depths[a] - res.depths[b]) == 0;
-    Step& draw = steps->add(say(kDrawBackToFront), {}, {}, seq);
+    Step& draw = steps->add(say(kDrawBackToFront), {}, {}, seq).yields("order");
     if (tie) draw.note = say(kEqualDepthsKeepOrder);
-    steps->yields("order");
 
     MathText conflicts = word(res.conflicts.empty() ? kNoConflicts : kConflicts);
     for (std::size_t k = 0; k < res.conflicts.size(); ++k)
       conflicts += (k ? sep : math(": ", "\\colon ")) + word(Said::verbatim(res.conflicts[k]));
-    Step& s = steps->add(say(kCheckEachPair), {}, {}, conflicts);
+    Step& s = steps->add(say(kCheckEachPair), {}, {}, conflicts).yields("conflicts");
     // Overlap is decided in the projection depth_sort chose: from the eye when there is one.
     s.note = say(g.viewer.eye ? kOverlapPerspective : kOverlapOrthographic) +
              say(kCompareAtCorners) + say(kWhenPairConflicts);
@@ -362,7 +363,6 @@ struct DepthSort {
       for (int k : res.edge_on) e += (e.empty() ? "" : ", ") + std::to_string(k);
       s.note.append(line_break).append(say(kSeenEdgeOn, e));
     }
-    steps->yields("conflicts");
     return out;
   }
   // Default generator: two or three rectangles facing the viewer at distinct integer depths

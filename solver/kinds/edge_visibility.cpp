@@ -413,20 +413,23 @@ struct EdgeVisibility {
     }
     out.set("faces", Value::word_map(faces));
     if (steps) {
-      Step& s = steps->add(
-          say(kFrontOrBackPerFace),
-          math("D_f = (p_eye − p_i)·n",
-               "D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
-          math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
-          counts({{std::count_if(tests.begin(), tests.end(),
-                                 [](const FaceTest& t) { return t.facing == Facing::Front; }),
-                   "front"},
-                  {std::count_if(tests.begin(), tests.end(),
-                                 [](const FaceTest& t) { return t.facing == Facing::Back; }),
-                   "back"},
-                  {static_cast<long>(edge_on.size()), "edge-on"}}));
+      Step& s =
+          steps
+              ->add(
+                  say(kFrontOrBackPerFace),
+                  math("D_f = (p_eye − p_i)·n",
+                       "D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
+                  math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
+                  counts(
+                      {{std::count_if(tests.begin(), tests.end(),
+                                      [](const FaceTest& t) { return t.facing == Facing::Front; }),
+                        "front"},
+                       {std::count_if(tests.begin(), tests.end(),
+                                      [](const FaceTest& t) { return t.facing == Facing::Back; }),
+                        "back"},
+                       {static_cast<long>(edge_on.size()), "edge-on"}}))
+              .yields("faces");
       s.note = say(kDfSign).append(table);
-      steps->yields("faces");
       if (!edge_on.empty())
         steps->note(say(kEdgeOnFaces), say(kFacesHaveDfZero, join(edge_on)) + say(kCountAsBack));
     }
@@ -461,8 +464,8 @@ struct EdgeVisibility {
                 counts({{static_cast<long>(visible.size()), "visible"},
                         {static_cast<long>(silhouette.size()), "silhouette"},
                         {static_cast<long>(hidden.size()), "hidden"}}))
+          .yields("edges")
           .note = say(kEdgeClassifiedByFaces) + say(kHiddenLineDrawing, listed(front_edges));
-      steps->yields("edges");
     }
 
     // Convexity: every vertex on the inner side of every face plane.
@@ -478,7 +481,8 @@ struct EdgeVisibility {
         for (int v : loop) s += (s.empty() ? "" : " → ") + std::to_string(v);
         loop_text += (loop_text.empty() ? "" : ";  ") + s;
       }
-      Step& s = steps->add(say(kSilhouetteTitle), {}, {}, word(listed(silhouette)));
+      Step& s =
+          steps->add(say(kSilhouetteTitle), {}, {}, word(listed(silhouette))).yields("silhouette");
       if (loops.ok && !loops.loops.empty()) {
         s.note = say(loops.loops.size() == 1 ? kChainedOneLoop : kChainedLoops, loop_text,
                      loops.loops.size());
@@ -486,26 +490,23 @@ struct EdgeVisibility {
       } else if (!loops.ok) {
         s.note = say(kNotSimpleLoops);
       }
-      steps->yields("silhouette");
-      steps->add(say(kHiddenEdgesTitle), {}, {}, word(listed(hidden))).note =
+      steps->add(say(kHiddenEdgesTitle), {}, {}, word(listed(hidden))).yields("hidden").note =
           say(kDrawingOnlyThese);
-      steps->yields("hidden");
       steps
           ->add(say(kConvexQ),
                 math("n_f·(v − p_f) ≤ 0  ∀ v, f",
                      "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\quad "
                      "\\forall\\, \\mathbf{v}, f"),
                 {}, word(convex ? words::kConvex : words::kNotConvex))
+          .yields("convex")
           .note =
           convex ? say(kEveryVertexInside) : say(kNotConvexWitness, witness.vertex, witness.face);
-      steps->yields("convex");
     }
     out.set("backface_sufficient", Value::boolean(convex));
-    if (steps) {
-      steps->add(say(kBackfaceAloneQ), {}, {}, word(convex ? words::kYes : words::kNo)).note =
-          say(convex ? kSingleConvexPolyhedron : kNotConvexNeedsDepthTest);
-      steps->yields("backface_sufficient");
-    }
+    if (steps)
+      steps->add(say(kBackfaceAloneQ), {}, {}, word(convex ? words::kYes : words::kNo))
+          .yields("backface_sufficient")
+          .note = say(convex ? kSingleConvexPolyhedron : kNotConvexNeedsDepthTest);
     return out;
   }
 

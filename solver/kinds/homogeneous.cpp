@@ -174,13 +174,13 @@ struct Homogeneous {
       }
       h.push_back(*g.w);
       substituted += math(", ") + exact(*g.w) + math(")");
-      if (steps) {
-        steps->add(say(kHomogeneousCoordinates),
-                   coordinates(dim, false, false) + math(" ≡ ", " \\equiv ") + scaled_names(dim) +
-                       math(", w ≠ 0", ",\\ w \\neq 0"),
-                   substituted, vec(h));
-        steps->yields("homogeneous");
-      }
+      if (steps)
+        steps
+            ->add(say(kHomogeneousCoordinates),
+                  coordinates(dim, false, false) + math(" ≡ ", " \\equiv ") + scaled_names(dim) +
+                      math(", w ≠ 0", ",\\ w \\neq 0"),
+                  substituted, vec(h))
+            .yields("homogeneous");
       out.set("homogeneous", Value::vector(h));
     }
     if (g.candidate) {
@@ -205,16 +205,20 @@ struct Homogeneous {
       }
       const bool same = same_point(g.point, p);
       if (steps) {
-        steps->add(say(kBackToThePoint),
-                   coordinates(dim, true, true) + math(" ↦ ", " \\mapsto ") +
-                       math(names + ")", latex + "\\right)"),
-                   substituted, vec(p, true));
-        steps->yields("cartesian");
-        Step& step = steps->add(
-            say(kTheSamePoint),
-            word(kEqualQuotients) + math(" ⇔ ", " \\Leftrightarrow ") + word(kTheSamePointWord),
-            vec(p) + math(same ? " = " : " ≠ ", same ? " = " : " \\neq ") + vec(g.point),
-            word(same ? words::kYes : words::kNo));
+        steps
+            ->add(say(kBackToThePoint),
+                  coordinates(dim, true, true) + math(" ↦ ", " \\mapsto ") +
+                      math(names + ")", latex + "\\right)"),
+                  substituted, vec(p, true))
+            .yields("cartesian");
+        Step& step =
+            steps
+                ->add(say(kTheSamePoint),
+                      word(kEqualQuotients) + math(" ⇔ ", " \\Leftrightarrow ") +
+                          word(kTheSamePointWord),
+                      vec(p) + math(same ? " = " : " ≠ ", same ? " = " : " \\neq ") + vec(g.point),
+                      word(same ? words::kYes : words::kNo))
+                .yields("same_point");
         if (!same) {
           std::vector<Exact> scaled;
           for (const Exact& x : g.point) scaled.push_back(canonical(w * x));
@@ -222,7 +226,6 @@ struct Homogeneous {
           step.note =
               say(kWrittenWithW, exact(w).unicode, vec(g.point).unicode, vec(scaled).unicode);
         }
-        steps->yields("same_point");
       }
       out.set("cartesian", Value::vector(p));
       out.set("same_point", Value::boolean(same));

@@ -184,24 +184,24 @@ struct Plane {
     const Exact d = canonical_dot(n, p0);
     const Value pv = plane_answer(paper_plane(n, d));
     out.set("plane", pv);
-    if (steps) {
-      steps->add(say(kPlaneThroughP0),
-                 math("n·(p − p₀) = 0  ⇔  n·p = n·p₀",
-                      "\\mathbf{n}\\cdot(\\mathbf{p} - \\mathbf{p}_0) = 0 \\iff "
-                      "\\mathbf{n}\\cdot\\mathbf{p} = \\mathbf{n}\\cdot\\mathbf{p}_0"),
-                 plane_equation(n(0), n(1), n(2), d), pv.display);
-      steps->yields("plane");
-    }
+    if (steps)
+      steps
+          ->add(say(kPlaneThroughP0),
+                math("n·(p − p₀) = 0  ⇔  n·p = n·p₀",
+                     "\\mathbf{n}\\cdot(\\mathbf{p} - \\mathbf{p}_0) = 0 \\iff "
+                     "\\mathbf{n}\\cdot\\mathbf{p} = \\mathbf{n}\\cdot\\mathbf{p}_0"),
+                plane_equation(n(0), n(1), n(2), d), pv.display)
+          .yields("plane");
     const Exact dist = canonical((exact_sign(d) < 0 ? Exact(-d) : d) / len);
     out.set("distance", Value::scalar(dist));
-    if (steps) {
-      steps->add(say(kDistanceFromOrigin),
-                 math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
-                 math("dist = |", "\\text{dist} = \\frac{\\lvert ") + exact(d) +
-                     math("| / ", " \\rvert}{") + exact(len) + math("", "}"),
-                 math("dist = ", "\\text{dist} = ") + exact(dist, true));
-      steps->yields("distance");
-    }
+    if (steps)
+      steps
+          ->add(say(kDistanceFromOrigin),
+                math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
+                math("dist = |", "\\text{dist} = \\frac{\\lvert ") + exact(d) +
+                    math("| / ", " \\rvert}{") + exact(len) + math("", "}"),
+                math("dist = ", "\\text{dist} = ") + exact(dist, true))
+          .yields("distance");
     return out;
   }
   // Default generator: three integer points (three times in four) or a point and an integer

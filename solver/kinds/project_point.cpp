@@ -535,25 +535,25 @@ struct ProjectPoint {
       const Vec3<Exact> window(canonical(win(0)), canonical(win(1)), canonical(win(2)));
       out.set("window", Value::vector(window));
       if (steps) {
-        steps->add(
-            say(kPerspectiveDivide),
-            math("ndc = (x_c, y_c, z_c) / w_c", "\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"), {},
-            math("ndc = ", "\\text{ndc} = ") + vec(ndc, true));
-        steps->yields("ndc");
+        steps
+            ->add(say(kPerspectiveDivide),
+                  math("ndc = (x_c, y_c, z_c) / w_c", "\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"),
+                  {}, math("ndc = ", "\\text{ndc} = ") + vec(ndc, true))
+            .yields("ndc");
         viewport_step(steps, g.api, g.width, g.height, window);
       }
     }
     out.set("inside", Value::boolean(inside));
-    if (steps) {
-      steps->add(say(kInsideViewVolume),
-                 g.api == Api::DirectX
-                     ? math("−w_c ≤ x_c, y_c ≤ w_c,  0 ≤ z_c ≤ w_c,  w_c > 0",
-                            "-w_c \\le x_c, y_c \\le w_c,\\; 0 \\le z_c \\le w_c,\\; w_c > 0")
-                     : math("−w_c ≤ x_c, y_c, z_c ≤ w_c,  w_c > 0",
-                            "-w_c \\le x_c, y_c, z_c \\le w_c,\\; w_c > 0"),
-                 {}, word(inside ? say(kYesPointVisible) : say(kNoClippingRemovesIt)));
-      steps->yields("inside");
-    }
+    if (steps)
+      steps
+          ->add(say(kInsideViewVolume),
+                g.api == Api::DirectX
+                    ? math("−w_c ≤ x_c, y_c ≤ w_c,  0 ≤ z_c ≤ w_c,  w_c > 0",
+                           "-w_c \\le x_c, y_c \\le w_c,\\; 0 \\le z_c \\le w_c,\\; w_c > 0")
+                    : math("−w_c ≤ x_c, y_c, z_c ≤ w_c,  w_c > 0",
+                           "-w_c \\le x_c, y_c, z_c \\le w_c,\\; w_c > 0"),
+                {}, word(inside ? say(kYesPointVisible) : say(kNoClippingRemovesIt)))
+          .yields("inside");
     return out;
   }
   // Default generator: perspective (fovy 45°/60°/90°, aspect of the viewport) or a symmetric

@@ -100,7 +100,7 @@ struct ProjectionPlane {
     const Exact s = canonical(toward * (g.height / 2) * GiNaC::cos(half) / GiNaC::sin(half));
     Answers out;
     out.set("plane_z", Value::scalar(s));
-    if (steps) {
+    if (steps)
       steps
           ->add(say(kDistanceOfProjectionPlane),
                 math(std::string(toward < 0 ? "s = −" : "s = ") + "(height/2) / tan(fov/2)",
@@ -110,13 +110,12 @@ struct ProjectionPlane {
                     math(",  fov = ", ",\\; \\text{fov} = ") +
                     angle_text(g.fov, g.conventions.angles),
                 math("s = ") + exact(s, true))
+          .yields("plane_z")
           .note = say(kPlaneFillsFieldOfView) +
                   (toward < 0 ? say(kEyeSpaceLooksDownMinusZ)
                    : g.conventions.api == Api::DirectX
                        ? say(kDirectXLooksDownPlusZ)
                        : say(kLeftHandedPlaneAtPositiveZ) + say(kReadRightHandedPlane));
-      steps->yields("plane_z");
-    }
     const int z_sign = exact_sign(g.point(2));
     if (z_sign != toward)
       throw DomainError(
@@ -126,13 +125,13 @@ struct ProjectionPlane {
     const Exact k = canonical(s / g.point(2));
     const Vec3<Exact> p(canonical(g.point(0) * k), canonical(g.point(1) * k), s);
     out.set("projected", Value::vector(p));
-    if (steps) {
-      steps->add(say(kSimilarTriangles), math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
-                 math("P′ = ", "P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") +
-                     exact(s) + math(") / (", "}{") + exact(g.point(2)) + math(")", "}"),
-                 math("P′ = ", "P' = ") + vec(p, true));
-      steps->yields("projected");
-    }
+    if (steps)
+      steps
+          ->add(say(kSimilarTriangles), math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
+                math("P′ = ", "P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") + exact(s) +
+                    math(") / (", "}{") + exact(g.point(2)) + math(")", "}"),
+                math("P′ = ", "P' = ") + vec(p, true))
+          .yields("projected");
     return out;
   }
   // Default generator: a window of 200×200, 400×300 or 640×480 pixels, fov 30°…90° (nice: 60°

@@ -128,10 +128,7 @@ struct ScanConvert {
         steps->note(say(kOrientation), say(kClockwiseScannedAs, "ABC", "ACB") + say(kCullsNothing));
     }
     if (t.degenerate) {
-      if (steps) {
-        steps->warn(say(kDegenerateTriangle), say(kCollinear));
-        steps->yields("pixels");
-      }
+      if (steps) steps->warn(say(kDegenerateTriangle), say(kCollinear)).yields("pixels");
       Answers out;
       out.set("pixels", Value::matrix({}));
       return out;
@@ -168,9 +165,9 @@ struct ScanConvert {
         text += (text.empty() ? MathText{} : math(";  ", ";\\quad ")) +
                 math("j = " + std::to_string(j) + ": i = " + is,
                      "j = " + std::to_string(j) + "\\colon i = " + is);
-      steps->add(say(kCoveredPixelsByRow), {}, {}, text.empty() ? word(words::kNone) : text).note =
-          say(kPixelsCovered, frags.size());
-      steps->yields("pixels");
+      steps->add(say(kCoveredPixelsByRow), {}, {}, text.empty() ? word(words::kNone) : text)
+          .yields("pixels")
+          .note = say(kPixelsCovered, frags.size());
     }
     std::vector<std::vector<Exact>> px;
     for (const Fragment& f : frags) px.push_back({Exact(f.i), Exact(f.j)});

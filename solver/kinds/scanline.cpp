@@ -283,8 +283,8 @@ struct Scanline {
                    "x = x_0 + \\frac{(y - y_0)(x_1 - x_0)}{y_1 - y_0},\\quad z = z_0 + "
                    "\\frac{(y - y_0)(z_1 - z_0)}{y_1 - y_0}"),
               math("y = ") + exact(g.y), found)
+        .yields("spans")
         .note = say(kSectionEnds);
-    steps->yields("spans");
     MathText where;
     for (const Crossing& c : crossings) {
       const std::string& a = g.polygons[c.a].label;
@@ -305,9 +305,9 @@ struct Scanline {
     steps
         ->add(say(kNearestOnEachPiece), word(words::kVisible) + math(": min z", ": \\min z"), {},
               shown)
+        .yields("visible")
+        .yields("breaks")
         .note = say(kSmallestZSeen);
-    steps->yields("visible");
-    steps->yields("breaks");
     return out;
   }
 

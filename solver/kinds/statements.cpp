@@ -144,10 +144,9 @@ struct Statements {
     }
     Value v = Value::word_map(std::move(entries));
     v.display = key;
-    if (steps) {
-      steps->add(say(kTheTrueStatements), {}, {}, chosen.empty() ? word(words::kNone) : chosen);
-      steps->yields("true_statements");
-    }
+    if (steps)
+      steps->add(say(kTheTrueStatements), {}, {}, chosen.empty() ? word(words::kNone) : chosen)
+          .yields("true_statements");
     Answers out;
     out.set("true_statements", std::move(v));
     return out;

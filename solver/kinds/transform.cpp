@@ -146,13 +146,14 @@ Value array_with_steps(const MatX<Exact>& m, bool column_major, Derivation* step
     names[i * n + j] = math(fmt::format("m{}", k), fmt::format("m_{{{}}}", k));
   }
   if (steps) {
-    Step& step = steps->add(say(column_major ? kArrayByColumn : kArrayByRow),
-                            math("M = ") + matrix_of(names, n), {},
-                            math(fmt::format("(m0, …, m{}) = ", n * n - 1),
-                                 fmt::format("(m_{{0}}, \\dots, m_{{{}}}) = ", n * n - 1)) +
-                                vec(array));
+    Step& step = steps
+                     ->add(say(column_major ? kArrayByColumn : kArrayByRow),
+                           math("M = ") + matrix_of(names, n), {},
+                           math(fmt::format("(m0, …, m{}) = ", n * n - 1),
+                                fmt::format("(m_{{0}}, \\dots, m_{{{}}}) = ", n * n - 1)) +
+                               vec(array))
+                     .yields("array");
     if (column_major) step.note = say(n == 4 ? kColumnsInPieces3d : kColumnsInPieces2d);
-    steps->yields("array");
   }
   return Value::vector(array);
 }
@@ -322,8 +323,8 @@ struct Transform {
                   math("M⁻¹ = " + order + " (M·M⁻¹ = I)",
                        "M^{-1} = " + order_latex + "\\;(M M^{-1} = I)"),
                   {}, math("M⁻¹ = ", "M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
+            .yields("inverse")
             .note = say(kEachStepUndone);
-        steps->yields("inverse");
       }
     }
     return out;

@@ -297,92 +297,92 @@ struct Vectors {
     // Dot product: a·b = a_x b_x + a_y b_y + a_z b_z.
     const Exact dot = canonical(a.dot(b));
     out.set("dot", Value::scalar(dot));
-    if (steps) {
-      steps->add(
-          say(kDotProduct),
-          math("a·b = aₓbₓ + a_yb_y + a_zb_z",
-               "\\mathbf{a}\\cdot\\mathbf{b} = a_x b_x + a_y b_y + a_z b_z"),
-          math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + math("·", "\\cdot") + vec(b),
-          math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + exact(dot));
-      steps->yields("dot");
-    }
+    if (steps)
+      steps
+          ->add(say(kDotProduct),
+                math("a·b = aₓbₓ + a_yb_y + a_zb_z",
+                     "\\mathbf{a}\\cdot\\mathbf{b} = a_x b_x + a_y b_y + a_z b_z"),
+                math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + math("·", "\\cdot") +
+                    vec(b),
+                math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + exact(dot))
+          .yields("dot");
     // Cross product by the determinant rule.
     Vec3<Exact> cross = a.cross(b);
     for (int i = 0; i < 3; ++i) cross(i) = canonical(cross(i));
     out.set("cross", Value::vector(cross));
-    if (steps) {
-      steps->add(say(kCrossProduct),
-                 math("a × b = (a_yb_z − a_zb_y, a_zbₓ − aₓb_z, aₓb_y − a_ybₓ)",
-                      "\\mathbf{a}\\times\\mathbf{b} = (a_y b_z - a_z b_y,\\; a_z b_x - a_x "
-                      "b_z,\\; a_x b_y - a_y b_x)"),
-                 math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) +
-                     math(" × ", " \\times ") + vec(b),
-                 math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(cross));
-      steps->yields("cross");
-    }
+    if (steps)
+      steps
+          ->add(say(kCrossProduct),
+                math("a × b = (a_yb_z − a_zb_y, a_zbₓ − aₓb_z, aₓb_y − a_ybₓ)",
+                     "\\mathbf{a}\\times\\mathbf{b} = (a_y b_z - a_z b_y,\\; a_z b_x - a_x "
+                     "b_z,\\; a_x b_y - a_y b_x)"),
+                math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) +
+                    math(" × ", " \\times ") + vec(b),
+                math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(cross))
+          .yields("cross");
     // The measures by the template the numeric path uses; the steps show them.
     const VectorMeasures<Exact> m = vector_measures<Exact>(a, b, dot, cross);
     const Exact len_a = canonical(m.length_a), len_b = canonical(m.length_b);
     const Exact area = canonical(m.area);
     out.set("area", Value::scalar(area));
-    if (steps) {
-      steps->add(say(kAreaOfParallelogram),
-                 math("S = ‖a × b‖", "S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"), {},
-                 math("S = ") + exact(area, true));
-      steps->yields("area");
-    }
+    if (steps)
+      steps
+          ->add(say(kAreaOfParallelogram),
+                math("S = ‖a × b‖", "S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"), {},
+                math("S = ") + exact(area, true))
+          .yields("area");
     const Exact sin = canonical(m.sin);
     out.set("sin", Value::scalar(sin));
-    if (steps) {
-      steps->add(say(kSineOfAngle),
-                 math("sin θ = ‖a × b‖ / (‖a‖ ‖b‖)",
-                      "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} "
-                      "\\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
-                 math("sin θ = ", "\\sin\\theta = \\frac{") + exact(area) + math(" / (", "}{") +
-                     exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
-                 math("sin θ = ", "\\sin\\theta = ") + exact(sin, true));
-      steps->yields("sin");
-    }
+    if (steps)
+      steps
+          ->add(say(kSineOfAngle),
+                math("sin θ = ‖a × b‖ / (‖a‖ ‖b‖)",
+                     "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} "
+                     "\\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
+                math("sin θ = ", "\\sin\\theta = \\frac{") + exact(area) + math(" / (", "}{") +
+                    exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
+                math("sin θ = ", "\\sin\\theta = ") + exact(sin, true))
+          .yields("sin");
     const Exact cos = canonical(m.cos);
     out.set("cos", Value::scalar(cos));
-    if (steps) {
-      steps->add(
-          say(kCosineOfAngle),
-          math("cos θ = a·b / (‖a‖ ‖b‖)",
-               "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
-               "\\lVert\\mathbf{b}\\rVert}"),
-          math("cos θ = ", "\\cos\\theta = \\frac{") + exact(dot) + math(" / (", "}{") +
-              exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
-          math("cos θ = ", "\\cos\\theta = ") + exact(cos, true));
-      steps->yields("cos");
-    }
+    if (steps)
+      steps
+          ->add(
+              say(kCosineOfAngle),
+              math("cos θ = a·b / (‖a‖ ‖b‖)",
+                   "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
+                   "\\lVert\\mathbf{b}\\rVert}"),
+              math("cos θ = ", "\\cos\\theta = \\frac{") + exact(dot) + math(" / (", "}{") +
+                  exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
+              math("cos θ = ", "\\cos\\theta = ") + exact(cos, true))
+          .yields("cos");
     const Exact radians = canonical(exact_acos(cos));
     const Exact angle =
         g.angles == AngleUnit::Degrees ? canonical(radians * 180 / GiNaC::Pi) : radians;
     out.set("angle", Value::scalar(angle));
-    if (steps) {
-      steps->add(say(kAngle), math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
-                 math("θ = ", "\\theta = ") + exact(angle, true) +
-                     math(g.angles == AngleUnit::Degrees ? "°" : " rad",
-                          g.angles == AngleUnit::Degrees ? "{}^\\circ" : "\\,\\text{rad}"));
-      steps->yields("angle");
-    }
+    if (steps)
+      steps
+          ->add(say(kAngle), math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
+                math("θ = ", "\\theta = ") + exact(angle, true) +
+                    math(g.angles == AngleUnit::Degrees ? "°" : " rad",
+                         g.angles == AngleUnit::Degrees ? "{}^\\circ" : "\\,\\text{rad}"))
+          .yields("angle");
     if (area.is_zero()) {
       out.set("unit_normal", Value::null());
       if (steps) steps->warn(say(kNoPlane), say(kParallelNoPlane));
     } else {
       const Vec3<Exact> n = unit(cross);
       out.set("unit_normal", Value::vector(n));
-      if (steps) {
-        steps->add(say(kUnitNormalOfPlane),
-                   math("n = (a × b) / ‖a × b‖",
-                        "\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert "
-                        "\\mathbf{a}\\times\\mathbf{b} \\rVert}"),
-                   math("n = ", "\\mathbf{n} = \\frac{") + vec(cross) + math(" / ", "}{") +
-                       exact(area) + math("", "}"),
-                   math("n = ", "\\mathbf{n} = ") + vec(n, true));
-        steps->yields("unit_normal");
-      }
+      if (steps)
+        steps
+            ->add(say(kUnitNormalOfPlane),
+                  math("n = (a × b) / ‖a × b‖",
+                       "\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert "
+                       "\\mathbf{a}\\times\\mathbf{b} \\rVert}"),
+                  math("n = ", "\\mathbf{n} = \\frac{") + vec(cross) + math(" / ", "}{") +
+                      exact(area) + math("", "}"),
+                  math("n = ", "\\mathbf{n} = ") + vec(n, true))
+            .yields("unit_normal");
     }
     return out;
   }

@@ -125,9 +125,9 @@ struct ViewVolume {
                      "S\\left(\\frac{d}{a z_{\\max}}, \\frac{d}{b z_{\\max}}, "
                      "\\frac{1}{z_{\\max}}\\right)"),
                 {}, math("S = ") + matrix_text(paper_form(s, g.api)))
+          .yields("scale_matrix")
           .note =
           say(kBackPlaneMovesToZ1) + (g.api == Api::DirectX ? multiply_note(g.api) : Said());
-      steps->yields("scale_matrix");
       steps
           ->add(say(kPerspectiveOfNormalizedVolume),
                 g.api == Api::DirectX
@@ -147,26 +147,26 @@ struct ViewVolume {
                            "0 & 0 & 1 & 0 \\end{bmatrix}"),
                 math("z̃_min = ", "\\tilde{z}_{\\min} = ") + exact(zt),
                 math("P = ") + matrix_text(paper_form(p, g.api)))
+          .yields("perspective_matrix")
           .note = say(kProjectiveNotAffine);
-      steps->yields("perspective_matrix");
     }
     const std::vector<Exact> h =
         transform_point(MatX<Exact>(p * s), std::vector<Exact>{g.point(0), g.point(1), g.point(2)});
     const std::vector<Exact> q = {canonical(h[0]), canonical(h[1]), canonical(h[2])};
     out.set("point", Value::vector(q));
-    if (steps) {
-      steps->add(say(kPointThroughBoth),
-                 g.api == Api::DirectX
-                     ? math("(X′, Y′, Z′, W′) = p·S·P,  p′ = (X′, Y′, Z′)/W′",
-                            "(X', Y', Z', W') = \\mathbf{p} S P,\\; \\mathbf{p}' = \\frac{(X', Y', "
-                            "Z')}{W'}")
-                     : math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′",
-                            "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = "
-                            "\\frac{(X', Y', Z')}{W'}"),
-                 math("p = ", "\\mathbf{p} = ") + vec(g.point),
-                 math("p′ = ", "\\mathbf{p}' = ") + vec(q, true));
-      steps->yields("point");
-    }
+    if (steps)
+      steps
+          ->add(say(kPointThroughBoth),
+                g.api == Api::DirectX
+                    ? math("(X′, Y′, Z′, W′) = p·S·P,  p′ = (X′, Y′, Z′)/W′",
+                           "(X', Y', Z', W') = \\mathbf{p} S P,\\; \\mathbf{p}' = \\frac{(X', Y', "
+                           "Z')}{W'}")
+                    : math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′",
+                           "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = "
+                           "\\frac{(X', Y', Z')}{W'}"),
+                math("p = ", "\\mathbf{p} = ") + vec(g.point),
+                math("p′ = ", "\\mathbf{p}' = ") + vec(q, true))
+          .yields("point");
     return out;
   }
   // Default generator: d, a, b in 1…3, 1 ≤ z_min < z_max ≤ 105, and a point inside the view

@@ -255,13 +255,12 @@ struct ZBuffer {
       }
     out.set("depth", d);
     out.set("steps", Value::word_list(after));
-    if (steps) {
+    if (steps)
       steps->add(say(kFinalFrameBuffer), {}, {}, word(Said::verbatim(joined(frame_rows(frame)))))
+          .yields("frame")
+          .yields("depth")
+          .yields("steps")
           .note = say(kRowsTopFirst);
-      steps->yields("frame");
-      steps->yields("depth");
-      steps->yields("steps");
-    }
     return out;
   }
   // Default generator: a 3–6 × 3–5 grid and two or three labelled rectangles ("1", "2", "3")

@@ -291,15 +291,15 @@ Vec3<Exact> unit_normal_with_steps(const Vec3<Exact>& n, Derivation* steps) {
 }
 
 void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* steps) {
-  if (steps) {
-    steps->add(say(kind_words::kUnitNormalTitle),
-               math("n̂ = n / ‖n‖,  ‖n‖ = √(nₓ² + n_y² + n_z²)",
-                    "\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
-                    "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
-               math("‖n‖ = ", "\\lVert\\mathbf{n}\\rVert = ") + exact(norm(n), true),
-               math("n̂ = ", "\\hat{\\mathbf{n}} = ") + vec(u, true));
-    steps->yields("unit_normal");
-  }
+  if (steps)
+    steps
+        ->add(say(kind_words::kUnitNormalTitle),
+              math("n̂ = n / ‖n‖,  ‖n‖ = √(nₓ² + n_y² + n_z²)",
+                   "\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
+                   "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
+              math("‖n‖ = ", "\\lVert\\mathbf{n}\\rVert = ") + exact(norm(n), true),
+              math("n̂ = ", "\\hat{\\mathbf{n}} = ") + vec(u, true))
+        .yields("unit_normal");
 }
 
 Polygon3<Exact> reversed_winding(const Polygon3<Exact>& p) {
@@ -525,10 +525,10 @@ bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
                    "\\operatorname{sign} E_{CA}(x_S, y_S)"),
               sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
               word(inside ? words::kInside : words::kOutside))
+        .yields("inside")
         .note = say(inside                   ? kSignsAgree
                     : z_from == ZFrom::Plane ? kSignsDifferPlane
                                              : kSignsDifferInterpolation);
-    steps->yields("inside");
   }
   return inside;
 }

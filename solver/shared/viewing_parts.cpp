@@ -431,10 +431,10 @@ void viewport_step(Derivation* steps, Api api, const Exact& width, const Exact& 
   steps
       ->add(say(kViewport), formula, given,
             math("(x_w, y_w, depth) = ", "(x_w, y_w, \\text{depth}) = ") + vec(window, true))
+      .yields("window")
       .note = say(api == Api::OpenGL    ? kOpenGlWindowOrigin
                   : api == Api::DirectX ? kDirectXWindowOrigin
                                         : kProcessingWindowOrigin);
-  steps->yields("window");
 }
 
 Said multiply_note(Api api) {
@@ -741,10 +741,12 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
   }
   if (steps) {
     const bool ortho = p.type == ProjectionSpec::Type::Ortho;
-    Step& s = steps->add(say(ortho ? kOrthographicProjectionMatrix : kPerspectiveProjectionMatrix),
-                         p.z_coordinates ? ortho_coordinates_formula(api, name)
-                                         : projection_formula(ortho, api, p.left_handed, name),
-                         volume_text(v), math(name + " = ") + matrix_text(paper_form(m, api)));
+    Step& s = steps
+                  ->add(say(ortho ? kOrthographicProjectionMatrix : kPerspectiveProjectionMatrix),
+                        p.z_coordinates ? ortho_coordinates_formula(api, name)
+                                        : projection_formula(ortho, api, p.left_handed, name),
+                        volume_text(v), math(name + " = ") + matrix_text(paper_form(m, api)))
+                  .yields("matrix");
     // OpenGL's right-handed perspective: the column vectors and where near and far go are one
     // sentence ("… = M·p. z = −n maps to …").
     s.note = api == Api::OpenGL && !ortho && !p.left_handed
@@ -755,7 +757,6 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
       s.note += say(kLeftHandedNearFarAreCoordinates) + say(kRightHandedMatrixThirdColumn);
     if (api == Api::DirectX) s.note += say(kLookingDownPlusZNdc);
     if (p.z_coordinates) s.note += say(kNearFarAsZCoordinates) + say(kGlOrthoReadsDistances);
-    steps->yields("matrix");
   }
   return m;
 }
