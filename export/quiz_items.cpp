@@ -92,7 +92,7 @@ bool given_is_key(const ProblemSpec& p) {
 Said fields_of(const ProblemSpec& p, const Answers& key, const AnswerSpec& spec,
                const Value& expected, QuizAnswer& a, Lang lang) {
   if (expected.shape == Value::Shape::Null) return say(kNoValueHere);
-  const QuizAsk ask = answer_type(spec.kind).quiz(spec, expected);
+  const QuizAsk ask = answer_type(spec.kind).quiz(spec, expected, p.conventions);
   if (!ask.refused.empty()) return ask.refused;
   for (const Said& note : ask.notes) a.prompt += fmt::format(" ({})", note.in(lang));
   switch (ask.field) {

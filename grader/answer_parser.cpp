@@ -343,6 +343,13 @@ Rows read_rows(const YAML::Node& node, bool vertices, WorkBudget& budget, double
   return out;
 }
 
+Said read_number(const YAML::Node& node, WorkBudget& budget, Exact& value) {
+  if (!node.IsScalar()) return say(kExpectedOneNumber);
+  Said error;
+  value = parse_one(node.Scalar(), error, budget);
+  return error;
+}
+
 Said read_word_list(const YAML::Node& node, bool unordered_pairs, std::vector<std::string>& words) {
   if (node.IsSequence()) {
     for (std::size_t i = 0; i < node.size(); ++i) {

@@ -27,6 +27,13 @@ Said word_said(const std::string& word);
 std::string known_word(const std::string& written, const std::vector<std::string>& candidates);
 std::string trimmed(std::string s);
 
+inline constexpr Phrase kExpectedOneNumber{"expected one number", "数が一つ必要です",
+                                           "ожидалось одно число"};
+
+// One number or exact expression written alone; returns why it cannot be read (empty: read into
+// `value`).
+Said read_number(const YAML::Node& node, WorkBudget& budget, Exact& value);
+
 struct Numbers {
   std::vector<Exact> values;
   Said error;

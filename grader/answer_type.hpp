@@ -65,8 +65,8 @@ struct AnswerType {
   // Compares a read answer with the key (neither is `none`, unless `compares_none`).
   Comparison (*compare)(const Value& expected, const Value& got,
                         const AnswerRules& rules) = nullptr;
-  // How a quiz asks for it, from the key.
-  QuizAsk (*quiz)(const AnswerSpec& spec, const Value& key) = nullptr;
+  // How a quiz asks for it, from the key (in the problem's conventions).
+  QuizAsk (*quiz)(const AnswerSpec& spec, const Value& key, const Conventions& c) = nullptr;
   // Choice inputs: the words offered, and the key's word among them.
   std::vector<std::string> (*choices)(const AnswerSpec& spec) = nullptr;
   std::string (*chosen)(const Value& key) = nullptr;

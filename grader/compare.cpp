@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 
+#include "grader/answer_reading.hpp"
 #include "grader/answer_type.hpp"
 #include "grader/compare_parts.hpp"
 #include "grader/list_items.hpp"
@@ -477,6 +478,15 @@ std::optional<Comparison> unreadable_list(const std::vector<std::string>& items,
                     {},
                     false,
                     {}};
+}
+
+Comparison compare_number(const Value& expected, const Value& got, const AnswerRules& r) {
+  if (got.numbers.size() != 1 || expected.numbers.size() != 1)
+    return incorrect(say(reading::kExpectedOneNumber));
+  if (exactly_equal(expected, got)) return correct(say(kExactlyEqual));
+  if (judge_of(expected, r).ok(0, expected.numbers[0], got.numbers[0]))
+    return correct(say(kWithinTolerance));
+  return incorrect();
 }
 
 }  // namespace comparing

@@ -59,6 +59,9 @@ struct ComponentRules {
   bool credit = false;       // credit per component, when the set asks for partial credit
   bool up_to_scale = false;  // trivial copies at any positive multiple (trivial_match)
 };
+// One number: exactly equal, or within its window.
+Comparison compare_number(const Value& expected, const Value& got, const AnswerRules& r);
+
 // Same shape, then each component within its window; points written another way (one point as
 // a column, homogeneous coordinates) are read as the rows they mean when the answer says so.
 Comparison compare_components(const Value& expected, const Value& got, const AnswerRules& r,

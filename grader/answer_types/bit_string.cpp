@@ -55,7 +55,7 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
 
 // The bits as text; as `frustum grade` does, the bits with leading zeros dropped are right too
 // (an outcode written as a number: 101 for 0101, 0 for 0000).
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key) {
+QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
   QuizAsk a;
   a.field = QuizAsk::Field::Text;
   a.right = key.word;

@@ -55,7 +55,7 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
 std::vector<std::string> choices(const AnswerSpec&) { return {"true", "false"}; }
 std::string chosen(const Value& key) { return key.flag ? "true" : "false"; }
 
-QuizAsk quiz_ask(const AnswerSpec& spec, const Value& key) {
+QuizAsk quiz_ask(const AnswerSpec& spec, const Value& key, const Conventions&) {
   QuizAsk a;
   a.field = QuizAsk::Field::Choice;
   a.words = choices(spec);

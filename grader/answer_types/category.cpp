@@ -42,7 +42,7 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
 std::vector<std::string> choices(const AnswerSpec& spec) { return spec.words; }
 std::string chosen(const Value& key) { return key.word; }
 
-QuizAsk quiz_ask(const AnswerSpec& spec, const Value& key) {
+QuizAsk quiz_ask(const AnswerSpec& spec, const Value& key, const Conventions&) {
   QuizAsk a;
   a.field = QuizAsk::Field::Choice;
   a.words = choices(spec);

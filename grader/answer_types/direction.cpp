@@ -56,7 +56,7 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
 }
 
 // Right up to a positive factor: the quiz asks for the one of length 1.
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key) {
+QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
   Value unit = key;
   double norm = 0;
   for (double x : unit.numbers) norm += x * x;

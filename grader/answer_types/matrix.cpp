@@ -32,7 +32,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
 bool holds_infinity(const AnswerSpec& spec) { return spec.infinity != 0; }
 bool holds_points(const AnswerSpec& spec) { return spec.infinity == 0; }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key) { return numbers_asked(key); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
+  return numbers_asked(key);
+}
 
 }  // namespace
 

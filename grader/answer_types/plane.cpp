@@ -109,7 +109,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return incorrect();
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value&) { return refused(kPlaneUpToFactor); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value&, const Conventions&) {
+  return refused(kPlaneUpToFactor);
+}
 
 // As its equation, the form a student writes.
 MathText shown(const Value& value) {

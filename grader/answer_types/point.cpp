@@ -39,7 +39,7 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
 }
 
 // Homogeneous (x, y, z, w) is right up to the scale of w: the quiz asks for the key's w.
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key) {
+QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
   QuizAsk a = numbers_asked(key);
   if (key.numbers.size() == 4)
     a.notes.push_back(say(kScaledSoThatW, fmt::format("{}", key.numbers[3])));

@@ -56,7 +56,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return correct(say(kSameItemsAnyOrder));
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value&) { return refused(kPointSetAnyOrder); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value&, const Conventions&) {
+  return refused(kPointSetAnyOrder);
+}
 
 }  // namespace
 

@@ -55,7 +55,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return incorrect();
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value&) { return refused(kPolygonAnyStart); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value&, const Conventions&) {
+  return refused(kPolygonAnyStart);
+}
 
 }  // namespace
 

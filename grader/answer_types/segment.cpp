@@ -40,7 +40,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return compare_components(expected, got, r, {reversed, false, false});
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value&) { return refused(kSegmentEitherDirection); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value&, const Conventions&) {
+  return refused(kSegmentEitherDirection);
+}
 
 }  // namespace
 

@@ -45,7 +45,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return incorrect(sa == sb ? say(kRightItemsWrongOrder) : Said());
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value&) { return refused(kLabelOrderNoField); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value&, const Conventions&) {
+  return refused(kLabelOrderNoField);
+}
 
 }  // namespace
 

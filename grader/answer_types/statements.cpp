@@ -28,7 +28,7 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return compare_statement_choice(expected, got);
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value&) {
+QuizAsk quiz_ask(const AnswerSpec&, const Value&, const Conventions&) {
   QuizAsk a;
   a.field = QuizAsk::Field::Statements;
   return a;

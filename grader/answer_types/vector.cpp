@@ -23,7 +23,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return compare_components(expected, got, r, {nullptr, true, false});
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key) { return numbers_asked(key); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
+  return numbers_asked(key);
+}
 
 }  // namespace
 

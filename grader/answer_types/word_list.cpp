@@ -70,7 +70,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return incorrect(copies == 0 ? Said() : counted);
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value&) { return refused(kLabelSetAnyOrder); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value&, const Conventions&) {
+  return refused(kLabelSetAnyOrder);
+}
 
 }  // namespace
 

@@ -162,7 +162,9 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return compare_word_map(expected, keys_read(got, expected, r), r);
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value&) { return refused(kLabelSetAnyOrder); }
+QuizAsk quiz_ask(const AnswerSpec&, const Value&, const Conventions&) {
+  return refused(kLabelSetAnyOrder);
+}
 
 }  // namespace
 

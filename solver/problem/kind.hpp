@@ -29,6 +29,7 @@ struct Drawable;         // solver/visibility/drawable.hpp
 // grader/answer_types/ (grader/answer_type.hpp).
 enum class AnswerKind {
   Scalar,      // a number
+  Angle,       // a number in the set's angle unit; written with a degree sign, in degrees
   Vector,      // componentwise
   Direction,   // a vector up to positive scale (a normal; "unnormalised" is accepted)
   UnitVector,  // a vector of length 1, componentwise
@@ -88,8 +89,6 @@ struct AnswerSpec {
   // WordList, WordMap keys: items are unordered pairs "a-b" (an edge, two polygons in conflict),
   // so "b-a" is the same item.
   bool unordered_pairs = false;
-  // Scalar: an angle in the set's unit (`angles:`); "66.42°" is read as degrees whatever it is.
-  bool angle = false;
   // The symbols the derivation writes for this answer, which a student may repeat before `=`
   // as well as its name ("D_f = 27", "s = -415.7"); compared without case, spaces, `_`, braces
   // and with Unicode subscripts, primes and ⁻¹ read as their ASCII spellings.
