@@ -13,14 +13,15 @@
 <<<<<<< HEAD
 #include "grader/answer_type.hpp"
 #include "solver/derivation/formats.hpp"
-    =======
+    == == ==
+    =
 >>>>>>> renames
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/problem_figure.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "solver/problem/variants.hpp"
 
-    namespace frustum {
+        namespace frustum {
 
   using json = nlohmann::ordered_json;
   using namespace quiz_phrases;

@@ -21,16 +21,17 @@
 #include "report/report.hpp"
 <<<<<<< HEAD:tests/i18n_test.cpp
 #include "solver/derivation/formats.hpp"
-    =======
+    == == ==
+    =
 #include "solver/derivation/i18n.hpp"
-    >>>>>>> renames:tests/language_test.cpp
+        >>>>>>> renames : tests / language_test.cpp
 #include "solver/derivation/vocabulary.hpp"
 #include "solver/problem/conventions_note.hpp"
 #include "solver/problem/registry.hpp"
 #include "solver/problem/solve_set.hpp"
 #include "student_text.hpp"
 
-    namespace frustum {
+                                  namespace frustum {
   namespace {
 
   // Names that stay as they are in every language: APIs and their functions and parameters,
