@@ -20,8 +20,8 @@ using test::one;
 using test::solve_yaml;
 
 TEST(ProcessingDefaults, ASketchOf640By360WorkedByHand) {
-  const ProblemResult r = solve_yaml(
-      one("processing_defaults", "{width: 640, height: 360}", "{api: processing}"));
+  const ProblemResult r =
+      solve_yaml(one("processing_defaults", "{width: 640, height: 360}", "{api: processing}"));
   ASSERT_FALSE(r.error) << test::error_text(r);
   // cameraZ = 180/tan(30°) = 180√3; near and far a tenth and ten times that.
   EXPECT_EQ(exact_text(r, "camera_z"), "180*sqrt(3)");
@@ -46,23 +46,23 @@ TEST(ProcessingDefaults, ASketchOf640By360WorkedByHand) {
 // The same camera through look_at and the same frustum through projection_matrix's Processing
 // defaults, for sketch sizes in use and every API and angle unit.
 TEST(ProcessingDefaults, MatricesAreLookAtsAndProjectionMatrixsDefaults) {
-  const std::vector<std::pair<int, int>> sizes = {{100, 100}, {640, 360}, {640, 480},
+  const std::vector<std::pair<int, int>> sizes = {{100, 100}, {640, 360},  {640, 480},
                                                   {800, 600}, {1280, 720}, {37, 91}};
   for (const char* api : {"opengl", "processing", "directx"})
     for (const char* angles : {"degrees", "radians"})
       for (const auto& [w, h] : sizes) {
         const std::string conventions = fmt::format("{{api: {}, angles: {}}}", api, angles);
-        const ProblemResult r = solve_yaml(
-            one("processing_defaults", fmt::format("{{width: {}, height: {}}}", w, h), conventions));
+        const ProblemResult r = solve_yaml(one(
+            "processing_defaults", fmt::format("{{width: {}, height: {}}}", w, h), conventions));
         ASSERT_FALSE(r.error) << test::error_text(r);
         const std::string eye = fmt::format("[{}, {}, \"{}*sqrt(3)/2\"]", w / 2.0, h / 2.0, h);
         const ProblemResult view = solve_yaml(one(
             "look_at",
             fmt::format("{{eye: {}, center: [{}, {}, 0], up: [0, 1, 0]}}", eye, w / 2.0, h / 2.0),
             conventions));
-        const ProblemResult projection = solve_yaml(one(
-            "projection_matrix", fmt::format("{{perspective: {{width: {}, height: {}}}}}", w, h),
-            conventions));
+        const ProblemResult projection = solve_yaml(
+            one("projection_matrix",
+                fmt::format("{{perspective: {{width: {}, height: {}}}}}", w, h), conventions));
         ASSERT_FALSE(view.error || projection.error) << api << " " << w << "×" << h;
         EXPECT_EQ(exact_text(r, "view"), exact_text(view, "matrix")) << api << " " << w << "×" << h;
         EXPECT_EQ(exact_text(r, "projection"), exact_text(projection, "matrix"))
@@ -85,9 +85,9 @@ TEST(ProcessingDefaults, TheFullAngleMistakeIsNamedAndAWrongCameraZCarriesForwar
   const ProblemSet set = load_problem_set_from_string(
       one("processing_defaults", "{width: 640, height: 360}", "{api: processing}"), "set.yaml");
   const auto graded = [&](const std::string& answers, const std::string& name) {
-    const GradeReport g =
-        grade(set, load_submission_from_string("student: s1\nanswers:\n  p: " + answers + "\n",
-                                               "a.yaml"));
+    const GradeReport g = grade(
+        set,
+        load_submission_from_string("student: s1\nanswers:\n  p: " + answers + "\n", "a.yaml"));
     EXPECT_EQ(g.problems.size(), 1u);
     for (const AnswerGrade& a : g.problems.at(0).answers)
       if (a.name == name) return a;
