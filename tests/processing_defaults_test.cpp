@@ -68,7 +68,7 @@ TEST(ProcessingDefaults, MatricesAreLookAtsAndProjectionMatrixsDefaults) {
         EXPECT_EQ(exact_text(r, "projection"), exact_text(projection, "matrix"))
             << api << " " << angles << " " << w << "×" << h;
         EXPECT_EQ(exact_text(r, "fovy"),
-                  std::string(angles) == std::string("degrees") ? "60" : "1/3*Pi");
+                  std::string(angles) == std::string("degrees") ? "60" : "pi/3");
       }
 }
 

@@ -77,10 +77,10 @@ struct ProcessingDefaults {
     const Vec3<Exact> center(canonical(g.width / 2), canonical(g.height / 2), Exact(0));
     return look_at_with_steps(eye, center, Vec3<Exact>(0, 1, 0), g.api, "", steps, g.left_handed);
   }
-  static MatX<Exact> projection_of(const Given& g, const Exact& near, const Exact& far,
-                                   Derivation* steps) {
+  static MatX<Exact> projection_of(const Given& g, const Exact& fovy, const Exact& near,
+                                   const Exact& far, Derivation* steps) {
     ProjectionSpec p;
-    p.fovy = canonical(GiNaC::Pi / 3);
+    p.fovy = fovy;
     p.aspect = canonical(g.width / g.height);
     p.unit = g.angles;
     p.left_handed = g.left_handed;
@@ -134,15 +134,43 @@ struct ProcessingDefaults {
                     exact(far, true))
           .yields("near")
           .yields("far");
-    out.set("projection", matrix_value(paper_form(projection_of(g, near, far, steps), g.api)));
+    out.set("projection",
+            matrix_value(paper_form(projection_of(g, fovy, near, far, steps), g.api)));
     if (steps) steps->yields("projection");
     return out;
   }
 
   // Error carried forward: the eye, near and far from the student's own cameraZ, the view
-  // matrix from the student's own eye.
+  // matrix from the student's own eye, the projection from the student's own fovy, near and far
+  // (the key's where the student gave none).
   static Answers carry_forward(const Given& g, const Answers& student) {
     Answers out;
+    const Exact key_z = camera_z(g);
+    Exact fovy = canonical(GiNaC::Pi / 3), near = canonical(key_z / 10),
+          far = canonical(key_z * 10);
+    bool own = false;
+    if (const auto f = carried(student, "fovy", 1)) {
+      fovy = g.angles == AngleUnit::Degrees ? canonical((*f)[0] * GiNaC::Pi / 180) : (*f)[0];
+      own = true;
+    }
+    if (const auto n = carried(student, "near", 1)) {
+      near = (*n)[0];
+      own = true;
+    }
+    if (const auto f = carried(student, "far", 1)) {
+      far = (*f)[0];
+      own = true;
+    }
+    if (own) {
+      try {
+        if (exact_sign(near) > 0 && exact_sign(canonical(far - near)) != 0 &&
+            exact_sign(fovy) > 0 && exact_sign(canonical(fovy - GiNaC::Pi)) < 0)
+          out.set("projection",
+                  matrix_value(paper_form(projection_of(g, fovy, near, far, nullptr), g.api)));
+      } catch (const std::exception&) {
+        // A frustum with no volume: nothing carried.
+      }
+    }
     if (const auto z = carried(student, "camera_z", 1)) {
       out.set("eye", Value::vector(eye_at(g, (*z)[0])));
       out.set("near", Value::scalar(canonical((*z)[0] / 10)));
