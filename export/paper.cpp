@@ -20,8 +20,9 @@ constexpr Phrase kExam{"exam", "試験", "контрольная работа"};
 constexpr Phrase kAnswerKey{"answer key", "解答", "ответы"};
 constexpr Phrase kName{"Name", "氏名", "Имя"};
 
-// The answer lines of a paper exam in the sheet's language, for an answer with no symbol of its
-// own: each phrase's English is the answer's name, which the English sheet writes.
+// The answer lines of a paper exam in the sheet's language, for an answer with no symbol and no
+// label of its own (AnswerSpec::label, which a kind declares in its file): each phrase's English
+// is the answer's name, which the English sheet writes.
 constexpr Phrase kAnswerLines[] = {
     {"accept", "採択", "принятие"},
     {"reject", "棄却", "отбрасывание"},
@@ -115,6 +116,7 @@ std::string sheet_head(const std::string& title, const PaperSheet& s, const Phra
 std::string answer_label(const ProblemSpec& p, const std::string& name, Lang lang) {
   const AnswerSpec* spec = p.info ? p.info->answer(name) : nullptr;
   if (spec && !spec->symbols.empty()) return latex_prose_symbols(spec->symbols.front());
+  if (spec && !spec->label.empty()) return latex_prose_symbols(spec->label.in(lang));
   for (const Phrase& line : kAnswerLines)
     if (line.en == name) return latex_prose_symbols(line.in(lang));
   return latex_prose_symbols(name);

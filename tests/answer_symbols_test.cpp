@@ -54,7 +54,7 @@ TEST(AnswerSymbols, EverySymbolIsReadBeforeEquals) {
   for (const KindInfo& kind : builtin_kinds().all())
     for (const AnswerSpec& a : kind.answers)
       for (const std::string& s : a.symbols) {
-        const bool scalar = a.kind == AnswerKind::Scalar;
+        const bool scalar = a.kind == AnswerKind::Scalar || a.kind == AnswerKind::Angle;
         const std::string value = scalar ? "2" : "(1, 2, 3)";
         const ParsedAnswer p = parse_answer(YAML::Node(s + " = " + value), a, AngleUnit::Degrees);
         if (a.kind == AnswerKind::Transform) continue;  // a matrix is no one-line text

@@ -40,7 +40,7 @@ const std::set<std::string>& names() {
       "AND", "xy", "yz", "xz", "ny", "nx", "nz", "xmin", "xmax", "ymin", "ymax", "zmin", "zmax",
       "inf", "float", "double", "long", "lights", "screenY", "GPU", "true", "false", "Direct3D",
       "FrontCounterClockwise", "XMMatrixTranslation", "OrthoOffCenterLH", "PerspectiveOffCenterLH",
-      "translate",
+      "translate", "size", "cameraZ",
       // Names of functions and quantities inside formulas.
       "acos", "arccos", "exp", "log", "rad", "outcode", "ndc", "clip", "dist", "depth", "fov", "nf",
       // A scene object's name (the paper plane of the paper-plane seed): names stay as written.

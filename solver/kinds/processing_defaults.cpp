@@ -21,6 +21,9 @@ constexpr Phrase kDefaultFieldOfView{"Processing's default field of view",
 constexpr Phrase kDefaultClippingPlanes{"Processing's default near and far planes",
                                         "Processing の既定の前方・後方クリップ面",
                                         "Ближняя и дальняя плоскости Processing по умолчанию"};
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kViewMatrix{"view", "ビュー変換行列", "матрица вида"};
+constexpr Phrase kProjectionMatrix{"projection", "投影行列", "матрица проекции"};
 constexpr Phrase kFullAngleInTangent{"tan(fovy) for tan(fovy/2)", "tan(fovy/2) を tan(fovy) に",
                                      "tan(fovy) вместо tan(fovy/2)"};
 constexpr Phrase kFullAngleInTangentFeedback{
@@ -49,13 +52,17 @@ struct ProcessingDefaults {
   static std::vector<AnswerSpec> answers() {
     return {{.name = "camera_z", .kind = AnswerKind::Scalar, .symbols = {"cameraZ", "z_cam"}},
             {.name = "eye", .kind = AnswerKind::Vector, .depends_on = {"camera_z"}},
-            {.name = "view", .kind = AnswerKind::Transform, .depends_on = {"eye"}},
+            {.name = "view",
+             .kind = AnswerKind::Transform,
+             .depends_on = {"eye"},
+             .label = say(kViewMatrix)},
             {.name = "fovy", .kind = AnswerKind::Angle},
             {.name = "near", .kind = AnswerKind::Scalar, .depends_on = {"camera_z"}},
             {.name = "far", .kind = AnswerKind::Scalar, .depends_on = {"camera_z"}},
             {.name = "projection",
              .kind = AnswerKind::Transform,
-             .depends_on = {"fovy", "near", "far"}}};
+             .depends_on = {"fovy", "near", "far"},
+             .label = say(kProjectionMatrix)}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

@@ -96,6 +96,10 @@ struct AnswerSpec {
   // Matrix: the number that stands for +∞ in the key (the z-buffer's empty depth, 1e30), so that
   // a student may write +∞ as inf, ∞ or infinity; 0: +∞ is read as no number.
   double infinity = 0;
+  // What the answer is called where a student reads its name alone (an exam sheet's answer line)
+  // and it has no symbol: "the view matrix", in every language. Empty: the shared labels of
+  // export/paper.cpp, which hold the answers of the kinds written before this field.
+  Said label = {};
 };
 
 // A common mistake, as the answers it produces: the grader names it when a student's wrong
