@@ -73,8 +73,9 @@ int flush_output(int status) {
 // The process ends once the command's output is flushed, without the static destructors: the
 // command's files are written and closed by then, and what the destructors would free (the
 // registry of kinds, GiNaC's tables) the kernel frees at once. After `grade` forked its
-// children, every page those destructors write to is a copy-on-write fault: they cost it about
-// 4 ms, `solve` about 1.5 ms. Under AddressSanitizer the usual exit, so that leaks are reported.
+// children, every page those destructors write to is a copy-on-write fault, and even without
+// children they are milliseconds of a short command's time. Under AddressSanitizer the usual
+// exit, so that leaks are reported.
 #if defined(__SANITIZE_ADDRESS__)
 #define FRUSTUM_LEAK_CHECK 1
 #elif defined(__has_feature)

@@ -169,7 +169,8 @@ std::vector<BatchEntry> from_csv(const std::string& path, std::size_t max_bytes)
   const int student_col =
       roster.student_columns.empty() ? -1 : static_cast<int>(roster.student_columns[0]);
   std::vector<std::pair<std::string, std::string>> columns(header.size());  // problem id, answer
-  // Looked up, not searched: a header of 100 000 columns once took minutes in pairwise checks.
+  // Looked up, not searched: checking every pair of columns is quadratic in the header, which
+  // may have kMaxCsvColumns of them.
   std::map<std::pair<std::string, std::string>, std::size_t> first_column;
   std::map<std::string, std::size_t> problem_at;  // problem id → its place below
   std::vector<std::pair<std::string, std::vector<std::size_t>>> by_problem;  // in header order
@@ -373,7 +374,7 @@ BatchResult grade_batch(const ProblemSet& set, const std::vector<BatchEntry>& en
   const std::vector<std::string> stems = unique_file_names(ids);
   // Taken first: a locked or unwritable output directory stops the batch before any grading.
   // KaTeX once for the class (katex/, linked by every feedback page), not ~0.7 MB in each page;
-  // without KaTeX on this machine the pages show the formulas' Unicode forms and link nothing.
+  // where KaTeX is absent the pages show the formulas' Unicode forms and link nothing.
   const std::vector<std::pair<std::string, std::string>> katex = katex_files();
   std::vector<std::string> names = {"gradebook.csv", "feedback", "gradescope"};
   if (!katex.empty()) names.push_back(kKatexDir);

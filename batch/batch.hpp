@@ -131,8 +131,8 @@ struct BatchResult {
 // (OutputTransaction::write_back: the disk writes, nothing is published): after each eighth of
 // the class, then when fewer than a sixteenth, a thirty-second and a sixty-fourth are left, so
 // that the sync before publishing, with every core idle, has about a sixty-fourth of the files
-// to write, not an eighth (12–14 ms for 1,000 students on a 2-vCPU VM). write_back_due says
-// whether the row that made `done` rows of a class of `n` is such a point.
+// to write, not an eighth. write_back_due says whether the row that made `done` rows of a class
+// of `n` is such a point.
 inline constexpr std::size_t kWriteBackClass = 64;
 inline constexpr std::size_t kWriteBacks = 8;
 inline constexpr std::size_t kLastWriteBack = 64;

@@ -23,8 +23,8 @@ struct CsvTable {
 
 // Limits of a CSV text, checked while it is read (one pass, linear in its bytes): a roster of
 // answers has a column per answer of the set and a row per student, so these are far beyond
-// any class, and they keep the rows' memory small (an empty field costs 32 bytes, so the
-// 64 MiB a roster may hold could once make 32 million of them).
+// any class, and they keep the rows' memory small (an empty field costs 32 bytes, and without
+// kMaxCsvCells the 64 MiB a roster may hold could make 32 million of them).
 inline constexpr std::size_t kMaxCsvColumns = 10'000;      // fields in one row
 inline constexpr std::size_t kMaxCsvRows = 100'000;        // rows, the header included
 inline constexpr std::size_t kMaxCsvCells = 4'000'000;     // fields in all the rows

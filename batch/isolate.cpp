@@ -43,12 +43,10 @@ constexpr std::size_t kFrameHeader = 17;
 constexpr int kPipeBytes = 1 << 20;
 // After a round that read results, this process waits this long before it polls again, so that
 // the children's results (small, and buffered by the pipes meanwhile) are taken many at a time:
-// woken for each one, as it was, 20,000 variants cost 46,000 context switches and a fifth more
-// CPU time with two children than with one. At 1 ms this process still took a tenth of the
-// CPU time of generate -j 2 on this VM, where each wake-up costs tens of microseconds; at 8 ms
-// generate took 4–15 % less CPU time in all, children included (three runs of each in turn).
-// The wait is never longer than the results so far say it takes the children to bring all but
-// their last items (at 8 ms flat, the end of a class of 1,000 waited 6–8 ms for results already
+// woken for each one, this process would cost a context switch per result, and where a wake-up
+// is dear (a virtual machine) a shorter wait still leaves it a noticeable share of a batch's CPU
+// time. The wait is never longer than the results so far say it takes the children to bring all
+// but their last items (a flat wait would keep the end of a class waiting for results already
 // in, every core idle). A time limit is still checked every round.
 constexpr auto kCoalesce = std::chrono::milliseconds(8);
 bool write_frame(int fd, std::size_t item, char status, const std::string& text) {
@@ -59,7 +57,8 @@ bool write_frame(int fd, std::size_t item, char status, const std::string& text)
     header[8 + i] = static_cast<unsigned char>(std::uint64_t(item) >> (8 * i));
   }
   header[16] = static_cast<unsigned char>(status);
-  // One write for the frame (a system call costs about a microsecond on this kind of VM).
+  // One write for the frame, not one for the header and one for the text: a result is small,
+  // and a system call costs more than copying it, most of all on a virtual machine.
   std::string frame(reinterpret_cast<const char*>(header), kFrameHeader);
   frame += text;
   return write_all(fd, frame.data(), frame.size());

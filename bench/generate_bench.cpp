@@ -1,4 +1,4 @@
-// Variants generated and solved per second, per kind (issue 6), without derivation text:
+// Variants generated and solved per second, per kind, without derivation text:
 //   Generate/KIND        the kind's default generator alone (random numbers → `given` YAML)
 //   GenerateSolve/KIND   draw_problem: generate, parse (exact inputs), solve exactly, check
 //                        conditioning — what `frustum generate` does per problem

@@ -1,4 +1,4 @@
-// Grading throughput (issue 7): answers graded per second for numeric answers, single thread,
+// Grading throughput: answers graded per second for numeric answers, single thread,
 // and a class of 1,000 students × 20 problems graded in process (the set solved once).
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>

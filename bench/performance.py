@@ -195,8 +195,8 @@ def main():
 
     # Generate: seeded variants of a seed set (variants + keys written, exact answers), with one
     # worker (-j 1) and with the default (one per core). Each timed run writes into a directory
-    # of its own, removed with the rest at the end: this VM's ext4 has no journal, and creating
-    # files soon after thousands were deleted scans the recently deleted inodes.
+    # of its own, removed with the rest at the end: on ext4 without a journal, creating files
+    # soon after thousands were deleted scans the recently deleted inodes.
     # The lecture's plane-method exercise with ranges wide enough for 100 000 distinct variants
     # (problems/seeds/001_zbuffer_plane_method.yaml's own redraw holds about 13 500, and generate
     # then stops with an error).
@@ -236,8 +236,8 @@ def main():
         subprocess.run([PY, WORKLOADS, "class", subs, key, str(n)], check=True)
         # Each run writes a new directory, deleted only when the page is written: on a file
         # system that checks recently deleted inodes when it creates one (ext4 without a
-        # journal, as on this kind of VM), creating thousands of files within a minute of
-        # deleting thousands costs a scan per file that has nothing to do with the grader.
+        # journal), creating thousands of files within a minute of deleting thousands costs a
+        # scan per file that has nothing to do with the grader.
         out = lambda k, n=n: os.path.join(work, f"grades{n}-j1-{k}")
         st = repeat(lambda k, n=n: [F, "grade", cls_set, subs, "-o", out(k), "-j", "1"],
                     1 if n >= 10000 else R)
@@ -268,7 +268,7 @@ def main():
             "peer": lambda k: [PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, f"peer{k}.csv")],
             "plain": lambda k: [PY, WORKLOADS, "peer", cls_set, key, subs, os.path.join(work, f"plain{k}.csv"),
                                 "python"],
-            # `-j 1` held to one core (taskset): the "one core"; unheld, the kernel's
+            # `-j 1` held to one core (taskset): the target's "one core"; unheld, the kernel's
             # write-back and the parent process run on the other core while the child grades.
             **({"core": lambda k: ["taskset", "-c", "0", F, "grade", cls_set, subs, "-o",
                                    os.path.join(work, f"core1000-j1-{k}"), "-j", "1"]}
@@ -332,9 +332,9 @@ def main():
     if args.race and os.path.exists(args.race) and want("raster"):
         scene = os.path.join(work, "race1000000.yaml")
         subprocess.run([PY, WORKLOADS, "scene", scene, "1000000"], check=True)
-        # Runs a side: a 10 ms render's median over 31 runs still moved by a sixth from one run of
-        # this script to the next on a shared machine, so the paper plane gets 101 (a second a
-        # side), the 1 M scene 15.
+        # Runs a side: on a shared machine a render of milliseconds varies from one run of this
+        # script to the next even as the median of dozens of runs, so the paper plane gets 101 (a
+        # second a side), the 1 M scene 15.
         for path, reps in ((scene, max(R, 15)), (os.path.join(args.repo, "problems/seeds/paperplane.yaml"), max(R, 101))):
             for threads in sorted({1, ncpu}):
                 env = dict(os.environ, LP_NUM_THREADS=str(threads))

@@ -3,8 +3,8 @@
 // discriminant D_f. Ordinary input: decimal coordinates in [−10, 10] with three decimals (not
 // exactly representable, so the input-rounding part of the bound is exercised), converted to
 // double once outside the timing, as the numeric paths do. The filter proves every sign here,
-// so the exact fallback never runs; the ratio filtered/plain is the cost of the bound (issue 14
-// asks ≤ 1.2). The facing bound is measured both computed per call and prepared once with the
+// so the exact fallback never runs; the ratio filtered/plain is the cost of the bound (the
+// target is ≤ 1.2). The facing bound is measured both computed per call and prepared once with the
 // inputs (as backface's numeric path does). Not part of ctest.
 #include <benchmark/benchmark.h>
 

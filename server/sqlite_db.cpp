@@ -8,8 +8,8 @@ namespace {
 // A writer waits this long for another process's transaction (a grading worker's) to finish.
 constexpr int kBusyTimeoutMs = 10000;
 // ...retrying every this many microseconds. SQLite's own busy_timeout backs off to 100 ms
-// sleeps, and the server's writer then starved behind workers that commit many short
-// transactions (submissions waited up to a second under load).
+// sleeps, and a writer sleeping that long starves behind workers that commit many short
+// transactions: the server's submissions wait.
 constexpr int kBusyRetryUs = 250;
 
 int retry_soon(void*, int tries) {

@@ -483,7 +483,7 @@ TEST(HardCases, DiscreteAnswersAreExactInEveryBackend) {
   EXPECT_GT(fallbacks, 10);  // the boundary cases need the fallback, and say so
 }
 
-// Deliverable 2 of issue 14: every digit estimate on the hard-case suite checked against the
+// Every digit estimate on the hard-case suite checked against the
 // digits actually lost (the error against the exact values, measured exactly). A backend that
 // says "keeps about X digits" keeps at least X − 1 of them; a result with no warning at all
 // lost at most the 4 digits a warning starts at (kIllConditioned), plus one for the estimate's

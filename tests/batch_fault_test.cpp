@@ -1,4 +1,4 @@
-// Batch grading under faults (issue 9): a malformed, empty, huge, hostile or slow submission
+// Batch grading under faults: a malformed, empty, huge, hostile or slow submission
 // gets its own row with a reason (and a time limit), the gradebook lists every student, no
 // temporary file is left behind, and a second run over the same inputs writes byte-identical
 // outputs.

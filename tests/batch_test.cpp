@@ -701,7 +701,7 @@ TEST(Gradescope, AutograderScriptWritesResultsJson) {
   fs::remove_all(ag);
 }
 
-// issue 18: the ids of a directory's files: read up to the value, taken from the file's name when
+// The ids of a directory's files: read up to the value, taken from the file's name when
 // there is none, unreadable files and shared claims noted.
 TEST(Batch, IdsAreReadUpToTheirValue) {
   const fs::path dir = test::scratch_dir("batch-ids");
@@ -756,9 +756,10 @@ TEST(Batch, AnswersSavedWithAByteOrderMarkGradeLikeThePlainFile) {
   fs::remove_all(dir);
 }
 
-// issue 18: reading a class leaves the process single-threaded, so the children grade_batch forks
-// count shared references without atomic instructions (with threads here, -j 2 cost a quarter
-// more CPU per student than -j 1). ctest runs each test in a process of its own.
+// Reading a class leaves the process single-threaded, so the children grade_batch forks count
+// shared references without atomic instructions (with threads here, every child would pay for
+// atomic ones, and -j 2 would cost more CPU per student than -j 1). ctest runs each test in a
+// process of its own.
 TEST(Batch, ReadingAClassLeavesTheProcessSingleThreaded) {
   ASSERT_TRUE(__libc_single_threaded) << "run this test in a process of its own";
   const fs::path dir = test::scratch_dir("batch-single");

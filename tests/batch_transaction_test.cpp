@@ -1,4 +1,4 @@
-// A batch as a transaction (issue 15): one name per student, a lock per output directory,
+// A batch as a transaction: one name per student, a lock per output directory,
 // outputs that agree with the gradebook after a kill at any moment, a grading child that dies
 // with its parent, and outputs safe to open in a spreadsheet, a Markdown viewer or a terminal.
 #include <gtest/gtest.h>
@@ -409,7 +409,7 @@ TEST(OutputHygiene, MarkdownAndGradescopeShowHostileTextLiterally) {
   EXPECT_EQ(gs.find("<script"), std::string::npos);
   EXPECT_EQ(markdown_escape("[x](javascript:alert(1)) *b* `c` |"),
             "\\[x\\](javascript:alert(1)) \\*b\\* \\`c\\` \\|");
-  // Control characters are shown, not dropped: an id's ESC is seen (issue 40).
+  // Control characters are shown, not dropped: an id's ESC is seen.
   EXPECT_EQ(markdown_code("a`b\x1b[2J"), "aʼb\\u001B[2J");
   EXPECT_EQ(markdown_escape("a\x1b[2J\x93"), "a\\\\u001B\\[2J\\\\x93");
 }

@@ -150,9 +150,9 @@ TEST(Cli, GenerateRefusesWhatCheckRefusesBeforeWritingAnything) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/placeholder_set-s1.yaml"));
 }
 
-// The seen case (issue 16 item 8): a variant's text printed the written triangle while its given
-// and key were drawn anew. Now the text states the drawn values, and a literal that cannot be
-// tied to one field is refused by check and generate, naming the problem, language and literal.
+// A variant's text states its drawn values, not the triangle written in the set (its given and
+// key are drawn anew), and a literal that cannot be tied to one field is refused by check and
+// generate, naming the problem, language and literal.
 TEST(Cli, AVariantsTextStatesItsDrawnValuesOrTheSetIsRefused) {
   const std::string dir = ::testing::TempDir() + "/gen-literals";
   const CliRun g =
@@ -373,7 +373,7 @@ TEST(Cli, CheckPrintsItsSummaryOnStandardOutput) {
       << r.out;
 }
 
-// Problems in the students' languages (issue 16): check names a bad language key with its
+// Problems in the students' languages: check names a bad language key with its
 // location; solve, export and generate show the chosen language's text.
 TEST(Cli, ProblemTextsInTheChosenLanguage) {
   const std::string dir = ::testing::TempDir() + "frustum_cli_texts";

@@ -1,4 +1,4 @@
-// Issue 42, item 2: what a numeric solve says about its digits is checked against the digits it
+// What a numeric solve says about its digits is checked against the digits it
 // actually keeps, on generated ill-conditioned inputs of every kind with a numeric path (nearly
 // parallel vectors, triangles far from the origin or nearly degenerate, nearly edge-on
 // triangles, an eye nearly in a face's plane, points near the eye's plane, matrices with a

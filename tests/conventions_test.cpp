@@ -1,4 +1,4 @@
-// Handedness as a course convention (issue 16): `conventions: {handedness: left}` declared once
+// Handedness as a course convention: `conventions: {handedness: left}` declared once
 // changes every kind it concerns, each answer relates to the right-handed one as the derivation
 // says (a mirror in z), the headers say the same handedness as the steps, and the grader takes
 // the course's own form.

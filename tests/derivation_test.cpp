@@ -19,7 +19,7 @@ TEST(Derivation, StepsForAnAnswerStopAtTheStepThatYieldsIt) {
   ASSERT_FALSE(to_normal.empty());
   EXPECT_LT(to_normal.size(), to_z.size());
   EXPECT_EQ(to_z.back().answers, std::vector<std::string>{"z"});
-  // The API's eye-space line is not stated: the answer does not depend on it (issue 16), and
+  // The API's eye-space line is not stated: the answer does not depend on it, and
   // "right-handed" would contradict the left-handed projection coordinates stated instead.
   EXPECT_EQ(r.derivation.steps().front().title.en(), "Projection coordinates are left-handed");
 }

@@ -1,4 +1,4 @@
-// Pictures (issue 5): the SVG writer, hidden lines removed per segment (cross-checked by ray
+// Pictures: the SVG writer, hidden lines removed per segment (cross-checked by ray
 // casting), painter vs z-buffer, and `frustum draw`.
 #include <fmt/format.h>
 

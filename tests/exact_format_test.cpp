@@ -177,7 +177,7 @@ TEST(ExactFormat, PlainRadicalsOfRandomRationalsReparse) {
   }
 }
 
-// Issue 41: a key far beyond double's range is written as its digits and power of ten, never
+// A key far beyond double's range is written as its digits and power of ten, never
 // as a 380-digit fraction, and its approximation is its own leading digits, never 0 or inf.
 TEST(ExactFormat, PowersOfTenBeyondDoublesRange) {
   const numeric tiny = numeric(1) / numeric(10).power(380);

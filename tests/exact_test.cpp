@@ -483,7 +483,7 @@ TEST(Exact, ExactSignRefusesAZeroItCannotProve) {
 // Sines, cosines and tangents of every multiple of π/24 over two turns (negative angles too)
 // become radicals equal to them to 60 digits; canonical() gives tan 22.5° = √2 − 1 and
 // tan 7.5° = √6 − √3 + √2 − 2, and signs of values that are exactly 0 in them are decided
-// (issue 42: a point on the top plane at fovy = 45° was refused).
+// (so that a point on the top plane at fovy = 45° is not refused).
 TEST(Exact, TrigonometricValuesAtMultiplesOfPiOver24AreRadicals) {
   for (long n = -48; n <= 48; ++n) {
     const ex angle = numeric(n, 24) * GiNaC::Pi;

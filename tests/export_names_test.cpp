@@ -1,4 +1,4 @@
-// Problem ids in every export (issue 40): each question keeps its own name whatever its id —
+// Problem ids in every export: each question keeps its own name whatever its id —
 // PrairieLearn directories, QTI items, Moodle categories, Gradescope tests, exam sections —
 // `frustum check` warns of ids a student may take for each other, and a problem that cannot be
 // solved stops the export.

@@ -1,4 +1,4 @@
-// Generated variants (issue 6): the random numbers, `vary`, reproducibility pinned byte for
+// Generated variants: the random numbers, `vary`, reproducibility pinned byte for
 // byte, per-student grading, and the self-test of every kind — generated variants graded against
 // their own key (full marks), a key perturbed by ten times the tolerance (not correct) and
 // malformed answers (unparseable, never a crash). FRUSTUM_SELFTEST_COUNT=N runs N per kind.

@@ -187,7 +187,7 @@ TEST(GraderCredit, WeightsAndPartialCreditPerComponent) {
     ask: [dot, cross]
     points: {dot: 1, cross: 3}
 )Y";  // a × b = (−3, 6, −3), a·b = 32
-  // Component credit is asked for (issue 13: all-or-nothing is the default, as in WeBWorK).
+  // Component credit is asked for (all-or-nothing is the default, as in WeBWorK).
   const GradeReport r = grade_text("grading: {partial: true}\n" + set,
                                    "answers:\n  v: {dot: 32, cross: [-3, 6, 3]}\n");
   EXPECT_DOUBLE_EQ(answer(r, "dot", "v").score, 1);

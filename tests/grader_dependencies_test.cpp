@@ -2,7 +2,7 @@
 // recomputes the answer from the student's own earlier value (error carried forward), as
 // docs/grading.md lists them: the list is generated here from the kinds and the document must
 // match it, so it cannot drift. Each recomputation is checked on the first problem of the
-// kind's verdict corpus: from the key's own earlier answers it gives the key (issue 41).
+// kind's verdict corpus: from the key's own earlier answers it gives the key.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 

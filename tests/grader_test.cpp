@@ -156,7 +156,7 @@ TEST(Grader, JsonFollowsTheFormat) {
 }
 
 TEST(Grader, FeedbackEchoesWhatTheStudentWrote) {
-  // issue 13: 0.948683 stays 0.948683 beside the key, not our exact reading 948683/1000000.
+  // 0.948683 stays 0.948683 beside the key, not our exact reading 948683/1000000.
   const GradeReport r =
       grade(load_problem_set_from_string("problems:\n  - {id: v, kind: vectors, given: {a: [1, 0, "
                                          "0], b: [3, 1, 0]}, ask: [cos, cross]}\n",

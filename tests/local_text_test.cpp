@@ -1,4 +1,4 @@
-// Problems in the students' languages (issue 16): a problem's `text`, a set's `title` and a
+// Problems in the students' languages: a problem's `text`, a set's `title` and a
 // statement's text and reason may be a mapping by language; `--lang` picks one, falling back to
 // the set's own (`lang:`); `check` refuses unknown languages and checks every language's
 // placeholders; every writer shows the chosen language, and generated variants keep them all.

@@ -1,4 +1,4 @@
-// Pictures in the derivations (issue 46): every problem of a kind with a natural picture gets
+// Pictures in the derivations: every problem of a kind with a natural picture gets
 // one — drawn in the plane (clipping, scan conversion, the plane method, barycentric
 // coordinates, the z-buffer) as SVG and TikZ from the same strokes, or `frustum draw`'s
 // picture (hidden lines, painter against z-buffer) as SVG — and `solve --format html|latex`

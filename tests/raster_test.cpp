@@ -114,7 +114,7 @@ TEST(Rasterizer, ExactSnappingDecidesByTheExactValue) {
 // product of radicals that is rational ((√2 + 1)(√2 − 1) = 1), as a nested radical
 // (√(5 + 2√6) − √2 − √3 = 0), as a trigonometric value (2·sin(π/12)·cos(π/12) − ½ = 0,
 // sin²(π/8) + cos²(π/8) − 1 = 0) and with an irrational offset (10⁻³⁰·√2 instead of 10⁻³⁰).
-// An irrational exact half snapped toward zero on the negative side (issue 42).
+// An irrational exact half on the negative side goes away from zero too, not toward it.
 TEST(Rasterizer, ExactSnappingRoundsHalvesAwayFromZeroInEveryForm) {
   const Exact r2 = GiNaC::sqrt(Exact(2)), r3 = GiNaC::sqrt(Exact(3));
   const Exact pi = GiNaC::Pi;

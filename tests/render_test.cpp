@@ -696,7 +696,7 @@ TEST(RenderKind, AReusedRenderTargetGivesTheFramesOfFreshOnes) {
   EXPECT_EQ(dark_pixels(), 0);
 }
 
-// ---------------------------------------------------------------- exact decisions (issue 14)
+// ---------------------------------------------------------------- exact decisions
 
 // What the float pipeline (geometry() and trace_pixel() on doubles, no exact fallback) shows
 // at a pixel of the API's window: the winning object's name.

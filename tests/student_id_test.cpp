@@ -1,4 +1,4 @@
-// What every output shows of text from outside (issue 40): student ids read where they are
+// What every output shows of text from outside: student ids read where they are
 // written and refused when no student can have them, file names shown escaped but still graded,
 // and ids that are one student up to case, spaces and Unicode form flagged as one. Exports that
 // keep every question whatever its id: tests/export_names_test.cpp.

@@ -205,7 +205,7 @@ inline std::vector<StudentText> student_texts() {
   return out;
 }
 
-// Problems in the students' languages (issue 16): what the instructor wrote for students in the
+// Problems in the students' languages: what the instructor wrote for students in the
 // seed, example and hard sets — titles, problem texts with their placeholders filled, statements
 // and reasons quoted in steps — as a student reading each language sees it.
 struct InstructorText {

@@ -1,5 +1,5 @@
-// A drawn variant never shows a text whose literal values contradict its given (issue 16
-// item 8): literals of the given's values become placeholders, or the set is refused.
+// A drawn variant never shows a text whose literal values contradict its given: literals of the
+// given's values become placeholders, or the set is refused.
 #include "solver/problem/text_literals.hpp"
 
 #include <gtest/gtest.h>

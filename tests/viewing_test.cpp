@@ -877,7 +877,7 @@ TEST(ViewingAngles, RadiansGiveTheSameMatricesAsDegrees) {
   EXPECT_NE(exact_text(small, "matrix"), exact_text(deg, "matrix"));
 }
 
-// ---- Every kind that prints a matrix or a volume, in each convention (issue 14) ----
+// ---- Every kind that prints a matrix or a volume, in each convention ----
 
 // transform: column form (translation in the last column, P′ = M·P) for OpenGL and Processing;
 // DirectX prints the transpose (translation in the bottom row, P′ = P·M), the inverse too, in

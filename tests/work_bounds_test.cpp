@@ -197,7 +197,7 @@ fs::path write_file(const fs::path& dir, const std::string& name, const std::str
 
 TEST(CsvLimits, AWideRosterIsReadInOnePassAndARepeatedColumnNamesTheFirst) {
   const fs::path dir = test::scratch_dir("bounds_roster");
-  // 9 999 answer columns (a header of 100 000 once took minutes to check for repeats).
+  // 9 999 answer columns (checked for repeats by lookup: every pair would be quadratic).
   std::string header = "student", row = "s1";
   for (std::size_t i = 0; i + 1 < kMaxCsvColumns; ++i) {
     header += ",p" + std::to_string(i % 100) + ".a" + std::to_string(i);
@@ -449,8 +449,8 @@ TEST(FrameWork, RenderRefusesAFrameOverItsBoundOnEveryPathAndDrawsOneAtIt) {
   EXPECT_EQ(scanline.status, 1);
   EXPECT_TRUE(has(scanline.output, "(the limit is 1073741824 pixel tests a frame"))
       << scanline.output;
-  // Ten million of them at 4096² (each triangle within its limits, once about 44 hours) stop
-  // at the bound.
+  // Ten million of them at 4096² (each triangle within its limits, about 44 hours of filling
+  // without the bound) stop at the bound.
   const std::string huge =
       write_file(dir, "huge.yaml", layers_scene(4096, 0, "zbuffer", {99, 99, 999})).string();
   const CliRun h = frustum_cli({"render", huge, "-o", png});

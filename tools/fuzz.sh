@@ -5,12 +5,11 @@
 # (-timeout=10 s of wall time per input; FUZZ_TIMEOUT=N changes it) is saved in
 # build-fuzz/artifacts/ and makes the script fail; the script prints the input's first bytes
 # and how long it takes alone, so a red CI log is enough to reproduce it.
-# Why 10 s: exact work on one value has a budget of about 0.2 s in the normal build
-# (WorkBudget), and the sanitizers and coverage make that code up to 20 times slower. The
-# slowest input in fuzz/corpus/ takes 1.8 s alone here (2 vCPUs), and a CI machine has run
-# the fuzz targets at half this machine's speed. With 5 s, CI failed on 2026-12-02 on an input
-# that took 4.5-6 s here (0.8 s in the normal build; 1.3 s and 0.1 s since the work budget
-# prices it better, docs/reliability.md).
+# Why 10 s: exact work on one value has a budget of a fraction of a second in the normal build
+# (WorkBudget, docs/reliability.md), the sanitizers and coverage make that code many times
+# slower, and a CI machine may run the fuzz targets at half a development machine's speed: 10 s
+# leaves the slowest inputs of fuzz/corpus/ room on such a machine (docs/performance-notes.md
+# has the figures).
 # FUZZ_SEED=N fixes libFuzzer's random seed: CI uses one, so a CI run replays (a prefix of) the
 # same inputs as a local run with that seed, and a red CI is a regression, not a lucky draw.
 # Without it every run explores afresh (what longer local runs are for).

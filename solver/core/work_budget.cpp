@@ -40,8 +40,8 @@ using ExMap = std::unordered_map<ex, T, std::hash<ex>, GiNaC::ex_is_equal>;
 
 // Sizes of subexpressions, each computed once: GiNaC shares equal subexpressions, and a
 // value nested a few levels deep (roots of sums of roots) walked as a tree is exponentially
-// larger than the shared graph that holds it (0.4 s for one 200-term value, found while
-// bounding canonical()).
+// larger than the shared graph that holds it (a 200-term value found while bounding canonical()
+// takes a noticeable fraction of a second to walk as a tree).
 class SizeOf {
  public:
   ExactSize operator()(const ex& e) {

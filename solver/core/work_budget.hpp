@@ -12,10 +12,9 @@
 namespace frustum {
 
 // Work units (one node of one term meeting a term of another factor, see product_cost) that
-// one answer or one given may spend. Measured on the development machine, GiNaC does about
-// 1.5 million of them a second on sums of radicals, so this bounds one value's
-// simplification to about 0.2 s, while the largest value a seed set needs costs far less
-// (docs/reliability.md).
+// one answer or one given may spend: GiNaC does this many in a fraction of a second on sums of
+// radicals, so this bounds one value's simplification to that, while the largest value a seed
+// set needs costs far less (docs/reliability.md has both figures).
 inline constexpr double kExactWorkDefault = 300'000;
 
 class WorkBudget {
@@ -59,8 +58,8 @@ double product_cost(const GiNaC::ex& a, const GiNaC::ex& b);
 // with A far faster than expand()'s (a 200-term value with 1 000-digit numbers and five
 // fourth roots ran for minutes). It brings every fraction over a common denominator, D the
 // product of the terms of e's distinct sum denominators: nested fractions over sums with π and
-// ten roots (a fuzzer's find) took 60–100 ms at N·W²·(1 + A) ≈ 5 000, 17 times this price
-// without √D; √D matches three such shapes measured (1, 5 and 6 such denominators) within 2×.
+// ten roots (a fuzzer's find) cost many times what N·W²·(1 + A) alone prices them at; √D
+// matches three such shapes measured (1, 5 and 6 such denominators) within 2×.
 double normal_cost(const GiNaC::ex& e);
 
 // Nodes of e written out as a tree, each shared subexpression counted wherever it occurs

@@ -47,8 +47,9 @@ json value_json(const Value& v) {
     case Value::Shape::Word:
       return v.word;
     case Value::Shape::WordMap: {
-      // Appended, not looked up: ordered_json finds a key by a linear search (20 k edges took
-      // seconds). A repeated key keeps its first place and its last word, as m[k] = w did.
+      // Appended, not looked up: ordered_json finds a key by a linear search, so inserting
+      // through it is quadratic in the map. A repeated key keeps its first place and its last
+      // word, as m[k] = w did.
       json m = json::object();
       auto& object = m.get_ref<json::object_t&>();
       std::unordered_map<std::string_view, std::size_t> place;

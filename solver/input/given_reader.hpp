@@ -19,17 +19,18 @@ namespace frustum {
 // Distinct irrational values (√2, π, 2^(1/3), cos(1), a nested root) one problem's given may
 // use. Exact solving works in the field they generate: k square roots make values of up to 2^k
 // terms and products of 4^k term pairs, and the kinds multiply givens together (a norm of a
-// cross product is of degree 4 in them). With 4, the worst problem measured solves in under
-// a second; with 5 it took 1.2 s and with 6 roots per number minutes. Exercises use one or two.
+// cross product is of degree 4 in them), so each further atom multiplies the time: with 4 the
+// worst problem measured solves in under a second, with 6 it takes minutes. Exercises use one or
+// two.
 inline constexpr std::size_t kMaxGivenAtoms = 4;
 
 // Lists in a given, checked before their items are read. Any list: far above any exercise.
 inline constexpr std::size_t kMaxGivenListItems = 100'000;
 // Transform steps: each is an exact 4×4 product, and rotations by angles without exact cosines
-// grow with every step (measured: 24 steps of 7° take 0.3 s, 300 steps over a minute).
+// grow with every step (a few dozen steps take a fraction of a second, hundreds over a minute).
 inline constexpr std::size_t kMaxTransformSteps = 32;
-// Depth-sort polygons: every pair is compared exactly (measured: 64 take 0.5 s, 128 take 2 s,
-// 2 000 would take minutes).
+// Depth-sort polygons: every pair is compared exactly, so the time grows with the square of
+// their number (a hundred take about a second, 2 000 would take minutes).
 inline constexpr std::size_t kMaxDepthSortPolygons = 100;
 
 SourceLocation location_of(const YAML::Node& node, const std::string& file);

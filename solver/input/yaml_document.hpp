@@ -14,13 +14,13 @@ namespace frustum {
 inline constexpr std::size_t kMaxYamlFileBytes = 16 * 1024 * 1024;
 // Nodes of the document with every alias expanded: a few lines of anchors and aliases can
 // stand for billions of nodes ("billion laughs"), which no reader should walk. Counted while
-// parsing, before yaml-cpp builds a node: each built node costs yaml-cpp about 1 KB, so a
-// 16 MiB file of "- 1" lines (4 M nodes) once took 4.3 GB before any check ran. A million
+// parsing, before yaml-cpp builds a node: each node it builds takes far more memory than its
+// text, so a file within kMaxYamlFileBytes could take gigabytes before any check ran. A million
 // is 40 times the largest set we ship (a 1 000-problem set is about 25 000 values).
 inline constexpr std::size_t kMaxYamlNodes = 1'000'000;
 // An answers file holds a student's answers, not a set: 20 problems of 5 answers, each a list
-// of 16 numbers at most, are under 2 000 values. A file of 500 000 values once cost each
-// grading child 307 MB; at this limit a child stays under 60 MB.
+// of 16 numbers at most, are under 2 000 values. A file of hundreds of thousands of values
+// would cost each grading child hundreds of megabytes; this limit keeps a child small.
 inline constexpr std::size_t kMaxAnswerNodes = 50'000;
 
 struct YamlDocument {

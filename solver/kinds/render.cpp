@@ -1,4 +1,4 @@
-// render: the colour and depth of a few queried pixels of a scene (issue 4). Only what the
+// render: the colour and depth of a few queried pixels of a scene. Only what the
 // question needs is modelled: every triangle goes through the geometry stages (cheap), but
 // only triangles whose screen bounds hold a queried pixel centre are set up and tested, and
 // no frame is allocated. The derivation is a z-buffer trace per pixel: the triangles that
@@ -319,7 +319,7 @@ struct Render {
       for (const char* a : {"pixels", "color", "depth", "object"}) steps->yields(a);
     return out;
   }
-  // Default generator (issue 6): a 64 × 48 view from (0, 0, 10) of one to three flat coloured
+  // Default generator: a 64 × 48 view from (0, 0, 10) of one to three flat coloured
   // triangles at distinct depths (hard: all at one depth, so equal depths keep the earlier),
   // and three queried pixels.
   static YAML::Node generate(Rng& rng, const GenerateOptions& o) {

@@ -1,7 +1,7 @@
 // A problem's text may state its given's values literally ("the triangle A(0,0,6), B(3,0,9),
 // C(0,3,9)"); a drawn variant has other values, so before a problem is drawn those literals are
 // turned into the placeholders they state (A({A.0},{A.1},{A.2})), and each variant prints its
-// own values (issue 16 item 8). The author's brackets, spacing and separators are kept.
+// own values. The author's brackets, spacing and separators are kept.
 //
 // Recognised literals (numbers: integers, decimals, 1e-3, fractions 1/2, ½ and 4½, signs - − +):
 // - a run of two or more numbers separated by commas or ×, bracketed or not — (0,0,6), [1, 2],

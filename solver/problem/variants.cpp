@@ -402,7 +402,7 @@ std::vector<std::string> ClassVariants::exhausted() const {
 
 ProblemSet ClassVariants::draw(const std::string& student) {
   // A problem known to have run out makes every later draw fail alike: without allow_repeats
-  // the student is told at once (100 draws each made a class of 30 wait a minute for it).
+  // the student is told at once, not after kMaxDrawAttempts draws that cannot succeed.
   const bool known_out = std::find(exhausted_.begin(), exhausted_.end(), true) != exhausted_.end();
   std::vector<int> collisions(taken_.size(), 0);
   int draws = 0;

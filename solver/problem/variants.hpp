@@ -1,4 +1,4 @@
-// Per-student and seeded variants of a problem set (issue 6). A varied problem's `given` is
+// Per-student and seeded variants of a problem set. A varied problem's `given` is
 // drawn — from its `vary:` block, or from the kind's default generator — then read by the
 // kind's `parse` and solved like a hand-written one; draws that fail, are ill-conditioned (unless
 // `difficulty: hard`), are not nice (with `nice: true`) or repeat another variant are redrawn,

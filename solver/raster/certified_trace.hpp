@@ -1,4 +1,4 @@
-// The render kind's pixels with every discrete decision exact (issue 14): whether a triangle
+// The render kind's pixels with every discrete decision exact: whether a triangle
 // leaves the view volume or is clipped, which way it faces (culling), where each vertex snaps
 // on the 1/256-pixel grid (and with it coverage under the top-left rule, exact integers from
 // there on), and which fragment wins the depth test. Each decision is first taken on the

@@ -1,8 +1,8 @@
 // The allocator of image-sized buffers (a frame's colours and depths): a buffer of 2 MiB or
 // more is aligned to 2 MiB and marked for transparent huge pages (madvise MADV_HUGEPAGE, which
 // the kernel honours when transparent huge pages are set to `madvise` or `always`). A fresh
-// 1920 × 1080 frame is then 8 page faults instead of 4,000 — about a fifth of `frustum render`'s
-// time on a small scene; smaller buffers are allocated as usual.
+// 1920 × 1080 frame is then 8 page faults instead of 4,000, which on a small scene are a large
+// share of `frustum render`'s time; smaller buffers are allocated as usual.
 #pragma once
 
 #include <sys/mman.h>

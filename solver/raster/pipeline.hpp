@@ -1,4 +1,4 @@
-// The geometry half of the pipeline (issue 4, seed 004), each stage a plain function:
+// The geometry half of the pipeline (seed 004), each stage a plain function:
 // model → world (the object hierarchy) → view → clip (double precision), Sutherland–Hodgman
 // in homogeneous clip space (so w ≤ 0 never reaches the divide), the perspective divide, the
 // viewport, face orientation (culling) and flat shading. Its output, window triangles in

@@ -72,7 +72,7 @@ struct Camera {
 // A frame's total rasterization work: the sum over its window triangles of the rows of their
 // boxes and the pixels they can cover (frame_work.hpp), which bounds both the pixels a fill
 // tests and the rows a scan line walks. 2³⁰ is 64 layers of the largest frame (4096²), 512 of a
-// 1920 × 1080 one: each triangle within its limits, 10⁷ full-frame triangles at 4096² once asked
+// 1920 × 1080 one: each triangle within its limits, 10⁷ full-frame triangles at 4096² would ask
 // for about 44 hours; at 2³⁰ the fill of the worst frame takes about a second.
 inline constexpr std::int64_t kMaxFrameWork = std::int64_t{1} << 30;
 

@@ -43,8 +43,8 @@ bool fill_span_vectorised();
 
 // vzeroupper where the CPU has AVX (nothing elsewhere). GCC 12 can return from the AVX2 clone
 // of a vectorised loop (target_clones) with the upper halves of the vector registers still in
-// use, and every SSE instruction after it then runs slower: zlib compressing the frame to PNG
-// took 31 ms instead of 11 ms after a render. Vectorised loops call it before they return.
+// use, and every SSE instruction after it then runs slower (zlib compressing the frame to PNG
+// after a render among them). Vectorised loops call it before they return.
 void clear_upper_vector_state();
 
 }  // namespace frustum

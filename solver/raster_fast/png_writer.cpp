@@ -99,8 +99,8 @@ std::vector<unsigned char> compress_rows(const FrameRuns& runs, int bits, int th
   const int pieces = std::max(1, (runs.height + kRowsPerPiece - 1) / kRowsPerPiece);
   const int workers = std::max(1, std::min(threads, pieces));
   // Each piece compressed on its own into its own buffer. The workers take the pieces in turn as
-  // they finish one (a frame's rows are not alike: the paper plane's upper half took twice as
-  // long as its lower half), each with one deflate state (reset for each piece) and one row
+  // they finish one (a frame's rows are not alike: one part of a picture can take far longer to
+  // compress than another), each with one deflate state (reset for each piece) and one row
   // buffer.
   struct Piece {
     std::vector<unsigned char> out;

@@ -13,8 +13,9 @@
 // in the middle, as banded_fill.hpp does for a modelled scene, or a thread for the geometry
 // feeding one for the fill)? For a stream of small triangles each set-up triangle is ~300 bytes
 // made on one core and read on another, and the frame's rows move from core to core as bands
-// change hands: on a 2-vCPU VM (issue 18's), two threads that way were slower than one
-// (0.27–0.35 s against 0.21 s for a million small triangles; strips: 0.17–0.23 s).
+// change hands, which costs more than the second core gains: on two cores, two threads that way
+// are slower than one on a million small triangles, and strips faster
+// (docs/performance-notes.md has the figures).
 //
 // A pixel belongs to one strip and a strip's triangles are drawn in order, so the frame is the
 // same bit for bit as one thread's, and so are the counts.

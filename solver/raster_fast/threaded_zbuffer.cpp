@@ -29,8 +29,9 @@ void render_zbuffer(const Scene& scene, Frame& frame, GeometryStats* geometry_st
   frame.ties.assign(certifier ? static_cast<std::size_t>(scene.height) : 0, {});
   if (zbuffer_banded(scene, threads)) {
     // A modelled scene with threads to share: the geometry in parts side by side, then the
-    // frame filled band by band (on one thread this is no faster than the stream: a
-    // 1920 × 1080 frame stays in this machine's last-level cache).
+    // frame filled band by band (on one thread this is no faster than the stream: where a
+    // 1920 × 1080 frame fits in the last-level cache, one thread streaming over it is as fast
+    // as bands).
     render_in_bands(scene, frame, geometry_stats, stats, threads, team, certifier);
     return;
   }

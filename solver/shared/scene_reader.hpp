@@ -39,8 +39,8 @@ struct SceneSpec {
 
 // Limits that keep any input bounded.
 inline constexpr int kMaxViewport = 16384;
-// Width × height: the colour and depth buffers take 16 bytes a pixel, so 16384² took 4.2 GB;
-// 4096² (16.8 M pixels, 270 MB) is a poster, and any proportion within it is allowed.
+// Width × height: a render's memory grows with its pixels, so a 16384² frame would take
+// gigabytes; 4096² (16.8 M pixels) is a poster, and any proportion within it is allowed.
 inline constexpr long kMaxScenePixels = 4096L * 4096L;
 inline constexpr long kMaxSceneTriangles = 10'000'000;
 inline constexpr int kMaxSceneDepth = 32;

@@ -1,9 +1,9 @@
 // Threads kept for several rounds of work in parts. side_by_side starts a thread for each part of
-// each round and ends it after: about a tenth of a millisecond on the calling thread each time on
-// this kind of VM, paid again by a caller that runs several short rounds in a row (a render: its
-// geometry, its fill, then the PNG's colour scan and compression, four rounds of 1–2 ms). A team
-// starts its helpers once, when it is made (a render makes it before it reads its scene, so that
-// the start overlaps the reading), and each round only wakes them.
+// each round and ends it after, at a cost to the calling thread that is a noticeable share of a
+// short round, paid again by a caller that runs several short rounds in a row (a render: its
+// geometry, its fill, then the PNG's colour scan and compression, four rounds of a few
+// milliseconds). A team starts its helpers once, when it is made (a render makes it before it
+// reads its scene, so that the start overlaps the reading), and each round only wakes them.
 // A team belongs to the one caller that made it and ends with it: no state outlives it.
 #pragma once
 

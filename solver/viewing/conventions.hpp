@@ -53,8 +53,8 @@ std::string_view to_string(AngleUnit unit);
 std::optional<Api> parse_api(std::string_view text);
 std::optional<AngleUnit> parse_angle_unit(std::string_view text);
 
-// Which conventions can change a kind's answers (issue 16: a derivation states a convention only
-// where it matters; a 2D clipping problem has no eye space to describe).
+// Which conventions can change a kind's answers (a derivation states a convention only where it
+// matters; a 2D clipping problem has no eye space to describe).
 struct ConventionUse {
   bool api = true;  // handedness, viewing direction, NDC range, row/column vectors, window origin
   bool angles = true;  // degrees or radians

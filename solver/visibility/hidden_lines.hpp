@@ -23,7 +23,8 @@ namespace frustum {
 
 inline constexpr double kMinSpan = 1e-9;
 // Edge–triangle pairs tested in one picture: every edge that is not back–back against every face
-// triangle is quadratic in the mesh (6 000 faces once took 26 s, and a mesh may have 100 000).
+// triangle is quadratic in the mesh (a few thousand faces would take tens of seconds, and a mesh
+// may have 100 000).
 inline constexpr std::int64_t kMaxHiddenLinePairs = 2'000'000;
 
 using Interval = std::pair<double, double>;  // [t0, t1] ⊂ [0, 1]

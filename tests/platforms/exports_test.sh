@@ -227,9 +227,10 @@ ok = ok and "<table>" in r.get("frustum_html", "") and "Expected" not in r["frus
 sys.exit(0 if ok else 1)
 PY
 
-# Hostile text in a string answer: an alias bomb is refused before it is expanded (it once
-# became a 554 MB answers file), an oversized submission is not gradable, and the grader's
-# temporary folder is removed whatever happens (TMPDIR is checked empty after each run).
+# Hostile text in a string answer: an alias bomb is refused before it is expanded (expanded, it
+# would make an answers file of hundreds of megabytes), an oversized submission is not
+# gradable, and the grader's temporary folder is removed whatever happens (TMPDIR is checked
+# empty after each run).
 cat > "$work/hostile.py" <<'PY'
 import json, os, subprocess, sys
 root, frustum, grader, set_file, case = sys.argv[1:6]

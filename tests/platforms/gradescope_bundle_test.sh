@@ -8,8 +8,9 @@
 # Without --full (CI, ctest): setup.sh configures the bundled sources as it always does, every
 # source file of the `frustum` target is preprocessed from the bundle alone (each #include found
 # in it or in the installed packages), and setup.sh is given FRUSTUM_BINARY, built from these
-# same sources, in place of a second compile (27 min here under load). With --full, setup.sh compiles frustum
-# itself from the bundle, as Gradescope does (run it after a change to the bundle's layout).
+# same sources, in place of a second compile (tens of minutes on a loaded machine). With
+# --full, setup.sh compiles frustum itself from the bundle, as Gradescope does (run it after a
+# change to the bundle's layout).
 set -euo pipefail
 src=$(cd "$1" && pwd)
 frustum=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")

@@ -41,7 +41,7 @@ check "figures for the five kinds that have one, per student" test "$(grep -c 'b
 check "the variant's values fill the text" grep -Eq 'Find z at pixel [[(][0-9]' "$work/class/hw-exams.tex"
 check "the key gives every student's answers" test "$(grep -c 'texttt{z} (' "$work/class/hw-key.tex")" = 3
 check "the generated sets are still written for grading" test -f "$work/class/hw-s1.yaml" -a -f "$work/class/answers/hw-s1.yaml"
-# Issue 47: grids on the picture's coordinates, givens as mathematics, problems kept whole.
+# Grids on the picture's coordinates, givens as mathematics, problems kept whole.
 check "every grid steps one unit of the picture (step=1), not TikZ's 1 cm" \
   test "$(grep -c ' grid (' "$work/class/hw-exams.tex")" = "$(grep -c 'step=1\]' "$work/class/hw-exams.tex")"
 check "no raw YAML or bare xmin in the sheets (givens are typeset)" \
