@@ -1,4 +1,4 @@
-// Derivations and feedback in Japanese and Russian (issue 16): no English word reaches a
+// Derivations and feedback in Japanese and Russian: no English word reaches a
 // student reading them in another language, only formulas and names. The corpus is every
 // student-facing text of every bundled set, of generated variants of every kind in every API
 // convention, and of the grader's feedback (student_text.hpp).
@@ -244,7 +244,7 @@ TEST(Language, SourceIsCitedUnderTheTitle) {
   EXPECT_EQ(render_json(solved)["source"], set.source);
 }
 
-// Course conventions and boolean keys in the student's language (issue 16).
+// Course conventions and boolean keys in the student's language.
 
 // The conventions line of a course that declares every course convention reads in Japanese and
 // Russian under every API, whatever the kind states (with or without the angle unit).
@@ -299,7 +299,7 @@ TEST(Language, BooleanKeyIsPrintedInTheStudentsLanguageAndAcceptedBack) {
   }
 }
 
-// Problems in the students' languages (issue 16): the seed, example and hard sets give every text
+// Problems in the students' languages: the seed, example and hard sets give every text
 // a student reads — titles, problem texts, statements and reasons — in Japanese and Russian, so
 // no English reaches a student reading them in another language (the same check as the steps').
 TEST(Language, NoEnglishProblemTextReachesAJapaneseOrRussianStudent) {
