@@ -48,7 +48,9 @@ TEST(ProcessingDefaults, ASketchOf640By360WorkedByHand) {
 TEST(ProcessingDefaults, MatricesAreLookAtsAndProjectionMatrixsDefaults) {
   const std::vector<std::pair<int, int>> sizes = {{100, 100}, {640, 360},  {640, 480},
                                                   {800, 600}, {1280, 720}, {37, 91}};
-  for (const char* api : {"opengl", "processing", "directx"})
+  // A left-handed course under OpenGL's or Processing's matrices too (DirectX is left-handed).
+  for (const char* api : {"opengl", "processing", "directx", "opengl, handedness: left",
+                          "processing, handedness: left"})
     for (const char* angles : {"degrees", "radians"})
       for (const auto& [w, h] : sizes) {
         const std::string conventions = fmt::format("{{api: {}, angles: {}}}", api, angles);
