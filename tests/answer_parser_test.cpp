@@ -1,13 +1,14 @@
 // The symbols a student may write before `=` for each answer (AnswerSpec::symbols, the ones
 // the derivations use: "D_f = 27", "s = −415.7"), as docs/grading.md §1 lists them: the table
 // is generated here from the kinds, so the document cannot drift; and each symbol is read.
+#include "grader/answer_parser.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 #include <string>
 
-#include "grader/answer_parser.hpp"
 #include "solver/problem/registry.hpp"
 #include "test_util.hpp"
 

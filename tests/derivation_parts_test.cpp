@@ -2,11 +2,12 @@
 // rationals) against its plain reading (canonical() of every quotient), over many planes: the
 // plane method's (a unit normal and d = n̂·A from integer triangles), rational ones, planes with
 // zero coefficients and planes mixing roots, where the fast path must step aside.
+#include "solver/shared/derivation_parts.hpp"
+
 #include <gtest/gtest.h>
 
 #include "solver/geometry/plane_depth.hpp"
 #include "solver/problem/rng.hpp"
-#include "solver/shared/derivation_parts.hpp"
 #include "solver/util/exact_format.hpp"
 #include "test_util.hpp"
 

@@ -56,11 +56,7 @@ std::vector<std::string> choices(const AnswerSpec&) { return {"true", "false"}; 
 std::string chosen(const Value& key) { return key.flag ? "true" : "false"; }
 
 QuizAsk quiz_ask(const AnswerSpec& spec, const Value& key, const Conventions&) {
-  QuizAsk a;
-  a.field = QuizAsk::Field::Choice;
-  a.words = choices(spec);
-  a.right = chosen(key);
-  return a;
+  return chosen_among(choices(spec), chosen(key));
 }
 
 }  // namespace

@@ -30,13 +30,6 @@ constexpr Phrase kZeroVectorNoDirection{"a zero vector has no direction",
 constexpr Phrase kScaledToLength1{"scaled to length 1", "長さ 1 に正規化して",
                                   "нормированный к длине 1"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, ParsedAnswer& p) {
-  const Numbers n = read_numbers(node, in.budget);
-  if (!n.error.empty()) return n.error;
-  p.value = Value::vector(n.values);
-  return {};
-}
-
 Comparison compare_with_key(const Value& expected, const Value& got, const AnswerRules& r) {
   if (got.numbers.size() != expected.numbers.size())
     return incorrect(say(kExpectedComponentsGot, expected.numbers.size(), got.numbers.size()));
@@ -76,7 +69,7 @@ AnswerType direction_answer_type() {
   t.kind = AnswerKind::Direction;
   t.syntax = {{"normal", R"md(a vector; right up to a positive factor)md",
                R"md(`[1, 1, -1]` or `[9, 9, -9]` or `"9(1, 1, -1)"`)md"}};
-  t.read = read_answer;
+  t.read = read_vector;
   t.compare = compare_with_key;
   t.quiz = quiz_ask;
   t.typed_hint = &kVectorSuchAs;

@@ -17,24 +17,12 @@ constexpr Phrase kRowsSuchAs{
     "[[1, 0, 2], [0, 1, 3]] のような行の並び: 行ごとの行列, または 1 行に 1 点",
     "строки, например [[1, 0, 2], [0, 1, 3]]: матрица по строкам или по точке в строке"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec& spec, AnswerReading& in,
-                 ParsedAnswer& p) {
-  const Rows rows = read_rows(node, false, in.budget, spec.infinity);
-  if (!rows.error.empty()) return rows.error;
-  p.value = Value::matrix(rows.values);
-  return {};
-}
-
 Comparison compare_with_key(const Value& expected, const Value& got, const AnswerRules& r) {
   return compare_components(expected, got, r, {nullptr, true, false});
 }
 
 bool holds_infinity(const AnswerSpec& spec) { return spec.infinity != 0; }
 bool holds_points(const AnswerSpec& spec) { return spec.infinity == 0; }
-
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
-  return numbers_asked(key);
-}
 
 }  // namespace
 
@@ -48,9 +36,9 @@ AnswerType matrix_answer_type() {
       {"point list",
        R"md(a list of rows in order (each a list, or one string such as `"(0, 4), (8, 8)"`): points; [r, g, b, depth] per queried pixel (render). The `points` of transform and look_at also take one point as a flat list or a column (`[6, 8]`, `[[6], [8]]`) and points in homogeneous coordinates, read as (x/w, y/w, z/w) (`[[1, 3, 3, 1]]`; w = 0 is a direction, not a point))md",
        R"md(`points: [[3, 4], [2, 5/2]]`)md", holds_points}};
-  t.read = read_answer;
+  t.read = read_matrix;
   t.compare = compare_with_key;
-  t.quiz = quiz_ask;
+  t.quiz = ask_numbers;
   t.typed_hint = &kRowsSuchAs;
   return t;
 }

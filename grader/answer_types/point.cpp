@@ -20,13 +20,6 @@ constexpr Phrase kSameHomogeneousPoint{
 constexpr Phrase kScaledSoThatW{"scaled so that w = {0}", "w = {0} となるように定数倍して",
                                 "умноженный на число так, чтобы w = {0}"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, ParsedAnswer& p) {
-  const Numbers n = read_numbers(node, in.budget);
-  if (!n.error.empty()) return n.error;
-  p.value = Value::vector(n.values);
-  return {};
-}
-
 std::optional<Comparison> up_to_w(const Value& expected, const Value& got, const ComponentJudge&,
                                   const AnswerRules& r) {
   if (multiple_of(expected, got, r) == Multiple::Positive)
@@ -53,7 +46,7 @@ AnswerType point_answer_type() {
   t.kind = AnswerKind::Point;
   t.syntax = {{"homogeneous point", R"md(a vector [x, y, z, w]; right up to the scale of w)md",
                R"md(`[0, 0, -10, 10]`)md"}};
-  t.read = read_answer;
+  t.read = read_vector;
   t.compare = compare_with_key;
   t.quiz = quiz_ask;
   t.typed_hint = &kVectorSuchAs;

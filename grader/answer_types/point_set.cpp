@@ -24,13 +24,6 @@ constexpr Phrase kPointSetAnyOrder{"a set of points is right in any order",
                                    "点の集合はどの順でも正しい",
                                    "множество точек верно в любом порядке"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, ParsedAnswer& p) {
-  const Rows rows = read_rows(node, true, in.budget);
-  if (!rows.error.empty()) return rows.error;
-  p.value = Value::matrix(rows.values);
-  return {};
-}
-
 // The same rows in any order: each expected row matched by a distinct given row.
 Comparison compare_with_key(const Value& expected, const Value& got, const AnswerRules& r) {
   const auto e = rows_of(expected), g = rows_of(got);
@@ -69,7 +62,7 @@ AnswerType point_set_answer_type() {
       {"pixel set",
        R"md(the covered pixels [i, j] in any order, as a list of rows or one string; `none` when no pixel is covered)md",
        R"md(`pixels: [[1, 1], [1, 2]]`, `pixels: "(1, 2), (1, 1)"`)md"}};
-  t.read = read_answer;
+  t.read = read_vertices;
   t.compare = compare_with_key;
   t.quiz = quiz_ask;
   t.typed_hint = &kPointsInOrder;

@@ -26,13 +26,6 @@ constexpr Phrase kPolygonAnyStart{"a polygon is right from any starting vertex",
                                   "多角形はどの頂点から始めても正しい",
                                   "многоугольник верен при любой начальной вершине"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, ParsedAnswer& p) {
-  const Rows rows = read_rows(node, true, in.budget);
-  if (!rows.error.empty()) return rows.error;
-  p.value = Value::matrix(rows.values);
-  return {};
-}
-
 // The same vertex cycle, starting anywhere (orientation must match).
 Comparison compare_with_key(const Value& expected, const Value& got, const AnswerRules& r) {
   const auto e = rows_of(expected), g = rows_of(got);
@@ -68,7 +61,7 @@ AnswerType polygon_answer_type() {
       {"polygon",
        R"md(a list of vertices; right from any starting vertex, in the same cyclic order)md",
        R"md(`[[9/2, 1], [4, 2], [5, 9/2], [5, 1]]`)md"}};
-  t.read = read_answer;
+  t.read = read_vertices;
   t.compare = compare_with_key;
   t.quiz = quiz_ask;
   t.typed_hint = &kPointsInOrder;

@@ -23,10 +23,6 @@ Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, P
   return {};
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
-  return numbers_asked(key);
-}
-
 }  // namespace
 
 AnswerType scalar_answer_type() {
@@ -36,7 +32,7 @@ AnswerType scalar_answer_type() {
                R"md(`z: 8`, `cos: "1/sqrt(3)"`, `distance: 6/7`)md"}};
   t.read = read_answer;
   t.compare = compare_number;
-  t.quiz = quiz_ask;
+  t.quiz = ask_numbers;
   t.typed_hint = &kNumberSuchAs;
   return t;
 }

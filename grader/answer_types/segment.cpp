@@ -19,13 +19,6 @@ constexpr Phrase kSegmentEitherDirection{"a segment is right in either direction
                                          "線分はどちらの向きでも正しい",
                                          "отрезок верен в обоих направлениях"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, ParsedAnswer& p) {
-  const Rows rows = read_rows(node, true, in.budget);
-  if (!rows.error.empty()) return rows.error;
-  p.value = Value::matrix(rows.values);
-  return {};
-}
-
 std::optional<Comparison> reversed(const Value& expected, const Value& got,
                                    const ComponentJudge& judge, const AnswerRules&) {
   const auto g = rows_of(got);
@@ -52,7 +45,7 @@ AnswerType segment_answer_type() {
   t.syntax = {{"segment",
                R"md(its two ends, in either order, as a list of two points or one string)md",
                R"md(`clipped: [[3, 4], [2, 5/2]]`, `clipped: "(2, 5/2), (3, 4)"`)md"}};
-  t.read = read_answer;
+  t.read = read_vertices;
   t.compare = compare_with_key;
   t.quiz = quiz_ask;
   t.typed_hint = &kPointsInOrder;

@@ -26,13 +26,6 @@ constexpr Phrase kListInOrder{"a list in order, such as [2, 0, 1]",
                               "[2, 0, 1] のように順に並べたリスト",
                               "список по порядку, например [2, 0, 1]"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec& spec, AnswerReading&, ParsedAnswer& p) {
-  std::vector<std::string> words;
-  if (Said error = read_word_list(node, spec.unordered_pairs, words); !error.empty()) return error;
-  p.value = Value::word_list(words);
-  return {};
-}
-
 Comparison compare_with_key(const Value& expected, const Value& got, const AnswerRules& r) {
   const std::vector<std::string> items = items_read(got, expected, r);
   if (auto c = unreadable_list(items, expected, r)) return *c;
@@ -58,7 +51,7 @@ AnswerType sequence_answer_type() {
       {"sequence",
        R"md(a list, in order, or one string of items separated by arrows (`→`, `->`, `⇒`), commas, semicolons, slashes or spaces (a separator that the items themselves hold, like the `/` inside a z-buffer step, separates nothing): polygons back to front; z-buffer rows top first, one character per pixel (`.` background))md",
        R"md(`order: ["1", "0"]`, `order: "1 → 0"`, `frame: ["..11", "22.."]`, `frame: "..11/22.."`)md"}};
-  t.read = read_answer;
+  t.read = read_words;
   t.compare = compare_with_key;
   t.quiz = quiz_ask;
   t.typed_hint = &kListInOrder;

@@ -29,12 +29,6 @@ constexpr Phrase kMatrixRowByRow{"a matrix row by row, such as [[1, 0], [0, 1]]"
                                  "[[1, 0], [0, 1]] のように行ごとに書いた行列",
                                  "матрица по строкам, например [[1, 0], [0, 1]]"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, ParsedAnswer& p) {
-  const Rows rows = read_rows(node, false, in.budget);
-  if (!rows.error.empty()) return rows.error;
-  p.value = Value::matrix(rows.values);
-  return {};
-}
 bool purely_linear(const Value& m) {
   if (m.shape != Value::Shape::Matrix || m.rows != m.cols || m.rows < 3) return false;
   const std::size_t n = static_cast<std::size_t>(m.rows);
@@ -78,10 +72,6 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return compare_components(expected, got, r, entries);
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
-  return numbers_asked(key);
-}
-
 }  // namespace
 
 AnswerType transform_answer_type() {
@@ -91,9 +81,9 @@ AnswerType transform_answer_type() {
       {"transform matrix",
        R"md(a list of rows, each a list or a string of numbers; for a purely linear transform (no translation, bottom row 0 0 0 1) its 3×3 (2×2 in 2D) linear part too, unless the set says `grading: {linear_matrix: false}`)md",
        R"md(`[[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]`)md"}};
-  t.read = read_answer;
+  t.read = read_matrix;
   t.compare = compare_with_key;
-  t.quiz = quiz_ask;
+  t.quiz = ask_numbers;
   t.typed_hint = &kMatrixRowByRow;
   t.block_magnitudes = true;
   t.transposed_is_convention = true;

@@ -20,13 +20,6 @@ constexpr Phrase kDirectionRightLengthIs{
     "направление верное, но длина {0} — у единичного вектора длина 1 (разделите на длину)"};
 constexpr Phrase kNotNormalised{"not normalised", "正規化していない", "не нормирован"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, ParsedAnswer& p) {
-  const Numbers n = read_numbers(node, in.budget);
-  if (!n.error.empty()) return n.error;
-  p.value = Value::vector(n.values);
-  return {};
-}
-
 // The right direction at another length is named (not normalised); the opposite one too.
 std::optional<Comparison> another_length(const Value& expected, const Value& got,
                                          const ComponentJudge&, const AnswerRules& r) {
@@ -45,10 +38,6 @@ Comparison compare_with_key(const Value& expected, const Value& got, const Answe
   return compare_components(expected, got, r, {another_length, false, false});
 }
 
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
-  return numbers_asked(key);
-}
-
 }  // namespace
 
 AnswerType unit_vector_answer_type() {
@@ -56,9 +45,9 @@ AnswerType unit_vector_answer_type() {
   t.kind = AnswerKind::UnitVector;
   t.syntax = {{"unit vector", R"md(a vector of length 1)md",
                R"md(`["sqrt(3)/3", "sqrt(3)/3", "-sqrt(3)/3"]`, `"1/sqrt(3)*(1, 1, -1)"`)md"}};
-  t.read = read_answer;
+  t.read = read_vector;
   t.compare = compare_with_key;
-  t.quiz = quiz_ask;
+  t.quiz = ask_numbers;
   t.typed_hint = &kVectorSuchAs;
   return t;
 }

@@ -12,19 +12,8 @@ using namespace comparing;
 using namespace reading;
 using namespace answer_shared;
 
-Said read_answer(const YAML::Node& node, const AnswerSpec&, AnswerReading& in, ParsedAnswer& p) {
-  const Numbers n = read_numbers(node, in.budget);
-  if (!n.error.empty()) return n.error;
-  p.value = Value::vector(n.values);
-  return {};
-}
-
 Comparison compare_with_key(const Value& expected, const Value& got, const AnswerRules& r) {
   return compare_components(expected, got, r, {nullptr, true, false});
-}
-
-QuizAsk quiz_ask(const AnswerSpec&, const Value& key, const Conventions&) {
-  return numbers_asked(key);
 }
 
 }  // namespace
@@ -36,9 +25,9 @@ AnswerType vector_answer_type() {
       {"vector",
        R"md(a list, or a string of comma-separated numbers with optional parentheses; also a number times such a tuple, as the lectures write a unit normal (a vector, normal, unit vector or homogeneous point alike))md",
        R"md(`[1, 1, -1]`, `"(1, 1, −1)"`, `"(1/√21)(−2, 1, 4)"`, `"(-2, 1, 4)/sqrt(21)"`)md"}};
-  t.read = read_answer;
+  t.read = read_vector;
   t.compare = compare_with_key;
-  t.quiz = quiz_ask;
+  t.quiz = ask_numbers;
   t.typed_hint = &kVectorSuchAs;
   t.homogeneous_copies = true;
   return t;

@@ -35,13 +35,6 @@ constexpr Phrase kExpectedItemsExtraAndCopies{
 constexpr Phrase kListSuchAs{"a list such as [1-3, 2-7]", "[1-3, 2-7] のようなリスト",
                              "список, например [1-3, 2-7]"};
 
-Said read_answer(const YAML::Node& node, const AnswerSpec& spec, AnswerReading&, ParsedAnswer& p) {
-  std::vector<std::string> words;
-  if (Said error = read_word_list(node, spec.unordered_pairs, words); !error.empty()) return error;
-  p.value = Value::word_list(words);
-  return {};
-}
-
 Comparison compare_with_key(const Value& expected, const Value& got, const AnswerRules& r) {
   const std::vector<std::string> items = items_read(got, expected, r);
   if (auto c = unreadable_list(items, expected, r)) return *c;
@@ -83,7 +76,7 @@ AnswerType word_list_answer_type() {
       {"word set",
        R"md(a list (any order) or one string of items separated by commas, semicolons, slashes or spaces; a pair (an edge, two polygons in conflict) either way round, with any dash or as `(i, j)` or `[i, j]`; partial credit per item: right items / max(expected, written), so an item written twice is right once and its second copy counts as an item that should not be there (`[1-2, 1-3, 2-3, 2-3]` earns 3/4))md",
        R"md(`hidden: [1-3, 2-7]`, `hidden: "3-1, 7-2"`, `conflicts: "(1, 0)"`)md"}};
-  t.read = read_answer;
+  t.read = read_words;
   t.compare = compare_with_key;
   t.quiz = quiz_ask;
   t.typed_hint = &kListSuchAs;
