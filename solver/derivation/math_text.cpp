@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/derivation/latex_unicode.hpp"
 #include "solver/derivation/line_breaks.hpp"
 #include "solver/derivation/vocabulary.hpp"
 #include "solver/util/exact_format.hpp"
@@ -26,6 +27,8 @@ MathText math(std::string_view both) { return {std::string(both), std::string(bo
 MathText math(std::string_view unicode, std::string_view latex) {
   return {std::string(unicode), std::string(latex)};
 }
+
+MathText tex(std::string_view latex) { return {unicode_of_latex(latex), std::string(latex)}; }
 
 std::string latex_text(std::string_view text) {
   std::string out;
@@ -164,11 +167,11 @@ MathText vec(const std::vector<Exact>& v, bool with_approx) {
   }
   // Too long to read as exact forms: the decimals, cut after six digits.
   if (with_approx && any_approx && length > 2 * kReadableExact) {
-    MathText m = math("(", "\\left(");
+    MathText m = tex("\\left(");
     for (std::size_t i = 0; i < v.size(); ++i)
       m += (i ? math(", ") : math("")) +
            (needs_approx(canonical(v[i])) ? cut(canonical(v[i])) : exact(v[i]));
-    return m + math(")", "\\right)");
+    return m + tex("\\right)");
   }
   // A long vector may break after its commas: \left( … \right) is one unbreakable box, so its
   // brackets are then \bigl( \bigr).
@@ -224,15 +227,15 @@ MathText linear_expression(const std::vector<std::pair<Exact, std::string>>& ter
     const bool negative = exact_sign(coef) < 0;
     const Exact mag = negative ? Exact(-coef) : coef;
     if (first) {
-      if (negative) m += math("−", "-");
+      if (negative) m += tex("-");
     } else {
-      m += negative ? math(" − ", " - ") : math(" + ");
+      m += negative ? tex(" - ") : math(" + ");
     }
     if (name.empty() || mag != 1) {
       const bool sum = GiNaC::is_a<GiNaC::add>(mag) && !name.empty();
-      if (sum) m += math("(", "\\left(");
+      if (sum) m += tex("\\left(");
       m += exact(mag);
-      if (sum) m += math(")", "\\right)");
+      if (sum) m += tex("\\right)");
       if (!name.empty() && !sum && !GiNaC::is_a<GiNaC::numeric>(mag)) m += math("·", " \\cdot ");
     }
     m += math(name);

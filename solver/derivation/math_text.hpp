@@ -28,6 +28,10 @@ MathText operator+(MathText a, const MathText& b);
 // Literal text, the same in both notations or given in each.
 MathText math(std::string_view both);
 MathText math(std::string_view unicode, std::string_view latex);
+// A formula written once, in LaTeX: its Unicode is read from it (latex_unicode.hpp), so the two
+// cannot drift apart. math(unicode, latex) stays for the pieces of a formula around a value
+// (an open \frac{, a closing brace) and where the two notations say different things.
+MathText tex(std::string_view latex);
 
 // Words inside mathematics ("yes", "front", "background"): Unicode as written, LaTeX as
 // \text{…} with LaTeX's special characters escaped; translated by the formatters.

@@ -131,7 +131,7 @@ MathText Value::shown() const {
     case Shape::WordMap: {
       std::vector<MathText> parts;
       for (const auto& [k, v] : entries)
-        parts.push_back(frustum::word(words::vocabulary_word(k)) + math(": ", "\\colon ") +
+        parts.push_back(frustum::word(words::vocabulary_word(k)) + tex("\\colon ") +
                         frustum::word(words::vocabulary_word(v)));
       return comma_joined(parts);
     }

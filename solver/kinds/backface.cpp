@@ -253,18 +253,16 @@ struct Backface {
     out.set("view", Value::vector(v));
     if (steps)
       steps
-          ->add(say(kViewVector),
-                math("v = p_eye − p₀", "\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0"),
-                math("v = ", "\\mathbf{v} = ") + vec(g.eye) + math(" − ", " - ") + vec(g.points[0]),
-                math("v = ", "\\mathbf{v} = ") + vec(v))
+          ->add(say(kViewVector), tex("\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0"),
+                tex("\\mathbf{v} = ") + vec(g.eye) + tex(" - ") + vec(g.points[0]),
+                tex("\\mathbf{v} = ") + vec(v))
           .yields("view");
     const Exact df = canonical(f.df);
     out.set("df", Value::scalar(df));
     if (steps) {
       steps
-          ->add(say(kDiscriminant), math("D_f = v·n", "D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
-                math("D_f = ") + vec(v) + math("·", "\\cdot") + vec(n),
-                math("D_f = ") + exact(df, true))
+          ->add(say(kDiscriminant), tex("D_f = \\mathbf{v}\\cdot\\mathbf{n}"),
+                math("D_f = ") + vec(v) + tex("\\cdot") + vec(n), math("D_f = ") + exact(df, true))
           .yields("df");
       std::vector<Eigen::Vector3d> pts;
       for (const Vec3<Exact>& q : g.points) pts.push_back(to_double(q));

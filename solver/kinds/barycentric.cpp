@@ -203,10 +203,8 @@ struct Barycentric {
     out.set("total", Value::scalar(t));
     if (steps)
       steps
-          ->add(say(kTwiceSignedArea),
-                math("E_AB(x_C, y_C) = E_BC + E_CA + E_AB",
-                     "E_{AB}(x_C, y_C) = E_{BC} + E_{CA} + E_{AB}"),
-                {}, exact(t))
+          ->add(say(kTwiceSignedArea), tex("E_{AB}(x_C, y_C) = E_{BC} + E_{CA} + E_{AB}"), {},
+                exact(t))
           .yields("total");
     if (t.is_zero()) refuse_flat();
     const Vec3<Exact> lambda = canonical_vec(lambda_of(e, t));

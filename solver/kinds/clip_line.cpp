@@ -208,7 +208,7 @@ struct ClipLine {
           .yields("accept");
       steps
           ->add(say(kTrivialReject),
-                outcode_of("p") + op_and + outcode_of("q") + math(" ≠ ", " \\ne ") + code(0),
+                outcode_of("p") + op_and + outcode_of("q") + tex(" \\ne ") + code(0),
                 code(r.code_p) + op_and + code(r.code_q) + math(" = ") + code(r.code_p & r.code_q),
                 word(r.trivial_reject ? kYesBothOutsideSameBoundary : words::kNo))
           .yields("reject");
@@ -240,9 +240,9 @@ struct ClipLine {
                              "},\\; " + who + "' = " + who + " + t\\,(" + other + " - " + who +
                              ")"),
                 math(who + " = ") + vec(a) + math(",  " + other + " = ", ",\\; " + other + " = ") +
-                    vec(b) + math(",  ", ",\\; ") + bound + math(" = ") + exact(bound_value) +
-                    math(",  t = ", ",\\; t = ") + exact(t, true),
-                math(who + "′ = ", who + "' = ") + vec(it.after, true) + math(",  ", ",\\; ") +
+                    vec(b) + tex(",\\; ") + bound + math(" = ") + exact(bound_value) +
+                    tex(",\\; t = ") + exact(t, true),
+                math(who + "′ = ", who + "' = ") + vec(it.after, true) + tex(",\\; ") +
                     outcode_of(who, true) + math(" = ") + code(it.code_after))
             .note = say(kFractionOfTheWay, who, other, x + " = " + bound_name);
         ends[static_cast<std::size_t>(it.endpoint)] = it.after;
@@ -255,8 +255,8 @@ struct ClipLine {
       if (steps)
         steps
             ->add(say(kClippedSegment), {}, {},
-                  math("p′ = ", "p' = ") + vec((*r.clipped)[0], true) +
-                      math(",  q′ = ", ",\\; q' = ") + vec((*r.clipped)[1], true))
+                  tex("p' = ") + vec((*r.clipped)[0], true) + tex(",\\; q' = ") +
+                      vec((*r.clipped)[1], true))
             .yields("clipped")
             .note =
             r.trivial_accept ? say(kTriviallyAccepted) : say(kBothCodesNow, outcode_string(0, N));

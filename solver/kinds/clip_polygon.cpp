@@ -105,8 +105,7 @@ struct ClipPolygon {
     const PolygonClipResult<V> r = clip_polygon_box(poly, box);
     if (steps) {
       steps
-          ->add(g.region.title(), {},
-                word(words::kPolygon) + math(": ", "\\colon ") + vertex_list(poly),
+          ->add(g.region.title(), {}, word(words::kPolygon) + tex("\\colon ") + vertex_list(poly),
                 clip_given::box_text(box))
           .note = say(kSutherlandHodgman);
       for (std::size_t k = 0; k < r.stages.size(); ++k)

@@ -233,11 +233,11 @@ struct DepthAtPixel {
 
   // (x − a, y − b, z − c) with zero offsets left out, as on paper: (x, y, z − 6).
   static MathText offset_point(const Vec3<Exact>& a) {
-    MathText m = math("(", "\\left(");
+    MathText m = tex("\\left(");
     const char* names[3] = {"x", "y", "z"};
     for (int i = 0; i < 3; ++i)
       m += (i ? math(", ") : MathText{}) + linear_expression({{1, names[i]}, {-a(i), ""}});
-    return m + math(")", "\\right)");
+    return m + tex("\\right)");
   }
 
   // z at the pixel on a plane [a, b, c, d] (nullopt when the plane is edge-on).
@@ -343,7 +343,7 @@ struct DepthAtPixel {
           ->add(say(kPlaneThroughA),
                 math("n̂·(p − A) = 0",
                      "\\hat{\\mathbf{n}}\\cdot(\\mathbf{p} - \\overrightarrow{OA}) = 0"),
-                vec(u) + math("·", "\\cdot") + offset_point(A) + math(" = 0"), pv.display)
+                vec(u) + tex("\\cdot") + offset_point(A) + math(" = 0"), pv.display)
           .yields("plane");
     const Exact& a = plane[0];
     const Exact& b = plane[1];

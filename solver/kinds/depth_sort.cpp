@@ -300,7 +300,7 @@ struct DepthSort {
     out.set("conflicts", Value::word_list(res.conflicts));
     if (!steps) return out;
 
-    const MathText sep = math(",  ", ",\\; ");
+    const MathText sep = tex(",\\; ");
     MathText lines;
     for (std::size_t k = 0; k < n; ++k)
       lines += (k ? sep : MathText{}) +
@@ -320,21 +320,19 @@ struct DepthSort {
     if (g.viewer.eye)
       steps
           ->add(say(kDepthFromEye),
-                math("depth = ‖g − p_eye‖",
-                     "\\text{depth} = \\lVert\\mathbf{g} - \\mathbf{p}_{\\text{eye}}\\rVert"),
-                math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(*g.viewer.eye), depths)
+                tex("\\text{depth} = \\lVert\\mathbf{g} - \\mathbf{p}_{\\text{eye}}\\rVert"),
+                tex("\\mathbf{p}_{\\text{eye}} = ") + vec(*g.viewer.eye), depths)
           .yields("depths")
           .note = say(kLargerDepthFarther);
     else
       steps
-          ->add(say(kDepthAlongView),
-                math("depth = g·v̂", "\\text{depth} = \\mathbf{g}\\cdot\\hat{\\mathbf{v}}"),
-                math("v = ", "\\mathbf{v} = ") + vec(*g.viewer.view_direction), depths)
+          ->add(say(kDepthAlongView), tex("\\text{depth} = \\mathbf{g}\\cdot\\hat{\\mathbf{v}}"),
+                tex("\\mathbf{v} = ") + vec(*g.viewer.view_direction), depths)
           .yields("depths")
           .note = say(kViewDirectionDepth);
     MathText seq;
     for (const std::string& k : order)
-      seq += (seq.empty() ? MathText{} : math(" → ", " \\to ")) + word(Said::verbatim(k));
+      seq += (seq.empty() ? MathText{} : tex(" \\to ")) + word(Said::verbatim(k));
     // Said only where two depths are equal: the tie rule decides nothing otherwise.
     bool tie = false;
     for (std::size_t a = 0; a < res.depths.size(); ++a)
@@ -345,7 +343,7 @@ struct DepthSort {
 
     MathText conflicts = word(res.conflicts.empty() ? kNoConflicts : kConflicts);
     for (std::size_t k = 0; k < res.conflicts.size(); ++k)
-      conflicts += (k ? sep : math(": ", "\\colon ")) + word(Said::verbatim(res.conflicts[k]));
+      conflicts += (k ? sep : tex("\\colon ")) + word(Said::verbatim(res.conflicts[k]));
     Step& s = steps->add(say(kCheckEachPair), {}, {}, conflicts).yields("conflicts");
     // Overlap is decided in the projection depth_sort chose: from the eye when there is one.
     s.note = say(g.viewer.eye ? kOverlapPerspective : kOverlapOrthographic) +

@@ -382,7 +382,7 @@ struct EdgeVisibility {
                                      "oriented polyhedron are needed to classify its edges");
     if (steps)
       steps
-          ->add(say(kClosedAndOriented), math("V − E + F", "V - E + F"), {},
+          ->add(say(kClosedAndOriented), tex("V - E + F"), {},
                 math(fmt::format("{} − {} + {} = {}", mesh.vertices.size(), check.edges.size(),
                                  mesh.faces.size(),
                                  static_cast<long>(mesh.vertices.size()) -
@@ -417,9 +417,8 @@ struct EdgeVisibility {
           steps
               ->add(
                   say(kFrontOrBackPerFace),
-                  math("D_f = (p_eye − p_i)·n",
-                       "D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
-                  math("p_eye = ", "\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
+                  tex("D_f = (\\mathbf{p}_{\\text{eye}} - \\mathbf{p}_i)\\cdot\\mathbf{n}"),
+                  tex("\\mathbf{p}_{\\text{eye}} = ") + vec(g.eye),
                   counts(
                       {{std::count_if(tests.begin(), tests.end(),
                                       [](const FaceTest& t) { return t.facing == Facing::Front; }),
@@ -454,12 +453,11 @@ struct EdgeVisibility {
       front_edges.insert(front_edges.end(), silhouette.begin(), silhouette.end());
       steps
           ->add(say(kEdgeClasses),
-                word(words::kFront) + math("–", "\\text{–}") + word(words::kFront) +
-                    math(": ", "\\colon ") + word(words::kVisible) + math(";  ", ";\\; ") +
-                    word(words::kFront) + math("–", "\\text{–}") + word(words::kBack) +
-                    math(": ", "\\colon ") + word(words::kSilhouette) + math(";  ", ";\\; ") +
-                    word(words::kBack) + math("–", "\\text{–}") + word(words::kBack) +
-                    math(": ", "\\colon ") + word(words::kHidden),
+                word(words::kFront) + tex("\\text{–}") + word(words::kFront) + tex("\\colon ") +
+                    word(words::kVisible) + tex(";\\; ") + word(words::kFront) + tex("\\text{–}") +
+                    word(words::kBack) + tex("\\colon ") + word(words::kSilhouette) + tex(";\\; ") +
+                    word(words::kBack) + tex("\\text{–}") + word(words::kBack) + tex("\\colon ") +
+                    word(words::kHidden),
                 {},
                 counts({{static_cast<long>(visible.size()), "visible"},
                         {static_cast<long>(silhouette.size()), "silhouette"},

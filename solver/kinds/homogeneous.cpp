@@ -178,7 +178,7 @@ struct Homogeneous {
         steps
             ->add(say(kHomogeneousCoordinates),
                   coordinates(dim, false, false) + math(" ≡ ", " \\equiv ") + scaled_names(dim) +
-                      math(", w ≠ 0", ",\\ w \\neq 0"),
+                      tex(",\\ w \\neq 0"),
                   substituted, vec(h))
             .yields("homogeneous");
       out.set("homogeneous", Value::vector(h));

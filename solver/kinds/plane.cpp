@@ -200,7 +200,7 @@ struct Plane {
                 math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
                 math("dist = |", "\\text{dist} = \\frac{\\lvert ") + exact(d) +
                     math("| / ", " \\rvert}{") + exact(len) + math("", "}"),
-                math("dist = ", "\\text{dist} = ") + exact(dist, true))
+                tex("\\text{dist} = ") + exact(dist, true))
           .yields("distance");
     return out;
   }

@@ -113,9 +113,9 @@ struct ProcessingDefaults {
                      "\\mathbf{e} = (\\tfrac{\\text{width}}{2}, \\tfrac{\\text{height}}{2}, "
                      "\\text{cameraZ}),\\; \\mathbf{c} = (\\tfrac{\\text{width}}{2}, "
                      "\\tfrac{\\text{height}}{2}, 0),\\; \\mathbf{up} = (0, 1, 0)"),
-                math("width = ", "\\text{width} = ") + exact(g.width) +
-                    math(",  height = ", ",\\; \\text{height} = ") + exact(g.height),
-                math("cameraZ = ", "\\text{cameraZ} = ") + exact(z, true) +
+                tex("\\text{width} = ") + exact(g.width) + tex(",\\; \\text{height} = ") +
+                    exact(g.height),
+                tex("\\text{cameraZ} = ") + exact(z, true) +
                     math(",  eye = ", ",\\; \\mathbf{e} = ") + vec(eye, true))
           .yields("camera_z")
           .yields("eye");
@@ -125,8 +125,8 @@ struct ProcessingDefaults {
     out.set("fovy", Value::scalar(g.angles == AngleUnit::Degrees ? Exact(60) : fovy));
     if (steps)
       steps
-          ->add(say(kDefaultFieldOfView), math("fovy = π/3", "\\text{fovy} = \\frac{\\pi}{3}"), {},
-                math("fovy = ", "\\text{fovy} = ") + angle_text(fovy, g.angles))
+          ->add(say(kDefaultFieldOfView), tex("\\text{fovy} = \\frac{\\pi}{3}"), {},
+                tex("\\text{fovy} = ") + angle_text(fovy, g.angles))
           .yields("fovy");
     const Exact near = canonical(z / 10), far = canonical(z * 10);
     out.set("near", Value::scalar(near));

@@ -430,7 +430,7 @@ struct ProjectPoint {
                    : math("v′ = (" + product + ")·v",
                           "\\mathbf{v}' = (" + product_latex + ")\\,\\mathbf{v}"),
               math(product + " = ", product_latex + " = ") + matrix_text(paper_form(pvm, g.api)),
-              math("v′ = ", "\\mathbf{v}' = ") + vec(clip, true))
+              tex("\\mathbf{v}' = ") + vec(clip, true))
         .note = say(kProductComputedOnce);
   }
 
@@ -464,7 +464,7 @@ struct ProjectPoint {
             g.camera ? say(kModelToWorld) : say(kModelToView),
             rows ? math("p_" + to + " = v·M", "\\mathbf{p}_{\\text{" + to + "}} = \\mathbf{v} M")
                  : math("p_" + to + " = M·v", "\\mathbf{p}_{\\text{" + to + "}} = M \\mathbf{v}"),
-            math("v = ", "\\mathbf{v} = ") + vec(g.point),
+            tex("\\mathbf{v} = ") + vec(g.point),
             math("p_" + to + " = ", "\\mathbf{p}_{\\text{" + to + "}} = ") + vec(p, true));
       }
     }
@@ -476,7 +476,7 @@ struct ProjectPoint {
         steps->add(say(kWorldToView),
                    math("p_view = V·p_world",
                         "\\mathbf{p}_{\\text{view}} = V \\mathbf{p}_{\\text{world}}"),
-                   {}, math("p_view = ", "\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
+                   {}, tex("\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
     }
     // The lecture's names: P projects, V views, M places (v′ = (P·V·M)·v).
     const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps, "P");
@@ -538,7 +538,7 @@ struct ProjectPoint {
         steps
             ->add(say(kPerspectiveDivide),
                   math("ndc = (x_c, y_c, z_c) / w_c", "\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"),
-                  {}, math("ndc = ", "\\text{ndc} = ") + vec(ndc, true))
+                  {}, tex("\\text{ndc} = ") + vec(ndc, true))
             .yields("ndc");
         viewport_step(steps, g.api, g.width, g.height, window);
       }
@@ -548,10 +548,8 @@ struct ProjectPoint {
       steps
           ->add(say(kInsideViewVolume),
                 g.api == Api::DirectX
-                    ? math("−w_c ≤ x_c, y_c ≤ w_c,  0 ≤ z_c ≤ w_c,  w_c > 0",
-                           "-w_c \\le x_c, y_c \\le w_c,\\; 0 \\le z_c \\le w_c,\\; w_c > 0")
-                    : math("−w_c ≤ x_c, y_c, z_c ≤ w_c,  w_c > 0",
-                           "-w_c \\le x_c, y_c, z_c \\le w_c,\\; w_c > 0"),
+                    ? tex("-w_c \\le x_c, y_c \\le w_c,\\; 0 \\le z_c \\le w_c,\\; w_c > 0")
+                    : tex("-w_c \\le x_c, y_c, z_c \\le w_c,\\; w_c > 0"),
                 {}, word(inside ? say(kYesPointVisible) : say(kNoClippingRemovesIt)))
           .yields("inside");
     return out;

@@ -106,8 +106,7 @@ struct ProjectionPlane {
                 math(std::string(toward < 0 ? "s = −" : "s = ") + "(height/2) / tan(fov/2)",
                      std::string(toward < 0 ? "s = -" : "s = ") +
                          "\\frac{\\text{height}/2}{\\tan(\\text{fov}/2)}"),
-                math("height = ", "\\text{height} = ") + exact(g.height) +
-                    math(",  fov = ", ",\\; \\text{fov} = ") +
+                tex("\\text{height} = ") + exact(g.height) + tex(",\\; \\text{fov} = ") +
                     angle_text(g.fov, g.conventions.angles),
                 math("s = ") + exact(s, true))
           .yields("plane_z")
@@ -128,9 +127,9 @@ struct ProjectionPlane {
     if (steps)
       steps
           ->add(say(kSimilarTriangles), math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
-                math("P′ = ", "P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") + exact(s) +
+                tex("P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") + exact(s) +
                     math(") / (", "}{") + exact(g.point(2)) + math(")", "}"),
-                math("P′ = ", "P' = ") + vec(p, true))
+                tex("P' = ") + vec(p, true))
           .yields("projected");
     return out;
   }

@@ -221,13 +221,12 @@ struct Render {
     CertifiedScene cs = certified_geometry(scene, flat, exact_clip_from_world(g.spec, api, steps));
     const GeometryStats& gs = cs.stats;
     if (steps) {
-      Step& geometry =
-          steps->add(say(kGeometry), {}, {},
-                     counts({{gs.triangles, "triangles"}}) + math(": ", "\\colon ") +
-                         counts({{gs.outside, "outside the view volume"},
-                                 {gs.clipped, "clipped"},
-                                 {gs.culled, "back faces culled"}}) +
-                         math(" → ", " \\to ") + counts({{gs.window, "window triangles"}}));
+      Step& geometry = steps->add(say(kGeometry), {}, {},
+                                  counts({{gs.triangles, "triangles"}}) + tex("\\colon ") +
+                                      counts({{gs.outside, "outside the view volume"},
+                                              {gs.clipped, "clipped"},
+                                              {gs.culled, "back faces culled"}}) +
+                                      tex(" \\to ") + counts({{gs.window, "window triangles"}}));
       geometry.note = say(kObjects, flat.objects.size()) +
                       say(kOnlyQueriedPixels, fmt::format("{} × {}", scene.width, scene.height));
       if (cs.exact_geometry > 0) geometry.note += say(kExactGeometry, cs.exact_geometry);
@@ -285,8 +284,7 @@ struct Render {
           t.winner < 0 ? word(words::kBackground) : word(Said::verbatim(winner));
       Step& s = steps->add(
           say(kPixelAt, fmt::format("({}, {})", q[0], q[1])),
-          math("Z = 1 (", "Z = 1\\ (") + word(kCleared) + math("),  F = ", "),\\; F = ") +
-              word(words::kBackground) +
+          tex("Z = 1\\ (") + word(kCleared) + tex("),\\; F = ") + word(words::kBackground) +
               math(" " + color_text(scene.background), "\\ " + color_text(scene.background)),
           {},
           word(kColour) +

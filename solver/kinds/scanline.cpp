@@ -274,9 +274,9 @@ struct Scanline {
     MathText found;
     for (const Section& s : ss)
       found += math(found.empty() ? "" : ",  ", found.empty() ? "" : ",\\quad ") +
-               math(g.polygons[s.polygon].label + ": ") + math("x ∈ [", "x \\in [") +
-               exact(s.x_left) + math(", ") + exact(s.x_right) + math("], z: ") + exact(s.z_left) +
-               math(" → ", " \\to ") + exact(s.z_right);
+               math(g.polygons[s.polygon].label + ": ") + tex("x \\in [") + exact(s.x_left) +
+               math(", ") + exact(s.x_right) + math("], z: ") + exact(s.z_left) + tex(" \\to ") +
+               exact(s.z_right);
     steps
         ->add(say(kSections),
               math("x = x₀ + (y − y₀)(x₁ − x₀)/(y₁ − y₀),  z = z₀ + (y − y₀)(z₁ − z₀)/(y₁ − y₀)",
@@ -302,9 +302,7 @@ struct Scanline {
       shown += math(shown.empty() ? "" : ",  ", shown.empty() ? "" : ",\\quad ") + math("[") +
                exact(p.from) + math(", ") + exact(p.to) + math("]: ") +
                (p.label == kBackground ? word(words::kBackground) : math(p.label));
-    steps
-        ->add(say(kNearestOnEachPiece), word(words::kVisible) + math(": min z", ": \\min z"), {},
-              shown)
+    steps->add(say(kNearestOnEachPiece), word(words::kVisible) + tex(": \\min z"), {}, shown)
         .yields("visible")
         .yields("breaks")
         .note = say(kSmallestZSeen);

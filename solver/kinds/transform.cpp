@@ -322,7 +322,7 @@ struct Transform {
             ->add(say(kInverse),
                   math("M⁻¹ = " + order + " (M·M⁻¹ = I)",
                        "M^{-1} = " + order_latex + "\\;(M M^{-1} = I)"),
-                  {}, math("M⁻¹ = ", "M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
+                  {}, tex("M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
             .yields("inverse")
             .note = say(kEachStepUndone);
       }

@@ -301,9 +301,8 @@ struct Vectors {
           ->add(say(kDotProduct),
                 math("a·b = aₓbₓ + a_yb_y + a_zb_z",
                      "\\mathbf{a}\\cdot\\mathbf{b} = a_x b_x + a_y b_y + a_z b_z"),
-                math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + math("·", "\\cdot") +
-                    vec(b),
-                math("a·b = ", "\\mathbf{a}\\cdot\\mathbf{b} = ") + exact(dot))
+                tex("\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + tex("\\cdot") + vec(b),
+                tex("\\mathbf{a}\\cdot\\mathbf{b} = ") + exact(dot))
           .yields("dot");
     // Cross product by the determinant rule.
     Vec3<Exact> cross = a.cross(b);
@@ -315,8 +314,8 @@ struct Vectors {
                 math("a × b = (a_yb_z − a_zb_y, a_zbₓ − aₓb_z, aₓb_y − a_ybₓ)",
                      "\\mathbf{a}\\times\\mathbf{b} = (a_y b_z - a_z b_y,\\; a_z b_x - a_x "
                      "b_z,\\; a_x b_y - a_y b_x)"),
-                math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) +
-                    math(" × ", " \\times ") + vec(b),
+                math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) + tex(" \\times ") +
+                    vec(b),
                 math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(cross))
           .yields("cross");
     // The measures by the template the numeric path uses; the steps show them.
@@ -339,7 +338,7 @@ struct Vectors {
                      "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} "
                      "\\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
                 math("sin θ = ", "\\sin\\theta = \\frac{") + exact(area) + math(" / (", "}{") +
-                    exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
+                    exact(len_a) + tex(" \\cdot ") + exact(len_b) + math(")", "}"),
                 math("sin θ = ", "\\sin\\theta = ") + exact(sin, true))
           .yields("sin");
     const Exact cos = canonical(m.cos);
@@ -352,7 +351,7 @@ struct Vectors {
                    "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
                    "\\lVert\\mathbf{b}\\rVert}"),
               math("cos θ = ", "\\cos\\theta = \\frac{") + exact(dot) + math(" / (", "}{") +
-                  exact(len_a) + math(" · ", " \\cdot ") + exact(len_b) + math(")", "}"),
+                  exact(len_a) + tex(" \\cdot ") + exact(len_b) + math(")", "}"),
               math("cos θ = ", "\\cos\\theta = ") + exact(cos, true))
           .yields("cos");
     const Exact radians = canonical(exact_acos(cos));
@@ -362,7 +361,7 @@ struct Vectors {
     if (steps)
       steps
           ->add(say(kAngle), math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
-                math("θ = ", "\\theta = ") + exact(angle, true) +
+                tex("\\theta = ") + exact(angle, true) +
                     math(g.angles == AngleUnit::Degrees ? "°" : " rad",
                          g.angles == AngleUnit::Degrees ? "{}^\\circ" : "\\,\\text{rad}"))
           .yields("angle");
@@ -380,7 +379,7 @@ struct Vectors {
                        "\\mathbf{a}\\times\\mathbf{b} \\rVert}"),
                   math("n = ", "\\mathbf{n} = \\frac{") + vec(cross) + math(" / ", "}{") +
                       exact(area) + math("", "}"),
-                  math("n = ", "\\mathbf{n} = ") + vec(n, true))
+                  tex("\\mathbf{n} = ") + vec(n, true))
             .yields("unit_normal");
     }
     return out;

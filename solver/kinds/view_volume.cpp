@@ -145,7 +145,7 @@ struct ViewVolume {
                            "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & "
                            "-\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} \\\\ "
                            "0 & 0 & 1 & 0 \\end{bmatrix}"),
-                math("z̃_min = ", "\\tilde{z}_{\\min} = ") + exact(zt),
+                tex("\\tilde{z}_{\\min} = ") + exact(zt),
                 math("P = ") + matrix_text(paper_form(p, g.api)))
           .yields("perspective_matrix")
           .note = say(kProjectiveNotAffine);
@@ -164,8 +164,7 @@ struct ViewVolume {
                     : math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′",
                            "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = "
                            "\\frac{(X', Y', Z')}{W'}"),
-                math("p = ", "\\mathbf{p} = ") + vec(g.point),
-                math("p′ = ", "\\mathbf{p}' = ") + vec(q, true))
+                tex("\\mathbf{p} = ") + vec(g.point), tex("\\mathbf{p}' = ") + vec(q, true))
           .yields("point");
     return out;
   }

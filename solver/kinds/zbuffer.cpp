@@ -198,9 +198,7 @@ struct ZBuffer {
     if (steps) {
       steps->note(say(kPixelsOrientationDepthTest),
                   say(kPixelCentreWindowYUp) + say(kCoverageFan) + say(kOverwrittenWhenSmaller));
-      steps
-          ->add(say(kInitialise), {}, {},
-                math("F(i, j) = “.”,  Z(i, j) = ∞", "F(i, j) = \\text{“.”},\\; Z(i, j) = \\infty"))
+      steps->add(say(kInitialise), {}, {}, tex("F(i, j) = \\text{“.”},\\; Z(i, j) = \\infty"))
           .note = show ? grids(frame, depth) : say(kGridsNotWritten);
     }
     std::vector<std::string> after;

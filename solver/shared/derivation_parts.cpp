@@ -297,8 +297,8 @@ void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* 
               math("n̂ = n / ‖n‖,  ‖n‖ = √(nₓ² + n_y² + n_z²)",
                    "\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
                    "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
-              math("‖n‖ = ", "\\lVert\\mathbf{n}\\rVert = ") + exact(norm(n), true),
-              math("n̂ = ", "\\hat{\\mathbf{n}} = ") + vec(u, true))
+              tex("\\lVert\\mathbf{n}\\rVert = ") + exact(norm(n), true),
+              tex("\\hat{\\mathbf{n}} = ") + vec(u, true))
         .yields("unit_normal");
 }
 
@@ -324,24 +324,21 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
     const Vec3<Exact> e0 = edge(p, 0), e1 = edge(p, 1);
     if (steps) {
       steps->add(say(kEdgeVectors),
-                 math("e₀ = p₁ − p₀,  e₁ = p₂ − p₁",
-                      "\\mathbf{e}_0 = \\mathbf{p}_1 - \\mathbf{p}_0,\\; \\mathbf{e}_1 = "
-                      "\\mathbf{p}_2 - \\mathbf{p}_1"),
-                 {},
-                 math("e₀ = ", "\\mathbf{e}_0 = ") + vec(e0) +
-                     math(",  e₁ = ", ",\\; \\mathbf{e}_1 = ") + vec(e1));
+                 tex("\\mathbf{e}_0 = \\mathbf{p}_1 - \\mathbf{p}_0,\\; \\mathbf{e}_1 = "
+                     "\\mathbf{p}_2 - \\mathbf{p}_1"),
+                 {}, tex("\\mathbf{e}_0 = ") + vec(e0) + tex(",\\; \\mathbf{e}_1 = ") + vec(e1));
       if (left_handed)
         steps
             ->add(say(kind_words::kNormalLeftHandedTitle),
-                  math("n = e₁ × e₀", "\\mathbf{n} = \\mathbf{e}_1 \\times \\mathbf{e}_0"),
-                  math("n = ", "\\mathbf{n} = ") + vec(e1) + math(" × ", " \\times ") + vec(e0),
-                  math("n = ", "\\mathbf{n} = ") + vec(n))
+                  tex("\\mathbf{n} = \\mathbf{e}_1 \\times \\mathbf{e}_0"),
+                  tex("\\mathbf{n} = ") + vec(e1) + tex(" \\times ") + vec(e0),
+                  tex("\\mathbf{n} = ") + vec(n))
             .note = say(kLeftHandedTriangleFront);
       else
         steps->add(say(kind_words::kNormalRightHandedTitle),
-                   math("n = e₀ × e₁", "\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
-                   math("n = ", "\\mathbf{n} = ") + vec(e0) + math(" × ", " \\times ") + vec(e1),
-                   math("n = ", "\\mathbf{n} = ") + vec(n));
+                   tex("\\mathbf{n} = \\mathbf{e}_0 \\times \\mathbf{e}_1"),
+                   tex("\\mathbf{n} = ") + vec(e0) + tex(" \\times ") + vec(e1),
+                   tex("\\mathbf{n} = ") + vec(n));
     }
   } else {
     if (steps && left_handed)
@@ -350,7 +347,7 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
                 math("n = −Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
                      "\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
                      "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
-                {}, math("n = ", "\\mathbf{n} = ") + vec(n))
+                {}, tex("\\mathbf{n} = ") + vec(n))
           .note = say(kLeftHandedNewellSign);
     else if (steps)
       steps
@@ -358,7 +355,7 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
                 math("n = Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
                      "\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
                      "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
-                {}, math("n = ", "\\mathbf{n} = ") + vec(n))
+                {}, tex("\\mathbf{n} = ") + vec(n))
           .note = say(kNewellSumsEveryPair);
   }
   if (steps) {
@@ -491,13 +488,13 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
              vec(value);
     };
     steps->add(say(kEdgeVectors), {}, {},
-               edge_text(order.first, u) + math(",  ", ",\\; ") + edge_text(order.second, v));
+               edge_text(order.first, u) + tex(",\\; ") + edge_text(order.second, v));
     steps->add(say(kind_words::kNormalTitle),
                math("n = " + order.first + " × " + order.second,
                     "\\mathbf{n} = \\overrightarrow{" + order.first +
                         "} \\times \\overrightarrow{" + order.second + "}"),
-               math("n = ", "\\mathbf{n} = ") + vec(u) + math(" × ", " \\times ") + vec(v),
-               math("n = ", "\\mathbf{n} = ") + vec(n));
+               tex("\\mathbf{n} = ") + vec(u) + tex(" \\times ") + vec(v),
+               tex("\\mathbf{n} = ") + vec(n));
     warn_condition(steps, normal_condition(to_doubles({abc[0], abc[1], abc[2]})),
                    say(kIllConditionedNormal), kNormalDirectionIllConditioned);
   }
@@ -514,9 +511,7 @@ bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
   const int s0 = sides.sign[0], s1 = sides.sign[1], s2 = sides.sign[2];
   const bool inside = sides.inside;
   if (steps) {
-    const auto sign_text = [](int s) {
-      return s > 0 ? math("+") : s < 0 ? math("−", "-") : math("0");
-    };
+    const auto sign_text = [](int s) { return s > 0 ? math("+") : s < 0 ? tex("-") : math("0"); };
     steps
         ->add(say(kIsPixelInside),
               math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",

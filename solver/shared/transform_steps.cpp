@@ -103,7 +103,7 @@ void invert_step(TransformStep& t, const std::string& kind) {
 
 // c = cos θ and s = sin θ of a rotation, as substituted into its matrix.
 MathText cos_sin(const Exact& radians, AngleUnit unit) {
-  return math("θ = ", "\\theta = ") + angle_text(radians, unit) +
+  return tex("\\theta = ") + angle_text(radians, unit) +
          math(",  c = cos θ = ", ",\\; c = \\cos\\theta = ") + exact(GiNaC::cos(radians)) +
          math(",  s = sin θ = ", ",\\; s = \\sin\\theta = ") + exact(GiNaC::sin(radians));
 }
@@ -200,8 +200,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
       t.heading = say(kRotateAbout, angle_text(a, c.angles).unicode, vec(axis).unicode);
       t.matrix = rotate_about(u, a);
       t.formula = axis_angle_formula();
-      t.substitution = math("(x, y, z) = ", "(x, y, z) = ") + vec(u, true) + math(",  ", ",\\; ") +
-                       cos_sin(a, c.angles) + math(",  1 − c = ", ",\\; 1 - c = ") +
+      t.substitution = math("(x, y, z) = ") + vec(u, true) + tex(",\\; ") +
+                       cos_sin(a, c.angles) + tex(",\\; 1 - c = ") +
                        exact(canonical(1 - GiNaC::cos(a)));
       t.note = say(kRodrigues);
       t.angle = a;

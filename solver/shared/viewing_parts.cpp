@@ -257,8 +257,8 @@ Exact read_angle(GivenReader& r, const std::string& key, AngleUnit unit) {
 
 MathText angle_text(const Exact& radians, AngleUnit unit) {
   if (unit == AngleUnit::Degrees)
-    return exact(canonical(radians * 180 / GiNaC::Pi)) + math("°", "{}^\\circ");
-  return exact(radians) + math(" rad", "\\,\\text{rad}");
+    return exact(canonical(radians * 180 / GiNaC::Pi)) + tex("{}^\\circ");
+  return exact(radians) + tex("\\,\\text{rad}");
 }
 
 bool has_projection(const GivenReader& r) {
@@ -418,19 +418,14 @@ void viewport_step(Derivation* steps, Api api, const Exact& width, const Exact& 
   if (!steps) return;
   const bool y_up = api == Api::OpenGL;
   const MathText formula =
-      math("x_w = (x + 1)/2·width,  ", "x_w = \\frac{x + 1}{2}\\cdot\\text{width},\\; ") +
-      (y_up
-           ? math("y_w = (y + 1)/2·height,  ", "y_w = \\frac{y + 1}{2}\\cdot\\text{height},\\; ")
-           : math("y_w = (1 − y)/2·height,  ", "y_w = \\frac{1 - y}{2}\\cdot\\text{height},\\; ")) +
-      (api == Api::DirectX ? math("depth = z", "\\text{depth} = z")
-                           : math("depth = (z + 1)/2", "\\text{depth} = \\frac{z + 1}{2}"));
-  MathText given =
-      ndc ? math("ndc = ", "\\text{ndc} = ") + vec(*ndc) + math(",  ", ",\\; ") : MathText{};
-  given += math("width = ", "\\text{width} = ") + exact(width) +
-           math(",  height = ", ",\\; \\text{height} = ") + exact(height);
+      tex("x_w = \\frac{x + 1}{2}\\cdot\\text{width},\\; ") +
+      (y_up ? tex("y_w = \\frac{y + 1}{2}\\cdot\\text{height},\\; ")
+            : tex("y_w = \\frac{1 - y}{2}\\cdot\\text{height},\\; ")) +
+      (api == Api::DirectX ? tex("\\text{depth} = z") : tex("\\text{depth} = \\frac{z + 1}{2}"));
+  MathText given = ndc ? tex("\\text{ndc} = ") + vec(*ndc) + tex(",\\; ") : MathText{};
+  given += tex("\\text{width} = ") + exact(width) + tex(",\\; \\text{height} = ") + exact(height);
   steps
-      ->add(say(kViewport), formula, given,
-            math("(x_w, y_w, depth) = ", "(x_w, y_w, \\text{depth}) = ") + vec(window, true))
+      ->add(say(kViewport), formula, given, tex("(x_w, y_w, \\text{depth}) = ") + vec(window, true))
       .yields("window")
       .note = say(api == Api::OpenGL    ? kOpenGlWindowOrigin
                   : api == Api::DirectX ? kDirectXWindowOrigin
@@ -475,7 +470,7 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
               math("center − eye = ", "\\mathbf{c} - \\mathbf{e} = ") + vec(forward) +
                   math(",  ‖center − eye‖ = ", ",\\; \\lVert\\mathbf{c} - \\mathbf{e}\\rVert = ") +
                   exact(norm(forward), true),
-              math("f = ", "\\mathbf{f} = ") + vec(f, true))
+              tex("\\mathbf{f} = ") + vec(f, true))
         .note = say(kEyeCenterUp);
     if (plus_z) {
       steps->add(
@@ -487,15 +482,14 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
           math("up × z = ", "\\mathbf{up}\\times\\mathbf{z} = ") + vec(side, true) +
               math(",  ‖up × z‖ = ", ",\\; \\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert = ") +
               exact(norm(side), true),
-          math("x = ", "\\mathbf{x} = ") + vec(row(0)) + math(",  y = ", ",\\; \\mathbf{y} = ") +
-              vec(row(1)) + math(",  z = ", ",\\; \\mathbf{z} = ") + vec(row(2)));
+          tex("\\mathbf{x} = ") + vec(row(0)) + tex(",\\; \\mathbf{y} = ") + vec(row(1)) +
+              tex(",\\; \\mathbf{z} = ") + vec(row(2)));
       steps->add(say(kTranslations),
                  math("t = (−x·eye, −y·eye, −z·eye)",
                       "\\mathbf{t} = (-\\mathbf{x}\\cdot\\mathbf{e},\\, "
                       "-\\mathbf{y}\\cdot\\mathbf{e},\\, -\\mathbf{z}\\cdot\\mathbf{e})"),
                  math("eye = ", "\\mathbf{e} = ") + vec(eye),
-                 math("t = ", "\\mathbf{t} = ") +
-                     vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true));
+                 tex("\\mathbf{t} = ") + vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true));
       if (api == Api::DirectX)
         steps
             ->add(
@@ -524,14 +518,14 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
           math("f × up = ", "\\mathbf{f}\\times\\mathbf{up} = ") + vec(side, true) +
               math(",  ‖f × up‖ = ", ",\\; \\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert = ") +
               exact(norm(side), true),
-          math("s = ", "\\mathbf{s} = ") + vec(row(0), true));
+          tex("\\mathbf{s} = ") + vec(row(0), true));
       steps->add(say(kCameraAxesRightHanded),
                  math("u = s × f,  z_cam = −f",
                       "\\mathbf{u} = \\mathbf{s}\\times\\mathbf{f},\\; \\mathbf{z}_{\\text{cam}} = "
                       "-\\mathbf{f}"),
                  {},
-                 math("u = ", "\\mathbf{u} = ") + vec(row(1), true) +
-                     math(",  −f = ", ",\\; -\\mathbf{f} = ") + vec(row(2), true));
+                 tex("\\mathbf{u} = ") + vec(row(1), true) + tex(",\\; -\\mathbf{f} = ") +
+                     vec(row(2), true));
       steps
           ->add(say(kTranslations),
                 math("(−s·eye, −u·eye, f·eye)",
@@ -622,8 +616,7 @@ MathText volume_text(const Volume<Exact>& v) {
                                                          {"n", &v.near},   {"f", &v.far}};
   MathText m;
   for (const auto& [name, value] : planes)
-    m += (m.empty() ? MathText{} : math(",  ", ",\\; ")) + math(std::string(name) + " = ") +
-         exact(*value);
+    m += (m.empty() ? MathText{} : tex(",\\; ")) + math(std::string(name) + " = ") + exact(*value);
   return m;
 }
 
@@ -635,9 +628,8 @@ void perspective_idea_steps(Api api, bool left_handed, const std::string& name, 
   const bool rows = api == Api::DirectX;  // w′ = z in column 4 (row vectors), else in row 4
   steps
       .add(say(kSimilarTriangles),
-           plus_z ? math("x_n : n = x : z,  y_n : n = y : z", "x_n : n = x : z,\\; y_n : n = y : z")
-                  : math("x_n : n = x : (−z),  y_n : n = y : (−z)",
-                         "x_n : n = x : (-z),\\; y_n : n = y : (-z)"),
+           plus_z ? tex("x_n : n = x : z,\\; y_n : n = y : z")
+                  : tex("x_n : n = x : (-z),\\; y_n : n = y : (-z)"),
            {},
            plus_z ? math("x_n = n·x / z,  y_n = n·y / z",
                          "x_n = \\frac{n\\,x}{z},\\; y_n = \\frac{n\\,y}{z}")
@@ -675,11 +667,10 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
                    "\\frac{\\text{width}}{\\text{height}},\\; \\text{cameraZ} = "
                    "\\frac{\\text{height}/2}{\\tan(\\text{fovy}/2)},\\; n = "
                    "\\frac{\\text{cameraZ}}{10},\\; f = 10\\,\\text{cameraZ}"),
-              math("width = ", "\\text{width} = ") + exact(p.sketch->first) +
-                  math(",  height = ", ",\\; \\text{height} = ") + exact(p.sketch->second),
-              math("aspect = ", "\\text{aspect} = ") + exact(*p.aspect) +
-                  math(",  n = ", ",\\; n = ") + exact(v.near, true) +
-                  math(",  f = ", ",\\; f = ") + exact(v.far, true))
+              tex("\\text{width} = ") + exact(p.sketch->first) + tex(",\\; \\text{height} = ") +
+                  exact(p.sketch->second),
+              tex("\\text{aspect} = ") + exact(*p.aspect) + tex(",\\; n = ") + exact(v.near, true) +
+                  tex(",\\; f = ") + exact(v.far, true))
         .note = say(kProcessingDefaults);
   }
   if (steps && p.fovx) {
@@ -689,10 +680,9 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
         math("r = n·tan(fovx/2),  l = −r,  t = r / aspect,  b = −t",
              "r = n\\tan\\frac{\\text{fovx}}{2},\\; l = -r,\\; t = \\frac{r}{\\text{aspect}},\\; b "
              "= -t"),
-        math("fovx = ", "\\text{fovx} = ") + angle_text(*p.fovx, p.unit) +
-            math(",  aspect = ", ",\\; \\text{aspect} = ") + exact(*p.aspect) +
-            math(",  n = ", ",\\; n = ") + exact(v.near),
-        math("r = ") + exact(v.right, true) + math(",  t = ", ",\\; t = ") + exact(v.top, true));
+        tex("\\text{fovx} = ") + angle_text(*p.fovx, p.unit) + tex(",\\; \\text{aspect} = ") +
+            exact(*p.aspect) + tex(",\\; n = ") + exact(v.near),
+        math("r = ") + exact(v.right, true) + tex(",\\; t = ") + exact(v.top, true));
     const double fovy_shown =
         to_double(p.unit == AngleUnit::Degrees ? Exact(*p.fovy * 180 / GiNaC::Pi) : *p.fovy);
     steps
@@ -716,10 +706,9 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
             math("t = n·tan(fovy/2),  b = −t,  r = t·aspect,  l = −r",
                  "t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l "
                  "= -r"),
-            math("fovy = ", "\\text{fovy} = ") + angle_text(*p.fovy, p.unit) +
-                math(",  aspect = ", ",\\; \\text{aspect} = ") + exact(*p.aspect) +
-                math(",  n = ", ",\\; n = ") + exact(v.near),
-            math("t = ") + exact(v.top, true) + math(",  r = ", ",\\; r = ") + exact(v.right, true))
+            tex("\\text{fovy} = ") + angle_text(*p.fovy, p.unit) + tex(",\\; \\text{aspect} = ") +
+                exact(*p.aspect) + tex(",\\; n = ") + exact(v.near),
+            math("t = ") + exact(v.top, true) + tex(",\\; r = ") + exact(v.right, true))
         .note =
         say(kFovyIsVertical) + say(kReadAsHorizontalAngle) + say(kSomeNotesWriteAspectOnTop);
   }
