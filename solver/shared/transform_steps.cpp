@@ -200,9 +200,8 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
       t.heading = say(kRotateAbout, angle_text(a, c.angles).unicode, vec(axis).unicode);
       t.matrix = rotate_about(u, a);
       t.formula = axis_angle_formula();
-      t.substitution = math("(x, y, z) = ") + vec(u, true) + tex(",\\; ") +
-                       cos_sin(a, c.angles) + tex(",\\; 1 - c = ") +
-                       exact(canonical(1 - GiNaC::cos(a)));
+      t.substitution = math("(x, y, z) = ") + vec(u, true) + tex(",\\; ") + cos_sin(a, c.angles) +
+                       tex(",\\; 1 - c = ") + exact(canonical(1 - GiNaC::cos(a)));
       t.note = say(kRodrigues);
       t.angle = a;
       t.rotation = [u](const Exact& b) { return rotate_about(u, b); };
