@@ -20,54 +20,6 @@ constexpr Phrase kExam{"exam", "試験", "контрольная работа"};
 constexpr Phrase kAnswerKey{"answer key", "解答", "ответы"};
 constexpr Phrase kName{"Name", "氏名", "Имя"};
 
-// The answer lines of a paper exam in the sheet's language, for an answer with no symbol and no
-// label of its own (AnswerSpec::label, which a kind declares in its file): each phrase's English
-// is the answer's name, which the English sheet writes.
-constexpr Phrase kAnswerLines[] = {
-    {"accept", "採択", "принятие"},
-    {"reject", "棄却", "отбрасывание"},
-    {"backface_sufficient", "バックフェースカリングだけで十分か",
-     "достаточно ли отсечения нелицевых граней"},
-    {"centroids", "重心", "центроиды"},
-    {"clip", "クリップ座標", "координаты отсечения"},
-    {"clipped", "クリッピングの結果", "результат отсечения"},
-    {"color", "色", "цвет"},
-    {"convex", "凸か", "выпуклый ли"},
-    {"depth", "奥行き", "глубина"},
-    {"depths", "奥行き", "глубины"},
-    {"faces", "面", "грани"},
-    {"facing", "表裏", "ориентация"},
-    {"frame", "フレーム", "кадр"},
-    {"inside", "内側か", "внутри ли"},
-    {"ndc", "正規化デバイス座標", "нормализованные координаты"},
-    {"object", "物体", "объект"},
-    {"order", "描画順", "порядок рисования"},
-    {"outcode_p", "p の領域コード", "код области p"},
-    {"outcode_q", "q の領域コード", "код области q"},
-    {"perspective_matrix", "透視変換行列", "матрица перспективы"},
-    {"pixels", "画素", "пиксели"},
-    {"plane", "平面", "плоскость"},
-    {"point", "点", "точка"},
-    {"points", "点", "точки"},
-    {"scale_matrix", "拡大縮小行列", "матрица масштабирования"},
-    {"steps", "手順", "шаги"},
-    {"total", "合計", "сумма"},
-    {"true_statements", "正しい記述", "верные утверждения"},
-    {"window", "ウィンドウ座標", "оконные координаты"},
-    {"conflicts", "競合", "конфликты"},
-    {"edges", "稜線", "рёбра"},
-    {"hidden", "不可視の稜線", "невидимые рёбра"},
-    {"silhouette", "輪郭線", "контурные рёбра"},
-    {"homogeneous", "同次座標", "однородные координаты"},
-    {"cartesian", "通常座標", "декартовы координаты"},
-    {"same_point", "同じ点か", "та же ли точка"},
-    {"array", "配列", "массив"},
-    {"matrix", "行列", "матрица"},
-    {"spans", "断面", "сечения"},
-    {"visible", "各区間で見える断面", "видимые сечения по отрезкам"},
-    {"breaks", "区切り点", "точки разбиения"},
-};
-
 // The whole document: LuaLaTeX with luatexja as soon as any Japanese appears (a problem's text,
 // or a step's gloss such as 輪郭線), with a Cyrillic font as soon as any Russian does, pdflatex
 // otherwise.
@@ -112,13 +64,12 @@ std::string sheet_head(const std::string& title, const PaperSheet& s, const Phra
 }
 
 // What an answer line is labelled with, in the sheet's language: the symbol the derivation
-// writes for the answer (a × b, S, D_f) as mathematics, else its name in `lang`.
+// writes for the answer (a × b, S, D_f) as mathematics, else the label its kind gives it
+// (AnswerSpec::label, whose English is the answer's name) in `lang`, else its name.
 std::string answer_label(const ProblemSpec& p, const std::string& name, Lang lang) {
   const AnswerSpec* spec = p.info ? p.info->answer(name) : nullptr;
   if (spec && !spec->symbols.empty()) return latex_prose_symbols(spec->symbols.front());
   if (spec && !spec->label.empty()) return latex_prose_symbols(spec->label.in(lang));
-  for (const Phrase& line : kAnswerLines)
-    if (line.en == name) return latex_prose_symbols(line.in(lang));
   return latex_prose_symbols(name);
 }
 

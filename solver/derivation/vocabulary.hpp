@@ -45,6 +45,17 @@ inline constexpr Phrase kNearerAndWritten{"nearer than Z(i, j) and written",
                                           "Z(i, j) より手前なので書き込む",
                                           "ближе, чем Z(i, j), и записано"};
 
+// The label of an answer that several kinds have, on an exam sheet where the answer has no
+// symbol (AnswerSpec::label; its English is the answer's name). kDepth and kPlane above label
+// the answers depth and plane as well.
+inline constexpr Phrase kClippingResult{"clipped", "クリッピングの結果", "результат отсечения"};
+inline constexpr Phrase kInsideQuestion{"inside", "内側か", "внутри ли"};
+inline constexpr Phrase kPixels{"pixels", "画素", "пиксели"};
+inline constexpr Phrase kPoints{"points", "点", "точки"};
+inline constexpr Phrase kWindowCoordinates{"window", "ウィンドウ座標", "оконные координаты"};
+inline constexpr Phrase kEdges{"edges", "稜線", "рёбра"};
+inline constexpr Phrase kMatrix{"matrix", "行列", "матрица"};
+
 // A word counted by a number in a formula ("3 front" → "3 лицевые"): its English plural and
 // singular (for 1), and the three forms Russian agreement takes: one (1, 21, 31 …), few
 // (2–4, 22–24 …) and many (0, 5–20, 25–30 …).

@@ -161,7 +161,11 @@ struct Backface {
              .kind = AnswerKind::Scalar,
              .depends_on = {"normal", "view"},
              .symbols = {"D_f"}},
-            {"facing", AnswerKind::Category, {"df"}, {"front", "back", "edge_on"}}};
+            {.name = "facing",
+             .kind = AnswerKind::Category,
+             .depends_on = {"df"},
+             .words = {"front", "back", "edge_on"},
+             .label = say(kFacing)}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

@@ -22,6 +22,9 @@ namespace frustum {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kTotal{"total", "合計", "сумма"};
+
 constexpr Phrase kNearlyDegenerateTriangle{"Nearly degenerate triangle", "ほぼ退化した三角形",
                                            "Почти вырожденный треугольник"};
 constexpr Phrase kTheTotalTwiceTheProjectedArea{
@@ -55,13 +58,17 @@ struct Barycentric {
   static std::vector<std::string> given_fields() { return {"triangle", "pixel"}; }
   static std::vector<AnswerSpec> answers() {
     return {
-        {"edges", AnswerKind::Vector, {}, {}},
-        {"total", AnswerKind::Scalar, {}, {}},
+        {.name = "edges", .kind = AnswerKind::Vector, .label = say(words::kEdges)},
+        {.name = "total", .kind = AnswerKind::Scalar, .label = say(kTotal)},
         {.name = "lambda",
          .kind = AnswerKind::Vector,
          .depends_on = {"edges", "total"},
          .symbols = {"λ"}},
-        {"inside", AnswerKind::Bool, {"edges"}, {"inside", "outside"}},
+        {.name = "inside",
+         .kind = AnswerKind::Bool,
+         .depends_on = {"edges"},
+         .words = {"inside", "outside"},
+         .label = say(words::kInsideQuestion)},
         {.name = "z", .kind = AnswerKind::Scalar, .depends_on = {"lambda"}, .symbols = {"z_S"}}};
   }
 

@@ -13,6 +13,12 @@ namespace frustum {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kOutcodeP{"outcode_p", "p の領域コード", "код области p"};
+constexpr Phrase kOutcodeQ{"outcode_q", "q の領域コード", "код области q"};
+constexpr Phrase kAccept{"accept", "採択", "принятие"};
+constexpr Phrase kReject{"reject", "棄却", "отбрасывание"};
+
 constexpr Phrase kBitCodes2D{
     "{0}-bit codes, most significant first: 1000 top (y > ymax), 0100 bottom (y < ymin), 0010 "
     "right (x > xmax), 0001 left (x < xmin).",
@@ -144,11 +150,20 @@ struct ClipLine {
     return out;
   }
   static std::vector<AnswerSpec> answers() {
-    return {{"outcode_p", AnswerKind::BitString, {}, {}},
-            {"outcode_q", AnswerKind::BitString, {}, {}},
-            {"accept", AnswerKind::Bool, {"outcode_p", "outcode_q"}, {}},
-            {"reject", AnswerKind::Bool, {"outcode_p", "outcode_q"}, {}},
-            {"clipped", AnswerKind::Segment, {"outcode_p", "outcode_q"}, {}}};
+    return {{.name = "outcode_p", .kind = AnswerKind::BitString, .label = say(kOutcodeP)},
+            {.name = "outcode_q", .kind = AnswerKind::BitString, .label = say(kOutcodeQ)},
+            {.name = "accept",
+             .kind = AnswerKind::Bool,
+             .depends_on = {"outcode_p", "outcode_q"},
+             .label = say(kAccept)},
+            {.name = "reject",
+             .kind = AnswerKind::Bool,
+             .depends_on = {"outcode_p", "outcode_q"},
+             .label = say(kReject)},
+            {.name = "clipped",
+             .kind = AnswerKind::Segment,
+             .depends_on = {"outcode_p", "outcode_q"},
+             .label = say(words::kClippingResult)}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

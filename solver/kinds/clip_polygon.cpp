@@ -74,7 +74,9 @@ struct ClipPolygon {
     clip_given::Region region;
   };
   static std::vector<std::string> given_fields() { return {"points", "window", "volume"}; }
-  static std::vector<AnswerSpec> answers() { return {{"clipped", AnswerKind::Polygon, {}, {}}}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{.name = "clipped", .kind = AnswerKind::Polygon, .label = say(words::kClippingResult)}};
+  }
 
   static Given parse(GivenReader& r, const Conventions& c) {
     Given g;

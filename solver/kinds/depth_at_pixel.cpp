@@ -215,9 +215,15 @@ struct DepthAtPixel {
              .kind = AnswerKind::UnitVector,
              .depends_on = {"normal"},
              .symbols = {"n̂"}},
-            {"plane", AnswerKind::Plane, {"unit_normal"}, {}},
+            {.name = "plane",
+             .kind = AnswerKind::Plane,
+             .depends_on = {"unit_normal"},
+             .label = say(words::kPlane)},
             {.name = "z", .kind = AnswerKind::Scalar, .depends_on = {"plane"}, .symbols = {"z_S"}},
-            {"inside", AnswerKind::Bool, {}, {"inside", "outside"}}};
+            {.name = "inside",
+             .kind = AnswerKind::Bool,
+             .words = {"inside", "outside"},
+             .label = say(words::kInsideQuestion)}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

@@ -18,6 +18,12 @@ namespace frustum {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kCentroidsLabel{"centroids", "重心", "центроиды"};
+constexpr Phrase kDepths{"depths", "奥行き", "глубины"};
+constexpr Phrase kDrawingOrder{"order", "描画順", "порядок рисования"};
+constexpr Phrase kConflictingPairs{"conflicts", "競合", "конфликты"};
+
 // Centroids, depths and the order.
 constexpr Phrase kCentroids{"Centroids", "重心", "Центры тяжести"};
 constexpr Phrase kDepthFromEye{"Depth: distance from the eye", "奥行き: 視点からの距離",
@@ -200,14 +206,21 @@ struct DepthSort {
   }
 
   static std::vector<AnswerSpec> answers() {
-    return {{"centroids", AnswerKind::Matrix, {}, {}},
-            {"depths", AnswerKind::Vector, {"centroids"}, {}},
-            {"order", AnswerKind::Sequence, {"depths"}, {}},
+    return {{.name = "centroids", .kind = AnswerKind::Matrix, .label = say(kCentroidsLabel)},
+            {.name = "depths",
+             .kind = AnswerKind::Vector,
+             .depends_on = {"centroids"},
+             .label = say(kDepths)},
+            {.name = "order",
+             .kind = AnswerKind::Sequence,
+             .depends_on = {"depths"},
+             .label = say(kDrawingOrder)},
             // Two polygons whose order needs a further test: "1-0" is the pair 0-1.
             {.name = "conflicts",
              .kind = AnswerKind::WordList,
              .depends_on = {"order"},
-             .unordered_pairs = true}};
+             .unordered_pairs = true,
+             .label = say(kConflictingPairs)}};
   }
 
   // Error carried forward: the depths of the student's own centroids (their distance from the

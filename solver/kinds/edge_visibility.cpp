@@ -28,6 +28,14 @@ namespace frustum {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kFaces{"faces", "面", "грани"};
+constexpr Phrase kSilhouetteEdges{"silhouette", "輪郭線", "контурные рёбра"};
+constexpr Phrase kHiddenEdges{"hidden", "不可視の稜線", "невидимые рёбра"};
+constexpr Phrase kIsConvex{"convex", "凸か", "выпуклый ли"};
+constexpr Phrase kBackfaceSufficient{"backface_sufficient", "バックフェースカリングだけで十分か",
+                                     "достаточно ли отсечения нелицевых граней"};
+
 // More faces than this and the derivation lists only the counts, not the D_f table.
 constexpr std::size_t kMaxTableFaces = 60;
 
@@ -194,23 +202,35 @@ struct EdgeVisibility {
   };
   static std::vector<std::string> given_fields() { return {"mesh", "solid", "transform", "eye"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"faces", AnswerKind::WordMap, {}, {"front", "back", "edge_on"}},
+    return {{.name = "faces",
+             .kind = AnswerKind::WordMap,
+             .words = {"front", "back", "edge_on"},
+             .label = say(kFaces)},
             // An edge is an unordered pair of vertices: "1-0" is the edge 0-1.
             {.name = "edges",
              .kind = AnswerKind::WordMap,
              .depends_on = {"faces"},
              .words = {"visible", "silhouette", "hidden"},
-             .unordered_pairs = true},
+             .unordered_pairs = true,
+             .label = say(words::kEdges)},
             {.name = "silhouette",
              .kind = AnswerKind::WordList,
              .depends_on = {"edges"},
-             .unordered_pairs = true},
+             .unordered_pairs = true,
+             .label = say(kSilhouetteEdges)},
             {.name = "hidden",
              .kind = AnswerKind::WordList,
              .depends_on = {"edges"},
-             .unordered_pairs = true},
-            {"convex", AnswerKind::Bool, {}, {"convex", "not convex"}},
-            {"backface_sufficient", AnswerKind::Bool, {"convex"}, {}}};
+             .unordered_pairs = true,
+             .label = say(kHiddenEdges)},
+            {.name = "convex",
+             .kind = AnswerKind::Bool,
+             .words = {"convex", "not convex"},
+             .label = say(kIsConvex)},
+            {.name = "backface_sufficient",
+             .kind = AnswerKind::Bool,
+             .depends_on = {"convex"},
+             .label = say(kBackfaceSufficient)}};
   }
 
   static Mesh read_mesh(GivenReader& r) {

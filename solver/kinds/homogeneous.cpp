@@ -13,6 +13,11 @@ namespace frustum {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kHomogeneous{"homogeneous", "同次座標", "однородные координаты"};
+constexpr Phrase kCartesian{"cartesian", "通常座標", "декартовы координаты"};
+constexpr Phrase kSamePoint{"same_point", "同じ点か", "та же ли точка"};
+
 constexpr Phrase kHomogeneousCoordinates{"Homogeneous coordinates of the point", "点の同次座標",
                                          "Однородные координаты точки"};
 constexpr Phrase kBackToThePoint{"Back to the point", "通常座標に戻す", "Обратно к точке"};
@@ -85,12 +90,19 @@ struct Homogeneous {
   };
   static std::vector<std::string> given_fields() { return {"point", "w", "candidate"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{.name = "homogeneous", .kind = AnswerKind::Vector, .needs_given = "w"},
-            {.name = "cartesian", .kind = AnswerKind::Vector, .needs_given = "candidate"},
+    return {{.name = "homogeneous",
+             .kind = AnswerKind::Vector,
+             .needs_given = "w",
+             .label = say(kHomogeneous)},
+            {.name = "cartesian",
+             .kind = AnswerKind::Vector,
+             .needs_given = "candidate",
+             .label = say(kCartesian)},
             {.name = "same_point",
              .kind = AnswerKind::Bool,
              .depends_on = {"cartesian"},
-             .needs_given = "candidate"}};
+             .needs_given = "candidate",
+             .label = say(kSamePoint)}};
   }
 
   static Given parse(GivenReader& r, const Conventions&) {

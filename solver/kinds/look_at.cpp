@@ -1,6 +1,7 @@
 // The view matrix of gluLookAt / Processing's camera() (seed 000: camera(eye, center, up)),
 // or DirectX's LookAtLH: rows are the camera's axes, the last column moves the eye to the
 // origin.
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -53,8 +54,13 @@ struct LookAt {
   };
   static std::vector<std::string> given_fields() { return {"eye", "center", "up", "points"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"matrix", AnswerKind::Transform, {}, {}},
-            {"points", AnswerKind::Matrix, {"matrix"}, {}, "points", true}};
+    return {{.name = "matrix", .kind = AnswerKind::Transform, .label = say(words::kMatrix)},
+            {.name = "points",
+             .kind = AnswerKind::Matrix,
+             .depends_on = {"matrix"},
+             .needs_given = "points",
+             .point_rows = true,
+             .label = say(words::kPoints)}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

@@ -1,6 +1,7 @@
 // The plane through three or more points, or through a point with a normal (seed 001:
 // n·(r − r₀) = 0 → ax + by + cz = d; the distance from the origin is |d| / ‖n‖).
 #include "solver/core/exact_vector.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -99,7 +100,10 @@ struct Plane {
              .kind = AnswerKind::UnitVector,
              .depends_on = {"normal"},
              .symbols = {"n̂"}},
-            {"plane", AnswerKind::Plane, {"normal"}, {}},
+            {.name = "plane",
+             .kind = AnswerKind::Plane,
+             .depends_on = {"normal"},
+             .label = say(words::kPlane)},
             {.name = "distance",
              .kind = AnswerKind::Scalar,
              .depends_on = {"plane"},

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/numeric/condition.hpp"
 #include "solver/numeric/ranged.hpp"
@@ -23,6 +24,10 @@
 namespace frustum {
 
 namespace {
+
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kClipCoords{"clip", "クリップ座標", "координаты отсечения"};
+constexpr Phrase kNdc{"ndc", "正規化デバイス座標", "нормализованные координаты"};
 
 constexpr Phrase kPointInEyePlane{"The point is in the eye's plane", "点は視点を通る平面上にある",
                                   "Точка в плоскости глаза"};
@@ -315,10 +320,17 @@ struct ProjectPoint {
     return {"point", "model", "camera", "perspective", "frustum", "ortho", "viewport"};
   }
   static std::vector<AnswerSpec> answers() {
-    return {{"clip", AnswerKind::Point, {}, {}},
-            {"ndc", AnswerKind::Vector, {"clip"}, {}},
-            {"window", AnswerKind::Vector, {"ndc"}, {}},
-            {"inside", AnswerKind::Bool, {"ndc"}, {"inside", "outside"}}};
+    return {{.name = "clip", .kind = AnswerKind::Point, .label = say(kClipCoords)},
+            {.name = "ndc", .kind = AnswerKind::Vector, .depends_on = {"clip"}, .label = say(kNdc)},
+            {.name = "window",
+             .kind = AnswerKind::Vector,
+             .depends_on = {"ndc"},
+             .label = say(words::kWindowCoordinates)},
+            {.name = "inside",
+             .kind = AnswerKind::Bool,
+             .depends_on = {"ndc"},
+             .words = {"inside", "outside"},
+             .label = say(words::kInsideQuestion)}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

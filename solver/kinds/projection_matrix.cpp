@@ -1,4 +1,5 @@
 // The matrix of perspective(), frustum() or ortho() in the set's conventions (seeds 000, 004).
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -18,7 +19,9 @@ struct ProjectionMatrix {
     Api api;
   };
   static std::vector<std::string> given_fields() { return {"perspective", "frustum", "ortho"}; }
-  static std::vector<AnswerSpec> answers() { return {{"matrix", AnswerKind::Transform, {}, {}}}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{.name = "matrix", .kind = AnswerKind::Transform, .label = say(words::kMatrix)}};
+  }
   static Given parse(GivenReader& r, const Conventions& c) {
     return {read_projection(r, c), c.api};
   }

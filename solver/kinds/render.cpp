@@ -18,6 +18,10 @@ namespace frustum {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kColor{"color", "色", "цвет"};
+constexpr Phrase kObject{"object", "物体", "объект"};
+
 // The conventions and the geometry.
 constexpr Phrase kConventionsAndModel{"Conventions and model", "規約とモデル",
                                       "Соглашения и модель"};
@@ -132,10 +136,10 @@ struct Render {
 
   static std::vector<std::string> given_fields() { return {"scene", "pixels"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"pixels", AnswerKind::Matrix, {}, {}},
-            {"color", AnswerKind::Matrix, {}, {}},
-            {"depth", AnswerKind::Vector, {}, {}},
-            {"object", AnswerKind::Sequence, {}, {}}};
+    return {{.name = "pixels", .kind = AnswerKind::Matrix, .label = say(words::kPixels)},
+            {.name = "color", .kind = AnswerKind::Matrix, .label = say(kColor)},
+            {.name = "depth", .kind = AnswerKind::Vector, .label = say(words::kDepth)},
+            {.name = "object", .kind = AnswerKind::Sequence, .label = say(kObject)}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

@@ -95,7 +95,9 @@ struct ScanConvert {
     std::array<Vec2<Exact>, 3> triangle;
   };
   static std::vector<std::string> given_fields() { return {"triangle"}; }
-  static std::vector<AnswerSpec> answers() { return {{"pixels", AnswerKind::PointSet, {}, {}}}; }
+  static std::vector<AnswerSpec> answers() {
+    return {{.name = "pixels", .kind = AnswerKind::PointSet, .label = say(words::kPixels)}};
+  }
 
   static Given parse(GivenReader& r, const Conventions&) {
     Given g;

@@ -18,6 +18,11 @@ namespace frustum {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kSpans{"spans", "断面", "сечения"};
+constexpr Phrase kVisibleSections{"visible", "各区間で見える断面", "видимые сечения по отрезкам"};
+constexpr Phrase kBreaks{"breaks", "区切り点", "точки разбиения"};
+
 constexpr const char* kBackground = ".";
 
 constexpr Phrase kSections{"Sections of the polygons on the scan line", "走査線上のポリゴンの断面",
@@ -95,9 +100,15 @@ struct Scanline {
   };
   static std::vector<std::string> given_fields() { return {"polygons", "y"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"spans", AnswerKind::Matrix, {}, {}},
-            {.name = "visible", .kind = AnswerKind::Sequence, .depends_on = {"spans"}},
-            {.name = "breaks", .kind = AnswerKind::Vector, .depends_on = {"spans"}}};
+    return {{.name = "spans", .kind = AnswerKind::Matrix, .label = say(kSpans)},
+            {.name = "visible",
+             .kind = AnswerKind::Sequence,
+             .depends_on = {"spans"},
+             .label = say(kVisibleSections)},
+            {.name = "breaks",
+             .kind = AnswerKind::Vector,
+             .depends_on = {"spans"},
+             .label = say(kBreaks)}};
   }
 
   static Given parse(GivenReader& r, const Conventions&) {

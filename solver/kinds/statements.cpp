@@ -34,6 +34,9 @@ std::optional<bool> truth_word(std::string_view written) {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kTrueStatements{"true_statements", "正しい記述", "верные утверждения"};
+
 constexpr Phrase kStatement{"Statement {0}: {1}", "記述 {0}: {1}", "Утверждение {0}: {1}"};
 constexpr Phrase kTheTrueStatements{"The true statements", "正しい記述", "Верные утверждения"};
 constexpr Phrase kReason{"Reason: {0}", "理由: {0}", "Обоснование: {0}"};
@@ -69,7 +72,8 @@ struct Statements {
   };
   static std::vector<std::string> given_fields() { return {"statements"}; }
   static std::vector<AnswerSpec> answers() {
-    return {{"true_statements", AnswerKind::Statements, {}, {}}};
+    return {
+        {.name = "true_statements", .kind = AnswerKind::Statements, .label = say(kTrueStatements)}};
   }
 
   // A text field of one statement, in each language the set gives: one line, bounded.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -18,6 +19,9 @@
 namespace frustum {
 
 namespace {
+
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kArray{"array", "配列", "массив"};
 
 constexpr Phrase kTransformAPoint{"Transform a point", "点を変換", "Преобразование точки"};
 
@@ -191,7 +195,12 @@ struct Transform {
   }
   static std::vector<AnswerSpec> answers() {
     return {{.name = "matrix", .kind = AnswerKind::Transform, .symbols = {"M"}},
-            {"points", AnswerKind::Matrix, {"matrix"}, {}, "points", true},
+            {.name = "points",
+             .kind = AnswerKind::Matrix,
+             .depends_on = {"matrix"},
+             .needs_given = "points",
+             .point_rows = true,
+             .label = say(words::kPoints)},
             {.name = "inverse",
              .kind = AnswerKind::Transform,
              .depends_on = {"matrix"},
@@ -199,7 +208,8 @@ struct Transform {
             {.name = "array",
              .kind = AnswerKind::Vector,
              .depends_on = {"matrix"},
-             .needs_given = "array"}};
+             .needs_given = "array",
+             .label = say(kArray)}};
   }
 
   static Given parse(GivenReader& r, const Conventions& c) {

@@ -13,6 +13,11 @@ namespace frustum {
 
 namespace {
 
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kScaleMatrix{"scale_matrix", "拡大縮小行列", "матрица масштабирования"};
+constexpr Phrase kPerspectiveMatrix{"perspective_matrix", "透視変換行列", "матрица перспективы"};
+constexpr Phrase kPoint{"point", "点", "точка"};
+
 constexpr Phrase kViewVolumeAndWhereItGoes{
     "The view volume and where it goes", "視体積とその行き先", "Видимый объём и куда он переходит"};
 constexpr Phrase kEyeLooksDownPlusZVolume{
@@ -58,9 +63,14 @@ struct ViewVolume {
     return {"d", "a", "b", "z_min", "z_max", "point"};
   }
   static std::vector<AnswerSpec> answers() {
-    return {{"scale_matrix", AnswerKind::Transform, {}, {}},
-            {"perspective_matrix", AnswerKind::Transform, {}, {}},
-            {"point", AnswerKind::Vector, {"scale_matrix", "perspective_matrix"}, {}}};
+    return {{.name = "scale_matrix", .kind = AnswerKind::Transform, .label = say(kScaleMatrix)},
+            {.name = "perspective_matrix",
+             .kind = AnswerKind::Transform,
+             .label = say(kPerspectiveMatrix)},
+            {.name = "point",
+             .kind = AnswerKind::Vector,
+             .depends_on = {"scale_matrix", "perspective_matrix"},
+             .label = say(kPoint)}};
   }
 
   // Error carried forward: the point through the student's own matrices (P·S·p, then the divide

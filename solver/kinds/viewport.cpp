@@ -1,6 +1,7 @@
 // The viewport transform: NDC to window coordinates and depth in [0, 1] (seed 000 9.6).
 #include <fmt/format.h>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -42,7 +43,10 @@ struct Viewport {
     Api api;
   };
   static std::vector<std::string> given_fields() { return {"ndc", "width", "height"}; }
-  static std::vector<AnswerSpec> answers() { return {{"window", AnswerKind::Vector, {}, {}}}; }
+  static std::vector<AnswerSpec> answers() {
+    return {
+        {.name = "window", .kind = AnswerKind::Vector, .label = say(words::kWindowCoordinates)}};
+  }
 
   static Given parse(GivenReader& r, const Conventions& c) {
     Given g{r.vector<3>("ndc"), r.number("width"), r.number("height"), c.api};

@@ -12,6 +12,7 @@
 
 #include <cctype>
 
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/given_reader.hpp"
 #include "solver/problem/generate.hpp"
 #include "solver/problem/registry.hpp"
@@ -21,6 +22,10 @@
 namespace frustum {
 
 namespace {
+
+// The answers' names on an exam sheet (in English, the name the answers file uses).
+constexpr Phrase kFrame{"frame", "フレーム", "кадр"};
+constexpr Phrase kSteps{"steps", "手順", "шаги"};
 
 constexpr Phrase kPixelsOrientationDepthTest{"Pixels, orientation and the depth test",
                                              "画素, 向きと奥行きテスト",
@@ -100,9 +105,12 @@ struct ZBuffer {
   }
 
   static std::vector<AnswerSpec> answers() {
-    return {{"frame", AnswerKind::Sequence, {}, {}},
-            {.name = "depth", .kind = AnswerKind::Matrix, .infinity = kInfinity},
-            {"steps", AnswerKind::Sequence, {}, {}}};
+    return {{.name = "frame", .kind = AnswerKind::Sequence, .label = say(kFrame)},
+            {.name = "depth",
+             .kind = AnswerKind::Matrix,
+             .infinity = kInfinity,
+             .label = say(words::kDepth)},
+            {.name = "steps", .kind = AnswerKind::Sequence, .label = say(kSteps)}};
   }
 
   static int read_dimension(GivenReader& r, const Exact& e, const std::string& name) {

@@ -97,8 +97,8 @@ struct AnswerSpec {
   // a student may write +∞ as inf, ∞ or infinity; 0: +∞ is read as no number.
   double infinity = 0;
   // What the answer is called where a student reads its name alone (an exam sheet's answer line)
-  // and it has no symbol: "the view matrix", in every language. Empty: the shared labels of
-  // export/paper.cpp, which hold the answers of the kinds written before this field.
+  // and it has no symbol: "the view matrix", in every language; its English is the answer's
+  // name. Empty: the sheet writes the name as it is.
   Said label = {};
 };
 
