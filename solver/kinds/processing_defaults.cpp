@@ -73,9 +73,10 @@ struct ProcessingDefaults {
     return g;
   }
 
-  // cameraZ = (height/2)/tan(fovy/2) with fovy = π/3.
+  // cameraZ = (height/2)/tan(fovy/2) with fovy = π/3 (the named mistake: tan(fovy)).
   static Exact camera_z(const Given& g) {
-    return canonical(g.height / 2 / GiNaC::tan(GiNaC::Pi / (g.full_angle ? 3 : 6)));
+    return g.full_angle ? canonical(g.height / 2 / GiNaC::tan(GiNaC::Pi / 3))
+                        : processing_camera_z(g.height);
   }
   static Vec3<Exact> eye_at(const Given& g, const Exact& z) {
     return {canonical(g.width / 2), canonical(g.height / 2), z};
@@ -86,15 +87,9 @@ struct ProcessingDefaults {
   }
   static MatX<Exact> projection_of(const Given& g, const Exact& fovy, const Exact& near,
                                    const Exact& far, Derivation* steps) {
-    ProjectionSpec p;
-    p.fovy = fovy;
-    p.aspect = canonical(g.width / g.height);
+    ProjectionSpec p = perspective_projection(fovy, canonical(g.width / g.height), near, far);
     p.unit = g.angles;
     p.left_handed = g.left_handed;
-    p.volume = perspective_volume(*p.fovy, *p.aspect, near, far);
-    for (Exact* e : {&p.volume.left, &p.volume.right, &p.volume.bottom, &p.volume.top,
-                     &p.volume.near, &p.volume.far})
-      *e = canonical(*e);
     return projection_with_steps(p, g.api, steps, "P");
   }
 

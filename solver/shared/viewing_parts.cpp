@@ -287,19 +287,34 @@ void processing_default_perspective(GivenReader& g, ProjectionSpec& p) {
   require_positive(g, "width", w, "the sketch's width in pixels");
   require_positive(g, "height", h, "the sketch's height in pixels");
   g.finish();
-  const Exact fovy = canonical(GiNaC::Pi / 3);
-  const Exact camera_z = canonical(h / 2 / GiNaC::tan(fovy / 2));
-  p.fovy = fovy;
-  p.aspect = canonical(w / h);
+  const Exact camera_z = processing_camera_z(h);
+  const ProjectionSpec d =
+      perspective_projection(canonical(GiNaC::Pi / 3), canonical(w / h), canonical(camera_z / 10),
+                             canonical(camera_z * 10));
+  p.fovy = d.fovy;
+  p.aspect = d.aspect;
+  p.volume = d.volume;
   p.sketch = std::make_pair(w, h);
-  p.volume =
-      perspective_volume(fovy, *p.aspect, canonical(camera_z / 10), canonical(camera_z * 10));
-  for (Exact* e : {&p.volume.left, &p.volume.right, &p.volume.bottom, &p.volume.top, &p.volume.near,
-                   &p.volume.far})
-    *e = canonical(*e);
 }
 
 }  // namespace
+
+ProjectionSpec perspective_projection(const Exact& fovy, const Exact& aspect, const Exact& near,
+                                      const Exact& far) {
+  ProjectionSpec p;
+  p.fovy = fovy;
+  p.aspect = aspect;
+  p.volume = perspective_volume(fovy, aspect, near, far);
+  for (Exact* e : {&p.volume.left, &p.volume.right, &p.volume.bottom, &p.volume.top, &p.volume.near,
+                   &p.volume.far})
+    *e = canonical(*e);
+  return p;
+}
+
+Exact processing_camera_z(const Exact& height) {
+  const Exact fovy = canonical(GiNaC::Pi / 3);
+  return canonical(height / 2 / GiNaC::tan(fovy / 2));
+}
 
 ProjectionSpec read_projection(GivenReader& r, const Conventions& c) {
   const int count = r.has("perspective") + r.has("frustum") + r.has("ortho");

@@ -58,6 +58,13 @@ struct ProjectionSpec {
 // Reads whichever of perspective / frustum / ortho is given (exactly one), checking the
 // domain: near > 0 for a perspective, near ≠ far, fovy in (0°, 180°), aspect > 0, l ≠ r, b ≠ t.
 ProjectionSpec read_projection(GivenReader& r, const Conventions& c);
+// A perspective from its four numbers (fovy in radians), its volume's bounds canonical.
+ProjectionSpec perspective_projection(const Exact& fovy, const Exact& aspect, const Exact& near,
+                                      const Exact& far);
+// Processing's default camera distance for a sketch `height` pixels high: cameraZ =
+// (height/2)/tan(fovy/2) with Processing's fovy = 60° (camera() and perspective() with no
+// arguments; near = cameraZ/10, far = 10·cameraZ).
+Exact processing_camera_z(const Exact& height);
 bool has_projection(const GivenReader& r);
 
 // The projection matrix (column form) with its derivation steps in the conventions, called
