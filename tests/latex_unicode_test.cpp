@@ -18,7 +18,7 @@ namespace {
 
 TEST(LatexUnicode, ReadsTheNotationsOfTheDerivations) {
   EXPECT_EQ(unicode_of_latex("\\mathbf{a}\\cdot\\mathbf{b} = a_x b_y"), "a·b = aₓ b_y");
-  EXPECT_EQ(unicode_of_latex("\\mathbf{n}\\times\\mathbf{p}_0"), "n×p₀");
+  EXPECT_EQ(unicode_of_latex("\\mathbf{n}\\times\\mathbf{p}_0"), "n × p₀");
   EXPECT_EQ(unicode_of_latex("\\frac{x + 1}{2}\\cdot\\text{width}"), "(x + 1)/2·width");
   EXPECT_EQ(unicode_of_latex("\\frac{d}{c}"), "d/c");
   EXPECT_EQ(unicode_of_latex("x_{\\text{ndc}} = \\frac{x'}{w'}"), "x_ndc = x′/w′");
@@ -28,6 +28,29 @@ TEST(LatexUnicode, ReadsTheNotationsOfTheDerivations) {
   EXPECT_EQ(unicode_of_latex("30^\\circ \\le \\theta \\le \\pi"), "30° ≤ θ ≤ π");
   EXPECT_EQ(unicode_of_latex("\\text{edge-on}"), "edge-on");  // text keeps its hyphen
   EXPECT_EQ(unicode_of_latex("\\unknown{x}"), "\\unknownx");  // kept, never dropped silently
+  // Named functions: a space before a bare argument, a fraction argument in parentheses.
+  EXPECT_EQ(unicode_of_latex("\\sin\\theta = \\cos 30^\\circ"), "sin θ = cos 30°");
+  EXPECT_EQ(unicode_of_latex("t = n\\tan\\frac{\\text{fovy}}{2}"), "t = n tan(fovy/2)");
+  EXPECT_EQ(unicode_of_latex("\\operatorname{sign} E_{AB}"), "sign E_AB");
+  // A thin space between two factors is a product; after a quantifier it is a space.
+  EXPECT_EQ(unicode_of_latex("z = \\frac{d - a\\,x}{c}"), "z = (d − a·x)/c");
+  EXPECT_EQ(unicode_of_latex("\\le 0 \\quad \\forall\\, \\mathbf{v}"), "≤ 0  ∀ v");
+  // Parentheses where a one-line fraction needs them, and only there.
+  EXPECT_EQ(unicode_of_latex("\\frac{\\text{height}/2}{\\tan 30^\\circ}"), "(height/2)/(tan 30°)");
+  EXPECT_EQ(unicode_of_latex("\\frac{(y - y_0)(x_1 - x_0)}{y_1 - y_0}"),
+            "(y − y₀)(x₁ − x₀)/(y₁ − y₀)");
+  EXPECT_EQ(unicode_of_latex("\\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
+                             "\\lVert\\mathbf{b}\\rVert}"),
+            "a·b/(‖a‖ ‖b‖)");
+  EXPECT_EQ(unicode_of_latex("\\frac{(x, y)}{w} = \\frac{x}{-z}"), "(x, y)/w = x/(−z)");
+  EXPECT_EQ(unicode_of_latex("\\sqrt{n_x^2 + 1} \\ne \\sqrt{2}"), "√(nₓ² + 1) ≠ √2");
+  // Indices, sums, matrices, transposes.
+  EXPECT_EQ(unicode_of_latex("\\sum_i \\mathbf{p}_{i+1},\\; \\mathbf{p}_{n-1}"),
+            "Σᵢ pᵢ₊₁,  p_(n−1)");
+  EXPECT_EQ(unicode_of_latex("R = \\begin{bmatrix} c & -s \\\\ s & c \\end{bmatrix}"),
+            "R = [c, −s; s, c]");
+  EXPECT_EQ(unicode_of_latex("(x, y)^{\\mathsf{T}}"), "(x, y)ᵀ");
+  EXPECT_EQ(unicode_of_latex("\\times\\;"), "× ");  // a mark, not an operator
   const MathText t = tex("\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0");
   EXPECT_EQ(t.unicode, "v = p_eye − p₀");
   EXPECT_EQ(t.latex, "\\mathbf{v} = \\mathbf{p}_{\\text{eye}} - \\mathbf{p}_0");

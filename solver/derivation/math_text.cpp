@@ -24,11 +24,29 @@ MathText operator+(MathText a, const MathText& b) { return a += b; }
 
 MathText math(std::string_view both) { return {std::string(both), std::string(both)}; }
 
-MathText math(std::string_view unicode, std::string_view latex) {
+namespace {
+
+// The two notations written separately: only for the builders below, whose pieces (a matrix's
+// brackets and separators) are not formulas of their own.
+MathText math_pair(std::string_view unicode, std::string_view latex) {
   return {std::string(unicode), std::string(latex)};
 }
 
+}  // namespace
+
+MathText math(std::string_view unicode, std::string_view latex) {
+  return math_pair(unicode, latex);
+}
+
 MathText tex(std::string_view latex) { return {unicode_of_latex(latex), std::string(latex)}; }
+
+MathText frac(const MathText& numerator, const MathText& denominator) {
+  MathText m{fraction_unicode(numerator.unicode, denominator.unicode),
+             "\\frac{" + numerator.latex + "}{" + denominator.latex + "}"};
+  m += MathText{"", "", numerator.words};
+  m += MathText{"", "", denominator.words};
+  return m;
+}
 
 std::string latex_text(std::string_view text) {
   std::string out;
@@ -71,8 +89,8 @@ MathText word(const Phrase& phrase) { return word(Said(phrase)); }
 MathText counts(const std::vector<std::pair<long, std::string>>& items) {
   MathText m;
   for (const auto& [n, what] : items)
-    m += (m.empty() ? MathText{} : math(", ", ",\\; ")) +
-         math(std::to_string(n) + " ", std::to_string(n) + "\\,") +
+    m += (m.empty() ? MathText{} : math_pair(", ", ",\\; ")) +
+         math_pair(std::to_string(n) + " ", std::to_string(n) + "\\,") +
          word(words::vocabulary_word(what));
   return m;
 }
@@ -149,11 +167,11 @@ MathText exact(const Exact& e, bool with_approx) {
 }
 
 MathText number(double v) {
-  return math(unicode_minus(format_double(v)), latex_decimal(format_double(v)));
+  return math_pair(unicode_minus(format_double(v)), latex_decimal(format_double(v)));
 }
 
 MathText long_number(long double v) {
-  return math(unicode_minus(format_long_double(v)), latex_decimal(format_long_double(v)));
+  return math_pair(unicode_minus(format_long_double(v)), latex_decimal(format_long_double(v)));
 }
 
 MathText vec(const std::vector<Exact>& v, bool with_approx) {
@@ -179,10 +197,10 @@ MathText vec(const std::vector<Exact>& v, bool with_approx) {
   const std::string open = breakable ? "\\bigl(" : "\\left(";
   const std::string close = breakable ? "\\bigr)" : "\\right)";
   const std::string comma = breakable ? ", \\allowbreak " : ", ";
-  MathText m = math("(", open);
+  MathText m = math_pair("(", open);
   for (std::size_t i = 0; i < entries.size(); ++i)
-    m += (i ? math(", ", comma) : math("")) + entries[i];
-  m += math(")", close);
+    m += (i ? math_pair(", ", comma) : math("")) + entries[i];
+  m += math_pair(")", close);
   if (with_approx && any_approx) {
     std::string d = "(", dl = open;
     for (std::size_t i = 0; i < v.size(); ++i) {
@@ -190,7 +208,7 @@ MathText vec(const std::vector<Exact>& v, bool with_approx) {
       d += format_exact_approx(v[i]);
       dl += latex_decimal(format_exact_approx(v[i]));
     }
-    m += math(" ≈ " + unicode_minus(d + ")"), " \\approx " + dl + close);
+    m += math_pair(" ≈ " + unicode_minus(d + ")"), " \\approx " + dl + close);
   }
   return m;
 }
@@ -209,12 +227,12 @@ MathText tuple_of(const std::vector<MathText>& entries) {
 }
 
 MathText matrix_of(const std::vector<MathText>& entries, std::size_t cols) {
-  MathText m = math("[", "\\begin{bmatrix}");
+  MathText m = math_pair("[", "\\begin{bmatrix}");
   for (std::size_t k = 0; k < entries.size(); ++k) {
-    if (k > 0) m += cols > 0 && k % cols == 0 ? math("; ", " \\\\ ") : math(", ", " & ");
+    if (k > 0) m += cols > 0 && k % cols == 0 ? math_pair("; ", " \\\\ ") : math_pair(", ", " & ");
     m += entries[k];
   }
-  m += math("]", "\\end{bmatrix}");
+  m += math_pair("]", "\\end{bmatrix}");
   return m;
 }
 
@@ -236,7 +254,8 @@ MathText linear_expression(const std::vector<std::pair<Exact, std::string>>& ter
       if (sum) m += tex("\\left(");
       m += exact(mag);
       if (sum) m += tex("\\right)");
-      if (!name.empty() && !sum && !GiNaC::is_a<GiNaC::numeric>(mag)) m += math("·", " \\cdot ");
+      if (!name.empty() && !sum && !GiNaC::is_a<GiNaC::numeric>(mag))
+        m += math_pair("·", " \\cdot ");
     }
     m += math(name);
     first = false;

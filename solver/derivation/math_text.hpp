@@ -25,13 +25,18 @@ struct MathText {
 
 MathText operator+(MathText a, const MathText& b);
 
-// Literal text, the same in both notations or given in each.
+// Literal text, the same in both notations (a number, a name written plainly).
 MathText math(std::string_view both);
-MathText math(std::string_view unicode, std::string_view latex);
+MathText math(std::string_view unicode, std::string_view latex);  // TEMPORARY: being removed
 // A formula written once, in LaTeX: its Unicode is read from it (latex_unicode.hpp), so the two
-// cannot drift apart. math(unicode, latex) stays for the pieces of a formula around a value
-// (an open \frac{, a closing brace) and where the two notations say different things.
+// cannot drift apart. Pieces around values are joined with + and frac(); only this file's
+// builders (vectors, matrices, counts) write the two notations separately, through
+// math_pair().
 MathText tex(std::string_view latex);
+
+// A fraction of two pieces already written (values, or formulas around them): \frac{a}{b} in
+// LaTeX, a/b on one line with the parentheses that reading needs ((a + b)/c, d/(a·z)).
+MathText frac(const MathText& numerator, const MathText& denominator);
 
 // Words inside mathematics ("yes", "front", "background"): Unicode as written, LaTeX as
 // \text{…} with LaTeX's special characters escaped; translated by the formatters.
