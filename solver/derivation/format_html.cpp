@@ -122,13 +122,13 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup mar
     out += fmt::format("<li{}><b>{}</b>", cls, svg_escape(s.title.in(lang)));
     // A long line is set as breakable inline math in display style, within the page.
     const auto block = [&](const MathText& m) {
-      return long_math(m) ? html_math(math("", "\\displaystyle ") + m, lang, false, markup)
+      return long_math(m) ? html_math(tex("\\displaystyle ") + m, lang, false, markup)
                           : html_math(m, lang, true, markup);
     };
     for (const MathText* m : {&s.formula, &s.substitution})
       if (!m->empty()) out += "<div class=\"math\">" + block(*m) + "</div>";
     if (!s.result.empty())
-      out += "<div class=\"math result\">" + block(math("⇒ ", "\\Rightarrow\\; ") + s.result) +
+      out += "<div class=\"math result\">" + block(tex("\\Rightarrow\\;") + s.result) +
              "</div>";
     if (!s.note.empty())
       out += fmt::format("<div class=\"note\">{}</div>", svg_escape(s.note.in(lang)));

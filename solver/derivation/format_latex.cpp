@@ -40,7 +40,7 @@ std::string steps_latex(const std::vector<Step>& steps, Lang lang) {
            prose(s.title.in(lang)) + "}\n";
     for (const MathText* m : {&s.formula, &s.substitution})
       if (!m->empty()) out += display(*m, lang);
-    if (!s.result.empty()) out += display(math("⇒ ", "\\Rightarrow\\; ") + s.result, lang);
+    if (!s.result.empty()) out += display(tex("\\Rightarrow\\;") + s.result, lang);
     if (!s.note.empty()) out += "{\\small " + prose(s.note.in(lang)) + "}\n";
   }
   return out + "\\end{enumerate}\n";

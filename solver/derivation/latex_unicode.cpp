@@ -28,8 +28,10 @@ constexpr std::string_view kFunctions[] = {"sin",    "cos", "tan", "arccos", "ar
                                            "arctan", "min", "max", "sign"};
 // Commands that only typeset their argument differently (bold, upright, sans-serif, a binary
 // operator's spacing): the Unicode is the argument.
-constexpr std::string_view kStyles[] = {"mathbf", "mathrm",  "mathsf",
-                                        "mathit", "mathbin", "boldsymbol"};
+// \overrightarrow{AB}, the vector from A to B, is written AB on one line, as bold is dropped;
+// \mathord{\times} is a × that is a mark, not an operator.
+constexpr std::string_view kStyles[] = {"mathbf",  "mathrm",     "mathsf",         "mathit",
+                                        "mathbin", "boldsymbol", "overrightarrow", "mathord"};
 // Subscripts and superscripts Unicode has a character for.
 constexpr std::pair<std::string_view, std::string_view> kSubscripts[] = {
     {"0", "₀"}, {"1", "₁"}, {"2", "₂"}, {"3", "₃"}, {"4", "₄"}, {"5", "₅"}, {"6", "₆"},
@@ -97,8 +99,18 @@ bool holds_outside_brackets(std::string_view t, std::initializer_list<std::strin
 // be read wrongly: a sum, a product written with a space, a quotient; below the bar (and
 // under a root) also a product written with · or ×.
 std::string operand(std::string_view t, bool below) {
-  const bool wrap = below ? holds_outside_brackets(t, {" ", "+", "−", "-", "/", "·", "×"})
-                          : holds_outside_brackets(t, {" ", "+", "−", "-", "/"});
+  constexpr std::string_view kMinus = "−";
+  bool wrap = false;
+  if (below) {
+    // A number times a root (3√6) is a product too.
+    const std::string_view after_first = t.empty() ? t : t.substr(characters(t).front().size());
+    wrap = holds_outside_brackets(t, {" ", "+", "−", "-", "/", "·", "×"}) ||
+           holds_outside_brackets(after_first, {"√"});
+  } else {
+    // A leading minus needs no parentheses above the bar: −6/x is (−6)/x.
+    const std::string_view rest = t.substr(t.rfind(kMinus, 0) == 0 ? kMinus.size() : 0);
+    wrap = holds_outside_brackets(rest, {" ", "+", "−", "-", "/"});
+  }
   return wrap ? "(" + std::string(t) + ")" : std::string(t);
 }
 

@@ -201,10 +201,8 @@ struct Barycentric {
     if (steps)
       steps
           ->add(say(kEdgeFunctions),
-                math("E_BC(xₛ, yₛ), E_CA(xₛ, yₛ), E_AB(xₛ, yₛ);  E_PQ(x, y) = (x_Q − x_P)(y − "
-                     "y_P) − (y_Q − y_P)(x − x_P)",
-                     "E_{BC}(x_S, y_S),\\; E_{CA}(x_S, y_S),\\; E_{AB}(x_S, y_S),\\quad "
-                     "E_{PQ}(x, y) = (x_Q - x_P)(y - y_P) - (y_Q - y_P)(x - x_P)"),
+                tex("E_{BC}(x_S, y_S),\\; E_{CA}(x_S, y_S),\\; E_{AB}(x_S, y_S);\\quad "
+                    "E_{PQ}(x, y) = (x_Q - x_P)(y - y_P) - (y_Q - y_P)(x - x_P)"),
                 {}, vec(e))
           .yields("edges");
     out.set("total", Value::scalar(t));
@@ -219,8 +217,7 @@ struct Barycentric {
     if (steps)
       steps
           ->add(say(kBarycentricCoordinates),
-                math("λ₀ = E_BC / E_AB(C), λ₁ = E_CA / E_AB(C), λ₂ = E_AB / E_AB(C)",
-                     "\\lambda_0 = \\frac{E_{BC}}{E_{AB}(C)},\\; \\lambda_1 = "
+                tex("\\lambda_0 = \\frac{E_{BC}}{E_{AB}(C)},\\; \\lambda_1 = "
                      "\\frac{E_{CA}}{E_{AB}(C)},\\; \\lambda_2 = \\frac{E_{AB}}{E_{AB}(C)}"),
                 {}, vec(lambda, true))
           .yields("lambda");
@@ -233,10 +230,9 @@ struct Barycentric {
     if (steps)
       steps
           ->add(say(kDepthByInterpolation),
-                math("z = λ₀z_A + λ₁z_B + λ₂z_C",
-                     "z_S = \\lambda_0 z_A + \\lambda_1 z_B + "
+                tex("z_S = \\lambda_0 z_A + \\lambda_1 z_B + "
                      "\\lambda_2 z_C"),
-                {}, math("z = ", "z_S = ") + exact(z, true))
+                {}, tex("z_S = ") + exact(z, true))
           .yields("z");
     return out;
   }

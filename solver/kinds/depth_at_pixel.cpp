@@ -347,8 +347,7 @@ struct DepthAtPixel {
     if (steps)
       steps
           ->add(say(kPlaneThroughA),
-                math("n̂·(p − A) = 0",
-                     "\\hat{\\mathbf{n}}\\cdot(\\mathbf{p} - \\overrightarrow{OA}) = 0"),
+                tex("\\hat{\\mathbf{n}}\\cdot(\\mathbf{p} - \\overrightarrow{OA}) = 0"),
                 vec(u) + tex("\\cdot") + offset_point(A) + math(" = 0"), pv.display)
           .yields("plane");
     const Exact& a = plane[0];
@@ -360,9 +359,9 @@ struct DepthAtPixel {
     if (steps) {
       steps
           ->add(say(kDepthAtPixel),
-                math("z = (d − a·xₛ − b·yₛ) / c", "z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
+                tex("z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
                 linear_equation({{a * g.pixel(0), ""}, {b * g.pixel(1), ""}, {c, "z"}}, plane[3]),
-                math("z = ", "z_S = ") + exact(z, true))
+                tex("z_S = ") + exact(z, true))
           .yields("z");
       const DepthCondition cond =
           depth_condition(to_double(g.triangle[0]), to_double(g.triangle[1]),

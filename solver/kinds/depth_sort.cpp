@@ -317,18 +317,18 @@ struct DepthSort {
     MathText lines;
     for (std::size_t k = 0; k < n; ++k)
       lines += (k ? sep : MathText{}) +
-               math(fmt::format("g{} = ", k), fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
+               tex(fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
                vec(res.centroids[k]);
     steps
         ->add(say(kCentroids),
-              math("g = (p₀ + p₁ + ⋯ + p_{n−1}) / n",
-                   "\\mathbf{g} = \\frac{1}{n}(\\mathbf{p}_0 + \\cdots + \\mathbf{p}_{n-1})"),
+              tex("\\mathbf{g} = \\frac{\\mathbf{p}_0 + \\mathbf{p}_1 + \\cdots + "
+                  "\\mathbf{p}_{n-1}}{n}"),
               {}, lines)
         .yields("centroids");
     MathText depths;
     for (std::size_t k = 0; k < n; ++k)
       depths += (k ? sep : MathText{}) +
-                math(fmt::format("depth{} = ", k), fmt::format("\\text{{depth}}_{{{}}} = ", k)) +
+                tex(fmt::format("\\text{{depth}}_{{{}}} = ", k)) +
                 exact(res.depths[k], true);
     if (g.viewer.eye)
       steps

@@ -355,15 +355,14 @@ struct EdgeVisibility {
       for (std::vector<int>& f : mesh.faces) std::reverse(f.begin(), f.end());
     if (steps) {
       Said order;
-      std::string product, product_latex;
+      std::string product;
       for (std::size_t i = 0; i < g.transform.size(); ++i) {
         if (i) order.append(Said::verbatim("; "));
         order.append(say(kStepTitle, i + 1, g.transform[i].heading));
-        product = fmt::format("A{}", i + 1) + (i ? "·" : "") + product;
-        product_latex = fmt::format("A_{{{}}}", i + 1) + product_latex;
+        product = fmt::format("A_{{{}}}", i + 1) + (i ? "\\," : "") + product;
       }
       order.append(Said::verbatim("."));
-      Step& s = steps->add(say(kTransformTheSolid), math("M = " + product, "M = " + product_latex),
+      Step& s = steps->add(say(kTransformTheSolid), tex("M = " + product),
                            {}, math("M = ") + matrix_text(m));
       s.note = order + say(kEveryVertexMoves);
       if (det < 0) s.note += say(kDetMirrors);
@@ -403,16 +402,11 @@ struct EdgeVisibility {
     if (steps)
       steps
           ->add(say(kClosedAndOriented), tex("V - E + F"), {},
-                math(fmt::format("{} − {} + {} = {}", mesh.vertices.size(), check.edges.size(),
-                                 mesh.faces.size(),
-                                 static_cast<long>(mesh.vertices.size()) -
-                                     static_cast<long>(check.edges.size()) +
-                                     static_cast<long>(mesh.faces.size())),
-                     fmt::format("{} - {} + {} = {}", mesh.vertices.size(), check.edges.size(),
-                                 mesh.faces.size(),
-                                 static_cast<long>(mesh.vertices.size()) -
-                                     static_cast<long>(check.edges.size()) +
-                                     static_cast<long>(mesh.faces.size()))))
+                tex(fmt::format("{} - {} + {} = {}", mesh.vertices.size(), check.edges.size(),
+                                mesh.faces.size(),
+                                static_cast<long>(mesh.vertices.size()) -
+                                    static_cast<long>(check.edges.size()) +
+                                    static_cast<long>(mesh.faces.size()))))
           .note = say(kEveryEdgeJoinsTwo);
 
     // Front or back per face (seed 003).
@@ -512,8 +506,7 @@ struct EdgeVisibility {
           say(kDrawingOnlyThese);
       steps
           ->add(say(kConvexQ),
-                math("n_f·(v − p_f) ≤ 0  ∀ v, f",
-                     "\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\quad "
+                tex("\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\quad "
                      "\\forall\\, \\mathbf{v}, f"),
                 {}, word(convex ? words::kConvex : words::kNotConvex))
           .yields("convex")

@@ -289,27 +289,21 @@ struct Render {
       Step& s = steps->add(
           say(kPixelAt, fmt::format("({}, {})", q[0], q[1])),
           tex("Z = 1\\ (") + word(kCleared) + tex("),\\; F = ") + word(words::kBackground) +
-              math(" " + color_text(scene.background), "\\ " + color_text(scene.background)),
+              tex("\\ " + color_text(scene.background)),
           {},
           word(kColour) +
-              math(" " + color_text(t.color) + ", ", "\\ " + color_text(t.color) + ",\\; ") +
+              tex("\\ " + color_text(t.color) + ",\\; ") +
               word(words::kDepth) +
-              math(" " + depth_text(t.depth) + "  (", "\\ " + depth_text(t.depth) + "\\quad (") +
+              tex("\\ " + depth_text(t.depth) + "\\quad (") +
               winner_word + math(")"));
       s.note = trace;
     }
-    std::string shown, shown_latex;
-    for (int r = 0; r < pixels.rows; ++r) {
-      const std::string row =
-          fmt::format("{}, {}, {}, {:.7g}", pixels.numbers[4 * r], pixels.numbers[4 * r + 1],
-                      pixels.numbers[4 * r + 2], pixels.numbers[4 * r + 3]);
-      shown += (r ? "; " : "") + row;
-      shown_latex +=
-          (r ? " \\\\ " : "") + fmt::format("{} & {} & {} & {:.7g}", pixels.numbers[4 * r],
-                                            pixels.numbers[4 * r + 1], pixels.numbers[4 * r + 2],
-                                            pixels.numbers[4 * r + 3]);
-    }
-    pixels.display = math("[" + shown + "]", "\\begin{bmatrix}" + shown_latex + "\\end{bmatrix}");
+    std::vector<MathText> shown;
+    for (int r = 0; r < pixels.rows; ++r)
+      for (int k = 0; k < 4; ++k)
+        shown.push_back(math(k < 3 ? fmt::format("{}", pixels.numbers[4 * r + k])
+                                   : fmt::format("{:.7g}", pixels.numbers[4 * r + k])));
+    pixels.display = matrix_of(shown, 4);
     color_rows = Value::matrix(colors);
     depth = Value::vector(depths);
     Answers out;

@@ -142,31 +142,26 @@ struct ScanConvert {
         const Phrase& cls = e.top ? kTopEdge : e.left ? kLeftEdge : kBottomOrRightEdge;
         steps
             ->add(say(kEdgeFunction, "E_" + from + to),
-                  math("E(x, y) = (x_" + to + " − x_" + from + ")(y − y_" + from + ") − (y_" + to +
-                           " − y_" + from + ")(x − x_" + from + ")",
-                       "E_{" + from + to + "}(x, y) = (x_" + to + " - x_" + from + ")(y - y_" +
-                           from + ") - (y_" + to + " - y_" + from + ")(x - x_" + from + ")"),
+                  tex("E_{" + from + to + "}(x, y) = (x_" + to + " - x_" + from + ")(y - y_" +
+                      from + ") - (y_" + to + " - y_" + from + ")(x - x_" + from + ")"),
                   {},
-                  math("E_" + from + to + "(x, y) = ", "E_{" + from + to + "}(x, y) = ") +
+                  tex("E_{" + from + to + "}(x, y) = ") +
                       linear_expression(
                           {{pixels_of(e.a), "x"}, {pixels_of(e.b), "y"}, {pixels_of(e.c, 2), ""}}))
             .note = say(cls);
       }
       steps
           ->add(say(kBoundingBox), {}, {},
-                math("i = " + std::to_string(t.i_min) + " … " + std::to_string(t.i_max) +
-                         ",  j = " + std::to_string(t.j_min) + " … " + std::to_string(t.j_max),
-                     std::to_string(t.i_min) + " \\le i \\le " + std::to_string(t.i_max) + ",\\; " +
-                         std::to_string(t.j_min) + " \\le j \\le " + std::to_string(t.j_max)))
+                tex(std::to_string(t.i_min) + " \\le i \\le " + std::to_string(t.i_max) + ",\\; " +
+                    std::to_string(t.j_min) + " \\le j \\le " + std::to_string(t.j_max)))
           .note = say(kPixelCovered);
       std::map<int, std::string> rows;
       for (const Fragment& f : frags)
         rows[f.j] += (rows[f.j].empty() ? "" : ", ") + std::to_string(f.i);
       MathText text;
       for (const auto& [j, is] : rows)
-        text += (text.empty() ? MathText{} : math(";  ", ";\\quad ")) +
-                math("j = " + std::to_string(j) + ": i = " + is,
-                     "j = " + std::to_string(j) + "\\colon i = " + is);
+        text += (text.empty() ? MathText{} : tex(";\\quad")) +
+                tex("j = " + std::to_string(j) + "\\colon i = " + is);
       steps->add(say(kCoveredPixelsByRow), {}, {}, text.empty() ? word(words::kNone) : text)
           .yields("pixels")
           .note = say(kPixelsCovered, frags.size());

@@ -284,15 +284,14 @@ struct Scanline {
 
     MathText found;
     for (const Section& s : ss)
-      found += math(found.empty() ? "" : ",  ", found.empty() ? "" : ",\\quad ") +
+      found += tex(found.empty() ? "" : ",\\quad") +
                math(g.polygons[s.polygon].label + ": ") + tex("x \\in [") + exact(s.x_left) +
                math(", ") + exact(s.x_right) + math("], z: ") + exact(s.z_left) + tex(" \\to ") +
                exact(s.z_right);
     steps
         ->add(say(kSections),
-              math("x = x₀ + (y − y₀)(x₁ − x₀)/(y₁ − y₀),  z = z₀ + (y − y₀)(z₁ − z₀)/(y₁ − y₀)",
-                   "x = x_0 + \\frac{(y - y_0)(x_1 - x_0)}{y_1 - y_0},\\quad z = z_0 + "
-                   "\\frac{(y - y_0)(z_1 - z_0)}{y_1 - y_0}"),
+              tex("x = x_0 + \\frac{(y - y_0)(x_1 - x_0)}{y_1 - y_0},\\quad z = z_0 + "
+                  "\\frac{(y - y_0)(z_1 - z_0)}{y_1 - y_0}"),
               math("y = ") + exact(g.y), found)
         .yields("spans")
         .note = say(kSectionEnds);
@@ -301,16 +300,14 @@ struct Scanline {
       const std::string& a = g.polygons[c.a].label;
       const std::string& b = g.polygons[c.b].label;
       where +=
-          math(where.empty() ? "" : ",  ", where.empty() ? "" : ",\\quad ") +
-          math(fmt::format("z_{}(x) = z_{}(x) ⇒ x = ", a, b),
-               fmt::format("z_{{\\mathrm{{{}}}}}(x) = z_{{\\mathrm{{{}}}}}(x) \\Rightarrow x = ", a,
-                           b)) +
+          tex(where.empty() ? "" : ",\\quad") +
+          tex(fmt::format("z_{{\\mathrm{{{}}}}}(x) = z_{{\\mathrm{{{}}}}}(x) \\Rightarrow x = ", a, b)) +
           exact(c.x);
     }
     if (!crossings.empty()) steps->add(say(kDepthsCross), math("z_a(x) = z_b(x)"), {}, where);
     MathText shown;
     for (const Piece& p : ps)
-      shown += math(shown.empty() ? "" : ",  ", shown.empty() ? "" : ",\\quad ") + math("[") +
+      shown += tex(shown.empty() ? "" : ",\\quad") + math("[") +
                exact(p.from) + math(", ") + exact(p.to) + math("]: ") +
                (p.label == kBackground ? word(words::kBackground) : math(p.label));
     steps->add(say(kNearestOnEachPiece), word(words::kVisible) + tex(": \\min z"), {}, shown)

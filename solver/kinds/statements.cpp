@@ -125,8 +125,7 @@ struct Statements {
   }
 
   static MathText mark(bool truth) {
-    return truth ? math("○ ", "\\bigcirc\\; ") + word(kTrue)
-                 : math("× ", "\\times\\; ") + word(kFalse);
+    return truth ? tex("\\bigcirc\\;") + word(kTrue) : tex("\\mathord{\\times}\\;") + word(kFalse);
   }
 
   static Answers solve(const Given& g, Derivation* steps) {
@@ -136,10 +135,9 @@ struct Statements {
       const Statement& s = g.statements[i];
       const std::string number = std::to_string(i + 1);
       entries.emplace_back(number, s.truth ? "true" : "false");
-      const MathText sep = key.empty() ? MathText{} : math(", ", ",\\; ");
-      key += sep + math(number + (s.truth ? " ○" : " ×"),
-                        number + (s.truth ? "\\,\\bigcirc" : "\\,\\times"));
-      if (s.truth) chosen += (chosen.empty() ? MathText{} : math(", ", ",\\; ")) + math(number);
+      const MathText sep = key.empty() ? MathText{} : tex(",\\;");
+      key += sep + tex(number + (s.truth ? "\\,\\bigcirc" : "\\,\\mathord{\\times}"));
+      if (s.truth) chosen += (chosen.empty() ? MathText{} : tex(",\\;")) + math(number);
       if (steps) {
         // The statement and its reason quoted in each language the set gives them in.
         Step& step = steps->add(say(kStatement, number, said(s.text)), {}, {}, mark(s.truth));

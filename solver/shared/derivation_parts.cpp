@@ -294,8 +294,7 @@ void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* 
   if (steps)
     steps
         ->add(say(kind_words::kUnitNormalTitle),
-              math("n̂ = n / ‖n‖,  ‖n‖ = √(nₓ² + n_y² + n_z²)",
-                   "\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
+              tex("\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
                    "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
               tex("\\lVert\\mathbf{n}\\rVert = ") + exact(norm(n), true),
               tex("\\hat{\\mathbf{n}} = ") + vec(u, true))
@@ -344,16 +343,14 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
     if (steps && left_handed)
       steps
           ->add(say(kNewellNormalLeftHanded, p.size()),
-                math("n = −Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
-                     "\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
+                tex("\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
                      "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
                 {}, tex("\\mathbf{n} = ") + vec(n))
           .note = say(kLeftHandedNewellSign);
     else if (steps)
       steps
           ->add(say(kNewellNormal, p.size()),
-                math("n = Σᵢ (pᵢ − p₀) × (pᵢ₊₁ − p₀)",
-                     "\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
+                tex("\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
                      "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
                 {}, tex("\\mathbf{n} = ") + vec(n))
           .note = say(kNewellSumsEveryPair);
@@ -483,15 +480,13 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
     const Vec3<Exact> u = named_edge(order.first, abc), v = named_edge(order.second, abc);
     auto edge_text = [&](const std::string& e, const Vec3<Exact>& value) {
       const std::string from(1, e[0]), to(1, e[1]);
-      return math(e + " = " + to + " − " + from + " = ",
-                  "\\overrightarrow{" + e + "} = " + to + " - " + from + " = ") +
+      return tex("\\overrightarrow{" + e + "} = " + to + " - " + from + " = ") +
              vec(value);
     };
     steps->add(say(kEdgeVectors), {}, {},
                edge_text(order.first, u) + tex(",\\; ") + edge_text(order.second, v));
     steps->add(say(kind_words::kNormalTitle),
-               math("n = " + order.first + " × " + order.second,
-                    "\\mathbf{n} = \\overrightarrow{" + order.first +
+               tex("\\mathbf{n} = \\overrightarrow{" + order.first +
                         "} \\times \\overrightarrow{" + order.second + "}"),
                tex("\\mathbf{n} = ") + vec(u) + tex(" \\times ") + vec(v),
                tex("\\mathbf{n} = ") + vec(n));
@@ -514,8 +509,7 @@ bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
     const auto sign_text = [](int s) { return s > 0 ? math("+") : s < 0 ? tex("-") : math("0"); };
     steps
         ->add(say(kIsPixelInside),
-              math("sign E_AB(xₛ, yₛ), sign E_BC(xₛ, yₛ), sign E_CA(xₛ, yₛ)",
-                   "\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, "
+              tex("\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, "
                    "y_S),\\; "
                    "\\operatorname{sign} E_{CA}(x_S, y_S)"),
               sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
