@@ -69,12 +69,10 @@ MathText coordinates(std::size_t dim, bool upper, bool with_w) {
 // (w·x, w·y[, w·z], w).
 MathText scaled_names(std::size_t dim) {
   static constexpr const char* kLower[] = {"x", "y", "z"};
-  std::string unicode = "(", latex = "(";
-  for (std::size_t i = 0; i < dim; ++i) {
-    unicode += fmt::format("{}w·{}", i ? ", " : "", kLower[i]);
-    latex += fmt::format("{}w\\cdot {}", i ? ", " : "", kLower[i]);
-  }
-  return math(unicode + ", w)", latex + ", w)");
+  std::string latex = "(";
+  for (std::size_t i = 0; i < dim; ++i)
+    latex += fmt::format("{}w\\cdot{{{}}}", i ? ", " : "", kLower[i]);
+  return tex(latex + ", w)");
 }
 
 struct Homogeneous {
@@ -182,14 +180,14 @@ struct Homogeneous {
       MathText substituted = math("(");
       for (std::size_t i = 0; i < dim; ++i) {
         h.push_back(canonical(*g.w * g.point[i]));
-        substituted += math(i ? ", " : "") + exact(*g.w) + math("·", "\\cdot ") + exact(g.point[i]);
+        substituted += math(i ? ", " : "") + exact(*g.w) + tex("\\cdot") + exact(g.point[i]);
       }
       h.push_back(*g.w);
       substituted += math(", ") + exact(*g.w) + math(")");
       if (steps)
         steps
             ->add(say(kHomogeneousCoordinates),
-                  coordinates(dim, false, false) + math(" ≡ ", " \\equiv ") + scaled_names(dim) +
+                  coordinates(dim, false, false) + tex(" \\equiv ") + scaled_names(dim) +
                       tex(",\\ w \\neq 0"),
                   substituted, vec(h))
             .yields("homogeneous");
@@ -208,27 +206,23 @@ struct Homogeneous {
                        math(bracket ? ")" : "");
       }
       substituted += math(")");
-      std::string names = "(";
       std::string latex = "\\left(";
       static constexpr const char* kUpper[] = {"X", "Y", "Z"};
-      for (std::size_t i = 0; i < dim; ++i) {
-        names += fmt::format("{}{}/W", i ? ", " : "", kUpper[i]);
+      for (std::size_t i = 0; i < dim; ++i)
         latex += fmt::format("{}\\frac{{{}}}{{W}}", i ? ", " : "", kUpper[i]);
-      }
       const bool same = same_point(g.point, p);
       if (steps) {
         steps
             ->add(say(kBackToThePoint),
-                  coordinates(dim, true, true) + math(" ↦ ", " \\mapsto ") +
-                      math(names + ")", latex + "\\right)"),
+                  coordinates(dim, true, true) + tex(" \\mapsto " + latex + "\\right)"),
                   substituted, vec(p, true))
             .yields("cartesian");
         Step& step =
             steps
                 ->add(say(kTheSamePoint),
-                      word(kEqualQuotients) + math(" ⇔ ", " \\Leftrightarrow ") +
+                      word(kEqualQuotients) + tex(" \\Leftrightarrow ") +
                           word(kTheSamePointWord),
-                      vec(p) + math(same ? " = " : " ≠ ", same ? " = " : " \\neq ") + vec(g.point),
+                      vec(p) + tex(same ? " = " : " \\neq ") + vec(g.point),
                       word(same ? words::kYes : words::kNo))
                 .yields("same_point");
         if (!same) {

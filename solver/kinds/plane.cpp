@@ -191,9 +191,8 @@ struct Plane {
     if (steps)
       steps
           ->add(say(kPlaneThroughP0),
-                math("n·(p − p₀) = 0  ⇔  n·p = n·p₀",
-                     "\\mathbf{n}\\cdot(\\mathbf{p} - \\mathbf{p}_0) = 0 \\iff "
-                     "\\mathbf{n}\\cdot\\mathbf{p} = \\mathbf{n}\\cdot\\mathbf{p}_0"),
+                tex("\\mathbf{n}\\cdot(\\mathbf{p} - \\mathbf{p}_0) = 0 \\iff "
+                    "\\mathbf{n}\\cdot\\mathbf{p} = \\mathbf{n}\\cdot\\mathbf{p}_0"),
                 plane_equation(n(0), n(1), n(2), d), pv.display)
           .yields("plane");
     const Exact dist = canonical((exact_sign(d) < 0 ? Exact(-d) : d) / len);
@@ -201,9 +200,9 @@ struct Plane {
     if (steps)
       steps
           ->add(say(kDistanceFromOrigin),
-                math("dist = |d| / ‖n‖", "\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
-                math("dist = |", "\\text{dist} = \\frac{\\lvert ") + exact(d) +
-                    math("| / ", " \\rvert}{") + exact(len) + math("", "}"),
+                tex("\\text{dist} = \\frac{|d|}{\\lVert\\mathbf{n}\\rVert}"),
+                tex("\\text{dist} = ") +
+                    frac(tex("\\lvert ") + exact(d) + tex(" \\rvert"), exact(len)),
                 tex("\\text{dist} = ") + exact(dist, true))
           .yields("distance");
     return out;

@@ -103,9 +103,8 @@ struct ProjectionPlane {
     if (steps)
       steps
           ->add(say(kDistanceOfProjectionPlane),
-                math(std::string(toward < 0 ? "s = −" : "s = ") + "(height/2) / tan(fov/2)",
-                     std::string(toward < 0 ? "s = -" : "s = ") +
-                         "\\frac{\\text{height}/2}{\\tan(\\text{fov}/2)}"),
+                tex(std::string(toward < 0 ? "s = -" : "s = ") +
+                    "\\frac{\\text{height}/2}{\\tan(\\text{fov}/2)}"),
                 tex("\\text{height} = ") + exact(g.height) + tex(",\\; \\text{fov} = ") +
                     angle_text(g.fov, g.conventions.angles),
                 math("s = ") + exact(s, true))
@@ -126,9 +125,8 @@ struct ProjectionPlane {
     out.set("projected", Value::vector(p));
     if (steps)
       steps
-          ->add(say(kSimilarTriangles), math("P′ = P · s / z_P", "P' = P \\cdot \\frac{s}{z_P}"),
-                tex("P' = ") + vec(g.point) + math(" · (", " \\cdot \\frac{") + exact(s) +
-                    math(") / (", "}{") + exact(g.point(2)) + math(")", "}"),
+          ->add(say(kSimilarTriangles), tex("P' = P \\cdot \\frac{s}{z_P}"),
+                tex("P' = ") + vec(g.point) + tex(" \\cdot ") + frac(exact(s), exact(g.point(2))),
                 tex("P' = ") + vec(p, true))
           .yields("projected");
     return out;

@@ -299,8 +299,7 @@ struct Vectors {
     if (steps)
       steps
           ->add(say(kDotProduct),
-                math("a·b = aₓbₓ + a_yb_y + a_zb_z",
-                     "\\mathbf{a}\\cdot\\mathbf{b} = a_x b_x + a_y b_y + a_z b_z"),
+                tex("\\mathbf{a}\\cdot\\mathbf{b} = a_x\\,b_x + a_y\\,b_y + a_z\\,b_z"),
                 tex("\\mathbf{a}\\cdot\\mathbf{b} = ") + vec(a) + tex("\\cdot") + vec(b),
                 tex("\\mathbf{a}\\cdot\\mathbf{b} = ") + exact(dot))
           .yields("dot");
@@ -311,12 +310,10 @@ struct Vectors {
     if (steps)
       steps
           ->add(say(kCrossProduct),
-                math("a × b = (a_yb_z − a_zb_y, a_zbₓ − aₓb_z, aₓb_y − a_ybₓ)",
-                     "\\mathbf{a}\\times\\mathbf{b} = (a_y b_z - a_z b_y,\\; a_z b_x - a_x "
-                     "b_z,\\; a_x b_y - a_y b_x)"),
-                math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) + tex(" \\times ") +
-                    vec(b),
-                math("a × b = ", "\\mathbf{a}\\times\\mathbf{b} = ") + vec(cross))
+                tex("\\mathbf{a}\\times\\mathbf{b} = (a_y\\,b_z - a_z\\,b_y,\\; "
+                    "a_z\\,b_x - a_x\\,b_z,\\; a_x\\,b_y - a_y\\,b_x)"),
+                tex("\\mathbf{a}\\times\\mathbf{b} = ") + vec(a) + tex(" \\times ") + vec(b),
+                tex("\\mathbf{a}\\times\\mathbf{b} = ") + vec(cross))
           .yields("cross");
     // The measures by the template the numeric path uses; the steps show them.
     const VectorMeasures<Exact> m = vector_measures<Exact>(a, b, dot, cross);
@@ -326,7 +323,7 @@ struct Vectors {
     if (steps)
       steps
           ->add(say(kAreaOfParallelogram),
-                math("S = ‖a × b‖", "S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"), {},
+                tex("S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"), {},
                 math("S = ") + exact(area, true))
           .yields("area");
     const Exact sin = canonical(m.sin);
@@ -334,12 +331,11 @@ struct Vectors {
     if (steps)
       steps
           ->add(say(kSineOfAngle),
-                math("sin θ = ‖a × b‖ / (‖a‖ ‖b‖)",
-                     "\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} "
-                     "\\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
-                math("sin θ = ", "\\sin\\theta = \\frac{") + exact(area) + math(" / (", "}{") +
-                    exact(len_a) + tex(" \\cdot ") + exact(len_b) + math(")", "}"),
-                math("sin θ = ", "\\sin\\theta = ") + exact(sin, true))
+                tex("\\sin\\theta = \\frac{\\lVert \\mathbf{a}\\times\\mathbf{b} "
+                    "\\rVert}{\\lVert\\mathbf{a}\\rVert \\lVert\\mathbf{b}\\rVert}"),
+                tex("\\sin\\theta = ") +
+                    frac(exact(area), exact(len_a) + tex(" \\cdot ") + exact(len_b)),
+                tex("\\sin\\theta = ") + exact(sin, true))
           .yields("sin");
     const Exact cos = canonical(m.cos);
     out.set("cos", Value::scalar(cos));
@@ -347,12 +343,11 @@ struct Vectors {
       steps
           ->add(
               say(kCosineOfAngle),
-              math("cos θ = a·b / (‖a‖ ‖b‖)",
-                   "\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
-                   "\\lVert\\mathbf{b}\\rVert}"),
-              math("cos θ = ", "\\cos\\theta = \\frac{") + exact(dot) + math(" / (", "}{") +
-                  exact(len_a) + tex(" \\cdot ") + exact(len_b) + math(")", "}"),
-              math("cos θ = ", "\\cos\\theta = ") + exact(cos, true))
+              tex("\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
+                  "\\lVert\\mathbf{b}\\rVert}"),
+              tex("\\cos\\theta = ") +
+                  frac(exact(dot), exact(len_a) + tex(" \\cdot ") + exact(len_b)),
+              tex("\\cos\\theta = ") + exact(cos, true))
           .yields("cos");
     const Exact radians = canonical(exact_acos(cos));
     const Exact angle =
@@ -360,10 +355,9 @@ struct Vectors {
     out.set("angle", Value::scalar(angle));
     if (steps)
       steps
-          ->add(say(kAngle), math("θ = arccos(cos θ)", "\\theta = \\arccos(\\cos\\theta)"), {},
+          ->add(say(kAngle), tex("\\theta = \\arccos(\\cos\\theta)"), {},
                 tex("\\theta = ") + exact(angle, true) +
-                    math(g.angles == AngleUnit::Degrees ? "°" : " rad",
-                         g.angles == AngleUnit::Degrees ? "{}^\\circ" : "\\,\\text{rad}"))
+                    tex(g.angles == AngleUnit::Degrees ? "{}^\\circ" : "\\,\\text{rad}"))
           .yields("angle");
     if (area.is_zero()) {
       out.set("unit_normal", Value::null());
@@ -374,11 +368,9 @@ struct Vectors {
       if (steps)
         steps
             ->add(say(kUnitNormalOfPlane),
-                  math("n = (a × b) / ‖a × b‖",
-                       "\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert "
-                       "\\mathbf{a}\\times\\mathbf{b} \\rVert}"),
-                  math("n = ", "\\mathbf{n} = \\frac{") + vec(cross) + math(" / ", "}{") +
-                      exact(area) + math("", "}"),
+                  tex("\\mathbf{n} = \\frac{\\mathbf{a}\\times\\mathbf{b}}{\\lVert "
+                      "\\mathbf{a}\\times\\mathbf{b} \\rVert}"),
+                  tex("\\mathbf{n} = ") + frac(vec(cross), exact(area)),
                   tex("\\mathbf{n} = ") + vec(n, true))
             .yields("unit_normal");
     }
