@@ -297,6 +297,13 @@ class Reader {
       skip_spaces();
       return;
     }
+    if (name == "cdot") {  // as tight on the right as on the left: a·b, a · b
+      const bool spaced = !out.empty() && out.back() == ' ';
+      trim_right(out);
+      out += spaced ? " · " : "·";
+      skip_spaces();
+      return;
+    }
     if (name == "quad" || name == "qquad") {  // a wide space, whatever spaces stand around it
       trim_right(out);
       out += name == "quad" ? "  " : "    ";
