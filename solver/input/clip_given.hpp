@@ -100,8 +100,9 @@ MathText box_text(const ClipBox<Exact, N>& b) {
   MathText m;
   for (int a = 0; a < N; ++a) {
     const std::string x = axis_name(a);
-    m += math(a ? ",  " : "", a ? ",\\; " : "") + math(x + "min = ", x + "_{\\min} = ") +
-         exact(b.lo(a)) + math(",  " + x + "max = ", ",\\; " + x + "_{\\max} = ") + exact(b.hi(a));
+    if (a) m += tex(",\\; ");
+    m +=
+        tex(x + "_{\\min} = ") + exact(b.lo(a)) + tex(",\\; " + x + "_{\\max} = ") + exact(b.hi(a));
   }
   return m;
 }

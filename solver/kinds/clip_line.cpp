@@ -197,14 +197,13 @@ struct ClipLine {
       steps->add(g.region.title(), {}, {}, clip_given::box_text(box)).note = bits_legend(N);
       const auto code = [](unsigned c) {
         const std::string bits = outcode_string(c, N);
-        return math(bits, "\\mathtt{" + bits + "}");
+        return tex("\\mathsf{" + bits + "}");
       };
       const auto outcode_of = [&](const std::string& who, bool moved = false) {
-        return math("outcode(" + who + (moved ? "′)" : ")"),
-                    "\\operatorname{outcode}(" + who + (moved ? "')" : ")"));
+        return tex("\\operatorname{outcode}(" + who + (moved ? "')" : ")"));
       };
-      const MathText op_or = math(" OR ", " \\mathbin{\\mathrm{OR}} "),
-                     op_and = math(" AND ", " \\mathbin{\\mathrm{AND}} ");
+      const MathText op_or = tex(" \\mathbin{\\mathrm{OR}} "),
+                     op_and = tex(" \\mathbin{\\mathrm{AND}} ");
       steps
           ->add(say(kOutcodeOfP), {}, math("p = ") + vec(g.p),
                 outcode_of("p") + math(" = ") + code(r.code_p))
@@ -237,28 +236,24 @@ struct ClipLine {
         const bool high = it.bit == outcode_bit(axis, true);
         const std::string x = axis_name(axis);
         const std::string bound_name = x + (high ? "max" : "min");
-        const MathText bound =
-            math(x + "_" + (high ? "max" : "min"), x + "_{\\" + (high ? "max" : "min") + "}");
+        const MathText bound = tex(x + "_{\\" + (high ? "max" : "min") + "}");
         const std::string who = it.endpoint == 0 ? "p" : "q", other = it.endpoint == 0 ? "q" : "p";
         const V& a = ends[static_cast<std::size_t>(it.endpoint)];
         const V& b = ends[static_cast<std::size_t>(1 - it.endpoint)];
         const Exact bound_value = high ? box.hi(axis) : box.lo(axis);
         const Exact t = canonical((bound_value - a(axis)) / (b(axis) - a(axis)));
         steps
-            ->add(
-                say(kIteration, ++n, who, outcode_string(it.code_before, N), bound_name,
-                    outcode_string(it.bit, N), x + " = " + bound_name),
-                math("t = (", "t = \\frac{") + bound +
-                    math(" − " + who + "_" + x + ") / (" + other + "_" + x + " − " + who + "_" + x +
-                             "),  " + who + "′ = " + who + " + t·(" + other + " − " + who + ")",
-                         " - " + who + "_" + x + "}{" + other + "_" + x + " - " + who + "_" + x +
-                             "},\\; " + who + "' = " + who + " + t\\,(" + other + " - " + who +
-                             ")"),
-                math(who + " = ") + vec(a) + math(",  " + other + " = ", ",\\; " + other + " = ") +
-                    vec(b) + tex(",\\; ") + bound + math(" = ") + exact(bound_value) +
-                    tex(",\\; t = ") + exact(t, true),
-                math(who + "′ = ", who + "' = ") + vec(it.after, true) + tex(",\\; ") +
-                    outcode_of(who, true) + math(" = ") + code(it.code_after))
+            ->add(say(kIteration, ++n, who, outcode_string(it.code_before, N), bound_name,
+                      outcode_string(it.bit, N), x + " = " + bound_name),
+                  tex("t = ") +
+                      frac(bound + tex(" - " + who + "_" + x),
+                           tex(other + "_" + x + " - " + who + "_" + x)) +
+                      tex(",\\; " + who + "' = " + who + " + t\\,(" + other + " - " + who + ")"),
+                  math(who + " = ") + vec(a) + tex(",\\; " + other + " = ") + vec(b) +
+                      tex(",\\; ") + bound + math(" = ") + exact(bound_value) + tex(",\\; t = ") +
+                      exact(t, true),
+                  tex(who + "' = ") + vec(it.after, true) + tex(",\\; ") + outcode_of(who, true) +
+                      math(" = ") + code(it.code_after))
             .note = say(kFractionOfTheWay, who, other, x + " = " + bound_name);
         ends[static_cast<std::size_t>(it.endpoint)] = it.after;
       }

@@ -94,8 +94,10 @@ struct ClipPolygon {
   static MathText vertex_list(const std::vector<Eigen::Matrix<Exact, N, 1>>& vs) {
     if (vs.empty()) return word(kNoVertices);
     MathText m;
-    for (std::size_t i = 0; i < vs.size(); ++i)
-      m += math(i ? ", " : "", i ? ",\\; " : "") + vec(vs[i]);
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+      if (i) m += tex(",\\; ");
+      m += vec(vs[i]);
+    }
     return m;
   }
 

@@ -426,22 +426,16 @@ struct ProjectPoint {
   static void chain_step(Derivation* steps, const Given& g, const MatX<Exact>& pvm,
                          const std::vector<Exact>& clip) {
     const bool rows = g.api == Api::DirectX;
-    std::string product = g.camera ? "P·V" : "P", product_latex = g.camera ? "P V" : "P";
-    if (!g.model.empty()) {
-      product += "·M";
-      product_latex += " M";
-    }
-    if (rows) {  // row vectors: v′ = v·(M·V·P)
-      product = g.model.empty() ? "V·P" : (g.camera ? "M·V·P" : "M·P");
-      product_latex = g.model.empty() ? "V P" : (g.camera ? "M V P" : "M P");
-    }
+    // The factors joined by \, (read as P·V·M).
+    std::string product = g.camera ? "P\\,V" : "P";
+    if (!g.model.empty()) product += "\\,M";
+    if (rows)  // row vectors: v′ = v·(M·V·P)
+      product = g.model.empty() ? "V\\,P" : (g.camera ? "M\\,V\\,P" : "M\\,P");
     steps
         ->add(say(kWholeChainAtOnce),
-              rows ? math("v′ = v·(" + product + ")",
-                          "\\mathbf{v}' = \\mathbf{v}\\,(" + product_latex + ")")
-                   : math("v′ = (" + product + ")·v",
-                          "\\mathbf{v}' = (" + product_latex + ")\\,\\mathbf{v}"),
-              math(product + " = ", product_latex + " = ") + matrix_text(paper_form(pvm, g.api)),
+              rows ? tex("\\mathbf{v}' = \\mathbf{v}\\,(" + product + ")")
+                   : tex("\\mathbf{v}' = (" + product + ")\\,\\mathbf{v}"),
+              tex(product + " = ") + matrix_text(paper_form(pvm, g.api)),
               tex("\\mathbf{v}' = ") + vec(clip, true))
         .note = say(kProductComputedOnce);
   }
@@ -472,12 +466,11 @@ struct ProjectPoint {
       p = moved(model, p);
       if (steps) {
         const std::string to = g.camera ? "world" : "view";
-        steps->add(
-            g.camera ? say(kModelToWorld) : say(kModelToView),
-            rows ? math("p_" + to + " = v·M", "\\mathbf{p}_{\\text{" + to + "}} = \\mathbf{v} M")
-                 : math("p_" + to + " = M·v", "\\mathbf{p}_{\\text{" + to + "}} = M \\mathbf{v}"),
-            tex("\\mathbf{v} = ") + vec(g.point),
-            math("p_" + to + " = ", "\\mathbf{p}_{\\text{" + to + "}} = ") + vec(p, true));
+        steps->add(g.camera ? say(kModelToWorld) : say(kModelToView),
+                   tex("\\mathbf{p}_{\\text{" + to +
+                       "}} = " + (rows ? "\\mathbf{v}\\,M" : "M\\,\\mathbf{v}")),
+                   tex("\\mathbf{v} = ") + vec(g.point),
+                   tex("\\mathbf{p}_{\\text{" + to + "}} = ") + vec(p, true));
       }
     }
     if (g.camera) {
@@ -486,9 +479,8 @@ struct ProjectPoint {
       p = moved(view, p);
       if (steps)
         steps->add(say(kWorldToView),
-                   math("p_view = V·p_world",
-                        "\\mathbf{p}_{\\text{view}} = V \\mathbf{p}_{\\text{world}}"),
-                   {}, tex("\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
+                   tex("\\mathbf{p}_{\\text{view}} = V\\,\\mathbf{p}_{\\text{world}}"), {},
+                   tex("\\mathbf{p}_{\\text{view}} = ") + vec(p, true));
     }
     // The lecture's names: P projects, V views, M places (v′ = (P·V·M)·v).
     const MatX<Exact> m = projection_with_steps(g.projection, g.api, steps, "P");
@@ -504,9 +496,8 @@ struct ProjectPoint {
     if (steps) {
       steps->add(say(kClipCoordinates),
                  g.api == Api::DirectX
-                     ? math("clip = p·P", "(x_c, y_c, z_c, w_c) = (x, y, z, 1)\\, P")
-                     : math("clip = P·p",
-                            "(x_c, y_c, z_c, w_c)^{\\mathsf{T}} = P\\,(x, y, z, 1)^{\\mathsf{T}}"),
+                     ? tex("(x_c, y_c, z_c, w_c) = (x, y, z, 1)\\,P")
+                     : tex("(x_c, y_c, z_c, w_c)^{\\mathsf{T}} = P\\,(x, y, z, 1)^{\\mathsf{T}}"),
                  math("p = ") + vec(std::vector<Exact>{p(0), p(1), p(2), 1}),
                  math("(x_c, y_c, z_c, w_c) = ") + vec(clip_v, true));
       if (!g.model.empty() || g.camera)
@@ -548,9 +539,8 @@ struct ProjectPoint {
       out.set("window", Value::vector(window));
       if (steps) {
         steps
-            ->add(say(kPerspectiveDivide),
-                  math("ndc = (x_c, y_c, z_c) / w_c", "\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"),
-                  {}, tex("\\text{ndc} = ") + vec(ndc, true))
+            ->add(say(kPerspectiveDivide), tex("\\text{ndc} = \\frac{(x_c, y_c, z_c)}{w_c}"), {},
+                  tex("\\text{ndc} = ") + vec(ndc, true))
             .yields("ndc");
         viewport_step(steps, g.api, g.width, g.height, window);
       }

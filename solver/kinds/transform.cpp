@@ -147,16 +147,15 @@ Value array_with_steps(const MatX<Exact>& m, bool column_major, Derivation* step
   for (std::size_t k = 0; k < n * n; ++k) {
     const std::size_t i = column_major ? k % n : k / n, j = column_major ? k / n : k % n;
     array.push_back(m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
-    names[i * n + j] = math(fmt::format("m{}", k), fmt::format("m_{{{}}}", k));
+    names[i * n + j] = tex(fmt::format("m_{{{}}}", k));
   }
   if (steps) {
-    Step& step = steps
-                     ->add(say(column_major ? kArrayByColumn : kArrayByRow),
-                           math("M = ") + matrix_of(names, n), {},
-                           math(fmt::format("(m0, …, m{}) = ", n * n - 1),
-                                fmt::format("(m_{{0}}, \\dots, m_{{{}}}) = ", n * n - 1)) +
-                               vec(array))
-                     .yields("array");
+    Step& step =
+        steps
+            ->add(say(column_major ? kArrayByColumn : kArrayByRow),
+                  math("M = ") + matrix_of(names, n), {},
+                  tex(fmt::format("(m_{{0}}, \\ldots, m_{{{}}}) = ", n * n - 1)) + vec(array))
+            .yields("array");
     if (column_major) step.note = say(n == 4 ? kColumnsInPieces3d : kColumnsInPieces2d);
   }
   return Value::vector(array);
@@ -322,17 +321,14 @@ struct Transform {
       for (const TransformStep& s : g.steps) inv = canonical(then_undo(inv, s.inverse));
       out.set("inverse", matrix_value(paper_form(inv, g.api)));
       if (steps) {
-        std::string order, order_latex;
+        std::string order;  // A_1^{-1}\,A_2^{-1}…, read as A₁⁻¹·A₂⁻¹·…
         for (std::size_t k = 1; k <= g.steps.size(); ++k) {
           const std::size_t i = rows ? g.steps.size() + 1 - k : k;
-          order += fmt::format("{}A{}⁻¹", k == 1 ? "" : "·", i);
-          order_latex += fmt::format("A_{{{}}}^{{-1}}", i);
+          order += fmt::format("{}A_{{{}}}^{{-1}}", k == 1 ? "" : "\\,", i);
         }
         steps
-            ->add(say(kInverse),
-                  math("M⁻¹ = " + order + " (M·M⁻¹ = I)",
-                       "M^{-1} = " + order_latex + "\\;(M M^{-1} = I)"),
-                  {}, tex("M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
+            ->add(say(kInverse), tex("M^{-1} = " + order + "\\;(M\\,M^{-1} = I)"), {},
+                  tex("M^{-1} = ") + matrix_text(paper_form(inv, g.api)))
             .yields("inverse")
             .note = say(kEachStepUndone);
       }

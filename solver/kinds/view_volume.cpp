@@ -131,9 +131,8 @@ struct ViewVolume {
     if (steps) {
       steps
           ->add(say(kNormalizeTheViewVolume),
-                math("S(d/(a·z_max), d/(b·z_max), 1/z_max)",
-                     "S\\left(\\frac{d}{a z_{\\max}}, \\frac{d}{b z_{\\max}}, "
-                     "\\frac{1}{z_{\\max}}\\right)"),
+                tex("S\\left(\\frac{d}{a\\,z_{\\max}}, \\frac{d}{b\\,z_{\\max}}, "
+                    "\\frac{1}{z_{\\max}}\\right)"),
                 {}, math("S = ") + matrix_text(paper_form(s, g.api)))
           .yields("scale_matrix")
           .note =
@@ -141,20 +140,16 @@ struct ViewVolume {
       steps
           ->add(say(kPerspectiveOfNormalizedVolume),
                 g.api == Api::DirectX
-                    ? math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) 1; 0 0 "
-                           "−z̃/(1−z̃) 0]",
-                           "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; "
-                           "P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
-                           "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & 1 \\\\ "
-                           "0 & 0 & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} & 0 "
-                           "\\end{bmatrix}")
-                    : math("z̃_min = z_min / z_max,  P(z̃) = [1 0 0 0; 0 1 0 0; 0 0 1/(1−z̃) "
-                           "−z̃/(1−z̃); 0 0 1 0]",
-                           "\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; "
-                           "P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
-                           "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & "
-                           "-\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} \\\\ "
-                           "0 & 0 & 1 & 0 \\end{bmatrix}"),
+                    ? tex("\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; "
+                          "P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
+                          "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & 1 \\\\ "
+                          "0 & 0 & -\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} & 0 "
+                          "\\end{bmatrix}")
+                    : tex("\\tilde{z}_{\\min} = \\frac{z_{\\min}}{z_{\\max}},\\; "
+                          "P(\\tilde{z}_{\\min}) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ "
+                          "0 & 1 & 0 & 0 \\\\ 0 & 0 & \\frac{1}{1 - \\tilde{z}_{\\min}} & "
+                          "-\\frac{\\tilde{z}_{\\min}}{1 - \\tilde{z}_{\\min}} \\\\ "
+                          "0 & 0 & 1 & 0 \\end{bmatrix}"),
                 tex("\\tilde{z}_{\\min} = ") + exact(zt),
                 math("P = ") + matrix_text(paper_form(p, g.api)))
           .yields("perspective_matrix")
@@ -168,12 +163,10 @@ struct ViewVolume {
       steps
           ->add(say(kPointThroughBoth),
                 g.api == Api::DirectX
-                    ? math("(X′, Y′, Z′, W′) = p·S·P,  p′ = (X′, Y′, Z′)/W′",
-                           "(X', Y', Z', W') = \\mathbf{p} S P,\\; \\mathbf{p}' = \\frac{(X', Y', "
-                           "Z')}{W'}")
-                    : math("(X′, Y′, Z′, W′) = P·S·p,  p′ = (X′, Y′, Z′)/W′",
-                           "(X', Y', Z', W')^{\\mathsf{T}} = P S \\mathbf{p},\\; \\mathbf{p}' = "
-                           "\\frac{(X', Y', Z')}{W'}"),
+                    ? tex("(X', Y', Z', W') = \\mathbf{p}\\,S\\,P,\\; "
+                          "\\mathbf{p}' = \\frac{(X', Y', Z')}{W'}")
+                    : tex("(X', Y', Z', W')^{\\mathsf{T}} = P\\,S\\,\\mathbf{p},\\; "
+                          "\\mathbf{p}' = \\frac{(X', Y', Z')}{W'}"),
                 tex("\\mathbf{p} = ") + vec(g.point), tex("\\mathbf{p}' = ") + vec(q, true))
           .yields("point");
     return out;

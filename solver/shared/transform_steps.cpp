@@ -103,16 +103,12 @@ void invert_step(TransformStep& t, const std::string& kind) {
 
 // c = cos θ and s = sin θ of a rotation, as substituted into its matrix.
 MathText cos_sin(const Exact& radians, AngleUnit unit) {
-  return tex("\\theta = ") + angle_text(radians, unit) +
-         math(",  c = cos θ = ", ",\\; c = \\cos\\theta = ") + exact(GiNaC::cos(radians)) +
-         math(",  s = sin θ = ", ",\\; s = \\sin\\theta = ") + exact(GiNaC::sin(radians));
+  return tex("\\theta = ") + angle_text(radians, unit) + tex(",\\; c = \\cos\\theta = ") +
+         exact(GiNaC::cos(radians)) + tex(",\\; s = \\sin\\theta = ") + exact(GiNaC::sin(radians));
 }
 
 // R_x, R_y or R_z in symbols (c = cos θ, s = sin θ), as in the lecture's homogeneous matrices.
 MathText axis_rotation_formula(int axis) {
-  static const char* const unicode[] = {"R_x = [1 0 0 0; 0 c −s 0; 0 s c 0; 0 0 0 1]",
-                                        "R_y = [c 0 s 0; 0 1 0 0; −s 0 c 0; 0 0 0 1]",
-                                        "R_z = [c −s 0 0; s c 0 0; 0 0 1 0; 0 0 0 1]"};
   static const char* const latex[] = {
       "R_x(\\theta) = \\begin{bmatrix} 1 & 0 & 0 & 0 \\\\ 0 & c & -s & 0 \\\\ 0 & s & c & 0 \\\\ 0 "
       "& 0 & 0 & 1 \\end{bmatrix}",
@@ -120,15 +116,13 @@ MathText axis_rotation_formula(int axis) {
       "& 0 & 0 & 1 \\end{bmatrix}",
       "R_z(\\theta) = \\begin{bmatrix} c & -s & 0 & 0 \\\\ s & c & 0 & 0 \\\\ 0 & 0 & 1 & 0 \\\\ 0 "
       "& 0 & 0 & 1 \\end{bmatrix}"};
-  return math(unicode[axis], latex[axis]);
+  return tex(latex[axis]);
 }
 
 // Rotation by θ about the unit axis (x, y, z): Rodrigues' formula c·I + s·[u]ₓ + (1 − c)·u·uᵀ
 // written entry by entry.
 MathText axis_angle_formula() {
-  return math(
-      "R = [x²(1−c)+c, xy(1−c)−zs, xz(1−c)+ys, 0; yx(1−c)+zs, y²(1−c)+c, yz(1−c)−xs, 0; "
-      "xz(1−c)−ys, yz(1−c)+xs, z²(1−c)+c, 0; 0, 0, 0, 1]",
+  return tex(
       "R = \\begin{bmatrix} x^2(1-c)+c & xy(1-c)-zs & xz(1-c)+ys & 0 \\\\ "
       "yx(1-c)+zs & y^2(1-c)+c & yz(1-c)-xs & 0 \\\\ xz(1-c)-ys & yz(1-c)+xs & z^2(1-c)+c & 0 \\\\ "
       "0 & 0 & 0 & 1 \\end{bmatrix}");
@@ -184,8 +178,7 @@ TransformStep read_transform_step(GivenReader& s, int dim, const Conventions& c,
       const Exact a = read_angle(s, k, c.angles);
       t.heading = say(kRotate, angle_text(a, c.angles).unicode);
       t.matrix = rotate_2d(a);
-      t.formula = math(
-          "R = [c −s 0; s c 0; 0 0 1]",
+      t.formula = tex(
           "R(\\theta) = \\begin{bmatrix} c & -s & 0 \\\\ s & c & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}");
       t.substitution = cos_sin(a, c.angles);
       t.angle = a;
@@ -264,21 +257,19 @@ MatX<Exact> compose(const std::vector<TransformStep>& steps, int dim, Api api,
       // Row vectors: the symbolic forms are the column-vector ones, so only the values show.
       Step& st = derivation->add(
           say(kStepTitle, i + 1, s.heading), rows ? MathText{} : s.formula, s.substitution,
-          math(fmt::format("A{} = ", i + 1), fmt::format("A_{{{}}} = ", i + 1)) +
-              matrix_text(paper_form(s.matrix, api)));
+          tex(fmt::format("A_{{{}}} = ", i + 1)) + matrix_text(paper_form(s.matrix, api)));
       st.note = s.note;
     }
   }
   if (derivation) {
     // Column vectors: M = Aₙ·…·A₁; DirectX's row vectors: M = A₁·…·Aₙ (each Aᵢ transposed).
-    std::string order, order_latex;
+    std::string order;  // A_3\,A_2\,A_1, read as A₃·A₂·A₁
     for (std::size_t k = 1; k <= steps.size(); ++k) {
       const std::size_t i = rows ? k : steps.size() + 1 - k;
-      order += fmt::format("{}A{}", k == 1 ? "" : "·", i);
-      order_latex += fmt::format("A_{{{}}}", i);
+      order += fmt::format("{}A_{{{}}}", k == 1 ? "" : "\\,", i);
     }
     derivation
-        ->add(title, math(name + " = " + order, name + " = " + order_latex), {},
+        ->add(title, tex(name + " = " + order), {},
               math(name + " = ") + matrix_text(paper_form(m, api)))
         .note = say(rows ? kRowVectorsLeftmost : kColumnVectorsRightmost);
   }
