@@ -20,7 +20,7 @@ constexpr std::pair<std::string_view, std::string_view> kSymbols[] = {
     {"lambda", "λ"},  {"alpha", "α"},      {"beta", "β"},
     {"gamma", "γ"},   {"kappa", "κ"},      {"Delta", "Δ"},
     {"sum", "Σ"},     {"in", "∈"},         {"cdots", "⋯"},
-    {"ldots", "…"},   {"pm", "±"},         {"circ", "°"},
+    {"ldots", "…"}, {"dots", "…"},   {"pm", "±"},         {"circ", "°"},
     {"bigcirc", "○"}, {"colon", ":"}};
 // Named functions: written upright, a space between the name and an argument that is not in
 // parentheses (sin θ, tan 30°), a fraction argument put in parentheses (tan(fovy/2)).
@@ -30,8 +30,9 @@ constexpr std::string_view kFunctions[] = {"sin",    "cos", "tan", "arccos", "ar
 // operator's spacing): the Unicode is the argument.
 // \overrightarrow{AB}, the vector from A to B, is written AB on one line, as bold is dropped;
 // \mathord{\times} is a × that is a mark, not an operator.
-constexpr std::string_view kStyles[] = {"mathbf",  "mathrm",     "mathsf",         "mathit",
-                                        "mathbin", "boldsymbol", "overrightarrow", "mathord"};
+constexpr std::string_view kStyles[] = {"mathbf",     "mathrm",         "mathsf",  "mathtt",
+                                        "mathit",     "mathbin",        "mathord", "boldsymbol",
+                                        "overrightarrow"};
 // Subscripts and superscripts Unicode has a character for.
 constexpr std::pair<std::string_view, std::string_view> kSubscripts[] = {
     {"0", "₀"}, {"1", "₁"}, {"2", "₂"}, {"3", "₃"}, {"4", "₄"}, {"5", "₅"}, {"6", "₆"},

@@ -197,7 +197,7 @@ struct ClipLine {
       steps->add(g.region.title(), {}, {}, clip_given::box_text(box)).note = bits_legend(N);
       const auto code = [](unsigned c) {
         const std::string bits = outcode_string(c, N);
-        return tex("\\mathsf{" + bits + "}");
+        return tex("\\mathtt{" + bits + "}");
       };
       const auto outcode_of = [&](const std::string& who, bool moved = false) {
         return tex("\\operatorname{outcode}(" + who + (moved ? "')" : ")"));
