@@ -102,16 +102,14 @@ struct ProcessingDefaults {
     if (steps)
       steps
           ->add(say(kDefaultCamera),
-                math("cameraZ = (height/2)/tan(30°),  eye = (width/2, height/2, cameraZ),  "
-                     "center = (width/2, height/2, 0),  up = (0, 1, 0)",
-                     "\\text{cameraZ} = \\frac{\\text{height}/2}{\\tan 30^\\circ},\\; "
-                     "\\mathbf{e} = (\\tfrac{\\text{width}}{2}, \\tfrac{\\text{height}}{2}, "
-                     "\\text{cameraZ}),\\; \\mathbf{c} = (\\tfrac{\\text{width}}{2}, "
-                     "\\tfrac{\\text{height}}{2}, 0),\\; \\mathbf{up} = (0, 1, 0)"),
+                tex("\\text{cameraZ} = \\frac{\\text{height}/2}{\\tan 30^\\circ},\\; "
+                    "\\mathbf{eye} = (\\tfrac{\\text{width}}{2}, \\tfrac{\\text{height}}{2}, "
+                    "\\text{cameraZ}),\\; \\mathbf{center} = (\\tfrac{\\text{width}}{2}, "
+                    "\\tfrac{\\text{height}}{2}, 0),\\; \\mathbf{up} = (0, 1, 0)"),
                 tex("\\text{width} = ") + exact(g.width) + tex(",\\; \\text{height} = ") +
                     exact(g.height),
-                tex("\\text{cameraZ} = ") + exact(z, true) +
-                    math(",  eye = ", ",\\; \\mathbf{e} = ") + vec(eye, true))
+                tex("\\text{cameraZ} = ") + exact(z, true) + tex(",\\; \\mathbf{eye} = ") +
+                    vec(eye, true))
           .yields("camera_z")
           .yields("eye");
     out.set("view", matrix_value(paper_form(view_of(g, eye, steps), g.api)));
@@ -129,10 +127,10 @@ struct ProcessingDefaults {
     if (steps)
       steps
           ->add(say(kDefaultClippingPlanes),
-                math("near = cameraZ/10,  far = 10·cameraZ",
-                     "n = \\frac{\\text{cameraZ}}{10},\\; f = 10\\,\\text{cameraZ}"),
+                tex("\\text{near} = \\frac{\\text{cameraZ}}{10},\\; \\text{far} = "
+                    "10\\,\\text{cameraZ}"),
                 {},
-                math("near = ", "n = ") + exact(near, true) + math(",  far = ", ",\\; f = ") +
+                tex("\\text{near} = ") + exact(near, true) + tex(",\\; \\text{far} = ") +
                     exact(far, true))
           .yields("near")
           .yields("far");

@@ -53,9 +53,9 @@ constexpr Phrase kDirectXRowVectors{
 constexpr Phrase kColumnVectors{"Column vectors, p′ = M·p.", "列ベクトル: p′ = M·p.",
                                 "Столбцы-векторы: p′ = M·p."};
 constexpr Phrase kEyeCenterUp{
-    "eye = the camera's position (e), center = the point it looks at (c), up = the up vector.",
-    "eye = カメラの位置 (e), center = 注視点 (c), up = 上方向ベクトル.",
-    "eye — положение камеры (e), center — точка, на которую она смотрит (c), up — вектор «вверх»."};
+    "eye = the camera's position, center = the point it looks at, up = the up vector.",
+    "eye = カメラの位置, center = 注視点, up = 上方向ベクトル.",
+    "eye — положение камеры, center — точка, на которую она смотрит, up — вектор «вверх»."};
 constexpr Phrase kLeftHandedCameraLooksDownPlusZ{"Left-handed, the camera looks down +z.",
                                                  "左手系では, カメラは +z 方向を見る.",
                                                  "В левой системе камера смотрит вдоль +z."};
@@ -413,12 +413,10 @@ Value transform_points_with_steps(const MatX<Exact>& m,
     moved.push_back(transform_point(m, p));
     for (Exact& x : moved.back()) x = canonical(x);
     if (steps)
-      steps->add(title,
-                 api == Api::DirectX
-                     ? math(name + "′ = " + name + "·M", name + "' = " + name + " M")
-                     : math(name + "′ = M·" + name, name + "' = M " + name),
-                 math(name + " = ") + vec(p),
-                 math(name + "′ = ", name + "' = ") + vec(moved.back(), true));
+      steps->add(
+          title,
+          api == Api::DirectX ? tex(name + "' = " + name + "\\,M") : tex(name + "' = M\\," + name),
+          math(name + " = ") + vec(p), tex(name + "' = ") + vec(moved.back(), true));
   }
   if (steps) steps->yields("points");
   return Value::matrix(moved);
@@ -478,87 +476,76 @@ MatX<Exact> look_at_with_steps(const Vec3<Exact>& eye, const Vec3<Exact>& center
     for (int i = 0; i < 3; ++i) side(i) = canonical(side(i));
     // Forward, side and up, as gluLookAt (or LookAtLH) computes them, then the translations.
     steps
-        ->add(say(kViewingDirection),
-              math("f = (center − eye)/‖center − eye‖",
-                   "\\mathbf{f} = \\frac{\\mathbf{c} - \\mathbf{e}}{\\lVert\\mathbf{c} - "
-                   "\\mathbf{e}\\rVert}"),
-              math("center − eye = ", "\\mathbf{c} - \\mathbf{e} = ") + vec(forward) +
-                  math(",  ‖center − eye‖ = ", ",\\; \\lVert\\mathbf{c} - \\mathbf{e}\\rVert = ") +
-                  exact(norm(forward), true),
-              tex("\\mathbf{f} = ") + vec(f, true))
+        ->add(
+            say(kViewingDirection),
+            tex("\\mathbf{f} = \\frac{\\mathbf{center} - \\mathbf{eye}}{\\lVert\\mathbf{center} - "
+                "\\mathbf{eye}\\rVert}"),
+            tex("\\mathbf{center} - \\mathbf{eye} = ") + vec(forward) +
+                tex(",\\; \\lVert\\mathbf{center} - \\mathbf{eye}\\rVert = ") +
+                exact(norm(forward), true),
+            tex("\\mathbf{f} = ") + vec(f, true))
         .note = say(kEyeCenterUp);
     if (plus_z) {
-      steps->add(
-          say(kCameraAxesLeftHanded),
-          math("z = f,  x = (up × z)/‖up × z‖,  y = z × x",
-               "\\mathbf{z} = \\mathbf{f},\\; \\mathbf{x} = "
-               "\\frac{\\mathbf{up}\\times\\mathbf{z}}{\\lVert\\mathbf{up}\\times\\mathbf{z}"
-               "\\rVert},\\; \\mathbf{y} = \\mathbf{z}\\times\\mathbf{x}"),
-          math("up × z = ", "\\mathbf{up}\\times\\mathbf{z} = ") + vec(side, true) +
-              math(",  ‖up × z‖ = ", ",\\; \\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert = ") +
-              exact(norm(side), true),
-          tex("\\mathbf{x} = ") + vec(row(0)) + tex(",\\; \\mathbf{y} = ") + vec(row(1)) +
-              tex(",\\; \\mathbf{z} = ") + vec(row(2)));
+      steps->add(say(kCameraAxesLeftHanded),
+                 tex("\\mathbf{z} = \\mathbf{f},\\; \\mathbf{x} = "
+                     "\\frac{\\mathbf{up}\\times\\mathbf{z}}{\\lVert\\mathbf{up}\\times\\mathbf{z}"
+                     "\\rVert},\\; \\mathbf{y} = \\mathbf{z}\\times\\mathbf{x}"),
+                 tex("\\mathbf{up}\\times\\mathbf{z} = ") + vec(side, true) +
+                     tex(",\\; \\lVert\\mathbf{up}\\times\\mathbf{z}\\rVert = ") +
+                     exact(norm(side), true),
+                 tex("\\mathbf{x} = ") + vec(row(0)) + tex(",\\; \\mathbf{y} = ") + vec(row(1)) +
+                     tex(",\\; \\mathbf{z} = ") + vec(row(2)));
       steps->add(say(kTranslations),
-                 math("t = (−x·eye, −y·eye, −z·eye)",
-                      "\\mathbf{t} = (-\\mathbf{x}\\cdot\\mathbf{e},\\, "
-                      "-\\mathbf{y}\\cdot\\mathbf{e},\\, -\\mathbf{z}\\cdot\\mathbf{e})"),
-                 math("eye = ", "\\mathbf{e} = ") + vec(eye),
+                 tex("\\mathbf{t} = (-\\mathbf{x}\\cdot\\mathbf{eye},\\, "
+                     "-\\mathbf{y}\\cdot\\mathbf{eye},\\, -\\mathbf{z}\\cdot\\mathbf{eye})"),
+                 tex("\\mathbf{eye} = ") + vec(eye),
                  tex("\\mathbf{t} = ") + vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true));
       if (api == Api::DirectX)
         steps
             ->add(
                 say(kViewMatrix),
-                math("V = [x_x y_x z_x 0; x_y y_y z_y 0; x_z y_z z_z 0; t_x t_y t_z 1] (p′ = p·V)",
-                     "V = \\begin{bmatrix} x_x & y_x & z_x & 0 \\\\ x_y & y_y & z_y & 0 \\\\ x_z & "
-                     "y_z & z_z & 0 \\\\ t_x & t_y & t_z & 1 \\end{bmatrix}"),
+                tex("V = \\begin{bmatrix} x_x & y_x & z_x & 0 \\\\ x_y & y_y & z_y & 0 \\\\ x_z & "
+                    "y_z & z_z & 0 \\\\ t_x & t_y & t_z & 1 \\end{bmatrix}"),
                 {}, math("V = ") + matrix_text(paper_form(m, api)))
             .note = multiply_note(api);
       else
         steps
             ->add(say(kViewMatrix),
-                  math("V = [x_x x_y x_z t_x; y_x y_y y_z t_y; z_x z_y z_z t_z; 0 0 0 1]",
-                       "V = \\begin{bmatrix} x_x & x_y & x_z & t_x \\\\ y_x & y_y & y_z & t_y \\\\ "
-                       "z_x & z_y & z_z & t_z \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"),
+                  tex("V = \\begin{bmatrix} x_x & x_y & x_z & t_x \\\\ y_x & y_y & y_z & t_y \\\\ "
+                      "z_x & z_y & z_z & t_z \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}"),
                   {}, math("V = ") + matrix_text(m))
             .note = multiply_note(api) + say(kLeftHandedCameraLooksDownPlusZ) +
                     say(kRightHandedCameraRowsNegated);
     } else {
-      steps->add(
-          say(kSideAxis),
-          math("s = (f × up)/‖f × up‖",
-               "\\mathbf{s} = "
-               "\\frac{\\mathbf{f}\\times\\mathbf{up}}{\\lVert\\mathbf{f}\\times\\mathbf{up}"
-               "\\rVert}"),
-          math("f × up = ", "\\mathbf{f}\\times\\mathbf{up} = ") + vec(side, true) +
-              math(",  ‖f × up‖ = ", ",\\; \\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert = ") +
-              exact(norm(side), true),
-          tex("\\mathbf{s} = ") + vec(row(0), true));
+      steps->add(say(kSideAxis),
+                 tex("\\mathbf{s} = "
+                     "\\frac{\\mathbf{f}\\times\\mathbf{up}}{\\lVert\\mathbf{f}\\times\\mathbf{up}"
+                     "\\rVert}"),
+                 tex("\\mathbf{f}\\times\\mathbf{up} = ") + vec(side, true) +
+                     tex(",\\; \\lVert\\mathbf{f}\\times\\mathbf{up}\\rVert = ") +
+                     exact(norm(side), true),
+                 tex("\\mathbf{s} = ") + vec(row(0), true));
       steps->add(say(kCameraAxesRightHanded),
-                 math("u = s × f,  z_cam = −f",
-                      "\\mathbf{u} = \\mathbf{s}\\times\\mathbf{f},\\; \\mathbf{z}_{\\text{cam}} = "
-                      "-\\mathbf{f}"),
+                 tex("\\mathbf{u} = \\mathbf{s}\\times\\mathbf{f},\\; \\mathbf{z}_{\\text{cam}} = "
+                     "-\\mathbf{f}"),
                  {},
                  tex("\\mathbf{u} = ") + vec(row(1), true) + tex(",\\; -\\mathbf{f} = ") +
                      vec(row(2), true));
       steps
           ->add(say(kTranslations),
-                math("(−s·eye, −u·eye, f·eye)",
-                     "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; "
-                     "\\mathbf{f}\\cdot\\mathbf{e}\\right)"),
-                math("eye = ", "\\mathbf{e} = ") + vec(eye),
-                math("(−s·eye, −u·eye, f·eye) = ",
-                     "\\left(-\\mathbf{s}\\cdot\\mathbf{e},\\; -\\mathbf{u}\\cdot\\mathbf{e},\\; "
-                     "\\mathbf{f}\\cdot\\mathbf{e}\\right) = ") +
+                tex("\\left(-\\mathbf{s}\\cdot\\mathbf{eye},\\;-\\mathbf{u}\\cdot\\mathbf{eye},\\;"
+                    "\\mathbf{f}\\cdot\\mathbf{eye}\\right)"),
+                tex("\\mathbf{eye} = ") + vec(eye),
+                tex("\\left(-\\mathbf{s}\\cdot\\mathbf{eye},\\;-\\mathbf{u}\\cdot\\mathbf{eye},\\;"
+                    "\\mathbf{f}\\cdot\\mathbf{eye}\\right) = ") +
                     vec(std::vector<Exact>{m(0, 3), m(1, 3), m(2, 3)}, true))
           .note = say(kEachRowOfVDotsAPoint);
       steps
           ->add(say(kViewMatrix),
-                math("V = [s_x s_y s_z −s·eye; u_x u_y u_z −u·eye; −f_x −f_y −f_z f·eye; 0 0 0 1]",
-                     "V = \\begin{bmatrix} s_x & s_y & s_z & -\\mathbf{s}\\cdot\\mathbf{e} \\\\ "
-                     "u_x & u_y & u_z & -\\mathbf{u}\\cdot\\mathbf{e} \\\\ "
-                     "-f_x & -f_y & -f_z & \\mathbf{f}\\cdot\\mathbf{e} \\\\ 0 & 0 & 0 & 1 "
-                     "\\end{bmatrix}"),
+                tex("V = \\begin{bmatrix} s_x & s_y & s_z & -\\mathbf{s}\\cdot\\mathbf{eye} \\\\ "
+                    "u_x & u_y & u_z & -\\mathbf{u}\\cdot\\mathbf{eye} \\\\ "
+                    "-f_x & -f_y & -f_z & \\mathbf{f}\\cdot\\mathbf{eye} \\\\ 0 & 0 & 0 & 1 "
+                    "\\end{bmatrix}"),
                 {}, math("V = ") + matrix_text(paper_form(m, api)))
           .note = multiply_note(api);
     }
@@ -572,56 +559,40 @@ namespace {
 // The orthographic matrix with z_min, z_max as coordinates (Conventions::z_planes).
 MathText ortho_coordinates_formula(Api api, const std::string& name) {
   const bool y_down = api == Api::Processing;
-  const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
-  return math(
-      "ortho: [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
-          "2/(t−b) 0 −(t+b)/(t−b); 0 0 2/(z_max−z_min) −(z_max+z_min)/(z_max−z_min); 0 0 0 1]",
-      name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
-          latex_sign +
-          "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & \\frac{2}{z_{\\max}-z_{\\min}} & "
-          "-\\frac{z_{\\max}+z_{\\min}}{z_{\\max}-z_{\\min}} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+  const std::string sign = y_down ? "-" : "";
+  return tex(name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
+             sign +
+             "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & \\frac{2}{z_{\\max}-z_{\\min}} & "
+             "-\\frac{z_{\\max}+z_{\\min}}{z_{\\max}-z_{\\min}} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
 }
 
 MathText projection_formula(bool ortho, Api api, bool left_handed, const std::string& name) {
   const bool y_down = api == Api::Processing;
   if (api == Api::DirectX)
     return ortho
-               ? math(
-                     "OrthoOffCenterLH: [2/(r−l) 0 0 0; 0 2/(t−b) 0 0; 0 0 1/(f−n) 0; (l+r)/(l−r) "
-                     "(t+b)/(b−t) n/(n−f) 1]",
-                     name +
-                         " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2}{t-b} & "
-                         "0 & 0 \\\\ 0 & 0 & \\frac{1}{f-n} & 0 \\\\ "
-                         "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{n}{n-f} & 1 \\end{bmatrix}")
-               : math(
-                     "PerspectiveOffCenterLH: [2n/(r−l) 0 0 0; 0 2n/(t−b) 0 0; (l+r)/(l−r) "
-                     "(t+b)/(b−t) f/(f−n) 1; 0 0 nf/(n−f) 0]",
-                     name +
-                         " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2n}{t-b} "
-                         "& 0 & 0 \\\\ "
-                         "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{f}{f-n} & 1 \\\\ 0 & 0 & "
-                         "\\frac{nf}{n-f} & 0 \\end{bmatrix}");
+               ? tex(name +
+                     " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2}{t-b} & "
+                     "0 & 0 \\\\ 0 & 0 & \\frac{1}{f-n} & 0 \\\\ "
+                     "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{n}{n-f} & 1 \\end{bmatrix} "
+                     "\\quad (\\text{OrthoOffCenterLH})")
+               : tex(name +
+                     " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & 0 & 0 \\\\ 0 & \\frac{2n}{t-b} "
+                     "& 0 & 0 \\\\ "
+                     "\\frac{l+r}{l-r} & \\frac{t+b}{b-t} & \\frac{f}{f-n} & 1 \\\\ 0 & 0 & "
+                     "\\frac{nf}{n-f} & 0 \\end{bmatrix} \\quad (\\text{PerspectiveOffCenterLH})");
   // Left-handed under column vectors (glm's *LH_NO): the right-handed matrix with its third
   // column negated, w′ = z.
-  const std::string sign = y_down ? "−" : "", latex_sign = y_down ? "-" : "";
-  const std::string minus = left_handed ? "" : "−", latex_minus = left_handed ? "" : "-";
-  const std::string plus = left_handed ? "−" : "", latex_plus = left_handed ? "-" : "";
-  const std::string suffix = left_handed ? "_LH" : "";
+  const std::string sign = y_down ? "-" : "";
+  const std::string minus = left_handed ? "" : "-";
+  const std::string plus = left_handed ? "-" : "";
   if (ortho)
-    return math("ortho" + suffix + ": [2/(r−l) 0 0 −(r+l)/(r−l); 0 " + sign +
-                    "2/(t−b) 0 −(t+b)/(t−b); 0 0 " + minus + "2/(f−n) −(f+n)/(f−n); 0 0 0 1]",
-                name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
-                    latex_sign + "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & " +
-                    latex_minus +
-                    "\\frac{2}{f-n} & -\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
-  return math("frustum" + suffix + ": [2n/(r−l) 0 " + plus + "(r+l)/(r−l) 0; 0 " + sign +
-                  "2n/(t−b) " + plus + "(t+b)/(t−b) 0; 0 0 " + minus +
-                  "(f+n)/(f−n) −2fn/(f−n); 0 0 " + minus + "1 0]",
-              name + " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & " + latex_plus +
-                  "\\frac{r+l}{r-l} & 0 \\\\ 0 & " + latex_sign + "\\frac{2n}{t-b} & " +
-                  latex_plus + "\\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & " + latex_minus +
-                  "\\frac{f+n}{f-n} & -\\frac{2fn}{f-n} \\\\ 0 & 0 & " + latex_minus +
-                  "1 & 0 \\end{bmatrix}");
+    return tex(name + " = \\begin{bmatrix} \\frac{2}{r-l} & 0 & 0 & -\\frac{r+l}{r-l} \\\\ 0 & " +
+               sign + "\\frac{2}{t-b} & 0 & -\\frac{t+b}{t-b} \\\\ 0 & 0 & " + minus +
+               "\\frac{2}{f-n} & -\\frac{f+n}{f-n} \\\\ 0 & 0 & 0 & 1 \\end{bmatrix}");
+  return tex(name + " = \\begin{bmatrix} \\frac{2n}{r-l} & 0 & " + plus +
+             "\\frac{r+l}{r-l} & 0 \\\\ 0 & " + sign + "\\frac{2n}{t-b} & " + plus +
+             "\\frac{t+b}{t-b} & 0 \\\\ 0 & 0 & " + minus +
+             "\\frac{f+n}{f-n} & -\\frac{2fn}{f-n} \\\\ 0 & 0 & " + minus + "1 & 0 \\end{bmatrix}");
 }
 
 // "l = −1,  r = 1, …" for the six planes of a view volume.
@@ -646,24 +617,17 @@ void perspective_idea_steps(Api api, bool left_handed, const std::string& name, 
            plus_z ? tex("x_n : n = x : z,\\; y_n : n = y : z")
                   : tex("x_n : n = x : (-z),\\; y_n : n = y : (-z)"),
            {},
-           plus_z ? math("x_n = n·x / z,  y_n = n·y / z",
-                         "x_n = \\frac{n\\,x}{z},\\; y_n = \\frac{n\\,y}{z}")
-                  : math("x_n = n·x / (−z),  y_n = n·y / (−z)",
-                         "x_n = \\frac{n\\,x}{-z},\\; y_n = \\frac{n\\,y}{-z}"))
+           plus_z ? tex("x_n = \\frac{n\\,x}{z},\\; y_n = \\frac{n\\,y}{z}")
+                  : tex("x_n = \\frac{n\\,x}{-z},\\; y_n = \\frac{n\\,y}{-z}"))
       .note = say(plus_z ? kPointMeetsNearPlanePlusZ : kPointMeetsNearPlaneMinusZ);
   steps
       .add(say(kDepthGoesIntoW),
-           rows     ? math("w′ = z  (" + name + "_∗4 = (0, 0, 1, 0)ᵀ)",
-                           "w' = z \\quad (" + name + "_{\\ast 4} = (0, 0, 1, 0)^{\\mathsf{T}})")
-           : plus_z ? math("w′ = z  (" + name + "_4∗ = (0, 0, 1, 0))",
-                           "w' = z \\quad (" + name + "_{4 \\ast} = (0, 0, 1, 0))")
-                    : math("w′ = −z  (" + name + "_4∗ = (0, 0, −1, 0))",
-                           "w' = -z \\quad (" + name + "_{4 \\ast} = (0, 0, -1, 0))"),
+           rows     ? tex("w' = z \\quad (" + name + "_{*4} = (0, 0, 1, 0)^{\\mathsf{T}})")
+           : plus_z ? tex("w' = z \\quad (" + name + "_{4*} = (0, 0, 1, 0))")
+                    : tex("w' = -z \\quad (" + name + "_{4*} = (0, 0, -1, 0))"),
            {},
-           plus_z ? math("x_ndc = x′ / w′ = x′ / z",
-                         "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{z}")
-                  : math("x_ndc = x′ / w′ = x′ / (−z)",
-                         "x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{-z}"))
+           plus_z ? tex("x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{z}")
+                  : tex("x_{\\mathrm{ndc}} = \\frac{x'}{w'} = \\frac{x'}{-z}"))
       .note = say(kNoMatrixDividesByACoordinate);
 }
 
@@ -676,12 +640,10 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
     // Processing's perspective() with no arguments, for a width × height sketch.
     steps
         ->add(say(kPerspectiveWithNoArguments),
-              math("fovy = π/3,  aspect = width/height,  cameraZ = (height/2)/tan(fovy/2),  "
-                   "near = cameraZ/10,  far = 10·cameraZ",
-                   "\\text{fovy} = \\frac{\\pi}{3},\\; \\text{aspect} = "
-                   "\\frac{\\text{width}}{\\text{height}},\\; \\text{cameraZ} = "
-                   "\\frac{\\text{height}/2}{\\tan(\\text{fovy}/2)},\\; n = "
-                   "\\frac{\\text{cameraZ}}{10},\\; f = 10\\,\\text{cameraZ}"),
+              tex("\\text{fovy} = \\frac{\\pi}{3},\\; \\text{aspect} = "
+                  "\\frac{\\text{width}}{\\text{height}},\\; \\text{cameraZ} = "
+                  "\\frac{\\text{height}/2}{\\tan(\\text{fovy}/2)},\\; n = "
+                  "\\frac{\\text{cameraZ}}{10},\\; f = 10\\,\\text{cameraZ}"),
               tex("\\text{width} = ") + exact(p.sketch->first) + tex(",\\; \\text{height} = ") +
                   exact(p.sketch->second),
               tex("\\text{aspect} = ") + exact(*p.aspect) + tex(",\\; n = ") + exact(v.near, true) +
@@ -692,9 +654,8 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
     // The course's horizontal reading, and how it relates to perspective()'s vertical fovy.
     steps->add(
         say(kFrustumOfHorizontalFov),
-        math("r = n·tan(fovx/2),  l = −r,  t = r / aspect,  b = −t",
-             "r = n\\tan\\frac{\\text{fovx}}{2},\\; l = -r,\\; t = \\frac{r}{\\text{aspect}},\\; b "
-             "= -t"),
+        tex("r = n\\tan\\frac{\\text{fovx}}{2},\\; l = -r,\\; t = \\frac{r}{\\text{aspect}},\\; b "
+            "= -t"),
         tex("\\text{fovx} = ") + angle_text(*p.fovx, p.unit) + tex(",\\; \\text{aspect} = ") +
             exact(*p.aspect) + tex(",\\; n = ") + exact(v.near),
         math("r = ") + exact(v.right, true) + tex(",\\; t = ") + exact(v.top, true));
@@ -702,25 +663,19 @@ MatX<Exact> projection_with_steps(const ProjectionSpec& p, Api api, Derivation* 
         to_double(p.unit == AngleUnit::Degrees ? Exact(*p.fovy * 180 / GiNaC::Pi) : *p.fovy);
     steps
         ->add(say(kSameFrustumFromVerticalAngle),
-              math("fovy = 2·atan(tan(fovx/2) / aspect)",
-                   "\\text{fovy} = 2\\arctan\\frac{\\tan(\\text{fovx}/2)}{\\text{aspect}}"),
-              {},
-              math("fovy = 2·atan(", "\\text{fovy} = 2\\arctan\\left(") +
+              tex("\\text{fovy} = 2\\arctan\\frac{\\tan(\\text{fovx}/2)}{\\text{aspect}}"), {},
+              tex("\\text{fovy} = 2\\arctan\\left(") +
                   exact(canonical(GiNaC::tan(*p.fovx / 2) / *p.aspect)) +
-                  math(fmt::format(") ≈ {:.4g}{}", fovy_shown,
-                                   p.unit == AngleUnit::Degrees ? "°" : ""),
-                       fmt::format("\\right) \\approx {:.4g}{}", fovy_shown,
-                                   p.unit == AngleUnit::Degrees ? "^{\\circ}" : "")) +
-                  math(",  t = n·tan(fovy/2) = ", ",\\; t = n\\tan\\frac{\\text{fovy}}{2} = ") +
-                  exact(v.top, true))
+                  tex(fmt::format("\\right) \\approx {:.4g}{}", fovy_shown,
+                                  p.unit == AngleUnit::Degrees ? "^{\\circ}" : "")) +
+                  tex(",\\; t = n\\tan\\frac{\\text{fovy}}{2} = ") + exact(v.top, true))
         .note = say(kFovxSpansTheWidth);
   } else if (steps && p.type == ProjectionSpec::Type::Perspective) {
     steps
         ->add(
             say(kFrustumOfPerspective),
-            math("t = n·tan(fovy/2),  b = −t,  r = t·aspect,  l = −r",
-                 "t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l "
-                 "= -r"),
+            tex("t = n\\tan\\frac{\\text{fovy}}{2},\\; b = -t,\\; r = t\\cdot\\text{aspect},\\; l "
+                "= -r"),
             tex("\\text{fovy} = ") + angle_text(*p.fovy, p.unit) + tex(",\\; \\text{aspect} = ") +
                 exact(*p.aspect) + tex(",\\; n = ") + exact(v.near),
             math("t = ") + exact(v.top, true) + tex(",\\; r = ") + exact(v.right, true))
