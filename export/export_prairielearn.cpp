@@ -7,11 +7,13 @@
 #include <nlohmann/json.hpp>
 
 #include "batch/file_names.hpp"
+#include "export/answer_caption.hpp"
 #include "export/export_tolerance.hpp"
 #include "export/quiz_items.hpp"
 #include "export/xml_text.hpp"
 #include "grader/answer_type.hpp"
 #include "solver/derivation/formats.hpp"
+#include "solver/derivation/vocabulary.hpp"
 #include "solver/input/yaml_emit.hpp"
 #include "solver/problem/problem_figure.hpp"
 #include "solver/problem/solve_set.hpp"
@@ -72,7 +74,7 @@ std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang la
   std::string s = fmt::format(
       "<p>{}:</p>\n<pl-checkbox answers-name=\"{}\" fixed-order=\"true\" "
       "hide-letter-keys=\"true\">\n",
-      name, name);
+      xml_escape(answer_caption(p, name, lang)), name);
   for (std::size_t i = 0; i < f.choices.size(); ++i)
     s += fmt::format("  <pl-answer correct=\"{}\">{}. {}</pl-answer>\n",
                      f.right[i] ? "true" : "false", i + 1, xml_escape(f.choices[i]));
@@ -85,24 +87,27 @@ std::string checkbox_html(const std::string& name, const ProblemSpec& p, Lang la
 // forms (15/2, sqrt(14)/14) and `none` are accepted, which pl-number-input and pl-matrix-input
 // refuse; the window a decimal must fall in is stated under the input (params.help), the same
 // the grader uses. The answer panel shows the key (correct_answers, set by server.py).
+// The student reads each input by its caption (answer_caption.hpp) and each word in their
+// language (the grader reads 表 as back); answers-name and params stay keyed by the name.
 std::string input_html(const AnswerSpec& spec, const ProblemSpec& p, Lang lang) {
   const std::string name = xml_escape(spec.name);
+  const std::string caption = xml_escape(answer_caption(p, spec.name, lang));
   const std::string input = prairielearn_input(spec);
   if (input == "checkbox") return checkbox_html(name, p, lang);
   if (input == "choice") {
     std::string s = fmt::format(
-        "<p>{}:</p>\n<pl-multiple-choice answers-name=\"{}\" inline=\"true\">\n", name, name);
+        "<p>{}:</p>\n<pl-multiple-choice answers-name=\"{}\" inline=\"true\">\n", caption, name);
     for (const std::string& w : answer_type(spec.kind).choices(spec))
       s += fmt::format("  <pl-answer correct=\"{{{{params.correct.{}.{}}}}}\">{}</pl-answer>\n",
-                       name, w, xml_escape(w));
+                       name, w, xml_escape(words::vocabulary_word(w).in(lang)));
     return s + "</pl-multiple-choice>";
   }
   return fmt::format(
-      "<pl-string-input answers-name=\"{0}\" label=\"{0} =\" placeholder=\"{1}\" size=\"40\" "
+      "<pl-string-input answers-name=\"{0}\" label=\"{2} =\" placeholder=\"{1}\" size=\"40\" "
       "remove-leading-trailing=\"true\" show-help-text=\"false\"></pl-string-input>\n"
       "<pl-question-panel>{{{{#params.help.{0}}}}}<p class=\"small\">{{{{params.help.{0}}}}}</p>"
       "{{{{/params.help.{0}}}}}</pl-question-panel>",
-      name, xml_escape(answer_type(spec.kind).typed_hint->in(lang)));
+      name, xml_escape(answer_type(spec.kind).typed_hint->in(lang)), caption);
 }
 
 // The key as a student types it (`[1, 1, -1]`, `sqrt(14)/14`, `none`), for the answer panel.

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "export/answer_caption.hpp"
 #include "export/latex_text.hpp"
 #include "export/quiz_items.hpp"
 #include "solver/derivation/i18n.hpp"
@@ -63,14 +64,10 @@ std::string sheet_head(const std::string& title, const PaperSheet& s, const Phra
       latex_prose(kName.in(lang)));
 }
 
-// What an answer line is labelled with, in the sheet's language: the symbol the derivation
-// writes for the answer (a × b, S, D_f) as mathematics, else the label its kind gives it
-// (AnswerSpec::label, whose English is the answer's name) in `lang`, else its name.
+// What an answer line is labelled with, in the sheet's language (answer_caption.hpp), its
+// symbols as mathematics.
 std::string answer_label(const ProblemSpec& p, const std::string& name, Lang lang) {
-  const AnswerSpec* spec = p.info ? p.info->answer(name) : nullptr;
-  if (spec && !spec->symbols.empty()) return latex_prose_symbols(spec->symbols.front());
-  if (spec && !spec->label.empty()) return latex_prose_symbols(spec->label.in(lang));
-  return latex_prose_symbols(name);
+  return latex_prose_symbols(answer_caption(p, name, lang));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "export/answer_caption.hpp"
 #include "export/export_tolerance.hpp"
 #include "export/xml_text.hpp"
 #include "grader/answer_type.hpp"
@@ -211,13 +212,13 @@ std::vector<QuizQuestion> quiz_questions(const ProblemSet& set, Lang lang) {
       if (!spec || !expected) continue;
       QuizAnswer a;
       a.name = name;
-      a.prompt = name;
+      a.prompt = answer_caption(p, name, lang);
       a.points = p.answer_points(name);
       const Said reason = fields_of(p, r.answers, *spec, *expected, a, lang);
       if (reason.empty())
         q.answers.push_back(a);
       else
-        q.left_out.push_back(name + ": " + reason.in(lang));
+        q.left_out.push_back(a.prompt + ": " + reason.in(lang));
     }
     out.push_back(q);
   }

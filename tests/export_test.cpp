@@ -116,8 +116,9 @@ TEST(Export, AnswersNoFieldCanCheckAreNamedNotDropped) {
   EXPECT_NE(moodle.find("{3:NUMERICAL:=8:0.008}"), std::string::npos) << moodle;
   const auto qti = export_qti({{"", qs}}, "Seed 1", "seed1");
   ASSERT_TRUE(qti.count("seed1.xml"));
-  // Canvas: the normal and z are blanks of one item; z = 8 ± 0.008 asks for 2 decimals.
-  EXPECT_NE(qti.at("seed1.xml").find("z: [b3_1] (to 2 decimal places)"), std::string::npos)
+  // Canvas: the normal and z are blanks of one item, z asked by its symbol z_S (the depth at
+  // the pixel S, as the derivation writes it); z = 8 ± 0.008 asks for 2 decimals.
+  EXPECT_NE(qti.at("seed1.xml").find("z_S: [b3_1] (to 2 decimal places)"), std::string::npos)
       << qti.at("seed1.xml");
   EXPECT_NE(qti.at("seed1.xml").find("texttype=\"text/plain\">8.00</mattext>"), std::string::npos);
 }

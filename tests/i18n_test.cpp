@@ -36,11 +36,11 @@ const std::set<std::string>& names() {
       "OpenGL", "DirectX", "Processing", "Newell", "Cohen", "Sutherland", "Hodgman", "Rodrigues",
       "NDC", "perspective", "frustum", "ortho", "camera", "lookAt", "gluLookAt", "glOrtho",
       "glFrustum", "fovy", "fovx", "aspect", "near", "far", "eye", "center", "up", "width",
-      "height", "screenY", "tan", "sin", "sign", "cos", "atan", "sqrt", "diag", "min", "max", "OR",
-      "AND", "xy", "yz", "xz", "ny", "nx", "nz", "xmin", "xmax", "ymin", "ymax", "zmin", "zmax",
-      "inf", "float", "double", "long", "lights", "screenY", "GPU", "true", "false", "Direct3D",
-      "FrontCounterClockwise", "XMMatrixTranslation", "OrthoOffCenterLH", "PerspectiveOffCenterLH",
-      "translate", "size", "cameraZ",
+      "height", "screenY", "tan", "sin", "sign", "cos", "atan", "arctan", "sqrt", "diag", "min",
+      "max", "OR", "AND", "xy", "yz", "xz", "ny", "nx", "nz", "xmin", "xmax", "ymin", "ymax",
+      "zmin", "zmax", "inf", "float", "double", "long", "lights", "screenY", "GPU", "true", "false",
+      "Direct3D", "FrontCounterClockwise", "XMMatrixTranslation", "OrthoOffCenterLH",
+      "PerspectiveOffCenterLH", "translate", "size", "cameraZ",
       // Names of functions and quantities inside formulas.
       "acos", "arccos", "exp", "log", "rad", "outcode", "ndc", "clip", "dist", "depth", "fov", "nf",
       // A scene object's name (the paper plane of the paper-plane seed): names stay as written.

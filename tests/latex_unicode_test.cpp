@@ -58,24 +58,31 @@ TEST(LatexUnicode, ReadsTheNotationsOfTheDerivations) {
 // The two notations cannot be written separately any more: math() takes one text (the same in
 // both), tex() one LaTeX string, frac() two pieces already written.
 template <typename S>
-concept WritesTwoNotations = requires(S s) { math(s, s); };
+concept WritesTwoNotations = requires(S s) {
+  math(s, s);
+};
 static_assert(!WritesTwoNotations<std::string_view>);
 static_assert(!WritesTwoNotations<std::string>);
 
 // A fraction built around values reads as the whole formula's LaTeX would.
 TEST(LatexUnicode, FractionsAroundValuesReadAsTheirLatex) {
-  const Exact three_root_six = 3 * GiNaC::sqrt(GiNaC::numeric(6));
+  const Exact three_root_six = 3 * GiNaC::sqrt(Exact(6));
   const std::vector<MathText> parts = {
-      exact(Exact(-6)), exact(three_root_six), exact(GiNaC::numeric(1, 2)),
+      exact(Exact(-6)),
+      exact(three_root_six),
+      exact(GiNaC::numeric(1, 2)),
       vec(std::vector<Exact>{Exact(-3), Exact(6), Exact(-3)}),
-      exact(GiNaC::sqrt(GiNaC::numeric(14))) + tex(" \\cdot ") + exact(GiNaC::sqrt(GiNaC::numeric(5))),
+      exact(GiNaC::sqrt(Exact(14))) + tex(" \\cdot ") + exact(GiNaC::sqrt(Exact(5))),
       tex("\\lvert") + exact(Exact(-6)) + tex("\\rvert")};
   for (const MathText& a : parts)
     for (const MathText& b : parts) {
       const MathText f = tex("x = ") + frac(a, b);
       EXPECT_EQ(f.unicode, unicode_of_latex(f.latex)) << f.latex;
     }
-  EXPECT_EQ(frac(exact(Exact(-6)), exact(three_root_six)).unicode, "−6/(3√6)");
+  EXPECT_EQ(frac(exact(Exact(-6)), exact(three_root_six)).unicode, "(−6)/(3√6)");
+  // A piece ending in a control word keeps it apart from the letter that follows.
+  EXPECT_EQ((tex(";\\quad") + tex("j = 1")).latex, ";\\quad j = 1");
+  EXPECT_EQ((tex(";\\quad") + tex("j = 1")).unicode, ";  j = 1");
   EXPECT_EQ(frac(vec(std::vector<Exact>{Exact(1), Exact(2)}), exact(Exact(-2))).unicode,
             "(1, 2)/(−2)");
 }

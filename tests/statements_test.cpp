@@ -85,7 +85,7 @@ TEST(Statements, DerivationListsEachStatementWithItsMarkAndReason) {
             "convex polyhedron.");
   EXPECT_EQ(steps[0].result.unicode, "○ True");
   EXPECT_EQ(steps[1].result.unicode, "× False");
-  EXPECT_EQ(steps[1].result.latex, "\\times\\; \\text{False}");
+  EXPECT_EQ(steps[1].result.latex, "\\mathord{\\times}\\;\\text{False}");  // a mark
   EXPECT_EQ(steps[4].title.en(), "The true statements");
   EXPECT_EQ(steps[4].result.unicode, "1");
   // In Japanese the lecture's own words; in Russian, Russian ones.
@@ -339,7 +339,7 @@ TEST(Statements, PaperExamListsTheStatementsNotTheKey) {
   EXPECT_EQ(exam.find("\\begin{itemize}\\setlength{\\itemsep}{0pt}\n\\end{itemize}"),
             std::string::npos);
   const std::string key = answer_key_latex({{"s1", set}}, "Seed 3");
-  EXPECT_NE(key.find("1\\,\\bigcirc,\\; 2\\,\\times"), std::string::npos) << key;
+  EXPECT_NE(key.find("1\\,\\bigcirc,\\;2\\,\\mathord{\\times}"), std::string::npos) << key;
 }
 
 TEST(Statements, GradescopeScoresPerStatement) {

@@ -128,8 +128,7 @@ std::string html_steps(const std::vector<Step>& steps, Lang lang, MathMarkup mar
     for (const MathText* m : {&s.formula, &s.substitution})
       if (!m->empty()) out += "<div class=\"math\">" + block(*m) + "</div>";
     if (!s.result.empty())
-      out += "<div class=\"math result\">" + block(tex("\\Rightarrow\\;") + s.result) +
-             "</div>";
+      out += "<div class=\"math result\">" + block(tex("\\Rightarrow\\;") + s.result) + "</div>";
     if (!s.note.empty())
       out += fmt::format("<div class=\"note\">{}</div>", svg_escape(s.note.in(lang)));
     out += "</li>\n";

@@ -11,17 +11,17 @@ namespace {
 
 // Commands read as one Unicode text; a command not listed is kept as written.
 constexpr std::pair<std::string_view, std::string_view> kSymbols[] = {
-    {"cdot", "·"},    {"theta", "θ"},      {"pi", "π"},
-    {"iff", "⇔"},     {"le", "≤"},         {"ge", "≥"},
-    {"leq", "≤"},     {"geq", "≥"},        {"ne", "≠"},
-    {"neq", "≠"},     {"approx", "≈"},     {"infty", "∞"},
-    {"to", "→"},      {"Rightarrow", "⇒"}, {"Leftrightarrow", "⇔"},
-    {"equiv", "≡"},   {"mapsto", "↦"},     {"forall", "∀"},
-    {"lambda", "λ"},  {"alpha", "α"},      {"beta", "β"},
-    {"gamma", "γ"},   {"kappa", "κ"},      {"Delta", "Δ"},
-    {"sum", "Σ"},     {"in", "∈"},         {"cdots", "⋯"},
-    {"ldots", "…"}, {"dots", "…"},   {"pm", "±"},         {"circ", "°"},
-    {"bigcirc", "○"}, {"colon", ":"}};
+    {"cdot", "·"},   {"theta", "θ"},      {"pi", "π"},
+    {"iff", "⇔"},    {"le", "≤"},         {"ge", "≥"},
+    {"leq", "≤"},    {"geq", "≥"},        {"ne", "≠"},
+    {"neq", "≠"},    {"approx", "≈"},     {"infty", "∞"},
+    {"to", "→"},     {"Rightarrow", "⇒"}, {"Leftrightarrow", "⇔"},
+    {"equiv", "≡"},  {"mapsto", "↦"},     {"forall", "∀"},
+    {"lambda", "λ"}, {"alpha", "α"},      {"beta", "β"},
+    {"gamma", "γ"},  {"kappa", "κ"},      {"Delta", "Δ"},
+    {"sum", "Σ"},    {"in", "∈"},         {"cdots", "⋯"},
+    {"ldots", "…"},  {"dots", "…"},       {"pm", "±"},
+    {"circ", "°"},   {"bigcirc", "○"},    {"colon", ":"}};
 // Named functions: written upright, a space between the name and an argument that is not in
 // parentheses (sin θ, tan 30°), a fraction argument put in parentheses (tan(fovy/2)).
 constexpr std::string_view kFunctions[] = {"sin",    "cos", "tan", "arccos", "arcsin",
@@ -30,9 +30,9 @@ constexpr std::string_view kFunctions[] = {"sin",    "cos", "tan", "arccos", "ar
 // operator's spacing): the Unicode is the argument.
 // \overrightarrow{AB}, the vector from A to B, is written AB on one line, as bold is dropped;
 // \mathord{\times} is a × that is a mark, not an operator.
-constexpr std::string_view kStyles[] = {"mathbf",     "mathrm",         "mathsf",  "mathtt",
-                                        "mathit",     "mathbin",        "mathord", "boldsymbol",
-                                        "overrightarrow"};
+constexpr std::string_view kStyles[] = {"mathbf",  "mathrm",     "mathsf",
+                                        "mathtt",  "mathit",     "mathbin",
+                                        "mathord", "boldsymbol", "overrightarrow"};
 // Subscripts and superscripts Unicode has a character for.
 constexpr std::pair<std::string_view, std::string_view> kSubscripts[] = {
     {"0", "₀"}, {"1", "₁"}, {"2", "₂"}, {"3", "₃"}, {"4", "₄"}, {"5", "₅"}, {"6", "₆"},
@@ -100,7 +100,6 @@ bool holds_outside_brackets(std::string_view t, std::initializer_list<std::strin
 // be read wrongly: a sum, a product written with a space, a quotient; below the bar (and
 // under a root) also a product written with · or ×.
 std::string operand(std::string_view t, bool below) {
-  constexpr std::string_view kMinus = "−";
   bool wrap = false;
   if (below) {
     // A number times a root (3√6) is a product too.
@@ -108,9 +107,7 @@ std::string operand(std::string_view t, bool below) {
     wrap = holds_outside_brackets(t, {" ", "+", "−", "-", "/", "·", "×"}) ||
            holds_outside_brackets(after_first, {"√"});
   } else {
-    // A leading minus needs no parentheses above the bar: −6/x is (−6)/x.
-    const std::string_view rest = t.substr(t.rfind(kMinus, 0) == 0 ? kMinus.size() : 0);
-    wrap = holds_outside_brackets(rest, {" ", "+", "−", "-", "/"});
+    wrap = holds_outside_brackets(t, {" ", "+", "−", "-", "/"});
   }
   return wrap ? "(" + std::string(t) + ")" : std::string(t);
 }

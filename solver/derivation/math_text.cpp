@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "solver/derivation/latex_unicode.hpp"
@@ -12,8 +13,23 @@
 
 namespace frustum {
 
+namespace {
+
+// Whether LaTeX text ends with a control word (\quad, \cdot): a letter written right after it
+// would be read as part of its name (\quadj).
+bool ends_with_control_word(const std::string& latex) {
+  std::size_t i = latex.size();
+  while (i > 0 && std::isalpha(static_cast<unsigned char>(latex[i - 1]))) --i;
+  return i < latex.size() && i > 0 && latex[i - 1] == '\\';
+}
+
+}  // namespace
+
 MathText& MathText::operator+=(const MathText& other) {
   unicode += other.unicode;
+  if (!other.latex.empty() && std::isalpha(static_cast<unsigned char>(other.latex[0])) &&
+      ends_with_control_word(latex))
+    latex += ' ';
   latex += other.latex;
   for (const Said& w : other.words)
     if (std::find(words.begin(), words.end(), w) == words.end()) words.push_back(w);
@@ -33,10 +49,6 @@ MathText math_pair(std::string_view unicode, std::string_view latex) {
 }
 
 }  // namespace
-
-MathText math(std::string_view unicode, std::string_view latex) {
-  return math_pair(unicode, latex);
-}
 
 MathText tex(std::string_view latex) { return {unicode_of_latex(latex), std::string(latex)}; }
 

@@ -27,7 +27,6 @@ MathText operator+(MathText a, const MathText& b);
 
 // Literal text, the same in both notations (a number, a name written plainly).
 MathText math(std::string_view both);
-MathText math(std::string_view unicode, std::string_view latex);  // TEMPORARY: being removed
 // A formula written once, in LaTeX: its Unicode is read from it (latex_unicode.hpp), so the two
 // cannot drift apart. Pieces around values are joined with + and frac(); only this file's
 // builders (vectors, matrices, counts) write the two notations separately, through

@@ -218,7 +218,7 @@ struct Barycentric {
       steps
           ->add(say(kBarycentricCoordinates),
                 tex("\\lambda_0 = \\frac{E_{BC}}{E_{AB}(C)},\\; \\lambda_1 = "
-                     "\\frac{E_{CA}}{E_{AB}(C)},\\; \\lambda_2 = \\frac{E_{AB}}{E_{AB}(C)}"),
+                    "\\frac{E_{CA}}{E_{AB}(C)},\\; \\lambda_2 = \\frac{E_{AB}}{E_{AB}(C)}"),
                 {}, vec(lambda, true))
           .yields("lambda");
     // Inside the closed triangle, decided (and written) as depth_at_pixel decides it.
@@ -231,7 +231,7 @@ struct Barycentric {
       steps
           ->add(say(kDepthByInterpolation),
                 tex("z_S = \\lambda_0 z_A + \\lambda_1 z_B + "
-                     "\\lambda_2 z_C"),
+                    "\\lambda_2 z_C"),
                 {}, tex("z_S = ") + exact(z, true))
           .yields("z");
     return out;

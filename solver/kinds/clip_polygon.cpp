@@ -95,7 +95,7 @@ struct ClipPolygon {
     if (vs.empty()) return word(kNoVertices);
     MathText m;
     for (std::size_t i = 0; i < vs.size(); ++i) {
-      if (i) m += tex(",\\; ");
+      if (i) m += tex(",\\;");
       m += vec(vs[i]);
     }
     return m;

@@ -358,8 +358,7 @@ struct DepthAtPixel {
     out.set("z", Value::scalar(z));
     if (steps) {
       steps
-          ->add(say(kDepthAtPixel),
-                tex("z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
+          ->add(say(kDepthAtPixel), tex("z_S = \\frac{d - a\\,x_S - b\\,y_S}{c}"),
                 linear_equation({{a * g.pixel(0), ""}, {b * g.pixel(1), ""}, {c, "z"}}, plane[3]),
                 tex("z_S = ") + exact(z, true))
           .yields("z");

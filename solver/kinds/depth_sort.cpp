@@ -316,8 +316,7 @@ struct DepthSort {
     const MathText sep = tex(",\\; ");
     MathText lines;
     for (std::size_t k = 0; k < n; ++k)
-      lines += (k ? sep : MathText{}) +
-               tex(fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
+      lines += (k ? sep : MathText{}) + tex(fmt::format("\\mathbf{{g}}_{{{}}} = ", k)) +
                vec(res.centroids[k]);
     steps
         ->add(say(kCentroids),
@@ -327,8 +326,7 @@ struct DepthSort {
         .yields("centroids");
     MathText depths;
     for (std::size_t k = 0; k < n; ++k)
-      depths += (k ? sep : MathText{}) +
-                tex(fmt::format("\\text{{depth}}_{{{}}} = ", k)) +
+      depths += (k ? sep : MathText{}) + tex(fmt::format("\\text{{depth}}_{{{}}} = ", k)) +
                 exact(res.depths[k], true);
     if (g.viewer.eye)
       steps

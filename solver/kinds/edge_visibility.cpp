@@ -362,8 +362,8 @@ struct EdgeVisibility {
         product = fmt::format("A_{{{}}}", i + 1) + (i ? "\\," : "") + product;
       }
       order.append(Said::verbatim("."));
-      Step& s = steps->add(say(kTransformTheSolid), tex("M = " + product),
-                           {}, math("M = ") + matrix_text(m));
+      Step& s = steps->add(say(kTransformTheSolid), tex("M = " + product), {},
+                           math("M = ") + matrix_text(m));
       s.note = order + say(kEveryVertexMoves);
       if (det < 0) s.note += say(kDetMirrors);
     }
@@ -401,12 +401,12 @@ struct EdgeVisibility {
                                      "oriented polyhedron are needed to classify its edges");
     if (steps)
       steps
-          ->add(say(kClosedAndOriented), tex("V - E + F"), {},
-                tex(fmt::format("{} - {} + {} = {}", mesh.vertices.size(), check.edges.size(),
-                                mesh.faces.size(),
-                                static_cast<long>(mesh.vertices.size()) -
-                                    static_cast<long>(check.edges.size()) +
-                                    static_cast<long>(mesh.faces.size()))))
+          ->add(
+              say(kClosedAndOriented), tex("V - E + F"), {},
+              tex(fmt::format(
+                  "{} - {} + {} = {}", mesh.vertices.size(), check.edges.size(), mesh.faces.size(),
+                  static_cast<long>(mesh.vertices.size()) - static_cast<long>(check.edges.size()) +
+                      static_cast<long>(mesh.faces.size()))))
           .note = say(kEveryEdgeJoinsTwo);
 
     // Front or back per face (seed 003).
@@ -507,7 +507,7 @@ struct EdgeVisibility {
       steps
           ->add(say(kConvexQ),
                 tex("\\mathbf{n}_f\\cdot(\\mathbf{v} - \\mathbf{p}_f) \\le 0 \\quad "
-                     "\\forall\\, \\mathbf{v}, f"),
+                    "\\forall\\, \\mathbf{v}, f"),
                 {}, word(convex ? words::kConvex : words::kNotConvex))
           .yields("convex")
           .note =

@@ -220,8 +220,7 @@ struct Homogeneous {
         Step& step =
             steps
                 ->add(say(kTheSamePoint),
-                      word(kEqualQuotients) + tex(" \\Leftrightarrow ") +
-                          word(kTheSamePointWord),
+                      word(kEqualQuotients) + tex(" \\Leftrightarrow ") + word(kTheSamePointWord),
                       vec(p) + tex(same ? " = " : " \\neq ") + vec(g.point),
                       word(same ? words::kYes : words::kNo))
                 .yields("same_point");

@@ -286,16 +286,13 @@ struct Render {
       // The winner is an object's name, as the scene gives it, or the background.
       const MathText winner_word =
           t.winner < 0 ? word(words::kBackground) : word(Said::verbatim(winner));
-      Step& s = steps->add(
-          say(kPixelAt, fmt::format("({}, {})", q[0], q[1])),
-          tex("Z = 1\\ (") + word(kCleared) + tex("),\\; F = ") + word(words::kBackground) +
-              tex("\\ " + color_text(scene.background)),
-          {},
-          word(kColour) +
-              tex("\\ " + color_text(t.color) + ",\\; ") +
-              word(words::kDepth) +
-              tex("\\ " + depth_text(t.depth) + "\\quad (") +
-              winner_word + math(")"));
+      Step& s = steps->add(say(kPixelAt, fmt::format("({}, {})", q[0], q[1])),
+                           tex("Z = 1\\ (") + word(kCleared) + tex("),\\; F = ") +
+                               word(words::kBackground) + tex("\\ " + color_text(scene.background)),
+                           {},
+                           word(kColour) + tex("\\ " + color_text(t.color) + ",\\; ") +
+                               word(words::kDepth) + tex("\\ " + depth_text(t.depth) + "\\quad (") +
+                               winner_word + math(")"));
       s.note = trace;
     }
     std::vector<MathText> shown;

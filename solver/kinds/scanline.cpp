@@ -284,10 +284,9 @@ struct Scanline {
 
     MathText found;
     for (const Section& s : ss)
-      found += tex(found.empty() ? "" : ",\\quad") +
-               math(g.polygons[s.polygon].label + ": ") + tex("x \\in [") + exact(s.x_left) +
-               math(", ") + exact(s.x_right) + math("], z: ") + exact(s.z_left) + tex(" \\to ") +
-               exact(s.z_right);
+      found += tex(found.empty() ? "" : ",\\quad") + math(g.polygons[s.polygon].label + ": ") +
+               tex("x \\in [") + exact(s.x_left) + math(", ") + exact(s.x_right) + math("], z: ") +
+               exact(s.z_left) + tex(" \\to ") + exact(s.z_right);
     steps
         ->add(say(kSections),
               tex("x = x_0 + \\frac{(y - y_0)(x_1 - x_0)}{y_1 - y_0},\\quad z = z_0 + "
@@ -299,16 +298,16 @@ struct Scanline {
     for (const Crossing& c : crossings) {
       const std::string& a = g.polygons[c.a].label;
       const std::string& b = g.polygons[c.b].label;
-      where +=
-          tex(where.empty() ? "" : ",\\quad") +
-          tex(fmt::format("z_{{\\mathrm{{{}}}}}(x) = z_{{\\mathrm{{{}}}}}(x) \\Rightarrow x = ", a, b)) +
-          exact(c.x);
+      where += tex(where.empty() ? "" : ",\\quad") +
+               tex(fmt::format(
+                   "z_{{\\mathrm{{{}}}}}(x) = z_{{\\mathrm{{{}}}}}(x) \\Rightarrow x = ", a, b)) +
+               exact(c.x);
     }
     if (!crossings.empty()) steps->add(say(kDepthsCross), math("z_a(x) = z_b(x)"), {}, where);
     MathText shown;
     for (const Piece& p : ps)
-      shown += tex(shown.empty() ? "" : ",\\quad") + math("[") +
-               exact(p.from) + math(", ") + exact(p.to) + math("]: ") +
+      shown += tex(shown.empty() ? "" : ",\\quad") + math("[") + exact(p.from) + math(", ") +
+               exact(p.to) + math("]: ") +
                (p.label == kBackground ? word(words::kBackground) : math(p.label));
     steps->add(say(kNearestOnEachPiece), word(words::kVisible) + tex(": \\min z"), {}, shown)
         .yields("visible")

@@ -322,9 +322,8 @@ struct Vectors {
     out.set("area", Value::scalar(area));
     if (steps)
       steps
-          ->add(say(kAreaOfParallelogram),
-                tex("S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"), {},
-                math("S = ") + exact(area, true))
+          ->add(say(kAreaOfParallelogram), tex("S = \\lVert \\mathbf{a}\\times\\mathbf{b} \\rVert"),
+                {}, math("S = ") + exact(area, true))
           .yields("area");
     const Exact sin = canonical(m.sin);
     out.set("sin", Value::scalar(sin));
@@ -341,13 +340,12 @@ struct Vectors {
     out.set("cos", Value::scalar(cos));
     if (steps)
       steps
-          ->add(
-              say(kCosineOfAngle),
-              tex("\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
-                  "\\lVert\\mathbf{b}\\rVert}"),
-              tex("\\cos\\theta = ") +
-                  frac(exact(dot), exact(len_a) + tex(" \\cdot ") + exact(len_b)),
-              tex("\\cos\\theta = ") + exact(cos, true))
+          ->add(say(kCosineOfAngle),
+                tex("\\cos\\theta = \\frac{\\mathbf{a}\\cdot\\mathbf{b}}{\\lVert\\mathbf{a}\\rVert "
+                    "\\lVert\\mathbf{b}\\rVert}"),
+                tex("\\cos\\theta = ") +
+                    frac(exact(dot), exact(len_a) + tex(" \\cdot ") + exact(len_b)),
+                tex("\\cos\\theta = ") + exact(cos, true))
           .yields("cos");
     const Exact radians = canonical(exact_acos(cos));
     const Exact angle =

@@ -295,7 +295,7 @@ void record_unit_normal(const Vec3<Exact>& n, const Vec3<Exact>& u, Derivation* 
     steps
         ->add(say(kind_words::kUnitNormalTitle),
               tex("\\hat{\\mathbf{n}} = \\mathbf{n} / \\lVert\\mathbf{n}\\rVert,\\; "
-                   "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
+                  "\\lVert\\mathbf{n}\\rVert = \\sqrt{n_x^2 + n_y^2 + n_z^2}"),
               tex("\\lVert\\mathbf{n}\\rVert = ") + exact(norm(n), true),
               tex("\\hat{\\mathbf{n}} = ") + vec(u, true))
         .yields("unit_normal");
@@ -344,14 +344,14 @@ Vec3<Exact> polygon_normal_with_steps(const Polygon3<Exact>& p, const std::strin
       steps
           ->add(say(kNewellNormalLeftHanded, p.size()),
                 tex("\\mathbf{n} = -\\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
-                     "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
+                    "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
                 {}, tex("\\mathbf{n} = ") + vec(n))
           .note = say(kLeftHandedNewellSign);
     else if (steps)
       steps
           ->add(say(kNewellNormal, p.size()),
                 tex("\\mathbf{n} = \\sum_i (\\mathbf{p}_i - \\mathbf{p}_0) \\times "
-                     "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
+                    "(\\mathbf{p}_{i+1} - \\mathbf{p}_0)"),
                 {}, tex("\\mathbf{n} = ") + vec(n))
           .note = say(kNewellSumsEveryPair);
   }
@@ -480,14 +480,13 @@ Vec3<Exact> cross_normal_with_steps(const std::array<Vec3<Exact>, 3>& abc, const
     const Vec3<Exact> u = named_edge(order.first, abc), v = named_edge(order.second, abc);
     auto edge_text = [&](const std::string& e, const Vec3<Exact>& value) {
       const std::string from(1, e[0]), to(1, e[1]);
-      return tex("\\overrightarrow{" + e + "} = " + to + " - " + from + " = ") +
-             vec(value);
+      return tex("\\overrightarrow{" + e + "} = " + to + " - " + from + " = ") + vec(value);
     };
     steps->add(say(kEdgeVectors), {}, {},
                edge_text(order.first, u) + tex(",\\; ") + edge_text(order.second, v));
     steps->add(say(kind_words::kNormalTitle),
-               tex("\\mathbf{n} = \\overrightarrow{" + order.first +
-                        "} \\times \\overrightarrow{" + order.second + "}"),
+               tex("\\mathbf{n} = \\overrightarrow{" + order.first + "} \\times \\overrightarrow{" +
+                   order.second + "}"),
                tex("\\mathbf{n} = ") + vec(u) + tex(" \\times ") + vec(v),
                tex("\\mathbf{n} = ") + vec(n));
     warn_condition(steps, normal_condition(to_doubles({abc[0], abc[1], abc[2]})),
@@ -510,8 +509,8 @@ bool inside_triangle_with_steps(const std::array<Vec3<Exact>, 3>& triangle,
     steps
         ->add(say(kIsPixelInside),
               tex("\\operatorname{sign} E_{AB}(x_S, y_S),\\; \\operatorname{sign} E_{BC}(x_S, "
-                   "y_S),\\; "
-                   "\\operatorname{sign} E_{CA}(x_S, y_S)"),
+                  "y_S),\\; "
+                  "\\operatorname{sign} E_{CA}(x_S, y_S)"),
               sign_text(s0) + math(", ") + sign_text(s1) + math(", ") + sign_text(s2),
               word(inside ? words::kInside : words::kOutside))
         .yields("inside")

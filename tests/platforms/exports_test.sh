@@ -107,9 +107,13 @@ def play(work, frustum, grader, question, mode, seed, in_process):
     for name, kind in params["inputs"].items():
         a = answers[name]
         value = a["value"]
-        if kind == "choice":
-            words = list(params["correct"][name])
-            params[name] = [{"key": chr(97 + i), "html": w} for i, w in enumerate(words)]
+        if kind == "choice":  # the options as question.html shows them (in the export's language)
+            block = re.search(r'<pl-multiple-choice answers-name="%s"[^>]*>(.*?)</pl-multiple-choice>'
+                              % re.escape(name), html, re.S).group(1)
+            options = re.findall(r'<pl-answer correct="\{\{params\.correct\.%s\.(\w+)\}\}">(.*?)</pl-answer>'
+                                 % re.escape(name), block)
+            words = [w for w, _ in options]
+            params[name] = [{"key": chr(97 + i), "html": shown} for i, (_, shown) in enumerate(options)]
             right = str(value).lower() if isinstance(value, bool) else str(value)
             submitted[name] = raw[name] = chr(97 + words.index(right))
         elif kind == "checkbox":  # which statements are true: the options as question.html lists them
@@ -217,6 +221,16 @@ check "PrairieLearn: an unreadable answer is not gradable (no attempt charged)" 
 python3 "$work/play.py" "$work" "$frustum" "$grader" "$(ls -d "$work"/pl-ja/*culling-statements*/)" right 1 >/dev/null
 check "PrairieLearn: a --lang ja export grades with Japanese feedback" \
   grep -q '得点\|正解' "$work/grade/results/results.json"
+# Its words are the student's (表, 裏, 真横), its inputs captioned by their symbols, and the
+# word a student picks is read back by the grader.
+backface_ja=$(ls -d "$work"/pl-ja/*backface*/ | head -1)
+check "PrairieLearn: a --lang ja export shows the facing choices in Japanese and captions inputs by their symbols" \
+  bash -c 'grep -q ">裏</pl-answer>" "$1" && grep -q "label=\"D_f =\"" "$1"' _ "$backface_ja/question.html"
+python3 "$work/play.py" "$work" "$frustum" "$grader" "$backface_ja" right 1 >/dev/null
+check "PrairieLearn: the Japanese word picked (裏) earns its points" python3 - "$work/grade/results/results.json" <<'PY'
+import json, sys
+sys.exit(0 if json.load(open(sys.argv[1])).get("score") == 1.0 else 1)
+PY
 python3 "$work/play.py" "$work" "$frustum" "$grader" "$(ls -d "$work"/pl/001_*zbuf*/ | head -1)" wrong 1 >/dev/null
 check "PrairieLearn: feedback is HTML in frustum_html, no Markdown or \$\$ in the <pre> fields" python3 - "$work/grade/results/results.json" <<'PY'
 import json, sys
