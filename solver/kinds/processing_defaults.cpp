@@ -102,7 +102,7 @@ struct ProcessingDefaults {
     if (steps)
       steps
           ->add(say(kDefaultCamera),
-                tex("\\text{cameraZ} = \\frac{\\text{height}/2}{\\tan 30^\\circ},\\; "
+                tex("\\text{cameraZ} = \\frac{\\text{height}/2}{\\tan(30^\\circ)},\\; "
                     "\\mathbf{eye} = (\\tfrac{\\text{width}}{2}, \\tfrac{\\text{height}}{2}, "
                     "\\text{cameraZ}),\\; \\mathbf{center} = (\\tfrac{\\text{width}}{2}, "
                     "\\tfrac{\\text{height}}{2}, 0),\\; \\mathbf{up} = (0, 1, 0)"),
