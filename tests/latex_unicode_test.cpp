@@ -29,7 +29,8 @@ TEST(LatexUnicode, ReadsTheNotationsOfTheDerivations) {
   EXPECT_EQ(unicode_of_latex("\\unknown{x}"), "\\unknownx");  // kept, never dropped silently
   // Named functions: a space before a bare argument, a fraction argument in parentheses.
   EXPECT_EQ(unicode_of_latex("\\sin\\theta = \\cos 30^\\circ"), "sin θ = cos 30°");
-  EXPECT_EQ(unicode_of_latex("t = n\\tan\\frac{\\text{fovy}}{2}"), "t = n tan(fovy/2)");
+  EXPECT_EQ(unicode_of_latex("t = n\\tan\\frac{\\text{fovy}}{2}"), "t = n·tan(fovy/2)");
+  EXPECT_EQ(unicode_of_latex("2\\arctan\\left(x\\right)"), "2·arctan(x)");
   EXPECT_EQ(unicode_of_latex("\\operatorname{sign} E_{AB}"), "sign E_AB");
   // A thin space between two factors is a product; after a quantifier it is a space.
   EXPECT_EQ(unicode_of_latex("z = \\frac{d - a\\,x}{c}"), "z = (d − a·x)/c");

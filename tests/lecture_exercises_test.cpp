@@ -294,8 +294,8 @@ TEST(LectureExercises, CourseConventionForHorizontalFovIsHonoured) {
   for (const Step& s : m.derivation.steps())
     related =
         related || (s.title.en() == "The same frustum from the vertical angle" &&
-                    s.result.unicode.find("fovy = 2 arctan(1/2) ≈ 53.13°") != std::string::npos);
-  EXPECT_TRUE(related) << "the derivation shows fovy = 2 arctan(tan(fovx/2)/aspect)";
+                    s.result.unicode.find("fovy = 2·arctan(1/2) ≈ 53.13°") != std::string::npos);
+  EXPECT_TRUE(related) << "the derivation shows fovy = 2·arctan(tan(fovx/2)/aspect)";
   EXPECT_NE(m.derivation.steps().front().note.en().find("the field of view is horizontal"),
             std::string::npos);
   const ProblemResult& p = find(solved, "fov-horizontal-point");

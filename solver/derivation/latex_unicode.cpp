@@ -209,9 +209,9 @@ class Reader {
     out += round ? ")" : "]";
   }
 
-  // A named function: a space before it after a factor, then its argument.
+  // A named function: a product's dot before it right after a factor (n·tan), then its argument.
   void function(std::string& out, std::string_view name) {
-    if (ends_with_operand(out)) out += ' ';
+    if (ends_with_operand(out)) out += "·";
     out += name;
     skip_spaces();
     const std::string_view next = command_at(i_);

@@ -1,7 +1,7 @@
 // A formula written once, in LaTeX, read into the Unicode the terminal and JSON show:
 // \mathbf{n} → n, \cdot → ·, \times → " × ", \frac{a + b}{c} → (a + b)/c, x_0 → x₀,
 // x_{\text{eye}} → x_eye, p_{i+1} → pᵢ₊₁, M^{-1} → M⁻¹, \text{width} → width, ,\; → ",  ",
-// - → −, \sin\theta → sin θ, n\tan\frac{a}{2} → n tan(a/2), a\,x → a·x, a bmatrix → [a, b; c, d].
+// - → −, \sin\theta → sin θ, n\tan\frac{a}{2} → n·tan(a/2), a\,x → a·x, a bmatrix → [a, b; c, d].
 // math_text.hpp's tex() makes both notations from one string this way.
 #pragma once
 

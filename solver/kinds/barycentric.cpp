@@ -230,8 +230,8 @@ struct Barycentric {
     if (steps)
       steps
           ->add(say(kDepthByInterpolation),
-                tex("z_S = \\lambda_0 z_A + \\lambda_1 z_B + "
-                    "\\lambda_2 z_C"),
+                tex("z_S = \\lambda_0\\,z_A + \\lambda_1\\,z_B + "
+                    "\\lambda_2\\,z_C"),
                 {}, tex("z_S = ") + exact(z, true))
           .yields("z");
     return out;
