@@ -60,8 +60,7 @@ Response preview_answer(StudentApp& app, const Visitor& v,
   if (!spec) return json_response(404, R"({"error":"unknown answer"})");
   const std::string text = field(form, "text");
   if (text.size() > kMaxAnswerChars)
-    return json_response(200,
-                         json_text(Json{{"ok", false}, {"error", say(Say::TooLarge, lang)}}, -1));
+    return json_response(200, json_text(Json{{"ok", false}, {"error", kTooLarge.in(lang)}}, -1));
   if (text.find_first_not_of(" \t") == std::string::npos)
     return json_response(200, R"({"ok":true,"empty":true})");
   const YAML::Node node = answer_node(text);
@@ -71,14 +70,12 @@ Response preview_answer(StudentApp& app, const Visitor& v,
     const std::lock_guard lock(app.exact_math);
     const ParsedAnswer parsed = parse_answer(node, *spec, p->conventions.angles);
     if (!parsed.ok) {
-      reading = Json{
-          {"ok", false}, {"label", say(Say::CannotRead, lang)}, {"error", parsed.error.in(lang)}};
+      reading =
+          Json{{"ok", false}, {"label", kCannotRead.in(lang)}, {"error", parsed.error.in(lang)}};
     } else {
       const MathText shown = read_as(parsed.value, *spec);
-      reading = Json{{"ok", true},
-                     {"label", say(Say::ReadAs, lang)},
-                     {"tex", shown.latex},
-                     {"text", shown.unicode}};
+      reading = Json{
+          {"ok", true}, {"label", kReadAs.in(lang)}, {"tex", shown.latex}, {"text", shown.unicode}};
     }
   }
   return json_response(200, json_text(reading, -1));
@@ -95,8 +92,7 @@ Response save_draft(StudentApp& app, const Visitor& v,
   if (text.size() > kMaxAnswerChars) return json_response(413, R"({"error":"too long"})");
   app.store.save_draft(v.student,
                        Draft{field(form, "set"), p->id, field(form, "answer"), text, now});
-  return json_response(200,
-                       json_text(Json{{"ok", true}, {"label", say(Say::DraftSaved, lang)}}, -1));
+  return json_response(200, json_text(Json{{"ok", true}, {"label", kDraftSaved.in(lang)}}, -1));
 }
 
 Response submit_answers(StudentApp& app, const Visitor& v, const CourseSet& set,
@@ -104,21 +100,21 @@ Response submit_answers(StudentApp& app, const Visitor& v, const CourseSet& set,
                         Millis now) {
   const Lang lang = set.set.lang;
   if (const int wait = app.submit_limit.take(v.session_hash, now))
-    return message_page(429, lang, Say::TooMany, wait);
+    return message_page(429, lang, kTooMany, wait);
   const ProblemSet* variant = set.for_student(v.student);
   const ProblemSpec* p = variant ? variant->find(field(form, "problem")) : nullptr;
-  if (!p) return message_page(404, lang, Say::NotFound);
-  if (set.policy.closed_for(v.student, now)) return message_page(403, lang, Say::DeadlinePassed);
+  if (!p) return message_page(404, lang, kNotFound);
+  if (set.policy.closed_for(v.student, now)) return message_page(403, lang, kDeadlinePassed);
   if (set.policy.attempts &&
       attempts_at(app.store.submissions(v.student, set.id), p->id) >= *set.policy.attempts)
-    return message_page(403, lang, Say::NoAttemptsLeft);
+    return message_page(403, lang, kNoAttemptsLeft);
   Json answers = Json::object();
   for (const std::string& name : p->ask) {
     const std::string text = field(form, "a." + name);
-    if (text.size() > kMaxAnswerChars) return message_page(413, lang, Say::TooLarge);
+    if (text.size() > kMaxAnswerChars) return message_page(413, lang, kTooLarge);
     if (text.find_first_not_of(" \t\r\n") != std::string::npos) answers[name] = text;
   }
-  if (answers.empty()) return message_page(400, lang, Say::FillOneAnswer);
+  if (answers.empty()) return message_page(400, lang, kFillOneAnswer);
   // Committed (durable) before anything says it was received.
   const SubmissionRecord s =
       app.store.submit(NewSubmission{v.student, set.id, set.version, set.variant_id(v.student),

@@ -82,32 +82,31 @@ std::string errors_html(const Json& check, Lang lang) {
   std::vector<Json> listed = check.value("errors", std::vector<Json>());
   for (const Json& s : check.value("samples", Json::array()))
     if (!s.value("ok", true)) listed.push_back(s);
-  std::string out = fmt::format("<h2>{}</h2>\n", html_escape(say(AuthorSay::Errors, lang)));
-  if (listed.empty()) return out + fmt::format("<p>{}</p>\n", say(AuthorSay::NoErrors, lang));
+  std::string out = fmt::format("<h2>{}</h2>\n", html_escape(kErrors.in(lang)));
+  if (listed.empty()) return out + fmt::format("<p>{}</p>\n", kNoErrors.in(lang));
   out += "<ul>\n";
   for (const Json& e : listed)
-    out += fmt::format("<li>{} {}: <code>{}</code>: {}</li>\n", say(AuthorSay::Line, lang),
-                       e.value("line", 0), html_escape(e.value("field", "")),
-                       html_escape(e.value("message", "")));
+    out += fmt::format("<li>{} {}: <code>{}</code>: {}</li>\n", kLine.in(lang), e.value("line", 0),
+                       html_escape(e.value("field", "")), html_escape(e.value("message", "")));
   return out + "</ul>\n";
 }
 
 // The module's words, in the page's language (data-words).
 std::string words_json(Lang lang) {
-  return Json{{"line", say(AuthorSay::Line, lang)},
-              {"errors", say(AuthorSay::Errors, lang)},
-              {"noErrors", say(AuthorSay::NoErrors, lang)},
-              {"warnings", say(AuthorSay::Warnings, lang)},
-              {"samples", say(AuthorSay::Samples, lang)},
-              {"expected", say(AuthorSay::Expected, lang)},
-              {"graded", say(AuthorSay::Graded, lang)},
-              {"statement", say(AuthorSay::Statement, lang)},
-              {"key", say(AuthorSay::AnswerKey, lang)},
-              {"checking", say(AuthorSay::Checking, lang)},
-              {"previewFailed", say(AuthorSay::PreviewFailed, lang)},
-              {"given", say(Say::Given, lang)},
-              {"derivation", say(Say::Derivation, lang)},
-              {"figure", say(Say::Figure, lang)}}
+  return Json{{"line", kLine.in(lang)},
+              {"errors", kErrors.in(lang)},
+              {"noErrors", kNoErrors.in(lang)},
+              {"warnings", kWarnings.in(lang)},
+              {"samples", kSamples.in(lang)},
+              {"expected", kExpected.in(lang)},
+              {"graded", kGraded.in(lang)},
+              {"statement", kStatement.in(lang)},
+              {"key", kAnswerKey.in(lang)},
+              {"checking", kChecking.in(lang)},
+              {"previewFailed", kPreviewFailed.in(lang)},
+              {"given", kGiven.in(lang)},
+              {"derivation", kDerivation.in(lang)},
+              {"figure", kFigure.in(lang)}}
       .dump();
 }
 
@@ -129,18 +128,18 @@ Response author_page(StudentApp& app, const Visitor& v, const AuthoredSet& set, 
       "<button type=\"submit\" name=\"force\" value=\"1\" id=\"save-anyway\">{9}</button></p>\n"
       "</form>\n<section id=\"check\">{10}</section>\n<section id=\"samples\"></section>\n"
       "<section id=\"preview\"></section>\n</main>\n",
-      html_escape(set.id), html_escape(say(AuthorSay::Authoring, lang)), html_escape(message),
+      html_escape(set.id), html_escape(kAuthoring.in(lang)), html_escape(message),
       html_escape(v.csrf), html_escape(base), html_escape(yaml),
-      html_escape(say(AuthorSay::PreviewVariant, lang)), roster_options(app.course()),
-      html_escape(say(AuthorSay::Save, lang)), html_escape(say(AuthorSay::SaveWithErrors, lang)),
-      errors, html_escape(words_json(lang)));
+      html_escape(kPreviewVariant.in(lang)), roster_options(app.course()),
+      html_escape(kSave.in(lang)), html_escape(kSaveWithErrors.in(lang)), errors,
+      html_escape(words_json(lang)));
   constexpr const char* kHead =
       "<link rel=\"stylesheet\" href=\"/static/codemirror/lib/codemirror.css\">\n"
       "<link rel=\"stylesheet\" href=\"/static/author.css\">\n"
       "<script defer src=\"/static/codemirror/lib/codemirror.js\"></script>\n"
       "<script defer src=\"/static/codemirror/mode/yaml/yaml.js\"></script>\n"
       "<script type=\"module\" src=\"/static/author.js\"></script>\n";
-  return html_response(status, page_html(lang, say(AuthorSay::Authoring, lang) + (": " + set.id),
+  return html_response(status, page_html(lang, std::string(kAuthoring.in(lang)) + (": " + set.id),
                                          body, v.csrf, false, kHead));
 }
 
@@ -165,23 +164,24 @@ Response save(StudentApp& app, const Visitor& v, const Request& r, const Authore
   const bool force = field(form, "force") == "1";
   const bool json = wants_json(r);
   const Lang lang = set.lang;
-  const auto refuse = [&](int status, AuthorSay what, const Json& extra,
+  const auto refuse = [&](int status, const Phrase& what, const Json& extra,
                           const std::string& errors) {
-    if (!json) return author_page(app, v, set, status, yaml, base, say(what, lang), errors);
-    Json j{{"saved", false}, {"message", say(what, lang)}};
+    if (!json)
+      return author_page(app, v, set, status, yaml, base, std::string(what.in(lang)), errors);
+    Json j{{"saved", false}, {"message", what.in(lang)}};
     j.update(extra);
     return json_response(status, j.dump());
   };
   const std::lock_guard lock(app.author_files);  // compare, check and write as one
   const std::optional<std::string> current = read_set_file(set.file);
-  if (!current) return message_page(404, lang, Say::NotFound);
+  if (!current) return message_page(404, lang, kNotFound);
   const std::string version = sha256_hex(*current);
   if (!constant_time_equal(version, base))
-    return refuse(409, AuthorSay::ChangedOnDisk, Json{{"version", version}}, "");
+    return refuse(409, kChangedOnDisk, Json{{"version", version}}, "");
   const std::optional<Json> check = run_preview(app, set, yaml, "", true);
-  if (!check) return refuse(422, AuthorSay::PreviewFailed, Json::object(), "");
+  if (!check) return refuse(422, kPreviewFailed, Json::object(), "");
   if (!check->value("ok", false) && !force)
-    return refuse(422, AuthorSay::CheckFailed, Json{{"check", *check}}, errors_html(*check, lang));
+    return refuse(422, kCheckFailed, Json{{"check", *check}}, errors_html(*check, lang));
   const std::string kept =
       (fs::path(".frustum") / "history" / set.id / (history_stamp(now) + ".yaml")).string();
   write_file_atomically((fs::path(app.course().dir) / kept).string(), *current);
@@ -189,13 +189,13 @@ Response save(StudentApp& app, const Visitor& v, const Request& r, const Authore
   app.live.refresh(now);  // the next request serves what was saved (when it loads)
   const std::string saved = sha256_hex(yaml);
   if (!json)
-    return author_page(app, v, set, 200, yaml, saved, say(AuthorSay::Saved, lang),
+    return author_page(app, v, set, 200, yaml, saved, std::string(kSaved.in(lang)),
                        errors_html(*check, lang));
   return json_response(200, Json{{"saved", true},
                                  {"ok", check->value("ok", false)},
                                  {"version", saved},
                                  {"history", kept},
-                                 {"message", say(AuthorSay::Saved, lang)}}
+                                 {"message", kSaved.in(lang)}}
                                 .dump());
 }
 
@@ -205,36 +205,35 @@ Response preview(StudentApp& app, const AuthoredSet& set,
       run_preview(app, set, field(form, "yaml"), field(form, "student"), false);
   if (!j)
     return json_response(
-        503,
-        Json{{"error", "timeout"}, {"message", say(AuthorSay::PreviewFailed, set.lang)}}.dump());
+        503, Json{{"error", "timeout"}, {"message", kPreviewFailed.in(set.lang)}}.dump());
   return json_response(200, j->dump());
 }
 
 Response author_request(StudentApp& app, const Visitor& v, const Request& r,
                         const std::string& rest, Millis now) {
   const Lang lang = course_lang(app.course());
-  if (v.role != Role::Instructor) return message_page(403, lang, Say::Refused);
+  if (v.role != Role::Instructor) return message_page(403, lang, kRefused);
   const auto slash = rest.find('/');
   AuthoredSet set;
   set.id = rest.substr(0, slash);
   const std::string action = slash == std::string::npos ? "" : rest.substr(slash + 1);
-  if (!set_id_ok(set.id)) return message_page(404, lang, Say::NotFound);
+  if (!set_id_ok(set.id)) return message_page(404, lang, kNotFound);
   set.file = fs::path(app.course().dir) / (set.id + ".yaml");
   std::error_code ec;
-  if (!fs::is_regular_file(set.file, ec)) return message_page(404, lang, Say::NotFound);
+  if (!fs::is_regular_file(set.file, ec)) return message_page(404, lang, kNotFound);
   set.lang = app.course().find(set.id) ? app.course().find(set.id)->set.lang : lang;
   if (action.empty() && r.method == "GET") {
     const std::optional<std::string> yaml = read_set_file(set.file);
-    if (!yaml) return message_page(404, lang, Say::NotFound);
+    if (!yaml) return message_page(404, lang, kNotFound);
     return author_page(app, v, set, 200, *yaml, sha256_hex(*yaml), "", "");
   }
   if (r.method != "POST" || (action != "preview" && action != "save"))
-    return message_page(404, lang, Say::NotFound);
-  if (r.body.size() > 3 * kMaxAuthoredSetBytes) return message_page(413, lang, Say::TooLarge);
+    return message_page(404, lang, kNotFound);
+  if (r.body.size() > 3 * kMaxAuthoredSetBytes) return message_page(413, lang, kTooLarge);
   const auto form = parse_form(r.body);
   if (!same_origin(r) || !csrf_ok(v, r, form)) {
     if (action == "preview" || wants_json(r)) return json_response(403, R"({"error":"refused"})");
-    return message_page(403, lang, Say::Refused);
+    return message_page(403, lang, kRefused);
   }
   if (field(form, "yaml").size() > kMaxAuthoredSetBytes)
     return json_response(413, R"({"error":"too large"})");

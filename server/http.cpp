@@ -112,7 +112,7 @@ std::map<std::string, std::string> parse_cookies(const std::string& header) {
   return out;
 }
 
-std::string html_escape(const std::string& text) {
+std::string html_escape(std::string_view text) {
   std::string out;
   out.reserve(text.size());
   for (const char c : text) {

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -43,7 +44,7 @@ std::string url_encode(const std::string& text);
 std::map<std::string, std::string> parse_cookies(const std::string& header);
 
 // Text for an HTML element or a double-quoted attribute: & < > " ' as entities.
-std::string html_escape(const std::string& text);
+std::string html_escape(std::string_view text);
 
 // The status line's reason ("Not Found").
 const char* status_reason(int status);

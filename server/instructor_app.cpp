@@ -76,7 +76,7 @@ Response student_submissions(StudentApp& app, const Visitor& v, const CourseSet&
                              const std::string& student, Millis now) {
   const Lang lang = set.set.lang;
   if (!app.course().enrolled(student) || !set.for_student(student))
-    return message_page(404, lang, Say::NotFound);
+    return message_page(404, lang, kNotFound);
   const std::vector<SubmissionRecord> mine = app.store.submissions(student, set.id);
   std::vector<std::vector<GradeRecord>> histories;
   for (const SubmissionRecord& s : mine) histories.push_back(app.store.grade_history(s.id));
@@ -100,7 +100,7 @@ Response copies(StudentApp& app, const Visitor& v, const CourseSet& set, Millis 
       app.instructor.copies[set.id] = {mark, report};
     }
   }
-  return page(lang, tell(Tell::CopySignals, lang), copies_page(set, report, lang), v);
+  return page(lang, std::string(kCopySignals.in(lang)), copies_page(set, report, lang), v);
 }
 
 // The set file as it is now, and the regrade it makes (empty with `errors` when it cannot be
@@ -124,7 +124,7 @@ Response regrade_refused(const CourseSet& set, const Visitor& v, const std::stri
                          const std::string& details) {
   const Lang lang = set.set.lang;
   return html_response(
-      409, page_html(lang, tell(Tell::Regrade, lang),
+      409, page_html(lang, std::string(kRegrade.in(lang)),
                      "<main>\n<p class=\"message\">" + html_escape(why) + "</p>\n" + details +
                          "<p><a href=\"/instructor/set/" + url_encode(set.id) + "\">" +
                          html_escape(title_of(set)) + "</a></p>\n</main>\n",
@@ -139,22 +139,23 @@ Response regrade(StudentApp& app, const Visitor& v, const CourseSet& set,
     return it == form.end() ? std::string() : it->second;
   };
   const std::string problem = field("problem");
-  if (!problem.empty() && !set.set.find(problem)) return message_page(404, lang, Say::NotFound);
+  if (!problem.empty() && !set.set.find(problem)) return message_page(404, lang, kNotFound);
   std::vector<Diagnostic> errors;
   const RegradePlan plan = fresh_plan(app, set, problem, "instructor:" + v.student, now, errors);
   if (!errors.empty()) {
     std::string list = "<ul>\n";
     for (const Diagnostic& d : errors)
       list += "<li><code>" + html_escape(d.format()) + "</code></li>\n";
-    return regrade_refused(set, v, tell(Tell::SetBroken, lang), list + "</ul>\n");
+    return regrade_refused(set, v, std::string(kSetBroken.in(lang)), list + "</ul>\n");
   }
   if (field("apply") != "1")
-    return page(lang, tell(Tell::Regrade, lang), regrade_page(set, plan, problem, v, lang), v);
+    return page(lang, std::string(kRegrade.in(lang)), regrade_page(set, plan, problem, v, lang), v);
   // Applied only as the dry run showed it: against the same file.
   if (field("version") != plan.version)
-    return regrade_refused(set, v, tell(Tell::SetChanged, lang), "");
+    return regrade_refused(set, v, std::string(kSetChanged.in(lang)), "");
   app.store.record_regrades(plan.grades);
-  return page(lang, tell(Tell::Regrade, lang), regrade_done_page(set, plan.grades.size(), lang), v);
+  return page(lang, std::string(kRegrade.in(lang)),
+              regrade_done_page(set, plan.grades.size(), lang), v);
 }
 
 // Server-sent events: one event per response (the browser's EventSource asks again after
@@ -186,10 +187,10 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
   const Lang lang = set.set.lang;
   if (r.method == "POST" && rest == "regrade") {
     const auto form = parse_form(r.body);
-    if (!same_origin(r) || !csrf_ok(v, r, form)) return message_page(403, lang, Say::Refused);
+    if (!same_origin(r) || !csrf_ok(v, r, form)) return message_page(403, lang, kRefused);
     return regrade(app, v, set, form, now);
   }
-  if (r.method != "GET") return message_page(405, lang, Say::NotFound);
+  if (r.method != "GET") return message_page(405, lang, kNotFound);
   if (rest.empty()) return class_at_a_glance(app, v, set, r);
   if (rest == "gradebook.csv" || rest == "canvas.csv" || rest == "moodle.csv")
     return download(app, set, rest);
@@ -197,7 +198,7 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
   constexpr std::string_view kStudent = "student/";
   if (rest.rfind(kStudent, 0) == 0)
     return student_submissions(app, v, set, url_decode(rest.substr(kStudent.size())), now);
-  return message_page(404, lang, Say::NotFound);
+  return message_page(404, lang, kNotFound);
 }
 
 }  // namespace
@@ -206,11 +207,12 @@ Response handle_instructor(StudentApp& app, const Visitor& v, const Request& r, 
   const std::string path = r.path();
   const Lang lang = course_lang(app.course());
   if (path == "/instructor" || path == "/instructor/") {
-    if (r.method != "GET") return message_page(405, lang, Say::NotFound);
+    if (r.method != "GET") return message_page(405, lang, kNotFound);
     std::vector<std::size_t> counts;
     for (const CourseSet& s : app.course().sets)
       counts.push_back(app.store.set_submissions(s.id, kMaxClassSubmissions).size());
-    return page(lang, tell(Tell::YourCourse, lang), course_page(app.course(), counts, lang), v);
+    return page(lang, std::string(kYourCourse.in(lang)), course_page(app.course(), counts, lang),
+                v);
   }
   if (path == "/instructor/events" && r.method == "GET") return events(app, r);
   constexpr std::string_view kSet = "/instructor/set/";
@@ -222,7 +224,7 @@ Response handle_instructor(StudentApp& app, const Visitor& v, const Request& r, 
       return set_routes(app, v, r, *set, slash == std::string::npos ? "" : tail.substr(slash + 1),
                         now);
   }
-  return message_page(404, lang, Say::NotFound);
+  return message_page(404, lang, kNotFound);
 }
 
 }  // namespace frustum::server

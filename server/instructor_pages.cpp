@@ -17,8 +17,7 @@ namespace frustum::server {
 namespace {
 
 std::string esc(const std::string& s) { return html_escape(s); }
-std::string t(Tell key, Lang lang) { return html_escape(tell(key, lang)); }
-std::string s(Say key, Lang lang) { return html_escape(say(key, lang)); }
+std::string t(const Phrase& phrase, Lang lang) { return html_escape(phrase.in(lang)); }
 
 std::string title_of(const CourseSet& set) {
   return set.set.title.empty() ? set.id : set.set.title.in(set.set.lang);
@@ -27,17 +26,17 @@ std::string title_of(const CourseSet& set) {
 std::string base(const CourseSet& set) { return "/instructor/set/" + url_encode(set.id); }
 
 std::string verdict_text(const std::string& v, Lang lang) {
-  if (v == "correct") return s(Say::Correct, lang);
-  if (v == "partial") return s(Say::Partial, lang);
-  if (v == "unparseable") return s(Say::Unreadable, lang);
-  if (v == "missing") return s(Say::Missing, lang);
-  return s(Say::Incorrect, lang);
+  if (v == "correct") return t(kCorrect, lang);
+  if (v == "partial") return t(kPartial, lang);
+  if (v == "unparseable") return t(kUnreadable, lang);
+  if (v == "missing") return t(kMissing, lang);
+  return t(kIncorrect, lang);
 }
 
 std::string status_text(const std::string& status, Lang lang) {
-  if (status == "graded") return t(Tell::StatusGraded, lang);
-  if (status == "pending") return t(Tell::StatusPending, lang);
-  return t(Tell::StatusNone, lang);
+  if (status == "graded") return t(kStatusGraded, lang);
+  if (status == "pending") return t(kStatusPending, lang);
+  return t(kStatusNone, lang);
 }
 
 double percent(const BatchRow& r) { return r.max_score > 0 ? r.score / r.max_score : -1; }
@@ -59,11 +58,11 @@ std::string gradebook_html(const CourseSet& set, const std::vector<BatchRow>& ro
       "<section id=\"gradebook\">\n<h2>{0}</h2>\n<p class=\"downloads\">{1}: <a "
       "href=\"{2}/gradebook.csv\">CSV</a> · <a href=\"{2}/canvas.csv\">Canvas</a> · <a "
       "href=\"{2}/moodle.csv\">Moodle</a></p>\n<table class=\"gradebook\">\n<thead><tr>",
-      t(Tell::Gradebook, lang), t(Tell::DownloadAs, lang), base(set));
-  out += sort_link(set, how, "student", t(Tell::Student, lang));
-  out += sort_link(set, how, "score", s(Say::Score, lang));
-  out += sort_link(set, how, "percent", t(Tell::Percent, lang));
-  out += sort_link(set, how, "status", t(Tell::Status, lang));
+      t(kGradebook, lang), t(kDownloadAs, lang), base(set));
+  out += sort_link(set, how, "student", t(kStudent, lang));
+  out += sort_link(set, how, "score", t(kScore, lang));
+  out += sort_link(set, how, "percent", t(kPercent, lang));
+  out += sort_link(set, how, "status", t(kStatus, lang));
   for (const ProblemSpec& p : set.set.problems) out += sort_link(set, how, "p." + p.id, esc(p.id));
   out += "</tr></thead>\n<tbody>\n";
   const std::size_t first = how.page * kGradebookPage;
@@ -86,7 +85,7 @@ std::string gradebook_html(const CourseSet& set, const std::vector<BatchRow>& ro
   }
   out += "</tbody>\n</table>\n";
   if (rows.size() > kGradebookPage) {
-    out += fmt::format("<p class=\"pages\">{}:", t(Tell::Page, lang));
+    out += fmt::format("<p class=\"pages\">{}:", t(kPage, lang));
     for (std::size_t p = 0; p * kGradebookPage < rows.size(); ++p)
       out += p == how.page ? fmt::format(" <strong>{}</strong>", p + 1)
                            : fmt::format(" <a href=\"{}?sort={}{}&amp;page={}\">{}</a>", base(set),
@@ -102,9 +101,9 @@ std::string counts_html(const std::vector<AnswerCount>& counts, Lang lang) {
       "<section id=\"answers\">\n<h2>{}</h2>\n<table class=\"counts\">\n<thead><tr><th>{}</th>"
       "<th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th><th>{}</th></tr>"
       "</thead>\n<tbody>\n",
-      t(Tell::ProblemsAndAnswers, lang), s(Say::Problem, lang), t(Tell::Answer, lang),
-      t(Tell::Submitted, lang), t(Tell::Right, lang), t(Tell::PartlyRight, lang),
-      t(Tell::Wrong, lang), t(Tell::Unreadable, lang), t(Tell::MedianAttempts, lang));
+      t(kProblemsAndAnswers, lang), t(kProblem, lang), t(kAnswer, lang), t(kSubmitted, lang),
+      t(kRight, lang), t(kPartlyRight, lang), t(kWrong, lang), t(kInstructorUnreadable, lang),
+      t(kMedianAttempts, lang));
   for (const AnswerCount& c : counts)
     out += fmt::format(
         "<tr class=\"{}\" data-problem=\"{}\" data-answer=\"{}\"><td>{}</td><td>{}</td>"
@@ -118,15 +117,12 @@ std::string counts_html(const std::vector<AnswerCount>& counts, Lang lang) {
 
 std::string mistakes_html(const CourseSet& set, const std::vector<MistakeRow>& mistakes,
                           Lang lang) {
-  std::string out =
-      fmt::format("<section id=\"mistakes\">\n<h2>{}</h2>\n", t(Tell::Mistakes, lang));
-  if (mistakes.empty())
-    return out + fmt::format("<p>{}</p>\n</section>\n", t(Tell::NoMistakes, lang));
+  std::string out = fmt::format("<section id=\"mistakes\">\n<h2>{}</h2>\n", t(kMistakes, lang));
+  if (mistakes.empty()) return out + fmt::format("<p>{}</p>\n</section>\n", t(kNoMistakes, lang));
   out += fmt::format(
       "<table class=\"mistakes\">\n<thead><tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th>"
       "</tr></thead>\n<tbody>\n",
-      s(Say::Problem, lang), t(Tell::Answer, lang), t(Tell::Mistake, lang),
-      t(Tell::TheStudents, lang));
+      t(kProblem, lang), t(kAnswer, lang), t(kInstructorMistake, lang), t(kTheStudents, lang));
   for (const MistakeRow& m : mistakes) {
     std::string who;
     for (const std::string& student : m.students)
@@ -142,7 +138,7 @@ std::string mistakes_html(const CourseSet& set, const std::vector<MistakeRow>& m
 }
 
 std::string regrade_form(const CourseSet& set, const Visitor& v, Lang lang) {
-  std::string options = fmt::format("<option value=\"\">{}</option>", t(Tell::WholeSet, lang));
+  std::string options = fmt::format("<option value=\"\">{}</option>", t(kWholeSet, lang));
   for (const ProblemSpec& p : set.set.problems)
     options += fmt::format("<option value=\"{0}\">{0}</option>", esc(p.id));
   return fmt::format(
@@ -150,8 +146,8 @@ std::string regrade_form(const CourseSet& set, const Visitor& v, Lang lang) {
       "action=\"{}/regrade\">\n<input type=\"hidden\" name=\"csrf\" value=\"{}\">\n<label>{} "
       "<select name=\"problem\">{}</select></label>\n<button type=\"submit\">{}</button>\n"
       "</form>\n</section>\n",
-      t(Tell::Regrade, lang), t(Tell::RegradeHelp, lang), base(set), esc(v.csrf),
-      s(Say::Problem, lang), options, t(Tell::DryRun, lang));
+      t(kRegrade, lang), t(kRegradeHelp, lang), base(set), esc(v.csrf), t(kProblem, lang), options,
+      t(kDryRun, lang));
 }
 
 std::string back_link(const CourseSet& set) {
@@ -194,14 +190,13 @@ void sort_gradebook(std::vector<BatchRow>& rows, const CourseSet& set, const Gra
 
 std::string course_page(const Course& course, const std::vector<std::size_t>& submissions,
                         Lang lang) {
-  std::string out =
-      fmt::format("<main>\n<h1>{}</h1>\n<ul class=\"sets\">\n", t(Tell::YourCourse, lang));
+  std::string out = fmt::format("<main>\n<h1>{}</h1>\n<ul class=\"sets\">\n", t(kYourCourse, lang));
   for (std::size_t i = 0; i < course.sets.size(); ++i)
     out += fmt::format(
         "<li><a href=\"{}\">{}</a> ({}: {}) · <a href=\"/instructor/author/{}\">{}</a></li>\n",
-        base(course.sets[i]), esc(title_of(course.sets[i])), t(Tell::Submitted, lang),
+        base(course.sets[i]), esc(title_of(course.sets[i])), t(kSubmitted, lang),
         i < submissions.size() ? submissions[i] : 0, esc(url_encode(course.sets[i].id)),
-        t(Tell::Edit, lang));
+        t(kEdit, lang));
   return out + "</ul>\n</main>\n";
 }
 
@@ -212,34 +207,34 @@ std::string policy_html(const ServePolicy& p, Lang lang) {
     using K = FeedbackWhen::Kind;
     switch (w.kind) {
       case K::AfterSubmit:
-        return t(Tell::AtOnce, lang);
+        return t(kAtOnce, lang);
       case K::AfterAttempts:
-        return t(Tell::FromAttempt, lang) + " " + std::to_string(w.attempts);
+        return t(kFromAttempt, lang) + " " + std::to_string(w.attempts);
       case K::AfterDeadline:
-        return t(Tell::AfterTheirDeadline, lang);
+        return t(kAfterTheirDeadline, lang);
       case K::AtDate:
-        return t(Tell::FromDate, lang) + " " + esc(utc_text(w.at));
+        return t(kFromDate, lang) + " " + esc(utc_text(w.at));
       case K::Never:
-        return t(Tell::Never, lang);
+        return t(kNever, lang);
     }
     return std::string();
   };
-  constexpr Tell kParts[] = {Tell::PartVerdicts, Tell::PartCredit, Tell::PartMistakes,
-                             Tell::PartKey, Tell::PartDerivation};
-  std::string out = fmt::format("<section class=\"policy\">\n<h2>{}</h2>\n<dl>\n",
-                                t(Tell::WhatStudentsSee, lang));
+  constexpr const Phrase* kParts[] = {&kPartVerdicts, &kPartCredit, &kPartMistakes, &kPartKey,
+                                      &kPartDerivation};
+  std::string out =
+      fmt::format("<section class=\"policy\">\n<h2>{}</h2>\n<dl>\n", t(kWhatStudentsSee, lang));
   for (std::size_t i = 0; i < p.feedback.size(); ++i)
-    out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(kParts[i], lang), when(p.feedback[i]));
-  out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(Tell::Attempts, lang),
-                     p.attempts ? std::to_string(*p.attempts) : t(Tell::Unlimited, lang));
+    out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(*kParts[i], lang), when(p.feedback[i]));
+  out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(kAttempts, lang),
+                     p.attempts ? std::to_string(*p.attempts) : t(kUnlimited, lang));
   if (p.penalty > 0)
-    out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(Tell::PenaltyPerAttempt, lang),
+    out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(kInstructorPenaltyPerAttempt, lang),
                        esc(p.penalty_text));
   if (p.deadline_ms)
-    out += fmt::format("<dt>{}</dt><dd><time>{}</time></dd>\n", t(Tell::Deadline, lang),
+    out += fmt::format("<dt>{}</dt><dd><time>{}</time></dd>\n", t(kInstructorDeadline, lang),
                        esc(p.deadline_text));
   for (const auto& [student, e] : p.extensions)
-    out += fmt::format("<dt>{}</dt><dd>{}: <time>{}</time></dd>\n", t(Tell::Extensions, lang),
+    out += fmt::format("<dt>{}</dt><dd>{}: <time>{}</time></dd>\n", t(kExtensions, lang),
                        esc(student), esc(e.text));
   return out + "</dl>\n</section>\n";
 }
@@ -252,17 +247,16 @@ std::string class_page(const CourseSet& set, const ClassView& view,
   std::string out = fmt::format(
       "<main data-events=\"/instructor/events?set={}&amp;mark={}\">\n<p><a "
       "href=\"/instructor/\">{}</a></p>\n<h1>{}: {}</h1>\n<p class=\"live\">{}</p>\n",
-      esc(url_encode(set.id)), mark, t(Tell::YourCourse, lang), esc(title_of(set)),
-      t(Tell::ClassTitle, lang), t(Tell::Live, lang));
+      esc(url_encode(set.id)), mark, t(kYourCourse, lang), esc(title_of(set)), t(kClassTitle, lang),
+      t(kLive, lang));
   if (view.truncated)
-    out += fmt::format("<p class=\"note\">{} {}</p>\n", t(Tell::CheckedOnly, lang),
-                       kMaxClassSubmissions);
+    out +=
+        fmt::format("<p class=\"note\">{} {}</p>\n", t(kCheckedOnly, lang), kMaxClassSubmissions);
   out += gradebook_html(set, sorted_rows, how, lang);
   out += counts_html(counts, lang);
   out += mistakes_html(set, mistakes, lang);
   if (!set.variants.empty())
-    out +=
-        fmt::format("<p><a href=\"{}/copies\">{}</a></p>\n", base(set), t(Tell::CopySignals, lang));
+    out += fmt::format("<p><a href=\"{}/copies\">{}</a></p>\n", base(set), t(kCopySignals, lang));
   out += policy_html(set.policy, lang);
   out += regrade_form(set, v, lang);
   return out + "</main>\n";
@@ -276,7 +270,7 @@ std::string student_page(const CourseSet& set, const std::string& student,
       fmt::format("<main>\n{}<h1>{}: {}</h1>\n", back_link(set), esc(title_of(set)), esc(student));
   for (const ProblemSpec& p : set.set.problems) {
     out += fmt::format("<section class=\"problem\" id=\"p-{}\">\n<h2>{} {}</h2>\n", esc(p.id),
-                       s(Say::Problem, lang), esc(p.id));
+                       t(kProblem, lang), esc(p.id));
     int attempts = 0;
     for (const SubmissionRecord& sub : submissions) attempts += sub.problem == p.id;
     for (std::size_t i = 0; i < submissions.size(); ++i) {
@@ -285,12 +279,12 @@ std::string student_page(const CourseSet& set, const std::string& student,
       const std::vector<GradeRecord>& history = histories[i];
       out += fmt::format(
           "<article class=\"submission\" id=\"s-{}\">\n<h3>{} {} · <time>{}</time></h3>\n", sub.id,
-          s(Say::Attempt, lang), sub.attempt, esc(utc_text(sub.received)));
+          t(kAttempt, lang), sub.attempt, esc(utc_text(sub.received)));
       // The answers as written.
       out += fmt::format(
           "<table class=\"written\"><thead><tr><th>{}</th><th>{}</th></tr></thead>"
           "<tbody>\n",
-          t(Tell::Answer, lang), t(Tell::AsWritten, lang));
+          t(kAnswer, lang), t(kAsWritten, lang));
       const nlohmann::json written = nlohmann::json::parse(sub.answers, nullptr, false);
       if (written.is_object())
         for (const auto& [name, text] : written.items())
@@ -301,20 +295,18 @@ std::string student_page(const CourseSet& set, const std::string& student,
       const std::optional<GradeRecord> last =
           history.empty() ? std::nullopt : std::optional<GradeRecord>(history.back());
       out += fmt::format("<details class=\"seen\" open><summary>{}</summary>\n{}</details>\n",
-                         t(Tell::AsSeen, lang),
+                         t(kAsSeen, lang),
                          submission_html(sub, last, set.policy.shown(sub.student, attempts, now),
                                          set.policy.credit_factor(sub.attempt), lang));
       if (!history.empty()) {
         out += fmt::format(
             "<table class=\"history\"><caption>{}</caption><thead><tr><th>{}</th><th>{}</th>"
             "<th>{}</th><th>{}</th></tr></thead><tbody>\n",
-            t(Tell::History, lang), s(Say::Score, lang), t(Tell::SetVersion, lang),
-            t(Tell::When, lang), t(Tell::By, lang));
+            t(kHistory, lang), t(kScore, lang), t(kSetVersion, lang), t(kWhen, lang), t(kBy, lang));
         for (const GradeRecord& g : history)
           out += fmt::format(
               "<tr><td>{}</td><td><code title=\"{}\">{}</code></td><td>{}</td><td>{}</td></tr>\n",
-              g.failed ? t(Tell::Failed, lang)
-                       : score_text(g.score) + " / " + score_text(g.max_score),
+              g.failed ? t(kFailed, lang) : score_text(g.score) + " / " + score_text(g.max_score),
               esc(g.set_version), esc(g.set_version.substr(0, 12)), esc(utc_text(g.graded)),
               esc(g.graded_by));
         out += "</tbody></table>\n";
@@ -329,33 +321,33 @@ std::string student_page(const CourseSet& set, const std::string& student,
 std::string regrade_page(const CourseSet& set, const RegradePlan& plan, const std::string& problem,
                          const Visitor& v, Lang lang) {
   std::string out =
-      fmt::format("<main>\n{}<h1>{}: {} — {}</h1>\n", back_link(set), t(Tell::Regrade, lang),
-                  esc(title_of(set)), problem.empty() ? t(Tell::WholeSet, lang) : esc(problem));
-  out += fmt::format("<p>{}: <code>{}</code></p>\n", t(Tell::SetVersion, lang), esc(plan.version));
+      fmt::format("<main>\n{}<h1>{}: {} — {}</h1>\n", back_link(set), t(kRegrade, lang),
+                  esc(title_of(set)), problem.empty() ? t(kWholeSet, lang) : esc(problem));
+  out += fmt::format("<p>{}: <code>{}</code></p>\n", t(kSetVersion, lang), esc(plan.version));
   if (plan.truncated)
-    out += fmt::format("<p class=\"note\">{} {}</p>\n", t(Tell::CheckedOnly, lang), kMaxRegrade);
+    out += fmt::format("<p class=\"note\">{} {}</p>\n", t(kCheckedOnly, lang), kMaxRegrade);
   if (plan.changes.empty()) {
-    out += fmt::format("<p class=\"no-changes\">{}</p>\n", t(Tell::NoChanges, lang));
+    out += fmt::format("<p class=\"no-changes\">{}</p>\n", t(kNoChanges, lang));
   } else {
     out += fmt::format(
         "<table class=\"changes\">\n<thead><tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th>"
         "<th>{}</th><th>{}</th></tr></thead>\n<tbody>\n",
-        t(Tell::Student, lang), s(Say::Problem, lang), s(Say::Attempt, lang), t(Tell::Before, lang),
-        t(Tell::After, lang), t(Tell::Why, lang));
+        t(kStudent, lang), t(kProblem, lang), t(kAttempt, lang), t(kBefore, lang), t(kAfter, lang),
+        t(kWhy, lang));
     for (const RegradeChange& c : plan.changes) {
       std::string why;
       for (const RegradeChange::Answer& a : c.answers)
         why += fmt::format("<li><code>{}</code>: {} → {}</li>", esc(a.name),
                            verdict_text(a.before, lang), verdict_text(a.after, lang));
-      if (c.failed_before != c.failed_after) why += "<li>" + t(Tell::Failed, lang) + "</li>";
-      if (why.empty()) why = "<li>" + t(Tell::SameVerdicts, lang) + "</li>";
+      if (c.failed_before != c.failed_after) why += "<li>" + t(kFailed, lang) + "</li>";
+      if (why.empty()) why = "<li>" + t(kSameVerdicts, lang) + "</li>";
       out += fmt::format(
           "<tr data-student=\"{0}\" data-problem=\"{1}\"><td><a href=\"{2}/student/{3}#s-{4}\">"
           "{0}</a></td><td>{1}</td><td>{5}</td><td class=\"before\">{6}</td>"
           "<td class=\"after\">{7}</td><td><ul>{8}</ul></td></tr>\n",
           esc(c.student), esc(c.problem), base(set), esc(url_encode(c.student)), c.submission,
-          c.attempt, c.failed_before ? t(Tell::Failed, lang) : score_text(c.before),
-          c.failed_after ? t(Tell::Failed, lang) : score_text(c.after), why);
+          c.attempt, c.failed_before ? t(kFailed, lang) : score_text(c.before),
+          c.failed_after ? t(kFailed, lang) : score_text(c.after), why);
     }
     out += "</tbody>\n</table>\n";
   }
@@ -365,38 +357,34 @@ std::string regrade_page(const CourseSet& set, const RegradePlan& plan, const st
         "value=\"{}\">\n<input type=\"hidden\" name=\"problem\" value=\"{}\">\n<input "
         "type=\"hidden\" name=\"version\" value=\"{}\">\n<input type=\"hidden\" name=\"apply\" "
         "value=\"1\">\n<button type=\"submit\">{}</button>\n</form>\n",
-        base(set), esc(v.csrf), esc(problem), esc(plan.version), t(Tell::Apply, lang));
+        base(set), esc(v.csrf), esc(problem), esc(plan.version), t(kApply, lang));
   return out + "</main>\n";
 }
 
 std::string regrade_done_page(const CourseSet& set, std::size_t written, Lang lang) {
   return fmt::format("<main>\n{}<p class=\"applied\">{} <strong>{}</strong></p>\n</main>\n",
-                     back_link(set), t(Tell::Applied, lang), written);
+                     back_link(set), t(kApplied, lang), written);
 }
 
 std::string copies_page(const CourseSet& set, const CopyReport& report, Lang lang) {
   std::string out = fmt::format("<main>\n{}<h1>{}</h1>\n<p>{}</p>\n", back_link(set),
-                                t(Tell::CopySignals, lang), t(Tell::CopyHelp, lang));
+                                t(kCopySignals, lang), t(kCopyHelp, lang));
   if (report.truncated)
-    out +=
-        fmt::format("<p class=\"note\">{} {}</p>\n", t(Tell::CheckedOnly, lang), kMaxCopyGradings);
-  if (report.signals.empty())
-    return out + fmt::format("<p>{}</p>\n</main>\n", t(Tell::NoCopies, lang));
+    out += fmt::format("<p class=\"note\">{} {}</p>\n", t(kCheckedOnly, lang), kMaxCopyGradings);
+  if (report.signals.empty()) return out + fmt::format("<p>{}</p>\n</main>\n", t(kNoCopies, lang));
   for (const CopySignal& c : report.signals) {
     out += fmt::format(
         "<article class=\"copy\" data-student=\"{0}\" data-fits=\"{1}\">\n<h2><a "
         "href=\"{2}/student/{3}#s-{4}\">{0}</a> · {5} {6} · {7} {8}</h2>\n<p>{9}: <a "
         "href=\"{2}/student/{10}\">{1}</a> ({11}: {12} / {14}; {13}: {15} / {14})</p>\n",
         esc(c.student), esc(c.fits), base(set), esc(url_encode(c.student)), c.submission,
-        s(Say::Problem, lang), esc(c.problem), s(Say::Attempt, lang), c.attempt,
-        t(Tell::FitsVariantOf, lang), esc(url_encode(c.fits)), t(Tell::OwnVerdict, lang),
-        score_text(c.own_score), t(Tell::OtherVerdict, lang), score_text(c.max_score),
-        score_text(c.fit_score));
+        t(kProblem, lang), esc(c.problem), t(kAttempt, lang), c.attempt, t(kFitsVariantOf, lang),
+        esc(url_encode(c.fits)), t(kOwnVerdict, lang), score_text(c.own_score),
+        t(kOtherVerdict, lang), score_text(c.max_score), score_text(c.fit_score));
     out += fmt::format(
         "<table><thead><tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th></tr>"
         "</thead><tbody>\n",
-        t(Tell::Answer, lang), t(Tell::AsWritten, lang), t(Tell::OwnVerdict, lang),
-        t(Tell::OtherVerdict, lang));
+        t(kAnswer, lang), t(kAsWritten, lang), t(kOwnVerdict, lang), t(kOtherVerdict, lang));
     for (const CopySignal::Answer& a : c.answers)
       out += fmt::format(
           "<tr><td><code>{}</code></td><td><code>{}</code></td><td>{}</td>"

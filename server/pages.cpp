@@ -45,11 +45,11 @@ Response json_response(int status, std::string json) {
                   std::move(json)};
 }
 
-Response message_page(int status, Lang lang, Say what, int retry_after) {
+Response message_page(int status, Lang lang, const Phrase& what, int retry_after) {
   const std::string body =
       fmt::format("<main>\n<p class=\"message\">{}</p>\n<p><a href=\"/\">{}</a></p>\n</main>\n",
-                  html_escape(say(what, lang)), html_escape(say(Say::AllSets, lang)));
-  Response r = html_response(status, page_html(lang, say(what, lang), body));
+                  html_escape(what.in(lang)), html_escape(kAllSets.in(lang)));
+  Response r = html_response(status, page_html(lang, std::string(what.in(lang)), body));
   if (retry_after > 0) r.set("Retry-After", std::to_string(retry_after));
   return r;
 }

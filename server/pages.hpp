@@ -22,7 +22,7 @@ std::string page_html(Lang lang, const std::string& title, const std::string& bo
 Response html_response(int status, std::string html);
 Response json_response(int status, std::string json);
 // A page that says one thing (a refusal, a missing page), with a link home.
-Response message_page(int status, Lang lang, Say what, int retry_after = 0);
+Response message_page(int status, Lang lang, const Phrase& what, int retry_after = 0);
 // Security headers on every response (added when not already set).
 void secure_headers(Response& r);
 

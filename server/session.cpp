@@ -34,7 +34,7 @@ Response start_session(StudentApp& app, const Request& request, Millis now) {
       if (who && !app.course().instructs(*who)) who.reset();
     }
   }
-  if (!who) return message_page(404, course_lang(app.course()), Say::LinkInvalid);
+  if (!who) return message_page(404, course_lang(app.course()), kLinkInvalid);
   const std::string session = random_token();
   app.store.put_session(sha256_hex(session),
                         SessionRecord{*who, random_token(), now + app.options.session_ms, role});

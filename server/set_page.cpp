@@ -23,7 +23,7 @@ std::string title_of(const CourseSet& s) {
 std::string givens_html(const ProblemSpec& p, Lang lang) {
   if (!p.given_node.IsMap() || p.given_node.size() == 0) return "";
   std::string out =
-      fmt::format("<h3>{}</h3>\n<dl class=\"given\">\n", html_escape(say(Say::Given, lang)));
+      fmt::format("<h3>{}</h3>\n<dl class=\"given\">\n", html_escape(kGiven.in(lang)));
   for (auto it = p.given_node.begin(); it != p.given_node.end(); ++it)
     out += fmt::format("<dt>{}</dt><dd><span class=\"tex\" data-tex=\"{}\">{}</span></dd>\n",
                        html_escape(it->first.as<std::string>()), html_escape(given_tex(it->second)),
@@ -47,9 +47,9 @@ std::string inputs_html(const ProblemSpec& p, const std::map<std::string, std::s
 // Why no more submissions are taken for this problem ("" when they are).
 std::string closed_reason(const CourseSet& set, const Visitor& v, int attempts, Millis now,
                           Lang lang) {
-  if (set.policy.closed_for(v.student, now)) return say(Say::DeadlinePassed, lang);
+  if (set.policy.closed_for(v.student, now)) return std::string(kDeadlinePassed.in(lang));
   if (set.policy.attempts && attempts >= *set.policy.attempts)
-    return say(Say::NoAttemptsLeft, lang);
+    return std::string(kNoAttemptsLeft.in(lang));
   return "";
 }
 
@@ -59,20 +59,20 @@ std::string form_html(const CourseSet& set, const ProblemSpec& p, const Visitor&
   const std::string closed = closed_reason(set, v, attempts, now, lang);
   std::string left;
   if (set.policy.attempts)
-    left = fmt::format("<p class=\"left\">{}: {}</p>\n", html_escape(say(Say::AttemptsLeft, lang)),
+    left = fmt::format("<p class=\"left\">{}: {}</p>\n", html_escape(kAttemptsLeft.in(lang)),
                        std::max<std::int64_t>(0, *set.policy.attempts - attempts));
   if (set.policy.penalty > 0)
-    left += fmt::format("<p class=\"penalty\">{}: {}</p>\n",
-                        html_escape(say(Say::PenaltyPerAttempt, lang)),
-                        html_escape(set.policy.penalty_text));
+    left +=
+        fmt::format("<p class=\"penalty\">{}: {}</p>\n", html_escape(kPenaltyPerAttempt.in(lang)),
+                    html_escape(set.policy.penalty_text));
   return fmt::format(
       "<form method=\"post\" action=\"/set/{0}/submit\" class=\"answers\" data-set=\"{0}\" "
       "data-problem=\"{1}\">\n<input type=\"hidden\" name=\"csrf\" value=\"{2}\">\n"
       "<input type=\"hidden\" name=\"problem\" value=\"{1}\">\n{3}{4}{5}</form>\n",
       html_escape(set.id), html_escape(p.id), html_escape(v.csrf), inputs_html(p, drafts), left,
-      closed.empty() ? fmt::format("<button type=\"submit\">{}</button>\n",
-                                   html_escape(say(Say::Submit, lang)))
-                     : fmt::format("<p class=\"closed\">{}</p>\n", html_escape(closed)));
+      closed.empty()
+          ? fmt::format("<button type=\"submit\">{}</button>\n", html_escape(kSubmit.in(lang)))
+          : fmt::format("<p class=\"closed\">{}</p>\n", html_escape(closed)));
 }
 
 // The latest submission to problem `id` (null when none).
@@ -99,7 +99,7 @@ std::string problem_html(StudentApp& app, const CourseSet& set, const ProblemSpe
       p.text.empty() ? p.info->summary.in(lang) : fill_text(p.text.in(lang), p.given_node);
   std::string out = fmt::format(
       "<section class=\"problem\" id=\"p-{}\">\n<h2>{} {}</h2>\n<p class=\"text\">{}</p>\n",
-      html_escape(p.id), html_escape(say(Say::Problem, lang)), number, html_escape(text));
+      html_escape(p.id), html_escape(kProblem.in(lang)), number, html_escape(text));
   out += givens_html(p, lang);
   const int attempts = attempts_at(mine, p.id);
   out += form_html(set, p, v, drafts, attempts, now, lang);
@@ -112,7 +112,7 @@ std::string problem_html(StudentApp& app, const CourseSet& set, const ProblemSpe
     if (figure_allowed(set, v, p, mine, g && !g->failed, now))
       out += fmt::format("<figure><img src=\"/set/{}/figure/{}.svg\" alt=\"{}\"></figure>\n",
                          html_escape(set.id), html_escape(url_encode(p.id)),
-                         html_escape(say(Say::Figure, lang)));
+                         html_escape(kFigure.in(lang)));
   }
   return out + "</section>\n";
 }
@@ -147,30 +147,29 @@ int attempts_at(const std::vector<SubmissionRecord>& mine, const std::string& pr
 
 Response sets_page(StudentApp& app, const Visitor& v) {
   const Lang lang = course_lang(app.course());
-  std::string body = fmt::format("<main>\n<h1>{}</h1>\n", html_escape(say(Say::YourSets, lang)));
-  if (app.course().sets.empty())
-    body += fmt::format("<p>{}</p>\n", html_escape(say(Say::NoSets, lang)));
+  std::string body = fmt::format("<main>\n<h1>{}</h1>\n", html_escape(kYourSets.in(lang)));
+  if (app.course().sets.empty()) body += fmt::format("<p>{}</p>\n", html_escape(kNoSets.in(lang)));
   body += "<ul class=\"sets\">\n";
   for (const CourseSet& s : app.course().sets)
     if (s.for_student(v.student))
       body += fmt::format("<li><a href=\"/set/{}\">{}</a></li>\n", html_escape(s.id),
                           html_escape(title_of(s)));
   body += "</ul>\n</main>\n";
-  return html_response(200, page_html(lang, say(Say::YourSets, lang), body));
+  return html_response(200, page_html(lang, std::string(kYourSets.in(lang)), body));
 }
 
 Response set_page(StudentApp& app, const Visitor& v, const CourseSet& set, Millis now) {
   const ProblemSet* variant = set.for_student(v.student);
   const Lang lang = set.set.lang;
-  if (!variant) return message_page(404, lang, Say::NotFound);
+  if (!variant) return message_page(404, lang, kNotFound);
   const std::vector<SubmissionRecord> mine = app.store.submissions(v.student, set.id);
   const std::map<std::string, std::string> drafts =
       answer_values(app.store.drafts(v.student, set.id), mine);
   std::string body = fmt::format("<main>\n<p><a href=\"/\">{}</a></p>\n<h1>{}</h1>\n",
-                                 html_escape(say(Say::AllSets, lang)), html_escape(title_of(set)));
+                                 html_escape(kAllSets.in(lang)), html_escape(title_of(set)));
   if (set.policy.deadline_for(v.student))
     body += fmt::format("<p class=\"deadline\">{}: <time>{}</time></p>\n",
-                        html_escape(say(Say::Deadline, lang)),
+                        html_escape(kDeadline.in(lang)),
                         html_escape(set.policy.deadline_text_for(v.student)));
   bool pending = false;
   int number = 0;
@@ -184,7 +183,7 @@ Response submission_page(StudentApp& app, const Visitor& v, const CourseSet& set
                          Millis now) {
   const Lang lang = set.set.lang;
   const std::optional<SubmissionRecord> s = app.store.submission(v.student, id);
-  if (!s || s->set != set.id) return message_page(404, lang, Say::NotFound);
+  if (!s || s->set != set.id) return message_page(404, lang, kNotFound);
   const std::vector<SubmissionRecord> mine = app.store.submissions(v.student, set.id);
   const std::optional<GradeRecord> g = app.store.latest_grade(s->id);
   const std::string body = fmt::format(
@@ -199,12 +198,12 @@ Response figure_svg(StudentApp& app, const Visitor& v, const CourseSet& set,
                     const std::string& problem, Millis now) {
   const ProblemSet* variant = set.for_student(v.student);
   const ProblemSpec* p = variant ? variant->find(problem) : nullptr;
-  if (!p || p->error) return message_page(404, set.set.lang, Say::NotFound);
+  if (!p || p->error) return message_page(404, set.set.lang, kNotFound);
   const std::vector<SubmissionRecord> mine = app.store.submissions(v.student, set.id);
   const SubmissionRecord* last = latest_of(mine, p->id);
   const std::optional<GradeRecord> g = last ? app.store.latest_grade(last->id) : std::nullopt;
   if (!figure_allowed(set, v, *p, mine, g && !g->failed, now))
-    return message_page(404, set.set.lang, Say::NotFound);
+    return message_page(404, set.set.lang, kNotFound);
   try {
     PictureOptions options;
     options.api = p->conventions.api;
@@ -220,7 +219,7 @@ Response figure_svg(StudentApp& app, const Visitor& v, const CourseSet& set,
                      {"Content-Security-Policy", "default-src 'none'; style-src 'unsafe-inline'"}},
                     picture.svg};
   } catch (const std::exception&) {
-    return message_page(404, set.set.lang, Say::NotFound);
+    return message_page(404, set.set.lang, kNotFound);
   }
 }
 

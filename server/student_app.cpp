@@ -37,7 +37,7 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
   if (rest.empty() && r.method == "GET") return set_page(app, v, set, now);
   if (rest == "submit" && r.method == "POST") {
     const auto form = parse_form(r.body);
-    if (!same_origin(r) || !csrf_ok(v, r, form)) return message_page(403, lang, Say::Refused);
+    if (!same_origin(r) || !csrf_ok(v, r, form)) return message_page(403, lang, kRefused);
     return submit_answers(app, v, set, r, form, now);
   }
   constexpr std::string_view kSubmission = "submission/", kFigure = "figure/";
@@ -49,11 +49,11 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
     return figure_svg(app, v, set,
                       url_decode(rest.substr(kFigure.size(), rest.size() - 4 - kFigure.size())),
                       now);
-  return message_page(404, lang, Say::NotFound);
+  return message_page(404, lang, kNotFound);
 }
 
 Response api_routes(StudentApp& app, const Visitor& v, const Request& r, Millis now) {
-  if (r.method != "POST") return message_page(405, course_lang(app.course()), Say::NotFound);
+  if (r.method != "POST") return message_page(405, course_lang(app.course()), kNotFound);
   const auto form = parse_form(r.body);
   if (!same_origin(r) || !csrf_ok(v, r, form)) return json_response(403, R"({"error":"refused"})");
   if (r.path() == "/api/preview") return preview_answer(app, v, form, now);
@@ -65,15 +65,14 @@ Response route(StudentApp& app, const Request& r, Millis now) {
   const std::string path = r.path();
   if (path.rfind("/static/", 0) == 0 && r.method == "GET") {
     if (auto a = static_asset(path.substr(8))) return *a;
-    return message_page(404, course_lang(app.course()), Say::NotFound);
+    return message_page(404, course_lang(app.course()), kNotFound);
   }
   if (path == "/start" && r.method == "GET") return start_session(app, r, now);
   const std::optional<Visitor> v = visitor_of(app, r, now);
-  if (!v) return message_page(path == "/" ? 200 : 403, course_lang(app.course()), Say::SignInFirst);
+  if (!v) return message_page(path == "/" ? 200 : 403, course_lang(app.course()), kSignInFirst);
   // /instructor/… is the instructors' (a student's session is refused); the rest the students'.
   if (path == "/instructor" || path.rfind("/instructor/", 0) == 0) {
-    if (v->role != Role::Instructor)
-      return message_page(403, course_lang(app.course()), Say::Refused);
+    if (v->role != Role::Instructor) return message_page(403, course_lang(app.course()), kRefused);
     constexpr std::string_view kAuthor = "/instructor/author/";
     if (path.rfind(kAuthor, 0) == 0)
       return author_routes(app, *v, r, path.substr(kAuthor.size()), now);
@@ -83,15 +82,15 @@ Response route(StudentApp& app, const Request& r, Millis now) {
     if (path == "/" && r.method == "GET") return Response{303, {{"Location", "/instructor/"}}, ""};
     // A student's pages and requests are refused; anything else is not here (a favicon).
     if (path.rfind("/set/", 0) == 0 || path.rfind("/api/", 0) == 0)
-      return message_page(403, course_lang(app.course()), Say::Refused);
-    return message_page(404, course_lang(app.course()), Say::NotFound);
+      return message_page(403, course_lang(app.course()), kRefused);
+    return message_page(404, course_lang(app.course()), kNotFound);
   }
   if (path == "/" && r.method == "GET") return sets_page(app, *v);
   if (path.rfind("/api/", 0) == 0) return api_routes(app, *v, r, now);
   if (const auto sp = set_path(path))
     if (const CourseSet* set = app.course().find(sp->first); set && set->for_student(v->student))
       return set_routes(app, *v, r, *set, sp->second, now);
-  return message_page(404, course_lang(app.course()), Say::NotFound);
+  return message_page(404, course_lang(app.course()), kNotFound);
 }
 
 // The course the request on this thread began with (handle_student holds it to the end).
@@ -115,7 +114,7 @@ Response handle_student(StudentApp& app, const Request& request, Millis now) {
   try {
     r = route(app, request, now);
   } catch (const StoreError&) {
-    r = message_page(503, course_lang(app.course()), Say::Busy, 1);
+    r = message_page(503, course_lang(app.course()), kBusy, 1);
   }
   secure_headers(r);
   return r;

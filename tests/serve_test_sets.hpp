@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <regex>
+#include <span>
 #include <string>
 
 #include "server/http.hpp"
@@ -46,13 +47,11 @@ inline std::string csrf_in(const std::string& page) {
   return m[1].str();
 }
 
-// Every phrase of `count` keys has all three languages, and no English in Japanese or Russian.
-template <class Key>
-void expect_three_languages(const char* (*phrase)(Key, Lang), std::size_t count) {
-  for (std::size_t i = 0; i < count; ++i) {
-    const Key key = static_cast<Key>(i);
-    const std::string en = phrase(key, Lang::En), ja = phrase(key, Lang::Ja),
-                      ru = phrase(key, Lang::Ru);
+// Every phrase of a page's list has all three languages, and no English in Japanese or Russian.
+inline void expect_three_languages(std::span<const Phrase* const> phrases) {
+  for (std::size_t i = 0; i < phrases.size(); ++i) {
+    const std::string en(phrases[i]->in(Lang::En)), ja(phrases[i]->in(Lang::Ja)),
+        ru(phrases[i]->in(Lang::Ru));
     EXPECT_FALSE(en.empty()) << i;
     EXPECT_NE(ja, en) << en;
     EXPECT_NE(ru, en) << en;

@@ -327,9 +327,9 @@ TEST_F(AuthorPage, APreviewThatFailsIsAnAnswerNotACrash) {
 }
 
 TEST(AuthorPhrases, PhrasesInEveryLanguage) {
-  for (std::size_t i = 0; i < static_cast<std::size_t>(AuthorSay::Count); ++i) {
-    const auto key = static_cast<AuthorSay>(i);
-    const std::string en = say(key, Lang::En), ja = say(key, Lang::Ja), ru = say(key, Lang::Ru);
+  for (std::size_t i = 0; i < std::size(kAllAuthorPagePhrases); ++i) {
+    const Phrase& phrase = *kAllAuthorPagePhrases[i];
+    const std::string en(phrase.in(Lang::En)), ja(phrase.in(Lang::Ja)), ru(phrase.in(Lang::Ru));
     EXPECT_FALSE(en.empty()) << i;
     EXPECT_NE(ja, en) << i;
     EXPECT_NE(ru, en) << i;

@@ -285,7 +285,7 @@ TEST_F(InstructorPages, ARegradeShowsWhatChangesThenAppliesItKeepingHistory) {
   // Nothing changed yet: a dry run lists no one.
   const Response same = post("/instructor/set/week1/regrade", prof, "csrf=" + csrf);
   EXPECT_EQ(same.status, 200);
-  EXPECT_NE(same.body.find(tell(Tell::NoChanges, Lang::En)), std::string::npos);
+  EXPECT_NE(same.body.find(kNoChanges.in(Lang::En)), std::string::npos);
   // The key moves: pixel (1, 0) has z = 7.
   std::string text = kWeek1;
   text.replace(text.find("pixel: [1, 1]"), 13, "pixel: [1, 0]");
@@ -373,7 +373,7 @@ TEST_F(InstructorPages, InstructorsCsvIsReadWithItsErrorsLocated) {
 }
 
 TEST(InstructorPhrases, EveryPhraseHasJapaneseAndRussianWithoutEnglish) {
-  expect_three_languages(&tell, static_cast<std::size_t>(Tell::Count));
+  expect_three_languages(kAllInstructorPagePhrases);
 }
 
 }  // namespace

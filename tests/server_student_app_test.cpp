@@ -122,7 +122,7 @@ TEST_F(StudentPages, UnknownOrRotatedLinksAndNoSessionAreRefused) {
   EXPECT_EQ(get(std::string("/start?token=") + kAlice).status, 404);
   EXPECT_EQ(get("/set/week1").status, 403);
   EXPECT_EQ(get("/set/week1", "0123456789abcdef0123456789abcdef").status, 403);
-  EXPECT_NE(get("/").body.find(say(Say::SignInFirst, Lang::En)), std::string::npos);
+  EXPECT_NE(get("/").body.find(kSignInFirst.in(Lang::En)), std::string::npos);
 }
 
 TEST_F(StudentPages, EachStudentSeesTheVariantThatGenerateDraws) {
@@ -251,7 +251,7 @@ TEST_F(StudentPages, GradedFeedbackNamesTheMistakeAndTheCarriedCredit) {
   EXPECT_DOUBLE_EQ(store_->latest_grade(s.id)->score, 1.5);
   const std::string page = get("/set/week1", alice).body;
   EXPECT_NE(page.find("constant on the wrong side"), std::string::npos);
-  EXPECT_NE(page.find(say(Say::Carried, Lang::En)), std::string::npos);
+  EXPECT_NE(page.find(kCarried.in(Lang::En)), std::string::npos);
   EXPECT_NE(page.find("class=\"steps\""), std::string::npos);  // the derivation
   EXPECT_NE(page.find("1.5 / 3"), std::string::npos);
 }
@@ -343,9 +343,9 @@ TEST_F(StudentPages, ThePolicyLimitsAttemptsDeadlineAndFeedback) {
   EXPECT_EQ(post("/set/strict/submit", alice, "csrf=" + csrf + "&problem=zbuf&a.z=8").status, 403);
   grade_pending();
   const std::string page = get("/set/strict", alice).body;
-  EXPECT_NE(page.find(say(Say::FeedbackLater, Lang::En)), std::string::npos);
+  EXPECT_NE(page.find(kFeedbackLater.in(Lang::En)), std::string::npos);
   EXPECT_EQ(page.find("verdict-incorrect"), std::string::npos);
-  EXPECT_NE(page.find(say(Say::NoAttemptsLeft, Lang::En)), std::string::npos);
+  EXPECT_NE(page.find(kNoAttemptsLeft.in(Lang::En)), std::string::npos);
   EXPECT_EQ(post("/set/late/submit", alice, "csrf=" + csrf + "&problem=zbuf&a.z=8").status, 403);
   EXPECT_EQ(store_->submissions("alice", "late").size(), 0u);
 }
@@ -424,8 +424,8 @@ TEST_F(StudentPages, APenaltyCreditsEachFurtherAttemptLess) {
   grade_pending();
   const std::string page = get("/set/penalised", alice).body;
   EXPECT_NE(page.find("3 / 3"), std::string::npos);
-  EXPECT_NE(page.find(std::string(say(Say::CreditedAfterPenalty, Lang::En)) + " (" +
-                      say(Say::Attempt, Lang::En) + " 2): 2.25 / 3"),
+  EXPECT_NE(page.find(std::string(kCreditedAfterPenalty.in(Lang::En)) + " (" +
+                      std::string(kAttempt.in(Lang::En)) + " 2): 2.25 / 3"),
             std::string::npos)
       << page;
 }
@@ -510,7 +510,7 @@ TEST(ServePolicy, BadKeysAreLocatedErrors) {
 }
 
 TEST(ServePhrases, EveryPhraseHasJapaneseAndRussianWithoutEnglish) {
-  expect_three_languages(&say, static_cast<std::size_t>(Say::Count));
+  expect_three_languages(kAllStudentPagePhrases);
 }
 
 }  // namespace
