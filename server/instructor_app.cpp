@@ -195,9 +195,9 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
   if (rest == "gradebook.csv" || rest == "canvas.csv" || rest == "moodle.csv")
     return download(app, set, rest);
   if (rest == "copies") return copies(app, v, set, now);
-  constexpr std::string_view kStudent = "student/";
-  if (rest.rfind(kStudent, 0) == 0)
-    return student_submissions(app, v, set, url_decode(rest.substr(kStudent.size())), now);
+  constexpr std::string_view kStudentPath = "student/";
+  if (rest.rfind(kStudentPath, 0) == 0)
+    return student_submissions(app, v, set, url_decode(rest.substr(kStudentPath.size())), now);
   return message_page(404, lang, kNotFound);
 }
 

@@ -40,15 +40,15 @@ Response set_routes(StudentApp& app, const Visitor& v, const Request& r, const C
     if (!same_origin(r) || !csrf_ok(v, r, form)) return message_page(403, lang, kRefused);
     return submit_answers(app, v, set, r, form, now);
   }
-  constexpr std::string_view kSubmission = "submission/", kFigure = "figure/";
-  if (r.method == "GET" && rest.rfind(kSubmission, 0) == 0)
-    if (const auto id = number(rest.substr(kSubmission.size())))
+  constexpr std::string_view kSubmissionPath = "submission/", kFigurePath = "figure/";
+  if (r.method == "GET" && rest.rfind(kSubmissionPath, 0) == 0)
+    if (const auto id = number(rest.substr(kSubmissionPath.size())))
       return submission_page(app, v, set, *id, now);
-  if (r.method == "GET" && rest.rfind(kFigure, 0) == 0 && rest.size() > 4 &&
+  if (r.method == "GET" && rest.rfind(kFigurePath, 0) == 0 && rest.size() > 4 &&
       rest.compare(rest.size() - 4, 4, ".svg") == 0)
-    return figure_svg(app, v, set,
-                      url_decode(rest.substr(kFigure.size(), rest.size() - 4 - kFigure.size())),
-                      now);
+    return figure_svg(
+        app, v, set,
+        url_decode(rest.substr(kFigurePath.size(), rest.size() - 4 - kFigurePath.size())), now);
   return message_page(404, lang, kNotFound);
 }
 
