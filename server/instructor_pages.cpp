@@ -122,7 +122,7 @@ std::string mistakes_html(const CourseSet& set, const std::vector<MistakeRow>& m
   out += fmt::format(
       "<table class=\"mistakes\">\n<thead><tr><th>{}</th><th>{}</th><th>{}</th><th>{}</th>"
       "</tr></thead>\n<tbody>\n",
-      t(kProblem, lang), t(kAnswer, lang), t(kInstructorMistake, lang), t(kTheStudents, lang));
+      t(kProblem, lang), t(kAnswer, lang), t(kMistake, lang), t(kTheStudents, lang));
   for (const MistakeRow& m : mistakes) {
     std::string who;
     for (const std::string& student : m.students)
@@ -231,7 +231,7 @@ std::string policy_html(const ServePolicy& p, Lang lang) {
     out += fmt::format("<dt>{}</dt><dd>{}</dd>\n", t(kInstructorPenaltyPerAttempt, lang),
                        esc(p.penalty_text));
   if (p.deadline_ms)
-    out += fmt::format("<dt>{}</dt><dd><time>{}</time></dd>\n", t(kInstructorDeadline, lang),
+    out += fmt::format("<dt>{}</dt><dd><time>{}</time></dd>\n", t(kDeadline, lang),
                        esc(p.deadline_text));
   for (const auto& [student, e] : p.extensions)
     out += fmt::format("<dt>{}</dt><dd>{}: <time>{}</time></dd>\n", t(kExtensions, lang),

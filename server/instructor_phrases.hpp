@@ -2,10 +2,11 @@
 // (solver/util/said.hpp) in English, Japanese and Russian, said as `kGradebook.in(lang)`. A phrase
 // without all three does not compile; InstructorPhrases in tests/server_instructor_test.cpp
 // checks, over kAllInstructorPagePhrases, that no Japanese or Russian text is left in English.
-// Phrases shared with the students' pages are phrases.hpp's (the four named kInstructor… here
-// share a name, not always the words, with one of those).
+// Phrases shared with the students' pages are phrases.hpp's (kMistake, kDeadline); the two
+// named kInstructor… here say for instructors what a student's page says otherwise.
 #pragma once
 
+#include "server/phrases.hpp"
 #include "solver/derivation/i18n.hpp"
 #include "solver/util/said.hpp"
 
@@ -31,7 +32,6 @@ inline constexpr Phrase kWrong{"Wrong", "不正解", "Неверно"};
 inline constexpr Phrase kInstructorUnreadable{"Could not be read", "読み取り不能", "Не прочитано"};
 inline constexpr Phrase kMedianAttempts{"Median attempts", "試行回数の中央値", "Медиана попыток"};
 inline constexpr Phrase kMistakes{"Most frequent mistakes", "よくある誤り", "Частые ошибки"};
-inline constexpr Phrase kInstructorMistake{"Mistake", "誤り", "Ошибка"};
 inline constexpr Phrase kTheStudents{"Students who made it", "該当する学生", "Кто её допустил"};
 inline constexpr Phrase kNoMistakes{"No named mistake yet.", "名前のついた誤りはまだありません。",
                                     "Названных ошибок пока нет."};
@@ -115,7 +115,6 @@ inline constexpr Phrase kUnlimited{"unlimited", "無制限", "без огран�
 inline constexpr Phrase kInstructorPenaltyPerAttempt{"Penalty per further attempt",
                                                      "2 回目以降の提出ごとの減点",
                                                      "Штраф за каждую следующую попытку"};
-inline constexpr Phrase kInstructorDeadline{"Deadline", "締め切り", "Срок сдачи"};
 inline constexpr Phrase kExtensions{"Extensions", "締め切りの延長", "Продления срока"};
 
 // Every phrase above, for InstructorPhrases in tests/server_instructor_test.cpp.
@@ -138,7 +137,6 @@ inline constexpr const Phrase* kAllInstructorPagePhrases[] = {&kYourCourse,
                                                               &kInstructorUnreadable,
                                                               &kMedianAttempts,
                                                               &kMistakes,
-                                                              &kInstructorMistake,
                                                               &kTheStudents,
                                                               &kNoMistakes,
                                                               &kHistory,
@@ -185,7 +183,6 @@ inline constexpr const Phrase* kAllInstructorPagePhrases[] = {&kYourCourse,
                                                               &kAttempts,
                                                               &kUnlimited,
                                                               &kInstructorPenaltyPerAttempt,
-                                                              &kInstructorDeadline,
                                                               &kExtensions};
 
 }  // namespace frustum::server
