@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <random>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string_view>
@@ -469,6 +471,33 @@ std::vector<std::string> latin_words(const std::string& text) {
 // The captions, the <title> and the summary in the reader's language: the lecture's words, no
 // English word (numbers, coordinates, the api's name and pair names stay as written); English
 // as before.
+// Every bundled picture's caption writes its points as a student would: no rounding residue
+// (−1.85037e−17 for 0; a scene of size 1e100 keeps its exponents), no −0.
+TEST(Pictures, CaptionsWritePointsWithoutRoundingResidue) {
+  int drawn = 0;
+  for (const char* dir : {"problems/seeds", "problems/examples", "problems/hard"})
+    for (const auto& f : std::filesystem::directory_iterator(test::source_path(dir))) {
+      if (f.path().extension() != ".yaml") continue;
+      const ProblemSet set = load_problem_set(f.path().string());
+      for (const ProblemSpec& spec : set.problems) {
+        if (spec.error || !spec.info || !spec.info->drawable) continue;
+        Picture p;
+        try {
+          p = draw_picture(spec.info->drawable(spec.given), PictureOptions{});
+        } catch (const DomainError&) {
+          continue;  // not drawable (said so by draw's own tests)
+        }
+        ++drawn;
+        const std::string said = picture_words(p.svg);
+        EXPECT_FALSE(std::regex_search(said, std::regex(R"([0-9]e-[0-9])")))
+            << spec.id << ": " << said;
+        EXPECT_FALSE(std::regex_search(said, std::regex(R"((^|[^0-9.])-0([^.0-9]|$))")))
+            << spec.id << ": " << said;
+      }
+    }
+  EXPECT_GE(drawn, 8);
+}
+
 TEST(Pictures, CaptionsAndSummaryAreInTheReadersLanguage) {
   const ProblemSet seeds =
       load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));

@@ -27,8 +27,11 @@ constexpr Phrase kViewInApi{"{0} ({1}{2}{3})", "{0} ({1}{2}{3})", "{0} ({1}{2}{3
 constexpr Phrase kLeftHanded{", left-handed", ", 左手系", ", левая система"};
 constexpr Phrase kWindowYDown{", window y down", ", 画面の y は下向き", ", ось y окна вниз"};
 
-std::string point_text(const Eigen::Vector3d& p) {
-  return fmt::format("({:g}, {:g}, {:g})", p.x(), p.y(), p.z());
+// As a student reads a point of a scene of size `scale`: what rounding left of a zero
+// (−1.85e−17 where a rotation by 30° meets the axis) is 0, and six significant digits at most.
+std::string point_text(const Eigen::Vector3d& p, double scale) {
+  const auto shown = [&](double x) { return std::abs(x) < 1e-9 * scale ? 0.0 : x; };
+  return fmt::format("({:.6g}, {:.6g}, {:.6g})", shown(p.x()), shown(p.y()), shown(p.z()));
 }
 
 }  // namespace
@@ -70,9 +73,11 @@ DrawView draw_view(const DepthViewer& viewer, const Eigen::Vector3d& center, Api
   if (std::abs(along_y) > kUpParallel) up = Eigen::Vector3d(0, 0, along_y < 0 ? -1 : 1);
   const MatX<double> m = look_at<double>(eye, center, up, d.left_handed ? Api::DirectX : api);
   d.view_from_world = m;
+  const double scale = std::max({1.0, eye.cwiseAbs().maxCoeff(), center.cwiseAbs().maxCoeff()});
   const Said view = d.perspective
-                        ? say(kPerspectiveView, point_text(eye), point_text(center), point_text(up))
-                        : say(kOrthographicView, point_text(forward), point_text(up));
+                        ? say(kPerspectiveView, point_text(eye, scale), point_text(center, scale),
+                              point_text(up, 1))
+                        : say(kOrthographicView, point_text(forward, scale), point_text(up, 1));
   d.description = say(kViewInApi, view, to_string(api),
                       left_handed && api != Api::DirectX ? Said(kLeftHanded) : Said(),
                       api == Api::Processing ? Said(kWindowYDown) : Said());
