@@ -498,6 +498,30 @@ TEST(Pictures, CaptionsWritePointsWithoutRoundingResidue) {
   EXPECT_GE(drawn, 8);
 }
 
+// A caption longer than the drawing widens the canvas instead of running off its edge: in
+// every language, for both kinds of picture.
+TEST(Pictures, LongCaptionsWidenTheCanvas) {
+  EXPECT_GT(text_width("視点から見る透視投影", 12), text_width("perspective", 12));
+  EXPECT_NEAR(text_width("abc", 10), 3 * 6.2, 1e-9);
+  const ProblemSet examples =
+      load_problem_set(test::source_path("problems/examples/visibility.yaml"));
+  const std::regex width_attr(R"re(<svg [^>]*width="([0-9.]+)")re");
+  for (const char* id : {"ico-hidden-lines", "depth-sort-cyclic"})
+    for (const Lang lang : {Lang::En, Lang::Ja, Lang::Ru}) {
+      const ProblemSpec& spec = seed_problem(examples, id);
+      PictureOptions o;
+      o.lang = lang;
+      const Picture plain = draw_picture(spec.info->drawable(spec.given), o);
+      o.title = std::string(80, 'W') + " " + std::string(80, 'm');
+      const Picture titled = draw_picture(spec.info->drawable(spec.given), o);
+      std::smatch a, b;
+      ASSERT_TRUE(std::regex_search(plain.svg, a, width_attr));
+      ASSERT_TRUE(std::regex_search(titled.svg, b, width_attr));
+      EXPECT_GE(std::stod(b[1]), 24 + text_width(o.title, 12)) << id;
+      EXPECT_GT(std::stod(b[1]), std::stod(a[1])) << id;
+    }
+}
+
 TEST(Pictures, CaptionsAndSummaryAreInTheReadersLanguage) {
   const ProblemSet seeds =
       load_problem_set(test::source_path("problems/seeds/003_polygons_backface.yaml"));

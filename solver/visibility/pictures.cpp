@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "solver/derivation/svg.hpp"
 #include "solver/derivation/vocabulary.hpp"
@@ -17,6 +18,7 @@ namespace {
 
 // Canvas of the hidden-line picture and the height of its caption.
 constexpr double kCanvas = 520, kMargin = 24, kCaptionLine = 16;
+constexpr double kCaptionFont = 12;  // px: the larger of the two sizes the pictures' CSS sets text
 // Painter vs z-buffer: pixels per raster pixel (at most), panel gap.
 constexpr double kPanel = 360, kGap = 24, kDiffInset = 0.3;
 
@@ -83,6 +85,15 @@ constexpr Phrase kPainterPanel{"painter's algorithm (depth sort)",
                                "алгоритм художника (сортировка по глубине)"};
 constexpr Phrase kZBufferPanel{"z-buffer", "Zバッファ", "z-буфер"};
 
+// The canvas width the caption needs (its lines start half a margin in, at 12 px), or `width`
+// when that is wider: a long caption (many polygons in the order, a scene of size 1e100)
+// widens the picture instead of running off its edge.
+double width_for_caption(double width, const std::vector<Said>& lines, Lang lang) {
+  double widest = 0;
+  for (const Said& l : lines) widest = std::max(widest, text_width(l.in(lang), kCaptionFont));
+  return std::max(width, std::ceil(kMargin + widest));
+}
+
 void caption(Svg& svg, double y, const std::vector<Said>& lines, Lang lang) {
   for (const Said& l : lines) {
     svg.text({kMargin / 2, y}, l.in(lang), "");
@@ -120,7 +131,8 @@ Picture hidden_line_picture(const Drawable& d, const PictureOptions& o) {
   const std::vector<Said> lines = {
       Said::verbatim(o.title), view.description, Said(kLineLegend),
       say(kEdgeCaption, h.edges.size(), counts[0], counts[1], counts[2], h.split_edges)};
-  Svg svg(kCanvas, kCanvas + kCaptionLine * (static_cast<double>(lines.size()) + 1));
+  Svg svg(width_for_caption(kCanvas, lines, o.lang),
+          kCanvas + kCaptionLine * (static_cast<double>(lines.size()) + 1));
   svg.title(o.title.empty() ? kHiddenLinesTitle.in(o.lang) : o.title);
   svg.style(kLineCss);
   // Covered spans first, so solid lines lie on top of dashed ones where they meet.
@@ -190,7 +202,7 @@ Picture painter_picture(const Drawable& d, const PictureOptions& o) {
                                    say(kPainterAndZBuffer, order),
                                    say(kPixelsDiffer, r.differing.size(), n * n, conflicts_said)};
   const double top = 2 * kCaptionLine;
-  const double width = 2 * kPanel + 3 * kGap,
+  const double width = width_for_caption(2 * kPanel + 3 * kGap, lines, o.lang),
                height = top + kPanel + kCaptionLine * (static_cast<double>(lines.size()) + 1.5);
   Svg svg(width, height);
   svg.title(o.title.empty() ? kPainterTitle.in(o.lang) : o.title);
