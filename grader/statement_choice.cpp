@@ -5,6 +5,7 @@
 
 #include "solver/kinds/statements.hpp"
 #include "solver/util/expression.hpp"
+#include "solver/util/scripts.hpp"
 #include "solver/util/words.hpp"
 
 namespace frustum {
@@ -76,22 +77,10 @@ constexpr Phrase kEachChosenEarns{
     "Каждое выбранное верное утверждение даёт 1/{0} баллов, каждое выбранное неверное отнимает "
     "1/{1}."};
 
-// The UTF-8 characters of s.
-std::vector<std::string> characters(std::string_view s) {
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < s.size();) {
-    std::size_t n = 1;
-    while (i + n < s.size() && (static_cast<unsigned char>(s[i + n]) & 0xC0) == 0x80) ++n;
-    out.emplace_back(s.substr(i, n));
-    i += n;
-  }
-  return out;
-}
-
 // Full-width digits (１２) as ASCII; empty when the token is not all digits. Leading zeros go.
 std::string digits_of(std::string_view token) {
   std::string out;
-  for (const std::string& c : characters(token)) {
+  for (const std::string_view c : characters_of(token)) {
     if (c.size() == 1 && c[0] >= '0' && c[0] <= '9')
       out += c;
     else if (c.size() == 3 && c.compare(0, 2, "\xEF\xBC") == 0 &&
@@ -113,7 +102,7 @@ std::vector<std::string> tokens_of(std::string_view text) {
     if (!cur.empty()) out.push_back(cur);
     cur.clear();
   };
-  for (const std::string& c : characters(text)) {
+  for (const std::string_view c : characters_of(text)) {
     if (c == "," || c == ";" || c == " " || c == "\t" || c == "\n" || c == "、" || c == "，" ||
         c == "[" || c == "]" || c == "(" || c == ")" || c == "　")
       flush();
@@ -122,10 +111,10 @@ std::vector<std::string> tokens_of(std::string_view text) {
   }
   flush();
   if (out.size() == 1 && !truth_word(out[0])) {
-    const std::vector<std::string> marks = characters(out[0]);
+    const std::vector<std::string_view> marks = characters_of(out[0]);
     bool all_marks = marks.size() > 1;
-    for (const std::string& m : marks) all_marks = all_marks && truth_word(m) && m.size() > 1;
-    if (all_marks) return marks;
+    for (const std::string_view m : marks) all_marks = all_marks && truth_word(m) && m.size() > 1;
+    if (all_marks) return {marks.begin(), marks.end()};
   }
   return out;
 }

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "solver/util/scripts.hpp"
+
 namespace frustum {
 
 namespace {
@@ -42,18 +44,6 @@ constexpr std::pair<std::string_view, std::string_view> kSuperscripts[] = {
 
 bool is_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
 
-// The code points of a UTF-8 text.
-std::vector<std::string_view> characters(std::string_view s) {
-  std::vector<std::string_view> out;
-  for (std::size_t i = 0; i < s.size();) {
-    std::size_t n = 1;
-    while (i + n < s.size() && (static_cast<unsigned char>(s[i + n]) & 0xC0) == 0x80) ++n;
-    out.push_back(s.substr(i, n));
-    i += n;
-  }
-  return out;
-}
-
 void trim_right(std::string& s) {
   while (!s.empty() && s.back() == ' ') s.pop_back();
 }
@@ -62,7 +52,7 @@ void trim_right(std::string& s) {
 // bracket, an index), not with an operator, a relation, a comma or a space.
 bool ends_with_operand(std::string_view s) {
   if (s.empty()) return false;
-  const std::vector<std::string_view> cs = characters(s);
+  const std::vector<std::string_view> cs = characters_of(s);
   const std::string_view last = cs.back();
   if (last.size() == 1) {
     const char c = last[0];
@@ -79,7 +69,7 @@ bool ends_with_operand(std::string_view s) {
 bool holds_outside_brackets(std::string_view t, std::initializer_list<std::string_view> chars) {
   int depth = 0;
   bool in_norm = false, in_abs = false;
-  for (const std::string_view c : characters(t)) {
+  for (const std::string_view c : characters_of(t)) {
     if (c == "(" || c == "[") {
       ++depth;
     } else if (c == ")" || c == "]") {
@@ -103,7 +93,7 @@ std::string operand(std::string_view t, bool below) {
   bool wrap = false;
   if (below) {
     // A number times a root (3√6) is a product too.
-    const std::string_view after_first = t.empty() ? t : t.substr(characters(t).front().size());
+    const std::string_view after_first = t.empty() ? t : t.substr(characters_of(t).front().size());
     wrap = holds_outside_brackets(t, {" ", "+", "−", "-", "/", "·", "×"}) ||
            holds_outside_brackets(after_first, {"√"});
   } else {
@@ -151,7 +141,7 @@ class Reader {
       return g;
     }
     if (s_[i_] != '{') {
-      const std::size_t n = characters(s_.substr(i_, 4)).front().size();
+      const std::size_t n = characters_of(s_.substr(i_, 4)).front().size();
       const std::string_view g = s_.substr(i_, n);
       i_ += n;
       return g;
@@ -332,7 +322,7 @@ class Reader {
     const std::string g = inner(group());
     if (sub) {
       std::string chars;
-      for (const std::string_view c : characters(g)) {
+      for (const std::string_view c : characters_of(g)) {
         const auto* found = std::find_if(std::begin(kSubscripts), std::end(kSubscripts),
                                          [&](const auto& s) { return s.first == c; });
         if (found == std::end(kSubscripts)) {

@@ -5,20 +5,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/util/scripts.hpp"
+
 namespace frustum {
 
 double text_width(std::string_view text, double font_px) {
   double ems = 0;
-  for (std::size_t i = 0; i < text.size();) {
-    const auto lead = static_cast<unsigned char>(text[i]);
-    const std::size_t n = lead < 0x80 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
-    // Three bytes from U+2E80 on (CJK, kana, full-width forms) are a whole em wide; arrows and
-    // other symbols below that, and two-byte letters (Cyrillic), are drawn like Latin ones.
-    const bool wide = n >= 3 && (lead > 0xE2 || (lead == 0xE2 && i + 1 < text.size() &&
-                                                 static_cast<unsigned char>(text[i + 1]) >= 0xBA));
-    ems += wide ? 1.0 : 0.62;
-    i += n;
-  }
+  for (std::size_t i = 0; i < text.size();) ems += is_cjk(next_code_point(text, i)) ? 1.0 : 0.62;
   return ems * font_px;
 }
 

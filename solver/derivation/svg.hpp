@@ -48,7 +48,8 @@ class Svg {
 };
 
 // How wide a line of text is drawn at `font_px` in a sans-serif font, at most: a Latin or Cyrillic
-// letter about 0.62 em, a CJK character a whole em (for canvases that must hold their captions).
+// letter about 0.62 em, a CJK character (scripts.hpp's is_cjk) a whole em (for canvases that
+// must hold their captions).
 double text_width(std::string_view text, double font_px);
 // A coordinate for an SVG attribute: at most two decimals, no trailing zeros ("12.5", "3").
 std::string svg_number(double v);

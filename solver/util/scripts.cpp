@@ -16,6 +16,17 @@ char32_t next_code_point(std::string_view s, std::size_t& i) {
   return cp;
 }
 
+std::vector<std::string_view> characters_of(std::string_view s) {
+  std::vector<std::string_view> out;
+  for (std::size_t i = 0; i < s.size();) {
+    std::size_t n = 1;
+    while (i + n < s.size() && (static_cast<unsigned char>(s[i + n]) & 0xC0) == 0x80) ++n;
+    out.push_back(s.substr(i, n));
+    i += n;
+  }
+  return out;
+}
+
 bool is_cyrillic(char32_t c) { return c >= 0x0400 && c <= 0x04FF; }
 
 bool is_cjk(char32_t c) {
